@@ -30,11 +30,10 @@ import numpy as np
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _accuracy_points as P  # noqa: E402
-import _accuracy_ref as R  # noqa: E402
-import accuracy as A  # noqa: E402
-
 from rigidsym import kernels as K  # noqa: E402
+from rigidsym.codegen.accuracy import regimes as P  # noqa: E402
+from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
+from rigidsym.codegen.accuracy.harness import reference as R  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 KS = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_invariants",
@@ -55,7 +54,7 @@ def old_generated(rev: str, into: Path) -> Path:
 def inputs(name: str, n: int, dtype) -> list[np.ndarray]:
     k = R.kernel_of(name)
     pts = P.regimes(k, np.float64, n_random=64)["random"]
-    arrays = A._round(pts, dtype, k)
+    arrays = A.round_points(pts, dtype, k)
     reps = -(-n // len(pts))
     return [np.ascontiguousarray(np.tile(a, (reps,) + (1,) * (a.ndim - 1))[:n])
             for a in arrays]

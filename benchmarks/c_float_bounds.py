@@ -34,9 +34,8 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _accuracy_ref as R  # noqa: E402
-import accuracy as A  # noqa: E402
-
+from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
+from rigidsym.codegen.accuracy.harness import reference as R  # noqa: E402
 from rigidsym.codegen.backends.c.target import FLOAT_BOUNDS, generate_c  # noqa: E402
 
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-O2"]

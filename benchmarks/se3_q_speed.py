@@ -26,10 +26,10 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _accuracy_ref as R  # noqa: E402
 import accuracy_speed as S  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
+from rigidsym.codegen.accuracy.harness import reference as R  # noqa: E402
 
 NAMES = ["exponential_coordinates_left_jacobian", "exponential_coordinates_left_jacobian_inverse",
          "transform_from_exponential_coordinates",

@@ -30,10 +30,10 @@ import numpy as np
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-import _accuracy_ref as R  # noqa: E402
 from accuracy_speed import inputs, timer  # noqa: E402
 
 from rigidsym import kernels as K  # noqa: E402
+from rigidsym.codegen.accuracy.harness import reference as R  # noqa: E402
 from rigidsym.core.config import generated_dir  # noqa: E402
 from rigidsym.kernels.cbuild import driver as _build  # noqa: E402
 

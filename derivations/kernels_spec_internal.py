@@ -9,7 +9,7 @@ import importlib
 
 import sympy as sp
 
-from rigidsym.codegen.spec import Arg, Kernel, Out
+from rigidsym.codegen.spec import Arg, Branch, Kernel, Out
 
 from .kernel_wiring import _EX10, _S8, _S41, OMEGA, _v, formula
 
@@ -70,6 +70,55 @@ for _seq in EULER_SEQUENCES:
             # no generated Jacobian: its build (trigsimp of adj W and det W) dominates the
             # generation time; d eta_dot = W^-1 (d omega - dW eta_dot) from W's Jacobian
             jacobian=False))
+
+
+# ----------------------------------------------------------------------------------------
+# The Euler angles of a rotation (the inverse of Exercise 3.10's Q(angles)), one kernel per
+# sequence, both branches and the gimbal-lock flag; dispatched by euler_angles_from_rotation.
+_EA = "rigidsym.derivations.euler_angles."
+
+
+def _euler_angles(Q, seq):
+    f = formula(_EA + "euler_angles_from_rotation")
+    return {"angles": f(seq, Q, 1), "angles_other": f(seq, Q, -1), "gimbal_lock": sp.S.Zero}
+
+
+def _euler_angles_lock(Q, seq):
+    a = formula(_EA + "euler_angles_at_gimbal_lock")(seq, Q)
+    return {"angles": a, "angles_other": a, "gimbal_lock": sp.S.One}
+
+
+def _euler_lock_when(Q, seq):
+    As, Ac = formula(_EA + "lock_pair")(seq, Q)
+    # exactly 0 both: every atan2 of the main build would be atan2(0, 0); |x| <= 0 is x == 0
+    return sp.And(sp.Abs(As) <= 0, sp.Abs(Ac) <= 0)
+
+
+for _seq in EULER_SEQUENCES:
+    _q = " ".join(f"R{axis.lower()}(angles[{i}])" for i, axis in enumerate(_seq))
+    INTERNAL_KERNELS.append(Kernel(
+        name=f"euler_angles_from_rotation_{_seq.lower()}", public=False,
+        summary=f"Intrinsic {_seq} Euler angles of a rotation, both branches, and the "
+                "gimbal-lock flag.",
+        formula=f"Q = {_q}; a = atan2(A_s, A_c), b by atan2 against rho = |(A_s, A_c)|, c "
+                "= atan2 of rho R_i(a)^T Q's row j; at the lock (A_s = A_c = 0) c = 0",
+        ids=("ex3.10",),
+        sources=(_EA + "euler_angles_from_rotation", _EA + "euler_angles_at_gimbal_lock"),
+        args=(Arg("Q", (3, 3), "rotation", "rotation matrix (proper orthogonal)"),),
+        outputs=(Out("angles", (3,), f"[a, b, c] [rad], Q = {_q}, the principal branch "
+                     "(cos b >= 0 Tait-Bryan, sin b >= 0 proper Euler)"),
+                 Out("angles_other", (3,), "[rad], the other branch (a + pi, pi - b or "
+                     "-b, c + pi), the same as angles at the lock"),
+                 Out("gimbal_lock", (), "1 at the gimbal lock (angles: the member c = 0 of "
+                     "the family), else 0")),
+        build=lambda Q, _s=_seq: _euler_angles(Q, _s),
+        branches=(Branch("gimbal_lock", lambda Q, _s=_seq: _euler_lock_when(Q, _s),
+                         lambda Q, _s=_seq: _euler_angles_lock(Q, _s),
+                         doc="the first angle's pair of entries is exactly 0: only a + c "
+                             "(or a - c) is defined; the member c = 0 and the flag"),),
+        notes="Near the lock a and c alone are ill-conditioned (kappa ~ 1/rho); Q(angles) "
+              "keeps Q to the rounding there: c is computed from a.",
+        jacobian=False))
 
 
 def _isa_point_pitch(omega, a, a_dot):

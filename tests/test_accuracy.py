@@ -24,7 +24,7 @@ from rigidsym import kernels as K
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 pytest.importorskip("flint")
-import accuracy as A  # noqa: E402
+from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
 
 #: the approach steps of the subsample: far, midway, the spacing of 1, the smallest used
 SMALL = [1e-1, 1e-8, 1e-15, 1e-75]
@@ -103,7 +103,7 @@ def _within(rows) -> list:
 #: Found by the ends of the range (issue 37 item 2's regimes) in the Lie kernels of issue 38,
 #: open for the rescue of item 3: strict, so a fix turns them into a failure to remove here.
 #: (The Jacobian inverses' "finite wrong values" at 1e-300 were the reference's: a ball 1e-3
-#: wide at 2000 bits taken for the truth; _accuracy_ref.max_prec. At 1e300 they return
+#: wide at 2000 bits taken for the truth; harness.reference.max_prec. At 1e300 they return
 #: J(w (1 + d)), |d| ~ 2^-65: test_lie_jacobian_inverse_at_the_range_ends. The SE(3) log's
 #: "NaN at 1e-160" was a random 4 x 4 that is no transform: the "transform" kind.) None open.
 RANGE_DEFECTS: dict[str, str] = {}
@@ -166,7 +166,7 @@ def test_lie_jacobian_inverse_at_the_range_ends():
     1e-74, the row was skipped unjudged), and the kernel returns J at a w (1 + d), |d| <<
     u: backward stable, as sin(theta) of the rounded theta in every peer (the rescue's long
     double theta; measured d = -3.6e-20 at w = (-1.35, 0.41, 0.77) 1e300)."""
-    import _accuracy_points as P
+    from rigidsym.codegen.accuracy import regimes as P
 
     name = "rotation_vector_left_jacobian_inverse"
     e = np.array([0.48, -0.6, 0.64])
@@ -179,7 +179,7 @@ def test_lie_jacobian_inverse_at_the_range_ends():
     big = [P.q(x) for x in e * 2.0**997]
     ref, prec = A.R.reference(f, big)
     scale, norms = A.R.condition(name, f, [big], [9], ref, prec)
-    assert A._kappa(scale, norms) * 2.0**-53 >= 0.125
+    assert A.kappa_of(scale, norms) * 2.0**-53 >= 0.125
     # every real m is (theta'/2) cot(theta'/2) for a theta' within 2 pi of theta: the value
     # is right for a w' = w (1 + d), |d| ~ 1e-299, iff it has the form of J_l(w')^-1:
     # skew part -[w]/2, symmetric part e e^T + m (1 - e e^T) (then J w = w)
@@ -200,9 +200,9 @@ def test_lie_jacobian_inverse_at_the_range_ends():
 def _declared_numpy(name):
     """The declared outputs of ``name`` lambdified for NumPy, no rewrite: what the generated
     kernel computed before issue 30."""
-    import _accuracy_ref as R
     import sympy as sp
 
+    from rigidsym.codegen.accuracy.harness import reference as R
     from rigidsym.codegen.generator import _flatten
     from rigidsym.codegen.spec import flat_symbols, input_symbols
 

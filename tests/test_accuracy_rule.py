@@ -23,9 +23,10 @@ from rigidsym.codegen.spec import flat_symbols, input_symbols
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 pytest.importorskip("flint")
-import _accuracy_peers as O  # noqa: E402
-import accuracy as A  # noqa: E402
 from test_accuracy import _backends  # noqa: E402
+
+from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
+from rigidsym.codegen.accuracy.harness import yardsticks as O  # noqa: E402
 
 U = 2.0**-53
 ROOT = Path(__file__).resolve().parents[1]
@@ -102,7 +103,7 @@ def test_a_yardstick_lucky_at_one_input_does_not_fail_the_kernel(monkeypatch):
     (ratio 34): the kernel 137 u, pytransform3d 1.1 u there by the luck of its rounding of
     ``|w|`` (78 u median over ``|w|`` in 50 .. 300, the kernel's 60 u). The reference half
     is now decided over a cloud of neighbouring inputs where the point fails it
-    (``benchmarks/_accuracy_cloud.py``); a yardstick exact at the point alone (``lucky``)
+    (``harness/cloud.py``); a yardstick exact at the point alone (``lucky``)
     makes the screen fail and the medians pass."""
     name = "rotation_from_rotation_vector"
     consulted = _lucky_peer(monkeypatch, name, W_LUCKY)
@@ -159,13 +160,13 @@ def test_the_harness_forgives_a_jump_not_a_conditioning_loss():
     flipped = _FixedInput(-ref)
     near = _FixedInput(ref * (1 + 1e-7))        # the formula at a rounded Q: 1e8 u away
     bound = 1e-13
-    assert A._diff(-ref, ref, flipped, slice(0, 3), bound) == 0.0
-    assert A._diff(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) == pytest.approx(1e-7)
-    assert A._diff(ref * (1 + 1e-15), ref, near, slice(0, 3), bound) < bound
+    assert A.diff(-ref, ref, flipped, slice(0, 3), bound) == 0.0
+    assert A.diff(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) == pytest.approx(1e-7)
+    assert A.diff(ref * (1 + 1e-15), ref, near, slice(0, 3), bound) < bound
     # and the componentwise figure of an axis of the other sign is taken against that sign
     # (old main: 1.76e16 ulps for natural_invariants_from_rotation near pi)
-    assert A._judged_by(-ref, ref, flipped, slice(0, 3), bound) is not ref
-    assert A._judged_by(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) is ref
+    assert A.judged_by(-ref, ref, flipped, slice(0, 3), bound) is not ref
+    assert A.judged_by(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) is ref
 
 
 def test_the_componentwise_figure_is_the_kernels_own_error():
@@ -223,7 +224,7 @@ def test_screw_axis_point_from_the_skew_part():
         Q = A.P.rotation(e, A.P.q(t / 2), fmpq(1))
         a = [A.P.q(x) for x in rng.standard_normal(3)]
         ap = [A.P.q(x) for x in rng.standard_normal(3)]
-        arrays = A._round([[Q, a, ap]], np.float64, k)
+        arrays = A.round_points([[Q, a, ap]], np.float64, k)
         f = A.R.pick("screw_of_displacement", [float(x) for y in arrays for x in y[0].ravel()])
         ref, _ = A.R.reference(f, [x for y in (Q, a, ap) for x in y])
         for b in _backends():

@@ -27,9 +27,11 @@ from rigidsym import kernels as K
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
 pytest.importorskip("flint")
-import _accuracy_points as P  # noqa: E402
-import accuracy as A  # noqa: E402
+import _accuracy_seeds as SEEDS  # noqa: E402
 from test_accuracy import _backends  # noqa: E402  (C and NumPy, or NumPy without a compiler)
+
+from rigidsym.codegen.accuracy import regimes as P  # noqa: E402
+from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
 
 DATA = json.loads((ROOT / "derivations" / "kernels_accuracy.json").read_text("utf-8"))
 MARGIN = 1.5
@@ -115,14 +117,14 @@ def test_a_plain_rerun_measures_each_kernel_over_its_own_seeds():
     assert not any(SEED in row["seeds"] for row in DATA.values())     # fresh stays fresh
     for name in ("H_matrix", "H_tilde", "L_tilde_dot"):
         assert set(DATA[name]["seeds"]) >= {0, 1, 2, 3}, name
-        assert set(A.seeds_for(name, DATA)) >= {0, 1, 2, 3}, name
+        assert set(SEEDS.seeds_for(name, DATA)) >= {0, 1, 2, 3}, name
     # a row that records only the default seeds is measured over those; one without a row
     # (a new kernel) too
-    assert A.seeds_for("x", {"x": {"seeds": list(A.DEFAULT_SEEDS)}}) == A.DEFAULT_SEEDS
-    assert A.seeds_for("new_kernel", DATA) == A.DEFAULT_SEEDS
-    assert A.seeds_for("H_matrix", DATA, "5,6") == (5, 6)
+    assert SEEDS.seeds_for("x", {"x": {"seeds": list(SEEDS.DEFAULT_SEEDS)}}) == SEEDS.DEFAULT_SEEDS
+    assert SEEDS.seeds_for("new_kernel", DATA) == SEEDS.DEFAULT_SEEDS
+    assert SEEDS.seeds_for("H_matrix", DATA, "5,6") == (5, 6)
     new = {"H_matrix": {**DATA["H_matrix"], "seeds": [0]}}
-    both = A.merged(DATA, new)
+    both = SEEDS.merged(DATA, new)
     assert both.keys() == DATA.keys() and both["H_tilde"] == DATA["H_tilde"]
     rows = [A.Row("H_matrix", "float64", "numpy", "random", 3, seed=s) for s in (2, 0, 2)]
     assert A.summary(rows)["H_matrix"]["seeds"] == [0, 2]

@@ -21,7 +21,7 @@ import pytest
 from test_accuracy import _backends
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-import accuracy as A  # noqa: E402
+from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
 
 GEN = Path(__file__).resolve().parents[1] / "generated" / "c"
 #: what a back-end computes with a function of its own (libm's, NumPy's SIMD loops, torch's
@@ -56,7 +56,7 @@ def test_c_and_numpy_give_the_same_bits():
 def _random(name: str):
     k = A.R.kernel_of(name)
     pts = A.P.regimes(k, np.float64, n_random=12, seed=5, small=[1e-3])["random"]
-    return {a.name: x for a, x in zip(k.args, A._round(pts, np.float64, k), strict=True)}
+    return {a.name: x for a, x in zip(k.args, A.round_points(pts, np.float64, k), strict=True)}
 
 
 def _tuple(r):

@@ -2,7 +2,7 @@
 computes its kernel's outputs, and the conventions the adapters rest on (right or left Jacobians,
 ``[v; w]`` or ``[w; v]``, the logarithm's domain) hold numerically, not by belief.
 
-Before it the peers were a list in the harness (benchmarks/_accuracy_peers.py) with no
+Before it the peers were a list in the harness (harness/yardsticks.py) with no
 Pinocchio Jacobian, no PyPose and no jaxlie, and docs/accuracy.md's column was written by
 hand. The adapter tests need the ``[oracles]`` extra (``extra``); the table's own shape does
 not.
@@ -28,7 +28,7 @@ KERNELS = {k["name"]: k for k in json.loads((ROOT / "generated" / "kernels.json"
 
 def _spec(name):
     sys.path.insert(0, str(ROOT / "benchmarks"))
-    import _accuracy_ref as R
+    from rigidsym.codegen.accuracy.harness import reference as R
 
     return R.kernel_of(name)
 
@@ -66,11 +66,11 @@ def test_a_missing_library_is_left_out_with_its_reason(monkeypatch):
 
 def _points(name, n=8):
     sys.path.insert(0, str(ROOT / "benchmarks"))
-    import accuracy as A
+    from rigidsym.codegen.accuracy.harness import judge as A
 
     k = A.R.kernel_of(name)
     pts = A.P.regimes(k, np.float64, n_random=n, extremes=False)["random"]
-    arrays = A._round(pts, np.float64, k)
+    arrays = A.round_points(pts, np.float64, k)
     return arrays, A.run_kernel(name, arrays, np.float64, "numpy")
 
 
@@ -92,7 +92,7 @@ def test_each_adapter_computes_its_kernels_outputs(library):
     except ImportError as e:
         pytest.skip(str(e))
     sys.path.insert(0, str(ROOT / "benchmarks"))
-    import _accuracy_peers as O
+    from rigidsym.codegen.accuracy.harness import yardsticks as O
 
     checked = 0
     for name in _kernels_of(library):

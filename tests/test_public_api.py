@@ -43,13 +43,15 @@ KERNELS = [
     "rotation_vector_right_jacobian_inverse", "transform_from_exponential_coordinates",
 ]
 PUBLIC = {
-    "rigidsym": ["BadInput", "Result", "Results", "check", "check_latex", "load_module", "verify",
+    "rigidsym": ["BadInput", "Result", "Results", "audit", "check", "check_latex", "load_module",
+                 "verify",
                  *DECLARE],
     "rigidsym.declare": DECLARE,
     "rigidsym.kernels": [
         "NonFiniteResultError", "SingularConfigurationError", "accuracy", "backend",
         "batch_function", "build_info",
-        "euler_angle_rates", "euler_rate_matrix", "get_num_threads", "jacobian", "load",
+        "euler_angle_rates", "euler_angles_from_rotation", "euler_rate_matrix",
+        "get_num_threads", "jacobian", "load",
         "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
     # issue 48: Grouped marks a group the removable-singularity pass never distributes
     "rigidsym.codegen.spec": ["Arg", "Branch", "Grouped", "Kernel", "Out", "input_symbols"],
@@ -70,7 +72,7 @@ PUBLIC = {
 
 #: issue 31: the differentiable back-ends, importable where their extra is installed
 ARRAY_BACKENDS = ["NonFiniteResultError", "SingularConfigurationError", "euler_angle_rates",
-                  "euler_rate_matrix", "load", *KERNELS]
+                  "euler_angles_from_rotation", "euler_rate_matrix", "load", *KERNELS]
 EXTRA_PUBLIC = {"rigidsym.kernels.torch": ("torch", ARRAY_BACKENDS),
                 "rigidsym.kernels.jax": ("jax", ARRAY_BACKENDS)}
 

@@ -2,7 +2,7 @@
 over every kernel (float64 and float32, C and NumPy; torch and JAX in slow)").
 
 ``tests/test_whole_domain.py`` searches the Lie-group maps, two seeds each; here the same
-search (``benchmarks/_accuracy_search.py``: exponent-uniform starts, hill climbing on the
+search (``harness/search.py``: exponent-uniform starts, hill climbing on the
 harness's measured rule ratio) runs once (seed 0) over each of the generated kernels,
 Jacobian kernels included, in both float types on C and NumPy, and over every public kernel
 of the PyTorch and JAX back-ends (their own programs, judged by the same rule). A point past
@@ -40,8 +40,8 @@ OPEN = {
 def _search():
     pytest.importorskip("flint")
     sys.path.insert(0, str(ROOT / "benchmarks"))
-    import _accuracy_search as S
-    import accuracy as A
+    from rigidsym.codegen.accuracy.harness import judge as A
+    from rigidsym.codegen.accuracy.harness import search as S
 
     return S, A
 

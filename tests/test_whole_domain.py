@@ -338,7 +338,7 @@ def test_20000_rows_near_2pi_k_c_equals_numpy_on_nan():
 
 
 # ----------------------------------------------------------------------------------------
-# the search's worst points (benchmarks/_accuracy_search.py, item 1), kept as regression
+# the search's worst points (harness/search.py, item 1), kept as regression
 # cases: each was outside the rule on main (ratio to the rule there, measured by the same
 # judge), C and NumPy
 
@@ -408,7 +408,7 @@ def _harness():
 
     pytest.importorskip("flint")
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
-    import accuracy as A
+    from rigidsym.codegen.accuracy.harness import judge as A
 
     return A
 
@@ -433,7 +433,7 @@ def test_searched_worst_points(name, point, on_main, dtype):
 
 #: (kernel, dtype) where the slow search below still finds a point past the rule (seeds 0
 #: and 1; the reference half decided over a cloud of neighbouring inputs where the point
-#: fails it, benchmarks/_accuracy_cloud.py), measured with the [oracles] extra installed
+#: fails it, harness/cloud.py), measured with the [oracles] extra installed
 SEARCH_OPEN = {
     ("transform_from_exponential_coordinates", "float32"):
         "C only (NumPy 0.03): the float32 precision plan squares w in float and sums and "
@@ -469,7 +469,7 @@ def test_search_finds_nothing_outside_the_rule(name, dtype, request):
             strict=False, reason="issue 48 open: the search finds a point past the rule: "
                                  + SEARCH_OPEN[name, np.dtype(dtype).name]))
     _harness()
-    import _accuracy_search as S
+    from rigidsym.codegen.accuracy.harness import search as S
 
     for seed in (0, 1):
         ratio, point = S.search(name, dtype, tuple(_backends()), seed=seed, n_start=12,

@@ -14,7 +14,7 @@
  * Singular set: phi = 0 (Q = 1): the axis e is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.68 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.687 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   branch 1: none

@@ -426,82 +426,100 @@ static const rigidsym_slot rigidsym_out_47[] = {
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_in_48[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_48[] = {
-    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_49[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_49[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_50[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_50[] = {
-    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_51[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_51[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_52[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_52[] = {
-    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_53[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_53[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_54[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_54[] = {
-    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_55[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_55[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_56[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_56[] = {
-    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_57[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_57[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_58[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_58[] = {
-    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_59[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_59[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_in_60[] = {
     {1, {3}, 3, 0},
@@ -738,245 +756,323 @@ static const rigidsym_slot rigidsym_out_95[] = {
     {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_96[] = {
-    {2, {3, 3}, 9, 2},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_96[] = {
-    {1, {4}, 4, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_97[] = {
-    {2, {3, 3}, 9, 2},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_97[] = {
-    {1, {4}, 4, 0},
-    {3, {4, 3, 3}, 36, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_98[] = {
-    {1, {4}, 4, 0},
-    {1, {4}, 4, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_98[] = {
-    {1, {4}, 4, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_99[] = {
-    {1, {4}, 4, 0},
-    {1, {4}, 4, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_99[] = {
-    {1, {4}, 4, 0},
-    {2, {4, 4}, 16, 0},
-    {2, {4, 4}, 16, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_100[] = {
-    {2, {4, 4}, 16, 3},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_100[] = {
-    {1, {6}, 6, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_101[] = {
-    {2, {4, 4}, 16, 3},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_101[] = {
-    {1, {6}, 6, 0},
-    {3, {6, 4, 4}, 96, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_102[] = {
-    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_102[] = {
-    {2, {6, 6}, 36, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_103[] = {
-    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_103[] = {
-    {2, {6, 6}, 36, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_104[] = {
-    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_104[] = {
-    {2, {6, 6}, 36, 0},
-    {3, {6, 6, 6}, 216, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_105[] = {
-    {1, {6}, 6, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_105[] = {
-    {2, {6, 6}, 36, 0},
-    {3, {6, 6, 6}, 216, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_106[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_106[] = {
     {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_107[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_107[] = {
     {2, {3, 3}, 9, 0},
-    {4, {3, 3, 3, 3}, 81, 0},
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
     {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_108[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_108[] = {
-    {2, {6, 6}, 36, 0},
+    {1, {4}, 4, 0},
 };
 static const rigidsym_slot rigidsym_in_109[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
 };
 static const rigidsym_slot rigidsym_out_109[] = {
-    {2, {6, 6}, 36, 0},
-    {4, {6, 6, 3, 3}, 324, 0},
-    {2, {6, 6}, 36, 0},
-    {3, {6, 6, 3}, 108, 0},
-    {3, {6, 6, 3}, 108, 0},
+    {1, {4}, 4, 0},
+    {3, {4, 3, 3}, 36, 0},
 };
 static const rigidsym_slot rigidsym_in_110[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {4}, 4, 0},
+    {1, {4}, 4, 0},
 };
 static const rigidsym_slot rigidsym_out_110[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-    {1, {6}, 6, 0},
+    {1, {4}, 4, 0},
 };
 static const rigidsym_slot rigidsym_in_111[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {4}, 4, 0},
+    {1, {4}, 4, 0},
 };
 static const rigidsym_slot rigidsym_out_111[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
-    {1, {6}, 6, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
-    {2, {6, 3}, 18, 0},
+    {1, {4}, 4, 0},
+    {2, {4, 4}, 16, 0},
+    {2, {4, 4}, 16, 0},
 };
 static const rigidsym_slot rigidsym_in_112[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {2, {4, 4}, 16, 3},
 };
 static const rigidsym_slot rigidsym_out_112[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_in_113[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {2, {4, 4}, 16, 3},
 };
 static const rigidsym_slot rigidsym_out_113[] = {
-    {0, {0}, 1, 0},
+    {1, {6}, 6, 0},
+    {3, {6, 4, 4}, 96, 0},
 };
 static const rigidsym_slot rigidsym_in_114[] = {
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_114[] = {
-    {0, {0}, 1, 0},
-    {2, {3, 3}, 9, 0},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {2, {6, 6}, 36, 0},
 };
 static const rigidsym_slot rigidsym_in_115[] = {
-    {1, {3}, 3, 0},
-    {2, {3, 3}, 9, 2},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_115[] = {
-    {1, {3}, 3, 0},
+    {2, {6, 6}, 36, 0},
 };
 static const rigidsym_slot rigidsym_in_116[] = {
-    {1, {3}, 3, 0},
-    {2, {3, 3}, 9, 2},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_116[] = {
-    {1, {3}, 3, 0},
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
+    {2, {6, 6}, 36, 0},
+    {3, {6, 6, 6}, 216, 0},
 };
 static const rigidsym_slot rigidsym_in_117[] = {
-    {2, {3, 3}, 9, 2},
+    {1, {6}, 6, 0},
 };
 static const rigidsym_slot rigidsym_out_117[] = {
-    {1, {3}, 3, 0},
-    {0, {0}, 1, 0},
+    {2, {6, 6}, 36, 0},
+    {3, {6, 6, 6}, 216, 0},
 };
 static const rigidsym_slot rigidsym_in_118[] = {
     {2, {3, 3}, 9, 0},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_118[] = {
-    {1, {6}, 6, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_119[] = {
     {2, {3, 3}, 9, 0},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_119[] = {
-    {1, {6}, 6, 0},
+    {2, {3, 3}, 9, 0},
+    {4, {3, 3, 3, 3}, 81, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_120[] = {
     {2, {3, 3}, 9, 0},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_120[] = {
+    {2, {6, 6}, 36, 0},
+};
+static const rigidsym_slot rigidsym_in_121[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_121[] = {
+    {2, {6, 6}, 36, 0},
+    {4, {6, 6, 3, 3}, 324, 0},
+    {2, {6, 6}, 36, 0},
+    {3, {6, 6, 3}, 108, 0},
+    {3, {6, 6, 3}, 108, 0},
+};
+static const rigidsym_slot rigidsym_in_122[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_122[] = {
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
+    {1, {6}, 6, 0},
+};
+static const rigidsym_slot rigidsym_in_123[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_123[] = {
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
+    {1, {6}, 6, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
+    {2, {6, 3}, 18, 0},
+};
+static const rigidsym_slot rigidsym_in_124[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_124[] = {
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
+};
+static const rigidsym_slot rigidsym_in_125[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_125[] = {
+    {0, {0}, 1, 0},
+};
+static const rigidsym_slot rigidsym_in_126[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_126[] = {
+    {0, {0}, 1, 0},
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_in_127[] = {
+    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_127[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_in_128[] = {
+    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 2},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_128[] = {
+    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+};
+static const rigidsym_slot rigidsym_in_129[] = {
+    {2, {3, 3}, 9, 2},
+};
+static const rigidsym_slot rigidsym_out_129[] = {
+    {1, {3}, 3, 0},
+    {0, {0}, 1, 0},
+};
+static const rigidsym_slot rigidsym_in_130[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_130[] = {
+    {1, {6}, 6, 0},
+};
+static const rigidsym_slot rigidsym_in_131[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_131[] = {
+    {1, {6}, 6, 0},
+};
+static const rigidsym_slot rigidsym_in_132[] = {
+    {2, {3, 3}, 9, 0},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_132[] = {
     {1, {6}, 6, 0},
     {3, {6, 3, 3}, 54, 0},
     {1, {6}, 6, 0},
@@ -984,269 +1080,269 @@ static const rigidsym_slot rigidsym_out_120[] = {
     {2, {6, 3}, 18, 0},
     {2, {6, 3}, 18, 0},
 };
-static const rigidsym_slot rigidsym_in_121[] = {
+static const rigidsym_slot rigidsym_in_133[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_121[] = {
+static const rigidsym_slot rigidsym_out_133[] = {
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_in_122[] = {
+static const rigidsym_slot rigidsym_in_134[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_122[] = {
+static const rigidsym_slot rigidsym_out_134[] = {
     {1, {6}, 6, 0},
     {2, {6, 3}, 18, 0},
     {2, {6, 3}, 18, 0},
 };
-static const rigidsym_slot rigidsym_in_123[] = {
+static const rigidsym_slot rigidsym_in_135[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_123[] = {
+static const rigidsym_slot rigidsym_out_135[] = {
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_in_124[] = {
+static const rigidsym_slot rigidsym_in_136[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_124[] = {
+static const rigidsym_slot rigidsym_out_136[] = {
     {1, {6}, 6, 0},
     {2, {6, 6}, 36, 0},
     {2, {6, 3}, 18, 0},
     {2, {6, 3}, 18, 0},
 };
-static const rigidsym_slot rigidsym_in_125[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_125[] = {
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_in_126[] = {
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_126[] = {
-    {1, {3}, 3, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_127[] = {
-    {1, {4}, 4, 1},
-};
-static const rigidsym_slot rigidsym_out_127[] = {
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_128[] = {
-    {1, {4}, 4, 1},
-};
-static const rigidsym_slot rigidsym_out_128[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 4}, 36, 0},
-};
-static const rigidsym_slot rigidsym_in_129[] = {
-    {1, {3}, 3, 1},
-    {0, {0}, 1, 0},
-};
-static const rigidsym_slot rigidsym_out_129[] = {
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_130[] = {
-    {1, {3}, 3, 1},
-    {0, {0}, 1, 0},
-};
-static const rigidsym_slot rigidsym_out_130[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_131[] = {
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_131[] = {
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_132[] = {
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_132[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
-};
-static const rigidsym_slot rigidsym_in_133[] = {
-    {2, {3, 3}, 9, 2},
-};
-static const rigidsym_slot rigidsym_out_133[] = {
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_in_134[] = {
-    {2, {3, 3}, 9, 2},
-};
-static const rigidsym_slot rigidsym_out_134[] = {
-    {1, {3}, 3, 0},
-    {3, {3, 3, 3}, 27, 0},
-};
-static const rigidsym_slot rigidsym_in_135[] = {
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_135[] = {
-    {2, {3, 3}, 9, 0},
-};
-static const rigidsym_slot rigidsym_in_136[] = {
-    {1, {3}, 3, 0},
-};
-static const rigidsym_slot rigidsym_out_136[] = {
-    {2, {3, 3}, 9, 0},
-};
 static const rigidsym_slot rigidsym_in_137[] = {
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_137[] = {
-    {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_in_138[] = {
     {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_138[] = {
+    {1, {3}, 3, 0},
     {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_139[] = {
-    {1, {3}, 3, 0},
+    {1, {4}, 4, 1},
 };
 static const rigidsym_slot rigidsym_out_139[] = {
     {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_140[] = {
-    {1, {3}, 3, 0},
+    {1, {4}, 4, 1},
 };
 static const rigidsym_slot rigidsym_out_140[] = {
     {2, {3, 3}, 9, 0},
+    {3, {3, 3, 4}, 36, 0},
 };
 static const rigidsym_slot rigidsym_in_141[] = {
-    {1, {3}, 3, 0},
+    {1, {3}, 3, 1},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_out_141[] = {
     {2, {3, 3}, 9, 0},
-    {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_142[] = {
-    {1, {3}, 3, 0},
+    {1, {3}, 3, 1},
+    {0, {0}, 1, 0},
 };
 static const rigidsym_slot rigidsym_out_142[] = {
     {2, {3, 3}, 9, 0},
     {3, {3, 3, 3}, 27, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_143[] = {
-    {1, {3}, 3, 1},
-    {0, {0}, 1, 0},
-    {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
 static const rigidsym_slot rigidsym_out_143[] = {
-    {1, {3}, 3, 0},
+    {2, {3, 3}, 9, 0},
 };
 static const rigidsym_slot rigidsym_in_144[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_144[] = {
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_145[] = {
+    {2, {3, 3}, 9, 2},
+};
+static const rigidsym_slot rigidsym_out_145[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_in_146[] = {
+    {2, {3, 3}, 9, 2},
+};
+static const rigidsym_slot rigidsym_out_146[] = {
+    {1, {3}, 3, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_147[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_147[] = {
+    {2, {3, 3}, 9, 0},
+};
+static const rigidsym_slot rigidsym_in_148[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_148[] = {
+    {2, {3, 3}, 9, 0},
+};
+static const rigidsym_slot rigidsym_in_149[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_149[] = {
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_150[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_150[] = {
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_151[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_151[] = {
+    {2, {3, 3}, 9, 0},
+};
+static const rigidsym_slot rigidsym_in_152[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_152[] = {
+    {2, {3, 3}, 9, 0},
+};
+static const rigidsym_slot rigidsym_in_153[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_153[] = {
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_154[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_154[] = {
+    {2, {3, 3}, 9, 0},
+    {3, {3, 3, 3}, 27, 0},
+};
+static const rigidsym_slot rigidsym_in_155[] = {
     {1, {3}, 3, 1},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_144[] = {
+static const rigidsym_slot rigidsym_out_155[] = {
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_in_156[] = {
+    {1, {3}, 3, 1},
+    {0, {0}, 1, 0},
+    {1, {3}, 3, 0},
+    {1, {3}, 3, 0},
+};
+static const rigidsym_slot rigidsym_out_156[] = {
     {1, {3}, 3, 0},
     {2, {3, 3}, 9, 0},
     {1, {3}, 3, 0},
     {2, {3, 3}, 9, 0},
     {2, {3, 3}, 9, 0},
 };
-static const rigidsym_slot rigidsym_in_145[] = {
+static const rigidsym_slot rigidsym_in_157[] = {
     {2, {3, 3}, 9, 2},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_145[] = {
+static const rigidsym_slot rigidsym_out_157[] = {
     {1, {3}, 3, 0},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {0, {0}, 1, 0},
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_in_146[] = {
+static const rigidsym_slot rigidsym_in_158[] = {
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_out_146[] = {
+static const rigidsym_slot rigidsym_out_158[] = {
     {2, {4, 4}, 16, 0},
 };
-static const rigidsym_slot rigidsym_in_147[] = {
+static const rigidsym_slot rigidsym_in_159[] = {
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_out_147[] = {
+static const rigidsym_slot rigidsym_out_159[] = {
     {2, {4, 4}, 16, 0},
     {3, {4, 4, 6}, 96, 0},
 };
-static const rigidsym_slot rigidsym_in_148[] = {
+static const rigidsym_slot rigidsym_in_160[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_148[] = {
+static const rigidsym_slot rigidsym_out_160[] = {
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_in_149[] = {
+static const rigidsym_slot rigidsym_in_161[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_149[] = {
+static const rigidsym_slot rigidsym_out_161[] = {
     {2, {6, 6}, 36, 0},
 };
-static const rigidsym_slot rigidsym_in_150[] = {
+static const rigidsym_slot rigidsym_in_162[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_150[] = {
+static const rigidsym_slot rigidsym_out_162[] = {
     {2, {6, 6}, 36, 0},
     {3, {6, 6, 3}, 108, 0},
     {3, {6, 6, 3}, 108, 0},
 };
-static const rigidsym_slot rigidsym_in_151[] = {
+static const rigidsym_slot rigidsym_in_163[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_151[] = {
+static const rigidsym_slot rigidsym_out_163[] = {
     {1, {6}, 6, 0},
     {2, {6, 6}, 36, 0},
     {2, {6, 3}, 18, 0},
     {2, {6, 3}, 18, 0},
 };
-static const rigidsym_slot rigidsym_in_152[] = {
+static const rigidsym_slot rigidsym_in_164[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_152[] = {
+static const rigidsym_slot rigidsym_out_164[] = {
     {1, {3}, 3, 0},
     {0, {0}, 1, 0},
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_in_153[] = {
+static const rigidsym_slot rigidsym_in_165[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_153[] = {
+static const rigidsym_slot rigidsym_out_165[] = {
     {1, {3}, 3, 0},
     {0, {0}, 1, 0},
     {1, {6}, 6, 0},
@@ -1257,36 +1353,36 @@ static const rigidsym_slot rigidsym_out_153[] = {
     {2, {6, 6}, 36, 0},
     {2, {6, 3}, 18, 0},
 };
-static const rigidsym_slot rigidsym_in_154[] = {
+static const rigidsym_slot rigidsym_in_166[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_154[] = {
+static const rigidsym_slot rigidsym_out_166[] = {
     {1, {6}, 6, 0},
 };
-static const rigidsym_slot rigidsym_in_155[] = {
+static const rigidsym_slot rigidsym_in_167[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_155[] = {
+static const rigidsym_slot rigidsym_out_167[] = {
     {2, {6, 6}, 36, 0},
 };
-static const rigidsym_slot rigidsym_in_156[] = {
+static const rigidsym_slot rigidsym_in_168[] = {
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_156[] = {
+static const rigidsym_slot rigidsym_out_168[] = {
     {2, {6, 6}, 36, 0},
     {3, {6, 6, 3}, 108, 0},
     {3, {6, 6, 3}, 108, 0},
 };
-static const rigidsym_slot rigidsym_in_157[] = {
+static const rigidsym_slot rigidsym_in_169[] = {
     {1, {6}, 6, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
 };
-static const rigidsym_slot rigidsym_out_157[] = {
+static const rigidsym_slot rigidsym_out_169[] = {
     {1, {6}, 6, 0},
     {2, {6, 6}, 36, 0},
     {2, {6, 3}, 18, 0},
@@ -1342,18 +1438,18 @@ static const rigidsym_entry rigidsym_entries[RIGIDSYM_NKERNELS] = {
     {2, 1, rigidsym_in_45, rigidsym_out_45},
     {2, 1, rigidsym_in_46, rigidsym_out_46},
     {2, 1, rigidsym_in_47, rigidsym_out_47},
-    {1, 1, rigidsym_in_48, rigidsym_out_48},
-    {1, 2, rigidsym_in_49, rigidsym_out_49},
-    {1, 1, rigidsym_in_50, rigidsym_out_50},
-    {1, 2, rigidsym_in_51, rigidsym_out_51},
-    {1, 1, rigidsym_in_52, rigidsym_out_52},
-    {1, 2, rigidsym_in_53, rigidsym_out_53},
-    {1, 1, rigidsym_in_54, rigidsym_out_54},
-    {1, 2, rigidsym_in_55, rigidsym_out_55},
-    {1, 1, rigidsym_in_56, rigidsym_out_56},
-    {1, 2, rigidsym_in_57, rigidsym_out_57},
-    {1, 1, rigidsym_in_58, rigidsym_out_58},
-    {1, 2, rigidsym_in_59, rigidsym_out_59},
+    {1, 3, rigidsym_in_48, rigidsym_out_48},
+    {1, 3, rigidsym_in_49, rigidsym_out_49},
+    {1, 3, rigidsym_in_50, rigidsym_out_50},
+    {1, 3, rigidsym_in_51, rigidsym_out_51},
+    {1, 3, rigidsym_in_52, rigidsym_out_52},
+    {1, 3, rigidsym_in_53, rigidsym_out_53},
+    {1, 3, rigidsym_in_54, rigidsym_out_54},
+    {1, 3, rigidsym_in_55, rigidsym_out_55},
+    {1, 3, rigidsym_in_56, rigidsym_out_56},
+    {1, 3, rigidsym_in_57, rigidsym_out_57},
+    {1, 3, rigidsym_in_58, rigidsym_out_58},
+    {1, 3, rigidsym_in_59, rigidsym_out_59},
     {1, 1, rigidsym_in_60, rigidsym_out_60},
     {1, 2, rigidsym_in_61, rigidsym_out_61},
     {1, 1, rigidsym_in_62, rigidsym_out_62},
@@ -1392,66 +1488,78 @@ static const rigidsym_entry rigidsym_entries[RIGIDSYM_NKERNELS] = {
     {1, 2, rigidsym_in_95, rigidsym_out_95},
     {1, 1, rigidsym_in_96, rigidsym_out_96},
     {1, 2, rigidsym_in_97, rigidsym_out_97},
-    {2, 1, rigidsym_in_98, rigidsym_out_98},
-    {2, 3, rigidsym_in_99, rigidsym_out_99},
+    {1, 1, rigidsym_in_98, rigidsym_out_98},
+    {1, 2, rigidsym_in_99, rigidsym_out_99},
     {1, 1, rigidsym_in_100, rigidsym_out_100},
     {1, 2, rigidsym_in_101, rigidsym_out_101},
     {1, 1, rigidsym_in_102, rigidsym_out_102},
-    {1, 1, rigidsym_in_103, rigidsym_out_103},
-    {1, 2, rigidsym_in_104, rigidsym_out_104},
+    {1, 2, rigidsym_in_103, rigidsym_out_103},
+    {1, 1, rigidsym_in_104, rigidsym_out_104},
     {1, 2, rigidsym_in_105, rigidsym_out_105},
-    {4, 1, rigidsym_in_106, rigidsym_out_106},
-    {4, 5, rigidsym_in_107, rigidsym_out_107},
-    {4, 1, rigidsym_in_108, rigidsym_out_108},
-    {4, 5, rigidsym_in_109, rigidsym_out_109},
-    {3, 3, rigidsym_in_110, rigidsym_out_110},
-    {3, 12, rigidsym_in_111, rigidsym_out_111},
-    {3, 2, rigidsym_in_112, rigidsym_out_112},
-    {4, 1, rigidsym_in_113, rigidsym_out_113},
-    {4, 5, rigidsym_in_114, rigidsym_out_114},
-    {7, 1, rigidsym_in_115, rigidsym_out_115},
-    {7, 8, rigidsym_in_116, rigidsym_out_116},
+    {1, 1, rigidsym_in_106, rigidsym_out_106},
+    {1, 2, rigidsym_in_107, rigidsym_out_107},
+    {1, 1, rigidsym_in_108, rigidsym_out_108},
+    {1, 2, rigidsym_in_109, rigidsym_out_109},
+    {2, 1, rigidsym_in_110, rigidsym_out_110},
+    {2, 3, rigidsym_in_111, rigidsym_out_111},
+    {1, 1, rigidsym_in_112, rigidsym_out_112},
+    {1, 2, rigidsym_in_113, rigidsym_out_113},
+    {1, 1, rigidsym_in_114, rigidsym_out_114},
+    {1, 1, rigidsym_in_115, rigidsym_out_115},
+    {1, 2, rigidsym_in_116, rigidsym_out_116},
     {1, 2, rigidsym_in_117, rigidsym_out_117},
-    {7, 1, rigidsym_in_118, rigidsym_out_118},
-    {5, 1, rigidsym_in_119, rigidsym_out_119},
-    {5, 6, rigidsym_in_120, rigidsym_out_120},
-    {2, 1, rigidsym_in_121, rigidsym_out_121},
-    {2, 3, rigidsym_in_122, rigidsym_out_122},
-    {3, 1, rigidsym_in_123, rigidsym_out_123},
-    {3, 4, rigidsym_in_124, rigidsym_out_124},
-    {5, 1, rigidsym_in_125, rigidsym_out_125},
-    {5, 6, rigidsym_in_126, rigidsym_out_126},
-    {1, 1, rigidsym_in_127, rigidsym_out_127},
-    {1, 2, rigidsym_in_128, rigidsym_out_128},
-    {2, 1, rigidsym_in_129, rigidsym_out_129},
-    {2, 3, rigidsym_in_130, rigidsym_out_130},
-    {1, 1, rigidsym_in_131, rigidsym_out_131},
-    {1, 2, rigidsym_in_132, rigidsym_out_132},
-    {1, 1, rigidsym_in_133, rigidsym_out_133},
-    {1, 2, rigidsym_in_134, rigidsym_out_134},
-    {1, 1, rigidsym_in_135, rigidsym_out_135},
-    {1, 1, rigidsym_in_136, rigidsym_out_136},
-    {1, 2, rigidsym_in_137, rigidsym_out_137},
-    {1, 2, rigidsym_in_138, rigidsym_out_138},
+    {4, 1, rigidsym_in_118, rigidsym_out_118},
+    {4, 5, rigidsym_in_119, rigidsym_out_119},
+    {4, 1, rigidsym_in_120, rigidsym_out_120},
+    {4, 5, rigidsym_in_121, rigidsym_out_121},
+    {3, 3, rigidsym_in_122, rigidsym_out_122},
+    {3, 12, rigidsym_in_123, rigidsym_out_123},
+    {3, 2, rigidsym_in_124, rigidsym_out_124},
+    {4, 1, rigidsym_in_125, rigidsym_out_125},
+    {4, 5, rigidsym_in_126, rigidsym_out_126},
+    {7, 1, rigidsym_in_127, rigidsym_out_127},
+    {7, 8, rigidsym_in_128, rigidsym_out_128},
+    {1, 2, rigidsym_in_129, rigidsym_out_129},
+    {7, 1, rigidsym_in_130, rigidsym_out_130},
+    {5, 1, rigidsym_in_131, rigidsym_out_131},
+    {5, 6, rigidsym_in_132, rigidsym_out_132},
+    {2, 1, rigidsym_in_133, rigidsym_out_133},
+    {2, 3, rigidsym_in_134, rigidsym_out_134},
+    {3, 1, rigidsym_in_135, rigidsym_out_135},
+    {3, 4, rigidsym_in_136, rigidsym_out_136},
+    {5, 1, rigidsym_in_137, rigidsym_out_137},
+    {5, 6, rigidsym_in_138, rigidsym_out_138},
     {1, 1, rigidsym_in_139, rigidsym_out_139},
-    {1, 1, rigidsym_in_140, rigidsym_out_140},
-    {1, 2, rigidsym_in_141, rigidsym_out_141},
-    {1, 2, rigidsym_in_142, rigidsym_out_142},
-    {4, 1, rigidsym_in_143, rigidsym_out_143},
-    {4, 5, rigidsym_in_144, rigidsym_out_144},
-    {3, 5, rigidsym_in_145, rigidsym_out_145},
-    {1, 1, rigidsym_in_146, rigidsym_out_146},
-    {1, 2, rigidsym_in_147, rigidsym_out_147},
-    {3, 1, rigidsym_in_148, rigidsym_out_148},
-    {2, 1, rigidsym_in_149, rigidsym_out_149},
-    {2, 3, rigidsym_in_150, rigidsym_out_150},
-    {3, 4, rigidsym_in_151, rigidsym_out_151},
-    {2, 3, rigidsym_in_152, rigidsym_out_152},
-    {2, 9, rigidsym_in_153, rigidsym_out_153},
-    {3, 1, rigidsym_in_154, rigidsym_out_154},
-    {2, 1, rigidsym_in_155, rigidsym_out_155},
-    {2, 3, rigidsym_in_156, rigidsym_out_156},
-    {3, 4, rigidsym_in_157, rigidsym_out_157},
+    {1, 2, rigidsym_in_140, rigidsym_out_140},
+    {2, 1, rigidsym_in_141, rigidsym_out_141},
+    {2, 3, rigidsym_in_142, rigidsym_out_142},
+    {1, 1, rigidsym_in_143, rigidsym_out_143},
+    {1, 2, rigidsym_in_144, rigidsym_out_144},
+    {1, 1, rigidsym_in_145, rigidsym_out_145},
+    {1, 2, rigidsym_in_146, rigidsym_out_146},
+    {1, 1, rigidsym_in_147, rigidsym_out_147},
+    {1, 1, rigidsym_in_148, rigidsym_out_148},
+    {1, 2, rigidsym_in_149, rigidsym_out_149},
+    {1, 2, rigidsym_in_150, rigidsym_out_150},
+    {1, 1, rigidsym_in_151, rigidsym_out_151},
+    {1, 1, rigidsym_in_152, rigidsym_out_152},
+    {1, 2, rigidsym_in_153, rigidsym_out_153},
+    {1, 2, rigidsym_in_154, rigidsym_out_154},
+    {4, 1, rigidsym_in_155, rigidsym_out_155},
+    {4, 5, rigidsym_in_156, rigidsym_out_156},
+    {3, 5, rigidsym_in_157, rigidsym_out_157},
+    {1, 1, rigidsym_in_158, rigidsym_out_158},
+    {1, 2, rigidsym_in_159, rigidsym_out_159},
+    {3, 1, rigidsym_in_160, rigidsym_out_160},
+    {2, 1, rigidsym_in_161, rigidsym_out_161},
+    {2, 3, rigidsym_in_162, rigidsym_out_162},
+    {3, 4, rigidsym_in_163, rigidsym_out_163},
+    {2, 3, rigidsym_in_164, rigidsym_out_164},
+    {2, 9, rigidsym_in_165, rigidsym_out_165},
+    {3, 1, rigidsym_in_166, rigidsym_out_166},
+    {2, 1, rigidsym_in_167, rigidsym_out_167},
+    {2, 3, rigidsym_in_168, rigidsym_out_168},
+    {3, 4, rigidsym_in_169, rigidsym_out_169},
 };
 
 /* Set by _bind(): the Python path, the thread count for threads=None, MIN_PARALLEL, and the
@@ -3020,6 +3128,78 @@ static PyObject *rigidsym_entry_157(PyObject *self, PyObject *const *args,
     (void)self;
     return rigidsym_fast(157, args, nargs, kwnames);
 }
+static PyObject *rigidsym_entry_158(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(158, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_159(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(159, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_160(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(160, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_161(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(161, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_162(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(162, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_163(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(163, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_164(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(164, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_165(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(165, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_166(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(166, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_167(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(167, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_168(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(168, args, nargs, kwnames);
+}
+static PyObject *rigidsym_entry_169(PyObject *self, PyObject *const *args,
+                                     Py_ssize_t nargs, PyObject *kwnames)
+{
+    (void)self;
+    return rigidsym_fast(169, args, nargs, kwnames);
+}
 
 static PyObject *rigidsym_vc_0(PyObject *f, PyObject *const *args, size_t nargsf,
                                     PyObject *kwnames)
@@ -3811,6 +3991,66 @@ static PyObject *rigidsym_vc_157(PyObject *f, PyObject *const *args, size_t narg
 {
     return rigidsym_vcall(157, f, args, nargsf, kwnames);
 }
+static PyObject *rigidsym_vc_158(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(158, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_159(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(159, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_160(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(160, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_161(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(161, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_162(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(162, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_163(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(163, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_164(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(164, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_165(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(165, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_166(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(166, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_167(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(167, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_168(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(168, f, args, nargsf, kwnames);
+}
+static PyObject *rigidsym_vc_169(PyObject *f, PyObject *const *args, size_t nargsf,
+                                    PyObject *kwnames)
+{
+    return rigidsym_vcall(169, f, args, nargsf, kwnames);
+}
 
 static const vectorcallfunc rigidsym_vcs[RIGIDSYM_NKERNELS] = {
     rigidsym_vc_0,
@@ -3971,6 +4211,18 @@ static const vectorcallfunc rigidsym_vcs[RIGIDSYM_NKERNELS] = {
     rigidsym_vc_155,
     rigidsym_vc_156,
     rigidsym_vc_157,
+    rigidsym_vc_158,
+    rigidsym_vc_159,
+    rigidsym_vc_160,
+    rigidsym_vc_161,
+    rigidsym_vc_162,
+    rigidsym_vc_163,
+    rigidsym_vc_164,
+    rigidsym_vc_165,
+    rigidsym_vc_166,
+    rigidsym_vc_167,
+    rigidsym_vc_168,
+    rigidsym_vc_169,
 };
 
 static void rigidsym_set_vectorcall(PyObject *f, vectorcallfunc vc)
@@ -4130,225 +4382,249 @@ static PyMethodDef rigidsym_entry_defs[RIGIDSYM_NKERNELS] = {
      METH_FASTCALL | METH_KEYWORDS, "euler_angle_rates_zyz_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angle_rates_zyz_body (rigidsym.kernels)"},
     {"euler_angle_rates_zyz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_47,
      METH_FASTCALL | METH_KEYWORDS, "euler_angle_rates_zyz_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angle_rates_zyz_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyx_body", (PyCFunction)(void (*)(void))rigidsym_entry_48,
+    {"euler_angles_from_rotation_xyx", (PyCFunction)(void (*)(void))rigidsym_entry_48,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_xyx(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_xyx (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_xyz", (PyCFunction)(void (*)(void))rigidsym_entry_49,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_xyz(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_xyz (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_xzx", (PyCFunction)(void (*)(void))rigidsym_entry_50,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_xzx(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_xzx (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_xzy", (PyCFunction)(void (*)(void))rigidsym_entry_51,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_xzy(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_xzy (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_yxy", (PyCFunction)(void (*)(void))rigidsym_entry_52,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_yxy(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_yxy (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_yxz", (PyCFunction)(void (*)(void))rigidsym_entry_53,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_yxz(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_yxz (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_yzx", (PyCFunction)(void (*)(void))rigidsym_entry_54,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_yzx(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_yzx (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_yzy", (PyCFunction)(void (*)(void))rigidsym_entry_55,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_yzy(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_yzy (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_zxy", (PyCFunction)(void (*)(void))rigidsym_entry_56,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_zxy(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_zxy (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_zxz", (PyCFunction)(void (*)(void))rigidsym_entry_57,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_zxz(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_zxz (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_zyx", (PyCFunction)(void (*)(void))rigidsym_entry_58,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_zyx(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_zyx (rigidsym.kernels)"},
+    {"euler_angles_from_rotation_zyz", (PyCFunction)(void (*)(void))rigidsym_entry_59,
+     METH_FASTCALL | METH_KEYWORDS, "euler_angles_from_rotation_zyz(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_angles_from_rotation_zyz (rigidsym.kernels)"},
+    {"euler_rate_matrix_xyx_body", (PyCFunction)(void (*)(void))rigidsym_entry_60,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyx_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyx_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_49,
+    {"euler_rate_matrix_xyx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_61,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyx_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyx_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_50,
+    {"euler_rate_matrix_xyx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_62,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyx_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyx_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_51,
+    {"euler_rate_matrix_xyx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_63,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyx_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyx_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyz_body", (PyCFunction)(void (*)(void))rigidsym_entry_52,
+    {"euler_rate_matrix_xyz_body", (PyCFunction)(void (*)(void))rigidsym_entry_64,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyz_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyz_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_53,
+    {"euler_rate_matrix_xyz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_65,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyz_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyz_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_54,
+    {"euler_rate_matrix_xyz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_66,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyz_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyz_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_xyz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_55,
+    {"euler_rate_matrix_xyz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_67,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xyz_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xyz_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzx_body", (PyCFunction)(void (*)(void))rigidsym_entry_56,
+    {"euler_rate_matrix_xzx_body", (PyCFunction)(void (*)(void))rigidsym_entry_68,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzx_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzx_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_57,
+    {"euler_rate_matrix_xzx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_69,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzx_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzx_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_58,
+    {"euler_rate_matrix_xzx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_70,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzx_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzx_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_59,
+    {"euler_rate_matrix_xzx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_71,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzx_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzx_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzy_body", (PyCFunction)(void (*)(void))rigidsym_entry_60,
+    {"euler_rate_matrix_xzy_body", (PyCFunction)(void (*)(void))rigidsym_entry_72,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzy_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzy_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_61,
+    {"euler_rate_matrix_xzy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_73,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzy_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzy_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_62,
+    {"euler_rate_matrix_xzy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_74,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzy_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzy_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_xzy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_63,
+    {"euler_rate_matrix_xzy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_75,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_xzy_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_xzy_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxy_body", (PyCFunction)(void (*)(void))rigidsym_entry_64,
+    {"euler_rate_matrix_yxy_body", (PyCFunction)(void (*)(void))rigidsym_entry_76,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxy_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxy_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_65,
+    {"euler_rate_matrix_yxy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_77,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxy_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxy_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_66,
+    {"euler_rate_matrix_yxy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_78,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxy_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxy_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_67,
+    {"euler_rate_matrix_yxy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_79,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxy_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxy_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxz_body", (PyCFunction)(void (*)(void))rigidsym_entry_68,
+    {"euler_rate_matrix_yxz_body", (PyCFunction)(void (*)(void))rigidsym_entry_80,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxz_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxz_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_69,
+    {"euler_rate_matrix_yxz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_81,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxz_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxz_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_70,
+    {"euler_rate_matrix_yxz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_82,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxz_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxz_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_yxz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_71,
+    {"euler_rate_matrix_yxz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_83,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yxz_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yxz_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzx_body", (PyCFunction)(void (*)(void))rigidsym_entry_72,
+    {"euler_rate_matrix_yzx_body", (PyCFunction)(void (*)(void))rigidsym_entry_84,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzx_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzx_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_73,
+    {"euler_rate_matrix_yzx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_85,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzx_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzx_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_74,
+    {"euler_rate_matrix_yzx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_86,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzx_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzx_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_75,
+    {"euler_rate_matrix_yzx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_87,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzx_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzx_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzy_body", (PyCFunction)(void (*)(void))rigidsym_entry_76,
+    {"euler_rate_matrix_yzy_body", (PyCFunction)(void (*)(void))rigidsym_entry_88,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzy_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzy_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_77,
+    {"euler_rate_matrix_yzy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_89,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzy_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzy_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_78,
+    {"euler_rate_matrix_yzy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_90,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzy_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzy_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_yzy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_79,
+    {"euler_rate_matrix_yzy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_91,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_yzy_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_yzy_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxy_body", (PyCFunction)(void (*)(void))rigidsym_entry_80,
+    {"euler_rate_matrix_zxy_body", (PyCFunction)(void (*)(void))rigidsym_entry_92,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxy_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxy_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_81,
+    {"euler_rate_matrix_zxy_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_93,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxy_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxy_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_82,
+    {"euler_rate_matrix_zxy_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_94,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxy_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxy_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_83,
+    {"euler_rate_matrix_zxy_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_95,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxy_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxy_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxz_body", (PyCFunction)(void (*)(void))rigidsym_entry_84,
+    {"euler_rate_matrix_zxz_body", (PyCFunction)(void (*)(void))rigidsym_entry_96,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxz_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxz_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_85,
+    {"euler_rate_matrix_zxz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_97,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxz_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxz_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_86,
+    {"euler_rate_matrix_zxz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_98,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxz_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxz_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_zxz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_87,
+    {"euler_rate_matrix_zxz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_99,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zxz_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zxz_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyx_body", (PyCFunction)(void (*)(void))rigidsym_entry_88,
+    {"euler_rate_matrix_zyx_body", (PyCFunction)(void (*)(void))rigidsym_entry_100,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyx_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyx_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_89,
+    {"euler_rate_matrix_zyx_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_101,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyx_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyx_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_90,
+    {"euler_rate_matrix_zyx_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_102,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyx_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyx_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_91,
+    {"euler_rate_matrix_zyx_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_103,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyx_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyx_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyz_body", (PyCFunction)(void (*)(void))rigidsym_entry_92,
+    {"euler_rate_matrix_zyz_body", (PyCFunction)(void (*)(void))rigidsym_entry_104,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyz_body(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyz_body (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_93,
+    {"euler_rate_matrix_zyz_body_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_105,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyz_body_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyz_body_with_jacobians (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_94,
+    {"euler_rate_matrix_zyz_fixed", (PyCFunction)(void (*)(void))rigidsym_entry_106,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyz_fixed(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyz_fixed (rigidsym.kernels)"},
-    {"euler_rate_matrix_zyz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_95,
+    {"euler_rate_matrix_zyz_fixed_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_107,
      METH_FASTCALL | METH_KEYWORDS, "euler_rate_matrix_zyz_fixed_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rate_matrix_zyz_fixed_with_jacobians (rigidsym.kernels)"},
-    {"euler_rodrigues_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_96,
+    {"euler_rodrigues_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_108,
      METH_FASTCALL | METH_KEYWORDS, "euler_rodrigues_from_rotation(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rodrigues_from_rotation (rigidsym.kernels)"},
-    {"euler_rodrigues_from_rotation_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_97,
+    {"euler_rodrigues_from_rotation_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_109,
      METH_FASTCALL | METH_KEYWORDS, "euler_rodrigues_from_rotation_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rodrigues_from_rotation_with_jacobians (rigidsym.kernels)"},
-    {"euler_rodrigues_product", (PyCFunction)(void (*)(void))rigidsym_entry_98,
+    {"euler_rodrigues_product", (PyCFunction)(void (*)(void))rigidsym_entry_110,
      METH_FASTCALL | METH_KEYWORDS, "euler_rodrigues_product(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rodrigues_product (rigidsym.kernels)"},
-    {"euler_rodrigues_product_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_99,
+    {"euler_rodrigues_product_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_111,
      METH_FASTCALL | METH_KEYWORDS, "euler_rodrigues_product_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel euler_rodrigues_product_with_jacobians (rigidsym.kernels)"},
-    {"exponential_coordinates_from_transform", (PyCFunction)(void (*)(void))rigidsym_entry_100,
+    {"exponential_coordinates_from_transform", (PyCFunction)(void (*)(void))rigidsym_entry_112,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_from_transform(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_from_transform (rigidsym.kernels)"},
-    {"exponential_coordinates_from_transform_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_101,
+    {"exponential_coordinates_from_transform_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_113,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_from_transform_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_from_transform_with_jacobians (rigidsym.kernels)"},
-    {"exponential_coordinates_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_102,
+    {"exponential_coordinates_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_114,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian (rigidsym.kernels)"},
-    {"exponential_coordinates_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_103,
+    {"exponential_coordinates_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_115,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian_inverse(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian_inverse (rigidsym.kernels)"},
-    {"exponential_coordinates_left_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_104,
+    {"exponential_coordinates_left_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_116,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian_inverse_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian_inverse_with_jacobians (rigidsym.kernels)"},
-    {"exponential_coordinates_left_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_105,
+    {"exponential_coordinates_left_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_117,
      METH_FASTCALL | METH_KEYWORDS, "exponential_coordinates_left_jacobian_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel exponential_coordinates_left_jacobian_with_jacobians (rigidsym.kernels)"},
-    {"inertia_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_106,
+    {"inertia_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_118,
      METH_FASTCALL | METH_KEYWORDS, "inertia_at_point(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_at_point (rigidsym.kernels)"},
-    {"inertia_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_107,
+    {"inertia_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_119,
      METH_FASTCALL | METH_KEYWORDS, "inertia_at_point_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_at_point_with_jacobians (rigidsym.kernels)"},
-    {"inertia_dyad_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_108,
+    {"inertia_dyad_at_point", (PyCFunction)(void (*)(void))rigidsym_entry_120,
      METH_FASTCALL | METH_KEYWORDS, "inertia_dyad_at_point(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_dyad_at_point (rigidsym.kernels)"},
-    {"inertia_dyad_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_109,
+    {"inertia_dyad_at_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_121,
      METH_FASTCALL | METH_KEYWORDS, "inertia_dyad_at_point_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel inertia_dyad_at_point_with_jacobians (rigidsym.kernels)"},
-    {"instant_screw_axis", (PyCFunction)(void (*)(void))rigidsym_entry_110,
+    {"instant_screw_axis", (PyCFunction)(void (*)(void))rigidsym_entry_122,
      METH_FASTCALL | METH_KEYWORDS, "instant_screw_axis(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel instant_screw_axis (rigidsym.kernels)"},
-    {"instant_screw_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_111,
+    {"instant_screw_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_123,
      METH_FASTCALL | METH_KEYWORDS, "instant_screw_axis_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel instant_screw_axis_with_jacobians (rigidsym.kernels)"},
-    {"instant_screw_point_pitch", (PyCFunction)(void (*)(void))rigidsym_entry_112,
+    {"instant_screw_point_pitch", (PyCFunction)(void (*)(void))rigidsym_entry_124,
      METH_FASTCALL | METH_KEYWORDS, "instant_screw_point_pitch(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel instant_screw_point_pitch (rigidsym.kernels)"},
-    {"kinetic_energy", (PyCFunction)(void (*)(void))rigidsym_entry_113,
+    {"kinetic_energy", (PyCFunction)(void (*)(void))rigidsym_entry_125,
      METH_FASTCALL | METH_KEYWORDS, "kinetic_energy(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel kinetic_energy (rigidsym.kernels)"},
-    {"kinetic_energy_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_114,
+    {"kinetic_energy_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_126,
      METH_FASTCALL | METH_KEYWORDS, "kinetic_energy_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel kinetic_energy_with_jacobians (rigidsym.kernels)"},
-    {"moving_frame_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_115,
+    {"moving_frame_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_127,
      METH_FASTCALL | METH_KEYWORDS, "moving_frame_acceleration(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel moving_frame_acceleration (rigidsym.kernels)"},
-    {"moving_frame_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_116,
+    {"moving_frame_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_128,
      METH_FASTCALL | METH_KEYWORDS, "moving_frame_acceleration_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel moving_frame_acceleration_with_jacobians (rigidsym.kernels)"},
-    {"natural_invariants_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_117,
+    {"natural_invariants_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_129,
      METH_FASTCALL | METH_KEYWORDS, "natural_invariants_from_rotation(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel natural_invariants_from_rotation (rigidsym.kernels)"},
-    {"newton_euler_residual", (PyCFunction)(void (*)(void))rigidsym_entry_118,
+    {"newton_euler_residual", (PyCFunction)(void (*)(void))rigidsym_entry_130,
      METH_FASTCALL | METH_KEYWORDS, "newton_euler_residual(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel newton_euler_residual (rigidsym.kernels)"},
-    {"newton_euler_wrench", (PyCFunction)(void (*)(void))rigidsym_entry_119,
+    {"newton_euler_wrench", (PyCFunction)(void (*)(void))rigidsym_entry_131,
      METH_FASTCALL | METH_KEYWORDS, "newton_euler_wrench(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel newton_euler_wrench (rigidsym.kernels)"},
-    {"newton_euler_wrench_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_120,
+    {"newton_euler_wrench_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_132,
      METH_FASTCALL | METH_KEYWORDS, "newton_euler_wrench_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel newton_euler_wrench_with_jacobians (rigidsym.kernels)"},
-    {"plucker_from_points", (PyCFunction)(void (*)(void))rigidsym_entry_121,
+    {"plucker_from_points", (PyCFunction)(void (*)(void))rigidsym_entry_133,
      METH_FASTCALL | METH_KEYWORDS, "plucker_from_points(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_from_points (rigidsym.kernels)"},
-    {"plucker_from_points_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_122,
+    {"plucker_from_points_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_134,
      METH_FASTCALL | METH_KEYWORDS, "plucker_from_points_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_from_points_with_jacobians (rigidsym.kernels)"},
-    {"plucker_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_123,
+    {"plucker_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_135,
      METH_FASTCALL | METH_KEYWORDS, "plucker_transfer(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_transfer (rigidsym.kernels)"},
-    {"plucker_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_124,
+    {"plucker_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_136,
      METH_FASTCALL | METH_KEYWORDS, "plucker_transfer_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel plucker_transfer_with_jacobians (rigidsym.kernels)"},
-    {"point_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_125,
+    {"point_acceleration", (PyCFunction)(void (*)(void))rigidsym_entry_137,
      METH_FASTCALL | METH_KEYWORDS, "point_acceleration(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel point_acceleration (rigidsym.kernels)"},
-    {"point_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_126,
+    {"point_acceleration_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_138,
      METH_FASTCALL | METH_KEYWORDS, "point_acceleration_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel point_acceleration_with_jacobians (rigidsym.kernels)"},
-    {"rotation_from_euler_rodrigues", (PyCFunction)(void (*)(void))rigidsym_entry_127,
+    {"rotation_from_euler_rodrigues", (PyCFunction)(void (*)(void))rigidsym_entry_139,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_euler_rodrigues(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_euler_rodrigues (rigidsym.kernels)"},
-    {"rotation_from_euler_rodrigues_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_128,
+    {"rotation_from_euler_rodrigues_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_140,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_euler_rodrigues_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_euler_rodrigues_with_jacobians (rigidsym.kernels)"},
-    {"rotation_from_natural_invariants", (PyCFunction)(void (*)(void))rigidsym_entry_129,
+    {"rotation_from_natural_invariants", (PyCFunction)(void (*)(void))rigidsym_entry_141,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_natural_invariants(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_natural_invariants (rigidsym.kernels)"},
-    {"rotation_from_natural_invariants_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_130,
+    {"rotation_from_natural_invariants_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_142,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_natural_invariants_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_natural_invariants_with_jacobians (rigidsym.kernels)"},
-    {"rotation_from_rotation_vector", (PyCFunction)(void (*)(void))rigidsym_entry_131,
+    {"rotation_from_rotation_vector", (PyCFunction)(void (*)(void))rigidsym_entry_143,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_rotation_vector(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_rotation_vector (rigidsym.kernels)"},
-    {"rotation_from_rotation_vector_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_132,
+    {"rotation_from_rotation_vector_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_144,
      METH_FASTCALL | METH_KEYWORDS, "rotation_from_rotation_vector_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_from_rotation_vector_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_133,
+    {"rotation_vector_from_rotation", (PyCFunction)(void (*)(void))rigidsym_entry_145,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_from_rotation(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_from_rotation (rigidsym.kernels)"},
-    {"rotation_vector_from_rotation_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_134,
+    {"rotation_vector_from_rotation_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_146,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_from_rotation_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_from_rotation_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_135,
+    {"rotation_vector_left_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_147,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_136,
+    {"rotation_vector_left_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_148,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian_inverse(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian_inverse (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_137,
+    {"rotation_vector_left_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_149,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian_inverse_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian_inverse_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_left_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_138,
+    {"rotation_vector_left_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_150,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_left_jacobian_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_left_jacobian_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_139,
+    {"rotation_vector_right_jacobian", (PyCFunction)(void (*)(void))rigidsym_entry_151,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_140,
+    {"rotation_vector_right_jacobian_inverse", (PyCFunction)(void (*)(void))rigidsym_entry_152,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian_inverse(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian_inverse (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_141,
+    {"rotation_vector_right_jacobian_inverse_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_153,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian_inverse_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian_inverse_with_jacobians (rigidsym.kernels)"},
-    {"rotation_vector_right_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_142,
+    {"rotation_vector_right_jacobian_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_154,
      METH_FASTCALL | METH_KEYWORDS, "rotation_vector_right_jacobian_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel rotation_vector_right_jacobian_with_jacobians (rigidsym.kernels)"},
-    {"screw_axis_point", (PyCFunction)(void (*)(void))rigidsym_entry_143,
+    {"screw_axis_point", (PyCFunction)(void (*)(void))rigidsym_entry_155,
      METH_FASTCALL | METH_KEYWORDS, "screw_axis_point(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel screw_axis_point (rigidsym.kernels)"},
-    {"screw_axis_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_144,
+    {"screw_axis_point_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_156,
      METH_FASTCALL | METH_KEYWORDS, "screw_axis_point_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel screw_axis_point_with_jacobians (rigidsym.kernels)"},
-    {"screw_of_displacement", (PyCFunction)(void (*)(void))rigidsym_entry_145,
+    {"screw_of_displacement", (PyCFunction)(void (*)(void))rigidsym_entry_157,
      METH_FASTCALL | METH_KEYWORDS, "screw_of_displacement(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel screw_of_displacement (rigidsym.kernels)"},
-    {"transform_from_exponential_coordinates", (PyCFunction)(void (*)(void))rigidsym_entry_146,
+    {"transform_from_exponential_coordinates", (PyCFunction)(void (*)(void))rigidsym_entry_158,
      METH_FASTCALL | METH_KEYWORDS, "transform_from_exponential_coordinates(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel transform_from_exponential_coordinates (rigidsym.kernels)"},
-    {"transform_from_exponential_coordinates_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_147,
+    {"transform_from_exponential_coordinates_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_159,
      METH_FASTCALL | METH_KEYWORDS, "transform_from_exponential_coordinates_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel transform_from_exponential_coordinates_with_jacobians (rigidsym.kernels)"},
-    {"twist_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_148,
+    {"twist_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_160,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer (rigidsym.kernels)"},
-    {"twist_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_149,
+    {"twist_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_161,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer_matrix(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer_matrix (rigidsym.kernels)"},
-    {"twist_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_150,
+    {"twist_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_162,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer_matrix_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer_matrix_with_jacobians (rigidsym.kernels)"},
-    {"twist_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_151,
+    {"twist_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_163,
      METH_FASTCALL | METH_KEYWORDS, "twist_transfer_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel twist_transfer_with_jacobians (rigidsym.kernels)"},
-    {"wrench_axis", (PyCFunction)(void (*)(void))rigidsym_entry_152,
+    {"wrench_axis", (PyCFunction)(void (*)(void))rigidsym_entry_164,
      METH_FASTCALL | METH_KEYWORDS, "wrench_axis(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_axis (rigidsym.kernels)"},
-    {"wrench_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_153,
+    {"wrench_axis_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_165,
      METH_FASTCALL | METH_KEYWORDS, "wrench_axis_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_axis_with_jacobians (rigidsym.kernels)"},
-    {"wrench_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_154,
+    {"wrench_transfer", (PyCFunction)(void (*)(void))rigidsym_entry_166,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer (rigidsym.kernels)"},
-    {"wrench_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_155,
+    {"wrench_transfer_matrix", (PyCFunction)(void (*)(void))rigidsym_entry_167,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer_matrix(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer_matrix (rigidsym.kernels)"},
-    {"wrench_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_156,
+    {"wrench_transfer_matrix_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_168,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer_matrix_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer_matrix_with_jacobians (rigidsym.kernels)"},
-    {"wrench_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_157,
+    {"wrench_transfer_with_jacobians", (PyCFunction)(void (*)(void))rigidsym_entry_169,
      METH_FASTCALL | METH_KEYWORDS, "wrench_transfer_with_jacobians(*inputs, out=None, check=True, on_singular=None, threads=None): the entry point of kernel wrench_transfer_with_jacobians (rigidsym.kernels)"},
 };
 

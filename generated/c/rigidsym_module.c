@@ -27,7 +27,7 @@ __attribute__((used))
 #endif
 static const char rigidsym_sources_tag[] = "rigidsym-sources:" RIGIDSYM_SOURCES;
 
-#define RIGIDSYM_NKERNELS 158
+#define RIGIDSYM_NKERNELS 170
 #define RIGIDSYM_MAXARRAYS 15
 
 /* the path chosen when the module was first executed (the same for every import) */
@@ -522,125 +522,125 @@ static int64_t rigidsym_call_47(const rigidsym_fns *f, int f32, int64_t n, int t
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_48[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_48[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_48(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_49[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_49[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_49(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_50[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_50[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_50(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_51[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_51[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_51(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_52[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_52[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_52(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_53[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_53[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_53(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_54[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_54[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_54(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_55[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_55[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_55(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_56[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_56[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_56(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_57[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_57[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_57(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_58[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_58[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_58(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_59[] = {3, 9, 27};
+static const Py_ssize_t rigidsym_sizes_59[] = {9, 3, 3, 1};
 static int64_t rigidsym_call_59(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3]);
 }
 static const Py_ssize_t rigidsym_sizes_60[] = {3, 9};
 static int64_t rigidsym_call_60(const rigidsym_fns *f, int f32, int64_t n, int t,
@@ -1002,7 +1002,7 @@ static int64_t rigidsym_call_95(const rigidsym_fns *f, int f32, int64_t n, int t
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_96[] = {9, 4};
+static const Py_ssize_t rigidsym_sizes_96[] = {3, 9};
 static int64_t rigidsym_call_96(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1012,7 +1012,7 @@ static int64_t rigidsym_call_96(const rigidsym_fns *f, int f32, int64_t n, int t
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_97[] = {9, 4, 36};
+static const Py_ssize_t rigidsym_sizes_97[] = {3, 9, 27};
 static int64_t rigidsym_call_97(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1022,27 +1022,27 @@ static int64_t rigidsym_call_97(const rigidsym_fns *f, int f32, int64_t n, int t
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_98[] = {4, 4, 4};
+static const Py_ssize_t rigidsym_sizes_98[] = {3, 9};
 static int64_t rigidsym_call_98(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_99[] = {4, 4, 4, 16, 16};
+static const Py_ssize_t rigidsym_sizes_99[] = {3, 9, 27};
 static int64_t rigidsym_call_99(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_100[] = {16, 6};
+static const Py_ssize_t rigidsym_sizes_100[] = {3, 9};
 static int64_t rigidsym_call_100(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1052,7 +1052,7 @@ static int64_t rigidsym_call_100(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_101[] = {16, 6, 96};
+static const Py_ssize_t rigidsym_sizes_101[] = {3, 9, 27};
 static int64_t rigidsym_call_101(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1062,7 +1062,7 @@ static int64_t rigidsym_call_101(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_102[] = {6, 36};
+static const Py_ssize_t rigidsym_sizes_102[] = {3, 9};
 static int64_t rigidsym_call_102(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1072,18 +1072,8 @@ static int64_t rigidsym_call_102(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_103[] = {6, 36};
+static const Py_ssize_t rigidsym_sizes_103[] = {3, 9, 27};
 static int64_t rigidsym_call_103(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_104[] = {6, 36, 216};
-static int64_t rigidsym_call_104(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1092,7 +1082,17 @@ static int64_t rigidsym_call_104(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_105[] = {6, 36, 216};
+static const Py_ssize_t rigidsym_sizes_104[] = {3, 9};
+static int64_t rigidsym_call_104(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_105[] = {3, 9, 27};
 static int64_t rigidsym_call_105(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1102,117 +1102,117 @@ static int64_t rigidsym_call_105(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_106[] = {9, 1, 3, 3, 9};
+static const Py_ssize_t rigidsym_sizes_106[] = {3, 9};
 static int64_t rigidsym_call_106(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_107[] = {9, 1, 3, 3, 9, 81, 9, 27, 27};
+static const Py_ssize_t rigidsym_sizes_107[] = {3, 9, 27};
 static int64_t rigidsym_call_107(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_108[] = {9, 1, 3, 3, 36};
+static const Py_ssize_t rigidsym_sizes_108[] = {9, 4};
 static int64_t rigidsym_call_108(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_109[] = {9, 1, 3, 3, 36, 324, 36, 108, 108};
+static const Py_ssize_t rigidsym_sizes_109[] = {9, 4, 36};
 static int64_t rigidsym_call_109(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_110[] = {3, 3, 3, 3, 1, 6};
+static const Py_ssize_t rigidsym_sizes_110[] = {4, 4, 4};
 static int64_t rigidsym_call_110(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_111[] = {3, 3, 3, 3, 1, 6, 9, 9, 9, 3, 3, 3, 18, 18, 18};
+static const Py_ssize_t rigidsym_sizes_111[] = {4, 4, 4, 16, 16};
 static int64_t rigidsym_call_111(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_112[] = {3, 3, 3, 3, 1};
+static const Py_ssize_t rigidsym_sizes_112[] = {16, 6};
 static int64_t rigidsym_call_112(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_113[] = {9, 1, 3, 3, 1};
+static const Py_ssize_t rigidsym_sizes_113[] = {16, 6, 96};
 static int64_t rigidsym_call_113(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_114[] = {9, 1, 3, 3, 1, 9, 1, 3, 3};
+static const Py_ssize_t rigidsym_sizes_114[] = {6, 36};
 static int64_t rigidsym_call_114(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_115[] = {3, 9, 3, 3, 3, 3, 3, 3};
+static const Py_ssize_t rigidsym_sizes_115[] = {6, 36};
 static int64_t rigidsym_call_115(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_116[] = {3, 9, 3, 3, 3, 3, 3, 3, 9, 27, 9, 9, 9, 9, 9};
+static const Py_ssize_t rigidsym_sizes_116[] = {6, 36, 216};
 static int64_t rigidsym_call_116(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_117[] = {9, 3, 1};
+static const Py_ssize_t rigidsym_sizes_117[] = {6, 36, 216};
 static int64_t rigidsym_call_117(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1222,8 +1222,98 @@ static int64_t rigidsym_call_117(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_118[] = {9, 1, 3, 3, 3, 3, 3, 6};
+static const Py_ssize_t rigidsym_sizes_118[] = {9, 1, 3, 3, 9};
 static int64_t rigidsym_call_118(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_119[] = {9, 1, 3, 3, 9, 81, 9, 27, 27};
+static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_120[] = {9, 1, 3, 3, 36};
+static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_121[] = {9, 1, 3, 3, 36, 324, 36, 108, 108};
+static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_122[] = {3, 3, 3, 3, 1, 6};
+static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
+}
+static const Py_ssize_t rigidsym_sizes_123[] = {3, 3, 3, 3, 1, 6, 9, 9, 9, 3, 3, 3, 18, 18, 18};
+static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+}
+static const Py_ssize_t rigidsym_sizes_124[] = {3, 3, 3, 3, 1};
+static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_125[] = {9, 1, 3, 3, 1};
+static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_126[] = {9, 1, 3, 3, 1, 9, 1, 3, 3};
+static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
+}
+static const Py_ssize_t rigidsym_sizes_127[] = {3, 9, 3, 3, 3, 3, 3, 3};
+static int64_t rigidsym_call_127(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1232,8 +1322,38 @@ static int64_t rigidsym_call_118(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
 }
-static const Py_ssize_t rigidsym_sizes_119[] = {9, 1, 3, 3, 3, 6};
-static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_128[] = {3, 9, 3, 3, 3, 3, 3, 3, 9, 27, 9, 9, 9, 9, 9};
+static int64_t rigidsym_call_128(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *, float *, float *, float *, float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10], p[11], p[12], p[13], p[14]);
+}
+static const Py_ssize_t rigidsym_sizes_129[] = {9, 3, 1};
+static int64_t rigidsym_call_129(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_130[] = {9, 1, 3, 3, 3, 3, 3, 6};
+static int64_t rigidsym_call_130(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, const float *, const float *, const float *, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
+}
+static const Py_ssize_t rigidsym_sizes_131[] = {9, 1, 3, 3, 3, 6};
+static int64_t rigidsym_call_131(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1242,8 +1362,8 @@ static int64_t rigidsym_call_119(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
 }
-static const Py_ssize_t rigidsym_sizes_120[] = {9, 1, 3, 3, 3, 6, 54, 6, 18, 18, 18};
-static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_132[] = {9, 1, 3, 3, 3, 6, 54, 6, 18, 18, 18};
+static int64_t rigidsym_call_132(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1252,8 +1372,8 @@ static int64_t rigidsym_call_120(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
 }
-static const Py_ssize_t rigidsym_sizes_121[] = {3, 3, 6};
-static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_133[] = {3, 3, 6};
+static int64_t rigidsym_call_133(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1262,8 +1382,8 @@ static int64_t rigidsym_call_121(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_122[] = {3, 3, 6, 18, 18};
-static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_134[] = {3, 3, 6, 18, 18};
+static int64_t rigidsym_call_134(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1272,8 +1392,8 @@ static int64_t rigidsym_call_122(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_123[] = {6, 3, 3, 6};
-static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_135[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_135(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1282,8 +1402,8 @@ static int64_t rigidsym_call_123(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_124[] = {6, 3, 3, 6, 36, 18, 18};
-static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_136[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_136(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1292,8 +1412,8 @@ static int64_t rigidsym_call_124(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
 }
-static const Py_ssize_t rigidsym_sizes_125[] = {3, 3, 3, 3, 3, 3};
-static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_137[] = {3, 3, 3, 3, 3, 3};
+static int64_t rigidsym_call_137(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1302,8 +1422,8 @@ static int64_t rigidsym_call_125(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5]);
 }
-static const Py_ssize_t rigidsym_sizes_126[] = {3, 3, 3, 3, 3, 3, 9, 9, 9, 9, 9};
-static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_138[] = {3, 3, 3, 3, 3, 3, 9, 9, 9, 9, 9};
+static int64_t rigidsym_call_138(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1312,127 +1432,7 @@ static int64_t rigidsym_call_126(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
 }
-static const Py_ssize_t rigidsym_sizes_127[] = {4, 9};
-static int64_t rigidsym_call_127(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_128[] = {4, 9, 36};
-static int64_t rigidsym_call_128(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_129[] = {3, 1, 9};
-static int64_t rigidsym_call_129(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_130[] = {3, 1, 9, 27, 9};
-static int64_t rigidsym_call_130(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2], p[3], p[4]);
-    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2], p[3], p[4]);
-}
-static const Py_ssize_t rigidsym_sizes_131[] = {3, 9};
-static int64_t rigidsym_call_131(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_132[] = {3, 9, 27};
-static int64_t rigidsym_call_132(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_133[] = {9, 3};
-static int64_t rigidsym_call_133(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_134[] = {9, 3, 27};
-static int64_t rigidsym_call_134(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_135[] = {3, 9};
-static int64_t rigidsym_call_135(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_136[] = {3, 9};
-static int64_t rigidsym_call_136(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
-            n, t, p[0], p[1]);
-    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
-        n, t, p[0], p[1]);
-}
-static const Py_ssize_t rigidsym_sizes_137[] = {3, 9, 27};
-static int64_t rigidsym_call_137(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_138[] = {3, 9, 27};
-static int64_t rigidsym_call_138(const rigidsym_fns *f, int f32, int64_t n, int t,
-                                   void **p)
-{
-    if (f32)
-        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
-            n, t, p[0], p[1], p[2]);
-    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
-        n, t, p[0], p[1], p[2]);
-}
-static const Py_ssize_t rigidsym_sizes_139[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_139[] = {4, 9};
 static int64_t rigidsym_call_139(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
@@ -1442,8 +1442,38 @@ static int64_t rigidsym_call_139(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_140[] = {3, 9};
+static const Py_ssize_t rigidsym_sizes_140[] = {4, 9, 36};
 static int64_t rigidsym_call_140(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_141[] = {3, 1, 9};
+static int64_t rigidsym_call_141(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_142[] = {3, 1, 9, 27, 9};
+static int64_t rigidsym_call_142(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, const float *, float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2], p[3], p[4]);
+    return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2], p[3], p[4]);
+}
+static const Py_ssize_t rigidsym_sizes_143[] = {3, 9};
+static int64_t rigidsym_call_143(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1452,8 +1482,8 @@ static int64_t rigidsym_call_140(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_141[] = {3, 9, 27};
-static int64_t rigidsym_call_141(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_144[] = {3, 9, 27};
+static int64_t rigidsym_call_144(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1462,8 +1492,18 @@ static int64_t rigidsym_call_141(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_142[] = {3, 9, 27};
-static int64_t rigidsym_call_142(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_145[] = {9, 3};
+static int64_t rigidsym_call_145(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_146[] = {9, 3, 27};
+static int64_t rigidsym_call_146(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1472,8 +1512,88 @@ static int64_t rigidsym_call_142(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_143[] = {3, 1, 3, 3, 3};
-static int64_t rigidsym_call_143(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_147[] = {3, 9};
+static int64_t rigidsym_call_147(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_148[] = {3, 9};
+static int64_t rigidsym_call_148(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_149[] = {3, 9, 27};
+static int64_t rigidsym_call_149(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_150[] = {3, 9, 27};
+static int64_t rigidsym_call_150(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_151[] = {3, 9};
+static int64_t rigidsym_call_151(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_152[] = {3, 9};
+static int64_t rigidsym_call_152(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *))f->f32)(
+            n, t, p[0], p[1]);
+    return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
+        n, t, p[0], p[1]);
+}
+static const Py_ssize_t rigidsym_sizes_153[] = {3, 9, 27};
+static int64_t rigidsym_call_153(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_154[] = {3, 9, 27};
+static int64_t rigidsym_call_154(const rigidsym_fns *f, int f32, int64_t n, int t,
+                                   void **p)
+{
+    if (f32)
+        return ((int64_t (*)(int64_t, int, const float *, float *, float *))f->f32)(
+            n, t, p[0], p[1], p[2]);
+    return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
+        n, t, p[0], p[1], p[2]);
+}
+static const Py_ssize_t rigidsym_sizes_155[] = {3, 1, 3, 3, 3};
+static int64_t rigidsym_call_155(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1482,8 +1602,8 @@ static int64_t rigidsym_call_143(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_144[] = {3, 1, 3, 3, 3, 9, 3, 9, 9};
-static int64_t rigidsym_call_144(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_156[] = {3, 1, 3, 3, 3, 9, 3, 9, 9};
+static int64_t rigidsym_call_156(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1492,8 +1612,8 @@ static int64_t rigidsym_call_144(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]);
 }
-static const Py_ssize_t rigidsym_sizes_145[] = {9, 3, 3, 3, 1, 3, 1, 6};
-static int64_t rigidsym_call_145(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_157[] = {9, 3, 3, 3, 1, 3, 1, 6};
+static int64_t rigidsym_call_157(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1502,8 +1622,8 @@ static int64_t rigidsym_call_145(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]);
 }
-static const Py_ssize_t rigidsym_sizes_146[] = {6, 16};
-static int64_t rigidsym_call_146(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_158[] = {6, 16};
+static int64_t rigidsym_call_158(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1512,8 +1632,8 @@ static int64_t rigidsym_call_146(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *))f->f64)(
         n, t, p[0], p[1]);
 }
-static const Py_ssize_t rigidsym_sizes_147[] = {6, 16, 96};
-static int64_t rigidsym_call_147(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_159[] = {6, 16, 96};
+static int64_t rigidsym_call_159(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1522,8 +1642,8 @@ static int64_t rigidsym_call_147(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_148[] = {6, 3, 3, 6};
-static int64_t rigidsym_call_148(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_160[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_160(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1532,8 +1652,8 @@ static int64_t rigidsym_call_148(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_149[] = {3, 3, 36};
-static int64_t rigidsym_call_149(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_161[] = {3, 3, 36};
+static int64_t rigidsym_call_161(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1542,8 +1662,8 @@ static int64_t rigidsym_call_149(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_150[] = {3, 3, 36, 108, 108};
-static int64_t rigidsym_call_150(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_162[] = {3, 3, 36, 108, 108};
+static int64_t rigidsym_call_162(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1552,8 +1672,8 @@ static int64_t rigidsym_call_150(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_151[] = {6, 3, 3, 6, 36, 18, 18};
-static int64_t rigidsym_call_151(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_163[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_163(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1562,8 +1682,8 @@ static int64_t rigidsym_call_151(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6]);
 }
-static const Py_ssize_t rigidsym_sizes_152[] = {6, 3, 3, 1, 6};
-static int64_t rigidsym_call_152(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_164[] = {6, 3, 3, 1, 6};
+static int64_t rigidsym_call_164(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1572,8 +1692,8 @@ static int64_t rigidsym_call_152(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_153[] = {6, 3, 3, 1, 6, 18, 9, 6, 3, 36, 18};
-static int64_t rigidsym_call_153(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_165[] = {6, 3, 3, 1, 6, 18, 9, 6, 3, 36, 18};
+static int64_t rigidsym_call_165(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1582,8 +1702,8 @@ static int64_t rigidsym_call_153(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *, double *, double *, double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8], p[9], p[10]);
 }
-static const Py_ssize_t rigidsym_sizes_154[] = {6, 3, 3, 6};
-static int64_t rigidsym_call_154(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_166[] = {6, 3, 3, 6};
+static int64_t rigidsym_call_166(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1592,8 +1712,8 @@ static int64_t rigidsym_call_154(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3]);
 }
-static const Py_ssize_t rigidsym_sizes_155[] = {3, 3, 36};
-static int64_t rigidsym_call_155(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_167[] = {3, 3, 36};
+static int64_t rigidsym_call_167(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1602,8 +1722,8 @@ static int64_t rigidsym_call_155(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *))f->f64)(
         n, t, p[0], p[1], p[2]);
 }
-static const Py_ssize_t rigidsym_sizes_156[] = {3, 3, 36, 108, 108};
-static int64_t rigidsym_call_156(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_168[] = {3, 3, 36, 108, 108};
+static int64_t rigidsym_call_168(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1612,8 +1732,8 @@ static int64_t rigidsym_call_156(const rigidsym_fns *f, int f32, int64_t n, int 
     return ((int64_t (*)(int64_t, int, const double *, const double *, double *, double *, double *))f->f64)(
         n, t, p[0], p[1], p[2], p[3], p[4]);
 }
-static const Py_ssize_t rigidsym_sizes_157[] = {6, 3, 3, 6, 36, 18, 18};
-static int64_t rigidsym_call_157(const rigidsym_fns *f, int f32, int64_t n, int t,
+static const Py_ssize_t rigidsym_sizes_169[] = {6, 3, 3, 6, 36, 18, 18};
+static int64_t rigidsym_call_169(const rigidsym_fns *f, int f32, int64_t n, int t,
                                    void **p)
 {
     if (f32)
@@ -1672,116 +1792,128 @@ static const rigidsym_kernel rigidsym_kernels[RIGIDSYM_NKERNELS] = {
     {"euler_angle_rates_zyx_fixed", 2, 1, rigidsym_sizes_45, rigidsym_call_45},
     {"euler_angle_rates_zyz_body", 2, 1, rigidsym_sizes_46, rigidsym_call_46},
     {"euler_angle_rates_zyz_fixed", 2, 1, rigidsym_sizes_47, rigidsym_call_47},
-    {"euler_rate_matrix_xyx_body", 1, 1, rigidsym_sizes_48, rigidsym_call_48},
-    {"euler_rate_matrix_xyx_body_with_jacobians", 1, 2, rigidsym_sizes_49, rigidsym_call_49},
-    {"euler_rate_matrix_xyx_fixed", 1, 1, rigidsym_sizes_50, rigidsym_call_50},
-    {"euler_rate_matrix_xyx_fixed_with_jacobians", 1, 2, rigidsym_sizes_51, rigidsym_call_51},
-    {"euler_rate_matrix_xyz_body", 1, 1, rigidsym_sizes_52, rigidsym_call_52},
-    {"euler_rate_matrix_xyz_body_with_jacobians", 1, 2, rigidsym_sizes_53, rigidsym_call_53},
-    {"euler_rate_matrix_xyz_fixed", 1, 1, rigidsym_sizes_54, rigidsym_call_54},
-    {"euler_rate_matrix_xyz_fixed_with_jacobians", 1, 2, rigidsym_sizes_55, rigidsym_call_55},
-    {"euler_rate_matrix_xzx_body", 1, 1, rigidsym_sizes_56, rigidsym_call_56},
-    {"euler_rate_matrix_xzx_body_with_jacobians", 1, 2, rigidsym_sizes_57, rigidsym_call_57},
-    {"euler_rate_matrix_xzx_fixed", 1, 1, rigidsym_sizes_58, rigidsym_call_58},
-    {"euler_rate_matrix_xzx_fixed_with_jacobians", 1, 2, rigidsym_sizes_59, rigidsym_call_59},
-    {"euler_rate_matrix_xzy_body", 1, 1, rigidsym_sizes_60, rigidsym_call_60},
-    {"euler_rate_matrix_xzy_body_with_jacobians", 1, 2, rigidsym_sizes_61, rigidsym_call_61},
-    {"euler_rate_matrix_xzy_fixed", 1, 1, rigidsym_sizes_62, rigidsym_call_62},
-    {"euler_rate_matrix_xzy_fixed_with_jacobians", 1, 2, rigidsym_sizes_63, rigidsym_call_63},
-    {"euler_rate_matrix_yxy_body", 1, 1, rigidsym_sizes_64, rigidsym_call_64},
-    {"euler_rate_matrix_yxy_body_with_jacobians", 1, 2, rigidsym_sizes_65, rigidsym_call_65},
-    {"euler_rate_matrix_yxy_fixed", 1, 1, rigidsym_sizes_66, rigidsym_call_66},
-    {"euler_rate_matrix_yxy_fixed_with_jacobians", 1, 2, rigidsym_sizes_67, rigidsym_call_67},
-    {"euler_rate_matrix_yxz_body", 1, 1, rigidsym_sizes_68, rigidsym_call_68},
-    {"euler_rate_matrix_yxz_body_with_jacobians", 1, 2, rigidsym_sizes_69, rigidsym_call_69},
-    {"euler_rate_matrix_yxz_fixed", 1, 1, rigidsym_sizes_70, rigidsym_call_70},
-    {"euler_rate_matrix_yxz_fixed_with_jacobians", 1, 2, rigidsym_sizes_71, rigidsym_call_71},
-    {"euler_rate_matrix_yzx_body", 1, 1, rigidsym_sizes_72, rigidsym_call_72},
-    {"euler_rate_matrix_yzx_body_with_jacobians", 1, 2, rigidsym_sizes_73, rigidsym_call_73},
-    {"euler_rate_matrix_yzx_fixed", 1, 1, rigidsym_sizes_74, rigidsym_call_74},
-    {"euler_rate_matrix_yzx_fixed_with_jacobians", 1, 2, rigidsym_sizes_75, rigidsym_call_75},
-    {"euler_rate_matrix_yzy_body", 1, 1, rigidsym_sizes_76, rigidsym_call_76},
-    {"euler_rate_matrix_yzy_body_with_jacobians", 1, 2, rigidsym_sizes_77, rigidsym_call_77},
-    {"euler_rate_matrix_yzy_fixed", 1, 1, rigidsym_sizes_78, rigidsym_call_78},
-    {"euler_rate_matrix_yzy_fixed_with_jacobians", 1, 2, rigidsym_sizes_79, rigidsym_call_79},
-    {"euler_rate_matrix_zxy_body", 1, 1, rigidsym_sizes_80, rigidsym_call_80},
-    {"euler_rate_matrix_zxy_body_with_jacobians", 1, 2, rigidsym_sizes_81, rigidsym_call_81},
-    {"euler_rate_matrix_zxy_fixed", 1, 1, rigidsym_sizes_82, rigidsym_call_82},
-    {"euler_rate_matrix_zxy_fixed_with_jacobians", 1, 2, rigidsym_sizes_83, rigidsym_call_83},
-    {"euler_rate_matrix_zxz_body", 1, 1, rigidsym_sizes_84, rigidsym_call_84},
-    {"euler_rate_matrix_zxz_body_with_jacobians", 1, 2, rigidsym_sizes_85, rigidsym_call_85},
-    {"euler_rate_matrix_zxz_fixed", 1, 1, rigidsym_sizes_86, rigidsym_call_86},
-    {"euler_rate_matrix_zxz_fixed_with_jacobians", 1, 2, rigidsym_sizes_87, rigidsym_call_87},
-    {"euler_rate_matrix_zyx_body", 1, 1, rigidsym_sizes_88, rigidsym_call_88},
-    {"euler_rate_matrix_zyx_body_with_jacobians", 1, 2, rigidsym_sizes_89, rigidsym_call_89},
-    {"euler_rate_matrix_zyx_fixed", 1, 1, rigidsym_sizes_90, rigidsym_call_90},
-    {"euler_rate_matrix_zyx_fixed_with_jacobians", 1, 2, rigidsym_sizes_91, rigidsym_call_91},
-    {"euler_rate_matrix_zyz_body", 1, 1, rigidsym_sizes_92, rigidsym_call_92},
-    {"euler_rate_matrix_zyz_body_with_jacobians", 1, 2, rigidsym_sizes_93, rigidsym_call_93},
-    {"euler_rate_matrix_zyz_fixed", 1, 1, rigidsym_sizes_94, rigidsym_call_94},
-    {"euler_rate_matrix_zyz_fixed_with_jacobians", 1, 2, rigidsym_sizes_95, rigidsym_call_95},
-    {"euler_rodrigues_from_rotation", 1, 1, rigidsym_sizes_96, rigidsym_call_96},
-    {"euler_rodrigues_from_rotation_with_jacobians", 1, 2, rigidsym_sizes_97, rigidsym_call_97},
-    {"euler_rodrigues_product", 2, 1, rigidsym_sizes_98, rigidsym_call_98},
-    {"euler_rodrigues_product_with_jacobians", 2, 3, rigidsym_sizes_99, rigidsym_call_99},
-    {"exponential_coordinates_from_transform", 1, 1, rigidsym_sizes_100, rigidsym_call_100},
-    {"exponential_coordinates_from_transform_with_jacobians", 1, 2, rigidsym_sizes_101, rigidsym_call_101},
-    {"exponential_coordinates_left_jacobian", 1, 1, rigidsym_sizes_102, rigidsym_call_102},
-    {"exponential_coordinates_left_jacobian_inverse", 1, 1, rigidsym_sizes_103, rigidsym_call_103},
-    {"exponential_coordinates_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_104, rigidsym_call_104},
-    {"exponential_coordinates_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_105, rigidsym_call_105},
-    {"inertia_at_point", 4, 1, rigidsym_sizes_106, rigidsym_call_106},
-    {"inertia_at_point_with_jacobians", 4, 5, rigidsym_sizes_107, rigidsym_call_107},
-    {"inertia_dyad_at_point", 4, 1, rigidsym_sizes_108, rigidsym_call_108},
-    {"inertia_dyad_at_point_with_jacobians", 4, 5, rigidsym_sizes_109, rigidsym_call_109},
-    {"instant_screw_axis", 3, 3, rigidsym_sizes_110, rigidsym_call_110},
-    {"instant_screw_axis_with_jacobians", 3, 12, rigidsym_sizes_111, rigidsym_call_111},
-    {"instant_screw_point_pitch", 3, 2, rigidsym_sizes_112, rigidsym_call_112},
-    {"kinetic_energy", 4, 1, rigidsym_sizes_113, rigidsym_call_113},
-    {"kinetic_energy_with_jacobians", 4, 5, rigidsym_sizes_114, rigidsym_call_114},
-    {"moving_frame_acceleration", 7, 1, rigidsym_sizes_115, rigidsym_call_115},
-    {"moving_frame_acceleration_with_jacobians", 7, 8, rigidsym_sizes_116, rigidsym_call_116},
-    {"natural_invariants_from_rotation", 1, 2, rigidsym_sizes_117, rigidsym_call_117},
-    {"newton_euler_residual", 7, 1, rigidsym_sizes_118, rigidsym_call_118},
-    {"newton_euler_wrench", 5, 1, rigidsym_sizes_119, rigidsym_call_119},
-    {"newton_euler_wrench_with_jacobians", 5, 6, rigidsym_sizes_120, rigidsym_call_120},
-    {"plucker_from_points", 2, 1, rigidsym_sizes_121, rigidsym_call_121},
-    {"plucker_from_points_with_jacobians", 2, 3, rigidsym_sizes_122, rigidsym_call_122},
-    {"plucker_transfer", 3, 1, rigidsym_sizes_123, rigidsym_call_123},
-    {"plucker_transfer_with_jacobians", 3, 4, rigidsym_sizes_124, rigidsym_call_124},
-    {"point_acceleration", 5, 1, rigidsym_sizes_125, rigidsym_call_125},
-    {"point_acceleration_with_jacobians", 5, 6, rigidsym_sizes_126, rigidsym_call_126},
-    {"rotation_from_euler_rodrigues", 1, 1, rigidsym_sizes_127, rigidsym_call_127},
-    {"rotation_from_euler_rodrigues_with_jacobians", 1, 2, rigidsym_sizes_128, rigidsym_call_128},
-    {"rotation_from_natural_invariants", 2, 1, rigidsym_sizes_129, rigidsym_call_129},
-    {"rotation_from_natural_invariants_with_jacobians", 2, 3, rigidsym_sizes_130, rigidsym_call_130},
-    {"rotation_from_rotation_vector", 1, 1, rigidsym_sizes_131, rigidsym_call_131},
-    {"rotation_from_rotation_vector_with_jacobians", 1, 2, rigidsym_sizes_132, rigidsym_call_132},
-    {"rotation_vector_from_rotation", 1, 1, rigidsym_sizes_133, rigidsym_call_133},
-    {"rotation_vector_from_rotation_with_jacobians", 1, 2, rigidsym_sizes_134, rigidsym_call_134},
-    {"rotation_vector_left_jacobian", 1, 1, rigidsym_sizes_135, rigidsym_call_135},
-    {"rotation_vector_left_jacobian_inverse", 1, 1, rigidsym_sizes_136, rigidsym_call_136},
-    {"rotation_vector_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_137, rigidsym_call_137},
-    {"rotation_vector_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_138, rigidsym_call_138},
-    {"rotation_vector_right_jacobian", 1, 1, rigidsym_sizes_139, rigidsym_call_139},
-    {"rotation_vector_right_jacobian_inverse", 1, 1, rigidsym_sizes_140, rigidsym_call_140},
-    {"rotation_vector_right_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_141, rigidsym_call_141},
-    {"rotation_vector_right_jacobian_with_jacobians", 1, 2, rigidsym_sizes_142, rigidsym_call_142},
-    {"screw_axis_point", 4, 1, rigidsym_sizes_143, rigidsym_call_143},
-    {"screw_axis_point_with_jacobians", 4, 5, rigidsym_sizes_144, rigidsym_call_144},
-    {"screw_of_displacement", 3, 5, rigidsym_sizes_145, rigidsym_call_145},
-    {"transform_from_exponential_coordinates", 1, 1, rigidsym_sizes_146, rigidsym_call_146},
-    {"transform_from_exponential_coordinates_with_jacobians", 1, 2, rigidsym_sizes_147, rigidsym_call_147},
-    {"twist_transfer", 3, 1, rigidsym_sizes_148, rigidsym_call_148},
-    {"twist_transfer_matrix", 2, 1, rigidsym_sizes_149, rigidsym_call_149},
-    {"twist_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_150, rigidsym_call_150},
-    {"twist_transfer_with_jacobians", 3, 4, rigidsym_sizes_151, rigidsym_call_151},
-    {"wrench_axis", 2, 3, rigidsym_sizes_152, rigidsym_call_152},
-    {"wrench_axis_with_jacobians", 2, 9, rigidsym_sizes_153, rigidsym_call_153},
-    {"wrench_transfer", 3, 1, rigidsym_sizes_154, rigidsym_call_154},
-    {"wrench_transfer_matrix", 2, 1, rigidsym_sizes_155, rigidsym_call_155},
-    {"wrench_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_156, rigidsym_call_156},
-    {"wrench_transfer_with_jacobians", 3, 4, rigidsym_sizes_157, rigidsym_call_157},
+    {"euler_angles_from_rotation_xyx", 1, 3, rigidsym_sizes_48, rigidsym_call_48},
+    {"euler_angles_from_rotation_xyz", 1, 3, rigidsym_sizes_49, rigidsym_call_49},
+    {"euler_angles_from_rotation_xzx", 1, 3, rigidsym_sizes_50, rigidsym_call_50},
+    {"euler_angles_from_rotation_xzy", 1, 3, rigidsym_sizes_51, rigidsym_call_51},
+    {"euler_angles_from_rotation_yxy", 1, 3, rigidsym_sizes_52, rigidsym_call_52},
+    {"euler_angles_from_rotation_yxz", 1, 3, rigidsym_sizes_53, rigidsym_call_53},
+    {"euler_angles_from_rotation_yzx", 1, 3, rigidsym_sizes_54, rigidsym_call_54},
+    {"euler_angles_from_rotation_yzy", 1, 3, rigidsym_sizes_55, rigidsym_call_55},
+    {"euler_angles_from_rotation_zxy", 1, 3, rigidsym_sizes_56, rigidsym_call_56},
+    {"euler_angles_from_rotation_zxz", 1, 3, rigidsym_sizes_57, rigidsym_call_57},
+    {"euler_angles_from_rotation_zyx", 1, 3, rigidsym_sizes_58, rigidsym_call_58},
+    {"euler_angles_from_rotation_zyz", 1, 3, rigidsym_sizes_59, rigidsym_call_59},
+    {"euler_rate_matrix_xyx_body", 1, 1, rigidsym_sizes_60, rigidsym_call_60},
+    {"euler_rate_matrix_xyx_body_with_jacobians", 1, 2, rigidsym_sizes_61, rigidsym_call_61},
+    {"euler_rate_matrix_xyx_fixed", 1, 1, rigidsym_sizes_62, rigidsym_call_62},
+    {"euler_rate_matrix_xyx_fixed_with_jacobians", 1, 2, rigidsym_sizes_63, rigidsym_call_63},
+    {"euler_rate_matrix_xyz_body", 1, 1, rigidsym_sizes_64, rigidsym_call_64},
+    {"euler_rate_matrix_xyz_body_with_jacobians", 1, 2, rigidsym_sizes_65, rigidsym_call_65},
+    {"euler_rate_matrix_xyz_fixed", 1, 1, rigidsym_sizes_66, rigidsym_call_66},
+    {"euler_rate_matrix_xyz_fixed_with_jacobians", 1, 2, rigidsym_sizes_67, rigidsym_call_67},
+    {"euler_rate_matrix_xzx_body", 1, 1, rigidsym_sizes_68, rigidsym_call_68},
+    {"euler_rate_matrix_xzx_body_with_jacobians", 1, 2, rigidsym_sizes_69, rigidsym_call_69},
+    {"euler_rate_matrix_xzx_fixed", 1, 1, rigidsym_sizes_70, rigidsym_call_70},
+    {"euler_rate_matrix_xzx_fixed_with_jacobians", 1, 2, rigidsym_sizes_71, rigidsym_call_71},
+    {"euler_rate_matrix_xzy_body", 1, 1, rigidsym_sizes_72, rigidsym_call_72},
+    {"euler_rate_matrix_xzy_body_with_jacobians", 1, 2, rigidsym_sizes_73, rigidsym_call_73},
+    {"euler_rate_matrix_xzy_fixed", 1, 1, rigidsym_sizes_74, rigidsym_call_74},
+    {"euler_rate_matrix_xzy_fixed_with_jacobians", 1, 2, rigidsym_sizes_75, rigidsym_call_75},
+    {"euler_rate_matrix_yxy_body", 1, 1, rigidsym_sizes_76, rigidsym_call_76},
+    {"euler_rate_matrix_yxy_body_with_jacobians", 1, 2, rigidsym_sizes_77, rigidsym_call_77},
+    {"euler_rate_matrix_yxy_fixed", 1, 1, rigidsym_sizes_78, rigidsym_call_78},
+    {"euler_rate_matrix_yxy_fixed_with_jacobians", 1, 2, rigidsym_sizes_79, rigidsym_call_79},
+    {"euler_rate_matrix_yxz_body", 1, 1, rigidsym_sizes_80, rigidsym_call_80},
+    {"euler_rate_matrix_yxz_body_with_jacobians", 1, 2, rigidsym_sizes_81, rigidsym_call_81},
+    {"euler_rate_matrix_yxz_fixed", 1, 1, rigidsym_sizes_82, rigidsym_call_82},
+    {"euler_rate_matrix_yxz_fixed_with_jacobians", 1, 2, rigidsym_sizes_83, rigidsym_call_83},
+    {"euler_rate_matrix_yzx_body", 1, 1, rigidsym_sizes_84, rigidsym_call_84},
+    {"euler_rate_matrix_yzx_body_with_jacobians", 1, 2, rigidsym_sizes_85, rigidsym_call_85},
+    {"euler_rate_matrix_yzx_fixed", 1, 1, rigidsym_sizes_86, rigidsym_call_86},
+    {"euler_rate_matrix_yzx_fixed_with_jacobians", 1, 2, rigidsym_sizes_87, rigidsym_call_87},
+    {"euler_rate_matrix_yzy_body", 1, 1, rigidsym_sizes_88, rigidsym_call_88},
+    {"euler_rate_matrix_yzy_body_with_jacobians", 1, 2, rigidsym_sizes_89, rigidsym_call_89},
+    {"euler_rate_matrix_yzy_fixed", 1, 1, rigidsym_sizes_90, rigidsym_call_90},
+    {"euler_rate_matrix_yzy_fixed_with_jacobians", 1, 2, rigidsym_sizes_91, rigidsym_call_91},
+    {"euler_rate_matrix_zxy_body", 1, 1, rigidsym_sizes_92, rigidsym_call_92},
+    {"euler_rate_matrix_zxy_body_with_jacobians", 1, 2, rigidsym_sizes_93, rigidsym_call_93},
+    {"euler_rate_matrix_zxy_fixed", 1, 1, rigidsym_sizes_94, rigidsym_call_94},
+    {"euler_rate_matrix_zxy_fixed_with_jacobians", 1, 2, rigidsym_sizes_95, rigidsym_call_95},
+    {"euler_rate_matrix_zxz_body", 1, 1, rigidsym_sizes_96, rigidsym_call_96},
+    {"euler_rate_matrix_zxz_body_with_jacobians", 1, 2, rigidsym_sizes_97, rigidsym_call_97},
+    {"euler_rate_matrix_zxz_fixed", 1, 1, rigidsym_sizes_98, rigidsym_call_98},
+    {"euler_rate_matrix_zxz_fixed_with_jacobians", 1, 2, rigidsym_sizes_99, rigidsym_call_99},
+    {"euler_rate_matrix_zyx_body", 1, 1, rigidsym_sizes_100, rigidsym_call_100},
+    {"euler_rate_matrix_zyx_body_with_jacobians", 1, 2, rigidsym_sizes_101, rigidsym_call_101},
+    {"euler_rate_matrix_zyx_fixed", 1, 1, rigidsym_sizes_102, rigidsym_call_102},
+    {"euler_rate_matrix_zyx_fixed_with_jacobians", 1, 2, rigidsym_sizes_103, rigidsym_call_103},
+    {"euler_rate_matrix_zyz_body", 1, 1, rigidsym_sizes_104, rigidsym_call_104},
+    {"euler_rate_matrix_zyz_body_with_jacobians", 1, 2, rigidsym_sizes_105, rigidsym_call_105},
+    {"euler_rate_matrix_zyz_fixed", 1, 1, rigidsym_sizes_106, rigidsym_call_106},
+    {"euler_rate_matrix_zyz_fixed_with_jacobians", 1, 2, rigidsym_sizes_107, rigidsym_call_107},
+    {"euler_rodrigues_from_rotation", 1, 1, rigidsym_sizes_108, rigidsym_call_108},
+    {"euler_rodrigues_from_rotation_with_jacobians", 1, 2, rigidsym_sizes_109, rigidsym_call_109},
+    {"euler_rodrigues_product", 2, 1, rigidsym_sizes_110, rigidsym_call_110},
+    {"euler_rodrigues_product_with_jacobians", 2, 3, rigidsym_sizes_111, rigidsym_call_111},
+    {"exponential_coordinates_from_transform", 1, 1, rigidsym_sizes_112, rigidsym_call_112},
+    {"exponential_coordinates_from_transform_with_jacobians", 1, 2, rigidsym_sizes_113, rigidsym_call_113},
+    {"exponential_coordinates_left_jacobian", 1, 1, rigidsym_sizes_114, rigidsym_call_114},
+    {"exponential_coordinates_left_jacobian_inverse", 1, 1, rigidsym_sizes_115, rigidsym_call_115},
+    {"exponential_coordinates_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_116, rigidsym_call_116},
+    {"exponential_coordinates_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_117, rigidsym_call_117},
+    {"inertia_at_point", 4, 1, rigidsym_sizes_118, rigidsym_call_118},
+    {"inertia_at_point_with_jacobians", 4, 5, rigidsym_sizes_119, rigidsym_call_119},
+    {"inertia_dyad_at_point", 4, 1, rigidsym_sizes_120, rigidsym_call_120},
+    {"inertia_dyad_at_point_with_jacobians", 4, 5, rigidsym_sizes_121, rigidsym_call_121},
+    {"instant_screw_axis", 3, 3, rigidsym_sizes_122, rigidsym_call_122},
+    {"instant_screw_axis_with_jacobians", 3, 12, rigidsym_sizes_123, rigidsym_call_123},
+    {"instant_screw_point_pitch", 3, 2, rigidsym_sizes_124, rigidsym_call_124},
+    {"kinetic_energy", 4, 1, rigidsym_sizes_125, rigidsym_call_125},
+    {"kinetic_energy_with_jacobians", 4, 5, rigidsym_sizes_126, rigidsym_call_126},
+    {"moving_frame_acceleration", 7, 1, rigidsym_sizes_127, rigidsym_call_127},
+    {"moving_frame_acceleration_with_jacobians", 7, 8, rigidsym_sizes_128, rigidsym_call_128},
+    {"natural_invariants_from_rotation", 1, 2, rigidsym_sizes_129, rigidsym_call_129},
+    {"newton_euler_residual", 7, 1, rigidsym_sizes_130, rigidsym_call_130},
+    {"newton_euler_wrench", 5, 1, rigidsym_sizes_131, rigidsym_call_131},
+    {"newton_euler_wrench_with_jacobians", 5, 6, rigidsym_sizes_132, rigidsym_call_132},
+    {"plucker_from_points", 2, 1, rigidsym_sizes_133, rigidsym_call_133},
+    {"plucker_from_points_with_jacobians", 2, 3, rigidsym_sizes_134, rigidsym_call_134},
+    {"plucker_transfer", 3, 1, rigidsym_sizes_135, rigidsym_call_135},
+    {"plucker_transfer_with_jacobians", 3, 4, rigidsym_sizes_136, rigidsym_call_136},
+    {"point_acceleration", 5, 1, rigidsym_sizes_137, rigidsym_call_137},
+    {"point_acceleration_with_jacobians", 5, 6, rigidsym_sizes_138, rigidsym_call_138},
+    {"rotation_from_euler_rodrigues", 1, 1, rigidsym_sizes_139, rigidsym_call_139},
+    {"rotation_from_euler_rodrigues_with_jacobians", 1, 2, rigidsym_sizes_140, rigidsym_call_140},
+    {"rotation_from_natural_invariants", 2, 1, rigidsym_sizes_141, rigidsym_call_141},
+    {"rotation_from_natural_invariants_with_jacobians", 2, 3, rigidsym_sizes_142, rigidsym_call_142},
+    {"rotation_from_rotation_vector", 1, 1, rigidsym_sizes_143, rigidsym_call_143},
+    {"rotation_from_rotation_vector_with_jacobians", 1, 2, rigidsym_sizes_144, rigidsym_call_144},
+    {"rotation_vector_from_rotation", 1, 1, rigidsym_sizes_145, rigidsym_call_145},
+    {"rotation_vector_from_rotation_with_jacobians", 1, 2, rigidsym_sizes_146, rigidsym_call_146},
+    {"rotation_vector_left_jacobian", 1, 1, rigidsym_sizes_147, rigidsym_call_147},
+    {"rotation_vector_left_jacobian_inverse", 1, 1, rigidsym_sizes_148, rigidsym_call_148},
+    {"rotation_vector_left_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_149, rigidsym_call_149},
+    {"rotation_vector_left_jacobian_with_jacobians", 1, 2, rigidsym_sizes_150, rigidsym_call_150},
+    {"rotation_vector_right_jacobian", 1, 1, rigidsym_sizes_151, rigidsym_call_151},
+    {"rotation_vector_right_jacobian_inverse", 1, 1, rigidsym_sizes_152, rigidsym_call_152},
+    {"rotation_vector_right_jacobian_inverse_with_jacobians", 1, 2, rigidsym_sizes_153, rigidsym_call_153},
+    {"rotation_vector_right_jacobian_with_jacobians", 1, 2, rigidsym_sizes_154, rigidsym_call_154},
+    {"screw_axis_point", 4, 1, rigidsym_sizes_155, rigidsym_call_155},
+    {"screw_axis_point_with_jacobians", 4, 5, rigidsym_sizes_156, rigidsym_call_156},
+    {"screw_of_displacement", 3, 5, rigidsym_sizes_157, rigidsym_call_157},
+    {"transform_from_exponential_coordinates", 1, 1, rigidsym_sizes_158, rigidsym_call_158},
+    {"transform_from_exponential_coordinates_with_jacobians", 1, 2, rigidsym_sizes_159, rigidsym_call_159},
+    {"twist_transfer", 3, 1, rigidsym_sizes_160, rigidsym_call_160},
+    {"twist_transfer_matrix", 2, 1, rigidsym_sizes_161, rigidsym_call_161},
+    {"twist_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_162, rigidsym_call_162},
+    {"twist_transfer_with_jacobians", 3, 4, rigidsym_sizes_163, rigidsym_call_163},
+    {"wrench_axis", 2, 3, rigidsym_sizes_164, rigidsym_call_164},
+    {"wrench_axis_with_jacobians", 2, 9, rigidsym_sizes_165, rigidsym_call_165},
+    {"wrench_transfer", 3, 1, rigidsym_sizes_166, rigidsym_call_166},
+    {"wrench_transfer_matrix", 2, 1, rigidsym_sizes_167, rigidsym_call_167},
+    {"wrench_transfer_matrix_with_jacobians", 2, 3, rigidsym_sizes_168, rigidsym_call_168},
+    {"wrench_transfer_with_jacobians", 3, 4, rigidsym_sizes_169, rigidsym_call_169},
 };
 
 /* A buffer of C-contiguous float64 ('d') or float32 ('f') values holding at least `need`

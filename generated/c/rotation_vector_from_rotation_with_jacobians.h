@@ -18,7 +18,7 @@
  * points where the kernel computed in double is within it). In double:
  *   branch 1: x49, x67, w_D_Q[0]
  *   branch 2: none
- *   branch 3: none
+ *   branch 3: x20, x25, x34, x43
  *   branch 4: x5
  *   branch 5: x2
  */
@@ -734,12 +734,12 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x17 = x12*x16 + x14*x16 + x16*x6;
         const float x18 = (0.5f)*Q_22 + x7;
         const float x19 = atan2(x17, x18);
-        const float x20 = x16*x19;
+        const double x20 = ((double)x16)*((double)x19);
         const float x21 = (0.25f)*Q_00 + (0.25f)*Q_11 - 0.25f*Q_22 - 0.25f;
         const float x22 = x15/(x10*sqrt(x10));
         const float x23 = -x21*x22;
         const float x24 = x19*x2;
-        const float x25 = (x17*x17) + (x18*x18);
+        const double x25 = (((double)x17)*((double)x17)) + (((double)x18)*((double)x18));
         const float x26 = 1.0f/x25;
         const float x27 = (0.5f)*x26;
         const float x28 = -x17*x27;
@@ -748,7 +748,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x31 = x18*x26;
         const float x32 = x28 + x31*(x12*x23 + x14*x23 + x23*x6 - x30);
         const float x33 = x16*x2;
-        const float x34 = x23*x24 + x32*x33;
+        const double x34 = ((double)x23)*((double)x24) + ((double)x32)*((double)x33);
         const float x35 = x18*x27/x10;
         const float x36 = x35*x8;
         const float x37 = x2*x36;
@@ -757,7 +757,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x40 = x11*x29 + x12*x39 + x14*x39 + x39*x6;
         const float x41 = x38 + x40;
         const float x42 = x31*x33;
-        const float x43 = (0.5f)*x20;
+        const double x43 = (0.5)*x20;
         const float x44 = x24*x39 + x43;
         const float x45 = x22*(-0.25f*Q_12 - 0.25f*Q_21);
         const float x46 = x24*x45;
@@ -812,7 +812,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         out_w_D_Q[24] = x50*x66 + x65;
         out_w_D_Q[25] = x51*x66 + x67;
         out_w_D_Q[26] = x43 + x52*x61 + x53*x62;
-        singular |= (((double)x25)) == 0.0;
+        singular |= (x25) == 0.0;
         singular |= (((double)x10)) == 0.0;
         const double finite = (((x16 - x16) + ((x22 - x22) + (x26 - x26))) + ((x35 - x35) + ((x10 - x10) + (x25 - x25))));
         singular |= finite != finite;

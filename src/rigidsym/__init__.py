@@ -6,7 +6,8 @@ reported, and compiled to kernels; the same engine checks and compiles a reader'
 equations (user modules).
 
 The public API (README, "Python API"): :func:`check`, :func:`check_latex`, :func:`verify`,
-:class:`Result`, :class:`Results`, :func:`load_module` and the declaration vocabulary of
+:class:`Result`, :class:`Results`, :func:`load_module`, :func:`audit` (any implementation
+judged against the book, :mod:`rigidsym.auditing`) and the declaration vocabulary of
 :mod:`rigidsym.declare` (``equation``, ``Statement``, ``Rel``, constrained atoms, operators).
 Public modules: ``rigidsym``, ``rigidsym.declare``, ``rigidsym.kernels`` (with
 ``rigidsym.kernels.torch`` and ``rigidsym.kernels.jax``), ``rigidsym.exercises``,
@@ -36,11 +37,11 @@ _DECLARE = (
     "expm", "logm", "diff", "acos", "atan2", "ORDERS", "norm3",
 )
 _WHERE = {**{n: "rigidsym.api" for n in _API}, **{n: "rigidsym.declare" for n in _DECLARE},
-          "load_module": "rigidsym.registry.usermodules",
+          "load_module": "rigidsym.registry.usermodules", "audit": "rigidsym.auditing.audit",
           "BadInput": "rigidsym.registry.declarations"}
 _RENAMED = {"load_module": "load"}
 
-__all__ = [*_API, "load_module", "BadInput", *_DECLARE]
+__all__ = [*_API, "load_module", "audit", "BadInput", *_DECLARE]
 
 
 def __getattr__(name: str):

@@ -1,5 +1,5 @@
 """The ``rigidsym`` command: verify, report, show, check, exercise, exam, grade, generate,
-build-c, cache, glossary.
+build-c, audit, cache, glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected and, where there is one, the
@@ -13,6 +13,7 @@ import os
 import sys
 
 from rigidsym.cli import (
+    audit,
     cache,
     check,
     exam,
@@ -34,7 +35,8 @@ __all__ = ["main", "build_parser"]
 _COMMANDS = {"verify": verify, "report": report, "show": show, "check": check,
              "exercise": exercise,
              "exam": exam, "grade": grade,
-             "generate": generate.GENERATE, "build-c": generate.BUILD_C, "cache": cache,
+             "generate": generate.GENERATE, "build-c": generate.BUILD_C, "audit": audit,
+             "cache": cache,
              "glossary": glossary}
 
 DESCRIPTION = """\
@@ -50,6 +52,8 @@ examples, one per job:
   rigidsym check --latex '\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}' --let '\\mathbf{Q}: rotation'
                                       an equation in LaTeX, its symbols declared
   rigidsym exercise 3.10              a worked exercise (no id: the list of all 21)
+  rigidsym audit mymod:log --as rotation_vector_from_rotation
+                                      any implementation judged against the book
 
 words (verdict, member, claim, model, parametrisation, ...): rigidsym glossary
 exit codes: 0 as expected, 1 a verdict differs from its expectation, 2 bad input"""

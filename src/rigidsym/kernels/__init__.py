@@ -46,7 +46,11 @@ from rigidsym.kernels.runtime.accuracy import accuracy
 from rigidsym.kernels.runtime.backends import backend, batch_function, build_info, use_backend
 from rigidsym.kernels.runtime.block_order import swap_blocks
 from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
-from rigidsym.kernels.runtime.euler import euler_angle_rates, euler_rate_matrix
+from rigidsym.kernels.runtime.euler import (
+    euler_angle_rates,
+    euler_angles_from_rotation,
+    euler_rate_matrix,
+)
 from rigidsym.kernels.runtime.inputs import ORTHO_TOL as ORTHO_TOL  # the tolerances of check=True
 from rigidsym.kernels.runtime.inputs import UNIT_TOL as UNIT_TOL
 from rigidsym.kernels.runtime.jacobians import jacobian
@@ -57,5 +61,6 @@ from rigidsym.kernels.runtime.scale import set_num_threads as set_num_threads
 
 __all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
+           "euler_angles_from_rotation",
            "jacobian", "set_num_threads", "get_num_threads", "build_info", "accuracy"]
 __all__ += _KERNELS

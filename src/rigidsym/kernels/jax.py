@@ -53,7 +53,8 @@ from rigidsym.kernels.arrays import evaluation as _evaluation
 from rigidsym.kernels.arrays import namespace as _arrays_namespace
 from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
 
-__all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
+__all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "euler_angles_from_rotation",
+           "SingularConfigurationError",
            "NonFiniteResultError"]
 
 _WARNED: list = []
@@ -126,7 +127,8 @@ _LIBRARY = _evaluation.Library(
     float_dtype=_float_dtype, finite_inside=lambda: True)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (arrays.namespace)
-load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
+load, euler_rate_matrix, euler_angle_rates, euler_angles_from_rotation, __getattr__, __dir__, \
+    _space = \
     _arrays_namespace.module_api(globals(), lambda d: _evaluation.Space(_LIBRARY, d),
                                  "JAX", "array", "JAX")
 __all__ += _space().progs.kernel_names()

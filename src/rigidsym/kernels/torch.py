@@ -61,7 +61,8 @@ from rigidsym.kernels.arrays.torch_compiled import fixed_arity as _fixed_arity
 from rigidsym.kernels.arrays.torch_compiled import in_graph as _in_graph
 from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
 
-__all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "SingularConfigurationError",
+__all__ = ["load", "euler_rate_matrix", "euler_angle_rates", "euler_angles_from_rotation",
+           "SingularConfigurationError",
            "NonFiniteResultError"]
 
 
@@ -334,7 +335,8 @@ _LIBRARY = _evaluation.Library(
     finite_inside=torch.compiler.is_compiling, views=_torch_host.views)
 
 # load, the Euler-angle kernels, the lazy kernels: the same for both back-ends (arrays.namespace)
-load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, _space = \
+load, euler_rate_matrix, euler_angle_rates, euler_angles_from_rotation, __getattr__, __dir__, \
+    _space = \
     _arrays_namespace.module_api(globals(), lambda d: _evaluation.Space(_LIBRARY, d),
                                  "PyTorch", "tensor", "autograd")
 __all__ += _space().progs.kernel_names()

@@ -15,4 +15,6 @@
 - ``float32``: the float32 precision plan, float or double per node of the program.
 - ``peers``: the peer libraries' operations and conventions, as data.
 - ``peer_adapters``: the calls that bring each peer to the kernels' conventions.
+- ``harness/``: the 60-digit-and-beyond reference, the judge and the worst-input search
+  (``benchmarks/accuracy.py``, the accuracy tests and ``rigidsym audit`` share them).
 """

@@ -88,7 +88,10 @@ def _rotations_near(rng, small) -> list[tuple[str, list[fmpq]]]:
     return out
 
 
-def _random_arg(arg, rng, name: str) -> list[fmpq]:
+def random_arg(arg, rng, name: str) -> list[fmpq]:
+    """A random exact value of kernel argument ``arg`` (of kernel ``name``) on its manifold
+    (unit vectors, rotations, angles) or, unconstrained, standard normal: the regimes'
+    ordinary points and the search's constrained starts."""
     n = arg.size
     if arg.kind == "unit":
         return unit(rng, n)
@@ -114,6 +117,55 @@ def _gimbal(seq_tag: str) -> list[float]:
     asymmetric (xyz) at +-pi/2."""
     s = seq_tag.split("_")[-2]
     return [0.0, math.pi] if s[0] == s[2] else [math.pi / 2, -math.pi / 2]
+
+
+def _axis_rotation(axis: int, t) -> list[list[fmpq]]:
+    """The rotation about coordinate axis ``axis`` through ``2 atan(t)`` (``t = None``: a
+    half turn), exact: cos and sin rational by the half-angle tangent."""
+    c, s = (fmpq(-1), fmpq(0)) if t is None else ((1 - t * t) / (1 + t * t), 2 * t / (1 + t * t))
+    i, j = (axis + 1) % 3, (axis + 2) % 3
+    R = [[fmpq(int(r == k)) for k in range(3)] for r in range(3)]
+    R[i][i], R[i][j], R[j][i], R[j][j] = c, -s, s, c
+    return R
+
+
+def euler_rotation_exact(seq: str, angles: list) -> list[fmpq]:
+    """``Q = R_i(a) R_j(b) R_k(c)`` of the intrinsic ``seq`` (``"zyx"``), row-major, exact:
+    each angle a float (its half-angle tangent rounded to a rational), an ``fmpq`` (the
+    half-angle tangent itself, exact) or ``None`` (a half turn); the gimbal-lock points of
+    the Euler angles of a rotation."""
+    Q = [[fmpq(int(r == k)) for k in range(3)] for r in range(3)]
+    for ax, ang in zip(seq.lower(), angles, strict=True):
+        t = ang if ang is None or isinstance(ang, fmpq) else q(math.tan(ang / 2))
+        R = _axis_rotation("xyz".index(ax), t)
+        Q = [[sum((Q[r][m] * R[m][k] for m in range(3)), fmpq(0)) for k in range(3)]
+             for r in range(3)]
+    return [v for row in Q for v in row]
+
+
+def _euler_lock(kernel, rng, small, i: int, out: dict, dtype) -> None:
+    """The Euler angles of a rotation: Q at the lock (exactly) and toward it from both
+    sides, the other two angles random; and at the lock with the entry +-sin b (or +-cos
+    b) one ulp past 1, as a rotation computed in floating point holds it (the input of
+    an unclamped asin's NaN, SymForce #226)."""
+    seq = kernel.name.rsplit("_", 1)[-1]
+    k_mid = "xyz".index(seq[0]) * 3 + "xyz".index(seq[2])    # Q[i, k] = +-1 at the lock
+    past = 1 + q(float(np.finfo(dtype).eps))
+    # the lock's half-angle tangent exactly (tan(pi/4) rounds below 1), None a half turn
+    locks = [(0.0, fmpq(0)), (math.pi, None)] if seq[0] == seq[2] else \
+        [(math.pi / 2, fmpq(1)), (-math.pi / 2, fmpq(-1))]
+    for centre, lock in locks:
+        for s in [0.0, *small[:15]]:
+            for sign in ((1,) if s == 0 else (1, -1)):
+                a, c = rng.uniform(-math.pi, math.pi, 2)
+                mid = lock if s == 0 else centre + sign * s
+                p = [random_arg(x, rng, kernel.name) for x in kernel.args]
+                p[i] = euler_rotation_exact(seq, [a, mid, c])
+                out.setdefault("gimbal lock", []).append(p)
+                if s == 0:
+                    p = [list(v) for v in p]
+                    p[i][k_mid] = p[i][k_mid] * past
+                    out.setdefault("gimbal lock, +-1 rounded past", []).append(p)
 
 
 #: the ends of the range: powers of two near 1e-300, 1e-160 (a square underflows), 1e160 (a
@@ -214,7 +266,7 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
     names = [a.name for a in args]
 
     def base():
-        return [_random_arg(a, rng, kernel.name) for a in args]
+        return [random_arg(a, rng, kernel.name) for a in args]
 
     out: dict[str, list] = {"random": [base() for _ in range(n_random)]}
 
@@ -230,6 +282,8 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
         elif a.kind == "rotation":
             for reg, Q in _rotations_near(rng, small):
                 add(reg, i, Q)
+            if kernel.name.startswith("euler_angles_from_rotation_"):
+                _euler_lock(kernel, rng, small, i, out, dtype)
         elif a.kind == "transform":
             _transforms_near(rng, small, lambda reg, T, i=i: add(reg, i, T), a.name)
         elif a.kind == "unit":

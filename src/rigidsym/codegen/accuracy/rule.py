@@ -8,7 +8,7 @@ output array at a time; absolute where the truth is exactly 0). It passes where
     err <= 8 u (kappa + 1)   and   err <= max(2 e_ref, 4 u)
 
 ``u`` the unit roundoff of the type, ``kappa`` the condition number of the problem at the
-point (``benchmarks/_accuracy_ref.py``), ``e_ref`` the smallest error, at the same point and
+point (:mod:`.harness.reference`), ``e_ref`` the smallest error, at the same point and
 in the same type, among the textbook formula of the declaration evaluated naively and each
 peer library that has the operation (float64 only). The first half says the kernel is as
 good as the problem allows; the second that it is never worse than what a user would

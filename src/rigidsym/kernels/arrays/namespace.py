@@ -118,6 +118,24 @@ _ANGLE_RATES_DOC = """Euler-angle rates ``eta_dot = W^-1 omega`` (Exercise 3.10)
         TypeError, ValueError: bad input, naming the argument.
         SingularConfigurationError: at gimbal lock, eager with on_singular="raise".
     """
+_EULER_ANGLES_DOC = """The intrinsic Euler angles of a rotation and the gimbal-lock flag (the
+    inverse of Exercise 3.10's ``Q = R_i(a) R_j(b) R_k(c)``; derivations/euler_angles.py).
+
+    Args:
+        Q: {noun} (..., 3, 3), rotation matrices.
+        sequence: one of the twelve intrinsic sequences ("ZYX", "ZXZ", ...).
+        branch: "principal" (b in [-pi/2, pi/2] Tait-Bryan, [0, pi] proper Euler) or
+            "other" ((a + pi, pi - b, c + pi) or (a + pi, -b, c + pi)); the same at the lock.
+        check: see the module.
+
+    Returns:
+        ``(angles, gimbal_lock)``: {noun} (..., 3) [rad] and a boolean {noun} (...): at the
+        lock (the first angle's two entries of Q exactly 0) the member c = 0, never NaN.
+
+    Raises:
+        TypeError, ValueError: bad input, naming the argument (also a bad ``sequence`` or
+            ``branch``).
+    """
 
 
 def module_api(scope: dict, make_space: Callable, lib: str, noun: str,
@@ -132,9 +150,10 @@ def module_api(scope: dict, make_space: Callable, lib: str, noun: str,
         lib, noun, autodiff: the words of its docstrings ("PyTorch", "tensor", "autograd").
 
     Returns:
-        ``(load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, space)``: the
-        first five made as the module's own (``__module__``, ``__qualname__``, ``__doc__``:
-        Sphinx documents them there); ``space(directory=None)`` caches one space a folder.
+        ``(load, euler_rate_matrix, euler_angle_rates, euler_angles_from_rotation,
+        __getattr__, __dir__, space)``: the first six made as the module's own
+        (``__module__``, ``__qualname__``, ``__doc__``: Sphinx documents them there);
+        ``space(directory=None)`` caches one space a folder.
     """
     module, spaces = scope["__name__"], {}
 
@@ -158,6 +177,15 @@ def module_api(scope: dict, make_space: Callable, lib: str, noun: str,
         name = _state.euler_name("euler_angle_rates", sequence, frame)
         return space().call(name, (angles, omega), check, on_singular)
 
+    def euler_angles_from_rotation(Q, sequence: str, *, branch: str = "principal",
+                                   check=None):
+        if branch not in ("principal", "other"):
+            raise ValueError(f"branch: expected 'principal' or 'other', got {branch!r}")
+        seq = _state.euler_name("euler_rate_matrix", sequence, "fixed").split("_")[-2]
+        angles, other, lock = space().call(f"euler_angles_from_rotation_{seq}", (Q,), check,
+                                           None)
+        return (angles if branch == "principal" else other), lock != 0
+
     def __getattr__(attr: str):
         # the package's kernels, made on first access (importing the module stays cheap)
         s = space()
@@ -171,8 +199,10 @@ def module_api(scope: dict, make_space: Callable, lib: str, noun: str,
 
     words = {"lib": lib, "noun": noun, "autodiff": autodiff, "backend": space().progs.backend}
     docs = {load: _LOAD_DOC, euler_rate_matrix: _RATE_MATRIX_DOC,
-            euler_angle_rates: _ANGLE_RATES_DOC, __getattr__: None, __dir__: None}
+            euler_angle_rates: _ANGLE_RATES_DOC,
+            euler_angles_from_rotation: _EULER_ANGLES_DOC, __getattr__: None, __dir__: None}
     for fn, doc in docs.items():
         fn.__module__, fn.__qualname__ = module, fn.__name__
         fn.__doc__ = None if doc is None else doc.format(**words)
-    return load, euler_rate_matrix, euler_angle_rates, __getattr__, __dir__, space
+    return (load, euler_rate_matrix, euler_angle_rates, euler_angles_from_rotation,
+            __getattr__, __dir__, space)

@@ -1,5 +1,5 @@
 """The reference half of the rule judged over a cloud of neighbouring floating-point inputs
-(issue 48): ``benchmarks/accuracy.judge`` asks it where the kernel's error at a point is past
+(issue 48): the judge (:func:`.judge.judge`) asks it where the kernel's error at a point is past
 ``max(2 e_ref, 4 u)`` of the best yardstick there.
 
 Why. A program's error at one input is a pseudo-random function of that input's low bits
@@ -38,13 +38,13 @@ from __future__ import annotations
 
 import hashlib
 
-import _accuracy_judge as J
-import _accuracy_peers as O
-import _accuracy_points as P
-import _accuracy_ref as R
 import numpy as np
 
+from rigidsym.codegen.accuracy import regimes as P
 from rigidsym.codegen.accuracy import rule
+from rigidsym.codegen.accuracy.harness import compare as J
+from rigidsym.codegen.accuracy.harness import reference as R
+from rigidsym.codegen.accuracy.harness import yardsticks as O
 
 #: neighbours of the point in the cloud (the point itself is the first of N + 1)
 N = 32
@@ -109,8 +109,8 @@ class Cloud:
         for i, ref in enumerate(refs):
             if ref is None:
                 continue
-            at = J._AtInput(fs[i], c, i) if self.k.branches else None
-            e.append(J._diff(out[i, sl], ref[sl], at, sl, bound)
+            at = J.AtInput(fs[i], c, i) if self.k.branches else None
+            e.append(J.diff(out[i, sl], ref[sl], at, sl, bound)
                      / (float(np.linalg.norm(ref[sl])) or 1.0))
         return np.array(e)
 

@@ -1,4 +1,5 @@
-"""The reference of the accuracy harness: the declared formula in ball arithmetic.
+"""The reference of the accuracy harness: the declared formula in ball arithmetic (the truth
+that ``benchmarks/accuracy.py``, the project's accuracy tests and ``rigidsym audit`` judge by).
 
 A kernel's declared outputs (its ``build``, before any rewrite of the code generator, as
 ``tests/test_kernels.py`` composes them) are printed to Python over python-flint ``arb``
@@ -70,7 +71,7 @@ class ArbPrinter(LambdaPrinter):
         return f"(({self._print(e.lhs)}) {e.rel_op} ({self._print(e.rhs)}))"
 
 
-def _atan2(y, x):
+def atan2_branch(y, x):
     """atan2 on the kernels' branch phi in [0, pi] where y is a ball around 0 and x < 0
     (arb's ball there holds both -pi and pi): y is a norm (>= 0) in every declaration that
     uses atan2, so the limit from y >= 0, pi - atan(y/|x|), continuous there."""
@@ -81,7 +82,7 @@ def _atan2(y, x):
 
 NAMESPACE = {
     "arb": arb, "sqrt": lambda x: x.sqrt(), "sin": lambda x: x.sin(), "cos": lambda x: x.cos(),
-    "tan": lambda x: x.tan(), "atan2": lambda y, x: _atan2(y, x), "atan": lambda x: x.atan(),
+    "tan": lambda x: x.tan(), "atan2": lambda y, x: atan2_branch(y, x), "atan": lambda x: x.atan(),
     "acos": lambda x: x.acos(), "asin": lambda x: x.asin(), "Abs": abs, "abs": abs,
     "exp": lambda x: x.exp(), "log": lambda x: x.log(),
 }
@@ -91,12 +92,15 @@ NAMESPACE["math"] = SimpleNamespace(**NAMESPACE)    # the printer writes math.si
 @cache
 def kernel_of(name: str):
     """The declared :class:`~rigidsym.codegen.spec.Kernel` ``name`` (Jacobian kernels too)."""
-    from rigidsym.derivations.kernels_spec import KERNELS
+    import importlib
 
     from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
+    from rigidsym.core.config import KERNEL_SPEC
 
-    by = {k.name: k for k in KERNELS}
+    by = {k.name: k for k in importlib.import_module(KERNEL_SPEC).KERNELS}
     if name not in by:
+        if not name.endswith("_with_jacobians") or name.removesuffix("_with_jacobians") not in by:
+            raise KeyError(name)
         base = name.removesuffix("_with_jacobians")
         by.update({k.name: k for k in jacobian_kernels([by[base]])})
     return by[name]
@@ -106,8 +110,8 @@ def kernel_of(name: str):
 def functions(name: str):
     """``[(cond or None, arb function)]`` per variant (branches first) of the declaration;
     ``cond`` is a float function of the flat inputs (the branch the kernel takes)."""
-    from rigidsym.codegen.generator import _flatten
     from rigidsym.codegen.spec import flat_symbols, input_symbols
+    from rigidsym.codegen.spec import flatten_outputs as _flatten
 
     k = kernel_of(name)
     syms = input_symbols(k)
@@ -136,7 +140,7 @@ def pick(name: str, rounded: list[float]):
     raise AssertionError("no variant")
 
 
-def _narrow(vals) -> bool:
+def is_narrow(vals) -> bool:
     mids = [abs(float(v.mid())) for v in vals]
     big = max(mids) if mids else 0.0
     for v, m in zip(vals, mids, strict=True):
@@ -177,7 +181,7 @@ def reference(f, exact: list[fmpq]):
     prec, cap = 128, max_prec(exact)
     while True:
         vals = evaluate(f, exact, prec)
-        if vals is not None and _narrow(vals):
+        if vals is not None and is_narrow(vals):
             return np.array([float(v.mid()) for v in vals]), prec
         if prec >= cap:
             if vals is None or not all(v.is_finite() for v in vals):

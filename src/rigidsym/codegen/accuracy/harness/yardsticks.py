@@ -31,7 +31,7 @@ def missing(name: str) -> list[tuple[str, str]]:
 
 def _slices(name: str) -> dict[str, slice]:
     """Each output's columns in the kernel's flat outputs."""
-    import _accuracy_ref as R
+    from rigidsym.codegen.accuracy.harness import reference as R
 
     out, at = {}, 0
     for o in R.kernel_of(name).outputs:
@@ -69,9 +69,8 @@ def textbook(name: str, arrays: list[np.ndarray], dtype) -> np.ndarray:
     """The textbook formula (the declaration, naively;
     :func:`rigidsym.codegen.accuracy.rule.textbook`)
     at the rows of ``arrays`` in ``dtype`` arithmetic: ``(n, outputs)`` float64."""
-    import _accuracy_ref as R
-
     from rigidsym.codegen.accuracy import rule
+    from rigidsym.codegen.accuracy.harness import reference as R
 
     n = arrays[0].shape[0]
     return rule.textbook(R.kernel_of(name), [c for a in arrays for c in a.reshape(n, -1).T],

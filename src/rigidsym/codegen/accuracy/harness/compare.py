@@ -1,16 +1,17 @@
-"""How ``benchmarks/accuracy.py`` compares a kernel's output with its references: the truth
-at the input as rounded (``_Rounded``), the declared formula at the input the kernel got
-(``_AtInput``, for the sign rule near pi), the distance the rule reads (``_diff``) and the
-reference the componentwise figure is taken against (``_judged_by``)."""
+"""How the judge (:mod:`.judge`) compares a kernel's output with its references: the truth
+at the input as rounded (``Rounded``), the declared formula at the input the kernel got
+(``AtInput``, for the sign rule near pi), the distance the rule reads (``diff``) and the
+reference the componentwise figure is taken against (``judged_by``)."""
 
 from __future__ import annotations
 
-import _accuracy_points as P
-import _accuracy_ref as R
 import numpy as np
 
+from rigidsym.codegen.accuracy import regimes as P
+from rigidsym.codegen.accuracy.harness import reference as R
 
-def _kappa(scale, norms) -> float:
+
+def kappa_of(scale, norms) -> float:
     """The worst condition number over the outputs (an output that is 0: its absolute
     scale); inf where a derivative or a norm overflowed float64."""
     with np.errstate(all="ignore"):
@@ -18,7 +19,7 @@ def _kappa(scale, norms) -> float:
     return float(np.where(np.isnan(k), np.inf, k).max())
 
 
-class _Rounded:
+class Rounded:
     """The declared formula at the point with the unconstrained arguments as rounded to the
     type (constrained ones exact, on their manifold), on first use; the exact point's
     reference where nothing was rounded."""
@@ -37,7 +38,7 @@ class _Rounded:
         return self.v
 
 
-class _AtInput:
+class AtInput:
     """The declared formula at the input the kernel got (not the exact point), computed on
     first use: the reference of the sign rule near pi."""
 
@@ -51,7 +52,7 @@ class _AtInput:
         return self.v
 
 
-def _diff(c, ref, at_input, sl, bound) -> float:
+def diff(c, ref, at_input, sl, bound) -> float:
     """``||c - ref||``; where that is past ``bound`` in a kernel with branches, at most the
     distance to the declared formula at the input the kernel got. Near pi the rounding of
     Q (or of a transform's R) can flip the sign of its skew part, which fixes e: the exact
@@ -66,11 +67,11 @@ def _diff(c, ref, at_input, sl, bound) -> float:
     which does the same, a yardstick of 1 u (screw_of_displacement's `Q: phi -> 0` row)."""
     if not np.isfinite(c).all():
         return np.inf
-    return float(np.linalg.norm(c - _judged_by(c, ref, at_input, sl, bound)))
+    return float(np.linalg.norm(c - judged_by(c, ref, at_input, sl, bound)))
 
 
-def _judged_by(c, ref, at_input, sl, bound):
-    """The reference ``_diff`` judges ``c`` by: ``ref``, or the declared formula at the input
+def judged_by(c, ref, at_input, sl, bound):
+    """The reference ``diff`` judges ``c`` by: ``ref``, or the declared formula at the input
     where that is a jump away from ``ref`` and nearer ``c`` (the sign of e near pi); the
     componentwise figure is taken against it too, so that an axis of the other sign is not
     counted 2 / u ulps."""
@@ -82,6 +83,7 @@ def _judged_by(c, ref, at_input, sl, bound):
     return v[sl] if np.linalg.norm(c - v[sl]) < np.linalg.norm(c - ref) else ref
 
 
-def _point(arrays, s) -> str:
+def point_text(arrays, s) -> str:
+    """Row ``s`` of ``arrays`` as text, 17 digits a component (a reproducer)."""
     return "; ".join(np.array2string(a[s].ravel().astype(np.float64), precision=17,
                                      separator=",") for a in arrays)

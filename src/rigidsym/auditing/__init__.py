@@ -1,0 +1,11 @@
+"""rigidsym.auditing: audit any implementation of an operation of the chapter against the
+book (``rigidsym audit``, :func:`rigidsym.audit`).
+
+- ``targets``: the operations a function can be audited as, their argument layouts.
+- ``conventions``: the convention generators, the finder over their product, the invariants.
+- ``worst``: the singular sets, the worst-input search and the judge on the user's function
+  (the accuracy harness of :mod:`rigidsym.codegen.accuracy.harness`).
+- ``callables``: a ``module:function`` or a C symbol (ctypes) as a callable.
+- ``audit``: :func:`audit` and its :class:`AuditReport`.
+- ``report``: the report as text, JSON, Markdown and a pytest regression file.
+"""

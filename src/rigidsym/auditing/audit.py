@@ -1,0 +1,266 @@
+"""``rigidsym.audit``: judge any function that claims to compute an operation of the chapter.
+
+The function is called under every member of its target's convention product
+(:mod:`.conventions`), then, in the convention found, swept over the kernel's singular sets
+and the worst-input search (:mod:`.worst`) against the declared formula's truth; what it
+gets wrong is collected as findings (:class:`Finding`) in an :class:`AuditReport`, which
+:mod:`.report` writes as text, JSON, Markdown or a regression test.
+"""
+
+from __future__ import annotations
+
+import time
+import warnings
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rigidsym.auditing import conventions as C
+from rigidsym.auditing import worst as W
+from rigidsym.auditing.callables import as_numpy_callable, parameter_names
+from rigidsym.auditing.targets import Target, target
+from rigidsym.auditing.worst import extreme
+from rigidsym.codegen.accuracy.harness import judge as J
+from rigidsym.codegen.accuracy.harness import reference as R
+from rigidsym.core.errors import BadInput
+
+__all__ = ["audit", "AuditReport", "Finding", "WorstInput"]
+
+
+
+@dataclass
+class Finding:
+    """One thing the function gets wrong: ``severity`` "error" (a silent wrong, an
+    inaccuracy past the rule, a broken invariant, no convention) or "note"."""
+
+    severity: str
+    kind: str
+    text: str
+
+
+@dataclass
+class WorstInput:
+    """The worst input found in one float type, in the user's convention."""
+
+    dtype: str
+    regime: str
+    ratio: float               # err / (8 u (kappa + 1))
+    err_u: float               # normwise relative error, in units of u
+    kappa: float
+    kernel_err_u: float        # rigidsym's kernel at the same input
+    flag: str
+    args: list                 # the user's arguments (float arrays, as rounded)
+    truth: list | None         # the truth, flat, in the user's layout
+    got: list | None           # the user's output, flat, in the user's layout
+    peers: dict = field(default_factory=dict)   # peer label -> err in u (float64)
+
+
+@dataclass
+class AuditReport:
+    """What :func:`audit` found. ``ok``: no finding of severity "error"."""
+
+    function: str
+    target: str
+    book: str
+    tried: int
+    convention: str | None
+    generators: list
+    residual: float
+    nearest: str | None
+    invariants_broken: list
+    behaviour: dict            # dtype -> [per-regime dict]
+    worst: list                # [WorstInput]
+    batch: str
+    findings: list             # [Finding]
+    seconds: float
+    spec: str = ""             # module:function, for a regression test
+    form: str = ""
+
+    @property
+    def ok(self) -> bool:
+        """No finding of severity "error"."""
+        return not any(f.severity == "error" for f in self.findings)
+
+
+def _truth(tgt: Target, points: list[dict]) -> dict:
+    k = R.kernel_of(tgt.kernel)
+    arrays = [np.stack([p[a.name] for p in points]) for a in k.args]
+    names = {tgt.kernel, tgt.dual, *tgt.family} - {""}
+    with np.errstate(all="ignore"):
+        return {name: list(J.run_kernel(name, arrays, np.float64, "numpy")) for name in names}
+
+
+def _find(func, tgt, names, seed) -> C.Found:
+    rng = np.random.default_rng(seed)
+    pts = C.ordinary_points(R.kernel_of(tgt.kernel), 8, rng)
+    found = C.find(func, tgt, pts, _truth(tgt, pts), names)
+    if found.nearest is None:      # every member raised: a wrong signature, or a bad function
+        why = "; ".join(f"as {k}: {v}" for k, v in found.errors.items())
+        raise BadInput(f"function raises on ordinary inputs under every form of "
+                       f"{tgt.name} ({why})")
+    return found
+
+
+def _worst_input(tgt, member, j: W.Judged, dtype) -> WorstInput:
+    name = member.kernel(tgt)
+    truth, rounded = W.truth_at(name, j.point, dtype)
+    x = {a.name: np.asarray(v, dtype=np.float64) for a, v in
+         zip(R.kernel_of(tgt.kernel).args, rounded, strict=True)}
+    args = [np.asarray(a, dtype=dtype) for a in member.user_args(x)]
+    u = float(np.finfo(dtype).eps) / 2
+    sl = tgt.user_slice(R.kernel_of(name))
+    w = WorstInput(np.dtype(dtype).name, j.regime, j.ratio, j.err / u, j.kappa,
+                   j.kernel_err / u, j.flag, [a.tolist() for a in args],
+                   None if truth is None else member.user_out(truth[sl]).tolist(), None)
+    return w
+
+
+def _peers(tgt, member, w: WorstInput, x_arrays, truth) -> dict:
+    from rigidsym.codegen.accuracy.harness import yardsticks as O
+
+    if truth is None:
+        return {}
+    name = member.kernel(tgt)
+    out = {}
+    for label, row in O.evaluate(name, x_arrays, len(truth)).items():
+        v = row[0]
+        if np.isfinite(v).all():
+            out[label] = float(np.linalg.norm(v - truth) / max(np.linalg.norm(truth),
+                                                               1e-300) / 2.0**-53)
+    return out
+
+
+def _likely(regime: str, flag: bool) -> str:
+    """What usually causes a finding on ``regime`` (the bugs of the peers' trackers)."""
+    r = regime.replace(" ", "")
+    if flag and ("=0" in r or "->0" in r or r == "Q=1"):
+        return (" - likely a division by the norm (angle) with no guard or epsilon at 0 "
+                "(SymForce #226)")
+    if "->0" in r or "scale" in r:
+        return (" - likely a small-angle branch (Taylor series) of the wrong sign or order, "
+                "or a cancellation such as 1 - cos(phi) (manif #223, gtsam #746)")
+    if "gimbal" in r:
+        return (" - likely asin or acos of an entry rounded past +-1 with no clamp, or "
+                "atan2(0, 0) at the gimbal lock with no branch for it (SymForce #226)")
+    if "pi" in r:
+        return (" - likely an angle from arccos((tr Q - 1)/2) or an axis from the skew part "
+                "near a half turn (pytransform3d #189, gtsam PR #2723)")
+    return ""
+
+
+def _findings(found: C.Found, tgt, beh: dict, worst: list, batch: str) -> list[Finding]:
+    out = []
+    if found.member is None:
+        out.append(Finding("error", "convention", f"no member of {found.tried} matches the "
+                           f"book's {tgt.name}; the nearest, {found.nearest.says(tgt)}, is "
+                           f"off by {found.residual:.3g} (relative)" + (
+                               "; a residual of float32 arithmetic: does it compute in "
+                               "float32 (JAX without x64)?" if found.residual < 1e-4 else "")))
+    for b in found.broken:
+        out.append(Finding("error", "invariant", b))
+    m = found.member
+    if m is not None and "inverse" in m.generators and found.broken and tgt.kind == "wrench":
+        out.append(Finding("error", "convention", "maps wrenches by Ad_T^T where the book's "
+                           "Ad_T^-T is due (the transfer of T^-1): with twists mapped by Ad_T "
+                           "the power is not invariant"))
+    if found.member is not None and "dual" in found.member.generators:
+        out.append(Finding("error", "convention", f"computes {tgt.dual}, not {tgt.name}"))
+    for dt, rows in beh.items():
+        for b in rows.values():
+            sev = "note" if extreme(b.regime) else "error"
+            ex = b.examples[0].flag if b.examples else ""
+            if b.nan or b.raised:
+                out.append(Finding(sev, "flag", f"{dt}, {b.regime}: {b.nan} NaN/inf and "
+                                   f"{b.raised} exceptions of {b.n} inputs where the truth is "
+                                   f"finite ({ex})" + _likely(b.regime, True)))
+            if np.isfinite(b.worst_ratio) and b.worst_ratio > 1:
+                u = 2.0**-53 if dt == "float64" else 2.0**-24
+                kind = "silent wrong" if b.worst_ratio * 8 * u > 1e-3 else "inaccurate"
+                out.append(Finding(sev, kind, f"{dt}, {b.regime}: error {b.worst_ratio:.3g} "
+                                   f"x the bound 8 u (kappa + 1) (rigidsym's kernel: "
+                                   f"{b.kernel_worst_ratio:.2g} x)" + _likely(b.regime, False)))
+    if "differs" in batch:
+        out.append(Finding("note", "batch", batch))
+    return out
+
+
+def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed: int = 0,
+          dtypes: Sequence[str] = ("float64",), search: bool = True, n_start: int = 12,
+          steps: int = 40, spec: str = "") -> AuditReport:
+    """Audit ``func`` as the operation ``as_`` of the chapter.
+
+    Finds the convention ``func`` implements (its argument layout and the member of the
+    target's convention product, or none with the nearest), the invariants it breaks, its
+    behaviour on each singular set of the book's formula (NaN, inf, exceptions), its worst
+    input (the kernel's regimes and a hill-climbing search on ``err / (8 u (kappa + 1))``)
+    against the declared formula's truth in ball arithmetic, rigidsym's kernel and each
+    installed peer at that input, and whether a row depends on its batch.
+
+    Args:
+        func: the function (NumPy; PyTorch or JAX: called with tensors where NumPy
+            arrays raise; a C function: :func:`rigidsym.auditing.callables.c_function`).
+        as_: the operation (``twist_transfer``, ``wrench_transfer``,
+            ``rotation_vector_from_rotation``, ...: :data:`rigidsym.auditing.targets.TARGETS`).
+        names: the function's positional parameter names (default: read from ``func``),
+            which put the argument layouts that fit them first.
+        seed: the seed of the random inputs, the regimes and the search.
+        dtypes: the float types swept (``"float64"``, ``"float32"``).
+        search: run the hill-climbing search besides the regimes.
+        n_start, steps: the search's random starts and climbing steps.
+        spec: ``module:function`` (written into a regression test).
+
+    Returns:
+        An :class:`AuditReport` (``ok`` False where there is a finding of severity error).
+
+    Raises:
+        BadInput: an operation that does not exist; a function that raises on ordinary
+            inputs under every argument layout (a wrong signature); a float type other
+            than float64 and float32.
+    """
+    with warnings.catch_warnings(), np.errstate(all="ignore"):
+        # the user's function and the reference at the ends of the floating range overflow
+        # by design there: the report says what came of it, the warnings would not
+        warnings.simplefilter("ignore", RuntimeWarning)
+        return _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec)
+
+
+def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> AuditReport:
+    t0 = time.perf_counter()
+    tgt = target(as_)
+    for d in dtypes:
+        if d not in ("float64", "float32"):
+            raise BadInput(f"dtypes: {d!r}: expected float64 or float32")
+    call = as_numpy_callable(func)
+    fname = getattr(func, "__qualname__", getattr(func, "__name__", repr(func)))
+    found = _find(call, tgt, tuple(names) if names else parameter_names(func), seed)
+    beh, worst, batch = {}, [], ""
+    m = found.member
+    if m is not None:
+        for d in dtypes:
+            dt = np.dtype(d).type
+            b, j, _ = W.sweep(tgt, m, call, dt, seed, n_start, steps, search)
+            beh[d] = b
+            if j is not None:
+                w = _worst_input(tgt, m, j, dt)
+                if dt == np.float64:
+                    truth, rounded = W.truth_at(m.kernel(tgt), j.point, dt)
+                    w.peers = {} if tgt.outputs else _peers(tgt, m, w, [r[None] for r in
+                                                                       rounded], truth)
+                    try:
+                        w.got = m.user_out(W.call_member(call, m, {
+                            a.name: r for a, r in zip(R.kernel_of(tgt.kernel).args, rounded,
+                                                      strict=True)})).tolist()
+                    except Exception:  # noqa: BLE001  (it raised there: the flag says so)
+                        w.got = None
+                worst.append(w)
+        batch = W.batch_dependence(call, m, R.kernel_of(tgt.kernel),
+                                   np.random.default_rng(seed + 2))
+    rep = AuditReport(fname, tgt.name, tgt.book, found.tried,
+                      m.says(tgt) if m else None, list(m.generators) if m else [],
+                      found.residual, found.nearest.says(tgt) if found.nearest else None,
+                      found.broken, {d: [vars(b) | {"examples": [e.flag for e in b.examples]}
+                                         for b in rows.values()] for d, rows in beh.items()},
+                      worst, batch, _findings(found, tgt, beh, [], batch),
+                      time.perf_counter() - t0, spec, m.form.label if m else "")
+    return rep

@@ -1,0 +1,142 @@
+"""The user's function as a Python callable: ``package.module:function`` imported, or a C
+symbol of a shared library called through ctypes (``libfoo.so:fn`` with a signature
+``t_A[6],a[3],p[3]->t_P[6]``: pointers to doubles, inputs then outputs, returning void).
+PyTorch and JAX functions are called with NumPy arrays first and, where that raises, with
+tensors of the same values (their outputs are read back as NumPy arrays).
+"""
+
+from __future__ import annotations
+
+import ctypes
+import importlib
+import inspect
+import re
+from collections.abc import Callable
+
+import numpy as np
+
+from rigidsym.core.errors import BadInput
+
+__all__ = ["load", "c_function", "parameter_names", "as_numpy_callable"]
+
+
+def load(spec: str) -> Callable:
+    """The callable named by ``spec``, ``package.module:attribute[.attribute]``.
+
+    Raises:
+        BadInput: a spec without ``:``, a module that does not import, a missing name or
+            one that is not callable, each named."""
+    mod_name, sep, attr = spec.partition(":")
+    if not sep or not mod_name or not attr:
+        raise BadInput(f"function {spec!r}: expected MODULE:FUNCTION (mypkg.mymod:adjoint)")
+    try:
+        obj = importlib.import_module(mod_name)
+    except ImportError as e:
+        raise BadInput(f"function {spec!r}: module {mod_name!r} does not import ({e})") from e
+    for part in attr.split("."):
+        if not hasattr(obj, part):
+            raise BadInput(f"function {spec!r}: {mod_name} has no {attr!r}")
+        obj = getattr(obj, part)
+    if not callable(obj):
+        raise BadInput(f"function {spec!r}: {attr!r} is a {type(obj).__name__}, not callable")
+    return obj
+
+
+_ARG = re.compile(r"^\s*([A-Za-z_]\w*)\s*\[\s*([\d\s,x]*)\s*\]\s*$")
+
+
+def _shapes(part: str, what: str, sig: str) -> list[tuple[str, tuple[int, ...]]]:
+    out = []
+    for a in filter(None, (x.strip() for x in re.split(r",(?![^\[]*\])", part))):
+        m = _ARG.match(a)
+        if not m:
+            raise BadInput(f"--signature {sig!r}: {what} {a!r}: expected NAME[N] or "
+                           f"NAME[N,M] (doubles)")
+        dims = tuple(int(d) for d in re.split(r"[,x\s]+", m.group(2).strip()) if d) or (1,)
+        out.append((m.group(1), dims))
+    return out
+
+
+def c_function(spec: str, signature: str) -> tuple[Callable, tuple[str, ...]]:
+    """``(callable, parameter names)`` of the C function ``spec`` (``path/libfoo.so:fn``)
+    with ``signature`` (``in1[3],in2[3,3]->out[6]``: ``void fn(const double *in1, ...,
+    double *out, ...)``, arrays row-major).
+
+    Raises:
+        BadInput: a library that does not load, a missing symbol, a malformed signature."""
+    lib_path, sep, sym = spec.rpartition(":")
+    if not sep or not lib_path or not sym:
+        raise BadInput(f"--c {spec!r}: expected LIBRARY:SYMBOL (./libfoo.so:adjoint)")
+    ins, arrow, outs = signature.partition("->")
+    if not arrow:
+        raise BadInput(f"--signature {signature!r}: expected INPUTS->OUTPUTS "
+                       f"(t_A[6],a[3],p[3]->t_P[6])")
+    ins_s, outs_s = _shapes(ins, "input", signature), _shapes(outs, "output", signature)
+    if not ins_s or not outs_s:
+        raise BadInput(f"--signature {signature!r}: at least one input and one output")
+    try:
+        lib = ctypes.CDLL(lib_path)
+        fn = getattr(lib, sym)
+    except OSError as e:
+        raise BadInput(f"--c {spec!r}: library {lib_path!r} does not load ({e})") from e
+    except AttributeError as e:
+        raise BadInput(f"--c {spec!r}: no symbol {sym!r} in {lib_path}") from e
+    ptr = ctypes.POINTER(ctypes.c_double)
+    fn.argtypes = [ptr] * (len(ins_s) + len(outs_s))
+    fn.restype = None
+
+    def call(*args):
+        if len(args) != len(ins_s):
+            raise TypeError(f"{sym}() takes {len(ins_s)} arguments but {len(args)} were given")
+        keep = []
+        for (name, shape), a in zip(ins_s, args, strict=True):
+            a = np.ascontiguousarray(a, dtype=np.float64)
+            if a.size != int(np.prod(shape)):
+                raise ValueError(f"{sym}: {name} has {a.size} values, expected {shape}")
+            keep.append(a)
+        res = [np.zeros(shape) for _, shape in outs_s]
+        fn(*[a.ctypes.data_as(ptr) for a in keep], *[r.ctypes.data_as(ptr) for r in res])
+        return res[0] if len(res) == 1 else tuple(res)
+
+    call.__name__ = sym
+    return call, tuple(n for n, _ in ins_s)
+
+
+def parameter_names(func: Callable) -> tuple[str, ...] | None:
+    """The names of ``func``'s positional parameters (None where Python cannot say)."""
+    try:
+        ps = inspect.signature(func).parameters.values()
+    except (TypeError, ValueError):
+        return None
+    names = [p.name for p in ps if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)
+             and p.default is p.empty]
+    return tuple(names) or None
+
+
+def as_numpy_callable(func: Callable) -> Callable:
+    """``func`` called with NumPy arrays, and where that raises a TypeError or an
+    AttributeError (a PyTorch function), with float64 tensors of the same values."""
+    state: dict = {}
+
+    def call(*args):
+        if state.get("torch"):
+            import torch
+
+            return func(*[torch.as_tensor(np.asarray(a)) for a in args])
+        try:
+            return func(*args)
+        except (TypeError, AttributeError) as first:
+            try:
+                import torch
+            except ImportError:
+                raise first from None
+            try:
+                out = func(*[torch.as_tensor(np.asarray(a)) for a in args])
+            except Exception:  # noqa: BLE001  (not a PyTorch function: NumPy's error)
+                raise first from None
+            state["torch"] = True
+            return out
+
+    call.__name__ = getattr(func, "__name__", "function")
+    call.__wrapped__ = func
+    return call

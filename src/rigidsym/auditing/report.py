@@ -1,0 +1,156 @@
+"""An audit's report: plain text, JSON, Markdown ready to paste into an issue (the inputs as
+exact hex floats, the truth, the error, the convention), and a pytest regression file for
+the user's repository. Nothing is written unless asked (:func:`write_pytest`)."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import asdict
+from pathlib import Path
+
+import numpy as np
+
+from rigidsym.auditing.audit import AuditReport, WorstInput
+from rigidsym.core.errors import BadInput
+
+__all__ = ["text", "to_json", "markdown", "pytest_source", "write_pytest", "hexes"]
+
+
+def hexes(values) -> list[str]:
+    """Each float of ``values`` (any nesting) as ``float.hex``: exact."""
+    return [float(v).hex() for v in np.ravel(np.asarray(values, dtype=np.float64))]
+
+
+def _array(a) -> str:
+    vals = ", ".join(f"float.fromhex({h!r})" for h in hexes(a))
+    shape = np.shape(a)
+    return f"np.array([{vals}])" + (f".reshape({shape!r})" if len(shape) > 1 else "")
+
+
+def _call(rep: AuditReport, w: WorstInput) -> str:
+    name = rep.spec.rpartition(":")[2] or rep.function
+    return f"{name}({', '.join(_array(a) for a in w.args)})"
+
+
+def _worst_lines(rep: AuditReport) -> list[str]:
+    out = []
+    for w in rep.worst:
+        out.append(f"  worst input, {w.dtype} ({w.regime}): error {w.err_u:.3g} u, kappa "
+                   f"{w.kappa:.3g}, {w.ratio:.3g} x the bound 8 u (kappa + 1); rigidsym's "
+                   f"kernel there: {w.kernel_err_u:.3g} u" + (f"; {w.flag}" if w.flag else ""))
+        for label, e in sorted(w.peers.items()):
+            out.append(f"    {label}: {e:.3g} u")
+        out.append(f"    reproducer: {_call(rep, w)}")
+    return out
+
+
+def text(rep: AuditReport) -> str:
+    """The report as plain text."""
+    lines = [f"audit of {rep.function} as {rep.target}: {'PASS' if rep.ok else 'FINDINGS'}"
+             f" ({rep.seconds:.1f} s)", f"  the book: {rep.book}"]
+    if rep.convention:
+        lines.append(f"  convention: {rep.convention} (found among {rep.tried} members)")
+    else:
+        lines.append(f"  convention: none of {rep.tried} members matches; nearest: "
+                     f"{rep.nearest} (residual {rep.residual:.3g})")
+    lines += _worst_lines(rep)
+    for dt, rows in rep.behaviour.items():
+        lines.append(f"  per regime, {dt} (inputs: worst err / bound, yours | rigidsym's; "
+                     f"flags where the truth is finite; flags where it is not):")
+        for b in rows:
+            lines.append(f"    {b['regime']}: {b['n']}: {b['worst_ratio']:.3g} | "
+                         f"{b['kernel_worst_ratio']:.3g}; {b['nan']} NaN/inf, {b['raised']} "
+                         f"raised; {b['expected']} expected")
+    if rep.batch:
+        lines.append(f"  batch: {rep.batch}")
+    for f in rep.findings:
+        lines.append(f"  {f.severity.upper()} [{f.kind}] {f.text}")
+    return "\n".join(lines) + "\n"
+
+
+def to_json(rep: AuditReport) -> str:
+    """The report as JSON (every field; floats of the worst inputs also as hex)."""
+    d = asdict(rep)
+    d["ok"] = rep.ok
+    for w in d["worst"]:
+        w["args_hex"] = [hexes(a) for a in w["args"]]
+        w["truth_hex"] = None if w["truth"] is None else hexes(w["truth"])
+
+    def clean(x):
+        if isinstance(x, float) and not np.isfinite(x):
+            return str(x)
+        if isinstance(x, dict):
+            return {k: clean(v) for k, v in x.items()}
+        if isinstance(x, list):
+            return [clean(v) for v in x]
+        return x
+    return json.dumps(clean(d), indent=1) + "\n"
+
+
+def markdown(rep: AuditReport) -> str:
+    """A Markdown summary to paste into an issue of the function's project."""
+    lines = [f"### `{rep.function}` audited as `{rep.target}` (rigidsym audit)", "",
+             f"- The book: {rep.book}",
+             f"- Convention found: {rep.convention or 'none; nearest ' + str(rep.nearest)} "
+             f"({rep.tried} members tried)"]
+    for f in rep.findings:
+        lines.append(f"- **{f.severity}** ({f.kind}): {f.text}")
+    for w in rep.worst:
+        lines += ["", f"Worst input ({w.dtype}, {w.regime}): error **{w.err_u:.3g} u** "
+                  f"(condition number {w.kappa:.3g}; the bound 8 u (kappa + 1) x "
+                  f"{w.ratio:.3g}); rigidsym's kernel: {w.kernel_err_u:.3g} u.", "",
+                  "| | exact value (hex floats) |", "|---|---|"]
+        for i, a in enumerate(w.args):
+            lines.append(f"| argument {i + 1} | `{' '.join(hexes(a))}` |")
+        if w.truth is not None:
+            lines.append(f"| truth (60+ digits, rounded) | `{' '.join(hexes(w.truth))}` |")
+        if w.got is not None:
+            lines.append(f"| got | `{' '.join(hexes(w.got))}` |")
+        lines += ["", "```python", _call(rep, w), "```"]
+    return "\n".join(lines) + "\n"
+
+
+def pytest_source(rep: AuditReport) -> str:
+    """A pytest file that fails while the worst input's error is past the bound.
+
+    Raises:
+        BadInput: no importable ``module:function`` to call, or no worst input with a
+            truth."""
+    mod, _, name = rep.spec.partition(":")
+    if not mod or not name or "<" in name:
+        raise BadInput("--pytest: the function must be importable as module:function")
+    cases = [w for w in rep.worst if w.truth is not None]
+    if not cases:
+        raise BadInput("--pytest: no worst input with a defined truth to test")
+    body = [f'"""Regression test written by `rigidsym audit {rep.spec} --as {rep.target}`:',
+            f"the worst input found, in the function's convention ({rep.form};",
+            f"{', '.join(rep.generators) or 'the book'}'s), against the truth of the book's",
+            'formula (ball arithmetic, rounded); within 8 u (kappa + 1) passes."""', "",
+            "import numpy as np", "", f"from {mod} import {name.split('.')[0]}", ""]
+    for i, w in enumerate(cases):
+        u = 2.0**-53 if w.dtype == "float64" else 2.0**-24
+        bound = 8 * u * (w.kappa + 1)
+        args = ", ".join(f"np.array([float.fromhex(h) for h in {hexes(a)!r}], "
+                         f"dtype=np.{w.dtype}).reshape({np.shape(a)!r})" for a in w.args)
+        body += ["", f"def test_{rep.target}_worst_input_{w.dtype}_{i}():",
+                 f"    # {w.regime}: error {w.err_u:.3g} u at audit time",
+                 f"    args = [{args}]",
+                 f"    truth = np.array([float.fromhex(h) for h in {hexes(w.truth)!r}])",
+                 f"    out = {name}(*args)",
+                 "    outs = out if isinstance(out, (tuple, list)) else [out]",
+                 "    got = np.concatenate([np.ravel(np.asarray(o, dtype=np.float64)) "
+                 "for o in outs])",
+                 "    assert np.isfinite(got).all()",
+                 f"    assert np.linalg.norm(got - truth) <= {bound!r} * ("
+                 "np.linalg.norm(truth) or 1.0)"]
+    return "\n".join(body) + "\n"
+
+
+def write_pytest(rep: AuditReport, path: str | Path) -> Path:
+    """Write :func:`pytest_source` to ``path`` (atomically; BadInput as it raises)."""
+    from rigidsym.core.files import write_atomic
+
+    src = pytest_source(rep)
+    p = Path(path)
+    write_atomic(p, src)
+    return p

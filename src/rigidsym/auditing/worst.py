@@ -1,0 +1,345 @@
+"""The worst input of a user's function, in its convention, against the book's truth.
+
+The project's own search (:mod:`rigidsym.codegen.accuracy.harness`): the regimes of the
+kernel (its derived singular sets, approaches log-spaced from 1e-1 to 1e-75 of each, the
+ends of the floating range), each vector argument's approach to 0 and to exactly 0 (a
+rotation vector's to pi), then hill climbing on ``err / (8 u (kappa + 1))`` from
+exponent-uniform starts. Each input is judged by the harness's judge against the declared
+formula in ball arithmetic at the exact input (``reference``: narrower than 1e-3 ulp), the
+condition half of issue 37's rule (``err <= 8 u (kappa + 1)``, the bound rigidsym's kernels
+meet), with rigidsym's kernel judged at the same input beside it. A flag (NaN, inf or an
+exception) is expected where the truth is undefined or the rounding of the input can reach
+the singular set (``kappa u >= 1/8``), else it is a finding.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rigidsym.auditing.conventions import Member, call_member, flat, ordinary_points
+from rigidsym.auditing.targets import Target
+from rigidsym.codegen.accuracy import regimes as P
+from rigidsym.codegen.accuracy.harness import judge as J
+from rigidsym.codegen.accuracy.harness import reference as R
+from rigidsym.codegen.accuracy.harness import search as S
+
+__all__ = ["extreme", "Runner", "Judged", "Behaviour", "audit_regimes", "judge_point",
+           "sweep", "batch_dependence"]
+
+
+def extreme(regime: str) -> bool:
+    """A regime at the ends of the floating range (``range 1e-300..1e300``, float32's
+    ``range 1e-35..1e35``): what goes wrong there is a note of the report, not an error,
+    and ranks after every other regime."""
+    return regime.startswith("range ")
+
+
+class Runner:
+    """The harness's ``runner``: back-end ``"user"`` the user's function under ``member``
+    row by row (an exception is a NaN row, recorded in :attr:`raised`), ``"kernel"``
+    rigidsym's NumPy kernel."""
+
+    def __init__(self, func: Callable, member: Member, tgt_kernel, tgt: Target | None = None):
+        self.func, self.member, self.args = func, member, tgt_kernel.args
+        self.raised: list[str] = []
+        #: a function that returns some of the kernel's outputs (the Euler angles alone):
+        #: the others are the kernel's, at the same input (judged beside the user's)
+        self.tgt = tgt if tgt is not None and tgt.outputs else None
+
+    def __call__(self, name, arrays, dtype, backend) -> np.ndarray:
+        if backend == "kernel":
+            return J.run_kernel(name, arrays, dtype, "numpy")
+        n = arrays[0].shape[0]
+        rows = []
+        for s in range(n):
+            x = {a.name: np.asarray(arrays[j][s], dtype=np.float64)
+                 for j, a in enumerate(self.args)}
+            try:
+                with np.errstate(all="ignore"):
+                    rows.append(call_member(self.func, self.member, x, dtype))
+            except Exception as e:  # noqa: BLE001  (the user's function raised: a flag)
+                self.raised.append(f"{type(e).__name__}: {e}")
+                rows.append(None)
+        if self.tgt is not None:
+            full = J.run_kernel(name, arrays, dtype, "numpy")
+            sl = self.tgt.user_slice(R.kernel_of(name))
+            for s, r in enumerate(rows):
+                ok = r is not None and r.size == sl.stop - sl.start
+                full[s, sl] = r if ok else np.nan
+            return full
+        size = max((r.size for r in rows if r is not None), default=1)
+        return np.stack([r if r is not None and r.size == size else np.full(size, np.nan)
+                         for r in rows])
+
+
+def audit_regimes(kernel, dtype, seed: int) -> dict[str, list]:
+    """The kernel's regimes (derived singular sets included) and, per unconstrained vector
+    argument, its approach to 0 (log-spaced), exactly 0, and for a rotation vector (or the
+    angular block of ``xi``) its approach to pi: ``{regime: [exact point]}``."""
+    out = P.regimes(kernel, dtype, n_random=4, seed=seed, derived=True)
+    rng = np.random.default_rng(seed + 1)
+    small = P.STEPS32 if dtype == np.float32 else P.STEPS
+    for i, a in enumerate(kernel.args):
+        if a.kind != "any" or a.shape not in ((3,), (6,)):
+            continue
+        blk = slice(0, 3)
+
+        def base():
+            return [P.random_arg(b, rng, kernel.name) for b in kernel.args]
+
+        for s in [*small, 0.0]:
+            p = base()
+            v = list(p[i])
+            v[blk] = [x * P.q(s) for x in v[blk]]
+            p[i] = v
+            out.setdefault(f"|{a.name}[0:3]| -> 0" if s else f"{a.name}[0:3] = 0", []).append(p)
+        if a.name in ("w", "xi"):
+            for s in small[:12]:
+                for sign in (-1, 1):
+                    p = base()
+                    e = P.unit(rng)
+                    p[i] = [*(x * P.q(math.pi * (1 + sign * s)) for x in e), *p[i][3:]]
+                    out.setdefault(f"|{a.name}[0:3]| -> pi", []).append(p)
+    return out
+
+
+@dataclass
+class Judged:
+    """One input judged: the user's function and rigidsym's kernel there."""
+
+    regime: str
+    point: list              # exact (fmpq) per argument
+    ratio: float             # err / (8 u (kappa + 1)) of the user's function
+    err: float               # its normwise relative error
+    kappa: float
+    kernel_ratio: float
+    kernel_err: float
+    flag: str = ""           # "", "expected", "NaN", "raises: ..."
+
+
+@dataclass
+class Behaviour:
+    """Per regime: how the user's function behaved."""
+
+    regime: str
+    n: int = 0
+    worst_ratio: float = 0.0
+    kernel_worst_ratio: float = 0.0
+    nan: int = 0             # non-finite where the truth is finite (a silent wrong)
+    raised: int = 0          # exceptions where the truth is finite
+    expected: int = 0        # flags (NaN or exceptions) where the truth is undefined
+    examples: list = field(default_factory=list)
+
+
+def judge_point(name: str, regime: str, point, dtype, runner: Runner,
+                antipodal: str = "") -> Judged:
+    """The user's function and the kernel judged at one exact ``point`` (``antipodal``: the
+    target's :attr:`~.targets.Target.antipodal`)."""
+    before = len(runner.raised)
+    user, kern = J.judge(name, regime, [point], dtype, ["user", "kernel"], runner=runner,
+                         reference_half=False)
+    raised = runner.raised[before:]
+    flag, ratio = "", user.worst_ratio
+    if user.spurious:
+        flag, ratio = (f"raises {raised[0]}" if raised else "NaN"), math.inf
+    elif user.flagged_expected:
+        flag, ratio = _at_undefined(name, point, dtype, runner, before)
+    err = user.err
+    if not flag and user.beyond and antipodal:
+        # at the half turn itself the sign is the input's rounding's (kappa infinite, not
+        # judged by the rule), but the magnitude and the axis are not: w or -w, within 16 u
+        ratio, err = _at_half_turn(name, point, dtype, runner, antipodal)
+    if antipodal == "euler":
+        if not flag and (ratio > 1 or user.beyond):
+            ratio, err = _euler_family(name, point, dtype, runner, ratio, err,
+                                       bool(user.beyond))
+    elif not flag and ratio > 1 and antipodal:
+        other = _antipodal(name, point, dtype, runner, user.kappa, antipodal)
+        if other < ratio:       # the other sign's truth: its error is the one reported
+            u = float(np.finfo(dtype).eps) / 2
+            ratio, err = other, other * 8 * u * (user.kappa + 1)
+    return Judged(regime, point, ratio, err, user.kappa, kern.worst_ratio, kern.err, flag)
+
+
+def _antipodal(name, point, dtype, runner, kappa, kind: str) -> float:
+    """The ratio of the other sign's truth to the user's output where the truth is within
+    16 u of a half turn: there the rounding of Q decides the sign (of w, of the axis e;
+    vect(Q) is rounding noise), and both are the truth of a rotation within the input's
+    rounding; a quaternion's sign anywhere (q and -q are the same rotation). ``kind``:
+    :attr:`~.targets.Target.antipodal`."""
+    truth, _ = truth_at(name, point, dtype)
+    u = float(np.finfo(dtype).eps) / 2
+    if truth is None:
+        return math.inf
+    other = -truth
+    if kind == "rotation_vector":
+        near = np.linalg.norm(truth) >= math.pi * (1 - 16 * u)
+    elif kind == "quaternion":      # q and -q are the same rotation everywhere
+        near = True
+    else:                       # the axis and angle: [-e; phi]
+        near = truth[3] >= math.pi * (1 - 16 * u)
+        other = np.concatenate([-truth[:3], truth[3:]])
+    if not near:
+        return math.inf
+    arrays = J.round_points([point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    d = float(np.linalg.norm(mine - other)) / float(np.linalg.norm(truth))
+    return d / (8 * u * (kappa + 1))
+
+
+def euler_rotation(seq: str, angles) -> np.ndarray:
+    """``Q = R_i(a) R_j(b) R_k(c)`` of the intrinsic ``seq`` (``"zyx"``) in float64: the
+    rotation of a user's Euler angles (written here, apart from the kernels it judges)."""
+    Q = np.eye(3)
+    for ax, t in zip(seq.lower(), angles, strict=True):
+        i = "xyz".index(ax)
+        j, k = (i + 1) % 3, (i + 2) % 3
+        R = np.eye(3)
+        R[j, j], R[j, k], R[k, j], R[k, k] = math.cos(t), -math.sin(t), math.sin(t), math.cos(t)
+        Q = Q @ R
+    return Q
+
+
+def _euler_family(name, point, dtype, runner, ratio, err, beyond) -> tuple[float, float]:
+    """``(ratio, err)`` of Euler angles the rule calls wrong (or does not judge: ``beyond``,
+    the input's rounding reaches the gimbal lock, ``kappa u >= 1/8``): the other branch's
+    truth is as true; at the lock (the kernel's flag) or beyond, every member of the family
+    is, and the rotation of the user's angles is judged against the truth's, over 16 u."""
+    truth, _ = truth_at(name, point, dtype)
+    if truth is None:
+        return ratio, err
+    arrays = J.round_points([point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine[:3]).all():
+        return math.inf, math.inf
+    u = float(np.finfo(dtype).eps) / 2
+    cands = []
+    if not beyond:
+        cands.append((ratio, err))
+        d = float(np.linalg.norm(mine[:3] - truth[3:6])) / max(
+            float(np.linalg.norm(truth[3:6])), 1e-300)
+        if err > 0:                  # the other branch (the same bound)
+            cands.append((ratio * d / err, d))
+    if truth[6] == 1 or beyond:
+        seq = name.rsplit("_", 1)[-1]
+        dq = float(np.linalg.norm(euler_rotation(seq, mine[:3]) - euler_rotation(
+            seq, truth[:3]))) / math.sqrt(3)
+        cands.append((dq / (16 * u), dq))
+    return min(cands)
+
+
+def _at_half_turn(name, point, dtype, runner, kind: str) -> tuple[float, float]:
+    """``(ratio, err)`` of the user's output at a point the rule does not judge (the input's
+    rounding reaches the sign's discontinuity): the distance to the nearer of the truth and
+    its other sign, over 16 u."""
+    truth, _ = truth_at(name, point, dtype)
+    if truth is None or not np.linalg.norm(truth):
+        return 0.0, 0.0
+    other = (np.concatenate([-truth[:3], truth[3:]]) if kind == "axis" else -truth)
+    arrays = J.round_points([point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine).all():
+        return 0.0, 0.0
+    u = float(np.finfo(dtype).eps) / 2
+    d = min(float(np.linalg.norm(mine - truth)), float(np.linalg.norm(mine - other)))
+    d /= float(np.linalg.norm(truth))
+    return d / (16 * u), d
+
+
+def _at_undefined(name, point, dtype, runner, before) -> tuple[str, float]:
+    """Where the declared formula is undefined (a removable singularity, ``w = 0``) or the
+    input's rounding reaches the singular set: a flag of the user's is expected, unless
+    rigidsym's kernel gives the finite limit there; a finite value of the user's far from
+    that limit is a finding too."""
+    arrays = J.round_points([point], dtype, R.kernel_of(name))
+    kern = runner(name, arrays, dtype, "kernel")[0]
+    if not np.isfinite(kern).all():
+        return "expected", 0.0
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine).all():
+        raised = runner.raised[before:]
+        why = f"raises {raised[-1]}" if raised else "NaN"
+        return f"{why} where the limit is finite (rigidsym's kernel: finite)", math.inf
+    u = float(np.finfo(dtype).eps) / 2
+    d = float(np.linalg.norm(mine - kern)) / max(float(np.linalg.norm(kern)), 1e-300)
+    return "", d / (8 * u)
+
+
+def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
+          n_start: int = 12, steps: int = 40, search: bool = True):
+    """``(behaviours by regime, worst Judged, its truth, runner)`` over the regimes and the
+    search, in ``dtype``."""
+    name = member.kernel(tgt)
+    k = R.kernel_of(name)
+    runner = Runner(func, member, R.kernel_of(tgt.kernel), tgt)
+    beh: dict[str, Behaviour] = {}
+    worst: Judged | None = None
+    regs = audit_regimes(k, dtype, seed)
+    if search:
+        ratio, pt = S.search(name, dtype, ("user",), seed=seed, n_start=n_start, steps=steps,
+                             runner=runner, condition=True)
+        if pt is not None:
+            regs["search (hill climbing)"] = [pt]
+    for regime, pts in regs.items():
+        b = beh.setdefault(regime, Behaviour(regime))
+        for pt in pts:
+            j = judge_point(name, regime, pt, dtype, runner, tgt.antipodal)
+            b.n += 1
+            b.kernel_worst_ratio = max(b.kernel_worst_ratio, j.kernel_ratio)
+            if j.flag == "expected":
+                b.expected += 1
+                continue
+            if j.flag:
+                b.raised += j.flag.startswith("raises")
+                b.nan += j.flag.startswith("NaN")
+                if len(b.examples) < 2:
+                    b.examples.append(j)
+            b.worst_ratio = max(b.worst_ratio, j.ratio)
+            # the ends of the floating range rank after every other regime
+            key = (not extreme(regime), j.ratio)
+            if worst is None or key > (not extreme(worst.regime), worst.ratio):
+                worst = j
+    return beh, worst, runner
+
+
+def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarray]]:
+    """``(truth at the input as rounded to dtype, the rounded arguments)`` at an exact
+    point; where the declared formula is undefined there (a removable singularity, ``w =
+    0``) the limit, as rigidsym's kernel gives it (None where that is not finite either)."""
+    k = R.kernel_of(name)
+    arrays = J.round_points([point], dtype, k)
+    flat_in = [float(x) for a in arrays for x in a[0].ravel()]
+    f = R.pick(name, flat_in)
+    ref = R.reference(f, [P.q(x) for x in flat_in])[0]
+    if ref is None:
+        lim = J.run_kernel(name, [a.astype(np.float64) for a in arrays], np.float64,
+                           "numpy")[0]
+        ref = lim if np.isfinite(lim).all() else None
+    return ref, [a[0] for a in arrays]
+
+
+def batch_dependence(func: Callable, member: Member, tgt_kernel, rng) -> str:
+    """Whether the function takes a batch in its form and, if so, whether a row alone and
+    the same row in a batch agree bit for bit."""
+    pts = ordinary_points(tgt_kernel, 8, rng)
+    rows = [call_member(func, member, x) for x in pts]
+    args = [member.user_args(x) for x in pts]
+    try:
+        with np.errstate(all="ignore"):
+            got = func(*[np.stack([np.asarray(a[j], dtype=np.float64) for a in args])
+                         for j in range(len(args[0]))])
+        got = flat(got)
+    except Exception:  # noqa: BLE001  (not batched: one input at a time)
+        return "not batched (one input at a time)"
+    if got.size != len(pts) * rows[0].size:
+        return "not batched (one input at a time)"
+    per = got.reshape(len(pts), -1) if not isinstance(got, tuple) else got
+    diffs = [float(np.max(np.abs(member.book_out(per[i]) - rows[i])))
+             for i in range(len(pts))]
+    worst = max(diffs)
+    return ("batched; each row equal bit for bit to the row alone" if worst == 0 else
+            f"batched; a row in the batch differs from the row alone by up to {worst:.3g}")
