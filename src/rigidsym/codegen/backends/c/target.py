@@ -69,6 +69,10 @@ STATUS = (
                          "(or ran where those flags cannot be read, RIGIDSYM_C_FLAGS_*): "
                          "intermediates may have underflowed or overflowed, so the outputs "
                          "are not guaranteed to the stated bound"),
+    ("DEFAULT_OUTPUT", 16, "an output that is undetermined at these inputs holds its "
+                           "documented default (the axis e = [1, 0, 0] of "
+                           "natural_invariants_from_rotation at Q = 1, where phi = 0 "
+                           "exactly); every other output is right, as with status 0"),
 )
 _C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
 float for goto if inline int long register restrict return short signed sizeof static struct
@@ -112,9 +116,11 @@ def _program(kc, printer, ctype: str) -> dict:
     """The printed variants of ``kc``'s program (branches in order, main last)."""
     zero = "0.0f" if ctype == "float" else "0.0"
     out = []
-    for v in kc.variants:
+    branches = kc.kernel.branches
+    for i, v in enumerate(kc.variants):
         lines = program_lines(v.program, printer)
         out.append({"cond": None if v.cond is None else printer.doprint(v.cond),
+                    "default": branches[i].default if i < len(branches) else "",
                     "finite": finite_check(v.program, kc.kernel, printer), "zero": zero,
                     **lines})
     return out
