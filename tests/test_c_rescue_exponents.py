@@ -7,11 +7,12 @@ so that one argument may be 2^100 while another is 2^-60 (the issue's case: the 
 energy in float with m = 1e30, v = 1e-18 gave status 0 and T = 0, the rescue having scaled
 v by m's power of two until it flushed). The verdict is against the declared formula
 evaluated in 60-digit mpmath (independent of the generated program): a call with status 0
-must be finite and within 16 (|perturbation spread| + u |exact|) + 4 tiny, the spread being
-the largest change of the exact value under a few random relative perturbations of the
-inputs by u (an estimate of u kappa |f|, the kernel's bound 8 u (kappa + 1) up to the
-estimate) and "tiny" the type's smallest normal number (a result that underflows is rounded
-once more, in the subnormal range). A status other than 0 is a flag: allowed.
+must be finite and, output by output (normwise, as the kernels' bound), within
+16 (spread + u max |exact|) + 4 tiny, the spread being the largest change of the exact
+value under eight random relative perturbations of the inputs by u (an estimate of
+u kappa |f|, the kernel's bound 8 u (kappa + 1) up to the estimate) and "tiny" the
+type's smallest normal number (a result that underflows is rounded once more, in the
+subnormal range). A status other than 0 is a flag: allowed.
 
 Every build runs one driver program (generated here from the kernels' signatures) on
 stdin, so the same check runs on x86-64 (long double rescue, and -DRIGIDSYM_C_NO_WIDE's
@@ -212,14 +213,19 @@ def judge(name: str, dtype, xs: list[np.ndarray], status: int, got: np.ndarray,
     u = float(np.finfo(dtype).eps) / 2
     tiny = float(np.finfo(dtype).tiny)
     flat = np.concatenate(xs).astype(np.float64)
-    with mpmath.workdps(60):
+    # a removable singularity of the declared formula ((theta - sin theta) / theta^3 of the
+    # Lie maps) cancels about 3 |log10 theta| digits: the precision grows with the inputs'
+    # exponents so the reference stays exact to 60 digits
+    nz = np.abs(flat[flat != 0])
+    dec = int(np.abs(np.log10(nz)).max()) if nz.size else 0
+    with mpmath.workdps(60 + 4 * dec):
         x = [mpmath.mpf(float(v)) for v in flat]
         try:
             ref = [mpmath.mpf(v) for v in f(*x)]
         except ZeroDivisionError:
             ref = None
         spread = [mpmath.mpf(0)] * len(ref or [])
-        for _ in range(4 if ref is not None else 0):
+        for _ in range(8 if ref is not None else 0):
             d = rng.choice([-u, u], flat.size)
             try:
                 r2 = f(*[xi * (1 + mpmath.mpf(float(di))) for xi, di in zip(x, d, strict=True)])
@@ -233,10 +239,15 @@ def judge(name: str, dtype, xs: list[np.ndarray], status: int, got: np.ndarray,
     assert np.isfinite(got).all(), (name, dtype, status, got)
     if ref is None:     # the declared formula's 0/0 where the kernel takes the limit
         return True     # (the Lie maps at w = 0): no reference here, judged elsewhere
-    for j, (g, a, s) in enumerate(zip(got, ref, spread, strict=True)):
-        tol = 16 * (s + u * abs(a)) + 4 * tiny
-        assert abs(mpmath.mpf(float(g)) - a) <= tol, (
-            name, np.dtype(dtype).name, j, float(g), float(a), float(tol), flat.tolist())
+    j0 = 0
+    for o in book_kernels()[name].outputs:     # normwise per output, as the kernels' bound
+        sl = slice(j0, j0 + o.size)
+        j0 += o.size
+        tol = 16 * (max(spread[sl]) + u * max(abs(a) for a in ref[sl])) + 4 * tiny
+        for j, (g, a) in enumerate(zip(got[sl], ref[sl], strict=True)):
+            assert abs(mpmath.mpf(float(g)) - a) <= tol, (
+                name, np.dtype(dtype).name, o.name, j, float(g), float(a), float(tol),
+                flat.tolist())
     return True
 
 
