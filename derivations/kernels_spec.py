@@ -122,7 +122,8 @@ KERNELS: list[Kernel] = [
         notes="At Q = 1 (vect(Q) = 0 exactly, cos phi > 0) phi = 0 exactly and the axis, "
               "which every unit vector is there, is the default e = [1, 0, 0]: phi == 0 "
               "exactly says the axis is the default (the C target's status has "
-              "RIGIDSYM_C_DEFAULT_AXIS). For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the "
+              "RIGIDSYM_C_DEFAULT_OUTPUT). For an exactly symmetric Q (phi = pi) the sign of "
+              "e is fixed by the rule: the "
               "component of e of largest magnitude is positive (e is taken from the column "
               "of the largest diagonal entry of Q); near pi, the skew part of Q fixes the "
               "sign, as in Pinocchio's log3.",

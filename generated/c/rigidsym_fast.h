@@ -806,7 +806,7 @@ static const rigidsym_slot rigidsym_out_105[] = {
     {3, {6, 6, 6}, 216, 0},
 };
 static const rigidsym_slot rigidsym_in_106[] = {
-    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 3},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
@@ -828,7 +828,7 @@ static const rigidsym_slot rigidsym_out_107[] = {
     {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_108[] = {
-    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 3},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
