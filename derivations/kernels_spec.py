@@ -67,12 +67,29 @@ def _ni_main(Q):
     return {"e": v / s, "phi": sp.atan2(s, c)}
 
 
+def _ni_identity_when(Q):
+    # vect(Q) = 0 exactly (each pair of off-diagonal entries equal, compared without a
+    # product, so nothing underflows) with cos phi > 0: phi = 0, Q = 1
+    pairs = ((2, 1), (0, 2), (1, 0))
+    return sp.And(Q.trace() > 1, *(sp.And(Q[i, j] <= Q[j, i], Q[i, j] >= Q[j, i])
+                                   for i, j in pairs))
+
+
+def _ni_identity(Q):
+    # phi = 0 is known exactly; every unit axis is an axis of the identity (Q(e, 0) = 1 for
+    # every e), so the axis is a documented default, e_x, and phi = 0 exactly says so
+    return {"e": sp.Matrix([1, 0, 0]), "phi": sp.Integer(0)}
+
+
 _NI_BRANCHES = tuple(
     Branch(f"near_pi_{k}", partial(_ni_when, k=k), partial(_ni_near_pi, k=k),
            doc=f"cos(phi) < -1/2 and Q[{k},{k}] is the largest diagonal entry: e from "
                f"column {k} of the symmetric part Q + Q^T - 2 cos(phi) 1 = 2 (1 - cos phi) "
                "e e^T, signed so that e . vect(Q) >= 0")
-    for k in range(3))
+    for k in range(3)) + (
+    Branch("identity", _ni_identity_when, _ni_identity,
+           doc="vect(Q) = 0 and cos(phi) > 0 (Q = 1): phi = 0 exactly, the axis undetermined:"
+               " the default e = [1, 0, 0]", default="e"),)
 
 KERNELS: list[Kernel] = [
     Kernel(
@@ -99,9 +116,14 @@ KERNELS: list[Kernel] = [
         ids=("2.49", "3.95"), sources=(_PR + "vect", _PR + "trace"),
         args=(Q_ARG,), outputs=(Out("e", (3,), "unit axis"), Out("phi", (), "angle [rad]")),
         build=_ni_main, branches=_NI_BRANCHES,
-        singular="phi = 0 (Q = 1): the axis e is undefined",
+        singular="vect(Q) != 0 with |vect(Q)|^2 below the type's range (phi under about "
+                 "1e-154 in float64, 1e-19 in float32): the axis's direction is lost",
         singular_arg="Q",
-        notes="For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the "
+        notes="At Q = 1 (vect(Q) = 0 exactly, cos phi > 0) phi = 0 exactly and the axis, "
+              "which every unit vector is there, is the default e = [1, 0, 0]: phi == 0 "
+              "exactly says the axis is the default (the C target's status has "
+              "RIGIDSYM_C_DEFAULT_OUTPUT). For an exactly symmetric Q (phi = pi) the sign of "
+              "e is fixed by the rule: the "
               "component of e of largest magnitude is positive (e is taken from the column "
               "of the largest diagonal entry of Q); near pi, the skew part of Q fixes the "
               "sign, as in Pinocchio's log3.",

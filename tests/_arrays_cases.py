@@ -18,7 +18,13 @@ def sample(name: str, n: int, seed: int = 0) -> list[np.ndarray]:
     rng = np.random.default_rng(seed)
     out = []
     for a in _state.meta()[name]["args"]:
-        out.append(draw(a["kind"], (n, *a["shape"]), rng, phi=(0.3, 2.8), angle=(0.3, 2.8)))
+        x = draw(a["kind"], (n, *a["shape"]), rng, phi=(0.3, 2.8), angle=(0.3, 2.8))
+        if a["name"] == "m":        # a body's mass and inertia (the kernels check them)
+            x = np.abs(x) + 0.5
+        elif a["name"] == "I_C":    # tr(S) 1 - S of a second moment S
+            S = np.einsum("nij,nkj->nik", x, x) + 0.1 * np.eye(3)
+            x = np.trace(S, axis1=1, axis2=2)[:, None, None] * np.eye(3) - S
+        out.append(x)
     return out
 
 

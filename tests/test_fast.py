@@ -138,11 +138,13 @@ def test_bad_keywords(kw, err):
 
 
 def test_singular_raise_and_nan_rows():
+    # omega = 0: the instant screw axis is undefined (natural_invariants_from_rotation at
+    # Q = 1 is not singular: phi = 0 and the default axis)
     with pytest.raises(K.SingularConfigurationError, match=r"batch indices \[\(1,\)\]"):
-        K.natural_invariants_from_rotation(np.stack([K.rotation_from_natural_invariants(
-            [0, 0, 1], 0.5), np.eye(3)]))
-    e, phi = K.natural_invariants_from_rotation(np.eye(3), on_singular="nan")
-    assert np.isnan(e).all() and np.isnan(phi)
+        K.instant_screw_axis(np.array([[0.0, 0, 1], [0, 0, 0]]), np.zeros(3), [1.0, 0, 0])
+    p0, pitch, plucker = K.instant_screw_axis(np.zeros(3), np.zeros(3), [1.0, 0, 0],
+                                              on_singular="nan")
+    assert np.isnan(p0).all() and np.isnan(pitch) and np.isnan(plucker).all()
     with pytest.raises(K.NonFiniteResultError):
         K.kinetic_energy(np.eye(3), 1.0, [1e200, 0, 0], [0, 0, 0])
     assert np.isnan(K.kinetic_energy(np.eye(3), 1.0, [1e200, 0, 0], [0, 0, 0],

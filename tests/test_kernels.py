@@ -77,9 +77,10 @@ def inputs(kernel, n: int, seed: int = 0) -> list[np.ndarray]:
                 v[:, :3, :3], v[:, :3, 3], v[:, 3, 3] = R, rng.standard_normal((n + adv, 3)), 1
         elif a.name == "m":
             v = rng.uniform(0.5, 2.0, n + adv)
-        elif a.name == "I_C":    # an inertia matrix: symmetric positive definite
-            g = rng.standard_normal((n + adv, 3, 3))
-            v = np.einsum("nij,nkj->nik", g, g) + 0.1 * np.eye(3)
+        elif a.name == "I_C":    # an inertia matrix: tr(S) 1 - S of a second moment S
+            g = rng.standard_normal((n + adv, 3, 3))        # (so a body's: the triangle
+            S = np.einsum("nij,nkj->nik", g, g) + 0.1 * np.eye(3)   # inequality holds)
+            v = np.trace(S, axis1=1, axis2=2)[:, None, None] * np.eye(3) - S
         else:
             v = rng.standard_normal((n + adv,) + a.shape)
             if a.name == "omega" and "omega_dot" not in names and "phi" not in names:

@@ -67,6 +67,12 @@ def valid(spec: dict, batch: tuple, rng) -> np.ndarray:
         return rng.uniform(0.05, np.pi - 0.05, shape) * rng.choice([-1.0, 1.0], shape)
     if spec["name"] == "angles":       # Euler angles: away from gimbal lock
         return rng.uniform(0.2, 1.3, shape)
+    if spec["name"] == "m":            # a body's mass and inertia (the kernels check them)
+        return rng.uniform(0.5, 2.0, shape)
+    if spec["name"] == "I_C":          # tr(S) 1 - S of a second moment S
+        g = rng.standard_normal(shape)
+        S = np.einsum("...ij,...kj->...ik", g, g) + 0.1 * np.eye(3)
+        return np.trace(S, axis1=-2, axis2=-1)[..., None, None] * np.eye(3) - S
     return draw(spec["kind"], shape, rng)   # on the kind's manifold (a transform: [[R, p], [0, 1]])
 
 

@@ -4,10 +4,10 @@
  * source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace (composed in rigidsym.derivations.kernels_spec)
  * equations: (2.49), (3.95)
  * template: c_kernel.c.j2
- * math hash: sha256:445339cc0a3a5a8f
+ * math hash: sha256:45a975db80d80f12
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 172
- * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * branches: near_pi_0, near_pi_1, near_pi_2, identity, main
  */
 #include "natural_invariants_from_rotation.h"
 

@@ -4,14 +4,14 @@
  * source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace (composed in rigidsym.derivations.kernels_spec)
  * equations: (2.49), (3.95)
  * template: c_kernel.h.j2
- * math hash: sha256:445339cc0a3a5a8f
+ * math hash: sha256:45a975db80d80f12
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 172
- * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * branches: near_pi_0, near_pi_1, near_pi_2, identity, main
  *
  * Natural invariants (e, phi) of a rotation matrix, phi in [0, pi].
  * phi = atan2(||vect(Q)||, (tr Q - 1)/2), e = vect(Q)/||vect(Q)||; for cos phi < -1/2, e from the symmetric part of Q (never acos)
- * Singular set: phi = 0 (Q = 1): the axis e is undefined
+ * Singular set: vect(Q) != 0 with |vect(Q)|^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.687 of what
@@ -21,6 +21,7 @@
  *   branch 2: none
  *   branch 3: none
  *   branch 4: none
+ *   branch 5: none
  */
 #ifndef RIGIDSYM_NATURAL_INVARIANTS_FROM_ROTATION_H
 #define RIGIDSYM_NATURAL_INVARIANTS_FROM_ROTATION_H
@@ -112,6 +113,11 @@ static inline int rigidsym_natural_invariants_from_rotation_sample(
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
         const double finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
         singular |= finite != finite;
+    } else if (Q_02 >= Q_20 && Q_10 >= Q_01 && Q_21 >= Q_12 && Q_02 <= Q_20 && Q_10 <= Q_01 && Q_21 <= Q_12 && Q_00 + Q_11 + Q_22 > 1.0) {
+        out_e[0] = 1.0;
+        out_e[1] = 0.0;
+        out_e[2] = 0.0;
+        out_phi[0] = 0.0;
     } else {
         const double x0 = -0.5*Q_12 + (0.5)*Q_21;
         const double x1 = -0.5*Q_01 + (0.5)*Q_10;
@@ -212,6 +218,11 @@ static inline int rigidsym_natural_invariants_from_rotation_sample_f32(
         singular |= (((double)x7)) == 0.0;
         const double finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
         singular |= finite != finite;
+    } else if (((double)Q_02) >= ((double)Q_20) && ((double)Q_10) >= ((double)Q_01) && ((double)Q_21) >= ((double)Q_12) && ((double)Q_02) <= ((double)Q_20) && ((double)Q_10) <= ((double)Q_01) && ((double)Q_21) <= ((double)Q_12) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) > 1.0) {
+        out_e[0] = 1.0f;
+        out_e[1] = 0.0f;
+        out_e[2] = 0.0f;
+        out_phi[0] = 0.0f;
     } else {
         const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
         const float x1 = -0.5f*Q_01 + (0.5f)*Q_10;

@@ -3,10 +3,10 @@
 # source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace (composed in rigidsym.derivations.kernels_spec)
 # equations: (2.49), (3.95)
 # template: array_kernel.py.j2
-# math hash: sha256:445339cc0a3a5a8f
+# math hash: sha256:45a975db80d80f12
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 172
-# branches: near_pi_0, near_pi_1, near_pi_2, main
+# branches: near_pi_0, near_pi_1, near_pi_2, identity, main
 """Natural invariants (e, phi) of a rotation matrix, phi in [0, pi].
 
 phi = atan2(||vect(Q)||, (tr Q - 1)/2), e = vect(Q)/||vect(Q)||; for cos phi < -1/2, e from the symmetric part of Q (never acos)
@@ -21,7 +21,7 @@ the checked, differentiable API.
 import jax.numpy
 
 OPS = 172
-MATH_HASH = "445339cc0a3a5a8f"
+MATH_HASH = "45a975db80d80f12"
 COLUMNS = ("Q_00", "Q_01", "Q_02", "Q_10", "Q_11", "Q_12", "Q_20", "Q_21", "Q_22", )
 
 
@@ -107,6 +107,20 @@ def _when_near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     return jax.numpy.logical_and(jax.numpy.logical_and(jax.numpy.greater_equal(Q_22, Q_00), jax.numpy.greater_equal(Q_22, Q_11)), jax.numpy.less(Q_00 + Q_11 + Q_22, 0.0))
 
 
+def _identity(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
+    return (
+        1.0,
+        0.0,
+        0.0,
+        0.0,
+    ), (
+    )
+
+
+def _when_identity(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
+    return jax.numpy.logical_and(jax.numpy.logical_and(jax.numpy.logical_and(jax.numpy.logical_and(jax.numpy.logical_and(jax.numpy.logical_and(jax.numpy.greater_equal(Q_02, Q_20), jax.numpy.greater_equal(Q_10, Q_01)), jax.numpy.greater_equal(Q_21, Q_12)), jax.numpy.less_equal(Q_02, Q_20)), jax.numpy.less_equal(Q_10, Q_01)), jax.numpy.less_equal(Q_21, Q_12)), jax.numpy.greater(Q_00 + Q_11 + Q_22, 1.0))
+
+
 def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     x0 = -0.5*Q_12 + (0.5)*Q_21
     x1 = -0.5*Q_01 + (0.5)*Q_10
@@ -129,6 +143,7 @@ VARIANTS = (
     ("near_pi_0", _near_pi_0, _when_near_pi_0),
     ("near_pi_1", _near_pi_1, _when_near_pi_1),
     ("near_pi_2", _near_pi_2, _when_near_pi_2),
+    ("identity", _identity, _when_identity),
     ("main", _main, None),
 )
 

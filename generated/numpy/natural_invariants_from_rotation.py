@@ -3,10 +3,10 @@
 # source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace (composed in rigidsym.derivations.kernels_spec)
 # equations: (2.49), (3.95)
 # template: numpy_kernel.py.j2
-# math hash: sha256:445339cc0a3a5a8f
+# math hash: sha256:45a975db80d80f12
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 172
-# branches: near_pi_0, near_pi_1, near_pi_2, main
+# branches: near_pi_0, near_pi_1, near_pi_2, identity, main
 """Natural invariants (e, phi) of a rotation matrix, phi in [0, pi].
 
 phi = atan2(||vect(Q)||, (tr Q - 1)/2), e = vect(Q)/||vect(Q)||; for cos phi < -1/2, e from the symmetric part of Q (never acos)
@@ -21,7 +21,7 @@ the ``(n,)`` uint8 array of flags: 0 fine, ``SINGULAR`` (a denominator is exactl
 import numpy
 
 OPS = 172
-MATH_HASH = "445339cc0a3a5a8f"
+MATH_HASH = "45a975db80d80f12"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
@@ -111,6 +111,17 @@ def _near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     )
 
 
+def _identity(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
+    return (
+        1,
+        0,
+        0,
+        0,
+    ), (
+    ), (
+    )
+
+
 def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22):
     x0 = -0.5*Q_12 + (0.5)*Q_21
     x1 = -0.5*Q_01 + (0.5)*Q_10
@@ -196,6 +207,19 @@ def _block(Q, out_e, out_phi):
         if _idx.size:
             _rest &= ~_hit
             _vals, _dens, _risky = _near_pi_2(*(_c[_idx] for _c in _cols))
+            _store(_outs, _vals, _idx)
+            _bad[_idx] = False
+            _nf[_idx] = False
+            for _d in _dens:
+                _bad[_idx] |= numpy.equal(_d, 0.0)
+            for _r in _risky:
+                _nf[_idx] |= ~numpy.isfinite(_r)
+        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, = _cols
+        _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_02, Q_20),numpy.greater_equal(Q_10, Q_01),numpy.greater_equal(Q_21, Q_12),numpy.less_equal(Q_02, Q_20),numpy.less_equal(Q_10, Q_01),numpy.less_equal(Q_21, Q_12),numpy.greater(Q_00 + Q_11 + Q_22, 1))))
+        _idx = numpy.flatnonzero(_hit)
+        if _idx.size:
+            _rest &= ~_hit
+            _vals, _dens, _risky = _identity(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             _nf[_idx] = False

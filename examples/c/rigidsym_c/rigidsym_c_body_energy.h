@@ -31,8 +31,15 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of m and v and inertia and omega
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in m, v, inertia, omega (the other arguments fixed),
+ *   T -> 2^(k_m + 2*k_v) T
+ * for every integer k_x with
+ *   k_inertia - k_m + 2*k_omega - 2*k_v = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_body_energy(
     double m,
@@ -104,8 +111,19 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of m and v and inertia and omega
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in m, v, inertia, omega (the other arguments fixed),
+ *   T -> 2^(k_inertia + 2*k_omega) T
+ *   T_D_m -> 2^(2*k_v) T_D_m
+ *   T_D_v -> 2^(k_m + k_v) T_D_v
+ *   T_D_inertia -> 2^(2*k_omega) T_D_inertia
+ *   T_D_omega -> 2^(k_inertia + k_omega) T_D_omega
+ * for every integer k_x with
+ *   -k_inertia + k_m - 2*k_omega + 2*k_v = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double m,

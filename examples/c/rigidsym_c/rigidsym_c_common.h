@@ -31,6 +31,10 @@
  * read, RIGIDSYM_C_FLAGS_*): intermediates may have underflowed or overflowed, so the
  * outputs are not guaranteed to the stated bound */
 #define RIGIDSYM_C_EXTREME_INPUT 8
+/* an output that is undetermined at these inputs holds its documented default (the
+ * axis e = [1, 0, 0] of natural_invariants_from_rotation at Q = 1, where phi = 0
+ * exactly); every other output is right, as with status 0 */
+#define RIGIDSYM_C_DEFAULT_OUTPUT 16
 
 #include <stddef.h>   /* size_t, of the _batch functions */
 

@@ -417,6 +417,56 @@ static inline int rigidsym_c_extreme_f(const float *p, int n)
     return (int)(odd >> 31);
 }
 
+/* 1 when a nonzero component of the n values at a is zero at b (its power-of-two scaling
+ * underflowed): the rescue must not read it as an ordinary zero. Bit tests, so that a
+ * flush-to-zero mode's reading of a subnormal as zero cannot hide one. */
+static inline int rigidsym_c_lost_d(const double *a, const double *b, int n)
+{
+    uint64_t x, y;
+    int j, lost = 0;
+    for (j = 0; j < n; ++j) {
+        memcpy(&x, &a[j], sizeof x);
+        memcpy(&y, &b[j], sizeof y);
+        lost |= (x << 1) != 0 && (y << 1) == 0;
+    }
+    return lost;
+}
+
+static inline int rigidsym_c_lost_f(const float *a, const float *b, int n)
+{
+    uint32_t x, y;
+    int j, lost = 0;
+    for (j = 0; j < n; ++j) {
+        memcpy(&x, &a[j], sizeof x);
+        memcpy(&y, &b[j], sizeof y);
+        lost |= (x << 1) != 0 && (y << 1) == 0;
+    }
+    return lost;
+}
+
+/* 1 when one of the n values at p is subnormal (what a flush-to-zero mode reads as 0) */
+static inline int rigidsym_c_subnormal_d(const double *p, int n)
+{
+    uint64_t x;
+    int j, sub = 0;
+    for (j = 0; j < n; ++j) {
+        memcpy(&x, &p[j], sizeof x);
+        sub |= (x << 1) != 0 && ((x >> 52) & 0x7ffU) == 0;
+    }
+    return sub;
+}
+
+static inline int rigidsym_c_subnormal_f(const float *p, int n)
+{
+    uint32_t x;
+    int j, sub = 0;
+    for (j = 0; j < n; ++j) {
+        memcpy(&x, &p[j], sizeof x);
+        sub |= (x << 1) != 0 && ((x >> 23) & 0xffU) == 0;
+    }
+    return sub;
+}
+
 /* a b - c d compensated (Kahan's algorithm): within 2 u of the exact value however much the
  * products cancel (fma: C99's correctly rounded libm function, an instruction where the
  * target has one). */

@@ -32,8 +32,15 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of I_C; of m; of c_ddot
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in I_C, m, omega, omega_dot, c_ddot (the other arguments fixed),
+ *   w -> 2^(k_I_C + 2*k_omega / k_c_ddot + k_m) w
+ * for every integer k_x with
+ *   -2*k_omega + k_omega_dot = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     const double I_C[9],
@@ -109,8 +116,20 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of I_C; of m; of c_ddot
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in I_C, m, omega, omega_dot, c_ddot (the other arguments fixed),
+ *   w -> 2^(k_I_C + 2*k_omega / k_c_ddot + k_m) w
+ *   w_D_I_C -> 2^(k_omega_dot / 2*k_omega / 0) w_D_I_C
+ *   w_D_m -> 2^(0 / k_c_ddot) w_D_m
+ *   w_D_omega -> 2^(k_I_C + k_omega / 0) w_D_omega
+ *   w_D_omega_dot -> 2^(k_I_C / 0) w_D_omega_dot
+ *   w_D_c_ddot -> 2^(0 / k_m) w_D_c_ddot
+ * for every integer k_x with
+ *   -2*k_omega + k_omega_dot = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     const double I_C[9],

@@ -64,39 +64,97 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
     double l2,
     double p[2])
 {
-    int status;
-    double finite;
-    /* every output is homogeneous in the arguments of each step below: scale them
-     * by the power of two 2^-e that brings their largest component into [1/2, 1)
-     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-     * when every component is then of ordinary magnitude (else the flag stays) */
-    int still_ = 0;
-    int rs_e0 = 0;
-#if RIGIDSYM_C_FLAGS_D
-    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
-     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
-    if (rigidsym_c_fp_flushing())
-        return -1;
-#endif
+    int status, still_;
+    double finite, m_;
+    /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
+     * that meets the constraints in the header (homogeneous.py): each plan below gives its
+     * free arguments the scale of their own largest component and the others the scale the
+     * constraints tie them to (exact), evaluates, and scales the outputs back; the first
+     * plan under which every argument is of ordinary magnitude and no nonzero component
+     * was flushed to zero is taken (else the flag stays) */
     double rs_l1;
     double rs_l2;
-    {
-        double m_ = 0.0;
-        m_ = fabs(l1) > m_ ? fabs(l1) : m_;
-        m_ = fabs(l2) > m_ ? fabs(l2) : m_;
-        if (m_ > 0.0)
-            (void)frexp(m_, &rs_e0);
-        rs_l1 = ldexp(l1, -rs_e0);
-        still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
-        rs_l2 = ldexp(l2, -rs_e0);
-        still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+    int rs_e = 0, rs_t0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
+     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
+     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
+    if (rigidsym_c_fp_flushing()) {
+        if (rigidsym_c_subnormal_d(&q1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_d(&q2, 1))
+            return -1;
+        if (rigidsym_c_subnormal_d(&l1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_d(&l2, 1))
+            return -1;
     }
+#endif
+    /* plan 0: free l2 */
+    still_ = 0;
+    m_ = 0.0;
+    rs_e = 0;
+    m_ = fabs(l2);
+    if (m_ > 0.0)
+        (void)frexp(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexp(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
+        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
+    rs_l2 = ldexp(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
+        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
-        p[0] = ldexp(p[0], 1 * rs_e0);
-        p[1] = ldexp(p[1], 1 * rs_e0);
+        m_ = p[0];
+        p[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    /* plan 1: free l1 */
+    still_ = 0;
+    m_ = 0.0;
+    rs_e = 0;
+    m_ = fabs(l1);
+    if (m_ > 0.0)
+        (void)frexp(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexp(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
+        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
+    rs_l2 = ldexp(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
+        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
+    still_ |= rigidsym_c_extreme_d(&q1, 1);
+    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
+        m_ = p[0];
+        p[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -314,39 +372,97 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
     float l2,
     float p[2])
 {
-    int status;
-    float finite;
-    /* every output is homogeneous in the arguments of each step below: scale them
-     * by the power of two 2^-e that brings their largest component into [1/2, 1)
-     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-     * when every component is then of ordinary magnitude (else the flag stays) */
-    int still_ = 0;
-    int rs_e0 = 0;
-#if RIGIDSYM_C_FLAGS_F
-    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
-     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
-    if (rigidsym_c_fp_flushing())
-        return -1;
-#endif
+    int status, still_;
+    float finite, m_;
+    /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
+     * that meets the constraints in the header (homogeneous.py): each plan below gives its
+     * free arguments the scale of their own largest component and the others the scale the
+     * constraints tie them to (exact), evaluates, and scales the outputs back; the first
+     * plan under which every argument is of ordinary magnitude and no nonzero component
+     * was flushed to zero is taken (else the flag stays) */
     float rs_l1;
     float rs_l2;
-    {
-        float m_ = 0.0f;
-        m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
-        m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
-        if (m_ > 0.0f)
-            (void)frexpf(m_, &rs_e0);
-        rs_l1 = ldexpf(l1, -rs_e0);
-        still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
-        rs_l2 = ldexpf(l2, -rs_e0);
-        still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+    int rs_e = 0, rs_t0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
+     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
+     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
+    if (rigidsym_c_fp_flushing()) {
+        if (rigidsym_c_subnormal_f(&q1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_f(&q2, 1))
+            return -1;
+        if (rigidsym_c_subnormal_f(&l1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_f(&l2, 1))
+            return -1;
     }
+#endif
+    /* plan 0: free l2 */
+    still_ = 0;
+    m_ = 0.0f;
+    rs_e = 0;
+    m_ = fabsf(l2);
+    if (m_ > 0.0f)
+        (void)frexpf(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexpf(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
+        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
+    rs_l2 = ldexpf(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
+        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
-        p[0] = ldexpf(p[0], 1 * rs_e0);
-        p[1] = ldexpf(p[1], 1 * rs_e0);
+        m_ = p[0];
+        p[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    /* plan 1: free l1 */
+    still_ = 0;
+    m_ = 0.0f;
+    rs_e = 0;
+    m_ = fabsf(l1);
+    if (m_ > 0.0f)
+        (void)frexpf(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexpf(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
+        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
+    rs_l2 = ldexpf(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
+        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
+    still_ |= rigidsym_c_extreme_f(&q1, 1);
+    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
+        m_ = p[0];
+        p[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -631,43 +747,145 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
     double p_D_l1[2],
     double p_D_l2[2])
 {
-    int status;
-    double finite;
-    /* every output is homogeneous in the arguments of each step below: scale them
-     * by the power of two 2^-e that brings their largest component into [1/2, 1)
-     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-     * when every component is then of ordinary magnitude (else the flag stays) */
-    int still_ = 0;
-    int rs_e0 = 0;
-#if RIGIDSYM_C_FLAGS_D
-    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
-     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
-    if (rigidsym_c_fp_flushing())
-        return -1;
-#endif
+    int status, still_;
+    double finite, m_;
+    /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
+     * that meets the constraints in the header (homogeneous.py): each plan below gives its
+     * free arguments the scale of their own largest component and the others the scale the
+     * constraints tie them to (exact), evaluates, and scales the outputs back; the first
+     * plan under which every argument is of ordinary magnitude and no nonzero component
+     * was flushed to zero is taken (else the flag stays) */
     double rs_l1;
     double rs_l2;
-    {
-        double m_ = 0.0;
-        m_ = fabs(l1) > m_ ? fabs(l1) : m_;
-        m_ = fabs(l2) > m_ ? fabs(l2) : m_;
-        if (m_ > 0.0)
-            (void)frexp(m_, &rs_e0);
-        rs_l1 = ldexp(l1, -rs_e0);
-        still_ |= rigidsym_c_extreme_d(&rs_l1, 1);
-        rs_l2 = ldexp(l2, -rs_e0);
-        still_ |= rigidsym_c_extreme_d(&rs_l2, 1);
+    int rs_e = 0, rs_t0 = 0;
+#if RIGIDSYM_C_FLAGS_D
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
+     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
+     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
+    if (rigidsym_c_fp_flushing()) {
+        if (rigidsym_c_subnormal_d(&q1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_d(&q2, 1))
+            return -1;
+        if (rigidsym_c_subnormal_d(&l1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_d(&l2, 1))
+            return -1;
     }
+#endif
+    /* plan 0: free l2 */
+    still_ = 0;
+    m_ = 0.0;
+    rs_e = 0;
+    m_ = fabs(l2);
+    if (m_ > 0.0)
+        (void)frexp(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexp(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
+        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
+    rs_l2 = ldexp(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
+        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        p[0] = ldexp(p[0], 1 * rs_e0);
-        p[1] = ldexp(p[1], 1 * rs_e0);
-        p_D_q1[0] = ldexp(p_D_q1[0], 1 * rs_e0);
-        p_D_q1[1] = ldexp(p_D_q1[1], 1 * rs_e0);
-        p_D_q2[0] = ldexp(p_D_q2[0], 1 * rs_e0);
-        p_D_q2[1] = ldexp(p_D_q2[1], 1 * rs_e0);
+        m_ = p[0];
+        p[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[0];
+        p_D_q1[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[0] - p_D_q1[0] == 0.0 && ldexp(p_D_q1[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[1];
+        p_D_q1[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[1] - p_D_q1[1] == 0.0 && ldexp(p_D_q1[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[0];
+        p_D_q2[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[0] - p_D_q2[0] == 0.0 && ldexp(p_D_q2[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[1];
+        p_D_q2[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[1] - p_D_q2[1] == 0.0 && ldexp(p_D_q2[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    /* plan 1: free l1 */
+    still_ = 0;
+    m_ = 0.0;
+    rs_e = 0;
+    m_ = fabs(l1);
+    if (m_ > 0.0)
+        (void)frexp(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexp(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
+        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
+    rs_l2 = ldexp(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
+        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
+    still_ |= rigidsym_c_extreme_d(&q1, 1);
+    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        m_ = p[0];
+        p[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[0];
+        p_D_q1[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[0] - p_D_q1[0] == 0.0 && ldexp(p_D_q1[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[1];
+        p_D_q1[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[1] - p_D_q1[1] == 0.0 && ldexp(p_D_q1[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[0];
+        p_D_q2[0] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[0] - p_D_q2[0] == 0.0 && ldexp(p_D_q2[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[1];
+        p_D_q2[1] = ldexp(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[1] - p_D_q2[1] == 0.0 && ldexp(p_D_q2[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -957,43 +1175,145 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
     float p_D_l1[2],
     float p_D_l2[2])
 {
-    int status;
-    float finite;
-    /* every output is homogeneous in the arguments of each step below: scale them
-     * by the power of two 2^-e that brings their largest component into [1/2, 1)
-     * (exact), evaluate, scale the outputs back by 2^(e d) (homogeneous.py); only
-     * when every component is then of ordinary magnitude (else the flag stays) */
-    int still_ = 0;
-    int rs_e0 = 0;
-#if RIGIDSYM_C_FLAGS_F
-    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets them)
-     * reads a subnormal input as zero in the scaling itself: the sample keeps its flag */
-    if (rigidsym_c_fp_flushing())
-        return -1;
-#endif
+    int status, still_;
+    float finite, m_;
+    /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
+     * that meets the constraints in the header (homogeneous.py): each plan below gives its
+     * free arguments the scale of their own largest component and the others the scale the
+     * constraints tie them to (exact), evaluates, and scales the outputs back; the first
+     * plan under which every argument is of ordinary magnitude and no nonzero component
+     * was flushed to zero is taken (else the flag stays) */
     float rs_l1;
     float rs_l2;
-    {
-        float m_ = 0.0f;
-        m_ = fabsf(l1) > m_ ? fabsf(l1) : m_;
-        m_ = fabsf(l2) > m_ ? fabsf(l2) : m_;
-        if (m_ > 0.0f)
-            (void)frexpf(m_, &rs_e0);
-        rs_l1 = ldexpf(l1, -rs_e0);
-        still_ |= rigidsym_c_extreme_f(&rs_l1, 1);
-        rs_l2 = ldexpf(l2, -rs_e0);
-        still_ |= rigidsym_c_extreme_f(&rs_l2, 1);
+    int rs_e = 0, rs_t0 = 0;
+#if RIGIDSYM_C_FLAGS_F
+    /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
+     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
+     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
+    if (rigidsym_c_fp_flushing()) {
+        if (rigidsym_c_subnormal_f(&q1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_f(&q2, 1))
+            return -1;
+        if (rigidsym_c_subnormal_f(&l1, 1))
+            return -1;
+        if (rigidsym_c_subnormal_f(&l2, 1))
+            return -1;
     }
+#endif
+    /* plan 0: free l2 */
+    still_ = 0;
+    m_ = 0.0f;
+    rs_e = 0;
+    m_ = fabsf(l2);
+    if (m_ > 0.0f)
+        (void)frexpf(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexpf(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
+        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
+    rs_l2 = ldexpf(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
+        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        p[0] = ldexpf(p[0], 1 * rs_e0);
-        p[1] = ldexpf(p[1], 1 * rs_e0);
-        p_D_q1[0] = ldexpf(p_D_q1[0], 1 * rs_e0);
-        p_D_q1[1] = ldexpf(p_D_q1[1], 1 * rs_e0);
-        p_D_q2[0] = ldexpf(p_D_q2[0], 1 * rs_e0);
-        p_D_q2[1] = ldexpf(p_D_q2[1], 1 * rs_e0);
+        m_ = p[0];
+        p[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[0];
+        p_D_q1[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[0] - p_D_q1[0] == 0.0f && ldexpf(p_D_q1[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[1];
+        p_D_q1[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[1] - p_D_q1[1] == 0.0f && ldexpf(p_D_q1[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[0];
+        p_D_q2[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[0] - p_D_q2[0] == 0.0f && ldexpf(p_D_q2[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[1];
+        p_D_q2[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[1] - p_D_q2[1] == 0.0f && ldexpf(p_D_q2[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
+            status |= RIGIDSYM_C_NONFINITE_RESULT;
+        return status;
+    }
+    /* plan 1: free l1 */
+    still_ = 0;
+    m_ = 0.0f;
+    rs_e = 0;
+    m_ = fabsf(l1);
+    if (m_ > 0.0f)
+        (void)frexpf(m_, &rs_e);
+    rs_t0 = -(rs_e);
+    rs_l1 = ldexpf(l1, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
+        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
+    rs_l2 = ldexpf(l2, rs_t0);
+    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
+        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
+    still_ |= rigidsym_c_extreme_f(&q1, 1);
+    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    if (!still_) {  /* every input now ordinary: the function itself, scaled back */
+        status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        m_ = p[0];
+        p[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p[1];
+        p[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[0];
+        p_D_q1[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[0] - p_D_q1[0] == 0.0f && ldexpf(p_D_q1[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q1[1];
+        p_D_q1[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q1[1] - p_D_q1[1] == 0.0f && ldexpf(p_D_q1[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[0];
+        p_D_q2[0] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[0] - p_D_q2[0] == 0.0f && ldexpf(p_D_q2[0], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
+        m_ = p_D_q2[1];
+        p_D_q2[1] = ldexpf(m_, -(rs_t0));
+        /* scaled back into the subnormal range and rounded there (or flushed): only
+         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
+        if (p_D_q2[1] - p_D_q2[1] == 0.0f && ldexpf(p_D_q2[1], rs_t0) != m_)
+            status |= RIGIDSYM_C_EXTREME_INPUT;
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;

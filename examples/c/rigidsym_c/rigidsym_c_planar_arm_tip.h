@@ -31,8 +31,17 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of l1 and l2
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in l1, l2 (the other arguments fixed),
+ *   p -> 2^(k_l1) p
+ * for every integer k_x with
+ *   -k_q1 + k_q2 = 0
+ *   k_q1 = 0
+ *   -k_l1 + k_l2 = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double q1,
@@ -102,8 +111,21 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of l1 and l2
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in l1, l2 (the other arguments fixed),
+ *   p -> 2^(k_l2) p
+ *   p_D_q1 -> 2^(k_l2) p_D_q1
+ *   p_D_q2 -> 2^(k_l2) p_D_q2
+ *   p_D_l1 -> 2^(0) p_D_l1
+ *   p_D_l2 -> 2^(0) p_D_l2
+ * for every integer k_x with
+ *   k_q1 = 0
+ *   -k_q1 + k_q2 = 0
+ *   k_l1 - k_l2 = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double q1,

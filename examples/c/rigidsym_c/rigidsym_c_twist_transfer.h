@@ -30,8 +30,16 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of t_A
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in t_A (the other arguments fixed),
+ *   t_P -> 2^(k_t_A) t_P
+ * for every integer k_x with
+ *   -k_a + k_p = 0
+ *   k_a = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     const double t_A[6],
@@ -95,8 +103,19 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling of t_A
- * (the outputs are homogeneous in each), so their extreme magnitudes give status 0.
+ * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * with x -> 2^(k_x) x for x in t_A (the other arguments fixed),
+ *   t_P -> 2^(k_t_A) t_P
+ *   t_P_D_t_A -> 2^(0 / k_a) t_P_D_t_A
+ *   t_P_D_a -> 2^(0 / k_t_A) t_P_D_a
+ *   t_P_D_p -> 2^(0 / k_t_A) t_P_D_p
+ * for every integer k_x with
+ *   -k_a + k_p = 0
+ *   k_a = 0
+ * Each argument scaled freely gets the scale of its own largest component, the others the
+ * scale these equations tie them to; a sample that no choice brings into the ordinary
+ * range, or of which a scaling would flush a nonzero component to zero, keeps
+ * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     const double t_A[6],

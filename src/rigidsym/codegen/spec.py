@@ -89,12 +89,16 @@ class Branch:
         when: ``when(**inputs)``: a sympy boolean of the explicit inputs.
         build: ``build(**inputs) -> {output name: value}``, as :attr:`Kernel.build`.
         doc: why the branch exists (for the generated code's comments).
+        default: the outputs this branch sets to a documented default because they are
+            undetermined there (the axis at phi = 0), ``""`` when none: the C target's
+            status then has ``RIGIDSYM_C_DEFAULT_OUTPUT``; the other outputs are right.
     """
 
     name: str
     when: Callable[..., sp.Basic]
     build: Callable[..., dict]
     doc: str = ""
+    default: str = ""
 
 
 @dataclass(frozen=True)

@@ -28,6 +28,7 @@ import numpy as np
 
 from rigidsym.core import kinds as _kinds
 from rigidsym.kernels.runtime import state as _state
+from rigidsym.kernels.runtime.inputs import UNIT_AS_IS_EPS
 from rigidsym.kernels.runtime.scale import MIN_PARALLEL, get_num_threads
 
 __all__ = ["Lazy", "bind_api", "entries", "unbind"]
@@ -130,10 +131,12 @@ def entries(space: Any) -> types.SimpleNamespace:
         if space.backend() != "c":
             return _python_entries(space)      # the api module stays Lazy: C when selected
         mod = space.c_lib().module
-        unit, rot = _kinds.get("unit"), _kinds.get("rotation")
+        rot = _kinds.get("rotation")
+        # unit vectors: the C entry takes those of norm 1 to rounding; the others within
+        # the tolerance go to the Python path, which normalises them (inputs.normalise)
         mod._bind(_general(space), get_num_threads, MIN_PARALLEL,
-                  unit.tolerance(np.float64), rot.tolerance(np.float64),
-                  unit.tolerance(np.float32), rot.tolerance(np.float32))
+                  UNIT_AS_IS_EPS * float(np.finfo(np.float64).eps), rot.tolerance(np.float64),
+                  UNIT_AS_IS_EPS * float(np.finfo(np.float32).eps), rot.tolerance(np.float32))
         mod._enable(_state.STATE["backend"] != "numpy")
         data = getattr(os.environ, "_data", None)     # what get_num_threads reads
         if hasattr(mod, "_environ") and type(data) is dict:

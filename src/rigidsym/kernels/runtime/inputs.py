@@ -13,7 +13,8 @@ import numpy as np
 from rigidsym.core import kinds as _kinds
 from rigidsym.kernels.runtime.scale import check_threads
 
-__all__ = ["UNIT_TOL", "ORTHO_TOL", "check_keywords", "as_array", "validate", "batch_shape"]
+__all__ = ["UNIT_TOL", "ORTHO_TOL", "UNIT_AS_IS_EPS", "check_keywords", "as_array",
+           "validate", "normalise", "check_inertia", "BODY_KERNELS", "batch_shape"]
 
 #: tolerance on | ||e|| - 1 | for unit-vector arguments (e, eta), from the kind table.
 UNIT_TOL = _kinds.get("unit").tol
@@ -91,6 +92,80 @@ def validate(a: np.ndarray, spec: dict, given=None) -> None:
         msg = k.check(a, name, k.tolerance(prec))
         if msg:
             raise ValueError(msg)
+
+
+#: a unit vector within this many machine epsilons of its dtype of norm 1 is taken as it is
+#: (unit to rounding: dividing by its norm would change bits, not accuracy); the C entry
+#: points check unit vectors to this tolerance and leave the others to the Python path
+UNIT_AS_IS_EPS = 2
+
+
+def normalise(a: np.ndarray, spec: dict) -> np.ndarray:
+    """A unit-vector argument (kind "unit": axes, Euler-Rodrigues parameters) already
+    accepted by :func:`validate` (| ||a|| - 1 | within the tolerance), divided by its norm in
+    its own dtype, as pytransform3d and spatialmath do, where | ||a|| - 1 | exceeds
+    ``UNIT_AS_IS_EPS`` eps (the norm formed in float64, in the order of the C entry's check,
+    so that both take the same rows): the result is then the rotation about ``a / ||a||`` to
+    the kernel's bound, and the next kernel's check accepts it (without it, ||e|| - 1 = 1e-8
+    gave Q^T Q - 1 = 1.5e-8, refused). A new array where a row changes; other kinds as given.
+
+    Args:
+        a: the argument, shape ``(..., n)`` (``n`` the kind's length).
+        spec: its spec (``name``, ``kind``, ``tshape``).
+
+    Returns:
+        ``a`` with those rows divided by their norm, or ``a`` itself.
+    """
+    k = _kinds.for_spec(spec["kind"], spec["tshape"])
+    if k is None or len(k.shape) != 1 or k.check is None or not a.size:
+        return a
+    x = a.astype(np.float64)
+    q = x[..., 0] * x[..., 0]
+    for c in range(1, a.shape[-1]):
+        q = q + x[..., c] * x[..., c]
+    off = np.abs(np.sqrt(q) - 1.0) > UNIT_AS_IS_EPS * float(np.finfo(a.dtype).eps)
+    if not off.any():
+        return a
+    s = a[..., 0] * a[..., 0]
+    for c in range(1, a.shape[-1]):       # the norm in the dtype
+        s = s + a[..., c] * a[..., c]
+    return np.where(off[..., None], a / np.sqrt(s)[..., None], a)
+
+
+#: the kernels whose arguments I_C and m are a rigid body's centroidal inertia and mass
+BODY_KERNELS = frozenset({"inertia_at_point", "inertia_dyad_at_point"})
+
+
+def check_inertia(I_C: np.ndarray, m: np.ndarray, tol: float) -> None:
+    """A rigid body's centroidal inertia matrix and mass (Angeles Sec. 3.8): m > 0, I_C
+    symmetric (max |I_C - I_C^T| <= tol max |I_C|), positive semi-definite, and its principal
+    moments obey the triangle inequality (I_i + I_j >= I_k, a mass distribution's moments:
+    I_1 = integral of y^2 + z^2 ...), each eigenvalue inequality within tol trace(I_C).
+
+    Args:
+        I_C: (..., 3, 3) inertia matrices [kg m^2]; m: (...) masses [kg].
+        tol: the relative tolerance (the unit kind's, per dtype).
+
+    Raises:
+        ValueError: naming ``m`` or ``I_C`` and what was expected.
+    """
+    if m.size and not (m > 0).all():
+        raise ValueError(f"m: expected a positive mass, got {np.min(m):.6g}")
+    if not I_C.size:
+        return
+    scale = np.abs(I_C).max(axis=(-2, -1))
+    asym = np.abs(I_C - np.swapaxes(I_C, -1, -2)).max(axis=(-2, -1))
+    if (asym > tol * scale).any():
+        raise ValueError(f"I_C: not symmetric (max |I_C - I_C^T| = {asym.max():.3g} > "
+                         f"{tol:.3g} max |I_C|)")
+    lam = np.linalg.eigvalsh((I_C + np.swapaxes(I_C, -1, -2)) / 2)
+    slack = tol * np.abs(lam).sum(-1)
+    if (lam[..., 0] < -slack).any():
+        raise ValueError(f"I_C: not positive semi-definite (principal moment "
+                         f"{lam[..., 0].min():.3g})")
+    if (lam[..., 0] + lam[..., 1] < lam[..., 2] - slack).any():
+        raise ValueError("I_C: principal moments violate the triangle inequality "
+                         "(I_1 + I_2 >= I_3 for every rigid body)")
 
 
 def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:

@@ -25,7 +25,15 @@ from rigidsym.kernels.runtime import dask_arrays as _dask
 from rigidsym.kernels.runtime import entries as _entries
 from rigidsym.kernels.runtime import state as _state
 from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
-from rigidsym.kernels.runtime.inputs import as_array, batch_shape, check_keywords, validate
+from rigidsym.kernels.runtime.inputs import (
+    BODY_KERNELS,
+    as_array,
+    batch_shape,
+    check_inertia,
+    check_keywords,
+    normalise,
+    validate,
+)
 from rigidsym.kernels.runtime.rescue import RANGE32, extreme_rows, rescue
 from rigidsym.kernels.runtime.scale import (
     MIN_PARALLEL,
@@ -202,6 +210,10 @@ class KernelSpace:
         if check:
             for x, a, s in zip(args, arrs, specs, strict=True):
                 validate(a, s, getattr(x, "dtype", None))
+            arrs = [normalise(a, s) for a, s in zip(arrs, specs, strict=True)]
+            if name in BODY_KERNELS:
+                by = {s["name"]: a for a, s in zip(arrs, specs, strict=True)}
+                check_inertia(by["I_C"], by["m"], _kinds.get("unit").tolerance(dtype))
         batch = batch_shape(arrs, specs)
         n = math.prod(batch)
         flat = []

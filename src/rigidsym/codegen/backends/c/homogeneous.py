@@ -26,7 +26,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-__all__ = ["degree", "rescale_steps", "SCALABLE"]
+__all__ = ["degree", "scaling_plans", "SCALABLE"]
 
 #: the argument kinds whose values may be scaled (a unit vector, a rotation or an angle may
 #: not: its formula is not homogeneous in it)
@@ -88,48 +88,126 @@ def _deg(e, S, memo) -> Fraction | None:
     return d
 
 
-def rescale_steps(kernel, program) -> list[dict]:
-    """The rescaling of ``kernel`` (a :class:`~rigidsym.codegen.spec.Kernel` without
-    branches) whose ``program`` (temporaries ``[(symbol, expr)]`` in order and flat
-    ``outputs``, row-major) the C target prints: ``[{"args": [names], "degrees": [int per
-    output slot]}]``, one step per independent scale: each scalable argument alone where
-    every output is homogeneous in it (it is then normalised on its own), then the others
-    together where every output is homogeneous in them jointly (an argument that reaches
-    ``sin``, ``cos``, ... is never scaled). ``[]`` where neither holds; an argument in no
-    step keeps its extreme flag."""
+def _mdeg(e, ks: dict, memo: dict, reach: dict, cons: list):
+    """The degree of ``e`` under ``x_a -> 2^(k_a) x_a`` for the arguments' symbols ``ks``
+    (symbol -> its argument's exponent symbol ``k_a``): a linear form in the ``k_a``, valid
+    on the scalings that satisfy every linear form appended to ``cons`` (each must be 0);
+    None for an expression that is exactly zero. A node whose homogeneity is not shown (a
+    ``Piecewise``, a power of zero, ...) pins the exponents of every argument it reaches to 0
+    (it is then unchanged): sound, at the cost of a rescue."""
+    if e in memo:
+        return memo[e]
+    if hasattr(e, "_eval_rewrite_as_Add"):      # the compensated a b - c d, sum of products
+        d = _mdeg(e.rewrite(sp.Add), ks, memo, reach, cons)
+    elif e.is_Symbol:
+        d = ks.get(e, sp.Integer(0))
+    elif e.is_Number or e.is_NumberSymbol:
+        d = None if e == 0 else sp.Integer(0)
+    elif e.is_Add:
+        ds = [x for x in (_mdeg(a, ks, memo, reach, cons) for a in e.args) if x is not None]
+        cons.extend(x - ds[0] for x in ds[1:])
+        d = ds[0] if ds else None
+    elif e.is_Mul:
+        ds = [_mdeg(a, ks, memo, reach, cons) for a in e.args]
+        d = None if None in ds else sp.Add(*ds)
+    elif e.is_Pow and e.exp.is_Rational and not (e.exp <= 0 and e.base.is_zero is not False
+                                                  and _mdeg(e.base, ks, memo, reach,
+                                                            cons) is None):
+        b = _mdeg(e.base, ks, memo, reach, cons)
+        d = None if b is None else b * e.exp
+    elif isinstance(e, sp.atan2):
+        y, x = (_mdeg(a, ks, memo, reach, cons) for a in e.args)
+        if y is not None and x is not None:
+            cons.append(y - x)
+        d = sp.Integer(0)
+    elif isinstance(e, sp.Abs):
+        d = _mdeg(e.args[0], ks, memo, reach, cons)
+    elif isinstance(e, sp.Function) and not isinstance(e, sp.Piecewise):
+        for a in e.args:        # sin, cos, exp ...: an argument of degree 0
+            x = _mdeg(a, ks, memo, reach, cons)
+            if x is not None:
+                cons.append(x)
+        d = sp.Integer(0)
+    else:
+        for v in e.free_symbols:
+            cons.extend(ks[s] for s in reach.get(v, {v}) if s in ks)
+        d = sp.Integer(0)
+    memo[e] = d
+    return d
+
+
+def scaling_plans(kernel, program) -> list[dict]:
+    """The exact power-of-two rescalings of ``kernel`` (a
+    :class:`~rigidsym.codegen.spec.Kernel` without branches) whose ``program`` (temporaries
+    ``[(symbol, expr)]`` in order and flat ``outputs``, row-major) the C target prints,
+    argument by argument.
+
+    Every output ``o`` satisfies ``o(2^(k_1) x_1, ..., 2^(k_n) x_n) = 2^(d_o . k) o(x)`` for
+    every integer exponent vector ``k`` of a lattice: the solutions of linear equations
+    ("constraints", from the sums whose terms must share a degree, the arguments of ``sin``,
+    ``atan2`` ...) in the exponents of the scalable arguments (kind "any"). A plan solves
+    them for some arguments (pivots) in terms of the others (free): each free argument gets
+    the scale of its own exponent (its largest component into [2^-D, 1)), each pivot the
+    combination the constraints give, so that no argument's scale is chosen by another's
+    magnitude unless the formula ties them. Several plans (one per choice of pivots, the
+    argument order rotated) let the C code take the first under which every scaled argument
+    is of ordinary magnitude (e.g. a zero argument as the pivot).
+
+    Returns ``[{"free": [names], "D": int, "scale": {name: [int per free]}, "out": [[int per
+    free] per output slot], "constraints": [str], "degrees": [str per slot]}]``: the
+    exponent of argument ``a`` is ``sum(scale[a][i] t_i)`` and output slot ``s`` is scaled
+    back by ``2^-(sum(out[s][i] t_i))``, where ``t_i = -(e_i / D)`` (C division) and
+    ``e_i`` is the binary exponent of free argument ``i``'s largest component. ``[]`` where
+    the only scaling is the identity."""
     from rigidsym.codegen.spec import flat_symbols
 
     if kernel.branches:
         return []
     kinds = {a.name: a.kind for a in kernel.args}
+    names = [n for n, _ in flat_symbols(kernel) if kinds[n] in SCALABLE]
+    kvar = {n: sp.Symbol(f"k_{n}") for n in names}
+    ks = {s: kvar[n] for n, syms in flat_symbols(kernel) if n in kvar for s in syms}
     temps = [(t, sp.sympify(x)) for t, x in program.temps]
-    outs = [sp.sympify(x) for x in program.outputs]
     reach: dict = {}      # temporary -> the input symbols it depends on
     for t, x in temps:
         reach[t] = set().union(*(reach.get(v, {v}) for v in x.free_symbols))
-    inside: set = set()
-    for x in [x for _, x in temps] + outs:
-        for f in x.atoms(sp.Function):
-            if not isinstance(f, sp.Abs | sp.atan2) and not hasattr(f, "_eval_rewrite_as_Add"):
-                inside |= set().union(*(reach.get(v, {v}) for v in f.free_symbols))
-    groups = [(name, set(syms)) for name, syms in flat_symbols(kernel)
-              if kinds[name] in SCALABLE and not set(syms) & inside]
-
-    def step(names, syms):
-        env: dict = {}
-        try:
-            for t, x in temps:
-                env[t] = degree(x, syms, env)
-            ds = [degree(x, syms, env) for x in outs]
-        except ValueError:
-            return None
-        if any(d is not None and d.denominator != 1 for d in ds):
-            return None
-        return {"args": names, "degrees": [int(d or 0) for d in ds]}
-
-    steps = [st for st in (step([n], syms) for n, syms in groups) if st]
-    done = {n for st in steps for n in st["args"]}
-    rest = [(n, syms) for n, syms in groups if n not in done]
-    joint = step([n for n, _ in rest], set().union(*(syms for _, syms in rest))) \
-        if rest else None
-    return steps + ([joint] if joint else [])
+    memo: dict = {}
+    cons: list = []
+    for t, x in temps:
+        memo[t] = _mdeg(x, ks, memo, reach, cons)
+    outs = [_mdeg(sp.sympify(x), ks, memo, reach, cons) for x in program.outputs]
+    cons = list(dict.fromkeys(c for c in (sp.expand(x) for x in cons) if c != 0))
+    kv = [kvar[n] for n in names]
+    A = sp.Matrix([[c.coeff(k) for k in kv] for c in cons]) if cons else \
+        sp.zeros(0, len(kv))
+    plans, seen = [], set()
+    for shift in range(len(names)):
+        order = list(range(shift, len(names))) + list(range(shift))
+        if A.rows:
+            R, piv = A.extract(list(range(A.rows)), order).rref()
+        else:
+            R, piv = A, ()
+        free = [order[c] for c in range(len(order)) if c not in piv]
+        if not free or frozenset(free) in seen:
+            continue
+        seen.add(frozenset(free))
+        basis = []                          # per free argument: the exponent vector
+        for f in free:
+            v = [sp.Integer(0)] * len(names)
+            v[f] = sp.Integer(1)
+            for r, pc in enumerate(piv):
+                v[order[pc]] = -R[r, order.index(f)]
+            basis.append(v)
+        odeg = [[sp.Integer(0) if d is None else
+                 sp.expand(d).subs(dict(zip(kv, v, strict=True))) for v in basis]
+                for d in outs]
+        D = sp.ilcm(1, *[sp.Rational(x).q for v in basis for x in v],
+                    *[sp.Rational(x).q for row in odeg for x in row])
+        plans.append({
+            "free": [names[f] for f in free], "D": int(D),
+            "scale": {n: [int(v[i] * D) for v in basis] for i, n in enumerate(names)
+                      if any(v[i] != 0 for v in basis)},
+            "out": [[int(x * D) for x in row] for row in odeg],
+            "constraints": [f"{sp.sstr(c)} = 0" for c in cons],
+            "degrees": ["0" if d is None else sp.sstr(sp.expand(d)) for d in outs]})
+    return plans

@@ -31,7 +31,7 @@ import sympy as sp
 
 import rigidsym
 from rigidsym.codegen.backends import RenderContext, Target
-from rigidsym.codegen.backends.c.homogeneous import rescale_steps
+from rigidsym.codegen.backends.c.homogeneous import scaling_plans
 from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
 from rigidsym.codegen.backends.extension.program import balanced, finite_check
 from rigidsym.codegen.backends.printing import program_lines
@@ -69,6 +69,10 @@ STATUS = (
                          "(or ran where those flags cannot be read, RIGIDSYM_C_FLAGS_*): "
                          "intermediates may have underflowed or overflowed, so the outputs "
                          "are not guaranteed to the stated bound"),
+    ("DEFAULT_OUTPUT", 16, "an output that is undetermined at these inputs holds its "
+                           "documented default (the axis e = [1, 0, 0] of "
+                           "natural_invariants_from_rotation at Q = 1, where phi = 0 "
+                           "exactly); every other output is right, as with status 0"),
 )
 _C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
 float for goto if inline int long register restrict return short signed sizeof static struct
@@ -112,9 +116,11 @@ def _program(kc, printer, ctype: str) -> dict:
     """The printed variants of ``kc``'s program (branches in order, main last)."""
     zero = "0.0f" if ctype == "float" else "0.0"
     out = []
-    for v in kc.variants:
+    branches = kc.kernel.branches
+    for i, v in enumerate(kc.variants):
         lines = program_lines(v.program, printer)
         out.append({"cond": None if v.cond is None else printer.doprint(v.cond),
+                    "default": branches[i].default if i < len(branches) else "",
                     "finite": finite_check(v.program, kc.kernel, printer), "zero": zero,
                     **lines})
     return out
@@ -215,7 +221,8 @@ def _check_names(k: Kernel, temps: set[str]) -> None:
 
 def _function(kc, ctype: str, rescale: list) -> dict:
     """One scalar function of ``kc`` in ``ctype`` ("double" or "float"); ``rescale``: its
-    power-of-two rescaling steps (:func:`.homogeneous.rescale_steps`)."""
+    power-of-two rescaling plans (:func:`.homogeneous.scaling_plans`), with the C
+    expressions of their exponents (:func:`_plan_code`)."""
     k = kc.kernel
     printer = DoublePrinter() if ctype == "double" else FloatOnlyPrinter()
     variants = _program(kc, printer, ctype)
@@ -245,7 +252,21 @@ def _function(kc, ctype: str, rescale: list) -> dict:
             "out_sum": balanced(slots),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
             "wide": _wide(kc, k) if ctype == "double" else None,
-            "rescale": rescale, "rescaled": {n for st in rescale for n in st["args"]}}
+            "rescale": [_plan_code(p, slots) for p in rescale],
+            "rescaled": {n for p in rescale for n in p["scale"]}}
+
+
+def _plan_code(plan: dict, slots: list[str]) -> dict:
+    """``plan`` (:func:`.homogeneous.scaling_plans`) with the C integer expressions of each
+    scaled argument's exponent (``scaled``: [(name, expr)]) and of each output slot's
+    exponent to undo (``back``: [(slot, expr)], the nonzero ones), in the ``rs_t<i>``."""
+    def expr(coefs):
+        terms = [f"{c} * rs_t{i}" if c != 1 else f"rs_t{i}"
+                 for i, c in enumerate(coefs) if c]
+        return " + ".join(terms).replace("+ -", "- ") if terms else ""
+
+    return {**plan, "scaled": [(n, expr(c)) for n, c in plan["scale"].items()],
+            "back": [(s, expr(c)) for s, c in zip(slots, plan["out"], strict=True) if any(c)]}
 
 
 def _wide(kc, k: Kernel) -> list[dict]:
@@ -273,12 +294,28 @@ def float_bounds(modules=()) -> dict:
 def _kernel_entry(kc, bounds: dict) -> dict:
     k = kc.kernel
     b = bounds.get(k.name)
-    steps = rescale_steps(k, kc.variants[0].program) if len(kc.variants) == 1 else []
+    steps = scaling_plans(k, kc.variants[0].program) if len(kc.variants) == 1 else []
     return {"name": k.name, "summary": k.summary, "formula": k.formula, "ids": list(k.ids),
             "sources": list(k.sources), "singular": k.singular, "hash": kc.hash,
             "ops": kc.ops, "notes": k.notes,
             "float_bound": b if b is not None and b.get("hash") == kc.hash else None,
+            "homogeneity": _homogeneity(k, steps),
             "functions": [_function(kc, "double", steps), _function(kc, "float", steps)]}
+
+
+def _homogeneity(k: Kernel, plans: list) -> dict | None:
+    """What the header states of the rescaling: the scaled arguments, the constraints on
+    their exponents and each output's degree (its slots' degrees, " / " where they differ)."""
+    if not plans:
+        return None
+    p = plans[0]
+    degrees, j = [], 0
+    for o in k.outputs:
+        degrees.append((o.name, " / ".join(dict.fromkeys(p["degrees"][j:j + o.size]))))
+        j += o.size
+    scaled = sorted({n for q in plans for n in q["scale"]},
+                    key=[a.name for a in k.args].index)
+    return {"scaled": scaled, "constraints": p["constraints"], "degrees": degrees}
 
 
 def _groups(codes, origin, bounds: dict) -> list[dict]:

@@ -26,6 +26,9 @@ TEMPLATES = Path(__file__).parent / "templates"
 #: the ``kind`` of an entry point's argument whose constraint only the Python path checks
 #: (``RIGIDSYM_PYTHON`` in ``c_fast.h.j2``)
 _C_PYTHON_CHECK = 3
+#: kernels whose checked calls take the Python path for a check the C entry lacks: the
+#: rigid-body checks of rigidsym.kernels.runtime.inputs.check_inertia (BODY_KERNELS there)
+_PYTHON_CHECKED = frozenset({"inertia_at_point", "inertia_dyad_at_point"})
 
 
 def _kernel(env, kc, ctx: RenderContext) -> dict[str, str]:
@@ -67,14 +70,14 @@ def render_module(env, metas: list[dict], ver: dict) -> dict[str, str]:
         # a checked kind with no C routine of its own: checked calls take the Python path
         return k.c_check if k.c_check or k.check is None else _C_PYTHON_CHECK
 
-    def slot(a: dict) -> dict:
+    def slot(a: dict, body: bool = False) -> dict:
         return {"nd": len(a["shape"]), "dims": list(a["shape"]), "size": size(a["shape"]),
-                "kind": c_check(a)}
+                "kind": _C_PYTHON_CHECK if body and a["name"] == "I_C" else c_check(a)}
     ck = [{"name": m["name"], "ins": [size(a["shape"]) for a in m["args"]],
            "outs": [size(o["shape"]) for o in m["outputs"]],
            "narrays": len(m["args"]) + len(m["outputs"]),
            "nin": len(m["args"]), "nout": len(m["outputs"]),
-           "args": [slot(a) for a in m["args"]],
+           "args": [slot(a, m["name"] in _PYTHON_CHECKED) for a in m["args"]],
            "outs_meta": [slot(o) for o in m["outputs"]]} for m in metas]
     files = {}
     for t, path in (("c_module.c.j2", "c/rigidsym_module.c"),
