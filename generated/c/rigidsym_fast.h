@@ -902,7 +902,7 @@ static const rigidsym_slot rigidsym_out_117[] = {
     {3, {6, 6, 6}, 216, 0},
 };
 static const rigidsym_slot rigidsym_in_118[] = {
-    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 3},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
@@ -924,7 +924,7 @@ static const rigidsym_slot rigidsym_out_119[] = {
     {3, {3, 3, 3}, 27, 0},
 };
 static const rigidsym_slot rigidsym_in_120[] = {
-    {2, {3, 3}, 9, 0},
+    {2, {3, 3}, 9, 3},
     {0, {0}, 1, 0},
     {1, {3}, 3, 0},
     {1, {3}, 3, 0},
