@@ -37,7 +37,8 @@ from rigidsym.registry.declarations import REGISTRY
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "write_certificates",
-           "certificate_file", "recheck_folder", "certify_line", "certificate_field"]
+           "certificate_file", "recheck_folder", "certify_line", "certificate_field",
+           "write_manifest", "cause_record", "CAUSE_CLASSES"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -198,9 +199,31 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     atoms = sorted(pr.groups.values(), key=lambda g: g["group"])
     if cofactors:
         _add_cofactors(pr, rels, sides, atoms, seed)
-    return {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
-            "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
-            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
+    out = {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
+           "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
+           "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
+    if verdict == "does-not-hold":
+        out["cause"] = cause_record(eq)
+    return out
+
+
+#: the declared cause of a does-not-hold -> the certificate's cause class
+CAUSE_CLASSES = {"erratum": "book erratum", "conversion": "conversion slip"}
+
+
+def cause_record(eq) -> dict:
+    """The cause of a does-not-hold declaration for its certificate: ``{"class": "book
+    erratum" | "conversion slip" | "undetermined", "why": the declared evidence}``, and for
+    a conversion slip ``"page_reading"``: what the printed page is declared to show, a
+    conjecture about the page (the source is a converted text) whose corrected form the
+    certificate proves."""
+    cls = CAUSE_CLASSES.get(eq.cause, "undetermined")
+    out = {"class": cls, "why": eq.evidence or ""}
+    if cls == "conversion slip":
+        out["page_reading"] = ("conjecture: the printed page shows the corrected form below, "
+                               "the converted text lost or changed a glyph: "
+                               + (eq.evidence or "(no evidence declared)"))
+    return out
 
 
 def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, seed: int) -> None:
@@ -220,7 +243,8 @@ def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, s
             rel["evidence"] = {"type": "identity", "why_not_cofactors": str(exc)}
 
 
-def write_certificates(results, directory, recheck: bool = False) -> dict:
+def write_certificates(results, directory, recheck: bool = False,
+                       book: str | None = None) -> dict:
     """Write one certificate per decided result into ``directory`` (created), and a
     ``SKIPPED.txt`` naming the ids without one and why.
 
@@ -230,6 +254,8 @@ def write_certificates(results, directory, recheck: bool = False) -> dict:
         directory: the folder.
         recheck: run the independent checker on the folder afterwards
             (:func:`recheck_folder`).
+        book: the book's text file (the referee's copy, never shipped): its SHA-256 goes
+            into ``MANIFEST.json`` and the checker binds each certificate to its page.
 
     Returns:
         ``{"written": [ids], "skipped": {id: why}, "rechecked": {id: passed} or None,
@@ -254,10 +280,11 @@ def write_certificates(results, directory, recheck: bool = False) -> dict:
         evidence[r.id] = [rel["evidence"]["type"] for rel in cert["relations"]]
     write_atomic(out / "SKIPPED.txt",
                  "".join(f"{i}: {why}\n" for i, why in skipped.items()) or "none\n")
+    write_manifest(out, list(files), book)
     summary = {"written": written, "skipped": skipped, "rechecked": None, "checker": None,
                "failures": {}, "evidence": evidence}
     if recheck and written:
-        summary.update(recheck_folder(out, files))
+        summary.update(recheck_folder(out, files, book))
     return summary
 
 
@@ -272,13 +299,43 @@ def _checker_path() -> str | None:
     return "" if importlib.util.find_spec("certcheck") is not None else None
 
 
-def recheck_folder(directory, files: dict) -> dict:
+def write_manifest(directory, names: list[str], book: str | None = None) -> dict:
+    """Write ``directory/MANIFEST.json``: the SHA-256 of each certificate file of ``names``
+    and of the book text (``None`` without one), and rigidsym's version, so that the folder
+    is one run (certcheck verifies it). Returns the manifest.
+
+    Raises:
+        BadInput: ``book`` is not a readable file.
+    """
+    import hashlib
+
+    from rigidsym import __version__
+    from rigidsym.core.errors import BadInput
+
+    out = Path(directory)
+    book_sha = None
+    if book is not None:
+        try:
+            book_sha = hashlib.sha256(Path(book).read_bytes()).hexdigest()
+        except OSError as exc:
+            raise BadInput(f"book: expected a readable text file, got {book!r} ({exc})") from None
+    man = {"format": "rigidsym-certificate-manifest", "rigidsym": __version__,
+           "book_sha256": book_sha,
+           "certificates": {n: hashlib.sha256((out / n).read_bytes()).hexdigest()
+                            for n in sorted(names)}}
+    write_atomic(out / "MANIFEST.json", json.dumps(man, indent=1) + "\n")
+    return man
+
+
+def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
     """Run the independent checker (``python -m certcheck``, a separate process that
     imports no rigidsym) on ``directory``.
 
     Args:
         directory: the folder of certificates.
         files: certificate file name -> id.
+        book: the book's text file, passed on as ``--book`` (each certificate is then
+            bound to the text printed as its id, the folder to its manifest).
 
     Returns:
         ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
@@ -294,7 +351,9 @@ def recheck_folder(directory, files: dict) -> dict:
     env = dict(os.environ)
     if where:
         env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
-    proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", str(directory)],
+    book_args = [] if book is None else ["--book", str(book)]
+    proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", *book_args,
+                           str(directory)],
                           capture_output=True, text=True, env=env, check=False)
     failures = {}
     for line in proc.stdout.splitlines():
@@ -302,6 +361,8 @@ def recheck_folder(directory, files: dict) -> dict:
             name, _, why = line[len("FAILED "):].partition(": ")
             if name in files:
                 failures[files[name]] = why
+            else:  # the folder's manifest: no id of its own
+                failures[f"({name.split(' ')[0]})"] = why
     passed = {i: i not in failures for i in files.values()}
     if proc.returncode not in (0, 1):
         failures["(certcheck)"] = proc.stderr.strip()[-300:]
