@@ -94,6 +94,7 @@ def position_in_fixed_frame() -> Statement:
 
 
 @equation("3.99", "Relative position changed from M- to F-coordinates", section="3.6",
+          expected="definition",
           latex=r"[\boldsymbol{\rho}]_{\mathcal{F}} = [\mathbf{Q}]_{\mathcal{F}}"
                 r"[\boldsymbol{\rho}]_{\mathcal{M}}")
 def relative_position_to_fixed_frame() -> Statement:

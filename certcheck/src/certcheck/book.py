@@ -70,7 +70,7 @@ def check_page(cert: dict, book: str) -> list[str]:
     latex = _norm(str(cert.get("book_latex") or ""))
     bound = latex == page or (eq_id.startswith("thm") and len(latex) >= 20 and latex in page)
     if not bound:
-        where = next((i for i, (a, b) in enumerate(zip(latex, page)) if a != b),
+        where = next((i for i, (a, b) in enumerate(zip(latex, page, strict=False)) if a != b),
                      min(len(latex), len(page)))
         raise BookError(f"({eq_id}): book_latex is not the text printed as ({eq_id}); they "
                         f"differ from character {where}: certificate {latex[where:where + 50]!r}"

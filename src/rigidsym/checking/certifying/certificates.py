@@ -31,7 +31,14 @@ import sympy as sp
 
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.deciding.evidence import small_witness
-from rigidsym.checking.deciding.explicit import EXPLICIT_CACHE, entries_of, explicit, shape_of
+from rigidsym.checking.deciding.explicit import (
+    EXPLICIT_CACHE,
+    derived_sides,
+    entries_of,
+    explicit,
+    same_text,
+    shape_of,
+)
 from rigidsym.core.files import write_atomic
 from rigidsym.registry.declarations import REGISTRY
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
@@ -182,6 +189,8 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             ev = {"type": "shape"} if shape_of(r.lhs) != shape_of(r.rhs) else None
         else:
             ev = {"type": ev}
+            if ev["type"] == "identity" and same_text(lhs, rhs):  # sympy's evaluation did it
+                lhs, rhs = derived_sides(r, st.model, lhs, rhs)
         sides.append((r, role, lhs, rhs, ev))
     for _, _, lhs, rhs, _ in sides:
         for e in entries_of(lhs) + entries_of(rhs):
