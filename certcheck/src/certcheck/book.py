@@ -48,8 +48,8 @@ def locate(book: str, eq_id: str) -> str:
         BookError: the id is printed nowhere, or in more than one display.
     """
     if eq_id.startswith("thm"):
-        head = f"**Theorem {eq_id[3:]}.**"
-        hits = [line for line in book.splitlines() if line.startswith(head)]
+        head = re.compile(r"\*\*Theorem " + re.escape(eq_id[3:]) + r"[. ]")
+        hits = [line for line in book.splitlines() if head.match(line)]
     else:
         tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
         hits = [_TAG.sub("", d) for d in _DISPLAY.findall(book) if tag.search(d)]
