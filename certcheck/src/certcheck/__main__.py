@@ -8,11 +8,13 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 import time
 
-from certcheck.book import BookError, cause_lines, check_manifest, check_page
+from certcheck.book import BookError, cause_lines, check_manifest, check_page, locate
 from certcheck.check import CheckError, check_certificate, load
+from certcheck.reader import compare
 
 
 def _files(paths: list[str]) -> list[str]:
@@ -71,13 +73,24 @@ def main(argv: list[str] | None = None) -> int:
     bad_manifests, head = _manifests(args.paths, files, book_bytes)
     for line in head:
         print(line)
-    failed = 0
+    failed = not_read = 0
     for path in files:
         t = time.perf_counter()
         try:
             cert = load(path)
+            if book is not None and os.path.basename(path) != \
+                    re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
+                raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
+                                f"in the file of another id")
             page = check_page(cert, book) if book is not None else cause_lines(cert)
             verdict, lines = check_certificate(cert, fast=not args.no_flint)
+            if book is not None:  # the second reader: what is proved is what is printed
+                try:
+                    page += compare(cert, locate(book, str(cert.get("id"))),
+                                    fast=not args.no_flint)
+                except CheckError as exc:
+                    raise CheckError(f"({cert.get('id')}) {exc}") from None
+                not_read += any(x.startswith("NOT READ") for x in page)
         except (CheckError, BookError, OSError, ValueError) as exc:
             failed += 1
             print(f"FAILED {os.path.basename(path)}: {exc}")
@@ -93,7 +106,9 @@ def main(argv: list[str] | None = None) -> int:
     print(f"certcheck: {len(files) - failed} of {len(files)} certificates checked, "
           f"{failed} failed, {time.perf_counter() - t0:.1f} s"
           + (f", {bad_manifests} manifest(s) failed" if bad_manifests else "")
-          + ("" if book is not None else "; not bound to the page (no --book)"))
+          + ("" if book is not None else "; not bound to the page (no --book)")
+          + (f"; the reader left {not_read} id(s) partly or wholly NOT READ (their "
+             "relations are the certificate's word)" if not_read else ""))
     return 1 if failed or bad_manifests else 0
 
 

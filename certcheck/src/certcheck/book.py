@@ -47,8 +47,11 @@ def locate(book: str, eq_id: str) -> str:
     Raises:
         BookError: the id is printed nowhere, or in more than one display.
     """
-    if eq_id.startswith("thm"):
-        head = re.compile(r"\*\*Theorem " + re.escape(eq_id[3:]) + r"[. ]")
+    prose = re.fullmatch(r"(thm|cor|caveat)(3\.[\d.]+)", eq_id)
+    if prose:  # a theorem's, corollary's or caveat's paragraph
+        word = {"thm": "Theorem", "cor": "Corollary", "caveat": "Caveat"}[prose.group(1)]
+        num = "" if word == "Caveat" else " " + re.escape(prose.group(2)) + r"[. ]"
+        head = re.compile(r"\*\*" + word + num)
         hits = [line for line in book.splitlines() if head.match(line)]
     else:
         tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
@@ -66,9 +69,14 @@ def check_page(cert: dict, book: str) -> list[str]:
             does-not-hold gives no cause of :data:`CAUSES`.
     """
     eq_id = str(cert.get("id", ""))
+    if not re.fullmatch(r"3\.\d+[a-z]?|(thm|cor)3\.\d\.\d|caveat3\.\d", eq_id):
+        if cert.get("book_latex"):
+            raise BookError(f"({eq_id}): not a printed id, yet it gives a printed text")
+        return [f"({eq_id}) is the project's own statement (not printed in the book): bound "
+                "to no page"] + cause_lines(cert)
     page = locate(book, eq_id)
     latex = _norm(str(cert.get("book_latex") or ""))
-    bound = latex == page or (eq_id.startswith("thm") and len(latex) >= 20 and latex in page)
+    bound = latex == page or (not eq_id[0].isdigit() and len(latex) >= 20 and latex in page)
     if not bound:
         where = next((i for i, (a, b) in enumerate(zip(latex, page, strict=False)) if a != b),
                      min(len(latex), len(page)))
@@ -76,8 +84,18 @@ def check_page(cert: dict, book: str) -> list[str]:
                         f"differ from character {where}: certificate {latex[where:where + 50]!r}"
                         f", page {page[where:where + 50]!r}")
     lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
-    lines += [f"symbol: {s}" for s in cert.get("symbols", [])]
+    lines += [f"symbol: {_symbol_words(s)}" for s in cert.get("symbols") or []]
     return lines + cause_lines(cert)
+
+
+def _symbol_words(s) -> str:
+    if not isinstance(s, dict):
+        return repr(s)
+    if "cpm_of" in s:
+        return f"{s.get('glyph')}: the cross-product matrix of {s['cpm_of']}"
+    if "defined_by" in s:
+        return f"{s.get('glyph')}: defined by ({s['defined_by']})"
+    return f"{s.get('glyph')}: {s.get('kind')}, atoms {', '.join(s.get('atoms', []))}"
 
 
 def cause_lines(cert: dict) -> list[str]:

@@ -586,9 +586,10 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
                 not roles <= {"printed", "claim"}:
             raise CheckError("a verified statement needs identity evidence for every "
                              "printed member and claim")
-        if not printed or all(_same_sides(rel) for rel in printed):
-            raise CheckError("verified, but every printed relation has two identical sides "
-                             "(nothing derived: a definition or an identity by definition)")
+        if all(_same_sides(rel) for rel in printed or st.rels):
+            raise CheckError("verified, but every printed relation (or claim) has two "
+                             "identical sides (nothing derived: a definition or an identity "
+                             "by definition)")
         lines += [f"{_who(rel[0])}: identity by definition (its two sides are one expression "
                   "as written); the id is verified by its other printed relations"
                   for rel in printed if _same_sides(rel)]

@@ -45,7 +45,7 @@ from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "write_certificates",
            "certificate_file", "recheck_folder", "certify_line", "certificate_field",
-           "write_manifest", "cause_record", "CAUSE_CLASSES"]
+           "write_manifest", "cause_record", "CAUSE_CLASSES", "symbol_table"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -211,8 +211,69 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     out = {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
            "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
+    out["symbols"] = symbol_table(atoms, eq.latex or "")
     if verdict == "does-not-hold":
         out["cause"] = cause_record(eq)
+    return out
+
+
+_GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa", "lambda",
+          "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega"}
+
+
+def _glyph(base: str, vector: bool) -> str:
+    """The book's glyph of an atom group's name (``e`` -> ``\\mathbf{e}``, ``omega`` ->
+    ``\\boldsymbol{\\omega}``, ``phi`` -> ``\\phi``, ``r0`` -> ``r_0``)."""
+    base = re.sub(r"^s\d+_", "", base)  # a section's prefix
+    if base in _GREEK or base.capitalize() in {g.capitalize() for g in _GREEK}:
+        return f"\\boldsymbol{{\\{base}}}" if vector else f"\\{base}"
+    if vector:
+        return f"\\mathbf{{{base}}}"
+    m = re.fullmatch(r"([A-Za-z])_?(\d)", base)
+    return f"{m.group(1)}_{m.group(2)}" if m else base
+
+
+def symbol_table(atoms: list[dict], latex: str) -> list[dict]:
+    """One entry per book glyph the statement's atoms stand for, for a referee to hold
+    against the page (certcheck reads the printed LaTeX under it, docs/certificates.md):
+    ``{"glyph", "kind", "atoms"}`` for a vector (three atoms ``x_1, x_2, x_3`` of one kind)
+    or a scalar, ``{"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"}`` for the
+    cross-product matrix of a vector when its capital is printed, and the time derivative
+    ``\\dot{...}`` of a timed glyph (its atoms' jets). Only glyphs printed in ``latex``."""
+    vectors: dict = {}
+    scalars = []
+    for g in atoms:
+        names = g["names"]
+        if len(names) == 3 and all(re.fullmatch(rf"{re.escape(g['group'])}_[123]", n)
+                                   for n in names):
+            vectors[g["group"]] = (g["kind"], names, g["timed"])
+        elif len(names) == 1:
+            m = re.fullmatch(r"(.+)_([123])", names[0])
+            if m and g["kind"] == "free":
+                vectors.setdefault(m.group(1), ("free", [], g["timed"]))[1].append(names[0])
+            else:
+                scalars.append((names[0], g["kind"], g["timed"]))
+    out = []
+
+    def add(glyph, entry, timed):
+        if glyph.replace(" ", "") in latex.replace(" ", ""):
+            out.append({"glyph": glyph, **entry})
+        dot = f"\\dot{{{glyph}}}"
+        if timed and dot in latex.replace(" ", ""):
+            out.append({"glyph": dot, **entry, "atoms": [a + "'" for a in entry["atoms"]]})
+
+    for base, (kind, names, timed) in sorted(vectors.items()):
+        if sorted(names) != [f"{base}_{k}" for k in (1, 2, 3)]:
+            continue
+        glyph = _glyph(base, True)
+        add(glyph, {"kind": kind, "atoms": sorted(names)}, timed)
+        cap = glyph.replace("{" + base.split("_")[-1] + "}", "{" + base.capitalize() + "}")
+        cap = re.sub(r"\\(\w+)\}$", lambda m: "\\" + m.group(1).capitalize() + "}", cap) \
+            if "boldsymbol" in glyph else cap
+        if cap != glyph and cap in latex:
+            out.append({"glyph": cap, "cpm_of": glyph})
+    for name, kind, timed in scalars:
+        add(_glyph(name, False), {"kind": kind, "atoms": [name]}, timed)
     return out
 
 

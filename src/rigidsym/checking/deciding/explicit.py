@@ -224,9 +224,28 @@ class UnknownShape(ValueError):
     expression): its shape is never evidence of a mismatch."""
 
 
+def _flat(e) -> str:
+    """``e`` as written up to the grouping and order of its sums and products (the
+    certificate's printer writes ``a + (b + c)`` as ``a + b + c``)."""
+    if isinstance(e, sp.Add | sp.Mul):
+        args, stack = [], list(e.args)
+        while stack:
+            x = stack.pop()
+            if type(x) is type(e):
+                stack.extend(x.args)
+            else:
+                args.append(_flat(x))
+        return f"{type(e).__name__}({', '.join(sorted(args))})"
+    if isinstance(e, sp.Basic) and e.args:
+        return f"{type(e).__name__}({', '.join(_flat(x) for x in e.args)})"
+    return str(e)
+
+
 def same_text(a, b) -> bool:
-    """Whether two sides print as the same entries (the same expression as written)."""
-    return [str(x) for x in entries_of(a)] == [str(x) for x in entries_of(b)]
+    """Whether two sides are the same entries as written, up to the grouping and order of
+    sums and products (:func:`_flat`)."""
+    return [_flat(sp.sympify(x)) for x in entries_of(a)] == \
+        [_flat(sp.sympify(x)) for x in entries_of(b)]
 
 
 def derived_sides(r, model: dict, lhs, rhs) -> tuple:
@@ -257,6 +276,9 @@ def derived_sides(r, model: dict, lhs, rhs) -> tuple:
         new = None
     EXPLICIT_CACHE.clear()
     if new is None or same_text(*new) or shape_of(new[0]) != shape_of(lhs):
+        return lhs, rhs
+    if any(not p.exp.is_Integer for x in new for e in entries_of(x)
+           for p in sp.sympify(e).atoms(sp.Pow)):  # x**(1*1): outside the grammar
         return lhs, rhs
     if isinstance(new[0], sp.MatrixBase) != isinstance(lhs, sp.MatrixBase):
         return lhs, rhs
