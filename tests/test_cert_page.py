@@ -71,10 +71,14 @@ def _book() -> str:
 
 
 def _rejected(cert: dict, book: str) -> str:
-    """The message of certcheck's rejection (page, cause or mathematics)."""
+    """The message of certcheck's rejection (page, cause, reader or mathematics)."""
+    from certcheck.reader import compare
+
     try:
         check_page(cert, book)
         check_certificate(cert, fast=False)
+        if str(cert["id"])[0].isdigit():
+            compare(cert, locate(book, cert["id"]), fast=False)
     except (CheckError, BookError) as exc:
         return str(exc)
     raise AssertionError(f"({cert.get('id')}) accepted")
@@ -140,6 +144,38 @@ def page_reading_dropped(cert: dict) -> dict | None:
     return c
 
 
+def corrected_as_printed(cert: dict) -> dict | None:
+    """A does-not-hold's corrected form presented as the printed one, verified."""
+    cor = [r for r in cert["relations"] if r["role"] == "corrected"]
+    if cert["verdict"] != "does-not-hold" or not cor:
+        return None
+    c = copy.deepcopy(cert)
+    c["relations"] = [{**copy.deepcopy(cor[0]), "role": "printed"}]
+    c["verdict"] = "verified"
+    c.pop("cause", None)
+    return c
+
+
+def doubled_rhs(cert: dict) -> dict:
+    """Every printed relation's right side doubled (a changed coefficient; for a definition,
+    a statement checked against nothing but the page)."""
+    c = copy.deepcopy(cert)
+    for r in c["relations"]:
+        if r["role"] == "printed":
+            r["rhs"] = [[f"2*({x})" for x in row] for row in r["rhs"]]
+    return c
+
+
+def unit_declared_free(cert: dict) -> dict | None:
+    """A unit vector's symbol-table entry declared a free vector."""
+    c = copy.deepcopy(cert)
+    for e in c.get("symbols", []):
+        if e.get("kind") == "unit":
+            e["kind"] = "free"
+            return c
+    return None
+
+
 def another_printed_text(cert: dict, book: str, other_id: str) -> dict:
     """book_latex replaced by the text printed as another id."""
     return {**copy.deepcopy(cert), "book_latex": locate(book, other_id)}
@@ -181,6 +217,19 @@ def test_tamperings_rejected_naming_the_id(five):
                   if v != c["verdict"]]
         for t in filter(None, cases):
             assert f"({i})" in _rejected(t, book), (i, t.get("verdict"))
+
+
+def test_reader_rejects_what_is_not_printed(five):
+    """3.96e's corrected form claimed as printed and verified; a printed side doubled where
+    the reader reads it; the unit vector e declared free in the symbol table."""
+    from certcheck.reader import compare
+
+    _, certs = five
+    book = _book()
+    c = certs["3.96e"]
+    assert any(x.startswith("read from the page") for x in compare(c, locate(book, "3.96e")))
+    for t in (corrected_as_printed(c), doubled_rhs(c), unit_declared_free(c)):
+        assert "(3.96e)" in _rejected(t, book)
 
 
 def test_manifest_binds_the_folder_to_one_run(five, tmp_path):
@@ -236,11 +285,30 @@ def test_chapter_tamperings_rejected(chapter):
                      if locate(book, j) != locate(book, i))
         cases = [other_ids_statement(c, certs[other]), another_printed_text(c, book, other),
                  zero_equals_zero(c), off_the_sphere(c), cause_dropped(c),
-                 page_reading_dropped(c)]
+                 page_reading_dropped(c), corrected_as_printed(c), unit_declared_free(c)]
         cases += [relabelled(c, v) for v in ("verified", "does-not-hold", "definition")
                   if v != c["verdict"]]
         for t in filter(None, cases):
             assert f"({i})" in _rejected(t, book), (i, t.get("verdict"))
+
+
+@pytest.mark.slow
+def test_chapter_doubled_sides_rejected_where_read(chapter):
+    """Where the reader reads a printed side, doubling the certificate's is rejected (for a
+    definition too: checked against the page)."""
+    from certcheck.reader import compare
+
+    _, certs = chapter
+    book = _book()
+    read = 0
+    for i, c in sorted(certs.items()):
+        if not i[0].isdigit() or not any(
+                x.startswith("read from the page") and "rhs" in x
+                for x in compare(c, locate(book, i), fast=True)):
+            continue
+        read += 1
+        assert f"({i})" in _rejected(doubled_rhs(c), book), i
+    assert read >= 5
 
 
 @pytest.mark.slow

@@ -322,13 +322,13 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
         for a in e.get("atoms", []) if isinstance(e, dict) else []:
             group = next((g for g in cert.get("atoms", []) if a in g.get("names", [])), None)
             if group is None or e.get("kind") != group.get("kind"):
-                raise CheckError(f"symbol {e.get('glyph')}: declared {e.get('kind')!r}, its "
+                raise CheckError(f"({cert.get('id')}) symbol {e.get('glyph')}: declared {e.get('kind')!r}, its "
                                  f"atom {a} is of kind {kinds.get((group or {}).get('group'))!r}")
     printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
     try:
         sides = read_relations(page, symbols)
     except NotRead as exc:
-        raise CheckError(f"the symbol table: {exc}") from None
+        raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     if len(sides) != len(printed) + 1:
         return [f"NOT READ: {len(sides) - 1} printed relation(s) on the page, the "
                 f"certificate has {len(printed)} (a list, chain or family the reader does "
@@ -343,7 +343,8 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
                 continue
             theirs = rel[side]
             if mine.shape != (len(theirs), len(theirs[0])):
-                raise CheckError(f"printed {side} {rel.get('label', '')}: the page's reads "
+                raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
+                                 f"the page's reads "
                                  f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
                                  f"{len(theirs)}x{len(theirs[0])}")
             probe = {**cert, "verdict": "verified", "relations": [
@@ -352,7 +353,8 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
             try:
                 check_identity(Statement(probe), Statement(probe).rels, fast)
             except CheckError as exc:
-                raise CheckError(f"the printed {side} of relation {k + 1} is not the "
+                raise CheckError(f"({cert.get('id')}) the printed {side} of relation {k + 1} is "
+                                 f"not the "
                                  f"certificate's: {exc}") from None
             read.append(side)
         if read:
