@@ -322,8 +322,9 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
         for a in e.get("atoms", []) if isinstance(e, dict) else []:
             group = next((g for g in cert.get("atoms", []) if a in g.get("names", [])), None)
             if group is None or e.get("kind") != group.get("kind"):
-                raise CheckError(f"({cert.get('id')}) symbol {e.get('glyph')}: declared {e.get('kind')!r}, its "
-                                 f"atom {a} is of kind {kinds.get((group or {}).get('group'))!r}")
+                raise CheckError(f"({cert.get('id')}) symbol {e.get('glyph')}: declared "
+                                 f"{e.get('kind')!r}, its atom {a} is of kind "
+                                 f"{kinds.get((group or {}).get('group'))!r}")
     printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
     try:
         sides = read_relations(page, symbols)
