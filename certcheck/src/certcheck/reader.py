@@ -99,6 +99,7 @@ def _cpm(v: M) -> M:
 class _Reader:
     def __init__(self, tokens: list[str], table: dict):
         self.t, self.i, self.table = tokens, 0, table
+        self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
 
     def peek(self, k: int = 0):
         return self.t[self.i + k] if self.i + k < len(self.t) else None
@@ -250,6 +251,7 @@ class _Reader:
 
     def lookup(self, name: str) -> M:
         key = name.replace(" ", "")
+        self.assumed = self.assumed or key in ("\\mathbf{1}", "\\mathbf{O}", "\\mathbf{0}")
         if key in ("\\mathbf{1}", "\\mathbf{O}"):
             return M([[("1" if i == j and key[-2] == "1" else "0") for j in range(3)]
                       for i in range(3)])
@@ -268,18 +270,22 @@ class _Reader:
         return _s(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
 
 
-def _split(tokens: list[str]) -> list[list[str]]:
-    """The sides of a chain ``a = b = ...`` (or ``\\equiv``) at depth 0."""
-    sides, cur, depth = [], [], 0
+def _split(tokens: list[str]) -> list[list[list[str]]]:
+    """The printed relations: chains ``a = b = ...`` (or ``\\equiv``) separated by commas,
+    each a list of sides, split at depth 0."""
+    chains, sides, cur, depth = [], [], [], 0
     for tok in tokens:
         depth += tok in ("{", "(", "[", "\\begin{bmatrix}")
         depth -= tok in ("}", ")", "]", "\\end{bmatrix}")
         if depth == 0 and tok in ("=", "\\equiv"):
             sides.append(cur)
             cur = []
+        elif depth == 0 and tok == ",":
+            chains.append([*sides, cur])
+            sides, cur = [], []
         elif depth or tok not in ("&", "\\\\"):  # an aligned display's marks
             cur.append(tok)
-    return [*sides, cur]
+    return [*chains, [*sides, cur]]
 
 
 def read_relations(page: str, symbols: list) -> list:
@@ -295,12 +301,16 @@ def read_relations(page: str, symbols: list) -> list:
             raise NotRead(f"a symbol-table entry without a glyph: {e!r}")
         table[str(e["glyph"]).replace(" ", "")] = e
     out = []
-    for toks in _split(_tokens(page.rstrip(",. "))):
-        try:
-            out.append(_Reader(toks, table).chain())
-        except (NotRead, IndexError) as exc:
-            out.append(exc if isinstance(exc, NotRead) else NotRead("unbalanced text"))
-    return [x[0] if isinstance(x, list) else x for x in out]
+    for chain in _split(_tokens(page.rstrip(",. "))):
+        out.append([])
+        for toks in chain:
+            r = _Reader(toks, table)
+            try:
+                v = r.chain()[0]
+            except (NotRead, IndexError) as exc:
+                v = exc if isinstance(exc, NotRead) else NotRead("unbalanced text")
+            out[-1].append((v, r.assumed))
+    return out
 
 
 def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
@@ -320,7 +330,8 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
     kinds = {g.get("group"): g.get("kind") for g in cert.get("atoms", [])}
     for e in symbols:  # the table's kinds are the certificate's groups' kinds
         for a in e.get("atoms", []) if isinstance(e, dict) else []:
-            group = next((g for g in cert.get("atoms", []) if a in g.get("names", [])), None)
+            group = next((g for g in cert.get("atoms", [])
+                          if a.rstrip("'") in g.get("names", [])), None)
             if group is None or e.get("kind") != group.get("kind"):
                 raise CheckError(f"({cert.get('id')}) symbol {e.get('glyph')}: declared "
                                  f"{e.get('kind')!r}, its atom {a} is of kind "
@@ -330,19 +341,24 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
         sides = read_relations(page, symbols)
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
-    if len(sides) != len(printed) + 1:
-        return [f"NOT READ: {len(sides) - 1} printed relation(s) on the page, the "
-                f"certificate has {len(printed)} (a list, chain or family the reader does "
-                "not match); each relation is the certificate's word"]
+    pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
+    if len(pairs) != len(printed):
+        return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
+                f"has {len(printed)} (a family the reader does not match); each relation is "
+                "the certificate's word"]
     out = []
     for k, rel in enumerate(printed):
         read = []
-        for side, mine in (("lhs", sides[0]), ("rhs", sides[k + 1])):
+        for side, (mine, assumed) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
             if isinstance(mine, NotRead):
                 out.append(f"NOT READ: relation {k + 1}'s {side} ({mine}); the certificate's "
                            "word")
                 continue
             theirs = rel[side]
+            if assumed and mine.shape != (len(theirs), len(theirs[0])):
+                out.append(f"NOT READ: relation {k + 1}'s {side} (a 1, O or 0 of a size "
+                           "other than 3); the certificate's word")
+                continue
             if mine.shape != (len(theirs), len(theirs[0])):
                 raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
                                  f"the page's reads "

@@ -211,7 +211,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     out = {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
            "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
-    out["symbols"] = symbol_table(atoms, eq.latex or "")
+    out["symbols"] = symbol_table(atoms, eq.latex or "", eq.section or "")
     if verdict == "does-not-hold":
         out["cause"] = cause_record(eq)
     return out
@@ -233,13 +233,24 @@ def _glyph(base: str, vector: bool) -> str:
     return f"{m.group(1)}_{m.group(2)}" if m else base
 
 
-def symbol_table(atoms: list[dict], latex: str) -> list[dict]:
+def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]:
     """One entry per book glyph the statement's atoms stand for, for a referee to hold
     against the page (certcheck reads the printed LaTeX under it, docs/certificates.md):
     ``{"glyph", "kind", "atoms"}`` for a vector (three atoms ``x_1, x_2, x_3`` of one kind)
     or a scalar, ``{"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"}`` for the
     cross-product matrix of a vector when its capital is printed, and the time derivative
-    ``\\dot{...}`` of a timed glyph (its atoms' jets). Only glyphs printed in ``latex``."""
+    ``\\dot{...}`` of a timed glyph (its atoms' jets). Only glyphs printed in ``latex``; a
+    cross-product matrix only where the glyph table (``latex/glyphs.csv``) defines it so for
+    the id's ``section``."""
+    from rigidsym.latex.table import glyph_table
+
+    # the angular-velocity matrix is skew (Theorem 3.3.1) with axial vector omega (3.39)
+    cpm: dict = {"\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
+    for row in glyph_table():
+        m = re.fullmatch(r"\\mathrm\{CPM\}\((.+)\)", row.definition or "")
+        if m and (row.section == "*" or section == row.section
+                  or section.startswith(row.section + ".")):
+            cpm.setdefault(m.group(1), []).append(row.latex)
     vectors: dict = {}
     scalars = []
     for g in atoms:
@@ -267,11 +278,9 @@ def symbol_table(atoms: list[dict], latex: str) -> list[dict]:
             continue
         glyph = _glyph(base, True)
         add(glyph, {"kind": kind, "atoms": sorted(names)}, timed)
-        cap = glyph.replace("{" + base.split("_")[-1] + "}", "{" + base.capitalize() + "}")
-        cap = re.sub(r"\\(\w+)\}$", lambda m: "\\" + m.group(1).capitalize() + "}", cap) \
-            if "boldsymbol" in glyph else cap
-        if cap != glyph and cap in latex:
-            out.append({"glyph": cap, "cpm_of": glyph})
+        for cap in cpm.get(glyph, ()):
+            if cap in latex:
+                out.append({"glyph": cap, "cpm_of": glyph})
     for name, kind, timed in scalars:
         add(_glyph(name, False), {"kind": kind, "atoms": [name]}, timed)
     return out
