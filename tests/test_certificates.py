@@ -28,7 +28,9 @@ def test_verify_writes_and_rechecks(tmp_path, capsys):
     err = capsys.readouterr().err
     assert rc == 0
     files = sorted(p.name for p in tmp_path.glob("*.json"))
-    assert files == ["3.13.json", "3.96e.json"]
+    assert files == ["3.13.json", "3.96e.json", "MANIFEST.json"]
+    manifest = json.loads((tmp_path / "MANIFEST.json").read_text())
+    assert sorted(manifest["certificates"]) == files[:2] and manifest["book_sha256"] is None
     assert "certcheck re-checked 2 of 2" in err, err
     cert = json.loads((tmp_path / "3.96e.json").read_text())
     assert cert["verdict"] == "does-not-hold"
@@ -92,7 +94,7 @@ def test_user_module_gets_certificates(tmp_path, capsys):
                str(tmp_path)])
     err = capsys.readouterr().err
     assert rc in (0, 1)
-    n = len(list(tmp_path.glob("*.json")))
+    n = len([p for p in tmp_path.glob("*.json") if p.name != "MANIFEST.json"])
     assert n and f"certcheck re-checked {n} of {n}" in err, err
 
 
