@@ -135,10 +135,10 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
 #: identities issue 49 asks Coq to check: A^T A, its inverse and the inverse's coefficients
 #: (3.13-3.16), a Rodrigues-form rotation (3.1: relative position rotated by
 #: Q = e e^T + cos(phi)(1 - e e^T) + sin(phi) E), Steiner's 3.133a and 3.147 (these by
-#: normal forms, checking/normal_forms.py), a rotation along a motion (3.99: the rotation's
+#: normal forms, checking/normal_forms.py), a rotation along a motion (3.102: the rotation's
 #: hypotheses and their derivatives) and a static one (3.51), by the certificate's cofactors;
 #: 3.35, half angles: cos(phi) and sin(phi) rewritten in cos(phi/2), sin(phi/2).
-COQ_IDS = ["3.13", "3.14", "3.15", "3.16", "3.1", "3.133a", "3.147", "3.99", "3.51", "3.35"]
+COQ_IDS = ["3.13", "3.14", "3.15", "3.16", "3.1", "3.133a", "3.147", "3.102", "3.51", "3.35"]
 
 
 @pytest.mark.slow
