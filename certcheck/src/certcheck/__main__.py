@@ -12,7 +12,14 @@ import re
 import sys
 import time
 
-from certcheck.book import BookError, cause_lines, check_manifest, check_page, locate
+from certcheck.book import (
+    BookError,
+    cause_lines,
+    check_manifest,
+    check_page,
+    definitions_before,
+    locate,
+)
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.reader import compare
 
@@ -85,7 +92,9 @@ def main(argv: list[str] | None = None) -> int:
             page = check_page(cert, book) if book is not None else cause_lines(cert)
             verdict, lines = check_certificate(cert, fast=not args.no_flint)
             if book is not None:  # the second reader: what is proved is what is printed
-                page += compare(cert, locate(book, str(cert.get("id"))), fast=not args.no_flint)
+                eq_id = str(cert.get("id"))
+                defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
+                page += compare(cert, locate(book, eq_id), fast=not args.no_flint, defs=defs)
                 not_read += any(x.startswith("NOT READ") for x in page)
         except (CheckError, BookError, OSError, ValueError) as exc:
             failed += 1

@@ -18,7 +18,8 @@ import json
 import os
 import re
 
-__all__ = ["BookError", "locate", "check_page", "check_manifest", "sha256", "CAUSES"]
+__all__ = ["BookError", "locate", "check_page", "check_manifest", "sha256", "CAUSES",
+           "definitions_before"]
 
 #: the causes of a does-not-hold a certificate may give
 CAUSES = ("book erratum", "conversion slip", "undetermined")
@@ -59,6 +60,27 @@ def locate(book: str, eq_id: str) -> str:
     if len(hits) != 1:
         raise BookError(f"({eq_id}) is printed in {len(hits)} places of the book, not one")
     return _norm(hits[0])
+
+
+def definitions_before(book: str, eq_id: str) -> dict:
+    """The glyphs defined on the page before ``eq_id``'s display, the nearest last: glyph
+    (spaces removed) -> ``(its printed definition's right side, the defining id)``, from
+    every tagged display ``G \\equiv rhs`` (a bare glyph on the left) above it."""
+    tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
+    out: dict = {}
+    for m in _DISPLAY.finditer(book):
+        if tag.search(m.group(1)):
+            break
+        tags = re.findall(r"(?:\((3\.\d+[a-z]?)\)|\\tag\{(3\.\d+[a-z]?)\})\s*$", m.group(1))
+        if not tags:
+            continue
+        for part in re.split(r",\s*\\quad", _TAG.sub("", m.group(1))):
+            lhs, eq, rhs = part.partition("\\equiv")
+            key = lhs.replace(" ", "").strip("&")
+            if eq and re.fullmatch(r"\\(mathbf|boldsymbol)\{[^{}]*\}(_\{?\w+\}?)?|\w(_\w)?", key) \
+                    and "\\equiv" not in rhs:
+                out[key] = (_norm(rhs), tags[0][0] or tags[0][1])
+    return out
 
 
 def check_page(cert: dict, book: str) -> list[str]:

@@ -97,8 +97,11 @@ def _cpm(v: M) -> M:
 
 
 class _Reader:
-    def __init__(self, tokens: list[str], table: dict):
+    def __init__(self, tokens: list[str], table: dict, defs: dict | None = None,
+                 cited: list | None = None):
         self.t, self.i, self.table = tokens, 0, table
+        self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
+        self.cited = [] if cited is None else cited
         self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
 
     def peek(self, k: int = 0):
@@ -258,8 +261,17 @@ class _Reader:
         if key == "\\mathbf{0}":
             return M([["0"] for _ in range(3)])
         entry = self.table.get(key)
+        if entry is None and key in self.defs:  # defined on the page before: read that
+            text, where = self.defs[key]
+            rest = {k: v for k, v in self.defs.items() if k != key}
+            inner = _Reader(_tokens(text), self.table, rest, self.cited)
+            value = inner.chain()[0]
+            self.assumed = self.assumed or inner.assumed
+            self.cited.append(f"{name} by ({where})")
+            return value
         if entry is None:
-            raise NotRead(f"the glyph {name} is not in the symbol table")
+            raise NotRead(f"the glyph {name} is neither in the symbol table nor defined "
+                          "(\\equiv) on the page before")
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
         if "cpm_of" in entry:
@@ -267,6 +279,9 @@ class _Reader:
         atoms = list(entry.get("atoms", []))
         if not atoms:
             raise NotRead(f"the glyph {name} names no atoms")
+        if len(atoms) in (9, 16):  # a rotation or transform, row-major
+            n = 3 if len(atoms) == 9 else 4
+            return M([atoms[n * i:n * i + n] for i in range(n)])
         return _s(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
 
 
@@ -288,7 +303,7 @@ def _split(tokens: list[str]) -> list[list[list[str]]]:
     return [*chains, [*sides, cur]]
 
 
-def read_relations(page: str, symbols: list) -> list:
+def read_relations(page: str, symbols: list, defs: dict | None = None) -> list:
     """The sides of the printed chain ``a = b = ...`` (or ``\\equiv``), each a matrix of
     grammar texts, or the :class:`NotRead` saying why the reader cannot read it.
 
@@ -304,19 +319,21 @@ def read_relations(page: str, symbols: list) -> list:
     for chain in _split(_tokens(page.rstrip(",. "))):
         out.append([])
         for toks in chain:
-            r = _Reader(toks, table)
+            r = _Reader(toks, table, defs)
             try:
                 v = r.chain()[0]
             except (NotRead, IndexError) as exc:
                 v = exc if isinstance(exc, NotRead) else NotRead("unbalanced text")
-            out[-1].append((v, r.assumed))
+            out[-1].append((v, r.assumed, r.cited))
     return out
 
 
-def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
+def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) -> list[str]:
     """Read ``page`` under the certificate's symbol table and check that each printed
     relation of the certificate is the printed one: each side the reader reads is the
-    certificate's side as a rational function under the kinds' hypotheses.
+    certificate's side as a rational function under the kinds' hypotheses. ``defs``
+    (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
+    their printed definitions above the id, each cited.
 
     Returns:
         Lines for the referee: what was read, and what was not (a finding, never a pass).
@@ -338,7 +355,7 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
                                  f"{kinds.get((group or {}).get('group'))!r}")
     printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
     try:
-        sides = read_relations(page, symbols)
+        sides = read_relations(page, symbols, defs)
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
@@ -349,7 +366,7 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
     out = []
     for k, rel in enumerate(printed):
         read = []
-        for side, (mine, assumed) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
+        for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
             if isinstance(mine, NotRead):
                 out.append(f"NOT READ: relation {k + 1}'s {side} ({mine}); the certificate's "
                            "word")
@@ -373,7 +390,8 @@ def compare(cert: dict, page: str, fast: bool = True) -> list[str]:
                 raise CheckError(f"({cert.get('id')}) the printed {side} of relation {k + 1} is "
                                  f"not the "
                                  f"certificate's: {exc}") from None
-            read.append(side)
+            read.append(side + (f" (through {', '.join(dict.fromkeys(cited))})"
+                                if cited else ""))
         if read:
             out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
                        "certificate's under the symbol table")

@@ -239,9 +239,9 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     ``{"glyph", "kind", "atoms"}`` for a vector (three atoms ``x_1, x_2, x_3`` of one kind)
     or a scalar, ``{"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"}`` for the
     cross-product matrix of a vector when its capital is printed, and the time derivative
-    ``\\dot{...}`` of a timed glyph (its atoms' jets). Only glyphs printed in ``latex``; a
-    cross-product matrix only where the glyph table (``latex/glyphs.csv``) defines it so for
-    the id's ``section``."""
+    ``\\dot{...}`` of a timed glyph (its atoms' jets), a rotation's or transform's matrix
+    (its atoms row-major). A cross-product matrix only where printed in ``latex`` and the
+    glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``."""
     from rigidsym.latex.table import glyph_table
 
     # the angular-velocity matrix is skew (Theorem 3.3.1) with axial vector omega (3.39)
@@ -266,12 +266,11 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                 scalars.append((names[0], g["kind"], g["timed"]))
     out = []
 
-    def add(glyph, entry, timed):
-        if glyph.replace(" ", "") in latex.replace(" ", ""):
-            out.append({"glyph": glyph, **entry})
-        dot = f"\\dot{{{glyph}}}"
-        if timed and dot in latex.replace(" ", ""):
-            out.append({"glyph": dot, **entry, "atoms": [a + "'" for a in entry["atoms"]]})
+    def add(glyph, entry, timed):  # every atom's glyph: definitions on the page use them
+        out.append({"glyph": glyph, **entry})
+        if timed:
+            out.append({"glyph": f"\\dot{{{glyph}}}", **entry,
+                        "atoms": [a + "'" for a in entry["atoms"]]})
 
     for base, (kind, names, timed) in sorted(vectors.items()):
         if sorted(names) != [f"{base}_{k}" for k in (1, 2, 3)]:
@@ -281,6 +280,10 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
         for cap in cpm.get(glyph, ()):
             if cap in latex:
                 out.append({"glyph": cap, "cpm_of": glyph})
+    for g in atoms:  # a rotation or transform: its matrix, row-major
+        if g["kind"] in ("rotation", "transform"):
+            add(_glyph(g["group"], True), {"kind": g["kind"], "atoms": list(g["names"])},
+                g["timed"])
     for name, kind, timed in scalars:
         add(_glyph(name, False), {"kind": kind, "atoms": [name]}, timed)
     return out
