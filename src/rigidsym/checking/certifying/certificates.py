@@ -217,6 +217,12 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     return out
 
 
+#: the cross-product matrices by section, as latex/glyphs.csv declares them (the checking
+#: layer does not import the LaTeX reader): the capital of each vector; e and omega always
+#: (2.49; Theorem 3.3.1 and (3.39): Omega is skew with axial vector omega)
+_CPM_BY_SECTION = {"3.2.2": ("a", "b"), "3.4.2": ("a", "p"), "3.7": ("a", "p"),
+                   "3.8": ("r", "a", "c")}
+
 _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa", "lambda",
           "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega"}
 
@@ -242,15 +248,11 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     ``\\dot{...}`` of a timed glyph (its atoms' jets), a rotation's or transform's matrix
     (its atoms row-major). A cross-product matrix only where printed in ``latex`` and the
     glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``."""
-    from rigidsym.latex.table import glyph_table
-
-    # the angular-velocity matrix is skew (Theorem 3.3.1) with axial vector omega (3.39)
-    cpm: dict = {"\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
-    for row in glyph_table():
-        m = re.fullmatch(r"\\mathrm\{CPM\}\((.+)\)", row.definition or "")
-        if m and (row.section == "*" or section == row.section
-                  or section.startswith(row.section + ".")):
-            cpm.setdefault(m.group(1), []).append(row.latex)
+    cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
+    for sec, letters in _CPM_BY_SECTION.items():
+        if section == sec or section.startswith(sec + "."):
+            for x in letters:
+                cpm.setdefault(f"\\mathbf{{{x}}}", []).append(f"\\mathbf{{{x.upper()}}}")
     vectors: dict = {}
     scalars = []
     for g in atoms:
