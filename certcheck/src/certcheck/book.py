@@ -64,8 +64,11 @@ def locate(book: str, eq_id: str) -> str:
 
 def definitions_before(book: str, eq_id: str) -> dict:
     """The glyphs defined on the page before ``eq_id``'s display, the nearest last: glyph
-    (spaces removed) -> ``(its printed definition's right side, the defining id)``, from
-    every tagged display ``G \\equiv rhs`` (a bare glyph on the left) above it."""
+    (spaces removed) -> ``(its printed definition's right side, the defining id, the sign)``,
+    from every tagged display ``G \\equiv rhs`` or ``G = rhs`` (a bare glyph on the left,
+    one relation) above it; ``\\equiv`` is a definition, ``=`` an equation of the page whose
+    certificate the referee checks too (so a side read through it that differs from the
+    certificate's is NOT READ, not a rejection: the model's glyph may be another's)."""
     tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
     out: dict = {}
     for m in _DISPLAY.finditer(book):
@@ -75,12 +78,19 @@ def definitions_before(book: str, eq_id: str) -> dict:
         if not tags:
             continue
         for part in re.split(r",\s*\\quad", _TAG.sub("", m.group(1))):
-            lhs, eq, rhs = part.partition("\\equiv")
-            key = lhs.replace(" ", "").strip("&")
-            if eq and re.fullmatch(r"\\(mathbf|boldsymbol)\{[^{}]*\}(_\{?\w+\}?)?|\w(_\w)?", key) \
-                    and "\\equiv" not in rhs:
-                out[key] = (_norm(rhs), tags[0][0] or tags[0][1])
+            for sign in ("\\equiv", "="):  # an equation G = rhs: a definition read second
+                lhs, eq, rhs = part.partition(sign)
+                key = lhs.replace(" ", "").strip("&")
+                if eq and re.fullmatch(_GLYPH, key) and "\\equiv" not in rhs and "=" not in rhs \
+                        and (sign != "=" or out.get(key, ("", "", "="))[2] == "="):
+                    out[key] = (_norm(rhs), tags[0][0] or tags[0][1], sign)
+                    break
     return out
+
+
+# a bare glyph: bold or Greek, with a dot, a prime or a subscript
+_GLYPH = (r"(\\dot\{|\\ddot\{)?\\(mathbf|boldsymbol)\{[^{}]*\}\}?(_\{?\w+\}?)?'*"
+          r"|\\?\w+(_\{?\w+\}?)?")
 
 
 def check_page(cert: dict, book: str) -> list[str]:
