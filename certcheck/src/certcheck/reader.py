@@ -201,13 +201,22 @@ class _Reader:
             self.take()
             arg = self.factor() if self.peek() in ("(", "{") else self.primary()
             return _s(f"{tok[1:]}({arg.rows[0][0]})")
-        if tok in ("\\mathrm", "\\text") and self.peek(2) == "tr":
+        if tok in ("\\mathrm", "\\text", "\\operatorname"):
+            start = self.i
             self.take()
-            self.group()
-            self.take("(")
-            v = self.expr()
-            self.take(")")
-            return _s(" + ".join(v.rows[i][i] for i in range(v.shape[0])))
+            word = self.group()
+            if word in ("tr", "vect"):
+                self.take("(")
+                v = self.expr()
+                self.take(")")
+                if v.shape != (3, 3) and word == "vect":
+                    raise NotRead(f"vect of a {v.shape} array")
+                if word == "tr":
+                    return _s(" + ".join(v.rows[i][i] for i in range(v.shape[0])))
+                a = v.rows  # vect(A): the axial vector of A's skew part, (1/2) of the sums
+                return M([[f"(1/2)*(({a[j][k]}) - ({a[k][j]}))"] for j, k in
+                          ((2, 1), (0, 2), (1, 0))])
+            self.i = start
         if tok == "\\begin{bmatrix}":
             return self.bmatrix()
         return self.glyph()
@@ -250,6 +259,8 @@ class _Reader:
             if self.take() == "_":
                 self.group()
         name = "".join(self.t[start:self.i])
+        if self.t[self.i:self.i + 3] == ["(", "t", ")"]:  # p(t): the glyph at time t
+            self.i += 3
         return self.lookup(name)
 
     def lookup(self, name: str) -> M:
@@ -274,6 +285,11 @@ class _Reader:
                           "(\\equiv) on the page before")
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
+        if "latex" in entry:  # a definition printed elsewhere (another chapter): read it
+            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited)
+            value = inner.chain()[0]
+            self.cited.append(f"{name} by {entry.get('printed_as', '?')}, an equation")
+            return value
         if "cpm_of" in entry:
             return _cpm(self.lookup(entry["cpm_of"]))
         atoms = list(entry.get("atoms", []))

@@ -229,14 +229,20 @@ _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa",
 
 def _glyph(base: str, vector: bool) -> str:
     """The book's glyph of an atom group's name (``e`` -> ``\\mathbf{e}``, ``omega`` ->
-    ``\\boldsymbol{\\omega}``, ``phi`` -> ``\\phi``, ``r0`` -> ``r_0``)."""
+    ``\\boldsymbol{\\omega}``, ``phi`` -> ``\\phi``, ``r0`` -> ``r_0``, ``p0`` ->
+    ``\\mathbf{p}_0``, ``adot`` -> ``\\dot{\\mathbf{a}}``)."""
     base = re.sub(r"^s\d+_", "", base)  # a section's prefix
-    if base in _GREEK or base.capitalize() in {g.capitalize() for g in _GREEK}:
-        return f"\\boldsymbol{{\\{base}}}" if vector else f"\\{base}"
-    if vector:
-        return f"\\mathbf{{{base}}}"
-    m = re.fullmatch(r"([A-Za-z])_?(\d)", base)
-    return f"{m.group(1)}_{m.group(2)}" if m else base
+    m = re.fullmatch(r"([A-Za-z]+?)(dot)?_?(\d?)", base)  # p0 -> p_0, adot -> dot a
+    core, dot, sub = m.groups() if m else (base, None, "")
+    if core in _GREEK or core.capitalize() in {g.capitalize() for g in _GREEK}:
+        out = f"\\boldsymbol{{\\{core}}}" if vector else f"\\{core}"
+    elif vector and m:
+        out = f"\\mathbf{{{core}}}"
+    elif len(core) == 1:
+        out = core
+    else:  # a name the book does not print (the model's own)
+        return f"\\mathbf{{{base}}}" if vector else base
+    return (f"\\dot{{{out}}}" if dot else out) + (f"_{sub}" if sub else "")
 
 
 def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]:
@@ -288,7 +294,27 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                 g["timed"])
     for name, kind, timed in scalars:
         add(_glyph(name, False), {"kind": kind, "atoms": [name]}, timed)
+    glyphs = {e["glyph"] for e in out}
+    # Q of the natural invariants, as printed (also for glyphs defined through Q: Omega)
+    if "\\mathbf{Q}" not in glyphs and {"\\mathbf{e}", "\\phi"} <= glyphs:
+        out.append({"glyph": "\\mathbf{Q}", "latex": _Q_NATURAL, "printed_as": "(2.49)"})
+        if "\\mathbf{E}" not in glyphs:
+            out.append({"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"})
+        if {"\\dot{\\mathbf{e}}", "\\dot{\\phi}"} <= glyphs:
+            out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
+                        "printed_as": "the time derivative of (2.49)"})
+            out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
     return out
+
+
+#: the rotation of angle phi about the unit vector e, as printed in chapter 2 (2.49)
+_Q_NATURAL = (r"\mathbf{e}\mathbf{e}^T + \cos\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
+              r"+ \sin\phi\mathbf{E}")
+#: its time derivative, term by term (product rule; e, phi functions of time)
+_QDOT_NATURAL = (r"\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T "
+                 r"- \dot{\phi}\sin\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
+                 r"- \cos\phi(\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T) "
+                 r"+ \dot{\phi}\cos\phi\mathbf{E} + \sin\phi\dot{\mathbf{E}}")
 
 
 #: the declared cause of a does-not-hold -> the certificate's cause class
