@@ -80,7 +80,7 @@ def definitions_before(book: str, eq_id: str) -> dict:
         for part in re.split(r",\s*\\quad", _TAG.sub("", m.group(1))):
             for sign in ("\\equiv", "="):  # an equation G = rhs: a definition read second
                 lhs, eq, rhs = part.partition(sign)
-                key = lhs.replace(" ", "").strip("&")
+                key = lhs.replace(" ", "").strip("&").removesuffix("(t)")  # p(t): p
                 if eq and re.fullmatch(_GLYPH, key) and "\\equiv" not in rhs and "=" not in rhs \
                         and (sign != "=" or out.get(key, ("", "", "="))[2] == "="):
                     out[key] = (_norm(rhs), tags[0][0] or tags[0][1], sign)

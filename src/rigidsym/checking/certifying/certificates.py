@@ -276,9 +276,10 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
 
     def add(glyph, entry, timed):  # every atom's glyph: definitions on the page use them
         out.append({"glyph": glyph, **entry})
-        if timed:
-            out.append({"glyph": f"\\dot{{{glyph}}}", **entry,
-                        "atoms": [a + "'" for a in entry["atoms"]]})
+        if timed:  # its first and second time derivatives: the atoms' jets
+            for dots, primes in (("dot", "'"), ("ddot", "''")):
+                out.append({"glyph": f"\\{dots}{{{glyph}}}", **entry,
+                            "atoms": [a + primes for a in entry["atoms"]]})
 
     for base, (kind, names, timed) in sorted(vectors.items()):
         if sorted(names) != [f"{base}_{k}" for k in (1, 2, 3)]:
