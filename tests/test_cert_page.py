@@ -371,3 +371,40 @@ def test_coq_counterexample_lemmas(chapter, tmp_path):
     p = subprocess.run(["coqc", "-q", "changed.v"], cwd=tmp_path, capture_output=True,
                        text=True, timeout=600)
     assert p.returncode != 0
+
+
+def _value(text: str, at: dict) -> Fraction:
+    """A reader's grammar text evaluated exactly at rational atoms (Python's own arithmetic,
+    not certcheck's)."""
+    import re
+
+    exact = re.sub(r"\b(\d+)\b", r"F(\1)", text.replace("^", "**"))
+    return Fraction(eval(exact, {"__builtins__": {}},  # noqa: S307
+                         {"F": Fraction, **{k: Fraction(v) for k, v in at.items()}}))
+
+
+def test_reader_notation_vect_inverse_and_time_argument():
+    """vect of a cross-product matrix is its vector; A A^{-1} is the identity; p(t) is p
+    (exact rational values, random atoms)."""
+    import random
+
+    from certcheck.reader import read_relations
+
+    rng = random.Random(65)
+    e = ["e_1", "e_2", "e_3"]
+    table = [{"glyph": "\\mathbf{e}", "kind": "free", "atoms": e},
+             {"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"},
+             {"glyph": "\\mathbf{A}", "kind": "free", "atoms": [f"a_{k}" for k in range(9)]}]
+    (vect, ee), = read_relations("\\text{vect}(\\mathbf{E}) = \\mathbf{e}(t)", table)
+    (prod, one), = read_relations("\\mathbf{A}\\mathbf{A}^{-1} = \\mathbf{1}", table)
+    for _ in range(5):
+        at = {n: Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for n in e}
+        at.update({f"a_{k}": Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for k in range(9)})
+        assert [_value(x[0], at) for x in vect[0].rows] == [at[n] for n in e]
+        assert [_value(x[0], at) for x in ee[0].rows] == [at[n] for n in e]
+        try:
+            _value(prod[0].rows[0][0], at)
+        except ZeroDivisionError:  # A singular at this point
+            continue
+        assert [[_value(x, at) for x in r] for r in prod[0].rows] == \
+                [[_value(x, at) for x in r] for r in one[0].rows]
