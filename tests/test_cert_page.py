@@ -408,3 +408,15 @@ def test_reader_notation_vect_inverse_and_time_argument():
             continue
         assert [[_value(x, at) for x in r] for r in prod[0].rows] == \
                 [[_value(x, at) for x in r] for r in one[0].rows]
+
+
+def test_every_conversion_slip_has_its_page_reading_decided(registry):
+    """Each conversion slip's declared page reading is decided: verified (the corrected
+    form the certificate proves) or its own erratum."""
+    from rigidsym.checking.certifying.certificates import cause_record
+
+    slips = [eq for eq in registry.values() if eq.cause == "conversion"]
+    assert slips
+    for eq in slips:
+        reading = cause_record(eq)["page_reading"]
+        assert "Decided: verified" in reading or "Decided: its own erratum" in reading, eq.id
