@@ -253,7 +253,10 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     cross-product matrix of a vector when its capital is printed, and the time derivative
     ``\\dot{...}`` of a timed glyph (its atoms' jets), a rotation's or transform's matrix
     (its atoms row-major). A cross-product matrix only where printed in ``latex`` and the
-    glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``."""
+    glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``. Where ``e``
+    and ``phi`` are atoms and no rotation group is, ``{"glyph": "\\mathbf{Q}", "latex":
+    ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
+    (and its time derivative term by term), which certcheck reads and cites."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
         if section == sec or section.startswith(sec + "."):
