@@ -58,6 +58,7 @@ def _model() -> dict:
 
 
 @equation("3.41", "Position of a point of a body with a fixed point", section="3.3",
+          expected="definition",
           latex=r"\mathbf{p}(t) = \mathbf{Q}(t)\mathbf{p}_0")
 def fixed_point_position() -> Statement:
     """``p(t) = Q(t) p0``. Book: Sec. 3.3, Eq. (3.41). Shapes: 3 x 1, m."""
@@ -65,6 +66,7 @@ def fixed_point_position() -> Statement:
 
 
 @equation("3.42", "Velocity from the original position", section="3.3",
+          expected="definition",
           latex=r"\dot{\mathbf{p}}(t) = \dot{\mathbf{Q}}(t)\mathbf{p}_0")
 def fixed_point_velocity_original() -> Statement:
     """``pdot(t) = Qdot(t) p0``. Book: Sec. 3.3, Eq. (3.42). Shapes: 3 x 1, m/s."""

@@ -133,6 +133,7 @@ def natural_invariant_rate_matrix() -> Statement:
 
 
 @equation("3.76c", "Rate matrix L of the linear invariants", section="3.4.2",
+          expected="definition",
           latex=r"\mathbf{L} \equiv \begin{bmatrix} (1/2)[\text{tr}(\mathbf{Q})\mathbf{1} - "
                 r"\mathbf{Q}] \\ -(\sin \phi)\mathbf{e}^T \end{bmatrix},",
           singular="none")

@@ -76,6 +76,7 @@ def twist_array() -> Statement:
 
 
 @equation("3.73", "Twist of a pure translation", section="3.4.2",
+          expected="definition",
           latex=r"\mathbf{t} \equiv \begin{bmatrix} \mathbf{0} \\ \mathbf{v} \end{bmatrix} = "
                 r"\|\mathbf{v}\| \begin{bmatrix} \mathbf{0} \\ \mathbf{e} \end{bmatrix}")
 def pure_translation_twist() -> Statement:

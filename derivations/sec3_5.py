@@ -222,7 +222,8 @@ def pose_second_derivative() -> Statement:
                       for n in CHOICES], _pose())
 
 
-@equation("3.92", "Rate of T", section="3.5", singular="F = N: phi = 0 (mod 2 pi)",
+@equation("3.92", "Rate of T", section="3.5",
+          expected="definition", singular="F = N: phi = 0 (mod 2 pi)",
           latex=r"\dot{\mathbf{T}} \equiv \begin{bmatrix} \dot{\mathbf{F}} & \mathbf{O}_{43} "
                 r"\\ \mathbf{O} & \mathbf{O} \end{bmatrix}")
 def rate_of_T() -> Statement:
@@ -285,6 +286,7 @@ LAM, ETA = MS("lambda", 4), MS("eta", 4)
 
 
 @equation("3.95a", "Linear invariants and Euler-Rodrigues parameters split", section="3.5",
+          expected="definition",
           latex=r"\boldsymbol{\lambda} \equiv \begin{bmatrix} \mathbf{u} \\ u_0 \end{bmatrix}, "
                 r"\quad \boldsymbol{\eta} \equiv \begin{bmatrix} \mathbf{r} \\ r_0 \end{bmatrix}")
 def invariant_arrays_split() -> Statement:

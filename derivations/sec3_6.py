@@ -82,6 +82,7 @@ def _moving_frame_model() -> tuple[dict, dict]:
 
 
 @equation("3.98", "Position of P in F: origin of M plus relative position", section="3.6",
+          expected="definition",
           latex=r"[\mathbf{p}]_{\mathcal{F}} = [\mathbf{o}]_{\mathcal{F}} + "
                 r"[\boldsymbol{\rho}]_{\mathcal{F}}")
 def position_in_fixed_frame() -> Statement:
@@ -94,6 +95,7 @@ def position_in_fixed_frame() -> Statement:
 
 
 @equation("3.99", "Relative position changed from M- to F-coordinates", section="3.6",
+          expected="definition",
           latex=r"[\boldsymbol{\rho}]_{\mathcal{F}} = [\mathbf{Q}]_{\mathcal{F}}"
                 r"[\boldsymbol{\rho}]_{\mathcal{M}}")
 def relative_position_to_fixed_frame() -> Statement:
@@ -106,6 +108,7 @@ def relative_position_to_fixed_frame() -> Statement:
 
 
 @equation("3.100", "Position of P in F from its M-coordinates", section="3.6",
+          expected="definition",
           latex=r"[\mathbf{p}]_{\mathcal{F}} = [\mathbf{o}]_{\mathcal{F}} + "
                 r"[\mathbf{Q}]_{\mathcal{F}}[\boldsymbol{\rho}]_{\mathcal{M}}")
 def position_from_moving_coordinates() -> Statement:
@@ -115,6 +118,7 @@ def position_from_moving_coordinates() -> Statement:
 
 
 @equation("3.101", "Velocity of P in F, by differentiating (3.100)", section="3.6",
+          expected="definition",
           latex=r"[\dot{\mathbf{p}}]_{\mathcal{F}} = [\dot{\mathbf{o}}]_{\mathcal{F}} + "
                 r"[\dot{\mathbf{Q}}]_{\mathcal{F}}[\boldsymbol{\rho}]_{\mathcal{M}} + "
                 r"[\mathbf{Q}]_{\mathcal{F}}[\dot{\boldsymbol{\rho}}]_{\mathcal{M}}")

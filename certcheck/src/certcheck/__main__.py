@@ -1,30 +1,64 @@
-"""``python -m certcheck [--no-flint] [--quiet] PATH...``: check certificates (files, or
-every ``*.json`` of a folder); print the hypotheses and a verdict per id; exit 1 when any
-certificate fails, 2 on bad arguments."""
+"""``python -m certcheck [--book BOOK] [--no-flint] [--quiet] PATH...``: check certificates
+(files, or every ``*.json`` of a folder); with ``--book``, each against the text printed
+as its id and each folder against its ``MANIFEST.json``; print the hypotheses, the printed
+text, the symbols, a cause and a verdict per id; exit 1 when any certificate fails, 2 on
+bad arguments."""
 
 from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 import time
 
+from certcheck.book import (
+    BookError,
+    cause_lines,
+    check_manifest,
+    check_page,
+    definitions_before,
+    locate,
+)
 from certcheck.check import CheckError, check_certificate, load
+from certcheck.reader import compare
 
 
 def _files(paths: list[str]) -> list[str]:
     out = []
     for p in paths:
         if os.path.isdir(p):
-            out += sorted(os.path.join(p, f) for f in os.listdir(p) if f.endswith(".json"))
+            out += sorted(os.path.join(p, f) for f in os.listdir(p)
+                          if f.endswith(".json") and f != "MANIFEST.json")
         else:
             out.append(p)
     return out
 
 
+def _manifests(paths, files, book_bytes) -> tuple[int, list[str]]:
+    """Check each folder's manifest: required with a book, else where present."""
+    failed, lines = 0, []
+    for p in paths:
+        if not os.path.isdir(p):
+            continue
+        if book_bytes is None and not os.path.exists(os.path.join(p, "MANIFEST.json")):
+            lines.append(f"NOTE {p}: no MANIFEST.json; the folder is not bound to one run")
+            continue
+        mine = [f for f in files if os.path.dirname(f) == p.rstrip(os.sep)]
+        try:
+            lines += check_manifest(p, mine, book_bytes)
+        except BookError as exc:
+            failed += 1
+            lines.append(f"FAILED MANIFEST.json of {p}: {exc}")
+    return failed, lines
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="certcheck", description=__doc__.split("\n\n")[0])
     ap.add_argument("paths", nargs="+", help="certificate files or folders of them")
+    ap.add_argument("--book", metavar="FILE",
+                    help="the book's text (Markdown with LaTeX): bind each certificate to the "
+                         "text printed as its id, and each folder to its manifest")
     ap.add_argument("--no-flint", action="store_true",
                     help="standard-library arithmetic only, even when python-flint is there")
     ap.add_argument("--quiet", action="store_true", help="one line per certificate")
@@ -33,14 +67,36 @@ def main(argv: list[str] | None = None) -> int:
     if not files:
         print("certcheck: no certificate found", file=sys.stderr)
         return 2
-    failed = 0
+    book_bytes = None
+    if args.book:
+        try:
+            with open(args.book, "rb") as f:
+                book_bytes = f.read()
+        except OSError as exc:
+            print(f"certcheck: --book: cannot read {args.book}: {exc}", file=sys.stderr)
+            return 2
+    book = None if book_bytes is None else book_bytes.decode("utf-8")
     t0 = time.perf_counter()
+    bad_manifests, head = _manifests(args.paths, files, book_bytes)
+    for line in head:
+        print(line)
+    failed = not_read = 0
     for path in files:
         t = time.perf_counter()
         try:
             cert = load(path)
+            if book is not None and os.path.basename(path) != \
+                    re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
+                raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
+                                f"in the file of another id")
+            page = check_page(cert, book) if book is not None else cause_lines(cert)
             verdict, lines = check_certificate(cert, fast=not args.no_flint)
-        except (CheckError, OSError, ValueError) as exc:
+            if book is not None:  # the second reader: what is proved is what is printed
+                eq_id = str(cert.get("id"))
+                defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
+                page += compare(cert, locate(book, eq_id), fast=not args.no_flint, defs=defs)
+                not_read += any(x.startswith("NOT READ") for x in page)
+        except (CheckError, BookError, OSError, ValueError) as exc:
             failed += 1
             print(f"FAILED {os.path.basename(path)}: {exc}")
             continue
@@ -50,11 +106,15 @@ def main(argv: list[str] | None = None) -> int:
             continue
         print(f"CHECKED ({cert.get('id')}) {verdict}  [{time.perf_counter() - t:.2f} s]")
         if not args.quiet:
-            for line in lines:
+            for line in page + lines:
                 print(f"    {line}")
     print(f"certcheck: {len(files) - failed} of {len(files)} certificates checked, "
-          f"{failed} failed, {time.perf_counter() - t0:.1f} s")
-    return 1 if failed else 0
+          f"{failed} failed, {time.perf_counter() - t0:.1f} s"
+          + (f", {bad_manifests} manifest(s) failed" if bad_manifests else "")
+          + ("" if book is not None else "; not bound to the page (no --book)")
+          + (f"; the reader left {not_read} id(s) partly or wholly NOT READ (their "
+             "relations are the certificate's word)" if not_read else ""))
+    return 1 if failed or bad_manifests else 0
 
 
 if __name__ == "__main__":

@@ -553,8 +553,20 @@ def check_certificate(cert: dict, fast: bool = True) -> tuple[str, list[str]]:
     """Check ``cert``; returns ``(verdict, lines)``.
 
     Raises:
-        CheckError: the evidence does not prove the verdict.
+        CheckError: the evidence does not prove the verdict (the message names the id).
     """
+    try:
+        return _check(cert, fast)
+    except CheckError as exc:
+        raise CheckError(f"({cert.get('id', '?')}) {exc}") from None
+
+
+def _same_sides(rel) -> bool:
+    """The two sides are one expression as written (lets compared by name: one text)."""
+    return rel[0].get("lhs") == rel[0].get("rhs")
+
+
+def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
     st = Statement(cert)
     verdict = cert.get("verdict")
     lines = [f"hypothesis: {h}" for h in hypotheses(st)]
@@ -568,11 +580,22 @@ def check_certificate(cert: dict, fast: bool = True) -> tuple[str, list[str]]:
     if not st.rels:
         raise CheckError("no relation")
     roles = {rel[0].get("role") for rel in st.rels}
+    printed = [rel for rel in st.rels if rel[0].get("role") == "printed"]
     if verdict == "verified":
         if by["counterexample"] or by["shape"] or by["statement"] or \
                 not roles <= {"printed", "claim"}:
             raise CheckError("a verified statement needs identity evidence for every "
                              "printed member and claim")
+        if all(_same_sides(rel) for rel in printed or st.rels):
+            if ":" not in st.id:  # the book's ids; a reader's own (ns:name) get a note
+                raise CheckError("verified, but every printed relation (or claim) has two "
+                                 "identical sides (nothing derived: a definition or an "
+                                 "identity by definition)")
+            lines.append("NOTE: every printed relation has two identical sides: nothing "
+                         "derived here (an identity by definition)")
+        lines += [f"{_who(rel[0])}: identity by definition (its two sides are one expression "
+                  "as written); the id is verified by its other printed relations"
+                  for rel in printed if _same_sides(rel)]
     elif verdict == "does-not-hold":
         failing = [rel for rel in by["counterexample"] + by["shape"]
                    if rel[0].get("role") in ("printed", "claim")]
@@ -580,8 +603,9 @@ def check_certificate(cert: dict, fast: bool = True) -> tuple[str, list[str]]:
             raise CheckError("a does-not-hold needs a printed member with a counterexample "
                              "or a shape mismatch")
     elif verdict == "definition":
-        if by["counterexample"] or by["shape"] or \
-                any(rel[0].get("role") != "printed" for rel in by["statement"]):
+        if by["counterexample"] or by["shape"] or not printed or \
+                any(rel[0].get("role") != "printed" for rel in by["statement"]) or \
+                any(rel not in by["statement"] for rel in printed):
             raise CheckError("a definition holds its printed form as a statement and its "
                              "claims as identities")
     else:

@@ -27,7 +27,9 @@ EXAMPLES = """\
   rigidsym verify --module my_eqs.py      your own equations
   rigidsym verify --format json > v.json  the schema-2 document on stdout
   rigidsym verify --certificates certs    a certificate per id, re-checked by certcheck
-                                          (docs/certificates.md)"""
+                                          (docs/certificates.md)
+  rigidsym verify --certificates certs --book ../shared/book/angeles-chapter3.md
+                                          ... each bound to its printed text, one run"""
 
 
 def add_arguments(v) -> None:
@@ -55,6 +57,16 @@ def add_arguments(v) -> None:
                    help="write a certificate per decided id into DIR (docs/certificates.md) "
                         "and re-check them with the independent checker certcheck when it "
                         "is found (default: none)")
+    v.add_argument("--coq", metavar="DIR",
+                   help="write a Coq file per certificate Coq can be given into DIR "
+                        "(eq3_16.v: the identities' lemmas, a does-not-hold's counterexample "
+                        "lemmas) and NO-PROOF.txt with the others and why; check them with "
+                        "coqc (docs/certificates.md) (default: none)")
+    v.add_argument("--book", metavar="FILE",
+                   help="with --certificates: the book's text (Markdown with LaTeX; the "
+                        "referee's copy, never shipped): its SHA-256 goes into the folder's "
+                        "MANIFEST.json and certcheck binds each certificate to the text "
+                        "printed as its id (default: none)")
     add_repair_arguments(v)
 
 
@@ -126,12 +138,54 @@ def _document(results, certified) -> str:
     return dumps(doc) + "\n"
 
 
+def _coq(results, cert_dir, certified, coq_dir) -> str:
+    """Write the Coq files of the decided results (from the certificates just written, or
+    made here); one line on what was written."""
+    import json
+    from pathlib import Path
+
+    from rigidsym.checking.certifying.certificates import (
+        Unprintable,
+        certificate,
+        certificate_file,
+    )
+    from rigidsym.checking.certifying.coq_export import write_coq_folder
+
+    certs, none = {}, {}
+    for r in results:
+        if r.verdict == "undecided":
+            none[r.id] = "undecided: no certificate"
+        elif certified is not None:
+            if r.id in certified["written"]:
+                certs[r.id] = json.loads((Path(cert_dir) / certificate_file(r.id)).read_text())
+            else:
+                none[r.id] = f"no certificate: {certified['skipped'].get(r.id, '')}"
+        else:
+            try:
+                certs[r.id] = certificate(r.id, r.verdict, r.members)
+            except (Unprintable, ValueError) as exc:
+                none[r.id] = f"no certificate: {exc}"
+    done = write_coq_folder(certs, coq_dir, extra_none=none)
+    return (f"coq: {len(done['written'])} files written to {coq_dir} (check each with "
+            f"coqc -q FILE), {len(done['none'])} ids without one (NO-PROOF.txt)")
+
+
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
     from rigidsym.checking.runner import run_checks  # sympy: after the parser
     from rigidsym.registry.declarations import is_user_id
     from rigidsym.report.record import cause_line, summary, transcription_extra
 
+    if args.book is not None:
+        from pathlib import Path
+
+        from rigidsym.core.errors import BadInput
+
+        if not args.certificates:
+            raise BadInput("--book: only with --certificates DIR (it binds the certificates "
+                           "to the page)")
+        if not Path(args.book).is_file():
+            raise BadInput(f"--book: expected the book's text file, got {args.book!r}")
     ids = select_with_modules(args.ids, args.section, args.module)
     fmt = output_format(args)
     # a JSON document carries the transcription records: computed beside the verdicts in
@@ -146,8 +200,11 @@ def run(args) -> int:
     if args.certificates:
         from rigidsym.checking.certifying.certificates import certify_line, write_certificates
 
-        certified = write_certificates(results, args.certificates, recheck=True)
+        certified = write_certificates(results, args.certificates, recheck=True,
+                                       book=args.book)
         print(certify_line(certified, args.certificates), file=sys.stderr)
+    if args.coq:
+        print(_coq(results, args.certificates, certified, args.coq), file=sys.stderr)
     if args.json:
         write_atomic(args.json, _document(results, certified))
     off = [r for r in results if r.verdict != r.expected]

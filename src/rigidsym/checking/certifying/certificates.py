@@ -31,13 +31,21 @@ import sympy as sp
 
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.deciding.evidence import small_witness
-from rigidsym.checking.deciding.explicit import EXPLICIT_CACHE, entries_of, explicit, shape_of
+from rigidsym.checking.deciding.explicit import (
+    EXPLICIT_CACHE,
+    derived_sides,
+    entries_of,
+    explicit,
+    same_text,
+    shape_of,
+)
 from rigidsym.core.files import write_atomic
 from rigidsym.registry.declarations import REGISTRY
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "write_certificates",
-           "certificate_file", "recheck_folder", "certify_line", "certificate_field"]
+           "certificate_file", "recheck_folder", "certify_line", "certificate_field",
+           "write_manifest", "cause_record", "CAUSE_CLASSES", "symbol_table"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -181,6 +189,8 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             ev = {"type": "shape"} if shape_of(r.lhs) != shape_of(r.rhs) else None
         else:
             ev = {"type": ev}
+            if ev["type"] == "identity" and same_text(lhs, rhs):  # sympy's evaluation did it
+                lhs, rhs = derived_sides(r, st.model, lhs, rhs)
         sides.append((r, role, lhs, rhs, ev))
     for _, _, lhs, rhs, _ in sides:
         for e in entries_of(lhs) + entries_of(rhs):
@@ -198,9 +208,155 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     atoms = sorted(pr.groups.values(), key=lambda g: g["group"])
     if cofactors:
         _add_cofactors(pr, rels, sides, atoms, seed)
-    return {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
-            "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
-            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
+    out = {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
+           "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
+           "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
+    out["symbols"] = symbol_table(atoms, eq.latex or "", eq.section or "")
+    if verdict == "does-not-hold":
+        out["cause"] = cause_record(eq)
+    return out
+
+
+#: the cross-product matrices by section, as latex/glyphs.csv declares them (the checking
+#: layer does not import the LaTeX reader): the capital of each vector; e and omega always
+#: (2.49; Theorem 3.3.1 and (3.39): Omega is skew with axial vector omega)
+_CPM_BY_SECTION = {"3.2.2": ("a", "b"), "3.4.2": ("a", "p"), "3.7": ("a", "p"),
+                   "3.8": ("r", "a", "c")}
+
+_GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa", "lambda",
+          "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega"}
+
+
+def _glyph(base: str, vector: bool) -> str:
+    """The book's glyph of an atom group's name (``e`` -> ``\\mathbf{e}``, ``omega`` ->
+    ``\\boldsymbol{\\omega}``, ``phi`` -> ``\\phi``, ``r0`` -> ``r_0``, ``p0`` ->
+    ``\\mathbf{p}_0``, ``adot`` -> ``\\dot{\\mathbf{a}}``)."""
+    base = re.sub(r"^s\d+_", "", base)  # a section's prefix
+    m = re.fullmatch(r"([A-Za-z]+?)(dot)?_?(\d?)", base)  # p0 -> p_0, adot -> dot a
+    core, dot, sub = m.groups() if m else (base, None, "")
+    if core in _GREEK or core.capitalize() in {g.capitalize() for g in _GREEK}:
+        out = f"\\boldsymbol{{\\{core}}}" if vector else f"\\{core}"
+    elif vector and m:
+        out = f"\\mathbf{{{core}}}"
+    elif len(core) == 1:
+        out = core
+    else:  # a name the book does not print (the model's own)
+        return f"\\mathbf{{{base}}}" if vector else base
+    return (f"\\dot{{{out}}}" if dot else out) + (f"_{sub}" if sub else "")
+
+
+def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]:
+    """One entry per book glyph the statement's atoms stand for, for a referee to hold
+    against the page (certcheck reads the printed LaTeX under it, docs/certificates.md):
+    ``{"glyph", "kind", "atoms"}`` for a vector (three atoms ``x_1, x_2, x_3`` of one kind)
+    or a scalar, ``{"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"}`` for the
+    cross-product matrix of a vector when its capital is printed, and the time derivative
+    ``\\dot{...}`` of a timed glyph (its atoms' jets), a rotation's or transform's matrix
+    (its atoms row-major). A cross-product matrix only where printed in ``latex`` and the
+    glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``. Where ``e``
+    and ``phi`` are atoms and no rotation group is, ``{"glyph": "\\mathbf{Q}", "latex":
+    ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
+    (and its time derivative term by term), which certcheck reads and cites."""
+    cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
+    for sec, letters in _CPM_BY_SECTION.items():
+        if section == sec or section.startswith(sec + "."):
+            for x in letters:
+                cpm.setdefault(f"\\mathbf{{{x}}}", []).append(f"\\mathbf{{{x.upper()}}}")
+    vectors: dict = {}
+    scalars = []
+    for g in atoms:
+        names = g["names"]
+        if len(names) == 3 and all(re.fullmatch(rf"{re.escape(g['group'])}_[123]", n)
+                                   for n in names):
+            vectors[g["group"]] = (g["kind"], names, g["timed"])
+        elif len(names) == 1:
+            m = re.fullmatch(r"(.+)_([123])", names[0])
+            if m and g["kind"] == "free":
+                vectors.setdefault(m.group(1), ("free", [], g["timed"]))[1].append(names[0])
+            else:
+                scalars.append((names[0], g["kind"], g["timed"]))
+    out = []
+
+    def add(glyph, entry, timed):  # every atom's glyph: definitions on the page use them
+        out.append({"glyph": glyph, **entry})
+        if timed:  # its first and second time derivatives: the atoms' jets
+            for dots, primes in (("dot", "'"), ("ddot", "''")):
+                out.append({"glyph": f"\\{dots}{{{glyph}}}", **entry,
+                            "atoms": [a + primes for a in entry["atoms"]]})
+
+    for base, (kind, names, timed) in sorted(vectors.items()):
+        if sorted(names) != [f"{base}_{k}" for k in (1, 2, 3)]:
+            continue
+        glyph = _glyph(base, True)
+        add(glyph, {"kind": kind, "atoms": sorted(names)}, timed)
+        for cap in cpm.get(glyph, ()):
+            if cap in latex:
+                out.append({"glyph": cap, "cpm_of": glyph})
+    for g in atoms:  # a rotation or transform: its matrix, row-major
+        if g["kind"] in ("rotation", "transform"):
+            add(_glyph(g["group"], True), {"kind": g["kind"], "atoms": list(g["names"])},
+                g["timed"])
+    for name, kind, timed in scalars:
+        add(_glyph(name, False), {"kind": kind, "atoms": [name]}, timed)
+    glyphs = {e["glyph"] for e in out}
+    # Q of the natural invariants, as printed (also for glyphs defined through Q: Omega)
+    if "\\mathbf{Q}" not in glyphs and {"\\mathbf{e}", "\\phi"} <= glyphs:
+        out.append({"glyph": "\\mathbf{Q}", "latex": _Q_NATURAL, "printed_as": "(2.49)"})
+        if "\\mathbf{E}" not in glyphs:
+            out.append({"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"})
+        if {"\\dot{\\mathbf{e}}", "\\dot{\\phi}"} <= glyphs:
+            out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
+                        "printed_as": "the time derivative of (2.49)"})
+            out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
+    return out
+
+
+#: the rotation of angle phi about the unit vector e, as printed in chapter 2 (2.49)
+_Q_NATURAL = (r"\mathbf{e}\mathbf{e}^T + \cos\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
+              r"+ \sin\phi\mathbf{E}")
+#: its time derivative, term by term (product rule; e, phi functions of time)
+_QDOT_NATURAL = (r"\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T "
+                 r"- \dot{\phi}\sin\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
+                 r"- \cos\phi(\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T) "
+                 r"+ \dot{\phi}\cos\phi\mathbf{E} + \sin\phi\dot{\mathbf{E}}")
+
+
+#: the declared cause of a does-not-hold -> the certificate's cause class
+CAUSE_CLASSES = {"erratum": "book erratum", "conversion": "conversion slip"}
+
+
+def cause_record(eq) -> dict:
+    """The cause of a does-not-hold declaration for its certificate: ``{"class": "book
+    erratum" | "conversion slip" | "undetermined", "why": the declared evidence}``, and for
+    a conversion slip ``"page_reading"``: what the printed page is declared to show, a
+    conjecture about the page (the source is a converted text) whose corrected form the
+    certificate proves."""
+    cls = CAUSE_CLASSES.get(eq.cause, "undetermined")
+    out = {"class": cls, "why": eq.evidence or ""}
+    if cls == "conversion slip":
+        out["page_reading"] = ("conjecture: the printed page shows the corrected form below, "
+                               "the converted text lost or changed a glyph: "
+                               + (eq.evidence or "(no evidence declared)")
+                               + (" Decided: " + PAGE_READINGS[eq.id]
+                                  if eq.id in PAGE_READINGS else ""))
+    return out
+
+
+#: each conversion slip's declared page reading, decided: the reading is the corrected form
+#: this certificate proves (verified), or, where restoring the lost glyphs still leaves a
+#: term or factor missing (the corrected form proved carries it), its own book erratum
+PAGE_READINGS = {
+    "3.77a": "verified: the reading (nu-dot for v-dot) is the corrected chain, whose three "
+             "members are proved below by cofactors",
+    "3.94": "verified: the reading (F~-dot, the 3x4 rate, in the upper-left block) is the "
+            "corrected form, proved below by cofactors",
+    "3.97a": "its own erratum: with the tilde and phi restored the printed bracket still "
+             "lacks the term (1 - cos phi) E-dot of d/dt[(1 - cos phi) E]; the corrected form "
+             "proved below carries it (a book erratum beside the conversion slip)",
+    "3.97c": "its own erratum: with the tilde restored the printed bracket still lacks the "
+             "factor 2 of H~ (3.77d); the corrected form proved below, 2 [r0-dot 1 + R-dot, "
+             "-r-dot], carries it (a book erratum beside the conversion slip)",
+}
 
 
 def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, seed: int) -> None:
@@ -220,7 +376,8 @@ def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, s
             rel["evidence"] = {"type": "identity", "why_not_cofactors": str(exc)}
 
 
-def write_certificates(results, directory, recheck: bool = False) -> dict:
+def write_certificates(results, directory, recheck: bool = False,
+                       book: str | None = None) -> dict:
     """Write one certificate per decided result into ``directory`` (created), and a
     ``SKIPPED.txt`` naming the ids without one and why.
 
@@ -230,6 +387,8 @@ def write_certificates(results, directory, recheck: bool = False) -> dict:
         directory: the folder.
         recheck: run the independent checker on the folder afterwards
             (:func:`recheck_folder`).
+        book: the book's text file (the referee's copy, never shipped): its SHA-256 goes
+            into ``MANIFEST.json`` and the checker binds each certificate to its page.
 
     Returns:
         ``{"written": [ids], "skipped": {id: why}, "rechecked": {id: passed} or None,
@@ -254,10 +413,11 @@ def write_certificates(results, directory, recheck: bool = False) -> dict:
         evidence[r.id] = [rel["evidence"]["type"] for rel in cert["relations"]]
     write_atomic(out / "SKIPPED.txt",
                  "".join(f"{i}: {why}\n" for i, why in skipped.items()) or "none\n")
+    write_manifest(out, list(files), book)
     summary = {"written": written, "skipped": skipped, "rechecked": None, "checker": None,
                "failures": {}, "evidence": evidence}
     if recheck and written:
-        summary.update(recheck_folder(out, files))
+        summary.update(recheck_folder(out, files, book))
     return summary
 
 
@@ -272,13 +432,43 @@ def _checker_path() -> str | None:
     return "" if importlib.util.find_spec("certcheck") is not None else None
 
 
-def recheck_folder(directory, files: dict) -> dict:
+def write_manifest(directory, names: list[str], book: str | None = None) -> dict:
+    """Write ``directory/MANIFEST.json``: the SHA-256 of each certificate file of ``names``
+    and of the book text (``None`` without one), and rigidsym's version, so that the folder
+    is one run (certcheck verifies it). Returns the manifest.
+
+    Raises:
+        BadInput: ``book`` is not a readable file.
+    """
+    import hashlib
+
+    from rigidsym import __version__
+    from rigidsym.core.errors import BadInput
+
+    out = Path(directory)
+    book_sha = None
+    if book is not None:
+        try:
+            book_sha = hashlib.sha256(Path(book).read_bytes()).hexdigest()
+        except OSError as exc:
+            raise BadInput(f"book: expected a readable text file, got {book!r} ({exc})") from None
+    man = {"format": "rigidsym-certificate-manifest", "rigidsym": __version__,
+           "book_sha256": book_sha,
+           "certificates": {n: hashlib.sha256((out / n).read_bytes()).hexdigest()
+                            for n in sorted(names)}}
+    write_atomic(out / "MANIFEST.json", json.dumps(man, indent=1) + "\n")
+    return man
+
+
+def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
     """Run the independent checker (``python -m certcheck``, a separate process that
     imports no rigidsym) on ``directory``.
 
     Args:
         directory: the folder of certificates.
         files: certificate file name -> id.
+        book: the book's text file, passed on as ``--book`` (each certificate is then
+            bound to the text printed as its id, the folder to its manifest).
 
     Returns:
         ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
@@ -294,7 +484,9 @@ def recheck_folder(directory, files: dict) -> dict:
     env = dict(os.environ)
     if where:
         env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
-    proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", str(directory)],
+    book_args = [] if book is None else ["--book", str(book)]
+    proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", *book_args,
+                           str(directory)],
                           capture_output=True, text=True, env=env, check=False)
     failures = {}
     for line in proc.stdout.splitlines():
@@ -302,6 +494,8 @@ def recheck_folder(directory, files: dict) -> dict:
             name, _, why = line[len("FAILED "):].partition(": ")
             if name in files:
                 failures[files[name]] = why
+            else:  # the folder's manifest: no id of its own
+                failures[f"({name.split(' ')[0]})"] = why
     passed = {i: i not in failures for i in files.values()}
     if proc.returncode not in (0, 1):
         failures["(certcheck)"] = proc.stderr.strip()[-300:]

@@ -30,7 +30,7 @@ import sympy as sp
 
 from rigidsym.checking.certifying import coq_normal_form
 
-__all__ = ["NoProof", "coq_file", "prove"]
+__all__ = ["NoProof", "coq_file", "prove", "coq_expr"]
 
 _TOKEN = re.compile(r"(\d+)|([A-Za-z][A-Za-z0-9_.]*'*)|(\^-?\d+|\*|/|\+|-|\(|\))|\s+")
 
@@ -82,6 +82,16 @@ def _coq_expr(text: str, lets: dict) -> str:
     if re.search(r"\b(cos|sin) ?\(", s):
         raise NoProof("cos/sin of something other than an angle itself")
     return re.sub(r"\s+", " ", s).strip()
+
+
+def coq_expr(text: str, lets: dict) -> str:
+    """A certificate's grammar expression ``text`` in Coq's syntax over ``R``, the lets of
+    ``lets`` (name -> Coq text) inlined.
+
+    Raises:
+        NoProof: a square root, a bare ``pi``, or cos/sin of anything but an angle itself.
+    """
+    return _coq_expr(text, lets)
 
 
 def _pop_operand(tokens: list) -> tuple[list, list]:

@@ -224,6 +224,78 @@ class UnknownShape(ValueError):
     expression): its shape is never evidence of a mismatch."""
 
 
+def _flat(e) -> str:
+    """``e`` as written up to the grouping and order of its sums and products (the
+    certificate's printer writes ``a + (b + c)`` as ``a + b + c``)."""
+    if isinstance(e, sp.Add | sp.Mul):
+        args, stack = [], list(e.args)
+        while stack:
+            x = stack.pop()
+            if type(x) is type(e):
+                stack.extend(x.args)
+            else:
+                args.append(_flat(x))
+        return f"{type(e).__name__}({', '.join(sorted(args))})"
+    if isinstance(e, sp.Basic) and e.args:
+        return f"{type(e).__name__}({', '.join(_flat(x) for x in e.args)})"
+    return str(e)
+
+
+def same_text(a, b) -> bool:
+    """Whether two sides are the same entries as written, up to the grouping and order of
+    sums and products (:func:`_flat`)."""
+    return [_flat(sp.sympify(x)) for x in entries_of(a)] == \
+        [_flat(sp.sympify(x)) for x in entries_of(b)]
+
+
+def derived_sides(r, model: dict, lhs, rhs) -> tuple:
+    """The sides of ``r`` computed from the model without sympy's automatic evaluation
+    (products, sums and determinants of the explicit matrices left as written; ``X^-1 = Y``
+    as ``X Y = 1``, which for square matrices says the same), so that the checker, not
+    sympy, does the arithmetic; ``(lhs, rhs)`` unchanged where that fails
+    or the sides are still the same expression (a definition of the model: the checker
+    rejects it as a verification)."""
+    def side(x):
+        if isinstance(x, sp.Inverse) and x is r.lhs:  # X^-1 = Y: shown as X Y = 1
+            with sp.evaluate(False):
+                return explicit(x.arg, model) * explicit(r.rhs, model)
+        if isinstance(x, sp.MatMul):  # each factor explicit, their product unevaluated
+            mats = [explicit(a, model) for a in x.args]
+            with sp.evaluate(False):
+                out = mats[0]
+                for m in mats[1:]:
+                    out = out * m
+            return out
+        with sp.evaluate(False):
+            return explicit(x, model)
+    EXPLICIT_CACHE.clear()
+    try:
+        new = side(r.lhs), (sp.eye(shape_of(r.lhs)[0]) if isinstance(r.lhs, sp.Inverse)
+                            else side(r.rhs))
+    except (IndexError, TypeError, ValueError, AttributeError):
+        new = None
+    EXPLICIT_CACHE.clear()
+    if new is None or same_text(*new) or shape_of(new[0]) != shape_of(lhs):
+        return lhs, rhs
+    if any(not p.exp.is_Integer for x in new for e in entries_of(x)
+           for p in sp.sympify(e).atoms(sp.Pow)):  # x**(1*1): outside the grammar
+        return lhs, rhs
+    if isinstance(new[0], sp.MatrixBase) != isinstance(lhs, sp.MatrixBase):
+        return lhs, rhs
+    return new
+
+
+def identical_by_definition(r: Rel, model: dict) -> bool:
+    """Whether ``r``'s two sides are the same expression once the model (the book's
+    definitions) is substituted, even computed without sympy's evaluation
+    (:func:`derived_sides`): a definition, or an identity by definition, never a
+    verification (nothing is derived)."""
+    lhs, rhs = explicit(r.lhs, model), explicit(r.rhs, model)
+    if shape_of(lhs) != shape_of(rhs) or not same_text(lhs, rhs):
+        return False
+    return same_text(*derived_sides(r, model, lhs, rhs))
+
+
 def shape_of(x) -> tuple[int, int]:
     """Shape of a matrix, matrix expression or scalar (a scalar is 1 x 1).
 

@@ -1,0 +1,198 @@
+"""Bind certificates to the page and a folder to one run.
+
+- :func:`locate`: the printed text of an id in the book's text (the referee's copy; never
+  shipped): the display ``$$ ... $$`` tagged ``(3.xx)`` or ``\\tag{3.xx}``, its tag cut
+  off, or the paragraph of ``**Theorem 3.x.y.**``.
+- :func:`check_page`: a certificate's ``book_latex`` is that text (spaces collapsed, a
+  closing comma or full stop dropped; a theorem's words a part of its paragraph), and the
+  cause of a does-not-hold is one of the three classes, a conversion slip with its
+  declared page reading.
+- :func:`check_manifest`: ``MANIFEST.json`` lists the SHA-256 of every certificate of the
+  folder and of the book text, so a folder is one run of ``rigidsym verify``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import re
+
+__all__ = ["BookError", "locate", "check_page", "check_manifest", "sha256", "CAUSES",
+           "definitions_before"]
+
+#: the causes of a does-not-hold a certificate may give
+CAUSES = ("book erratum", "conversion slip", "undetermined")
+
+_DISPLAY = re.compile(r"\$\$(.*?)\$\$", re.S)
+_TAG = re.compile(r"\s*(?:\\quad\s*)?(?:\\tag\{[^}]*\}|\((?:3\.\d+[a-z]?)"
+                  r"(?:\s*,\s*3\.\d+[a-z]?)*\))\s*$")
+
+
+class BookError(Exception):
+    """A certificate or a folder is not bound to the page or to one run (says why)."""
+
+
+def sha256(data: bytes) -> str:
+    """The SHA-256 of ``data`` in hexadecimal."""
+    return hashlib.sha256(data).hexdigest()
+
+
+def _norm(text: str) -> str:
+    return re.sub(r"\s+", " ", text).strip().rstrip(",.").strip()
+
+
+def locate(book: str, eq_id: str) -> str:
+    """The printed text of ``eq_id`` (``3.16``, ``3.96e``, ``thm3.2.1``) in ``book``.
+
+    Raises:
+        BookError: the id is printed nowhere, or in more than one display.
+    """
+    prose = re.fullmatch(r"(thm|cor|caveat)(3\.[\d.]+)", eq_id)
+    if prose:  # a theorem's, corollary's or caveat's paragraph
+        word = {"thm": "Theorem", "cor": "Corollary", "caveat": "Caveat"}[prose.group(1)]
+        num = "" if word == "Caveat" else " " + re.escape(prose.group(2)) + r"[. ]"
+        head = re.compile(r"\*\*" + word + num)
+        hits = [line for line in book.splitlines() if head.match(line)]
+    else:
+        tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
+        hits = [_TAG.sub("", d) for d in _DISPLAY.findall(book) if tag.search(d)]
+    if len(hits) != 1:
+        raise BookError(f"({eq_id}) is printed in {len(hits)} places of the book, not one")
+    return _norm(hits[0])
+
+
+def definitions_before(book: str, eq_id: str) -> dict:
+    """The glyphs defined on the page before ``eq_id``'s display, the nearest last: glyph
+    (spaces removed) -> ``(its printed definition's right side, the defining id, the sign)``,
+    from every tagged display ``G \\equiv rhs`` or ``G = rhs`` (a bare glyph on the left,
+    one relation) above it; ``\\equiv`` is a definition, ``=`` an equation of the page whose
+    certificate the referee checks too (so a side read through it that differs from the
+    certificate's is NOT READ, not a rejection: the model's glyph may be another's)."""
+    tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
+    out: dict = {}
+    for m in _DISPLAY.finditer(book):
+        if tag.search(m.group(1)):
+            break
+        tags = re.findall(r"(?:\((3\.\d+[a-z]?)\)|\\tag\{(3\.\d+[a-z]?)\})\s*$", m.group(1))
+        if not tags:
+            continue
+        for part in re.split(r",\s*\\quad", _TAG.sub("", m.group(1))):
+            for sign in ("\\equiv", "="):  # an equation G = rhs: a definition read second
+                lhs, eq, rhs = part.partition(sign)
+                key = lhs.replace(" ", "").strip("&").removesuffix("(t)")  # p(t): p
+                if eq and re.fullmatch(_GLYPH, key) and "\\equiv" not in rhs and "=" not in rhs \
+                        and (sign != "=" or out.get(key, ("", "", "="))[2] == "="):
+                    out[key] = (_norm(rhs), tags[0][0] or tags[0][1], sign)
+                    break
+    return out
+
+
+# a bare glyph: bold or Greek, with a dot, a prime or a subscript
+_GLYPH = (r"(\\dot\{|\\ddot\{)?\\(mathbf|boldsymbol)\{[^{}]*\}\}?(_\{?\w+\}?)?'*"
+          r"|\\?\w+(_\{?\w+\}?)?")
+
+
+def check_page(cert: dict, book: str) -> list[str]:
+    """The certificate's id, printed text and cause against the page; lines to print.
+
+    Raises:
+        BookError: ``book_latex`` is not the text printed as the certificate's id, or a
+            does-not-hold gives no cause of :data:`CAUSES`.
+    """
+    eq_id = str(cert.get("id", ""))
+    if not re.fullmatch(r"3\.\d+[a-z]?|(thm|cor)3\.\d\.\d|caveat3\.\d", eq_id):
+        if cert.get("book_latex"):
+            raise BookError(f"({eq_id}): not a printed id, yet it gives a printed text")
+        return [f"({eq_id}) is the project's own statement (not printed in the book): bound "
+                "to no page"] + cause_lines(cert)
+    page = locate(book, eq_id)
+    latex = _norm(str(cert.get("book_latex") or ""))
+    bound = latex == page or (not eq_id[0].isdigit() and len(latex) >= 20 and latex in page)
+    if not bound:
+        where = next((i for i, (a, b) in enumerate(zip(latex, page, strict=False)) if a != b),
+                     min(len(latex), len(page)))
+        raise BookError(f"({eq_id}): book_latex is not the text printed as ({eq_id}); they "
+                        f"differ from character {where}: certificate {latex[where:where + 50]!r}"
+                        f", page {page[where:where + 50]!r}")
+    lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
+    lines += [f"symbol: {_symbol_words(s)}" for s in cert.get("symbols") or []]
+    return lines + cause_lines(cert)
+
+
+def _symbol_words(s) -> str:
+    if not isinstance(s, dict):
+        return repr(s)
+    if "cpm_of" in s:
+        return f"{s.get('glyph')}: the cross-product matrix of {s['cpm_of']}"
+    if "latex" in s:
+        return f"{s.get('glyph')}: printed as {s.get('printed_as', '?')}: {s['latex']}"
+    if "defined_by" in s:
+        return f"{s.get('glyph')}: defined by ({s['defined_by']})"
+    return f"{s.get('glyph')}: {s.get('kind')}, atoms {', '.join(s.get('atoms', []))}"
+
+
+def cause_lines(cert: dict) -> list[str]:
+    """The cause of a does-not-hold in words (none for another verdict).
+
+    Raises:
+        BookError: a does-not-hold without a cause of :data:`CAUSES`, a conversion slip
+            without its page reading, or a cause on another verdict.
+    """
+    eq_id, cause = cert.get("id"), cert.get("cause")
+    if cert.get("verdict") != "does-not-hold":
+        if cause:
+            raise BookError(f"({eq_id}): a {cert.get('verdict')} has no cause, {cause!r} given")
+        return []
+    if not isinstance(cause, dict) or cause.get("class") not in CAUSES:
+        raise BookError(f"({eq_id}): a does-not-hold needs a cause, one of {', '.join(CAUSES)}"
+                        f"; got {cause!r}")
+    out = [f"cause: {cause['class']}: {cause.get('why', '')}".rstrip(": ")]
+    if cause["class"] == "conversion slip":
+        reading = cause.get("page_reading")
+        if not reading:
+            raise BookError(f"({eq_id}): a conversion slip names the page's declared reading")
+        out.append(f"the page's declared reading (a conjecture about the printed page, the "
+                   f"source being a converted text): {reading}")
+    if not any(r.get("role") == "corrected" for r in cert.get("relations", [])):
+        out.append("corrected form: none declared")
+    return out
+
+
+def check_manifest(folder: str, files: list[str], book: bytes | None) -> list[str]:
+    """``folder/MANIFEST.json`` against the folder's certificates and the book.
+
+    Args:
+        folder: the folder of certificates.
+        files: the certificate files that will be checked (paths).
+        book: the book's bytes, or ``None`` when no book is given.
+
+    Raises:
+        BookError: no manifest, a certificate missing from it, listed but absent, or whose
+            SHA-256 differs, or a book whose SHA-256 is not the manifest's.
+    """
+    path = os.path.join(folder, "MANIFEST.json")
+    try:
+        with open(path, encoding="utf-8") as f:
+            man = json.load(f)
+    except (OSError, ValueError) as exc:
+        raise BookError(f"{folder}: no readable MANIFEST.json ({exc})") from None
+    listed = dict(man.get("certificates") or {})
+    names = {os.path.basename(p): p for p in files}
+    for name in sorted(set(names) | set(listed)):
+        if name not in listed:
+            raise BookError(f"{name}: not in MANIFEST.json (not of this run)")
+        if name not in names:
+            raise BookError(f"{name}: listed in MANIFEST.json, absent from the folder")
+        with open(names[name], "rb") as f:
+            if sha256(f.read()) != listed[name]:
+                raise BookError(f"{name}: its SHA-256 is not the manifest's (changed after "
+                                "the run)")
+    lines = [f"manifest: {len(listed)} certificates of one run of rigidsym "
+             f"{man.get('rigidsym', '?')}"]
+    if book is not None:
+        if man.get("book_sha256") != sha256(book):
+            raise BookError(f"the book given has SHA-256 {sha256(book)[:16]}..., the run's "
+                            f"was {str(man.get('book_sha256'))[:16]}...")
+        lines.append(f"manifest: the book text's SHA-256 {sha256(book)[:16]}... is the run's")
+    return lines

@@ -1,0 +1,450 @@
+"""A second reader of the printed LaTeX, sharing no code with rigidsym's: it reads an id's
+printed text (found in the book by :mod:`certcheck.book`) under the certificate's symbol
+table and checks that what the certificate proves is what is printed.
+
+The symbol table (``cert["symbols"]``) has one entry per book glyph, each a line a referee
+holds against the page: ``{"glyph": "\\mathbf{e}", "kind": "unit", "atoms": ["e_1", "e_2",
+"e_3"]}`` (an atom group of the certificate, with its kind), ``{"glyph": "\\mathbf{E}",
+"cpm_of": "\\mathbf{e}"}`` (the cross-product matrix of another glyph) or ``{"glyph":
+"\\mathbf{B}", "defined_by": "3.96e"}`` (a citation: that side is the certificate's, not
+read here). The notation read: bold and Greek glyphs with dots, primes and subscripts,
+``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition (matrix products), ``\\frac``, ``/``,
+``\\cos``, ``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``,
+brackets and ``bmatrix`` blocks. A side the reader cannot read is reported, never passed.
+
+Each read side becomes entries in the certificate's grammar and is compared with the
+certificate's side by :func:`certcheck.check.check_identity` (the kinds' hypotheses only).
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["NotRead", "read_relations", "compare"]
+
+_TOKEN = re.compile(
+    r"\\begin\{bmatrix\}|\\end\{bmatrix\}|\\begin\{aligned\}|\\end\{aligned\}"
+    r"|\\(?:mathbf|boldsymbol|mathrm|text|dot|ddot|tilde|frac|left|right)\b"
+    r"|\\[A-Za-z]+|\\\\|\\[,;! ]|\d+|[A-Za-z]|[{}()\[\]^_'+\-=&/|]|\s+|.")
+
+
+class NotRead(Exception):
+    """The reader cannot read this text (the message says what)."""
+
+
+def _tokens(text: str) -> list[str]:
+    out = [t for t in _TOKEN.findall(text) if not t.isspace()]
+    return [t for t in out if t not in ("\\,", "\\;", "\\!", "\\ ", "\\quad", "\\qquad",
+                                        "\\begin{aligned}", "\\end{aligned}",
+                                        "\\left", "\\right")]
+
+
+class M:
+    """A matrix of grammar texts."""
+
+    def __init__(self, rows):
+        self.rows = [list(r) for r in rows]
+
+    @property
+    def shape(self):
+        return len(self.rows), len(self.rows[0])
+
+    def t(self):
+        return M(list(zip(*self.rows, strict=True)))
+
+
+def _s(x: str) -> M:
+    return M([[x]])
+
+
+def _add(a: M, b: M, sign: str) -> M:
+    if a.shape != b.shape:
+        raise NotRead(f"a sum of shapes {a.shape} and {b.shape}")
+    return M([[f"({x}) {sign} ({y})" for x, y in zip(ra, rb, strict=True)]
+              for ra, rb in zip(a.rows, b.rows, strict=True)])
+
+
+def _mul(a: M, b: M) -> M:
+    if a.shape == (1, 1):
+        return M([[f"({a.rows[0][0]})*({y})" for y in r] for r in b.rows])
+    if b.shape == (1, 1):
+        return M([[f"({x})*({b.rows[0][0]})" for x in r] for r in a.rows])
+    if a.shape[1] != b.shape[0]:
+        raise NotRead(f"a product of shapes {a.shape} and {b.shape}")
+    cols = b.t().rows
+    return M([[" + ".join(f"({x})*({y})" for x, y in zip(r, c, strict=True)) for c in cols]
+              for r in a.rows])
+
+
+def _vec(v: M) -> list[str]:
+    if v.shape == (3, 1):
+        return [r[0] for r in v.rows]
+    if v.shape == (1, 3):
+        return list(v.rows[0])
+    raise NotRead(f"a 3-vector expected, shape {v.shape}")
+
+
+def _cross(a: M, b: M) -> M:
+    x, y = _vec(a), _vec(b)
+    return M([[f"({x[(i + 1) % 3]})*({y[(i + 2) % 3]}) - ({x[(i + 2) % 3]})*({y[(i + 1) % 3]})"]
+              for i in range(3)])
+
+
+def _cpm(v: M) -> M:
+    x = _vec(v)
+    return M([["0", f"-({x[2]})", f"{x[1]}"], [f"{x[2]}", "0", f"-({x[0]})"],
+              [f"-({x[1]})", f"{x[0]}", "0"]])
+
+
+def _inverse(v: M) -> M:
+    """A scalar's reciprocal or a 3 x 3 matrix's inverse (its adjugate over its
+    determinant)."""
+    if v.shape == (1, 1):
+        return _s(f"1/({v.rows[0][0]})")
+    if v.shape != (3, 3):
+        raise NotRead(f"the inverse of a {v.shape} array")
+    a = v.rows
+
+    def cof(i, j):  # the cofactor of entry (i, j)
+        r, c = [k for k in range(3) if k != i], [k for k in range(3) if k != j]
+        return (f"(({a[r[0]][c[0]]})*({a[r[1]][c[1]]}) - ({a[r[0]][c[1]]})*"
+                f"({a[r[1]][c[0]]}))*({(-1) ** (i + j)})")
+    det = " + ".join(f"({a[0][j]})*{cof(0, j)}" for j in range(3))
+    return M([[f"({cof(j, i)})/({det})" for j in range(3)] for i in range(3)])
+
+
+class _Reader:
+    def __init__(self, tokens: list[str], table: dict, defs: dict | None = None,
+                 cited: list | None = None):
+        self.t, self.i, self.table = tokens, 0, table
+        self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
+        self.cited = [] if cited is None else cited
+        self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
+
+    def peek(self, k: int = 0):
+        return self.t[self.i + k] if self.i + k < len(self.t) else None
+
+    def take(self, want: str | None = None) -> str:
+        tok = self.peek()
+        if tok is None or (want is not None and tok != want):
+            raise NotRead(f"expected {want or 'more'}, found {tok!r}")
+        self.i += 1
+        return tok
+
+    def group(self) -> str:
+        """A braced group's raw text (or one token)."""
+        if self.peek() != "{":
+            return self.take()
+        self.take("{")
+        depth, out = 1, []
+        while True:
+            tok = self.take()
+            depth += (tok == "{") - (tok == "}")
+            if depth == 0:
+                return "".join(out)
+            out.append(tok)
+
+    def chain(self) -> list[M]:
+        sides = [self.expr()]
+        if self.peek() is not None:
+            raise NotRead(f"unread text from {self.peek()!r}")
+        return sides
+
+    def expr(self) -> M:
+        sign = self.take() if self.peek() in ("+", "-") else "+"
+        v = self.term()
+        if sign == "-":
+            v = _mul(_s("-1"), v)
+        while self.peek() in ("+", "-"):
+            op = self.take()
+            v = _add(v, self.term(), op)
+        return v
+
+    _STOP = (None, "+", "-", "=", "\\equiv", ")", "]", "}", "&", "\\\\", "\\end{bmatrix}",
+             ",", "|")
+
+    def term(self) -> M:
+        v = self.factor()
+        while self.peek() not in self._STOP:
+            if self.peek() == "\\times":
+                self.take()
+                v = _cross(v, self.factor())
+            elif self.peek() == "\\cdot":
+                self.take()
+                w = self.factor()
+                v = _s(" + ".join(f"({x})*({y})" for x, y in zip(_vec(v), _vec(w),
+                                                                   strict=True)))
+            elif self.peek() == "/":
+                self.take()
+                d = self.factor()
+                if d.shape != (1, 1):
+                    raise NotRead("a division by a matrix")
+                v = M([[f"({x})/({d.rows[0][0]})" for x in r] for r in v.rows])
+            else:
+                v = _mul(v, self.factor())
+        return v
+
+    def factor(self) -> M:
+        v = self.primary()
+        while self.peek() == "^":
+            self.take()
+            e = self.group()
+            if e == "T":
+                v = v.t()
+            elif e.isdigit() and v.shape == (1, 1):
+                v = _s(f"({v.rows[0][0]})^{e}")
+            elif e == "-1":
+                v = _inverse(v)
+            else:
+                raise NotRead(f"the power ^{{{e}}}")
+        return v
+
+    def primary(self) -> M:
+        tok = self.peek()
+        if tok is None:
+            raise NotRead("an expression ends early")
+        if tok.isdigit():
+            return _s(self.take())
+        if tok in ("(", "["):
+            self.take()
+            v = self.expr()
+            self.take(")" if tok == "(" else "]")
+            return v
+        if tok == "\\frac":
+            self.take()
+            a, b = (self.sub_expr() for _ in range(2))
+            if b.shape != (1, 1):
+                raise NotRead("a fraction over a matrix")
+            return M([[f"({x})/({b.rows[0][0]})" for x in r] for r in a.rows])
+        if tok in ("\\cos", "\\sin"):
+            self.take()
+            arg = self.factor() if self.peek() in ("(", "{") else self.primary()
+            return _s(f"{tok[1:]}({arg.rows[0][0]})")
+        if tok in ("\\mathrm", "\\text", "\\operatorname"):
+            start = self.i
+            self.take()
+            word = self.group()
+            if word in ("tr", "vect"):
+                self.take("(")
+                v = self.expr()
+                self.take(")")
+                if v.shape != (3, 3) and word == "vect":
+                    raise NotRead(f"vect of a {v.shape} array")
+                if word == "tr":
+                    return _s(" + ".join(v.rows[i][i] for i in range(v.shape[0])))
+                a = v.rows  # vect(A): the axial vector of A's skew part, (1/2) of the sums
+                return M([[f"(1/2)*(({a[j][k]}) - ({a[k][j]}))"] for j, k in
+                          ((2, 1), (0, 2), (1, 0))])
+            self.i = start
+        if tok == "\\begin{bmatrix}":
+            return self.bmatrix()
+        return self.glyph()
+
+    def sub_expr(self) -> M:
+        self.take("{")
+        v = self.expr()
+        self.take("}")
+        return v
+
+    def bmatrix(self) -> M:
+        self.take("\\begin{bmatrix}")
+        rows, row = [], [self.expr()]
+        while self.peek() != "\\end{bmatrix}":
+            sep = self.take()
+            if sep == "\\\\":
+                rows.append(row)
+                row = []
+            row.append(self.expr())
+        self.take()
+        rows.append(row)
+        out = []
+        for blocks in rows:
+            h = blocks[0].shape[0]
+            if any(b.shape[0] != h for b in blocks):
+                raise NotRead("blocks of a row differ in height")
+            out += [sum((b.rows[k] for b in blocks), []) for k in range(h)]
+        if len({len(r) for r in out}) != 1:
+            raise NotRead("rows of a block matrix differ in width")
+        return M(out)
+
+    def glyph(self) -> M:
+        start = self.i
+        tok = self.take()
+        if tok in ("\\mathbf", "\\boldsymbol", "\\dot", "\\ddot", "\\tilde", "\\mathrm"):
+            self.group()
+        elif not (tok.startswith("\\") or tok.isalpha()):
+            raise NotRead(f"unexpected {tok!r}")
+        while self.peek() in ("'", "_"):
+            if self.take() == "_":
+                self.group()
+        name = "".join(self.t[start:self.i])
+        if self.t[self.i:self.i + 3] == ["(", "t", ")"]:  # p(t): the glyph at time t
+            self.i += 3
+        return self.lookup(name)
+
+    def lookup(self, name: str) -> M:
+        key = name.replace(" ", "")
+        self.assumed = self.assumed or key in ("\\mathbf{1}", "\\mathbf{O}", "\\mathbf{0}")
+        if key in ("\\mathbf{1}", "\\mathbf{O}"):
+            return M([[("1" if i == j and key[-2] == "1" else "0") for j in range(3)]
+                      for i in range(3)])
+        if key == "\\mathbf{0}":
+            return M([["0"] for _ in range(3)])
+        entry = self.table.get(key)
+        if entry is None and key in self.defs:  # defined on the page before: read that
+            text, where, sign = (*self.defs[key], "\\equiv")[:3]
+            rest = {k: v for k, v in self.defs.items() if k != key}
+            inner = _Reader(_tokens(text), self.table, rest, self.cited)
+            value = inner.chain()[0]
+            self.assumed = self.assumed or inner.assumed
+            self.cited.append(f"{name} by ({where})" + (", an equation" if sign == "=" else ""))
+            return value
+        if entry is None:
+            raise NotRead(f"the glyph {name} is neither in the symbol table nor defined "
+                          "(\\equiv) on the page before")
+        if "defined_by" in entry:
+            raise NotRead(f"{name} is defined by ({entry['defined_by']})")
+        if "latex" in entry:  # a definition printed elsewhere (another chapter): read it
+            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited)
+            value = inner.chain()[0]
+            self.cited.append(f"{name} by {entry.get('printed_as', '?')}, an equation")
+            return value
+        if "cpm_of" in entry:
+            return _cpm(self.lookup(entry["cpm_of"]))
+        atoms = list(entry.get("atoms", []))
+        if not atoms:
+            raise NotRead(f"the glyph {name} names no atoms")
+        if len(atoms) in (9, 16):  # a rotation or transform, row-major
+            n = 3 if len(atoms) == 9 else 4
+            return M([atoms[n * i:n * i + n] for i in range(n)])
+        return _s(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
+
+
+def _split(tokens: list[str]) -> list[list[list[str]]]:
+    """The printed relations: chains ``a = b = ...`` (or ``\\equiv``) separated by commas,
+    each a list of sides, split at depth 0."""
+    chains, sides, cur, depth = [], [], [], 0
+    for tok in tokens:
+        depth += tok in ("{", "(", "[", "\\begin{bmatrix}")
+        depth -= tok in ("}", ")", "]", "\\end{bmatrix}")
+        if depth == 0 and tok in ("=", "\\equiv"):
+            sides.append(cur)
+            cur = []
+        elif depth == 0 and tok == ",":
+            chains.append([*sides, cur])
+            sides, cur = [], []
+        elif depth or tok not in ("&", "\\\\"):  # an aligned display's marks
+            cur.append(tok)
+    return [*chains, [*sides, cur]]
+
+
+def read_relations(page: str, symbols: list, defs: dict | None = None) -> list:
+    """The sides of the printed chain ``a = b = ...`` (or ``\\equiv``), each a matrix of
+    grammar texts, or the :class:`NotRead` saying why the reader cannot read it.
+
+    Raises:
+        NotRead: a malformed symbol table.
+    """
+    table = {}
+    for e in symbols:
+        if not isinstance(e, dict) or "glyph" not in e:
+            raise NotRead(f"a symbol-table entry without a glyph: {e!r}")
+        table[str(e["glyph"]).replace(" ", "")] = e
+    out = []
+    for chain in _split(_tokens(page.rstrip(",. "))):
+        out.append([])
+        for toks in chain:
+            r = _Reader(toks, table, defs)
+            try:
+                v = r.chain()[0]
+            except (NotRead, IndexError) as exc:
+                v = exc if isinstance(exc, NotRead) else NotRead("unbalanced text")
+            out[-1].append((v, r.assumed, r.cited))
+    return out
+
+
+def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) -> list[str]:
+    """Read ``page`` under the certificate's symbol table and check that each printed
+    relation of the certificate is the printed one: each side the reader reads is the
+    certificate's side as a rational function under the kinds' hypotheses. ``defs``
+    (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
+    their printed definitions above the id, each cited.
+
+    Returns:
+        Lines for the referee: what was read, and what was not (a finding, never a pass).
+
+    Raises:
+        certcheck.check.CheckError: a side read differs from the certificate's.
+    """
+    from certcheck.check import CheckError, Statement, check_identity
+
+    symbols = cert.get("symbols") or []
+    kinds = {g.get("group"): g.get("kind") for g in cert.get("atoms", [])}
+    for e in symbols:  # the table's kinds are the certificate's groups' kinds
+        for a in e.get("atoms", []) if isinstance(e, dict) else []:
+            group = next((g for g in cert.get("atoms", [])
+                          if a.rstrip("'") in g.get("names", [])), None)
+            if group is None or e.get("kind") != group.get("kind"):
+                raise CheckError(f"({cert.get('id')}) symbol {e.get('glyph')}: declared "
+                                 f"{e.get('kind')!r}, its atom {a} is of kind "
+                                 f"{kinds.get((group or {}).get('group'))!r}")
+    printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
+    try:
+        sides = read_relations(page, symbols, defs)
+    except NotRead as exc:
+        raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
+    pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
+    soft = len(pairs) == 1 and len(printed) > 1  # one printed relation under several models
+    pairs = pairs * len(printed) if soft else pairs
+    if len(pairs) != len(printed):
+        return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
+                f"has {len(printed)} (a family the reader does not match); each relation is "
+                "the certificate's word"]
+    out = []
+    for k, rel in enumerate(printed):
+        read, matched = [], []
+        for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
+            if isinstance(mine, NotRead):
+                out.append(f"NOT READ: relation {k + 1}'s {side} ({mine}); the certificate's "
+                           "word")
+                continue
+            theirs = rel[side]
+            if assumed and mine.shape != (len(theirs), len(theirs[0])):
+                out.append(f"NOT READ: relation {k + 1}'s {side} (a 1, O or 0 of a size "
+                           "other than 3); the certificate's word")
+                continue
+            if soft and mine.shape != (len(theirs), len(theirs[0])):
+                out.append(f"NOT READ: relation {k + 1}'s {side} (the printed relation's "
+                           f"shape is not this model's); the certificate's word")
+                continue
+            if mine.shape != (len(theirs), len(theirs[0])):
+                raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
+                                 f"the page's reads "
+                                 f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
+                                 f"{len(theirs)}x{len(theirs[0])}")
+            probe = {**cert, "verdict": "verified", "relations": [
+                {"label": f"page {side}", "role": "printed", "lhs": mine.rows, "rhs": theirs,
+                 "evidence": {"type": "identity"}}]}
+            try:
+                check_identity(Statement(probe), Statement(probe).rels, fast)
+            except CheckError as exc:
+                if soft or any(c.endswith("an equation") for c in cited):
+                    out.append(f"NOT READ: relation {k + 1}'s {side} (read "
+                               + (f"through {', '.join(dict.fromkeys(cited))}" if cited
+                                  else "as one of the certificate's models")
+                               + ", it differs: the model's glyph or relation may be another"
+                               "); the certificate's word")
+                    continue
+                raise CheckError(f"({cert.get('id')}) the printed {side} of relation {k + 1} is "
+                                 f"not the "
+                                 f"certificate's: {exc}") from None
+            tentative = soft or any(c.endswith("an equation") for c in cited)
+            (matched if tentative else read).append(
+                side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))
+        if read:
+            out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
+                       "certificate's under the symbol table")
+        if matched:  # a difference here would be NOT READ, not a rejection
+            out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
+                       "the certificate's" + (" under one of its models" if soft else ""))
+    return out

@@ -1,0 +1,422 @@
+"""Certificates bound to the page and to one run (issue 65): certcheck --book finds each id's
+printed text in the book and requires the certificate's book_latex to be it, verifies the
+folder's MANIFEST.json, requires a cause of every does-not-hold, and rejects a verified id
+whose printed relations all have identical sides. The tamperings are made from the real
+certificates by their mathematics (another id's statement, a verdict the evidence does not
+support, a point moved off the constraint set, ...): five ids here, the chapter in slow."""
+
+from __future__ import annotations
+
+import copy
+import json
+import shutil
+import subprocess
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+SRC = ROOT / "certcheck" / "src"
+sys.path.insert(0, str(SRC))
+
+from certcheck.book import (  # noqa: E402
+    BookError,
+    check_manifest,
+    check_page,
+    definitions_before,
+    locate,
+)
+
+from certcheck import CheckError, check_certificate  # noqa: E402
+
+BOOK = ROOT.parent / "shared" / "book" / "angeles-chapter3.md"
+#: a verified rotation identity, an erratum, a conversion slip, a definition, an identity
+#: by definition (3.41: p = Q p0 with p modelled as Q p0)
+FIVE = ["3.1", "3.96e", "3.94", "3.66", "3.41"]
+
+needs_book = pytest.mark.skipif(not BOOK.exists(), reason="the book is never shipped")
+
+
+def _write(folder: Path, ids: list[str]) -> dict:
+    from rigidsym.checking.certifying.certificates import (
+        certificate,
+        certificate_file,
+        write_manifest,
+    )
+    from rigidsym.registry.declarations import REGISTRY, load_all
+
+    load_all()
+    folder.mkdir(parents=True, exist_ok=True)
+    certs = {}
+    for i in ids:  # the recorded verdict: certcheck, not this test, says whether it holds
+        certs[i] = certificate(i, REGISTRY[i].expected)
+        (folder / certificate_file(i)).write_text(json.dumps(certs[i], indent=1) + "\n")
+    write_manifest(folder, [certificate_file(i) for i in ids], str(BOOK))
+    return certs
+
+
+@pytest.fixture(scope="module")
+def five(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    folder = tmp_path_factory.mktemp("page")
+    return folder, _write(folder, FIVE)
+
+
+def _certcheck(*args) -> subprocess.CompletedProcess:
+    code = ("import sys; sys.path.insert(0, sys.argv[1]); from certcheck.__main__ import "
+            "main; sys.exit(main(sys.argv[2:]))")
+    return subprocess.run([sys.executable, "-I", "-S", "-c", code, str(SRC), *map(str, args)],
+                          capture_output=True, text=True, timeout=300)
+
+
+def _book() -> str:
+    return BOOK.read_text(encoding="utf-8")
+
+
+def _rejected(cert: dict, book: str) -> str:
+    """The message of certcheck's rejection (page, cause, reader or mathematics)."""
+    from certcheck.reader import compare
+
+    i = cert["id"]
+    try:
+        check_page(cert, book)
+        check_certificate(cert, fast=False)
+        compare(cert, locate(book, i), fast=False,
+                defs=definitions_before(book, i) if i[0].isdigit() else {})
+    except (CheckError, BookError) as exc:
+        return str(exc)
+    raise AssertionError(f"({cert.get('id')}) accepted")
+
+
+# ------------------------------------------------------------------ tamperings by mathematics
+def other_ids_statement(cert: dict, other: dict) -> dict:
+    """The certificate of another id presented as this id's (two ids swapped)."""
+    return {**copy.deepcopy(other), "id": cert["id"]}
+
+
+def relabelled(cert: dict, verdict: str) -> dict:
+    """The same evidence under another verdict (a cause added or dropped to match)."""
+    c = copy.deepcopy(cert)
+    c["verdict"] = verdict
+    if verdict == "does-not-hold":
+        c["cause"] = {"class": "book erratum", "why": "claimed"}
+    else:
+        c.pop("cause", None)
+    return c
+
+
+def zero_equals_zero(cert: dict) -> dict | None:
+    """Every printed relation of a verified id replaced by 0 = 0 of its shape."""
+    c = copy.deepcopy(cert)
+    rels = [r for r in c["relations"] if r["role"] == "printed"]
+    if c["verdict"] != "verified" or not rels:
+        return None
+    for r in rels:
+        r["lhs"] = [["0" for _ in row] for row in r["lhs"]]
+        r["rhs"] = [["0" for _ in row] for row in r["rhs"]]
+        r["evidence"] = {"type": "identity"}
+    return c
+
+
+def off_the_sphere(cert: dict) -> dict | None:
+    """A counterexample's unit vector scaled by 2 (its norm becomes 2)."""
+    c = copy.deepcopy(cert)
+    units = [g for g in c["atoms"] if g["kind"] == "unit"]
+    rels = [r for r in c["relations"] if r["evidence"]["type"] == "counterexample"]
+    if not units or not rels:
+        return None
+    pt = rels[0]["evidence"]["point"]
+    for n in units[0]["names"]:
+        if n in pt:
+            pt[n] = str(2 * Fraction(pt[n]))
+    return c
+
+
+def cause_dropped(cert: dict) -> dict | None:
+    if cert["verdict"] != "does-not-hold":
+        return None
+    c = copy.deepcopy(cert)
+    del c["cause"]
+    return c
+
+
+def page_reading_dropped(cert: dict) -> dict | None:
+    if cert.get("cause", {}).get("class") != "conversion slip":
+        return None
+    c = copy.deepcopy(cert)
+    del c["cause"]["page_reading"]
+    return c
+
+
+def corrected_as_printed(cert: dict) -> dict | None:
+    """A does-not-hold's corrected form presented as the printed one, verified."""
+    cor = [r for r in cert["relations"] if r["role"] == "corrected"]
+    if cert["verdict"] != "does-not-hold" or not cor:
+        return None
+    c = copy.deepcopy(cert)
+    c["relations"] = [{**copy.deepcopy(cor[0]), "role": "printed"}]
+    c["verdict"] = "verified"
+    c.pop("cause", None)
+    return c
+
+
+def doubled_rhs(cert: dict) -> dict:
+    """Every printed relation's right side doubled (a changed coefficient; for a definition,
+    a statement checked against nothing but the page)."""
+    c = copy.deepcopy(cert)
+    for r in c["relations"]:
+        if r["role"] == "printed":
+            r["rhs"] = [[f"2*({x})" for x in row] for row in r["rhs"]]
+    return c
+
+
+def shifted_sides(cert: dict) -> dict:
+    """Both sides of every printed relation plus 1 in every entry: the relation proved is
+    unchanged (lhs - rhs is), but neither side is the printed one any more."""
+    c = copy.deepcopy(cert)
+    for r in c["relations"]:
+        if r["role"] == "printed":
+            for side in ("lhs", "rhs"):
+                r[side] = [[f"({x}) + 1" for x in row] for row in r[side]]
+    return c
+
+
+def unit_declared_free(cert: dict) -> dict | None:
+    """A unit vector's symbol-table entry declared a free vector."""
+    c = copy.deepcopy(cert)
+    for e in c.get("symbols", []):
+        if e.get("kind") == "unit":
+            e["kind"] = "free"
+            return c
+    return None
+
+
+def another_printed_text(cert: dict, book: str, other_id: str) -> dict:
+    """book_latex replaced by the text printed as another id."""
+    return {**copy.deepcopy(cert), "book_latex": locate(book, other_id)}
+
+
+# ------------------------------------------------------------------ the default run
+@needs_book
+def test_locator_finds_every_printed_id(registry):
+    """Every book id (equations and theorems) is printed in exactly one place, and its
+    declared LaTeX is that text."""
+    book = _book()
+    for i, eq in registry.items():
+        if i[0].isdigit() or i.startswith(("thm", "cor", "caveat")):
+            check_page({"id": i, "verdict": "verified", "book_latex": eq.latex}, book)
+
+
+def test_referee_command_passes_and_prints_the_page(five):
+    folder, certs = five
+    p = _certcheck("--book", BOOK, folder)
+    assert p.returncode == 0, p.stdout + p.stderr
+    assert p.stdout.count("CHECKED") == len(FIVE)
+    assert "printed as (3.96e)" in p.stdout and "cause: book erratum" in p.stdout
+    assert "cause: conversion slip" in p.stdout and "declared reading" in p.stdout
+    assert "the book text's SHA-256" in p.stdout
+    assert "CHECKED (3.41) definition" in p.stdout
+
+
+def test_tamperings_rejected_naming_the_id(five):
+    _, certs = five
+    book = _book()
+    ids = list(certs)
+    for k, i in enumerate(ids):
+        c = certs[i]
+        other = ids[(k + 1) % len(ids)]
+        cases = [other_ids_statement(c, certs[other]), another_printed_text(c, book, other),
+                 zero_equals_zero(c), off_the_sphere(c), cause_dropped(c),
+                 page_reading_dropped(c)]
+        cases += [relabelled(c, v) for v in ("verified", "does-not-hold", "definition")
+                  if v != c["verdict"]]
+        for t in filter(None, cases):
+            assert f"({i})" in _rejected(t, book), (i, t.get("verdict"))
+
+
+def test_reader_rejects_what_is_not_printed(five):
+    """3.96e's corrected form claimed as printed and verified; a printed side doubled where
+    the reader reads it; the unit vector e declared free in the symbol table."""
+    from certcheck.reader import compare
+
+    _, certs = five
+    book = _book()
+    c = certs["3.96e"]
+    assert any(x.startswith("read from the page") for x in compare(c, locate(book, "3.96e")))
+    for t in (corrected_as_printed(c), doubled_rhs(c), unit_declared_free(c)):
+        assert "(3.96e)" in _rejected(t, book)
+
+
+def test_manifest_binds_the_folder_to_one_run(five, tmp_path):
+    folder, certs = five
+    book = BOOK.read_bytes()
+    files = sorted(str(p) for p in folder.glob("*.json") if p.name != "MANIFEST.json")
+    assert check_manifest(str(folder), files, book)
+    copy_ = tmp_path / "c"
+    shutil.copytree(folder, copy_)
+    a, b = copy_ / "3.1.json", copy_ / "3.96e.json"  # two ids' files swapped
+    ta, tb = a.read_text(), b.read_text()
+    a.write_text(tb)
+    b.write_text(ta)
+    with pytest.raises(BookError, match=r"3\.1\.json|3\.96e\.json"):
+        check_manifest(str(copy_), [str(p) for p in (copy_.glob("3*.json"))], book)
+    with pytest.raises(BookError, match="SHA-256"):  # another book
+        check_manifest(str(folder), files, book + b"\n")
+    p = _certcheck("--book", BOOK, copy_)
+    assert p.returncode == 1 and "FAILED MANIFEST.json" in p.stdout, p.stdout
+
+
+def test_coq_file_names_are_module_names():
+    from rigidsym.checking.certifying.coq_export import coq_file_name
+
+    assert coq_file_name("3.1") == "eq3_1.v"
+    assert coq_file_name("thm3.2.1") == "eqthm3_2_1.v"
+    assert all(coq_file_name(i)[:-2].isidentifier() for i in ("3.96e", "3.134b", "3.6a"))
+
+
+# ------------------------------------------------------------------ slow: the chapter
+@pytest.fixture(scope="module")
+def chapter(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    from rigidsym.registry.declarations import REGISTRY, load_all
+
+    load_all()
+    ids = list(REGISTRY)
+    folder = tmp_path_factory.mktemp("chapter")
+    return folder, _write(folder, ids)
+
+
+@pytest.mark.slow
+def test_chapter_tamperings_rejected(chapter):
+    """Every id: another id's statement, another printed text, 0 = 0, the other verdicts,
+    a point off the sphere, a cause dropped: each rejected, naming the id."""
+    from certcheck.reader import compare
+
+    _, certs = chapter
+    book = _book()
+    ids = sorted(certs)
+    for k, i in enumerate(ids):
+        c = certs[i]
+        other = next(j for j in ids[k + 1:] + ids[:k]
+                     if locate(book, j) != locate(book, i))
+        cases = [other_ids_statement(c, certs[other]), another_printed_text(c, book, other),
+                 zero_equals_zero(c), off_the_sphere(c), cause_dropped(c),
+                 page_reading_dropped(c), unit_declared_free(c)]
+        if i[0].isdigit() and any(x.startswith("read from the page") and "rhs" in x for x in
+                                  compare(c, locate(book, i), fast=True)):
+            cases.append(corrected_as_printed(c))  # caught by the reader where it reads
+        cases += [relabelled(c, v) for v in ("verified", "does-not-hold", "definition")
+                  if v != c["verdict"]]
+        for t in filter(None, cases):
+            assert f"({i})" in _rejected(t, book), (i, t.get("verdict"))
+
+
+@pytest.mark.slow
+def test_chapter_shifted_sides_rejected_where_read(chapter):
+    """Where the reader reads a printed side, both sides shifted by 1 (the relation proved
+    unchanged) is rejected (for a definition too: checked against the page)."""
+    from certcheck.reader import compare
+
+    _, certs = chapter
+    book = _book()
+    read = 0
+    for i, c in sorted(certs.items()):
+        if not i[0].isdigit() or not any(
+                x.startswith("read from the page") for x in
+                compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))):
+            continue
+        read += 1
+        assert f"({i})" in _rejected(shifted_sides(c), book), i
+    assert read >= 5
+
+
+@pytest.mark.slow
+def test_no_verified_id_has_identical_sides(chapter):
+    _, certs = chapter
+    vacuous = []
+    for i, c in certs.items():
+        printed = [r for r in c["relations"] if r["role"] == "printed"] or c["relations"]
+        if c["verdict"] == "verified" and all(r["lhs"] == r["rhs"] for r in printed):
+            vacuous.append(i)
+    assert vacuous == []
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(shutil.which("coqc") is None, reason="coqc not installed (Debian's coq)")
+def test_coq_counterexample_lemmas(chapter, tmp_path):
+    """Every does-not-hold's file (counterexample lemmas beside its corrected form's) is
+    accepted by coqc; the residual changed by 1 is refused."""
+    from rigidsym.checking.certifying.coq_export import write_coq_folder
+
+    _, certs = chapter
+    bad = {i: c for i, c in certs.items() if c["verdict"] == "does-not-hold"}
+    done = write_coq_folder(bad, tmp_path)
+    assert done["written"], done["none"]
+    for i, name in done["written"].items():
+        p = subprocess.run(["coqc", "-q", name], cwd=tmp_path, capture_output=True,
+                           text=True, timeout=600)
+        assert p.returncode == 0, (i, p.stdout[-500:], p.stderr[-500:])
+    name = next(n for i, n in done["written"].items()
+                if "residual_r" in (tmp_path / n).read_text())
+    text = (tmp_path / name).read_text()
+    import re
+
+    m = re.search(r"= \((-?\d+)\)%R / \((\d+)\)%R\.", text)
+    (tmp_path / "changed.v").write_text(
+        text[:m.start()] + f"= ({int(m.group(1)) + 1})%R / ({m.group(2)})%R." + text[m.end():])
+    p = subprocess.run(["coqc", "-q", "changed.v"], cwd=tmp_path, capture_output=True,
+                       text=True, timeout=600)
+    assert p.returncode != 0
+
+
+def _value(text: str, at: dict) -> Fraction:
+    """A reader's grammar text evaluated exactly at rational atoms (Python's own arithmetic,
+    not certcheck's)."""
+    import re
+
+    exact = re.sub(r"\b(\d+)\b", r"F(\1)", text.replace("^", "**"))
+    return Fraction(eval(exact, {"__builtins__": {}},  # noqa: S307
+                         {"F": Fraction, **{k: Fraction(v) for k, v in at.items()}}))
+
+
+def test_reader_notation_vect_inverse_and_time_argument():
+    """vect of a cross-product matrix is its vector; A A^{-1} is the identity; p(t) is p
+    (exact rational values, random atoms)."""
+    import random
+
+    from certcheck.reader import read_relations
+
+    rng = random.Random(65)
+    e = ["e_1", "e_2", "e_3"]
+    table = [{"glyph": "\\mathbf{e}", "kind": "free", "atoms": e},
+             {"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"},
+             {"glyph": "\\mathbf{A}", "kind": "free", "atoms": [f"a_{k}" for k in range(9)]}]
+    (vect, ee), = read_relations("\\text{vect}(\\mathbf{E}) = \\mathbf{e}(t)", table)
+    (prod, one), = read_relations("\\mathbf{A}\\mathbf{A}^{-1} = \\mathbf{1}", table)
+    for _ in range(5):
+        at = {n: Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for n in e}
+        at.update({f"a_{k}": Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for k in range(9)})
+        assert [_value(x[0], at) for x in vect[0].rows] == [at[n] for n in e]
+        assert [_value(x[0], at) for x in ee[0].rows] == [at[n] for n in e]
+        try:
+            _value(prod[0].rows[0][0], at)
+        except ZeroDivisionError:  # A singular at this point
+            continue
+        assert [[_value(x, at) for x in r] for r in prod[0].rows] == \
+                [[_value(x, at) for x in r] for r in one[0].rows]
+
+
+def test_every_conversion_slip_has_its_page_reading_decided(registry):
+    """Each conversion slip's declared page reading is decided: verified (the corrected
+    form the certificate proves) or its own erratum."""
+    from rigidsym.checking.certifying.certificates import cause_record
+
+    slips = [eq for eq in registry.values() if eq.cause == "conversion"]
+    assert slips
+    for eq in slips:
+        reading = cause_record(eq)["page_reading"]
+        assert "Decided: verified" in reading or "Decided: its own erratum" in reading, eq.id
