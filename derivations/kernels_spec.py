@@ -116,7 +116,7 @@ KERNELS: list[Kernel] = [
         ids=("2.49", "3.95"), sources=(_PR + "vect", _PR + "trace"),
         args=(Q_ARG,), outputs=(Out("e", (3,), "unit axis"), Out("phi", (), "angle [rad]")),
         build=_ni_main, branches=_NI_BRANCHES,
-        singular="vect(Q) != 0 with |vect(Q)|^2 below the type's range (phi under about "
+        singular="vect(Q) != 0 with ||vect(Q)||^2 below the type's range (phi under about "
                  "1e-154 in float64, 1e-19 in float32): the axis's direction is lost",
         singular_arg="Q",
         notes="At Q = 1 (vect(Q) = 0 exactly, cos phi > 0) phi = 0 exactly and the axis, "

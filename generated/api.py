@@ -1028,14 +1028,14 @@ def natural_invariants_from_rotation(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
-        SingularConfigurationError: on the singular set (vect(Q) != 0 with |vect(Q)|^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (vect(Q) != 0 with ||vect(Q)||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost), unless on_singular='nan'.
 
     Notes:
-        Singular set: vect(Q) != 0 with |vect(Q)|^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost.
+        Singular set: vect(Q) != 0 with ||vect(Q)||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost.
 
         At Q = 1 (vect(Q) = 0 exactly, cos phi > 0) phi = 0 exactly and the axis, which every unit vector is there, is the default e = [1, 0, 0]: phi == 0 exactly says the axis is the default (the C target's status has RIGIDSYM_C_DEFAULT_OUTPUT). For an exactly symmetric Q (phi = pi) the sign of e is fixed by the rule: the component of e of largest magnitude is positive (e is taken from the column of the largest diagonal entry of Q); near pi, the skew part of Q fixes the sign, as in Pinocchio's log3.
 
-        Accuracy: error <= 1.26 u (kappa + 1) in float64, <= 1.38 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 11 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when vect(Q) != 0 with |vect(Q)|^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
+        Accuracy: error <= 1.26 u (kappa + 1) in float64, <= 1.38 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 11 ulp in float64) over 6 regimes (docs/accuracy.md, kernels.accuracy); singular when vect(Q) != 0 with ||vect(Q)||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost, flagged where ||vect(Q)||^2 == 0 with tr Q >= 0 (the main build): Q exactly symmetric in floating point, i.e. phi = 0 (Q = 1), or abs(phi) below the rounding of Q (about 1e-16).
 
         Generated; 172 operations; math hash 45a975db80d80f12.
     """

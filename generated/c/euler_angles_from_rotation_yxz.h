@@ -16,7 +16,7 @@
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.533 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   branch 1: x0, x1, angles[0], angles[1], angles[2], angles_other[0], angles_other[1], angles_other[2], gimbal_lock[0]
+ *   branch 1: none
  *   branch 2: none
  */
 #ifndef RIGIDSYM_EULER_ANGLES_FROM_ROTATION_YXZ_H
@@ -90,15 +90,15 @@ static inline int rigidsym_euler_angles_from_rotation_yxz_sample_f32(
     const float Q_22 = in_Q[8];
     int singular = 0;
     if (fabs(((double)Q_02)) <= 0.0 && fabs(((double)Q_22)) <= 0.0) {
-        const double x0 = atan2(-((double)Q_20), ((double)Q_00));
-        const double x1 = atan2(-((double)Q_12), 0.0);
+        const float x0 = atan2(-Q_20, Q_00);
+        const float x1 = atan2(-Q_12, 0.0f);
         out_angles[0] = x0;
         out_angles[1] = x1;
-        out_angles[2] = 0.0;
+        out_angles[2] = 0.0f;
         out_angles_other[0] = x0;
         out_angles_other[1] = x1;
-        out_angles_other[2] = 0.0;
-        out_gimbal_lock[0] = 1.0;
+        out_angles_other[2] = 0.0f;
+        out_gimbal_lock[0] = 1.0f;
     } else {
         const float x0 = -Q_12;
         const float x1 = sqrtf((Q_02*Q_02) + (Q_22*Q_22));

@@ -22,10 +22,10 @@
  * Q = Ry(angles[0]) Rz(angles[1]) Rx(angles[2]); a = atan2(A_s, A_c), b by atan2 against rho = |(A_s, A_c)|, c = atan2 of rho R_i(a)^T Q's row j; at the lock (A_s = A_c = 0) c = 0
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.649 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.488 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   branch 1: x0, x1, angles[0], angles[1], angles[2], angles_other[0], angles_other[1], angles_other[2], gimbal_lock[0]
+ *   branch 1: none
  *   branch 2: none
  */
 #ifndef RIGIDSYM_EULER_ANGLES_FROM_ROTATION_YZX_H
@@ -97,15 +97,15 @@ static inline int rigidsym_euler_angles_from_rotation_yzx_sample_f32(
     const float Q_22 = in_Q[8];
     int singular = 0;
     if (fabs(((double)Q_00)) <= 0.0 && fabs(((double)Q_20)) <= 0.0) {
-        const double x0 = atan2(((double)Q_02), ((double)Q_22));
-        const double x1 = atan2(((double)Q_10), 0.0);
+        const float x0 = atan2(Q_02, Q_22);
+        const float x1 = atan2(Q_10, 0.0f);
         out_angles[0] = x0;
         out_angles[1] = x1;
-        out_angles[2] = 0.0;
+        out_angles[2] = 0.0f;
         out_angles_other[0] = x0;
         out_angles_other[1] = x1;
-        out_angles_other[2] = 0.0;
-        out_gimbal_lock[0] = 1.0;
+        out_angles_other[2] = 0.0f;
+        out_gimbal_lock[0] = 1.0f;
     } else {
         const float x0 = sqrtf((Q_00*Q_00) + (Q_20*Q_20));
         const float x1 = -Q_00;

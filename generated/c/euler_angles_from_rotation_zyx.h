@@ -13,10 +13,10 @@
  * Q = Rz(angles[0]) Ry(angles[1]) Rx(angles[2]); a = atan2(A_s, A_c), b by atan2 against rho = |(A_s, A_c)|, c = atan2 of rho R_i(a)^T Q's row j; at the lock (A_s = A_c = 0) c = 0
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.543 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.531 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   branch 1: x0, x1, angles[0], angles[1], angles[2], angles_other[0], angles_other[1], angles_other[2], gimbal_lock[0]
+ *   branch 1: none
  *   branch 2: none
  */
 #ifndef RIGIDSYM_EULER_ANGLES_FROM_ROTATION_ZYX_H
@@ -90,15 +90,15 @@ static inline int rigidsym_euler_angles_from_rotation_zyx_sample_f32(
     const float Q_20 = in_Q[6];
     int singular = 0;
     if (fabs(((double)Q_00)) <= 0.0 && fabs(((double)Q_10)) <= 0.0) {
-        const double x0 = atan2(-((double)Q_01), ((double)Q_11));
-        const double x1 = atan2(-((double)Q_20), 0.0);
+        const float x0 = atan2(-Q_01, Q_11);
+        const float x1 = atan2(-Q_20, 0.0f);
         out_angles[0] = x0;
         out_angles[1] = x1;
-        out_angles[2] = 0.0;
+        out_angles[2] = 0.0f;
         out_angles_other[0] = x0;
         out_angles_other[1] = x1;
-        out_angles_other[2] = 0.0;
-        out_gimbal_lock[0] = 1.0;
+        out_angles_other[2] = 0.0f;
+        out_gimbal_lock[0] = 1.0f;
     } else {
         const float x0 = -Q_20;
         const float x1 = sqrtf((Q_00*Q_00) + (Q_10*Q_10));

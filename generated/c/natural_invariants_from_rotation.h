@@ -11,7 +11,7 @@
  *
  * Natural invariants (e, phi) of a rotation matrix, phi in [0, pi].
  * phi = atan2(||vect(Q)||, (tr Q - 1)/2), e = vect(Q)/||vect(Q)||; for cos phi < -1/2, e from the symmetric part of Q (never acos)
- * Singular set: vect(Q) != 0 with |vect(Q)|^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost
+ * Singular set: vect(Q) != 0 with ||vect(Q)||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.68 of what

@@ -20,7 +20,7 @@
  *   branch 2: none
  *   branch 3: none
  *   branch 4: x4
- *   branch 5: x0
+ *   branch 5: none
  */
 #ifndef RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_H
 #define RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_H
@@ -225,7 +225,7 @@ static inline int rigidsym_rotation_vector_from_rotation_sample_f32(
         out_w[1] = x1*x4 - x2*x4;
         out_w[2] = (0.5f)*Q_10*x4 - x0*x4;
     } else {
-        const double x0 = acos((0.5)*((double)Q_00) + (0.5)*((double)Q_11) + (0.5)*((double)Q_22) - 0.5);
+        const float x0 = acos((0.5f)*Q_00 + (0.5f)*Q_11 + (0.5f)*Q_22 - 0.5f);
         const float x1 = sin(x0);
         const float x2 = x0/x1;
         out_w[0] = x2*(-0.5f*Q_12 + (0.5f)*Q_21);

@@ -17,10 +17,10 @@
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   branch 1: x49, x67, w_D_Q[0]
- *   branch 2: x21, x45, x53
- *   branch 3: x63, w_D_Q[26]
+ *   branch 2: none
+ *   branch 3: none
  *   branch 4: x5
- *   branch 5: x1
+ *   branch 5: x2
  */
 #ifndef RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_WITH_JACOBIANS_H
 #define RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_WITH_JACOBIANS_H
@@ -633,7 +633,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x18 = atan2(x16, x17);
         const float x19 = x15*x18;
         const float x20 = (0.25f)*Q_00 - 0.25f*Q_11 + (0.25f)*Q_22 - 0.25f;
-        const double x21 = ((double)x14)/(((double)x9)*sqrt(((double)x9)));
+        const float x21 = x14/(x9*sqrt(x9));
         const float x22 = -x20*x21;
         const float x23 = x1*x18;
         const float x24 = (x16*x16) + (x17*x17);
@@ -657,7 +657,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x42 = x41*x7;
         const float x43 = x1*x42;
         const float x44 = x34 + x36;
-        const double x45 = ((double)x20)*x21;
+        const float x45 = x20*x21;
         const float x46 = x27 + x30*(x11*x45 + x13*x45 + x29 + x45*x5);
         const float x47 = x21*(-0.25f*Q_12 - 0.25f*Q_21);
         const float x48 = x23*x47;
@@ -665,7 +665,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x50 = x11*x47 + x13*x47 + x2*x28 + x47*x5;
         const float x51 = -x49 + x50;
         const float x52 = x49 + x50;
-        const double x53 = ((double)x18)*((double)x7);
+        const float x53 = x18*x7;
         const float x54 = x15*x7;
         const float x55 = x22*x53 + x31*x54 - x39;
         const float x56 = x35*x53;
@@ -777,7 +777,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x60 = x43 + x45*x54;
         const float x61 = x19*x8;
         const float x62 = x16*x8;
-        const double x63 = ((double)x23)*((double)x61) + ((double)x32)*((double)x62) - ((double)x43);
+        const float x63 = x23*x61 + x32*x62 - x43;
         const float x64 = x35*x9;
         const float x65 = x39*x61;
         const float x66 = x31*x62;
@@ -811,7 +811,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         out_w_D_Q[23] = x49*x66 + x67;
         out_w_D_Q[24] = x50*x66 + x65;
         out_w_D_Q[25] = x51*x66 + x67;
-        out_w_D_Q[26] = ((double)x43) + ((double)x52)*((double)x61) + ((double)x53)*((double)x62);
+        out_w_D_Q[26] = x43 + x52*x61 + x53*x62;
         singular |= (((double)x25)) == 0.0;
         singular |= (((double)x10)) == 0.0;
         const double finite = (((x16 - x16) + ((x22 - x22) + (x26 - x26))) + ((x35 - x35) + ((x10 - x10) + (x25 - x25))));
@@ -886,8 +886,8 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         out_w_D_Q[26] = 0.0f;
     } else {
         const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const double x1 = (0.5)*((double)Q_00) + (0.5)*((double)Q_11) + (0.5)*((double)Q_22) - 0.5;
-        const float x2 = acos(x1);
+        const float x1 = (0.5f)*Q_00 + (0.5f)*Q_11 + (0.5f)*Q_22 - 0.5f;
+        const double x2 = acos(((double)x1));
         const float x3 = sin(x2);
         const float x4 = 1.0f/x3;
         const float x5 = x2*x4;

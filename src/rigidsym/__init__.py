@@ -7,7 +7,7 @@ equations (user modules).
 
 The public API (README, "Python API"): :func:`check`, :func:`check_latex`, :func:`verify`,
 :class:`Result`, :class:`Results`, :func:`load_module`, :func:`audit` (any implementation
-judged against the book, :mod:`rigidsym.auditing`) and the declaration vocabulary of
+judged against the book, ``rigidsym.auditing``) and the declaration vocabulary of
 :mod:`rigidsym.declare` (``equation``, ``Statement``, ``Rel``, constrained atoms, operators).
 Public modules: ``rigidsym``, ``rigidsym.declare``, ``rigidsym.kernels`` (with
 ``rigidsym.kernels.torch`` and ``rigidsym.kernels.jax``), ``rigidsym.exercises``,

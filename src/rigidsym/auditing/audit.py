@@ -199,9 +199,9 @@ def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed:
 
     Args:
         func: the function (NumPy; PyTorch or JAX: called with tensors where NumPy
-            arrays raise; a C function: :func:`rigidsym.auditing.callables.c_function`).
+            arrays raise; a C function: ``rigidsym.auditing.callables.c_function``).
         as_: the operation (``twist_transfer``, ``wrench_transfer``,
-            ``rotation_vector_from_rotation``, ...: :data:`rigidsym.auditing.targets.TARGETS`).
+            ``rotation_vector_from_rotation``, ...: ``rigidsym.auditing.targets.TARGETS``).
         names: the function's positional parameter names (default: read from ``func``),
             which put the argument layouts that fit them first.
         seed: the seed of the random inputs, the regimes and the search.

@@ -143,10 +143,12 @@ def regime_inputs(kernel, seeds=REGIME_SEEDS) -> tuple[dict, dict]:
     float32, without the ends of the range: the rescue's) drawn with each of ``seeds``: per
     flat input symbol the float32 values a caller hands the kernel, and the inputs of the
     truth (:func:`_columns`)."""
-    # the regimes depend on the arguments (and an Euler sequence on the name): a kernel
-    # and its _with_jacobians share them (exact rationals: half the planner's time)
+    # the regimes depend on the kernel itself (its derived singular sets, an Euler
+    # sequence's lock): only a kernel and its _with_jacobians share them (exact rationals:
+    # half the planner's time). Keyed by arguments alone, two kernels of one argument list
+    # shared the points of whichever the worker planned first: generation was not repeatable
     key = (tuple((a.name, a.kind, a.shape) for a in kernel.args), tuple(seeds),
-           kernel.name if any(a.name == "angles" for a in kernel.args) else "")
+           kernel.name.removesuffix("_with_jacobians"))
     if key not in _REGIME_VALUES:
         pts = regime_points(kernel, _F32, seeds)
         _REGIME_VALUES[key] = [
