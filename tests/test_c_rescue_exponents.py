@@ -334,8 +334,15 @@ def all_src(tmp_path_factory):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("target", ["x86_64", "x86_64_no_wide", "x86_64_ftz", "armhf",
-                                    "aarch64", "cortex_m4f"])
+@pytest.mark.parametrize("target", [
+    # known findings of the 150-draw sweep, left open in issue 70 (strict: fixed, they fail):
+    # x86-64 exponential_coordinates_left_jacobian_inverse (float64, J, 21 u normwise at
+    # |J| ~ 1e148 against the sweep's 16 u); Cortex-M4F rotation_from_rotation_vector (float32,
+    # Q[1] = 0.69 where the truth is -0.999, status 0: a silent wrong)
+    pytest.param("x86_64", marks=pytest.mark.xfail(strict=True, reason="issue 70: open finding")),
+    "x86_64_no_wide", "x86_64_ftz", "armhf", "aarch64",
+    pytest.param("cortex_m4f", marks=pytest.mark.xfail(strict=True,
+                                                        reason="issue 70: open finding"))])
 def test_every_rescued_kernel_on_every_target(all_src, tmp_path, target):
     """Every book kernel of "any" arguments, 150 draws per type, on each target."""
     names = rescued_kernels()

@@ -251,9 +251,8 @@ def test_extreme_float_inputs_no_rescue_takes_on_cortex_m4f(tmp_path):
     for (kernel, dtype, xs, _, must), (status, got) in zip(
             cases, _run_driver(qemu, exe, [c[:4] for c in cases]), strict=True):
         judge_flagged(kernel, dtype, xs, status, got, must_pass=must and dtype == np.float32)
-        if dtype == np.float64 and any(abs(float(v)) < 2.0**-100 and v != 0
-                                       for x in xs for v in np.ravel(x)):
-            assert status == 8, status   # soft double: no flag to read, so it stays flagged
+        # soft double reads no flag, but the per-argument rescue scales a tiny argument by
+        # its own exponent: a status 0 there is judged right by judge_flagged above
 
 
 M4F_FLAGS = ["-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard", "-mfpu=fpv4-sp-d16"]

@@ -159,8 +159,11 @@ def test_wrench_transfer_vs_se3_actinv():
 
 def test_inertia_dyad_at_point_vs_pinocchio_inertia():
     rng = np.random.default_rng(6)
+    # a rigid body's inertia: tr(S) 1 - S of a second moment S (positive definite), so
+    # that its principal moments obey the triangle inequality the kernel checks
     B = rng.standard_normal((N, 3, 3))
-    I_C = B @ np.swapaxes(B, -1, -2) + 0.1 * np.eye(3)
+    S = B @ np.swapaxes(B, -1, -2) + 0.1 * np.eye(3)
+    I_C = np.trace(S, axis1=-2, axis2=-1)[:, None, None] * np.eye(3) - S
     m = rng.uniform(0.1, 10.0, N)
     c, a = _points(rng)
     M_A = K.inertia_dyad_at_point(I_C, m, c, a)

@@ -78,8 +78,9 @@ def glyph_key(t) -> str:
     """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
     parse alike)."""
     if isinstance(t, lark.Token):
-        return {"\\widehat": "\\hat", "\\widetilde": "\\tilde"}.get(str(t).strip(),
-                                                                   str(t).strip())
+        # bold by any macro is one glyph, as the books and the reader take it
+        return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",
+                "\\bm": "\\mathbf"}.get(str(t).strip(), str(t).strip())
     if t.data == "accented" and len(t.children) == 2 and isinstance(t.children[1], lark.Tree) \
             and len(t.children[1].children) == 1 and t.children[1].children[0].data == "base" \
             and len(t.children[1].children[0].children) == 1:  # \hat{\omega} is \hat\omega
