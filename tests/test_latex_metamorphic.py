@@ -345,7 +345,12 @@ def test_the_verdict_is_unchanged_quick(prop, data, monkeypatch):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("prop", sorted(PROPERTIES))
+@pytest.mark.parametrize("prop", [
+    # an open finding of the second semantics (issue 62 left open): diebel-01 with a function's
+    # line moved into a --notation table is refused (a disagreement) where the symbolic path
+    # verifies; strict: fixed, this fails
+    pytest.param(p, marks=pytest.mark.xfail(strict=True, reason="issue 62: open finding"))
+    if p == "e-notation" else p for p in sorted(PROPERTIES)])
 @settings(max_examples=1, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(data=st.data())
