@@ -22,10 +22,14 @@ def _generate_args(p) -> None:
                         "default: none, the package's kernels)")
     p.add_argument("--no-build", action="store_true",
                    help="with --module: write the C only; do not compile it into the cache")
-    p.add_argument("--target", choices=("package", "c"), default="package",
+    p.add_argument("--target", choices=("package", "c", "cpp"), default="package",
                    help="package: the Python package's kernels (NumPy, C extension, PyTorch, "
                         "JAX); c: C99 sources, headers and build files for C and C++ "
-                        "projects, no Python (docs/c-api.md); default: package")
+                        "projects, no Python (docs/c-api.md); cpp: the same and a "
+                        "header-only C++ layer (Eigen, std::array) over it; default: package")
+    p.add_argument("--namespace", default=None, metavar="NAME",
+                   help="with --target cpp: the C++ namespace of the layer (default: "
+                        "rigidsym)")
     p.add_argument("--kernel", action="append", metavar="NAME",
                    help="with --target c: a book kernel to include (repeatable; default: "
                         "every book kernel when no --module is given, none otherwise)")
@@ -38,13 +42,17 @@ def cmd_generate(args) -> int:
     """Generate the NumPy and C kernels into generated/ (--check: compare only)."""
     from rigidsym.codegen.generator import check, default_out_dir, generate, write
 
-    if getattr(args, "target", "package") == "c":
+    if getattr(args, "target", "package") in ("c", "cpp"):
+        if args.target == "c" and getattr(args, "namespace", None):
+            print("error: --namespace: only with --target cpp", file=sys.stderr)
+            return 2
         from rigidsym.codegen.usergen import cmd_generate_c
         return cmd_generate_c(args)
     for opt, given in (("--kernel", getattr(args, "kernel", None)),
-                       ("--single-header", getattr(args, "single_header", False))):
+                       ("--single-header", getattr(args, "single_header", False)),
+                       ("--namespace", getattr(args, "namespace", None))):
         if given:
-            print(f"error: {opt}: only with --target c", file=sys.stderr)
+            print(f"error: {opt}: only with --target c or cpp", file=sys.stderr)
             return 2
     if args.module:
         from rigidsym.codegen.usergen import cmd_generate_user

@@ -186,14 +186,16 @@ def select_kernels(modules, names) -> tuple[list, dict[str, str]]:
 
 
 def cmd_generate_c(args) -> int:
-    """Write (or with ``--check`` compare) the C-only target into ``--out``."""
+    """Write (or with ``--check`` compare) the C-only target into ``--out`` (with ``--target
+    cpp`` also its C++ layer, :mod:`rigidsym.codegen.backends.cpp`, in ``--namespace``)."""
     from rigidsym.codegen.backends.c.target import float_bounds, generate_c
     from rigidsym.codegen.files import check_or_write
     from rigidsym.codegen.generator import compile_many
 
     t0 = time.perf_counter()
     if not args.out:
-        raise BadInput("--out: a folder is required with --target c")
+        raise BadInput(f"--out: a folder is required with --target "
+                       f"{getattr(args, 'target', 'c')}")
     out = Path(args.out)
     ours = (out / MARKER).is_file()
     if args.check and not ours:
@@ -206,14 +208,26 @@ def cmd_generate_c(args) -> int:
 
     with one_line_warnings():
         kernels, origin = select_kernels(args.module, getattr(args, "kernel", None))
-    files = generate_c(compile_many(kernels, plan32=False), origin,
-                       single_header=getattr(args, "single_header", False),
+    ns = getattr(args, "namespace", None)
+    if ns is not None:
+        from rigidsym.codegen.backends.cpp.target import CppTargetError, check_namespace
+        try:
+            check_namespace(ns)
+        except CppTargetError as exc:
+            raise BadInput(str(exc)) from None
+    codes = compile_many(kernels, plan32=False)
+    files = generate_c(codes, origin, single_header=getattr(args, "single_header", False),
                        bounds=float_bounds(args.module))
+    target = getattr(args, "target", "c")
+    if target == "cpp":   # the C++ layer beside the C it calls
+        from rigidsym.codegen.backends.cpp.target import DEFAULT_NAMESPACE, generate_cpp
+        files.update(generate_cpp(codes, ", ".join(dict.fromkeys(origin.values())),
+                                  namespace=ns or DEFAULT_NAMESPACE))
 
     class _Result:  # what codegen.files reads of a generation
         pass
     res = _Result()
     res.files = files  # type: ignore[attr-defined]
     rc = check_or_write(res, out, check_only=args.check, kernels=len(kernels),
-                        rerun=f"rigidsym generate --target c ... --out {out}", t0=t0)
+                        rerun=f"rigidsym generate --target {target} ... --out {out}", t0=t0)
     return rc or 0

@@ -7,10 +7,12 @@ its printer, its templates and a ``target.py`` describing it as one :class:`Targ
 * ``torch/`` and ``jax/``: the PyTorch and JAX programs (``generated/torch/``, ``jax/``),
   rendered by what they share in ``arrays/`` (a module and the template, no target);
 * ``c/``: the C-only target (``rigidsym generate --target c``: C99 for C and C++ projects,
-  firmware included, with no Python at build or run time), not part of the package.
+  firmware included, with no Python at build or run time), not part of the package;
+* ``cpp/``: the header-only C++ layer over the C target (``rigidsym generate --target
+  cpp``: Eigen and ``std::array`` functions in a namespace), not part of the package.
 
 :mod:`.printing` holds what every printer shares. A target registers itself when its package
-is imported (this module imports the five built-in ones, in that order);
+is imported (this module imports the six built-in ones, in that order);
 :func:`rigidsym.codegen.generator.generate` renders every registered package target and
 merges their files. README.md beside this file says how to add one.
 """
@@ -122,4 +124,5 @@ from rigidsym.codegen.backends import extension as extension  # noqa: E402
 from rigidsym.codegen.backends import torch as torch  # noqa: E402
 from rigidsym.codegen.backends import jax as jax  # noqa: E402
 from rigidsym.codegen.backends import c as c  # noqa: E402
+from rigidsym.codegen.backends import cpp as cpp  # noqa: E402
 # isort: on
