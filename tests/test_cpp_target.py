@@ -72,6 +72,11 @@ def _input(arg, rng) -> np.ndarray:
     if arg.kind == "rotation":
         e = rng.normal(size=3)
         return K.rotation_from_natural_invariants(e / np.linalg.norm(e), rng.uniform(0.2, 2.8))
+    if arg.name in ("I_C", "inertia"):   # a physical inertia (the kernels check it)
+        q = K.rotation_from_natural_invariants(np.array([0.0, 0.6, 0.8]), rng.uniform(0, 3))
+        return q @ np.diag(rng.uniform(1.0, 2.0, size=3)) @ q.T
+    if arg.name == "m":
+        return np.array(rng.uniform(0.5, 2.0))
     if arg.kind == "angle":
         return rng.uniform(0.2, 2.8, size=shape)
     return rng.normal(size=shape)
