@@ -13,6 +13,7 @@ declaration). The default-run tests read the generated header's text.
 from __future__ import annotations
 
 import math
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -390,3 +391,59 @@ def test_kernel_names_the_layer_defines_are_refused():
     renamed = dataclasses.replace(kc, kernel=dataclasses.replace(kc.kernel, name="detail"))
     with pytest.raises(CppTargetError, match="detail"):
         generate_cpp([renamed], "toy")
+
+
+# --- the example (examples/cpp) ----------------------------------------------------------
+
+EXAMPLE = ROOT / "examples" / "cpp"
+EXAMPLE_ARGS = ["--kernel", "rotation_from_natural_invariants", "--kernel",
+                "natural_invariants_from_rotation", "--kernel", "twist_transfer"]
+
+
+@pytest.mark.slow  # generates three kernels: 2-8 s
+def test_example_folder_is_what_the_generator_writes():
+    """examples/cpp/rigidsym_c is the output of its README's command (--check)."""
+    from rigidsym.cli import main
+
+    code = main(["generate", "--target", "cpp", *EXAMPLE_ARGS, "--out",
+                 str(EXAMPLE / "rigidsym_c"), "--check"])
+    assert code == 0
+
+
+@pytest.mark.slow
+def test_example_builds_strict_and_matches_numpy(tmp_path):
+    """The example builds warning-free under the issue's flags and prints the NumPy
+    kernels' values; the transpose of Q gives the axis -e (the layer reads (i, j))."""
+    from rigidsym import kernels as K
+
+    if shutil.which("cmake") is None or shutil.which("g++") is None or _eigen_dir() is None:
+        pytest.skip("cmake, g++ or Eigen is not installed")
+    build = tmp_path / "build"
+    subprocess.run(["cmake", "-S", str(EXAMPLE), "-B", str(build), "-DCMAKE_CXX_COMPILER=g++",
+                    f"-DCMAKE_CXX_FLAGS={' '.join(WARNINGS)}"], check=True,
+                   capture_output=True)
+    res = subprocess.run(["cmake", "--build", str(build)], capture_output=True, text=True)
+    assert res.returncode == 0, res.stdout + res.stderr
+    out = subprocess.run([str(build / "kinematics")], check=True, capture_output=True,
+                         text=True).stdout.splitlines()
+    e = np.array([0.0, 0.6, 0.8])
+    Q = K.rotation_from_natural_invariants(e, 0.3)
+    lines = {" ".join(x.split()[:1 if not x.startswith(("row", "trans")) else 2]): x
+             for x in out}
+
+    def numbers(line: str) -> np.ndarray:
+        return np.array([float(t) for t in line.split()
+                         if re.fullmatch(r"[-+]?[\d.]+(e[-+]?\d+)?", t)])
+
+    e_back, phi_back = K.natural_invariants_from_rotation(Q)
+    want = np.array([*e_back, phi_back])
+    assert np.allclose(numbers(lines["e"]), want, atol=1e-14)
+    assert np.allclose(numbers(lines["row-major e"]), want, atol=1e-14)
+    e_t, phi_t = K.natural_invariants_from_rotation(Q.T)
+    assert np.allclose(numbers(lines["transpose e"]), [*e_t, phi_t], atol=1e-14)
+    assert np.allclose(e_t, -e, atol=1e-14)      # what a silent transpose would give
+    t_P = K.twist_transfer(np.array([0.1, -0.2, 0.3, 1.0, 0.5, -0.25]), np.zeros(3),
+                           np.array([0.2, 0.1, 0.4]))
+    assert np.allclose(numbers(lines["t_P"]), t_P, atol=1e-14)
+    assert numbers(lines["status"])[0] == 0
+    assert abs(numbers(lines["status"])[1] - Q[0, 1]) <= 1e-6
