@@ -32,9 +32,9 @@ import textwrap
 from pathlib import Path
 
 import jinja2
-import rigidsym
 import sympy as sp
 
+import rigidsym
 from rigidsym.codegen.backends import RenderContext, Target
 from rigidsym.codegen.backends.c.target import LIBRARY, PREFIX, STATUS
 from rigidsym.codegen.backends.cpp.printer import CppPrinter
