@@ -18,13 +18,13 @@ from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 from rigidsym.codegen.spec import Arg, Kernel, Out
 
 BACKENDS = Path(backends.__file__).parent
-BUILT_IN = ("numpy", "extension", "torch", "jax", "c")
+BUILT_IN = ("numpy", "extension", "torch", "jax", "c", "cpp")
 
 
 def test_every_registered_target_has_the_same_interface():
     got = targets()
     assert tuple(t.name for t in got[:len(BUILT_IN)]) == BUILT_IN
-    assert [t.name for t in targets(package=False)] == ["c"]
+    assert [t.name for t in targets(package=False)] == ["c", "cpp"]
     for t in got:
         assert isinstance(t, Target) and dataclasses.is_dataclass(t)
         assert t.template_dir.is_dir() and list(t.template_dir.glob("*.j2")), t.name

@@ -447,3 +447,17 @@ def test_example_builds_strict_and_matches_numpy(tmp_path):
     assert np.allclose(numbers(lines["t_P"]), t_P, atol=1e-14)
     assert numbers(lines["status"])[0] == 0
     assert abs(numbers(lines["status"])[1] - Q[0, 1]) <= 1e-6
+
+
+def test_cli_refuses_a_bad_namespace_before_compiling(tmp_path, capsys):
+    """``--namespace`` is checked before any kernel is compiled, and only with
+    ``--target cpp``."""
+    from rigidsym.cli import main
+
+    out = tmp_path / "k"
+    code = main(["generate", "--target", "cpp", "--kernel", "twist_transfer",
+                 "--namespace", "class", "--out", str(out)])
+    assert code != 0 and "--namespace" in capsys.readouterr().err
+    assert not out.exists()
+    code = main(["generate", "--target", "c", "--namespace", "acme", "--out", str(out)])
+    assert code == 2 and "only with --target cpp" in capsys.readouterr().err
