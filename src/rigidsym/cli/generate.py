@@ -27,6 +27,10 @@ def _generate_args(p) -> None:
                         "JAX); c: C99 sources, headers and build files for C and C++ "
                         "projects, no Python (docs/c-api.md); cpp: the same and a "
                         "header-only C++ layer (Eigen, std::array) over it; default: package")
+    p.add_argument("--notice", default=None, metavar="TEXT",
+                   help="with --target c or cpp: the licence or copyright notice of every "
+                        "generated file, your code's (its lines; \"\" for none; no LICENSE "
+                        "file is written); default: the rigidsym project's MIT notice")
     p.add_argument("--namespace", default=None, metavar="NAME",
                    help="with --target cpp: the C++ namespace of the layer (default: "
                         "rigidsym)")
@@ -50,8 +54,9 @@ def cmd_generate(args) -> int:
         return cmd_generate_c(args)
     for opt, given in (("--kernel", getattr(args, "kernel", None)),
                        ("--single-header", getattr(args, "single_header", False)),
-                       ("--namespace", getattr(args, "namespace", None))):
-        if given:
+                       ("--namespace", getattr(args, "namespace", None)),
+                       ("--notice", getattr(args, "notice", None))):
+        if given is not None and given is not False:    # --notice "" is given
             print(f"error: {opt}: only with --target c or cpp", file=sys.stderr)
             return 2
     if args.module:

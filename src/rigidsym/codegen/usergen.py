@@ -209,6 +209,12 @@ def cmd_generate_c(args) -> int:
     with one_line_warnings():
         kernels, origin = select_kernels(args.module, getattr(args, "kernel", None))
     ns = getattr(args, "namespace", None)
+    notice = getattr(args, "notice", None)
+    from rigidsym.codegen.backends.c.target import CTargetError, notice_lines
+    try:
+        notice_lines(notice)
+    except CTargetError as exc:
+        raise BadInput(str(exc)) from None
     if ns is not None:
         from rigidsym.codegen.backends.cpp.target import CppTargetError, check_namespace
         try:
@@ -217,12 +223,12 @@ def cmd_generate_c(args) -> int:
             raise BadInput(str(exc)) from None
     codes = compile_many(kernels, plan32=False)
     files = generate_c(codes, origin, single_header=getattr(args, "single_header", False),
-                       bounds=float_bounds(args.module))
+                       bounds=float_bounds(args.module), notice=notice)
     target = getattr(args, "target", "c")
     if target == "cpp":   # the C++ layer beside the C it calls
         from rigidsym.codegen.backends.cpp.target import DEFAULT_NAMESPACE, generate_cpp
         files.update(generate_cpp(codes, ", ".join(dict.fromkeys(origin.values())),
-                                  namespace=ns or DEFAULT_NAMESPACE))
+                                  namespace=ns or DEFAULT_NAMESPACE, notice=notice))
 
     class _Result:  # what codegen.files reads of a generation
         pass

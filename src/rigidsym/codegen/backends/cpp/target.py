@@ -36,7 +36,7 @@ import sympy as sp
 
 import rigidsym
 from rigidsym.codegen.backends import RenderContext, Target
-from rigidsym.codegen.backends.c.target import LIBRARY, PREFIX, STATUS
+from rigidsym.codegen.backends.c.target import LIBRARY, PREFIX, STATUS, notice_lines
 from rigidsym.codegen.backends.cpp.printer import CppPrinter
 
 __all__ = ["generate_cpp", "CppTargetError", "HEADER", "TEMPLATES", "TARGET", "render",
@@ -156,7 +156,7 @@ def _env() -> jinja2.Environment:
 
 
 def generate_cpp(codes, origin: str, namespace: str = DEFAULT_NAMESPACE,
-                 notice: str | None = "") -> dict[str, str]:
+                 notice: str | None = None) -> dict[str, str]:
     """The C++ layer's files (``{relative path: text}``) over the C target of ``codes``.
 
     Args:
@@ -164,7 +164,8 @@ def generate_cpp(codes, origin: str, namespace: str = DEFAULT_NAMESPACE,
             Jacobian twins (those :func:`rigidsym.codegen.backends.c.generate_c` prints).
         origin: where the kernels are declared (a module's name), for the provenance line.
         namespace: the C++ namespace of the layer (``a`` or ``a::b``).
-        notice: the licence line of the file ("" the project's MIT line, None none).
+        notice: the licence or copyright notice (its lines): None the project's (MIT),
+            "" none, else the user's (``rigidsym generate --notice``).
 
     Returns:
         ``{"rigidsym_c.hpp": text}``: the header-only layer (it includes ``rigidsym_c.h``
@@ -181,15 +182,16 @@ def generate_cpp(codes, origin: str, namespace: str = DEFAULT_NAMESPACE,
     text = _env().get_template(t).render(
         template=t, ns=namespace, lib=LIBRARY, guard=f"{LIBRARY.upper()}_HPP",
         eigen_macro=f"{LIBRARY.upper()}_EIGEN", status=STATUS, kernels=kernels, ver=ver,
-        origin=origin, notice=notice)
+        origin=origin, licence=notice_lines(notice)[0])
     return {HEADER: text}
 
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The C++ layer's files of a generation (:func:`generate_cpp` of ``ctx.kernels``; the
-    option ``namespace`` from ``ctx.options``)."""
+    options ``namespace`` and ``notice`` from ``ctx.options``)."""
     return generate_cpp(ctx.kernels, ctx.origin,
-                        namespace=ctx.options.get("namespace", DEFAULT_NAMESPACE))
+                        namespace=ctx.options.get("namespace", DEFAULT_NAMESPACE),
+                        notice=ctx.options.get("notice"))
 
 
 TARGET = Target("cpp", TEMPLATES, CppPrinter, render, package=False)
