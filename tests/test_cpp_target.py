@@ -461,3 +461,46 @@ def test_cli_refuses_a_bad_namespace_before_compiling(tmp_path, capsys):
     assert not out.exists()
     code = main(["generate", "--target", "c", "--namespace", "acme", "--out", str(out)])
     assert code == 2 and "only with --target cpp" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_installed_layer_by_find_package_without_eigen(tmp_path):
+    """``cmake --install`` of a --target cpp folder installs the layer with the C headers;
+    a program found by find_package uses its std::array part where no Eigen is on the
+    include path (RIGIDSYM_C_EIGEN is then 0)."""
+    from rigidsym import kernels as K
+
+    if shutil.which("cmake") is None or shutil.which("g++") is None:
+        pytest.skip("cmake or g++ is not installed")
+    if Path("/usr/include/Eigen/Core").is_file():
+        pytest.skip("Eigen is on the default include path here")
+    build, prefix, app = tmp_path / "build", tmp_path / "prefix", tmp_path / "app"
+    for cmd in (["cmake", "-S", str(EXAMPLE / "rigidsym_c"), "-B", str(build),
+                 f"-DCMAKE_INSTALL_PREFIX={prefix}"], ["cmake", "--build", str(build)],
+                ["cmake", "--install", str(build)]):
+        subprocess.run(cmd, check=True, capture_output=True)
+    assert (prefix / "include" / "rigidsym_c" / "rigidsym_c.hpp").is_file()
+    app.mkdir()
+    (app / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.13)\nproject(app LANGUAGES C CXX)\n"
+        "find_package(rigidsym_c REQUIRED)\nadd_executable(app app.cpp)\n"
+        "target_compile_features(app PRIVATE cxx_std_11)\n"
+        f"target_compile_options(app PRIVATE {' '.join(WARNINGS)})\n"
+        "target_link_libraries(app PRIVATE rigidsym_c::rigidsym_c)\n", encoding="utf-8")
+    (app / "app.cpp").write_text(
+        '#include <cstdio>\n#include "rigidsym_c.hpp"\n'
+        'static_assert(RIGIDSYM_C_EIGEN == 0, "no Eigen on this include path");\n'
+        "int main() {\n    const std::array<double, 3> e = {{0.0, 0.6, 0.8}};\n"
+        "    const auto r = rigidsym::arrays::rotation_from_natural_invariants(e, 0.3);\n"
+        '    std::printf("%d", static_cast<int>(r.status));\n'
+        '    for (const auto &row : r.Q) for (double x : row) std::printf(" %.17g", x);\n'
+        "    return 0;\n}\n", encoding="utf-8")
+    subprocess.run(["cmake", "-S", str(app), "-B", str(app / "b"), "-DCMAKE_CXX_COMPILER=g++",
+                    f"-DCMAKE_PREFIX_PATH={prefix}"], check=True, capture_output=True)
+    res = subprocess.run(["cmake", "--build", str(app / "b")], capture_output=True, text=True)
+    assert res.returncode == 0, res.stdout + res.stderr
+    out = subprocess.run([str(app / "b" / "app")], check=True, capture_output=True,
+                         text=True).stdout.split()
+    assert out[0] == "0"
+    want = K.rotation_from_natural_invariants(np.array([0.0, 0.6, 0.8]), 0.3).ravel()
+    assert np.allclose([float(x) for x in out[1:]], want, atol=1e-15)
