@@ -107,23 +107,36 @@ template <class D, int N> struct is_vector
     : std::integral_constant<bool, bool(D::IsVectorAtCompileTime) &&
                                    int(D::SizeAtCompileTime) == N> {};
 
-/* An Eigen matrix of either storage order (or an expression) into a row-major buffer:
- * element (i, j) at [i * cols + j]; a vector's element i at [i]. */
-template <class D> inline void from_eigen(const Eigen::MatrixBase<D> &x,
-                                          typename D::Scalar *p) {
-    const typename D::PlainObject v(x);
+/* Whether D's storage is the C functions' layout: direct access, contiguous, row after
+ * row (a vector with unit stride; a row-major matrix with no padding). */
+template <class D> struct row_major_contiguous
+    : std::integral_constant<bool, (int(D::Flags) & int(Eigen::DirectAccessBit)) != 0 &&
+                                   int(D::InnerStrideAtCompileTime) == 1 &&
+                                   (bool(D::IsVectorAtCompileTime) ||
+                                    (bool(D::IsRowMajor) &&
+                                     int(D::OuterStrideAtCompileTime) ==
+                                         int(D::ColsAtCompileTime)))> {};
+
+/* The row-major values of an Eigen matrix of either storage order (or an expression): its
+ * own storage where that is the layout (no copy), else element (i, j) copied to
+ * p[i * cols + j] (a vector's, row or column, element i to p[i]). */
+template <class D>
+inline const typename D::Scalar *eigen_in(const Eigen::MatrixBase<D> &x,
+                                          typename D::Scalar *, std::true_type) {
+    return x.derived().data();
+}
+template <class D>
+inline const typename D::Scalar *eigen_in(const Eigen::MatrixBase<D> &x,
+                                          typename D::Scalar *p, std::false_type) {
+    const auto &v = x.eval();
     for (Eigen::Index i = 0; i < v.rows(); ++i)
         for (Eigen::Index j = 0; j < v.cols(); ++j) p[i * v.cols() + j] = v(i, j);
+    return p;
 }
-template <class D> inline void from_eigen_vector(const Eigen::MatrixBase<D> &x,
-                                                 typename D::Scalar *p) {
-    const typename D::PlainObject v(x);
-    for (Eigen::Index i = 0; i < v.size(); ++i) p[i] = v(i);
-}
-/* A row-major buffer into an Eigen matrix: [i * cols + j] to element (i, j). */
-template <class M> inline void to_eigen(const typename M::Scalar *p, M &m) {
-    for (Eigen::Index i = 0; i < m.rows(); ++i)
-        for (Eigen::Index j = 0; j < m.cols(); ++j) m(i, j) = p[i * m.cols() + j];
+template <class D>
+inline const typename D::Scalar *eigen_in(const Eigen::MatrixBase<D> &x,
+                                          typename D::Scalar *p) {
+    return eigen_in(x, p, row_major_contiguous<D>());
 }
 #endif
 
@@ -183,10 +196,8 @@ inline natural_invariants_from_rotation_result<rs_S> natural_invariants_from_rot
                   "rigidsym::arrays::natural_invariants_from_rotation: the scalar type must be float or double");
     rs_S rs_Q[9];
     ::rigidsym::detail::put(Q, rs_Q);
-    rs_S rs_e[3];
-    natural_invariants_from_rotation_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(rs_Q, rs_e, &rs_result.phi));
-    ::rigidsym::detail::take(rs_result.e, static_cast<const rs_S *>(rs_e));
+    natural_invariants_from_rotation_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(rs_Q, rs_result.e.data(), &rs_result.phi));
     return rs_result;
 }
 
@@ -208,11 +219,9 @@ inline rotation_from_natural_invariants_result<rs_S> rotation_from_natural_invar
     ::rigidsym::detail::same_t<rs_S> phi) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::rotation_from_natural_invariants: the scalar type must be float or double");
-    rs_S rs_e[3];
-    ::rigidsym::detail::put(e, rs_e);
     rs_S rs_Q[9];
-    rotation_from_natural_invariants_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(rs_e, phi, rs_Q));
+    rotation_from_natural_invariants_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(e.data(), phi, rs_Q));
     ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(rs_Q));
     return rs_result;
 }
@@ -238,13 +247,11 @@ inline rotation_from_natural_invariants_with_jacobians_result<rs_S> rotation_fro
     ::rigidsym::detail::same_t<rs_S> phi) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::rotation_from_natural_invariants_with_jacobians: the scalar type must be float or double");
-    rs_S rs_e[3];
-    ::rigidsym::detail::put(e, rs_e);
     rs_S rs_Q[9];
     rs_S rs_Q_D_e[27];
     rs_S rs_Q_D_phi[9];
-    rotation_from_natural_invariants_with_jacobians_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(rs_e, phi, rs_Q, rs_Q_D_e, rs_Q_D_phi));
+    rotation_from_natural_invariants_with_jacobians_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(e.data(), phi, rs_Q, rs_Q_D_e, rs_Q_D_phi));
     ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(rs_Q));
     ::rigidsym::detail::take(rs_result.Q_D_e, static_cast<const rs_S *>(rs_Q_D_e));
     ::rigidsym::detail::take(rs_result.Q_D_phi, static_cast<const rs_S *>(rs_Q_D_phi));
@@ -271,16 +278,8 @@ inline twist_transfer_result<rs_S> twist_transfer(
     const std::array<rs_S, 3> &p) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::twist_transfer: the scalar type must be float or double");
-    rs_S rs_t_A[6];
-    ::rigidsym::detail::put(t_A, rs_t_A);
-    rs_S rs_a[3];
-    ::rigidsym::detail::put(a, rs_a);
-    rs_S rs_p[3];
-    ::rigidsym::detail::put(p, rs_p);
-    rs_S rs_t_P[6];
-    twist_transfer_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(rs_t_A, rs_a, rs_p, rs_t_P));
-    ::rigidsym::detail::take(rs_result.t_P, static_cast<const rs_S *>(rs_t_P));
+    twist_transfer_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(t_A.data(), a.data(), p.data(), rs_result.t_P.data()));
     return rs_result;
 }
 
@@ -307,19 +306,11 @@ inline twist_transfer_with_jacobians_result<rs_S> twist_transfer_with_jacobians(
     const std::array<rs_S, 3> &p) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::twist_transfer_with_jacobians: the scalar type must be float or double");
-    rs_S rs_t_A[6];
-    ::rigidsym::detail::put(t_A, rs_t_A);
-    rs_S rs_a[3];
-    ::rigidsym::detail::put(a, rs_a);
-    rs_S rs_p[3];
-    ::rigidsym::detail::put(p, rs_p);
-    rs_S rs_t_P[6];
     rs_S rs_t_P_D_t_A[36];
     rs_S rs_t_P_D_a[18];
     rs_S rs_t_P_D_p[18];
-    twist_transfer_with_jacobians_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(rs_t_A, rs_a, rs_p, rs_t_P, rs_t_P_D_t_A, rs_t_P_D_a, rs_t_P_D_p));
-    ::rigidsym::detail::take(rs_result.t_P, static_cast<const rs_S *>(rs_t_P));
+    twist_transfer_with_jacobians_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(t_A.data(), a.data(), p.data(), rs_result.t_P.data(), rs_t_P_D_t_A, rs_t_P_D_a, rs_t_P_D_p));
     ::rigidsym::detail::take(rs_result.t_P_D_t_A, static_cast<const rs_S *>(rs_t_P_D_t_A));
     ::rigidsym::detail::take(rs_result.t_P_D_a, static_cast<const rs_S *>(rs_t_P_D_a));
     ::rigidsym::detail::take(rs_result.t_P_D_p, static_cast<const rs_S *>(rs_t_P_D_p));
@@ -352,12 +343,10 @@ inline natural_invariants_from_rotation_result<typename rs_D0::Scalar> natural_i
                   "rigidsym::eigen::natural_invariants_from_rotation: Q must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D0, 3, 3>::value,
                   "rigidsym::eigen::natural_invariants_from_rotation: Q must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S rs_Q[9];
-    ::rigidsym::detail::from_eigen(Q, rs_Q);
-    rs_S rs_e[3];
-    natural_invariants_from_rotation_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(rs_Q, rs_e, &rs_result.phi));
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_e), rs_result.e);
+    rs_S rs_Q_[9];
+    const rs_S *const rs_Q = ::rigidsym::detail::eigen_in(Q, rs_Q_);
+    natural_invariants_from_rotation_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(rs_Q, rs_result.e.data(), &rs_result.phi));
     return rs_result;
 }
 
@@ -365,7 +354,7 @@ inline natural_invariants_from_rotation_result<typename rs_D0::Scalar> natural_i
  */
 template <class rs_S> struct rotation_from_natural_invariants_result {
     Status status;
-    Eigen::Matrix<rs_S, 3, 3> Q;
+    Eigen::Matrix<rs_S, 3, 3, Eigen::RowMajor> Q;
 };
 
 template <class rs_D0>
@@ -379,12 +368,10 @@ inline rotation_from_natural_invariants_result<typename rs_D0::Scalar> rotation_
                   "rigidsym::eigen::rotation_from_natural_invariants: e must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 3>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants: e must be an Eigen vector of size 3");
-    rs_S rs_e[3];
-    ::rigidsym::detail::from_eigen_vector(e, rs_e);
-    rs_S rs_Q[9];
-    rotation_from_natural_invariants_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(rs_e, phi, rs_Q));
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_Q), rs_result.Q);
+    rs_S rs_e_[3];
+    const rs_S *const rs_e = ::rigidsym::detail::eigen_in(e, rs_e_);
+    rotation_from_natural_invariants_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(rs_e, phi, rs_result.Q.data()));
     return rs_result;
 }
 
@@ -392,9 +379,9 @@ inline rotation_from_natural_invariants_result<typename rs_D0::Scalar> rotation_
  */
 template <class rs_S> struct rotation_from_natural_invariants_with_jacobians_result {
     Status status;
-    Eigen::Matrix<rs_S, 3, 3> Q;
-    Eigen::Matrix<rs_S, 9, 3> Q_D_e;
-    Eigen::Matrix<rs_S, 3, 3> Q_D_phi;
+    Eigen::Matrix<rs_S, 3, 3, Eigen::RowMajor> Q;
+    Eigen::Matrix<rs_S, 9, 3, Eigen::RowMajor> Q_D_e;
+    Eigen::Matrix<rs_S, 3, 3, Eigen::RowMajor> Q_D_phi;
 };
 
 template <class rs_D0>
@@ -408,16 +395,10 @@ inline rotation_from_natural_invariants_with_jacobians_result<typename rs_D0::Sc
                   "rigidsym::eigen::rotation_from_natural_invariants_with_jacobians: e must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 3>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants_with_jacobians: e must be an Eigen vector of size 3");
-    rs_S rs_e[3];
-    ::rigidsym::detail::from_eigen_vector(e, rs_e);
-    rs_S rs_Q[9];
-    rs_S rs_Q_D_e[27];
-    rs_S rs_Q_D_phi[9];
-    rotation_from_natural_invariants_with_jacobians_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(rs_e, phi, rs_Q, rs_Q_D_e, rs_Q_D_phi));
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_Q), rs_result.Q);
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_Q_D_e), rs_result.Q_D_e);
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_Q_D_phi), rs_result.Q_D_phi);
+    rs_S rs_e_[3];
+    const rs_S *const rs_e = ::rigidsym::detail::eigen_in(e, rs_e_);
+    rotation_from_natural_invariants_with_jacobians_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(rs_e, phi, rs_result.Q.data(), rs_result.Q_D_e.data(), rs_result.Q_D_phi.data()));
     return rs_result;
 }
 
@@ -440,24 +421,22 @@ inline twist_transfer_result<typename rs_D0::Scalar> twist_transfer(
                   "rigidsym::eigen::twist_transfer: t_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::twist_transfer: t_A must be an Eigen vector of size 6");
-    rs_S rs_t_A[6];
-    ::rigidsym::detail::from_eigen_vector(t_A, rs_t_A);
+    rs_S rs_t_A_[6];
+    const rs_S *const rs_t_A = ::rigidsym::detail::eigen_in(t_A, rs_t_A_);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::twist_transfer: a must be an Eigen vector of size 3");
-    rs_S rs_a[3];
-    ::rigidsym::detail::from_eigen_vector(a, rs_a);
+    rs_S rs_a_[3];
+    const rs_S *const rs_a = ::rigidsym::detail::eigen_in(a, rs_a_);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::twist_transfer: p must be an Eigen vector of size 3");
-    rs_S rs_p[3];
-    ::rigidsym::detail::from_eigen_vector(p, rs_p);
-    rs_S rs_t_P[6];
-    twist_transfer_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(rs_t_A, rs_a, rs_p, rs_t_P));
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_t_P), rs_result.t_P);
+    rs_S rs_p_[3];
+    const rs_S *const rs_p = ::rigidsym::detail::eigen_in(p, rs_p_);
+    twist_transfer_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(rs_t_A, rs_a, rs_p, rs_result.t_P.data()));
     return rs_result;
 }
 
@@ -466,9 +445,9 @@ inline twist_transfer_result<typename rs_D0::Scalar> twist_transfer(
 template <class rs_S> struct twist_transfer_with_jacobians_result {
     Status status;
     Eigen::Matrix<rs_S, 6, 1> t_P;
-    Eigen::Matrix<rs_S, 6, 6> t_P_D_t_A;
-    Eigen::Matrix<rs_S, 6, 3> t_P_D_a;
-    Eigen::Matrix<rs_S, 6, 3> t_P_D_p;
+    Eigen::Matrix<rs_S, 6, 6, Eigen::RowMajor> t_P_D_t_A;
+    Eigen::Matrix<rs_S, 6, 3, Eigen::RowMajor> t_P_D_a;
+    Eigen::Matrix<rs_S, 6, 3, Eigen::RowMajor> t_P_D_p;
 };
 
 template <class rs_D0, class rs_D1, class rs_D2>
@@ -483,30 +462,22 @@ inline twist_transfer_with_jacobians_result<typename rs_D0::Scalar> twist_transf
                   "rigidsym::eigen::twist_transfer_with_jacobians: t_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: t_A must be an Eigen vector of size 6");
-    rs_S rs_t_A[6];
-    ::rigidsym::detail::from_eigen_vector(t_A, rs_t_A);
+    rs_S rs_t_A_[6];
+    const rs_S *const rs_t_A = ::rigidsym::detail::eigen_in(t_A, rs_t_A_);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: a must be an Eigen vector of size 3");
-    rs_S rs_a[3];
-    ::rigidsym::detail::from_eigen_vector(a, rs_a);
+    rs_S rs_a_[3];
+    const rs_S *const rs_a = ::rigidsym::detail::eigen_in(a, rs_a_);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: p must be an Eigen vector of size 3");
-    rs_S rs_p[3];
-    ::rigidsym::detail::from_eigen_vector(p, rs_p);
-    rs_S rs_t_P[6];
-    rs_S rs_t_P_D_t_A[36];
-    rs_S rs_t_P_D_a[18];
-    rs_S rs_t_P_D_p[18];
-    twist_transfer_with_jacobians_result<rs_S> rs_result{};
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(rs_t_A, rs_a, rs_p, rs_t_P, rs_t_P_D_t_A, rs_t_P_D_a, rs_t_P_D_p));
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_t_P), rs_result.t_P);
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_t_P_D_t_A), rs_result.t_P_D_t_A);
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_t_P_D_a), rs_result.t_P_D_a);
-    ::rigidsym::detail::to_eigen(static_cast<const rs_S *>(rs_t_P_D_p), rs_result.t_P_D_p);
+    rs_S rs_p_[3];
+    const rs_S *const rs_p = ::rigidsym::detail::eigen_in(p, rs_p_);
+    twist_transfer_with_jacobians_result<rs_S> rs_result;
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(rs_t_A, rs_a, rs_p, rs_result.t_P.data(), rs_result.t_P_D_t_A.data(), rs_result.t_P_D_a.data(), rs_result.t_P_D_p.data()));
     return rs_result;
 }
 

@@ -104,8 +104,11 @@ def _value(name: str, shape: tuple, doc: str, fold: tuple | None) -> dict:
              "shape_text": " x ".join(map(str, shape)) or "scalar"}
     if shape:
         rows, cols = _rows_cols(shape, fold)
-        entry.update(rows=rows, cols=cols, eigen=f"Eigen::Matrix<rs_S, {rows}, {cols}>",
-                     folded=len(shape) > 2)
+        # row-major where both sides exceed 1 (Eigen's rule for a vector): the C function
+        # writes an output in place, and reads such an argument in place
+        order = ", Eigen::RowMajor" if rows > 1 and cols > 1 else ""
+        entry.update(rows=rows, cols=cols, folded=len(shape) > 2,
+                     eigen=f"Eigen::Matrix<rs_S, {rows}, {cols}{order}>")
     else:
         entry.update(eigen="rs_S", folded=False)
     return entry
@@ -114,7 +117,8 @@ def _value(name: str, shape: tuple, doc: str, fold: tuple | None) -> dict:
 def _check_names(k) -> None:
     names = [a.name for a in k.args] + [o.name for o in k.outputs]
     for n in [*names, k.name]:
-        if n in _CPP_KEYWORDS or keyword.iskeyword(n) or n.startswith("rs_") or "__" in n:
+        if n in _CPP_KEYWORDS or keyword.iskeyword(n) or n.startswith("rs_") or "__" in n \
+                or n.endswith("_"):   # the layer's locals: rs_<name>, rs_<name>_
             raise CppTargetError(f"kernel {k.name}: the name {n!r} is a C++ keyword or "
                                  f"reserved in the C++ layer; rename it in the declaration")
     if k.name in _RESERVED or k.name.endswith("_result"):
