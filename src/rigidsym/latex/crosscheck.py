@@ -159,12 +159,25 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
             f"(largest relative residual {float(worst.relative):.1e}){said}")
 
 
-def given_point(counterexample: dict | None, statement) -> list | None:
+def given_point(counterexample: dict | None, statement, symbols: dict | None = None
+                ) -> list | None:
     """The symbolic path's counterexample as plain data for the second semantics:
-    ``[(LaTeX of a book symbol, value)]``, a value a decimal string (60 digits) or rows of
-    them; each book symbol of the statement's model whose value the point fixes, and each
-    atom of the point that no model value holds (a free scalar, by its name). ``None``
-    when there is no point."""
+    ``[(LaTeX of a glyph, value)]``, a value a decimal string (60 digits) or rows of them.
+
+    Args:
+        counterexample: the symbolic path's (``point``: atom name -> exact value).
+        statement: the statement it was found for (its ``model``: book symbol -> value in
+            the atoms).
+        symbols: the reader's map, glyph key (the LaTeX the user wrote, normalised) -> book
+            symbol's name (:attr:`~rigidsym.latex.statement.Reading.symbols`): each glyph
+            whose symbol the point fixes (a model's value there, or an atom itself) is given
+            by its own LaTeX. Without it (or for a model symbol it does not name), a glyph
+            is named by the book printer's LaTeX of its symbol.
+
+    Returns:
+        The point (a :class:`GivenPoint`, the atoms kept beside it), or ``None`` when there
+        is no point.
+    """
     import sympy as sp
 
     from rigidsym.printing import notation as nt
@@ -174,7 +187,7 @@ def given_point(counterexample: dict | None, statement) -> list | None:
     found = GivenPoint()
     found.atoms = dict(counterexample["point"])
     pt = {k: sp.sympify(v) for k, v in counterexample["point"].items()}
-    out, held = [], set()
+    by_name = {s.name: s for s in statement.model}
 
     def plain(v):
         v = sp.N(v, 60)
@@ -183,16 +196,31 @@ def given_point(counterexample: dict | None, statement) -> list | None:
         return [[str(sp.N(x, 60)) for x in v.row(i)] for i in range(v.rows)] \
             if v.is_Matrix else str(v)
 
-    for s, v in statement.model.items():
-        atoms = {a for a in getattr(v, "free_symbols", ()) if a.name in pt}
-        held |= {a.name for a in atoms}
+    def value(name):
+        s = by_name.get(name)
+        if s is None:
+            return plain(pt[name]) if name in pt else None
+        v = sp.sympify(statement.model[s])
+        atoms = {a: pt[a.name] for a in getattr(v, "free_symbols", ()) if a.name in pt}
         try:
-            out.append((nt.latex(s), plain(sp.sympify(v).subs({a: pt[a.name] for a in atoms}))))
+            return plain(v.subs(atoms))
         except (ValueError, TypeError, AttributeError, sp.SympifyError):
-            continue  # a model the point does not fix: its glyph is drawn, and said so
+            return None  # a model the point does not fix: its glyph is drawn, and said so
+
+    out, named = [], set()
+    for key, name in (symbols or {}).items():
+        v = value(name)
+        if v is not None:
+            out.append((key, v))
+            named.add(name)
+    held = set()
+    for s in statement.model:
+        v = sp.sympify(statement.model[s])
+        held |= {a.name for a in getattr(v, "free_symbols", ()) if a.name in pt}
+        if s.name not in named and value(s.name) is not None:
+            out.append((nt.latex(s), value(s.name)))
     for name, v in pt.items():
-        if name not in held and all(nt.latex(s) != nt.latex(sp.Symbol(name))
-                                    for s in statement.model):
+        if name not in held and name not in named and name not in by_name:
             out.append((nt.latex(sp.Symbol(name)), str(sp.N(v, 60))))
     found.extend(out)
     return found
@@ -221,6 +249,13 @@ def _written_glyphs(t, decls) -> dict:
     return out
 
 
+def _written_tree(key: str, written: dict):
+    """The glyph ``key`` (a reader's key or a printer's LaTeX) as the user wrote it (by
+    :func:`_bare` text, as given or as parsed: ``{}^{A}`` is ``{}^A``), else as parsed."""
+    parsed = _side(tree(f"{key} = 0"))[0]
+    return written.get(_bare(key)) or written.get(_bare(text_of(parsed))) or parsed
+
+
 def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
     """A does-not-hold at the symbolic path's counterexample ``at``: each reading's
     residual must exceed :data:`AT_POINT` there (else :class:`Disagreement`, naming the
@@ -229,7 +264,7 @@ def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
     try:
         decls, t = decls_of(lets), tree(latex)
         written = _written_glyphs(t, decls)
-        given = [(written.get(_bare(k)) or _side(tree(f"{k} = 0"))[0], v) for k, v in at]
+        given = [(_written_tree(k, written), v) for k, v in at]
         found, drawn = residuals_at(t, decls, given)
     except Exception:  # noqa: BLE001 -- a point it cannot read or evaluate: fall back, said
         return ("; the symbolic path's counterexample could not be mapped onto it: checked at "
