@@ -213,6 +213,7 @@ def given_point(counterexample: dict | None, statement, symbols: dict | None = N
         if v is not None:
             out.append((key, v))
             named.add(name)
+    out += _rates(out, symbols or {})
     held = set()
     for s in statement.model:
         v = sp.sympify(statement.model[s])
@@ -224,6 +225,30 @@ def given_point(counterexample: dict | None, statement, symbols: dict | None = N
             out.append((nt.latex(sp.Symbol(name)), str(sp.N(v, 60))))
     found.extend(out)
     return found
+
+
+def _rates(given: list, symbols: dict) -> list:
+    """``\\dot X`` of each function of time the point gives with its body velocity: the
+    reader reads a rotation's (a transform's) rate as ``X [w]`` with ``w`` the glyph
+    ``X_{w}`` it adds (:meth:`~rigidsym.latex.transformer.book_notations.BookNotations.
+    velocity`); the second semantics is handed the rate itself, a plain matrix."""
+    import sympy as sp
+
+    from rigidsym.algebra import rigid_motions
+
+    values = dict(given)
+    out = []
+    for key in symbols:
+        w = values.get(f"{key}_{{w}}")
+        x = values.get(key)
+        if w is None or not isinstance(x, list):
+            continue
+        X = sp.Matrix([[sp.Float(v, 60) for v in row] for row in x])
+        W = rigid_motions.hat(sp.Matrix([[sp.Float(v, 60) for v in row] for row in w]))
+        dot = sp.N(X * sp.Matrix(W), 60)
+        out.append((f"\\dot{{{key}}}", [[str(dot[i, j]) for j in range(dot.cols)]
+                                         for i in range(dot.rows)]))
+    return out
 
 
 def _bare(text: str) -> str:
