@@ -5,6 +5,8 @@ was meant, a transposed model, a dropped factor) is refused, never given as a ve
 
 from __future__ import annotations
 
+import re
+
 import mpmath as mp
 import pytest
 import sympy as sp
@@ -309,3 +311,71 @@ def test_a_disagreement_names_the_smallest_subtree_whose_values_differ(monkeypat
     with pytest.raises(BadInput, match=r"smallest subtree whose two values differ there: "
                                        r"F\(2\\mathbf\{u\}\)"):
         rigidsym.check_latex(r"F(2\mathbf{u}) = 4F(\mathbf{u})", let=U, repairs=False)
+
+
+@pytest.mark.parametrize("mutation, latex, let, subtree", [
+    ("scope", r"F(2\mathbf{u}) = F(\mathbf{u})", U, r"F(2\mathbf{u})"),
+    ("factor", r"\mathbf{a} + 2\mathbf{a} = \mathbf{a} + \mathbf{a}", [r"\mathbf{a}: vector"],
+     r"2\mathbf{a}")])
+def test_a_verified_disagreement_names_the_smallest_subtree_whose_values_differ(
+        monkeypatch, mutation, latex, let, subtree):
+    # the symbolic path mutated so that a false equation verifies: the second semantics'
+    # point, handed to the symbolic side through the reader's glyph -> symbol map, locates
+    # the subtree the mutation reads wrongly (the other subtrees agree there)
+    from rigidsym.latex.reader_glyphs import GlyphReader
+
+    if mutation == "scope":
+        monkeypatch.setattr(GlyphReader, "_rebind", lambda self, x, over, call: [])
+    else:
+        real = LatexTransformer.mul
+        monkeypatch.setattr(LatexTransformer, "mul", lambda self, items: items[1] if str(
+            items[0]) == "2" or getattr(items[0], "value", None) == 2 else real(self, items))
+    with pytest.raises(BadInput, match=r"(?s)says verified, but .*smallest subtree whose two "
+                                       r"values differ there: " + re.escape(subtree) + " "):
+        rigidsym.check_latex(latex, let=let, repairs=False)
+
+
+# ------------- the counterexample handed over by the reader's glyph -> symbol map (plain data)
+@pytest.mark.parametrize("latex, let", [
+    # a glyph the book's printer spells otherwise (\mathrm{^A R}_{B}, \mathbf{V}_{1})
+    (r"({}^A\mathbf{R}_B)^{-1} = -({}^A\mathbf{R}_B)^\top", [r"{}^A\mathbf{R}_B: rotation"]),
+    (r"[\mathrm{ad}_{\mathcal{V}_1}]\mathcal{V}_2 = [\mathrm{ad}_{\mathcal{V}_2}]\mathcal{V}_1",
+     [r"\mathcal{V}_1: twist", r"\mathcal{V}_2: twist"]),
+    # a free scalar that only a model's value holds
+    (r"\$ = \begin{bmatrix}\mathbf{s}\\ 2h\mathbf{s}\end{bmatrix}",
+     [r"\mathbf{s}: vector", r"h: scalar",
+      r"\$ = \begin{bmatrix}\mathbf{s}\\ h\mathbf{s}\end{bmatrix}"]),
+    # functions of time: a value and its rate (a rotation's X[w] handed over as the rate)
+    (r"\frac{d}{dt}\sin\theta = -\dot\theta\cos\theta", [r"\theta(t): angle"]),
+    (r"\dot{\mathbf{C}}^\mathsf{T}\mathbf{C} + \dot{\mathbf{C}}\mathbf{C}^\mathsf{T} = \mathbf{0}",
+     [r"\mathbf{C}(t): rotation"])])
+def test_the_counterexample_reaches_the_second_semantics_by_the_glyphs_as_written(latex, let):
+    r = rigidsym.check_latex(latex, let=let, repairs=False)
+    assert r.verdict == "does-not-hold"
+    assert "fails at the symbolic path's counterexample too" in _second(r), _second(r)
+
+
+def test_a_function_of_time_is_fixed_at_the_given_rate(monkeypatch):
+    # θ̇ = 0 given: d/dt sin θ = 0 = -θ̇ cos θ holds there, so the point is no counterexample
+    # (with θ̇ drawn at random instead, the second semantics would find the sides differ)
+    _checked_at(monkeypatch, {"theta": "1", "thetadot": "0"})
+    _refused(r"\frac{d}{dt}\sin\theta = \dot\theta\cos(2\theta)", [r"\theta(t): angle"])
+
+
+def test_a_notation_function_used_only_in_a_models_body_is_taken(monkeypatch):
+    # Diebel's R_{123}(φ, θ, ψ) = R_1(φ)R_2(θ)R_3(ψ) given by --let, R_1(α) by the table
+    # (issue 62: the reader took a table's function only where the LaTeX itself applied it)
+    from rigidsym.latex import notations
+    from rigidsym.latex.lets import read_lets
+
+    (r1,) = read_lets([r"R_1(\alpha) = \begin{bmatrix}1 & 0 & 0\\ 0 & \cos\alpha & \sin\alpha"
+                       r"\\ 0 & -\sin\alpha & \cos\alpha\end{bmatrix}"])
+    table = notations.Notation("mine", "", (), (), (r1,))
+    real = notations.notation
+    monkeypatch.setattr(notations, "notation", lambda n: table if n == "mine" else real(n))
+    let = [r"\phi: angle", r"G(\beta) = R_1(\beta)R_1(\beta)"]
+    r = rigidsym.check_latex(r"G(\phi)^T G(\phi) = I_3", let=let, repairs=False,
+                             notation="mine")
+    assert r.verdict == "verified" and "the sides agree" in _second(r), _second(r)
+    r = rigidsym.check_latex(r"G(\phi) = G(\phi)^T", let=let, repairs=False, notation="mine")
+    assert r.verdict == "does-not-hold"

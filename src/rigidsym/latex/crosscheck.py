@@ -96,7 +96,7 @@ def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
 
 
 def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
-                modules=(), at=None) -> str:
+                modules=(), at=None, symbols=None, statement=None) -> str:
     """The second semantics' word on ``verdict``: a note for the reading.
 
     Args:
@@ -107,6 +107,10 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
             lending symbols: meanings the second semantics does not know (not applied).
         at: the symbolic path's counterexample as plain data (:func:`given_point`), or
             ``None``: a does-not-hold must fail there too.
+        symbols, statement: the reader's glyph key -> book symbol map and its statement
+            (:class:`~rigidsym.latex.statement.Reading`): a ``verified`` the second
+            semantics refutes is located at its point (the smallest subtree whose values
+            differ); ``None``: not located.
 
     Returns:
         A note: what the second semantics found (or why it did not apply).
@@ -138,7 +142,8 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     worst = max(found, key=lambda r: r.relative)
     if verdict == "verified" and worst.relative > VANISHES:
         raise Disagreement(_words(worst, latex, "verified, but the second semantics (mpmath, "
-                                                 "50 digits) finds the sides differ"))
+                                                 "50 digits) finds the sides differ")
+                           + _where_verified(worst, latex, lets, let, symbols, statement))
     if verdict == "does-not-hold" and worst.relative < FAILS:
         # a real that fails only beyond (-2, 2) (cos(θ/2) = √((1 + cos θ)/2) fails for
         # |θ| > π): more points, wider, before calling it a disagreement
@@ -307,6 +312,46 @@ def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
     worst = min(found, key=lambda r: r.relative)
     return (f"; it fails at the symbolic path's counterexample too (relative residual "
             f"{float(worst.relative):.1e})")
+
+
+def _where_verified(worst, latex: str, lets, let, symbols, statement) -> str:
+    """A ``verified`` refuted at the second semantics' point ``worst.point`` (glyph LaTeX ->
+    value): the smallest subtree whose two values differ there (:func:`_where_they_differ`),
+    the point handed to the symbolic side as its atoms through the reader's ``symbols`` (a
+    symbol whose model is an atom or a matrix of atoms). "" when it cannot be located."""
+    import mpmath as mp
+    import sympy as sp
+
+    if not symbols or statement is None:
+        return ""
+    by_bare: dict = {}
+    for key, name in symbols.items():
+        by_bare.setdefault(_bare(key), []).append(name)
+    by_name = {s.name: s for s in statement.model}
+    pt, given = {}, []
+    try:
+        for text, v in worst.point.items():
+            names = by_bare.get(_bare(text), [])
+            if len(names) != 1 or isinstance(v, tuple):
+                continue  # two glyphs that read alike, or a motion: not handed over
+            rows = [[mp.nstr(x, 60) for x in row] for row in v.tolist()] \
+                if hasattr(v, "rows") else [[mp.nstr(v, 60)]]
+            value = sp.Matrix(rows)  # of strings: the 60 digits kept
+            plain = rows if hasattr(v, "rows") else rows[0][0]
+            model = by_name.get(names[0])
+            atoms = sp.Matrix(statement.model[model]) if model is not None and getattr(
+                statement.model[model], "is_Matrix", False) else sp.Matrix(
+                [[model if model is not None else sp.Symbol(names[0])]])
+            if atoms.shape != value.shape or not all(a.is_Symbol for a in atoms):
+                continue
+            pt.update({a.name: x for a, x in zip(atoms, sum(rows, []), strict=True)})
+            given.append((text, plain))
+        decls, t = decls_of(lets), tree(latex)
+        written = _written_glyphs(t, decls)
+        given = [(_written_tree(k, written), v) for k, v in given]
+    except Exception:  # noqa: BLE001 -- a point it cannot hand over: not located
+        return ""
+    return _where_they_differ(t, parsed_text(latex), decls, given, let, pt)
 
 
 def _words(r, latex: str, what: str) -> str:
