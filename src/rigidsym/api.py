@@ -179,7 +179,8 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     at = given_point(r.counterexample, reading.eq.build(), reading.symbols) \
         if r.verdict == "does-not-hold" else None
     second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules,
-                         at=at, symbols=reading.symbols, statement=reading.eq.build())
+                         at=at, symbols=reading.symbols, statement=reading.eq.build(),
+                         rows=reading.rows)
     if second:
         reading.notes.append(second)
     r.expected = r.verdict

@@ -69,6 +69,35 @@ def decls_of(lets: list[Let]) -> list[Decl]:
     return out
 
 
+#: the glyph table's kinds of a plain shape (its rows carry no further constraint)
+_ROW_KINDS = ("vector", "matrix", "scalar", "angle")
+
+
+def book_lets(rows: dict, lent: list | None = None) -> tuple[list[Let], list[str]]:
+    """The glyph table's rows a ``--book`` reading used, as plain declarations the second
+    semantics reads as it reads a ``--let``: a row of a plain shape its KIND (``angle``,
+    ``scalar``, ``vector``/``N-vector``, ``matrix``/``RxC matrix``), a notational atom its
+    definition (``\\mathbf{E} = \\mathrm{CPM}(\\mathbf{e})``). ``(lets, lent)``: ``lent``
+    the glyphs a module lends (their meaning is the module's, not handed over)."""
+    out, lent = [], list(lent or [])
+    for key, g in rows.items():
+        if g.kind == "module":
+            lent.append(key)
+            continue
+        if g.kind == "notation" and g.definition:
+            text = f"{key} = {g.definition}"
+        elif g.kind in _ROW_KINDS:
+            shape = tuple(g.shape or ())
+            text = f"{key}: " + (
+                g.kind if not shape or g.kind == "angle" else
+                ("vector" if shape[0] == 3 else f"{shape[0]}-vector") if shape[1:] in ((), (1,))
+                else "matrix" if shape == (3, 3) else f"{shape[0]}x{shape[1]} matrix")
+        else:
+            continue  # a --let, a --notation line, a free glyph: read as without --book
+        out += read_lets([text])
+    return out, lent
+
+
 def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
     """The lines of the notation ``name`` that declare a glyph the LaTeX or a model
     mentions and no ``--let`` declares (its functions too), as plain declarations: the
@@ -96,21 +125,26 @@ def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
 
 
 def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
-                modules=(), at=None, symbols=None, statement=None) -> str:
+                modules=(), at=None, symbols=None, statement=None, rows=None) -> str:
     """The second semantics' word on ``verdict``: a note for the reading.
 
     Args:
         latex: the statement's LaTeX.
         let: its ``--let`` declarations as given (:func:`~rigidsym.latex.lets.read_lets`).
         verdict: the symbolic path's verdict.
-        notation, book, modules: a book's notation, a glyph table's section or modules
-            lending symbols: meanings the second semantics does not know (not applied).
+        notation: a book's notation: its lines for the glyphs used, read as ``--let``s.
+        book, modules: a glyph table's section or modules lending symbols: the glyph
+            table's rows the reading used (``rows``) are handed over as ``--let``s
+            (:func:`book_lets`); a module's symbol is the reader's meaning, so a check that
+            uses one is not cross-checked (said).
         at: the symbolic path's counterexample as plain data (:func:`given_point`), or
             ``None``: a does-not-hold must fail there too.
         symbols, statement: the reader's glyph key -> book symbol map and its statement
             (:class:`~rigidsym.latex.statement.Reading`): a ``verified`` the second
             semantics refutes is located at its point (the smallest subtree whose values
             differ); ``None``: not located.
+        rows: the reading's glyph key -> :class:`~rigidsym.latex.table.Glyph` (where each
+            glyph's meaning came from); needed with ``book`` or ``modules``.
 
     Returns:
         A note: what the second semantics found (or why it did not apply).
@@ -121,11 +155,15 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     """
     if verdict not in ("verified", "does-not-hold"):
         return ""
+    lent: list[str] = ["(no glyph rows given)"] if rows is None else []
+    extra: list[Let] = []
     if book or modules:
-        return ("second semantics: not applied (the meanings of --book and --module are the "
-                "reader's)")
+        extra, lent = book_lets(rows or {}, lent)
+    if lent:
+        return (f"second semantics: not applied ({', '.join(lent)}: a module's meaning, the "
+                f"reader's)")
     try:
-        lets = read_lets(let)
+        lets = read_lets(let) + extra
         lets += declared_lets(latex, lets)
         if notation:
             lets += notation_lets(latex, lets, notation)

@@ -57,6 +57,7 @@ class Reading:
     dropped: list = field(default_factory=list)  # (choices, why) of those that do not
     eq: object = None  # its registered Equation (declare_latex)
     symbols: dict = field(default_factory=dict)  # glyph key (the LaTeX) -> book symbol's name
+    rows: dict = field(default_factory=dict)  # glyph key -> its Glyph (where its meaning came)
 
 
 
@@ -278,7 +279,7 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     st = Statement(printed, model, defines=defines, from_latex=True)
     return Reading(st, kind, text, notes, free,
                    choices={k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points},
-                   symbols={k: g.name for k, g in glyphs.items() if g.name})
+                   symbols={k: g.name for k, g in glyphs.items() if g.name}, rows=glyphs)
 
 
 def _relations(parsed) -> tuple[list[Rel], str]:
