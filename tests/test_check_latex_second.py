@@ -10,7 +10,7 @@ import re
 import mpmath as mp
 import pytest
 import sympy as sp
-from test_check_latex import _forget_latex_ids  # noqa: F401  (autouse fixture)
+from test_check_latex import _forget_latex_ids, module  # noqa: F401  (fixtures)
 
 import rigidsym
 from rigidsym.core.errors import BadInput
@@ -379,3 +379,49 @@ def test_a_notation_function_used_only_in_a_models_body_is_taken(monkeypatch):
     assert r.verdict == "verified" and "the sides agree" in _second(r), _second(r)
     r = rigidsym.check_latex(r"G(\phi) = G(\phi)^T", let=let, repairs=False, notation="mine")
     assert r.verdict == "does-not-hold"
+
+
+# ---------------------------------- --book: the glyph table's rows handed over as --lets
+@pytest.mark.parametrize("latex, book, verdict", [
+    (r"\mathbf{E}^T = -\mathbf{E}", "3.2", "verified"),        # E = CPM(e), a notation row
+    (r"\mathbf{E}\mathbf{x} = \mathbf{e}\times\mathbf{x}", "3.2", "verified"),
+    (r"\mathbf{W}^T = -\mathbf{W}", "3.5", "does-not-hold"),   # a 3x3 matrix row
+    (r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}", "3", "does-not-hold")])  # Q_F: a 3x3 matrix
+def test_a_book_check_is_cross_checked_on_the_tables_rows(latex, book, verdict):
+    r = rigidsym.check_latex(latex, book=book, repairs=False)
+    assert r.verdict == verdict
+    assert "second semantics (mpmath" in _second(r), _second(r)
+    assert verdict == "verified" or "counterexample too" in _second(r), _second(r)
+
+
+def test_a_book_row_the_reader_misreads_is_refused(monkeypatch):
+    # the symbolic path mutated to read the table's definition E = CPM(e) transposed: then
+    # Ex = e × x is does-not-hold there, which the second semantics, reading the row
+    # itself, refuses (before, --book was not cross-checked and the verdict was given)
+    from rigidsym.latex.reader_glyphs import GlyphReader
+
+    real = GlyphReader.parse
+
+    def transposed(self, text, what, *args, **kwargs):
+        if what.startswith("the definition of"):
+            key, body = text.split(" = ", 1)
+            text = f"{key} = ({body})^T"
+        return real(self, text, what, *args, **kwargs)
+
+    monkeypatch.setattr(GlyphReader, "parse", transposed)
+    with pytest.raises(BadInput, match="the two semantics disagree"):
+        rigidsym.check_latex(r"\mathbf{E}\mathbf{x} = \mathbf{e}\times\mathbf{x}", book="3.2",
+                             repairs=False)
+
+
+@pytest.fixture
+def lent(module):  # noqa: F811 -- test_check_latex's module fixture, by another name
+    return module
+
+
+def test_a_modules_symbol_is_named_as_not_cross_checked(lent):
+    r = rigidsym.check_latex(r"\mathbf{R}\boldsymbol{\omega} = \boldsymbol{\omega}",
+                             modules=[lent], repairs=False)
+    assert r.verdict == "verified"
+    note = next(n for n in r.model if n.startswith("second semantics"))
+    assert note.startswith("second semantics: not applied (\\mathbf{R}"), note
