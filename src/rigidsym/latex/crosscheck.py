@@ -98,10 +98,12 @@ def book_lets(rows: dict, lent: list | None = None) -> tuple[list[Let], list[str
     return out, lent
 
 
-def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
+def notation_lets(latex: str, lets: list[Let], name: str, used=()) -> list[Let]:
     """The lines of the notation ``name`` that declare a glyph the LaTeX or a model
-    mentions and no ``--let`` declares (its functions too), as plain declarations: the
-    second semantics reads their NAME, KIND and LaTeX as it reads a ``--let``."""
+    mentions, or that the reading ``used`` (glyph keys: ``T`` of ``\\mathrm{Ad}_T``, a
+    subscript the parse tree holds as a token), and no ``--let`` declares (its functions
+    too), as plain declarations: the second semantics reads their NAME, KIND and LaTeX as
+    it reads a ``--let``."""
     from rigidsym.latex.declgraph import glyph_keys
     from rigidsym.latex.notations import notation
 
@@ -110,8 +112,10 @@ def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
     out: list[Let] = []
     todo = [latex] + [x.latex for x in lets if x.latex]
     seen: set[str] = set()
+    first = set(used)
     while todo:
-        for key in glyph_keys(todo.pop()) - seen:
+        keys, first = glyph_keys(todo.pop()) | first, set()
+        for key in keys - seen:
             seen.add(key)
             if key in own:
                 continue
@@ -166,7 +170,8 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
         lets = read_lets(let) + extra
         lets += declared_lets(latex, lets)
         if notation:
-            lets += notation_lets(latex, lets, notation)
+            lets += notation_lets(latex, lets, notation, used={
+                k for k, g in (rows or {}).items() if g.kind != "free"})
         found = residuals(tree(latex), decls_of(lets), POINTS)
     except NotCovered as exc:
         if REFUSE_UNCOVERED:
