@@ -198,7 +198,9 @@ def test_the_corpus_decides_as_before_and_the_second_semantics_covers_it():
                 assert "counterexample too" in note or "random points only" in note, note
                 refuted += 1
     assert covered == decided > 250, (covered, decided)
-    assert at_point >= 2 * refuted // 3, (at_point, refuted)
+    # every does-not-hold at its own counterexample (55 of 75 before the reader's glyph map
+    # and the functions of time crossed the boundary)
+    assert at_point == refuted > 70, (at_point, refuted)
 
 
 def test_a_construct_it_lacks_is_refused_naming_it_never_decided(monkeypatch, capsys):

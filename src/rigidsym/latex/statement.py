@@ -277,9 +277,11 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
                      f"{notation.text(r.rhs)}" for r in printed)
     notes += list(dict.fromkeys(rd.notes + parsed.readings))  # each reading once
     st = Statement(printed, model, defines=defines, from_latex=True)
+    # the glyphs read (a --notation's kinds are all overrides, used or not)
+    used = {k: g for k, g in glyphs.items() if k in rd.glyphs or k in rd.used}
     return Reading(st, kind, text, notes, free,
                    choices={k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points},
-                   symbols={k: g.name for k, g in glyphs.items() if g.name}, rows=glyphs)
+                   symbols={k: g.name for k, g in used.items() if g.name}, rows=used)
 
 
 def _relations(parsed) -> tuple[list[Rel], str]:
