@@ -427,3 +427,15 @@ def test_a_modules_symbol_is_named_as_not_cross_checked(lent):
     assert r.verdict == "verified"
     note = next(n for n in r.model if n.startswith("second semantics"))
     assert note.startswith("second semantics: not applied (\\mathbf{R}"), note
+
+
+@pytest.mark.xfail(strict=True, reason="open finding: the reader's d/dt takes \\dot\\theta as "
+                                       "a constant (its rate \\ddot\\theta is dropped)")
+def test_the_rate_of_a_rate_is_the_second_derivative():
+    # d/dt(θ̇ sin θ) = θ̈ sin θ + θ̇² cos θ: the reader reads the left side as θ̇² cos θ and
+    # says does-not-hold; the second semantics, at that counterexample (θ̇ = 0), finds the
+    # sides equal, so the check is refused (exit 2) instead of verified
+    r = rigidsym.check_latex(r"\frac{d}{dt}(\dot\theta\sin\theta) = \ddot\theta\sin\theta"
+                             r" + \dot\theta^2\cos\theta", let=[r"\theta(t): angle"],
+                             repairs=False)
+    assert r.verdict == "verified"
