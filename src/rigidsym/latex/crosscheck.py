@@ -23,7 +23,7 @@ from rigidsym.numeval.atpoint import residuals_at, subtree_values
 from rigidsym.numeval.evaluator import text_of
 
 __all__ = ["VANISHES", "FAILS", "AT_POINT", "POINTS", "REFUSE_UNCOVERED", "Disagreement",
-           "cross_check", "given_point"]
+           "cross_check", "given_point", "book_lets", "notation_lets", "decls_of"]
 
 #: a residual at most this (relative to the terms) vanishes: the 50-digit evaluation's
 #: rounding and the order-4 differences' truncation (h = 1e-10: 1e-40) are far below it
