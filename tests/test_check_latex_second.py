@@ -5,10 +5,12 @@ was meant, a transposed model, a dropped factor) is refused, never given as a ve
 
 from __future__ import annotations
 
+import re
+
 import mpmath as mp
 import pytest
 import sympy as sp
-from test_check_latex import _forget_latex_ids  # noqa: F401  (autouse fixture)
+from test_check_latex import _forget_latex_ids, module  # noqa: F401  (fixtures)
 
 import rigidsym
 from rigidsym.core.errors import BadInput
@@ -196,7 +198,9 @@ def test_the_corpus_decides_as_before_and_the_second_semantics_covers_it():
                 assert "counterexample too" in note or "random points only" in note, note
                 refuted += 1
     assert covered == decided > 250, (covered, decided)
-    assert at_point >= 2 * refuted // 3, (at_point, refuted)
+    # every does-not-hold at its own counterexample (55 of 75 before the reader's glyph map
+    # and the functions of time crossed the boundary)
+    assert at_point == refuted > 70, (at_point, refuted)
 
 
 def test_a_construct_it_lacks_is_refused_naming_it_never_decided(monkeypatch, capsys):
@@ -309,3 +313,129 @@ def test_a_disagreement_names_the_smallest_subtree_whose_values_differ(monkeypat
     with pytest.raises(BadInput, match=r"smallest subtree whose two values differ there: "
                                        r"F\(2\\mathbf\{u\}\)"):
         rigidsym.check_latex(r"F(2\mathbf{u}) = 4F(\mathbf{u})", let=U, repairs=False)
+
+
+@pytest.mark.parametrize("mutation, latex, let, subtree", [
+    ("scope", r"F(2\mathbf{u}) = F(\mathbf{u})", U, r"F(2\mathbf{u})"),
+    ("factor", r"\mathbf{a} + 2\mathbf{a} = \mathbf{a} + \mathbf{a}", [r"\mathbf{a}: vector"],
+     r"2\mathbf{a}")])
+def test_a_verified_disagreement_names_the_smallest_subtree_whose_values_differ(
+        monkeypatch, mutation, latex, let, subtree):
+    # the symbolic path mutated so that a false equation verifies: the second semantics'
+    # point, handed to the symbolic side through the reader's glyph -> symbol map, locates
+    # the subtree the mutation reads wrongly (the other subtrees agree there)
+    from rigidsym.latex.reader_glyphs import GlyphReader
+
+    if mutation == "scope":
+        monkeypatch.setattr(GlyphReader, "_rebind", lambda self, x, over, call: [])
+    else:
+        real = LatexTransformer.mul
+        monkeypatch.setattr(LatexTransformer, "mul", lambda self, items: items[1] if str(
+            items[0]) == "2" or getattr(items[0], "value", None) == 2 else real(self, items))
+    with pytest.raises(BadInput, match=r"(?s)says verified, but .*smallest subtree whose two "
+                                       r"values differ there: " + re.escape(subtree) + " "):
+        rigidsym.check_latex(latex, let=let, repairs=False)
+
+
+# ------------- the counterexample handed over by the reader's glyph -> symbol map (plain data)
+@pytest.mark.parametrize("latex, let", [
+    # a glyph the book's printer spells otherwise (\mathrm{^A R}_{B}, \mathbf{V}_{1})
+    (r"({}^A\mathbf{R}_B)^{-1} = -({}^A\mathbf{R}_B)^\top", [r"{}^A\mathbf{R}_B: rotation"]),
+    (r"[\mathrm{ad}_{\mathcal{V}_1}]\mathcal{V}_2 = [\mathrm{ad}_{\mathcal{V}_2}]\mathcal{V}_1",
+     [r"\mathcal{V}_1: twist", r"\mathcal{V}_2: twist"]),
+    # a free scalar that only a model's value holds
+    (r"\$ = \begin{bmatrix}\mathbf{s}\\ 2h\mathbf{s}\end{bmatrix}",
+     [r"\mathbf{s}: vector", r"h: scalar",
+      r"\$ = \begin{bmatrix}\mathbf{s}\\ h\mathbf{s}\end{bmatrix}"]),
+    # functions of time: a value and its rate (a rotation's X[w] handed over as the rate)
+    (r"\frac{d}{dt}\sin\theta = -\dot\theta\cos\theta", [r"\theta(t): angle"]),
+    (r"\dot{\mathbf{C}}^\mathsf{T}\mathbf{C} + \dot{\mathbf{C}}\mathbf{C}^\mathsf{T} = \mathbf{0}",
+     [r"\mathbf{C}(t): rotation"])])
+def test_the_counterexample_reaches_the_second_semantics_by_the_glyphs_as_written(latex, let):
+    r = rigidsym.check_latex(latex, let=let, repairs=False)
+    assert r.verdict == "does-not-hold"
+    assert "fails at the symbolic path's counterexample too" in _second(r), _second(r)
+
+
+def test_a_function_of_time_is_fixed_at_the_given_rate(monkeypatch):
+    # θ̇ = 0 given: d/dt sin θ = 0 = -θ̇ cos θ holds there, so the point is no counterexample
+    # (with θ̇ drawn at random instead, the second semantics would find the sides differ)
+    _checked_at(monkeypatch, {"theta": "1", "thetadot": "0"})
+    _refused(r"\frac{d}{dt}\sin\theta = \dot\theta\cos(2\theta)", [r"\theta(t): angle"])
+
+
+def test_a_notation_function_used_only_in_a_models_body_is_taken(monkeypatch):
+    # Diebel's R_{123}(φ, θ, ψ) = R_1(φ)R_2(θ)R_3(ψ) given by --let, R_1(α) by the table
+    # (issue 62: the reader took a table's function only where the LaTeX itself applied it)
+    from rigidsym.latex import notations
+    from rigidsym.latex.lets import read_lets
+
+    (r1,) = read_lets([r"R_1(\alpha) = \begin{bmatrix}1 & 0 & 0\\ 0 & \cos\alpha & \sin\alpha"
+                       r"\\ 0 & -\sin\alpha & \cos\alpha\end{bmatrix}"])
+    table = notations.Notation("mine", "", (), (), (r1,))
+    real = notations.notation
+    monkeypatch.setattr(notations, "notation", lambda n: table if n == "mine" else real(n))
+    let = [r"\phi: angle", r"G(\beta) = R_1(\beta)R_1(\beta)"]
+    r = rigidsym.check_latex(r"G(\phi)^T G(\phi) = I_3", let=let, repairs=False,
+                             notation="mine")
+    assert r.verdict == "verified" and "the sides agree" in _second(r), _second(r)
+    r = rigidsym.check_latex(r"G(\phi) = G(\phi)^T", let=let, repairs=False, notation="mine")
+    assert r.verdict == "does-not-hold"
+
+
+# ---------------------------------- --book: the glyph table's rows handed over as --lets
+@pytest.mark.parametrize("latex, book, verdict", [
+    (r"\mathbf{E}^T = -\mathbf{E}", "3.2", "verified"),        # E = CPM(e), a notation row
+    (r"\mathbf{E}\mathbf{x} = \mathbf{e}\times\mathbf{x}", "3.2", "verified"),
+    (r"\mathbf{W}^T = -\mathbf{W}", "3.5", "does-not-hold"),   # a 3x3 matrix row
+    (r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}", "3", "does-not-hold")])  # Q_F: a 3x3 matrix
+def test_a_book_check_is_cross_checked_on_the_tables_rows(latex, book, verdict):
+    r = rigidsym.check_latex(latex, book=book, repairs=False)
+    assert r.verdict == verdict
+    assert "second semantics (mpmath" in _second(r), _second(r)
+    assert verdict == "verified" or "counterexample too" in _second(r), _second(r)
+
+
+def test_a_book_row_the_reader_misreads_is_refused(monkeypatch):
+    # the symbolic path mutated to read the table's definition E = CPM(e) transposed: then
+    # Ex = e × x is does-not-hold there, which the second semantics, reading the row
+    # itself, refuses (before, --book was not cross-checked and the verdict was given)
+    from rigidsym.latex.reader_glyphs import GlyphReader
+
+    real = GlyphReader.parse
+
+    def transposed(self, text, what, *args, **kwargs):
+        if what.startswith("the definition of"):
+            key, body = text.split(" = ", 1)
+            text = f"{key} = ({body})^T"
+        return real(self, text, what, *args, **kwargs)
+
+    monkeypatch.setattr(GlyphReader, "parse", transposed)
+    with pytest.raises(BadInput, match="the two semantics disagree"):
+        rigidsym.check_latex(r"\mathbf{E}\mathbf{x} = \mathbf{e}\times\mathbf{x}", book="3.2",
+                             repairs=False)
+
+
+@pytest.fixture
+def lent(module):  # noqa: F811 -- test_check_latex's module fixture, by another name
+    return module
+
+
+def test_a_modules_symbol_is_named_as_not_cross_checked(lent):
+    r = rigidsym.check_latex(r"\mathbf{R}\boldsymbol{\omega} = \boldsymbol{\omega}",
+                             modules=[lent], repairs=False)
+    assert r.verdict == "verified"
+    note = next(n for n in r.model if n.startswith("second semantics"))
+    assert note.startswith("second semantics: not applied (\\mathbf{R}"), note
+
+
+@pytest.mark.xfail(strict=True, reason="open finding: the reader's d/dt takes \\dot\\theta as "
+                                       "a constant (its rate \\ddot\\theta is dropped)")
+def test_the_rate_of_a_rate_is_the_second_derivative():
+    # d/dt(θ̇ sin θ) = θ̈ sin θ + θ̇² cos θ: the reader reads the left side as θ̇² cos θ and
+    # says does-not-hold; the second semantics, at that counterexample (θ̇ = 0), finds the
+    # sides equal, so the check is refused (exit 2) instead of verified
+    r = rigidsym.check_latex(r"\frac{d}{dt}(\dot\theta\sin\theta) = \ddot\theta\sin\theta"
+                             r" + \dot\theta^2\cos\theta", let=[r"\theta(t): angle"],
+                             repairs=False)
+    assert r.verdict == "verified"

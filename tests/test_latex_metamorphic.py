@@ -309,7 +309,11 @@ def into_notation(latex, lets, notation, draw, monkeypatch):
     moved = draw(st.sampled_from(lets))
     table = notations.notation(notation) if notation else notations.Notation("none", "", (), ())
     (x,) = read_lets([moved])
-    mine = replace(table, name="moved", lets=(x, *[y for y in table.lets if y.key != x.key]))
+    if x.params:  # a function's line: where notations.notation puts a line with parameters
+        mine = replace(table, name="moved",
+                       functions=(x, *[y for y in table.functions if y.key != x.key]))
+    else:
+        mine = replace(table, name="moved", lets=(x, *[y for y in table.lets if y.key != x.key]))
     original = notations.notation
     monkeypatch.setattr(notations, "notation",
                         lambda name: mine if name == "moved" else original(name))
@@ -345,12 +349,7 @@ def test_the_verdict_is_unchanged_quick(prop, data, monkeypatch):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("prop", [
-    # an open finding of the second semantics (issue 62 left open): diebel-01 with a function's
-    # line moved into a --notation table is refused (a disagreement) where the symbolic path
-    # verifies; strict: fixed, this fails
-    pytest.param(p, marks=pytest.mark.xfail(strict=True, reason="issue 62: open finding"))
-    if p == "e-notation" else p for p in sorted(PROPERTIES)])
+@pytest.mark.parametrize("prop", sorted(PROPERTIES))
 @settings(max_examples=1, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(data=st.data())

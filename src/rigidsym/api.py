@@ -176,10 +176,11 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
 
     # issue 62: a verdict needs the second, independent semantics to agree (a does-not-hold
     # at the symbolic path's own counterexample, handed over as plain data)
-    at = given_point(r.counterexample, reading.eq.build()) if r.verdict == "does-not-hold" \
-        else None
+    at = given_point(r.counterexample, reading.eq.build(), reading.symbols) \
+        if r.verdict == "does-not-hold" else None
     second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules,
-                         at=at)
+                         at=at, symbols=reading.symbols, statement=reading.eq.build(),
+                         rows=reading.rows)
     if second:
         reading.notes.append(second)
     r.expected = r.verdict

@@ -23,7 +23,7 @@ from rigidsym.numeval.atpoint import residuals_at, subtree_values
 from rigidsym.numeval.evaluator import text_of
 
 __all__ = ["VANISHES", "FAILS", "AT_POINT", "POINTS", "REFUSE_UNCOVERED", "Disagreement",
-           "cross_check", "given_point"]
+           "cross_check", "given_point", "book_lets", "notation_lets", "decls_of"]
 
 #: a residual at most this (relative to the terms) vanishes: the 50-digit evaluation's
 #: rounding and the order-4 differences' truncation (h = 1e-10: 1e-40) are far below it
@@ -69,10 +69,41 @@ def decls_of(lets: list[Let]) -> list[Decl]:
     return out
 
 
-def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
+#: the glyph table's kinds of a plain shape (its rows carry no further constraint)
+_ROW_KINDS = ("vector", "matrix", "scalar", "angle")
+
+
+def book_lets(rows: dict, lent: list | None = None) -> tuple[list[Let], list[str]]:
+    """The glyph table's rows a ``--book`` reading used, as plain declarations the second
+    semantics reads as it reads a ``--let``: a row of a plain shape its KIND (``angle``,
+    ``scalar``, ``vector``/``N-vector``, ``matrix``/``RxC matrix``), a notational atom its
+    definition (``\\mathbf{E} = \\mathrm{CPM}(\\mathbf{e})``). ``(lets, lent)``: ``lent``
+    the glyphs a module lends (their meaning is the module's, not handed over)."""
+    out, lent = [], list(lent or [])
+    for key, g in rows.items():
+        if g.kind == "module":
+            lent.append(key)
+            continue
+        if g.kind == "notation" and g.definition:
+            text = f"{key} = {g.definition}"
+        elif g.kind in _ROW_KINDS:
+            shape = tuple(g.shape or ())
+            text = f"{key}: " + (
+                g.kind if not shape or g.kind == "angle" else
+                ("vector" if shape[0] == 3 else f"{shape[0]}-vector") if shape[1:] in ((), (1,))
+                else "matrix" if shape == (3, 3) else f"{shape[0]}x{shape[1]} matrix")
+        else:
+            continue  # a --let, a --notation line, a free glyph: read as without --book
+        out += read_lets([text])
+    return out, lent
+
+
+def notation_lets(latex: str, lets: list[Let], name: str, used=()) -> list[Let]:
     """The lines of the notation ``name`` that declare a glyph the LaTeX or a model
-    mentions and no ``--let`` declares (its functions too), as plain declarations: the
-    second semantics reads their NAME, KIND and LaTeX as it reads a ``--let``."""
+    mentions, or that the reading ``used`` (glyph keys: ``T`` of ``\\mathrm{Ad}_T``, a
+    subscript the parse tree holds as a token), and no ``--let`` declares (its functions
+    too), as plain declarations: the second semantics reads their NAME, KIND and LaTeX as
+    it reads a ``--let``."""
     from rigidsym.latex.declgraph import glyph_keys
     from rigidsym.latex.notations import notation
 
@@ -81,8 +112,10 @@ def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
     out: list[Let] = []
     todo = [latex] + [x.latex for x in lets if x.latex]
     seen: set[str] = set()
+    first = set(used)
     while todo:
-        for key in glyph_keys(todo.pop()) - seen:
+        keys, first = glyph_keys(todo.pop()) | first, set()
+        for key in keys - seen:
             seen.add(key)
             if key in own:
                 continue
@@ -96,17 +129,26 @@ def notation_lets(latex: str, lets: list[Let], name: str) -> list[Let]:
 
 
 def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
-                modules=(), at=None) -> str:
+                modules=(), at=None, symbols=None, statement=None, rows=None) -> str:
     """The second semantics' word on ``verdict``: a note for the reading.
 
     Args:
         latex: the statement's LaTeX.
         let: its ``--let`` declarations as given (:func:`~rigidsym.latex.lets.read_lets`).
         verdict: the symbolic path's verdict.
-        notation, book, modules: a book's notation, a glyph table's section or modules
-            lending symbols: meanings the second semantics does not know (not applied).
+        notation: a book's notation: its lines for the glyphs used, read as ``--let``s.
+        book, modules: a glyph table's section or modules lending symbols: the glyph
+            table's rows the reading used (``rows``) are handed over as ``--let``s
+            (:func:`book_lets`); a module's symbol is the reader's meaning, so a check that
+            uses one is not cross-checked (said).
         at: the symbolic path's counterexample as plain data (:func:`given_point`), or
             ``None``: a does-not-hold must fail there too.
+        symbols, statement: the reader's glyph key -> book symbol map and its statement
+            (:class:`~rigidsym.latex.statement.Reading`): a ``verified`` the second
+            semantics refutes is located at its point (the smallest subtree whose values
+            differ); ``None``: not located.
+        rows: the reading's glyph key -> :class:`~rigidsym.latex.table.Glyph` (where each
+            glyph's meaning came from); needed with ``book`` or ``modules``.
 
     Returns:
         A note: what the second semantics found (or why it did not apply).
@@ -117,14 +159,19 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     """
     if verdict not in ("verified", "does-not-hold"):
         return ""
+    lent: list[str] = ["(no glyph rows given)"] if rows is None else []
+    extra: list[Let] = []
     if book or modules:
-        return ("second semantics: not applied (the meanings of --book and --module are the "
-                "reader's)")
+        extra, lent = book_lets(rows or {}, lent)
+    if lent:
+        return (f"second semantics: not applied ({', '.join(lent)}: a module's meaning, the "
+                f"reader's)")
     try:
-        lets = read_lets(let)
+        lets = read_lets(let) + extra
         lets += declared_lets(latex, lets)
         if notation:
-            lets += notation_lets(latex, lets, notation)
+            lets += notation_lets(latex, lets, notation, used={
+                k for k, g in (rows or {}).items() if g.kind != "free"})
         found = residuals(tree(latex), decls_of(lets), POINTS)
     except NotCovered as exc:
         if REFUSE_UNCOVERED:
@@ -138,7 +185,8 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     worst = max(found, key=lambda r: r.relative)
     if verdict == "verified" and worst.relative > VANISHES:
         raise Disagreement(_words(worst, latex, "verified, but the second semantics (mpmath, "
-                                                 "50 digits) finds the sides differ"))
+                                                 "50 digits) finds the sides differ")
+                           + _where_verified(worst, latex, lets, let, symbols, statement))
     if verdict == "does-not-hold" and worst.relative < FAILS:
         # a real that fails only beyond (-2, 2) (cos(θ/2) = √((1 + cos θ)/2) fails for
         # |θ| > π): more points, wider, before calling it a disagreement
@@ -159,12 +207,25 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
             f"(largest relative residual {float(worst.relative):.1e}){said}")
 
 
-def given_point(counterexample: dict | None, statement) -> list | None:
+def given_point(counterexample: dict | None, statement, symbols: dict | None = None
+                ) -> list | None:
     """The symbolic path's counterexample as plain data for the second semantics:
-    ``[(LaTeX of a book symbol, value)]``, a value a decimal string (60 digits) or rows of
-    them; each book symbol of the statement's model whose value the point fixes, and each
-    atom of the point that no model value holds (a free scalar, by its name). ``None``
-    when there is no point."""
+    ``[(LaTeX of a glyph, value)]``, a value a decimal string (60 digits) or rows of them.
+
+    Args:
+        counterexample: the symbolic path's (``point``: atom name -> exact value).
+        statement: the statement it was found for (its ``model``: book symbol -> value in
+            the atoms).
+        symbols: the reader's map, glyph key (the LaTeX the user wrote, normalised) -> book
+            symbol's name (:attr:`~rigidsym.latex.statement.Reading.symbols`): each glyph
+            whose symbol the point fixes (a model's value there, or an atom itself) is given
+            by its own LaTeX. Without it (or for a model symbol it does not name), a glyph
+            is named by the book printer's LaTeX of its symbol.
+
+    Returns:
+        The point (a :class:`GivenPoint`, the atoms kept beside it), or ``None`` when there
+        is no point.
+    """
     import sympy as sp
 
     from rigidsym.printing import notation as nt
@@ -174,7 +235,7 @@ def given_point(counterexample: dict | None, statement) -> list | None:
     found = GivenPoint()
     found.atoms = dict(counterexample["point"])
     pt = {k: sp.sympify(v) for k, v in counterexample["point"].items()}
-    out, held = [], set()
+    by_name = {s.name: s for s in statement.model}
 
     def plain(v):
         v = sp.N(v, 60)
@@ -183,19 +244,59 @@ def given_point(counterexample: dict | None, statement) -> list | None:
         return [[str(sp.N(x, 60)) for x in v.row(i)] for i in range(v.rows)] \
             if v.is_Matrix else str(v)
 
-    for s, v in statement.model.items():
-        atoms = {a for a in getattr(v, "free_symbols", ()) if a.name in pt}
-        held |= {a.name for a in atoms}
+    def value(name):
+        s = by_name.get(name)
+        if s is None:
+            return plain(pt[name]) if name in pt else None
+        v = sp.sympify(statement.model[s])
+        atoms = {a: pt[a.name] for a in getattr(v, "free_symbols", ()) if a.name in pt}
         try:
-            out.append((nt.latex(s), plain(sp.sympify(v).subs({a: pt[a.name] for a in atoms}))))
+            return plain(v.subs(atoms))
         except (ValueError, TypeError, AttributeError, sp.SympifyError):
-            continue  # a model the point does not fix: its glyph is drawn, and said so
+            return None  # a model the point does not fix: its glyph is drawn, and said so
+
+    out, named = [], set()
+    for key, name in (symbols or {}).items():
+        v = value(name)
+        if v is not None:
+            out.append((key, v))
+            named.add(name)
+    out += _rates(out, symbols or {})
+    held = set()
+    for s in statement.model:
+        v = sp.sympify(statement.model[s])
+        held |= {a.name for a in getattr(v, "free_symbols", ()) if a.name in pt}
+        if s.name not in named and value(s.name) is not None:
+            out.append((nt.latex(s), value(s.name)))
     for name, v in pt.items():
-        if name not in held and all(nt.latex(s) != nt.latex(sp.Symbol(name))
-                                    for s in statement.model):
+        if name not in held and name not in named and name not in by_name:
             out.append((nt.latex(sp.Symbol(name)), str(sp.N(v, 60))))
     found.extend(out)
     return found
+
+
+def _rates(given: list, symbols: dict) -> list:
+    """``\\dot X`` of each function of time the point gives with its body velocity: the
+    reader reads a rotation's (a transform's) rate as ``X [w]`` with ``w`` the glyph
+    ``X_{w}`` it adds (:meth:`~rigidsym.latex.transformer.book_notations.BookNotations.
+    velocity`); the second semantics is handed the rate itself, a plain matrix."""
+    import sympy as sp
+
+    from rigidsym.algebra import rigid_motions
+
+    values = dict(given)
+    out = []
+    for key in symbols:
+        w = values.get(f"{key}_{{w}}")
+        x = values.get(key)
+        if w is None or not isinstance(x, list):
+            continue
+        X = sp.Matrix([[sp.Float(v, 60) for v in row] for row in x])
+        W = rigid_motions.hat(sp.Matrix([[sp.Float(v, 60) for v in row] for row in w]))
+        dot = sp.N(X * sp.Matrix(W), 60)
+        out.append((f"\\dot{{{key}}}", [[str(dot[i, j]) for j in range(dot.cols)]
+                                         for i in range(dot.rows)]))
+    return out
 
 
 def _bare(text: str) -> str:
@@ -221,6 +322,13 @@ def _written_glyphs(t, decls) -> dict:
     return out
 
 
+def _written_tree(key: str, written: dict):
+    """The glyph ``key`` (a reader's key or a printer's LaTeX) as the user wrote it (by
+    :func:`_bare` text, as given or as parsed: ``{}^{A}`` is ``{}^A``), else as parsed."""
+    parsed = _side(tree(f"{key} = 0"))[0]
+    return written.get(_bare(key)) or written.get(_bare(text_of(parsed))) or parsed
+
+
 def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
     """A does-not-hold at the symbolic path's counterexample ``at``: each reading's
     residual must exceed :data:`AT_POINT` there (else :class:`Disagreement`, naming the
@@ -229,7 +337,7 @@ def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
     try:
         decls, t = decls_of(lets), tree(latex)
         written = _written_glyphs(t, decls)
-        given = [(written.get(_bare(k)) or _side(tree(f"{k} = 0"))[0], v) for k, v in at]
+        given = [(_written_tree(k, written), v) for k, v in at]
         found, drawn = residuals_at(t, decls, given)
     except Exception:  # noqa: BLE001 -- a point it cannot read or evaluate: fall back, said
         return ("; the symbolic path's counterexample could not be mapped onto it: checked at "
@@ -247,6 +355,46 @@ def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
     worst = min(found, key=lambda r: r.relative)
     return (f"; it fails at the symbolic path's counterexample too (relative residual "
             f"{float(worst.relative):.1e})")
+
+
+def _where_verified(worst, latex: str, lets, let, symbols, statement) -> str:
+    """A ``verified`` refuted at the second semantics' point ``worst.point`` (glyph LaTeX ->
+    value): the smallest subtree whose two values differ there (:func:`_where_they_differ`),
+    the point handed to the symbolic side as its atoms through the reader's ``symbols`` (a
+    symbol whose model is an atom or a matrix of atoms). "" when it cannot be located."""
+    import mpmath as mp
+    import sympy as sp
+
+    if not symbols or statement is None:
+        return ""
+    by_bare: dict = {}
+    for key, name in symbols.items():
+        by_bare.setdefault(_bare(key), []).append(name)
+    by_name = {s.name: s for s in statement.model}
+    pt, given = {}, []
+    try:
+        for text, v in worst.point.items():
+            names = by_bare.get(_bare(text), [])
+            if len(names) != 1 or isinstance(v, tuple):
+                continue  # two glyphs that read alike, or a motion: not handed over
+            rows = [[mp.nstr(x, 60) for x in row] for row in v.tolist()] \
+                if hasattr(v, "rows") else [[mp.nstr(v, 60)]]
+            value = sp.Matrix(rows)  # of strings: the 60 digits kept
+            plain = rows if hasattr(v, "rows") else rows[0][0]
+            model = by_name.get(names[0])
+            atoms = sp.Matrix(statement.model[model]) if model is not None and getattr(
+                statement.model[model], "is_Matrix", False) else sp.Matrix(
+                [[model if model is not None else sp.Symbol(names[0])]])
+            if atoms.shape != value.shape or not all(a.is_Symbol for a in atoms):
+                continue
+            pt.update({a.name: x for a, x in zip(atoms, sum(rows, []), strict=True)})
+            given.append((text, plain))
+        decls, t = decls_of(lets), tree(latex)
+        written = _written_glyphs(t, decls)
+        given = [(_written_tree(k, written), v) for k, v in given]
+    except Exception:  # noqa: BLE001 -- a point it cannot hand over: not located
+        return ""
+    return _where_they_differ(t, parsed_text(latex), decls, given, let, pt)
 
 
 def _words(r, latex: str, what: str) -> str:

@@ -123,7 +123,9 @@ class GlyphReader:
                                 models=self.model_rhs)
             except LatexError as exc:
                 self.choice_points.update(getattr(exc, "choice_points", {}))
-                extra = self._extra(exc.glyphs) if exc.construct == "shapes" else {}
+                # a glyph whose meaning a later row gives (a shape, or a --notation model that
+                # makes R_3(\\psi) an application): read again with it
+                extra = self._extra(exc.glyphs) if exc.construct in ("shapes", "apply") else {}
                 extra = {k: g for k, g in extra.items() if k not in (over or {})}
                 if extra:
                     self.over.update(extra)

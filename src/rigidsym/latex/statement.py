@@ -56,6 +56,8 @@ class Reading:
     others: list = field(default_factory=list)  # the other readings that type-check
     dropped: list = field(default_factory=list)  # (choices, why) of those that do not
     eq: object = None  # its registered Equation (declare_latex)
+    symbols: dict = field(default_factory=dict)  # glyph key (the LaTeX) -> book symbol's name
+    rows: dict = field(default_factory=dict)  # glyph key -> its Glyph (where its meaning came)
 
 
 
@@ -216,16 +218,27 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
 
 
 def _notation_functions(latex: str, lets: list[Let], table) -> list[Let]:
-    """The functions of the notation ``table`` (``R_X(\\theta) = ...``) whose NAME the LaTeX
-    mentions and no ``--let`` declares: read as that ``--let`` would be."""
+    """The functions of the notation ``table`` (``R_X(\\theta) = ...``) whose NAME the LaTeX,
+    a ``--let``'s model or a function so taken mentions, and no ``--let`` declares: read as
+    that ``--let`` would be (Diebel's ``R_{123}(\\phi,\\theta,\\psi) = R_1(\\phi)\\ldots``
+    given by ``--let`` takes the table's ``R_1(\\alpha)``)."""
     if table is None or not table.functions:
         return []
-    try:
-        used = glyph_keys(latex)
-    except LatexError:
-        return []  # the parse proper says why
     own = {x.key for x in lets}
-    return [x for x in table.functions if x.key in used and x.key not in own]
+    out: list[Let] = []
+    todo, seen = [latex] + [x.latex for x in lets if x.latex], set()
+    while todo:
+        try:
+            used = glyph_keys(todo.pop()) - seen
+        except LatexError:
+            continue  # the parse proper says why
+        seen |= used
+        for x in table.functions:
+            if x.key in used and x.key not in own:
+                own.add(x.key)
+                out.append(x)
+                todo.append(x.latex or "")
+    return out
 
 
 def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Reading:
@@ -264,8 +277,11 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
                      f"{notation.text(r.rhs)}" for r in printed)
     notes += list(dict.fromkeys(rd.notes + parsed.readings))  # each reading once
     st = Statement(printed, model, defines=defines, from_latex=True)
+    # the glyphs read (a --notation's kinds are all overrides, used or not)
+    used = {k: g for k, g in glyphs.items() if k in rd.glyphs or k in rd.used}
     return Reading(st, kind, text, notes, free,
-                   choices={k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points})
+                   choices={k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points},
+                   symbols={k: g.name for k, g in used.items() if g.name}, rows=used)
 
 
 def _relations(parsed) -> tuple[list[Rel], str]:
