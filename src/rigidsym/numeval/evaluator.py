@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import motion
+from rigidsym.numeval import motion, rates
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -365,7 +365,8 @@ class Evaluator:
             if inner.data == "bare":
                 inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
             d = self.env.decls.get(glyph_key(inner))
-            if d is not None and d.timed:  # the rate of a function of time
+            if d is not None and (d.timed or rates.is_model(d)):  # the rate of a function
+                # of time, or of a model (built on some: issue 63)
                 v = self._derivative(inner, _TIME_TREE, t)
                 if accent == "\\dot":
                     return v
@@ -627,6 +628,8 @@ class Evaluator:
     def _derivative(self, expr, var, t):
         key = glyph_key(var)
         d = self.env.decls.get(key)
+        if key == TIME and rates.declared(self.env.decls, glyph_key):  # issue 63
+            return rates.time_derivative(self, expr, glyph_key, DIGITS)
         if d is not None and (d.body is not None or d.params):
             raise NotCovered(f"a derivative by the model {text_of(var)}")
         x0 = V.scalar(self.value(var))
@@ -720,7 +723,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
     Raises:
         NotCovered: a construct, a kind or shapes this semantics does not evaluate.
     """
-    table = {glyph_key(d.name): d for d in decls}
+    table = {glyph_key(d.name): d for d in rates.with_rates(decls, glyph_key)}
     chains = [c for c in tree.children if isinstance(c, lark.Tree) and c.data == "chain"]
     if not chains:
         raise NotCovered("a statement with no relation")

@@ -36,6 +36,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
+from rigidsym.latex.kinematics import explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
     as_block,
@@ -54,6 +55,13 @@ TIMED = ", a function of time t"
 _TRANSPOSE = {"T", "\\top", "\\intercal", "\\mathsf{T}", "\\mathrm{T}"}
 SETS = {"SO(3)": ((3, 3), "rotation"), "SE(3)": ((4, 4), "transform"),
         "so(3)": ((3, 3), "so(3)"), "se(3)": ((4, 4), "se(3)")}
+
+
+def shape_words_of(shape) -> str:
+    """A glyph's shape in words (``()``: a scalar)."""
+    if not shape:
+        return "a scalar"
+    return f"a {shape[0]}-vector" if shape[1] == 1 else f"a {shape[0]}x{shape[1]} matrix"
 
 
 def sup_word(sup: str) -> str:
@@ -253,6 +261,15 @@ class BookNotationRules:
         g = self.overrides[key]
         self.glyphs[key] = g
         dkey = f"\\dot{{{key}}}"
+        declared = self.overrides.get(dkey)
+        if declared is not None and declared.kind == "model":  # --let '\dot{X} = ...'
+            if tuple(declared.shape) != tuple(g.shape):
+                raise LatexError(f"{dkey}, the rate of {key}, is {shape_words_of(declared.shape)}"
+                                 f" by its --let; {key} is {shape_words_of(g.shape)}", "shapes")
+            self.glyphs[dkey] = declared
+            self._note(f"{dkey}: the rate of {key}, its --let model")
+            return sp.MatrixSymbol(declared.name, *declared.shape) if declared.shape else \
+                sp.Symbol(declared.name, real=True)
         if g.shape in ((3, 3), (4, 4)) and g.meaning.startswith(("rotation", "homogeneous")):
             n = 3 if g.shape == (3, 3) else 6
             w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
@@ -296,7 +313,28 @@ class BookNotationRules:
         self._note("d/dt: the product and chain rules over the symbols declared functions "
                    "of time")
         self._moving = self.models_of(set(timed))  # models of functions of time
-        return self._ddt(x, timed)
+        try:
+            return self._ddt(x, timed)
+        except (LatexError, TypeError, ValueError, AttributeError):
+            # an operator the product rule does not cover ([x]_\times, a power, a norm, a
+            # fraction, a function): entry by entry along the rates (issue 63)
+            self._note("d/dt: taken entry by entry, the chain rule along the rates of the "
+                       "functions of time")
+            return explicit_rate(x, timed, self._moving, self.velocity)
+
+    def model_rate(self, key: str):
+        """``\\dot X`` of a model ``X`` built on functions of time (``--let 'C = ...'`` in
+        ``\\mathbf{q}(t)``): d/dt of its value (issue 63); ``None`` for any other X."""
+        g = self.overrides.get(key)
+        if g is None or g.kind != "model" or f"\\dot{{{key}}}" in self.overrides:
+            return None
+        timed = {h.name: k for k, h in self.overrides.items() if self.timed(k)}
+        if not timed or g.name not in self.models_of(set(timed)):
+            return None
+        self.glyphs[key] = g
+        self._note(f"\\dot{{{key}}}: the time derivative of the model {key}")
+        sym = sp.MatrixSymbol(g.name, *g.shape) if g.shape else sp.Symbol(g.name, real=True)
+        return self.time_derivative(sym)
 
     def _ddt(self, x, timed):
         """d/dt of ``x``; a model whose value mentions a function of time (``--let 'Y =

@@ -92,6 +92,10 @@ class GlyphRules:
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
             return self.velocity(inner.key, inner.value)
+        if accent == "\\dot" and not items[2:] and not inner.accent:  # of a model (issue 63)
+            rate = self.model_rate(inner.key)
+            if rate is not None:
+                return rate
         self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
         return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
                              else accent, inner)
