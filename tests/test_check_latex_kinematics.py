@@ -128,7 +128,11 @@ def test_the_families_hold_by_numpy_and_their_slips_do_not():
             assert (residual(c_of, rate, x0) < 1e-8) == holds
 
 
-@pytest.mark.parametrize("family", sorted(FAMILIES))
+_SLOWER = {"MRP", "3-1-3 angles"}  # in the slow run only (the README's command stays short)
+
+
+@pytest.mark.parametrize("family", [pytest.param(f, marks=pytest.mark.slow) if f in _SLOWER
+                                    else f for f in sorted(FAMILIES)])
 def test_a_kinematic_equation_is_verified_within_ten_seconds(family):
     latex, lets, _ = FAMILIES[family]
     t0 = time.perf_counter()
