@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import motion, rates
+from rigidsym.numeval import motion, names, rates
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -77,6 +77,7 @@ def text_of(t) -> str:
 def glyph_key(t) -> str:
     """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
     parse alike)."""
+    t = names.canonical(t)  # \dot{\Omega}_1 is \dot{\Omega_1} (issue 63)
     if isinstance(t, lark.Token):
         # bold by any macro is one glyph, as the books and the reader take it
         return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",
@@ -314,6 +315,8 @@ class Evaluator:
             return V.hat(v)
         if s == "\\vee":
             return V.vee(v)
+        if s == "\\times":  # Hughes' a^\times (issue 63)
+            return V.hat(v)
         try:
             n = int(s)
         except ValueError:
@@ -346,7 +349,7 @@ class Evaluator:
         return self.env.lookup(key, t)
 
     def r_accented(self, t):
-        return self._declared_only(t)
+        return self._declared_only(names.canonical(t))
 
     r_accented_bare = r_arrow = r_accented
 

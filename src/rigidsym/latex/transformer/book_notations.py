@@ -74,7 +74,7 @@ def sup_word(sup: str) -> str:
         return "-T"
     if s in ("*", "\\ast"):
         return "*"
-    if s in ("\\wedge", "\\vee", "\\curlywedge"):
+    if s in ("\\wedge", "\\vee", "\\curlywedge", "\\times"):
         return s[1:]
     return s
 
@@ -111,6 +111,12 @@ class BookNotationRules:
             self._note("x^\\wedge: the hat, so(3) of a 3-vector, se(3) of a 6-vector [w; v] "
                        "(MLS (2.4), Barfoot (7.7))")
             return rigid_motions.hat(x)
+        if sup == "times":  # Hughes' \epsilon^\times: the cross-product matrix (issue 63)
+            if matrix_shape(x) != (3, 1):
+                raise LatexError(f"^\\times of {shape_words(x)}: expected a 3-vector (its "
+                                 f"cross-product matrix)", "shapes")
+            self._note("x^\\times: the cross-product matrix [x]_\\times (Hughes)")
+            return Cpm(x)
         if sup == "vee":
             if matrix_shape(x) not in ((3, 3), (4, 4)):
                 raise LatexError(f"^\\vee of {shape_words(x)}: expected a 3x3 (so(3)) or 4x4 "

@@ -89,6 +89,11 @@ class GlyphRules:
         accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        if items[2:] and not inner.rest and not inner.accent and not inner.key.startswith("{}") \
+                and all(isinstance(r, tuple) for r in items[2:]):
+            # \dot{\Omega}_1 is \dot{\Omega_1}: TeX sets the same glyph (issue 63)
+            self.glyphs.pop(inner.key, None)
+            return self.accented([items[0], self._resolve(inner.base, list(items[2:]), None)])
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
             return self.velocity(inner.key, inner.value)
