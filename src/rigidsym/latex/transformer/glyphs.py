@@ -89,11 +89,18 @@ class GlyphRules:
         accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
-        if items[2:] and not inner.rest and not inner.accent and not inner.key.startswith("{}") \
-                and all(isinstance(r, tuple) for r in items[2:]):
-            # \dot{\Omega}_1 is \dot{\Omega_1}: TeX sets the same glyph (issue 63)
+        if not inner.accent and not inner.key.startswith("{}") and all(
+                isinstance(r, tuple) for r in [*inner.rest, *items[2:]]) \
+                and bool(inner.rest) != bool(items[2:]):
+            # \dot{\Omega_1} is \dot{\Omega}_1, TeX's one glyph, keyed as the glyph table
+            # writes it (\dot{\mathbf{h}}_{C}); the rate of a function of time Omega_1 either
+            # way (issue 63)
+            under = inner if inner.rest else self._resolve(inner.base, list(items[2:]), None)
+            if accent == "\\dot" and self.timed(under.key):
+                return self.velocity(under.key, under.value)
+            self.glyphs.pop(under.key, None)
             self.glyphs.pop(inner.key, None)
-            return self.accented([items[0], self._resolve(inner.base, list(items[2:]), None)])
+            return self._resolve(inner.base, list(under.rest), accent)
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
             return self.velocity(inner.key, inner.value)
