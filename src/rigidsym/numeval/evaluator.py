@@ -144,7 +144,7 @@ class Env:
             return sample(d.kind, self.rng)
         if key == TIME:  # the time of the functions of time, whatever the notation
             return sample("scalar", self.rng)
-        letter, bold, plain = _base_letter(tree)
+        letter, bold, plain = _base_letter(names.unlabelled(tree))  # sigma^S: as sigma
         if not self.free:
             raise NotCovered(f"the glyph {text_of(tree)}, which no declaration names (a "
                              f"notation's meaning)")

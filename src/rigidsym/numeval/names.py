@@ -1,13 +1,15 @@
 """Spellings of one glyph that the second semantics takes as one (issue 63): an accent over a
 bare letter followed by a subscript, ``\\dot{\\Omega}_1`` or ``\\dot\\Omega_1``, is the
 accent over the subscripted letter, ``\\dot{\\Omega_1}`` (TeX sets the same glyph, and the
-reader keys them alike). Imports lark and the standard library only."""
+reader keys them alike); a superscript label (``\\boldsymbol\\sigma^S``, ``x^{(k)}``) is
+part of the name, one spelling for ``^S`` and ``^{S}``, and the shape of a free labelled
+glyph is that of its letter. Imports lark and the standard library only."""
 
 from __future__ import annotations
 
 import lark
 
-__all__ = ["canonical"]
+__all__ = ["canonical", "unlabelled"]
 
 
 def canonical(t):
@@ -17,6 +19,10 @@ def canonical(t):
     Args:
         t: a parse subtree (``accented``, ``accented_bare``, or anything).
     """
+    if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
+            and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
+        label = "^{" + "".join(str(t.children[-1]).lstrip("^").split()).strip("{}") + "}"
+        return lark.Tree("glyph", [*t.children[:-1], lark.Token("SUPLABEL", label)])
     if not isinstance(t, lark.Tree) or t.data not in ("accented", "accented_bare") \
             or len(t.children) != 3:
         return t
@@ -31,3 +37,11 @@ def canonical(t):
     else:
         return t
     return lark.Tree("accented", [accent, lark.Tree("glyph", [base, sub])])
+
+
+def unlabelled(t):
+    """A glyph tree without its superscript label (its letter gives a free glyph's shape)."""
+    if isinstance(t, lark.Tree) and t.data == "glyph" and len(t.children) > 1 \
+            and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
+        return lark.Tree("glyph", t.children[:-1])
+    return t

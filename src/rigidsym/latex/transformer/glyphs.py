@@ -81,6 +81,8 @@ class GlyphRules:
         return core
 
     def glyph(self, items):
+        items = [label_key(str(i)) if isinstance(i, lark.Token) and i.type == "SUPLABEL"
+                 else i for i in items]
         if isinstance(items[0], lark.Token) and items[0].type == "LEFT_INDEX":
             return self._resolve(items[1], items[2:], None, pre=index_key(str(items[0])))
         return self._resolve(items[0], items[1:], None)
@@ -214,6 +216,11 @@ class GlyphRules:
             self.readings.append(f"{key} read as the row {g.name}^T (per-id note)")
             return sp.MatrixSymbol(g.name, *g.shape).T
         return sp.MatrixSymbol(g.name, *g.shape)
+
+
+def label_key(token: str) -> str:
+    """A superscript label in one spelling: ``^S``, ``^{ S }`` -> ``^{S}``; ``^{(k)}``."""
+    return "^{" + "".join(token.lstrip("^").split()).strip("{}") + "}"
 
 
 @dataclass(frozen=True)
