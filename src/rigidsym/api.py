@@ -166,8 +166,13 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.statement import declare_latex
 
+    from rigidsym.latex.respell import declared_e
+
     _repair_args(repairs, repair_budget)
+    latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power (issue 63)
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
+    if respelt:
+        reading.notes.insert(0, respelt)
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
                          repair_seconds=_seconds(repair_seconds)))
     if reading.others:  # several readings type-check: a verdict only when all agree
