@@ -164,9 +164,8 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                  repair_seconds=REPAIR_SECONDS):
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI)."""
     from rigidsym.checking.checker import check as _check
-    from rigidsym.latex.statement import declare_latex
-
     from rigidsym.latex.respell import declared_e
+    from rigidsym.latex.statement import declare_latex
 
     _repair_args(repairs, repair_budget)
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power (issue 63)
