@@ -165,6 +165,13 @@ def _key(name: str, decl: str) -> str:
     star = re.fullmatch(r"(.*?)\s*\^\s*(?:\*|\{\s*\*\s*\}|\\ast|\{\s*\\ast\s*\})", name)
     if star and star.group(1):  # {}^B X_A^{*}: a starred name of its own (issue 52)
         return _key(star.group(1), decl) + "^{*}"
+    ranged = re.fullmatch(r"(.+?)_\{\s*(\d+)\s*:\s*(\d+)\s*\}", name.strip())
+    if ranged:  # q_{1:3}: entries of q, read so in the LaTeX (issue 63: said, not "one symbol")
+        base, lo, hi = ranged.groups()
+        raise BadInput(f"--let '{decl}': {name.strip()} is entries {lo} to {hi} of {base}, "
+                       f"not a symbol of its own: declare {base} (e.g. --let '{base}: "
+                       f"{max(int(hi), 4)}-vector', or its model) and {name.strip()} is read "
+                       f"from it")
     try:
         p = parse_latex(f"{name} = 0", None)
     except LatexError as exc:

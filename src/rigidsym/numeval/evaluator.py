@@ -356,7 +356,7 @@ class Evaluator:
     def r_base(self, t):  # Ad_T: a bare base
         return self.r_glyph(lark.Tree("glyph", [t]))
 
-    r_calbase = r_base
+    r_calbase = r_fontbase = r_base
 
     def _declared_only(self, t):
         key = glyph_key(t)

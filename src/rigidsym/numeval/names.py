@@ -40,8 +40,13 @@ def canonical(t):
 
 
 def unlabelled(t):
-    """A glyph tree without its superscript label (its letter gives a free glyph's shape)."""
+    """A glyph tree as the letter that gives a free glyph's shape: without its superscript
+    label, and a font that only names (``\\mathsf{R}``) as the plain letter."""
     if isinstance(t, lark.Tree) and t.data == "glyph" and len(t.children) > 1 \
             and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
-        return lark.Tree("glyph", t.children[:-1])
+        t = lark.Tree("glyph", t.children[:-1])
+    if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
+            and isinstance(t.children[0], lark.Tree) and t.children[0].data == "fontbase":
+        t = lark.Tree("glyph", [lark.Tree("base", t.children[0].children[-1:]),
+                                *t.children[1:]])
     return t

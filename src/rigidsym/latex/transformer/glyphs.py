@@ -69,7 +69,7 @@ class GlyphRules:
         core = {"bold": f"\\mathbf{{{letter}}}" if not letter.startswith("\\")
                 else f"\\boldsymbol{{{letter}}}",
                 "plain": letter, "zero": "\\mathbf{0}", "one": "\\mathbf{1}",
-                "cal": f"\\mathcal{{{letter}}}"}[kind]
+                "cal": f"\\mathcal{{{letter}}}", "font": letter}[kind]
         if accent:
             core = f"{accent}{{{core}}}"
         core = pre + core

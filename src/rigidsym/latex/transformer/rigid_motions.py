@@ -192,6 +192,9 @@ class RigidMotionRules:
     def calbase(self, items):
         return ("cal", str(items[0]))
 
+    def fontbase(self, items):  # \mathsf{R}: a plain letter's conventions, its own name
+        return ("font", f"{items[0]}{{{items[1]}}}")
+
     def bare(self, items):
         return ("plain", str(items[0]))
 
