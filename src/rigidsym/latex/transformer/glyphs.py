@@ -100,8 +100,8 @@ class GlyphRules:
             under = inner if inner.rest else self._resolve(inner.base, list(items[2:]), None)
             if accent == "\\dot" and self.timed(under.key):
                 return self.velocity(under.key, under.value)
-            self.glyphs.pop(under.key, None)
-            self.glyphs.pop(inner.key, None)
+            self._unuse(under.key)
+            self._unuse(inner.key)
             return self._resolve(inner.base, list(under.rest), accent)
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
@@ -110,7 +110,7 @@ class GlyphRules:
             rate = self.model_rate(inner.key)
             if rate is not None:
                 return rate
-        self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
+        self._unuse(inner.key)  # only the accented glyph is a symbol here
         return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
                              else accent, inner)
 
@@ -203,7 +203,18 @@ class GlyphRules:
         return GlyphKey(key, base, rest, accent,
                          sp.ImmutableMatrix([[v[i, 0]] for i in range(lo - 1, hi)]))
 
+    def _unuse(self, key) -> None:
+        """The glyph ``key`` read under an accent: no use of its own, unless the LaTeX uses
+        it elsewhere too (``Q(\\mathbf{q})`` beside ``\\bar Q(\\mathbf{p})``: before
+        issue 63 the bar's Q took Q's use away, "Q does not occur")."""
+        uses = self.__dict__.setdefault("_uses", {})
+        uses[key] = uses.get(key, 1) - 1
+        if uses[key] <= 0:
+            self.glyphs.pop(key, None)
+
     def _symbol(self, key, base):
+        uses = self.__dict__.setdefault("_uses", {})
+        uses[key] = uses.get(key, 0) + 1
         g = self.overrides.get(key)
         if g is None and self.section is not None:  # None: no glyph table (a reader's LaTeX)
             g = lookup(key, self.section)
