@@ -346,12 +346,16 @@ _TERMINALS = {"LETTER": "a letter", "GREEK": "a Greek letter", "NUMBER": "a numb
               "CONDITION": "\\text{for ...}"}
 
 
+_FIRST = {"LETTER", "GREEK", "NUMBER", "BOLD", "RELOP", "ACCENT", "FUNC", "SUPTOKEN",
+          "SUBATOM", "BEGIN_MATRIX", "_SEP", "LEFT_OPEN", "LEFT_NORM"}
+
+
 def _expected(names) -> str:
     """What the parser expected, in the LaTeX a reader writes (a literal as written, a
     class of tokens in words), not the grammar's terminal names."""
     out = []
     names = [n for n in names if n not in _AlignedLayout.always_accept] or list(names)
-    for n in sorted(names):
+    for n in sorted(names, key=lambda n: (n not in _FIRST, n)):  # the common classes first
         try:
             pattern = parser().get_terminal(n).pattern
         except KeyError:
