@@ -166,6 +166,13 @@ def test_a_declared_rate_makes_its_symbol_a_function_of_time():
     assert any("the rate of \\mathbf{q}, its --let model" in n for n in r.model), r.model
 
 
+def test_a_declared_rate_alone_makes_its_symbol_a_function_of_time():
+    """No --let for q at all: q a function of time of its conventional shape (a 3-vector)."""
+    latex, lets, _ = FAMILIES["MRP"]
+    r = rigidsym.check_latex(latex, let=[x for x in lets if "(t)" not in x], repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+
+
 def test_a_free_rate_leaves_the_kinematic_equation_false():
     """Without the rate's model, q̇ is free: Ċ = -[ω]C then fails (ω unrelated to q̇)."""
     latex, lets, _ = FAMILIES["CRP"]

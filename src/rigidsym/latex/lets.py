@@ -26,7 +26,7 @@ from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.book_notations import SETS
 
-__all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets"]
+__all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets", "rated_lets"]
 
 #: the kinds a ``--let NAME: KIND`` takes, in words (``n``, ``m``: sizes, e.g. ``6-vector``,
 #: ``4x4 matrix``)
@@ -268,6 +268,25 @@ def _one_let(d: str) -> Let:
     raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
                    f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "
                    f"\\mathrm{{CPM}}(\\mathbf{{e}})')")
+
+
+def rated_lets(lets: list) -> list:
+    """The symbols whose rate a ``--let '\\dot{X} = ...'`` declares and no ``--let``
+    declares: each a function of time of the book's conventional shape (bold lower-case a
+    3-vector, bold capital 3x3, else a scalar; issue 63), as ``--let 'X(t): KIND'``."""
+    own = {x.key for x in lets}
+    out = []
+    for x in lets:
+        if not x.latex or x.params or not (x.key.startswith("\\dot{") and x.key.endswith("}")):
+            continue
+        k = x.key[5:-1]
+        if k in own:
+            continue
+        bold = re.match(r"\\(mathbf|boldsymbol)\{\\?([A-Za-z]+)\}", k)
+        kind = "scalar" if not bold else ("matrix" if bold.group(2)[0].isupper() else "vector")
+        out.append(Let(f"{k}(t): {kind}", f"{k}(t)", k, kind=kind))
+        own.add(k)
+    return out
 
 
 # --------------------------------------------------------------------- from the LaTeX

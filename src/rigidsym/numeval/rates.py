@@ -36,10 +36,7 @@ def _rate_target(d, key_of) -> str:
         return ""
     if t.data in ("accented", "accented_bare") and len(t.children) == 2 \
             and str(t.children[0]).strip() == "\\dot":
-        inner = t.children[1]
-        if inner.data == "bare":
-            inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
-        return key_of(inner)
+        return key_of(_under_dot(t))
     return ""
 
 
@@ -51,9 +48,34 @@ def with_rates(decls: list, key_of) -> list:
         decls: the declarations (:class:`rigidsym.numeval.evaluator.Decl`).
         key_of: the evaluator's glyph key of a tree.
     """
-    rated = {_rate_target(d, key_of) for d in decls} - {""}
-    return [dataclasses.replace(d, timed=True) if key_of(d.name) in rated and d.kind
-            and not d.timed else d for d in decls]
+    rated = {_rate_target(d, key_of): d for d in decls}
+    rated.pop("", None)
+    out = [dataclasses.replace(d, timed=True) if key_of(d.name) in rated and d.kind
+           and not d.timed else d for d in decls]
+    own = {key_of(d.name) for d in decls}
+    for key, d in rated.items():  # a rate alone: its symbol of the book's conventional shape
+        if key not in own:
+            inner = _under_dot(d.name)
+            out.append(type(d)(inner, (), _conventional(inner), None, f"{key}(t)", True))
+    return out
+
+
+def _under_dot(t):
+    inner = t.children[1]
+    if inner.data == "bare":
+        inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
+    return inner
+
+
+def _conventional(t) -> str:
+    """The kind of a free glyph by the book's convention: bold lower-case a vector, bold
+    capital a matrix, anything else a scalar."""
+    base = t.children[0] if t.data == "glyph" and t.children else None
+    toks = [str(c) for c in base.children] if isinstance(base, lark.Tree) \
+        and base.data == "base" else []
+    if len(toks) == 2:
+        return "matrix" if toks[-1].lstrip("\\")[:1].isupper() else "vector"
+    return "scalar"
 
 
 def declared(decls: dict, key_of) -> dict:
