@@ -18,12 +18,14 @@ The result is :class:`Rate`: the explicit derivative, printed as ``d/dt(X)``.
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from rigidsym.algebra.rigid_motions import LieOp
 from rigidsym.latex.shapes import LatexError, matrix_shape
 
-__all__ = ["Rate", "explicit_rate", "expand_models"]
+__all__ = ["Rate", "explicit_rate", "expand_models", "dot_key", "rate_target"]
 
 
 class Rate(LieOp):
@@ -134,3 +136,33 @@ def _diff(e, var):
     if isinstance(e, sp.MatrixBase):
         return e.applyfunc(lambda z: sp.diff(z, var))
     return sp.diff(e, var)
+
+
+def _closing(text: str, start: int) -> int:
+    """The index of the ``}`` that closes the ``{`` at ``start`` (-1 if none)."""
+    depth = 0
+    for i in range(start, len(text)):
+        depth += {"{": 1, "}": -1}.get(text[i], 0)
+        if depth == 0:
+            return i
+    return -1
+
+
+def rate_target(key: str) -> str:
+    """The glyph key ``X`` whose rate the key ``\\dot{X}`` names (``\\dot{\\Omega}_{1}``:
+    ``\\Omega_{1}``, the reader's one spelling of both), else ``""``."""
+    if not key.startswith("\\dot{"):
+        return ""
+    j = _closing(key, 4)
+    rest = key[j + 1:] if j > 0 else "?"
+    if rest and not re.fullmatch(r"(_\{[^{}]*\})+", rest):
+        return ""
+    return key[5:j] + rest
+
+
+def dot_key(key: str) -> str:
+    """The reader's key of ``\\dot X`` for the glyph key ``X`` (``\\Omega_{1}``:
+    ``\\dot{\\Omega}_{1}``, as :func:`rate_target` reads it back)."""
+    m = re.fullmatch(r"(\\(?:mathbf|boldsymbol|mathcal|math(?:sf|tt|it))\{[^{}]*\}|\\?[A-Za-z]+)"
+                     r"((?:_\{[^{}]*\})+)", key)
+    return f"\\dot{{{m.group(1)}}}{m.group(2)}" if m else f"\\dot{{{key}}}"

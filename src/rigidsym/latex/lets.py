@@ -22,6 +22,7 @@ import sympy as sp
 from rigidsym.algebra import symbols as _sym
 from rigidsym.algebra.rigid_motions import Ad, hat, transform
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.kinematics import rate_target
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.book_notations import SETS
@@ -277,10 +278,8 @@ def rated_lets(lets: list) -> list:
     own = {x.key for x in lets}
     out = []
     for x in lets:
-        if not x.latex or x.params or not (x.key.startswith("\\dot{") and x.key.endswith("}")):
-            continue
-        k = x.key[5:-1]
-        if k in own:
+        k = rate_target(x.key) if x.latex and not x.params else ""
+        if not k or k in own:
             continue
         bold = re.match(r"\\(mathbf|boldsymbol)\{\\?([A-Za-z]+)\}", k)
         kind = "scalar" if not bold else ("matrix" if bold.group(2)[0].isupper() else "vector")

@@ -11,6 +11,7 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.kinematics import rate_target
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError, matrix_shape, name_from_key
@@ -50,8 +51,7 @@ class GlyphReader:
         self.choices: dict[str, str] = {}  # X(y): "product" or "apply" (issue 52, item 2)
         self.choice_points: dict[str, str] = {}  # the X(y) met, by key: the argument
         # a declared rate --let '\\dot{X} = ...' makes X a function of time (issue 63)
-        rated = {x.key[5:-1] for x in lets if x.latex and not x.params
-                 and x.key.startswith("\\dot{") and x.key.endswith("}")}
+        rated = {rate_target(x.key) for x in lets if x.latex and not x.params}
         for x in lets + [x for x in (notation.lets if notation else ())
                          if x.kind and x.key not in self.declared]:
             if x.kind:

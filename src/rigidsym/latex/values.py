@@ -71,7 +71,9 @@ def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
 
 def _rate_of(key: str) -> str:
     """``X`` of a NAME ``\\dot{X}`` (the rate of X), else ``""``."""
-    return key[5:-1] if key.startswith("\\dot{") and key.endswith("}") else ""
+    from rigidsym.latex.kinematics import rate_target
+
+    return rate_target(key)
 
 
 def _function_model(rd: GlyphReader, x: Let, values: dict) -> None:

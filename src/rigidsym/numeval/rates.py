@@ -19,7 +19,7 @@ import dataclasses
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import motion
+from rigidsym.numeval import motion, names
 from rigidsym.numeval import values as V
 from rigidsym.numeval.values import NotCovered
 
@@ -31,7 +31,7 @@ _TIME = "glyph(base(t))"
 
 def _rate_target(d, key_of) -> str:
     """The glyph key of ``X`` when ``d`` declares ``\\dot X = ...`` (a model), else ``""``."""
-    t = d.name
+    t = names.canonical(d.name)  # \dot\theta_1 is \dot{\theta_1}
     if d.body is None or d.params or not isinstance(t, lark.Tree):
         return ""
     if t.data in ("accented", "accented_bare") and len(t.children) == 2 \
@@ -55,7 +55,7 @@ def with_rates(decls: list, key_of) -> list:
     own = {key_of(d.name) for d in decls}
     for key, d in rated.items():  # a rate alone: its symbol of the book's conventional shape
         if key not in own:
-            inner = _under_dot(d.name)
+            inner = _under_dot(names.canonical(d.name))
             out.append(type(d)(inner, (), _conventional(inner), None, f"{key}(t)", True))
     return out
 

@@ -36,7 +36,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
-from rigidsym.latex.kinematics import explicit_rate
+from rigidsym.latex.kinematics import dot_key, explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
     as_block,
@@ -266,7 +266,7 @@ class BookNotationRules:
         X's shape (``\\dot\\theta``)."""
         g = self.overrides[key]
         self.glyphs[key] = g
-        dkey = f"\\dot{{{key}}}"
+        dkey = dot_key(key)
         declared = self.overrides.get(dkey)
         if declared is not None and declared.kind == "model":  # --let '\dot{X} = ...'
             if tuple(declared.shape) != tuple(g.shape):
@@ -332,7 +332,7 @@ class BookNotationRules:
         """``\\dot X`` of a model ``X`` built on functions of time (``--let 'C = ...'`` in
         ``\\mathbf{q}(t)``): d/dt of its value (issue 63); ``None`` for any other X."""
         g = self.overrides.get(key)
-        if g is None or g.kind != "model" or f"\\dot{{{key}}}" in self.overrides:
+        if g is None or g.kind != "model" or dot_key(key) in self.overrides:
             return None
         timed = {h.name: k for k, h in self.overrides.items() if self.timed(k)}
         if not timed or g.name not in self.models_of(set(timed)):

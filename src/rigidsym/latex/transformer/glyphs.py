@@ -98,10 +98,11 @@ class GlyphRules:
             # writes it (\dot{\mathbf{h}}_{C}); the rate of a function of time Omega_1 either
             # way (issue 63)
             under = inner if inner.rest else self._resolve(inner.base, list(items[2:]), None)
+            if under is not inner:
+                self._unuse(inner.key)  # \dot\theta_1: theta alone is no glyph of it
             if accent == "\\dot" and self.timed(under.key):
                 return self.velocity(under.key, under.value)
             self._unuse(under.key)
-            self._unuse(inner.key)
             return self._resolve(inner.base, list(under.rest), accent)
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
