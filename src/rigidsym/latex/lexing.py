@@ -240,7 +240,8 @@ def cross_chains(text: str) -> str | None:
     for m in _CHAIN_TOKENS.finditer(text):
         tok = m.group(0)
         if tok == "\\times" and not re.match(r"\s*\^", text[m.end():]) \
-                and not text[:m.start()].rstrip().endswith("_"):  # not v\times^*, [a]_\times
+                and not re.search(r"[_^]\s*\{?\s*$", text[:m.start()]):
+            # not v\times^*, [a]_\times, Hughes' a^\times, a^{\times} (issue 63)
             count[depth] = count.get(depth, 0) + 1
             if count[depth] == 2:
                 return text[start.get(depth, 0):m.end()].strip() + " ..."
