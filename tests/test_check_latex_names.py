@@ -54,6 +54,10 @@ def test_the_truth_of_the_name_cases_by_numpy():
     # fonts that name (before: "unknown macro \mathtt", "\mathsf{R} (a font) cannot be read")
     (r"\mathtt{R}^T\mathtt{R} = I", [r"\mathtt{R}: rotation"], "verified"),
     (r"\mathsf{R}\mathsf{R} = I", [r"\mathsf{R}: rotation"], "does-not-hold"),
+    # a left index before an accent (before: "unexpected \tilde (an accent)")
+    (r"{}^{G}\tilde r_{C} + \mathbf{0} = {}^G\tilde{r}_C", [r"{}^{G}\tilde r_{C}: vector"],
+     "verified"),
+    (r"{}^{G}\tilde r_{C} = -{}^G\tilde{r}_C", [r"{}^{G}\tilde r_{C}: vector"], "does-not-hold"),
     # a declared e before ^ is its power (before: "unexpected '2'")
     (r"e^2 = \mathbf{e}^T\mathbf{e}", [r"e = |\mathbf{e}|"], "verified"),
     (r"e^2 = 2\mathbf{e}^T\mathbf{e}", [r"e = |\mathbf{e}|"], "does-not-hold"),

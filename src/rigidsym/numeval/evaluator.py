@@ -351,7 +351,7 @@ class Evaluator:
     def r_accented(self, t):
         return self._declared_only(names.canonical(t))
 
-    r_accented_bare = r_arrow = r_accented
+    r_accented_bare = r_arrow = r_indexed_accent = r_accented
 
     def r_base(self, t):  # Ad_T: a bare base
         return self.r_glyph(lark.Tree("glyph", [t]))

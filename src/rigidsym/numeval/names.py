@@ -23,6 +23,11 @@ def canonical(t):
             and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
         label = "^{" + "".join(str(t.children[-1]).lstrip("^").split()).strip("{}") + "}"
         return lark.Tree("glyph", [*t.children[:-1], lark.Token("SUPLABEL", label)])
+    if isinstance(t, lark.Tree) and t.data == "indexed_accent":  # {}^{G}\tilde{r}_C
+        index, accent, letter, *rest = t.children
+        spelt = lark.Token("LEFT_INDEX", "".join(c for c in str(index) if c not in "{} \t"))
+        base = lark.Tree("base", list(letter.children)) if letter.data == "bare" else letter
+        return lark.Tree("indexed_accent", [spelt, accent, base, *rest])
     if not isinstance(t, lark.Tree) or t.data not in ("accented", "accented_bare") \
             or len(t.children) != 3:
         return t

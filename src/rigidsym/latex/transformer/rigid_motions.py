@@ -198,6 +198,15 @@ class RigidMotionRules:
     def bare(self, items):
         return ("plain", str(items[0]))
 
+    def indexed_accent(self, items):
+        """``{}^{G}\\tilde r_{C}``: a left index before an accented letter, one name (issue
+        63), keyed ``{}^{G}\\tilde{r}_{C}``."""
+        from rigidsym.latex.transformer.book_notations import index_key
+
+        base = ("plain", str(items[2].children[0])) if isinstance(items[2], lark.Tree) \
+            else items[2]
+        return self._resolve(base, list(items[3:]), str(items[1]), pre=index_key(str(items[0])))
+
     def accented_bare(self, items):
         inner = self._resolve(items[1], [], None)
         return self.accented([items[0], inner, *items[2:]])
