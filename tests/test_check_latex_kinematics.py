@@ -194,6 +194,15 @@ def test_a_free_rate_leaves_the_kinematic_equation_false():
      r"{(1+\mathbf{q}^T\mathbf{q})^2}", [r"\mathbf{q}(t): vector"], "does-not-hold"),
     (r"\frac{d}{dt}(\mathbf{R}[\mathbf{q}]_\times^2) = \dot{\mathbf{R}}[\mathbf{q}]_\times^2",
      [r"\mathbf{q}: vector", r"\mathbf{R}(t): rotation"], "verified"),
+    # the chain rule through partials of a matrix model (Diebel's Euler-angle rates; before:
+    # "an internal error at the construct ... (mul)", sympy's unhashable matrix)
+    (r"\dot{\mathbf{C}} = \dot\phi\frac{\partial \mathbf{C}}{\partial\phi} + \dot\theta"
+     r"\frac{\partial \mathbf{C}}{\partial\theta}", [r"\mathbf{C} = R_1(\phi)R_2(\theta)", R1, R2,
+                                                   r"\phi(t): angle", r"\theta(t): angle"],
+     "verified"),
+    (r"\dot{\mathbf{C}} = \dot\phi\frac{\partial \mathbf{C}}{\partial\phi}",
+     [r"\mathbf{C} = R_1(\phi)R_2(\theta)", R1, R2, r"\phi(t): angle", r"\theta(t): angle"],
+     "does-not-hold"),
     # Siciliano's \dot R = S(\omega) R of an elementary rotation, S a --let function
     (r"\dot{R} = S(\boldsymbol\omega) R",
      [r"R = R_z(\theta)", r"R_z(x) = \begin{bmatrix} \cos x & -\sin x & 0 \\ \sin x & \cos x"
