@@ -103,6 +103,7 @@ _REFUSED = [
      [r"\mathbf{C} = I_3", r"\dot{\mathbf{q}} = \boldsymbol\omega"]),
     (r"\mathbf{q}_{1:3} = \mathbf{q}_{1:3}", [r"\mathbf{q}_{1:3}: vector"]),
     (r"\boldsymbol\epsilon^\times = \boldsymbol\epsilon^T", [r"\boldsymbol\epsilon: matrix"]),
+    (r"\frac{d}{dt}e^{[\mathbf{q}]_\times} = 0", [r"\mathbf{q}(t): vector"]),
 ]
 _LEAKS = ("Error:", "object has no attribute", "unhashable", "Traceback", "MutableDense",
           "MatrixSymbol", "MatMul", "MatAdd", "ImmutableDense", "ShapeError", "Mix of Matrix",

@@ -110,10 +110,13 @@ def explicit_rate(x, timed: dict, models: dict, velocity):
     y = expand_models(x, models)
     try:
         e = explicit(y)
-    except Exception as exc:  # noqa: BLE001 - any operator's own failure, named below
-        raise LatexError(f"d/dt of {type(x).__name__ if not matrix_shape(x) else 'a matrix'}"
-                         f" the engine cannot write out entry by entry ({type(exc).__name__})",
-                         "shapes") from None
+    except Exception:  # noqa: BLE001 - any operator's own failure, named by its operator
+        ops = sorted({type(a).label or type(a).__name__ for a in sp.preorder_traversal(y)
+                      if isinstance(a, LieOp)}) or [type(x).__name__]
+        raise LatexError(f"d/dt of {'a matrix' if matrix_shape(x) else 'a scalar'} built with "
+                         f"{', '.join(ops)}, which cannot be written out entry by entry in the "
+                         f"functions of time: write it in closed form (e^{{[x]}} by Rodrigues' "
+                         f"formula, say) or declare its rate with a --let", "shapes") from None
     out = sp.zeros(*e.shape) if isinstance(e, sp.MatrixBase) else sp.Integer(0)
     for a in sorted(_atoms(y), key=lambda s: s.name):
         if a.name not in timed:
