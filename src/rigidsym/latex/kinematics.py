@@ -19,6 +19,7 @@ The result is :class:`Rate`: the explicit derivative, printed as ``d/dt(X)``.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 import sympy as sp
 
@@ -59,7 +60,7 @@ def _frozen(v):
     return v
 
 
-def expand_models(x, models: dict):
+def expand_models(x: sp.Basic, models: dict) -> sp.Basic:
     """``x`` with every symbol whose name ``models`` holds replaced by its model's value,
     through models built on models (a cycle is the declaration graph's to refuse; at most
     ``len(models) + 1`` rounds).
@@ -87,7 +88,8 @@ def _atoms(x) -> set:
                                            if type(s) is sp.Symbol}
 
 
-def explicit_rate(x, timed: dict, models: dict, velocity):
+def explicit_rate(x: sp.Basic, timed: dict, models: dict,
+                  velocity: Callable[[str, sp.Basic], sp.Basic]) -> sp.Basic:
     """d/dt of ``x`` along the rates of the functions of time.
 
     Args:

@@ -19,7 +19,7 @@ __all__ = ["declared_e"]
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
 
-def declared_e(latex: str, let):
+def declared_e(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: with a ``--let`` naming a plain ``e``, each ``e^`` respelt
     ``{e}^`` in the LaTeX and in every declaration (``note`` says so); else all unchanged
     and ``note`` is ``""``.

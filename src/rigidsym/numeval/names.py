@@ -12,7 +12,7 @@ import lark
 __all__ = ["canonical", "unlabelled"]
 
 
-def canonical(t):
+def canonical(t: object) -> object:
     """``t`` with an accent's trailing subscript moved under the accent; any other tree as
     it is.
 
@@ -44,7 +44,7 @@ def canonical(t):
     return lark.Tree("accented", [accent, lark.Tree("glyph", [base, sub])])
 
 
-def unlabelled(t):
+def unlabelled(t: object) -> object:
     """A glyph tree as the letter that gives a free glyph's shape: without its superscript
     label, and a font that only names (``\\mathsf{R}``) as the plain letter."""
     if isinstance(t, lark.Tree) and t.data == "glyph" and len(t.children) > 1 \

@@ -15,6 +15,7 @@ Imports lark, mpmath and the standard library only (the import-linter contract o
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
 
 import lark
 import mpmath as mp
@@ -40,7 +41,7 @@ def _rate_target(d, key_of) -> str:
     return ""
 
 
-def with_rates(decls: list, key_of) -> list:
+def with_rates(decls: list, key_of: Callable[[object], str]) -> list:
     """``decls`` with each symbol whose rate a ``--let '\\dot X = ...'`` declares marked a
     function of time (``timed``), as the reader marks it.
 
@@ -78,7 +79,7 @@ def _conventional(t) -> str:
     return "scalar"
 
 
-def declared(decls: dict, key_of) -> dict:
+def declared(decls: dict, key_of: Callable[[object], str]) -> dict:
     """The declared rates: glyph key of X -> the declaration of ``\\dot X``."""
     out = {}
     for d in decls.values():
@@ -88,13 +89,14 @@ def declared(decls: dict, key_of) -> dict:
     return out
 
 
-def is_model(d) -> bool:
+def is_model(d: object) -> bool:
     """``d`` is a ``--let NAME = LATEX`` model (no parameters): its ``\\dot`` is d/dt of its
     value."""
     return d is not None and d.body is not None and not d.params
 
 
-def time_derivative(ev, expr, key_of, digits: int):
+def time_derivative(ev: object, expr: lark.Tree, key_of: Callable[[object], str],
+                    digits: int) -> object:
     """d/dt of the subtree ``expr`` along the declared rates (see the module's text).
 
     Args:
@@ -102,6 +104,9 @@ def time_derivative(ev, expr, key_of, digits: int):
         expr: the parse subtree.
         key_of: the evaluator's glyph key of a tree.
         digits: the working precision (decimal digits); the step is ``10^(-digits/5)``.
+
+    Returns:
+        The derivative, of the value's shape (an mpmath scalar or matrix).
 
     Raises:
         NotCovered: a function of time with no motion of its kind, or a derivative of an
