@@ -311,12 +311,10 @@ class Evaluator:
                 raise NotCovered(f"the star of a value that is no 6x6 transform in "
                                  f"{text_of(t)!r}")
             return V.transpose(V.inverse(v))
-        if s == "\\wedge":
+        if s in ("\\wedge", "\\times"):  # Hughes' a^\times too (issue 63)
             return V.hat(v)
         if s == "\\vee":
             return V.vee(v)
-        if s == "\\times":  # Hughes' a^\times (issue 63)
-            return V.hat(v)
         try:
             n = int(s)
         except ValueError:
@@ -368,8 +366,7 @@ class Evaluator:
             if inner.data == "bare":
                 inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
             d = self.env.decls.get(glyph_key(inner))
-            if d is not None and (d.timed or rates.is_model(d)):  # the rate of a function
-                # of time, or of a model (built on some: issue 63)
+            if d is not None and (d.timed or rates.is_model(d)):  # or of a model (issue 63)
                 v = self._derivative(inner, _TIME_TREE, t)
                 if accent == "\\dot":
                     return v
