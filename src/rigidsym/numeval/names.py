@@ -7,6 +7,8 @@ glyph is that of its letter. Imports lark and the standard library only."""
 
 from __future__ import annotations
 
+import re
+
 import lark
 
 __all__ = ["canonical", "unlabelled"]
@@ -25,7 +27,8 @@ def canonical(t: object) -> object:
         return lark.Tree("glyph", [*t.children[:-1], lark.Token("SUPLABEL", label)])
     if isinstance(t, lark.Tree) and t.data == "indexed_accent":  # {}^{G}\tilde{r}_C
         index, accent, letter, *rest = t.children
-        spelt = lark.Token("LEFT_INDEX", "".join(c for c in str(index) if c not in "{} \t"))
+        plain = re.sub(r"\{([^{}]+)\}", r"\1", "".join(str(index).split()))  # {}^{G}: {}^G
+        spelt = lark.Token("LEFT_INDEX", plain)
         base = lark.Tree("base", list(letter.children)) if letter.data == "bare" else letter
         return lark.Tree("indexed_accent", [spelt, accent, base, *rest])
     if not isinstance(t, lark.Tree) or t.data not in ("accented", "accented_bare") \
