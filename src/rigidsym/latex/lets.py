@@ -22,11 +22,12 @@ import sympy as sp
 from rigidsym.algebra import symbols as _sym
 from rigidsym.algebra.rigid_motions import Ad, hat, transform
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.kinematics import rate_target
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.book_notations import SETS
 
-__all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets"]
+__all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets", "rated_lets"]
 
 #: the kinds a ``--let NAME: KIND`` takes, in words (``n``, ``m``: sizes, e.g. ``6-vector``,
 #: ``4x4 matrix``)
@@ -165,6 +166,13 @@ def _key(name: str, decl: str) -> str:
     star = re.fullmatch(r"(.*?)\s*\^\s*(?:\*|\{\s*\*\s*\}|\\ast|\{\s*\\ast\s*\})", name)
     if star and star.group(1):  # {}^B X_A^{*}: a starred name of its own (issue 52)
         return _key(star.group(1), decl) + "^{*}"
+    ranged = re.fullmatch(r"(.+?)_\{\s*(\d+)\s*:\s*(\d+)\s*\}", name.strip())
+    if ranged:  # q_{1:3}: entries of q, read so in the LaTeX (issue 63: said, not "one symbol")
+        base, lo, hi = ranged.groups()
+        raise BadInput(f"--let '{decl}': {name.strip()} is entries {lo} to {hi} of {base}, "
+                       f"not a symbol of its own: declare {base} (e.g. --let '{base}: "
+                       f"{max(int(hi), 4)}-vector', or its model) and {name.strip()} is read "
+                       f"from it")
     try:
         p = parse_latex(f"{name} = 0", None)
     except LatexError as exc:
@@ -261,6 +269,23 @@ def _one_let(d: str) -> Let:
     raise BadInput(f"--let '{d}': expected 'NAME: KIND' (e.g. '\\mathbf{{Q}}: "
                    f"rotation') or 'NAME = LATEX' (e.g. '\\mathbf{{E}} = "
                    f"\\mathrm{{CPM}}(\\mathbf{{e}})')")
+
+
+def rated_lets(lets: list) -> list:
+    """The symbols whose rate a ``--let '\\dot{X} = ...'`` declares and no ``--let``
+    declares: each a function of time of the book's conventional shape (bold lower-case a
+    3-vector, bold capital 3x3, else a scalar; issue 63), as ``--let 'X(t): KIND'``."""
+    own = {x.key for x in lets}
+    out = []
+    for x in lets:
+        k = rate_target(x.key) if x.latex and not x.params else ""
+        if not k or k in own:
+            continue
+        bold = re.match(r"\\(mathbf|boldsymbol)\{\\?([A-Za-z]+)\}", k)
+        kind = "scalar" if not bold else ("matrix" if bold.group(2)[0].isupper() else "vector")
+        out.append(Let(f"{k}(t): {kind}", f"{k}(t)", k, kind=kind))
+        own.add(k)
+    return out
 
 
 # --------------------------------------------------------------------- from the LaTeX

@@ -240,7 +240,8 @@ def cross_chains(text: str) -> str | None:
     for m in _CHAIN_TOKENS.finditer(text):
         tok = m.group(0)
         if tok == "\\times" and not re.match(r"\s*\^", text[m.end():]) \
-                and not text[:m.start()].rstrip().endswith("_"):  # not v\times^*, [a]_\times
+                and not re.search(r"[_^]\s*\{?\s*$", text[:m.start()]):
+            # not v\times^*, [a]_\times, Hughes' a^\times, a^{\times} (issue 63)
             count[depth] = count.get(depth, 0) + 1
             if count[depth] == 2:
                 return text[start.get(depth, 0):m.end()].strip() + " ..."
@@ -312,11 +313,23 @@ def tree(latex: str):
             token = token if token.startswith("\\") else str(exc.token)
             what = f"{token} ({construct})" if construct else repr(str(exc.token))
             width = len(token)
-        raise LatexError(f"unexpected {what} at position {pos}:\n{caret(text, pos, width)}\n"
-                         f"  expected one of: {expected}", "syntax") from None
+        raise LatexError(f"unexpected {what} at position {pos}:\n{caret(text, pos, width)}"
+                         f"{_expected_line(expected, text[:pos])}", "syntax") from None
     except lark.UnexpectedEOF as exc:
-        raise LatexError(f"unexpected end of input; expected one of: "
-                         f"{_expected(exc.expected)}", "syntax") from None
+        raise LatexError(f"unexpected end of input{_expected_line(_expected(exc.expected), text)}",
+                         "syntax") from None
+
+
+def _expected_line(expected: str, before: str) -> str:
+    """What the parser expected, as the message's last line; never an empty list (issue 63:
+    the construct is named instead), with the reason where the text before says it (a
+    plain ``e^`` is the exponential)."""
+    line = f"\n  expected one of: {expected}" if expected else \
+        "\n  (nothing can follow here: the construct before it is complete)"
+    if re.search(r"(?<![\\A-Za-z{])e\s*\^\s*$", before):
+        line += ("\n  e^ is the exponential e^{...}; for a power of a symbol e, declare it "
+                 "(--let 'e: scalar' or its model) and e^2 is its square")
+    return line
 
 
 _TERMINALS = {"LETTER": "a letter", "GREEK": "a Greek letter", "NUMBER": "a number",
@@ -324,7 +337,18 @@ _TERMINALS = {"LETTER": "a letter", "GREEK": "a Greek letter", "NUMBER": "a numb
               "FUNC": "a function (\\sin ...)", "BEGIN_MATRIX": "\\begin{bmatrix}",
               "LEFT_OPEN": "\\left(", "RIGHT_CLOSE": "\\right)", "LEFT_NORM": "\\left\\|",
               "RIGHT_NORM": "\\right\\|", "LEFT_ABS": "\\left|", "RIGHT_ABS": "\\right|",
-              "SUBATOM": "a subscript", "SUPTOKEN": "a superscript", "_SEP": ", or \\quad"}
+              "SUBATOM": "a subscript", "SUPTOKEN": "a superscript", "_SEP": ", or \\quad",
+              "SUPLABEL": "a superscript label (^S)", "PRIMES": "a prime",
+              "SUBRANGE": "a range of entries (1:3)", "SUBSIGN": "+ or -",
+              "LEFT_INDEX": "a left index ({}^A)", "BIG_OPEN": "\\bigl(",
+              "BIG_CLOSE": "\\bigr)", "TIMES_POST": "\\times", "TIMES_DUAL": "\\times^*",
+              "DFRAC": "\\frac{d}{d...}", "EXP_E": "e^", "SUPCONTENT": "a superscript",
+              "_ARGS_OPEN": "(", "DECLARE": "a declaration (\\in SO(3))",
+              "CONDITION": "\\text{for ...}"}
+
+
+_FIRST = {"LETTER", "GREEK", "NUMBER", "BOLD", "RELOP", "ACCENT", "FUNC", "SUPTOKEN",
+          "SUBATOM", "BEGIN_MATRIX", "_SEP", "LEFT_OPEN", "LEFT_NORM"}
 
 
 def _expected(names) -> str:
@@ -332,7 +356,7 @@ def _expected(names) -> str:
     class of tokens in words), not the grammar's terminal names."""
     out = []
     names = [n for n in names if n not in _AlignedLayout.always_accept] or list(names)
-    for n in sorted(names):
+    for n in sorted(names, key=lambda n: (n not in _FIRST, n)):  # the common classes first
         try:
             pattern = parser().get_terminal(n).pattern
         except KeyError:

@@ -11,6 +11,7 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.kinematics import rate_target
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError, matrix_shape, name_from_key
@@ -49,6 +50,8 @@ class GlyphReader:
         self.expanders: dict = {}  # key -> expand(args) for the parser
         self.choices: dict[str, str] = {}  # X(y): "product" or "apply" (issue 52, item 2)
         self.choice_points: dict[str, str] = {}  # the X(y) met, by key: the argument
+        # a declared rate --let '\\dot{X} = ...' makes X a function of time (issue 63)
+        rated = {rate_target(x.key) for x in lets if x.latex and not x.params}
         for x in lets + [x for x in (notation.lets if notation else ())
                          if x.kind and x.key not in self.declared]:
             if x.kind:
@@ -56,7 +59,7 @@ class GlyphReader:
                 if self.declared[x.key] is not x:
                     continue
                 shape, _, words = kind_of(x.kind, x.text)
-                if re.search(r"\(\s*t\s*\)\s*$", x.name):  # NAME(t): a function of time
+                if re.search(r"\(\s*t\s*\)\s*$", x.name) or x.key in rated:  # NAME(t)
                     words += TIMED
                 self.over[x.key] = Glyph(x.key, "*", self._name(x.key), shape, "let", words)
                 if x not in lets:

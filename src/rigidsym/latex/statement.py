@@ -22,7 +22,7 @@ import sympy as sp
 from rigidsym.core.errors import BadInput
 from rigidsym.latex import guards
 from rigidsym.latex.declgraph import glyph_keys
-from rigidsym.latex.lets import Let, declared_lets, lent, read_lets
+from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.meanings import alternatives, said
@@ -205,6 +205,7 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
     """
     lend = lend or {}
     lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
+    lets += rated_lets(lets)  # --let '\\dot{X} = ...' alone: X a function of time (issue 63)
     functions = _notation_functions(latex, lets, table)
     lets += functions
     rd = GlyphReader(lets, book, lend, table)

@@ -52,6 +52,10 @@ def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
             continue
         if x.key.endswith("^{*}"):  # a starred NAME (issue 52) reads as a name of its own
             rd.over.setdefault(x.key, Glyph(x.key, "*", rd._name(x.key), (), "model", ""))
+        rate_of = _rate_of(x.key)
+        if rate_of in rd.over:  # --let '\\dot{X} = ...': the rate of X (issue 63), its NAME
+            rd.over.setdefault(x.key, Glyph(x.key, "*", rd._name(x.key), rd.over[rate_of].shape,
+                                            "model", "--let model"))
         p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")
         if len(p.chains) != 1 or len(p.chains[0]) != 2:
             raise BadInput(f"--let '{x.text}': expected NAME = one expression")
@@ -63,6 +67,13 @@ def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
         rd.model_rhs[g.name] = rhs
         values[glyph_symbol(g)] = rhs
     return occurs
+
+
+def _rate_of(key: str) -> str:
+    """``X`` of a NAME ``\\dot{X}`` (the rate of X), else ``""``."""
+    from rigidsym.latex.kinematics import rate_target
+
+    return rate_target(key)
 
 
 def _function_model(rd: GlyphReader, x: Let, values: dict) -> None:

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import motion
+from rigidsym.numeval import motion, names, rates
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -77,6 +77,7 @@ def text_of(t) -> str:
 def glyph_key(t) -> str:
     """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
     parse alike)."""
+    t = names.canonical(t)  # \dot{\Omega}_1 is \dot{\Omega_1} (issue 63)
     if isinstance(t, lark.Token):
         # bold by any macro is one glyph, as the books and the reader take it
         return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",
@@ -143,7 +144,7 @@ class Env:
             return sample(d.kind, self.rng)
         if key == TIME:  # the time of the functions of time, whatever the notation
             return sample("scalar", self.rng)
-        letter, bold, plain = _base_letter(tree)
+        letter, bold, plain = _base_letter(names.unlabelled(tree))  # sigma^S: as sigma
         if not self.free:
             raise NotCovered(f"the glyph {text_of(tree)}, which no declaration names (a "
                              f"notation's meaning)")
@@ -310,7 +311,7 @@ class Evaluator:
                 raise NotCovered(f"the star of a value that is no 6x6 transform in "
                                  f"{text_of(t)!r}")
             return V.transpose(V.inverse(v))
-        if s == "\\wedge":
+        if s in ("\\wedge", "\\times"):  # Hughes' a^\times too (issue 63)
             return V.hat(v)
         if s == "\\vee":
             return V.vee(v)
@@ -346,14 +347,14 @@ class Evaluator:
         return self.env.lookup(key, t)
 
     def r_accented(self, t):
-        return self._declared_only(t)
+        return self._declared_only(names.canonical(t))
 
-    r_accented_bare = r_arrow = r_accented
+    r_accented_bare = r_arrow = r_indexed_accent = r_accented
 
     def r_base(self, t):  # Ad_T: a bare base
         return self.r_glyph(lark.Tree("glyph", [t]))
 
-    r_calbase = r_base
+    r_calbase = r_fontbase = r_base
 
     def _declared_only(self, t):
         key = glyph_key(t)
@@ -365,7 +366,7 @@ class Evaluator:
             if inner.data == "bare":
                 inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
             d = self.env.decls.get(glyph_key(inner))
-            if d is not None and d.timed:  # the rate of a function of time
+            if d is not None and (d.timed or rates.is_model(d)):  # or of a model (issue 63)
                 v = self._derivative(inner, _TIME_TREE, t)
                 if accent == "\\dot":
                     return v
@@ -627,6 +628,8 @@ class Evaluator:
     def _derivative(self, expr, var, t):
         key = glyph_key(var)
         d = self.env.decls.get(key)
+        if key == TIME and rates.declared(self.env.decls, glyph_key):  # issue 63
+            return rates.time_derivative(self, expr, glyph_key, DIGITS)
         if d is not None and (d.body is not None or d.params):
             raise NotCovered(f"a derivative by the model {text_of(var)}")
         x0 = V.scalar(self.value(var))
@@ -720,7 +723,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
     Raises:
         NotCovered: a construct, a kind or shapes this semantics does not evaluate.
     """
-    table = {glyph_key(d.name): d for d in decls}
+    table = {glyph_key(d.name): d for d in rates.with_rates(decls, glyph_key)}
     chains = [c for c in tree.children if isinstance(c, lark.Tree) and c.data == "chain"]
     if not chains:
         raise NotCovered("a statement with no relation")

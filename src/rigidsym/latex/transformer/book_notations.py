@@ -36,6 +36,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
+from rigidsym.latex.kinematics import dot_key, explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
     as_block,
@@ -56,6 +57,13 @@ SETS = {"SO(3)": ((3, 3), "rotation"), "SE(3)": ((4, 4), "transform"),
         "so(3)": ((3, 3), "so(3)"), "se(3)": ((4, 4), "se(3)")}
 
 
+def shape_words_of(shape) -> str:
+    """A glyph's shape in words (``()``: a scalar)."""
+    if not shape:
+        return "a scalar"
+    return f"a {shape[0]}-vector" if shape[1] == 1 else f"a {shape[0]}x{shape[1]} matrix"
+
+
 def sup_word(sup: str) -> str:
     """A superscript in one spelling: ``T`` (every transpose), ``-T``, ``wedge``, ``vee``,
     ``curlywedge``, ``*``, or the integer as written."""
@@ -66,7 +74,7 @@ def sup_word(sup: str) -> str:
         return "-T"
     if s in ("*", "\\ast"):
         return "*"
-    if s in ("\\wedge", "\\vee", "\\curlywedge"):
+    if s in ("\\wedge", "\\vee", "\\curlywedge", "\\times"):
         return s[1:]
     return s
 
@@ -103,6 +111,12 @@ class BookNotationRules:
             self._note("x^\\wedge: the hat, so(3) of a 3-vector, se(3) of a 6-vector [w; v] "
                        "(MLS (2.4), Barfoot (7.7))")
             return rigid_motions.hat(x)
+        if sup == "times":  # Hughes' \epsilon^\times: the cross-product matrix (issue 63)
+            if matrix_shape(x) != (3, 1):
+                raise LatexError(f"^\\times of {shape_words(x)}: expected a 3-vector (its "
+                                 f"cross-product matrix)", "shapes")
+            self._note("x^\\times: the cross-product matrix [x]_\\times (Hughes)")
+            return Cpm(x)
         if sup == "vee":
             if matrix_shape(x) not in ((3, 3), (4, 4)):
                 raise LatexError(f"^\\vee of {shape_words(x)}: expected a 3x3 (so(3)) or 4x4 "
@@ -252,7 +266,16 @@ class BookNotationRules:
         X's shape (``\\dot\\theta``)."""
         g = self.overrides[key]
         self.glyphs[key] = g
-        dkey = f"\\dot{{{key}}}"
+        dkey = dot_key(key)
+        declared = self.overrides.get(dkey)
+        if declared is not None and declared.kind == "model":  # --let '\dot{X} = ...'
+            if tuple(declared.shape) != tuple(g.shape):
+                raise LatexError(f"{dkey}, the rate of {key}, is {shape_words_of(declared.shape)}"
+                                 f" by its --let; {key} is {shape_words_of(g.shape)}", "shapes")
+            self.glyphs[dkey] = declared
+            self._note(f"{dkey}: the rate of {key}, its --let model")
+            return sp.MatrixSymbol(declared.name, *declared.shape) if declared.shape else \
+                sp.Symbol(declared.name, real=True)
         if g.shape in ((3, 3), (4, 4)) and g.meaning.startswith(("rotation", "homogeneous")):
             n = 3 if g.shape == (3, 3) else 6
             w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
@@ -296,7 +319,28 @@ class BookNotationRules:
         self._note("d/dt: the product and chain rules over the symbols declared functions "
                    "of time")
         self._moving = self.models_of(set(timed))  # models of functions of time
-        return self._ddt(x, timed)
+        try:
+            return self._ddt(x, timed)
+        except (LatexError, TypeError, ValueError, AttributeError):
+            # an operator the product rule does not cover ([x]_\times, a power, a norm, a
+            # fraction, a function): entry by entry along the rates (issue 63)
+            self._note("d/dt: taken entry by entry, the chain rule along the rates of the "
+                       "functions of time")
+            return explicit_rate(x, timed, self._moving, self.velocity)
+
+    def model_rate(self, key: str):
+        """``\\dot X`` of a model ``X`` built on functions of time (``--let 'C = ...'`` in
+        ``\\mathbf{q}(t)``): d/dt of its value (issue 63); ``None`` for any other X."""
+        g = self.overrides.get(key)
+        if g is None or g.kind != "model" or dot_key(key) in self.overrides:
+            return None
+        timed = {h.name: k for k, h in self.overrides.items() if self.timed(k)}
+        if not timed or g.name not in self.models_of(set(timed)):
+            return None
+        self.glyphs[key] = g
+        self._note(f"\\dot{{{key}}}: the time derivative of the model {key}")
+        sym = sp.MatrixSymbol(g.name, *g.shape) if g.shape else sp.Symbol(g.name, real=True)
+        return self.time_derivative(sym)
 
     def _ddt(self, x, timed):
         """d/dt of ``x``; a model whose value mentions a function of time (``--let 'Y =

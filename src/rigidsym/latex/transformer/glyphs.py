@@ -69,7 +69,7 @@ class GlyphRules:
         core = {"bold": f"\\mathbf{{{letter}}}" if not letter.startswith("\\")
                 else f"\\boldsymbol{{{letter}}}",
                 "plain": letter, "zero": "\\mathbf{0}", "one": "\\mathbf{1}",
-                "cal": f"\\mathcal{{{letter}}}"}[kind]
+                "cal": f"\\mathcal{{{letter}}}", "font": letter}[kind]
         if accent:
             core = f"{accent}{{{core}}}"
         core = pre + core
@@ -81,6 +81,8 @@ class GlyphRules:
         return core
 
     def glyph(self, items):
+        items = [label_key(str(i)) if isinstance(i, lark.Token) and i.type == "SUPLABEL"
+                 else i for i in items]
         if isinstance(items[0], lark.Token) and items[0].type == "LEFT_INDEX":
             return self._resolve(items[1], items[2:], None, pre=index_key(str(items[0])))
         return self._resolve(items[0], items[1:], None)
@@ -89,10 +91,27 @@ class GlyphRules:
         accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        if not inner.accent and not inner.key.startswith("{}") and all(
+                isinstance(r, tuple) for r in [*inner.rest, *items[2:]]) \
+                and bool(inner.rest) != bool(items[2:]):
+            # \dot{\Omega_1} is \dot{\Omega}_1, TeX's one glyph, keyed as the glyph table
+            # writes it (\dot{\mathbf{h}}_{C}); the rate of a function of time Omega_1 either
+            # way (issue 63)
+            under = inner if inner.rest else self._resolve(inner.base, list(items[2:]), None)
+            if under is not inner:
+                self._unuse(inner.key)  # \dot\theta_1: theta alone is no glyph of it
+            if accent == "\\dot" and self.timed(under.key):
+                return self.velocity(under.key, under.value)
+            self._unuse(under.key)
+            return self._resolve(inner.base, list(under.rest), accent)
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
             return self.velocity(inner.key, inner.value)
-        self.glyphs.pop(inner.key, None)  # only the accented glyph is a symbol here
+        if accent == "\\dot" and not items[2:] and not inner.accent:  # of a model (issue 63)
+            rate = self.model_rate(inner.key)
+            if rate is not None:
+                return rate
+        self._unuse(inner.key)  # only the accented glyph is a symbol here
         return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
                              else accent, inner)
 
@@ -185,7 +204,18 @@ class GlyphRules:
         return GlyphKey(key, base, rest, accent,
                          sp.ImmutableMatrix([[v[i, 0]] for i in range(lo - 1, hi)]))
 
+    def _unuse(self, key) -> None:
+        """The glyph ``key`` read under an accent: no use of its own, unless the LaTeX uses
+        it elsewhere too (``Q(\\mathbf{q})`` beside ``\\bar Q(\\mathbf{p})``: before
+        issue 63 the bar's Q took Q's use away, "Q does not occur")."""
+        uses = self.__dict__.setdefault("_uses", {})
+        uses[key] = uses.get(key, 1) - 1
+        if uses[key] <= 0:
+            self.glyphs.pop(key, None)
+
     def _symbol(self, key, base):
+        uses = self.__dict__.setdefault("_uses", {})
+        uses[key] = uses.get(key, 0) + 1
         g = self.overrides.get(key)
         if g is None and self.section is not None:  # None: no glyph table (a reader's LaTeX)
             g = lookup(key, self.section)
@@ -198,6 +228,11 @@ class GlyphRules:
             self.readings.append(f"{key} read as the row {g.name}^T (per-id note)")
             return sp.MatrixSymbol(g.name, *g.shape).T
         return sp.MatrixSymbol(g.name, *g.shape)
+
+
+def label_key(token: str) -> str:
+    """A superscript label in one spelling: ``^S``, ``^{ S }`` -> ``^{S}``; ``^{(k)}``."""
+    return "^{" + "".join(token.lstrip("^").split()).strip("{}") + "}"
 
 
 @dataclass(frozen=True)

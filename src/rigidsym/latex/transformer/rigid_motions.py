@@ -28,8 +28,8 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import rigid_motions
+from rigidsym.latex.kinematics import expand_models
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
-from rigidsym.latex.transformer.book_notations import free_symbols_of as _free_atoms
 from rigidsym.latex.transformer.meanings import alternatives, as_written
 
 __all__: list[str] = []
@@ -180,20 +180,30 @@ class RigidMotionRules:
         self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
                    "derivative)")
         x = as_scalar(x)
-        through = self.models_of({v.name})  # a model in v: its value (issue 52)
-        for _ in range(len(through)):
-            at = {a: through[a.name] for a in _free_atoms(x) if a.name in through}
-            if not at:
-                break
-            x = x.xreplace(at)
-        return rigid_motions.diff(x, v)
+        # a model in v: its value (issue 52), its matrices immutable (a mutable one inside a
+        # product is unhashable: \dot\phi \partial C/\partial\phi leaked it; issue 63)
+        x = expand_models(x, self.models_of({v.name}))
+        out = rigid_motions.diff(x, v)
+        return sp.ImmutableMatrix(out) if isinstance(out, sp.MatrixBase) else out
 
     # ---- glyphs
     def calbase(self, items):
         return ("cal", str(items[0]))
 
+    def fontbase(self, items):  # \mathsf{R}: a plain letter's conventions, its own name
+        return ("font", f"{items[0]}{{{items[1]}}}")
+
     def bare(self, items):
         return ("plain", str(items[0]))
+
+    def indexed_accent(self, items):
+        """``{}^{G}\\tilde r_{C}``: a left index before an accented letter, one name (issue
+        63), keyed ``{}^{G}\\tilde{r}_{C}``."""
+        from rigidsym.latex.transformer.book_notations import index_key
+
+        base = ("plain", str(items[2].children[0])) if isinstance(items[2], lark.Tree) \
+            else items[2]
+        return self._resolve(base, list(items[3:]), str(items[1]), pre=index_key(str(items[0])))
 
     def accented_bare(self, items):
         inner = self._resolve(items[1], [], None)

@@ -1,0 +1,60 @@
+"""Spellings of one glyph that the second semantics takes as one (issue 63): an accent over a
+bare letter followed by a subscript, ``\\dot{\\Omega}_1`` or ``\\dot\\Omega_1``, is the
+accent over the subscripted letter, ``\\dot{\\Omega_1}`` (TeX sets the same glyph, and the
+reader keys them alike); a superscript label (``\\boldsymbol\\sigma^S``, ``x^{(k)}``) is
+part of the name, one spelling for ``^S`` and ``^{S}``, and the shape of a free labelled
+glyph is that of its letter. Imports lark and the standard library only."""
+
+from __future__ import annotations
+
+import re
+
+import lark
+
+__all__ = ["canonical", "unlabelled"]
+
+
+def canonical(t: object) -> object:
+    """``t`` with an accent's trailing subscript moved under the accent; any other tree as
+    it is.
+
+    Args:
+        t: a parse subtree (``accented``, ``accented_bare``, or anything).
+    """
+    if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
+            and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
+        label = "^{" + "".join(str(t.children[-1]).lstrip("^").split()).strip("{}") + "}"
+        return lark.Tree("glyph", [*t.children[:-1], lark.Token("SUPLABEL", label)])
+    if isinstance(t, lark.Tree) and t.data == "indexed_accent":  # {}^{G}\tilde{r}_C
+        index, accent, letter, *rest = t.children
+        plain = re.sub(r"\{([^{}]+)\}", r"\1", "".join(str(index).split()))  # {}^{G}: {}^G
+        spelt = lark.Token("LEFT_INDEX", plain)
+        base = lark.Tree("base", list(letter.children)) if letter.data == "bare" else letter
+        return lark.Tree("indexed_accent", [spelt, accent, base, *rest])
+    if not isinstance(t, lark.Tree) or t.data not in ("accented", "accented_bare") \
+            or len(t.children) != 3:
+        return t
+    accent, inner, sub = t.children
+    if not isinstance(sub, lark.Tree) or sub.data != "subscript":
+        return t
+    if t.data == "accented_bare":
+        base = lark.Tree("base", list(inner.children))
+    elif inner.data == "glyph" and len(inner.children) == 1 \
+            and isinstance(inner.children[0], lark.Tree):
+        base = inner.children[0]
+    else:
+        return t
+    return lark.Tree("accented", [accent, lark.Tree("glyph", [base, sub])])
+
+
+def unlabelled(t: object) -> object:
+    """A glyph tree as the letter that gives a free glyph's shape: without its superscript
+    label, and a font that only names (``\\mathsf{R}``) as the plain letter."""
+    if isinstance(t, lark.Tree) and t.data == "glyph" and len(t.children) > 1 \
+            and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
+        t = lark.Tree("glyph", t.children[:-1])
+    if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
+            and isinstance(t.children[0], lark.Tree) and t.children[0].data == "fontbase":
+        t = lark.Tree("glyph", [lark.Tree("base", t.children[0].children[-1:]),
+                                *t.children[1:]])
+    return t

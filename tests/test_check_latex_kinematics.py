@@ -1,0 +1,224 @@
+"""Kinematic differential equations of the attitude books (issue 63): ``\\dot C =
+-[\\omega]_\\times C`` with ``C`` a model in parameters declared functions of time, their
+rates declared (``--let '\\dot{\\mathbf{q}} = ...'``) or free, for classical and modified
+Rodrigues parameters, Euler parameters and two Euler-angle sequences (Schaub & Junkins'
+conventions: ``C = [BN]``, ``\\omega`` in B). Each family's truth is checked first by an
+independent NumPy evaluation (a central difference along the rates); each family's one-edit
+slip must be does-not-hold. Before issue 63 every one was bad input (``\\dot{\\mathbf{q}}
+does not occur``, ``d/dt of a 3x3 matrix built by Cpm``)."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+import pytest
+from test_check_latex import _forget_latex_ids  # noqa: F401  (autouse fixture)
+
+import rigidsym
+from rigidsym.core.errors import BadInput
+from rigidsym.latex import LatexError
+
+W = r"\boldsymbol\omega: vector"
+R1 = (r"R_1(x) = \begin{bmatrix} 1 & 0 & 0 \\ 0 & \cos x & \sin x \\ 0 & -\sin x & \cos x "
+      r"\end{bmatrix}")
+R2 = (r"R_2(x) = \begin{bmatrix} \cos x & 0 & -\sin x \\ 0 & 1 & 0 \\ \sin x & 0 & \cos x "
+      r"\end{bmatrix}")
+R3 = (r"R_3(x) = \begin{bmatrix} \cos x & \sin x & 0 \\ -\sin x & \cos x & 0 \\ 0 & 0 & 1 "
+      r"\end{bmatrix}")
+ANGLES = [r"\psi(t): angle", r"\theta(t): angle", r"\phi(t): angle"]
+KDE = r"\dot{\mathbf{C}} = -[\boldsymbol\omega]_\times \mathbf{C}"
+
+#: family -> (LaTeX, --lets, (text of the one-edit slip, its replacement))
+FAMILIES = {
+    "CRP": (KDE, [
+        r"\mathbf{C} = \frac{(1 - \mathbf{q}^T\mathbf{q}) I_3 + 2\mathbf{q}\mathbf{q}^T"
+        r" - 2[\mathbf{q}]_\times}{1 + \mathbf{q}^T\mathbf{q}}",
+        r"\dot{\mathbf{q}} = \frac12 (I_3 + [\mathbf{q}]_\times + \mathbf{q}\mathbf{q}^T)"
+        r"\boldsymbol\omega",
+        r"\mathbf{q}(t): vector", W], ("I_3 + [", "I_3 - [")),
+    "MRP": (KDE, [
+        r"\mathbf{C} = I_3 + \frac{8[\boldsymbol\sigma]_\times^2 - 4(1 - \boldsymbol\sigma^T"
+        r"\boldsymbol\sigma)[\boldsymbol\sigma]_\times}{(1 + \boldsymbol\sigma^T"
+        r"\boldsymbol\sigma)^2}",
+        r"\dot{\boldsymbol\sigma} = \frac14 \left((1 - \boldsymbol\sigma^T\boldsymbol\sigma)"
+        r" I_3 + 2[\boldsymbol\sigma]_\times + 2\boldsymbol\sigma\boldsymbol\sigma^T\right)"
+        r"\boldsymbol\omega",
+        r"\boldsymbol\sigma(t): vector", W], ("+ 2\\boldsymbol\\sigma\\boldsymbol",
+                                               "- 2\\boldsymbol\\sigma\\boldsymbol")),
+    "Euler parameters": (r"\dot{\mathbf{A}} = -[\boldsymbol\omega]_\times \mathbf{A}", [
+        r"\mathbf{A} = (\boldsymbol\beta_{4:4}^2 - \boldsymbol\beta_{1:3}^T\boldsymbol"
+        r"\beta_{1:3}) I_3 + 2\boldsymbol\beta_{1:3}\boldsymbol\beta_{1:3}^T"
+        r" - 2\boldsymbol\beta_{4:4}[\boldsymbol\beta_{1:3}]_\times",
+        r"\dot{\boldsymbol\beta} = \frac12 \begin{bmatrix} \boldsymbol\beta_{4:4} I_3 + "
+        r"[\boldsymbol\beta_{1:3}]_\times \\ -\boldsymbol\beta_{1:3}^T \end{bmatrix}"
+        r"\boldsymbol\omega",
+        r"\boldsymbol\beta(t): unit 4-vector", W], ("\\\\ -\\boldsymbol", "\\\\ \\boldsymbol")),
+    "3-2-1 angles": (KDE, [
+        r"\mathbf{C} = R_1(\phi) R_2(\theta) R_3(\psi)", R1, R2, R3,
+        r"\boldsymbol\omega = \begin{bmatrix} \dot\phi - \dot\psi\sin\theta \\ \dot\theta"
+        r"\cos\phi + \dot\psi\cos\theta\sin\phi \\ \dot\psi\cos\theta\cos\phi - \dot\theta"
+        r"\sin\phi \end{bmatrix}", *ANGLES], ("\\dot\\phi - \\dot\\psi", "\\dot\\phi + "
+                                              "\\dot\\psi")),
+    "3-1-3 angles": (KDE, [
+        r"\mathbf{C} = R_3(\psi) R_1(\theta) R_3(\phi)", R1, R3,
+        r"\boldsymbol\omega = \begin{bmatrix} \dot\phi\sin\theta\sin\psi + \dot\theta\cos\psi"
+        r" \\ \dot\phi\sin\theta\cos\psi - \dot\theta\sin\psi \\ \dot\phi\cos\theta + "
+        r"\dot\psi \end{bmatrix}", *ANGLES], ("\\cos\\theta + \\dot\\psi",
+                                              "\\cos\\theta - \\dot\\psi")),
+    "3-2-1 angle rates": (KDE, [
+        r"\mathbf{C} = R_1(\phi) R_2(\theta) R_3(\psi)", R1, R2, R3,
+        r"\boldsymbol\omega = \begin{bmatrix} p \\ q \\ r \end{bmatrix}",
+        r"\dot\psi = \frac{q\sin\phi + r\cos\phi}{\cos\theta}",
+        r"\dot\theta = q\cos\phi - r\sin\phi",
+        r"\dot\phi = p + (q\sin\phi + r\cos\phi)\tan\theta", *ANGLES],
+        ("q\\cos\\phi - r", "q\\cos\\phi + r")),
+}
+
+
+def _cpm(v):
+    return np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+
+
+def _rot(axis, x):
+    c, s = np.cos(x), np.sin(x)
+    m = {1: [[1, 0, 0], [0, c, s], [0, -s, c]], 2: [[c, 0, -s], [0, 1, 0], [s, 0, c]],
+         3: [[c, s, 0], [-s, c, 0], [0, 0, 1]]}[axis]
+    return np.array(m)
+
+
+def test_the_families_hold_by_numpy_and_their_slips_do_not():
+    """The truth of each family (and of each slip) by NumPy, independent of rigidsym: the
+    derivative of C along the rates, by a central difference, against -[w]x C."""
+    rng = np.random.default_rng(63)
+    w, eye, h = rng.normal(size=3), np.eye(3), 1e-6
+
+    def residual(c_of, rate, x0):
+        cd = (c_of(x0 + h * rate(x0)) - c_of(x0 - h * rate(x0))) / (2 * h)
+        return np.abs(cd + _cpm(w) @ c_of(x0)).max()
+
+    def crp(q):
+        return ((1 - q @ q) * eye + 2 * np.outer(q, q) - 2 * _cpm(q)) / (1 + q @ q)
+
+    def mrp(s):
+        return eye + (8 * _cpm(s) @ _cpm(s) - 4 * (1 - s @ s) * _cpm(s)) / (1 + s @ s) ** 2
+
+    def ep(b):
+        e = b[:3]
+        return (b[3] ** 2 - e @ e) * eye + 2 * np.outer(e, e) - 2 * b[3] * _cpm(e)
+
+    def c321(x):
+        return _rot(1, x[2]) @ _rot(2, x[1]) @ _rot(3, x[0])
+
+    for sign, holds in ((1, True), (-1, False)):  # the slip flips one sign
+        cases = [
+            (crp, lambda q, s=sign: .5 * (eye + s * _cpm(q) + np.outer(q, q)) @ w, 3),
+            (mrp, lambda v, s=sign: .25 * ((1 - v @ v) * eye + 2 * _cpm(v)
+                                           + s * 2 * np.outer(v, v)) @ w, 3),
+            (ep, lambda b, s=sign: .5 * np.vstack([b[3] * eye + _cpm(b[:3]),
+                                                   -s * b[:3]]) @ w, 4),
+            (c321, lambda x, s=sign: np.array([
+                (np.sin(x[2]) * w[1] + np.cos(x[2]) * w[2]) / np.cos(x[1]),
+                np.cos(x[2]) * w[1] - s * np.sin(x[2]) * w[2],
+                w[0] + (np.sin(x[2]) * w[1] + np.cos(x[2]) * w[2]) * np.tan(x[1])]), 3)]
+        for c_of, rate, n in cases:
+            x0 = rng.normal(size=n)
+            if n == 4:
+                x0 /= np.linalg.norm(x0)
+            assert (residual(c_of, rate, x0) < 1e-8) == holds
+
+
+_SLOWER = {"MRP", "3-1-3 angles"}  # in the slow run only (the README's command stays short)
+
+
+@pytest.mark.parametrize("family", [pytest.param(f, marks=pytest.mark.slow) if f in _SLOWER
+                                    else f for f in sorted(FAMILIES)])
+def test_a_kinematic_equation_is_verified_within_ten_seconds(family):
+    latex, lets, _ = FAMILIES[family]
+    t0 = time.perf_counter()
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+    assert time.perf_counter() - t0 < 10
+    assert any("second semantics" in n and "agree" in n for n in r.model), r.model
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("family", sorted(FAMILIES))
+def test_its_one_edit_slip_does_not_hold(family):
+    latex, lets, (a, b) = FAMILIES[family]
+    slipped = [x.replace(a, b, 1) for x in lets]
+    assert slipped != lets
+    r = rigidsym.check_latex(latex, let=slipped, repairs=False)
+    assert r.verdict == "does-not-hold", (r.detail, r.model)
+
+
+def test_one_slip_in_the_default_run_does_not_hold():
+    latex, lets, (a, b) = FAMILIES["CRP"]
+    r = rigidsym.check_latex(latex, let=[x.replace(a, b, 1) for x in lets], repairs=False)
+    assert r.verdict == "does-not-hold", (r.detail, r.model)
+
+
+def test_a_declared_rate_makes_its_symbol_a_function_of_time():
+    """``--let '\\dot{\\mathbf{q}} = ...'`` beside ``\\mathbf{q}: vector`` (no ``(t)``)."""
+    latex, lets, _ = FAMILIES["CRP"]
+    r = rigidsym.check_latex(latex, let=[x.replace("(t)", "") for x in lets], repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+    assert any("the rate of \\mathbf{q}, its --let model" in n for n in r.model), r.model
+
+
+def test_a_declared_rate_alone_makes_its_symbol_a_function_of_time():
+    """No --let for q at all: q a function of time of its conventional shape (a 3-vector)."""
+    latex, lets, _ = FAMILIES["MRP"]
+    r = rigidsym.check_latex(latex, let=[x for x in lets if "(t)" not in x], repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+
+
+def test_a_free_rate_leaves_the_kinematic_equation_false():
+    """Without the rate's model, q̇ is free: Ċ = -[ω]C then fails (ω unrelated to q̇)."""
+    latex, lets, _ = FAMILIES["CRP"]
+    r = rigidsym.check_latex(latex, let=[x for x in lets if not x.startswith(r"\dot")],
+                             repairs=False)
+    assert r.verdict == "does-not-hold", (r.detail, r.model)
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # d/dt through a cross-product matrix, a power, a fraction (before: "d/dt of a 3x3
+    # matrix built by Cpm", "Mix of Matrix and Scalar symbols")
+    (r"\frac{d}{dt}[\mathbf{q}]_\times = [\dot{\mathbf{q}}]_\times", [r"\mathbf{q}(t): vector"],
+     "verified"),
+    (r"\frac{d}{dt}[\mathbf{q}]_\times = [\mathbf{q}]_\times", [r"\mathbf{q}(t): vector"],
+     "does-not-hold"),
+    (r"\frac{d}{dt}\frac{1}{1+\mathbf{q}^T\mathbf{q}} = -\frac{2\mathbf{q}^T\dot{\mathbf{q}}}"
+     r"{(1+\mathbf{q}^T\mathbf{q})^2}", [r"\mathbf{q}(t): vector"], "verified"),
+    (r"\frac{d}{dt}\frac{1}{1+\mathbf{q}^T\mathbf{q}} = -\frac{\mathbf{q}^T\dot{\mathbf{q}}}"
+     r"{(1+\mathbf{q}^T\mathbf{q})^2}", [r"\mathbf{q}(t): vector"], "does-not-hold"),
+    (r"\frac{d}{dt}(\mathbf{R}[\mathbf{q}]_\times^2) = \dot{\mathbf{R}}[\mathbf{q}]_\times^2",
+     [r"\mathbf{q}: vector", r"\mathbf{R}(t): rotation"], "verified"),
+    # the chain rule through partials of a matrix model (Diebel's Euler-angle rates; before:
+    # "an internal error at the construct ... (mul)", sympy's unhashable matrix)
+    (r"\dot{\mathbf{C}} = \dot\phi\frac{\partial \mathbf{C}}{\partial\phi} + \dot\theta"
+     r"\frac{\partial \mathbf{C}}{\partial\theta}", [r"\mathbf{C} = R_1(\phi)R_2(\theta)", R1, R2,
+                                                   r"\phi(t): angle", r"\theta(t): angle"],
+     "verified"),
+    (r"\dot{\mathbf{C}} = \dot\phi\frac{\partial \mathbf{C}}{\partial\phi}",
+     [r"\mathbf{C} = R_1(\phi)R_2(\theta)", R1, R2, r"\phi(t): angle", r"\theta(t): angle"],
+     "does-not-hold"),
+    # Siciliano's \dot R = S(\omega) R of an elementary rotation, S a --let function
+    (r"\dot{R} = S(\boldsymbol\omega) R",
+     [r"R = R_z(\theta)", r"R_z(x) = \begin{bmatrix} \cos x & -\sin x & 0 \\ \sin x & \cos x"
+      r" & 0 \\ 0 & 0 & 1 \end{bmatrix}", r"S(\mathbf{a}) = [\mathbf{a}]_\times",
+      r"\theta(t): angle", r"\boldsymbol\omega = \begin{bmatrix}0\\0\\\dot\theta\end{bmatrix}"],
+     "verified"),
+])
+def test_d_dt_through_the_operators_of_a_model(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, (r.detail, r.model)
+
+
+def test_a_rate_of_another_shape_is_refused_naming_both():
+    latex, lets, _ = FAMILIES["CRP"]
+    lets = [x if not x.startswith(r"\dot") else r"\dot{\mathbf{q}} = \mathbf{q}^T"
+            r"\boldsymbol\omega" for x in lets]
+    with pytest.raises((BadInput, LatexError)) as exc:
+        rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r"\dot{\mathbf{q}}" in str(exc.value) and "3-vector" in str(exc.value), exc.value

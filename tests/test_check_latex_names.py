@@ -1,0 +1,119 @@
+"""Names as the attitude books write them (issue 63, item 2): superscript labels, an accent
+over a subscripted letter either way, Hughes' ``\\epsilon^\\times``, font macros, a declared
+``e`` before ``^``, functions beside their barred namesakes; an index range as a ``--let``
+NAME refused naming the ``--let`` that settles it; no refusal ends in an empty "expected one
+of:" and none leaks an exception's text. Each case was bad input before issue 63."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from test_check_latex import _forget_latex_ids  # noqa: F401  (autouse fixture)
+
+import rigidsym
+from rigidsym.core.errors import BadInput
+from rigidsym.latex import LatexError
+
+
+def _v(latex, let=None):
+    return rigidsym.check_latex(latex, let=let, repairs=False).verdict
+
+
+def test_the_truth_of_the_name_cases_by_numpy():
+    """eps^x a = eps x a, and not a x eps; the shadow MRP's norm is 1/|sigma|."""
+    rng = np.random.default_rng(63)
+    eps, a, s = rng.normal(size=(3, 3))
+    cpm = np.array([[0, -eps[2], eps[1]], [eps[2], 0, -eps[0]], [-eps[1], eps[0], 0]])
+    assert np.allclose(cpm @ a, np.cross(eps, a))
+    assert not np.allclose(cpm @ a, np.cross(a, eps))
+    shadow = -s / (s @ s)
+    assert np.isclose(np.linalg.norm(shadow) ** 2, 1 / (s @ s))
+    assert not np.isclose(np.linalg.norm(shadow) ** 2, s @ s)
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    # Hughes' cross-product matrix, braced or not (before: "unexpected \times")
+    (r"\boldsymbol\epsilon^\times\mathbf{a} = \boldsymbol\epsilon\times\mathbf{a}", None,
+     "verified"),
+    (r"\boldsymbol\epsilon^{\times}\mathbf{a} = \mathbf{a}\times\boldsymbol\epsilon", None,
+     "does-not-hold"),
+    # a superscript label is part of the name (before: "unexpected 'S'")
+    (r"\|\boldsymbol\sigma^S\|^2 = \frac{1}{\boldsymbol\sigma^T\boldsymbol\sigma}",
+     [r"\boldsymbol\sigma^S = \frac{-\boldsymbol\sigma}{\boldsymbol\sigma^T\boldsymbol\sigma}"],
+     "verified"),
+    (r"\|\boldsymbol\sigma^{S}\|^2 = \boldsymbol\sigma^T\boldsymbol\sigma",
+     [r"\boldsymbol\sigma^S = \frac{-\boldsymbol\sigma}{\boldsymbol\sigma^T\boldsymbol\sigma}"],
+     "does-not-hold"),
+    (r"\mathbf{x}^{(k)}\cdot\mathbf{x}^{(k)} = \|\mathbf{x}^{(k)}\|^2", None, "verified"),
+    # \dot{\Omega}_1 is \dot{\Omega_1} (before: "\dot{\Omega_{1}} does not occur")
+    (r"\dot{\Omega}_1 = a", [r"\dot{\Omega_1} = a"], "verified"),
+    (r"\frac{d}{dt}\cos\theta_1 = -\dot\theta_1\sin\theta_1", [r"\theta_1(t): angle"],
+     "verified"),
+    (r"\frac{d}{dt}\cos\theta_1 = \dot{\theta_1}\sin\theta_1", [r"\theta_1(t): angle"],
+     "does-not-hold"),
+    # fonts that name (before: "unknown macro \mathtt", "\mathsf{R} (a font) cannot be read")
+    (r"\mathtt{R}^T\mathtt{R} = I", [r"\mathtt{R}: rotation"], "verified"),
+    (r"\mathsf{R}\mathsf{R} = I", [r"\mathsf{R}: rotation"], "does-not-hold"),
+    # a left index before an accent (before: "unexpected \tilde (an accent)")
+    (r"{}^{G}\tilde r_{C} + \mathbf{0} = {}^G\tilde{r}_C", [r"{}^{G}\tilde r_{C}: vector"],
+     "verified"),
+    (r"{}^{G}\tilde r_{C} = -{}^G\tilde{r}_C", [r"{}^{G}\tilde r_{C}: vector"], "does-not-hold"),
+    # a declared e before ^ is its power (before: "unexpected '2'")
+    (r"e^2 = \mathbf{e}^T\mathbf{e}", [r"e = |\mathbf{e}|"], "verified"),
+    (r"e^2 = 2\mathbf{e}^T\mathbf{e}", [r"e = |\mathbf{e}|"], "does-not-hold"),
+    # a function beside its barred namesake (before: "Q does not occur in the LaTeX")
+    (r"Q(\mathbf{q}) = \bar Q(\mathbf{q})", [r"Q(\mathbf{q}) = \mathbf{q}\mathbf{q}^T",
+                                             r"\bar Q(\mathbf{p}) = \mathbf{p}\mathbf{p}^T"],
+     "verified"),
+    (r"Q(\mathbf{q}) = \bar Q(\mathbf{q})", [r"Q(\mathbf{q}) = \mathbf{q}\mathbf{q}^T",
+                                             r"\bar Q(\mathbf{p}) = \mathbf{p}^T\mathbf{p}I_3"],
+     "does-not-hold"),
+])
+def test_a_name_of_the_books_reads_in_both_semantics(latex, let, verdict):
+    r = rigidsym.check_latex(latex, let=let, repairs=False)
+    assert r.verdict == verdict, (r.detail, r.model)
+    assert any("second semantics" in n for n in r.model), r.model
+
+
+def test_a_declared_e_is_said_and_an_undeclared_e_stays_the_exponential():
+    r = rigidsym.check_latex(r"e^2 = \mathbf{e}^T\mathbf{e}", let=[r"e = |\mathbf{e}|"],
+                             repairs=False)
+    assert any("e^: a power of the declared symbol e" in n for n in r.model), r.model
+    assert _v(r"e^{[\mathbf{a}]_\times} = I_3 + [\mathbf{a}]_\times", None) != "verified"
+    with pytest.raises(LatexError) as exc:
+        _v(r"e^2 = \mathbf{e}^T\mathbf{e}")
+    assert "--let 'e: scalar'" in str(exc.value)
+
+
+def test_an_index_range_as_a_let_name_names_the_let_that_settles_it():
+    with pytest.raises(BadInput) as exc:
+        _v(r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} = 1", [r"\mathbf{q}_{1:3}: vector"])
+    msg = str(exc.value)
+    assert r"entries 1 to 3 of \mathbf{q}" in msg and r"--let '\mathbf{q}: 4-vector'" in msg
+
+
+#: refusals of the trial: none may leak an exception's text or end in an empty list
+_REFUSED = [
+    (r"{}^{G}\tilde r_{C} = 0", None),
+    (r"\mathbf{a}^S_1 = x", None),
+    (r"e^2 = 1", None),
+    (r"\mathbf{Q}^T\mathbf{Q} = ", None),
+    (r"\frac{d}{dt}\mathbf{C} = 0", [r"\mathbf{C} = [\mathbf{q}]_\times"]),
+    (r"\dot{\mathbf{C}} = -[\boldsymbol\omega]_\times \mathbf{C}",
+     [r"\mathbf{C} = I_3", r"\dot{\mathbf{q}} = \boldsymbol\omega"]),
+    (r"\mathbf{q}_{1:3} = \mathbf{q}_{1:3}", [r"\mathbf{q}_{1:3}: vector"]),
+    (r"\boldsymbol\epsilon^\times = \boldsymbol\epsilon^T", [r"\boldsymbol\epsilon: matrix"]),
+    (r"\frac{d}{dt}e^{[\mathbf{q}]_\times} = 0", [r"\mathbf{q}(t): vector"]),
+]
+_LEAKS = ("Error:", "object has no attribute", "unhashable", "Traceback", "MutableDense",
+          "MatrixSymbol", "MatMul", "MatAdd", "ImmutableDense", "ShapeError", "Mix of Matrix",
+          "NoneType")
+
+
+@pytest.mark.parametrize("latex, let", _REFUSED)
+def test_a_refusal_names_its_construct_and_leaks_nothing(latex, let):
+    with pytest.raises((BadInput, LatexError)) as exc:
+        _v(latex, let)
+    msg = str(exc.value)
+    assert not any(w in msg for w in _LEAKS), msg
+    assert not msg.rstrip().endswith("expected one of:"), msg
