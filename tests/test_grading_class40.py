@@ -219,10 +219,47 @@ def _moodle_against_gradebook(tmp_path, key, rows, behaviours, expected) -> int:
     return differ
 
 
+def _stack_against_gradebook(tmp_path, key, rows, behaviours) -> int:
+    """Each student's mark in Moodle's STACK (stack.xml run by the independent reader of
+    tests/_stack_maxima.py: its Maxima and its potential response trees) against the
+    gradebook's: equal for every student, and each box's answer note the gradebook's
+    status (right, blank, the slip's credit, rounded, wrong). The student types each
+    number into STACK's boxes as written (a decimal comma retyped with a point, as
+    STACK's validation asks). Returns how many students were compared."""
+    from tests._stack_maxima import EMPTY, boxes, mark, questions, run_maxima
+
+    qs = questions((tmp_path / "c" / "stack.xml").read_text(encoding="utf-8"))
+    for r in key["students"]:
+        q = qs[f"{r['id']}-P1"]
+        ta = run_maxima(q.findtext("questionvariables/text"), {})
+        given = behaviours[r["id"]][1]
+        responses = {}
+        for box, (inp, kind) in boxes(q).items():
+            v = given.get(box, "")
+            if v == "" or v is None:
+                responses[inp] = EMPTY
+            elif kind == "matrix":          # the grid of the key's shape, entry by entry
+                responses[inp] = np.array(_fl(v), dtype=float).reshape(ta[f"ta_{inp}"].shape)
+            else:
+                responses[inp] = float(str(v).replace(",", "."))
+        got, notes = mark(q, responses)
+        mine = [x for x in rows if x["id"] == r["id"]]
+        book = sum(float(x["points"]) for x in mine) / sum(float(x["max_points"]) for x in mine)
+        assert got == pytest.approx(book, abs=1e-5), (r["student"], got, book, notes)
+        word = {"right": "right", "missing": "blank"}
+        for x in mine:
+            inp = boxes(q)[x["answer"]][0]
+            want = word.get(x["status"]) or ("rounded" if x["slip"] == "rounded" else
+                                             "slip" if x["slip"] else "wrong")
+            assert notes[f"prt_{inp}"][1] == f"{x['answer']}: {want}", (r["student"], x)
+    return len(key["students"])
+
+
 def test_a_class_of_four_graded_to_the_end(tmp_path, capsys):
     key, expected, behaviours = _class(tmp_path, 4, seed=1)
     rows = _grade_and_compare(tmp_path, key, expected, capsys)
     _moodle_against_gradebook(tmp_path, key, rows, behaviours, expected)
+    assert _stack_against_gradebook(tmp_path, key, rows, behaviours) == 4
     handout = (tmp_path / "c" / "handouts" / "s3003.html").read_text(encoding="utf-8")
     assert "unit cube" not in handout and "0.1 %" in handout   # a cube of side 2; the tol
     assert (tmp_path / "c" / "keys" / "s3003.html").exists()
@@ -240,6 +277,8 @@ def test_a_class_of_forty_graded_to_the_end(tmp_path, capsys):
     print(f"Moodle's Cloze mark differs from the gradebook's for {differ} of 40 students "
           f"({as_written} answered every box as written or blank)")
     assert differ <= 40 - as_written
+    # STACK's trees grade linked boxes jointly: its mark is the gradebook's for all 40
+    assert _stack_against_gradebook(tmp_path, key, rows, behaviours) == 40
 
 
 def test_names_that_fold_alike_are_reported_not_guessed(tmp_path):

@@ -184,15 +184,15 @@ def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol) -> st
         period = along = None
         if kind == "angle":
             period = math.pi if decl.get("period") == "pi" else _TWO_PI
-            lines.append(f"isright: {_wrapped(inp, k, period, _scale(k))}")
+            lines.append(f"isright: if isblank then false else {_wrapped(inp, k, period, _scale(k))}")
         elif kind == "point of line":
             d = boxes.get(decl["direction"])
             d = key_array(sol.answers[decl["direction"]]) if d is None else d
             along = d.reshape(-1) / np.linalg.norm(d)
             sc = _scale(k) if _scale(k) > 1e-12 else 1.0
-            lines.append(f"isright: {_along(inp, k, along, sc)}")
+            lines.append(f"isright: if isblank then false else {_along(inp, k, along, sc)}")
         else:
-            lines.append(f"isright: {_near(inp, k, _scale(k))}")
+            lines.append(f"isright: if isblank then false else {_near(inp, k, _scale(k))}")
         lines.append(f"isslip: {_slips(inp, sol, box, k, period, along)}")
         lines.append(f"isrounded: {_rounded(inp, k)}")
     return ";\n".join(lines) + ";\n"
