@@ -395,3 +395,50 @@ def test_rosters_and_answer_tables_as_spreadsheets_save_them(tmp_path, sep):
     (tmp_path / "a.csv").write_text(f"student{sep}P1.phi\nZoë Müller{sep}\"2,0944\"\n",
                                     encoding="utf-8-sig")
     assert read_answers(tmp_path / "a.csv") == {"Zoë Müller": {"P1.phi": "2,0944"}}
+
+
+def test_stack_grades_each_member_and_slip_of_31_as_the_gradebook():
+    """3.1's STACK question (stack.xml) run by the independent reader, against rigidsym's
+    grade of the same answers: members of the key's class made here by the group action
+    ((e, phi) -> (-e, -phi) with the Plücker array negated, phi + 2 pi k), slips made here
+    (transpose, one sign, degrees, order, mm for m), a blank box and a rounding: the
+    same score per box, box by box."""
+    from rigidsym import exercises as ex
+    from rigidsym.course.exam import asked
+    from rigidsym.course.exam_text import box_label
+    from rigidsym.course.grading import grade
+    from rigidsym.course.stack_export import stack_xml
+    from rigidsym.course.worked import solution_record
+    from tests._stack_maxima import EMPTY, boxes, mark, questions
+
+    s = ex.solve("3.1")
+    rec = dict(solution_record(s), problem=1, weight=1, asked=asked(s),
+               labels={a: box_label(s.id, a) for a in asked(s)})
+    q = questions(stack_xml("q", {"slip_credit": 0.5, "rounding_credit": 0.75,
+                                  "students": [{"student": "Amy", "id": "7",
+                                                "problems": [rec]}]}))["7-P1"]
+    k = {a: np.array(sp.N(v, 17).tolist(), dtype=float) if isinstance(v, sp.MatrixBase)
+         else float(sp.N(v, 17)) for a, v in s.answers.items() if a in asked(s)}
+    e, phi, pl = k["e"], k["phi"], k["plucker"]
+    forms = [
+        {}, {"e": -e, "phi": -phi, "plucker": -pl}, {"phi": phi + 2 * math.pi},
+        {"e": -e, "phi": 2 * math.pi - phi, "plucker": -pl},       # -phi + 2 pi
+        {"Q": k["Q"].T}, {"e": -e}, {"phi": phi * 180 / math.pi},
+        {"plucker": np.concatenate([pl[3:], pl[:3]])}, {"e": EMPTY, "plucker": -pl},
+        {"phi": float(f"{phi:.1e}")}, {"intersection_x=0": k["intersection_x=0"] * 1000},
+        {"e": -e, "phi": -phi}, {"plucker": pl * np.array([[1], [1], [1], [1], [1], [-1]])},
+    ]
+    seen = set()
+    for form in forms:
+        answers = {**k, **form}
+        got, notes = mark(q, {inp: answers[b] for b, (inp, _) in boxes(q).items()})
+        graded = grade(s, {b: "" if isinstance(v, str) else np.asarray(v).tolist()
+                           for b, v in answers.items()})
+        ours = [1.0 if g.correct else 0.75 if g.slip == "rounded" else 0.5 if g.slip
+                else 0.0 for g in graded]
+        for g, score in zip(graded, ours, strict=True):
+            inp = boxes(q)[g.name][0]
+            assert notes[f"prt_{inp}"][0] == score, (form.keys(), g.name, g.note, notes)
+            seen.add(notes[f"prt_{inp}"][1].split(": ")[-1])
+        assert got == pytest.approx(sum(ours) / len(ours), abs=1e-12)
+    assert seen == {"right", "slip", "rounded", "blank"}

@@ -184,7 +184,8 @@ def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol) -> st
         period = along = None
         if kind == "angle":
             period = math.pi if decl.get("period") == "pi" else _TWO_PI
-            lines.append(f"isright: if isblank then false else {_wrapped(inp, k, period, _scale(k))}")
+            test = _wrapped(inp, k, period, _scale(k))
+            lines.append(f"isright: if isblank then false else {test}")
         elif kind == "point of line":
             d = boxes.get(decl["direction"])
             d = key_array(sol.answers[decl["direction"]]) if d is None else d
