@@ -4,7 +4,14 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.course.worked import Param, Solution, exact_check, identity_check, is_zero
+from rigidsym.course.worked import (
+    Param,
+    Solution,
+    exact_check,
+    identity_check,
+    is_zero,
+    truth_check,
+)
 from rigidsym.declare import unit_vector, vector
 
 ID = "ex3.5"
@@ -17,6 +24,10 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.5"
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"d": "m", "p_star": "m"}
 FIGURE_NAME = "axis"
+#: the Plücker coordinates may be measurements (decimals, or floats): a moment not quite
+#: normal to the direction (e.n within tol of 0) is projected onto the nearest line's,
+#: the residual |e.n|/|e| printed
+MEASURED = True
 _h = sp.sqrt(2) / 2
 PARAMETERS = (Param("plucker", sp.ImmutableMatrix([-_h, 0, _h, 0, -sp.sqrt(2), 0]), (6,),
                     "estimated Plücker coordinates [e; n] of the joint axis in the gripper "
@@ -27,8 +38,9 @@ VARIANTS = (
 )
 
 
-def solve(plucker=PARAMETERS[0].default) -> Solution:
-    """Worked solution of Exercise 3.5 (``plucker``: the 6 Plücker coordinates [e; n])."""
+def solve(plucker=PARAMETERS[0].default, tol=None) -> Solution:
+    """Worked solution of Exercise 3.5 (``plucker``: the 6 Plücker coordinates [e; n];
+    ``tol``, in m: measured coordinates, whose e.n need only be 0 within tol)."""
     e = unit_vector("ex35_e")
     p = vector("p")
     data = sp.Matrix(plucker)
@@ -56,6 +68,10 @@ def solve(plucker=PARAMETERS[0].default) -> Solution:
     if is_zero(ec):
         s.fail("The direction part e of the data is zero, so they are not the Plücker "
                "coordinates of a line.")
+    residual = None
+    if tol is not None and not is_zero(ec.dot(nc)):
+        nc, residual = _measured(s, ec, nc, tol)
+    line = sp.Matrix.vstack(ec, nc)          # the data, or the nearest line to them
     if not is_zero(ec.dot(nc)):
         s.fail(f"e.n = {sp.radsimp(ec.dot(nc))} is not zero, so the data are not the Plücker "
                f"coordinates of a line (the moment of a line is normal to it).")
@@ -72,15 +88,41 @@ def solve(plucker=PARAMETERS[0].default) -> Solution:
     # independent check of (c): minimise ||x||^2 over x = p* + lambda e, compare
     lam = sp.Symbol("lambda", real=True)
     s.check(exact_check("(c) data: ||e|| = 1, e.n = 0; p* x e = n (also for the data as "
-                        "given), p*.e = 0, ||p*|| = d",
+                        "given, or the nearest line to measured data), p*.e = 0, ||p*|| = d",
                         [ec.dot(ec) - 1, ec.dot(nc), pstar.cross(ec) - nc,
-                         pstar.cross(data[:3, :]) - data[3:, :], pstar.dot(ec),
+                         pstar.cross(line[:3, :]) - line[3:, :], pstar.dot(ec),
                          pstar.dot(pstar) - d**2]))
     x = pstar + lam * ec
     lam_min = sp.solve(sp.diff(x.dot(x), lam), lam)
     s.check(exact_check("(c) minimising ||p* + lambda e||^2 gives lambda = 0",
                         [lam_min[0]]))
+    if residual is not None:
+        s.answers["residual"] = residual
+        s.check(truth_check(f"the moment's misfit |e.n|/|e| = {float(residual):.3g} m is "
+                            f"within tol = {float(tol):.3g} m", bool(residual <= tol),
+                            "exact comparison of squares of rationals"))
     return s
+
+
+def _measured(s: Solution, ec, nc, tol):
+    """Measured coordinates: the moment's part along e (the misfit of the line, in m)
+    removed when within ``tol``; else :meth:`Solution.fail` with the tolerance that
+    would accept them. Returns the projected moment and the misfit |e.n|/|e|."""
+    from ._fit import accepting_tol
+
+    en, ee = ec.dot(nc), ec.dot(ec)
+    gap2 = en**2 / ee                                 # rational: the decision is exact
+    if bool(gap2 > tol**2):
+        s.fail(f"e.n = {float(en):.3g}: the moment is not normal to the direction within "
+               f"tol = {float(tol):.3g} m (|e.n|/|e| = {float(sp.sqrt(gap2)):.3g} m), so the "
+               f"data are not the Plücker coordinates of a line"
+               f"{accepting_tol(sp.sqrt(gap2))}.")
+    n2 = (nc - en / ee * ec).applyfunc(sp.radsimp)
+    s.step("(c) nearest line", sp.Matrix.vstack(ec, n2),
+           f"Measured data: e.n = {float(en):.3g} is not 0; the moment's part along e is "
+           f"removed (n - (e.n/e.e) e: the nearest moment normal to e), a misfit "
+           f"|e.n|/|e| = {float(sp.sqrt(gap2)):.3g} m within tol = {float(tol):.3g} m.")
+    return n2, sp.sqrt(gap2)
 
 
 def figure(s: Solution):
