@@ -16,6 +16,10 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.7"
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"p_star": "m", "p_star_2": "m"}
 FIGURE_NAME = "axis"
+#: the moments may be measurements (decimals, or floats): the direction is then that of
+#: n_A x n_B, the moment about O made normal to it, and the misfit of the moments about A
+#: and B (in m) printed and judged within tol
+MEASURED = True
 _V = sp.ImmutableMatrix
 PARAMETERS = (
     Param("a", _V([1, 0, 0]), (3,), "position of point A", "m"),
@@ -30,8 +34,9 @@ VARIANTS = (
 
 
 def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].default,
-          n_B=PARAMETERS[3].default) -> Solution:
-    """Worked solution of Exercise 3.7 (positions and moments in metres)."""
+          n_B=PARAMETERS[3].default, tol=None) -> Solution:
+    """Worked solution of Exercise 3.7 (positions and moments in metres; ``tol``, in m:
+    measured data, whose moments need fit one line only within tol)."""
     a, b, nA, nB = (sp.Matrix(v) for v in (a, b, n_A, n_B))
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,
@@ -46,6 +51,9 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
         e0 = (u / u.norm()).applyfunc(sp.radsimp)
         rel = s.step("transfer", ((b - a).cross(e0) - (nA - nB)).applyfunc(sp.radsimp),
                      "n_A - n_B = (b - a) x e fixes the sense of e (zero for e = +u/||u||).")
+        if tol is not None and not is_zero(rel) and not is_zero(
+                (b - a).cross(-e0) - (nA - nB)):
+            return _measured(s, a, b, nA, nB, e0, tol)
         if is_zero(rel):
             e = e0
         elif is_zero((b - a).cross(-e0) - (nA - nB)):
@@ -65,6 +73,40 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
         answers.update({f"e{tag}": e, f"p_star{tag}": ps, f"plucker_O{tag}": pl})
         _checks(s, a, b, nA, nB, e, n0, ps, which)
     s.answers = answers
+    return s
+
+
+def _measured(s: Solution, a, b, nA, nB, e0, tol) -> Solution:
+    """Measured moments: e along n_A x n_B in the sense for which (b - a) x e is nearest
+    n_A - n_B; the moment about O made normal to e; the misfit max(|(p* - a) x e - n_A|,
+    |(p* - b) x e - n_B|) (m), judged within ``tol`` exactly, printed as ``residual``."""
+    from ._fit import accepting_tol
+
+    m = nA - nB
+    e = e0 if bool(((b - a).cross(e0)).dot(m) >= 0) else -e0
+    s.step("measured: the sense of e", e,
+           "n_A - n_B = (b - a) x e holds only within the measurements: the sense of e is "
+           "the one for which (b - a) x e points along n_A - n_B.")
+    n1 = nA + a.cross(e)
+    n0 = s.step("moment about O", (n1 - n1.dot(e) * e).applyfunc(sp.radsimp),
+                "n_O = n_A + a x e, its part along e removed (a line's moment is normal to "
+                "it; the measurements' part along e is their misfit).")
+    ps = s.step("closest point", e.cross(n0), "p* = e x n_O (Exercise 3.5).")
+    pl = s.step("Plücker coordinates about O", sp.Matrix.vstack(e, n0), "[e; n_O].")
+    misfits = [((ps - x).cross(e) - nx) for x, nx in ((a, nA), (b, nB))]
+    sq = [sp.radsimp(v.dot(v)) for v in misfits]
+    worst = max(sq, key=lambda q: float(sp.N(q, 30)))      # the one reported
+    if any(bool(q > tol**2) for q in sq):                  # decided exactly
+        gap = sp.sqrt(max(q for q in sq if bool(q > tol**2)))
+        s.fail(f"The moments are not those of one line within tol = {float(tol):.3g} m: "
+               f"the nearest line's moments miss the measured ones by "
+               f"{float(sp.N(gap)):.3g} m{accepting_tol(sp.N(gap, 30))}.")
+    s.answers = {"e": e, "p_star": ps, "plucker_O": pl, "residual": sp.sqrt(worst)}
+    s.check(exact_check("Plücker constraints: e.e = 1, e.n_O = 0; p*.e = 0",
+                        [e.dot(e) - 1, e.dot(n0), ps.dot(e)]))
+    s.check(truth_check(f"the moments about A and B are reproduced within tol = "
+                        f"{float(tol):.3g} m (misfit {float(sp.N(sp.sqrt(worst))):.3g} m)",
+                        all(bool(q <= tol**2) for q in sq), "exact comparison of squares"))
     return s
 
 
