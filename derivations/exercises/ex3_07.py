@@ -45,15 +45,14 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
                      "on the line (Sec. 3.3); the sign of e is fixed by n_A - n_B = (b - a) x e."])
     u = s.step("direction", nA.cross(nB),
                "Both moments are normal to e (n_X.e = 0), so e is parallel to n_A x n_B.")
+    if tol is not None and not is_zero(u):
+        return _measured(s, a, b, nA, nB, u, tol)
     if is_zero(u):
         lines = _parallel_moments(s, a, b, nA, nB)
     else:
         e0 = (u / u.norm()).applyfunc(sp.radsimp)
         rel = s.step("transfer", ((b - a).cross(e0) - (nA - nB)).applyfunc(sp.radsimp),
                      "n_A - n_B = (b - a) x e fixes the sense of e (zero for e = +u/||u||).")
-        if tol is not None and not is_zero(rel) and not is_zero(
-                (b - a).cross(-e0) - (nA - nB)):
-            return _measured(s, a, b, nA, nB, e0, tol)
         if is_zero(rel):
             e = e0
         elif is_zero((b - a).cross(-e0) - (nA - nB)):
@@ -76,17 +75,23 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
     return s
 
 
-def _measured(s: Solution, a, b, nA, nB, e0, tol) -> Solution:
-    """Measured moments: e along n_A x n_B in the sense for which (b - a) x e is nearest
-    n_A - n_B; the moment about O made normal to e; the misfit max(|(p* - a) x e - n_A|,
-    |(p* - b) x e - n_B|) (m), judged within ``tol`` exactly, printed as ``residual``."""
-    from ._fit import accepting_tol
+def _measured(s: Solution, a, b, nA, nB, u, tol) -> Solution:
+    """Measured moments: e along u = n_A x n_B (a rational unit vector within 1e-9 of its
+    direction, so all that follows is rational and exact) in the sense for which
+    (b - a) x e is nearest n_A - n_B; the moment about O made normal to e; the misfit
+    max(|(p* - a) x e - n_A|, |(p* - b) x e - n_B|) (m), judged within ``tol`` exactly,
+    printed as ``residual``."""
+    import numpy as np
+
+    from ._fit import accepting_tol, exact_unit_vector
 
     m = nA - nB
+    e0 = exact_unit_vector(np.array([float(x) for x in u]))
     e = e0 if bool(((b - a).cross(e0)).dot(m) >= 0) else -e0
-    s.step("measured: the sense of e", e,
-           "n_A - n_B = (b - a) x e holds only within the measurements: the sense of e is "
-           "the one for which (b - a) x e points along n_A - n_B.")
+    s.step("measured: e", e,
+           "The direction of n_A x n_B as a rational unit vector (within 1e-9, exactly of "
+           "norm 1); n_A - n_B = (b - a) x e holds only within the measurements: the sense "
+           "of e is the one for which (b - a) x e points along n_A - n_B.")
     n1 = nA + a.cross(e)
     n0 = s.step("moment about O", (n1 - n1.dot(e) * e).applyfunc(sp.radsimp),
                 "n_O = n_A + a x e, its part along e removed (a line's moment is normal to "
