@@ -145,13 +145,15 @@ def key_array(v) -> np.ndarray:
     return _expected(v)
 
 
-def slip_values(solution, name: str, target: np.ndarray,
-                replay: bool = True) -> list[tuple[str, np.ndarray]]:
+def slip_values(solution, name: str, target: np.ndarray, replay: bool = True,
+                replayed: list | None = None) -> list[tuple[str, np.ndarray]]:
     """The values a wrong answer of box ``name`` is compared with, in the grader's order
     (:func:`grade` names the first that matches): the edits of ``target`` (the key, or
     the member of its class the grader compares with), the exercise's own slips (its
     module's ``slips(solution)``), then the solution replayed with a slip along the way
-    (``replay``). Rounding (:func:`rounded_figures`) is tried after all of them.
+    (``replay``; ``replayed``: :func:`rigidsym.course.slips.replays` of the solution, as a
+    list, when the caller asks for many boxes). Rounding (:func:`rounded_figures`) is
+    tried after all of them.
 
     Returns:
         ``[(slip word, value as a float array), ...]``; a replay whose answer has another
@@ -162,7 +164,8 @@ def slip_values(solution, name: str, target: np.ndarray,
     own = getattr(exercise_module(solution.id), "slips", None)
     extra = [(w, d, _expected(v)) for w, d, v in (own(solution) if own else {}).get(name, [])]
     out = [(w, v) for w, _, v in _candidates(target, name, extra)]
-    for word, _, answers in (_Replays(solution) if replay else ()):
+    for word, _, answers in (() if not replay else replayed if replayed is not None
+                             else _Replays(solution)):
         value = answers.get(name)
         if value is None or isinstance(value, str):
             continue

@@ -41,6 +41,7 @@ import numpy as np
 
 from rigidsym.course.answer_classes import declared, names_of
 from rigidsym.course.grading import RTOL, key_array, slip_values
+from rigidsym.course.slips import replays
 from rigidsym.course.worked import exercise_module
 
 __all__ = ["stack_xml", "STACK_KINDS"]
@@ -125,9 +126,10 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float]) 
         parts.append(f"<input><name>{inputs[a]}</name><type>{kind}</type>"
                      f"<tans>ta_{inputs[a]}</tans><forbidfloat>0</forbidfloat>"
                      f"<options>allowempty</options></input>")
+    replayed = list(replays(sol))      # once per question: each is a read and a solve
     for a in boxes:
         if a not in skipped:
-            feedback = _feedback(a, boxes, inputs, group.get(a), sol)
+            feedback = _feedback(a, boxes, inputs, group.get(a), sol, replayed)
             parts.append(_prt(inputs[a], a, feedback, credit))
     parts.append("</question>")
     return "".join(parts)
@@ -155,7 +157,8 @@ def _prt(inp: str, box: str, feedback: str, credit: tuple[float, float]) -> str:
     return "".join(out)
 
 
-def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol) -> str:
+def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol,
+              replayed: list) -> str:
     """The Maxima of one box's PRT: ``isblank``, ``isright``, ``isslip``, ``isrounded``."""
     k, inp = boxes[box], inputs[box]
     lines = [f"isblank: is({inp} = EMPTYANSWER)"]
@@ -176,7 +179,7 @@ def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol) -> st
                   f"isright: if is(sg = 1) then rp_{inp} else rm_{inp}"]
         period = _TWO_PI if box == angle else None
         for tag, s in (("p", 1.0), ("m", -1.0)):
-            lines.append(f"sl{tag}: {_slips(inp, sol, box, s * k, period, None)}")
+            lines.append(f"sl{tag}: {_slips(inp, sol, box, s * k, period, None, replayed)}")
             lines.append(f"rd{tag}: {_rounded(inp, s * k)}")
         lines += ["isslip: if is(sg = 1) then slp else slm",
                   "isrounded: if is(sg = 1) then rdp else rdm"]
@@ -194,18 +197,20 @@ def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol) -> st
             lines.append(f"isright: if isblank then false else {_along(inp, k, along, sc)}")
         else:
             lines.append(f"isright: if isblank then false else {_near(inp, k, _scale(k))}")
-        lines.append(f"isslip: {_slips(inp, sol, box, k, period, along)}")
+        lines.append(f"isslip: {_slips(inp, sol, box, k, period, along, replayed)}")
         lines.append(f"isrounded: {_rounded(inp, k)}")
     return ";\n".join(lines) + ";\n"
 
 
-def _slips(inp: str, sol, box: str, target: np.ndarray, period, along) -> str:
+def _slips(inp: str, sol, box: str, target: np.ndarray, period, along,
+           replayed: list) -> str:
     """``is`` the answer one of the grader's slip values of ``target``, compared as
     :meth:`rigidsym.course.answer_classes.Verdict.matches` compares (``period``: an angle
-    modulo the period scaled as the slip scaled it; ``along``: modulo a shift along)."""
+    modulo the period scaled as the slip scaled it; ``along``: modulo a shift along;
+    ``replayed``: the solution's replays, computed once per question)."""
     sc = _scale(target)
     tests = []
-    for _, value in slip_values(sol, box, target):
+    for _, value in slip_values(sol, box, target, replayed=replayed):
         if value.shape != target.shape:
             continue
         s = max(sc, float(np.max(np.abs(value))) if value.size else 0.0)
