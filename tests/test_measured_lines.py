@@ -3,8 +3,9 @@ moments written to 6 decimals are judged within the tolerance, not exactly.
 
 The lines are drawn here (a rational unit direction from a Pythagorean quadruple, a point
 of small integers), their exact Plücker coordinates and moments computed here, then
-written to 6 decimals: the exercise solves them, prints the residual, and its answers are
-the exact line's within the tolerance; the same data moved off a line by 1e-3 m are
+written to 6 decimals: the exercise solves them, prints the residual (the distance to the
+nearest line's data, within the digits' tolerance whatever the line's distance or the
+points' spread), and its answers are the exact line's; the same data moved off a line are
 refused at the digits' tolerance, in one sentence naming a tolerance that would accept
 them, and solved when that tolerance is given.
 """
@@ -73,9 +74,9 @@ def _line_35(e, p, scale):
 
 def _moments_37(e, p, a, b):
     """3.7 on the line through p along e, its moments about a and b written to 6
-    decimals; then n_B moved by 1e-3 m off the line's."""
+    decimals; then n_B moved 1e-3 m off every line's."""
     nA, nB = (p - a).cross(e), (p - b).cross(e)
-    assume(any(nA.cross(nB)))                         # the moments decide the direction
+    assume(any(nA.cross(nB)) and a != b)              # the moments decide the direction
     exact_pstar = p - p.dot(e) * e
     data = {"a": list(a), "b": list(b), "n_A": _six(nA), "n_B": _six(nB)}
     s = ex.solve("3.7", **data)
@@ -86,9 +87,10 @@ def _moments_37(e, p, a, b):
     if "residual" in s.answers:
         assert 0 <= float(s.answers["residual"]) <= float(s.tol)
         assert "residual" in render_text(s)
-    bent = dict(data, n_B=_six(nB + sp.Rational(1, 1000) * (b - a).cross(e).normalized()
-                               if any((b - a).cross(e)) else nB + sp.Matrix([0, 0, 0.001])))
-    assume(bent["n_B"] != data["n_B"])
+    # n_B moved 1e-3 m along b - a: then (n_A - n_B).(b - a) = 1e-3 |b - a|, while every
+    # line has n_A - n_B = (b - a) x e, so the data are at least 1e-3/sqrt(2) m from any
+    # line's moments (the gradient of that product has norm sqrt(2) |b - a|)
+    bent = dict(data, n_B=_six(nB - sp.Rational(1, 1000) * (b - a).normalized()))
     refused = ex.solve("3.7", **bent)
     assert refused.status == "ill-posed" and "tol = " in refused.reason, refused.reason
     assert ex.solve("3.7", tol="0.01", **bent).status == "solved"

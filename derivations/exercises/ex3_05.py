@@ -24,9 +24,8 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.5"
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"d": "m", "p_star": "m"}
 FIGURE_NAME = "axis"
-#: the Plücker coordinates may be measurements (decimals, or floats): a moment not quite
-#: normal to the direction (e.n within tol of 0) is projected onto the nearest line's,
-#: the residual |e.n|/|e| printed
+#: the Plücker coordinates may be measurements (decimals, or floats): coordinates within
+#: tol of a line's (e.n not quite 0) are moved to the nearest line's, the distance printed
 MEASURED = True
 _h = sp.sqrt(2) / 2
 PARAMETERS = (Param("plucker", sp.ImmutableMatrix([-_h, 0, _h, 0, -sp.sqrt(2), 0]), (6,),
@@ -70,7 +69,7 @@ def solve(plucker=PARAMETERS[0].default, tol=None) -> Solution:
                "coordinates of a line.")
     residual = None
     if tol is not None and not is_zero(ec.dot(nc)):
-        nc, residual = _measured(s, ec, nc, tol)
+        ec, nc, residual = _measured(s, ec, nc, tol)
     line = sp.Matrix.vstack(ec, nc)          # the data, or the nearest line to them
     if not is_zero(ec.dot(nc)):
         s.fail(f"e.n = {sp.radsimp(ec.dot(nc))} is not zero, so the data are not the Plücker "
@@ -98,31 +97,38 @@ def solve(plucker=PARAMETERS[0].default, tol=None) -> Solution:
                         [lam_min[0]]))
     if residual is not None:
         s.answers["residual"] = residual
-        s.check(truth_check(f"the moment's misfit |e.n|/|e| = {float(residual):.3g} m is "
-                            f"within tol = {float(tol):.3g} m", bool(residual <= tol),
-                            "exact comparison of squares of rationals"))
+        s.check(truth_check(f"the data's distance to the nearest line's coordinates, "
+                            f"{float(residual):.3g}, is within tol = {float(tol):.3g}",
+                            bool(residual**2 <= tol**2), "exact comparison of rationals"))
     return s
 
 
 def _measured(s: Solution, ec, nc, tol):
-    """Measured coordinates: the moment's part along e (the misfit of the line, in m)
-    removed when within ``tol``; else :meth:`Solution.fail` with the tolerance that
-    would accept them. Returns the projected moment and the misfit |e.n|/|e|."""
+    """Measured coordinates: [e; n] moved to a line by the least step along the gradient
+    [n; e] of e.n (first order: lambda = e.n/(e.e + n.n)), then n made exactly normal to
+    e (a second-order change); all rational. The misfit, the distance moved (2-norm over
+    the 6 coordinates), judged within ``tol`` exactly; else :meth:`Solution.fail` with
+    the tolerance that would accept them. Returns the new e, n and the misfit."""
     from ._fit import accepting_tol
 
-    en, ee = ec.dot(nc), ec.dot(ec)
-    gap2 = en**2 / ee                                 # rational: the decision is exact
-    if bool(gap2 > tol**2):
-        s.fail(f"e.n = {float(en):.3g}: the moment is not normal to the direction within "
-               f"tol = {float(tol):.3g} m (|e.n|/|e| = {float(sp.sqrt(gap2)):.3g} m), so the "
-               f"data are not the Plücker coordinates of a line"
-               f"{accepting_tol(sp.sqrt(gap2))}.")
-    n2 = (nc - en / ee * ec).applyfunc(sp.radsimp)
-    s.step("(c) nearest line", sp.Matrix.vstack(ec, n2),
-           f"Measured data: e.n = {float(en):.3g} is not 0; the moment's part along e is "
-           f"removed (n - (e.n/e.e) e: the nearest moment normal to e), a misfit "
-           f"|e.n|/|e| = {float(sp.sqrt(gap2)):.3g} m within tol = {float(tol):.3g} m.")
-    return n2, sp.sqrt(gap2)
+    en = ec.dot(nc)
+    lam = en / (ec.dot(ec) + nc.dot(nc))
+    e2, n1 = ec - lam * nc, nc - lam * ec
+    n2 = n1 - e2.dot(n1) / e2.dot(e2) * e2
+    moved = sp.Matrix.vstack(e2 - ec, n2 - nc)
+    sq = moved.dot(moved)                                 # rational: decided exactly
+    gap = sp.sqrt(sq)
+    if bool(sq > tol**2):
+        s.fail(f"e.n = {float(en):.3g}: the coordinates are not within tol = "
+               f"{float(tol):.3g} of a line's (the nearest line is "
+               f"{float(sp.N(gap)):.3g} away), so they are not the Plücker coordinates of a "
+               f"line{accepting_tol(sp.N(gap, 30))}.")
+    s.step("(c) nearest line", sp.Matrix.vstack(e2, n2),
+           f"Measured data: e.n = {float(en):.3g} is not 0; [e; n] moved by the least step "
+           f"along [n; e] (lambda = e.n/(e.e + n.n)), then n made normal to e: the nearest "
+           f"line's coordinates, {float(sp.N(gap)):.3g} from the data, within tol = "
+           f"{float(tol):.3g}.")
+    return e2, n2, gap
 
 
 def figure(s: Solution):
