@@ -397,21 +397,17 @@ def test_rosters_and_answer_tables_as_spreadsheets_save_them(tmp_path, sep):
     assert read_answers(tmp_path / "a.csv") == {"Zoë Müller": {"P1.phi": "2,0944"}}
 
 
-def test_stack_grades_each_member_and_slip_of_31_as_the_gradebook():
-    """3.1's STACK question (stack.xml) run by the independent reader, against rigidsym's
-    grade of the same answers: members of the key's class made here by the group action
-    ((e, phi) -> (-e, -phi) with the Plücker array negated, phi + 2 pi k), slips made here
-    (transpose, one sign, degrees, order, mm for m), a blank box and a rounding: the
-    same score per box, box by box."""
+def _stack_question(ex_id: str):
+    """One student's STACK question of ``ex_id`` on the book's data, the solution and
+    its key as floats (answer name -> array)."""
     from rigidsym import exercises as ex
     from rigidsym.course.exam import asked
     from rigidsym.course.exam_text import box_label
-    from rigidsym.course.grading import grade
     from rigidsym.course.stack_export import stack_xml
     from rigidsym.course.worked import solution_record
-    from tests._stack_maxima import EMPTY, boxes, mark, questions
+    from tests._stack_maxima import questions
 
-    s = ex.solve("3.1")
+    s = ex.solve(ex_id)
     rec = dict(solution_record(s), problem=1, weight=1, asked=asked(s),
                labels={a: box_label(s.id, a) for a in asked(s)})
     q = questions(stack_xml("q", {"slip_credit": 0.5, "rounding_credit": 0.75,
@@ -419,6 +415,40 @@ def test_stack_grades_each_member_and_slip_of_31_as_the_gradebook():
                                                 "problems": [rec]}]}))["7-P1"]
     k = {a: np.array(sp.N(v, 17).tolist(), dtype=float) if isinstance(v, sp.MatrixBase)
          else float(sp.N(v, 17)) for a, v in s.answers.items() if a in asked(s)}
+    return q, s, k
+
+
+def _stack_equals_grade(q, s, k, forms) -> set:
+    """Each form (box -> value over the key) scored by STACK's question and by grade():
+    the same score per box; returns the answer notes seen."""
+    from rigidsym.course.grading import grade
+    from tests._stack_maxima import EMPTY, boxes, mark
+
+    seen = set()
+    for form in forms:
+        answers = {**k, **form}
+        got, notes = mark(q, {inp: answers[b] for b, (inp, _) in boxes(q).items()})
+        graded = grade(s, {b: "" if isinstance(v, str) and v == EMPTY else
+                           np.asarray(v).tolist() for b, v in answers.items()})
+        ours = [1.0 if g.correct else 0.75 if g.slip == "rounded" else 0.5 if g.slip
+                else 0.0 for g in graded]
+        for g, score in zip(graded, ours, strict=True):
+            inp = boxes(q)[g.name][0]
+            assert notes[f"prt_{inp}"][0] == score, (form.keys(), g.name, g.note, notes)
+            seen.add(notes[f"prt_{inp}"][1].split(": ")[-1])
+        assert got == pytest.approx(sum(ours) / len(ours), abs=1e-12)
+    return seen
+
+
+def test_stack_grades_each_member_and_slip_of_31_as_the_gradebook():
+    """3.1's STACK question (stack.xml) run by the independent reader, against rigidsym's
+    grade of the same answers: members of the key's class made here by the group action
+    ((e, phi) -> (-e, -phi) with the Plücker array negated, phi + 2 pi k), slips made here
+    (transpose, one sign, degrees, order, mm for m), a blank box and a rounding: the
+    same score per box, box by box."""
+    from tests._stack_maxima import EMPTY
+
+    q, s, k = _stack_question("3.1")
     e, phi, pl = k["e"], k["phi"], k["plucker"]
     forms = [
         {}, {"e": -e, "phi": -phi, "plucker": -pl}, {"phi": phi + 2 * math.pi},
@@ -428,17 +458,19 @@ def test_stack_grades_each_member_and_slip_of_31_as_the_gradebook():
         {"phi": float(f"{phi:.1e}")}, {"intersection_x=0": k["intersection_x=0"] * 1000},
         {"e": -e, "phi": -phi}, {"plucker": pl * np.array([[1], [1], [1], [1], [1], [-1]])},
     ]
-    seen = set()
-    for form in forms:
-        answers = {**k, **form}
-        got, notes = mark(q, {inp: answers[b] for b, (inp, _) in boxes(q).items()})
-        graded = grade(s, {b: "" if isinstance(v, str) else np.asarray(v).tolist()
-                           for b, v in answers.items()})
-        ours = [1.0 if g.correct else 0.75 if g.slip == "rounded" else 0.5 if g.slip
-                else 0.0 for g in graded]
-        for g, score in zip(graded, ours, strict=True):
-            inp = boxes(q)[g.name][0]
-            assert notes[f"prt_{inp}"][0] == score, (form.keys(), g.name, g.note, notes)
-            seen.add(notes[f"prt_{inp}"][1].split(": ")[-1])
-        assert got == pytest.approx(sum(ours) / len(ours), abs=1e-12)
-    assert seen == {"right", "slip", "rounded", "blank"}
+    assert _stack_equals_grade(q, s, k, forms) == {"right", "slip", "rounded", "blank"}
+
+
+@pytest.mark.slow
+def test_stack_grades_a_point_of_the_axis_and_its_slips_as_the_gradebook():
+    """3.6's STACK question: the axis's point anywhere on the axis (p0 + t e, made here),
+    with (-e, -phi) and the Plücker array negated, is right; the point scaled by 1000 (mm
+    for m), off the axis, negated, and e's slips score as grade() scores them."""
+    q, s, k = _stack_question("3.6")
+    e, phi, p0, pl = k["e"], k["phi"], k["axis_point_p0"], k["axis_plucker"]
+    forms = [{}, {"axis_point_p0": p0 + 0.37 * e}, {"axis_point_p0": p0 - 2.5 * e},
+             {"e": -e, "phi": -phi, "axis_plucker": -pl, "axis_point_p0": p0 + 1.1 * e},
+             {"axis_point_p0": p0 * 1000}, {"axis_point_p0": -p0},
+             {"axis_point_p0": p0 + np.array([[0.0], [0.0], [0.01]])},
+             {"e": -e}, {"phi": phi * 180 / math.pi}, {"Q": k["Q"].T}]
+    assert {"right", "slip"} <= _stack_equals_grade(q, s, k, forms)
