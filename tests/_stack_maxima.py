@@ -314,3 +314,20 @@ def mark(q: ET.Element, responses: dict) -> tuple[float, dict]:
         got += value * score
         notes[prt.findtext("name")] = (score, note)
     return got / total, notes
+
+
+def question_tests(q: ET.Element) -> list[tuple[str, bool]]:
+    """Run a question's own STACK question tests (``<qtest>``): each test input evaluated
+    in Maxima with the question variables, the question marked, each PRT's score and
+    last answer note compared with the expected. Returns ``[(description, passed)]``."""
+    qvars = run_maxima(q.findtext("questionvariables/text") or "", {})
+    out = []
+    for t in q.iter("qtest"):
+        responses = {i.findtext("name"): _Parser(_tokens(i.findtext("value")), qvars).expr()
+                     for i in t.iter("testinput")}
+        _, notes = mark(q, responses)
+        ok = all(notes[x.findtext("name")] == (float(x.findtext("expectedscore")),
+                                                x.findtext("expectedanswernote"))
+                 for x in t.iter("expected"))
+        out.append((t.findtext("description"), ok))
+    return out

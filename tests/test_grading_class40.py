@@ -226,11 +226,13 @@ def _stack_against_gradebook(tmp_path, key, rows, behaviours) -> int:
     status (right, blank, the slip's credit, rounded, wrong). The student types each
     number into STACK's boxes as written (a decimal comma retyped with a point, as
     STACK's validation asks). Returns how many students were compared."""
-    from tests._stack_maxima import EMPTY, boxes, mark, questions, run_maxima
+    from tests._stack_maxima import EMPTY, boxes, mark, question_tests, questions, run_maxima
 
     qs = questions((tmp_path / "c" / "stack.xml").read_text(encoding="utf-8"))
     for r in key["students"]:
         q = qs[f"{r['id']}-P1"]
+        tests = question_tests(q)          # the question's own tests pass in the reader
+        assert len(tests) >= 3 and all(ok for _, ok in tests), tests
         ta = run_maxima(q.findtext("questionvariables/text"), {})
         given = behaviours[r["id"]][1]
         responses = {}
@@ -459,6 +461,12 @@ def test_stack_grades_each_member_and_slip_of_31_as_the_gradebook():
         {"e": -e, "phi": -phi}, {"plucker": pl * np.array([[1], [1], [1], [1], [1], [-1]])},
     ]
     assert _stack_equals_grade(q, s, k, forms) == {"right", "slip", "rounded", "blank"}
+    from tests._stack_maxima import boxes, question_tests
+
+    tests = question_tests(q)              # the key, all blank, each box negated alone
+    assert [d for d, _ in tests][:2] == ["the key", "every box blank"]
+    assert len(tests) == 2 + sum(bool(np.any(k[b])) for b in boxes(q))
+    assert all(ok for _, ok in tests), tests
 
 
 @pytest.mark.slow

@@ -20,6 +20,8 @@ student), with:
   a line modulo a shift along it), then any of the grader's slip values
   (:func:`rigidsym.course.grading.slip_values`, the replays included), then the key
   rounded to 1, 2 or 3 significant figures;
+* STACK's question tests: the key, every box blank, each box negated alone, each PRT's
+  expected score and note the gradebook's;
 * four nodes per PRT, each ``AlgEquiv(<truth>, true)`` on the feedback variables
   ``isblank``, ``isright``, ``isslip``, ``isrounded``: blank (0), right (1), a named
   slip (the spec's ``slip_credit``), rounded (``rounding_credit``), else wrong (0); the
@@ -131,8 +133,44 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float]) 
         if a not in skipped:
             feedback = _feedback(a, boxes, inputs, group.get(a), sol, replayed)
             parts.append(_prt(inputs[a], a, feedback, credit))
+    parts += _qtests(sol, boxes, inputs, [a for a in boxes if a not in skipped], credit)
     parts.append("</question>")
     return "".join(parts)
+
+
+def _qtests(sol, boxes: dict, inputs: dict, exported: list,
+            credit: tuple[float, float]) -> list[str]:
+    """STACK's question tests (each question carries its own): every box right (the
+    key), every box blank, and each box negated alone with the others right, the
+    expected score and note of each PRT being the gradebook's
+    (:func:`rigidsym.course.grading.grade` of the same answers)."""
+    from rigidsym.course.grading import grade
+
+    cases = [("the key", {a: f"ta_{inputs[a]}" for a in exported}),
+             ("every box blank", {a: "EMPTYANSWER" for a in exported})]
+    cases += [(f"{a} negated", {b: f"-ta_{inputs[b]}" if b == a else f"ta_{inputs[b]}"
+                                for b in exported})
+              for a in exported if np.any(boxes[a])]
+    out = []
+    for n, (what, given) in enumerate(cases, 1):
+        values = {a: "" if v == "EMPTYANSWER" else
+                  (-boxes[a] if v.startswith("-") else boxes[a]).tolist() for a, v in
+                  given.items()}
+        graded = {g.name: g for g in grade(sol, values)}
+        parts = [f"<qtest><testcase>{n}</testcase><description>{_x(what)}</description>"]
+        parts += [f"<testinput><name>{inputs[a]}</name><value>{v}</value></testinput>"
+                  for a, v in given.items()]
+        for a in exported:
+            g = graded[a]
+            word, score = ("right", 1.0) if g.correct else ("blank", 0.0) if g.missing \
+                else ("rounded", credit[1]) if g.slip == "rounded" else \
+                ("slip", credit[0]) if g.slip else ("wrong", 0.0)
+            parts.append(f"<expected><name>prt_{inputs[a]}</name><expectedscore>{score:g}"
+                         f"</expectedscore><expectedpenalty>0</expectedpenalty>"
+                         f"<expectedanswernote>{_x(a)}: {word}</expectedanswernote>"
+                         f"</expected>")
+        out.append("".join(parts) + "</qtest>")
+    return out
 
 
 def _prt(inp: str, box: str, feedback: str, credit: tuple[float, float]) -> str:
