@@ -20,6 +20,7 @@ over the sum of the values.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import xml.etree.ElementTree as ET
@@ -31,7 +32,13 @@ _TOKEN = re.compile(r"\s*(?:(\d+\.\d*(?:[eE][-+]?\d+)?|\d+(?:[eE][-+]?\d+)?)|"
                     r"([A-Za-z%_][A-Za-z0-9%_]*)|(<=|>=|[-+*/^.=<>:;()\[\],]))")
 
 
-def _tokens(text: str) -> list[tuple[str, str]]:
+@functools.lru_cache(maxsize=4096)
+def _tokens(text: str) -> tuple[tuple[str, str], ...]:
+    """The tokens of one statement (cached: a question's tests run its PRTs again)."""
+    return tuple(_scan(text))
+
+
+def _scan(text: str) -> list[tuple[str, str]]:
     out, i, text = [], 0, text.strip()
     while i < len(text):
         m = _TOKEN.match(text, i)
