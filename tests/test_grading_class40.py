@@ -416,7 +416,8 @@ def _stack_question(ex_id: str):
                                   "students": [{"student": "Amy", "id": "7",
                                                 "problems": [rec]}]}))["7-P1"]
     k = {a: np.array(sp.N(v, 17).tolist(), dtype=float) if isinstance(v, sp.MatrixBase)
-         else float(sp.N(v, 17)) for a, v in s.answers.items() if a in asked(s)}
+         else bool(v) if v in (sp.true, sp.false) else float(sp.N(v, 17))
+         for a, v in s.answers.items() if a in asked(s)}
     return q, s, k
 
 
@@ -482,3 +483,16 @@ def test_stack_grades_a_point_of_the_axis_and_its_slips_as_the_gradebook():
              {"axis_point_p0": p0 + np.array([[0.0], [0.0], [0.01]])},
              {"e": -e}, {"phi": phi * 180 / math.pi}, {"Q": k["Q"].T}]
     assert {"right", "slip"} <= _stack_equals_grade(q, s, k, forms)
+
+
+def test_stack_grades_truths_as_the_gradebook():
+    """3.18's truth box in STACK (a boolean input): the key's truth right, the other one
+    wrong, blank blank, as grade() scores them; the question's own tests pass."""
+    from tests._stack_maxima import EMPTY, boxes, question_tests
+
+    q, s, k = _stack_question("3.18")
+    truths = [b for b in boxes(q) if boxes(q)[b][1] == "boolean"]
+    assert truths
+    forms = [{}, *[{b: not k[b]} for b in truths], *[{b: EMPTY} for b in truths]]
+    assert _stack_equals_grade(q, s, k, forms) >= {"right", "wrong", "blank"}
+    assert all(ok for _, ok in question_tests(q))

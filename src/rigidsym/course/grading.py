@@ -311,6 +311,12 @@ def grade(solution, answers: dict, slips: dict | None = None,
         if v is not None and v.right:
             out.append(Graded(name, True, None, shown, got[2], note=v.note))
             continue
+        if right in (sp.true, sp.false):   # a truth has no slips: a power of ten of 1
+            g, e = got[0], got[1]          # is within tol of 0 ("unit" for false)
+            ok = _close_plain(g, e, 1.0)
+            out.append(Graded(name, ok, None, shown, "the key's truth" if ok else
+                              f"not the key's truth ({bool(right)})"))
+            continue
         out.append(_grade_one(name, got, right, shown, (slips or {}).get(name, []),
                               replayed, units[name], v))
     return out

@@ -10,8 +10,9 @@ student and problem (Moodle XML, ``<question type="stack">``, in a category per
 student), with:
 
 * an input per numeric box (``matrix`` for a vector or a matrix, ``algebraic`` for a
-  number), ``allowempty`` (a blank box is ``EMPTYANSWER``, so the PRTs that read it still
-  run and a linked box is graded without it, as in the gradebook);
+  number, ``boolean`` for a truth), ``allowempty`` (a blank box is ``EMPTYANSWER``, so
+  the PRTs that read it still run and a linked box is graded without it, as in the
+  gradebook);
 * a PRT per box, value 1 (the gradebook's mean of boxes), whose feedback variables decide
   in Maxima what the grader decides in Python: membership of the key's class within
   0.1 % of the key's largest entry (for a declared sign group, (e, phi) = (-e, -phi),
@@ -121,24 +122,27 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float]) 
             for a in boxes if a not in skipped]
     text += [f"<p>{html.escape(p['labels'].get(a, a))}: graded by rigidsym grade (import "
              f"gradebook.csv)</p>" for a in p["asked"] if a not in boxes or a in skipped]
-    qvars = "".join(f"ta_{inputs[a]}: {_lit(k)};\n" for a, k in boxes.items())
+    qvars = "".join(f"ta_{inputs[a]}: {_truth_lit(sol.answers[a]) or _lit(k)};\n"
+                    for a, k in boxes.items())
     parts = [f"<question type=\"stack\"><name><text>{_x(name)}</text></name>",
              f"<questiontext format=\"html\"><text><![CDATA[{''.join(text)}]]></text>"
              f"</questiontext>",
              f"<questionvariables><text>{_x(qvars)}</text></questionvariables>",
              f"<defaultgrade>{p['weight']:g}</defaultgrade>",
              f"<idnumber>{_x(ident)}</idnumber>"]
+    truths = {a for a in boxes if _is_truth(sol.answers[a])}
     for a, k in boxes.items():
         if a in skipped:
             continue
-        kind = "matrix" if k.ndim else "algebraic"
+        kind = "boolean" if a in truths else "matrix" if k.ndim else "algebraic"
         parts.append(f"<input><name>{inputs[a]}</name><type>{kind}</type>"
                      f"<tans>ta_{inputs[a]}</tans><forbidfloat>0</forbidfloat>"
                      f"<options>allowempty</options></input>")
     replayed = list(replays(sol))      # once per question: each is a read and a solve
     for a in boxes:
         if a not in skipped:
-            feedback = _feedback(a, boxes, inputs, group.get(a), sol, replayed)
+            feedback = _truth_feedback(inputs[a], sol.answers[a]) if a in truths else \
+                _feedback(a, boxes, inputs, group.get(a), sol, replayed)
             parts.append(_prt(inputs[a], a, feedback, credit))
     parts += _qtests(sol, boxes, inputs, [a for a in boxes if a not in skipped], credit)
     parts.append("</question>")
@@ -157,7 +161,7 @@ def _qtests(sol, boxes: dict, inputs: dict, exported: list,
              ("every box blank", {a: "EMPTYANSWER" for a in exported})]
     cases += [(f"{a} negated", {b: f"-ta_{inputs[b]}" if b == a else f"ta_{inputs[b]}"
                                 for b in exported})
-              for a in exported if np.any(boxes[a])]
+              for a in exported if np.any(boxes[a]) and not _is_truth(sol.answers[a])]
     out = []
     for n, (what, given) in enumerate(cases, 1):
         values = {a: "" if v == "EMPTYANSWER" else
@@ -178,6 +182,25 @@ def _qtests(sol, boxes: dict, inputs: dict, exported: list,
                          f"</expected>")
         out.append("".join(parts) + "</qtest>")
     return out
+
+
+def _is_truth(v) -> bool:
+    import sympy as sp
+
+    return v in (sp.true, sp.false)
+
+
+def _truth_lit(v) -> str:
+    """A truth as Maxima writes it (``true``, ``false``), or ``""`` for another value."""
+    return ("true" if bool(v) else "false") if _is_truth(v) else ""
+
+
+def _truth_feedback(inp: str, v) -> str:
+    """A truth box (STACK's ``boolean`` input): right when it is the key's truth; no slip
+    of a truth is named (the gradebook names none: its edits of 1 or 0 never give the
+    other)."""
+    return (f"isblank: is({inp} = EMPTYANSWER);\nisright: is({inp} = {_truth_lit(v)});\n"
+            f"isslip: false;\nisrounded: false;\n")
 
 
 def _prt(inp: str, box: str, feedback: str, credit: tuple[float, float]) -> str:
