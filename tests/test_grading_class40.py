@@ -496,3 +496,31 @@ def test_stack_grades_truths_as_the_gradebook():
     forms = [{}, *[{b: not k[b]} for b in truths], *[{b: EMPTY} for b in truths]]
     assert _stack_equals_grade(q, s, k, forms) >= {"right", "wrong", "blank"}
     assert all(ok for _, ok in question_tests(q))
+
+
+@pytest.mark.slow
+def test_stack_grades_an_angle_modulo_pi_as_the_gradebook():
+    """3.12's angles of its principal axes (defined modulo pi) in STACK: alpha + pi,
+    alpha - 2 pi right; degrees, the sign, a rounding and alpha + pi/2 scored as grade()
+    scores them, each exported box (the principal axes themselves are not exported)."""
+    from rigidsym.course.grading import grade
+    from tests._stack_maxima import boxes, mark, question_tests
+
+    q, s, k = _stack_question("3.12")
+    bx = boxes(q)
+    angles = [b for b in bx if "angle" in b]
+    assert len(angles) == 2 and "wedge_principal_axes" not in bx
+    forms = [{}] + [{b: v} for b in angles for v in (
+        k[b] + math.pi, k[b] - 2 * math.pi, k[b] * 180 / math.pi, -k[b],
+        float(f"{k[b]:.1e}"), k[b] + math.pi / 2)]
+    for form in forms:
+        answers = {**k, **form}
+        _, notes = mark(q, {inp: answers[b] for b, (inp, _) in bx.items()})
+        graded = {g.name: g for g in grade(s, {b: np.asarray(v).tolist()
+                                               for b, v in answers.items()})}
+        for b, (inp, _) in bx.items():
+            g = graded[b]
+            score = 1.0 if g.correct else 0.75 if g.slip == "rounded" else \
+                0.5 if g.slip else 0.0
+            assert notes[f"prt_{inp}"][0] == score, (b, form.keys(), g.note, notes)
+    assert all(ok for _, ok in question_tests(q))
