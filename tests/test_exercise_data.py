@@ -223,7 +223,7 @@ def test_ill_posed_data_give_one_sentence(ex_id, data, words):
     ("ex3.4", dict(n_1=[1, 2, {}]), TypeError, "n_1[2]"),
     ("ex3.4", dict(tol=0), ValueError, "tol: expected a positive"),
     ("ex3.1", dict(A=[[1, 2, 3]]), ValueError, "A: expected a 3-vector"),
-    ("ex3.5", dict(tol=0.1), TypeError, "tol: the data of ex3.5 are not measurements"),
+    ("ex3.2", dict(tol=0.1), TypeError, "tol: the data of ex3.2 are not measurements"),
     ("ex3.2", dict(P_1=sp.Matrix([1, 2])), ValueError, "P_1"),
     ("ex3.5", dict(plucker=[1, 0, 0]), ValueError, "plucker: expected a 6-array"),
     ("ex3.7", dict(a=None), TypeError, "a: expected a 3-vector"),
@@ -279,5 +279,6 @@ def test_parameters_table(ex_id):
         assert p.name.isidentifier() and p.meaning
         if p.shape is not None:      # the book's value reads back as itself
             assert read_value(p, p.default)[0] == p.default
-    assert params.measured == (ex_id in ("ex3.1", "ex3.4", "ex3.6", "ex3.14", "ex3.19"))
+    assert params.measured == (ex_id in ("ex3.1", "ex3.4", "ex3.5", "ex3.6", "ex3.7", "ex3.14",
+                                         "ex3.19"))
     assert "<table>" in params._repr_html_() and params.names[0] in str(params)

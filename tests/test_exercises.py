@@ -102,7 +102,7 @@ def test_cli_student_data(tmp_path, capsys):
     ["exercise", "3.4", "--set", "n_1"],
     ["exercise", "3.4", "--set", "n_1=1,2"],
     ["exercise", "3.4", "--data", "/nonexistent/data.json"],
-    ["exercise", "3.5", "--tol", "0.1"],
+    ["exercise", "3.2", "--tol", "0.1"],
     ["exercise", "--all", "--set", "n_1=1,2,3"],
 ])
 def test_cli_bad_data_is_one_line_exit_2(argv, capsys):

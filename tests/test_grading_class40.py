@@ -219,10 +219,49 @@ def _moodle_against_gradebook(tmp_path, key, rows, behaviours, expected) -> int:
     return differ
 
 
+def _stack_against_gradebook(tmp_path, key, rows, behaviours) -> int:
+    """Each student's mark in Moodle's STACK (stack.xml run by the independent reader of
+    tests/_stack_maxima.py: its Maxima and its potential response trees) against the
+    gradebook's: equal for every student, and each box's answer note the gradebook's
+    status (right, blank, the slip's credit, rounded, wrong). The student types each
+    number into STACK's boxes as written (a decimal comma retyped with a point, as
+    STACK's validation asks). Returns how many students were compared."""
+    from tests._stack_maxima import EMPTY, boxes, mark, question_tests, questions, run_maxima
+
+    qs = questions((tmp_path / "c" / "stack.xml").read_text(encoding="utf-8"))
+    for r in key["students"]:
+        q = qs[f"{r['id']}-P1"]
+        tests = question_tests(q)          # the question's own tests pass in the reader
+        assert len(tests) >= 3 and all(ok for _, ok in tests), tests
+        ta = run_maxima(q.findtext("questionvariables/text"), {})
+        given = behaviours[r["id"]][1]
+        responses = {}
+        for box, (inp, kind) in boxes(q).items():
+            v = given.get(box, "")
+            if v == "" or v is None:
+                responses[inp] = EMPTY
+            elif kind == "matrix":          # the grid of the key's shape, entry by entry
+                responses[inp] = np.array(_fl(v), dtype=float).reshape(ta[f"ta_{inp}"].shape)
+            else:
+                responses[inp] = float(str(v).replace(",", "."))
+        got, notes = mark(q, responses)
+        mine = [x for x in rows if x["id"] == r["id"]]
+        book = sum(float(x["points"]) for x in mine) / sum(float(x["max_points"]) for x in mine)
+        assert got == pytest.approx(book, abs=1e-5), (r["student"], got, book, notes)
+        word = {"right": "right", "missing": "blank"}
+        for x in mine:
+            inp = boxes(q)[x["answer"]][0]
+            want = word.get(x["status"]) or ("rounded" if x["slip"] == "rounded" else
+                                             "slip" if x["slip"] else "wrong")
+            assert notes[f"prt_{inp}"][1] == f"{x['answer']}: {want}", (r["student"], x)
+    return len(key["students"])
+
+
 def test_a_class_of_four_graded_to_the_end(tmp_path, capsys):
     key, expected, behaviours = _class(tmp_path, 4, seed=1)
     rows = _grade_and_compare(tmp_path, key, expected, capsys)
     _moodle_against_gradebook(tmp_path, key, rows, behaviours, expected)
+    assert _stack_against_gradebook(tmp_path, key, rows, behaviours) == 4
     handout = (tmp_path / "c" / "handouts" / "s3003.html").read_text(encoding="utf-8")
     assert "unit cube" not in handout and "0.1 %" in handout   # a cube of side 2; the tol
     assert (tmp_path / "c" / "keys" / "s3003.html").exists()
@@ -240,6 +279,8 @@ def test_a_class_of_forty_graded_to_the_end(tmp_path, capsys):
     print(f"Moodle's Cloze mark differs from the gradebook's for {differ} of 40 students "
           f"({as_written} answered every box as written or blank)")
     assert differ <= 40 - as_written
+    # STACK's trees grade linked boxes jointly: its mark is the gradebook's for all 40
+    assert _stack_against_gradebook(tmp_path, key, rows, behaviours) == 40
 
 
 def test_names_that_fold_alike_are_reported_not_guessed(tmp_path):
@@ -356,3 +397,130 @@ def test_rosters_and_answer_tables_as_spreadsheets_save_them(tmp_path, sep):
     (tmp_path / "a.csv").write_text(f"student{sep}P1.phi\nZoë Müller{sep}\"2,0944\"\n",
                                     encoding="utf-8-sig")
     assert read_answers(tmp_path / "a.csv") == {"Zoë Müller": {"P1.phi": "2,0944"}}
+
+
+def _stack_question(ex_id: str):
+    """One student's STACK question of ``ex_id`` on the book's data, the solution and
+    its key as floats (answer name -> array)."""
+    from rigidsym import exercises as ex
+    from rigidsym.course.exam import asked
+    from rigidsym.course.exam_text import box_label
+    from rigidsym.course.stack_export import stack_xml
+    from rigidsym.course.worked import solution_record
+    from tests._stack_maxima import questions
+
+    s = ex.solve(ex_id)
+    rec = dict(solution_record(s), problem=1, weight=1, asked=asked(s),
+               labels={a: box_label(s.id, a) for a in asked(s)})
+    q = questions(stack_xml("q", {"slip_credit": 0.5, "rounding_credit": 0.75,
+                                  "students": [{"student": "Amy", "id": "7",
+                                                "problems": [rec]}]}))["7-P1"]
+    k = {a: np.array(sp.N(v, 17).tolist(), dtype=float) if isinstance(v, sp.MatrixBase)
+         else bool(v) if v in (sp.true, sp.false) else float(sp.N(v, 17))
+         for a, v in s.answers.items() if a in asked(s)}
+    return q, s, k
+
+
+def _stack_equals_grade(q, s, k, forms) -> set:
+    """Each form (box -> value over the key) scored by STACK's question and by grade():
+    the same score per box; returns the answer notes seen."""
+    from rigidsym.course.grading import grade
+    from tests._stack_maxima import EMPTY, boxes, mark
+
+    seen = set()
+    for form in forms:
+        answers = {**k, **form}
+        got, notes = mark(q, {inp: answers[b] for b, (inp, _) in boxes(q).items()})
+        graded = grade(s, {b: "" if isinstance(v, str) and v == EMPTY else
+                           np.asarray(v).tolist() for b, v in answers.items()})
+        ours = [1.0 if g.correct else 0.75 if g.slip == "rounded" else 0.5 if g.slip
+                else 0.0 for g in graded]
+        for g, score in zip(graded, ours, strict=True):
+            inp = boxes(q)[g.name][0]
+            assert notes[f"prt_{inp}"][0] == score, (form.keys(), g.name, g.note, notes)
+            seen.add(notes[f"prt_{inp}"][1].split(": ")[-1])
+        assert got == pytest.approx(sum(ours) / len(ours), abs=1e-12)
+    return seen
+
+
+def test_stack_grades_each_member_and_slip_of_31_as_the_gradebook():
+    """3.1's STACK question (stack.xml) run by the independent reader, against rigidsym's
+    grade of the same answers: members of the key's class made here by the group action
+    ((e, phi) -> (-e, -phi) with the Plücker array negated, phi + 2 pi k), slips made here
+    (transpose, one sign, degrees, order, mm for m), a blank box and a rounding: the
+    same score per box, box by box."""
+    from tests._stack_maxima import EMPTY
+
+    q, s, k = _stack_question("3.1")
+    e, phi, pl = k["e"], k["phi"], k["plucker"]
+    forms = [
+        {}, {"e": -e, "phi": -phi, "plucker": -pl}, {"phi": phi + 2 * math.pi},
+        {"e": -e, "phi": 2 * math.pi - phi, "plucker": -pl},       # -phi + 2 pi
+        {"Q": k["Q"].T}, {"e": -e}, {"phi": phi * 180 / math.pi},
+        {"plucker": np.concatenate([pl[3:], pl[:3]])}, {"e": EMPTY, "plucker": -pl},
+        {"phi": float(f"{phi:.1e}")}, {"intersection_x=0": k["intersection_x=0"] * 1000},
+        {"e": -e, "phi": -phi}, {"plucker": pl * np.array([[1], [1], [1], [1], [1], [-1]])},
+    ]
+    assert _stack_equals_grade(q, s, k, forms) == {"right", "slip", "rounded", "blank"}
+    from tests._stack_maxima import boxes, question_tests
+
+    tests = question_tests(q)              # the key, all blank, each box negated alone
+    assert [d for d, _ in tests][:2] == ["the key", "every box blank"]
+    assert len(tests) == 2 + sum(bool(np.any(k[b])) for b in boxes(q))
+    assert all(ok for _, ok in tests), tests
+
+
+@pytest.mark.slow
+def test_stack_grades_a_point_of_the_axis_and_its_slips_as_the_gradebook():
+    """3.6's STACK question: the axis's point anywhere on the axis (p0 + t e, made here),
+    with (-e, -phi) and the Plücker array negated, is right; the point scaled by 1000 (mm
+    for m), off the axis, negated, and e's slips score as grade() scores them."""
+    q, s, k = _stack_question("3.6")
+    e, phi, p0, pl = k["e"], k["phi"], k["axis_point_p0"], k["axis_plucker"]
+    forms = [{}, {"axis_point_p0": p0 + 0.37 * e}, {"axis_point_p0": p0 - 2.5 * e},
+             {"e": -e, "phi": -phi, "axis_plucker": -pl, "axis_point_p0": p0 + 1.1 * e},
+             {"axis_point_p0": p0 * 1000}, {"axis_point_p0": -p0},
+             {"axis_point_p0": p0 + np.array([[0.0], [0.0], [0.01]])},
+             {"e": -e}, {"phi": phi * 180 / math.pi}, {"Q": k["Q"].T}]
+    assert {"right", "slip"} <= _stack_equals_grade(q, s, k, forms)
+
+
+def test_stack_grades_truths_as_the_gradebook():
+    """3.18's truth box in STACK (a boolean input): the key's truth right, the other one
+    wrong, blank blank, as grade() scores them; the question's own tests pass."""
+    from tests._stack_maxima import EMPTY, boxes, question_tests
+
+    q, s, k = _stack_question("3.18")
+    truths = [b for b in boxes(q) if boxes(q)[b][1] == "boolean"]
+    assert truths
+    forms = [{}, *[{b: not k[b]} for b in truths], *[{b: EMPTY} for b in truths]]
+    assert _stack_equals_grade(q, s, k, forms) >= {"right", "wrong", "blank"}
+    assert all(ok for _, ok in question_tests(q))
+
+
+@pytest.mark.slow
+def test_stack_grades_an_angle_modulo_pi_as_the_gradebook():
+    """3.12's angles of its principal axes (defined modulo pi) in STACK: alpha + pi,
+    alpha - 2 pi right; degrees, the sign, a rounding and alpha + pi/2 scored as grade()
+    scores them, each exported box (the principal axes themselves are not exported)."""
+    from rigidsym.course.grading import grade
+    from tests._stack_maxima import boxes, mark, question_tests
+
+    q, s, k = _stack_question("3.12")
+    bx = boxes(q)
+    angles = [b for b in bx if "angle" in b]
+    assert len(angles) == 2 and "wedge_principal_axes" not in bx
+    forms = [{}] + [{b: v} for b in angles for v in (
+        k[b] + math.pi, k[b] - 2 * math.pi, k[b] * 180 / math.pi, -k[b],
+        float(f"{k[b]:.1e}"), k[b] + math.pi / 2)]
+    for form in forms:
+        answers = {**k, **form}
+        _, notes = mark(q, {inp: answers[b] for b, (inp, _) in bx.items()})
+        graded = {g.name: g for g in grade(s, {b: np.asarray(v).tolist()
+                                               for b, v in answers.items()})}
+        for b, (inp, _) in bx.items():
+            g = graded[b]
+            score = 1.0 if g.correct else 0.75 if g.slip == "rounded" else \
+                0.5 if g.slip else 0.0
+            assert notes[f"prt_{inp}"][0] == score, (b, form.keys(), g.note, notes)
+    assert all(ok for _, ok in question_tests(q))

@@ -65,6 +65,30 @@ def _rational(x: float, max_den: int) -> sp.Rational:
     return sp.Rational(f.numerator, f.denominator)
 
 
+def exact_unit_vector(v: np.ndarray, max_den: int = 10**9) -> sp.Matrix:
+    """A rational unit 3-vector (exactly ``e.e = 1``) within ~1/max_den of the direction of
+    ``v``: the inverse stereographic projection of ``v``'s projection rounded to rationals,
+    from the pole opposite ``v``'s largest entry (so the projection is bounded).
+
+    Raises:
+        ValueError: ``v`` is zero or not finite (the message names it).
+    """
+    v = np.asarray(v, dtype=float).reshape(-1)
+    norm = float(np.linalg.norm(v))
+    if not np.isfinite(norm) or norm == 0:
+        raise ValueError(f"exact_unit_vector: v = {v.tolist()} has no direction")
+    u = v / norm
+    k = int(np.argmax(np.abs(u)))
+    sign = 1 if u[k] > 0 else -1
+    i, j = [m for m in range(3) if m != k]
+    t = [_rational(u[m] / (1 + sign * u[k]), max_den) for m in (i, j)]
+    q = t[0] ** 2 + t[1] ** 2
+    out = [sp.Integer(0)] * 3
+    out[i], out[j] = 2 * t[0] / (1 + q), 2 * t[1] / (1 + q)
+    out[k] = sign * (1 - q) / (1 + q)
+    return sp.Matrix(out)
+
+
 def exact_rotation(Qf: np.ndarray, max_den: int = 10**6) -> sp.Matrix:
     """An exactly proper-orthogonal rational matrix within ~1/max_den of the float rotation.
 

@@ -4,7 +4,14 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.course.worked import Param, Solution, exact_check, identity_check, is_zero
+from rigidsym.course.worked import (
+    Param,
+    Solution,
+    exact_check,
+    identity_check,
+    is_zero,
+    truth_check,
+)
 from rigidsym.declare import unit_vector, vector
 
 ID = "ex3.5"
@@ -17,6 +24,9 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.5"
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"d": "m", "p_star": "m"}
 FIGURE_NAME = "axis"
+#: the Plücker coordinates may be measurements (decimals, or floats): coordinates within
+#: tol of a line's (e.n not quite 0) are moved to the nearest line's, the distance printed
+MEASURED = True
 _h = sp.sqrt(2) / 2
 PARAMETERS = (Param("plucker", sp.ImmutableMatrix([-_h, 0, _h, 0, -sp.sqrt(2), 0]), (6,),
                     "estimated Plücker coordinates [e; n] of the joint axis in the gripper "
@@ -27,8 +37,9 @@ VARIANTS = (
 )
 
 
-def solve(plucker=PARAMETERS[0].default) -> Solution:
-    """Worked solution of Exercise 3.5 (``plucker``: the 6 Plücker coordinates [e; n])."""
+def solve(plucker=PARAMETERS[0].default, tol=None) -> Solution:
+    """Worked solution of Exercise 3.5 (``plucker``: the 6 Plücker coordinates [e; n];
+    ``tol``, in m: measured coordinates, whose e.n need only be 0 within tol)."""
     e = unit_vector("ex35_e")
     p = vector("p")
     data = sp.Matrix(plucker)
@@ -56,6 +67,10 @@ def solve(plucker=PARAMETERS[0].default) -> Solution:
     if is_zero(ec):
         s.fail("The direction part e of the data is zero, so they are not the Plücker "
                "coordinates of a line.")
+    residual = None
+    if tol is not None and not is_zero(ec.dot(nc)):
+        ec, nc, residual = _measured(s, ec, nc, tol)
+    line = sp.Matrix.vstack(ec, nc)          # the data, or the nearest line to them
     if not is_zero(ec.dot(nc)):
         s.fail(f"e.n = {sp.radsimp(ec.dot(nc))} is not zero, so the data are not the Plücker "
                f"coordinates of a line (the moment of a line is normal to it).")
@@ -72,15 +87,48 @@ def solve(plucker=PARAMETERS[0].default) -> Solution:
     # independent check of (c): minimise ||x||^2 over x = p* + lambda e, compare
     lam = sp.Symbol("lambda", real=True)
     s.check(exact_check("(c) data: ||e|| = 1, e.n = 0; p* x e = n (also for the data as "
-                        "given), p*.e = 0, ||p*|| = d",
+                        "given, or the nearest line to measured data), p*.e = 0, ||p*|| = d",
                         [ec.dot(ec) - 1, ec.dot(nc), pstar.cross(ec) - nc,
-                         pstar.cross(data[:3, :]) - data[3:, :], pstar.dot(ec),
+                         pstar.cross(line[:3, :]) - line[3:, :], pstar.dot(ec),
                          pstar.dot(pstar) - d**2]))
     x = pstar + lam * ec
     lam_min = sp.solve(sp.diff(x.dot(x), lam), lam)
     s.check(exact_check("(c) minimising ||p* + lambda e||^2 gives lambda = 0",
                         [lam_min[0]]))
+    if residual is not None:
+        s.answers["residual"] = residual
+        s.check(truth_check(f"the data's distance to the nearest line's coordinates, "
+                            f"{float(residual):.3g}, is within tol = {float(tol):.3g}",
+                            bool(residual**2 <= tol**2), "exact comparison of rationals"))
     return s
+
+
+def _measured(s: Solution, ec, nc, tol):
+    """Measured coordinates: [e; n] moved to a line by the least step along the gradient
+    [n; e] of e.n (first order: lambda = e.n/(e.e + n.n)), then n made exactly normal to
+    e (a second-order change); all rational. The misfit, the distance moved (2-norm over
+    the 6 coordinates), judged within ``tol`` exactly; else :meth:`Solution.fail` with
+    the tolerance that would accept them. Returns the new e, n and the misfit."""
+    from ._fit import accepting_tol
+
+    en = ec.dot(nc)
+    lam = en / (ec.dot(ec) + nc.dot(nc))
+    e2, n1 = ec - lam * nc, nc - lam * ec
+    n2 = n1 - e2.dot(n1) / e2.dot(e2) * e2
+    moved = sp.Matrix.vstack(e2 - ec, n2 - nc)
+    sq = moved.dot(moved)                                 # rational: decided exactly
+    gap = sp.sqrt(sq)
+    if bool(sq > tol**2):
+        s.fail(f"e.n = {float(en):.3g}: the coordinates are not within tol = "
+               f"{float(tol):.3g} of a line's (the nearest line is "
+               f"{float(sp.N(gap)):.3g} away), so they are not the Plücker coordinates of a "
+               f"line{accepting_tol(sp.N(gap, 30))}.")
+    s.step("(c) nearest line", sp.Matrix.vstack(e2, n2),
+           f"Measured data: e.n = {float(en):.3g} is not 0; [e; n] moved by the least step "
+           f"along [n; e] (lambda = e.n/(e.e + n.n)), then n made normal to e: the nearest "
+           f"line's coordinates, {float(sp.N(gap)):.3g} from the data, within tol = "
+           f"{float(tol):.3g}.")
+    return e2, n2, gap
 
 
 def figure(s: Solution):

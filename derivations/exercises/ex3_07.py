@@ -16,6 +16,10 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.7"
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"p_star": "m", "p_star_2": "m"}
 FIGURE_NAME = "axis"
+#: the moments may be measurements (decimals, or floats): the line is then the nearest
+#: one to them (least squares), and the misfit of the moments about A and B (in m)
+#: printed and judged within tol
+MEASURED = True
 _V = sp.ImmutableMatrix
 PARAMETERS = (
     Param("a", _V([1, 0, 0]), (3,), "position of point A", "m"),
@@ -30,8 +34,9 @@ VARIANTS = (
 
 
 def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].default,
-          n_B=PARAMETERS[3].default) -> Solution:
-    """Worked solution of Exercise 3.7 (positions and moments in metres)."""
+          n_B=PARAMETERS[3].default, tol=None) -> Solution:
+    """Worked solution of Exercise 3.7 (positions and moments in metres; ``tol``, in m:
+    measured data, whose moments need fit one line only within tol)."""
     a, b, nA, nB = (sp.Matrix(v) for v in (a, b, n_A, n_B))
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,
@@ -40,6 +45,8 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
                      "on the line (Sec. 3.3); the sign of e is fixed by n_A - n_B = (b - a) x e."])
     u = s.step("direction", nA.cross(nB),
                "Both moments are normal to e (n_X.e = 0), so e is parallel to n_A x n_B.")
+    if tol is not None and not is_zero(u):
+        return _measured(s, a, b, nA, nB, u, tol)
     if is_zero(u):
         lines = _parallel_moments(s, a, b, nA, nB)
     else:
@@ -66,6 +73,75 @@ def solve(a=PARAMETERS[0].default, b=PARAMETERS[1].default, n_A=PARAMETERS[2].de
         _checks(s, a, b, nA, nB, e, n0, ps, which)
     s.answers = answers
     return s
+
+
+def _measured(s: Solution, a, b, nA, nB, u, tol) -> Solution:
+    """Measured moments: the line nearest them in the least-squares sense (e on the unit
+    sphere and n_O normal to it minimising ||n_O - a x e - n_A||^2 + ||n_O - b x e -
+    n_B||^2, from e along n_A x n_B, by Gauss-Newton in floating point); e then made a
+    rational unit vector (within 1e-9) and n_O the exact minimiser for that e, so all
+    that follows is exact; the misfit, the 2-norm of the 6 moment residuals (m), judged
+    within ``tol`` exactly and printed as ``residual``."""
+    import numpy as np
+
+    from ._fit import accepting_tol, exact_unit_vector
+
+    m = nA - nB
+    e0 = exact_unit_vector(np.array([float(x) for x in u]))
+    e0 = e0 if bool(((b - a).cross(e0)).dot(m) >= 0) else -e0
+    e = exact_unit_vector(_fitted_direction(*(np.array([float(x) for x in v]).ravel()
+                                              for v in (a, b, nA, nB, e0))))
+    s.step("measured: e", e,
+           "The direction of the line nearest the measured moments (least squares, from "
+           "the direction of n_A x n_B in the sense for which (b - a) x e points along "
+           "n_A - n_B), as a rational unit vector (within 1e-9, exactly of norm 1).")
+    c = (nA + a.cross(e) + nB + b.cross(e)) / 2
+    n0 = s.step("moment about O", (c - c.dot(e) * e).applyfunc(sp.radsimp),
+                "n_O = the mean of n_A + a x e and n_B + b x e (moment transfer), its part "
+                "along e removed: the least-squares moment for this e.")
+    ps = s.step("closest point", e.cross(n0), "p* = e x n_O (Exercise 3.5).")
+    pl = s.step("Plücker coordinates about O", sp.Matrix.vstack(e, n0), "[e; n_O].")
+    misfits = [((ps - x).cross(e) - nx) for x, nx in ((a, nA), (b, nB))]
+    sq = sp.radsimp(sum(v.dot(v) for v in misfits))         # rational: decided exactly
+    if bool(sq > tol**2):
+        s.fail(f"The moments are not those of one line within tol = {float(tol):.3g} m: "
+               f"the nearest line's moments miss the measured ones by "
+               f"{float(sp.N(sp.sqrt(sq))):.3g} m{accepting_tol(sp.N(sp.sqrt(sq), 30))}.")
+    s.answers = {"e": e, "p_star": ps, "plucker_O": pl, "residual": sp.sqrt(sq)}
+    s.check(exact_check("Plücker constraints: e.e = 1, e.n_O = 0; p*.e = 0",
+                        [e.dot(e) - 1, e.dot(n0), ps.dot(e)]))
+    s.check(truth_check(f"the moments about A and B are reproduced within tol = "
+                        f"{float(tol):.3g} m (misfit {float(sp.N(sp.sqrt(sq))):.3g} m)",
+                        bool(sq <= tol**2), "exact comparison of squares of rationals"))
+    return s
+
+
+def _fitted_direction(a, b, nA, nB, e0, steps: int = 12):
+    """The unit e minimising the moments' squared misfit (n_O the least-squares moment
+    for each e), by Gauss-Newton on the sphere from ``e0`` (floats; a numerical
+    Jacobian): the start, the measurements' noise away, converges in a few steps."""
+    import numpy as np
+
+    def residual(e):
+        e = e / np.linalg.norm(e)
+        c = (nA + np.cross(a, e) + nB + np.cross(b, e)) / 2
+        n0 = c - (c @ e) * e
+        return np.concatenate([n0 - np.cross(a, e) - nA, n0 - np.cross(b, e) - nB])
+
+    e = e0 / np.linalg.norm(e0)
+    for _ in range(steps):
+        t1 = np.cross(e, [1.0, 0, 0] if abs(e[0]) < 0.9 else [0, 1.0, 0])
+        t1 /= np.linalg.norm(t1)
+        t2 = np.cross(e, t1)
+        r, h = residual(e), 1e-7
+        J = np.column_stack([(residual(e + h * t) - residual(e - h * t)) / (2 * h)
+                             for t in (t1, t2)])
+        step = np.linalg.lstsq(J, -r, rcond=None)[0]
+        e = e + step[0] * t1 + step[1] * t2
+        e /= np.linalg.norm(e)
+        if np.linalg.norm(step) < 1e-13:
+            break
+    return e
 
 
 def _parallel_moments(s: Solution, a, b, nA, nB) -> list:

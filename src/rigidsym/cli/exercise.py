@@ -56,8 +56,8 @@ def add_arguments(p) -> None:
     p.add_argument("--data", metavar="FILE.json",
                    help="the data as a JSON object {name: value}; JSON numbers with a "
                         "decimal point are floats, read as measurements; strings are exact")
-    p.add_argument("--tol", help="tolerance of measured data (Exercises 3.1, 3.4, 3.6, 3.14, "
-                                 "3.19); given, it selects the least-squares path")
+    p.add_argument("--tol", help="tolerance of measured data (Exercises 3.1, 3.4, 3.5, 3.6, "
+                                 "3.7, 3.14, 3.19); given, it selects the least-squares path")
     p.add_argument("--grade", metavar="ANSWERS",
                    help="grade a student's answers (a JSON file {name: value}, or a folder "
                         "or CSV of them for a class) against the solution on the data; "

@@ -19,6 +19,8 @@ The package, by concept:
   handout says; a class from a roster, one exam per student);
 * ``answers``, ``matching``, ``gradebook``: students' answer files read and matched to the
   roster (by id, then by folded name), a class graded, the LMS export;
+* ``stack_export``: the class as Moodle STACK questions whose response trees grade each
+  box as the gradebook does (linked boxes jointly);
 * ``notebooks``, ``exercise_report``: a notebook per exercise, the exercises in the report;
 * ``forked``: a class's work mapped over forked worker processes.
 """

@@ -47,8 +47,9 @@ def solve(exercise: str, /, *, tol=None, **data) -> Solution:
     Args:
         exercise: ``"ex3.4"``, ``"3.4"``.
         tol: tolerance for measured (float) data, in the data's units (Exercises 3.1, 3.4,
-            3.6, 3.14, 3.19); default: set from the data and stated in the solution. Given for exact
-            data, it also selects the measured (least-squares) path.
+            3.5, 3.6, 3.7, 3.14, 3.19); default: set from the data and stated in the
+            solution. Given for exact data, it also selects the measured (least-squares)
+            path.
         **data: the exercise's parameters by name (see :func:`parameters`): a scalar is an
             int, a ``Fraction``, a decimal string (``"0.1"`` is 1/10), a string such as
             ``"sqrt(3)/2"``, a sympy number, or a float (a measurement, converted exactly);

@@ -26,7 +26,8 @@ from rigidsym.course.worked.numbers import read_text, split_text
 from rigidsym.course.worked.units import answer_unit
 
 __all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "gradeable",
-           "rounded_figures", "read_decimal_comma", "AmbiguousNumber"]
+           "rounded_figures", "read_decimal_comma", "AmbiguousNumber", "key_array",
+           "slip_values"]
 
 #: relative tolerance: an answer is right within 0.1 % of its largest entry
 RTOL = 1e-3
@@ -136,6 +137,45 @@ def _expected_now(v) -> np.ndarray:
     if v in (sp.true, sp.false):
         return np.array(float(bool(v)))
     return np.array(float(sp.N(v, 17)))
+
+
+def key_array(v) -> np.ndarray:
+    """A key's value (a sympy number, truth or matrix) as the float array the grader
+    compares with (17 digits; a matrix keeps its shape, an n x 1 column included)."""
+    return _expected(v)
+
+
+def slip_values(solution, name: str, target: np.ndarray, replay: bool = True,
+                replayed: list | None = None) -> list[tuple[str, np.ndarray]]:
+    """The values a wrong answer of box ``name`` is compared with, in the grader's order
+    (:func:`grade` names the first that matches): the edits of ``target`` (the key, or
+    the member of its class the grader compares with), the exercise's own slips (its
+    module's ``slips(solution)``), then the solution replayed with a slip along the way
+    (``replay``; ``replayed``: :func:`rigidsym.course.slips.replays` of the solution, as a
+    list, when the caller asks for many boxes). Rounding (:func:`rounded_figures`) is
+    tried after all of them.
+
+    Returns:
+        ``[(slip word, value as a float array), ...]``; a replay whose answer has another
+        shape than ``target`` is left out (it could not match).
+    """
+    from rigidsym.course.worked import exercise_module
+
+    own = getattr(exercise_module(solution.id), "slips", None)
+    extra = [(w, d, _expected(v)) for w, d, v in (own(solution) if own else {}).get(name, [])]
+    out = [(w, v) for w, _, v in _candidates(target, name, extra)]
+    for word, _, answers in (() if not replay else replayed if replayed is not None
+                             else _Replays(solution)):
+        value = answers.get(name)
+        if value is None or isinstance(value, str):
+            continue
+        try:
+            v = _expected(value)
+        except TypeError:
+            continue
+        if v.shape == target.shape:
+            out.append((word, v))
+    return out
 
 
 def _close(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
@@ -270,6 +310,12 @@ def grade(solution, answers: dict, slips: dict | None = None,
         v = verdicts.get(name)
         if v is not None and v.right:
             out.append(Graded(name, True, None, shown, got[2], note=v.note))
+            continue
+        if right in (sp.true, sp.false):   # a truth has no slips: a power of ten of 1
+            g, e = got[0], got[1]          # is within tol of 0 ("unit" for false)
+            ok = _close_plain(g, e, 1.0)
+            out.append(Graded(name, ok, None, shown, "the key's truth" if ok else
+                              f"not the key's truth ({bool(right)})"))
             continue
         out.append(_grade_one(name, got, right, shown, (slips or {}).get(name, []),
                               replayed, units[name], v))

@@ -15,6 +15,9 @@ writes::
                                   ``P<k>.<answer>`` per box (fill it, grade it)
     DIR/moodle.xml                Moodle XML: a Cloze question per student and problem,
                                   the answers as NUMERICAL parts within 0.1 %
+    DIR/stack.xml                 Moodle XML: a STACK question per student and problem,
+                                  a PRT per box grading as the gradebook does
+                                  (:mod:`rigidsym.course.stack_export`)
 
 The same spec, roster and seed write the same bytes.
 """
@@ -35,6 +38,7 @@ import sympy as sp
 from rigidsym.core.files import write_atomic
 from rigidsym.course import exam as _exam
 from rigidsym.course.exam_text import box_label, task
+from rigidsym.course.stack_export import stack_xml
 from rigidsym.course.worked import exercise_module, render_html, solution_record
 
 __all__ = ["class_exam", "read_roster", "student_seed", "version_of"]
@@ -134,7 +138,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
 
     Returns:
         ``{"handouts": folder, "keys": folder, "key_json", "key_html", "answers",
-        "moodle"}``.
+        "moodle", "stack"}``.
 
     Raises:
         ValueError: a bad spec or roster, or no new well-posed variant in 50 draws.
@@ -194,6 +198,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
                                                                "\n".join(keys_html))),
         "answers": write_atomic(out / "answers.csv", _template(students, list(columns))),
         "moodle": write_atomic(out / "moodle.xml", moodle_xml(title, key)),
+        "stack": write_atomic(out / "stack.xml", stack_xml(title, key)),
     }
 
 

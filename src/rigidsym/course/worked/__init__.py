@@ -266,7 +266,7 @@ def _time_budget(seconds: float, ex_id: str):
         raise TooLong(f"{ex_id}: the exact solution on these data did not finish in "
                       f"{seconds:g} s (their radicals and digits multiply); give shorter "
                       f"numbers or fewer distinct square roots, or floats where the "
-                      f"exercise takes measurements (Exercises 3.1, 3.4, 3.6, 3.14, "
+                      f"exercise takes measurements (Exercises 3.1, 3.4, 3.5, 3.6, 3.7, 3.14, "
                       f"3.19)") from None
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0)
@@ -287,7 +287,8 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
 
     Args:
         ex_id: ``"ex3.4"``, ``"3.4"``.
-        tol: compatibility tolerance of measured data (Exercises 3.1, 3.4, 3.6, 3.14, 3.19 only);
+        tol: compatibility tolerance of measured data (Exercises 3.1, 3.4, 3.5, 3.6, 3.7,
+            3.14, 3.19 only);
             by default ``10^-3`` times the largest magnitude among the data when any
             datum is a float, and exact compatibility otherwise.
         **data: values of the exercise's parameters (:func:`parameters`); the others
@@ -340,7 +341,7 @@ def _solved(ex_id: str, params: Parameters, d) -> Solution:
         # minimal polynomial's coefficients): too large for the exact path, as a timeout
         raise TooLong(f"{ex_id}: the exact solution on these data needs integers too large "
                       f"for sympy's exact arithmetic; give shorter numbers, or floats where "
-                      f"the exercise takes measurements (Exercises 3.1, 3.4, 3.6, 3.14, "
+                      f"the exercise takes measurements (Exercises 3.1, 3.4, 3.5, 3.6, 3.7, 3.14, "
                       f"3.19)") from None
     s.assumptions.extend(d.notes)
     s.floats, s.data, s.tol = d.floats, dict(d.values), d.tol

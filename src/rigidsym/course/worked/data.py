@@ -352,7 +352,7 @@ def _tolerance(out: Data, params: Parameters, tol, values: dict, measures: list,
     if tol is not None:
         if not params.measured:
             raise TypeError(f"tol: the data of {params.exercise} are not measurements; tol "
-                            f"applies to Exercises 3.1, 3.4, 3.6, 3.14 and 3.19")
+                            f"applies to Exercises 3.1, 3.4, 3.5, 3.6, 3.7, 3.14 and 3.19")
         if isinstance(tol, float):
             tol = repr(tol)  # a tolerance is not data: read 1e-3 as the decimal it shows
         out.tol, _ = _scalar(tol, "tol")
