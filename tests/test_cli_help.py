@@ -103,6 +103,27 @@ def test_errors_name_the_next_step(argv, hint, capsys):
     assert hint in err, err
 
 
+@pytest.mark.parametrize("argv, meant", [
+    (["verfy"], "'verify'"),                       # a command
+    (["shwo", "3.1"], "'show'"),
+    (["show", "thm3.2.9"], "'thm3.2."),            # an id: a theorem of the same section
+    (["check", "--latex", "x = x", "--let", "x: rotaton"], "'rotation'"),   # a kind
+])
+def test_a_mistyped_word_gets_a_did_you_mean(argv, meant, capsys):
+    """Issue 69 item 5: the close matches (difflib) come first, on the one error line."""
+    with pytest.raises(SystemExit) as exc:
+        raise SystemExit(main(argv))
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()[-1]    # after a progress line
+    assert err.startswith("rigidsym: error:") and f"did you mean {meant}" in err, err
+
+
+def test_a_word_close_to_nothing_gets_no_suggestion(capsys):
+    with pytest.raises(SystemExit):
+        main(["frobnicate"])
+    assert "did you mean" not in capsys.readouterr().err
+
+
 def test_verify_plain_and_json_on_stdout_are_whole(capsys, monkeypatch):
     """In a pipe nothing is cut: titles in full in the plain format; --format json is the
     schema-2 document alone on stdout."""
