@@ -169,3 +169,22 @@ def test_a_reader_who_closes_the_pipe_sees_no_traceback():
     finally:
         os.close(w)
     assert run.returncode == 0 and run.stderr == "", run.stderr
+
+
+def test_cache_info_lists_the_object_cache(tmp_path, monkeypatch, capsys):
+    """Issue 69 item 5: ``cache info`` lists the C build's object cache, its objects and
+    folder, beside the verdicts; and says when it is off."""
+    pytest.importorskip("filelock")
+    objects = tmp_path / "objs"
+    (objects / "ab").mkdir(parents=True)
+    for name in ("ab/ab12.o", "ab/ab34.o"):
+        (objects / name).write_bytes(b"\0" * 1000)
+    (objects / "ab/ab12.o.sha256").write_text("x")
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("RIGIDSYM_OBJECT_CACHE", str(objects))
+    assert main(["cache", "info"]) == 0
+    line = [s for s in capsys.readouterr().out.splitlines() if "objects:" in s]
+    assert len(line) == 1 and "2 compiled objects" in line[0] and str(objects) in line[0]
+    monkeypatch.setenv("RIGIDSYM_OBJECT_CACHE", "0")
+    assert main(["cache", "info"]) == 0
+    assert "objects: off" in capsys.readouterr().out
