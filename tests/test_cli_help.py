@@ -188,3 +188,14 @@ def test_cache_info_lists_the_object_cache(tmp_path, monkeypatch, capsys):
     monkeypatch.setenv("RIGIDSYM_OBJECT_CACHE", "0")
     assert main(["cache", "info"]) == 0
     assert "objects: off" in capsys.readouterr().out
+
+
+def test_build_c_info_says_how_to_watch_pips_compile(capsys):
+    """Issue 69 item 5: pip is silent for the minutes it compiles; ``build-c --info`` (stdout
+    still one JSON document) says on stderr that ``pip install -v`` shows the progress."""
+    assert main(["build-c", "--info"]) == 0
+    cap = capsys.readouterr()
+    info = json.loads(cap.out)
+    if not isinstance(info, dict) or not isinstance(info.get("build"), dict):
+        pytest.skip("no C build of the package here (NumPy kernels)")
+    assert "pip install -v" in cap.err and f"{info['build']['compiled']} objects" in cap.err
