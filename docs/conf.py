@@ -57,15 +57,44 @@ nitpick_ignore_regex = [
 ]
 
 
+def _sympy_inherited(what: str, name: str, obj) -> bool:
+    """A member a sympy subclass (``Cross``, ``Det``, ``Blocks``) has from sympy, not from
+    rigidsym: the assumption flags sympy's metaclass writes on every class (``is_*``,
+    ``default_assumptions``), or a method whose only docstring is sympy's."""
+    if what != "class":
+        return False
+    if name == "default_assumptions" or (name.startswith("is_") and
+                                         isinstance(obj, (bool, type(None)))):
+        return True
+    func = obj.fget if isinstance(obj, property) else getattr(obj, "__func__", obj)
+    if callable(func) and not isinstance(func, type):
+        import sympy
+
+        module = getattr(func, "__module__", "") or ""
+        from_sympy = any(hasattr(c, name) for c in (sympy.Basic, sympy.MatrixExpr))
+        return module.startswith("sympy") or (from_sympy and not func.__doc__)
+    return False
+
+
 def _skip(app, what, name, obj, skip, options):
     """The declaration vocabulary is documented once, under ``rigidsym.declare``; the
-    package re-exports it."""
+    package re-exports it. Members inherited from sympy are sympy's to document."""
     import rigidsym.declare
 
     module = getattr(app.env, "temp_data", {}).get("autodoc:module")
     if module == "rigidsym" and name in rigidsym.declare.__all__:
         return True
+    if _sympy_inherited(what, name, obj):
+        return True
     return skip
+
+
+def _index_toctree(app, docname, source):
+    """The landing page's contents for Sphinx: a hidden glob of every page, appended here
+    so that docs/index.md shows no directive on the repository page (it links every page
+    itself)."""
+    if docname == "index":
+        source[0] += ("\n```{toctree}\n:hidden:\n:maxdepth: 2\n:glob:\n\napi\n*\n```\n")
 
 
 #: the API reference's source: autodoc directives; docs/api.md is what the Markdown builder
@@ -90,9 +119,28 @@ def _abbreviation(self, node):
     raise nodes.SkipNode
 
 
+def _glossary_role(name, rawtext, text, lineno, inliner, options=None, content=None):
+    """``:glossary:`term``` or ``:glossary:`text <term>```: a link to the heading ``term`` of
+    glossary.md (docstrings are reStructuredText; this is MyST's ``[text](glossary.md#term)``,
+    resolved and checked the same way)."""
+    from docutils import nodes
+    from sphinx.addnodes import pending_xref
+    from sphinx.util.nodes import split_explicit_title
+
+    explicit, label, term = split_explicit_title(text)
+    env = inliner.document.settings.env
+    node = pending_xref(rawtext, refdomain="doc", reftarget="glossary", reftype="myst",
+                        reftargetid=term.strip().lower().replace(" ", "-"),
+                        refdoc=env.docname, refexplicit=True)
+    node += nodes.literal(label, label)
+    return [node], []
+
+
 def setup(app):
+    app.add_role("glossary", _glossary_role)
     app.connect("autodoc-skip-member", _skip)
     app.connect("source-read", _api_source)
+    app.connect("source-read", _index_toctree)
     if "sphinx_markdown_builder" in extensions:
         from docutils import nodes
 

@@ -103,6 +103,27 @@ def test_errors_name_the_next_step(argv, hint, capsys):
     assert hint in err, err
 
 
+@pytest.mark.parametrize("argv, meant", [
+    (["verfy"], "'verify'"),                       # a command
+    (["shwo", "3.1"], "'show'"),
+    (["show", "thm3.2.9"], "'thm3.2."),            # an id: a theorem of the same section
+    (["check", "--latex", "x = x", "--let", "x: rotaton"], "'rotation'"),   # a kind
+])
+def test_a_mistyped_word_gets_a_did_you_mean(argv, meant, capsys):
+    """Issue 69 item 5: the close matches (difflib) come first, on the one error line."""
+    with pytest.raises(SystemExit) as exc:
+        raise SystemExit(main(argv))
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()[-1]    # after a progress line
+    assert err.startswith("rigidsym: error:") and f"did you mean {meant}" in err, err
+
+
+def test_a_word_close_to_nothing_gets_no_suggestion(capsys):
+    with pytest.raises(SystemExit):
+        main(["frobnicate"])
+    assert "did you mean" not in capsys.readouterr().err
+
+
 def test_verify_plain_and_json_on_stdout_are_whole(capsys, monkeypatch):
     """In a pipe nothing is cut: titles in full in the plain format; --format json is the
     schema-2 document alone on stdout."""
@@ -148,3 +169,33 @@ def test_a_reader_who_closes_the_pipe_sees_no_traceback():
     finally:
         os.close(w)
     assert run.returncode == 0 and run.stderr == "", run.stderr
+
+
+def test_cache_info_lists_the_object_cache(tmp_path, monkeypatch, capsys):
+    """Issue 69 item 5: ``cache info`` lists the C build's object cache, its objects and
+    folder, beside the verdicts; and says when it is off."""
+    pytest.importorskip("filelock")
+    objects = tmp_path / "objs"
+    (objects / "ab").mkdir(parents=True)
+    for name in ("ab/ab12.o", "ab/ab34.o"):
+        (objects / name).write_bytes(b"\0" * 1000)
+    (objects / "ab/ab12.o.sha256").write_text("x")
+    monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path / "cache"))
+    monkeypatch.setenv("RIGIDSYM_OBJECT_CACHE", str(objects))
+    assert main(["cache", "info"]) == 0
+    line = [s for s in capsys.readouterr().out.splitlines() if "objects:" in s]
+    assert len(line) == 1 and "2 compiled objects" in line[0] and str(objects) in line[0]
+    monkeypatch.setenv("RIGIDSYM_OBJECT_CACHE", "0")
+    assert main(["cache", "info"]) == 0
+    assert "objects: off" in capsys.readouterr().out
+
+
+def test_build_c_info_says_how_to_watch_pips_compile(capsys):
+    """Issue 69 item 5: pip is silent for the minutes it compiles; ``build-c --info`` (stdout
+    still one JSON document) says on stderr that ``pip install -v`` shows the progress."""
+    assert main(["build-c", "--info"]) == 0
+    cap = capsys.readouterr()
+    info = json.loads(cap.out)
+    if not isinstance(info, dict) or not isinstance(info.get("build"), dict):
+        pytest.skip("no C build of the package here (NumPy kernels)")
+    assert "pip install -v" in cap.err and f"{info['build']['compiled']} objects" in cap.err

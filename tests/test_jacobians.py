@@ -267,11 +267,13 @@ def test_api_shapes_broadcasting_and_pickling():
     rng = np.random.default_rng(16)
     a_ddot, omega, omega_dot = rng.standard_normal((3, 4, 1, 3))
     p, a = rng.standard_normal((5, 3)), np.zeros(3)
-    p_ddot, jac = f(a_ddot, omega, omega_dot, p=p, a=a)
+    with pytest.warns(K.BroadcastWarning, match="new batch shape"):  # (4, 1) x (5,): meant
+        p_ddot, jac = f(a_ddot, omega, omega_dot, p=p, a=a)
     assert p_ddot.shape == (4, 5, 3)
     # the same values up to rounding (one CSE'd program with the derivatives, not the value
     # kernel's: FMA contraction and operation order may differ in the last bits)
-    ref = K.point_acceleration(a_ddot, omega, omega_dot, p, a)
+    with pytest.warns(K.BroadcastWarning):
+        ref = K.point_acceleration(a_ddot, omega, omega_dot, p, a)
     assert np.abs(p_ddot - ref).max() <= 4e-16 * np.abs(ref).max()
     assert set(jac) == {"p_ddot"}
     assert set(jac["p_ddot"]) == {"a_ddot", "omega", "omega_dot", "p", "a"}

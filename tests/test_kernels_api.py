@@ -24,7 +24,8 @@ def test_lists_and_floats_and_broadcasting():
     assert Qs.shape == (2, 5, 3, 3)
     np.testing.assert_allclose(Qs[1, 2], K.rotation_from_natural_invariants(E, phis[1, 2]))
     e2 = np.stack([E, [1.0, 0, 0]])[:, None, :]            # (2, 1, 3) x (4,) -> (2, 4)
-    assert K.rotation_from_natural_invariants(e2, np.ones(4)).shape == (2, 4, 3, 3)
+    with pytest.warns(K.BroadcastWarning, match="new batch shape"):   # issue 69: said
+        assert K.rotation_from_natural_invariants(e2, np.ones(4)).shape == (2, 4, 3, 3)
 
 
 def test_multiple_outputs_and_round_trip():
@@ -213,3 +214,49 @@ def test_load_other_generated_directory(tmp_path, backend):
         assert ns._SPACE._clib is not None      # its own C, compiled into the cache
     with pytest.raises(FileNotFoundError, match="directory"):
         K.load(tmp_path / "nowhere")
+
+
+@pytest.mark.parametrize("name,arg,scale", OVERFLOW[:1])
+def test_an_unbatched_error_names_no_batch_index(name, arg, scale):
+    """Issue 69 item 5: an unbatched call has no batch index to name (not "[()]")."""
+    kw = dict({k: np.asarray(v, dtype=float) for k, v in _ARGS[name].items()})
+    kw[arg] = kw[arg] * scale
+    with pytest.raises(K.NonFiniteResultError) as info:
+        getattr(K, name)(**kw)
+    assert info.value.indices == [()] and "batch indices" not in str(info.value)
+    assert "[()]" not in str(info.value) and f"'{arg}'" in str(info.value)
+
+
+def test_two_batch_shapes_making_a_new_axis_warn_naming_both(backend):
+    """Issue 69 item 5: e (5, 3) and phi (5, 1) broadcast to batch (5, 5), as NumPy does, with
+    a BroadcastWarning naming both arguments and their shapes; the values are those of the
+    explicit broadcast, which does not warn."""
+    e = np.array([[0.0, 0.6, 0.8], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0],
+                  [0.6, 0.8, 0.0]])
+    phi = np.linspace(0.1, 2.0, 5).reshape(5, 1)
+    with pytest.warns(K.BroadcastWarning) as rec:
+        Q = K.rotation_from_natural_invariants(e, phi)
+    msg = str(rec[0].message)
+    assert rec[0].filename == __file__          # at the caller's line
+    assert "e of shape (5, 3)" in msg and "phi of shape (5, 1)" in msg and "(5, 5)" in msg
+    assert Q.shape == (5, 5, 3, 3)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        full = K.rotation_from_natural_invariants(np.broadcast_to(e, (5, 5, 3)),
+                                                  np.broadcast_to(phi, (5, 5)))
+        np.testing.assert_array_equal(Q, full)
+        # Q[i, j] is the rotation about e[j] by phi[i]: NumPy's rule, row by row
+        np.testing.assert_array_equal(Q[2, 4], K.rotation_from_natural_invariants(e[4],
+                                                                                  phi[2, 0]))
+
+
+@pytest.mark.parametrize("e_shape, phi_shape", [((5, 3), (5,)), ((3,), (5,)), ((5, 3), ()),
+                                                ((1, 5, 3), (5,)), ((2, 1, 3), (2, 1)),
+                                                ((0, 3), (0, 1))])
+def test_broadcasts_adding_no_sample_do_not_warn(e_shape, phi_shape, backend):
+    """Stretching size-1 axes or a missing leading axis gives no argument more samples than
+    the largest one has: no warning (an empty batch neither)."""
+    e = np.broadcast_to(E, e_shape).copy()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        K.rotation_from_natural_invariants(e, np.full(phi_shape, 0.5))

@@ -102,7 +102,13 @@ def _check_broadcast(name, data):
     rng = np.random.default_rng(data.draw(st.integers(0, 2**32 - 1)))
     inputs = {s["name"]: valid(s, b, rng) for s, b in zip(specs, per, strict=True)}
     batch = np.broadcast_shapes(*per)
-    outs = _outputs(call(**inputs))
+    # issue 69: a warning exactly when the batch holds more samples than any argument's
+    new_axis = 0 < int(np.prod(batch)) > max(int(np.prod(b)) for b in per)
+    with warnings.catch_warnings(record=True) as rec:
+        warnings.simplefilter("always", K.BroadcastWarning)
+        outs = _outputs(call(**inputs))
+    assert sum(issubclass(w.category, K.BroadcastWarning) for w in rec) == new_axis, \
+        (name, per, batch)
     for idx in np.ndindex(*batch):
         one = {s["name"]: np.broadcast_to(inputs[s["name"]], batch + s["tshape"])[idx]
                for s in specs}

@@ -48,7 +48,8 @@ PUBLIC = {
                  *DECLARE],
     "rigidsym.declare": DECLARE,
     "rigidsym.kernels": [
-        "NonFiniteResultError", "SingularConfigurationError", "accuracy", "backend",
+        "BroadcastWarning", "NonFiniteResultError", "SingularConfigurationError", "accuracy",
+        "backend",
         "batch_function", "build_info",
         "euler_angle_rates", "euler_angles_from_rotation", "euler_rate_matrix",
         "get_num_threads", "jacobian", "load",

@@ -1956,6 +1956,21 @@ static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
     npy_intp n = 1;
     for (int d = 0; d < bnd; ++d)
         n *= bshape[d];
+    /* two arguments' batch shapes making a new batch axis (e (5, 3) and phi (5, 1) -> batch
+     * (5, 5)): more samples than any argument has. The Python path warns (BroadcastWarning,
+     * naming both) and computes the same broadcast. */
+    if (n > 0 && bnd > 1) {
+        npy_intp most = 0;
+        for (int i = 0; i < nin; ++i) {
+            npy_intp m = 1;
+            for (int d = 0; d < A[i].bnd; ++d)
+                m *= PyArray_DIM(A[i].arr, d);
+            if (m > most)
+                most = m;
+        }
+        if (n > most)
+            return rigidsym_slow(k, args, nin, kw);
+    }
 
     /* outputs: the caller's (checked here; the Python path raises for a bad one) or new */
     PyArrayObject *Y[RIGIDSYM_MAXOUT];

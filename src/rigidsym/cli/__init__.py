@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 
 from rigidsym.cli import (
@@ -27,6 +28,7 @@ from rigidsym.cli import (
 )
 from rigidsym.cli.common import HelpFormatter, add_ascii, ascii_output
 from rigidsym.core import work as _work
+from rigidsym.core.errors import did_you_mean
 
 __all__ = ["main", "build_parser"]
 
@@ -98,6 +100,10 @@ def main(argv: list[str] | None = None) -> int:
 
     def _error(where: str):
         def error(message):  # argparse errors are bad input: one line, exit 2
+            m = re.match(r"argument COMMAND: invalid choice: '([^']*)'", message)
+            if m:  # a mistyped command: the close ones first, then the list
+                message = message.replace(" (choose", did_you_mean(m.group(1), _COMMANDS)
+                                          + " (choose", 1)
             print(f"rigidsym: error: {message} ({where})", file=sys.stderr)
             raise SystemExit(2)
         return error

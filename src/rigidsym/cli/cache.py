@@ -3,7 +3,9 @@
 The cache (:mod:`rigidsym.core.cache`) holds compiled kernels (``kernels/``), checked results
 (``verdicts/``, :mod:`rigidsym.checking.verdict_cache`) and the LaTeX grammar's analysis
 (``latex/``). Clearing never changes a verdict:
-what is gone is computed again on the next run.
+what is gone is computed again on the next run. ``info`` lists the C driver's object cache
+too (:mod:`rigidsym.kernels.cbuild.objects`: ``objects/``, or ``RIGIDSYM_OBJECT_CACHE``),
+which ``pip install`` fills and reads; ``rm -r`` of its folder empties it.
 """
 
 from __future__ import annotations
@@ -33,6 +35,21 @@ def _size(n: int) -> str:
     return f"{n} B"  # pragma: no cover
 
 
+def _objects_line() -> str:
+    """The object cache's line of ``cache info``: compiled objects, bytes, folder."""
+    from rigidsym.kernels.cbuild import objects
+
+    where = objects.root()
+    if where is None:
+        return ("  objects: off (RIGIDSYM_OBJECT_CACHE=0, or filelock missing): every C "
+                "build compiles every object")
+    files = [p for p in where.rglob("*") if p.is_file()] if where.is_dir() else []
+    n = sum(p.suffix == ".o" for p in files)
+    return (f"  objects: {n} compiled objects, {_size(sum(p.stat().st_size for p in files))} "
+            f"in {where} (the C build's, filled by pip install; remove the folder to empty "
+            f"it)")
+
+
 def run(args) -> int:
     """``rigidsym cache info`` prints the cache folder (``RIGIDSYM_CACHE``, else the user
     cache folder) and per kind its path, entries and size; ``rigidsym cache clear`` removes
@@ -43,6 +60,7 @@ def run(args) -> int:
         for kind in _cache.KINDS:
             k = info[kind]
             print(f"  {kind}: {k['entries']} entries, {_size(k['bytes'])} in {k['path']}")
+        print(_objects_line())
         return 0
     kinds = ("verdicts",) if args.verdicts else ("kernels",) if args.kernels else _cache.KINDS
     gone = _cache.clear(kinds)

@@ -139,6 +139,19 @@ def _build_args(p) -> None:
                    help="print the build information of the kernels in use (JSON) and exit")
 
 
+def _pip_note(info: dict) -> None:
+    """On stderr (stdout is the JSON): where the package's C was compiled, and how to watch
+    it next time; pip prints nothing while its build runs (minutes on a small machine)."""
+    build = info.get("build") if isinstance(info, dict) else None
+    if info.get("origin") not in ("editable build", "wheel") or not isinstance(build, dict):
+        return
+    print(f"rigidsym build-c: the package's C kernels were compiled by `pip install` "
+          f"({build.get('compiled', '?')} objects compiled, {build.get('reused', '?')} reused "
+          f"from the object cache, {build.get('seconds', '?')} s); pip is silent while it "
+          f"compiles: `pip install -v .` shows its progress (a line per tenth of the objects)",
+          file=sys.stderr)
+
+
 def cmd_build_c(args) -> int:
     """Compile generated C kernels into the user cache (the package's own kernels only when
     their module is stale, or with --native), with a notice and a progress bar."""
@@ -149,7 +162,9 @@ def cmd_build_c(args) -> int:
         import json
 
         from rigidsym import kernels
-        print(json.dumps(kernels.build_info(args.directory), indent=1))
+        info = kernels.build_info(args.directory)
+        print(json.dumps(info, indent=1))
+        _pip_note(info)
         return 0
     if args.module:
         if args.directory:

@@ -45,7 +45,11 @@ from rigidsym.kernels.runtime import state as _state  # noqa: F401 - kernels._st
 from rigidsym.kernels.runtime.accuracy import accuracy
 from rigidsym.kernels.runtime.backends import backend, batch_function, build_info, use_backend
 from rigidsym.kernels.runtime.block_order import swap_blocks
-from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels.runtime.errors import (
+    BroadcastWarning,
+    NonFiniteResultError,
+    SingularConfigurationError,
+)
 from rigidsym.kernels.runtime.euler import (
     euler_angle_rates,
     euler_angles_from_rotation,
@@ -59,7 +63,8 @@ from rigidsym.kernels.runtime.namespace import load
 from rigidsym.kernels.runtime.scale import get_num_threads as get_num_threads
 from rigidsym.kernels.runtime.scale import set_num_threads as set_num_threads
 
-__all__ = ["SingularConfigurationError", "NonFiniteResultError", "use_backend", "backend",
+__all__ = ["SingularConfigurationError", "NonFiniteResultError", "BroadcastWarning", "use_backend",
+           "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
            "euler_angles_from_rotation",
            "jacobian", "set_num_threads", "get_num_threads", "build_info", "accuracy"]

@@ -21,7 +21,7 @@ import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
 from rigidsym.algebra.rigid_motions import Ad, hat, transform
-from rigidsym.core.errors import BadInput
+from rigidsym.core.errors import BadInput, did_you_mean
 from rigidsym.latex.kinematics import rate_target
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
@@ -90,7 +90,8 @@ def kind_of(text: str, decl: str):
     if m and int(m.group(1)) >= 1 and int(m.group(2)) >= 1:
         r, c = int(m.group(1)), int(m.group(2))
         return (r, c), (lambda name: _sym.matrix(name, r, c)), f"{r}×{c} matrix"
-    raise BadInput(f"--let '{decl}': unknown kind {text.strip()!r}; expected one of: "
+    raise BadInput(f"--let '{decl}': unknown kind {text.strip()!r}"
+                   f"{did_you_mean(t, KIND_WORDS) or ';'} expected one of: "
                    f"{', '.join(KIND_WORDS)}")
 
 

@@ -18,7 +18,7 @@ from typing import Any
 
 from rigidsym.core import work as _work
 from rigidsym.core.config import BOOK as BOOK_PACKAGE
-from rigidsym.core.errors import BadInput  # re-exported: their homes
+from rigidsym.core.errors import BadInput, did_you_mean  # BadInput re-exported: their homes
 from rigidsym.registry.relations import Rel
 
 __all__ = [
@@ -232,12 +232,13 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
         raise ValueError(f"eq_id: expected namespace:name (e.g. notes:rodrigues) or a book id, "
                          f"got {eq_id!r}")
     if kind not in KINDS:
-        raise ValueError(f"kind: expected one of {KINDS}, got {kind!r}")
+        raise ValueError(f"kind: expected one of {KINDS}, got {kind!r}{did_you_mean(kind, KINDS)}")
     check_budget(repair_budget, "repair_budget", none_ok=True)
     if expected is None:
         expected = "definition" if kind == "definition" else "verified"
     if expected not in VERDICTS:
-        raise ValueError(f"expected: expected one of {VERDICTS}, got {expected!r}")
+        raise ValueError(f"expected: expected one of {VERDICTS}, got {expected!r}"
+                         f"{did_you_mean(expected, VERDICTS)}")
     if not user and not _in_book(sys._getframe(1).f_globals.get("__name__", "")):
         raise ValueError(f"eq_id: {eq_id!r} is a book id, reserved for the chapter; "
                          f"declare your own as namespace:name (e.g. notes:eq1)")
@@ -384,7 +385,8 @@ def select(ids: list[str] | None = None, sections: list[str] | None = None,
             known = ("a loaded user module's ids: give its file with --module" if is_user_id(i)
                      else "3.1 ... 3.148 and claims such as thm3.2.1; the ids of a section: "
                           "rigidsym verify --section 3.4")
-            raise BadInput(f"id: {i} holds no declared equation (known: {known})")
+            raise BadInput(f"id: {i} holds no declared equation{did_you_mean(i, REGISTRY)} "
+                           f"(known: {known})")
         out.update(parts)
     for s in sections or []:
         s = parse_section(s)

@@ -30,12 +30,16 @@ class Result(Outcome):
         id: the equation id (``"3.96e"``, ``"notes:rodrigues"``).
         title: its title.
         kind: ``identity``, ``definition`` or ``claim``.
-        verdict: ``verified``, ``definition``, ``does-not-hold`` or ``undecided``, computed.
+        verdict: :glossary:`verified <verdict>`, :glossary:`definition <verdict>`,
+            :glossary:`does-not-hold <verdict>` or :glossary:`undecided <verdict>`, computed
+            (each defined in the glossary).
         expected: the verdict the declaration expects.
-        method: how it was decided (``exact-cancel``, ``random-exact``,
-            ``counterexample``, ...).
-        printed, derived, corrected: the expanded sympy strings (``corrected`` is None
-            unless the printed form does not hold).
+        method: how it was decided (:glossary:`exact-cancel`, :glossary:`random-exact`,
+            :glossary:`counterexample`, ...; see :glossary:`method`).
+        printed: the printed form, as an expanded sympy string.
+        derived: the derived form, likewise.
+        corrected: the :glossary:`corrected form <corrected form>`, likewise; None unless
+            the printed form does not hold.
         counterexample: for a does-not-hold, the exact point and both sides there.
         numeric: the numeric backing (``points``, ``digits``, ``max_residual``, ``seed``).
         seconds: the time the check took.
@@ -171,7 +175,8 @@ class Results(Sequence[Result]):
         """The results that match every given criterion.
 
         Args:
-            verdict: ``verified``, ``definition``, ``does-not-hold`` or ``undecided``.
+            verdict: :glossary:`verified <verdict>`, :glossary:`definition <verdict>`,
+                :glossary:`does-not-hold <verdict>` or :glossary:`undecided <verdict>`.
             kind: ``identity``, ``definition`` or ``claim``.
             section: a section (``"3.2"`` takes its subsections too) or a user section.
             mismatched: True for the results whose verdict differs from the expected one.

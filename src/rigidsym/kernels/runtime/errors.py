@@ -4,7 +4,37 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SingularConfigurationError", "NonFiniteResultError"]
+__all__ = ["SingularConfigurationError", "NonFiniteResultError", "BroadcastWarning",
+           "at_batch_indices"]
+
+
+class BroadcastWarning(UserWarning):
+    """Two arguments' different batch shapes broadcast into a new batch axis (``e`` of shape
+    (5, 3) and ``phi`` of shape (5, 1) give (5, 5, 3, 3): 25 samples from 5 and 5), which
+    NumPy does silently and which is most often a mistake (``phi`` meant as (5,)). The
+    result is NumPy's broadcast, unchanged; broadcast the arguments explicitly
+    (``np.broadcast_to``) to say it is meant, or make it an error with
+    ``warnings.simplefilter("error", BroadcastWarning)``.
+
+    Args:
+        message: the arguments, their shapes and the batch shape they broadcast to.
+    """
+
+
+def at_batch_indices(w: list, more: bool) -> str:
+    """`` at batch indices [(0,), (3,)]`` for an error message, ``""`` for an unbatched call
+    (its only index is ``()``: nothing to locate).
+
+    Args:
+        w: the batch indices (tuples) of the flagged samples, the first 20.
+        more: whether there are more than those.
+
+    Returns:
+        str: the clause, with a leading space, or an empty string.
+    """
+    if not w or w == [()]:
+        return ""
+    return f" at batch indices {w}{' ...' if more else ''}"
 
 
 class SingularConfigurationError(ValueError):
@@ -47,7 +77,7 @@ def raise_flagged(name: str, meta: dict, sing, nonfinite, arrays: list) -> None:
         arg = meta["singular_arg"] or meta["args"][0]["name"]
         raise SingularConfigurationError(
             f"{name}: singular configuration ({meta['singular'] or 'division by zero'}) "
-            f"in argument {arg!r} at batch indices {w}{' ...' if s.sum() > 20 else ''}",
+            f"in argument {arg!r}{at_batch_indices(w, s.sum() > 20)}",
             arg, w)
     f = np.asarray(nonfinite)
     if f.any():
@@ -56,6 +86,6 @@ def raise_flagged(name: str, meta: dict, sing, nonfinite, arrays: list) -> None:
         k = int(np.argmax(mags))
         arg = meta["args"][k]["name"]
         raise NonFiniteResultError(
-            f"{name}: non-finite output (overflow) from finite inputs at batch indices {w}"
-            f"{' ...' if f.sum() > 20 else ''}; largest input there: {arg!r} "
+            f"{name}: non-finite output (overflow) from finite inputs"
+            f"{at_batch_indices(w, f.sum() > 20)}; largest input there: {arg!r} "
             f"(max |{arg}| = {mags[k]:.3g})", arg, w)

@@ -6,11 +6,15 @@ the argument), finite and within its kind's constraint (unit vector, rotation: t
 
 from __future__ import annotations
 
+import math
+import sys
+import warnings
 from typing import Any
 
 import numpy as np
 
 from rigidsym.core import kinds as _kinds
+from rigidsym.kernels.runtime.errors import BroadcastWarning
 from rigidsym.kernels.runtime.scale import check_threads
 
 __all__ = ["UNIT_TOL", "ORTHO_TOL", "UNIT_AS_IS_EPS", "check_keywords", "as_array",
@@ -168,11 +172,28 @@ def check_inertia(I_C: np.ndarray, m: np.ndarray, tol: float) -> None:
                          "(I_1 + I_2 >= I_3 for every rigid body)")
 
 
-def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:
-    """The broadcast batch shape; the error names the first argument that does not fit."""
+def batch_shape(arrs: list[np.ndarray], specs: list[dict], kernel: str = "") -> tuple[int, ...]:
+    """The broadcast batch shape; the error names the first argument that does not fit.
+
+    Args:
+        arrs: the arguments, as arrays (batch axes first, then the argument's own shape).
+        specs: their specifications (``name``, ``tshape``).
+        kernel: the kernel's name, for the warning.
+
+    Returns:
+        tuple: the batch shape all arguments broadcast to (NumPy's rules).
+
+    Raises:
+        ValueError: the batch shapes do not broadcast (each argument's named).
+
+    Warns:
+        BroadcastWarning: the batch shape holds more samples than any argument's, i.e. two
+            arguments' different batch shapes made a new batch axis (``e`` (5, 3) and
+            ``phi`` (5, 1) -> batch (5, 5)); the result is NumPy's broadcast all the same.
+    """
     shapes = [a.shape[:a.ndim - len(s["tshape"])] for a, s in zip(arrs, specs, strict=True)]
     try:
-        return np.broadcast_shapes(*shapes)
+        batch = np.broadcast_shapes(*shapes)
     except ValueError:
         acc: tuple = ()
         for i, b in enumerate(shapes):
@@ -186,3 +207,29 @@ def batch_shape(arrs: list[np.ndarray], specs: list[dict]) -> tuple[int, ...]:
                                              zip(specs[:i + 1], shapes, strict=False) if c)
                                  + ")") from None
         raise
+    n = math.prod(batch)
+    if n and n > max(math.prod(b) for b in shapes):
+        _warn_new_axis(kernel, arrs, specs, shapes, batch)
+    return batch
+
+
+def _warn_new_axis(kernel, arrs, specs, shapes, batch) -> None:
+    """The :class:`BroadcastWarning` of :func:`batch_shape`, naming each argument with a
+    batch of its own, its shape and its batch shape, at the caller's line."""
+    given = [(s["name"], a.shape, b) for a, s, b in zip(arrs, specs, shapes, strict=True) if b]
+    parts = " and ".join(f"{n} of shape {sh} (batch {b})" for n, sh, b in given)
+    sizes = " and ".join(str(math.prod(b)) for *_, b in given)
+    warnings.warn(
+        f"{kernel + ': ' if kernel else ''}{parts} broadcast to a new batch shape {batch} "
+        f"({math.prod(batch)} samples from {sizes}); if that is meant, np.broadcast_to the "
+        f"arguments first; if not, give them the same batch shape", BroadcastWarning,
+        stacklevel=_outside_rigidsym())
+
+
+def _outside_rigidsym() -> int:
+    """The ``stacklevel`` of the first frame outside rigidsym (its package and the kernel
+    spaces' ``api`` modules, named ``rigidsym.*`` wherever they lie): the user's call."""
+    level, frame = 1, sys._getframe(1)
+    while frame is not None and frame.f_globals.get("__name__", "").startswith("rigidsym"):
+        level, frame = level + 1, frame.f_back
+    return level

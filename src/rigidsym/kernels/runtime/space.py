@@ -24,7 +24,11 @@ from rigidsym.core.files import load_module
 from rigidsym.kernels.runtime import dask_arrays as _dask
 from rigidsym.kernels.runtime import entries as _entries
 from rigidsym.kernels.runtime import state as _state
-from rigidsym.kernels.runtime.errors import NonFiniteResultError, SingularConfigurationError
+from rigidsym.kernels.runtime.errors import (
+    NonFiniteResultError,
+    SingularConfigurationError,
+    at_batch_indices,
+)
 from rigidsym.kernels.runtime.inputs import (
     BODY_KERNELS,
     as_array,
@@ -214,7 +218,7 @@ class KernelSpace:
             if name in BODY_KERNELS:
                 by = {s["name"]: a for a, s in zip(arrs, specs, strict=True)}
                 check_inertia(by["I_C"], by["m"], _kinds.get("unit").tolerance(dtype))
-        batch = batch_shape(arrs, specs)
+        batch = batch_shape(arrs, specs, name)
         n = math.prod(batch)
         flat = []
         for a, s in zip(arrs, specs, strict=True):
@@ -312,7 +316,7 @@ def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> N
         w = where(sing)
         raise SingularConfigurationError(
             f"{name}: singular configuration ({meta['singular'] or 'non-finite result'}"
-            f") in argument {arg!r} at batch indices {w}{' ...' if sing.size > 20 else ''}",
+            f") in argument {arg!r}{at_batch_indices(w, sing.size > 20)}",
             arg, w)
     if on_singular == "raise" and over.size:
         # name the input of largest magnitude there: the likely cause of the overflow
@@ -320,8 +324,8 @@ def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> N
         k = max(range(len(mags)), key=mags.__getitem__)
         arg, w = specs[k]["name"], where(over)
         raise NonFiniteResultError(
-            f"{name}: non-finite output (overflow) from finite inputs at batch indices {w}"
-            f"{' ...' if over.size > 20 else ''}; largest input there: {arg!r} "
+            f"{name}: non-finite output (overflow) from finite inputs"
+            f"{at_batch_indices(w, over.size > 20)}; largest input there: {arg!r} "
             f"(max |{arg}| = {mags[k]:.3g})", arg, w)
     for buf in bufs:
         buf[sing] = np.nan
