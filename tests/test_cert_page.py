@@ -420,3 +420,23 @@ def test_every_conversion_slip_has_its_page_reading_decided(registry):
     for eq in slips:
         reading = cause_record(eq)["page_reading"]
         assert "Decided: verified" in reading or "Decided: its own erratum" in reading, eq.id
+
+
+def test_report_says_a_conversion_slips_page_reading_is_verified(registry):
+    """The report's cause text of 3.77a (a conversion slip whose declared page reading is
+    the corrected chain) says that reading is verified; with a corrected member failing it
+    no longer does (the words follow the outcome, not the table alone)."""
+    import dataclasses
+
+    from rigidsym.checking.checker import check
+    from rigidsym.report.record import cause_words
+
+    o = check("3.77a", expanded=False)
+    assert o.verdict == "does-not-hold" and o.cause == "conversion"
+    cls, text = cause_words(o)
+    assert "conversion" in cls
+    assert "declared reading of the printed page (a conjecture" in text
+    assert "is verified: the reading (nu-dot for v-dot)" in text
+    broken = [dict(m, status="fails") if m["role"] == "corrected" else m for m in o.members]
+    _, text = cause_words(dataclasses.replace(o, members=broken))
+    assert "is verified" not in text

@@ -347,15 +347,15 @@ def cause_record(eq) -> dict:
 #: term or factor missing (the corrected form proved carries it), its own book erratum
 PAGE_READINGS = {
     "3.77a": "verified: the reading (nu-dot for v-dot) is the corrected chain, whose three "
-             "members are proved below by cofactors",
+             "members the certificate proves by cofactors",
     "3.94": "verified: the reading (F~-dot, the 3x4 rate, in the upper-left block) is the "
-            "corrected form, proved below by cofactors",
+            "corrected form, which the certificate proves by cofactors",
     "3.97a": "its own erratum: with the tilde and phi restored the printed bracket still "
              "lacks the term (1 - cos phi) E-dot of d/dt[(1 - cos phi) E]; the corrected form "
-             "proved below carries it (a book erratum beside the conversion slip)",
+             "the certificate proves carries it (a book erratum beside the conversion slip)",
     "3.97c": "its own erratum: with the tilde restored the printed bracket still lacks the "
-             "factor 2 of H~ (3.77d); the corrected form proved below, 2 [r0-dot 1 + R-dot, "
-             "-r-dot], carries it (a book erratum beside the conversion slip)",
+             "factor 2 of H~ (3.77d); the corrected form the certificate proves, 2 [r0-dot 1 + "
+             "R-dot, -r-dot], carries it (a book erratum beside the conversion slip)",
 }
 
 
