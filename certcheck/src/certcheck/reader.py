@@ -25,7 +25,7 @@ __all__ = ["NotRead", "read_relations", "compare"]
 _TOKEN = re.compile(
     r"\\begin\{bmatrix\}|\\end\{bmatrix\}|\\begin\{aligned\}|\\end\{aligned\}"
     r"|\\(?:mathbf|boldsymbol|mathrm|text|dot|ddot|tilde|frac|left|right)\b"
-    r"|\\[A-Za-z]+|\\\\|\\[,;! ]|\d+|[A-Za-z]|[{}()\[\]^_'+\-=&/|]|\s+|.")
+    r"|\\[A-Za-z]+|\\\\|\\\||\\[,;! ]|\d+|[A-Za-z]|[{}()\[\]^_'+\-=&/|]|\s+|.")
 
 
 class NotRead(Exception):
@@ -120,6 +120,7 @@ class _Reader:
         self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
         self.cited = [] if cited is None else cited
         self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
+        self.frame = None  # inside [...]_{K}: glyphs are looked up as [G]_{K}
 
     def peek(self, k: int = 0):
         return self.t[self.i + k] if self.i + k < len(self.t) else None
@@ -161,7 +162,7 @@ class _Reader:
         return v
 
     _STOP = (None, "+", "-", "=", "\\equiv", ")", "]", "}", "&", "\\\\", "\\end{bmatrix}",
-             ",", "|")
+             ",", "|", "\\|")
 
     def term(self) -> M:
         v = self.factor()
@@ -193,6 +194,11 @@ class _Reader:
                 v = v.t()
             elif e.isdigit() and v.shape == (1, 1):
                 v = _s(f"({v.rows[0][0]})^{e}")
+            elif e.isdigit() and 1 < int(e) < 5 and v.shape[0] == v.shape[1]:
+                w = v
+                for _ in range(int(e) - 1):
+                    w = _mul(w, v)
+                v = w
             elif e == "-1":
                 v = _inverse(v)
             else:
@@ -205,10 +211,33 @@ class _Reader:
             raise NotRead("an expression ends early")
         if tok.isdigit():
             return _s(self.take())
+        if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
+            self.take()
+            x = _vec(self.expr())
+            self.take("\\|")
+            if self.t[self.i:self.i + 2] != ["^", "2"] and \
+                    self.t[self.i:self.i + 4] != ["^", "{", "2", "}"]:
+                raise NotRead("a norm not squared (a square root)")
+            self.take("^")
+            self.group()
+            return _s(" + ".join(f"({c})^2" for c in x))
         if tok in ("(", "["):
             self.take()
+            outer, frame = self.frame, self.frame_after() if tok == "[" else None
+            self.frame = frame or outer
             v = self.expr()
             self.take(")" if tok == "(" else "]")
+            self.frame = outer
+            if frame:  # [X]_{K}: X's components in the frame K (its subscript read)
+                self.take("_")
+                self.group()
+            return v
+        if tok in ("\\underbrace", "\\overbrace"):  # a brace's label is a name, not a term
+            self.take()
+            v = self.sub_expr()
+            if self.peek() in ("_", "^"):
+                self.take()
+                self.group()
             return v
         if tok == "\\frac":
             self.take()
@@ -239,6 +268,22 @@ class _Reader:
         if tok == "\\begin{bmatrix}":
             return self.bmatrix()
         return self.glyph()
+
+    def frame_after(self) -> str | None:
+        """The frame K of ``[...]_{K}`` opened just before (``None``: a plain bracket)."""
+        depth, j = 1, self.i
+        while j < len(self.t) and depth:
+            depth += (self.t[j] == "[") - (self.t[j] == "]")
+            j += 1
+        if j >= len(self.t) or self.t[j] != "_":
+            return None
+        if self.t[j + 1:j + 2] != ["{"]:
+            return self.t[j + 1] if j + 1 < len(self.t) else None
+        k, depth = j + 2, 1
+        while k < len(self.t) and depth:
+            depth += (self.t[k] == "{") - (self.t[k] == "}")
+            k += 1
+        return "".join(self.t[j + 2:k - 1])
 
     def sub_expr(self) -> M:
         self.take("{")
@@ -290,6 +335,11 @@ class _Reader:
                       for i in range(3)])
         if key == "\\mathbf{0}":
             return M([["0"] for _ in range(3)])
+        if self.frame:  # a glyph inside [...]_{K}: only the table's [G]_{K} is read
+            key = f"[{key}]_{{{self.frame}}}"
+            if key not in self.table:
+                raise NotRead(f"the glyph {key} (components in a frame) is not in the "
+                              "symbol table")
         entry = self.table.get(key)
         if entry is None and key in self.defs:  # defined on the page before: read that
             text, where, sign = (*self.defs[key], "\\equiv")[:3]
@@ -304,10 +354,11 @@ class _Reader:
                           "(\\equiv) on the page before")
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
-        if "latex" in entry:  # a definition printed elsewhere (another chapter): read it
+        if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
             inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited)
             value = inner.chain()[0]
-            self.cited.append(f"{name} by {entry.get('printed_as', '?')}, an equation")
+            self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
+                              else f"{key} by {entry.get('printed_as', '?')}, an equation")
             return value
         if "cpm_of" in entry:
             return _cpm(self.lookup(entry["cpm_of"]))
