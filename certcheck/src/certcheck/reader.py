@@ -440,6 +440,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                                  f"{e.get('kind')!r}, its atom {a} is of kind "
                                  f"{kinds.get((group or {}).get('group'))!r}")
     printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
+    here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
+            for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
+    defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
     try:
         sides = read_relations(page, symbols, defs)
     except NotRead as exc:

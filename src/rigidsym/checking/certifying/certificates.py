@@ -313,7 +313,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
 
 def _has(glyphs: set, latex: str) -> bool:
     """Whether every glyph ``latex`` names (of :data:`_MODEL_GLYPHS`) is in ``glyphs``."""
-    return all(g in glyphs for g in _MODEL_GLYPHS if g in latex)
+    return all(g in glyphs for g in _MODEL_GLYPHS if re.search(re.escape(g) + "(?![_'])", latex))
 
 
 def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) -> list[dict]:
@@ -349,6 +349,7 @@ def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) ->
         if section == "3.6" and "[" in glyph or "[" not in glyph and (
                 "\\mathbf{r}" not in latex or not _timed_r(table)):
             out.append({"glyph": glyph, "latex": latex, "model": words})
+            have.add(glyph)
     if section == "3.6":  # the atoms: o's components in F, rho's in M, Q's in F
         for e in table or []:
             for base, frame in (("\\mathbf{o}", "F"), ("\\boldsymbol{\\rho}", "M"),
@@ -369,7 +370,8 @@ def _timed_r(table) -> bool:
 #: the glyphs the model entries below are written in
 _MODEL_GLYPHS = ("\\mathbf{Q}", "\\dot{\\mathbf{Q}}", "\\ddot{\\mathbf{Q}}", "\\mathbf{a}",
                  "\\dot{\\mathbf{a}}", "\\ddot{\\mathbf{a}}", "\\mathbf{r}", "\\mathbf{o}",
-                 "\\mathbf{c}", "\\mathbf{p}",
+                 "\\mathbf{c}", "\\mathbf{p}", "\\dot{\\mathbf{p}}", "\\mathbf{a}_0",
+                 "\\mathbf{p}_0", "\\dot{\\mathbf{c}}",
                  "\\dot{\\mathbf{o}}", "\\ddot{\\mathbf{o}}", "\\boldsymbol{\\rho}",
                  "\\dot{\\boldsymbol{\\rho}}", "\\ddot{\\boldsymbol{\\rho}}")
 _OMEGA_DOT = r"\ddot{\mathbf{Q}}\mathbf{Q}^T + \dot{\mathbf{Q}}\dot{\mathbf{Q}}^T"
@@ -380,6 +382,14 @@ _MODEL_LATEX = (
      "body point's velocity, r constant"),
     (r"\ddot{\mathbf{p}}", r"\ddot{\mathbf{a}} + \ddot{\mathbf{Q}}\mathbf{r}",
      "body point's acceleration, r constant"),
+    (r"\mathbf{a}", r"\mathbf{Q}\mathbf{a}_0 + \mathbf{c}", "point A, x = Q x_0 + c"),
+    (r"\mathbf{p}", r"\mathbf{Q}\mathbf{p}_0 + \mathbf{c}", "point P, x = Q x_0 + c"),
+    (r"\dot{\mathbf{a}}", r"\dot{\mathbf{Q}}\mathbf{a}_0 + \dot{\mathbf{c}}",
+     "A's velocity, x = Q x_0 + c"),
+    (r"\dot{\mathbf{p}}", r"\dot{\mathbf{Q}}\mathbf{p}_0 + \dot{\mathbf{c}}",
+     "P's velocity, x = Q x_0 + c"),
+    (r"\mathbf{v}_A", r"\dot{\mathbf{a}}", "A's velocity"),
+    (r"\mathbf{v}_P", r"\dot{\mathbf{p}}", "P's velocity"),
     (r"\mathbf{a}'", r"\mathbf{Q}\mathbf{a} + \mathbf{c}", "displaced point, x' = Q x + c"),
     (r"\mathbf{p}'", r"\mathbf{Q}\mathbf{p} + \mathbf{c}", "displaced point, x' = Q x + c"),
     (r"\dot{\boldsymbol{\Omega}}", _OMEGA_DOT, "rate of Omega = Q-dot Q^T (3.44)"),
