@@ -10,7 +10,12 @@ holds against the page: ``{"glyph": "\\mathbf{e}", "kind": "unit", "atoms": ["e_
 read here). The notation read: bold and Greek glyphs with dots, primes and subscripts,
 ``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition (matrix products), ``\\frac``, ``/``,
 ``\\cos``, ``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``,
-brackets and ``bmatrix`` blocks. A side the reader cannot read is reported, never passed.
+brackets and ``bmatrix`` blocks, ``\\|x\\|^2`` (a bare norm, a square root, is not read),
+integer powers of a square matrix, ``\\underbrace{X}_{...}`` (X), and ``[X]_{K}``: X's
+components in the frame K, each glyph G of X read from the table's line ``[G]_{K}``. A
+table line ``{"glyph", "latex", "model"}`` is the certificate's model of a glyph the page
+defines in words, in the table's glyphs; it is read firmly. A side the reader cannot read
+is reported, never passed.
 
 Each read side becomes entries in the certificate's grammar and is compared with the
 certificate's side by :func:`certcheck.check.check_identity` (the kinds' hypotheses only).
