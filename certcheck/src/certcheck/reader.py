@@ -120,8 +120,11 @@ def _inverse(v: M) -> M:
 
 class _Reader:
     def __init__(self, tokens: list[str], table: dict, defs: dict | None = None,
-                 cited: list | None = None):
+                 cited: list | None = None, lets: list | None = None,
+                 seen: dict | None = None):
         self.t, self.i, self.table = tokens, 0, table
+        self.lets = [] if lets is None else lets  # [name, text]: a glyph's entries, once
+        self.seen = {} if seen is None else seen  # key -> (named value, assumed): once
         self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
         self.cited = [] if cited is None else cited
         self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
@@ -332,6 +335,22 @@ class _Reader:
             self.i += 3
         return self.lookup(name)
 
+    def named(self, key: str, v: M, assumed: bool) -> M:
+        """``v`` with each compound entry written once as a let (``page1``, ...), so that
+        a glyph read through a definition is a name in every product it enters."""
+        self.assumed = self.assumed or assumed
+        if key not in self.seen:
+            rows = []
+            for r in v.rows:
+                rows.append([])
+                for x in r:
+                    if not re.fullmatch(r"[\w']+", x):
+                        self.lets.append([f"page{len(self.lets) + 1}", x])
+                        x = self.lets[-1][0]
+                    rows[-1].append(x)
+            self.seen[key] = (M(rows), assumed)
+        return self.seen[key][0]
+
     def lookup(self, name: str) -> M:
         key = name.replace(" ", "")
         self.assumed = self.assumed or key in ("\\mathbf{1}", "\\mathbf{O}", "\\mathbf{0}")
@@ -349,9 +368,9 @@ class _Reader:
         if entry is None and key in self.defs:  # defined on the page before: read that
             text, where, sign = (*self.defs[key], "\\equiv")[:3]
             rest = {k: v for k, v in self.defs.items() if k != key}
-            inner = _Reader(_tokens(text), self.table, rest, self.cited)
-            value = inner.chain()[0]
-            self.assumed = self.assumed or inner.assumed
+            inner = _Reader(_tokens(text), self.table, rest, self.cited, self.lets,
+                            self.seen)
+            value = self.named(key, inner.chain()[0], inner.assumed)
             self.cited.append(f"{name} by ({where})" + (", an equation" if sign == "=" else ""))
             return value
         if entry is None:
@@ -360,8 +379,9 @@ class _Reader:
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
-            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited)
-            value = inner.chain()[0]
+            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited,
+                            self.lets, self.seen)
+            value = self.named(key, inner.chain()[0], inner.assumed)
             self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
                               else f"{key} by {entry.get('printed_as', '?')}, an equation")
             return value
@@ -394,9 +414,11 @@ def _split(tokens: list[str]) -> list[list[list[str]]]:
     return [*chains, [*sides, cur]]
 
 
-def read_relations(page: str, symbols: list, defs: dict | None = None) -> list:
+def read_relations(page: str, symbols: list, defs: dict | None = None,
+                   lets: list | None = None) -> list:
     """The sides of the printed chain ``a = b = ...`` (or ``\\equiv``), each a matrix of
-    grammar texts, or the :class:`NotRead` saying why the reader cannot read it.
+    grammar texts, or the :class:`NotRead` saying why the reader cannot read it; the
+    texts name the lets appended to ``lets`` (``[name, text]``, in order).
 
     Raises:
         NotRead: a malformed symbol table.
@@ -406,11 +428,11 @@ def read_relations(page: str, symbols: list, defs: dict | None = None) -> list:
         if not isinstance(e, dict) or "glyph" not in e:
             raise NotRead(f"a symbol-table entry without a glyph: {e!r}")
         table[str(e["glyph"]).replace(" ", "")] = e
-    out = []
+    out, seen = [], {}  # a glyph read once per page
     for chain in _split(_tokens(page.rstrip(",. "))):
         out.append([])
         for toks in chain:
-            r = _Reader(toks, table, defs)
+            r = _Reader(toks, table, defs, None, lets, seen)
             try:
                 v = r.chain()[0]
             except (NotRead, IndexError) as exc:
@@ -449,7 +471,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
             for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
     try:
-        sides = read_relations(page, symbols, defs)
+        sides = read_relations(page, symbols, defs, lets := [])
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
@@ -481,7 +503,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                                  f"the page's reads "
                                  f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
                                  f"{len(theirs)}x{len(theirs[0])}")
-            probe = {**cert, "verdict": "verified", "relations": [
+            probe = {**cert, "verdict": "verified", "let": [*cert.get("let", []), *lets],
+                     "relations": [
                 {"label": f"page {side}", "role": "printed", "lhs": mine.rows, "rhs": theirs,
                  "evidence": {"type": "identity"}}]}
             try:
