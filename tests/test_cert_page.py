@@ -459,8 +459,9 @@ def test_reader_notation_frames_braces_norms_powers():
              {"glyph": "[\\mathbf{x}]_{\\mathcal{M}}", "kind": "free", "atoms": x},
              {"glyph": "[\\mathbf{x}]_{\\mathcal{F}}", "latex": "\\mathbf{A}\\mathbf{x}",
               "model": "x in F"}]
+    lets: list = []  # a glyph read through a line: its entries named once
     (fx, ax), = read_relations("[\\mathbf{x}]_{\\mathcal{F}} = \\mathbf{A}[\\mathbf{x}]_"
-                               "{\\mathcal{M}}", table)
+                               "{\\mathcal{M}}", table, None, lets)
     (brace, xx), = read_relations("\\underbrace{\\mathbf{x} + \\mathbf{y}}_{\\mathbf{v}} = "
                                   "\\mathbf{x}", table)
     (norm, dot), = read_relations("\\|\\mathbf{x}\\|^2 = \\mathbf{x}^T\\mathbf{x}", table)
@@ -469,8 +470,11 @@ def test_reader_notation_frames_braces_norms_powers():
     ((unframed, _, _), _), = read_relations("[\\mathbf{y}]_{\\mathcal{F}} = \\mathbf{y}", table)
     assert isinstance(bare, NotRead) and isinstance(unframed, NotRead)
     assert "[\\mathbf{x}]_{\\mathcal{F}} as the model's x in F" in fx[2]
+    assert lets and all(e in dict(lets) for r in fx[0].rows for e in r)
     for _ in range(5):
         at = {n: Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for n in x + y + A}
+        for name, text in lets:
+            at[name] = _value(text, at)
 
         def val(m, at=at):
             return [[_value(e, at) for e in r] for r in m[0].rows]
