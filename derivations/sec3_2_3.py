@@ -126,15 +126,25 @@ def pose_triad() -> Statement:
 
 
 @equation("3.38", "The triad is orthonormal and right-handed", section="3.2.3",
+          kind="definition",
           latex=r"\mathbf{e}_i \cdot \mathbf{e}_j = \delta_{ij}, \quad i, j = 1, 2, 3, \quad "
                 r"\mathbf{e}_3 = \mathbf{e}_1 \times \mathbf{e}_2")
 def pose_triad_orthonormal() -> Statement:
-    """``e_i . e_j = delta_ij`` (all nine, entry by entry) and ``e_3 = e_1 x e_2``.
+    """``e_i . e_j = delta_ij`` (all nine, entry by entry) and ``e_3 = e_1 x e_2``: the
+    conditions the book imposes on the triad ("define three points ... in such a way that
+    the three vectors ... are orthonormal and form a right-hand system"), so a definition,
+    not an identity: the model's triad is the columns of a rotation, whose hypotheses are
+    the first relation itself. The second is also derived, as a claim: e_3 = e_1 x e_2 from
+    orthonormal columns and det = 1 (the certificate's cofactors use e_1 . e_3, e_2 . e_3,
+    |e_3|^2 - 1 and det - 1, never e_3 - e_1 x e_2).
 
-    Book: Sec. 3.2.3, Eq. (3.38).
+    Book: Sec. 3.2.3, Eq. (3.38) (definition: a condition of the construction).
     """
     return Statement([Rel(_dots(e_i, e_i), sp.eye(3), "e_i . e_j = delta_ij"),
-                      Rel(e_i[2], Cross(e_i[0], e_i[1]), "e_3 = e_1 x e_2")], triad_model())
+                      Rel(e_i[2], Cross(e_i[0], e_i[1]), "e_3 = e_1 x e_2")], triad_model(),
+                     defines=("e_1", "e_2", "e_3"),
+                     claims=[Rel(e_i[2], Cross(e_i[0], e_i[1]),
+                                 "e_3 = e_1 x e_2, from orthonormal columns and det = 1")])
 
 
 @equation("3.39", "Entries of Q in the frame of the triad", section="3.2.3",

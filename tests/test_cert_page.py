@@ -420,3 +420,111 @@ def test_every_conversion_slip_has_its_page_reading_decided(registry):
     for eq in slips:
         reading = cause_record(eq)["page_reading"]
         assert "Decided: verified" in reading or "Decided: its own erratum" in reading, eq.id
+
+
+def test_report_says_a_conversion_slips_page_reading_is_verified(registry):
+    """The report's cause text of 3.77a (a conversion slip whose declared page reading is
+    the corrected chain) says that reading is verified; with a corrected member failing it
+    no longer does (the words follow the outcome, not the table alone)."""
+    import dataclasses
+
+    from rigidsym.checking.checker import check
+    from rigidsym.report.record import cause_words
+
+    o = check("3.77a", expanded=False)
+    assert o.verdict == "does-not-hold" and o.cause == "conversion"
+    cls, text = cause_words(o)
+    assert "conversion" in cls
+    assert "declared reading of the printed page (a conjecture" in text
+    assert "is verified: the reading (nu-dot for v-dot)" in text
+    broken = [dict(m, status="fails") if m["role"] == "corrected" else m for m in o.members]
+    _, text = cause_words(dataclasses.replace(o, members=broken))
+    assert "is verified" not in text
+
+
+def test_reader_notation_frames_braces_norms_powers():
+    """[x]_F read through the table's [G]_F line (a glyph without one is not read); an
+    underbrace is its argument; ||x||^2 is x^T x and a bare norm is not read (a square
+    root); A^2 is A A (exact rational values, random atoms)."""
+    import random
+
+    from certcheck.reader import NotRead, read_relations
+
+    rng = random.Random(652)
+    x, y = ["x_1", "x_2", "x_3"], ["y_1", "y_2", "y_3"]
+    A = [f"a_{k}" for k in range(9)]
+    table = [{"glyph": "\\mathbf{x}", "kind": "free", "atoms": x},
+             {"glyph": "\\mathbf{y}", "kind": "free", "atoms": y},
+             {"glyph": "\\mathbf{A}", "kind": "free", "atoms": A},
+             {"glyph": "[\\mathbf{x}]_{\\mathcal{M}}", "kind": "free", "atoms": x},
+             {"glyph": "[\\mathbf{x}]_{\\mathcal{F}}", "latex": "\\mathbf{A}\\mathbf{x}",
+              "model": "x in F"}]
+    lets: list = []  # a glyph read through a line: its entries named once
+    (fx, ax), = read_relations("[\\mathbf{x}]_{\\mathcal{F}} = \\mathbf{A}[\\mathbf{x}]_"
+                               "{\\mathcal{M}}", table, None, lets)
+    (brace, xx), = read_relations("\\underbrace{\\mathbf{x} + \\mathbf{y}}_{\\mathbf{v}} = "
+                                  "\\mathbf{x}", table)
+    (norm, dot), = read_relations("\\|\\mathbf{x}\\|^2 = \\mathbf{x}^T\\mathbf{x}", table)
+    (sq, prod), = read_relations("\\mathbf{A}^2 = \\mathbf{A}\\mathbf{A}", table)
+    ((bare, _, _), _), = read_relations("\\|\\mathbf{x}\\| = 1", table)
+    ((unframed, _, _), _), = read_relations("[\\mathbf{y}]_{\\mathcal{F}} = \\mathbf{y}", table)
+    assert isinstance(bare, NotRead) and isinstance(unframed, NotRead)
+    assert "[\\mathbf{x}]_{\\mathcal{F}} as the model's x in F" in fx[2]
+    assert lets and all(e in dict(lets) for r in fx[0].rows for e in r)
+    for _ in range(5):
+        at = {n: Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for n in x + y + A}
+        for name, text in lets:
+            at[name] = _value(text, at)
+
+        def val(m, at=at):
+            return [[_value(e, at) for e in r] for r in m[0].rows]
+        assert val(fx) == val(ax) and val(norm) == val(dot) and val(sq) == val(prod)
+        assert val(brace) == [[at[a] + at[b]] for a, b in zip(x, y, strict=True)]
+        assert val(brace) != val(xx) or all(at[b] == 0 for b in y)
+
+
+def test_reader_a_glyph_defined_here_shadows_an_earlier_one():
+    """G \\equiv rhs on the page: the G defined by an earlier id is another quantity of the
+    same name (3.140's 6x6 W against 3.86's 3x3 W): its lhs is not read through it."""
+    from certcheck.reader import compare
+
+    x = ["x_1", "x_2", "x_3"]
+    cert = {"format": "rigidsym-certificate", "version": 1, "id": "3.999",
+            "verdict": "definition", "let": [],
+            "atoms": [{"group": a, "kind": "free", "names": [a], "timed": False} for a in x],
+            "symbols": [{"glyph": "\\mathbf{x}", "kind": "free", "atoms": x}],
+            "relations": [{"role": "printed", "label": "", "lhs": [[f"2*{a}"] for a in x],
+                           "rhs": [[f"2*{a}"] for a in x], "evidence": {"type": "statement"}}]}
+    defs = {"\\mathbf{w}": ("\\mathbf{x}", "3.1", "\\equiv")}  # an earlier w = x
+    lines = compare(cert, "\\mathbf{w} \\equiv 2\\mathbf{x}", fast=False, defs=defs)
+    assert any(x.startswith("NOT READ: relation 1's lhs") for x in lines), lines
+    assert any(x.startswith("read from the page: relation 1's rhs") for x in lines), lines
+
+
+@pytest.fixture(scope="module")
+def model_read(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _write(tmp_path_factory.mktemp("model"), ["3.98", "3.84"])
+
+
+def test_model_glyphs_read_firmly_and_tamperings_rejected(model_read):
+    """3.98 (a definition, read through the frames' lines) and 3.84 (through p = a + Q r and
+    Omega-dot): read firmly; a doubled right side, both sides shifted, the model's line
+    changed (p = a + 2 Q r, [rho]_F = 2 Q rho) and another id's printed text: rejected."""
+    from certcheck.reader import compare
+
+    book = _book()
+    for i, c in model_read.items():
+        lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
+        assert any(x.startswith("read from the page: relation 1's lhs") and " and rhs" in x
+                   for x in lines), lines
+        assert not any(x.startswith(("NOT READ", "matched")) for x in lines), lines
+        changed = copy.deepcopy(c)
+        entry = next(e for e in changed["symbols"] if e.get("glyph") in (
+            "\\mathbf{p}", "[\\boldsymbol{\\rho}]_{\\mathcal{F}}"))
+        entry["latex"] = entry["latex"].replace("\\mathbf{Q}", "2\\mathbf{Q}")
+        other = "3.84" if i == "3.98" else "3.98"
+        for t in (doubled_rhs(c), shifted_sides(c), changed,
+                  another_printed_text(c, book, other)):
+            assert f"({i})" in _rejected(t, book), i

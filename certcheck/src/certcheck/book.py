@@ -125,6 +125,8 @@ def _symbol_words(s) -> str:
         return repr(s)
     if "cpm_of" in s:
         return f"{s.get('glyph')}: the cross-product matrix of {s['cpm_of']}"
+    if "latex" in s and "model" in s:
+        return f"{s.get('glyph')}: {s['latex']} (the model's {s['model']})"
     if "latex" in s:
         return f"{s.get('glyph')}: printed as {s.get('printed_as', '?')}: {s['latex']}"
     if "defined_by" in s:

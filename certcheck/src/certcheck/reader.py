@@ -10,7 +10,12 @@ holds against the page: ``{"glyph": "\\mathbf{e}", "kind": "unit", "atoms": ["e_
 read here). The notation read: bold and Greek glyphs with dots, primes and subscripts,
 ``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition (matrix products), ``\\frac``, ``/``,
 ``\\cos``, ``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``,
-brackets and ``bmatrix`` blocks. A side the reader cannot read is reported, never passed.
+brackets and ``bmatrix`` blocks, ``\\|x\\|^2`` (a bare norm, a square root, is not read),
+integer powers of a square matrix, ``\\underbrace{X}_{...}`` (X), and ``[X]_{K}``: X's
+components in the frame K, each glyph G of X read from the table's line ``[G]_{K}``. A
+table line ``{"glyph", "latex", "model"}`` is the certificate's model of a glyph the page
+defines in words, in the table's glyphs; it is read firmly. A side the reader cannot read
+is reported, never passed.
 
 Each read side becomes entries in the certificate's grammar and is compared with the
 certificate's side by :func:`certcheck.check.check_identity` (the kinds' hypotheses only).
@@ -25,7 +30,7 @@ __all__ = ["NotRead", "read_relations", "compare"]
 _TOKEN = re.compile(
     r"\\begin\{bmatrix\}|\\end\{bmatrix\}|\\begin\{aligned\}|\\end\{aligned\}"
     r"|\\(?:mathbf|boldsymbol|mathrm|text|dot|ddot|tilde|frac|left|right)\b"
-    r"|\\[A-Za-z]+|\\\\|\\[,;! ]|\d+|[A-Za-z]|[{}()\[\]^_'+\-=&/|]|\s+|.")
+    r"|\\[A-Za-z]+|\\\\|\\\||\\[,;! ]|\d+|[A-Za-z]|[{}()\[\]^_'+\-=&/|]|\s+|.")
 
 
 class NotRead(Exception):
@@ -115,11 +120,15 @@ def _inverse(v: M) -> M:
 
 class _Reader:
     def __init__(self, tokens: list[str], table: dict, defs: dict | None = None,
-                 cited: list | None = None):
+                 cited: list | None = None, lets: list | None = None,
+                 seen: dict | None = None):
         self.t, self.i, self.table = tokens, 0, table
+        self.lets = [] if lets is None else lets  # [name, text]: a glyph's entries, once
+        self.seen = {} if seen is None else seen  # key -> (named value, assumed): once
         self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
         self.cited = [] if cited is None else cited
         self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
+        self.frame = None  # inside [...]_{K}: glyphs are looked up as [G]_{K}
 
     def peek(self, k: int = 0):
         return self.t[self.i + k] if self.i + k < len(self.t) else None
@@ -161,7 +170,7 @@ class _Reader:
         return v
 
     _STOP = (None, "+", "-", "=", "\\equiv", ")", "]", "}", "&", "\\\\", "\\end{bmatrix}",
-             ",", "|")
+             ",", "|", "\\|")
 
     def term(self) -> M:
         v = self.factor()
@@ -193,6 +202,11 @@ class _Reader:
                 v = v.t()
             elif e.isdigit() and v.shape == (1, 1):
                 v = _s(f"({v.rows[0][0]})^{e}")
+            elif e.isdigit() and 1 < int(e) < 5 and v.shape[0] == v.shape[1]:
+                w = v
+                for _ in range(int(e) - 1):
+                    w = _mul(w, v)
+                v = w
             elif e == "-1":
                 v = _inverse(v)
             else:
@@ -205,10 +219,33 @@ class _Reader:
             raise NotRead("an expression ends early")
         if tok.isdigit():
             return _s(self.take())
+        if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
+            self.take()
+            x = _vec(self.expr())
+            self.take("\\|")
+            if self.t[self.i:self.i + 2] != ["^", "2"] and \
+                    self.t[self.i:self.i + 4] != ["^", "{", "2", "}"]:
+                raise NotRead("a norm not squared (a square root)")
+            self.take("^")
+            self.group()
+            return _s(" + ".join(f"({c})^2" for c in x))
         if tok in ("(", "["):
             self.take()
+            outer, frame = self.frame, self.frame_after() if tok == "[" else None
+            self.frame = frame or outer
             v = self.expr()
             self.take(")" if tok == "(" else "]")
+            self.frame = outer
+            if frame:  # [X]_{K}: X's components in the frame K (its subscript read)
+                self.take("_")
+                self.group()
+            return v
+        if tok in ("\\underbrace", "\\overbrace"):  # a brace's label is a name, not a term
+            self.take()
+            v = self.sub_expr()
+            if self.peek() in ("_", "^"):
+                self.take()
+                self.group()
             return v
         if tok == "\\frac":
             self.take()
@@ -239,6 +276,22 @@ class _Reader:
         if tok == "\\begin{bmatrix}":
             return self.bmatrix()
         return self.glyph()
+
+    def frame_after(self) -> str | None:
+        """The frame K of ``[...]_{K}`` opened just before (``None``: a plain bracket)."""
+        depth, j = 1, self.i
+        while j < len(self.t) and depth:
+            depth += (self.t[j] == "[") - (self.t[j] == "]")
+            j += 1
+        if j >= len(self.t) or self.t[j] != "_":
+            return None
+        if self.t[j + 1:j + 2] != ["{"]:
+            return self.t[j + 1] if j + 1 < len(self.t) else None
+        k, depth = j + 2, 1
+        while k < len(self.t) and depth:
+            depth += (self.t[k] == "{") - (self.t[k] == "}")
+            k += 1
+        return "".join(self.t[j + 2:k - 1])
 
     def sub_expr(self) -> M:
         self.take("{")
@@ -282,6 +335,22 @@ class _Reader:
             self.i += 3
         return self.lookup(name)
 
+    def named(self, key: str, v: M, assumed: bool) -> M:
+        """``v`` with each compound entry written once as a let (``page1``, ...), so that
+        a glyph read through a definition is a name in every product it enters."""
+        self.assumed = self.assumed or assumed
+        if key not in self.seen:
+            rows = []
+            for r in v.rows:
+                rows.append([])
+                for x in r:
+                    if not re.fullmatch(r"[\w']+", x):
+                        self.lets.append([f"page{len(self.lets) + 1}", x])
+                        x = self.lets[-1][0]
+                    rows[-1].append(x)
+            self.seen[key] = (M(rows), assumed)
+        return self.seen[key][0]
+
     def lookup(self, name: str) -> M:
         key = name.replace(" ", "")
         self.assumed = self.assumed or key in ("\\mathbf{1}", "\\mathbf{O}", "\\mathbf{0}")
@@ -290,13 +359,18 @@ class _Reader:
                       for i in range(3)])
         if key == "\\mathbf{0}":
             return M([["0"] for _ in range(3)])
+        if self.frame:  # a glyph inside [...]_{K}: only the table's [G]_{K} is read
+            key = f"[{key}]_{{{self.frame}}}"
+            if key not in self.table:
+                raise NotRead(f"the glyph {key} (components in a frame) is not in the "
+                              "symbol table")
         entry = self.table.get(key)
         if entry is None and key in self.defs:  # defined on the page before: read that
             text, where, sign = (*self.defs[key], "\\equiv")[:3]
             rest = {k: v for k, v in self.defs.items() if k != key}
-            inner = _Reader(_tokens(text), self.table, rest, self.cited)
-            value = inner.chain()[0]
-            self.assumed = self.assumed or inner.assumed
+            inner = _Reader(_tokens(text), self.table, rest, self.cited, self.lets,
+                            self.seen)
+            value = self.named(key, inner.chain()[0], inner.assumed)
             self.cited.append(f"{name} by ({where})" + (", an equation" if sign == "=" else ""))
             return value
         if entry is None:
@@ -304,10 +378,12 @@ class _Reader:
                           "(\\equiv) on the page before")
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
-        if "latex" in entry:  # a definition printed elsewhere (another chapter): read it
-            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited)
-            value = inner.chain()[0]
-            self.cited.append(f"{name} by {entry.get('printed_as', '?')}, an equation")
+        if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
+            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited,
+                            self.lets, self.seen)
+            value = self.named(key, inner.chain()[0], inner.assumed)
+            self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
+                              else f"{key} by {entry.get('printed_as', '?')}, an equation")
             return value
         if "cpm_of" in entry:
             return _cpm(self.lookup(entry["cpm_of"]))
@@ -338,9 +414,11 @@ def _split(tokens: list[str]) -> list[list[list[str]]]:
     return [*chains, [*sides, cur]]
 
 
-def read_relations(page: str, symbols: list, defs: dict | None = None) -> list:
+def read_relations(page: str, symbols: list, defs: dict | None = None,
+                   lets: list | None = None) -> list:
     """The sides of the printed chain ``a = b = ...`` (or ``\\equiv``), each a matrix of
-    grammar texts, or the :class:`NotRead` saying why the reader cannot read it.
+    grammar texts, or the :class:`NotRead` saying why the reader cannot read it; the
+    texts name the lets appended to ``lets`` (``[name, text]``, in order).
 
     Raises:
         NotRead: a malformed symbol table.
@@ -350,11 +428,11 @@ def read_relations(page: str, symbols: list, defs: dict | None = None) -> list:
         if not isinstance(e, dict) or "glyph" not in e:
             raise NotRead(f"a symbol-table entry without a glyph: {e!r}")
         table[str(e["glyph"]).replace(" ", "")] = e
-    out = []
+    out, seen = [], {}  # a glyph read once per page
     for chain in _split(_tokens(page.rstrip(",. "))):
         out.append([])
         for toks in chain:
-            r = _Reader(toks, table, defs)
+            r = _Reader(toks, table, defs, None, lets, seen)
             try:
                 v = r.chain()[0]
             except (NotRead, IndexError) as exc:
@@ -389,8 +467,11 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                                  f"{e.get('kind')!r}, its atom {a} is of kind "
                                  f"{kinds.get((group or {}).get('group'))!r}")
     printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
+    here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
+            for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
+    defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
     try:
-        sides = read_relations(page, symbols, defs)
+        sides = read_relations(page, symbols, defs, lets := [])
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
@@ -422,7 +503,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                                  f"the page's reads "
                                  f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
                                  f"{len(theirs)}x{len(theirs[0])}")
-            probe = {**cert, "verdict": "verified", "relations": [
+            probe = {**cert, "verdict": "verified", "let": [*cert.get("let", []), *lets],
+                     "relations": [
                 {"label": f"page {side}", "role": "printed", "lhs": mine.rows, "rhs": theirs,
                  "evidence": {"type": "identity"}}]}
             try:

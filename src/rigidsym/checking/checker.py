@@ -141,6 +141,16 @@ def _decide_case(rel, blhs, brhs, lhs, rhs, seed, describe) -> _RelOutcome:
     return _RelOutcome(zr.zero, zr.method, zr.detail, None, rel.label)
 
 
+def _condition_on(rel: Rel, defines: tuple[str, ...]) -> bool:
+    """Whether a definition's printed relation is a condition imposed on the symbols it
+    introduces (its lhs not a bare symbol, and every symbol of it one of ``defines``):
+    (3.38)'s ``e_i . e_j = delta_ij`` on the triad it introduces."""
+    import sympy as sp
+
+    names = {getattr(s, "name", None) for s in sp.sympify(rel.lhs).free_symbols}
+    return bool(defines) and bool(names) and names <= set(defines)
+
+
 def _combine(outs: list[_RelOutcome]) -> tuple[bool | None, str, str]:
     if any(o.zero is False for o in outs):
         o = next(o for o in outs if o.zero is False)
@@ -226,7 +236,7 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
             if shape_of(r.lhs) != shape_of(r.rhs):
                 ok = False
                 detail = f"shape mismatch in definition of {name}"
-            elif name not in st.defines:
+            elif name not in st.defines and not _condition_on(r, st.defines):
                 ok = False
                 detail = f"lhs {expanded_text(r.lhs)} is not a symbol this definition introduces"
         outs = [decide_rel(r, st.model, seed) for r in st.claims]

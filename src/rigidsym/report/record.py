@@ -20,7 +20,7 @@ from rigidsym.registry.declarations import USER_CAUSE_DEFAULT, VERDICTS, is_user
 from rigidsym.report.repairs import repair_fields
 
 __all__ = ["summary", "cause_counts", "result_record", "to_json", "cause_words",
-           "failure_bound", "CITATION", "TITLE", "SCHEMA", "RESIDUAL_FLOOR",
+           "page_reading", "failure_bound", "CITATION", "TITLE", "SCHEMA", "RESIDUAL_FLOOR",
            "document_header"]
 
 CITATION = ("J. Angeles, *Fundamentals of Robotic Mechanical Systems*, 4th ed., Springer, "
@@ -110,12 +110,34 @@ def cause_words(r: Outcome) -> tuple[str, str]:
         return "", ""
     known = r.evidence or r.detail
     if r.cause in _CAUSE_CLASS:
-        return _CAUSE_CLASS[r.cause], known
+        reading = page_reading(r) if r.cause == "conversion" else ""
+        if reading and not known.rstrip().endswith((".", "?", "!")):
+            known = known.rstrip() + "."
+        return _CAUSE_CLASS[r.cause], known + reading
     if is_user_id(r.id):  # a user's own words for the cause, if any
         own = r.cause not in (None, "", "unknown", USER_CAUSE_DEFAULT)
         return (r.cause if own else "cause not determined"), known
     return "cause not determined", (f"Not a known slip of the text's conversion nor a known "
                                     f"erratum; what is known: {known}")
+
+
+def page_reading(r: Outcome) -> str:
+    """For a conversion slip, one sentence on its declared page reading (a conjecture about
+    the printed page, the source being a converted text), as decided in
+    :data:`rigidsym.checking.certifying.certificates.PAGE_READINGS`: ``verified`` only
+    where every corrected member of ``r`` holds; ``""`` for an undecided reading."""
+    from rigidsym.checking.certifying.certificates import PAGE_READINGS
+
+    decided = PAGE_READINGS.get(r.id, "")
+    corrected = [m for m in r.members if m.get("role") == "corrected"]
+    head = (" The page reading: the declared reading of the printed page (a conjecture, the "
+            "source being a converted text)")
+    if decided.startswith("verified: ") and corrected and \
+            all(m.get("status") == "holds" for m in corrected):
+        return f"{head} is verified: {decided.removeprefix('verified: ')}."
+    if decided.startswith("its own erratum: "):
+        return f"{head} is its own erratum: {decided.removeprefix('its own erratum: ')}."
+    return ""
 
 
 def failure_bound(r: Outcome) -> float | None:

@@ -308,7 +308,113 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
             out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
                         "printed_as": "the time derivative of (2.49)"})
             out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
+    return out + model_symbols({e["glyph"] for e in out}, section, out)
+
+
+def _has(glyphs: set, latex: str) -> bool:
+    """Whether every glyph ``latex`` names (of :data:`_MODEL_GLYPHS`) is in ``glyphs``."""
+    return all(g in glyphs for g in _MODEL_GLYPHS if re.search(re.escape(g) + "(?![_'])", latex))
+
+
+def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) -> list[dict]:
+    """The glyphs the page leaves to words or to a derivative, as the certificate's model
+    defines them, each ``{"glyph", "latex", "model"}``: LaTeX in the book's glyphs of the
+    table (never an expansion in atoms) and the model's words, for a referee to hold
+    against the page; certcheck reads them firmly (a side that differs is a rejection).
+
+    - a rotation ``Q`` of the quaternion ``(q, q_4)`` and its rate (``u`` the quaternion's
+      rate; section 3.4's instant models);
+    - a body point ``p = a + Q r`` (``r`` constant) and its rates;
+    - ``Omega-dot``, the rate of ``Omega = Q-dot Q^T`` (3.44), and ``omega-dot`` its vector;
+    - in section 3.6, components in the frames ``F`` and ``M``: ``[o]_F``, ``[rho]_M`` the
+      atoms, ``[rho]_F = Q rho``, ``[p]_F = o + Q rho`` and their rates.
+    """
+    out: list[dict] = []
+    have = set(glyphs)
+    quaternion = {"\\mathbf{q}", "\\mathbf{u}", "q_4", "u_4"} <= have and \
+        "\\mathbf{Q}" not in have
+    if quaternion:
+        out += [{"glyph": "\\tilde{\\mathbf{q}}", "cpm_of": "\\mathbf{q}"},
+                {"glyph": "\\tilde{\\mathbf{u}}", "cpm_of": "\\mathbf{u}"},
+                {"glyph": "\\mathbf{Q}", "latex": _Q_QUATERNION,
+                 "model": "rotation of the quaternion (q, q_4), not normalised"},
+                {"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_QUATERNION,
+                 "model": "rate of that rotation, the quaternion's rate being (u, u_4)"}]
+        have |= {"\\mathbf{Q}", "\\dot{\\mathbf{Q}}"}
+    for glyph, latex, words in _MODEL_LATEX:
+        if glyph in have or not _has(have, latex):
+            continue
+        if "'" in glyph and not section.startswith("3.2"):  # x' = Q x + c: section 3.2's
+            continue
+        if section == "3.6" and "[" in glyph or "[" not in glyph and (
+                "\\mathbf{r}" not in latex or not _timed_r(table)):
+            out.append({"glyph": glyph, "latex": latex, "model": words})
+            have.add(glyph)
+    if section == "3.6":  # the atoms: o's components in F, rho's in M, Q's in F
+        for e in table or []:
+            for base, frame in (("\\mathbf{o}", "F"), ("\\boldsymbol{\\rho}", "M"),
+                                ("\\mathbf{Q}", "F")):
+                g = e["glyph"]
+                undotted = g[g.index("{") + 1:-1] if g.startswith(("\\dot{", "\\ddot{")) \
+                    else g
+                if "atoms" in e and undotted == base:
+                    out.append({**e, "glyph": f"[{e['glyph']}]_{{\\mathcal{{{frame}}}}}"})
     return out
+
+
+def _timed_r(table) -> bool:
+    """Whether ``r`` is timed (then ``p = a + Q r`` has more rates than written here)."""
+    return any(e.get("glyph") == "\\dot{\\mathbf{r}}" for e in table or [])
+
+
+#: the glyphs the model entries below are written in
+_MODEL_GLYPHS = ("\\mathbf{Q}", "\\dot{\\mathbf{Q}}", "\\ddot{\\mathbf{Q}}", "\\mathbf{a}",
+                 "\\dot{\\mathbf{a}}", "\\ddot{\\mathbf{a}}", "\\mathbf{r}", "\\mathbf{o}",
+                 "\\mathbf{c}", "\\mathbf{p}", "\\dot{\\mathbf{p}}", "\\mathbf{a}_0",
+                 "\\mathbf{p}_0", "\\dot{\\mathbf{c}}",
+                 "\\dot{\\mathbf{o}}", "\\ddot{\\mathbf{o}}", "\\boldsymbol{\\rho}",
+                 "\\dot{\\boldsymbol{\\rho}}", "\\ddot{\\boldsymbol{\\rho}}")
+_OMEGA_DOT = r"\ddot{\mathbf{Q}}\mathbf{Q}^T + \dot{\mathbf{Q}}\dot{\mathbf{Q}}^T"
+#: (glyph, LaTeX in the table's glyphs, the model's words)
+_MODEL_LATEX = (
+    (r"\mathbf{p}", r"\mathbf{a} + \mathbf{Q}\mathbf{r}", "body point, r constant"),
+    (r"\dot{\mathbf{p}}", r"\dot{\mathbf{a}} + \dot{\mathbf{Q}}\mathbf{r}",
+     "body point's velocity, r constant"),
+    (r"\ddot{\mathbf{p}}", r"\ddot{\mathbf{a}} + \ddot{\mathbf{Q}}\mathbf{r}",
+     "body point's acceleration, r constant"),
+    (r"\mathbf{a}", r"\mathbf{Q}\mathbf{a}_0 + \mathbf{c}", "point A, x = Q x_0 + c"),
+    (r"\mathbf{p}", r"\mathbf{Q}\mathbf{p}_0 + \mathbf{c}", "point P, x = Q x_0 + c"),
+    (r"\dot{\mathbf{a}}", r"\dot{\mathbf{Q}}\mathbf{a}_0 + \dot{\mathbf{c}}",
+     "A's velocity, x = Q x_0 + c"),
+    (r"\dot{\mathbf{p}}", r"\dot{\mathbf{Q}}\mathbf{p}_0 + \dot{\mathbf{c}}",
+     "P's velocity, x = Q x_0 + c"),
+    (r"\mathbf{v}_A", r"\dot{\mathbf{a}}", "A's velocity"),
+    (r"\mathbf{v}_P", r"\dot{\mathbf{p}}", "P's velocity"),
+    (r"\mathbf{a}'", r"\mathbf{Q}\mathbf{a} + \mathbf{c}", "displaced point, x' = Q x + c"),
+    (r"\mathbf{p}'", r"\mathbf{Q}\mathbf{p} + \mathbf{c}", "displaced point, x' = Q x + c"),
+    (r"\dot{\boldsymbol{\Omega}}", _OMEGA_DOT, "rate of Omega = Q-dot Q^T (3.44)"),
+    (r"\dot{\boldsymbol{\omega}}", rf"\text{{vect}}({_OMEGA_DOT})",
+     "rate of omega = vect(Omega) (3.45)"),
+    (r"[\mathbf{p}]_{\mathcal{F}}", r"\mathbf{o} + \mathbf{Q}\boldsymbol{\rho}",
+     "P's position in F: M's origin plus rho's components along M's axes"),
+    (r"[\boldsymbol{\rho}]_{\mathcal{F}}", r"\mathbf{Q}\boldsymbol{\rho}",
+     "rho in F: its M-components along M's axes"),
+    (r"[\dot{\mathbf{p}}]_{\mathcal{F}}", r"\dot{\mathbf{o}} + \dot{\mathbf{Q}}"
+     r"\boldsymbol{\rho} + \mathbf{Q}\dot{\boldsymbol{\rho}}", "rate of [p]_F"),
+    (r"[\ddot{\mathbf{p}}]_{\mathcal{F}}", r"\ddot{\mathbf{o}} + \ddot{\mathbf{Q}}"
+     r"\boldsymbol{\rho} + 2\dot{\mathbf{Q}}\dot{\boldsymbol{\rho}} + \mathbf{Q}"
+     r"\ddot{\boldsymbol{\rho}}", "second rate of [p]_F"),
+    (r"[\boldsymbol{\Omega}]_{\mathcal{F}}", r"\dot{\mathbf{Q}}\mathbf{Q}^T",
+     "Omega = Q-dot Q^T (3.44) in F"),
+    (r"[\dot{\boldsymbol{\Omega}}]_{\mathcal{F}}", _OMEGA_DOT, "rate of Omega in F"),
+)
+#: the rotation of the quaternion (q, q_4) (section 3.4's models), and its rate
+_Q_QUATERNION = (r"\frac{(q_4^2 - \mathbf{q}^T\mathbf{q})\mathbf{1} + 2\mathbf{q}\mathbf{q}^T "
+                 r"+ 2q_4\tilde{\mathbf{q}}}{\mathbf{q}^T\mathbf{q} + q_4^2}")
+_QDOT_QUATERNION = (r"\frac{(2q_4u_4 - 2\mathbf{q}^T\mathbf{u})\mathbf{1} + 2\mathbf{u}"
+                    r"\mathbf{q}^T + 2\mathbf{q}\mathbf{u}^T + 2u_4\tilde{\mathbf{q}} + 2q_4"
+                    r"\tilde{\mathbf{u}} - (2\mathbf{q}^T\mathbf{u} + 2q_4u_4)\mathbf{Q}}"
+                    r"{\mathbf{q}^T\mathbf{q} + q_4^2}")
 
 
 #: the rotation of angle phi about the unit vector e, as printed in chapter 2 (2.49)
@@ -347,15 +453,15 @@ def cause_record(eq) -> dict:
 #: term or factor missing (the corrected form proved carries it), its own book erratum
 PAGE_READINGS = {
     "3.77a": "verified: the reading (nu-dot for v-dot) is the corrected chain, whose three "
-             "members are proved below by cofactors",
+             "members the certificate proves by cofactors",
     "3.94": "verified: the reading (F~-dot, the 3x4 rate, in the upper-left block) is the "
-            "corrected form, proved below by cofactors",
+            "corrected form, which the certificate proves by cofactors",
     "3.97a": "its own erratum: with the tilde and phi restored the printed bracket still "
              "lacks the term (1 - cos phi) E-dot of d/dt[(1 - cos phi) E]; the corrected form "
-             "proved below carries it (a book erratum beside the conversion slip)",
+             "the certificate proves carries it (a book erratum beside the conversion slip)",
     "3.97c": "its own erratum: with the tilde restored the printed bracket still lacks the "
-             "factor 2 of H~ (3.77d); the corrected form proved below, 2 [r0-dot 1 + R-dot, "
-             "-r-dot], carries it (a book erratum beside the conversion slip)",
+             "factor 2 of H~ (3.77d); the corrected form the certificate proves, 2 [r0-dot 1 + "
+             "R-dot, -r-dot], carries it (a book erratum beside the conversion slip)",
 }
 
 
