@@ -74,8 +74,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     double *T)
 {
     int status, still_;
-    int j;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -86,7 +85,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     double rs_v[3];
     double rs_inertia[9];
     double rs_omega[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -104,50 +103,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexp(m, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(v, 3));
+    rs_t1 = -(rigidsym_c_exponent_d(inertia, 9));
+    rs_t2 = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_t1);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -155,49 +120,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexp(m, 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_d(omega, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_t1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -205,49 +137,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexp(m, rs_t1);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(omega, 3));
+    rs_t1 = -(rigidsym_c_exponent_d(&m, 1));
+    rs_t2 = -(rigidsym_c_exponent_d(v, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t1);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t2);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -255,49 +154,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexp(m, 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_t1 = -(rigidsym_c_exponent_d(v, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -549,8 +415,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     float *T)
 {
     int status, still_;
-    int j;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -561,7 +426,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     float rs_v[3];
     float rs_inertia[9];
     float rs_omega[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -579,50 +444,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexpf(m, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(v, 3));
+    rs_t1 = -(rigidsym_c_exponent_f(inertia, 9));
+    rs_t2 = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_t1);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -630,49 +461,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexpf(m, 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_f(omega, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_t1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -680,49 +478,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexpf(m, rs_t1);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(omega, 3));
+    rs_t1 = -(rigidsym_c_exponent_f(&m, 1));
+    rs_t2 = -(rigidsym_c_exponent_f(v, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t1);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t2);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -730,49 +495,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexpf(m, 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_t1 = -(rigidsym_c_exponent_f(v, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1123,8 +855,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     double T_D_omega[3])
 {
     int status, still_;
-    int j;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -1135,7 +866,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     double rs_v[3];
     double rs_inertia[9];
     double rs_omega[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -1153,146 +884,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexp(m, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(v, 3));
+    rs_t1 = -(rigidsym_c_exponent_d(inertia, 9));
+    rs_t2 = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_t1);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0 && ldexp(T_D_m[0], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexp(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0 && ldexp(T_D_v[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexp(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0 && ldexp(T_D_v[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexp(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0 && ldexp(T_D_v[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0 && ldexp(T_D_inertia[0], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0 && ldexp(T_D_inertia[1], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0 && ldexp(T_D_inertia[2], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0 && ldexp(T_D_inertia[3], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0 && ldexp(T_D_inertia[4], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0 && ldexp(T_D_inertia[5], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0 && ldexp(T_D_inertia[6], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0 && ldexp(T_D_inertia[7], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0 && ldexp(T_D_inertia[8], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexp(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0 && ldexp(T_D_omega[0], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexp(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0 && ldexp(T_D_omega[1], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexp(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0 && ldexp(T_D_omega[2], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_v[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[0], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[1], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[2], rs_t1 + rs_t2);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1300,145 +917,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexp(m, 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_d(omega, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_t1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0 && ldexp(T_D_m[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexp(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0 && ldexp(T_D_v[0], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexp(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0 && ldexp(T_D_v[1], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexp(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0 && ldexp(T_D_v[2], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0 && ldexp(T_D_inertia[0], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0 && ldexp(T_D_inertia[1], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0 && ldexp(T_D_inertia[2], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0 && ldexp(T_D_inertia[3], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0 && ldexp(T_D_inertia[4], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0 && ldexp(T_D_inertia[5], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0 && ldexp(T_D_inertia[6], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0 && ldexp(T_D_inertia[7], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0 && ldexp(T_D_inertia[8], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0 && ldexp(T_D_omega[0], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0 && ldexp(T_D_omega[1], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0 && ldexp(T_D_omega[2], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[0], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[1], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[2], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_omega[0], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_omega[1], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_omega[2], 2 * rs_t0 + 2 * rs_t1);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1446,145 +950,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexp(m, rs_t1);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(omega, 3));
+    rs_t1 = -(rigidsym_c_exponent_d(&m, 1));
+    rs_t2 = -(rigidsym_c_exponent_d(v, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t1);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t2);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0 && ldexp(T_D_m[0], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexp(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0 && ldexp(T_D_v[0], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexp(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0 && ldexp(T_D_v[1], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexp(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0 && ldexp(T_D_v[2], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0 && ldexp(T_D_inertia[0], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0 && ldexp(T_D_inertia[1], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0 && ldexp(T_D_inertia[2], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0 && ldexp(T_D_inertia[3], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0 && ldexp(T_D_inertia[4], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0 && ldexp(T_D_inertia[5], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0 && ldexp(T_D_inertia[6], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0 && ldexp(T_D_inertia[7], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0 && ldexp(T_D_inertia[8], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexp(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0 && ldexp(T_D_omega[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexp(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0 && ldexp(T_D_omega[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexp(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0 && ldexp(T_D_omega[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[0], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[1], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_v[2], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&T_D_omega[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1592,145 +983,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(v[j]) > m_ ? fabs(v[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(inertia[j]) > m_ ? fabs(inertia[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexp(m, 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexp(v[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_v, 3)
-        | rigidsym_c_lost_d(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexp(inertia[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_inertia, 9)
-        | rigidsym_c_lost_d(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_t1 = -(rigidsym_c_exponent_d(v, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0 && ldexp(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexp(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0 && ldexp(T_D_m[0], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0 && ldexp(T_D_v[0], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0 && ldexp(T_D_v[1], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0 && ldexp(T_D_v[2], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0 && ldexp(T_D_inertia[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0 && ldexp(T_D_inertia[1], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0 && ldexp(T_D_inertia[2], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0 && ldexp(T_D_inertia[3], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0 && ldexp(T_D_inertia[4], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0 && ldexp(T_D_inertia[5], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0 && ldexp(T_D_inertia[6], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0 && ldexp(T_D_inertia[7], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexp(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0 && ldexp(T_D_inertia[8], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexp(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0 && ldexp(T_D_omega[0], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexp(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0 && ldexp(T_D_omega[1], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexp(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0 && ldexp(T_D_omega[2], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_m[0], 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_v[0], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_v[1], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_v[2], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[0], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[1], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T_D_omega[2], rs_t0 + 2 * rs_t1 + rs_t2);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -2117,8 +1395,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     float T_D_omega[3])
 {
     int status, still_;
-    int j;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -2129,7 +1406,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     float rs_v[3];
     float rs_inertia[9];
     float rs_omega[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -2147,146 +1424,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexpf(m, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(v, 3));
+    rs_t1 = -(rigidsym_c_exponent_f(inertia, 9));
+    rs_t2 = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_t1);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0f && ldexpf(T_D_m[0], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexpf(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0f && ldexpf(T_D_v[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexpf(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0f && ldexpf(T_D_v[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexpf(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0f && ldexpf(T_D_v[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0f && ldexpf(T_D_inertia[0], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0f && ldexpf(T_D_inertia[1], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0f && ldexpf(T_D_inertia[2], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0f && ldexpf(T_D_inertia[3], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0f && ldexpf(T_D_inertia[4], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0f && ldexpf(T_D_inertia[5], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0f && ldexpf(T_D_inertia[6], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0f && ldexpf(T_D_inertia[7], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0f && ldexpf(T_D_inertia[8], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexpf(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0f && ldexpf(T_D_omega[0], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexpf(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0f && ldexpf(T_D_omega[1], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexpf(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0f && ldexpf(T_D_omega[2], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_v[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[0], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[1], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[2], rs_t1 + rs_t2);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -2294,145 +1457,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexpf(m, 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_f(omega, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_t1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0f && ldexpf(T_D_m[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexpf(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0f && ldexpf(T_D_v[0], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexpf(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0f && ldexpf(T_D_v[1], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexpf(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0f && ldexpf(T_D_v[2], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0f && ldexpf(T_D_inertia[0], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0f && ldexpf(T_D_inertia[1], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0f && ldexpf(T_D_inertia[2], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0f && ldexpf(T_D_inertia[3], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0f && ldexpf(T_D_inertia[4], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0f && ldexpf(T_D_inertia[5], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0f && ldexpf(T_D_inertia[6], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0f && ldexpf(T_D_inertia[7], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0f && ldexpf(T_D_inertia[8], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0f && ldexpf(T_D_omega[0], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0f && ldexpf(T_D_omega[1], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0f && ldexpf(T_D_omega[2], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[0], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[1], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[2], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_omega[0], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_omega[1], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_omega[2], 2 * rs_t0 + 2 * rs_t1);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -2440,145 +1490,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    rs_m = ldexpf(m, rs_t1);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(omega, 3));
+    rs_t1 = -(rigidsym_c_exponent_f(&m, 1));
+    rs_t2 = -(rigidsym_c_exponent_f(v, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t1);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t2);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0f && ldexpf(T_D_m[0], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexpf(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0f && ldexpf(T_D_v[0], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexpf(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0f && ldexpf(T_D_v[1], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexpf(m_, -(rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0f && ldexpf(T_D_v[2], rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0f && ldexpf(T_D_inertia[0], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0f && ldexpf(T_D_inertia[1], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0f && ldexpf(T_D_inertia[2], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0f && ldexpf(T_D_inertia[3], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0f && ldexpf(T_D_inertia[4], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0f && ldexpf(T_D_inertia[5], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0f && ldexpf(T_D_inertia[6], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0f && ldexpf(T_D_inertia[7], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0f && ldexpf(T_D_inertia[8], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexpf(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0f && ldexpf(T_D_omega[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexpf(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0f && ldexpf(T_D_omega[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexpf(m_, -(-1 * rs_t0 + rs_t1 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0f && ldexpf(T_D_omega[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[0], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[1], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_v[2], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&T_D_omega[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -2586,145 +1523,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(v[j]) > m_ ? fabsf(v[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(inertia[j]) > m_ ? fabsf(inertia[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    rs_m = ldexpf(m, 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_v[j] = ldexpf(v[j], 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_v, 3)
-        | rigidsym_c_lost_f(v, rs_v, 3);
-    for (j = 0; j < 9; ++j)
-        rs_inertia[j] = ldexpf(inertia[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_inertia, 9)
-        | rigidsym_c_lost_f(inertia, rs_inertia, 9);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_t1 = -(rigidsym_c_exponent_f(v, 3) / 2);
+    rs_t2 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        m_ = T[0];
-        T[0] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T[0] - T[0] == 0.0f && ldexpf(T[0], 2 * rs_t0 + 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_m[0];
-        T_D_m[0] = ldexpf(m_, -(4 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_m[0] - T_D_m[0] == 0.0f && ldexpf(T_D_m[0], 4 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[0];
-        T_D_v[0] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[0] - T_D_v[0] == 0.0f && ldexpf(T_D_v[0], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[1];
-        T_D_v[1] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[1] - T_D_v[1] == 0.0f && ldexpf(T_D_v[1], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_v[2];
-        T_D_v[2] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_v[2] - T_D_v[2] == 0.0f && ldexpf(T_D_v[2], 2 * rs_t0 + 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[0];
-        T_D_inertia[0] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[0] - T_D_inertia[0] == 0.0f && ldexpf(T_D_inertia[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[1];
-        T_D_inertia[1] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[1] - T_D_inertia[1] == 0.0f && ldexpf(T_D_inertia[1], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[2];
-        T_D_inertia[2] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[2] - T_D_inertia[2] == 0.0f && ldexpf(T_D_inertia[2], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[3];
-        T_D_inertia[3] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[3] - T_D_inertia[3] == 0.0f && ldexpf(T_D_inertia[3], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[4];
-        T_D_inertia[4] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[4] - T_D_inertia[4] == 0.0f && ldexpf(T_D_inertia[4], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[5];
-        T_D_inertia[5] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[5] - T_D_inertia[5] == 0.0f && ldexpf(T_D_inertia[5], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[6];
-        T_D_inertia[6] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[6] - T_D_inertia[6] == 0.0f && ldexpf(T_D_inertia[6], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[7];
-        T_D_inertia[7] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[7] - T_D_inertia[7] == 0.0f && ldexpf(T_D_inertia[7], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_inertia[8];
-        T_D_inertia[8] = ldexpf(m_, -(2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_inertia[8] - T_D_inertia[8] == 0.0f && ldexpf(T_D_inertia[8], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[0];
-        T_D_omega[0] = ldexpf(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[0] - T_D_omega[0] == 0.0f && ldexpf(T_D_omega[0], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[1];
-        T_D_omega[1] = ldexpf(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[1] - T_D_omega[1] == 0.0f && ldexpf(T_D_omega[1], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = T_D_omega[2];
-        T_D_omega[2] = ldexpf(m_, -(rs_t0 + 2 * rs_t1 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (T_D_omega[2] - T_D_omega[2] == 0.0f && ldexpf(T_D_omega[2], rs_t0 + 2 * rs_t1 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_m[0], 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_v[0], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_v[1], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_v[2], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[0], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[1], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T_D_omega[2], rs_t0 + 2 * rs_t1 + rs_t2);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -93,8 +93,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
     double w[6])
 {
     int status, still_;
-    int j;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -106,7 +105,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
     double rs_omega[3];
     double rs_omega_dot[3];
     double rs_c_ddot[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -126,90 +125,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(I_C[j]) > m_ ? fabs(I_C[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega_dot[j]) > m_ ? fabs(omega_dot[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(c_ddot[j]) > m_ ? fabs(c_ddot[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t3 = -(rs_e / 2);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexp(I_C[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_I_C, 9)
-        | rigidsym_c_lost_d(I_C, rs_I_C, 9);
-    rs_m = ldexp(m, 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexp(omega_dot[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega_dot, 3)
-        | rigidsym_c_lost_d(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexp(c_ddot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_d(rs_c_ddot, 3)
-        | rigidsym_c_lost_d(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(I_C, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_t2 = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
+    rs_t3 = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        m_ = w[0];
-        w[0] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0 && ldexp(w[0], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0 && ldexp(w[1], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0 && ldexp(w[2], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexp(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0 && ldexp(w[3], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexp(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0 && ldexp(w[4], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexp(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0 && ldexp(w[5], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&w[0], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w[1], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w[2], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w[3], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[4], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[5], 2 * rs_t1 + 2 * rs_t3);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -217,90 +149,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(c_ddot[j]) > m_ ? fabs(c_ddot[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(I_C[j]) > m_ ? fabs(I_C[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t3 = -(rs_e);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexp(I_C[j], rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_I_C, 9)
-        | rigidsym_c_lost_d(I_C, rs_I_C, 9);
-    rs_m = ldexp(m, rs_t2);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t3);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexp(omega_dot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_d(rs_omega_dot, 3)
-        | rigidsym_c_lost_d(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexp(c_ddot[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_c_ddot, 3)
-        | rigidsym_c_lost_d(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(c_ddot, 3));
+    rs_t1 = -(rigidsym_c_exponent_d(I_C, 9));
+    rs_t2 = -(rigidsym_c_exponent_d(&m, 1));
+    rs_t3 = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_t1);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t2);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t3);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        m_ = w[0];
-        w[0] = ldexp(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0 && ldexp(w[0], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexp(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0 && ldexp(w[1], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexp(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0 && ldexp(w[2], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexp(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0 && ldexp(w[3], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexp(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0 && ldexp(w[4], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexp(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0 && ldexp(w[5], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&w[0], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[1], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[2], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[3], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w[4], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w[5], rs_t0 + rs_t2);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -611,8 +476,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
     float w[6])
 {
     int status, still_;
-    int j;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -624,7 +488,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
     float rs_omega[3];
     float rs_omega_dot[3];
     float rs_c_ddot[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -644,90 +508,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(I_C[j]) > m_ ? fabsf(I_C[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega_dot[j]) > m_ ? fabsf(omega_dot[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(c_ddot[j]) > m_ ? fabsf(c_ddot[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t3 = -(rs_e / 2);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexpf(I_C[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_I_C, 9)
-        | rigidsym_c_lost_f(I_C, rs_I_C, 9);
-    rs_m = ldexpf(m, 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexpf(omega_dot[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega_dot, 3)
-        | rigidsym_c_lost_f(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexpf(c_ddot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_f(rs_c_ddot, 3)
-        | rigidsym_c_lost_f(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(I_C, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_t2 = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
+    rs_t3 = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        m_ = w[0];
-        w[0] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0f && ldexpf(w[0], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0f && ldexpf(w[1], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0f && ldexpf(w[2], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexpf(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0f && ldexpf(w[3], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexpf(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0f && ldexpf(w[4], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexpf(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0f && ldexpf(w[5], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&w[0], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w[1], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w[2], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w[3], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[4], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[5], 2 * rs_t1 + 2 * rs_t3);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -735,90 +532,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(c_ddot[j]) > m_ ? fabsf(c_ddot[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(I_C[j]) > m_ ? fabsf(I_C[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t3 = -(rs_e);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexpf(I_C[j], rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_I_C, 9)
-        | rigidsym_c_lost_f(I_C, rs_I_C, 9);
-    rs_m = ldexpf(m, rs_t2);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t3);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexpf(omega_dot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_f(rs_omega_dot, 3)
-        | rigidsym_c_lost_f(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexpf(c_ddot[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_c_ddot, 3)
-        | rigidsym_c_lost_f(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(c_ddot, 3));
+    rs_t1 = -(rigidsym_c_exponent_f(I_C, 9));
+    rs_t2 = -(rigidsym_c_exponent_f(&m, 1));
+    rs_t3 = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_t1);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t2);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t3);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        m_ = w[0];
-        w[0] = ldexpf(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0f && ldexpf(w[0], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexpf(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0f && ldexpf(w[1], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexpf(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0f && ldexpf(w[2], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexpf(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0f && ldexpf(w[3], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexpf(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0f && ldexpf(w[4], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexpf(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0f && ldexpf(w[5], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&w[0], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[1], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[2], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[3], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w[4], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w[5], rs_t0 + rs_t2);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1445,8 +1175,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
     double w_D_c_ddot[18])
 {
     int status, still_;
-    int j;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -1458,7 +1187,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
     double rs_omega[3];
     double rs_omega_dot[3];
     double rs_c_ddot[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -1478,396 +1207,74 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(I_C[j]) > m_ ? fabs(I_C[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega_dot[j]) > m_ ? fabs(omega_dot[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(c_ddot[j]) > m_ ? fabs(c_ddot[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t3 = -(rs_e / 2);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexp(I_C[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_I_C, 9)
-        | rigidsym_c_lost_d(I_C, rs_I_C, 9);
-    rs_m = ldexp(m, 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexp(omega_dot[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_d(rs_omega_dot, 3)
-        | rigidsym_c_lost_d(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexp(c_ddot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_d(rs_c_ddot, 3)
-        | rigidsym_c_lost_d(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(I_C, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_t2 = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
+    rs_t3 = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        m_ = w[0];
-        w[0] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0 && ldexp(w[0], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0 && ldexp(w[1], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexp(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0 && ldexp(w[2], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexp(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0 && ldexp(w[3], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexp(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0 && ldexp(w[4], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexp(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0 && ldexp(w[5], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[0];
-        w_D_I_C[0] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[0] - w_D_I_C[0] == 0.0 && ldexp(w_D_I_C[0], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[1];
-        w_D_I_C[1] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[1] - w_D_I_C[1] == 0.0 && ldexp(w_D_I_C[1], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[2];
-        w_D_I_C[2] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[2] - w_D_I_C[2] == 0.0 && ldexp(w_D_I_C[2], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[3];
-        w_D_I_C[3] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[3] - w_D_I_C[3] == 0.0 && ldexp(w_D_I_C[3], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[4];
-        w_D_I_C[4] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[4] - w_D_I_C[4] == 0.0 && ldexp(w_D_I_C[4], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[5];
-        w_D_I_C[5] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[5] - w_D_I_C[5] == 0.0 && ldexp(w_D_I_C[5], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[6];
-        w_D_I_C[6] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[6] - w_D_I_C[6] == 0.0 && ldexp(w_D_I_C[6], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[7];
-        w_D_I_C[7] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[7] - w_D_I_C[7] == 0.0 && ldexp(w_D_I_C[7], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[8];
-        w_D_I_C[8] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[8] - w_D_I_C[8] == 0.0 && ldexp(w_D_I_C[8], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[9];
-        w_D_I_C[9] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[9] - w_D_I_C[9] == 0.0 && ldexp(w_D_I_C[9], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[10];
-        w_D_I_C[10] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[10] - w_D_I_C[10] == 0.0 && ldexp(w_D_I_C[10], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[11];
-        w_D_I_C[11] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[11] - w_D_I_C[11] == 0.0 && ldexp(w_D_I_C[11], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[12];
-        w_D_I_C[12] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[12] - w_D_I_C[12] == 0.0 && ldexp(w_D_I_C[12], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[13];
-        w_D_I_C[13] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[13] - w_D_I_C[13] == 0.0 && ldexp(w_D_I_C[13], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[14];
-        w_D_I_C[14] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[14] - w_D_I_C[14] == 0.0 && ldexp(w_D_I_C[14], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[15];
-        w_D_I_C[15] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[15] - w_D_I_C[15] == 0.0 && ldexp(w_D_I_C[15], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[16];
-        w_D_I_C[16] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[16] - w_D_I_C[16] == 0.0 && ldexp(w_D_I_C[16], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[17];
-        w_D_I_C[17] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[17] - w_D_I_C[17] == 0.0 && ldexp(w_D_I_C[17], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[18];
-        w_D_I_C[18] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[18] - w_D_I_C[18] == 0.0 && ldexp(w_D_I_C[18], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[19];
-        w_D_I_C[19] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[19] - w_D_I_C[19] == 0.0 && ldexp(w_D_I_C[19], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[20];
-        w_D_I_C[20] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[20] - w_D_I_C[20] == 0.0 && ldexp(w_D_I_C[20], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[21];
-        w_D_I_C[21] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[21] - w_D_I_C[21] == 0.0 && ldexp(w_D_I_C[21], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[22];
-        w_D_I_C[22] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[22] - w_D_I_C[22] == 0.0 && ldexp(w_D_I_C[22], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[23];
-        w_D_I_C[23] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[23] - w_D_I_C[23] == 0.0 && ldexp(w_D_I_C[23], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[24];
-        w_D_I_C[24] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[24] - w_D_I_C[24] == 0.0 && ldexp(w_D_I_C[24], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[25];
-        w_D_I_C[25] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[25] - w_D_I_C[25] == 0.0 && ldexp(w_D_I_C[25], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[26];
-        w_D_I_C[26] = ldexp(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[26] - w_D_I_C[26] == 0.0 && ldexp(w_D_I_C[26], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[3];
-        w_D_m[3] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[3] - w_D_m[3] == 0.0 && ldexp(w_D_m[3], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[4];
-        w_D_m[4] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[4] - w_D_m[4] == 0.0 && ldexp(w_D_m[4], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[5];
-        w_D_m[5] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[5] - w_D_m[5] == 0.0 && ldexp(w_D_m[5], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[0];
-        w_D_omega[0] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[0] - w_D_omega[0] == 0.0 && ldexp(w_D_omega[0], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[1];
-        w_D_omega[1] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[1] - w_D_omega[1] == 0.0 && ldexp(w_D_omega[1], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[2];
-        w_D_omega[2] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[2] - w_D_omega[2] == 0.0 && ldexp(w_D_omega[2], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[3];
-        w_D_omega[3] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[3] - w_D_omega[3] == 0.0 && ldexp(w_D_omega[3], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[4];
-        w_D_omega[4] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[4] - w_D_omega[4] == 0.0 && ldexp(w_D_omega[4], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[5];
-        w_D_omega[5] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[5] - w_D_omega[5] == 0.0 && ldexp(w_D_omega[5], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[6];
-        w_D_omega[6] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[6] - w_D_omega[6] == 0.0 && ldexp(w_D_omega[6], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[7];
-        w_D_omega[7] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[7] - w_D_omega[7] == 0.0 && ldexp(w_D_omega[7], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[8];
-        w_D_omega[8] = ldexp(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[8] - w_D_omega[8] == 0.0 && ldexp(w_D_omega[8], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[0];
-        w_D_omega_dot[0] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[0] - w_D_omega_dot[0] == 0.0 && ldexp(w_D_omega_dot[0], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[1];
-        w_D_omega_dot[1] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[1] - w_D_omega_dot[1] == 0.0 && ldexp(w_D_omega_dot[1], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[2];
-        w_D_omega_dot[2] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[2] - w_D_omega_dot[2] == 0.0 && ldexp(w_D_omega_dot[2], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[3];
-        w_D_omega_dot[3] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[3] - w_D_omega_dot[3] == 0.0 && ldexp(w_D_omega_dot[3], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[4];
-        w_D_omega_dot[4] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[4] - w_D_omega_dot[4] == 0.0 && ldexp(w_D_omega_dot[4], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[5];
-        w_D_omega_dot[5] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[5] - w_D_omega_dot[5] == 0.0 && ldexp(w_D_omega_dot[5], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[6];
-        w_D_omega_dot[6] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[6] - w_D_omega_dot[6] == 0.0 && ldexp(w_D_omega_dot[6], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[7];
-        w_D_omega_dot[7] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[7] - w_D_omega_dot[7] == 0.0 && ldexp(w_D_omega_dot[7], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[8];
-        w_D_omega_dot[8] = ldexp(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[8] - w_D_omega_dot[8] == 0.0 && ldexp(w_D_omega_dot[8], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[9];
-        w_D_c_ddot[9] = ldexp(m_, -(2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[9] - w_D_c_ddot[9] == 0.0 && ldexp(w_D_c_ddot[9], 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[13];
-        w_D_c_ddot[13] = ldexp(m_, -(2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[13] - w_D_c_ddot[13] == 0.0 && ldexp(w_D_c_ddot[13], 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[17];
-        w_D_c_ddot[17] = ldexp(m_, -(2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[17] - w_D_c_ddot[17] == 0.0 && ldexp(w_D_c_ddot[17], 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&w[0], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w[1], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w[2], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w[3], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[4], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[5], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_t2);
+        status |= rigidsym_c_back_d(&w_D_m[3], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_m[4], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_m[5], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[0], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[1], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[2], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[3], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[4], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[5], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[6], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[7], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega[8], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[0], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[1], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[2], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[3], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[4], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[5], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[6], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[7], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[8], 2 * rs_t0);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[9], 2 * rs_t1);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[13], 2 * rs_t1);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[17], 2 * rs_t1);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1875,396 +1282,74 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(c_ddot[j]) > m_ ? fabs(c_ddot[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabs(I_C[j]) > m_ ? fabs(I_C[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(m);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabs(omega[j]) > m_ ? fabs(omega[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t3 = -(rs_e);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexp(I_C[j], rs_t1);
-    still_ |= rigidsym_c_extreme_d(rs_I_C, 9)
-        | rigidsym_c_lost_d(I_C, rs_I_C, 9);
-    rs_m = ldexp(m, rs_t2);
-    still_ |= rigidsym_c_extreme_d(&rs_m, 1)
-        | rigidsym_c_lost_d(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexp(omega[j], rs_t3);
-    still_ |= rigidsym_c_extreme_d(rs_omega, 3)
-        | rigidsym_c_lost_d(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexp(omega_dot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_d(rs_omega_dot, 3)
-        | rigidsym_c_lost_d(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexp(c_ddot[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_c_ddot, 3)
-        | rigidsym_c_lost_d(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_d(c_ddot, 3));
+    rs_t1 = -(rigidsym_c_exponent_d(I_C, 9));
+    rs_t2 = -(rigidsym_c_exponent_d(&m, 1));
+    rs_t3 = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_t1);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t2);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t3);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        m_ = w[0];
-        w[0] = ldexp(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0 && ldexp(w[0], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexp(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0 && ldexp(w[1], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexp(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0 && ldexp(w[2], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexp(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0 && ldexp(w[3], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexp(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0 && ldexp(w[4], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexp(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0 && ldexp(w[5], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[0];
-        w_D_I_C[0] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[0] - w_D_I_C[0] == 0.0 && ldexp(w_D_I_C[0], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[1];
-        w_D_I_C[1] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[1] - w_D_I_C[1] == 0.0 && ldexp(w_D_I_C[1], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[2];
-        w_D_I_C[2] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[2] - w_D_I_C[2] == 0.0 && ldexp(w_D_I_C[2], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[3];
-        w_D_I_C[3] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[3] - w_D_I_C[3] == 0.0 && ldexp(w_D_I_C[3], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[4];
-        w_D_I_C[4] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[4] - w_D_I_C[4] == 0.0 && ldexp(w_D_I_C[4], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[5];
-        w_D_I_C[5] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[5] - w_D_I_C[5] == 0.0 && ldexp(w_D_I_C[5], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[6];
-        w_D_I_C[6] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[6] - w_D_I_C[6] == 0.0 && ldexp(w_D_I_C[6], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[7];
-        w_D_I_C[7] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[7] - w_D_I_C[7] == 0.0 && ldexp(w_D_I_C[7], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[8];
-        w_D_I_C[8] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[8] - w_D_I_C[8] == 0.0 && ldexp(w_D_I_C[8], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[9];
-        w_D_I_C[9] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[9] - w_D_I_C[9] == 0.0 && ldexp(w_D_I_C[9], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[10];
-        w_D_I_C[10] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[10] - w_D_I_C[10] == 0.0 && ldexp(w_D_I_C[10], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[11];
-        w_D_I_C[11] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[11] - w_D_I_C[11] == 0.0 && ldexp(w_D_I_C[11], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[12];
-        w_D_I_C[12] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[12] - w_D_I_C[12] == 0.0 && ldexp(w_D_I_C[12], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[13];
-        w_D_I_C[13] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[13] - w_D_I_C[13] == 0.0 && ldexp(w_D_I_C[13], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[14];
-        w_D_I_C[14] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[14] - w_D_I_C[14] == 0.0 && ldexp(w_D_I_C[14], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[15];
-        w_D_I_C[15] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[15] - w_D_I_C[15] == 0.0 && ldexp(w_D_I_C[15], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[16];
-        w_D_I_C[16] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[16] - w_D_I_C[16] == 0.0 && ldexp(w_D_I_C[16], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[17];
-        w_D_I_C[17] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[17] - w_D_I_C[17] == 0.0 && ldexp(w_D_I_C[17], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[18];
-        w_D_I_C[18] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[18] - w_D_I_C[18] == 0.0 && ldexp(w_D_I_C[18], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[19];
-        w_D_I_C[19] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[19] - w_D_I_C[19] == 0.0 && ldexp(w_D_I_C[19], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[20];
-        w_D_I_C[20] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[20] - w_D_I_C[20] == 0.0 && ldexp(w_D_I_C[20], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[21];
-        w_D_I_C[21] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[21] - w_D_I_C[21] == 0.0 && ldexp(w_D_I_C[21], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[22];
-        w_D_I_C[22] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[22] - w_D_I_C[22] == 0.0 && ldexp(w_D_I_C[22], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[23];
-        w_D_I_C[23] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[23] - w_D_I_C[23] == 0.0 && ldexp(w_D_I_C[23], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[24];
-        w_D_I_C[24] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[24] - w_D_I_C[24] == 0.0 && ldexp(w_D_I_C[24], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[25];
-        w_D_I_C[25] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[25] - w_D_I_C[25] == 0.0 && ldexp(w_D_I_C[25], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[26];
-        w_D_I_C[26] = ldexp(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[26] - w_D_I_C[26] == 0.0 && ldexp(w_D_I_C[26], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[3];
-        w_D_m[3] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[3] - w_D_m[3] == 0.0 && ldexp(w_D_m[3], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[4];
-        w_D_m[4] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[4] - w_D_m[4] == 0.0 && ldexp(w_D_m[4], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[5];
-        w_D_m[5] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[5] - w_D_m[5] == 0.0 && ldexp(w_D_m[5], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[0];
-        w_D_omega[0] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[0] - w_D_omega[0] == 0.0 && ldexp(w_D_omega[0], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[1];
-        w_D_omega[1] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[1] - w_D_omega[1] == 0.0 && ldexp(w_D_omega[1], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[2];
-        w_D_omega[2] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[2] - w_D_omega[2] == 0.0 && ldexp(w_D_omega[2], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[3];
-        w_D_omega[3] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[3] - w_D_omega[3] == 0.0 && ldexp(w_D_omega[3], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[4];
-        w_D_omega[4] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[4] - w_D_omega[4] == 0.0 && ldexp(w_D_omega[4], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[5];
-        w_D_omega[5] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[5] - w_D_omega[5] == 0.0 && ldexp(w_D_omega[5], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[6];
-        w_D_omega[6] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[6] - w_D_omega[6] == 0.0 && ldexp(w_D_omega[6], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[7];
-        w_D_omega[7] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[7] - w_D_omega[7] == 0.0 && ldexp(w_D_omega[7], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[8];
-        w_D_omega[8] = ldexp(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[8] - w_D_omega[8] == 0.0 && ldexp(w_D_omega[8], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[0];
-        w_D_omega_dot[0] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[0] - w_D_omega_dot[0] == 0.0 && ldexp(w_D_omega_dot[0], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[1];
-        w_D_omega_dot[1] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[1] - w_D_omega_dot[1] == 0.0 && ldexp(w_D_omega_dot[1], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[2];
-        w_D_omega_dot[2] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[2] - w_D_omega_dot[2] == 0.0 && ldexp(w_D_omega_dot[2], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[3];
-        w_D_omega_dot[3] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[3] - w_D_omega_dot[3] == 0.0 && ldexp(w_D_omega_dot[3], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[4];
-        w_D_omega_dot[4] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[4] - w_D_omega_dot[4] == 0.0 && ldexp(w_D_omega_dot[4], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[5];
-        w_D_omega_dot[5] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[5] - w_D_omega_dot[5] == 0.0 && ldexp(w_D_omega_dot[5], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[6];
-        w_D_omega_dot[6] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[6] - w_D_omega_dot[6] == 0.0 && ldexp(w_D_omega_dot[6], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[7];
-        w_D_omega_dot[7] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[7] - w_D_omega_dot[7] == 0.0 && ldexp(w_D_omega_dot[7], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[8];
-        w_D_omega_dot[8] = ldexp(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[8] - w_D_omega_dot[8] == 0.0 && ldexp(w_D_omega_dot[8], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[9];
-        w_D_c_ddot[9] = ldexp(m_, -(rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[9] - w_D_c_ddot[9] == 0.0 && ldexp(w_D_c_ddot[9], rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[13];
-        w_D_c_ddot[13] = ldexp(m_, -(rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[13] - w_D_c_ddot[13] == 0.0 && ldexp(w_D_c_ddot[13], rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[17];
-        w_D_c_ddot[17] = ldexp(m_, -(rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[17] - w_D_c_ddot[17] == 0.0 && ldexp(w_D_c_ddot[17], rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&w[0], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[1], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[2], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[3], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w[4], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w[5], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w_D_m[3], rs_t0);
+        status |= rigidsym_c_back_d(&w_D_m[4], rs_t0);
+        status |= rigidsym_c_back_d(&w_D_m[5], rs_t0);
+        status |= rigidsym_c_back_d(&w_D_omega[0], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[1], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[2], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[3], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[4], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[5], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[6], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[7], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega[8], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[0], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[1], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[2], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[3], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[4], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[5], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[6], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[7], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[8], rs_t1);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[9], rs_t2);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[13], rs_t2);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[17], rs_t2);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -3103,8 +2188,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
     float w_D_c_ddot[18])
 {
     int status, still_;
-    int j;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -3116,7 +2200,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
     float rs_omega[3];
     float rs_omega_dot[3];
     float rs_c_ddot[3];
-    int rs_e = 0, rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
+    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -3136,396 +2220,74 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(I_C[j]) > m_ ? fabsf(I_C[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega_dot[j]) > m_ ? fabsf(omega_dot[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e / 2);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(c_ddot[j]) > m_ ? fabsf(c_ddot[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t3 = -(rs_e / 2);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexpf(I_C[j], 2 * rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_I_C, 9)
-        | rigidsym_c_lost_f(I_C, rs_I_C, 9);
-    rs_m = ldexpf(m, 2 * rs_t1);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexpf(omega_dot[j], 2 * rs_t2);
-    still_ |= rigidsym_c_extreme_f(rs_omega_dot, 3)
-        | rigidsym_c_lost_f(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexpf(c_ddot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_f(rs_c_ddot, 3)
-        | rigidsym_c_lost_f(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(I_C, 9) / 2);
+    rs_t1 = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_t2 = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
+    rs_t3 = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_t0);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t1);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        m_ = w[0];
-        w[0] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0f && ldexpf(w[0], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0f && ldexpf(w[1], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexpf(m_, -(2 * rs_t0 + 2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0f && ldexpf(w[2], 2 * rs_t0 + 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexpf(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0f && ldexpf(w[3], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexpf(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0f && ldexpf(w[4], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexpf(m_, -(2 * rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0f && ldexpf(w[5], 2 * rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[0];
-        w_D_I_C[0] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[0] - w_D_I_C[0] == 0.0f && ldexpf(w_D_I_C[0], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[1];
-        w_D_I_C[1] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[1] - w_D_I_C[1] == 0.0f && ldexpf(w_D_I_C[1], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[2];
-        w_D_I_C[2] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[2] - w_D_I_C[2] == 0.0f && ldexpf(w_D_I_C[2], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[3];
-        w_D_I_C[3] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[3] - w_D_I_C[3] == 0.0f && ldexpf(w_D_I_C[3], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[4];
-        w_D_I_C[4] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[4] - w_D_I_C[4] == 0.0f && ldexpf(w_D_I_C[4], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[5];
-        w_D_I_C[5] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[5] - w_D_I_C[5] == 0.0f && ldexpf(w_D_I_C[5], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[6];
-        w_D_I_C[6] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[6] - w_D_I_C[6] == 0.0f && ldexpf(w_D_I_C[6], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[7];
-        w_D_I_C[7] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[7] - w_D_I_C[7] == 0.0f && ldexpf(w_D_I_C[7], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[8];
-        w_D_I_C[8] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[8] - w_D_I_C[8] == 0.0f && ldexpf(w_D_I_C[8], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[9];
-        w_D_I_C[9] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[9] - w_D_I_C[9] == 0.0f && ldexpf(w_D_I_C[9], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[10];
-        w_D_I_C[10] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[10] - w_D_I_C[10] == 0.0f && ldexpf(w_D_I_C[10], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[11];
-        w_D_I_C[11] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[11] - w_D_I_C[11] == 0.0f && ldexpf(w_D_I_C[11], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[12];
-        w_D_I_C[12] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[12] - w_D_I_C[12] == 0.0f && ldexpf(w_D_I_C[12], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[13];
-        w_D_I_C[13] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[13] - w_D_I_C[13] == 0.0f && ldexpf(w_D_I_C[13], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[14];
-        w_D_I_C[14] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[14] - w_D_I_C[14] == 0.0f && ldexpf(w_D_I_C[14], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[15];
-        w_D_I_C[15] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[15] - w_D_I_C[15] == 0.0f && ldexpf(w_D_I_C[15], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[16];
-        w_D_I_C[16] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[16] - w_D_I_C[16] == 0.0f && ldexpf(w_D_I_C[16], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[17];
-        w_D_I_C[17] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[17] - w_D_I_C[17] == 0.0f && ldexpf(w_D_I_C[17], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[18];
-        w_D_I_C[18] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[18] - w_D_I_C[18] == 0.0f && ldexpf(w_D_I_C[18], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[19];
-        w_D_I_C[19] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[19] - w_D_I_C[19] == 0.0f && ldexpf(w_D_I_C[19], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[20];
-        w_D_I_C[20] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[20] - w_D_I_C[20] == 0.0f && ldexpf(w_D_I_C[20], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[21];
-        w_D_I_C[21] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[21] - w_D_I_C[21] == 0.0f && ldexpf(w_D_I_C[21], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[22];
-        w_D_I_C[22] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[22] - w_D_I_C[22] == 0.0f && ldexpf(w_D_I_C[22], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[23];
-        w_D_I_C[23] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[23] - w_D_I_C[23] == 0.0f && ldexpf(w_D_I_C[23], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[24];
-        w_D_I_C[24] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[24] - w_D_I_C[24] == 0.0f && ldexpf(w_D_I_C[24], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[25];
-        w_D_I_C[25] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[25] - w_D_I_C[25] == 0.0f && ldexpf(w_D_I_C[25], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[26];
-        w_D_I_C[26] = ldexpf(m_, -(2 * rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[26] - w_D_I_C[26] == 0.0f && ldexpf(w_D_I_C[26], 2 * rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[3];
-        w_D_m[3] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[3] - w_D_m[3] == 0.0f && ldexpf(w_D_m[3], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[4];
-        w_D_m[4] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[4] - w_D_m[4] == 0.0f && ldexpf(w_D_m[4], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[5];
-        w_D_m[5] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[5] - w_D_m[5] == 0.0f && ldexpf(w_D_m[5], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[0];
-        w_D_omega[0] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[0] - w_D_omega[0] == 0.0f && ldexpf(w_D_omega[0], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[1];
-        w_D_omega[1] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[1] - w_D_omega[1] == 0.0f && ldexpf(w_D_omega[1], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[2];
-        w_D_omega[2] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[2] - w_D_omega[2] == 0.0f && ldexpf(w_D_omega[2], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[3];
-        w_D_omega[3] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[3] - w_D_omega[3] == 0.0f && ldexpf(w_D_omega[3], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[4];
-        w_D_omega[4] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[4] - w_D_omega[4] == 0.0f && ldexpf(w_D_omega[4], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[5];
-        w_D_omega[5] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[5] - w_D_omega[5] == 0.0f && ldexpf(w_D_omega[5], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[6];
-        w_D_omega[6] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[6] - w_D_omega[6] == 0.0f && ldexpf(w_D_omega[6], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[7];
-        w_D_omega[7] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[7] - w_D_omega[7] == 0.0f && ldexpf(w_D_omega[7], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[8];
-        w_D_omega[8] = ldexpf(m_, -(2 * rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[8] - w_D_omega[8] == 0.0f && ldexpf(w_D_omega[8], 2 * rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[0];
-        w_D_omega_dot[0] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[0] - w_D_omega_dot[0] == 0.0f && ldexpf(w_D_omega_dot[0], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[1];
-        w_D_omega_dot[1] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[1] - w_D_omega_dot[1] == 0.0f && ldexpf(w_D_omega_dot[1], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[2];
-        w_D_omega_dot[2] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[2] - w_D_omega_dot[2] == 0.0f && ldexpf(w_D_omega_dot[2], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[3];
-        w_D_omega_dot[3] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[3] - w_D_omega_dot[3] == 0.0f && ldexpf(w_D_omega_dot[3], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[4];
-        w_D_omega_dot[4] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[4] - w_D_omega_dot[4] == 0.0f && ldexpf(w_D_omega_dot[4], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[5];
-        w_D_omega_dot[5] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[5] - w_D_omega_dot[5] == 0.0f && ldexpf(w_D_omega_dot[5], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[6];
-        w_D_omega_dot[6] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[6] - w_D_omega_dot[6] == 0.0f && ldexpf(w_D_omega_dot[6], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[7];
-        w_D_omega_dot[7] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[7] - w_D_omega_dot[7] == 0.0f && ldexpf(w_D_omega_dot[7], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[8];
-        w_D_omega_dot[8] = ldexpf(m_, -(2 * rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[8] - w_D_omega_dot[8] == 0.0f && ldexpf(w_D_omega_dot[8], 2 * rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[9];
-        w_D_c_ddot[9] = ldexpf(m_, -(2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[9] - w_D_c_ddot[9] == 0.0f && ldexpf(w_D_c_ddot[9], 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[13];
-        w_D_c_ddot[13] = ldexpf(m_, -(2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[13] - w_D_c_ddot[13] == 0.0f && ldexpf(w_D_c_ddot[13], 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[17];
-        w_D_c_ddot[17] = ldexpf(m_, -(2 * rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[17] - w_D_c_ddot[17] == 0.0f && ldexpf(w_D_c_ddot[17], 2 * rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&w[0], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w[1], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w[2], 2 * rs_t0 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w[3], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[4], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[5], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_t2);
+        status |= rigidsym_c_back_f(&w_D_m[3], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_m[4], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_m[5], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[0], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[1], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[2], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[3], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[4], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[5], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[6], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[7], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega[8], 2 * rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[0], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[1], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[2], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[3], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[4], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[5], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[6], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[7], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[8], 2 * rs_t0);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[9], 2 * rs_t1);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[13], 2 * rs_t1);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[17], 2 * rs_t1);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -3533,396 +2295,74 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(c_ddot[j]) > m_ ? fabsf(c_ddot[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 9; ++j)
-        m_ = fabsf(I_C[j]) > m_ ? fabsf(I_C[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t1 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(m);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t2 = -(rs_e);
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 3; ++j)
-        m_ = fabsf(omega[j]) > m_ ? fabsf(omega[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t3 = -(rs_e);
-    for (j = 0; j < 9; ++j)
-        rs_I_C[j] = ldexpf(I_C[j], rs_t1);
-    still_ |= rigidsym_c_extreme_f(rs_I_C, 9)
-        | rigidsym_c_lost_f(I_C, rs_I_C, 9);
-    rs_m = ldexpf(m, rs_t2);
-    still_ |= rigidsym_c_extreme_f(&rs_m, 1)
-        | rigidsym_c_lost_f(&m, &rs_m, 1);
-    for (j = 0; j < 3; ++j)
-        rs_omega[j] = ldexpf(omega[j], rs_t3);
-    still_ |= rigidsym_c_extreme_f(rs_omega, 3)
-        | rigidsym_c_lost_f(omega, rs_omega, 3);
-    for (j = 0; j < 3; ++j)
-        rs_omega_dot[j] = ldexpf(omega_dot[j], 2 * rs_t3);
-    still_ |= rigidsym_c_extreme_f(rs_omega_dot, 3)
-        | rigidsym_c_lost_f(omega_dot, rs_omega_dot, 3);
-    for (j = 0; j < 3; ++j)
-        rs_c_ddot[j] = ldexpf(c_ddot[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_c_ddot, 3)
-        | rigidsym_c_lost_f(c_ddot, rs_c_ddot, 3);
+    rs_t0 = -(rigidsym_c_exponent_f(c_ddot, 3));
+    rs_t1 = -(rigidsym_c_exponent_f(I_C, 9));
+    rs_t2 = -(rigidsym_c_exponent_f(&m, 1));
+    rs_t3 = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_t1);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t2);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t3);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_t0);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        m_ = w[0];
-        w[0] = ldexpf(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[0] - w[0] == 0.0f && ldexpf(w[0], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[1];
-        w[1] = ldexpf(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[1] - w[1] == 0.0f && ldexpf(w[1], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[2];
-        w[2] = ldexpf(m_, -(rs_t1 + 2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[2] - w[2] == 0.0f && ldexpf(w[2], rs_t1 + 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[3];
-        w[3] = ldexpf(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[3] - w[3] == 0.0f && ldexpf(w[3], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[4];
-        w[4] = ldexpf(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[4] - w[4] == 0.0f && ldexpf(w[4], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w[5];
-        w[5] = ldexpf(m_, -(rs_t0 + rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w[5] - w[5] == 0.0f && ldexpf(w[5], rs_t0 + rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[0];
-        w_D_I_C[0] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[0] - w_D_I_C[0] == 0.0f && ldexpf(w_D_I_C[0], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[1];
-        w_D_I_C[1] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[1] - w_D_I_C[1] == 0.0f && ldexpf(w_D_I_C[1], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[2];
-        w_D_I_C[2] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[2] - w_D_I_C[2] == 0.0f && ldexpf(w_D_I_C[2], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[3];
-        w_D_I_C[3] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[3] - w_D_I_C[3] == 0.0f && ldexpf(w_D_I_C[3], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[4];
-        w_D_I_C[4] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[4] - w_D_I_C[4] == 0.0f && ldexpf(w_D_I_C[4], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[5];
-        w_D_I_C[5] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[5] - w_D_I_C[5] == 0.0f && ldexpf(w_D_I_C[5], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[6];
-        w_D_I_C[6] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[6] - w_D_I_C[6] == 0.0f && ldexpf(w_D_I_C[6], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[7];
-        w_D_I_C[7] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[7] - w_D_I_C[7] == 0.0f && ldexpf(w_D_I_C[7], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[8];
-        w_D_I_C[8] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[8] - w_D_I_C[8] == 0.0f && ldexpf(w_D_I_C[8], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[9];
-        w_D_I_C[9] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[9] - w_D_I_C[9] == 0.0f && ldexpf(w_D_I_C[9], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[10];
-        w_D_I_C[10] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[10] - w_D_I_C[10] == 0.0f && ldexpf(w_D_I_C[10], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[11];
-        w_D_I_C[11] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[11] - w_D_I_C[11] == 0.0f && ldexpf(w_D_I_C[11], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[12];
-        w_D_I_C[12] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[12] - w_D_I_C[12] == 0.0f && ldexpf(w_D_I_C[12], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[13];
-        w_D_I_C[13] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[13] - w_D_I_C[13] == 0.0f && ldexpf(w_D_I_C[13], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[14];
-        w_D_I_C[14] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[14] - w_D_I_C[14] == 0.0f && ldexpf(w_D_I_C[14], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[15];
-        w_D_I_C[15] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[15] - w_D_I_C[15] == 0.0f && ldexpf(w_D_I_C[15], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[16];
-        w_D_I_C[16] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[16] - w_D_I_C[16] == 0.0f && ldexpf(w_D_I_C[16], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[17];
-        w_D_I_C[17] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[17] - w_D_I_C[17] == 0.0f && ldexpf(w_D_I_C[17], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[18];
-        w_D_I_C[18] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[18] - w_D_I_C[18] == 0.0f && ldexpf(w_D_I_C[18], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[19];
-        w_D_I_C[19] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[19] - w_D_I_C[19] == 0.0f && ldexpf(w_D_I_C[19], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[20];
-        w_D_I_C[20] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[20] - w_D_I_C[20] == 0.0f && ldexpf(w_D_I_C[20], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[21];
-        w_D_I_C[21] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[21] - w_D_I_C[21] == 0.0f && ldexpf(w_D_I_C[21], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[22];
-        w_D_I_C[22] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[22] - w_D_I_C[22] == 0.0f && ldexpf(w_D_I_C[22], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[23];
-        w_D_I_C[23] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[23] - w_D_I_C[23] == 0.0f && ldexpf(w_D_I_C[23], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[24];
-        w_D_I_C[24] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[24] - w_D_I_C[24] == 0.0f && ldexpf(w_D_I_C[24], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[25];
-        w_D_I_C[25] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[25] - w_D_I_C[25] == 0.0f && ldexpf(w_D_I_C[25], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_I_C[26];
-        w_D_I_C[26] = ldexpf(m_, -(2 * rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_I_C[26] - w_D_I_C[26] == 0.0f && ldexpf(w_D_I_C[26], 2 * rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[3];
-        w_D_m[3] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[3] - w_D_m[3] == 0.0f && ldexpf(w_D_m[3], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[4];
-        w_D_m[4] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[4] - w_D_m[4] == 0.0f && ldexpf(w_D_m[4], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_m[5];
-        w_D_m[5] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_m[5] - w_D_m[5] == 0.0f && ldexpf(w_D_m[5], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[0];
-        w_D_omega[0] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[0] - w_D_omega[0] == 0.0f && ldexpf(w_D_omega[0], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[1];
-        w_D_omega[1] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[1] - w_D_omega[1] == 0.0f && ldexpf(w_D_omega[1], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[2];
-        w_D_omega[2] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[2] - w_D_omega[2] == 0.0f && ldexpf(w_D_omega[2], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[3];
-        w_D_omega[3] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[3] - w_D_omega[3] == 0.0f && ldexpf(w_D_omega[3], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[4];
-        w_D_omega[4] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[4] - w_D_omega[4] == 0.0f && ldexpf(w_D_omega[4], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[5];
-        w_D_omega[5] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[5] - w_D_omega[5] == 0.0f && ldexpf(w_D_omega[5], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[6];
-        w_D_omega[6] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[6] - w_D_omega[6] == 0.0f && ldexpf(w_D_omega[6], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[7];
-        w_D_omega[7] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[7] - w_D_omega[7] == 0.0f && ldexpf(w_D_omega[7], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega[8];
-        w_D_omega[8] = ldexpf(m_, -(rs_t1 + rs_t3));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega[8] - w_D_omega[8] == 0.0f && ldexpf(w_D_omega[8], rs_t1 + rs_t3) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[0];
-        w_D_omega_dot[0] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[0] - w_D_omega_dot[0] == 0.0f && ldexpf(w_D_omega_dot[0], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[1];
-        w_D_omega_dot[1] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[1] - w_D_omega_dot[1] == 0.0f && ldexpf(w_D_omega_dot[1], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[2];
-        w_D_omega_dot[2] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[2] - w_D_omega_dot[2] == 0.0f && ldexpf(w_D_omega_dot[2], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[3];
-        w_D_omega_dot[3] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[3] - w_D_omega_dot[3] == 0.0f && ldexpf(w_D_omega_dot[3], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[4];
-        w_D_omega_dot[4] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[4] - w_D_omega_dot[4] == 0.0f && ldexpf(w_D_omega_dot[4], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[5];
-        w_D_omega_dot[5] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[5] - w_D_omega_dot[5] == 0.0f && ldexpf(w_D_omega_dot[5], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[6];
-        w_D_omega_dot[6] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[6] - w_D_omega_dot[6] == 0.0f && ldexpf(w_D_omega_dot[6], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[7];
-        w_D_omega_dot[7] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[7] - w_D_omega_dot[7] == 0.0f && ldexpf(w_D_omega_dot[7], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_omega_dot[8];
-        w_D_omega_dot[8] = ldexpf(m_, -(rs_t1));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_omega_dot[8] - w_D_omega_dot[8] == 0.0f && ldexpf(w_D_omega_dot[8], rs_t1) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[9];
-        w_D_c_ddot[9] = ldexpf(m_, -(rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[9] - w_D_c_ddot[9] == 0.0f && ldexpf(w_D_c_ddot[9], rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[13];
-        w_D_c_ddot[13] = ldexpf(m_, -(rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[13] - w_D_c_ddot[13] == 0.0f && ldexpf(w_D_c_ddot[13], rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = w_D_c_ddot[17];
-        w_D_c_ddot[17] = ldexpf(m_, -(rs_t2));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (w_D_c_ddot[17] - w_D_c_ddot[17] == 0.0f && ldexpf(w_D_c_ddot[17], rs_t2) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&w[0], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[1], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[2], rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[3], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w[4], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w[5], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w_D_m[3], rs_t0);
+        status |= rigidsym_c_back_f(&w_D_m[4], rs_t0);
+        status |= rigidsym_c_back_f(&w_D_m[5], rs_t0);
+        status |= rigidsym_c_back_f(&w_D_omega[0], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[1], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[2], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[3], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[4], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[5], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[6], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[7], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega[8], rs_t1 + rs_t3);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[0], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[1], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[2], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[3], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[4], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[5], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[6], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[7], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[8], rs_t1);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[9], rs_t2);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[13], rs_t2);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[17], rs_t2);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;

@@ -65,7 +65,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
     double p[2])
 {
     int status, still_;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -74,7 +74,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
      * was flushed to zero is taken (else the flag stays) */
     double rs_l1;
     double rs_l2;
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -92,34 +92,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(l2);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexp(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
-        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
-    rs_l2 = ldexp(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
-        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_d(&l2, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
-        m_ = p[0];
-        p[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&p[0], rs_t0);
+        status |= rigidsym_c_back_d(&p[1], rs_t0);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -127,34 +108,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(l1);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexp(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
-        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
-    rs_l2 = ldexp(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
-        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_d(&l1, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
-        m_ = p[0];
-        p[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&p[0], rs_t0);
+        status |= rigidsym_c_back_d(&p[1], rs_t0);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -373,7 +335,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
     float p[2])
 {
     int status, still_;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -382,7 +344,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
      * was flushed to zero is taken (else the flag stays) */
     float rs_l1;
     float rs_l2;
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -400,34 +362,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(l2);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexpf(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
-        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
-    rs_l2 = ldexpf(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
-        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_f(&l2, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
-        m_ = p[0];
-        p[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&p[0], rs_t0);
+        status |= rigidsym_c_back_f(&p[1], rs_t0);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -435,34 +378,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(l1);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexpf(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
-        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
-    rs_l2 = ldexpf(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
-        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_f(&l1, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
-        m_ = p[0];
-        p[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&p[0], rs_t0);
+        status |= rigidsym_c_back_f(&p[1], rs_t0);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -748,7 +672,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
     double p_D_l2[2])
 {
     int status, still_;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -757,7 +681,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
      * was flushed to zero is taken (else the flag stays) */
     double rs_l1;
     double rs_l2;
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -775,58 +699,19 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(l2);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexp(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
-        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
-    rs_l2 = ldexp(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
-        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_d(&l2, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        m_ = p[0];
-        p[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[0];
-        p_D_q1[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[0] - p_D_q1[0] == 0.0 && ldexp(p_D_q1[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[1];
-        p_D_q1[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[1] - p_D_q1[1] == 0.0 && ldexp(p_D_q1[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[0];
-        p_D_q2[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[0] - p_D_q2[0] == 0.0 && ldexp(p_D_q2[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[1];
-        p_D_q2[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[1] - p_D_q2[1] == 0.0 && ldexp(p_D_q2[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&p[0], rs_t0);
+        status |= rigidsym_c_back_d(&p[1], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q1[0], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q1[1], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q2[0], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q2[1], rs_t0);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -834,58 +719,19 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    m_ = fabs(l1);
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexp(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l1, 1)
-        | rigidsym_c_lost_d(&l1, &rs_l1, 1);
-    rs_l2 = ldexp(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_d(&rs_l2, 1)
-        | rigidsym_c_lost_d(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_d(&l1, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        m_ = p[0];
-        p[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0 && ldexp(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0 && ldexp(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[0];
-        p_D_q1[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[0] - p_D_q1[0] == 0.0 && ldexp(p_D_q1[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[1];
-        p_D_q1[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[1] - p_D_q1[1] == 0.0 && ldexp(p_D_q1[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[0];
-        p_D_q2[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[0] - p_D_q2[0] == 0.0 && ldexp(p_D_q2[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[1];
-        p_D_q2[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[1] - p_D_q2[1] == 0.0 && ldexp(p_D_q2[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&p[0], rs_t0);
+        status |= rigidsym_c_back_d(&p[1], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q1[0], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q1[1], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q2[0], rs_t0);
+        status |= rigidsym_c_back_d(&p_D_q2[1], rs_t0);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1176,7 +1022,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
     float p_D_l2[2])
 {
     int status, still_;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -1185,7 +1031,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
      * was flushed to zero is taken (else the flag stays) */
     float rs_l1;
     float rs_l2;
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -1203,58 +1049,19 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(l2);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexpf(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
-        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
-    rs_l2 = ldexpf(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
-        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_f(&l2, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        m_ = p[0];
-        p[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[0];
-        p_D_q1[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[0] - p_D_q1[0] == 0.0f && ldexpf(p_D_q1[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[1];
-        p_D_q1[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[1] - p_D_q1[1] == 0.0f && ldexpf(p_D_q1[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[0];
-        p_D_q2[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[0] - p_D_q2[0] == 0.0f && ldexpf(p_D_q2[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[1];
-        p_D_q2[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[1] - p_D_q2[1] == 0.0f && ldexpf(p_D_q2[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&p[0], rs_t0);
+        status |= rigidsym_c_back_f(&p[1], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q1[0], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q1[1], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q2[0], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q2[1], rs_t0);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1262,58 +1069,19 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    m_ = fabsf(l1);
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    rs_l1 = ldexpf(l1, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l1, 1)
-        | rigidsym_c_lost_f(&l1, &rs_l1, 1);
-    rs_l2 = ldexpf(l2, rs_t0);
-    still_ |= rigidsym_c_extreme_f(&rs_l2, 1)
-        | rigidsym_c_lost_f(&l2, &rs_l2, 1);
+    rs_t0 = -(rigidsym_c_exponent_f(&l1, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        m_ = p[0];
-        p[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[0] - p[0] == 0.0f && ldexpf(p[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p[1];
-        p[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p[1] - p[1] == 0.0f && ldexpf(p[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[0];
-        p_D_q1[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[0] - p_D_q1[0] == 0.0f && ldexpf(p_D_q1[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q1[1];
-        p_D_q1[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q1[1] - p_D_q1[1] == 0.0f && ldexpf(p_D_q1[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[0];
-        p_D_q2[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[0] - p_D_q2[0] == 0.0f && ldexpf(p_D_q2[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = p_D_q2[1];
-        p_D_q2[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (p_D_q2[1] - p_D_q2[1] == 0.0f && ldexpf(p_D_q2[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&p[0], rs_t0);
+        status |= rigidsym_c_back_f(&p[1], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q1[0], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q1[1], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q2[0], rs_t0);
+        status |= rigidsym_c_back_f(&p_D_q2[1], rs_t0);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
