@@ -444,6 +444,66 @@ static inline int rigidsym_c_lost_f(const float *a, const float *b, int n)
     return lost;
 }
 
+/* The rescue's steps, shared by every kernel's plans (kernel.c.j2): the binary exponent
+ * of the largest magnitude among the n finite values at p (frexp's: max |p| in
+ * [2^(e-1), 2^e)), 0 when all are zero */
+static inline int rigidsym_c_exponent_d(const double *p, int n)
+{
+    double m = 0.0;
+    int j, e = 0;
+    for (j = 0; j < n; ++j)
+        m = fabs(p[j]) > m ? fabs(p[j]) : m;
+    if (m > 0.0)
+        (void)frexp(m, &e);
+    return e;
+}
+
+static inline int rigidsym_c_exponent_f(const float *p, int n)
+{
+    float m = 0.0f;
+    int j, e = 0;
+    for (j = 0; j < n; ++j)
+        m = fabsf(p[j]) > m ? fabsf(p[j]) : m;
+    if (m > 0.0f)
+        (void)frexpf(m, &e);
+    return e;
+}
+
+/* q = 2^t p for the n values at p (exact where it stays normal); 1 when one of them is still
+ * extreme there, or a nonzero one was flushed to zero (the plan cannot take the sample) */
+static inline int rigidsym_c_scale_d(const double *p, double *q, int n, int t)
+{
+    int j;
+    for (j = 0; j < n; ++j)
+        q[j] = ldexp(p[j], t);
+    return rigidsym_c_extreme_d(q, n) | rigidsym_c_lost_d(p, q, n);
+}
+
+static inline int rigidsym_c_scale_f(const float *p, float *q, int n, int t)
+{
+    int j;
+    for (j = 0; j < n; ++j)
+        q[j] = ldexpf(p[j], t);
+    return rigidsym_c_extreme_f(q, n) | rigidsym_c_lost_f(p, q, n);
+}
+
+/* an output of the scaled evaluation scaled back by 2^-t: RIGIDSYM_C_EXTREME_INPUT where it
+ * was rounded into the subnormal range (or flushed), only absolutely accurate there; 0
+ * where it is exact (a round trip) or overflowed (the outputs' test flags that) */
+static inline int rigidsym_c_back_d(double *s, int t)
+{
+    const double m = *s;
+    *s = ldexp(m, -t);
+    return (*s - *s == 0.0 && ldexp(*s, t) != m) ? RIGIDSYM_C_EXTREME_INPUT : 0;
+}
+
+static inline int rigidsym_c_back_f(float *s, int t)
+{
+    const float m = *s;
+    *s = ldexpf(m, -t);
+    return (*s - *s == 0.0f && ldexpf(*s, t) != m) ? RIGIDSYM_C_EXTREME_INPUT : 0;
+}
+
 /* 1 when one of the n values at p is subnormal (what a flush-to-zero mode reads as 0) */
 static inline int rigidsym_c_subnormal_d(const double *p, int n)
 {

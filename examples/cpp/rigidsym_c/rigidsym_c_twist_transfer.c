@@ -80,8 +80,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
     double t_P[6])
 {
     int status, still_;
-    int j;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -89,7 +88,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     double rs_t_A[6];
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -105,57 +104,18 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 6; ++j)
-        m_ = fabs(t_A[j]) > m_ ? fabs(t_A[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    for (j = 0; j < 6; ++j)
-        rs_t_A[j] = ldexp(t_A[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_t_A, 6)
-        | rigidsym_c_lost_d(t_A, rs_t_A, 6);
+    rs_t0 = -(rigidsym_c_exponent_d(t_A, 6));
+    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_t0);
     still_ |= rigidsym_c_extreme_d(a, 3);
     still_ |= rigidsym_c_extreme_d(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer(rs_t_A, a, p, t_P);
-        m_ = t_P[0];
-        t_P[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[0] - t_P[0] == 0.0 && ldexp(t_P[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[1];
-        t_P[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[1] - t_P[1] == 0.0 && ldexp(t_P[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[2];
-        t_P[2] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[2] - t_P[2] == 0.0 && ldexp(t_P[2], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[3];
-        t_P[3] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[3] - t_P[3] == 0.0 && ldexp(t_P[3], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[4];
-        t_P[4] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[4] - t_P[4] == 0.0 && ldexp(t_P[4], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[5];
-        t_P[5] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[5] - t_P[5] == 0.0 && ldexp(t_P[5], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&t_P[0], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[1], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[2], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[3], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[4], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[5], rs_t0);
         finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -420,8 +380,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
     float t_P[6])
 {
     int status, still_;
-    int j;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -429,7 +388,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     float rs_t_A[6];
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -445,57 +404,18 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 6; ++j)
-        m_ = fabsf(t_A[j]) > m_ ? fabsf(t_A[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    for (j = 0; j < 6; ++j)
-        rs_t_A[j] = ldexpf(t_A[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_t_A, 6)
-        | rigidsym_c_lost_f(t_A, rs_t_A, 6);
+    rs_t0 = -(rigidsym_c_exponent_f(t_A, 6));
+    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_t0);
     still_ |= rigidsym_c_extreme_f(a, 3);
     still_ |= rigidsym_c_extreme_f(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer_f32(rs_t_A, a, p, t_P);
-        m_ = t_P[0];
-        t_P[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[0] - t_P[0] == 0.0f && ldexpf(t_P[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[1];
-        t_P[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[1] - t_P[1] == 0.0f && ldexpf(t_P[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[2];
-        t_P[2] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[2] - t_P[2] == 0.0f && ldexpf(t_P[2], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[3];
-        t_P[3] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[3] - t_P[3] == 0.0f && ldexpf(t_P[3], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[4];
-        t_P[4] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[4] - t_P[4] == 0.0f && ldexpf(t_P[4], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[5];
-        t_P[5] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[5] - t_P[5] == 0.0f && ldexpf(t_P[5], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&t_P[0], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[1], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[2], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[3], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[4], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[5], rs_t0);
         finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -969,8 +889,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
     double t_P_D_p[18])
 {
     int status, still_;
-    int j;
-    double finite, m_;
+    double finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -978,7 +897,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     double rs_t_A[6];
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -994,129 +913,30 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    m_ = 0.0;
-    rs_e = 0;
-    for (j = 0; j < 6; ++j)
-        m_ = fabs(t_A[j]) > m_ ? fabs(t_A[j]) : m_;
-    if (m_ > 0.0)
-        (void)frexp(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    for (j = 0; j < 6; ++j)
-        rs_t_A[j] = ldexp(t_A[j], rs_t0);
-    still_ |= rigidsym_c_extreme_d(rs_t_A, 6)
-        | rigidsym_c_lost_d(t_A, rs_t_A, 6);
+    rs_t0 = -(rigidsym_c_exponent_d(t_A, 6));
+    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_t0);
     still_ |= rigidsym_c_extreme_d(a, 3);
     still_ |= rigidsym_c_extreme_d(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer_with_jacobians(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        m_ = t_P[0];
-        t_P[0] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[0] - t_P[0] == 0.0 && ldexp(t_P[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[1];
-        t_P[1] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[1] - t_P[1] == 0.0 && ldexp(t_P[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[2];
-        t_P[2] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[2] - t_P[2] == 0.0 && ldexp(t_P[2], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[3];
-        t_P[3] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[3] - t_P[3] == 0.0 && ldexp(t_P[3], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[4];
-        t_P[4] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[4] - t_P[4] == 0.0 && ldexp(t_P[4], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[5];
-        t_P[5] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[5] - t_P[5] == 0.0 && ldexp(t_P[5], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[10];
-        t_P_D_a[10] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[10] - t_P_D_a[10] == 0.0 && ldexp(t_P_D_a[10], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[11];
-        t_P_D_a[11] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[11] - t_P_D_a[11] == 0.0 && ldexp(t_P_D_a[11], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[12];
-        t_P_D_a[12] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[12] - t_P_D_a[12] == 0.0 && ldexp(t_P_D_a[12], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[14];
-        t_P_D_a[14] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[14] - t_P_D_a[14] == 0.0 && ldexp(t_P_D_a[14], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[15];
-        t_P_D_a[15] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[15] - t_P_D_a[15] == 0.0 && ldexp(t_P_D_a[15], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[16];
-        t_P_D_a[16] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[16] - t_P_D_a[16] == 0.0 && ldexp(t_P_D_a[16], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[10];
-        t_P_D_p[10] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[10] - t_P_D_p[10] == 0.0 && ldexp(t_P_D_p[10], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[11];
-        t_P_D_p[11] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[11] - t_P_D_p[11] == 0.0 && ldexp(t_P_D_p[11], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[12];
-        t_P_D_p[12] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[12] - t_P_D_p[12] == 0.0 && ldexp(t_P_D_p[12], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[14];
-        t_P_D_p[14] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[14] - t_P_D_p[14] == 0.0 && ldexp(t_P_D_p[14], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[15];
-        t_P_D_p[15] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[15] - t_P_D_p[15] == 0.0 && ldexp(t_P_D_p[15], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[16];
-        t_P_D_p[16] = ldexp(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[16] - t_P_D_p[16] == 0.0 && ldexp(t_P_D_p[16], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_d(&t_P[0], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[1], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[2], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[3], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[4], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[5], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_a[10], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_a[11], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_a[12], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_a[14], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_a[15], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_a[16], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_p[10], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_p[11], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_p[12], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_p[14], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_p[15], rs_t0);
+        status |= rigidsym_c_back_d(&t_P_D_p[16], rs_t0);
         finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1699,8 +1519,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
     float t_P_D_p[18])
 {
     int status, still_;
-    int j;
-    float finite, m_;
+    float finite;
     /* the outputs are homogeneous under x_a -> 2^(k_a) x_a for every exponent vector k
      * that meets the constraints in the header (homogeneous.py): each plan below gives its
      * free arguments the scale of their own largest component and the others the scale the
@@ -1708,7 +1527,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     float rs_t_A[6];
-    int rs_e = 0, rs_t0 = 0;
+    int rs_t0 = 0;
 #if RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
      * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
@@ -1724,129 +1543,30 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    m_ = 0.0f;
-    rs_e = 0;
-    for (j = 0; j < 6; ++j)
-        m_ = fabsf(t_A[j]) > m_ ? fabsf(t_A[j]) : m_;
-    if (m_ > 0.0f)
-        (void)frexpf(m_, &rs_e);
-    rs_t0 = -(rs_e);
-    for (j = 0; j < 6; ++j)
-        rs_t_A[j] = ldexpf(t_A[j], rs_t0);
-    still_ |= rigidsym_c_extreme_f(rs_t_A, 6)
-        | rigidsym_c_lost_f(t_A, rs_t_A, 6);
+    rs_t0 = -(rigidsym_c_exponent_f(t_A, 6));
+    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_t0);
     still_ |= rigidsym_c_extreme_f(a, 3);
     still_ |= rigidsym_c_extreme_f(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer_with_jacobians_f32(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        m_ = t_P[0];
-        t_P[0] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[0] - t_P[0] == 0.0f && ldexpf(t_P[0], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[1];
-        t_P[1] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[1] - t_P[1] == 0.0f && ldexpf(t_P[1], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[2];
-        t_P[2] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[2] - t_P[2] == 0.0f && ldexpf(t_P[2], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[3];
-        t_P[3] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[3] - t_P[3] == 0.0f && ldexpf(t_P[3], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[4];
-        t_P[4] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[4] - t_P[4] == 0.0f && ldexpf(t_P[4], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P[5];
-        t_P[5] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P[5] - t_P[5] == 0.0f && ldexpf(t_P[5], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[10];
-        t_P_D_a[10] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[10] - t_P_D_a[10] == 0.0f && ldexpf(t_P_D_a[10], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[11];
-        t_P_D_a[11] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[11] - t_P_D_a[11] == 0.0f && ldexpf(t_P_D_a[11], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[12];
-        t_P_D_a[12] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[12] - t_P_D_a[12] == 0.0f && ldexpf(t_P_D_a[12], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[14];
-        t_P_D_a[14] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[14] - t_P_D_a[14] == 0.0f && ldexpf(t_P_D_a[14], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[15];
-        t_P_D_a[15] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[15] - t_P_D_a[15] == 0.0f && ldexpf(t_P_D_a[15], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_a[16];
-        t_P_D_a[16] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_a[16] - t_P_D_a[16] == 0.0f && ldexpf(t_P_D_a[16], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[10];
-        t_P_D_p[10] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[10] - t_P_D_p[10] == 0.0f && ldexpf(t_P_D_p[10], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[11];
-        t_P_D_p[11] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[11] - t_P_D_p[11] == 0.0f && ldexpf(t_P_D_p[11], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[12];
-        t_P_D_p[12] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[12] - t_P_D_p[12] == 0.0f && ldexpf(t_P_D_p[12], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[14];
-        t_P_D_p[14] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[14] - t_P_D_p[14] == 0.0f && ldexpf(t_P_D_p[14], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[15];
-        t_P_D_p[15] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[15] - t_P_D_p[15] == 0.0f && ldexpf(t_P_D_p[15], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
-        m_ = t_P_D_p[16];
-        t_P_D_p[16] = ldexpf(m_, -(rs_t0));
-        /* scaled back into the subnormal range and rounded there (or flushed): only
-         * absolutely accurate, so flagged; exact (a round trip) or overflowed: as is */
-        if (t_P_D_p[16] - t_P_D_p[16] == 0.0f && ldexpf(t_P_D_p[16], rs_t0) != m_)
-            status |= RIGIDSYM_C_EXTREME_INPUT;
+        status |= rigidsym_c_back_f(&t_P[0], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[1], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[2], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[3], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[4], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[5], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_a[10], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_a[11], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_a[12], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_a[14], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_a[15], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_a[16], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_p[10], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_p[11], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_p[12], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_p[14], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_p[15], rs_t0);
+        status |= rigidsym_c_back_f(&t_P_D_p[16], rs_t0);
         finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
