@@ -67,7 +67,8 @@ PUBLIC = {
     "rigidsym.latex.transcription": ["STATUSES", "check_transcription", "notes",
                                      "transcription_for", "transcription_words"],
     # issue 29 item 4: LaTeX in, verdict out (rigidsym.check_latex, rigidsym check --latex)
-    "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "read_lets", "split_lets"],
+    "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "rated_lets", "read_lets",
+                            "split_lets"],
 }
 
 
