@@ -272,10 +272,18 @@ def _one_let(d: str) -> Let:
                    f"\\mathrm{{CPM}}(\\mathbf{{e}})')")
 
 
-def rated_lets(lets: list) -> list:
+def rated_lets(lets: list[Let]) -> list[Let]:
     """The symbols whose rate a ``--let '\\dot{X} = ...'`` declares and no ``--let``
     declares: each a function of time of the book's conventional shape (bold lower-case a
-    3-vector, bold capital 3x3, else a scalar; issue 63), as ``--let 'X(t): KIND'``."""
+    3-vector, bold capital 3x3, else a scalar), as ``--let 'X(t): KIND'``.
+
+    Args:
+        lets: the ``--let`` declarations as read (:func:`read_lets`).
+
+    Returns:
+        One new :class:`Let` per such symbol, in the order of the rates; empty when every
+        rated symbol is declared. Raises nothing.
+    """
     own = {x.key for x in lets}
     out = []
     for x in lets:
