@@ -34,6 +34,12 @@ def _generate_args(p) -> None:
     p.add_argument("--namespace", default=None, metavar="NAME",
                    help="with --target cpp: the C++ namespace of the layer (default: "
                         "rigidsym)")
+    p.add_argument("--prefix", default=None, metavar="NAME",
+                   help="with --target c or cpp: the name every C symbol, macro (upper "
+                        "case), file, the CMake target and the pkg-config module carry, and "
+                        "the default C++ namespace, so that folders of different prefixes "
+                        "link into one program (a lower-case C identifier; default: "
+                        "rigidsym_c, namespace rigidsym)")
     p.add_argument("--kernel", action="append", metavar="NAME",
                    help="with --target c: a book kernel to include (repeatable; default: "
                         "every book kernel when no --module is given, none otherwise)")
@@ -55,6 +61,7 @@ def cmd_generate(args) -> int:
     for opt, given in (("--kernel", getattr(args, "kernel", None)),
                        ("--single-header", getattr(args, "single_header", False)),
                        ("--namespace", getattr(args, "namespace", None)),
+                       ("--prefix", getattr(args, "prefix", None)),
                        ("--notice", getattr(args, "notice", None))):
         if given is not None and given is not False:    # --notice "" is given
             print(f"error: {opt}: only with --target c or cpp", file=sys.stderr)

@@ -18,6 +18,7 @@ import sys
 import time
 from pathlib import Path
 
+from rigidsym.codegen.backends.c import prefix as _pfx
 from rigidsym.codegen.spec import Kernel
 from rigidsym.core.config import KERNEL_SPEC
 from rigidsym.registry.declarations import BadInput
@@ -146,8 +147,10 @@ def _compile(out: Path) -> int:
     return 0
 
 
-#: the file that marks a folder as the C-only target's (its orphans may be removed)
-MARKER = "rigidsym_c_common.h"
+#: the file that marks a folder as the C-only target's of the default prefix (its orphans
+#: may be removed; another prefix's: :func:`rigidsym.codegen.backends.c.prefix.
+#: generated_marker`)
+MARKER = f"{_pfx.DEFAULT_PREFIX}{_pfx.MARKER_SUFFIX}"
 
 
 def select_kernels(modules, names) -> tuple[list, dict[str, str]]:
@@ -187,7 +190,8 @@ def select_kernels(modules, names) -> tuple[list, dict[str, str]]:
 
 def cmd_generate_c(args) -> int:
     """Write (or with ``--check`` compare) the C-only target into ``--out`` (with ``--target
-    cpp`` also its C++ layer, :mod:`rigidsym.codegen.backends.cpp`, in ``--namespace``)."""
+    cpp`` also its C++ layer, :mod:`rigidsym.codegen.backends.cpp`, in ``--namespace``),
+    every name carrying ``--prefix`` (:mod:`rigidsym.codegen.backends.c.prefix`)."""
     from rigidsym.codegen.backends.c.target import float_bounds, generate_c
     from rigidsym.codegen.files import check_or_write
     from rigidsym.codegen.generator import compile_many
@@ -196,14 +200,15 @@ def cmd_generate_c(args) -> int:
     if not args.out:
         raise BadInput(f"--out: a folder is required with --target "
                        f"{getattr(args, 'target', 'c')}")
+    prefix = _prefix(args)
     out = Path(args.out)
-    ours = (out / MARKER).is_file()
+    ours = _pfx.generated_marker(out, prefix) is not None
     if args.check and not ours:
         raise BadInput(f"--out: {out} holds no C target to compare with")
     if not args.check and out.exists() and any(out.iterdir()) and not ours:
         # write() removes the files it does not own: never in a folder of someone else's
         raise BadInput(f"--out: {out} is not empty and holds no C target "
-                       f"({MARKER}); give a new or empty folder")
+                       f"(<prefix>{_pfx.MARKER_SUFFIX}); give a new or empty folder")
     from rigidsym.codegen.validate import one_line_warnings
 
     with one_line_warnings():
@@ -223,17 +228,28 @@ def cmd_generate_c(args) -> int:
             raise BadInput(str(exc)) from None
     codes = compile_many(kernels, plan32=False)
     files = generate_c(codes, origin, single_header=getattr(args, "single_header", False),
-                       bounds=float_bounds(args.module), notice=notice)
+                       bounds=float_bounds(args.module), notice=notice, prefix=prefix)
     target = getattr(args, "target", "c")
     if target == "cpp":   # the C++ layer beside the C it calls
-        from rigidsym.codegen.backends.cpp.target import DEFAULT_NAMESPACE, generate_cpp
+        from rigidsym.codegen.backends.cpp.target import generate_cpp
         files.update(generate_cpp(codes, ", ".join(dict.fromkeys(origin.values())),
-                                  namespace=ns or DEFAULT_NAMESPACE, notice=notice))
+                                  namespace=ns, notice=notice, prefix=prefix))
 
     class _Result:  # what codegen.files reads of a generation
         pass
     res = _Result()
     res.files = files  # type: ignore[attr-defined]
+    again = "" if prefix == _pfx.DEFAULT_PREFIX else f" --prefix {prefix}"
     rc = check_or_write(res, out, check_only=args.check, kernels=len(kernels),
-                        rerun=f"rigidsym generate --target {target} ... --out {out}", t0=t0)
+                        rerun=f"rigidsym generate --target {target}{again} ... --out {out}",
+                        t0=t0)
     return rc or 0
+
+
+def _prefix(args) -> str:
+    """``--prefix`` (default ``rigidsym_c``), checked before any kernel is compiled."""
+    prefix = getattr(args, "prefix", None) or _pfx.DEFAULT_PREFIX
+    try:
+        return _pfx.check_prefix(prefix)
+    except _pfx.PrefixError as exc:
+        raise BadInput(str(exc)) from None

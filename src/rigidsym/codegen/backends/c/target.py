@@ -32,6 +32,7 @@ import sympy as sp
 import rigidsym
 from rigidsym.codegen.backends import RenderContext, Target
 from rigidsym.codegen.backends.c.homogeneous import scaling_plans
+from rigidsym.codegen.backends.c.prefix import DEFAULT_PREFIX, check_prefix, rename
 from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
 from rigidsym.codegen.backends.extension.program import balanced, finite_check
 from rigidsym.codegen.backends.printing import program_lines
@@ -44,8 +45,9 @@ TEMPLATES = Path(__file__).parent / "templates"
 #: the float functions' measured accuracy bounds of the book's kernels
 #: (benchmarks/c_float_bounds.py --write), keyed by kernel name, valid for its hash
 FLOAT_BOUNDS = Path(__file__).parent / "float_bounds.json"
-#: the library's name (CMake target, pkg-config module, file prefix)
-LIBRARY = "rigidsym_c"
+#: the library's name (CMake target, pkg-config module, file prefix) unless ``--prefix``
+#: names another (:mod:`.prefix`)
+LIBRARY = DEFAULT_PREFIX
 #: the prefix of every exported function
 PREFIX = "rigidsym_c_"
 #: the status bits of every scalar function: (macro suffix, value, meaning)
@@ -383,7 +385,8 @@ def _single_header(files: dict[str, str], groups: list[dict], allhash: str, ver:
 
 
 def generate_c(codes, origin: str | dict[str, str], single_header: bool = False,
-               bounds: dict | None = None, notice: str | None = None) -> dict[str, str]:
+               bounds: dict | None = None, notice: str | None = None,
+               prefix: str = LIBRARY) -> dict[str, str]:
     """The C-only target's files (``{relative path: text}``) of compiled kernels.
 
     Args:
@@ -399,15 +402,21 @@ def generate_c(codes, origin: str | dict[str, str], single_header: bool = False,
         notice: the licence or copyright notice of every file (its lines): None, the
             project's (MIT, with ``LICENSE``); "" none (no ``LICENSE``); else the user's
             (``rigidsym generate --notice``; no ``LICENSE``).
+        prefix: the name of every exported symbol, macro, file, the CMake target and the
+            pkg-config module (``rigidsym generate --prefix``; :mod:`.prefix`): a folder of
+            another prefix links into the same program as one of the default.
 
     Returns:
         ``{relative path: text}``: ``rigidsym_c.h``, ``rigidsym_c_impl.h``, per kernel
         ``rigidsym_c_<kernel>.h`` and ``.c``, ``CMakeLists.txt``, ``rigidsym_c.pc.in``,
-        ``rigidsym_cConfig.cmake.in``, ``README.md``, ``LICENSE`` (with the project's notice).
+        ``rigidsym_cConfig.cmake.in``, ``README.md``, ``LICENSE`` (with the project's notice);
+        ``<prefix>`` in place of ``rigidsym_c`` with another prefix.
 
     Raises:
         CTargetError: a kernel whose argument or output name would collide in C.
+        PrefixError: a prefix :func:`.prefix.check_prefix` refuses (a ``ValueError``).
     """
+    check_prefix(prefix)
     env = _env()
     groups = _groups(codes, origin, float_bounds() if bounds is None else bounds)
     if isinstance(origin, dict):
@@ -436,15 +445,16 @@ def generate_c(codes, origin: str | dict[str, str], single_header: bool = False,
     if single_header:
         files[f"{LIBRARY}_single.h"] = _single_header(files, groups, allhash, ver, origin,
                                                       notice)
-    return dict(sorted(files.items()))
+    return rename(dict(sorted(files.items())), prefix)
 
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The C target's files of a generation (:func:`generate_c` of ``ctx.kernels``; the
-    options ``single_header``, ``bounds`` and ``notice`` from ``ctx.options``)."""
+    options ``single_header``, ``bounds``, ``notice`` and ``prefix`` from ``ctx.options``)."""
     return generate_c(ctx.kernels, ctx.origin, single_header=ctx.options.get("single_header",
                                                                               False),
-                      bounds=ctx.options.get("bounds"), notice=ctx.options.get("notice"))
+                      bounds=ctx.options.get("bounds"), notice=ctx.options.get("notice"),
+                      prefix=ctx.options.get("prefix", LIBRARY))
 
 
 TARGET = Target("c", TEMPLATES, DoublePrinter, render, package=False)

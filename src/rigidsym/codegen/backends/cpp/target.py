@@ -36,6 +36,7 @@ import sympy as sp
 
 import rigidsym
 from rigidsym.codegen.backends import RenderContext, Target
+from rigidsym.codegen.backends.c.prefix import check_prefix, rename
 from rigidsym.codegen.backends.c.target import LIBRARY, PREFIX, STATUS, notice_lines
 from rigidsym.codegen.backends.cpp.printer import CppPrinter
 
@@ -45,7 +46,8 @@ __all__ = ["generate_cpp", "CppTargetError", "HEADER", "TEMPLATES", "TARGET", "r
 TEMPLATES = Path(__file__).parent / "templates"
 #: the layer's file name in the generated folder
 HEADER = f"{LIBRARY}.hpp"
-#: the namespace of the layer unless ``--namespace`` names another
+#: the namespace of the layer unless ``--namespace`` names another (or ``--prefix``: then
+#: the prefix)
 DEFAULT_NAMESPACE = "rigidsym"
 #: C++ keywords and alternative tokens a name of the layer must not be (C's are the C
 #: target's to refuse)
@@ -159,26 +161,35 @@ def _env() -> jinja2.Environment:
     return env
 
 
-def generate_cpp(codes, origin: str, namespace: str = DEFAULT_NAMESPACE,
-                 notice: str | None = None) -> dict[str, str]:
+def generate_cpp(codes, origin: str, namespace: str | None = None,
+                 notice: str | None = None, prefix: str = LIBRARY) -> dict[str, str]:
     """The C++ layer's files (``{relative path: text}``) over the C target of ``codes``.
 
     Args:
         codes: :class:`rigidsym.codegen.generator.KernelCode` of the kernels and their
             Jacobian twins (those :func:`rigidsym.codegen.backends.c.generate_c` prints).
         origin: where the kernels are declared (a module's name), for the provenance line.
-        namespace: the C++ namespace of the layer (``a`` or ``a::b``).
+        namespace: the C++ namespace of the layer (``a`` or ``a::b``); default (None): the
+            prefix, or ``rigidsym`` (:data:`DEFAULT_NAMESPACE`) for the default prefix.
         notice: the licence or copyright notice (its lines): None the project's (MIT),
             "" none, else the user's (``rigidsym generate --notice``).
+        prefix: the C folder's prefix (:func:`rigidsym.codegen.backends.c.generate_c`'s):
+            the header's name, its macros and the C functions it calls carry it.
 
     Returns:
         ``{"rigidsym_c.hpp": text}``: the header-only layer (it includes ``rigidsym_c.h``
-        of the C target, which must be generated into the same folder).
+        of the C target, which must be generated into the same folder); ``<prefix>.hpp``
+        including ``<prefix>.h`` with another prefix.
 
     Raises:
         CppTargetError: a namespace or a kernel, argument or output name the layer cannot
             use (a C++ keyword, a name it defines, one with ``__`` or ``rs_``).
+        PrefixError: a prefix :func:`rigidsym.codegen.backends.c.prefix.check_prefix`
+            refuses (a ``ValueError``).
     """
+    check_prefix(prefix)
+    if namespace is None:
+        namespace = DEFAULT_NAMESPACE if prefix == LIBRARY else prefix
     check_namespace(namespace)
     kernels = [_entry(kc) for kc in sorted(codes, key=lambda kc: kc.kernel.name)]
     ver = {"rigidsym": rigidsym.__version__, "sympy": sp.__version__}
@@ -187,15 +198,15 @@ def generate_cpp(codes, origin: str, namespace: str = DEFAULT_NAMESPACE,
         template=t, ns=namespace, lib=LIBRARY, guard=f"{LIBRARY.upper()}_HPP",
         eigen_macro=f"{LIBRARY.upper()}_EIGEN", status=STATUS, kernels=kernels, ver=ver,
         origin=origin, licence=notice_lines(notice)[0])
-    return {HEADER: text}
+    return rename({HEADER: text}, prefix)
 
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The C++ layer's files of a generation (:func:`generate_cpp` of ``ctx.kernels``; the
-    options ``namespace`` and ``notice`` from ``ctx.options``)."""
-    return generate_cpp(ctx.kernels, ctx.origin,
-                        namespace=ctx.options.get("namespace", DEFAULT_NAMESPACE),
-                        notice=ctx.options.get("notice"))
+    options ``namespace``, ``notice`` and ``prefix`` from ``ctx.options``)."""
+    return generate_cpp(ctx.kernels, ctx.origin, namespace=ctx.options.get("namespace"),
+                        notice=ctx.options.get("notice"),
+                        prefix=ctx.options.get("prefix", LIBRARY))
 
 
 TARGET = Target("cpp", TEMPLATES, CppPrinter, render, package=False)
