@@ -39,7 +39,7 @@ from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.codegen.spec import Kernel
 
 __all__ = ["generate_c", "float_bounds", "notice_lines", "TEMPLATES", "LIBRARY", "PREFIX",
-           "STATUS", "FLOAT_BOUNDS", "TARGET", "render"]
+           "STATUS", "FLOAT_BOUNDS", "TARGET", "render", "declaration_hash"]
 
 TEMPLATES = Path(__file__).parent / "templates"
 #: the float functions' measured accuracy bounds of the book's kernels
@@ -320,20 +320,29 @@ def _homogeneity(k: Kernel, plans: list) -> dict | None:
     return {"scaled": scaled, "constraints": p["constraints"], "degrees": degrees}
 
 
-def _groups(codes, origin, bounds: dict) -> list[dict]:
-    """Kernels with their Jacobian twins (``<name>_with_jacobians``) in one file pair."""
+def _members(codes) -> list[tuple[str, list]]:
+    """``(name, [kernel, its Jacobian twin if any])`` per file pair, sorted by name."""
     from rigidsym.codegen.derivatives.jacobians import SUFFIX
 
     by = {kc.kernel.name: kc for kc in codes}
-    groups = []
-    for name, kc in by.items():
-        if name.endswith(SUFFIX) and name[:-len(SUFFIX)] in by:
-            continue
-        members = [kc] + ([by[name + SUFFIX]] if name + SUFFIX in by else [])
-        groups.append({"name": name, "kernels": [_kernel_entry(m, bounds) for m in members],
-                       "origin": origin.get(name, "") if isinstance(origin, dict) else origin,
-                       "hash": _combined([m.hash for m in members])})
-    return sorted(groups, key=lambda g: g["name"])
+    return sorted(((name, [kc] + ([by[name + SUFFIX]] if name + SUFFIX in by else []))
+                   for name, kc in by.items()
+                   if not (name.endswith(SUFFIX) and name[:-len(SUFFIX)] in by)),
+                  key=lambda g: g[0])
+
+
+def _groups(codes, origin, bounds: dict) -> list[dict]:
+    """Kernels with their Jacobian twins (``<name>_with_jacobians``) in one file pair."""
+    return [{"name": name, "kernels": [_kernel_entry(m, bounds) for m in members],
+             "origin": origin.get(name, "") if isinstance(origin, dict) else origin,
+             "hash": _combined([m.hash for m in members])}
+            for name, members in _members(codes)]
+
+
+def declaration_hash(codes) -> str:
+    """The folder's declaration hash of ``codes`` (the ``sha256:`` of its provenance lines,
+    16 hex digits): of the kernels' hashes, per file pair and then over the pairs."""
+    return _combined([_combined([m.hash for m in members]) for _, members in _members(codes)])
 
 
 def _combined(hashes) -> str:
@@ -422,7 +431,7 @@ def generate_c(codes, origin: str | dict[str, str], single_header: bool = False,
     if isinstance(origin, dict):
         origin = ", ".join(dict.fromkeys(origin.values()))
     ver = {"rigidsym": rigidsym.__version__, "sympy": sp.__version__}
-    allhash = _combined([g["hash"] for g in groups])
+    allhash = declaration_hash(codes)
     licence, licence_short = notice_lines(notice)
     common = {"lib": LIBRARY, "prefix": PREFIX, "status": STATUS, "ver": ver,
               "origin": origin, "groups": groups, "allhash": allhash, "licence": licence,

@@ -36,6 +36,7 @@ import sympy as sp
 
 import rigidsym
 from rigidsym.codegen.backends import RenderContext, Target
+from rigidsym.codegen.backends.c import target as c_target
 from rigidsym.codegen.backends.c.prefix import check_prefix, rename
 from rigidsym.codegen.backends.c.target import LIBRARY, PREFIX, STATUS, notice_lines
 from rigidsym.codegen.backends.cpp.printer import CppPrinter
@@ -197,7 +198,7 @@ def generate_cpp(codes, origin: str, namespace: str | None = None,
     text = _env().get_template(t).render(
         template=t, ns=namespace, lib=LIBRARY, guard=f"{LIBRARY.upper()}_HPP",
         eigen_macro=f"{LIBRARY.upper()}_EIGEN", status=STATUS, kernels=kernels, ver=ver,
-        origin=origin, licence=notice_lines(notice)[0])
+        origin=origin, licence=notice_lines(notice)[0], allhash=c_target.declaration_hash(codes))
     return rename({HEADER: text}, prefix)
 
 
