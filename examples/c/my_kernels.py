@@ -2,7 +2,7 @@
 quaternion's rotation matrix, a planar two-link arm's tip position (its Jacobian is the
 generated twin), and a rigid body's kinetic energy.
 
-Generate the C with ``rigidsym generate --target c --module examples/c/my_kernels.py
+Generate the C with ``rigidsym generate --target cpp --module examples/c/my_kernels.py
 --kernel ... --out examples/c/rigidsym_c`` (the command of examples/c/README.md).
 """
 
