@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _cmake import configure_and_build
 
 ROOT = Path(__file__).resolve().parents[1]
 USER_MODULE = ROOT / "examples" / "c" / "my_kernels.py"
@@ -322,14 +323,7 @@ def test_book_and_user_folders_in_one_cmake_program(book_and_mybot, tmp_path, cc
         eigen="find_package(Eigen3 3.3 REQUIRED NO_MODULE)\n"
               "target_link_libraries(app_cpp PRIVATE Eigen3::Eigen)" if eigen else ""),
         encoding="utf-8")
-    build = tmp_path / "build"
-    res = subprocess.run(["cmake", "-S", str(tmp_path), "-B", str(build),
-                          f"-DCMAKE_C_COMPILER={cc}", f"-DCMAKE_CXX_COMPILER={cxx}",
-                          "-DCMAKE_C_FLAGS=-Ofast -Werror"], capture_output=True, text=True)
-    assert res.returncode == 0, res.stdout + res.stderr
-    res = subprocess.run(["cmake", "--build", str(build), "-j", "2"], capture_output=True,
-                         text=True)
-    assert res.returncode == 0, res.stdout + res.stderr
+    build = configure_and_build(tmp_path, tmp_path / "build", cc, cxx)
     want_twist = K.twist_transfer(np.array(T_A), np.array(A_PT), np.array(P_PT))
     q1, q2, l1, l2 = ARM
     want_tip = [l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)]

@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import sympy as sp
+from _cmake import configure_and_build
 
 ROOT = Path(__file__).resolve().parents[1]
 USER_MODULE = ROOT / "examples" / "c" / "my_kernels.py"
@@ -285,14 +286,7 @@ def test_every_kernel_same_in_every_layout_and_right(generated, tmp_path, cc, cx
     (tmp_path / "app_no_eigen.cpp").write_text(plain, encoding="utf-8")
     (tmp_path / "CMakeLists.txt").write_text(CMAKE.format(warnings=" ".join(WARNINGS)),
                                              encoding="utf-8")
-    build = tmp_path / "build"
-    res = subprocess.run(["cmake", "-S", str(tmp_path), "-B", str(build),
-                          f"-DCMAKE_C_COMPILER={cc}", f"-DCMAKE_CXX_COMPILER={cxx}",
-                          "-DCMAKE_C_FLAGS=-Ofast -Werror"], capture_output=True, text=True)
-    assert res.returncode == 0, res.stdout + res.stderr
-    res = subprocess.run(["cmake", "--build", str(build), "-j", "2"], capture_output=True,
-                         text=True)
-    assert res.returncode == 0, res.stdout + res.stderr
+    build = configure_and_build(tmp_path, tmp_path / "build", cc, cxx)
     got = parse(subprocess.run([str(build / "app")], check=True, capture_output=True,
                                text=True).stdout)
     plain_got = parse(subprocess.run([str(build / "app_no_eigen")], check=True,
