@@ -9,7 +9,8 @@ all start with the prefix, and a program calling the same kernel from a folder o
 prefix links and gives the same bits; bad prefixes are refused, naming ``--prefix``. The
 slow tests build, with CMake (gcc and clang), a C and a C++ program on the book's folder
 and a user module's ``--prefix mybot`` folder that share a kernel, under ``-Werror``, and
-check the answers against NumPy; and regenerate a folder under a new prefix.
+check the answers against NumPy; install both into one prefix and find them by
+``find_package`` and ``pkg-config``; and regenerate a folder under a new prefix.
 """
 
 from __future__ import annotations
@@ -359,3 +360,59 @@ def test_a_folder_regenerated_under_a_new_prefix(tmp_path, capsys):
     assert main([*args, "--prefix", "mybot", "--check"]) == 0
     assert main([*args, "--check"]) == 1
     assert "--prefix" not in capsys.readouterr().err    # the default's rerun command
+
+
+def _run_lines(exe: Path) -> dict[str, list[str]]:
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+    return {line.split()[0]: line.split()[1:] for line in out.splitlines()}
+
+
+@pytest.mark.slow  # builds and installs two folders, then two programs: 15-60 s
+def test_two_folders_installed_into_one_prefix(book_and_mybot, tmp_path):
+    """Both folders ``cmake --install``ed into one prefix keep apart (headers, libraries,
+    CMake packages, pkg-config modules of their own names); a program finds both by
+    ``find_package`` and, by one plain line, by ``pkg-config --cflags --libs rigidsym_c
+    mybot``, and gets the same answers as by add_subdirectory."""
+    from rigidsym import kernels as K
+
+    if shutil.which("cmake") is None or GCC is None or shutil.which("pkg-config") is None:
+        pytest.skip("cmake, gcc or pkg-config is not installed")
+    prefix = tmp_path / "prefix"
+    for folder in book_and_mybot:
+        build = tmp_path / f"build_{folder.name}"
+        for cmd in (["cmake", "-S", str(folder), "-B", str(build), "-DCMAKE_C_COMPILER=gcc",
+                     f"-DCMAKE_INSTALL_PREFIX={prefix}"], ["cmake", "--build", str(build)],
+                    ["cmake", "--install", str(build)]):
+            res = subprocess.run(cmd, capture_output=True, text=True)
+            assert res.returncode == 0, res.stdout + res.stderr
+    for name in ("rigidsym_c", "mybot"):
+        assert (prefix / "include" / name / f"{name}.h").is_file()
+        assert (prefix / "include" / name / f"{name}.hpp").is_file()
+        assert len(list(prefix.glob(f"lib*/**/cmake/{name}/{name}Config.cmake"))) == 1
+        assert len(list(prefix.glob(f"lib*/**/lib{name}.a"))) == 1
+    pcdir = next(prefix.glob("lib*/**/pkgconfig/mybot.pc")).parent
+    app = tmp_path / "app"
+    app.mkdir()
+    (app / "main.c").write_text(_fill(MAIN_C), encoding="utf-8")
+    (app / "CMakeLists.txt").write_text(
+        "cmake_minimum_required(VERSION 3.13)\nproject(app LANGUAGES C)\n"
+        "find_package(rigidsym_c REQUIRED)\nfind_package(mybot REQUIRED)\n"
+        "add_executable(app main.c)\nset_target_properties(app PROPERTIES C_STANDARD 99)\n"
+        f"target_compile_options(app PRIVATE {' '.join(C_STRICT[1:])})\n"
+        "target_link_libraries(app PRIVATE rigidsym_c::rigidsym_c mybot::mybot)\n",
+        encoding="utf-8")
+    configure_and_build(app, app / "b", "gcc", "g++", c_flags="-O2",
+                        extra=(f"-DCMAKE_PREFIX_PATH={prefix}",))
+    by_package = _run_lines(app / "b" / "app")
+    flags = subprocess.run(["pkg-config", "--cflags", "--libs", "rigidsym_c", "mybot"],
+                           check=True, capture_output=True, text=True,
+                           env={"PKG_CONFIG_PATH": str(pcdir), "PATH": "/usr/bin:/bin"}
+                           ).stdout.split()
+    subprocess.run([GCC, *C_STRICT, str(app / "main.c"), *flags, "-o", str(app / "plain")],
+                   check=True)
+    assert _run_lines(app / "plain") == by_package
+    assert by_package["book_twist"] == by_package["mybot_twist"]
+    assert all(v[0] == "1" for v in by_package.values())
+    want = K.twist_transfer(np.array(T_A), np.array(A_PT), np.array(P_PT))
+    assert np.allclose([float(x) for x in by_package["book_twist"][1:]], want, rtol=0,
+                       atol=1e-15)
