@@ -267,46 +267,73 @@ _REPORT_MARKS = ("[x]", "[ ]")
 
 
 def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
-                    checks: bool = True, marks: tuple[str, str] = _REPORT_MARKS) -> str:
+                    checks: bool = True, marks: tuple[str, str] = _REPORT_MARKS,
+                    typeset: bool = False) -> str:
     """Markdown rendering (LaTeX maths) for the report.
 
     ``level`` is the heading level; ``statement=False`` leaves out the quoted statement
     (a notebook shows it above), ``checks=False`` the machine checks; ``marks`` prefix
-    passed and failed checks.
+    passed and failed checks. ``typeset=True`` (the exercises page) writes the ASCII
+    mathematics of the texts (reasons, assumptions, checks, names) as ``$...$`` LaTeX in
+    book notation (:func:`rigidsym.printing.prose.prose_markdown`), as the chapter report
+    typesets its formulas; otherwise the texts are as written.
     """
+    from rigidsym.printing.prose import prose_markdown
+
+    def t(text: str) -> str:
+        return prose_markdown(text) if typeset else text
+
+    def key(k: str) -> str:
+        return t(k) if typeset else f"`{k}`"
+
     s = _view(s)
     out = [f'{"#" * level} Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
            f"*{s.citation}*", ""]
     if statement:
-        out += [f"> {s.statement}", ""]
+        out += [f"> {t(s.statement)}", ""]
     out += [f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
     if s.status in ENDED:
-        out[-2:] = [f"**Status:** {s.status}: {s.reason}", ""]
+        out[-2:] = [f"**Status:** {s.status}: {t(s.reason)}", ""]
     if s.assumptions:
         out.append("**Assumptions**")
-        out += [f"- {a}" for a in s.assumptions] + [""]
+        out += [f"- {t(a)}" for a in s.assumptions] + [""]
     if s.given:
         out.append("**Given**")
-        out += [f"- `{k}` = {_latex(v)}" for k, v in s.given.items()] + [""]
+        out += [f"- {key(k)} = {t(v) if isinstance(v, str) else _latex(v)}"
+                for k, v in s.given.items()] + [""]
     out.append("**Solution**")
     out.append("")
     for i, st in enumerate(s.steps, 1):
-        out += [f"{i}. *{st.name}*: {st.why}", "", f"   {_latex(st.expr)}", ""]
+        out += [f"{i}. *{t(st.name)}*: {t(st.why)}", "", f"   {_latex(st.expr)}", ""]
     if s.status in ENDED:
-        out += [f"**{ENDED[s.status]}:** {s.reason}", ""]
+        out += [f"**{ENDED[s.status]}:** {t(s.reason)}", ""]
         return "\n".join(out)
     out.append("**Answers**")
     out.append("")
     for k, v in s.answers.items():
         f = _float_of(v)
-        out += [f"- `{k}` = {_latex(v)}" + (f" ≈ `{f}`" if f else ""), ""]
+        out += [f"- {key(k)} = {_latex(v)}" + (f" ≈ `{f}`" if f else ""), ""]
     if s.extra:
-        out += [s.extra, ""]
+        out += [_typeset_tables(s.extra) if typeset else s.extra, ""]
     if checks:
         out += ["**Machine checks**", ""]
-        out += [f"- {marks[0] if c.passed else marks[1]} {c.name}: {c.detail}"
+        out += [f"- {marks[0] if c.passed else marks[1]} {t(c.name)}: {t(c.detail)}"
                 for c in s.checks]
         out.append("")
+    return "\n".join(out)
+
+
+def _typeset_tables(extra: str) -> str:
+    """The Markdown tables of a solution's extra text with their cells' ASCII mathematics
+    (``| `cos(phi)` |``) as ``$...$`` LaTeX; other lines as written."""
+    from rigidsym.printing.prose import prose_markdown
+
+    out = []
+    for line in extra.splitlines():
+        if line.startswith("|") and not set(line) <= set("|-: "):
+            cells = line.strip().strip("|").split("|")
+            line = "| " + " | ".join(prose_markdown(c.strip().strip("`")) for c in cells) + " |"
+        out.append(line)
     return "\n".join(out)
 
 
@@ -336,7 +363,7 @@ def render_html(s: Solution) -> str:
 
     md = MarkdownIt("commonmark", {"html": True}).enable("table")
     md.use(dollarmath_plugin, double_inline=True, renderer=render_math)
-    body = md.render(render_markdown(s, level=3, statement=False, checks=False))
+    body = md.render(render_markdown(s, level=3, statement=False, checks=False, typeset=True))
     return f'<div class="rigidsym-solution">{body}{_checks_html(s)}</div>'
 
 
