@@ -139,8 +139,8 @@ def _bracket_groups(toks: list[tuple[str, str]], kinds: list[str]) -> None:
             item = (i == j + 2 and re.fullmatch("[a-e]", toks[j + 1][1]) is not None
                     and (j == 0 or toks[j - 1][1] == "-"))
             # an equation's number, "(3.133a)": text
-            item = item or (i == j + 3 and toks[j + 1][0] == "num" and toks[j + 2][0] == "word"
-                            and len(toks[j + 2][1]) == 1)
+            item = item or (i == j + 3 and toks[j + 1][0] == "num" and "." in toks[j + 1][1]
+                            and toks[j + 2][0] == "word" and len(toks[j + 2][1]) == 1)
             if words or item:
                 kinds[j] = kinds[i] = "P"
                 if item:
@@ -169,7 +169,8 @@ def _runs(toks: list[tuple[str, str]], kinds: list[str]) -> list[tuple[bool, int
             while e > s and (kinds[e - 1] == "S" or (kinds[e - 1] == "O"
                                                       and toks[e - 1][1] not in _TRAILING)):
                 e -= 1
-            has_symbol = any(kinds[k] in "MF" for k in range(s, e))
+            has_symbol = any(kinds[k] in "MF" or toks[k][1] in ("^", "||")
+                             for k in range(s, e))
             out += [(False, i, s), (has_symbol, s, e), (False, e, j)]
         else:
             out.append((False, i, j))
@@ -214,6 +215,8 @@ def _latex(toks: list[tuple[str, str]]) -> str:
             continue
         if t in "^_" and g == "op":
             piece, i = _sup(toks, i)
+            if out and out[-1].startswith(t + "{") and len(out) > 1:
+                out[-2:] = ["{" + out[-2] + out[-1] + "}"]   # Omega^2^T: {Omega^{2}}^{T}
             out.append(t + piece[1:])
             continue
         if t == "sqrt" and _next(toks, i) == ("op", "("):

@@ -286,6 +286,9 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     def key(k: str) -> str:
         return t(k) if typeset else f"`{k}`"
 
+    def value(v) -> str:   # a value given as a string is ASCII mathematics too
+        return t(v) if isinstance(v, str) else _latex(v)
+
     s = _view(s)
     out = [f'{"#" * level} Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
            f"*{s.citation}*", ""]
@@ -299,12 +302,12 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
         out += [f"- {t(a)}" for a in s.assumptions] + [""]
     if s.given:
         out.append("**Given**")
-        out += [f"- {key(k)} = {t(v) if isinstance(v, str) else _latex(v)}"
+        out += [f"- {key(k)} = {value(v)}"
                 for k, v in s.given.items()] + [""]
     out.append("**Solution**")
     out.append("")
     for i, st in enumerate(s.steps, 1):
-        out += [f"{i}. *{t(st.name)}*: {t(st.why)}", "", f"   {_latex(st.expr)}", ""]
+        out += [f"{i}. *{t(st.name)}*: {t(st.why)}", "", f"   {value(st.expr)}", ""]
     if s.status in ENDED:
         out += [f"**{ENDED[s.status]}:** {t(s.reason)}", ""]
         return "\n".join(out)
@@ -312,7 +315,7 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     out.append("")
     for k, v in s.answers.items():
         f = _float_of(v)
-        out += [f"- {key(k)} = {_latex(v)}" + (f" ≈ `{f}`" if f else ""), ""]
+        out += [f"- {key(k)} = {value(v)}" + (f" ≈ `{f}`" if f else ""), ""]
     if s.extra:
         out += [_typeset_tables(s.extra) if typeset else s.extra, ""]
     if checks:
