@@ -366,7 +366,7 @@ def render_html(s: Solution) -> str:
 
     md = MarkdownIt("commonmark", {"html": True}).enable("table")
     md.use(dollarmath_plugin, double_inline=True, renderer=render_math)
-    body = md.render(render_markdown(s, level=3, statement=False, checks=False, typeset=True))
+    body = md.render(render_markdown(s, level=3, statement=False, checks=False))
     return f'<div class="rigidsym-solution">{body}{_checks_html(s)}</div>'
 
 
