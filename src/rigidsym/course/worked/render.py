@@ -290,7 +290,7 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
         return t(v) if isinstance(v, str) else _latex(v)
 
     s = _view(s)
-    out = [f'{"#" * level} Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
+    out = [f'{"#" * level} Exercise {s.id[2:]}: {t(s.title)} <a id="ex-{s.id[2:]}"></a>', "",
            f"*{s.citation}*", ""]
     if statement:
         out += [f"> {t(s.statement)}", ""]
