@@ -231,6 +231,9 @@ def _latex(toks: list[tuple[str, str]]) -> str:
             continue
         if t == "." and g == "op":
             out.append(r"\cdot")
+        elif g == "word" and t in _FUNCTIONS and _next(toks, i) is not None \
+                and _next(toks, i)[0] == "word":
+            out.append(_atom(g, t) + r"\,")   # tr Q, cos phi: a thin space, as TeX sets
         else:
             out.append(_atom(g, t))
         times = False
