@@ -278,13 +278,14 @@ def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
     book notation (:func:`rigidsym.printing.prose.prose_markdown`), as the chapter report
     typesets its formulas; otherwise the texts are as written.
     """
-    from rigidsym.printing.prose import prose_markdown
+    from rigidsym.printing.prose import prose_latex_runs, prose_markdown
 
     def t(text: str) -> str:
         return prose_markdown(text) if typeset else text
 
-    def key(k: str) -> str:
-        return t(k) if typeset else f"`{k}`"
+    def key(k: str) -> str:   # a name that is a formula typeset, a code name as code
+        runs = prose_latex_runs(k) if typeset else []
+        return f"${runs[0][1]}$" if [m for m, _ in runs] == [True] else f"`{k}`"
 
     def value(v) -> str:   # a value given as a string is ASCII mathematics too
         return t(v) if isinstance(v, str) else _latex(v)
