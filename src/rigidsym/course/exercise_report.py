@@ -69,7 +69,7 @@ def _bundle_path() -> Path:
     from rigidsym.core import cache as _cache
     from rigidsym.course.worked import parameters, read_data, solution_store
 
-    h = hashlib.sha256(b"exercise report 1\0")  # the keys name the package's digest
+    h = hashlib.sha256(b"exercise report 2\0")  # the keys name the package's digest
     for i in EXERCISE_IDS:
         d = read_data(parameters(i), {}, None)
         h.update(solution_store.path(i, exercise_module(i).__name__, d).name.encode())
@@ -97,7 +97,7 @@ def _render() -> dict[str, str]:
     parts.append("")
     figures: dict[str, str] = {}
     for s in sols:
-        parts.append(render_markdown(s))
+        parts.append(render_markdown(s, typeset=True))
         image = _figure(s, figures)
         if image:
             parts += [image, ""]

@@ -19,7 +19,7 @@ import unicodedata
 
 from rigidsym.printing.names import GREEK, book_latex, book_text
 
-__all__ = ["label_text", "label_latex", "latex_text", "latex_spans"]
+__all__ = ["label_text", "label_latex", "latex_text", "latex_spans", "math_token"]
 
 _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
               "bar": "\u0304"}
@@ -69,6 +69,13 @@ def _book_forms(text: str) -> str:
 
 def _mathy(tok: str) -> bool:
     return len(tok) == 1 or bool(_MATH_TOKEN.match(tok))
+
+
+def math_token(tok: str) -> bool:
+    """Whether the ASCII word ``tok`` is a symbol however it is read (one letter, a Greek
+    name, a name with a subscript or an accent: ``p0``, ``n_O``, ``omega_dot``), never an
+    English word."""
+    return _mathy(tok)
 
 
 def _token(tok: str) -> str:

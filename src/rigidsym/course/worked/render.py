@@ -267,46 +267,77 @@ _REPORT_MARKS = ("[x]", "[ ]")
 
 
 def render_markdown(s: Solution, *, level: int = 2, statement: bool = True,
-                    checks: bool = True, marks: tuple[str, str] = _REPORT_MARKS) -> str:
+                    checks: bool = True, marks: tuple[str, str] = _REPORT_MARKS,
+                    typeset: bool = False) -> str:
     """Markdown rendering (LaTeX maths) for the report.
 
     ``level`` is the heading level; ``statement=False`` leaves out the quoted statement
     (a notebook shows it above), ``checks=False`` the machine checks; ``marks`` prefix
-    passed and failed checks.
+    passed and failed checks. ``typeset=True`` (the exercises page) writes the ASCII
+    mathematics of the texts (reasons, assumptions, checks, names) as ``$...$`` LaTeX in
+    book notation (:func:`rigidsym.printing.prose.prose_markdown`), as the chapter report
+    typesets its formulas; otherwise the texts are as written.
     """
+    from rigidsym.printing.prose import prose_latex_runs, prose_markdown
+
+    def t(text: str) -> str:
+        return prose_markdown(text) if typeset else text
+
+    def key(k: str) -> str:   # a name that is a formula typeset, a code name as code
+        runs = prose_latex_runs(k) if typeset else []
+        return f"${runs[0][1]}$" if [m for m, _ in runs] == [True] else f"`{k}`"
+
+    def value(v) -> str:   # a value given as a string is ASCII mathematics too
+        return t(v) if isinstance(v, str) else _latex(v)
+
     s = _view(s)
-    out = [f'{"#" * level} Exercise {s.id[2:]}: {s.title} <a id="ex-{s.id[2:]}"></a>', "",
+    out = [f'{"#" * level} Exercise {s.id[2:]}: {t(s.title)} <a id="ex-{s.id[2:]}"></a>', "",
            f"*{s.citation}*", ""]
     if statement:
-        out += [f"> {s.statement}", ""]
+        out += [f"> {t(s.statement)}", ""]
     out += [f"**Status:** {s.status}; **checked:** {str(s.checked).lower()}", ""]
     if s.status in ENDED:
-        out[-2:] = [f"**Status:** {s.status}: {s.reason}", ""]
+        out[-2:] = [f"**Status:** {s.status}: {t(s.reason)}", ""]
     if s.assumptions:
         out.append("**Assumptions**")
-        out += [f"- {a}" for a in s.assumptions] + [""]
+        out += [f"- {t(a)}" for a in s.assumptions] + [""]
     if s.given:
         out.append("**Given**")
-        out += [f"- `{k}` = {_latex(v)}" for k, v in s.given.items()] + [""]
+        out += [f"- {key(k)} = {value(v)}"
+                for k, v in s.given.items()] + [""]
     out.append("**Solution**")
     out.append("")
     for i, st in enumerate(s.steps, 1):
-        out += [f"{i}. *{st.name}*: {st.why}", "", f"   {_latex(st.expr)}", ""]
+        out += [f"{i}. *{t(st.name)}*: {t(st.why)}", "", f"   {value(st.expr)}", ""]
     if s.status in ENDED:
-        out += [f"**{ENDED[s.status]}:** {s.reason}", ""]
+        out += [f"**{ENDED[s.status]}:** {t(s.reason)}", ""]
         return "\n".join(out)
     out.append("**Answers**")
     out.append("")
     for k, v in s.answers.items():
         f = _float_of(v)
-        out += [f"- `{k}` = {_latex(v)}" + (f" ≈ `{f}`" if f else ""), ""]
+        out += [f"- {key(k)} = {value(v)}" + (f" ≈ `{f}`" if f else ""), ""]
     if s.extra:
-        out += [s.extra, ""]
+        out += [_typeset_tables(s.extra) if typeset else s.extra, ""]
     if checks:
         out += ["**Machine checks**", ""]
-        out += [f"- {marks[0] if c.passed else marks[1]} {c.name}: {c.detail}"
+        out += [f"- {marks[0] if c.passed else marks[1]} {t(c.name)}: {t(c.detail)}"
                 for c in s.checks]
         out.append("")
+    return "\n".join(out)
+
+
+def _typeset_tables(extra: str) -> str:
+    """The Markdown tables of a solution's extra text with their cells' ASCII mathematics
+    (``| `cos(phi)` |``) as ``$...$`` LaTeX; other lines as written."""
+    from rigidsym.printing.prose import prose_markdown
+
+    out = []
+    for line in extra.splitlines():
+        if line.startswith("|") and not set(line) <= set("|-: "):
+            cells = line.strip().strip("|").split("|")
+            line = "| " + " | ".join(prose_markdown(c.strip().strip("`")) for c in cells) + " |"
+        out.append(line)
     return "\n".join(out)
 
 
