@@ -3,7 +3,7 @@ build-c, audit, cache, glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected and, where there is one, the
-next step).
+next step), 130 = interrupted (SIGINT or SIGTERM: one line saying what was kept, issue 69).
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import os
 import re
+import signal
 import sys
 
 from rigidsym.cli import (
@@ -27,6 +28,7 @@ from rigidsym.cli import (
     verify,
 )
 from rigidsym.cli.common import HelpFormatter, add_ascii, ascii_output
+from rigidsym.core import interrupts
 from rigidsym.core import work as _work
 from rigidsym.core.errors import did_you_mean
 
@@ -94,8 +96,24 @@ def main(argv: list[str] | None = None) -> int:
 
     Returns:
         int: the exit code, 0 when all is as expected, 1 when a verdict differs from its
-        expectation (or a check failed), 2 on bad input.
+        expectation (or a check failed), 2 on bad input, 130 when interrupted (SIGINT or
+        SIGTERM; the finished work is kept in the user cache and one line says how much).
     """
+    interrupts.install()
+    interrupts.reset()
+    try:
+        return _main(argv)
+    except KeyboardInterrupt:  # SIGINT or SIGTERM: the work kept, one line, no traceback
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second Ctrl-C: no traceback
+        try:
+            print(f"rigidsym: {interrupts.line()}", file=sys.__stderr__, flush=True)
+            _work.dump()
+        finally:
+            signal.signal(signal.SIGINT, signal.default_int_handler)
+        return interrupts.EXIT
+
+
+def _main(argv: list[str] | None) -> int:
     parser = build_parser()
 
     def _error(where: str):
