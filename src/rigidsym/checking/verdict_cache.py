@@ -34,7 +34,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import marshal
 import os
 import site
 import sys
@@ -181,7 +180,8 @@ def _digest(parts: list[str], eq_id: str) -> str:
         h.update(part.encode() + b"\0")
     # version 2: no back-references, whose use depends on reference counts at the time
     # (a key computed after a check differed from one computed before it)
-    h.update(marshal.dumps(REGISTRY[eq_id].build_fn.__code__, 2))
+    # version 3 (issue 69): without the file's path, which an install moves
+    h.update(_sources.code_bytes(REGISTRY[eq_id].build_fn.__code__))
     return h.hexdigest()
 
 

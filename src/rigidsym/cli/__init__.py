@@ -106,7 +106,7 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:  # SIGINT or SIGTERM: the work kept, one line, no traceback
         signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second Ctrl-C: no traceback
         try:
-            print(f"rigidsym: {interrupts.line()}", file=sys.__stderr__, flush=True)
+            print(f"rigidsym: {interrupts.line()}", file=sys.stderr, flush=True)
             _work.dump()
         finally:
             signal.signal(signal.SIGINT, signal.default_int_handler)
