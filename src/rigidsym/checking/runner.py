@@ -16,7 +16,7 @@ from rigidsym.core import interrupts
 from rigidsym.core import work as _work
 from rigidsym.core.progress import Reporter, load_durations, save_durations
 
-__all__ = ["run_checks", "verdict_words", "Extra"]
+__all__ = ["run_checks", "check_cached", "verdict_words", "Extra"]
 
 
 @dataclass(frozen=True)
@@ -79,6 +79,31 @@ def _decide(eq_id: str, settings: RepairSettings, expanded: bool, key: str | Non
         r = _check_one(eq_id, settings, expanded)
         verdict_cache.store([r], {eq_id: key})  # per id: an interrupt keeps it (issue 69)
         return r
+
+
+def check_cached(eq_id: str, repairs: bool = True, repair_budget: int | None = None,
+                 expanded: bool = True, cache: bool = True):
+    """One id through the verdict cache (``rigidsym show``, :func:`rigidsym.api.check`):
+    read where ``verdict``, ``report`` or an earlier call stored it under the same key,
+    else checked and stored (issue 69: one store of decided work).
+
+    Args:
+        eq_id: a registered id.
+        repairs, repair_budget: those of :func:`rigidsym.checking.checker.check` (they
+            join the key).
+        expanded: the expanded strings are wanted (a result stored without them is then
+            checked again).
+        cache: ``False`` checks and stores nothing.
+
+    Returns:
+        The :class:`~rigidsym.checking.checker.Outcome` (``cached`` true when read).
+
+    Raises:
+        KeyError: for an id that is not registered.
+    """
+    settings = RepairSettings(repairs, repair_budget)
+    key = verdict_cache.key_of(eq_id, {}, settings) if cache else None
+    return _decide(eq_id, settings, expanded, key)
 
 
 def _decided(ids: list[str], settings: RepairSettings, expanded: bool, keys: dict):
