@@ -8,11 +8,25 @@ next step), 130 = interrupted (SIGINT or SIGTERM: one line saying what was kept,
 
 from __future__ import annotations
 
-import argparse
 import os
-import re
 import signal
 import sys
+
+
+def _loading(signum, frame) -> None:  # noqa: ARG001 - a signal handler's signature
+    """SIGINT or SIGTERM while the command loads, before :func:`main` runs: nothing was
+    done yet; one line, exit 130, no traceback (issue 69)."""
+    os.write(2, b"rigidsym: interrupted while starting; nothing was done\n")
+    os._exit(130)
+
+
+for _sig in (signal.SIGINT, signal.SIGTERM):
+    if signal.getsignal(_sig) is not signal.SIG_IGN:  # ignored (nohup, a background job)
+        signal.signal(_sig, _loading)
+
+# ruff: noqa: E402 - the imports below come after the handlers above
+import argparse
+import re
 
 from rigidsym.cli import (
     audit,

@@ -35,10 +35,13 @@ def _raise(signum, frame) -> None:  # noqa: ARG001 - a signal handler's signatur
 
 def install() -> None:
     """SIGTERM raises ``KeyboardInterrupt`` as SIGINT does (main thread only; elsewhere,
-    where handlers cannot be set, nothing changes)."""
-    if threading.current_thread() is threading.main_thread():
-        signal.signal(signal.SIGTERM, _raise)
-        signal.signal(signal.SIGINT, signal.default_int_handler)
+    where handlers cannot be set, nothing changes; a signal the process was started
+    ignoring, as ``nohup`` or a shell's background job does, stays ignored)."""
+    if threading.current_thread() is not threading.main_thread():
+        return
+    for sig, handler in ((signal.SIGTERM, _raise), (signal.SIGINT, signal.default_int_handler)):
+        if signal.getsignal(sig) is not signal.SIG_IGN:
+            signal.signal(sig, handler)
 
 
 def for_worker() -> None:
