@@ -113,10 +113,15 @@ def main(argv: list[str] | None = None) -> int:
         expectation (or a check failed), 2 on bad input, 130 when interrupted (SIGINT or
         SIGTERM; the finished work is kept in the user cache and one line says how much).
     """
+    saved = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
     interrupts.install()
     interrupts.reset()
     try:
-        return _main(argv)
+        code = _main(argv)
+        if argv is None:  # the program: done and written; an interrupt now changes nothing
+            for sig in saved:
+                signal.signal(sig, signal.SIG_IGN)
+        return code
     except KeyboardInterrupt:  # SIGINT or SIGTERM: the work kept, one line, no traceback
         signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second Ctrl-C: no traceback
         try:
@@ -125,6 +130,11 @@ def main(argv: list[str] | None = None) -> int:
         finally:
             signal.signal(signal.SIGINT, signal.default_int_handler)
         return interrupts.EXIT
+    finally:
+        if argv is not None:  # called in a process of the caller's (a test): as it was
+            for sig, handler in saved.items():
+                if handler is not None:
+                    signal.signal(sig, handler)
 
 
 def _main(argv: list[str] | None) -> int:
