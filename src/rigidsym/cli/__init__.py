@@ -20,9 +20,18 @@ def _loading(signum, frame) -> None:  # noqa: ARG001 - a signal handler's signat
     os._exit(130)
 
 
-for _sig in (signal.SIGINT, signal.SIGTERM):
-    if signal.getsignal(_sig) is not signal.SIG_IGN:  # ignored (nohup, a background job)
-        signal.signal(_sig, _loading)
+def _is_the_program() -> bool:
+    """Whether this process is the ``rigidsym`` command (its script, ``python -m
+    rigidsym``), not a program that imports the package (a notebook, a test runner)."""
+    spec = getattr(sys.modules.get("__main__"), "__spec__", None)
+    return getattr(spec, "name", None) == "rigidsym.__main__" or \
+        os.path.basename(sys.argv[0] if sys.argv else "") in ("rigidsym", "rigidsym.exe")
+
+
+if _is_the_program():
+    for _sig in (signal.SIGINT, signal.SIGTERM):
+        if signal.getsignal(_sig) is not signal.SIG_IGN:  # ignored: nohup, a background job
+            signal.signal(_sig, _loading)
 
 # ruff: noqa: E402 - the imports below come after the handlers above
 import argparse

@@ -79,8 +79,9 @@ def reset() -> None:
 
 def line() -> str:
     """The one line an interrupted command prints: ``interrupted: 37 of 181 ids kept; run
-    again to continue`` (or, when it stored no counted work, ``interrupted; run again``)."""
+    again to continue`` (or, for a command that counts no ids, ``interrupted; run again to
+    continue``: what it writes, it writes whole)."""
     if _KEPT[0] is None:
-        return "interrupted; nothing finished was lost; run again to continue"
+        return "interrupted; run again to continue"
     kept, total, what = _KEPT[0]
     return f"interrupted: {kept} of {total} {what} kept; run again to continue"
