@@ -49,7 +49,7 @@ def _repair_args(repairs, repair_budget) -> None:
 
 
 def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = True,
-          repair_budget: int | None = None) -> Result:
+          repair_budget: int | None = None, cache: bool = True) -> Result:
     """Decide one equation and back the verdict numerically.
 
     Args:
@@ -60,6 +60,9 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
             hold (``Result.repairs``; README, "Repairs").
         repair_budget: candidates tried per failing member (``None``: the declaration's
             ``repair_budget``, else 5000).
+        cache: read the result from the verdict cache that :func:`verify` and the
+            commands fill (``Result.cached`` then true) and store it there; ``False``
+            checks it again and stores nothing.
 
     Returns:
         The :class:`Result`; its ``verdict`` is computed, never read from the declaration.
@@ -68,18 +71,21 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
     Raises:
         BadInput: for a malformed or unknown id, an id with several lettered parts
             (``"3.96"``: use :func:`verify`), or a user module that cannot be loaded.
-        ValueError: if ``repairs`` is not a bool or ``repair_budget`` not a non-negative
-            integer.
+        ValueError: if ``repairs`` or ``cache`` is not a bool or ``repair_budget`` not a
+            non-negative integer.
     """
-    from rigidsym.checking.checker import check as _check
+    from rigidsym.checking.runner import check_cached
 
     _repair_args(repairs, repair_budget)
+    if not isinstance(cache, bool):
+        raise ValueError(f"cache: expected True or False, got {cache!r}")
     _load(modules)
     ids = select([eq_id], None)
     if len(ids) != 1:
         raise BadInput(f"eq_id: {eq_id} has {len(ids)} parts ({', '.join(ids)}): check one, "
                        f"or verify([{eq_id!r}])")
-    return Result.of(_check(ids[0], repairs=repairs, repair_budget=repair_budget))
+    return Result.of(check_cached(ids[0], repairs=repairs, repair_budget=repair_budget,
+                                  cache=cache))
 
 
 #: the default time limit of check_latex's repair search, seconds (issue 52, item 6)

@@ -12,10 +12,11 @@ from functools import partial
 
 from rigidsym.checking import verdict_cache
 from rigidsym.checking.repairing.correction import RepairSettings
+from rigidsym.core import interrupts
 from rigidsym.core import work as _work
 from rigidsym.core.progress import Reporter, load_durations, save_durations
 
-__all__ = ["run_checks", "verdict_words", "Extra"]
+__all__ = ["run_checks", "check_cached", "verdict_words", "Extra"]
 
 
 @dataclass(frozen=True)
@@ -49,6 +50,7 @@ _STARTED = None  # the start queue, in a worker (set by the pool's initializer)
 def _init_worker(queue) -> None:
     global _STARTED
     _STARTED = queue
+    interrupts.for_worker()
 
 
 def _check_one(eq_id: str, settings: RepairSettings | None = None, expanded: bool = True):
@@ -60,15 +62,72 @@ def _check_one(eq_id: str, settings: RepairSettings | None = None, expanded: boo
                  expanded=expanded)
 
 
+def _decide(eq_id: str, settings: RepairSettings, expanded: bool, key: str | None,
+            wait: bool = True):
+    """The result of ``eq_id``: checked and stored under ``key`` while its lock is held
+    (:func:`rigidsym.checking.verdict_cache.claimed`), or read from the cache where another
+    process stored it meanwhile; ``None`` when another process is deciding it and not
+    ``wait``. Without a key (no cache, or never cached): checked."""
+    if key is None:
+        return _check_one(eq_id, settings, expanded)
+    with verdict_cache.claimed(key, wait) as held:
+        if not held:
+            return None
+        hit = verdict_cache.read(eq_id, key, expanded)
+        if hit is not None:
+            return hit
+        r = _check_one(eq_id, settings, expanded)
+        verdict_cache.store([r], {eq_id: key})  # per id: an interrupt keeps it (issue 69)
+        return r
+
+
+def check_cached(eq_id: str, repairs: bool = True, repair_budget: int | None = None,
+                 expanded: bool = True, cache: bool = True):
+    """One id through the verdict cache (``rigidsym show``, :func:`rigidsym.api.check`):
+    read where ``verdict``, ``report`` or an earlier call stored it under the same key,
+    else checked and stored (issue 69: one store of decided work).
+
+    Args:
+        eq_id: a registered id.
+        repairs, repair_budget: those of :func:`rigidsym.checking.checker.check` (they
+            join the key).
+        expanded: the expanded strings are wanted (a result stored without them is then
+            checked again).
+        cache: ``False`` checks and stores nothing.
+
+    Returns:
+        The :class:`~rigidsym.checking.checker.Outcome` (``cached`` true when read).
+
+    Raises:
+        KeyError: for an id that is not registered.
+    """
+    settings = RepairSettings(repairs, repair_budget)
+    key = verdict_cache.key_of(eq_id, {}, settings) if cache else None
+    return _decide(eq_id, settings, expanded, key)
+
+
+def _decided(ids: list[str], settings: RepairSettings, expanded: bool, keys: dict):
+    """``(id, result)`` of each of ``ids``: those another process is deciding last, once it
+    has (two runs at once share the work rather than both doing all of it)."""
+    later = []
+    for i in ids:
+        r = _decide(i, settings, expanded, keys.get(i), wait=False)
+        if r is None:
+            later.append(i)
+        else:
+            yield i, r
+    for i in later:
+        yield i, _decide(i, settings, expanded, keys.get(i), wait=True)
+
+
 def _check_group(ids: list[str], settings: RepairSettings | None = None,
                  expanded: bool = True, extra: Extra | None = None,
-                 extra_ids: frozenset = frozenset()):
+                 extra_ids: frozenset = frozenset(), keys: dict | None = None):
     """Check a group of ids in one worker, each result sent on the queue as it is known
     (so that progress stays per id), the ``extra`` result of each of ``extra_ids`` after
     it; returns the work the worker counted (:mod:`rigidsym.core.work`)."""
     before = _work.snapshot()
-    for i in ids:
-        r = _check_one(i, settings, expanded)
+    for i, r in _decided(ids, settings or RepairSettings(), expanded, keys or {}):
         if i in extra_ids:
             _STARTED.put(("extra", i, extra.compute(i)))
         _STARTED.put(("done", r))
@@ -183,7 +242,6 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
         The :class:`~rigidsym.checking.checker.Outcome` of each id, in the order of ``ids``.
     """
     settings = RepairSettings(repairs, repair_budget)
-    one = partial(_check_one, settings=settings, expanded=expanded)
     hits, keys = ({}, {})
     if cache:
         hits, keys = verdict_cache.lookup(ids, settings)
@@ -191,35 +249,46 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
             hits = {i: r for i, r in hits.items() if r.derived is not None}
     results = dict(hits)
     todo = [i for i in ids if i not in hits]
+    try:
+        _run(ids, todo, results, jobs, progress, reporter, settings, expanded, extra, keys)
+    except KeyboardInterrupt:  # what the workers stored is kept; the command says so
+        interrupts.note_kept(verdict_cache.present(keys), len(ids))
+        raise
+    finally:
+        save_durations(DURATIONS, {i: results[i].seconds for i in todo
+                                   if i in results and not results[i].cached})
+    interrupts.note_kept(verdict_cache.present(keys), len(ids))
+    return [results[i] for i in ids]
+
+
+def _run(ids, todo, results, jobs, progress, reporter, settings, expanded, extra, keys):
+    """The checks of :func:`run_checks`: ``todo`` over the workers, results into
+    ``results``, each stored as it is decided (under ``keys``)."""
+    hits = len(ids) - len(todo)
     extra_ids = frozenset(extra.missing(ids)) if extra else frozenset()
     rep = reporter or Reporter("rigidsym verify", enabled=progress)
     est = _Estimate(todo, jobs)
-    what = f"checking {len(ids)} ids" + (f" ({len(hits)} from the cache)" if hits else "")
+    what = f"checking {len(ids)} ids" + (f" ({hits} from the cache)" if hits else "")
     with (nullcontext(rep) if reporter else rep), \
             rep.phase(what, total=len(ids), doing="starting") as ph:
         if hits:
-            ph.advance(len(hits), label=f"{len(hits)} from the verdict cache")
+            ph.advance(hits, label=f"{hits} from the verdict cache")
         if jobs > 1 and len(todo) > 1:
             _parallel(est, min(jobs, len(todo)), ph, results,
                       partial(_check_group, settings=settings, expanded=expanded,
-                              extra=extra, extra_ids=extra_ids), extra)
+                              extra=extra, extra_ids=extra_ids, keys=keys), extra)
         else:
-            for i in todo:
-                running = {i: time.time()}
-                ph.label(f"checking {i}")
-                ph.estimate(est.left(running))
-                results[i] = one(i)
+            ph.label(f"checking {todo[0]}" if todo else "checking")
+            ph.estimate(est.left({todo[0]: time.time()} if todo else {}))
+            for i, r in _decided(todo, settings, expanded, keys):
+                results[i] = r
                 if i in extra_ids:
                     extra.keep(i, extra.compute(i))
-                _finished(results[i], est, ph, {})
+                _finished(r, est, ph, {})
         ph.finish(_summary(results.values()))
     rest = [i for i in ids if i in extra_ids and i not in todo]
     if rest:
         _extras(rest, jobs, extra, rep)
-    if cache and todo:
-        verdict_cache.store([results[i] for i in todo], keys)
-    save_durations(DURATIONS, {i: results[i].seconds for i in todo})
-    return [results[i] for i in ids]
 
 
 def _finished(r, est: _Estimate, ph, running: dict) -> None:
@@ -245,7 +314,8 @@ def _extras(ids: list[str], jobs: int, extra: Extra, rep: Reporter) -> None:
         if jobs > 1 and len(groups) > 1:
             import multiprocessing as mp
 
-            with mp.get_context("fork").Pool(min(jobs, len(groups))) as pool:
+            with mp.get_context("fork").Pool(min(jobs, len(groups)),
+                                             initializer=interrupts.for_worker) as pool:
                 for out, work in pool.imap_unordered(partial(_extra_group, extra=extra),
                                                      list(groups.values())):
                     _work.merge(work)

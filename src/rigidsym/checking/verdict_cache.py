@@ -34,11 +34,13 @@ from __future__ import annotations
 
 import hashlib
 import json
-import marshal
+import os
 import site
 import sys
 import sysconfig
 import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import fields
 from functools import cache
 from pathlib import Path
@@ -51,7 +53,8 @@ from rigidsym.core.settings import ENGINE
 from rigidsym.registry import usermodules
 from rigidsym.registry.declarations import REGISTRY, Equation, is_user_id
 
-__all__ = ["lookup", "store", "key_of", "transcription_key", "VerdictCacheWarning", "FORMAT"]
+__all__ = ["lookup", "store", "key_of", "transcription_key", "VerdictCacheWarning", "FORMAT",
+           "read", "claimed", "present"]
 
 #: version of the entry format (an entry of another format is foreign)
 FORMAT = 1
@@ -177,7 +180,8 @@ def _digest(parts: list[str], eq_id: str) -> str:
         h.update(part.encode() + b"\0")
     # version 2: no back-references, whose use depends on reference counts at the time
     # (a key computed after a check differed from one computed before it)
-    h.update(marshal.dumps(REGISTRY[eq_id].build_fn.__code__, 2))
+    # version 3 (issue 69): without the file's path, which an install moves
+    h.update(_sources.code_bytes(REGISTRY[eq_id].build_fn.__code__))
     return h.hexdigest()
 
 
@@ -231,6 +235,52 @@ def transcription_key(eq_id: str, _deps: dict | None = None) -> str | None:
 # --------------------------------------------------------------------------- entries
 def _path(key: str) -> Path:
     return _cache.folder("verdicts") / key[:2] / f"{key}.json"
+
+
+def present(keys: dict) -> int:
+    """How many of ``keys`` (``id -> key``, ``None``: never cached) have an entry stored
+    (what an interrupted run kept, issue 69)."""
+    return sum(1 for k in keys.values() if k and _path(k).exists())
+
+
+@contextmanager
+def claimed(key: str, wait: bool = True) -> Iterator[bool]:
+    """Hold the lock of one key while its id is decided and stored, so that two processes
+    share the work rather than both doing it (issue 69): ``<verdicts>/ab/<key>.lock``,
+    locked with ``flock``, which the system releases when the holder exits or is killed.
+
+    Args:
+        key: the id's cache key (:func:`key_of`).
+        wait: wait for another holder; ``False`` yields ``False`` at once when it is held.
+
+    Yields:
+        Whether this process holds the lock (always ``True`` with ``wait``, and where
+        ``fcntl`` is missing, not POSIX: no sharing there).
+    """
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - not POSIX
+        yield True
+        return
+    where = _cache.folder("verdicts") / key[:2]
+    where.mkdir(parents=True, exist_ok=True)
+    fd = os.open(where / f"{key}.lock", os.O_RDWR | os.O_CREAT, 0o666)
+    try:
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
+        except BlockingIOError:
+            yield False
+            return
+        yield True
+    finally:
+        os.close(fd)  # releases the lock
+
+
+def read(eq_id: str, key: str, expanded: bool = False):
+    """The stored result of ``eq_id`` under ``key`` (``Outcome.cached`` true), or ``None``;
+    with ``expanded``, ``None`` also for a result stored without its expanded strings."""
+    r = _read(eq_id, key)
+    return None if r is None or (expanded and r.derived is None) else r
 
 
 def _read(eq_id: str, key: str):

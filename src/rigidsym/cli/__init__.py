@@ -3,15 +3,39 @@ build-c, audit, cache, glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected and, where there is one, the
-next step).
+next step), 130 = interrupted (SIGINT or SIGTERM: one line saying what was kept, issue 69).
 """
 
 from __future__ import annotations
 
-import argparse
 import os
-import re
+import signal
 import sys
+
+
+def _loading(signum, frame) -> None:  # noqa: ARG001 - a signal handler's signature
+    """SIGINT or SIGTERM while the command loads, before :func:`main` runs: nothing was
+    done yet; one line, exit 130, no traceback (issue 69)."""
+    os.write(2, b"rigidsym: interrupted while starting; nothing was done\n")
+    os._exit(130)
+
+
+def _is_the_program() -> bool:
+    """Whether this process is the ``rigidsym`` command (its script, ``python -m
+    rigidsym``), not a program that imports the package (a notebook, a test runner)."""
+    spec = getattr(sys.modules.get("__main__"), "__spec__", None)
+    return getattr(spec, "name", None) == "rigidsym.__main__" or \
+        os.path.basename(sys.argv[0] if sys.argv else "") in ("rigidsym", "rigidsym.exe")
+
+
+if _is_the_program():
+    for _sig in (signal.SIGINT, signal.SIGTERM):
+        if signal.getsignal(_sig) is not signal.SIG_IGN:  # ignored: nohup, a background job
+            signal.signal(_sig, _loading)
+
+# ruff: noqa: E402 - the imports below come after the handlers above
+import argparse
+import re
 
 from rigidsym.cli import (
     audit,
@@ -27,6 +51,7 @@ from rigidsym.cli import (
     verify,
 )
 from rigidsym.cli.common import HelpFormatter, add_ascii, ascii_output
+from rigidsym.core import interrupts
 from rigidsym.core import work as _work
 from rigidsym.core.errors import did_you_mean
 
@@ -94,8 +119,34 @@ def main(argv: list[str] | None = None) -> int:
 
     Returns:
         int: the exit code, 0 when all is as expected, 1 when a verdict differs from its
-        expectation (or a check failed), 2 on bad input.
+        expectation (or a check failed), 2 on bad input, 130 when interrupted (SIGINT or
+        SIGTERM; the finished work is kept in the user cache and one line says how much).
     """
+    saved = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
+    interrupts.install()
+    interrupts.reset()
+    try:
+        code = _main(argv)
+        if argv is None:  # the program: done and written; an interrupt now changes nothing
+            for sig in saved:
+                signal.signal(sig, signal.SIG_IGN)
+        return code
+    except KeyboardInterrupt:  # SIGINT or SIGTERM: the work kept, one line, no traceback
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second Ctrl-C: no traceback
+        try:
+            print(f"rigidsym: {interrupts.line()}", file=sys.stderr, flush=True)
+            _work.dump()
+        finally:
+            signal.signal(signal.SIGINT, signal.default_int_handler)
+        return interrupts.EXIT
+    finally:
+        if argv is not None:  # called in a process of the caller's (a test): as it was
+            for sig, handler in saved.items():
+                if handler is not None:
+                    signal.signal(sig, handler)
+
+
+def _main(argv: list[str] | None) -> int:
     parser = build_parser()
 
     def _error(where: str):

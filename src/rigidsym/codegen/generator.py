@@ -170,7 +170,9 @@ def _compile_all(todo: list, plan32: bool = True) -> list[KernelCode]:
     _TODO[:] = todo
     _PLAN32[0] = plan32
     try:
-        with mp.get_context("fork").Pool(jobs) as pool:
+        from rigidsym.core.interrupts import for_worker
+
+        with mp.get_context("fork").Pool(jobs, initializer=for_worker) as pool:
             parts = pool.map(_compile_index, range(len(todo)), chunksize=1)
     finally:
         _TODO.clear()

@@ -11,7 +11,9 @@ package, not a lock of our own: parallel first-use writers into one cache otherw
 and write through :func:`put` (a temporary file and a rename, so a reader never sees half
 an entry). :func:`get` returns ``None`` for a missing entry and for one whose SHA-256 does
 not match what :func:`put` recorded (truncated, overwritten, foreign), so a corrupt entry is
-recomputed, never trusted. Imports nothing else of rigidsym but :mod:`rigidsym.core.files`.
+recomputed, never trusted. An interrupt (SIGINT, SIGTERM) waits while :func:`put` writes
+(:func:`rigidsym.core.interrupts.deferred`): an entry is whole or absent (issue 69). Imports
+nothing else of rigidsym but :mod:`rigidsym.core.files` and :mod:`rigidsym.core.interrupts`.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from rigidsym.core.files import write_atomic_bytes
+from rigidsym.core.interrupts import deferred
 
 __all__ = ["root", "folder", "lock", "put", "get", "digest", "info", "clear", "KINDS"]
 
@@ -75,9 +78,11 @@ def digest(data: bytes) -> str:
 
 def put(path: Path, data: bytes) -> Path:
     """Write ``data`` to ``path`` and its checksum to ``path.sha256``, each atomically
-    (the checksum last: an entry without a matching checksum is never read)."""
-    write_atomic_bytes(path, data)
-    write_atomic_bytes(path.with_name(path.name + ".sha256"), digest(data).encode())
+    (the checksum last: an entry without a matching checksum is never read); an interrupt
+    waits until both are written."""
+    with deferred():
+        write_atomic_bytes(path, data)
+        write_atomic_bytes(path.with_name(path.name + ".sha256"), digest(data).encode())
     return path
 
 

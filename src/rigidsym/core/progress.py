@@ -151,18 +151,24 @@ class Reporter:
             ph._task = self.bar.add_task(doing or what, total=total, eta="")
         elif self.enabled:
             print(f"{self.command}: {what} ...", file=self._stream(), flush=True)
-        failed = True
+        failed, stopped = True, False
         try:
             yield ph
             failed = False
+        except KeyboardInterrupt:  # the command's one line says it (issue 69): no ✓
+            stopped = True
+            raise
         finally:
             took = format_seconds(time.perf_counter() - ph.t0)
             if self.bar is not None:
                 self.bar.remove_task(ph._task)
             tail = f": {ph.summary}" if ph.summary else ""
-            if self.bar is not None:
+            if stopped:
+                pass
+            elif self.bar is not None:
                 if self.keep:
-                    self.say(f"✓ {what}: {took}{tail}")
+                    self.say(f"{'✗' if failed else '✓'} {what}: "
+                             f"{'stopped after ' if failed else ''}{took}{tail}")
             elif self.enabled:
                 ended = "stopped after" if failed else "done in"
                 print(f"{self.command}: {what}: {ended} {took}{tail}", file=self._stream(),

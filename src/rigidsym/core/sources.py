@@ -22,7 +22,7 @@ from pathlib import Path
 from rigidsym.core import config as _config
 
 __all__ = ["file_digest", "package_roots", "package_digest", "machinery_digest",
-           "imported_names", "book_module_files", "environment"]
+           "imported_names", "book_module_files", "environment", "is_built", "code_bytes"]
 
 
 def file_digest(path: Path) -> str:
@@ -51,22 +51,66 @@ def _book_root() -> Path | None:
     return Path(locs[0]).resolve() if locs else None
 
 
-def _files(book_py: bool):
-    book = _book_root()
+def is_built(path: Path) -> bool:
+    """Whether ``path`` is an output of the package's build rather than a source: the C
+    kernels' extension module and its build record (``_ckernels.build.json``), which
+    differ between a regular and an editable install of the same sources (issue 69), and
+    compiled ``__pycache__`` files."""
+    import importlib.machinery
+
+    return ("__pycache__" in path.parts or path.suffix == ".pyc"
+            or path.name.endswith(tuple(importlib.machinery.EXTENSION_SUFFIXES))
+            or path.name.endswith(".build.json"))
+
+
+@cache
+def _generated_root() -> Path | None:
+    spec = importlib.util.find_spec("rigidsym.generated")
+    locs = list(spec.submodule_search_locations or []) if spec else []
+    return Path(locs[0]).resolve() if locs else None
+
+
+def _files(book_py: bool) -> list[tuple[str, Path]]:
+    """``(name, path)`` of the package's source files, named as they are in an installed
+    wheel (``derivations/sec3_2.py``) whether the book lies inside the package's folder (a
+    regular install) or beside it (an editable one), sorted by name: the digest is the
+    same for the same sources however installed (issue 69). ``rigidsym.generated`` is left
+    out: the generator's output, made from sources the digest covers."""
+    book, generated = _book_root(), _generated_root()
+    prefix = _config.BOOK.split(".", 1)[1].replace(".", "/") + "/"
+    out = []
     for k, root in enumerate(package_roots()):
-        for p in sorted(root.rglob("*")):
-            if not p.is_file() or "__pycache__" in p.parts or p.suffix == ".pyc":
+        for p in root.rglob("*"):
+            if not p.is_file() or is_built(p) or (generated is not None and
+                                                   generated in p.parents):
                 continue
-            if not book_py and p.suffix == ".py" and book is not None and \
-                    (p.parent == book or book in p.parents):
+            in_book = book is not None and (p.parent == book or book in p.parents)
+            if not book_py and p.suffix == ".py" and in_book:
                 continue
-            yield k, root, p
+            rel = p.relative_to(root).as_posix()
+            out.append((prefix + rel if k else rel, p))
+    return sorted(out)
+
+
+def code_bytes(code) -> bytes:
+    """A code object's marshal bytes without where its file lies (``co_filename``, in it
+    and in the code objects it holds): the same source compiled in ``site-packages`` and
+    in a source tree gives the same bytes (a regular then an editable install keep the
+    verdict cache's keys, issue 69)."""
+    import marshal
+
+    def bare(c):
+        consts = tuple(bare(x) if hasattr(x, "co_code") else x for x in c.co_consts)
+        return c.replace(co_filename="", co_consts=consts)
+
+    return marshal.dumps(bare(code), 2)
 
 
 @cache
 def package_digest() -> str:
-    """SHA-256 of every file of the ``rigidsym`` package and of the book's folder (relative
-    path and content; compiled ``__pycache__`` left out). Computed once per process."""
+    """SHA-256 of every source file of the ``rigidsym`` package and of the book's folder
+    (relative path and content; build outputs left out, :func:`is_built`). Computed once
+    per process."""
     return _digest(_files(book_py=True))
 
 
@@ -79,8 +123,8 @@ def machinery_digest() -> str:
 
 def _digest(files) -> str:
     h = hashlib.sha256()
-    for k, root, p in files:
-        h.update(f"{k}:{p.relative_to(root).as_posix()}\0{file_digest(p)}\n".encode())
+    for name, p in files:
+        h.update(f"{name}\0{file_digest(p)}\n".encode())
     return h.hexdigest()
 
 

@@ -36,9 +36,18 @@ def forked_map(fn: Callable[[int], object], n: int) -> list:
         return [fn(i) for i in range(n)]
     from concurrent.futures import ProcessPoolExecutor
 
+    from rigidsym.core.interrupts import for_worker
+
     _FN[:] = [fn]
+    pool = ProcessPoolExecutor(k, mp_context=mp.get_context("fork"), initializer=for_worker)
     try:
-        with ProcessPoolExecutor(k, mp_context=mp.get_context("fork")) as pool:
-            return list(pool.map(_call, range(n)))
+        return list(pool.map(_call, range(n)))
+    except KeyboardInterrupt:  # stop the workers now rather than wait for their work
+        procs = list((getattr(pool, "_processes", None) or {}).values())
+        pool.shutdown(wait=False, cancel_futures=True)
+        for p in procs:
+            p.terminate()
+        raise
     finally:
+        pool.shutdown(wait=True)
         _FN.clear()

@@ -50,8 +50,10 @@ def write_user_report(modules, out: Path, jobs: int = 1, cache: bool = False,
     code = 0
     for um in load_many(modules):
         with Reporter(f"rigidsym report --module {um.title}") as rep:
+            # the files show no expanded strings: verify's stored results serve (issue 69)
             results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
-                                 cache=cache, reporter=rep, extra=transcription_extra())
+                                 cache=cache, reporter=rep, extra=transcription_extra(),
+                                 expanded=False)
         title, source = f"{um.title} checked: verdicts", f"the user module {um.title}"
         cert = certified(results, certificates) if certificates else None
         files = {f"{um.title}.md": to_markdown(results, title=title, source=source,

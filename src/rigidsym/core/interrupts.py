@@ -1,0 +1,87 @@
+"""Interrupts of a long command (issue 69): SIGINT (Ctrl-C) and SIGTERM end it with one
+line and exit status 130, keeping the work it finished.
+
+- :func:`install` makes SIGTERM raise ``KeyboardInterrupt`` in the main thread, as SIGINT
+  does, so that one ``except KeyboardInterrupt`` (``rigidsym.cli.main``) handles both.
+- :func:`for_worker` is the initializer of a worker process: it ignores SIGINT (a terminal
+  sends Ctrl-C to the whole process group; the parent decides) and dies on SIGTERM (how
+  the parent's pool stops it), so that no worker prints a traceback.
+- :func:`deferred` holds both signals back while a cache entry is written, so that an
+  entry is written whole or not at all and no temporary file is left.
+- :func:`note_kept` and :func:`line`: how much finished work was kept, and the line said.
+
+Imports nothing of rigidsym.
+"""
+
+from __future__ import annotations
+
+import signal
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+__all__ = ["EXIT", "install", "for_worker", "deferred", "note_kept", "line", "reset"]
+
+#: the exit status of an interrupted command (128 + SIGINT, as a shell reports it)
+EXIT = 130
+_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+#: what the running command kept so far: ``(kept, total, what)``, or ``None``
+_KEPT: list = [None]
+
+
+def _raise(signum, frame) -> None:  # noqa: ARG001 - a signal handler's signature
+    raise KeyboardInterrupt
+
+
+def install() -> None:
+    """SIGTERM raises ``KeyboardInterrupt`` as SIGINT does (main thread only; elsewhere,
+    where handlers cannot be set, nothing changes; a signal the process was started
+    ignoring, as ``nohup`` or a shell's background job does, stays ignored)."""
+    if threading.current_thread() is not threading.main_thread():
+        return
+    for sig, handler in ((signal.SIGTERM, _raise), (signal.SIGINT, signal.default_int_handler)):
+        if signal.getsignal(sig) is not signal.SIG_IGN:
+            signal.signal(sig, handler)
+
+
+def for_worker() -> None:
+    """In a forked worker: SIGINT ignored, SIGTERM ends it (the default action)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+@contextmanager
+def deferred() -> Iterator[None]:
+    """Within the block SIGINT and SIGTERM wait (they are delivered when it ends): a
+    write of the user cache is then whole or absent. A no-op where threads cannot block
+    signals (not POSIX)."""
+    block = getattr(signal, "pthread_sigmask", None)
+    if block is None:
+        yield
+        return
+    old = block(signal.SIG_BLOCK, _SIGNALS)
+    try:
+        yield
+    finally:
+        block(signal.SIG_SETMASK, old)
+
+
+def note_kept(kept: int, total: int, what: str = "ids") -> None:
+    """Record that ``kept`` of ``total`` ``what`` are finished and stored (the runner calls
+    it as results are stored; :func:`line` reports the last call)."""
+    _KEPT[0] = (kept, total, what)
+
+
+def reset() -> None:
+    """Forget what :func:`note_kept` recorded (a new command in the same process)."""
+    _KEPT[0] = None
+
+
+def line() -> str:
+    """The one line an interrupted command prints: ``interrupted: 37 of 181 ids kept; run
+    again to continue`` (or, for a command that counts no ids, ``interrupted; run again to
+    continue``: what it writes, it writes whole)."""
+    if _KEPT[0] is None:
+        return "interrupted; run again to continue"
+    kept, total, what = _KEPT[0]
+    return f"interrupted: {kept} of {total} {what} kept; run again to continue"
