@@ -330,6 +330,9 @@ class Evaluator:
     def r_pi(self, t):
         return +mp.pi
 
+    def r_label_first(self, t):  # \mathbf{a}^S_1, read as \mathbf{a}_1^S
+        return self.r_glyph(names.canonical(t))
+
     def r_glyph(self, t):
         kids = t.children
         if len(kids) == 1 and isinstance(kids[0], lark.Tree) and kids[0].data in ("zero",

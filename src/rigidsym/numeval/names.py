@@ -15,12 +15,15 @@ __all__ = ["canonical", "unlabelled"]
 
 
 def canonical(t: object) -> object:
-    """``t`` with an accent's trailing subscript moved under the accent; any other tree as
-    it is.
+    """``t`` with an accent's trailing subscript moved under the accent, a superscript
+    label written before a subscript moved after it; any other tree as it is.
 
     Args:
         t: a parse subtree (``accented``, ``accented_bare``, or anything).
     """
+    if isinstance(t, lark.Tree) and t.data == "label_first":  # a^S_1 is a_1^S (wave 10)
+        labels = [c for c in t.children if isinstance(c, lark.Token) and c.type == "SUPLABEL"]
+        t = lark.Tree("glyph", [c for c in t.children if c not in labels] + labels)
     if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
             and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
         label = "^{" + "".join(str(t.children[-1]).lstrip("^").split()).strip("{}") + "}"

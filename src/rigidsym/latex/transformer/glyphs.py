@@ -81,6 +81,12 @@ class GlyphRules:
                 core += str(r)
         return core
 
+    def label_first(self, items):
+        """``\\mathbf{a}^S_1``: TeX sets it as ``\\mathbf{a}_1^S``, one glyph, keyed so
+        (wave 10; refused before)."""
+        labels = [i for i in items if isinstance(i, lark.Token) and i.type == "SUPLABEL"]
+        return self.glyph([i for i in items if i not in labels] + labels)
+
     def glyph(self, items):
         items = [label_key(str(i)) if isinstance(i, lark.Token) and i.type == "SUPLABEL"
                  else i for i in items]
