@@ -11,7 +11,7 @@ import re
 
 import lark
 
-__all__ = ["canonical", "unlabelled"]
+__all__ = ["canonical", "decorated_name", "unlabelled"]
 
 
 def canonical(t: object) -> object:
@@ -61,3 +61,22 @@ def unlabelled(t: object) -> object:
         t = lark.Tree("glyph", [lark.Tree("base", t.children[0].children[-1:]),
                                 *t.children[1:]])
     return t
+
+
+def decorated_name(tree: object) -> bool:
+    """A glyph whose subscript or primes are part of its name, so that a free one has its
+    letter's shape: ``x_1``, ``\\theta_{2}`` (a subscript of atoms), ``\\mathbf{g}'``,
+    ``\\mathbf{g}''``, ``x_1'`` (primes: Shuster's composed Gibbs vectors, wave 10).
+
+    Args:
+        tree: a parse subtree (a ``glyph``, or anything: then false).
+    """
+    if not isinstance(tree, lark.Tree) or tree.data != "glyph" or len(tree.children) < 2:
+        return False
+    rest = tree.children[1:]
+    primes = [c for c in rest if isinstance(c, lark.Token) and c.type == "PRIMES"]
+    subs = [c for c in rest if isinstance(c, lark.Tree) and c.data == "subscript"]
+    if len(primes) + len(subs) != len(rest) or len(subs) > 1:
+        return False
+    return all(isinstance(c, lark.Token) and c.type == "SUBATOM"
+               for s in subs for c in s.children)
