@@ -1,3 +1,4 @@
+# ruff: noqa: E501 - the LaTeX of a book equation is one line, as typed
 """Issue 63's outside trial (wave 10): 40 equations from six books, typed from memory.
 
 Books: Shuster, "A Survey of Attitude Representations" (J. Astronaut. Sci. 41, 1993);

@@ -41,6 +41,7 @@ import sympy as sp
 from rigidsym.core.settings import ENGINE
 from rigidsym.zero.exact import degree_bound, evaluate, to_rational, tree_size
 from rigidsym.zero.plan import Plan, Unsupported, make_plan
+from rigidsym.zero.polar import polar_norms
 from rigidsym.zero.program import Program, TooLarge, parametrised, run_exact, run_rational
 from rigidsym.zero.roots import decide_roots, has_roots
 
@@ -161,6 +162,27 @@ def _probe(prog: Program, plan: Plan, rng: random.Random, n: int):
     return None
 
 
+def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> ZeroResult:
+    """Entries with the norm of a free 3-vector under sin/cos, decided with the vector
+    written θu (:mod:`rigidsym.zero.polar`): zero, or undecided with the reason (a
+    non-zero result has no witness in the vector's own entries, which the counterexample
+    and its second-semantics check need)."""
+    polar = polar_norms(entries)
+    if polar is None:
+        return ZeroResult(None, "undecided", why, plan=plan)
+    r = decide_zero(polar[0], seed, probes)
+    if r.zero is True:
+        return ZeroResult(True, r.method, f"{r.detail}; with {polar[1]}", plan=r.plan)
+    if r.zero is False:
+        return ZeroResult(None, "undecided",
+                          f"the norm of a free vector under sin/cos: with {polar[1]} the "
+                          f"sides differ, but a counterexample in the vector's entries is "
+                          f"not exact (its norm is irrational); write the vector as θ u "
+                          f"with --let 'u: unit vector' and --let 'θ: angle' for one",
+                          plan=plan)
+    return ZeroResult(None, "undecided", f"{why}; with {polar[1]}: {r.detail}", plan=plan)
+
+
 def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = None) -> ZeroResult:
     """Decide whether every expression in ``entries`` is identically zero on the
     constraint set (see the module docstring for the method and its guarantees).
@@ -186,6 +208,8 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
         if top and "irrational root" in str(exc) and any(has_roots(e) for e in entries):
             return decide_roots(entries, lambda xs: decide_zero(xs, seed, probes, plan),
                                 ZeroResult)
+        if top and "trig of non-angle" in str(exc):
+            return _in_polar_form(entries, seed, probes, str(exc), plan)
         return ZeroResult(None, "undecided", str(exc), plan=plan)
 
     def probe(n):
