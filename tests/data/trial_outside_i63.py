@@ -505,3 +505,114 @@ BEFORE = {'sh-axis-fixed': 'right',
           'k-di-quat': 'right',
           'k-mls-skew': 'right',
           'k-mc-axis-angle': 'right'}
+
+#: the one attempt a reader makes after a refusal, where its message names it: the
+#: notation it names, the entry it names (\mathbf{q}_{4:4} for q_4), or the --let it asks for
+_NOTATION_MLS = {"notation": "murray-li-sastry"}
+_ENTRY_Q4 = {"replace": ("q_4", r"\mathbf{q}_{4:4}")}
+ATTEMPT = {
+    "mc-psi-orth": _ENTRY_Q4, "mc-xi-proj": _ENTRY_Q4, "mc-psi-q": _ENTRY_Q4,
+    "k-sh-quat-omega": _ENTRY_Q4,
+    "msks-epipolar": _NOTATION_MLS, "msks-et": _NOTATION_MLS, "msks-et-slip": _NOTATION_MLS,
+    "msks-tr-eet": _NOTATION_MLS, "msks-hat-anti": _NOTATION_MLS,
+    "mls-hat-square": _NOTATION_MLS, "mls-exp-fixed": _NOTATION_MLS,
+    "mls-exp-orth": _NOTATION_MLS, "mls-exp-orth-slip": _NOTATION_MLS,
+    "msks-homography": {"add": [r"\mathbf{Y}: vector"]},
+    "di-quat-orth": {"add": ["q_1: scalar", "q_2: scalar", "q_3: scalar"]},
+}
+
+
+def attempted(case: dict) -> tuple[str, list, dict]:
+    """``(latex, lets, options)`` of ``case`` after the reader's one attempt (as typed where
+    :data:`ATTEMPT` has none)."""
+    a = ATTEMPT.get(case["id"], {})
+    latex, lets = case["latex"], list(case["let"])
+    if "replace" in a:
+        old, new = a["replace"]
+        latex, lets = latex.replace(old, new), [x.replace(old, new) for x in lets]
+    lets += a.get("add", [])
+    return latex, lets, {"notation": a["notation"]} if "notation" in a else {}
+
+#: the verdicts as typed after the session's fixes
+AFTER = {'sh-axis-fixed': 'right',
+         'sh-trace': 'right',
+         'sh-trace-slip': 'right',
+         'sh-gibbs-compose': 'right',
+         'sh-skew-square': 'refused',
+         'sh-gibbs-from-a': 'undecided',
+         'mc-psi-orth': 'refused',
+         'mc-xi-proj': 'refused',
+         'mc-xi-proj-slip': 'right',
+         'mc-at-psi-xi': 'right',
+         'mc-psi-q': 'refused',
+         'mc-axang-transpose': 'right',
+         'mc-mrp-shadow': 'right',
+         'ku-axis': 'right',
+         'ku-orth': 'right',
+         'ku-trace': 'right',
+         'ku-trace-slip': 'right',
+         'mls-hat-square': 'refused',
+         'mls-2link-reach': 'right',
+         'mls-2link-reach-slip': 'right',
+         'msks-epipolar': 'refused',
+         'msks-et': 'refused',
+         'msks-et-slip': 'refused',
+         'msks-tr-eet': 'refused',
+         'msks-homography': 'refused',
+         'msks-hat-anti': 'refused',
+         'di-quat-orth': 'refused',
+         'di-r1-compose': 'right',
+         'mls-exp-fixed': 'refused',
+         'mls-exp-orth': 'refused',
+         'mls-exp-orth-slip': 'refused',
+         'k-sh-quat-omega': 'refused',
+         'k-mc-gibbs': 'right',
+         'k-mc-gibbs-slip': 'right',
+         'k-di-123': 'right',
+         'k-di-123-slip': 'right',
+         'k-mls-rz': 'right',
+         'k-di-quat': 'right',
+         'k-mls-skew': 'right',
+         'k-mc-axis-angle': 'right'}
+
+#: after the reader's one attempt (:data:`ATTEMPT`), with the session's fixes
+AFTER_ATTEMPT = {'sh-axis-fixed': 'right',
+         'sh-trace': 'right',
+         'sh-trace-slip': 'right',
+         'sh-gibbs-compose': 'right',
+         'sh-skew-square': 'refused',
+         'sh-gibbs-from-a': 'undecided',
+         'mc-psi-orth': 'right',
+         'mc-xi-proj': 'right',
+         'mc-xi-proj-slip': 'right',
+         'mc-at-psi-xi': 'right',
+         'mc-psi-q': 'right',
+         'mc-axang-transpose': 'right',
+         'mc-mrp-shadow': 'right',
+         'ku-axis': 'right',
+         'ku-orth': 'right',
+         'ku-trace': 'right',
+         'ku-trace-slip': 'right',
+         'mls-hat-square': 'right',
+         'mls-2link-reach': 'right',
+         'mls-2link-reach-slip': 'right',
+         'msks-epipolar': 'right',
+         'msks-et': 'right',
+         'msks-et-slip': 'right',
+         'msks-tr-eet': 'right',
+         'msks-homography': 'right',
+         'msks-hat-anti': 'right',
+         'di-quat-orth': 'right',
+         'di-r1-compose': 'right',
+         'mls-exp-fixed': 'right',
+         'mls-exp-orth': 'right',
+         'mls-exp-orth-slip': 'undecided',
+         'k-sh-quat-omega': 'right',
+         'k-mc-gibbs': 'right',
+         'k-mc-gibbs-slip': 'right',
+         'k-di-123': 'right',
+         'k-di-123-slip': 'right',
+         'k-mls-rz': 'right',
+         'k-di-quat': 'right',
+         'k-mls-skew': 'right',
+         'k-mc-axis-angle': 'right'}
