@@ -175,22 +175,25 @@ def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> Zer
         return ZeroResult(True, r.method, f"{r.detail}; with {polar[1]}", plan=r.plan)
     if r.zero is False:
         return ZeroResult(None, "undecided",
-                          f"the norm of a free vector under sin/cos: with {polar[1]} the "
-                          f"sides differ, but a counterexample in the vector's entries is "
-                          f"not exact (its norm is irrational); write the vector as θ u "
-                          f"with --let 'u: unit vector' and --let 'θ: angle' for one",
+                          f"the norm of a free vector under sin/cos: written so ({polar[1]}), "
+                          f"the sides differ, but a counterexample in the vector's own "
+                          f"entries is not exact (its norm is irrational): write the vector "
+                          f"as θ u, --let 'u: unit vector' and --let 'θ: angle', for one",
                           plan=plan)
     return ZeroResult(None, "undecided", f"{why}; with {polar[1]}: {r.detail}", plan=plan)
 
 
-def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = None) -> ZeroResult:
+def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = None,
+                polar: bool = False) -> ZeroResult:
     """Decide whether every expression in ``entries`` is identically zero on the
     constraint set (see the module docstring for the method and its guarantees).
 
     ``plan``: the parametrisation to use (that of larger expressions whose parts these are,
     so a witness values every parameter of theirs); by default made from ``entries``. An
     entry with a square root (a norm) irrational at the sample points is decided through
-    its square (:mod:`rigidsym.zero.roots`).
+    its square (:mod:`rigidsym.zero.roots`). ``polar``: a norm of a free 3-vector under
+    sin/cos is decided with the vector written θu (:mod:`rigidsym.zero.polar`; the checker's
+    verdicts, wave 10), else undecided (the code generator's rewrites keep their choices).
     """
     entries = [sp.sympify(e) for e in entries]
     entries = [e for e in entries if e != 0]
@@ -208,7 +211,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
         if top and "irrational root" in str(exc) and any(has_roots(e) for e in entries):
             return decide_roots(entries, lambda xs: decide_zero(xs, seed, probes, plan),
                                 ZeroResult)
-        if top and "trig of non-angle" in str(exc):
+        if top and polar and "trig of non-angle" in str(exc):
             return _in_polar_form(entries, seed, probes, str(exc), plan)
         return ZeroResult(None, "undecided", str(exc), plan=plan)
 

@@ -77,8 +77,9 @@ def polar_norms(entries: list) -> tuple[list, str] | None:
                     norm[p] = theta ** (2 * p.exp)
         sub = {x: theta * u[k] for k, x in enumerate(xs)}
         out = [e.xreplace(norm).xreplace(sub) for e in out]
-        notes.append(f"|({', '.join(x.name for x in xs)})| = θ{i or ''} > 0 with "
-                     f"({', '.join(x.name for x in xs)}) = θ{i or ''} u, u a unit vector")
+        v = f"({', '.join(x.name for x in xs)})"
+        notes.append(f"|{v}| = θ{i or ''} > 0, {v} = θ{i or ''} u{i or ''}, u{i or ''} a "
+                     f"unit vector")
         for e in out:
             for p in sp.preorder_traversal(e):
                 if isinstance(p, sp.Pow) and not p.exp.is_integer \
