@@ -162,6 +162,14 @@ def _probe(prog: Program, plan: Plan, rng: random.Random, n: int):
     return None
 
 
+def _traced(e):
+    """``e`` with the trace of each explicit matrix written out (``tr A`` of a model ``A``
+    in a fraction: before wave 10 an undecided whose reason printed sympy's ``Trace(Matrix(
+    [...]))``)."""
+    return e.replace(lambda y: isinstance(y, sp.Trace) and isinstance(y.arg, sp.MatrixBase),
+                     lambda y: y.arg.trace()) if e.has(sp.Trace) else e
+
+
 def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> ZeroResult:
     """Entries with the norm of a free 3-vector under sin/cos, decided with the vector
     written θu (:mod:`rigidsym.zero.polar`): zero, or undecided with the reason (a
@@ -195,7 +203,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
     sin/cos is decided with the vector written θu (:mod:`rigidsym.zero.polar`; the checker's
     verdicts, wave 10), else undecided (the code generator's rewrites keep their choices).
     """
-    entries = [sp.sympify(e) for e in entries]
+    entries = [_traced(sp.sympify(e)) for e in entries]
     entries = [e for e in entries if e != 0]
     if not entries:
         return ZeroResult(True, "exact-cancel", "all entries cancel structurally", plan=plan)
