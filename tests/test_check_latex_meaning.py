@@ -103,12 +103,19 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
 
 
 def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
-    # issue 40: its reason ("trig of non-angle argument") was only in --json
-    code, out, _ = _cli(capsys, "--latex", "J w = w", "--let", r"w: vector; \theta = \sqrt{w^T w}",
-                        "--let", r"J = I + \frac{1 - \cos\theta}{\theta^2}[w] + "
-                                 r"\frac{\theta - \sin\theta}{\theta^3}[w]^2")
-    assert code == 3 and "Undecided: printed: trig of non-angle argument √(w₁² + w₂² + w₃²)" \
-        in out, out
+    # issue 40: its reason ("trig of non-angle argument") was only in --json; wave 10: the
+    # norm is written θ u (rigidsym.zero.polar), so J w = w is verified, and J w = 2 w, which
+    # does not hold, is undecided with the reason naming the construct
+    lets = ["--let", r"w: vector; \theta = \sqrt{w^T w}",
+            "--let", r"J = I + \frac{1 - \cos\theta}{\theta^2}[w] + "
+                     r"\frac{\theta - \sin\theta}{\theta^3}[w]^2"]
+    code, out, _ = _cli(capsys, "--latex", "J w = w", *lets)
+    assert code == 0, out
+    code, out, _ = _cli(capsys, "--latex", "J w = 2 w", *lets)
+    said = " ".join(out.split())
+    assert code == 3 and "Undecided: printed: the norm of a free vector under sin/cos: written " \
+        "so (|(w₁, w₂, w₃)| = θ > 0, (w₁, w₂, w₃) = θ u, u a unit vector), the sides differ" \
+        in said, out
 
 
 def test_the_reports_print_the_reason_of_an_undecided_member():

@@ -117,3 +117,13 @@ def test_a_refusal_names_its_construct_and_leaks_nothing(latex, let):
     msg = str(exc.value)
     assert not any(w in msg for w in _LEAKS), msg
     assert not msg.rstrip().endswith("expected one of:"), msg
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\mathbf{a}^S_1\cdot\mathbf{a}^S_1 = 1", "verified"),   # the label before the subscript
+    (r"\mathbf{a}^S_1\cdot\mathbf{a}_1^S = 1", "verified"),   # both spellings, one glyph
+    (r"\mathbf{a}^S_1\cdot\mathbf{a}^S_1 = 2", "does-not-hold"),
+])
+def test_a_label_before_a_subscript_is_the_same_glyph(latex, verdict):
+    # wave 10: \mathbf{a}^S_1 is TeX's \mathbf{a}_1^S (refused before: "unexpected '_'")
+    assert _v(latex, [r"\mathbf{a}_1^S: unit vector"]) == verdict

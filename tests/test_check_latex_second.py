@@ -429,13 +429,36 @@ def test_a_modules_symbol_is_named_as_not_cross_checked(lent):
     assert note.startswith("second semantics: not applied (\\mathbf{R}"), note
 
 
-@pytest.mark.xfail(strict=True, reason="open finding: the reader's d/dt takes \\dot\\theta as "
-                                       "a constant (its rate \\ddot\\theta is dropped)")
 def test_the_rate_of_a_rate_is_the_second_derivative():
-    # d/dt(θ̇ sin θ) = θ̈ sin θ + θ̇² cos θ: the reader reads the left side as θ̇² cos θ and
-    # says does-not-hold; the second semantics, at that counterexample (θ̇ = 0), finds the
-    # sides equal, so the check is refused (exit 2) instead of verified
+    # d/dt(θ̇ sin θ) = θ̈ sin θ + θ̇² cos θ: before wave 10 the reader took θ̇ for a
+    # constant (θ̇² cos θ alone), the second semantics disagreed, and the check was refused
     r = rigidsym.check_latex(r"\frac{d}{dt}(\dot\theta\sin\theta) = \ddot\theta\sin\theta"
                              r" + \dot\theta^2\cos\theta", let=[r"\theta(t): angle"],
                              repairs=False)
     assert r.verdict == "verified"
+
+
+_ROT2 = r"C = \begin{bmatrix}\cos\theta & -\sin\theta \\ \sin\theta & \cos\theta\end{bmatrix}"
+
+
+@pytest.mark.parametrize("latex, let, verdict", [
+    # \ddot of a model: d/dt twice, θ̈ free (wave 10; before, \ddot{C} was a free symbol)
+    (r"\ddot{C} = \dot\theta^2\begin{bmatrix}-\cos\theta & \sin\theta \\ -\sin\theta & "
+     r"-\cos\theta\end{bmatrix} + \ddot\theta\begin{bmatrix}-\sin\theta & -\cos\theta \\ "
+     r"\cos\theta & -\sin\theta\end{bmatrix}", [_ROT2, r"\theta(t): angle"], "verified"),
+    (r"\ddot{C} = \dot\theta^2\begin{bmatrix}-\cos\theta & \sin\theta \\ -\sin\theta & "
+     r"-\cos\theta\end{bmatrix}", [_ROT2, r"\theta(t): angle"], "does-not-hold"),
+    # \ddot of X(t) whose rate a --let declares: the d/dt of that rate
+    (r"\ddot\theta = -\sin\theta\,\dot\theta", [r"\dot\theta = \cos\theta", r"\theta(t): angle"],
+     "verified"),
+    (r"\ddot\theta = \sin\theta\,\dot\theta", [r"\dot\theta = \cos\theta", r"\theta(t): angle"],
+     "does-not-hold"),
+    # a free rate of a 4-vector: \ddot{q} has q's shape (the convention alone gave 3)
+    (r"\frac{d}{dt}(\dot{\mathbf{q}}^T\mathbf{q}) = \ddot{\mathbf{q}}^T\mathbf{q} + "
+     r"\dot{\mathbf{q}}^T\dot{\mathbf{q}}", [r"\mathbf{q}(t): 4-vector"], "verified"),
+    (r"\frac{d}{dt}(\dot{\mathbf{q}}^T\mathbf{q}) = \dot{\mathbf{q}}^T\dot{\mathbf{q}}",
+     [r"\mathbf{q}(t): 4-vector"], "does-not-hold"),
+])
+def test_second_derivatives_of_models_and_rates(latex, let, verdict):
+    r = rigidsym.check_latex(latex, let=let, repairs=False)
+    assert r.verdict == verdict

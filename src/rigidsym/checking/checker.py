@@ -127,7 +127,7 @@ def _decide_case(rel, blhs, brhs, lhs, rhs, seed, describe) -> _RelOutcome:
     """Decide ``lhs = rhs`` (branches resolved); the ball at a counterexample evaluates
     ``blhs - brhs`` (the same relation, ``acos``/``atan2`` as such)."""
     diff = [a - b for a, b in zip(entries_of(lhs), entries_of(rhs), strict=True)]
-    zr = decide_zero(diff, seed=seed)
+    zr = decide_zero(diff, seed=seed, polar=True)
     if zr.zero is False:
         extra = [] if blhs is lhs and brhs is rhs else entries_of(blhs) + entries_of(brhs)
         ce, plan, pt = exact_counterexample(lhs, rhs, zr.witness, seed, extra)

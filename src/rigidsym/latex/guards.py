@@ -171,3 +171,28 @@ def applications(applied: dict, models: dict, glyphs: dict) -> None:
             raise BadInput(f"--latex: {key}({notation.text(arg)}): the model of {key} does not "
                            f"depend on {notation.text(arg)}; write the model in "
                            f"{notation.text(arg)} (--let '{key} = ...')")
+
+
+_ENTRY = re.compile(r"^([A-Z]|\\mathbf\{[A-Z]\}|\\boldsymbol\{\\?[A-Za-z]+\})_\{(\d)(\d)\}$")
+
+
+def matrix_entries(free: list[str], glyphs: dict) -> None:
+    """A free glyph ``A_{23}`` beside a square matrix ``A`` of the statement (declared, or a
+    model): the books' entry (row 2, column 3; Shuster's Gibbs vector from ``A_{23} -
+    A_{32}``), which the reader does not take from the indices; read as a symbol of its own
+    it made such an equation undecided or, decided, false (wave 10): bad input naming it."""
+    for key in free:
+        m = _ENTRY.match(key)
+        g, base = glyphs.get(key), glyphs.get(m.group(1)) if m else None
+        if m is None or g is None or g.shape or base is None or len(base.shape) != 2 \
+                or base.shape[0] != base.shape[1] \
+                or not all(1 <= int(d) <= base.shape[0] for d in m.groups()[1:]):
+            continue
+        i, j = m.group(2), m.group(3)
+        raise BadInput(
+            f"--latex: {key} beside the {base.shape[0]}x{base.shape[1]} matrix {m.group(1)}: "
+            f"an entry written by its indices (row {i}, column {j}) is not read from "
+            f"{m.group(1)}, and as a symbol of its own it would change the equation; write "
+            f"the entry as \\mathbf{{e}}_{i}^T {m.group(1)}\\mathbf{{e}}_{j} with --let "
+            f"'\\mathbf{{e}}_{i} = ...' (the unit vectors), or, if {key} is a symbol of its "
+            f"own, --let '{key}: scalar'")

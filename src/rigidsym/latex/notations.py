@@ -47,6 +47,11 @@ class Notation:
         patterns: ``(regex of a glyph key, placeholder, Let)`` of the lines with one.
         functions: the ``NAME(params) = LATEX`` lines (Craig's ``R_X(\\theta)``), each a
             ``--let`` function wherever the LaTeX mentions NAME and no ``--let`` declares it.
+        hat_is_skew: the table's line ``\\hat{*} = [*]_\\times``: every ``\\hat{X}`` (and
+            ``\\widehat{X}``) the table does not list is the skew matrix of X, as
+            Murray-Li-Sastry's (2.9) defines it for any vector (wave 10: only
+            ``\\hat\\omega`` was, so ``\\widehat{T}R`` stayed refused under the notation
+            the refusal named).
     """
 
     name: str
@@ -54,6 +59,7 @@ class Notation:
     lets: tuple[Let, ...]
     patterns: tuple[tuple[re.Pattern, str, Let], ...]
     functions: tuple[Let, ...] = ()
+    hat_is_skew: bool = False
 
     def let_for(self, key: str) -> Let | None:
         """The declaration of the glyph ``key`` under this notation, or ``None``."""
@@ -64,6 +70,10 @@ class Notation:
             m = rx.fullmatch(key)
             if m:
                 return _instance(x, hole, m.group(1), key)
+        m = re.fullmatch(r"\\hat\{(.+)\}", key) if self.hat_is_skew else None
+        if m:
+            (x,) = read_lets([f"{key} = [{m.group(1)}]_\\times"])
+            return x
         return None
 
 
@@ -97,9 +107,12 @@ def notation(name: str) -> Notation:
         .read_text("utf-8")
     lines = text.splitlines()
     title = lines[0].lstrip("# ").strip() if lines else key
-    lets, patterns, functions = [], [], []
+    lets, patterns, functions, hat = [], [], [], False
     for n, line in enumerate(lines, 1):
         line = line.split(" #")[0].strip() if not line.startswith("#") else ""
+        if "".join(line.split()) == "\\hat{*}=[*]_\\times":
+            hat = True
+            continue
         if not line:
             continue
         # a Greek letter after a comma of a subscript (Spong's R_{z,{x}}): the name is read
@@ -121,4 +134,4 @@ def notation(name: str) -> Notation:
             patterns.append((re.compile(rx), hole, x))
         else:
             lets.append(x)
-    return Notation(key, title, tuple(lets), tuple(patterns), tuple(functions))
+    return Notation(key, title, tuple(lets), tuple(patterns), tuple(functions), hat)

@@ -287,6 +287,11 @@ class GlyphReader:
             msg = (f"{msg.split(' (declare the shapes')[0]}; its meaning depends on the shape "
                    f"of {', '.join(free)}, which no --let declares: add e.g. --let "
                    f"'{free[0]}: KIND' (KIND one of {', '.join(KIND_WORDS)})")
+        hats = [k for k in free if k.startswith("\\hat{")]
+        if exc.construct == "shapes" and hats:  # wave 10: the hat's two meanings first
+            msg += (f"; {hats[0]} is a unit vector in Lynch-Park and Corke, the skew matrix of "
+                    f"{hats[0][5:-1]} in Murray-Li-Sastry: say which, --notation "
+                    f"murray-li-sastry or --let '{hats[0]} = [{hats[0][5:-1]}]_\\times'")
         out = LatexError(msg, exc.construct)
         out.glyphs = exc.glyphs
         return out

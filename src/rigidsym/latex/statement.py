@@ -269,6 +269,7 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     guards.time_derivatives(free, rd.used, rd.declared)
     guards.book_meanings(free)
     guards.notation_bases(free, glyphs, table)
+    guards.matrix_entries(free, glyphs)
     model = resolve_models(values, explicit)
     EXPLICIT_CACHE.clear()
     printed, kind = _relations(parsed)

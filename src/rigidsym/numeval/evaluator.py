@@ -148,21 +148,13 @@ class Env:
         if not self.free:
             raise NotCovered(f"the glyph {text_of(tree)}, which no declaration names (a "
                              f"notation's meaning)")
-        if not letter or not plain and not _subscripted_name(tree):
+        if not letter or not plain and not names.decorated_name(tree):
             raise NotCovered(f"the undeclared glyph {text_of(tree)}")
         if bold and letter.islower():
             return sample("vector", self.rng)
         if bold and letter.isupper():
             return sample("matrix", self.rng)
         return sample("scalar", self.rng)
-
-
-def _subscripted_name(tree) -> bool:
-    """A plain glyph with a subscript that is part of its name (``x_1``, ``\\theta_{2}``)."""
-    return (tree.data == "glyph" and len(tree.children) == 2
-            and isinstance(tree.children[1], lark.Tree) and tree.children[1].data == "subscript"
-            and all(isinstance(c, lark.Token) and c.type == "SUBATOM"
-                    for c in tree.children[1].children))
 
 
 class Evaluator:
@@ -329,6 +321,9 @@ class Evaluator:
 
     def r_pi(self, t):
         return +mp.pi
+
+    def r_label_first(self, t):  # \mathbf{a}^S_1, read as \mathbf{a}_1^S
+        return self.r_glyph(names.canonical(t))
 
     def r_glyph(self, t):
         kids = t.children
@@ -547,6 +542,10 @@ class Evaluator:
         args = kids[1:-1] if sup is not None else kids[1:]
         v = self._call(kids[0], args, t, many=True)
         return self._raise(v, sup, t) if sup is not None else v
+
+    def r_apply_pre_many(self, t):  # A^T(\mathbf{e}, \vartheta): A(e, θ)^T
+        f, sup, *args = self._kids(t)
+        return self._raise(self._call(f, args, t, many=True), sup, t)
 
     def r_apply_pre(self, t):
         post, sup, arg = t.children[0], t.children[1], t.children[2]

@@ -11,16 +11,19 @@ import re
 
 import lark
 
-__all__ = ["canonical", "unlabelled"]
+__all__ = ["canonical", "decorated_name", "unlabelled"]
 
 
 def canonical(t: object) -> object:
-    """``t`` with an accent's trailing subscript moved under the accent; any other tree as
-    it is.
+    """``t`` with an accent's trailing subscript moved under the accent, a superscript
+    label written before a subscript moved after it; any other tree as it is.
 
     Args:
         t: a parse subtree (``accented``, ``accented_bare``, or anything).
     """
+    if isinstance(t, lark.Tree) and t.data == "label_first":  # a^S_1 is a_1^S (wave 10)
+        labels = [c for c in t.children if isinstance(c, lark.Token) and c.type == "SUPLABEL"]
+        t = lark.Tree("glyph", [c for c in t.children if c not in labels] + labels)
     if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
             and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
         label = "^{" + "".join(str(t.children[-1]).lstrip("^").split()).strip("{}") + "}"
@@ -58,3 +61,22 @@ def unlabelled(t: object) -> object:
         t = lark.Tree("glyph", [lark.Tree("base", t.children[0].children[-1:]),
                                 *t.children[1:]])
     return t
+
+
+def decorated_name(tree: object) -> bool:
+    """A glyph whose subscript or primes are part of its name, so that a free one has its
+    letter's shape: ``x_1``, ``\\theta_{2}`` (a subscript of atoms), ``\\mathbf{g}'``,
+    ``\\mathbf{g}''``, ``x_1'`` (primes: Shuster's composed Gibbs vectors, wave 10).
+
+    Args:
+        tree: a parse subtree (a ``glyph``, or anything: then false).
+    """
+    if not isinstance(tree, lark.Tree) or tree.data != "glyph" or len(tree.children) < 2:
+        return False
+    rest = tree.children[1:]
+    primes = [c for c in rest if isinstance(c, lark.Token) and c.type == "PRIMES"]
+    subs = [c for c in rest if isinstance(c, lark.Tree) and c.data == "subscript"]
+    if len(primes) + len(subs) != len(rest) or len(subs) > 1:
+        return False
+    return all(isinstance(c, lark.Token) and c.type == "SUBATOM"
+               for s in subs for c in s.children)

@@ -41,6 +41,7 @@ import sympy as sp
 from rigidsym.core.settings import ENGINE
 from rigidsym.zero.exact import degree_bound, evaluate, to_rational, tree_size
 from rigidsym.zero.plan import Plan, Unsupported, make_plan
+from rigidsym.zero.polar import polar_norms
 from rigidsym.zero.program import Program, TooLarge, parametrised, run_exact, run_rational
 from rigidsym.zero.roots import decide_roots, has_roots
 
@@ -161,16 +162,48 @@ def _probe(prog: Program, plan: Plan, rng: random.Random, n: int):
     return None
 
 
-def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = None) -> ZeroResult:
+def _traced(e):
+    """``e`` with the trace of each explicit matrix written out (``tr A`` of a model ``A``
+    in a fraction: before wave 10 an undecided whose reason printed sympy's ``Trace(Matrix(
+    [...]))``)."""
+    return e.replace(lambda y: isinstance(y, sp.Trace) and isinstance(y.arg, sp.MatrixBase),
+                     lambda y: y.arg.trace()) if e.has(sp.Trace) else e
+
+
+def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> ZeroResult:
+    """Entries with the norm of a free 3-vector under sin/cos, decided with the vector
+    written θu (:mod:`rigidsym.zero.polar`): zero, or undecided with the reason (a
+    non-zero result has no witness in the vector's own entries, which the counterexample
+    and its second-semantics check need)."""
+    polar = polar_norms(entries)
+    if polar is None:
+        return ZeroResult(None, "undecided", why, plan=plan)
+    r = decide_zero(polar[0], seed, probes)
+    if r.zero is True:
+        return ZeroResult(True, r.method, f"{r.detail}; with {polar[1]}", plan=r.plan)
+    if r.zero is False:
+        return ZeroResult(None, "undecided",
+                          f"the norm of a free vector under sin/cos: written so ({polar[1]}), "
+                          f"the sides differ, but a counterexample in the vector's own "
+                          f"entries is not exact (its norm is irrational): write the vector "
+                          f"as θ u, --let 'u: unit vector' and --let 'θ: angle', for one",
+                          plan=plan)
+    return ZeroResult(None, "undecided", f"{why}; with {polar[1]}: {r.detail}", plan=plan)
+
+
+def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = None,
+                polar: bool = False) -> ZeroResult:
     """Decide whether every expression in ``entries`` is identically zero on the
     constraint set (see the module docstring for the method and its guarantees).
 
     ``plan``: the parametrisation to use (that of larger expressions whose parts these are,
     so a witness values every parameter of theirs); by default made from ``entries``. An
     entry with a square root (a norm) irrational at the sample points is decided through
-    its square (:mod:`rigidsym.zero.roots`).
+    its square (:mod:`rigidsym.zero.roots`). ``polar``: a norm of a free 3-vector under
+    sin/cos is decided with the vector written θu (:mod:`rigidsym.zero.polar`; the checker's
+    verdicts, wave 10), else undecided (the code generator's rewrites keep their choices).
     """
-    entries = [sp.sympify(e) for e in entries]
+    entries = [_traced(sp.sympify(e)) for e in entries]
     entries = [e for e in entries if e != 0]
     if not entries:
         return ZeroResult(True, "exact-cancel", "all entries cancel structurally", plan=plan)
@@ -186,6 +219,8 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
         if top and "irrational root" in str(exc) and any(has_roots(e) for e in entries):
             return decide_roots(entries, lambda xs: decide_zero(xs, seed, probes, plan),
                                 ZeroResult)
+        if top and polar and "trig of non-angle" in str(exc):
+            return _in_polar_form(entries, seed, probes, str(exc), plan)
         return ZeroResult(None, "undecided", str(exc), plan=plan)
 
     def probe(n):

@@ -132,7 +132,8 @@ def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
             return abs(ev(x.args[0]))
         if isinstance(x, TRIG):
             return _trig(x, plan, point, one)
-        raise Unsupported(f"node {type(x).__name__}: {x}")
+        raise Unsupported(f"an operator the exact evaluator does not take "
+                          f"({type(x).__name__.lower()})")
 
     return ev(sp.sympify(expr))
 
@@ -181,7 +182,8 @@ def to_rational(expr, plan: Plan):
         elif x.args:
             r = x.func(*[tr(a) for a in x.args])
         else:
-            raise Unsupported(f"node {x}")
+            raise Unsupported(f"an operator the exact evaluator does not take "
+                          f"({type(x).__name__.lower()})")
         memo[x] = r
         return r
 

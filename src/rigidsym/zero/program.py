@@ -210,7 +210,8 @@ def parametrised(exprs, plan: Plan) -> Program:
             return _arith(b, x, node)
         if isinstance(x, TRIG):
             return _trig(b, x, plan, param)
-        raise Unsupported(f"node {type(x).__name__}: {x}")
+        raise Unsupported(f"an operator the exact evaluator does not take "
+                          f"({type(x).__name__.lower()})")
 
     outputs = [node(sp.sympify(e)) for e in exprs]
     return Program(b.ops, outputs, b.leaves)
@@ -241,7 +242,8 @@ def unparametrised(exprs) -> Program:
         name = _FUNCS.get(x.func)
         if name is not None:
             return b.emit((FUNC, name, *[node(a) for a in x.args]))
-        raise Unsupported(f"node {type(x).__name__}: {x}")
+        raise Unsupported(f"an operator the exact evaluator does not take "
+                          f"({type(x).__name__.lower()})")
 
     outputs = [node(sp.sympify(e)) for e in exprs]
     return Program(b.ops, outputs, b.leaves)

@@ -43,6 +43,7 @@ from rigidsym.latex.shapes import (
     as_scalar,
     fit_blocks,
     matrix_shape,
+    name_from_key,
     shape_words,
 )
 from rigidsym.latex.table import Glyph
@@ -319,6 +320,7 @@ class BookNotationRules:
         self._note("d/dt: the product and chain rules over the symbols declared functions "
                    "of time")
         self._moving = self.models_of(set(timed))  # models of functions of time
+        timed = {**timed, **self._free_rates(timed)}
         try:
             return self._ddt(x, timed)
         except (LatexError, TypeError, ValueError, AttributeError):
@@ -326,7 +328,46 @@ class BookNotationRules:
             # fraction, a function): entry by entry along the rates (issue 63)
             self._note("d/dt: taken entry by entry, the chain rule along the rates of the "
                        "functions of time")
-            return explicit_rate(x, timed, self._moving, self.velocity)
+            return explicit_rate(x, timed, self._moving, self._rate_of)
+
+    def _free_rates(self, timed: dict) -> dict:
+        """The free rates ``\\dot X`` of the scalar and vector functions of time (no --let
+        model of the rate): each a function of time too, by its symbol's name -> the key
+        of ``\\dot X`` (wave 10: d/dt(θ̇ sin θ) took θ̇ for a constant, dropping θ̈)."""
+        out = {}
+        for key in timed.values():
+            g = self.overrides[key]
+            dkey = dot_key(key)
+            rate = self.overrides.get(dkey)
+            if (rate is not None and rate.kind == "model") or (
+                    g.shape in ((3, 3), (4, 4))
+                    and g.meaning.startswith(("rotation", "homogeneous"))):
+                continue
+            out[f"{g.name}dot"] = dkey
+        return out
+
+    def _rate_of(self, key: str, value):
+        """d/dt of the symbol ``value`` keyed ``key``: :meth:`velocity` of a function of
+        time; of a free rate ``\\dot X`` (a key of :meth:`_free_rates`), the free symbol
+        ``\\ddot X`` of X's shape (:meth:`second_rate`)."""
+        if key in self.overrides:
+            return self.velocity(key, value)
+        return self.second_rate(next(k for k in self.overrides if dot_key(k) == key))
+
+    def second_rate(self, key: str):
+        """``\\ddot X`` of a function of time ``X`` keyed ``key`` whose rate is free: a
+        free symbol of X's shape (a 4-vector's ``\\ddot{\\mathbf{q}}`` is a 4-vector,
+        where the book's convention alone would make it a 3-vector)."""
+        g = self.overrides[key]
+        ddkey = "\\ddot" + dot_key(key)[len("\\dot"):]
+        if ddkey in self.overrides:
+            return self._symbol(ddkey, None)
+        if ddkey not in self.glyphs:
+            self._note(f"{ddkey}: the second time derivative of {key} (free)")
+        name = name_from_key(ddkey)
+        self.glyphs[ddkey] = Glyph(ddkey, "*", name, g.shape, "free",
+                                   f"the second time derivative of {key}", "")
+        return sp.MatrixSymbol(name, *g.shape) if g.shape else sp.Symbol(name, real=True)
 
     def model_rate(self, key: str):
         """``\\dot X`` of a model ``X`` built on functions of time (``--let 'C = ...'`` in
@@ -349,7 +390,7 @@ class BookNotationRules:
         if isinstance(x, sp.MatrixSymbol):
             if x.name in self._moving:  # a model of a function of time: its value's d/dt
                 return self._ddt(self._moving[x.name], timed)
-            return self.velocity(timed[x.name], x) if x.name in timed else sp.ZeroMatrix(*s)
+            return self._rate_of(timed[x.name], x) if x.name in timed else sp.ZeroMatrix(*s)
         if s is None and sp.sympify(x).atoms(sp.Trace):
             # a·b and aᵀ M b are 1×1 traces: d/dt of each trace is the trace of the d/dt of
             # its argument (product rule inside), the scalar around them by the chain rule
@@ -369,7 +410,7 @@ class BookNotationRules:
                 raise LatexError("d/dt of a scalar made of matrices: write the product out",
                                  "shapes")
             moving = [a for a in sp.sympify(x).free_symbols if a.name in self._moving]
-            return sum((sp.diff(x, a) * self.velocity(timed[a.name], a) for a in syms),
+            return sum((sp.diff(x, a) * self._rate_of(timed[a.name], a) for a in syms),
                        sp.Integer(0)) + sum(  # the chain rule through a scalar model
                 (sp.diff(x, a) * self._ddt(self._moving[a.name], timed) for a in moving),
                 sp.Integer(0))

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import lark
 import sympy as sp
 
+from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
 from rigidsym.latex.table import lookup
 from rigidsym.latex.transformer.book_notations import index_key
@@ -80,6 +81,12 @@ class GlyphRules:
                 core += str(r)
         return core
 
+    def label_first(self, items):
+        """``\\mathbf{a}^S_1``: TeX sets it as ``\\mathbf{a}_1^S``, one glyph, keyed so
+        (wave 10; refused before)."""
+        labels = [i for i in items if isinstance(i, lark.Token) and i.type == "SUPLABEL"]
+        return self.glyph([i for i in items if i not in labels] + labels)
+
     def glyph(self, items):
         items = [label_key(str(i)) if isinstance(i, lark.Token) and i.type == "SUPLABEL"
                  else i for i in items]
@@ -107,6 +114,15 @@ class GlyphRules:
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
             return self.velocity(inner.key, inner.value)
+        if accent == "\\ddot" and not items[2:] and not inner.accent:  # wave 10
+            rate = self.model_rate(inner.key) if not self.timed(inner.key) else \
+                self.velocity(inner.key, inner.value) if dot_key(inner.key) in self.overrides \
+                else None
+            if rate is not None:  # \ddot of a model, or of X(t) with a --let rate
+                return self.time_derivative(rate)
+            if self.timed(inner.key) and not self.overrides[inner.key].meaning.startswith(
+                    ("rotation", "homogeneous")):
+                return self.second_rate(inner.key)  # X's shape (a 4-vector's)
         if accent == "\\dot" and not items[2:] and not inner.accent:  # of a model (issue 63)
             rate = self.model_rate(inner.key)
             if rate is not None:

@@ -108,6 +108,15 @@ class MeaningRules:
         v = self._expand(f.key, args)
         return self.power([v, sup]) if sup is not None else v
 
+    def apply_pre_many(self, items):
+        r"""``X^S(a, b)``, the power written before the arguments (Markley & Crassidis'
+        ``A^T(\mathbf{e}, \vartheta)``): the power of the ``--let`` function's value, as
+        ``X(a, b)^S`` (wave 10; a syntax error before)."""
+        if not hasattr(items[0], "key"):
+            raise LatexError("a power before a list of arguments, (...)^S(a, b): only a --let "
+                             "function's name takes arguments", "function")
+        return self.apply_many([items[0], *items[2:], items[1]])
+
     def _expand(self, key, args):
         from rigidsym.printing import notation
 
