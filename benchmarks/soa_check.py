@@ -92,8 +92,8 @@ def variant(name: str, meta: dict, tag: str) -> str:
     if tag != "today":
         for f32 in (False, True):
             S = "_f32" if f32 else ""
-            pat = re.compile(rf"static RIGIDSYM_NOINLINE int64_t rigidsym_{name}_lanes{S}\(.*?\n}}\n",
-                             re.S)
+            pat = re.compile(rf"static RIGIDSYM_NOINLINE int64_t "
+                             rf"rigidsym_{name}_lanes{S}\(.*?\n}}\n", re.S)
             src, k = pat.subn(lambda _m, f=f32: _lanes_soa(name, meta, f, tag == "soatest"), src,
                               count=1)
             assert k == 1, (name, S)
@@ -157,12 +157,14 @@ def _kernel_driver(name: str, meta: dict, idx: int) -> tuple[str, str]:
             ins_ = ", ".join(f"in{j}" for j in range(len(ins)))
             os_ = ", ".join(f"o_{v}{j}" for j in range(len(outs)))
             lines += [f"        if (!*only || !strcmp(only, \"{v}\")) {{",
-                      f"        double t0 = now(); fl[{i}] = {name}{S}_{v}_threads(n, 1, {ins_}, {os_});",
+                      f"        double t0 = now(); "
+                      f"fl[{i}] = {name}{S}_{v}_threads(n, 1, {ins_}, {os_});",
                       f"        t0 = now() - t0; if (t0 < best[{i}]) best[{i}] = t0; }}"]
         lines.append("    }")
         same = " && ".join(f"!memcmp(o_today{j}, o_{v}{j}, sizeof({T}) * {s} * n)"
                            for v in VARIANTS[1:] for j, s in enumerate(outs))
-        lines.append(f"    printf(\"{name} {T} %.4f %.4f %.4f %lld %lld %lld %lld %lld %lld %d\\n\", "
+        fmt = " ".join([name, T] + ["%.4f"] * 3 + ["%lld"] * 6 + ["%d"])
+        lines.append(f"    printf(\"{fmt}\\n\", "
                      "1e3 * best[0], 1e3 * best[1], 1e3 * best[2], (long long)fl[0], "
                      "(long long)fl[1], (long long)fl[2], (long long)fx[0], (long long)fx[1], "
                      f"(long long)fx[2], !*only && ({same}));")
