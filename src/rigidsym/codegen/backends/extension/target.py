@@ -29,6 +29,11 @@ _C_PYTHON_CHECK = 3
 #: kernels whose checked calls take the Python path for a check the C entry lacks: the
 #: rigid-body checks of rigidsym.kernels.runtime.inputs.check_inertia (BODY_KERNELS there)
 _PYTHON_CHECKED = frozenset({"inertia_at_point", "inertia_dyad_at_point"})
+#: kernels whose float32 lanes function reads its samples through local columns (structure
+#: of arrays, issue 67): where that measured faster than the row-major loop, which gcc
+#: leaves scalar for them (``benchmarks/soa_check.py``, ``benchmarks/RESULTS.md``); slower
+#: for kernels whose row-major loop vectorises (K4, K6) and in float64, so not the default
+SOA_F32 = frozenset({"rotation_from_euler_rodrigues"})
 
 
 def _kernel(env, kc, ctx: RenderContext) -> dict[str, str]:
@@ -53,6 +58,7 @@ def _kernel(env, kc, ctx: RenderContext) -> dict[str, str]:
         files[path] = env.get_template(t).render(header=ctx.header(kc, t), variants=cvars,
                                                  used=used, trig=trig_plan(kc, cp),
                                                  never_singular=never_singular,
+                                                 soa_f32=k.name in SOA_F32,
                                                  f32=f32_code(kc), **common)
     return files
 
