@@ -39,11 +39,12 @@ COMPONENTS = {"rotation_from_natural_invariants": 4, "twist_transfer": 12,
               "planar_arm_tip_with_jacobians": 4, "body_energy": 16}
 
 
-def build(out: Path, extra: list[str], cc: str = "gcc", opt: str = "-O2") -> Path:
-    exe = out / ("bench" + "".join(e.replace("-", "_").replace("=", "_")
-                                   for e in [*extra, *opt.split()]))
-    subprocess.run([cc, "-std=c99", *opt.split(), *extra, "-I", str(KERNELS), str(HERE / "bench.c"),
-                    str(HERE / "hand.c"), *map(str, sorted(KERNELS.glob("*.c"))), "-o",
+def build(out: Path, extra: list[str], cc: str = "gcc", opt: str = "-O2",
+          kernels: Path = KERNELS, tag: str = "") -> Path:
+    exe = out / ("bench" + tag + "".join(e.replace("-", "_").replace("=", "_")
+                                         for e in [*extra, *opt.split()]))
+    subprocess.run([cc, "-std=c99", *opt.split(), *extra, "-I", str(kernels), str(HERE / "bench.c"),
+                    str(HERE / "hand.c"), *map(str, sorted(kernels.glob("*.c"))), "-o",
                     str(exe), "-lm"], check=True)
     return exe
 
@@ -78,6 +79,9 @@ def main(argv=None) -> int:
                          "transfer, Newton-Euler wrench): --runs runs of the best of 7, the "
                          "least taken (issue 66's table; no valgrind)")
     ap.add_argument("--runs", type=int, default=15, help="with --fast: runs (default 15)")
+    ap.add_argument("--before", metavar="DIR", default=None,
+                    help="with --fast: also time the checked functions of this folder (an "
+                         "older generation of examples/c/rigidsym_c), side by side")
     args = ap.parse_args(argv)
     if args.fast:
         return fast(args)
@@ -167,12 +171,15 @@ def fast(args) -> int:
         tmp = Path(t)
         exes = {"checked": build(tmp, [], args.cc, FAST),
                 "trusted": build(tmp, ["-DRIGIDSYM_C_TRUSTED_INPUTS"], args.cc, FAST)}
+        modes = [("checked", exes["checked"], "gen"), ("trusted", exes["trusted"], "gen"),
+                 ("hand", exes["checked"], "hand")]
+        if args.before:
+            modes.append(("before", build(tmp, [], args.cc, FAST, Path(args.before).resolve(),
+                                          "_before"), "gen"))
         for kernel, what in SMALL:
             for dtype in ("f64", "f32"):
                 cell = {"kernel": kernel, "what": what, "dtype": dtype}
-                for mode, exe, which in (("checked", exes["checked"], "gen"),
-                                         ("trusted", exes["trusted"], "gen"),
-                                         ("hand", exes["checked"], "hand")):
+                for mode, exe, which in modes:
                     cell[mode] = min(seconds(exe, kernel, which, dtype, 20 * args.n)
                                      for _ in range(args.runs))
                 rows.append(cell)
@@ -194,11 +201,18 @@ def fast(args) -> int:
                  f"{20 * args.n} calls; this 2-core machine was shared with other jobs "
                  "(load 8-12), so the ratios move by about 0.1 from run to run). "
                  "*checked*: the default build; *trusted*: `-DRIGIDSYM_C_TRUSTED_INPUTS` "
-                 "(no input range test).", "",
-                 "| kernel | type | checked ns | trusted ns | hand ns | checked / hand | "
-                 "trusted / hand |", "|---|---|---|---|---|---|---|"]
+                 "(no input range test)" + ("; *before*: the checked functions of the "
+                 "generation before the range test read its inputs one at a time (a "
+                 "16-byte load over inputs just stored one by one waits on store "
+                 "forwarding)" if args.before else "") + ".", "",
+                 "| kernel | type | " + ("checked ns before | before / hand | "
+                                         if args.before else "")
+                 + "checked ns | trusted ns | hand ns | checked / hand | trusted / hand |",
+                 "|---|---|" + ("---|---|" if args.before else "") + "---|---|---|---|---|"]
         for c in rows:
-            lines.append(f"| {c['kernel']} ({c['what']}) | {c['dtype']} | "
+            old = (f"{c['before']:.2f} | {c['before'] / c['hand']:.2f} | "
+                   if args.before else "")
+            lines.append(f"| {c['kernel']} ({c['what']}) | {c['dtype']} | {old}"
                          f"{c['checked']:.2f} | {c['trusted']:.2f} | {c['hand']:.2f} | "
                          f"{c['checked'] / c['hand']:.2f} | {c['trusted'] / c['hand']:.2f} |")
         lines.append("<!-- /c-scalar-o3 -->")
