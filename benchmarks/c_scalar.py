@@ -11,7 +11,8 @@ calls; independent of the machine's load), and the CPU time per call (the best o
 --n calls; noisy on a shared machine). Built twice: the default (every input's range test,
 the status of docs/c-api.md) and -DRIGIDSYM_C_TRUSTED_INPUTS (no input test: the outputs'
 finiteness test only). ``--results`` writes the table into benchmarks/RESULTS.md (between
-``<!-- c-scalar -->`` markers). Needs gcc and valgrind.
+``<!-- c-scalar -->`` markers). Needs gcc and valgrind. ``--fast``: the time only, built at
+-O3 -march=native, of the small kernels (issue 66; its own table).
 """
 
 from __future__ import annotations
@@ -38,10 +39,12 @@ COMPONENTS = {"rotation_from_natural_invariants": 4, "twist_transfer": 12,
               "planar_arm_tip_with_jacobians": 4, "body_energy": 16}
 
 
-def build(out: Path, extra: list[str], cc: str = "gcc") -> Path:
-    exe = out / ("bench" + "".join(e.replace("-", "_") for e in extra))
-    subprocess.run([cc, "-std=c99", "-O2", *extra, "-I", str(KERNELS), str(HERE / "bench.c"),
-                    str(HERE / "hand.c"), *map(str, sorted(KERNELS.glob("*.c"))), "-o",
+def build(out: Path, extra: list[str], cc: str = "gcc", opt: str = "-O2",
+          kernels: Path = KERNELS, tag: str = "") -> Path:
+    exe = out / ("bench" + tag + "".join(e.replace("-", "_").replace("=", "_")
+                                         for e in [*extra, *opt.split()]))
+    subprocess.run([cc, "-std=c99", *opt.split(), *extra, "-I", str(kernels), str(HERE / "bench.c"),
+                    str(HERE / "hand.c"), *map(str, sorted(kernels.glob("*.c"))), "-o",
                     str(exe), "-lm"], check=True)
     return exe
 
@@ -71,7 +74,17 @@ def main(argv=None) -> int:
     ap.add_argument("--n", type=int, default=2000, help="calls per run (default 2000)")
     ap.add_argument("--cc", default="gcc", help="the C compiler (default gcc; the table's)")
     ap.add_argument("--results", action="store_true", help="write benchmarks/RESULTS.md")
+    ap.add_argument("--fast", action="store_true",
+                    help="the time only, at -O3 -march=native, of the small kernels (twist "
+                         "transfer, Newton-Euler wrench): --runs runs of the best of 7, the "
+                         "least taken (issue 66's table; no valgrind)")
+    ap.add_argument("--runs", type=int, default=15, help="with --fast: runs (default 15)")
+    ap.add_argument("--before", metavar="DIR", default=None,
+                    help="with --fast: also time the checked functions of this folder (an "
+                         "older generation of examples/c/rigidsym_c), side by side")
     args = ap.parse_args(argv)
+    if args.fast:
+        return fast(args)
     if shutil.which(args.cc) is None or shutil.which("valgrind") is None:
         print(f"needs {args.cc} and valgrind", file=sys.stderr)
         return 2
@@ -134,6 +147,77 @@ def main(argv=None) -> int:
         lines.append("<!-- /c-scalar -->")
         write_section(ROOT / "benchmarks" / "RESULTS.md", "\n".join(lines),
                       "<!-- c-scalar -->", "<!-- /c-scalar -->")
+    return 0
+
+
+#: issue 66's small kernels: (kernel, what the issue calls it)
+SMALL = [("twist_transfer", "twist (velocity) transfer"),
+         ("newton_euler_wrench", "Newton-Euler wrench"),
+         ("rotation_from_natural_invariants", "rotation (a sin/cos kernel, for scale)")]
+FAST = "-O3 -march=native"
+
+
+def fast(args) -> int:
+    """The CPU time per call of the small kernels' checked and trusted scalar functions
+    against the hand-written formula, built at -O3 -march=native: the least of ``--runs``
+    runs, each the best of 7 loops of ``20 --n`` calls (the machine is shared: the least is
+    the run least disturbed). ``--results`` writes the table between ``<!-- c-scalar-o3
+    -->`` markers."""
+    if shutil.which(args.cc) is None:
+        print(f"needs {args.cc}", file=sys.stderr)
+        return 2
+    rows = []
+    with tempfile.TemporaryDirectory() as t:
+        tmp = Path(t)
+        exes = {"checked": build(tmp, [], args.cc, FAST),
+                "trusted": build(tmp, ["-DRIGIDSYM_C_TRUSTED_INPUTS"], args.cc, FAST)}
+        modes = [("checked", exes["checked"], "gen"), ("trusted", exes["trusted"], "gen"),
+                 ("hand", exes["checked"], "hand")]
+        if args.before:
+            modes.append(("before", build(tmp, [], args.cc, FAST, Path(args.before).resolve(),
+                                          "_before"), "gen"))
+        for kernel, what in SMALL:
+            for dtype in ("f64", "f32"):
+                cell = {"kernel": kernel, "what": what, "dtype": dtype}
+                for mode, exe, which in modes:
+                    cell[mode] = min(seconds(exe, kernel, which, dtype, 20 * args.n)
+                                     for _ in range(args.runs))
+                rows.append(cell)
+                print(f"{kernel:34s} {dtype}  checked {cell['checked']:.2f} ns "
+                      f"({cell['checked'] / cell['hand']:.2f}x), trusted "
+                      f"{cell['trusted']:.2f} ({cell['trusted'] / cell['hand']:.2f}x), hand "
+                      f"{cell['hand']:.2f}", flush=True)
+    if args.results:
+        sys.path.insert(0, str(ROOT / "benchmarks"))
+        from _results import write_section
+
+        cc = subprocess.run([args.cc, "--version"], capture_output=True,
+                            text=True).stdout.splitlines()[0]
+        lines = ["<!-- c-scalar-o3 -->", "### At -O3 -march=native: the checked scalar "
+                 "call against the hand-written formula (issue 66)", "",
+                 f"`python benchmarks/c_scalar.py --fast --runs {args.runs} --results`: "
+                 f"{cc}, `-O3 -march=native`, CPU ns per call (the least of {args.runs} "
+                 "runs, each the best of 7 loops of "
+                 f"{20 * args.n} calls; this 2-core machine was shared with other jobs "
+                 "(load 8-12), so the ratios move by about 0.1 from run to run). "
+                 "*checked*: the default build; *trusted*: `-DRIGIDSYM_C_TRUSTED_INPUTS` "
+                 "(no input range test)" + ("; *before*: the checked functions of the "
+                 "generation before the range test read its inputs one at a time (a "
+                 "16-byte load over inputs just stored one by one waits on store "
+                 "forwarding)" if args.before else "") + ".", "",
+                 "| kernel | type | " + ("checked ns before | before / hand | "
+                                         if args.before else "")
+                 + "checked ns | trusted ns | hand ns | checked / hand | trusted / hand |",
+                 "|---|---|" + ("---|---|" if args.before else "") + "---|---|---|---|---|"]
+        for c in rows:
+            old = (f"{c['before']:.2f} | {c['before'] / c['hand']:.2f} | "
+                   if args.before else "")
+            lines.append(f"| {c['kernel']} ({c['what']}) | {c['dtype']} | {old}"
+                         f"{c['checked']:.2f} | {c['trusted']:.2f} | {c['hand']:.2f} | "
+                         f"{c['checked'] / c['hand']:.2f} | {c['trusted'] / c['hand']:.2f} |")
+        lines.append("<!-- /c-scalar-o3 -->")
+        write_section(ROOT / "benchmarks" / "RESULTS.md", "\n".join(lines),
+                      "<!-- c-scalar-o3 -->", "<!-- /c-scalar-o3 -->")
     return 0
 
 

@@ -35,6 +35,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from rigidsym.codegen.backends.c import M4F_SHIM
+
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 GCC = shutil.which("gcc")
 
@@ -395,7 +397,7 @@ def test_every_rescued_kernel_on_every_target(all_src, tmp_path, target):
         cmd, runner = [GCC, *STRICT, "-O2", *flags], []
     elif target == "cortex_m4f":
         cmd, runner = [*M4F, *STRICT, "-O2"], ["qemu-arm"]
-        extra = [Path(__file__).parent / "data" / "m4f_qemu_shim.c"]
+        extra = [M4F_SHIM]
     else:
         (cc, *f), runner = ARM_TARGETS[target]
         cmd = [cc, *STRICT, "-O2", *f]

@@ -44,6 +44,8 @@ from test_c_target import (
     sources,
 )
 
+from rigidsym.codegen.backends.c import M4F_SHIM
+
 pytestmark = pytest.mark.slow
 
 #: target: (compiler, its flags, qemu-user binary, long double is double there)
@@ -244,7 +246,7 @@ def test_extreme_float_inputs_no_rescue_takes_on_cortex_m4f(tmp_path):
                     "qemu-user)")
     src = tmp_path / "driver.c"
     src.write_text(_DRIVER)
-    shim = Path(__file__).parent / "data" / "m4f_qemu_shim.c"
+    shim = M4F_SHIM
     exe = _build([cc, *STRICT, "-O2", *M4F_FLAGS, "-nostartfiles", "--specs=nosys.specs"],
                  [src, *sources(), shim], tmp_path / "driver_m4f")
     cases = _flagged_cases((np.float32, np.float64))
@@ -269,7 +271,7 @@ def test_float_example_matches_numpy_on_cortex_m4f(tmp_path):
     if missing:
         pytest.skip(f"{' and '.join(missing)} not installed (Debian: gcc-arm-none-eabi, "
                     "qemu-user)")
-    shim = Path(__file__).parent / "data" / "m4f_qemu_shim.c"
+    shim = M4F_SHIM
     exe = _build([cc, *STRICT, "-O2", *M4F_FLAGS, "-nostartfiles", "--specs=nosys.specs",
                   "-DRIGIDSYM_EXAMPLE_PRINT"],
                  [EXAMPLE / "main_f32.c", *sources(), shim], tmp_path / "loop_m4f")

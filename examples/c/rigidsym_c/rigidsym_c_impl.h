@@ -78,7 +78,7 @@ typedef char rigidsym_c_error_fsingle_precision_constant_add_fno_single_precisio
 
 /* The rescue without a wider type (the float functions; the double ones where long double
  * is double): power-of-two rescaling of the arguments in which the kernel is homogeneous
- * (docs/c-api.md, "Extreme inputs"). */
+ * (docs/c-api.md, "Status codes": extreme inputs). */
 #if defined(__GNUC__)
 #define RIGIDSYM_C_COLD __attribute__((cold, noinline))
 #else

@@ -201,7 +201,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(e), e + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
             return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
@@ -914,7 +914,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_loadh_pd(_mm_load_sd(e), e + 1)), &mx_, &mn_);
+        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
             return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);

@@ -31,6 +31,10 @@ def _generate_args(p) -> None:
                    help="with --target c or cpp: the licence or copyright notice of every "
                         "generated file, your code's (its lines; \"\" for none; no LICENSE "
                         "file is written); default: the rigidsym project's MIT notice")
+    p.add_argument("--no-measure", action="store_true",
+                   help="with --target c or cpp and --module: do not measure the module's "
+                        "float bounds (a few seconds per kernel; its headers then say \"not "
+                        "measured\"); default: measure them (needs a C compiler)")
     p.add_argument("--namespace", default=None, metavar="NAME",
                    help="with --target cpp: the C++ namespace of the layer (default: "
                         "rigidsym)")
@@ -62,7 +66,8 @@ def cmd_generate(args) -> int:
                        ("--single-header", getattr(args, "single_header", False)),
                        ("--namespace", getattr(args, "namespace", None)),
                        ("--prefix", getattr(args, "prefix", None)),
-                       ("--notice", getattr(args, "notice", None))):
+                       ("--notice", getattr(args, "notice", None)),
+                       ("--no-measure", getattr(args, "no_measure", False))):
         if given is not None and given is not False:    # --notice "" is given
             print(f"error: {opt}: only with --target c or cpp", file=sys.stderr)
             return 2

@@ -24,7 +24,7 @@ from rigidsym.core.config import KERNEL_SPEC
 from rigidsym.registry.declarations import BadInput
 
 __all__ = ["user_kernels", "load_user_kernels", "generate_user", "cmd_generate_user",
-           "select_kernels", "cmd_generate_c", "MARKER"]
+           "select_kernels", "cmd_generate_c", "measured_bounds", "MARKER"]
 
 
 def _source_name(src, title: str) -> str:
@@ -188,6 +188,34 @@ def select_kernels(modules, names) -> tuple[list, dict[str, str]]:
     return kernels, where
 
 
+def measured_bounds(kernels, codes, origin: dict, known: dict) -> dict:
+    """The float bounds of the user kernels among ``kernels`` (and their twins) that
+    ``known`` lacks for their declaration hash, measured now
+    (:mod:`rigidsym.codegen.backends.c.float_measure`; a few seconds each): ``{name: entry}``
+    as :func:`~rigidsym.codegen.backends.c.target.float_bounds` gives. ``codes``: the compiled
+    ``kernels`` and twins; ``origin``: ``{kernel: module}``. No C compiler: a note, ``{}``."""
+    from rigidsym.codegen.backends.c import float_measure as FM
+    from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
+
+    user = [k for k in kernels if origin.get(k.name) != KERNEL_SPEC]
+    names = {k.name for k in user} | {j.name for j in jacobian_kernels(user)}
+    todo = {kc.kernel.name for kc in codes if kc.kernel.name in names
+            and known.get(kc.kernel.name, {}).get("hash") != kc.hash}
+    if not todo:
+        return {}
+    if FM.compiler() is None:
+        print("note: float bounds not measured: no C compiler (gcc, cc or $CC)",
+              file=sys.stderr)
+        return {}
+    t0 = time.perf_counter()
+    FM.register(user)
+    got = FM.measure_codes(codes, origin, only=todo,
+                           say=lambda m: print(f"  {m}", file=sys.stderr, flush=True))
+    print(f"measured the float bounds of {len(got)} functions "
+          f"({time.perf_counter() - t0:.1f} s; --no-measure skips)", file=sys.stderr)
+    return got
+
+
 def cmd_generate_c(args) -> int:
     """Write (or with ``--check`` compare) the C-only target into ``--out`` (with ``--target
     cpp`` also its C++ layer, :mod:`rigidsym.codegen.backends.cpp`, in ``--namespace``),
@@ -227,8 +255,11 @@ def cmd_generate_c(args) -> int:
         except CppTargetError as exc:
             raise BadInput(str(exc)) from None
     codes = compile_many(kernels, plan32=False)
+    bounds = float_bounds(args.module)
+    if args.module and not getattr(args, "no_measure", False):
+        bounds.update(measured_bounds(kernels, codes, origin, bounds))
     files = generate_c(codes, origin, single_header=getattr(args, "single_header", False),
-                       bounds=float_bounds(args.module), notice=notice, prefix=prefix)
+                       bounds=bounds, notice=notice, prefix=prefix)
     target = getattr(args, "target", "c")
     if target == "cpp":   # the C++ layer beside the C it calls
         from rigidsym.codegen.backends.cpp.target import generate_cpp

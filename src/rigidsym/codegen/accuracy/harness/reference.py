@@ -89,10 +89,30 @@ NAMESPACE = {
 NAMESPACE["math"] = SimpleNamespace(**NAMESPACE)    # the printer writes math.sin(x)
 
 
+#: kernels the harness judges besides the book's (a user module's and their twins), by name:
+#: :func:`register_kernels` fills it
+EXTRA_KERNELS: dict = {}
+
+
+def register_kernels(kernels) -> None:
+    """Let the harness judge ``kernels`` (user :class:`~rigidsym.codegen.spec.Kernel` s, not
+    the book's) and their Jacobian twins by name: :func:`kernel_of` finds them first."""
+    from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
+
+    EXTRA_KERNELS.update({k.name: k for k in kernels})
+    EXTRA_KERNELS.update({j.name: j for j in jacobian_kernels(list(kernels))})
+    kernel_of.cache_clear()
+    functions.cache_clear()
+
+
 @cache
 def kernel_of(name: str):
-    """The declared :class:`~rigidsym.codegen.spec.Kernel` ``name`` (Jacobian kernels too)."""
+    """The declared :class:`~rigidsym.codegen.spec.Kernel` ``name`` (Jacobian kernels too;
+    registered ones, :func:`register_kernels`, first)."""
     import importlib
+
+    if name in EXTRA_KERNELS:
+        return EXTRA_KERNELS[name]
 
     from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
     from rigidsym.core.config import KERNEL_SPEC

@@ -1,5 +1,6 @@
 /* The Linux system calls newlib needs, for a Cortex-M4F program run under qemu-arm's user
- * mode (tests/test_c_target_arm.py): the bare-metal build's _read, _write, _exit and _sbrk as Linux
+ * mode (shipped with rigidsym for the command of docs/c-api.md, "float and double"; used by
+ * tests/test_c_target_arm.py): the bare-metal build's _read, _write, _exit and _sbrk as Linux
  * calls (svc 0, the number in r7), and a _start that qemu enters with no C runtime set up
  * beyond what the ELF loader does (.data loaded, .bss zeroed). SPDX-License-Identifier: MIT */
 #include <errno.h>
