@@ -1055,7 +1055,8 @@ def _reference(name: str, xs: list) -> tuple[np.ndarray, np.ndarray]:
         # (seed 555 at 1e-36: 1.95e-43 off, 1.98e-43 from this term alone)
         moved = [abs(l2 * mp.sin(q1 + q2) * (q1 + q2)), abs(l2 * mp.cos(q1 + q2) * (q1 + q2))]
         return (np.array([float(a + b) for a, b in terms]),
-                np.array([float(abs(a) + abs(b) + d) for (a, b), d in zip(terms, moved, strict=True)]))
+                np.array([float(abs(a) + abs(b) + d)
+                          for (a, b), d in zip(terms, moved, strict=True)]))
     if name == "newton_euler_wrench":  # [I wd + w x (I w); m cdd] (Newton-Euler, (3.134))
         inertia, (m,), w, wd, cdd = f
         h = [[inertia[3 * k + j] * w[j] for j in range(3)] for k in range(3)]  # I w, termwise
