@@ -275,7 +275,39 @@ class _Reader:
             self.i = start
         if tok == "\\begin{bmatrix}":
             return self.bmatrix()
+        if tok == "\\int":
+            return self.integral()
         return self.glyph()
+
+    def integral(self) -> M:
+        """``\\int_{\\mathcal{B}} f d\\mathcal{B}``: the table's line for the integral
+        sign gives the body's particles, each a table of its own glyphs (its mass as
+        ``\\rho``, its position as ``\\mathbf{p}``, ...); f is read once per particle
+        under that table, every glyph afresh, and the readings summed."""
+        self.take("\\int")
+        self.take("_")
+        key = f"\\int_{{{self.group()}}}"
+        entry = self.table.get(key)
+        if entry is None or not entry.get("particles"):
+            raise NotRead(f"the integral {key} (no body line in the symbol table)")
+        depth, j = 0, self.i  # the integrand runs to d\mathcal{B} at depth 0
+        while j < len(self.t) and not (depth == 0 and self.t[j:j + 2] == ["d", "\\mathcal"]):
+            depth += (self.t[j] in ("{", "(", "[")) - (self.t[j] in ("}", ")", "]"))
+            j += 1
+        if j >= len(self.t):
+            raise NotRead(f"the integral {key} without its d\\mathcal{{B}}")
+        body, self.i = self.t[self.i:j], j + 2
+        self.group()
+        total = None
+        for part in entry["particles"]:
+            table = {**self.table, **{g: {"glyph": g, "latex": x, "model": entry["model"]}
+                                      for g, x in part.items()}}
+            inner = _Reader(body, table, self.defs, self.cited, self.lets, {})
+            v = inner.chain()[0]
+            self.assumed = self.assumed or inner.assumed
+            total = v if total is None else _add(total, v, "+")
+        self.cited.append(f"{key} as the model's {entry['model']}")
+        return total
 
     def frame_after(self) -> str | None:
         """The frame K of ``[...]_{K}`` opened just before (``None``: a plain bracket)."""
@@ -379,7 +411,8 @@ class _Reader:
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
-            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited,
+            inner = _Reader(_tokens(str(entry["latex"])), self.table,
+                            {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
             value = self.named(key, inner.chain()[0], inner.assumed)
             self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry

@@ -29,6 +29,7 @@ from pathlib import Path
 
 import sympy as sp
 
+from rigidsym.checking.certifying.body_symbols import point_body_symbols
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.deciding.evidence import small_witness
 from rigidsym.checking.deciding.explicit import (
@@ -308,7 +309,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
             out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
                         "printed_as": "the time derivative of (2.49)"})
             out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
-    return out + model_symbols({e["glyph"] for e in out}, section, out)
+    out += model_symbols({e["glyph"] for e in out}, section, out)
+    return out + point_body_symbols({e["glyph"] for e in out}, section)
 
 
 def _has(glyphs: set, latex: str) -> bool:
