@@ -124,11 +124,13 @@ class _Reader:
                  seen: dict | None = None):
         self.t, self.i, self.table = tokens, 0, table
         self.lets = [] if lets is None else lets  # [name, text]: a glyph's entries, once
-        self.seen = {} if seen is None else seen  # key -> (named value, assumed): once
+        self.seen = {} if seen is None else seen  # key -> (named value, assumed, used)
+        self.used: set = set()  # the glyphs looked up (through definitions too)
         self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
         self.cited = [] if cited is None else cited
         self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
         self.frame = None  # inside [...]_{K}: glyphs are looked up as [G]_{K}
+        self.norm = 0  # inside \\|...\\|: a \\| closes the norm
 
     def peek(self, k: int = 0):
         return self.t[self.i + k] if self.i + k < len(self.t) else None
@@ -174,10 +176,14 @@ class _Reader:
 
     def term(self) -> M:
         v = self.factor()
-        while self.peek() not in self._STOP:
+        while self.peek() not in self._STOP or self.peek() == "\\|" and not self.norm:
             if self.peek() == "\\times":
                 self.take()
-                v = _cross(v, self.factor())
+                w = self.factor()  # a x B c: a x (B c), B c the vector
+                while w.shape == (3, 3) and self.peek() not in (*self._STOP, "\\times",
+                                                                "\\cdot", "/"):
+                    w = _mul(w, self.factor())
+                v = _cross(v, w)
             elif self.peek() == "\\cdot":
                 self.take()
                 w = self.factor()
@@ -221,7 +227,9 @@ class _Reader:
             return _s(self.take())
         if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
             self.take()
+            self.norm += 1
             x = _vec(self.expr())
+            self.norm -= 1
             self.take("\\|")
             if self.t[self.i:self.i + 2] != ["^", "2"] and \
                     self.t[self.i:self.i + 4] != ["^", "{", "2", "}"]:
@@ -298,14 +306,19 @@ class _Reader:
             raise NotRead(f"the integral {key} without its d\\mathcal{{B}}")
         body, self.i = self.t[self.i:j], j + 2
         self.group()
-        total = None
-        for part in entry["particles"]:
+        total, bound = None, {g for part in entry["particles"] for g in part}
+        common = {k: v for k, v in self.seen.items() if not v[2] & bound}
+        for part in entry["particles"]:  # a glyph free of the particle's is read once
             table = {**self.table, **{g: {"glyph": g, "latex": x, "model": entry["model"]}
                                       for g, x in part.items()}}
-            inner = _Reader(body, table, self.defs, self.cited, self.lets, {})
+            inner = _Reader(body, table, self.defs, self.cited, self.lets, dict(common))
             v = inner.chain()[0]
+            common.update({k: w for k, w in inner.seen.items() if not w[2] & bound})
             self.assumed = self.assumed or inner.assumed
+            self.used |= inner.used - bound
             total = v if total is None else _add(total, v, "+")
+        for k, w in common.items():
+            self.seen.setdefault(k, w)
         self.cited.append(f"{key} as the model's {entry['model']}")
         return total
 
@@ -367,7 +380,7 @@ class _Reader:
             self.i += 3
         return self.lookup(name)
 
-    def named(self, key: str, v: M, assumed: bool) -> M:
+    def named(self, key: str, v: M, assumed: bool, used: set) -> M:
         """``v`` with each compound entry written once as a let (``page1``, ...), so that
         a glyph read through a definition is a name in every product it enters."""
         self.assumed = self.assumed or assumed
@@ -380,11 +393,20 @@ class _Reader:
                         self.lets.append([f"page{len(self.lets) + 1}", x])
                         x = self.lets[-1][0]
                     rows[-1].append(x)
-            self.seen[key] = (M(rows), assumed)
+            self.seen[key] = (M(rows), assumed, used)
         return self.seen[key][0]
+
+    def again(self, key: str) -> M | None:
+        """A glyph read before on this page (under the same particle), or ``None``."""
+        if key not in self.seen:
+            return None
+        v, assumed, used = self.seen[key]
+        self.assumed, self.used = self.assumed or assumed, self.used | used
+        return v
 
     def lookup(self, name: str) -> M:
         key = name.replace(" ", "")
+        self.used.add(key)
         self.assumed = self.assumed or key in ("\\mathbf{1}", "\\mathbf{O}", "\\mathbf{0}")
         if key in ("\\mathbf{1}", "\\mathbf{O}"):
             return M([[("1" if i == j and key[-2] == "1" else "0") for j in range(3)]
@@ -399,10 +421,13 @@ class _Reader:
         entry = self.table.get(key)
         if entry is None and key in self.defs:  # defined on the page before: read that
             text, where, sign = (*self.defs[key], "\\equiv")[:3]
+            if (v := self.again(key)) is not None:
+                return v
             rest = {k: v for k, v in self.defs.items() if k != key}
             inner = _Reader(_tokens(text), self.table, rest, self.cited, self.lets,
                             self.seen)
-            value = self.named(key, inner.chain()[0], inner.assumed)
+            value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
+            self.used |= inner.used
             self.cited.append(f"{name} by ({where})" + (", an equation" if sign == "=" else ""))
             return value
         if entry is None:
@@ -410,11 +435,14 @@ class _Reader:
                           "(\\equiv) on the page before")
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
+        if "latex" in entry and (v := self.again(key)) is not None:
+            return v
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
             inner = _Reader(_tokens(str(entry["latex"])), self.table,
                             {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
-            value = self.named(key, inner.chain()[0], inner.assumed)
+            value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
+            self.used |= inner.used
             self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
                               else f"{key} by {entry.get('printed_as', '?')}, an equation")
             return value

@@ -55,9 +55,14 @@ def point_body_symbols(have: set, section: str) -> list[dict]:
         where the table has no point-mass body.
     """
     ms = _masses(have)
-    if not section.startswith("3.8") or ms is None or not {
-            "\\mathbf{o}", "\\mathbf{s}_1", "\\mathbf{s}_2", "\\mathbf{s}_3"} <= have:
+    if not section.startswith("3.8") or ms is None:
         return []
+    if not {"\\mathbf{o}", "\\mathbf{s}_1", "\\mathbf{s}_2", "\\mathbf{s}_3"} <= have:
+        return [{"glyph": "\\int_{\\mathcal{B}}", "model": "body of four point masses m_i: "
+                 "the integral of rho over B is the sum of the m_i",
+                 "particles": [{"\\rho": m} for m in ms]},
+                {"glyph": "m", "latex": r"\int_{\mathcal{B}} \rho d\mathcal{B}",
+                 "model": "mass as printed in (3.123)"}][:1 + ("m" not in have)]
     moving = {"\\dot{\\mathbf{Q}}", "\\dot{\\mathbf{o}}"} <= have
     rho = [f"{ms[3]}\\mathbf{{s}}_{i}" for i in (1, 2, 3)]
     rho.append("-(" + " + ".join(f"{ms[i]}\\mathbf{{s}}_{i + 1}" for i in range(3)) + ")")
