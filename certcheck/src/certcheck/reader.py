@@ -393,15 +393,16 @@ class _Reader:
                         self.lets.append([f"page{len(self.lets) + 1}", x])
                         x = self.lets[-1][0]
                     rows[-1].append(x)
-            self.seen[key] = (M(rows), assumed, used)
+            self.seen[key] = (M(rows), assumed, used, [])
         return self.seen[key][0]
 
     def again(self, key: str) -> M | None:
         """A glyph read before on this page (under the same particle), or ``None``."""
         if key not in self.seen:
             return None
-        v, assumed, used = self.seen[key]
+        v, assumed, used, cites = self.seen[key]
         self.assumed, self.used = self.assumed or assumed, self.used | used
+        self.cited.extend(cites)  # what it was read through, cited again
         return v
 
     def lookup(self, name: str) -> M:
@@ -423,12 +424,13 @@ class _Reader:
             text, where, sign = (*self.defs[key], "\\equiv")[:3]
             if (v := self.again(key)) is not None:
                 return v
-            rest = {k: v for k, v in self.defs.items() if k != key}
+            rest, n = {k: v for k, v in self.defs.items() if k != key}, len(self.cited)
             inner = _Reader(_tokens(text), self.table, rest, self.cited, self.lets,
                             self.seen)
             value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
             self.used |= inner.used
             self.cited.append(f"{name} by ({where})" + (", an equation" if sign == "=" else ""))
+            self.seen[key] = (*self.seen[key][:3], self.cited[n:])
             return value
         if entry is None:
             raise NotRead(f"the glyph {name} is neither in the symbol table nor defined "
@@ -438,6 +440,7 @@ class _Reader:
         if "latex" in entry and (v := self.again(key)) is not None:
             return v
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
+            n = len(self.cited)
             inner = _Reader(_tokens(str(entry["latex"])), self.table,
                             {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
@@ -445,6 +448,7 @@ class _Reader:
             self.used |= inner.used
             self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
                               else f"{key} by {entry.get('printed_as', '?')}, an equation")
+            self.seen[key] = (*self.seen[key][:3], self.cited[n:])
             return value
         if "cpm_of" in entry:
             return _cpm(self.lookup(entry["cpm_of"]))
