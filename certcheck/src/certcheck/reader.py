@@ -240,8 +240,12 @@ class _Reader:
         if tok in ("(", "["):
             self.take()
             outer, frame = self.frame, self.frame_after() if tok == "[" else None
-            self.frame = frame or outer
+            self.frame, start = frame or outer, self.i
             v = self.expr()
+            if tok == "[" and not frame and self.i - start == 4 and self.t[start] in (
+                    "\\mathbf", "\\boldsymbol"):
+                raise NotRead("[G] without a frame: G's components in a frame the page "
+                              "does not name")
             self.take(")" if tok == "(" else "]")
             self.frame = outer
             if frame:  # [X]_{K}: X's components in the frame K (its subscript read)
