@@ -256,9 +256,11 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     (its atoms row-major). A cross-product matrix only where printed in ``latex`` and the
     glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``. Where ``e``
     and ``phi`` are atoms and no rotation group is, ``{"glyph": "\\mathbf{Q}", "latex":
-    ..., "printed_as": "(2.49)", "model": ...}``: Q of the natural invariants as printed in
-    chapter 2 (and its time derivative term by term), which certcheck reads firmly and
-    cites (the referee holds it against chapter 2's page). Section 3.8's point-mass body:
+    ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
+    (and its time derivative term by term), which certcheck reads and cites, tentatively:
+    3.14's and 3.16's certificates prove a restatement of the printed relation (A^T A times
+    the printed inverse is 1), whose printed side read through (2.49) differs from the
+    certificate's, and a firm (2.49) would reject them. Section 3.8's point-mass body:
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
@@ -304,14 +306,12 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     glyphs = {e["glyph"] for e in out}
     # Q of the natural invariants, as printed (also for glyphs defined through Q: Omega)
     if "\\mathbf{Q}" not in glyphs and {"\\mathbf{e}", "\\phi"} <= glyphs:
-        out.append({"glyph": "\\mathbf{Q}", "latex": _Q_NATURAL, "printed_as": "(2.49)",
-                    "model": "rotation of angle phi about e, as printed in chapter 2 (2.49)"})
+        out.append({"glyph": "\\mathbf{Q}", "latex": _Q_NATURAL, "printed_as": "(2.49)"})
         if "\\mathbf{E}" not in glyphs:
             out.append({"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"})
         if {"\\dot{\\mathbf{e}}", "\\dot{\\phi}"} <= glyphs:
             out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
-                        "printed_as": "the time derivative of (2.49)",
-                        "model": "its rate, (2.49) differentiated term by term"})
+                        "printed_as": "the time derivative of (2.49)"})
             out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
     out += model_symbols({e["glyph"] for e in out}, section, out)
     return out + point_body_symbols({e["glyph"] for e in out}, section)
