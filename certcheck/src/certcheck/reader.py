@@ -14,8 +14,13 @@ brackets and ``bmatrix`` blocks, ``\\|x\\|^2`` (a bare norm, a square root, is n
 integer powers of a square matrix, ``\\underbrace{X}_{...}`` (X), and ``[X]_{K}``: X's
 components in the frame K, each glyph G of X read from the table's line ``[G]_{K}``. A
 table line ``{"glyph", "latex", "model"}`` is the certificate's model of a glyph the page
-defines in words, in the table's glyphs; it is read firmly. A side the reader cannot read
-is reported, never passed.
+defines in words, in the table's glyphs; it is read firmly. The integral sign
+``\\int_{\\mathcal{B}} f d\\mathcal{B}`` is read through the table's line ``{"glyph":
+"\\int_{\\mathcal{B}}", "model", "particles"}`` (section 3.8's body of point masses): f is
+read once per particle, each particle a table of its own glyphs (its mass as ``\\rho``, its
+position as ``\\mathbf{p}``, their rates) bound inside the integral only, and the readings
+are summed. ``[G]`` with no frame named (3.40's ``[\\mathbf{Q}]``) is not read. A side the
+reader cannot read is reported, never passed.
 
 Each read side becomes entries in the certificate's grammar and is compared with the
 certificate's side by :func:`certcheck.check.check_identity` (the kinds' hypotheses only).
