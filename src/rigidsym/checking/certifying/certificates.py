@@ -365,6 +365,24 @@ def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) ->
                     else g
                 if "atoms" in e and undotted == base:
                     out.append({**e, "glyph": f"[{e['glyph']}]_{{\\mathcal{{{frame}}}}}"})
+    if section == "3.2.2" and {"\\mathbf{p}_1", "\\mathbf{u}", "ell"} <= have:
+        out += _line_points(have, table or [])
+    return out
+
+
+def _line_points(have: set, table: list[dict]) -> list[dict]:
+    """Section 3.2.2's line through P_1 and P_2 (the page's words), as the model has it:
+    ``p_2 = p_1 + ell u`` (``u`` unit, ``ell`` the distance), a point ``p = p_1 + lambda
+    (p_2 - p_1)`` of it, ``P_i`` the cross-product matrices of ``p_i``."""
+    ell = next(e for e in table if e.get("glyph") == "ell")
+    out = [{**ell, "glyph": "\\ell"},
+           {"glyph": "\\mathbf{p}_2", "latex": "\\mathbf{p}_1 + \\ell\\mathbf{u}",
+            "model": "the line's second point P_2, at distance ell from P_1 along the unit u"},
+           {"glyph": "\\mathbf{P}_1", "cpm_of": "\\mathbf{p}_1"},
+           {"glyph": "\\mathbf{P}_2", "cpm_of": "\\mathbf{p}_2"}]
+    if "\\lambda" in have and "\\mathbf{p}" not in have:
+        out.append({"glyph": "\\mathbf{p}", "latex": "\\mathbf{p}_1 + \\lambda(\\mathbf{p}_2"
+                    " - \\mathbf{p}_1)", "model": "a point P of the line"})
     return out
 
 
