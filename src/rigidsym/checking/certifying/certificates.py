@@ -367,7 +367,28 @@ def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) ->
                     out.append({**e, "glyph": f"[{e['glyph']}]_{{\\mathcal{{{frame}}}}}"})
     if section == "3.2.2" and {"\\mathbf{p}_1", "\\mathbf{u}", "ell"} <= have:
         out += _line_points(have, table or [])
+    if {"\\mathbf{w_axis}", "\\mathbf{e}"} <= have:
+        out += _axis_points(have, table or [])
     return out
+
+
+def _axis_points(have: set, table: list[dict]) -> list[dict]:
+    """Section 3.2.1's displacement about its own axis (the line through ``w_axis`` along
+    ``e``, a slide ``d_0`` along it), as the model has it: ``c = w - Q w + d_0 e``, the
+    displaced ``a' = Q a + c`` (``d_A`` by (3.3)), and ``p_0`` the axis' point closest to
+    the origin, ``w - (e^T w) e``."""
+    d0 = [{**e, "glyph": "d_0"} for e in table if e.get("glyph") == "d0_axial"]
+    out = [*d0,
+           {"glyph": "\\mathbf{p}_0", "latex": "\\mathbf{w_axis} - (\\mathbf{e}^T"
+            "\\mathbf{w_axis})\\mathbf{e}", "model": "P_0, the axis' point closest to the "
+            "origin (the axis through w_axis along e)"}]
+    if "\\mathbf{a}" in have and d0:
+        out += [{"glyph": "\\mathbf{c}", "latex": "\\mathbf{w_axis} - \\mathbf{Q}"
+                 "\\mathbf{w_axis} + d_0\\mathbf{e}", "model": "the displacement's "
+                 "translation: a rotation Q about the axis and a slide d_0 along it"},
+                {"glyph": "\\mathbf{a}'", "latex": "\\mathbf{Q}\\mathbf{a} + \\mathbf{c}",
+                 "model": "displaced point, x' = Q x + c"}]
+    return [e for e in out if e["glyph"] not in have]
 
 
 def _line_points(have: set, table: list[dict]) -> list[dict]:
