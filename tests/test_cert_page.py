@@ -632,3 +632,33 @@ def test_chapter_body_line_tampering_rejected_where_read(chapter):
         read += 1
         assert f"({i})" in _rejected(mass_changed(c), book), i
     assert read >= 10
+
+
+@pytest.fixture(scope="module")
+def points_read(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _write(tmp_path_factory.mktemp("points"), ["3.8", "3.21"])
+
+
+def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
+    """3.8 (e^T p_0 = 0, p_0 the axis' point closest to the origin; both sides) and 3.21
+    (the Plücker array of the line through P_1 and P_2; its right side) read firmly
+    through the model's lines of the points the page defines in words; the point moved
+    (p_0 + e, p_2 + p_1: in 3.19 no move is seen, its printed side being 0 for every p_2)
+    and both sides shifted: rejected."""
+    from certcheck.reader import compare
+
+    book = _book()
+    moved = {"3.8": ("\\mathbf{p}_0", " + \\mathbf{e}"), "3.21": ("\\mathbf{p}_2",
+                                                               " + \\mathbf{p}_1")}
+    for i, c in points_read.items():
+        lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
+        assert any(x.startswith("read from the page: relation 1's") for x in lines), lines
+        assert not any(x.startswith("matched") for x in lines), lines
+        glyph, shift = moved[i]
+        t = copy.deepcopy(c)
+        entry = next(e for e in t["symbols"] if e.get("glyph") == glyph)
+        entry["latex"] = f"({entry['latex']}){shift}"
+        for bad in (t, shifted_sides(c)):
+            assert f"({i})" in _rejected(bad, book), i
