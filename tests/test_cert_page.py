@@ -528,3 +528,138 @@ def test_model_glyphs_read_firmly_and_tamperings_rejected(model_read):
         for t in (doubled_rhs(c), shifted_sides(c), changed,
                   another_printed_text(c, book, other)):
             assert f"({i})" in _rejected(t, book), i
+
+
+def test_reader_notation_integral_over_the_tables_body():
+    """The integral sign read through the table's body line: once per particle, its mass
+    as rho and its position as p (bound inside the integral; p outside is the table's
+    own), summed; a x B y is a x (B y); a table without a body line is not read (exact
+    rational values, random atoms)."""
+    import random
+
+    from certcheck.reader import NotRead, read_relations
+
+    rng = random.Random(653)
+    x, y, z = (["x_1", "x_2", "x_3"], ["y_1", "y_2", "y_3"], ["z_1", "z_2", "z_3"])
+    A = [f"a_{k}" for k in range(9)]
+    table = [{"glyph": "\\mathbf{x}", "kind": "free", "atoms": x},
+             {"glyph": "\\mathbf{y}", "kind": "free", "atoms": y},
+             {"glyph": "\\mathbf{p}", "kind": "free", "atoms": z},
+             {"glyph": "\\mathbf{A}", "kind": "free", "atoms": A},
+             {"glyph": "m_1", "kind": "free", "atoms": ["m_1"]},
+             {"glyph": "m_2", "kind": "free", "atoms": ["m_2"]},
+             {"glyph": "\\int_{\\mathcal{B}}", "model": "two point masses", "particles": [
+                 {"\\rho": "m_1", "\\mathbf{p}": "\\mathbf{x}"},
+                 {"\\rho": "m_2", "\\mathbf{p}": "\\mathbf{x} + \\mathbf{y}"}]}]
+    lets: list = []
+    (first, outside), = read_relations("\\int_{\\mathcal{B}} \\rho \\mathbf{p} d\\mathcal{B}"
+                                       " = \\mathbf{p}", table, None, lets)
+    (second, cross), = read_relations("\\int_{\\mathcal{B}} \\frac{1}{2}\\rho \\|\\mathbf{p}"
+                                      "\\|^2 d\\mathcal{B} = \\mathbf{x} \\times \\mathbf{A}"
+                                      "\\mathbf{y}", table, None, lets)
+    ((bare, _, _), _), = read_relations("\\int_{\\mathcal{B}} \\rho d\\mathcal{B} = 1",
+                                        table[:-1])
+    assert isinstance(bare, NotRead)
+    for _ in range(5):
+        at = {n: Fraction(rng.randint(-9, 9), rng.randint(1, 5))
+              for n in x + y + z + A + ["m_1", "m_2"]}
+        for name, text in lets:
+            at[name] = _value(text, at)
+
+        def val(m, at=at):
+            return [[_value(e, at) for e in r] for r in m[0].rows]
+        xy = [at[a] + at[b] for a, b in zip(x, y, strict=True)]
+        assert val(first) == [[at["m_1"] * at[a] + at["m_2"] * s] for a, s in zip(x, xy,
+                                                                                 strict=True)]
+        assert val(outside) == [[at[c]] for c in z]
+        assert val(second) == [[(at["m_1"] * sum(at[a] ** 2 for a in x)
+                                 + at["m_2"] * sum(s * s for s in xy)) / 2]]
+        Ay = [sum(at[A[3 * i + j]] * at[y[j]] for j in range(3)) for i in range(3)]
+        xs = [at[a] for a in x]
+        assert val(cross) == [[xs[(i + 1) % 3] * Ay[(i + 2) % 3] - xs[(i + 2) % 3]
+                               * Ay[(i + 1) % 3]] for i in range(3)]
+
+
+@pytest.fixture(scope="module")
+def body_read(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _write(tmp_path_factory.mktemp("body"), ["3.131", "3.133a"])
+
+
+def mass_changed(cert: dict) -> dict | None:
+    """The table's body line with its first particle's mass doubled (the integral sign
+    bound to another body)."""
+    c = copy.deepcopy(cert)
+    line = next((e for e in c.get("symbols", []) if e.get("particles")), None)
+    if line is None:
+        return None
+    line["particles"][0]["\\rho"] = "2" + line["particles"][0]["\\rho"]
+    return c
+
+
+def test_point_body_integrals_read_firmly_and_tamperings_rejected(body_read):
+    """3.131 (a definition: I_A's integral) and 3.133a (Steiner: I_A through (3.131)) are
+    read firmly through the integral sign's body line; a doubled right side, both sides
+    shifted, a particle's mass doubled in the body line and another id's text: rejected."""
+    from certcheck.reader import compare
+
+    book = _book()
+    for i, c in body_read.items():
+        lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
+        assert any(x.startswith("read from the page") and "\\int_{\\mathcal{B}} as the "
+                   "model's body" in x for x in lines), lines
+        other = "3.133a" if i == "3.131" else "3.131"
+        for t in (doubled_rhs(c), shifted_sides(c), mass_changed(c),
+                  another_printed_text(c, book, other)):
+            assert f"({i})" in _rejected(t, book), i
+
+
+@pytest.mark.slow
+def test_chapter_body_line_tampering_rejected_where_read(chapter):
+    """Every id read firmly through the integral sign's body line (section 3.8, a body at
+    rest: 3.123-3.125, 3.131, 3.133a, 3.133b, 3.147): a particle's mass doubled in the line
+    is rejected."""
+    from certcheck.reader import compare
+
+    _, certs = chapter
+    book = _book()
+    read = 0
+    for i, c in sorted(certs.items()):
+        if mass_changed(c) is None or not any(
+                x.startswith("read from the page") and "\\int_{\\mathcal{B}}" in x for x in
+                compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))):
+            continue
+        read += 1
+        assert f"({i})" in _rejected(mass_changed(c), book), i
+    assert read >= 5
+
+
+@pytest.fixture(scope="module")
+def points_read(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _write(tmp_path_factory.mktemp("points"), ["3.8", "3.21"])
+
+
+def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
+    """3.8 (e^T p_0 = 0, p_0 the axis' point closest to the origin; both sides) and 3.21
+    (the Plücker array of the line through P_1 and P_2; its right side) read firmly
+    through the model's lines of the points the page defines in words; the point moved
+    (p_0 + e, p_2 + p_1: in 3.19 no move is seen, its printed side being 0 for every p_2)
+    and both sides shifted: rejected."""
+    from certcheck.reader import compare
+
+    book = _book()
+    moved = {"3.8": ("\\mathbf{p}_0", " + \\mathbf{e}"), "3.21": ("\\mathbf{p}_2",
+                                                               " + \\mathbf{p}_1")}
+    for i, c in points_read.items():
+        lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
+        assert any(x.startswith("read from the page: relation 1's") for x in lines), lines
+        assert not any(x.startswith("matched") for x in lines), lines
+        glyph, shift = moved[i]
+        t = copy.deepcopy(c)
+        entry = next(e for e in t["symbols"] if e.get("glyph") == glyph)
+        entry["latex"] = f"({entry['latex']}){shift}"
+        for bad in (t, shifted_sides(c)):
+            assert f"({i})" in _rejected(bad, book), i

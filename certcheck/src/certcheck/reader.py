@@ -14,8 +14,13 @@ brackets and ``bmatrix`` blocks, ``\\|x\\|^2`` (a bare norm, a square root, is n
 integer powers of a square matrix, ``\\underbrace{X}_{...}`` (X), and ``[X]_{K}``: X's
 components in the frame K, each glyph G of X read from the table's line ``[G]_{K}``. A
 table line ``{"glyph", "latex", "model"}`` is the certificate's model of a glyph the page
-defines in words, in the table's glyphs; it is read firmly. A side the reader cannot read
-is reported, never passed.
+defines in words, in the table's glyphs; it is read firmly. The integral sign
+``\\int_{\\mathcal{B}} f d\\mathcal{B}`` is read through the table's line ``{"glyph":
+"\\int_{\\mathcal{B}}", "model", "particles"}`` (section 3.8's body of point masses): f is
+read once per particle, each particle a table of its own glyphs (its mass as ``\\rho``, its
+position as ``\\mathbf{p}``, their rates) bound inside the integral only, and the readings
+are summed. ``[G]`` with no frame named (3.40's ``[\\mathbf{Q}]``) is not read. A side the
+reader cannot read is reported, never passed.
 
 Each read side becomes entries in the certificate's grammar and is compared with the
 certificate's side by :func:`certcheck.check.check_identity` (the kinds' hypotheses only).
@@ -124,11 +129,13 @@ class _Reader:
                  seen: dict | None = None):
         self.t, self.i, self.table = tokens, 0, table
         self.lets = [] if lets is None else lets  # [name, text]: a glyph's entries, once
-        self.seen = {} if seen is None else seen  # key -> (named value, assumed): once
+        self.seen = {} if seen is None else seen  # key -> (named value, assumed, used)
+        self.used: set = set()  # the glyphs looked up (through definitions too)
         self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
         self.cited = [] if cited is None else cited
         self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
         self.frame = None  # inside [...]_{K}: glyphs are looked up as [G]_{K}
+        self.norm = 0  # inside \\|...\\|: a \\| closes the norm
 
     def peek(self, k: int = 0):
         return self.t[self.i + k] if self.i + k < len(self.t) else None
@@ -174,10 +181,14 @@ class _Reader:
 
     def term(self) -> M:
         v = self.factor()
-        while self.peek() not in self._STOP:
+        while self.peek() not in self._STOP or self.peek() == "\\|" and not self.norm:
             if self.peek() == "\\times":
                 self.take()
-                v = _cross(v, self.factor())
+                w = self.factor()  # a x B c: a x (B c), B c the vector
+                while w.shape == (3, 3) and self.peek() not in (*self._STOP, "\\times",
+                                                                "\\cdot", "/"):
+                    w = _mul(w, self.factor())
+                v = _cross(v, w)
             elif self.peek() == "\\cdot":
                 self.take()
                 w = self.factor()
@@ -221,7 +232,9 @@ class _Reader:
             return _s(self.take())
         if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
             self.take()
+            self.norm += 1
             x = _vec(self.expr())
+            self.norm -= 1
             self.take("\\|")
             if self.t[self.i:self.i + 2] != ["^", "2"] and \
                     self.t[self.i:self.i + 4] != ["^", "{", "2", "}"]:
@@ -232,8 +245,12 @@ class _Reader:
         if tok in ("(", "["):
             self.take()
             outer, frame = self.frame, self.frame_after() if tok == "[" else None
-            self.frame = frame or outer
+            self.frame, start = frame or outer, self.i
             v = self.expr()
+            if tok == "[" and not frame and self.i - start == 4 and self.t[start] in (
+                    "\\mathbf", "\\boldsymbol"):
+                raise NotRead("[G] without a frame: G's components in a frame the page "
+                              "does not name")
             self.take(")" if tok == "(" else "]")
             self.frame = outer
             if frame:  # [X]_{K}: X's components in the frame K (its subscript read)
@@ -275,7 +292,44 @@ class _Reader:
             self.i = start
         if tok == "\\begin{bmatrix}":
             return self.bmatrix()
+        if tok == "\\int":
+            return self.integral()
         return self.glyph()
+
+    def integral(self) -> M:
+        """``\\int_{\\mathcal{B}} f d\\mathcal{B}``: the table's line for the integral
+        sign gives the body's particles, each a table of its own glyphs (its mass as
+        ``\\rho``, its position as ``\\mathbf{p}``, ...); f is read once per particle
+        under that table, every glyph afresh, and the readings summed."""
+        self.take("\\int")
+        self.take("_")
+        key = f"\\int_{{{self.group()}}}"
+        entry = self.table.get(key)
+        if entry is None or not entry.get("particles"):
+            raise NotRead(f"the integral {key} (no body line in the symbol table)")
+        depth, j = 0, self.i  # the integrand runs to d\mathcal{B} at depth 0
+        while j < len(self.t) and not (depth == 0 and self.t[j:j + 2] == ["d", "\\mathcal"]):
+            depth += (self.t[j] in ("{", "(", "[")) - (self.t[j] in ("}", ")", "]"))
+            j += 1
+        if j >= len(self.t):
+            raise NotRead(f"the integral {key} without its d\\mathcal{{B}}")
+        body, self.i = self.t[self.i:j], j + 2
+        self.group()
+        total, bound = None, {g for part in entry["particles"] for g in part}
+        common = {k: v for k, v in self.seen.items() if not v[2] & bound}
+        for part in entry["particles"]:  # a glyph free of the particle's is read once
+            table = {**self.table, **{g: {"glyph": g, "latex": x, "model": entry["model"]}
+                                      for g, x in part.items()}}
+            inner = _Reader(body, table, self.defs, self.cited, self.lets, dict(common))
+            v = inner.chain()[0]
+            common.update({k: w for k, w in inner.seen.items() if not w[2] & bound})
+            self.assumed = self.assumed or inner.assumed
+            self.used |= inner.used - bound
+            total = v if total is None else _add(total, v, "+")
+        for k, w in common.items():
+            self.seen.setdefault(k, w)
+        self.cited.append(f"{key} as the model's {entry['model']}")
+        return total
 
     def frame_after(self) -> str | None:
         """The frame K of ``[...]_{K}`` opened just before (``None``: a plain bracket)."""
@@ -335,7 +389,7 @@ class _Reader:
             self.i += 3
         return self.lookup(name)
 
-    def named(self, key: str, v: M, assumed: bool) -> M:
+    def named(self, key: str, v: M, assumed: bool, used: set) -> M:
         """``v`` with each compound entry written once as a let (``page1``, ...), so that
         a glyph read through a definition is a name in every product it enters."""
         self.assumed = self.assumed or assumed
@@ -348,11 +402,21 @@ class _Reader:
                         self.lets.append([f"page{len(self.lets) + 1}", x])
                         x = self.lets[-1][0]
                     rows[-1].append(x)
-            self.seen[key] = (M(rows), assumed)
+            self.seen[key] = (M(rows), assumed, used, [])
         return self.seen[key][0]
+
+    def again(self, key: str) -> M | None:
+        """A glyph read before on this page (under the same particle), or ``None``."""
+        if key not in self.seen:
+            return None
+        v, assumed, used, cites = self.seen[key]
+        self.assumed, self.used = self.assumed or assumed, self.used | used
+        self.cited.extend(cites)  # what it was read through, cited again
+        return v
 
     def lookup(self, name: str) -> M:
         key = name.replace(" ", "")
+        self.used.add(key)
         self.assumed = self.assumed or key in ("\\mathbf{1}", "\\mathbf{O}", "\\mathbf{0}")
         if key in ("\\mathbf{1}", "\\mathbf{O}"):
             return M([[("1" if i == j and key[-2] == "1" else "0") for j in range(3)]
@@ -367,23 +431,33 @@ class _Reader:
         entry = self.table.get(key)
         if entry is None and key in self.defs:  # defined on the page before: read that
             text, where, sign = (*self.defs[key], "\\equiv")[:3]
-            rest = {k: v for k, v in self.defs.items() if k != key}
+            if (v := self.again(key)) is not None:
+                return v
+            rest, n = {k: v for k, v in self.defs.items() if k != key}, len(self.cited)
             inner = _Reader(_tokens(text), self.table, rest, self.cited, self.lets,
                             self.seen)
-            value = self.named(key, inner.chain()[0], inner.assumed)
+            value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
+            self.used |= inner.used
             self.cited.append(f"{name} by ({where})" + (", an equation" if sign == "=" else ""))
+            self.seen[key] = (*self.seen[key][:3], self.cited[n:])
             return value
         if entry is None:
             raise NotRead(f"the glyph {name} is neither in the symbol table nor defined "
                           "(\\equiv) on the page before")
         if "defined_by" in entry:
             raise NotRead(f"{name} is defined by ({entry['defined_by']})")
+        if "latex" in entry and (v := self.again(key)) is not None:
+            return v
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
-            inner = _Reader(_tokens(str(entry["latex"])), self.table, {}, self.cited,
+            n = len(self.cited)
+            inner = _Reader(_tokens(str(entry["latex"])), self.table,
+                            {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
-            value = self.named(key, inner.chain()[0], inner.assumed)
+            value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
+            self.used |= inner.used
             self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
                               else f"{key} by {entry.get('printed_as', '?')}, an equation")
+            self.seen[key] = (*self.seen[key][:3], self.cited[n:])
             return value
         if "cpm_of" in entry:
             return _cpm(self.lookup(entry["cpm_of"]))

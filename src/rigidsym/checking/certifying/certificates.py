@@ -29,6 +29,7 @@ from pathlib import Path
 
 import sympy as sp
 
+from rigidsym.checking.certifying.body_symbols import point_body_symbols
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.deciding.evidence import small_witness
 from rigidsym.checking.deciding.explicit import (
@@ -256,7 +257,11 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``. Where ``e``
     and ``phi`` are atoms and no rotation group is, ``{"glyph": "\\mathbf{Q}", "latex":
     ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
-    (and its time derivative term by term), which certcheck reads and cites."""
+    (and its time derivative term by term), which certcheck reads and cites, tentatively:
+    3.14's and 3.16's certificates prove a restatement of the printed relation (A^T A times
+    the printed inverse is 1), whose printed side read through (2.49) differs from the
+    certificate's, and a firm (2.49) would reject them. Section 3.8's point-mass body:
+    :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
         if section == sec or section.startswith(sec + "."):
@@ -308,7 +313,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
             out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
                         "printed_as": "the time derivative of (2.49)"})
             out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
-    return out + model_symbols({e["glyph"] for e in out}, section, out)
+    out += model_symbols({e["glyph"] for e in out}, section, out)
+    return out + point_body_symbols({e["glyph"] for e in out}, section)
 
 
 def _has(glyphs: set, latex: str) -> bool:
@@ -359,6 +365,45 @@ def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) ->
                     else g
                 if "atoms" in e and undotted == base:
                     out.append({**e, "glyph": f"[{e['glyph']}]_{{\\mathcal{{{frame}}}}}"})
+    if section == "3.2.2" and {"\\mathbf{p}_1", "\\mathbf{u}", "ell"} <= have:
+        out += _line_points(have, table or [])
+    if {"\\mathbf{w_axis}", "\\mathbf{e}"} <= have:
+        out += _axis_points(have, table or [])
+    return out
+
+
+def _axis_points(have: set, table: list[dict]) -> list[dict]:
+    """Section 3.2.1's displacement about its own axis (the line through ``w_axis`` along
+    ``e``, a slide ``d_0`` along it), as the model has it: ``c = w - Q w + d_0 e``, the
+    displaced ``a' = Q a + c`` (``d_A`` by (3.3)), and ``p_0`` the axis' point closest to
+    the origin, ``w - (e^T w) e``."""
+    d0 = [{**e, "glyph": "d_0"} for e in table if e.get("glyph") == "d0_axial"]
+    out = [*d0,
+           {"glyph": "\\mathbf{p}_0", "latex": "\\mathbf{w_axis} - (\\mathbf{e}^T"
+            "\\mathbf{w_axis})\\mathbf{e}", "model": "P_0, the axis' point closest to the "
+            "origin (the axis through w_axis along e)"}]
+    if "\\mathbf{a}" in have and d0:
+        out += [{"glyph": "\\mathbf{c}", "latex": "\\mathbf{w_axis} - \\mathbf{Q}"
+                 "\\mathbf{w_axis} + d_0\\mathbf{e}", "model": "the displacement's "
+                 "translation: a rotation Q about the axis and a slide d_0 along it"},
+                {"glyph": "\\mathbf{a}'", "latex": "\\mathbf{Q}\\mathbf{a} + \\mathbf{c}",
+                 "model": "displaced point, x' = Q x + c"}]
+    return [e for e in out if e["glyph"] not in have]
+
+
+def _line_points(have: set, table: list[dict]) -> list[dict]:
+    """Section 3.2.2's line through P_1 and P_2 (the page's words), as the model has it:
+    ``p_2 = p_1 + ell u`` (``u`` unit, ``ell`` the distance), a point ``p = p_1 + lambda
+    (p_2 - p_1)`` of it, ``P_i`` the cross-product matrices of ``p_i``."""
+    ell = next(e for e in table if e.get("glyph") == "ell")
+    out = [{**ell, "glyph": "\\ell"},
+           {"glyph": "\\mathbf{p}_2", "latex": "\\mathbf{p}_1 + \\ell\\mathbf{u}",
+            "model": "the line's second point P_2, at distance ell from P_1 along the unit u"},
+           {"glyph": "\\mathbf{P}_1", "cpm_of": "\\mathbf{p}_1"},
+           {"glyph": "\\mathbf{P}_2", "cpm_of": "\\mathbf{p}_2"}]
+    if "\\lambda" in have and "\\mathbf{p}" not in have:
+        out.append({"glyph": "\\mathbf{p}", "latex": "\\mathbf{p}_1 + \\lambda(\\mathbf{p}_2"
+                    " - \\mathbf{p}_1)", "model": "a point P of the line"})
     return out
 
 
