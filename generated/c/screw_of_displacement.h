@@ -29,7 +29,7 @@
  *
  * Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
  * (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
- * Singular set: Q != 1 with every diagonal entry rounded to 1 (phi under about 1e-8 in float64, 3e-4 in float32: p0's denominator is 0) or ||vect(Q)||^2 below the type's range: the axis point (or the axis's direction) is lost in the type
+ * Singular set: Q != 1 with ||Q - Q^T||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32) or exactly symmetric with tr Q > -1: the axis is lost in the type
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.997 of what
