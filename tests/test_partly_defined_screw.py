@@ -98,6 +98,7 @@ def test_identity_on_the_array_backends(lib):
         np.testing.assert_allclose(got[2:], want[2:], rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.slow  # generation and a gcc build: 15 s on 2 shared cores
 @pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc is not installed")
 def test_c_target_flags_the_defaults_at_the_identity(tmp_path):
     """The C target: status RIGIDSYM_C_DEFAULT_OUTPUT (16) alone at Q = 1 with the defaults,
