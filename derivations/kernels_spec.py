@@ -355,6 +355,19 @@ def _sod_when(Q, a, a_prime, k):
     return _ni_when(Q, k)
 
 
+def _sod_identity_when(Q, a, a_prime):
+    return _ni_identity_when(Q)
+
+
+def _sod_identity(Q, a, a_prime):
+    # Q = 1: phi = 0 is known exactly (as natural_invariants_from_rotation); the displacement
+    # is a pure translation by a' - a (or none), which has no axis, no axis point and an
+    # infinite (or 0/0) pitch: those hold documented finite defaults, e = [1, 0, 0],
+    # p0 = 0, pitch = 0 and kappa = [e; p0 x e], and phi == 0 exactly says so
+    return {"e": sp.Matrix([1, 0, 0]), "phi": sp.Integer(0), "p0": sp.zeros(3, 1),
+            "pitch": sp.Integer(0), "plucker": sp.Matrix([1, 0, 0, 0, 0, 0])}
+
+
 KERNELS.append(Kernel(
     name="screw_of_displacement",
     summary="Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.",
@@ -372,9 +385,22 @@ KERNELS.append(Kernel(
     build=_sod_main,
     branches=tuple(Branch(f"near_pi_{k}", partial(_sod_when, k=k),
                           partial(_sod_near_pi, k=k), doc=_NI_BRANCHES[k].doc)
-                   for k in range(3)),
-    singular="phi = 0 (pure translation: no axis, infinite pitch)", singular_arg="Q",
-    notes="For an exactly symmetric Q (phi = pi) the sign of e follows "
+                   for k in range(3)) + (
+        Branch("identity", _sod_identity_when, _sod_identity,
+               doc="vect(Q) = 0 and cos(phi) > 0 (Q = 1): phi = 0 exactly; a pure translation"
+                   " has no axis, axis point or finite pitch: the defaults e = [1, 0, 0], "
+                   "p0 = 0, pitch = 0, plucker = [1, 0, 0, 0, 0, 0]",
+               default="e, p0, pitch, plucker"),),
+    singular="Q != 1 with ||Q - Q^T||^2 below the type's range (phi under about 1e-154 in "
+             "float64, 1e-19 in float32) or exactly symmetric with tr Q > -1: the axis is "
+             "lost in the type",
+    singular_arg="Q",
+    notes="At Q = 1 (vect(Q) = 0 exactly, cos phi > 0: a pure translation by a' - a, or "
+          "none) phi = 0 exactly and the outputs it leaves undetermined hold documented "
+          "defaults: e = [1, 0, 0], p0 = 0, pitch = 0 (the pitch of a pure translation is "
+          "infinite), plucker = [1, 0, 0, 0, 0, 0]; phi == 0 exactly says they are the "
+          "defaults (the C target's status has RIGIDSYM_C_DEFAULT_OUTPUT). "
+          "For an exactly symmetric Q (phi = pi) the sign of e follows "
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
 
 KERNELS += INTERNAL_KERNELS

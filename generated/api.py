@@ -1608,16 +1608,16 @@ def screw_of_displacement(
         TypeError: an argument that is not an array of real numbers (str, object, complex, bool).
         ValueError: bad shape, batch shapes that do not broadcast, ragged or non-finite input, non-unit or non-orthogonal argument (naming it).
         NonFiniteResultError: the result of finite inputs overflows the dtype (inputs of extreme magnitude are computed in a wider type first), unless on_singular='nan'.
-        SingularConfigurationError: on the singular set (phi = 0 (pure translation: no axis, infinite pitch)), unless on_singular='nan'.
+        SingularConfigurationError: on the singular set (Q != 1 with ||Q - Q^T||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32) or exactly symmetric with tr Q > -1: the axis is lost in the type), unless on_singular='nan'.
 
     Notes:
-        Singular set: phi = 0 (pure translation: no axis, infinite pitch).
+        Singular set: Q != 1 with ||Q - Q^T||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32) or exactly symmetric with tr Q > -1: the axis is lost in the type.
 
-        For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
+        At Q = 1 (vect(Q) = 0 exactly, cos phi > 0: a pure translation by a' - a, or none) phi = 0 exactly and the outputs it leaves undetermined hold documented defaults: e = [1, 0, 0], p0 = 0, pitch = 0 (the pitch of a pure translation is infinite), plucker = [1, 0, 0, 0, 0, 0]; phi == 0 exactly says they are the defaults (the C target's status has RIGIDSYM_C_DEFAULT_OUTPUT). For an exactly symmetric Q (phi = pi) the sign of e follows natural_invariants_from_rotation's rule (largest-magnitude component positive).
 
-        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 863 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when phi = 0 (pure translation: no axis, infinite pitch), flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
+        Accuracy: error <= 1.3 u (kappa + 1) in float64, <= 1.14 u (kappa + 1) in float32 (u the unit roundoff, kappa the condition number; worst 863 ulp in float64) over 9 regimes (docs/accuracy.md, kernels.accuracy); singular when Q != 1 with ||Q - Q^T||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32) or exactly symmetric with tr Q > -1: the axis is lost in the type, flagged where ||Q - Q^T||^2 == 0 with tr Q >= 0 (the main build, after the rewrite of 1 - cos phi from the skew part of Q): Q exactly symmetric in floating point, phi below the rounding of Q (about 1e-16 in float64, 6e-8 in float32); before the rewrite 3 - tr Q == 0 flagged up to phi ~ 1.5e-8.
 
-        Generated; 571 operations; math hash 24c2ead304ca194c.
+        Generated; 571 operations; math hash 56a4152a14be3ae4.
     """
     return _F.screw_of_displacement(Q, a, a_prime, out, check, on_singular, threads)
 

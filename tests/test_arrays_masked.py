@@ -3,12 +3,12 @@ gives a zero gradient and never a NaN in a parameter the batch shares; double ba
 through the PyTorch kernels and ``jax.hessian`` through the JAX ones.
 
 The masked-row case of the issue: ``Q = stack([1, Q1]) * s``, a loss reading row 1 only.
-Row 0 is on the singular set (Q = 1: no axis), or, for
-``natural_invariants_from_rotation``, which answers Q = 1 with phi = 0 and the default axis,
-a row whose derivative is not defined there. Old main gave ``s.grad = nan`` and a NaN
-gradient in row 0 (``natural_invariants_from_rotation``, ``screw_of_displacement``,
-``euler_angle_rates``, autograd through the expression, 0 * inf in the backward of the
-masked row) and refused ``create_graph=True``; these tests fail there.
+Row 0 is on the singular set (the ZXZ lock), or, for
+``natural_invariants_from_rotation`` and ``screw_of_displacement``, which answer Q = 1 with
+phi = 0 and the documented defaults, a row whose derivative is not defined there. Old main
+gave ``s.grad = nan`` and a NaN gradient in row 0 (``natural_invariants_from_rotation``,
+``screw_of_displacement``, ``euler_angle_rates``, autograd through the expression, 0 * inf
+in the backward of the masked row) and refused ``create_graph=True``; these tests fail there.
 """
 
 from __future__ import annotations
@@ -70,8 +70,8 @@ def test_torch_masked_row_has_zero_gradient(name):
             args = tuple(x.detach().requires_grad_() for x in args)
         outs = getattr(rk, name)(*args, **kw, on_singular="nan")
         outs = outs if isinstance(outs, tuple) else (outs,)
-        if name == "natural_invariants_from_rotation":
-            # Q = 1 is answered (phi = 0, the default axis), not masked: the shared
+        if name in ("natural_invariants_from_rotation", "screw_of_displacement"):
+            # Q = 1 is answered (phi = 0, the default axis, issue 70), not masked: the shared
             # parameter's gradient must still be finite and row 1's alone
             assert (outs[1][0] == 0).all() and torch.isfinite(outs[0][0]).all()
         else:

@@ -925,7 +925,7 @@ def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
     """The C target of kernels with branches, removable quotients and singular sets: the
     double functions give the package's bits at random valid inputs (the same program,
     without FMA), the float ones agree within 16 u of float32 (inputs rounded too), the
-    Jacobian twins build, and a pure translation is flagged singular with NaN outputs."""
+    Jacobian twins build, and a pure translation gives phi = 0 and the defaults (status 16)."""
     import json
 
     from rigidsym import kernels as K
@@ -973,7 +973,11 @@ def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
     s, got = call(clib, "rigidsym_c_screw_of_displacement", np.eye(3), [1.0, 0, 0],
                   [2.0, 0.5, 0], *[("out", max(1, int(np.prod(o["shape"]))))
                                    for o in m["outputs"]])
-    assert s & SINGULAR and all(np.isnan(g).all() for g in got)
+    # a pure translation (Q = 1): phi = 0 exactly, the others their documented defaults,
+    # status RIGIDSYM_C_DEFAULT_OUTPUT (16) alone (issue 70; old main: singular, all NaN)
+    assert s == 16
+    want = [[1, 0, 0], [0], [0, 0, 0], [0], [1, 0, 0, 0, 0, 0]]
+    assert all(np.array_equal(np.ravel(g), w) for g, w in zip(got, want, strict=True))
 
 
 # -- the float functions' accuracy bound, stated in each header (item 4) --

@@ -4,10 +4,10 @@
  * source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace, rigidsym.derivations.sec3_2_1.screw_axis_point, rigidsym.derivations.sec3_2_1.pitch_of_displacement, rigidsym.derivations.sec3_2_2.plucker_from_points (composed in rigidsym.derivations.kernels_spec)
  * equations: (3.7), (3.18), (3.23)
  * template: c_kernel.c.j2
- * math hash: sha256:24c2ead304ca194c
+ * math hash: sha256:56a4152a14be3ae4
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 571
- * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * branches: near_pi_0, near_pi_1, near_pi_2, identity, main
  * accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,

@@ -4,10 +4,10 @@
  * source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace, rigidsym.derivations.sec3_2_1.screw_axis_point, rigidsym.derivations.sec3_2_1.pitch_of_displacement, rigidsym.derivations.sec3_2_2.plucker_from_points (composed in rigidsym.derivations.kernels_spec)
  * equations: (3.7), (3.18), (3.23)
  * template: c_kernel.h.j2
- * math hash: sha256:24c2ead304ca194c
+ * math hash: sha256:56a4152a14be3ae4
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 571
- * branches: near_pi_0, near_pi_1, near_pi_2, main
+ * branches: near_pi_0, near_pi_1, near_pi_2, identity, main
  * accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
  *     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
  *     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
@@ -29,7 +29,7 @@
  *
  * Screw of a finite displacement: axis, angle, axis point, pitch, Plücker array.
  * (e, phi) from Q as natural_invariants_from_rotation; p0 = (Q - 1)^T (Q a - a') / ((1 - Q_00) + (1 - Q_11) + (1 - Q_22)); pitch = e^T (a' - a) / phi; kappa = [e; p0 x e]
- * Singular set: phi = 0 (pure translation: no axis, infinite pitch)
+ * Singular set: Q != 1 with ||Q - Q^T||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32) or exactly symmetric with tr Q > -1: the axis is lost in the type
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.997 of what
@@ -38,7 +38,8 @@
  *   branch 1: x3, x9, x16, x17, x19, x20, x22, x24, x27, x37, pitch[0]
  *   branch 2: x4, x6, x7, x8, x9, x14, x15, x16, x17, x19, x31, pitch[0], plucker[3], plucker[5]
  *   branch 3: x2, x7, x8, x15, x16, x17, x18, x25, x35, pitch[0]
- *   branch 4: x1, x2, x4, x5, x9, x10, x11, x12, x13, x14, x15, x16, x17, x21, x28, x29, x31, x32, x33, x34, x35, x36, x37, pitch[0]
+ *   branch 4: none
+ *   branch 5: x1, x2, x4, x5, x9, x10, x11, x12, x13, x14, x15, x16, x17, x21, x28, x29, x31, x32, x33, x34, x35, x36, x37, pitch[0]
  */
 #ifndef RIGIDSYM_SCREW_OF_DISPLACEMENT_H
 #define RIGIDSYM_SCREW_OF_DISPLACEMENT_H
@@ -264,6 +265,21 @@ static inline int rigidsym_screw_of_displacement_sample(
          * x - x is 0 for finite x and NaN otherwise; balanced sum, one test */
         const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
+    } else if (Q_02 >= Q_20 && Q_10 >= Q_01 && Q_21 >= Q_12 && Q_02 <= Q_20 && Q_10 <= Q_01 && Q_21 <= Q_12 && Q_00 + Q_11 + Q_22 > 1.0) {
+        out_e[0] = 1.0;
+        out_e[1] = 0.0;
+        out_e[2] = 0.0;
+        out_phi[0] = 0.0;
+        out_p0[0] = 0.0;
+        out_p0[1] = 0.0;
+        out_p0[2] = 0.0;
+        out_pitch[0] = 0.0;
+        out_plucker[0] = 1.0;
+        out_plucker[1] = 0.0;
+        out_plucker[2] = 0.0;
+        out_plucker[3] = 0.0;
+        out_plucker[4] = 0.0;
+        out_plucker[5] = 0.0;
     } else {
         const double x0 = (0.5)*Q_12;
         const double x1 = -0.5*Q_21 + x0;
@@ -550,6 +566,21 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         singular |= (x18) == 0.0;
         const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
+    } else if (((double)Q_02) >= ((double)Q_20) && ((double)Q_10) >= ((double)Q_01) && ((double)Q_21) >= ((double)Q_12) && ((double)Q_02) <= ((double)Q_20) && ((double)Q_10) <= ((double)Q_01) && ((double)Q_21) <= ((double)Q_12) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) > 1.0) {
+        out_e[0] = 1.0f;
+        out_e[1] = 0.0f;
+        out_e[2] = 0.0f;
+        out_phi[0] = 0.0f;
+        out_p0[0] = 0.0f;
+        out_p0[1] = 0.0f;
+        out_p0[2] = 0.0f;
+        out_pitch[0] = 0.0f;
+        out_plucker[0] = 1.0f;
+        out_plucker[1] = 0.0f;
+        out_plucker[2] = 0.0f;
+        out_plucker[3] = 0.0f;
+        out_plucker[4] = 0.0f;
+        out_plucker[5] = 0.0f;
     } else {
         const float x0 = (0.5f)*Q_12;
         const double x1 = -0.5*((double)Q_21) + ((double)x0);

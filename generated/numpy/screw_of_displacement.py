@@ -3,10 +3,10 @@
 # source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace, rigidsym.derivations.sec3_2_1.screw_axis_point, rigidsym.derivations.sec3_2_1.pitch_of_displacement, rigidsym.derivations.sec3_2_2.plucker_from_points (composed in rigidsym.derivations.kernels_spec)
 # equations: (3.7), (3.18), (3.23)
 # template: numpy_kernel.py.j2
-# math hash: sha256:24c2ead304ca194c
+# math hash: sha256:56a4152a14be3ae4
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 571
-# branches: near_pi_0, near_pi_1, near_pi_2, main
+# branches: near_pi_0, near_pi_1, near_pi_2, identity, main
 # accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
 #     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
 #     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
@@ -80,7 +80,7 @@ def _sumprod(*args):
     return p + s
 
 OPS = 571
-MATH_HASH = "24c2ead304ca194c"
+MATH_HASH = "56a4152a14be3ae4"
 #: sample flags returned by the batch function
 SINGULAR, NONFINITE = 1, 2
 
@@ -311,6 +311,27 @@ def _near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a
     )
 
 
+def _identity(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
+    return (
+        1,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        0,
+        1,
+        0,
+        0,
+        0,
+        0,
+        0,
+    ), (
+    ), (
+    )
+
+
 def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     x0 = (0.5)*Q_12
     x1 = -0.5*Q_21 + x0
@@ -461,6 +482,19 @@ def _block(Q, a, a_prime, out_e, out_phi, out_p0, out_pitch, out_plucker):
         if _idx.size:
             _rest &= ~_hit
             _vals, _dens, _risky = _near_pi_2(*(_c[_idx] for _c in _cols))
+            _store(_outs, _vals, _idx)
+            _bad[_idx] = False
+            _nf[_idx] = False
+            for _d in _dens:
+                _bad[_idx] |= numpy.equal(_d, 0.0)
+            for _r in _risky:
+                _nf[_idx] |= ~numpy.isfinite(_r)
+        Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2, = _cols
+        _hit = numpy.logical_and(_rest, numpy.logical_and.reduce((numpy.greater_equal(Q_02, Q_20),numpy.greater_equal(Q_10, Q_01),numpy.greater_equal(Q_21, Q_12),numpy.less_equal(Q_02, Q_20),numpy.less_equal(Q_10, Q_01),numpy.less_equal(Q_21, Q_12),numpy.greater(Q_00 + Q_11 + Q_22, 1))))
+        _idx = numpy.flatnonzero(_hit)
+        if _idx.size:
+            _rest &= ~_hit
+            _vals, _dens, _risky = _identity(*(_c[_idx] for _c in _cols))
             _store(_outs, _vals, _idx)
             _bad[_idx] = False
             _nf[_idx] = False

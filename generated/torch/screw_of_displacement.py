@@ -3,10 +3,10 @@
 # source: rigidsym.algebra.primitives.vect, rigidsym.algebra.primitives.trace, rigidsym.derivations.sec3_2_1.screw_axis_point, rigidsym.derivations.sec3_2_1.pitch_of_displacement, rigidsym.derivations.sec3_2_2.plucker_from_points (composed in rigidsym.derivations.kernels_spec)
 # equations: (3.7), (3.18), (3.23)
 # template: array_kernel.py.j2
-# math hash: sha256:24c2ead304ca194c
+# math hash: sha256:56a4152a14be3ae4
 # sympy 1.14.0, rigidsym 0.2.0
 # operations: 571
-# branches: near_pi_0, near_pi_1, near_pi_2, main
+# branches: near_pi_0, near_pi_1, near_pi_2, identity, main
 # accuracy rewrite (near_pi_1): compensated sums of products (p0): a dot product (or a cross
 #     product's component plus a term) that cancels loses u sum |a_i b_i| / |s| relative when
 #     summed plainly; compensated (Dot2 of Ogita, Rump and Oishi,
@@ -80,7 +80,7 @@ def _sumprod(*args):
     return p + s
 
 OPS = 571
-MATH_HASH = "24c2ead304ca194c"
+MATH_HASH = "56a4152a14be3ae4"
 COLUMNS = ("Q_00", "Q_01", "Q_02", "Q_10", "Q_11", "Q_12", "Q_20", "Q_21", "Q_22", "a_0", "a_1", "a_2", "a_prime_0", "a_prime_1", "a_prime_2", )
 
 
@@ -289,6 +289,30 @@ def _when_near_pi_2(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a
     return torch.logical_and(torch.logical_and(torch.ge(Q_22, Q_00), torch.ge(Q_22, Q_11)), torch.lt(Q_00 + Q_11 + Q_22, 0.0))
 
 
+def _identity(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
+    return (
+        1.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        1.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+    ), (
+    )
+
+
+def _when_identity(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
+    return torch.logical_and(torch.logical_and(torch.logical_and(torch.logical_and(torch.logical_and(torch.logical_and(torch.ge(Q_02, Q_20), torch.ge(Q_10, Q_01)), torch.ge(Q_21, Q_12)), torch.le(Q_02, Q_20)), torch.le(Q_10, Q_01)), torch.le(Q_21, Q_12)), torch.gt(Q_00 + Q_11 + Q_22, 1.0))
+
+
 def _main(Q_00, Q_01, Q_02, Q_10, Q_11, Q_12, Q_20, Q_21, Q_22, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_2):
     x0 = (0.5)*Q_12
     x1 = -0.5*Q_21 + x0
@@ -363,6 +387,7 @@ VARIANTS = (
     ("near_pi_0", _near_pi_0, _when_near_pi_0),
     ("near_pi_1", _near_pi_1, _when_near_pi_1),
     ("near_pi_2", _near_pi_2, _when_near_pi_2),
+    ("identity", _identity, _when_identity),
     ("main", _main, None),
 )
 
