@@ -3,7 +3,7 @@
     python benchmarks/c_float_bounds.py [--kernel NAME ...] [--module M.py] [--seeds 0,1]
         [--random N] [--write]
 
-The measuring is the package's (:mod:`rigidsym.codegen.backends.c.float_measure`, which
+The measuring is the package's (:mod:`rigidsym.codegen.accuracy.float_measure`, which
 ``rigidsym generate --target c --module M.py`` runs itself); this script records the book's.
 Generates the C target of the named kernels (and their Jacobian twins), builds it with gcc,
 and hands each ``rigidsym_c_<kernel>_f32_batch`` function to the accuracy harness
@@ -27,16 +27,35 @@ import argparse
 import json
 from pathlib import Path
 
-from rigidsym.codegen.backends.c.float_measure import (  # noqa: F401  (the package's)
+from rigidsym.codegen.accuracy.float_measure import (  # noqa: F401  (the package's)
+    N_RANDOM,
     STRICT,
-    build,
-    measure,
+    build_codes,
+    measure_codes,
     register,
     runner,
     stated,
     worst,
 )
 from rigidsym.codegen.backends.c.target import FLOAT_BOUNDS
+from rigidsym.codegen.generator import compile_many
+
+
+def build(kernels, tmp: Path, where="rigidsym.derivations.kernels_spec"):
+    """The C target of ``kernels`` built as a shared library: (ctypes library, codes)."""
+    codes = compile_many(kernels, plan32=False)
+    return build_codes(codes, where, tmp), codes
+
+
+def measure(kernels, seeds=(0,), n_random: int = N_RANDOM, where=None,
+            progress: bool = False) -> dict:
+    """The package's ``measure_codes`` of ``kernels``, compiled here; ``where`` given: user
+    kernels, registered with the harness first (``None``: the book's)."""
+    if where is not None:
+        register(kernels)
+    codes = compile_many(kernels, plan32=False)
+    return measure_codes(codes, where or "rigidsym.derivations.kernels_spec", seeds,
+                         n_random, say=(lambda m: print(m, flush=True)) if progress else None)
 
 
 def main(argv=None) -> int:

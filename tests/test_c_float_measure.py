@@ -1,5 +1,5 @@
 """``rigidsym generate --target c --module M.py`` measures the module's float bounds itself
-(issue 66 item 3; :mod:`rigidsym.codegen.backends.c.float_measure`): its headers state a
+(issue 66 item 3; :mod:`rigidsym.codegen.accuracy.float_measure`): its headers state a
 measured bound, not "not measured", with no script of the repository; ``--no-measure``
 leaves them unmeasured."""
 
@@ -11,7 +11,7 @@ import shutil
 
 import pytest
 
-from rigidsym.codegen.backends.c.float_measure import stated
+from rigidsym.codegen.accuracy.float_measure import stated
 
 needs_cc = pytest.mark.skipif(shutil.which("gcc") is None and shutil.which("cc") is None,
                               reason="no C compiler")

@@ -53,7 +53,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.812 over 96 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.812 over 96 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float m,
@@ -138,7 +138,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.812 over 96 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.812 over 96 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float m,

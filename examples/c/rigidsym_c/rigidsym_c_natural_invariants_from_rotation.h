@@ -48,7 +48,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 3.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 1.28 over 116 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 1.28 over 116 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
     const float Q[9],

@@ -54,7 +54,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 1.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.384 over 106 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.384 over 106 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     const float I_C[9],
@@ -143,7 +143,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.568 over 106 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.568 over 106 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     const float I_C[9],

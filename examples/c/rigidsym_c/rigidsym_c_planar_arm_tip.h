@@ -54,7 +54,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.647 over 66 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.647 over 66 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float q1,
@@ -138,7 +138,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.675 over 66 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.675 over 66 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float q1,

@@ -38,7 +38,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.863 over 20 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.863 over 20 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     const float q[4],
@@ -90,7 +90,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 2.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.863 over 20 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.863 over 20 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     const float q[4],

@@ -40,7 +40,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 3.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 1.06 over 152 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 1.06 over 152 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     const float e[3],
@@ -99,7 +99,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 3.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 1.06 over 152 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 1.06 over 152 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
     const float e[3],

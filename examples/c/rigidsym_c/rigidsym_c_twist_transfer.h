@@ -51,7 +51,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.704 over 104 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.704 over 104 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     const float t_A[6],
@@ -127,7 +127,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
  * double operation, for FPUs without double); arguments, outputs, status as above.
  * Accuracy: each output within 1.5 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-24, kappa the output's condition number (measured by
- * rigidsym.codegen.backends.c.float_measure: worst 0.704 over 104 points of the
+ * rigidsym.codegen.accuracy.float_measure: worst 0.704 over 104 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     const float t_A[6],

@@ -191,10 +191,10 @@ def select_kernels(modules, names) -> tuple[list, dict[str, str]]:
 def measured_bounds(kernels, codes, origin: dict, known: dict) -> dict:
     """The float bounds of the user kernels among ``kernels`` (and their twins) that
     ``known`` lacks for their declaration hash, measured now
-    (:mod:`rigidsym.codegen.backends.c.float_measure`; a few seconds each): ``{name: entry}``
+    (:mod:`rigidsym.codegen.accuracy.float_measure`; a few seconds each): ``{name: entry}``
     as :func:`~rigidsym.codegen.backends.c.target.float_bounds` gives. ``codes``: the compiled
     ``kernels`` and twins; ``origin``: ``{kernel: module}``. No C compiler: a note, ``{}``."""
-    from rigidsym.codegen.backends.c import float_measure as FM
+    from rigidsym.codegen.accuracy import float_measure as FM
     from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
 
     user = [k for k in kernels if origin.get(k.name) != KERNEL_SPEC]

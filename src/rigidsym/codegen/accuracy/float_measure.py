@@ -12,7 +12,9 @@ fresh points do not reach it (``tests/test_c_target.py`` checks them on other se
 
 ``rigidsym generate --target c --module M.py`` measures the module's kernels with
 :func:`measure_codes` (``--no-measure`` skips it); ``benchmarks/c_float_bounds.py`` measures
-the book's and records them. docs/c-api.md ("Each header states its float functions' bound").
+the book's and records them. It takes kernels compiled by its caller
+(:func:`rigidsym.codegen.generator.compile_many`): the generator sits above the accuracy
+package, which it uses. docs/c-api.md ("Each header states its float functions' bound").
 """
 
 from __future__ import annotations
@@ -27,8 +29,8 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["STRICT", "SEEDS", "N_RANDOM", "compiler", "stated", "build", "build_codes",
-           "runner", "worst", "register", "measure", "measure_codes"]
+__all__ = ["STRICT", "SEEDS", "N_RANDOM", "compiler", "stated", "build_codes", "runner",
+           "worst", "register", "measure_codes"]
 
 #: the flags the measured library is built with (no -march: the bound is the portable code's)
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-O2"]
@@ -79,14 +81,6 @@ def build_codes(codes, where, tmp: Path):
     subprocess.run([cc, *STRICT, "-shared", "-fPIC", *map(str, sorted(out.glob("*.c"))),
                     "-o", str(so), "-lm"], check=True, capture_output=True)
     return ctypes.CDLL(str(so))
-
-
-def build(kernels, tmp: Path, where="rigidsym.derivations.kernels_spec"):
-    """The C target of ``kernels`` built as a shared library: (ctypes library, codes)."""
-    from rigidsym.codegen.generator import compile_many
-
-    codes = compile_many(kernels, plan32=False)
-    return build_codes(codes, where, tmp), codes
 
 
 def runner(lib):
@@ -162,16 +156,3 @@ def measure_codes(codes, where, seeds=SEEDS, n_random: int = N_RANDOM, only=None
             out[name] = _entry(kc, measured, rows, seeds)
             say(f"{name:48s} measured {measured:8.3g}  bound {stated(measured):6g}")
     return out
-
-
-def measure(kernels, seeds=(0,), n_random: int = N_RANDOM, where=None,
-            progress: bool = False) -> dict:
-    """:func:`measure_codes` of ``kernels`` (compiled here); ``where`` given: user kernels,
-    registered with the harness first (``None``: the book's)."""
-    from rigidsym.codegen.generator import compile_many
-
-    if where is not None:
-        register(kernels)
-    codes = compile_many(kernels, plan32=False)
-    return measure_codes(codes, where or "rigidsym.derivations.kernels_spec", seeds,
-                         n_random, say=(lambda m: print(m, flush=True)) if progress else None)
