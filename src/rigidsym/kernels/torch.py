@@ -20,7 +20,8 @@ Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd an
 
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
 ``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
-``jvp``; no ``jvp`` under ``torch.compile``, whose Dynamo cannot trace one) whose
+``jvp``, taken by calls on forward-mode dual tensors and under torch.func; no ``jvp`` under
+``torch.compile``, whose Dynamo cannot trace one) whose
 backward and jvp are the generated vector-Jacobian and Jacobian-vector products (reverse and
 forward mode over the program, equal to that verified Jacobian contracted), plain tensor
 arithmetic that autograd
