@@ -300,9 +300,11 @@ def _grads(lib: str, name: str, x: np.ndarray) -> list:
 
         from rigidsym.kernels import torch as rk
         f, t = getattr(rk, name), torch.tensor(x, dtype=torch.float64)
-        # reverse mode only: the kernels' autograd.Function defines no jvp, so torch's
-        # forward mode raises NotImplementedError (issue 70: not built yet)
-        return [torch.autograd.functional.jacobian(f, t).numpy()]
+        # forward mode on dual tensors (torch.autograd.forward_ad, the eager class's jvp),
+        # forward mode under torch.func, and reverse mode (the saving class's backward)
+        jac = torch.autograd.functional.jacobian
+        return [jac(f, t, strategy="forward-mode", vectorize=True).numpy(),
+                torch.func.jacfwd(f)(t).numpy(), jac(f, t).numpy()]
     import jax
     jax.config.update("jax_enable_x64", True)
     from rigidsym.kernels import jax as rj
@@ -317,7 +319,7 @@ def _grads(lib: str, name: str, x: np.ndarray) -> list:
                                   "rotation_vector_right_jacobian_inverse",
                                   "exponential_coordinates_left_jacobian_inverse"])
 def test_inverse_jacobian_gradients_near_two_pi_k(name, lib):
-    """Gradients (JAX: forward and reverse mode; torch: reverse) of the inverse Jacobians at
+    """Gradients (forward and reverse mode, JAX and torch) of the inverse Jacobians at
     |w| = 2 pi k -+ 1e-4, 1e-8, 1e-12 (k = 1, 2), against the 50-digit derivative of the
     declared formula: within the rule's 8 u (kappa + 1) of max|J| (measured worst 0.99:
     the error is the rounding of |w| near 2 pi k, which kappa ~ 1/(2 pi k - |w|) carries;

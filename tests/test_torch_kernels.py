@@ -118,6 +118,31 @@ def test_forward_mode_and_vmap_use_the_same_jacobian(name):
     torch.testing.assert_close(batched[0], first(*one), rtol=1e-15, atol=0)
 
 
+@pytest.mark.parametrize("name", ["rotation_vector_left_jacobian_inverse",
+                                  "rotation_vector_from_rotation"])
+def test_forward_mode_on_dual_tensors_is_reverse_mode(name):
+    """Issue 70 item 5: forward-mode AD on dual tensors (torch.autograd.forward_ad, outside
+    torch.func) through a kernel whose eager autograd class saves the forward's temps for
+    its backward (no jvp of its own: the call takes the class with the generated jvp) and
+    through one without saved temps: the tangents are the reverse-mode Jacobian (one
+    backward per output entry) contracted with the input tangents."""
+    xs = sample(name, 2, seed=7)
+    fn = getattr(rk, name)
+    rng = np.random.default_rng(8)
+    ts = [torch.tensor(rng.standard_normal(x.shape)) for x in xs]
+    with torch.autograd.forward_ad.dual_level():
+        outs = _tuple(fn(*[torch.autograd.forward_ad.make_dual(torch.tensor(x), t)
+                           for x, t in zip(xs, ts, strict=True)]))
+        fwd = [torch.autograd.forward_ad.unpack_dual(o).tangent for o in outs]
+    jac = _autograd_jacobian(fn, xs, len(outs))
+    for k, o in enumerate(outs):
+        flat = o.reshape(2, -1)
+        want = torch.stack([sum((row[j] * ts[j]).reshape(2, -1).sum(1)
+                                for j in range(len(xs))) for row in jac[k]], dim=1)
+        assert fwd[k] is not None and tuple(fwd[k].shape) == tuple(o.shape), (name, k)
+        torch.testing.assert_close(fwd[k].reshape(flat.shape), want, rtol=1e-12, atol=1e-12)
+
+
 @pytest.mark.parametrize("name", PROBED)
 def test_no_nan_gradient_near_the_singular_sets(name):
     xs = _t(singular_probes(name), grad=True)

@@ -20,7 +20,8 @@ Keywords (no ``out=``, no ``threads=``: meaningless or harmful under autograd an
 
 Derivatives: a kernel with a generated Jacobian kernel (``<name>_with_jacobians``) is a
 ``torch.autograd.Function`` (``setup_context``, a generated vmap rule, ``backward`` and
-``jvp``; no ``jvp`` under ``torch.compile``, whose Dynamo cannot trace one) whose
+``jvp``, taken by calls on forward-mode dual tensors and under torch.func; no ``jvp`` under
+``torch.compile``, whose Dynamo cannot trace one) whose
 backward and jvp are the generated vector-Jacobian and Jacobian-vector products (reverse and
 forward mode over the program, equal to that verified Jacobian contracted), plain tensor
 arithmetic that autograd
@@ -194,6 +195,7 @@ def _make(space: _evaluation.Space, name: str):
                                         torch.compiler.is_compiling())
     eager, compiled = _function(space, name, True), _function(space, name, False)
     fast = _plain_apply(_saving(space, name) if space.progs.vjp(name, "saved") else eager)
+    eager_apply = _plain_apply(eager) or eager.apply
     nout = len(space.progs.meta[name]["outputs"])
     if space.progs.vjp(name, "saved"):
         compiled = _compiled_saving(space, name)
@@ -207,6 +209,8 @@ def _make(space: _evaluation.Space, name: str):
         if not _recorded(xs):  # nothing to differentiate: the program alone
             host = _torch_host.forward(space.progs, name, xs)
             return space.values(name, xs) if host is None else (*host[0], host[1])
+        if _dual(xs):  # forward-mode AD: the saving class has no jvp (issue 70)
+            return eager_apply(*xs)
         return fast(*xs)
 
     # compiled, the mask returned holds the samples whose result overflowed (Space.call)
@@ -274,6 +278,16 @@ def _recorded(xs) -> bool:
     AD level open (``torch.autograd.forward_ad``, whose dual tensors need ``jvp``)."""
     return (torch.is_grad_enabled() and any(x.requires_grad for x in xs)) or \
         getattr(torch.autograd.forward_ad, "_current_level", 0) >= 0
+
+
+def _dual(xs) -> bool:
+    """A forward-mode AD level is open and an input is a dual tensor (it carries a tangent
+    there): the call needs the class with ``jvp`` (:func:`_function`'s), not the saving one.
+    Read only past :func:`_recorded`, so the plain call pays nothing for it."""
+    level = getattr(torch.autograd.forward_ad, "_current_level", 0)
+    return level >= 0 and any(
+        isinstance(x, torch.Tensor) and torch.autograd.forward_ad.unpack_dual(x).tangent
+        is not None for x in xs)
 
 
 def _clear(mask) -> bool:
