@@ -14,13 +14,9 @@ brackets and ``bmatrix`` blocks, ``\\|x\\|^2`` (a bare norm, a square root, is n
 integer powers of a square matrix, ``\\underbrace{X}_{...}`` (X), and ``[X]_{K}``: X's
 components in the frame K, each glyph G of X read from the table's line ``[G]_{K}``. A
 table line ``{"glyph", "latex", "model"}`` is the certificate's model of a glyph the page
-defines in words, in the table's glyphs; it is read firmly. The integral sign
-``\\int_{\\mathcal{B}} f d\\mathcal{B}`` is read through the table's line ``{"glyph":
-"\\int_{\\mathcal{B}}", "model", "particles"}`` (section 3.8's body of point masses): f is
-read once per particle, each particle a table of its own glyphs (its mass as ``\\rho``, its
-position as ``\\mathbf{p}``, their rates) bound inside the integral only, and the readings
-are summed. ``[G]`` with no frame named (3.40's ``[\\mathbf{Q}]``) is not read. A side the
-reader cannot read is reported, never passed.
+defines in words, in the table's glyphs; it is read firmly. An integral over the body is
+read through the table's body line (:meth:`_Reader.integral`). ``[G]`` with no frame named
+(3.40's ``[\\mathbf{Q}]``) is not read. A side the reader cannot read is reported, never passed.
 
 Each read side becomes entries in the certificate's grammar and is compared with the
 certificate's side by :func:`certcheck.check.check_identity` (the kinds' hypotheses only).
@@ -87,10 +83,8 @@ def _mul(a: M, b: M) -> M:
 
 
 def _vec(v: M) -> list[str]:
-    if v.shape == (3, 1):
-        return [r[0] for r in v.rows]
-    if v.shape == (1, 3):
-        return list(v.rows[0])
+    if v.shape in ((3, 1), (1, 3)):  # a column or a row: its three entries in order
+        return [x for r in v.rows for x in r]
     raise NotRead(f"a 3-vector expected, shape {v.shape}")
 
 
@@ -107,8 +101,7 @@ def _cpm(v: M) -> M:
 
 
 def _inverse(v: M) -> M:
-    """A scalar's reciprocal or a 3 x 3 matrix's inverse (its adjugate over its
-    determinant)."""
+    """A scalar's reciprocal or a 3 x 3 matrix's inverse (adjugate over determinant)."""
     if v.shape == (1, 1):
         return _s(f"1/({v.rows[0][0]})")
     if v.shape != (3, 3):
@@ -297,10 +290,11 @@ class _Reader:
         return self.glyph()
 
     def integral(self) -> M:
-        """``\\int_{\\mathcal{B}} f d\\mathcal{B}``: the table's line for the integral
-        sign gives the body's particles, each a table of its own glyphs (its mass as
-        ``\\rho``, its position as ``\\mathbf{p}``, ...); f is read once per particle
-        under that table, every glyph afresh, and the readings summed."""
+        """``\\int_{\\mathcal{B}} f d\\mathcal{B}`` (section 3.8's body of point masses):
+        the table's line ``{"glyph": "\\int_{\\mathcal{B}}", "model", "particles"}`` gives
+        the particles, each a table of its own glyphs (its mass as ``\\rho``, its position
+        as ``\\mathbf{p}``, their rates) bound inside the integral only; f is read once per
+        particle, every glyph afresh, and the readings summed."""
         self.take("\\int")
         self.take("_")
         key = f"\\int_{{{self.group()}}}"
