@@ -128,16 +128,12 @@ def main(argv: list[str] | None = None) -> int:
     try:
         code = _main(argv)
         if argv is None:  # the program: done and written; an interrupt now changes nothing
-            for sig in saved:
-                signal.signal(sig, signal.SIG_IGN)
+            interrupts.quiet()
         return code
     except KeyboardInterrupt:  # SIGINT or SIGTERM: the work kept, one line, no traceback
-        signal.signal(signal.SIGINT, signal.SIG_IGN)  # a second Ctrl-C: no traceback
-        try:
-            print(f"rigidsym: {interrupts.line()}", file=sys.stderr, flush=True)
-            _work.dump()
-        finally:
-            signal.signal(signal.SIGINT, signal.default_int_handler)
+        interrupts.quiet()  # a second Ctrl-C, or one already pending: no second exit
+        print(f"rigidsym: {interrupts.line()}", file=sys.stderr, flush=True)
+        _work.dump()
         return interrupts.EXIT
     finally:
         if argv is not None:  # called in a process of the caller's (a test): as it was

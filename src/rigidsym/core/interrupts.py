@@ -20,7 +20,8 @@ import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-__all__ = ["EXIT", "install", "for_worker", "deferred", "note_kept", "line", "reset"]
+__all__ = ["EXIT", "install", "for_worker", "deferred", "quiet", "note_kept", "line",
+           "reset"]
 
 #: the exit status of an interrupted command (128 + SIGINT, as a shell reports it)
 EXIT = 130
@@ -42,6 +43,22 @@ def install() -> None:
     for sig, handler in ((signal.SIGTERM, _raise), (signal.SIGINT, signal.default_int_handler)):
         if signal.getsignal(sig) is not signal.SIG_IGN:
             signal.signal(sig, handler)
+
+
+def quiet() -> None:
+    """From now on SIGINT and SIGTERM are ignored: the command has finished, or has said
+    that it was interrupted, and only exits. A signal that arrived just before (its
+    handler not yet run) is absorbed here rather than raised after the one line, where it
+    would end the process by SIGINT instead of exit status 130. Main thread only."""
+    if threading.current_thread() is not threading.main_thread():
+        return
+    while True:
+        try:  # signal.signal runs a pending handler before it changes the disposition
+            for sig in _SIGNALS:
+                signal.signal(sig, signal.SIG_IGN)
+            return
+        except KeyboardInterrupt:
+            continue
 
 
 def for_worker() -> None:
