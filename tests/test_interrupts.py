@@ -332,3 +332,32 @@ def test_sigint_at_random_moments_of_exam_and_generate(tmp_path, command, moment
         rc, _, err = _finish(run("out", "c"))
         assert rc == 0, err
     assert _files(tmp_path / "out") == _files(tmp_path / "ref")
+
+
+
+def test_an_error_caused_by_the_interrupt_is_reported_as_the_interrupt(monkeypatch, capsys):
+    """An import cut short by Ctrl-C fails as ``ImportError`` (numpy's C extension says
+    "PyCapsule_Import could not import module"): after a signal it is the interrupt (one
+    line, 130); without one, the same error is the command's own and propagates."""
+    import rigidsym.cli as cli
+
+    def failing(signalled: bool):
+        def run(argv):
+            if signalled:
+                try:
+                    os.kill(os.getpid(), signal.SIGINT)  # main's handler: KeyboardInterrupt
+                    time.sleep(1)
+                except KeyboardInterrupt:
+                    pass  # as an import's C code does: the interrupt becomes its error
+            raise ImportError('PyCapsule_Import could not import module "datetime"')
+        return run
+
+    before = signal.getsignal(signal.SIGINT)
+    monkeypatch.setattr(cli, "_main", failing(True))
+    assert main(["verify"]) == interrupts.EXIT
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and LINE.fullmatch(err), err
+    monkeypatch.setattr(cli, "_main", failing(False))
+    with pytest.raises(ImportError):
+        main(["verify"])
+    assert signal.getsignal(signal.SIGINT) is before  # the caller's handler, restored

@@ -130,7 +130,9 @@ def main(argv: list[str] | None = None) -> int:
         if argv is None:  # the program: done and written; an interrupt now changes nothing
             interrupts.quiet()
         return code
-    except KeyboardInterrupt:  # SIGINT or SIGTERM: the work kept, one line, no traceback
+    except (KeyboardInterrupt, Exception) as exc:  # SIGINT or SIGTERM: work kept, one line
+        if not (isinstance(exc, KeyboardInterrupt) or interrupts.received()):
+            raise  # a failure of its own, not the interrupt in another form
         interrupts.quiet()  # a second Ctrl-C, or one already pending: no second exit
         print(f"rigidsym: {interrupts.line()}", file=sys.stderr, flush=True)
         _work.dump()

@@ -1,8 +1,10 @@
 """Interrupts of a long command (issue 69): SIGINT (Ctrl-C) and SIGTERM end it with one
 line and exit status 130, keeping the work it finished.
 
-- :func:`install` makes SIGTERM raise ``KeyboardInterrupt`` in the main thread, as SIGINT
-  does, so that one ``except KeyboardInterrupt`` (``rigidsym.cli.main``) handles both.
+- :func:`install` makes SIGINT and SIGTERM raise ``KeyboardInterrupt`` in the main thread
+  and records that one came (:func:`received`), so that ``rigidsym.cli.main`` handles both
+  and also an exception the interrupt caused in another form (a cut-short import).
+- :func:`quiet`: once the line is said (or the command is done), both are ignored.
 - :func:`for_worker` is the initializer of a worker process: it ignores SIGINT (a terminal
   sends Ctrl-C to the whole process group; the parent decides) and dies on SIGTERM (how
   the parent's pool stops it), so that no worker prints a traceback.
@@ -20,29 +22,39 @@ import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-__all__ = ["EXIT", "install", "for_worker", "deferred", "quiet", "note_kept", "line",
-           "reset"]
+__all__ = ["EXIT", "install", "for_worker", "deferred", "quiet", "received",
+           "note_kept", "line", "reset"]
 
 #: the exit status of an interrupted command (128 + SIGINT, as a shell reports it)
 EXIT = 130
 _SIGNALS = (signal.SIGINT, signal.SIGTERM)
 #: what the running command kept so far: ``(kept, total, what)``, or ``None``
 _KEPT: list = [None]
+#: whether SIGINT or SIGTERM arrived since :func:`reset`
+_RECEIVED: list = [False]
 
 
 def _raise(signum, frame) -> None:  # noqa: ARG001 - a signal handler's signature
+    _RECEIVED[0] = True
     raise KeyboardInterrupt
 
 
+def received() -> bool:
+    """Whether SIGINT or SIGTERM arrived since :func:`reset`: an exception raised then may
+    be the interrupt in another form (an import that the interrupt cut short fails as
+    ``ImportError``, as numpy's C extension reports it), and is reported as the interrupt."""
+    return _RECEIVED[0]
+
+
 def install() -> None:
-    """SIGTERM raises ``KeyboardInterrupt`` as SIGINT does (main thread only; elsewhere,
-    where handlers cannot be set, nothing changes; a signal the process was started
-    ignoring, as ``nohup`` or a shell's background job does, stays ignored)."""
+    """SIGINT and SIGTERM raise ``KeyboardInterrupt`` and are recorded (:func:`received`)
+    (main thread only; elsewhere, where handlers cannot be set, nothing changes; a signal
+    the process was started ignoring, as ``nohup`` or a shell's background job does, stays ignored)."""
     if threading.current_thread() is not threading.main_thread():
         return
-    for sig, handler in ((signal.SIGTERM, _raise), (signal.SIGINT, signal.default_int_handler)):
+    for sig in _SIGNALS:
         if signal.getsignal(sig) is not signal.SIG_IGN:
-            signal.signal(sig, handler)
+            signal.signal(sig, _raise)
 
 
 def quiet() -> None:
@@ -92,6 +104,7 @@ def note_kept(kept: int, total: int, what: str = "ids") -> None:
 def reset() -> None:
     """Forget what :func:`note_kept` recorded (a new command in the same process)."""
     _KEPT[0] = None
+    _RECEIVED[0] = False
 
 
 def line() -> str:
