@@ -49,7 +49,8 @@ def received() -> bool:
 def install() -> None:
     """SIGINT and SIGTERM raise ``KeyboardInterrupt`` and are recorded (:func:`received`)
     (main thread only; elsewhere, where handlers cannot be set, nothing changes; a signal
-    the process was started ignoring, as ``nohup`` or a shell's background job does, stays ignored)."""
+    the process was started ignoring, as ``nohup`` or a shell's background job does,
+    stays ignored)."""
     if threading.current_thread() is not threading.main_thread():
         return
     for sig in _SIGNALS:
