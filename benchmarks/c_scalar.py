@@ -2,7 +2,7 @@
 
     python benchmarks/c_scalar.py [--n 2000] [--cc gcc] [--results]
 
-The six kernels of examples/c (three book kernels, three of the example's own module), each
+The seven kernels of examples/c (four book kernels, three of the example's own module), each
 as the generated double and float function (examples/c/rigidsym_c, built by gcc -O2 -std=c99)
 and as hand-written C of the same formula (benchmarks/c_scalar/hand.c), called one sample at
 a time by benchmarks/c_scalar/bench.c on inputs that move each call. Two measures: the
@@ -12,7 +12,7 @@ calls; independent of the machine's load), and the CPU time per call (the best o
 the status of docs/c-api.md) and -DRIGIDSYM_C_TRUSTED_INPUTS (no input test: the outputs'
 finiteness test only). ``--results`` writes the table into benchmarks/RESULTS.md (between
 ``<!-- c-scalar -->`` markers). Needs gcc and valgrind. ``--fast``: the time only, built at
--O3 -march=native, of the small kernels (issue 66; its own table).
+-O3 and at -O3 -march=native, of the small kernels (issue 66; its own table).
 """
 
 from __future__ import annotations
@@ -32,11 +32,12 @@ KERNELS = ROOT / "examples" / "c" / "rigidsym_c"
 CASES = [("rotation_from_natural_invariants", "hand_rotation"),
          ("twist_transfer", "hand_twist"), ("newton_euler_wrench", "hand_wrench"),
          ("quaternion_rotation", "hand_quat"),
-         ("planar_arm_tip_with_jacobians", "hand_arm"), ("body_energy", "hand_energy")]
+         ("planar_arm_tip_with_jacobians", "hand_arm"), ("body_energy", "hand_energy"),
+         ("wrench_transfer", "hand_wrench_transfer")]
 #: input components per call (what the checked status's range test reads)
 COMPONENTS = {"rotation_from_natural_invariants": 4, "twist_transfer": 12,
               "newton_euler_wrench": 19, "quaternion_rotation": 4,
-              "planar_arm_tip_with_jacobians": 4, "body_energy": 16}
+              "planar_arm_tip_with_jacobians": 4, "body_energy": 16, "wrench_transfer": 12}
 
 
 def build(out: Path, extra: list[str], cc: str = "gcc", opt: str = "-O2",
@@ -75,9 +76,10 @@ def main(argv=None) -> int:
     ap.add_argument("--cc", default="gcc", help="the C compiler (default gcc; the table's)")
     ap.add_argument("--results", action="store_true", help="write benchmarks/RESULTS.md")
     ap.add_argument("--fast", action="store_true",
-                    help="the time only, at -O3 -march=native, of the small kernels (twist "
-                         "transfer, Newton-Euler wrench): --runs runs of the best of 7, the "
-                         "least taken (issue 66's table; no valgrind)")
+                    help="the time only, at -O3 and -O3 -march=native, of the small kernels "
+                         "(twist, wrench transfer, Newton-Euler wrench): --runs interleaved "
+                         "rounds of the best of 7, the least taken (issue 66's table; no "
+                         "valgrind)")
     ap.add_argument("--runs", type=int, default=15, help="with --fast: runs (default 15)")
     ap.add_argument("--before", metavar="DIR", default=None,
                     help="with --fast: also time the checked functions of this folder (an "
@@ -151,68 +153,84 @@ def main(argv=None) -> int:
 
 
 #: issue 66's small kernels: (kernel, what the issue calls it)
-SMALL = [("twist_transfer", "twist (velocity) transfer"),
+SMALL = [("twist_transfer", "twist transfer = velocity transfer (3.82)"),
+         ("wrench_transfer", "wrench transfer"),
          ("newton_euler_wrench", "Newton-Euler wrench"),
          ("rotation_from_natural_invariants", "rotation (a sin/cos kernel, for scale)")]
-FAST = "-O3 -march=native"
+#: the builds of the table: the wheel's default (-O3, x86-64's baseline SSE2) and the host's
+OPTS = ["-O3", "-O3 -march=native"]
 
 
 def fast(args) -> int:
     """The CPU time per call of the small kernels' checked and trusted scalar functions
-    against the hand-written formula, built at -O3 -march=native: the least of ``--runs``
-    runs, each the best of 7 loops of ``20 --n`` calls (the machine is shared: the least is
-    the run least disturbed). ``--results`` writes the table between ``<!-- c-scalar-o3
-    -->`` markers."""
+    against the hand-written formula, built at -O3 and at -O3 -march=native: the least of
+    ``--runs`` rounds, each the best of 7 loops of ``20 --n`` calls of every build, kernel,
+    type and function in turn (interleaved: the machine is shared, and the least is the
+    round least disturbed, for each function alike). ``--results`` writes the table between
+    ``<!-- c-scalar-o3 -->`` markers."""
     if shutil.which(args.cc) is None:
         print(f"needs {args.cc}", file=sys.stderr)
         return 2
-    rows = []
+    best: dict[tuple, float] = {}
     with tempfile.TemporaryDirectory() as t:
         tmp = Path(t)
-        exes = {"checked": build(tmp, [], args.cc, FAST),
-                "trusted": build(tmp, ["-DRIGIDSYM_C_TRUSTED_INPUTS"], args.cc, FAST)}
-        modes = [("checked", exes["checked"], "gen"), ("trusted", exes["trusted"], "gen"),
-                 ("hand", exes["checked"], "hand")]
-        if args.before:
-            modes.append(("before", build(tmp, [], args.cc, FAST, Path(args.before).resolve(),
-                                          "_before"), "gen"))
+        modes = []
+        for opt in OPTS:
+            checked = build(tmp, [], args.cc, opt)
+            modes += [(opt, "checked", checked, "gen"),
+                      (opt, "trusted", build(tmp, ["-DRIGIDSYM_C_TRUSTED_INPUTS"], args.cc, opt),
+                       "gen"), (opt, "hand", checked, "hand")]
+            if args.before:
+                modes.append((opt, "before", build(tmp, [], args.cc, opt,
+                                                   Path(args.before).resolve(), "_before"),
+                              "gen"))
+        for _ in range(args.runs):
+            for opt, mode, exe, which in modes:
+                for kernel, _what in SMALL:
+                    for dtype in ("f64", "f32"):
+                        key = (opt, kernel, dtype, mode)
+                        best[key] = min(best.get(key, float("inf")),
+                                        seconds(exe, kernel, which, dtype, 20 * args.n))
+    rows = []
+    for opt in OPTS:
         for kernel, what in SMALL:
             for dtype in ("f64", "f32"):
-                cell = {"kernel": kernel, "what": what, "dtype": dtype}
-                for mode, exe, which in modes:
-                    cell[mode] = min(seconds(exe, kernel, which, dtype, 20 * args.n)
-                                     for _ in range(args.runs))
+                cell = {"opt": opt, "kernel": kernel, "what": what, "dtype": dtype,
+                        **{m: best[(opt, kernel, dtype, m)] for _o, m, _e, _w in modes
+                           if _o == opt}}
                 rows.append(cell)
-                print(f"{kernel:34s} {dtype}  checked {cell['checked']:.2f} ns "
+                print(f"{opt:18s} {kernel:34s} {dtype}  checked {cell['checked']:.2f} ns "
                       f"({cell['checked'] / cell['hand']:.2f}x), trusted "
                       f"{cell['trusted']:.2f} ({cell['trusted'] / cell['hand']:.2f}x), hand "
-                      f"{cell['hand']:.2f}", flush=True)
+                      f"{cell['hand']:.2f}" + (f", before {cell['before']:.2f} "
+                                               f"({cell['before'] / cell['hand']:.2f}x)"
+                                               if args.before else ""), flush=True)
     if args.results:
         sys.path.insert(0, str(ROOT / "benchmarks"))
         from _results import write_section
 
         cc = subprocess.run([args.cc, "--version"], capture_output=True,
                             text=True).stdout.splitlines()[0]
-        lines = ["<!-- c-scalar-o3 -->", "### At -O3 -march=native: the checked scalar "
+        lines = ["<!-- c-scalar-o3 -->", "### At -O3 and -O3 -march=native: the checked scalar "
                  "call against the hand-written formula (issue 66)", "",
-                 f"`python benchmarks/c_scalar.py --fast --runs {args.runs} --results`: "
-                 f"{cc}, `-O3 -march=native`, CPU ns per call (the least of {args.runs} "
-                 "runs, each the best of 7 loops of "
-                 f"{20 * args.n} calls; this 2-core machine was shared with other jobs "
-                 "(load 8-12), so the ratios move by about 0.1 from run to run). "
+                 f"`python benchmarks/c_scalar.py --fast --runs {args.runs}"
+                 + (" --before DIR" if args.before else "") + " --results`: "
+                 f"{cc}, CPU ns per call (the least of {args.runs} interleaved rounds, "
+                 f"each the best of 7 loops of {20 * args.n} calls, the call inclusive of "
+                 "the driver's making its inputs; this 2-core machine was shared with other "
+                 "jobs, so the ratios move by about 0.05-0.1 from run to run). "
                  "*checked*: the default build; *trusted*: `-DRIGIDSYM_C_TRUSTED_INPUTS` "
                  "(no input range test)" + ("; *before*: the checked functions of the "
-                 "generation before the range test read its inputs one at a time (a "
-                 "16-byte load over inputs just stored one by one waits on store "
-                 "forwarding)" if args.before else "") + ".", "",
-                 "| kernel | type | " + ("checked ns before | before / hand | "
-                                         if args.before else "")
+                 "folder given by --before (the generation before this one)"
+                 if args.before else "") + ".", "",
+                 "| build | kernel | type | " + ("checked ns before | before / hand | "
+                                                 if args.before else "")
                  + "checked ns | trusted ns | hand ns | checked / hand | trusted / hand |",
-                 "|---|---|" + ("---|---|" if args.before else "") + "---|---|---|---|---|"]
+                 "|---|---|---|" + ("---|---|" if args.before else "") + "---|---|---|---|---|"]
         for c in rows:
             old = (f"{c['before']:.2f} | {c['before'] / c['hand']:.2f} | "
                    if args.before else "")
-            lines.append(f"| {c['kernel']} ({c['what']}) | {c['dtype']} | {old}"
+            lines.append(f"| `{c['opt']}` | {c['kernel']} ({c['what']}) | {c['dtype']} | {old}"
                          f"{c['checked']:.2f} | {c['trusted']:.2f} | {c['hand']:.2f} | "
                          f"{c['checked'] / c['hand']:.2f} | {c['trusted'] / c['hand']:.2f} |")
         lines.append("<!-- /c-scalar-o3 -->")

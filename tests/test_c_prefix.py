@@ -152,12 +152,56 @@ def test_two_prefixes_link_into_one_program_and_export_only_prefixed_symbols(fol
 
 @pytest.mark.parametrize("bad", ["Acme", "1acme", "ac-me", "a__b", "acme_", "_acme", "",
                                  "class", "namespace", "std", "int", "rigidsym",
-                                 "rigidsym_c_extra"])
+                                 "rigidsym_c_extra", "a_b", "my_bot"])
 def test_bad_prefixes_are_refused_by_name(bad):
     from rigidsym.codegen.backends.c.prefix import PrefixError, check_prefix
 
     with pytest.raises(PrefixError, match="--prefix"):
         check_prefix(bad)
+
+
+def test_a_prefix_with_an_underscore_is_refused_naming_the_clash():
+    """``--prefix a_b`` is refused: its ``a_b_<kernel>`` would be the names of ``--prefix
+    a``'s kernels ``b_<kernel>`` (two folders that cannot see each other), and the error
+    says so and proposes a name without ``_``; ``a`` and ``ab`` are accepted."""
+    from rigidsym.codegen.backends.c.prefix import PrefixError, check_prefix
+
+    with pytest.raises(PrefixError) as err:
+        check_prefix("a_b")
+    msg = str(err.value)
+    assert "--prefix" in msg and "'a'" in msg and "b_<kernel>" in msg and "'ab'" in msg
+    assert check_prefix("a") == "a" and check_prefix("ab") == "ab"
+
+
+def _names(files: dict[str, str]) -> set[str]:
+    """What a generated folder defines: its file names, macros, exported functions and
+    types, and the CMake target."""
+    out = set(files) - UNPREFIXED
+    for text in files.values():
+        out |= set(re.findall(r"#\s*define\s+(\w+)", text))
+        out |= set(re.findall(r"_API\s+\w+\s+(\w+)\(", text))
+        out |= set(re.findall(r"typedef\s[^;]*?\b(\w+)\s*;", text))
+        out |= set(re.findall(r"add_library\((\w+)", text))
+    return out
+
+
+def test_prefixes_that_begin_one_another_share_no_name(codes):
+    """Folders of the prefixes ``a``, ``ab`` and the default (one beginning another's
+    names, as far as ``_`` allows) define no name in common: each name starts with its own
+    prefix followed by no lower-case letter or digit."""
+    from rigidsym.codegen.backends.c.target import generate_c
+    from rigidsym.codegen.backends.cpp.target import generate_cpp
+
+    names = {}
+    for prefix in ("a", "ab", "rigidsym_c"):
+        files = generate_c(codes, "toy", single_header=True, prefix=prefix)
+        files.update(generate_cpp(codes, "toy", prefix=prefix))
+        names[prefix] = _names(files)
+        assert len(names[prefix]) > 20
+        for n in names[prefix]:
+            assert re.match(f"(?:{prefix}|{prefix.upper()})(?![a-z0-9])", n), (prefix, n)
+    assert not names["a"] & names["ab"]
+    assert not names["a"] & names["rigidsym_c"] and not names["ab"] & names["rigidsym_c"]
 
 
 def test_generate_refuses_a_bad_prefix_and_accepts_the_default(codes):

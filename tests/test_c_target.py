@@ -106,7 +106,7 @@ def assert_matches(got: dict, want: dict, tol: float = 1e-12) -> None:
         assert np.max(np.abs(got[key] - w)) <= tol * scale, (key, got[key], w)
 
 
-@pytest.mark.slow  # generates six kernels: 3-10 s on a loaded 2-core machine
+@pytest.mark.slow  # generates seven kernels: 3-10 s on a loaded 2-core machine
 def test_example_folder_is_what_the_generator_writes(tmp_path):
     """examples/c/rigidsym_c is the output of the command in examples/c/README.md, byte for
     byte (the --check of the C++ target: the C and, for examples/cpp, the C++ layer)."""
@@ -121,7 +121,7 @@ def test_example_folder_is_what_the_generator_writes(tmp_path):
 EXAMPLE_ARGS = ["--module", str(EXAMPLE / "my_kernels.py"),
                 "--kernel", "rotation_from_natural_invariants", "--kernel",
                 "natural_invariants_from_rotation", "--kernel", "twist_transfer",
-                "--kernel", "newton_euler_wrench"]
+                "--kernel", "newton_euler_wrench", "--kernel", "wrench_transfer"]
 
 
 def test_every_file_has_provenance_and_licence():
@@ -236,12 +236,12 @@ def test_every_kernel_flags_a_nonfinite_input(lib, e, bad, where):
 @pytest.mark.parametrize("dtype, lo, hi", [(np.float64, 2.0**-100, 2.0**101),
                                            (np.float32, 2.0**-30, 2.0**31)])
 def test_inputs_at_the_ends_of_the_range_are_ordinary(lib, dtype, lo, hi):
-    """The x86-64 range test (16-bit lanes, rigidsym_c_impl.h) flags components within an
-    eighth of an octave inside the ends of [lo, hi); the cold path tests them again exactly,
+    """The x86-64 range test (byte lanes, rigidsym_c_impl.h) flags components within 5
+    octaves (float: 1) inside the ends of [lo, hi); the cold path tests them again exactly,
     so they keep status 0 and the ordinary values (twist_transfer: linear, exact here)."""
     sfx = "_f32" if dtype == np.float32 else ""
     for x in [lo, lo * (1 + 2.0**-4), lo * (1 + 2.0**-3) * (1 - 2.0**-20), hi * (1 - 2.0**-6),
-              hi * (1 - 2.0**-20), -lo, 0.0]:
+              hi * (1 - 2.0**-20), -lo, 0.0, lo * 2.0**5, -lo * 1.5, hi * 2.0**-4]:
         t_A = np.array([x, 0.5, -x, 0.25, x, 1.0])
         a, p = np.array([0.0, 0.0, 0.0]), np.array([0.0, 0.0, 0.0])
         status, (out,) = call(lib, f"rigidsym_c_twist_transfer{sfx}", t_A, a, p, ("out", 6),
@@ -276,7 +276,7 @@ int main(void)
         uint32_t c = (uint32_t)rnd(), accf = 0;
         double x, one = 1.0;
         float xf, onef = 1.0f;
-        __m128i mx = _mm_setzero_si128(), mn = _mm_set1_epi16(0x7fff);
+        __m128i mx = _mm_setzero_si128(), mn = _mm_set1_epi8((char)-1);
         if (i % 3 == 1) {   /* the exponents at the ends, few significand bits or many */
             b = (b & 0x800fffffffffffffULL) | (ed[rnd() % 10] << 52);
             c = (c & 0x807fffffU) | (ef[rnd() % 10] << 23);
@@ -294,7 +294,7 @@ int main(void)
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(one, x)), &mx, &mn);
         fn += (acc >> 63) && !RIGIDSYM_C_Q_ODD_D(mx, mn);
         mx = _mm_setzero_si128();
-        mn = _mm_set1_epi16(0x7fff);
+        mn = _mm_set1_epi8((char)-1);
         RIGIDSYM_C_ODD_F(accf, xf);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(onef, xf, 0.0f, onef)), &mx, &mn);
         fn += (accf >> 31) && !RIGIDSYM_C_Q_ODD_F(mx, mn);
@@ -310,10 +310,11 @@ int main(void)
 
 @needs_gcc
 def test_sse2_range_test_misses_no_odd_component(tmp_path):
-    """The x86-64 range test (q = ceil(bits / 2^49), 16-bit max and min) flags every
-    component that the exact bit test (RIGIDSYM_C_ODD_*) calls odd: 2e6 random bit patterns
-    of each type, a third with their exponent at an end of the range (subnormals, 2^-100,
-    2^101, infinities and NaNs with every payload), a third signed zeros."""
+    """The x86-64 range test (an unsigned byte max over |x|'s bits, a min over them less 1)
+    flags every component that the exact bit test (RIGIDSYM_C_ODD_*) calls odd: 2e6 random
+    bit patterns of each type, a third with their exponent at an end of the range
+    (subnormals, 2^-100, 2^101, infinities and NaNs with every payload), a third signed
+    zeros."""
     src = tmp_path / "check.c"
     src.write_text(_SSE2_CHECK)
     exe = tmp_path / "check"

@@ -36,7 +36,7 @@ int start_c(int argc, char **argv)
     float outf[16];
     if (argc != 5)
         return 2;
-    for (kernel = 0; kernel < 6 && !same(argv[1], NAMES[kernel]); ++kernel)
+    for (kernel = 0; kernel < NKERNELS && !same(argv[1], NAMES[kernel]); ++kernel)
         ;
     if (kernel == 6)
         return 2;

@@ -28,7 +28,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: bench KERNEL gen|hand f64|f32 N\n");
         return 2;
     }
-    for (kernel = 0; kernel < 6 && strcmp(argv[1], NAMES[kernel]) != 0; ++kernel)
+    for (kernel = 0; kernel < NKERNELS && strcmp(argv[1], NAMES[kernel]) != 0; ++kernel)
         ;
     hand = strcmp(argv[2], "hand") == 0;
     f32 = strcmp(argv[3], "f32") == 0;

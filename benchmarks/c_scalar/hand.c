@@ -21,6 +21,14 @@ void hand_twist##S(const T t[6], const T a[3], const T p[3], T out[6])          
     out[4] = t[4] + d2 * t[0] - d0 * t[2];                                                   \
     out[5] = t[5] + d0 * t[1] - d1 * t[0];                                                   \
 }                                                                                            \
+void hand_wrench_transfer##S(const T w[6], const T a[3], const T p[3], T out[6])              \
+{   /* n_P = n_A + (a - p) x f, f_P = f_A */                                                 \
+    const T d0 = a[0] - p[0], d1 = a[1] - p[1], d2 = a[2] - p[2];                            \
+    out[0] = w[0] + d1 * w[5] - d2 * w[4];                                                   \
+    out[1] = w[1] + d2 * w[3] - d0 * w[5];                                                   \
+    out[2] = w[2] + d0 * w[4] - d1 * w[3];                                                   \
+    out[3] = w[3]; out[4] = w[4]; out[5] = w[5];                                             \
+}                                                                                            \
 void hand_wrench##S(const T I[9], T m, const T w[3], const T wd[3], const T cdd[3], T out[6]) \
 {   /* n = I wd + w x I w, f = m cdd */                                                      \
     const T h0 = I[0] * w[0] + I[1] * w[1] + I[2] * w[2];                                    \

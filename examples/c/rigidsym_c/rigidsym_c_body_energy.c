@@ -288,7 +288,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1))), &mx_, &mn_);
@@ -625,7 +625,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3))), &mx_, &mn_);
@@ -1201,7 +1201,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1))), &mx_, &mn_);
@@ -1737,7 +1737,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3))), &mx_, &mn_);

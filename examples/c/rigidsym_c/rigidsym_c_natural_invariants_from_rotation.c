@@ -301,7 +301,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q), _mm_load_sd(Q + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 2), _mm_load_sd(Q + 2 + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 4), _mm_load_sd(Q + 4 + 1))), &mx_, &mn_);
@@ -637,7 +637,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q), *(Q + 1), *(Q + 2), *(Q + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q + 4), *(Q + 4 + 1), *(Q + 4 + 2), *(Q + 4 + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&Q[8], 0.0f, 0.0f, 0.0f)), &mx_, &mn_);

@@ -315,7 +315,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1))), &mx_, &mn_);
@@ -694,7 +694,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);
@@ -1763,7 +1763,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1))), &mx_, &mn_);
@@ -2772,7 +2772,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);

@@ -178,7 +178,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1))), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
@@ -386,7 +386,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
             return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
@@ -815,7 +815,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1))), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
@@ -1184,7 +1184,7 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
             return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);

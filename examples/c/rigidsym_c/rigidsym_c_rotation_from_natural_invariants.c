@@ -200,7 +200,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
@@ -433,7 +433,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
             return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
@@ -913,7 +913,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
@@ -1324,7 +1324,7 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
         if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
             return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);

@@ -249,7 +249,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A), _mm_load_sd(t_A + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 2), _mm_load_sd(t_A + 2 + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 4), _mm_load_sd(t_A + 4 + 1))), &mx_, &mn_);
@@ -545,7 +545,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(t_A), *(t_A + 1), *(t_A + 2), *(t_A + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1])), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);
@@ -1229,7 +1229,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A), _mm_load_sd(t_A + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 2), _mm_load_sd(t_A + 2 + 1))), &mx_, &mn_);
         rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 4), _mm_load_sd(t_A + 4 + 1))), &mx_, &mn_);
@@ -1855,7 +1855,7 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi16(0x7fff);
+        RIGIDSYM_C_Q_START;
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(t_A), *(t_A + 1), *(t_A + 2), *(t_A + 3))), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1])), &mx_, &mn_);
         rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);

@@ -57,24 +57,37 @@ class PrefixError(ValueError):
 def check_prefix(prefix: str) -> str:
     """``prefix`` if it can name every symbol of a generated folder, else an error.
 
-    A prefix is a lower-case C identifier (``[a-z][a-z0-9_]*``, no ``__``, not ending in
-    ``_``: the names are ``<prefix>_<kernel>``), not a C or C++ keyword (it is also the C++
-    namespace), and clashing with no name of the default prefix's folder: neither
-    ``rigidsym_c_...`` nor ``rigidsym`` (whose ``rigidsym_c_...`` kernels would be the
-    default folder's). The default itself is accepted.
+    A prefix is a lower-case C identifier without ``_`` (``[a-z][a-z0-9]*``: the names are
+    ``<prefix>_<kernel>``, so with ``_`` allowed ``--prefix a`` and ``--prefix a_b`` could
+    both write ``a_b_twist_transfer``, ``a``'s kernel ``b_twist_transfer`` and ``a_b``'s
+    ``twist_transfer``, and no folder can see the other; without it a name's prefix is what
+    stands before its first ``_``, so folders of different prefixes share no name), not a
+    C or C++ keyword (it is also the C++ namespace), and clashing with no name of the
+    default prefix's folder: not ``rigidsym`` (whose ``rigidsym_c_...`` kernels would be
+    the default folder's). The default ``rigidsym_c`` itself is accepted (no accepted
+    prefix begins its names: they would have to be ``rigidsym``).
 
     Raises:
         PrefixError: naming ``--prefix`` and the rule it breaks.
     """
+    if isinstance(prefix, str) and prefix == DEFAULT_PREFIX:
+        return prefix
     if not isinstance(prefix, str) or not re.fullmatch(r"[a-z][a-z0-9_]*", prefix) or \
             "__" in prefix or prefix.endswith("_"):
         raise PrefixError(f"--prefix: {prefix!r} is not a lower-case C identifier "
-                          f"([a-z][a-z0-9_]*, no '__', not ending in '_')")
+                          f"([a-z][a-z0-9]*)")
+    if "_" in prefix:
+        head = prefix.split("_")[0]
+        raise PrefixError(f"--prefix: {prefix!r} contains '_': the names of its folder "
+                          f"({prefix}_<kernel>) could be those of a folder of prefix "
+                          f"{head!r} (whose kernel {prefix[len(head) + 1:]}_<kernel> is "
+                          f"also {prefix}_<kernel>), so that the two would not link into "
+                          f"one program; choose a name without '_' "
+                          f"(e.g. {prefix.replace('_', '')!r})")
     if prefix in _KEYWORDS or keyword.iskeyword(prefix):
         raise PrefixError(f"--prefix: {prefix!r} is a C or C++ keyword or a namespace of "
                           f"the standard library; choose another name")
-    if prefix != DEFAULT_PREFIX and (prefix.startswith(DEFAULT_PREFIX + "_") or
-                                     DEFAULT_PREFIX.startswith(prefix + "_")):
+    if DEFAULT_PREFIX.startswith(prefix + "_"):
         raise PrefixError(f"--prefix: {prefix!r} would clash with the names of a folder of "
                           f"the default prefix {DEFAULT_PREFIX!r} ({DEFAULT_PREFIX}_...); "
                           f"choose a name that neither starts with {DEFAULT_PREFIX}_ nor "
