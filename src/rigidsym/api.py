@@ -219,6 +219,9 @@ def _readings_agree(reading, first, others) -> None:
 
 
 def _choice_words(key: str) -> str:
+    if key == "\\tilde":
+        return ("\\tilde{x} of a 3-vector can be read as its cross-product matrix [x]_\\times "
+                "(Wittenburg, Shabana) or as a vector of its own")
     if key.startswith("["):
         return f"{key} can be read as the hat of the vector or as a bracket that groups it"
     if " of " in key:
@@ -228,6 +231,9 @@ def _choice_words(key: str) -> str:
 
 
 def _settles(key: str) -> str:
+    if key == "\\tilde":
+        return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
+                "--let '\\tilde{\\mathbf{a}}: vector' (its own)")
     if key.startswith("["):
         return f"{key[:-1]}]_\\times for the hat or ({key[1:-1]}) to group"
     if " of " in key:

@@ -17,6 +17,7 @@ from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
 from rigidsym.latex.table import lookup
 from rigidsym.latex.transformer.book_notations import index_key
 from rigidsym.latex.transformer.meanings import alternatives
+from rigidsym.latex.transformer.tilde import tilde_of
 
 __all__: list[str] = []
 
@@ -127,6 +128,10 @@ class GlyphRules:
             rate = self.model_rate(inner.key)
             if rate is not None:
                 return rate
+        if accent == "\\tilde" and not items[2:]:  # a vector's tilde: its [x]_x or its own
+            skew = tilde_of(self, f"\\tilde{{{inner.key}}}", inner)
+            if skew is not None:
+                return skew
         self._unuse(inner.key)  # only the accented glyph is a symbol here
         return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
                              else accent, inner)
@@ -187,6 +192,14 @@ class GlyphRules:
             vkey = self._key(vbase, [], None)
             g = self.overrides.get(vkey)
             shape = getattr(g, "shape", ())
+            if len(shape) == 2 and shape[1] == 1 and k == 0 < shape[0] - 1:
+                # Shabana's, Wittenburg's theta_0 of theta = (theta_0 ... theta_3): counted
+                # from 0, never a symbol of its own beside entries counted from 1 (issue 63)
+                raise LatexError(
+                    f"{key} beside the declared {shape[0]}-vector {vkey}: its entries "
+                    f"counted from 0 or a symbol of its own; say which: --let '{key}: "
+                    f"scalar' (its own; and each of its namesakes) or {vkey}_{{1:1}} for "
+                    f"the first entry (entries are counted from 1)", "index")
             if len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1:
                 point = f"{key} of {vkey}"
                 self.choice_points.setdefault(point, alternatives(point))

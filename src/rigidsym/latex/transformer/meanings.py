@@ -32,10 +32,12 @@ __all__: list[str] = []
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
-                "index": ("name", "entry")}
+                "index": ("name", "entry"), "tilde": ("skew", "own")}
 
 
 def _kind(key: str) -> str:
+    if key == "\\tilde":  # every tilde of a 3-vector (rigidsym.latex.transformer.tilde)
+        return "tilde"
     return "bracket" if key.startswith("[") else "index" if " of " in key else "apply"
 
 
@@ -49,6 +51,9 @@ def said(key: str, choice: str) -> str:
     its entry``."""
     if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "tilde":
+        return ("each \\tilde{x} of a 3-vector " + ("a vector of its own" if choice == "own"
+                                                    else "its cross-product matrix [x]_\\times"))
     if _kind(key) == "index":
         name, vec = key.split(" of ", 1)
         k = name.rsplit("_{", 1)[-1].rstrip("}")
