@@ -6,6 +6,12 @@ one (``--let 'e = |\\mathbf{e}|'``, Hughes' and Markley's norm of the Euler-axis
 ``--let 'e: scalar'``) means ``e^2`` as its square: with such a declaration every ``e^`` of
 the LaTeX and of the models is respelt ``{e}^`` (a braced group, the same glyph), before
 either semantics parses it, and the reading says so.
+
+A tilde over a vector expression, Wittenburg's ``\\widetilde{\\mathbf{a}\\times\\mathbf{b}}``
+(the cross-product matrix of ``a \\times b``; a glyph's tilde is a choice of the reader,
+:mod:`rigidsym.latex.transformer.tilde`), is respelt ``[\\mathbf{a}\\times\\mathbf{b}]_\\times``:
+over a sum or a cross product no other meaning is written (before: a syntax error ending in
+"expected one of: }").
 """
 
 from __future__ import annotations
@@ -14,7 +20,7 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["declared_e"]
+__all__ = ["declared_e", "tilde_expressions"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -44,3 +50,43 @@ def declared_e(latex: str, let: object) -> tuple[str, object, str]:
     note = ("e^: a power of the declared symbol e (a --let names e), not the exponential; "
             "write \\exp for it") if changed else ""
     return new, out, note
+
+
+_TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
+
+
+def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\tilde{X}`` (``\\widetilde``) whose braces hold a cross
+    product, a sum or a difference respelt ``[X]_\\times`` in the LaTeX and the declarations
+    (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    hits: list[str] = []
+
+    def respell(text: str) -> str:
+        out, k = [], 0
+        for m in _TILDE.finditer(text):
+            if m.start() < k:
+                continue
+            depth, j = 1, m.end()
+            while j < len(text) and depth:
+                depth += {"{": 1, "}": -1}.get(text[j], 0)
+                j += 1
+            inner = text[m.end():j - 1]
+            if depth or not re.search(r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner)):
+                continue
+            out += [text[k:m.start()], f"[{inner}]_\\times"]
+            hits.append(inner)
+            k = j
+        return "".join(out) + text[k:]
+
+    new = respell(latex)
+    if isinstance(let, dict):
+        out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
+    else:
+        out = [respell(d) for d in split_lets([let] if isinstance(let, str) else let or [])]
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
+                      f"{hits[0]}, read as [{hits[0]}]_\\times")

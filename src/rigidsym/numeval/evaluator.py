@@ -654,10 +654,8 @@ def _dims(sub) -> tuple[int, int] | None:
         return None
     toks = [str(c) for c in sub.children if isinstance(c, lark.Token)]
     times = [c for c in sub.children if isinstance(c, lark.Tree) and c.data == "times"]
-    if len(toks) == 1 and toks[0].isdigit() and not times:
-        return (int(toks[0]), int(toks[0]))
-    if len(toks) == 2 and all(x.isdigit() for x in toks) and len(times) == 1:
-        return (int(toks[0]), int(toks[1]))
+    if all(x.isdigit() for x in toks) and (len(toks), len(times)) in ((1, 0), (2, 1)):
+        return (int(toks[0]), int(toks[-1]))
     return None
 
 
