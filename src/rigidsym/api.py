@@ -170,14 +170,15 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                  repair_seconds=REPAIR_SECONDS):
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI)."""
     from rigidsym.checking.checker import check as _check
-    from rigidsym.latex.respell import declared_e, tilde_expressions
+    from rigidsym.latex.respell import declared_e, declared_labels, tilde_expressions
     from rigidsym.latex.statement import declare_latex
 
     _repair_args(repairs, repair_budget)
+    latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power (issue 63)
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (tilde, respelt):
+    for note in (labels, tilde, respelt):
         if note:
             reading.notes.insert(0, note)
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
