@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import motion, names, rates, tilde
+from rigidsym.numeval import accents, motion, names, rates
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -367,7 +367,7 @@ class Evaluator:
                     return v
                 return self._derivative(lark.Tree("accented", [lark.Token("ACCENT", "\\dot"),
                                                                inner]), _TIME_TREE, t)
-        if (v := tilde.tilde_value(self, t, key)) is not None:  # a vector's tilde (issue 63)
+        if (v := accents.undeclared_accent(self, t, key)) is not None:  # ~a, a rate (issue 63)
             return v
         raise NotCovered(f"the undeclared glyph {text_of(t)} (an accent's meaning is the "
                          f"reader's)")

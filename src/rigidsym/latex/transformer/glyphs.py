@@ -192,14 +192,6 @@ class GlyphRules:
             vkey = self._key(vbase, [], None)
             g = self.overrides.get(vkey)
             shape = getattr(g, "shape", ())
-            if len(shape) == 2 and shape[1] == 1 and k == 0 < shape[0] - 1:
-                # Shabana's, Wittenburg's theta_0 of theta = (theta_0 ... theta_3): counted
-                # from 0, never a symbol of its own beside entries counted from 1 (issue 63)
-                raise LatexError(
-                    f"{key} beside the declared {shape[0]}-vector {vkey}: its entries "
-                    f"counted from 0 or a symbol of its own; say which: --let '{key}: "
-                    f"scalar' (its own; and each of its namesakes) or {vkey}_{{1:1}} for "
-                    f"the first entry (entries are counted from 1)", "index")
             if len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1:
                 point = f"{key} of {vkey}"
                 self.choice_points.setdefault(point, alternatives(point))
