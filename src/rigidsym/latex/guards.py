@@ -230,8 +230,8 @@ _ZERO = re.compile(r"(\\?[A-Za-z]+)_\{0\}$")
 
 
 def zero_entries(free: list[str], glyphs: dict) -> None:
-    """A free ``\\theta_0`` beside a declared vector ``\\boldsymbol\\theta`` (of 2 or more
-    entries): Shabana's and Wittenburg's entries counted from 0 (``\\theta_1`` then is the
+    """A free ``\\theta_0`` beside a vector ``\\boldsymbol\\theta`` declared by a kind (of 2 or
+    more entries): Shabana's and Wittenburg's entries counted from 0 (``\\theta_1`` then is the
     second), or a symbol of its own; the reader counts entries from 1, so either reading
     could change the equation (a wrong verdict before, wave 11): bad input naming both."""
     for key in free:
@@ -240,7 +240,8 @@ def zero_entries(free: list[str], glyphs: dict) -> None:
         bold = f"\\boldsymbol{{{letter}}}" if letter.startswith("\\") else f"\\mathbf{{{letter}}}"
         for vkey in (bold, letter) if m else ():
             g = glyphs.get(vkey)
-            if g is not None and len(g.shape) == 2 and g.shape[1] == 1 and g.shape[0] > 1:
+            if g is not None and g.kind == "let" and len(g.shape) == 2 and g.shape[1] == 1 \
+                    and g.shape[0] > 1:  # a vector of a kind (a model's x_0 is H&Z's)
                 raise BadInput(
                     f"--latex: {key} beside the declared {g.shape[0]}-vector {vkey}: its "
                     f"entries counted from 0, or a symbol of its own; the reader counts "

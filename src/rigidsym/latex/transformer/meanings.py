@@ -170,7 +170,11 @@ class MeaningRules:
         fv, x = self._val(f), as_scalar(self._val(arg))
         if self.reader and matrix_shape(fv) is not None and matrix_shape(x) is not None \
                 and getattr(self.overrides.get(f.key), "kind", None) == "model":
-            return self._choose(f, fv, x, arg, sup)
+            if not self._of_scalars(f):
+                return self._choose(f, fv, x, arg, sup)
+            self._note(f"{f.key}(...): the product, {f.key}'s model holding no vector or "
+                       f"matrix to apply to the argument")  # H&Z's K'(R X + t), wave 11
+            return self.mul([f, self.power([arg, sup]) if sup is not None else arg])
         if self.reader and matrix_shape(x) is None and x is not _TIME \
                 and self._modelless_vector(f, fv):
             from rigidsym.printing import notation
@@ -255,6 +259,13 @@ class MeaningRules:
         g = self.overrides.get(getattr(f, "key", None)) or self.glyphs.get(getattr(f, "key", None))
         return shape is not None and shape[1] == 1 and shape[0] > 1 and g is not None \
             and g.kind in ("let", "free") and g.name not in self.model_rhs
+
+    def _of_scalars(self, f) -> bool:
+        """``f``'s ``--let`` model is a matrix of scalars only (H&Z's calibration ``K'``):
+        applied to a vector it would drop the argument, so no application is read."""
+        rhs = self.model_rhs.get(getattr(self.overrides.get(f.key), "name", None))
+        return isinstance(rhs, sp.MatrixBase) and not any(
+            isinstance(s, sp.MatrixSymbol) for s in rhs.free_symbols)
 
     def _choose(self, f, fv, x, arg, sup):
         """``X(\\mathbf{y})``, ``X`` a model without parameters, ``\\mathbf{y}`` no scalar:
