@@ -532,3 +532,22 @@ CASES = [
 ]
 
 TRUTH_TOLERANCE = 1e-6
+
+#: the one attempt a reader makes after a refusal, where its message names it: the entry
+#: it names (\boldsymbol\theta_{1:1} for theta_0, counted from 1), or the spelling it names
+#: (a \times b for Groves' a \wedge b)
+_SHA_ENTRIES = [(rf"\theta_{k}", rf"\boldsymbol\theta_{{{k + 1}:{k + 1}}}") for k in range(4)]
+ATTEMPT = {
+    "grv-cross": {"replace": [(r"\wedge\mathbf{l}", r"\times\mathbf{l}")]},
+    "k-sha-body": {"replace": _SHA_ENTRIES},
+    "k-sha-space": {"replace": _SHA_ENTRIES},
+}
+
+
+def attempted(case: dict) -> tuple[str, list, dict]:
+    """``(latex, lets, options)`` of ``case`` after the reader's one attempt (as typed where
+    :data:`ATTEMPT` has none)."""
+    latex, lets = case["latex"], list(case["let"])
+    for old, new in ATTEMPT.get(case["id"], {}).get("replace", []):
+        latex, lets = latex.replace(old, new), [x.replace(old, new) for x in lets]
+    return latex, lets, {}

@@ -408,18 +408,24 @@ def _words(r, latex: str, what: str) -> str:
                  else text_of(s) for s in ch.children if not isinstance(s, str)]
         pairs += [(sides[0], x) for x in sides[1:]]
     said = " = ".join(pairs[r.relation - 1]) if 0 < r.relation <= len(pairs) else latex
-    point = "; ".join(f"{k} = {_one_line(v)}" for k, v in list(r.point.items())[:6])
+    point = "; ".join(f"{k} = {_one_line(v, r.point.get('t'))}"
+                      for k, v in list(r.point.items())[:6])
     return (f"--latex: the symbolic path says {what} (relation {r.relation}: {said}; "
             f"relative residual {float(r.relative):.1e}{'; at ' + point if point else ''}): "
             f"the two semantics disagree, so no verdict; say the equation another way or "
             f"report it")
 
 
-def _one_line(v) -> str:
+def _one_line(v, t=None) -> str:
     """A sampled value on one line: a scalar to 6 digits, a vector ``(a, b, c)``, a matrix
-    ``[[a, b], [c, d]]``."""
+    ``[[a, b], [c, d]]``; a function of time's motion, its value at the point's ``t``."""
     import mpmath as mp
 
+    from rigidsym.numeval import motion
+
+    if isinstance(v, tuple):  # (kind, coefficients...): a declared X(t)
+        return _one_line(motion.at(v, t)) + " at that t" if t is not None else \
+            f"a {v[0]} motion"
     if not hasattr(v, "rows"):
         return mp.nstr(v, 6)
     rows = [[mp.nstr(v[i, j], 6) for j in range(v.cols)] for i in range(v.rows)]
