@@ -91,7 +91,8 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
     if isinstance(let, dict):
         out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
     else:
-        out = [respell(d) for d in split_lets([let] if isinstance(let, str) else let or [])]
+        decls = _decls(let)
+        out = let if decls is None else [respell(d) for d in decls]
     if not hits:
         return latex, let, ""
     return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
@@ -123,10 +124,11 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
     """
     if let is None:
         return latex, let, ""
-    if isinstance(let, dict):
+    decls = _decls(let)
+    if decls is None:
         return latex, let, ""
     names = set()
-    for d in split_lets([let] if isinstance(let, str) else let):
+    for d in decls:
         m = _LABELLED.fullmatch(re.split(r"\s*(?:\(t\))?\s*[:=]", d, maxsplit=1)[0].strip())
         if m and not m["acc"]:
             names.add(_parts(m))
@@ -142,7 +144,18 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
             return f"{m['acc'].strip()}{glyph}}}" if m["acc"] else glyph
         return _LABELLED.sub(one, text)
 
-    out = [respell(d) for d in split_lets([let] if isinstance(let, str) else let)]
+    out = [respell(d) for d in decls]
     shown = ", ".join(sorted(f"{b}_{s}^{lbl}" for b, s, lbl in names))
     return respell(latex), out, (f"{shown}: a superscript frame label (a --let names it), "
                                  f"read as a label, not a power")
+
+
+def _decls(let: object) -> list[str] | None:
+    """The declarations of ``let`` one by one, or ``None`` for a dict or a value that
+    :func:`rigidsym.latex.lets.read_lets` refuses (it says why, later)."""
+    if let is None or isinstance(let, dict):
+        return None if isinstance(let, dict) else []
+    try:
+        return split_lets([let] if isinstance(let, str) else let)
+    except (TypeError, ValueError):
+        return None
