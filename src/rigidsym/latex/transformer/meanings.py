@@ -170,10 +170,10 @@ class MeaningRules:
         fv, x = self._val(f), as_scalar(self._val(arg))
         if self.reader and matrix_shape(fv) is not None and matrix_shape(x) is not None \
                 and getattr(self.overrides.get(f.key), "kind", None) == "model":
-            if not self._of_scalars(f):
-                return self._choose(f, fv, x, arg, sup)
+            if isinstance(x, sp.MatrixSymbol) or not self._of_scalars(f):
+                return self._choose(f, fv, x, arg, sup)  # R(\mathbf{q}): a label, maybe
             self._note(f"{f.key}(...): the product, {f.key}'s model holding no vector or "
-                       f"matrix to apply to the argument")  # H&Z's K'(R X + t), wave 11
+                       f"matrix to apply the expression to")  # H&Z's K'(R X + t), wave 11
             return self.mul([f, self.power([arg, sup]) if sup is not None else arg])
         if self.reader and matrix_shape(x) is None and x is not _TIME \
                 and self._modelless_vector(f, fv):
@@ -262,7 +262,8 @@ class MeaningRules:
 
     def _of_scalars(self, f) -> bool:
         """``f``'s ``--let`` model is a matrix of scalars only (H&Z's calibration ``K'``):
-        applied to a vector it would drop the argument, so no application is read."""
+        applied to a vector expression (no symbol, which could be a label: ``R(\mathbf{q})``
+        written in ``q_0 ... q_3``) it would drop it, so no application is read."""
         rhs = self.model_rhs.get(getattr(self.overrides.get(f.key), "name", None))
         return isinstance(rhs, sp.MatrixBase) and not any(
             isinstance(s, sp.MatrixSymbol) for s in rhs.free_symbols)
