@@ -108,6 +108,11 @@ def test_a_tilde_read_two_ways_that_disagree_is_refused_naming_both():
                                                              r"\mathbf{a}: vector"],
                              repairs=False)
     assert r.verdict == "does-not-hold"
+    # a vector of its own only (Kalman's error x~ = x - x^, a definition): refused naming
+    # the --let, never does-not-hold (the second semantics evaluates no undeclared accent)
+    with pytest.raises(BadInput, match=r"of its own .*--let '\\tilde\{\\mathbf\{x\}\}: vector'"):
+        rigidsym.check_latex(r"\tilde{\mathbf{x}} = \mathbf{x} - \hat{\mathbf{x}}",
+                             let=[r"\hat{\mathbf{x}}: vector"], repairs=False)
 
 
 @pytest.mark.parametrize("latex, verdict", [

@@ -1,8 +1,8 @@
 """The accented glyphs that no declaration names and the second semantics still reads
 (issue 63, the second outside trial), each as the reader does:
 
-- a tilde over a 3-vector: its cross-product matrix or a vector of its own, a choice
-  (:mod:`rigidsym.numeval.tilde`);
+- a tilde over a 3-vector: its cross-product matrix, one reading of a choice whose other
+  (a vector of its own) only a declaration gives (:mod:`rigidsym.numeval.tilde`);
 - ``\\dot X`` of an ``X`` declared a scalar or an angle but no function of time (Greenwood's
   ``\\dot\\psi`` beside ``\\psi: angle``): the rate's value at the instant, a scalar drawn
   once per point (the reader takes it so only where the statement takes no derivative,

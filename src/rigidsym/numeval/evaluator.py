@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import accents, motion, names, rates
+from rigidsym.numeval import accents, motion, names, rates, tilde
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -750,7 +750,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
             continue  # a declaration this reading never uses: the reader refuses it
         kept.append(rs)
     if not kept:
-        raise first_error or errors[0]
+        raise tilde.reported(first_error, errors)  # a tilde's own first: it names the --let
     for n, rs in enumerate(kept):
         for r in rs:
             r.reading = n

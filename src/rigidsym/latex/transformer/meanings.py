@@ -261,7 +261,7 @@ class MeaningRules:
             and g.kind in ("let", "free") and g.name not in self.model_rhs
 
     def _of_scalars(self, f) -> bool:
-        """``f``'s ``--let`` model is a matrix of scalars only (H&Z's calibration ``K'``):
+        r"""``f``'s ``--let`` model is a matrix of scalars only (H&Z's calibration ``K'``):
         applied to a vector expression (no symbol, which could be a label: ``R(\mathbf{q})``
         written in ``q_0 ... q_3``) it would drop it, so no application is read."""
         rhs = self.model_rhs.get(getattr(self.overrides.get(f.key), "name", None))
