@@ -115,13 +115,15 @@ def test_a_tilde_read_two_ways_that_disagree_is_refused_naming_both():
                              let=[r"\hat{\mathbf{x}}: vector"], repairs=False)
 
 
-@pytest.mark.parametrize("latex, verdict", [
-    (r"\mathbf{n}^T\dot{\mathbf{n}} = 0", "verified"),
-    (r"\dot{\mathbf{n}} = \mathbf{0}", "does-not-hold"),
+@pytest.mark.parametrize("latex, let, verdict", [
+    (r"\mathbf{n}^T\dot{\mathbf{n}} = 0", r"\mathbf{n}(t): unit vector", "verified"),
+    (r"\dot{\mathbf{n}} = \mathbf{0}", r"\mathbf{n}(t): unit vector", "does-not-hold"),
+    (r"\dot{M}^T = \dot{M}", r"M(t): symmetric matrix", "verified"),
 ])
-def test_a_unit_vectors_rate_is_tangent(latex, verdict):
-    # before: a free 3-vector rate, so n^T n' = 0 was does-not-hold on the symbolic path
-    r = rigidsym.check_latex(latex, let=[r"\mathbf{n}(t): unit vector"], repairs=False)
+def test_a_constrained_kinds_rate_keeps_its_constraint(latex, let, verdict):
+    # before: a free rate, so n^T n' = 0 and M'^T = M' were does-not-hold on the symbolic
+    # path (only the second semantics refused them)
+    r = rigidsym.check_latex(latex, let=[let], repairs=False)
     assert r.verdict == verdict
 
 

@@ -297,6 +297,9 @@ class BookNotationRules:
             self._note(f"{dkey} = (1 - {g.name} {g.name}^T) {d.name}: tangent to the unit "
                        f"sphere ({d.name} free)")
             return (sp.Identity(g.shape[0]) - value * value.T) * d
+        if g.meaning.startswith("symmetric"):  # a symmetric matrix's rate is symmetric
+            self._note(f"{dkey} = ({d.name} + {d.name}^T)/2: symmetric ({d.name} free)")
+            return (d + d.T) / 2
         return d
 
     def models_of(self, names: set[str]) -> dict:
