@@ -62,6 +62,8 @@ def decls_of(lets: list[Let]) -> list[Decl]:
             written = re.sub(r"\(\s*t\s*\)\s*$", "", written)
         sides = _side(tree(f"{written} = {x.latex or 0}"))  # one parse: NAME and model
         name, body = sides[0], (sides[1] if x.latex else None)
+        if name.data == "bracket" and name.children[0].data == "glyph":  # S&J's [C] = ...
+            name = name.children[0]
         params = tuple(_side(tree(f"{p} = 0"))[0] for p in x.params)
         if x.latex and x.params == ("t",):  # X(t) = ...: a model in time
             params, timed = (), True

@@ -15,9 +15,9 @@ decided, a verdict only when all agree. A ``--let`` of the tilde's own glyph set
 from __future__ import annotations
 
 from rigidsym.algebra import rigid_motions
-from rigidsym.latex.shapes import matrix_shape
+from rigidsym.latex.shapes import LatexError, matrix_shape
 
-__all__ = ["TILDE_POINT", "tilde_of"]
+__all__ = ["TILDE_POINT", "own_tilde", "tilde_of"]
 
 #: the key of the tilde choice point: one for all the tildes of a reading
 TILDE_POINT = "\\tilde"
@@ -47,3 +47,18 @@ def tilde_of(tr, key: str, inner):
     tr._note(f"{key}: the cross-product matrix [{inner.key}]_\\times, as in Wittenburg, "
              f"Shabana, Greenwood, Schaub & Junkins (a choice: or a vector of its own)")
     return as_written(rigid_motions.hat(inner.value))
+
+
+def own_tilde(tr, x) -> None:
+    """``[\\tilde{\\mathbf{a}}]`` where the reading takes the tilde as a vector of its own:
+    Schaub & Junkins' bracket marks the tilde *matrix*, never the hat of a vector named
+    ``\\tilde{a}``; that reading is dropped (a shape error) so only the matrix one stays.
+
+    Raises:
+        LatexError: in that reading, naming the bracket.
+    """
+    key = getattr(x, "key", "")
+    if getattr(tr, "reader", False) and key.startswith("\\tilde{") and key not in tr.overrides \
+            and tr.choices.get(TILDE_POINT) == "own":
+        raise LatexError(f"[{key}]: the bracket of Schaub & Junkins' tilde matrix, not the "
+                         f"hat of a vector of its own", "shapes")
