@@ -155,3 +155,21 @@ def test_a_disagreement_quotes_its_relation_as_written_on_one_line(monkeypatch):
     msg = str(exc.value)
     assert r"(relation 1: \mathbf{n}^T\dot{\mathbf{n}} = 0;" in msg and "\n" not in msg, msg
     assert "('unit'" not in msg, msg
+
+
+SJ_CRP = [r"[C] = \frac{(1 - \mathbf{q}^T\mathbf{q})[I_{3\times 3}] + 2\mathbf{q}\mathbf{q}^T"
+          r" - 2[\tilde{\mathbf{q}}]}{1 + \mathbf{q}^T\mathbf{q}}",
+          r"\dot{\mathbf{q}} = \frac12 ([I_{3\times 3}] + [\tilde{\mathbf{q}}] + "
+          r"\mathbf{q}\mathbf{q}^T)\boldsymbol\omega",
+          r"\mathbf{q}(t): vector", r"\boldsymbol\omega: vector"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"[\dot{C}] = -[\tilde{\boldsymbol\omega}][C]", "verified"),
+    (r"[\dot{C}] = [\tilde{\boldsymbol\omega}][C]", "does-not-hold"),
+])
+def test_schaub_junkins_bracketed_tilde_matrices(latex, verdict):
+    # [x~] is the tilde matrix (read as the hat of a vector named x~ it made the readings
+    # disagree), and a bracketed --let NAME [C] is C in both semantics
+    r = rigidsym.check_latex(latex, let=SJ_CRP, repairs=False)
+    assert r.verdict == verdict
