@@ -254,8 +254,9 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     values.update(rd.models)
     models.update({sym.name: v for sym, v in rd.models.items()})
     occurs |= set(parsed.glyphs) | rd.in_models
-    for x in lets:  # a kind's X of which only \dot X occurs is used (Greenwood's psi)
-        if x.key not in occurs and not (x.kind and dot_key(x.key) in occurs):
+    for x in lets:  # an angle of which only \dot X occurs is used (Greenwood's psi)
+        if x.key not in occurs and not (x.kind.split(" in ")[0] in ("angle", "scalar")
+                                        and dot_key(x.key) in occurs):
             raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
