@@ -170,14 +170,17 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                  repair_seconds=REPAIR_SECONDS):
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI)."""
     from rigidsym.checking.checker import check as _check
-    from rigidsym.latex.respell import declared_e
+    from rigidsym.latex.respell import declared_e, declared_labels, tilde_expressions
     from rigidsym.latex.statement import declare_latex
 
     _repair_args(repairs, repair_budget)
+    latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power (issue 63)
+    latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    if respelt:
-        reading.notes.insert(0, respelt)
+    for note in (labels, tilde, respelt):
+        if note:
+            reading.notes.insert(0, note)
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
                          repair_seconds=_seconds(repair_seconds)))
     if reading.others:  # several readings type-check: a verdict only when all agree
@@ -219,6 +222,9 @@ def _readings_agree(reading, first, others) -> None:
 
 
 def _choice_words(key: str) -> str:
+    if key == "\\tilde":
+        return ("\\tilde{x} of a 3-vector can be read as its cross-product matrix [x]_\\times "
+                "(Wittenburg, Shabana) or as a vector of its own")
     if key.startswith("["):
         return f"{key} can be read as the hat of the vector or as a bracket that groups it"
     if " of " in key:
@@ -228,6 +234,9 @@ def _choice_words(key: str) -> str:
 
 
 def _settles(key: str) -> str:
+    if key == "\\tilde":
+        return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
+                "--let '\\tilde{\\mathbf{a}}: vector' (its own)")
     if key.startswith("["):
         return f"{key[:-1]}]_\\times for the hat or ({key[1:-1]}) to group"
     if " of " in key:

@@ -62,6 +62,8 @@ def decls_of(lets: list[Let]) -> list[Decl]:
             written = re.sub(r"\(\s*t\s*\)\s*$", "", written)
         sides = _side(tree(f"{written} = {x.latex or 0}"))  # one parse: NAME and model
         name, body = sides[0], (sides[1] if x.latex else None)
+        if name.data == "bracket" and name.children[0].data == "glyph":  # S&J's [C] = ...
+            name = name.children[0]
         params = tuple(_side(tree(f"{p} = 0"))[0] for p in x.params)
         if x.latex and x.params == ("t",):  # X(t) = ...: a model in time
             params, timed = (), True
@@ -398,15 +400,40 @@ def _where_verified(worst, latex: str, lets, let, symbols, statement) -> str:
 
 
 def _words(r, latex: str, what: str) -> str:
+    """The disagreement in words: the relation as the reader wrote it (its two sides' own
+    LaTeX, not the parser's tokens), its residual and the point, each value on one line
+    (wave 11: before, the tokens joined by spaces, ``F 2 \\mathbf u``, and a vector's
+    value printed over several lines)."""
+    text, pairs = parsed_text(latex), []
+    for ch in (c for c in tree(latex).iter_subtrees_topdown() if c.data == "chain"):
+        sides = [text[s.meta.start_pos:s.meta.end_pos].strip() if not s.meta.empty
+                 else text_of(s) for s in ch.children if not isinstance(s, str)]
+        pairs += [(sides[0], x) for x in sides[1:]]
+    said = " = ".join(pairs[r.relation - 1]) if 0 < r.relation <= len(pairs) else latex
+    point = "; ".join(f"{k} = {_one_line(v, r.point.get('t'))}"
+                      for k, v in list(r.point.items())[:6])
+    return (f"--latex: the symbolic path says {what} (relation {r.relation}: {said}; "
+            f"relative residual {float(r.relative):.1e}{'; at ' + point if point else ''}): "
+            f"the two semantics disagree, so no verdict; say the equation another way or "
+            f"report it")
+
+
+def _one_line(v, t=None) -> str:
+    """A sampled value on one line: a scalar to 6 digits, a vector ``(a, b, c)``, a matrix
+    ``[[a, b], [c, d]]``; a function of time's motion, its value at the point's ``t``."""
     import mpmath as mp
 
-    sides = [c for c in tree(latex).iter_subtrees_topdown() if c.data == "chain"]
-    texts = [text_of(s) for ch in sides for s in ch.children if not isinstance(s, str)]
-    point = "; ".join(f"{k} = {mp.nstr(v, 6)}" for k, v in list(r.point.items())[:6])
-    return (f"--latex: the symbolic path says {what} (relation {r.relation}: "
-            f"{' = '.join(texts) or latex}; relative residual {float(r.relative):.1e}"
-            f"{'; at ' + point if point else ''}): the two semantics disagree, so no "
-            f"verdict; say the equation another way or report it")
+    from rigidsym.numeval import motion
+
+    if isinstance(v, tuple):  # (kind, coefficients...): a declared X(t)
+        return _one_line(motion.at(v, t)) + " at that t" if t is not None else \
+            f"a {v[0]} motion"
+    if not hasattr(v, "rows"):
+        return mp.nstr(v, 6)
+    rows = [[mp.nstr(v[i, j], 6) for j in range(v.cols)] for i in range(v.rows)]
+    if v.cols == 1:
+        return "(" + ", ".join(x[0] for x in rows) + ")"
+    return "[" + ", ".join("[" + ", ".join(x) + "]" for x in rows) + "]"
 
 
 def _point_of(at) -> dict:

@@ -22,6 +22,7 @@ from rigidsym.core.errors import BadInput
 from rigidsym.latex.depends import names as _names
 from rigidsym.latex.depends import through as _through
 from rigidsym.latex.lets import kind_of
+from rigidsym.latex.shapes import LatexError
 
 __all__: list[str] = []
 
@@ -79,14 +80,22 @@ def conventional_shapes(printed, free: list[str], glyphs: dict) -> None:
             f"--let '{k} = LATEX' (its model)")
 
 
-def time_derivatives(free: list[str], used: set[str], declared: dict) -> None:
-    """``\\dot X`` free beside an ``X`` of the statement: bad input naming it."""
+def time_derivatives(free: list[str], used: set[str], declared: dict,
+                     no_derivative: bool = False) -> None:
+    """``\\dot X`` free beside an ``X`` of the statement: bad input naming it; except, where
+    the statement takes no derivative (``no_derivative``, :func:`takes_no_derivative`), the
+    rate of an ``X`` declared a scalar or an angle: a value of its own at the instant, as
+    free as ``X`` (Greenwood's ``\\omega^2 = \\dot\\psi^2 + ... + 2\\dot\\psi\\dot\\phi\\cos
+    \\theta``; wave 11)."""
     for key in free:
         m = _DOT.match(key)
         if m and m.group(2) in used:
             x = m.group(2)
             if x in declared and declared[x].name.replace(" ", "").endswith("(t)"):
                 # X(t): \dot X is its derivative (rigidsym.latex.transformer.book_notations)
+                continue
+            if no_derivative and m.group(1) == "dot" and x in declared \
+                    and declared[x].kind.split(" in ")[0] in ("angle", "scalar"):
                 continue
             how = "declared" if x in declared else "free"
             raise BadInput(
@@ -95,6 +104,25 @@ def time_derivatives(free: list[str], used: set[str], declared: dict) -> None:
                 f"declare {x} a function of time (--let '{x}(t): KIND'), give {key} a model "
                 f"(--let '{key} = LATEX') or declare it as a symbol of its own "
                 f"(--let '{key}: KIND')")
+
+
+def takes_no_derivative(latex: str, lets: list) -> bool:
+    """No derivative anywhere in the statement: no ``--let`` of a function of time, no
+    ``\\frac{d}{dt}``, ``\\partial`` or ``\\ddot``, and no ``\\dot`` over a glyph that a
+    ``--let`` model names; then a rate is a value of its own at the instant."""
+    from rigidsym.latex.declgraph import glyph_keys
+
+    texts = [latex] + [x.latex for x in lets if x.latex]
+    if any(x.name.replace(" ", "").endswith("(t)") for x in lets) or any(
+            re.search(r"\\frac\s*\{\s*(?:d|\\partial)|\\partial|\\ddot", t) for t in texts):
+        return False
+    models = {x.key for x in lets if x.latex}
+    try:
+        keys = set().union(*(glyph_keys(t) for t in texts))
+    except LatexError:
+        return False
+    dotted = (re.fullmatch(r"\\dot\{(.*)\}((?:_\{[^{}]*\})*)", k) for k in keys)
+    return not any(m and m.group(1) + m.group(2) in models for m in dotted)
 
 
 _TRIG_ABBREV = re.compile(r"([cs])_\{(\d+|\\[A-Za-z]+)\}$")
@@ -196,3 +224,26 @@ def matrix_entries(free: list[str], glyphs: dict) -> None:
             f"the entry as \\mathbf{{e}}_{i}^T {m.group(1)}\\mathbf{{e}}_{j} with --let "
             f"'\\mathbf{{e}}_{i} = ...' (the unit vectors), or, if {key} is a symbol of its "
             f"own, --let '{key}: scalar'")
+
+
+_ZERO = re.compile(r"(\\?[A-Za-z]+)_\{0\}$")
+
+
+def zero_entries(free: list[str], glyphs: dict) -> None:
+    """A free ``\\theta_0`` beside a vector ``\\boldsymbol\\theta`` declared by a kind (of 2 or
+    more entries): Shabana's and Wittenburg's entries counted from 0 (``\\theta_1`` then is the
+    second), or a symbol of its own; the reader counts entries from 1, so either reading
+    could change the equation (a wrong verdict before, wave 11): bad input naming both."""
+    for key in free:
+        m = _ZERO.match(key)
+        letter = m.group(1) if m else ""
+        bold = f"\\boldsymbol{{{letter}}}" if letter.startswith("\\") else f"\\mathbf{{{letter}}}"
+        for vkey in (bold, letter) if m else ():
+            g = glyphs.get(vkey)
+            if g is not None and g.kind == "let" and len(g.shape) == 2 and g.shape[1] == 1 \
+                    and g.shape[0] > 1:  # a vector of a kind (a model's x_0 is H&Z's)
+                raise BadInput(
+                    f"--latex: {key} beside the declared {g.shape[0]}-vector {vkey}: its "
+                    f"entries counted from 0, or a symbol of its own; the reader counts "
+                    f"entries from 1, so say which: --let '{key}: scalar' (a symbol of its "
+                    f"own, and each of its namesakes) or {vkey}_{{1:1}} for the first entry")

@@ -6,6 +6,18 @@ one (``--let 'e = |\\mathbf{e}|'``, Hughes' and Markley's norm of the Euler-axis
 ``--let 'e: scalar'``) means ``e^2`` as its square: with such a declaration every ``e^`` of
 the LaTeX and of the models is respelt ``{e}^`` (a braced group, the same glyph), before
 either semantics parses it, and the reading says so.
+
+A tilde over a vector expression, Wittenburg's ``\\widetilde{\\mathbf{a}\\times\\mathbf{b}}``
+(the cross-product matrix of ``a \\times b``; a glyph's tilde is a choice of the reader,
+:mod:`rigidsym.latex.transformer.tilde`), is respelt ``[\\mathbf{a}\\times\\mathbf{b}]_\\times``:
+over a sum or a cross product no other meaning is written (before: a syntax error ending in
+"expected one of: }").
+
+A name with a lower-case superscript label, Groves' frames ``C_b^n``, ``\\Omega_{ib}^b``,
+``\\boldsymbol\\omega_{ib}^b``, is a power to the grammar (``x_1^n``); where a ``--let``
+declares that NAME it is the name: each occurrence (any bracing, ``\\dot{C}_b^n`` too) is
+respelt with the label parenthesised, ``C_{b}^{(n)}``, the grammar's label (before: "the
+name 'C_b^n' cannot be read").
 """
 
 from __future__ import annotations
@@ -14,7 +26,7 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["declared_e"]
+__all__ = ["declared_e", "declared_labels", "tilde_expressions"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -44,3 +56,106 @@ def declared_e(latex: str, let: object) -> tuple[str, object, str]:
     note = ("e^: a power of the declared symbol e (a --let names e), not the exponential; "
             "write \\exp for it") if changed else ""
     return new, out, note
+
+
+_TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
+
+
+def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\tilde{X}`` (``\\widetilde``) whose braces hold a cross
+    product, a sum or a difference respelt ``[X]_\\times`` in the LaTeX and the declarations
+    (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    hits: list[str] = []
+
+    def respell(text: str) -> str:
+        out, k = [], 0
+        for m in _TILDE.finditer(text):
+            if m.start() < k:
+                continue
+            depth, j = 1, m.end()
+            while j < len(text) and depth:
+                depth += {"{": 1, "}": -1}.get(text[j], 0)
+                j += 1
+            inner = text[m.end():j - 1]
+            if depth or not re.search(r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner)):
+                continue
+            out += [text[k:m.start()], f"[{inner}]_\\times"]
+            hits.append(inner)
+            k = j
+        return "".join(out) + text[k:]
+
+    new = respell(latex)
+    if isinstance(let, dict):
+        out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
+    else:
+        decls = _decls(let)
+        out = let if decls is None else [respell(d) for d in decls]
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
+                      f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+_LABELLED = re.compile(
+    r"(?P<acc>\\d?dot\s*\{\s*)?"
+    r"(?P<base>\\(?:mathbf|boldsymbol|bm)\s*(?:\{\s*\\?[A-Za-z]+\s*\}|\\[A-Za-z]+|[A-Za-z])"
+    r"|\\[A-Za-z]+|(?:(?<![\\A-Za-z])|(?<=\^[a-z]))[A-Za-z])"
+    r"(?(acc)\s*\})"
+    r"(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))?"
+    r"\s*\^\s*(?P<lbl>\{\s*[a-z]+\s*\}|[a-z])")
+
+
+def _parts(m) -> tuple[str, str, str]:
+    base = re.sub(r"\s+", "", m["base"])
+    base = re.sub(r"^(\\(?:mathbf|boldsymbol|bm))(\\?[A-Za-z]+)$", r"\1{\2}", base)
+    sub = re.sub(r"[\s{}_]", "", m["sub"] or "")
+    return base, sub, re.sub(r"[\s{}]", "", m["lbl"])
+
+
+def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each glyph with a lower-case superscript label whose NAME a
+    ``--let`` declares (``C_b^n``) respelt ``C_{b}^{(n)}`` in the LaTeX and the declarations
+    (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    if let is None:
+        return latex, let, ""
+    decls = _decls(let)
+    if decls is None:
+        return latex, let, ""
+    names = set()
+    for d in decls:
+        m = _LABELLED.fullmatch(re.split(r"\s*(?:\(t\))?\s*[:=]", d, maxsplit=1)[0].strip())
+        if m and not m["acc"]:
+            names.add(_parts(m))
+    if not names:
+        return latex, let, ""
+
+    def respell(text: str) -> str:
+        def one(m):
+            base, sub, lbl = _parts(m)
+            if (base, sub, lbl) not in names:
+                return m.group(0)
+            glyph = f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}"
+            return f"{m['acc'].strip()}{glyph}}}" if m["acc"] else glyph
+        return _LABELLED.sub(one, text)
+
+    out = [respell(d) for d in decls]
+    shown = ", ".join(sorted(f"{b}_{s}^{lbl}" for b, s, lbl in names))
+    return respell(latex), out, (f"{shown}: a superscript frame label (a --let names it), "
+                                 f"read as a label, not a power")
+
+
+def _decls(let: object) -> list[str] | None:
+    """The declarations of ``let`` one by one, or ``None`` for a dict or a value that
+    :func:`rigidsym.latex.lets.read_lets` refuses (it says why, later)."""
+    if let is None or isinstance(let, dict):
+        return None if isinstance(let, dict) else []
+    try:
+        return split_lets([let] if isinstance(let, str) else let)
+    except (TypeError, ValueError):
+        return None

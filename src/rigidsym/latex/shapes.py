@@ -170,8 +170,8 @@ def size_identity(a, b, product: int):
     """A reader's unsized identity (``I``, ``\\mathbf{1}``) sized by its neighbour: in a
     sum as the other term, in a product as the other factor's inner dimension."""
     sa, sb = matrix_shape(a), matrix_shape(b)
-    if sa is None or sb is None or sa == sb:
-        return a, b
+    if sa is None or sb is None or sa == sb or product and (1, 1) in (sa, sb):
+        return a, b  # a 1x1 factor is a scalar (a^T b I, Wittenburg): it sizes nothing
     if type(a) is sp.Identity and (product or sb[0] == sb[1]):  # not an I_3 (transformer.meanings)
         a = sp.Identity(sb[0])
     elif type(b) is sp.Identity and (product or sa[0] == sa[1]):

@@ -22,6 +22,7 @@ import sympy as sp
 from rigidsym.core.errors import BadInput
 from rigidsym.latex import guards
 from rigidsym.latex.declgraph import glyph_keys
+from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
@@ -253,8 +254,9 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     values.update(rd.models)
     models.update({sym.name: v for sym, v in rd.models.items()})
     occurs |= set(parsed.glyphs) | rd.in_models
-    for x in lets:
-        if x.key not in occurs:
+    for x in lets:  # an angle of which only \dot X occurs is used (Greenwood's psi)
+        if x.key not in occurs and not (x.kind.split(" in ")[0] in ("angle", "scalar")
+                                        and dot_key(x.key) in occurs):
             raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
@@ -266,7 +268,9 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     glyphs = {**rd.glyphs, **rd.over}
     models.update({name: v for name, (_, v) in lend.items() if v is not None})
     guards.applications(parsed.applied, models, glyphs)
-    guards.time_derivatives(free, rd.used, rd.declared)
+    guards.zero_entries(free, glyphs)  # before: theta_0 makes its rate free too
+    guards.time_derivatives(free, rd.used, rd.declared,
+                            guards.takes_no_derivative(latex, lets))
     guards.book_meanings(free)
     guards.notation_bases(free, glyphs, table)
     guards.matrix_entries(free, glyphs)

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import motion, names, rates
+from rigidsym.numeval import accents, motion, names, rates, tilde
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -367,6 +367,8 @@ class Evaluator:
                     return v
                 return self._derivative(lark.Tree("accented", [lark.Token("ACCENT", "\\dot"),
                                                                inner]), _TIME_TREE, t)
+        if (v := accents.undeclared_accent(self, t, key)) is not None:  # ~a, a rate (issue 63)
+            return v
         raise NotCovered(f"the undeclared glyph {text_of(t)} (an accent's meaning is the "
                          f"reader's)")
 
@@ -652,10 +654,8 @@ def _dims(sub) -> tuple[int, int] | None:
         return None
     toks = [str(c) for c in sub.children if isinstance(c, lark.Token)]
     times = [c for c in sub.children if isinstance(c, lark.Tree) and c.data == "times"]
-    if len(toks) == 1 and toks[0].isdigit() and not times:
-        return (int(toks[0]), int(toks[0]))
-    if len(toks) == 2 and all(x.isdigit() for x in toks) and len(times) == 1:
-        return (int(toks[0]), int(toks[1]))
+    if all(x.isdigit() for x in toks) and (len(toks), len(times)) in ((1, 0), (2, 1)):
+        return (int(toks[0]), int(toks[-1]))
     return None
 
 
@@ -750,7 +750,7 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
             continue  # a declaration this reading never uses: the reader refuses it
         kept.append(rs)
     if not kept:
-        raise first_error or errors[0]
+        raise tilde.reported(first_error, errors)  # a tilde's own first: it names the --let
     for n, rs in enumerate(kept):
         for r in rs:
             r.reading = n

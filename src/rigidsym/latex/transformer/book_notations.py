@@ -291,6 +291,15 @@ class BookNotationRules:
             sp.MatrixSymbol(f"{g.name}dot", *g.shape)
         self.glyphs[dkey] = Glyph(dkey, "*", d.name, g.shape, "free",
                                   f"the time derivative of {key}", "")
+        if g.meaning.startswith("unit") and g.shape and g.shape[1] == 1:
+            # a unit vector's rate is tangent, (1 - X X^T) v with v free (wave 11: a free
+            # rate made X^T \dot X = 0 does-not-hold, which only the second semantics caught)
+            self._note(f"{dkey} = (1 - {g.name} {g.name}^T) {d.name}: tangent to the unit "
+                       f"sphere ({d.name} free)")
+            return (sp.Identity(g.shape[0]) - value * value.T) * d
+        if g.meaning.startswith("symmetric"):  # a symmetric matrix's rate is symmetric
+            self._note(f"{dkey} = ({d.name} + {d.name}^T)/2: symmetric ({d.name} free)")
+            return (d + d.T) / 2
         return d
 
     def models_of(self, names: set[str]) -> dict:

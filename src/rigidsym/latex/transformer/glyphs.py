@@ -17,6 +17,7 @@ from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
 from rigidsym.latex.table import lookup
 from rigidsym.latex.transformer.book_notations import index_key
 from rigidsym.latex.transformer.meanings import alternatives
+from rigidsym.latex.transformer.tilde import tilde_of
 
 __all__: list[str] = []
 
@@ -127,6 +128,10 @@ class GlyphRules:
             rate = self.model_rate(inner.key)
             if rate is not None:
                 return rate
+        if accent == "\\tilde" and not items[2:]:  # a vector's tilde: its [x]_x or its own
+            skew = tilde_of(self, f"\\tilde{{{inner.key}}}", inner)
+            if skew is not None:
+                return skew
         self._unuse(inner.key)  # only the accented glyph is a symbol here
         return self._resolve(base, rest, (inner.accent or "") + accent if inner.accent
                              else accent, inner)

@@ -32,10 +32,12 @@ __all__: list[str] = []
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
-                "index": ("name", "entry")}
+                "index": ("name", "entry"), "tilde": ("skew", "own")}
 
 
 def _kind(key: str) -> str:
+    if key == "\\tilde":  # every tilde of a 3-vector (rigidsym.latex.transformer.tilde)
+        return "tilde"
     return "bracket" if key.startswith("[") else "index" if " of " in key else "apply"
 
 
@@ -49,6 +51,9 @@ def said(key: str, choice: str) -> str:
     its entry``."""
     if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "tilde":
+        return ("each \\tilde{x} of a 3-vector " + ("a vector of its own" if choice == "own"
+                                                    else "its cross-product matrix [x]_\\times"))
     if _kind(key) == "index":
         name, vec = key.split(" of ", 1)
         k = name.rsplit("_{", 1)[-1].rstrip("}")
@@ -165,7 +170,11 @@ class MeaningRules:
         fv, x = self._val(f), as_scalar(self._val(arg))
         if self.reader and matrix_shape(fv) is not None and matrix_shape(x) is not None \
                 and getattr(self.overrides.get(f.key), "kind", None) == "model":
-            return self._choose(f, fv, x, arg, sup)
+            if isinstance(x, sp.MatrixSymbol) or not self._of_scalars(f):
+                return self._choose(f, fv, x, arg, sup)  # R(\mathbf{q}): a label, maybe
+            self._note(f"{f.key}(...): the product, {f.key}'s model holding no vector or "
+                       f"matrix to apply the expression to")  # H&Z's K'(R X + t), wave 11
+            return self.mul([f, self.power([arg, sup]) if sup is not None else arg])
         if self.reader and matrix_shape(x) is None and x is not _TIME \
                 and self._modelless_vector(f, fv):
             from rigidsym.printing import notation
@@ -250,6 +259,14 @@ class MeaningRules:
         g = self.overrides.get(getattr(f, "key", None)) or self.glyphs.get(getattr(f, "key", None))
         return shape is not None and shape[1] == 1 and shape[0] > 1 and g is not None \
             and g.kind in ("let", "free") and g.name not in self.model_rhs
+
+    def _of_scalars(self, f) -> bool:
+        r"""``f``'s ``--let`` model is a matrix of scalars only (H&Z's calibration ``K'``):
+        applied to a vector expression (no symbol, which could be a label: ``R(\mathbf{q})``
+        written in ``q_0 ... q_3``) it would drop it, so no application is read."""
+        rhs = self.model_rhs.get(getattr(self.overrides.get(f.key), "name", None))
+        return isinstance(rhs, sp.MatrixBase) and not any(
+            isinstance(s, sp.MatrixSymbol) for s in rhs.free_symbols)
 
     def _choose(self, f, fv, x, arg, sup):
         """``X(\\mathbf{y})``, ``X`` a model without parameters, ``\\mathbf{y}`` no scalar:

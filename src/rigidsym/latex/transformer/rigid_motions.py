@@ -31,6 +31,7 @@ from rigidsym.algebra import rigid_motions
 from rigidsym.latex.kinematics import expand_models
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
 from rigidsym.latex.transformer.meanings import alternatives, as_written
+from rigidsym.latex.transformer.tilde import own_tilde
 
 __all__: list[str] = []
 
@@ -144,6 +145,7 @@ class RigidMotionRules:
         from rigidsym.printing import notation
 
         v = self._val(x)
+        own_tilde(self, x)  # [\tilde{x}]: Schaub & Junkins' matrix, no hat of a vector
         if matrix_shape(v) not in ((3, 1), (6, 1)):
             return v
         how = self.made.get(v)
