@@ -134,6 +134,8 @@ def main(argv: list[str] | None = None) -> int:
         if not (isinstance(exc, KeyboardInterrupt) or interrupts.received()):
             raise  # a failure of its own, not the interrupt in another form
         interrupts.quiet()  # a second Ctrl-C, or one already pending: no second exit
+        if argv is None:  # the program: its workers only (a caller's children are its own)
+            interrupts.end_workers()
         print(f"rigidsym: {interrupts.line()}", file=sys.stderr, flush=True)
         _work.dump()
         return interrupts.EXIT

@@ -4,7 +4,8 @@ line and exit status 130, keeping the work it finished.
 - :func:`install` makes SIGINT and SIGTERM raise ``KeyboardInterrupt`` in the main thread
   and records that one came (:func:`received`), so that ``rigidsym.cli.main`` handles both
   and also an exception the interrupt caused in another form (a cut-short import).
-- :func:`quiet`: once the line is said (or the command is done), both are ignored.
+- :func:`quiet`: once the line is said (or the command is done), both are ignored;
+  :func:`end_workers`: an interrupted command leaves no worker process behind.
 - :func:`for_worker` is the initializer of a worker process: it ignores SIGINT (a terminal
   sends Ctrl-C to the whole process group; the parent decides) and dies on SIGTERM (how
   the parent's pool stops it), so that no worker prints a traceback.
@@ -23,6 +24,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 __all__ = ["EXIT", "install", "for_worker", "deferred", "quiet", "received",
+           "end_workers",
            "note_kept", "line", "reset"]
 
 #: the exit status of an interrupted command (128 + SIGINT, as a shell reports it)
@@ -72,6 +74,22 @@ def quiet() -> None:
             return
         except KeyboardInterrupt:
             continue
+
+
+def end_workers() -> None:
+    """Kill and reap every worker process this process started (a pool that the interrupt
+    cut short in its construction has no owner left to stop it, and its workers would keep
+    the command's output pipes open after it exits). SIGKILL: a worker forked before its
+    initializer ran may still ignore SIGTERM."""
+    import sys
+
+    mp = sys.modules.get("multiprocessing")
+    if mp is None:  # no worker was ever started
+        return
+    for child in mp.active_children():
+        child.kill()
+    for child in mp.active_children():
+        child.join(timeout=5)
 
 
 def for_worker() -> None:
