@@ -155,9 +155,30 @@ _TODO: list = []
 _PLAN32: list = [True]
 
 
-def _compile_index(i: int):
-    kc = compile_kernel(_TODO[i], _PLAN32[0])
-    return kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32
+def _compile_group(group: tuple[int, ...]) -> list:
+    out = []
+    for i in group:
+        kc = compile_kernel(_TODO[i], _PLAN32[0])
+        out.append((i, (kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32)))
+    return out
+
+
+def _groups(todo: list[Kernel]) -> list[tuple[int, ...]]:
+    """The indices of ``todo`` in the pool's jobs: a kernel with its ``_with_jacobians``
+    twin in one job, the kernel first (so that the twin reads the float32 plan's regime
+    points the kernel drew, as one process does:
+    :func:`rigidsym.codegen.accuracy.points.regime_inputs`), the jobs with a twin first,
+    the kernels of more input and output scalars first among them (the long jobs first:
+    the two workers finish together)."""
+    at: dict[str, list[int]] = {}
+    for i, k in enumerate(todo):
+        at.setdefault(k.name.removesuffix("_with_jacobians"), []).append(i)
+    groups = [tuple(sorted(ix, key=lambda i: todo[i].name)) for ix in at.values()]
+
+    def size(g) -> tuple:
+        k = todo[g[-1]]
+        return (-len(g), -sum(a.size for a in k.args) * sum(o.size for o in k.outputs), g)
+    return sorted(groups, key=size)
 
 
 def _compile_all(todo: list, plan32: bool = True) -> list[KernelCode]:
@@ -169,15 +190,17 @@ def _compile_all(todo: list, plan32: bool = True) -> list[KernelCode]:
 
     _TODO[:] = todo
     _PLAN32[0] = plan32
+    parts: dict = {}
     try:
         from rigidsym.core.interrupts import for_worker
 
         with mp.get_context("fork").Pool(jobs, initializer=for_worker) as pool:
-            parts = pool.map(_compile_index, range(len(todo)), chunksize=1)
+            for got in pool.imap_unordered(_compile_group, _groups(todo), chunksize=1):
+                parts.update(got)
     finally:
         _TODO.clear()
         _PLAN32[0] = True
-    return [KernelCode(k, *p) for k, p in zip(todo, parts, strict=True)]
+    return [KernelCode(k, *parts[i]) for i, k in enumerate(todo)]
 
 
 def compile_many(kernels: list[Kernel], plan32: bool = True) -> list[KernelCode]:

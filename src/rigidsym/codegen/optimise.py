@@ -26,6 +26,7 @@ from typing import Any
 
 import sympy as sp
 from sympy.codegen.rewriting import ReplaceOptim, optimize
+from sympy.printing.repr import ReprPrinter
 
 __all__ = ["COS_FORMS", "half_angle_optims", "Program", "compile_program", "math_hash",
            "divides_or_roots", "trig_split"]
@@ -123,11 +124,32 @@ def compile_program(outputs: list[sp.Expr], angles: list[sp.Symbol],
     return Program(temps=list(temps), outputs=list(red[:n]), dens=list(red[n:]), ops=ops)
 
 
+class _SharedRepr(ReprPrinter):
+    """``sympy.srepr``'s printer, each sub-expression (the same object) printed once: a
+    differentiated output shares its sub-expressions, which ``srepr`` prints (and sorts)
+    again at every use."""
+
+    def __init__(self):
+        super().__init__()
+        self._done: dict = {}    # id -> (the expression, its repr)
+
+    def _print(self, expr, **kwargs) -> str:
+        if kwargs or not isinstance(expr, sp.Basic):
+            return super()._print(expr, **kwargs)
+        hit = self._done.get(id(expr))
+        if hit is not None and hit[0] is expr:
+            return hit[1]
+        got = super()._print(expr)
+        self._done[id(expr)] = (expr, got)
+        return got
+
+
 def math_hash(parts) -> str:
     """SHA-256 (first 16 hex digits) of the ``srepr`` of the derived mathematics."""
     h = hashlib.sha256()
+    printer = _SharedRepr()
     for p in parts:
-        h.update(sp.srepr(p).encode())
+        h.update(printer.doprint(p).encode())
         h.update(b"\0")
     return h.hexdigest()[:16]
 

@@ -23,6 +23,8 @@ generated NumPy modules carry as ``_diffprod`` (:data:`NUMPY_SOURCE`).
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import numpy as np
 import sympy as sp
 
@@ -137,15 +139,24 @@ def expand_numerators(flat, ctx, compensate: bool = True):
                 e.has(*ctx["angles"]):
             out.append(e)
             continue
-        n, d = sp.fraction(sp.together(e))
-        ne = sp.expand(n)
-        if sp.count_ops(ne) >= sp.count_ops(n) + 4 or ne == n:
+        n, d, ne, longer = _expanded(e)
+        if longer or ne == n:
             out.append(e)
             continue
         ne = (_compensated(ne) if compensate else None) or ne
         out.append(ne / d)
         parts.append((n, ne))
     return (out, parts) if parts else None
+
+
+@lru_cache(maxsize=4096)
+def _expanded(e) -> tuple:
+    """``(n, d, expanded n, whether it is 4 or more operations longer)`` of ``e = n / d``:
+    the plain and the compensated proposal (and a kernel's Jacobian twin, of the same
+    values) expand the same outputs."""
+    n, d = sp.fraction(sp.together(e))
+    ne = sp.expand(n)
+    return n, d, ne, sp.count_ops(ne) >= sp.count_ops(n) + 4
 
 
 def _pairs(add):

@@ -45,7 +45,21 @@ def exact_points(kernel, seeds=(30,), n_random: int = 6, small=GENERATOR_STEPS) 
     mpmath numbers (40 digits). The unconstrained arguments are taken as float64 holds them
     (the reference then judges the formula, not the rounding of the input, which every form
     suffers alike); constrained ones stay exact (on their manifold, where the rewrites are
-    equal to the declaration)."""
+    equal to the declaration). The last kernel's are kept: its every build (branch, main) and
+    choice (the accuracy rewrites, the cos form) measures on them."""
+    if _EXACT[0] is not kernel:
+        _EXACT[:] = [kernel, {}]
+    key = (tuple(seeds), n_random, None if small is None else tuple(small))
+    if key not in _EXACT[1]:
+        _EXACT[1][key] = _exact_points(kernel, seeds, n_random, small)
+    return list(_EXACT[1][key])
+
+
+#: ``[kernel, {(seeds, n_random, small): points}]``: :func:`exact_points` of one kernel
+_EXACT: list = [None, {}]
+
+
+def _exact_points(kernel, seeds, n_random: int, small) -> list:
     with mpmath.workdps(40):
         return [[[mpmath.mpf(float(x)) if arg.kind == "any" else
                   mpmath.mpf(int(x.p)) / int(x.q) for x in a]

@@ -269,8 +269,9 @@ def improve(kernel, variant: str, flat, syms_by_arg, syms_flat, conds, cond=None
     chosen = []
     wide = None
     sub = _constrained(kernel, syms_by_arg)
-    for rule, _ in proposals:
-        got = rule.propose(flat, ctx)     # again: on the outputs kept so far
+    for rule, first in proposals:
+        # again on the outputs kept so far: the first proposal while none is kept
+        got = first if flat is declared else rule.propose(flat, ctx)
         if got is None:
             continue
         for cand, parts, cols, j in _candidates(kernel, rule, flat, got):
