@@ -219,6 +219,9 @@ def _readings_agree(reading, first, others) -> None:
 
 
 def _choice_words(key: str) -> str:
+    if key.endswith(" hat"):
+        return (f"{key[:-4]} can be read as a unit vector of its own (Lynch-Park, Corke) or "
+                f"as the skew matrix of {key[5:-5]} (Murray-Li-Sastry)")
     if key.startswith("["):
         return f"{key} can be read as the hat of the vector or as a bracket that groups it"
     if " of " in key:
@@ -228,6 +231,10 @@ def _choice_words(key: str) -> str:
 
 
 def _settles(key: str) -> str:
+    if key.endswith(" hat"):
+        return (f"--let '{key[:-4]}: unit vector' (a vector of its own) or --notation "
+                f"murray-li-sastry (or --let '{key[:-4]} = [{key[5:-5]}]_\\times': the skew "
+                f"matrix)")
     if key.startswith("["):
         return f"{key[:-1]}]_\\times for the hat or ({key[1:-1]}) to group"
     if " of " in key:

@@ -11,6 +11,7 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.hats import hat_reading
 from rigidsym.latex.kinematics import rate_target
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
 from rigidsym.latex.reader import parse_latex
@@ -99,18 +100,29 @@ class GlyphReader:
                 sym, _ = self.lend[name]
                 shape = tuple(sym.shape) if isinstance(sym, sp.MatrixSymbol) else ()
                 new[key] = Glyph(key, "*", name, shape, "module", "lent by --module")
+                continue
+            x = hat_reading(key, self.choices, self.choice_points) \
+                if g.kind == "free" and key not in self.declared else None
+            if x is not None:  # an undeclared hat: a unit vector or a skew matrix (a choice)
+                self.notes.append(x[1])
+                new[key] = self._let_glyph(x[0], f"the reading '{x[0].text}'", "a reading")
         return new
 
     def _notation_glyph(self, x: Let) -> Glyph:
-        self.declared[x.key] = x
         self.by_notation.add(x.key)
+        return self._let_glyph(x, f"--notation {self.notation.name}: '{x.text}'")
+
+    def _let_glyph(self, x: Let, what: str, meaning: str = "--notation") -> Glyph:
+        """The glyph of a declaration the reader takes as a ``--let`` (a line of
+        ``--notation``, a reading of an undeclared hat): its kind, or its model parsed."""
+        self.declared[x.key] = x
         if x.kind:
             shape, _, words = kind_of(x.kind, x.text)
             return Glyph(x.key, "*", self._name(x.key), shape, "let", words)
-        p = self.parse(f"{x.name} = {x.latex}", f"--notation {self.notation.name}: '{x.text}'")
+        p = self.parse(f"{x.name} = {x.latex}", what)
         rhs = p.chains[0][1]
         self.in_models |= set(p.glyphs) - {x.key}
-        g = Glyph(x.key, "*", self._name(x.key), matrix_shape(rhs) or (), "model", "--notation")
+        g = Glyph(x.key, "*", self._name(x.key), matrix_shape(rhs) or (), "model", meaning)
         self.models[glyph_symbol(g)] = rhs
         self.model_rhs[g.name] = rhs
         return g

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import motion, names, rates
+from rigidsym.numeval import hats, motion, names, rates
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -367,6 +367,9 @@ class Evaluator:
                     return v
                 return self._derivative(lark.Tree("accented", [lark.Token("ACCENT", "\\dot"),
                                                                inner]), _TIME_TREE, t)
+        hat = hats.undeclared_hat(self, t, key, text_of(t))  # issue 63: two readings
+        if hat is not None:
+            return hat
         raise NotCovered(f"the undeclared glyph {text_of(t)} (an accent's meaning is the "
                          f"reader's)")
 
@@ -737,18 +740,22 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
         return out
     # choice points: every reading whose evaluation succeeds (sides of one shape) is kept,
     # each with its own reading number; the rule asks all of them to agree
-    keys = sorted(met)[:3]
-    kept, errors = [], []
-    for combo in itertools.product(*(met[k] for k in keys)):
-        try:
-            rs, _ = _at_points(chains, table, points, seed, free,
-                               dict(zip(keys, combo, strict=True)), spread, fixed)
-        except NotCovered as exc:
-            errors.append(exc)
-            continue
-        if rs and any(getattr(r, "unused", False) for r in rs):
-            continue  # a declaration this reading never uses: the reader refuses it
-        kept.append(rs)
+    # a point met only under another reading (a second hat past the first one's) joins
+    keys, kept, errors = [], [], []
+    while set(keys) != set(sorted(met)[:3]):
+        keys, kept, errors, seen = sorted(met)[:3], [], [], dict(met)
+        for combo in itertools.product(*(seen[k] for k in keys)):
+            try:
+                rs, m = _at_points(chains, table, points, seed, free,
+                                   dict(zip(keys, combo, strict=True)), spread, fixed)
+            except NotCovered as exc:
+                errors.append(exc)
+                met.update(getattr(exc, "met", {}))
+                continue
+            met.update(m)
+            if rs and any(getattr(r, "unused", False) for r in rs):
+                continue  # a declaration this reading never uses: the reader refuses it
+            kept.append(rs)
     if not kept:
         raise first_error or errors[0]
     for n, rs in enumerate(kept):

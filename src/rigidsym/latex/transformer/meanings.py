@@ -23,6 +23,7 @@ import re
 import sympy as sp
 
 from rigidsym.algebra.operators import Cpm
+from rigidsym.latex.hats import HAT_READINGS
 from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, as_scalar, matrix_shape
 from rigidsym.latex.table import lookup
 
@@ -32,10 +33,12 @@ __all__: list[str] = []
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
-                "index": ("name", "entry")}
+                "index": ("name", "entry"), "hat": HAT_READINGS}
 
 
 def _kind(key: str) -> str:
+    if key.endswith(" hat"):  # an undeclared \hat{X} (rigidsym.latex.hats)
+        return "hat"
     return "bracket" if key.startswith("[") else "index" if " of " in key else "apply"
 
 
@@ -49,6 +52,10 @@ def said(key: str, choice: str) -> str:
     its entry``."""
     if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "hat":
+        hat = key[:-4]
+        return (f"{hat} the skew matrix of {hat[5:-1]}" if choice == "skew" else
+                f"{hat} a unit vector of its own")
     if _kind(key) == "index":
         name, vec = key.split(" of ", 1)
         k = name.rsplit("_{", 1)[-1].rstrip("}")
