@@ -17,7 +17,7 @@ from __future__ import annotations
 import re
 
 
-__all__ = ["hat_reading", "HAT_READINGS", "hat_point"]
+__all__ = ["hat_reading", "HAT_READINGS", "hat_point", "no_hat_reading"]
 
 #: the readings of an undeclared hat, the default first
 HAT_READINGS = ("unit", "skew")
@@ -61,3 +61,32 @@ def hat_reading(key: str, choices: dict, points: dict) -> tuple[object, str] | N
     (x,) = read_lets([f"{key}: unit vector"])
     return x, (f"{key}: read as a unit vector of its own (Lynch-Park's hat; a choice: or the "
                f"skew matrix [{inner}]_×)")
+
+
+def no_hat_reading(points, dropped: list) -> str | None:
+    r"""The refusal where no reading of a statement type-checks and one of its choice points
+    is an undeclared hat (``\hat\omega^3`` of a free scalar ``\omega``: no skew matrix of a
+    scalar, no cube of a vector): the hat's two meanings, why each reading failed, and the
+    declarations that settle it; ``None`` where no hat is among ``points``.
+
+    Args:
+        points: the choice points' keys.
+        dropped: ``(choices, why)`` of each reading that did not type-check.
+    """
+    hats = sorted(k for k in points if k.endswith(" hat"))
+    if not hats:
+        return None
+    hat = hats[0][:-4]
+    inner = hat[5:-1]
+    whys = "; ".join(dict.fromkeys(_short(why) for _, why in dropped))
+    return (f"--latex: {hat} is a unit vector in Lynch-Park and Corke, the skew matrix of "
+            f"{inner} in Murray-Li-Sastry, and neither reading fits here ({whys}): say which, "
+            f"with --let '{hat}: unit vector' (or another KIND), --notation lynch-park or "
+            f"--notation murray-li-sastry, and what {inner} is (--let '{inner}: vector')")
+
+
+def _short(why: str) -> str:
+    """A dropped reading's reason without the statement it quotes nor its hints."""
+    why = why.split("; its meaning depends")[0].split("; say it another way")[0]
+    return why.split("': ", 1)[1] if why.startswith(("cannot read '", "the reading '")) \
+        and "': " in why else why
