@@ -219,6 +219,11 @@ def _readings_agree(reading, first, others) -> None:
 
 
 def _choice_words(key: str) -> str:
+    from rigidsym.latex.entries import is_base_point
+
+    if is_base_point(key):
+        name, vec = key.split(" of ", 1)
+        return f"{name} can be an entry of the 4-vector {vec.split(' counted')[0]} counted from 1 or from 0"
     if key.endswith(" hat"):
         return (f"{key[:-4]} can be read as a unit vector of its own (Lynch-Park, Corke) or "
                 f"as the skew matrix of {key[5:-5]} (Murray-Li-Sastry)")
@@ -231,6 +236,10 @@ def _choice_words(key: str) -> str:
 
 
 def _settles(key: str) -> str:
+    from rigidsym.latex.entries import base_settles, is_base_point
+
+    if is_base_point(key):
+        return base_settles(key)
     if key.endswith(" hat"):
         return (f"--let '{key[:-4]}: unit vector' (a vector of its own) or --notation "
                 f"murray-li-sastry (or --let '{key[:-4]} = [{key[5:-5]}]_\\times': the skew "

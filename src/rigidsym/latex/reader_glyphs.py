@@ -11,6 +11,7 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.entries import DECLARED_PARAM
 from rigidsym.latex.hats import hat_reading
 from rigidsym.latex.kinematics import rate_target
 from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
@@ -183,8 +184,11 @@ class GlyphReader:
                 raise LatexError(f"{call}: the parameter {pk} of {x.key} is declared "
                                  f"'{d.text}', the argument {notation.text(a)} is "
                                  f"{_shape_words(shape)}", "shapes")
+            own = self.over.get(pk)  # a --let's vector of that name: its entries here too
             g = Glyph(pk, "*", f"{self._name(x.key)}⟨{self._name(pk)}⟩", shape, "param",
-                      f"parameter of {x.key}")
+                      f"parameter of {x.key}" + (DECLARED_PARAM if own is not None and
+                                                 own.kind in ("let", "model")
+                                                 and tuple(own.shape) == shape else ""))
             over[pk] = g
             subs[glyph_symbol(g)] = a
         self._no_shadowed_model(x, args, call)

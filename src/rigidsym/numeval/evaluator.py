@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import hats, motion, names, rates
+from rigidsym.numeval import entries, hats, motion, names, rates
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -414,18 +414,10 @@ class Evaluator:
             return None
         tok = sub.children[0]
         if not (isinstance(tok, lark.Token) and tok.type == "SUBRANGE"):
-            if isinstance(tok, lark.Token) and tok.type == "SUBATOM":
-                letter = _base_letter(t)[0]
-                for d in self.env.decls.values():  # q_4 beside a declared q or \mathbf{q}
-                    if isinstance(d.name, lark.Tree) and _base_letter(d.name)[0] == letter \
-                            and _base_letter(d.name)[2] and str(tok).isdigit():
-                        if self._choose(f"entries of {letter}", ("name", "entry")) == "name":
-                            return None
-                        v = self.value(d.name)
-                        k = int(str(tok))
-                        if not V.is_matrix(v) or v.cols != 1 or not 1 <= k <= v.rows:
-                            raise NotCovered(f"{text_of(t)}: entry {k} of {text_of(d.name)}")
-                        return v[k - 1]
+            if isinstance(tok, lark.Token) and tok.type == "SUBATOM" and str(tok).isdigit():
+                # q_4 beside a declared q or \mathbf{q} (issue 63, wave 11)
+                return entries.entry_of_declared(self, t, int(str(tok)), _base_letter(t)[0],
+                                                 self.env.decls, _base_letter, text_of)
             return None
         lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
         base = lark.Tree("glyph", [t.children[0]])

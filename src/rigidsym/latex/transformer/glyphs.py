@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import lark
 import sympy as sp
 
+from rigidsym.latex.entries import DECLARED_PARAM, entry_index
 from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
 from rigidsym.latex.table import lookup
@@ -187,6 +188,17 @@ class GlyphRules:
             vkey = self._key(vbase, [], None)
             g = self.overrides.get(vkey)
             shape = getattr(g, "shape", ())
+            if len(shape) == 2 and shape[1] == 1 and shape[0] > 1 and (
+                    g.kind != "param" or g.meaning.endswith(DECLARED_PARAM)):
+                try:  # a --let's vector: its entry, counted from 1 (from 0 too: a 4-vector)
+                    at, note = entry_index(key, vkey, k, shape[0], self.choices,
+                                           self.choice_points)
+                except ValueError as exc:
+                    raise LatexError(str(exc), "subscript") from None
+                if at is None:
+                    return None
+                self.readings.append(note)
+                return GlyphKey(key, base, rest, accent, self._symbol(vkey, vbase)[at, 0])
             if len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1:
                 point = f"{key} of {vkey}"
                 self.choice_points.setdefault(point, alternatives(point))

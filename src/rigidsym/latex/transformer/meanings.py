@@ -23,6 +23,7 @@ import re
 import sympy as sp
 
 from rigidsym.algebra.operators import Cpm
+from rigidsym.latex.entries import BASE_READINGS, base_words, is_base_point
 from rigidsym.latex.hats import HAT_READINGS
 from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, as_scalar, matrix_shape
 from rigidsym.latex.table import lookup
@@ -33,10 +34,12 @@ __all__: list[str] = []
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
-                "index": ("name", "entry"), "hat": HAT_READINGS}
+                "index": ("name", "entry"), "hat": HAT_READINGS, "base": BASE_READINGS}
 
 
 def _kind(key: str) -> str:
+    if is_base_point(key):  # a 4-vector's entries counted from 1 or 0 (latex.entries)
+        return "base"
     if key.endswith(" hat"):  # an undeclared \hat{X} (rigidsym.latex.hats)
         return "hat"
     return "bracket" if key.startswith("[") else "index" if " of " in key else "apply"
@@ -52,6 +55,8 @@ def said(key: str, choice: str) -> str:
     its entry``."""
     if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "base":
+        return base_words(key, choice)
     if _kind(key) == "hat":
         hat = key[:-4]
         return (f"{hat} the skew matrix of {hat[5:-1]}" if choice == "skew" else

@@ -1,0 +1,95 @@
+r"""A subscripted letter beside a declared vector of that letter (issue 63, wave 11): ``q_4``
+beside ``--let '\mathbf{q}: unit 4-vector'`` is entry 4 of ``\mathbf{q}``, as every attitude
+book writes a vector's entries (Markley & Crassidis' ``q_4``, Shuster's ``q_1 ... q_4``).
+
+- A vector declared by a ``--let`` (a kind or a model), n entries: ``q_k`` with 1 <= k <= n is
+  entry k, counted from 1 (said under ``read as:``; ``--let 'q_k: scalar'`` makes it a symbol
+  of its own); another ``q_k`` (Kuipers' ``q_0`` beside the vector part ``\mathbf{q}``) is a
+  symbol of its own, as before.
+- A declared 4-vector (a quaternion) is counted from 1 (``q_1 ... q_4``, scalar last) or from
+  0 (Diebel's, Kuipers' ``q_0 ... q_3``, scalar first): a choice point of the letter, both
+  readings read; a ``q_0`` makes counting from 1 fail and a ``q_4`` counting from 0, so the
+  reading is unique wherever the LaTeX writes either; where it writes neither and the two
+  verdicts differ, the statement is refused naming the entry that settles it
+  (``\mathbf{q}_{1:1}``).
+- A function's parameter that no ``--let`` declares globally (``R(\mathbf{q})`` with only its
+  body's ``q_i``): a symbol of its own or an entry (issue 52's choice point, unchanged),
+  since the statement's own ``q_i`` are then no entries of anything.
+
+Before wave 11 every such ``q_k`` was a choice between a symbol of its own and the entry;
+the two disagree on any identity of a unit quaternion, so 4 of the 40 equations of the
+outside trial were refused as typed.
+"""
+
+from __future__ import annotations
+
+__all__ = ["DECLARED_PARAM", "BASE_READINGS", "entry_index", "is_base_point", "base_point",
+           "base_words", "base_settles"]
+
+#: the end of a parameter glyph's meaning when a ``--let`` declares the global vector of
+#: that name too (its subscripts are entries in the body as outside it)
+DECLARED_PARAM = " (a --let declares it too)"
+
+#: the readings of a 4-vector's subscripts, the default first: counted from 1, from 0
+BASE_READINGS = ("entry", "entry0")
+
+_BASE = " counted from 1 or 0"
+
+
+def is_base_point(key: str) -> bool:
+    """The choice point ``key`` is the counting of a 4-vector's subscripts."""
+    return key.endswith(_BASE)
+
+
+def base_point(key: str, vkey: str) -> str:
+    r"""The choice point of ``key`` (``q_{1}``) as an entry of the 4-vector ``vkey``."""
+    return f"{key} of {vkey}{_BASE}"
+
+
+def entry_index(key: str, vkey: str, k: int, n: int, choices: dict,
+                points: dict) -> tuple[int | None, str]:
+    r"""Which entry of the declared n-vector ``vkey`` the glyph ``key`` (subscript ``k``)
+    is, counted from 0, and the note; ``(None, note)`` where it is a symbol of its own.
+
+    Args:
+        key, vkey: the glyph (``q_{4}``) and the vector's key (``\mathbf{q}``).
+        k: the subscript; n: the vector's entries.
+        choices: the reading of each choice point; points: the points met, updated.
+
+    Raises:
+        ValueError: a 4-vector's ``q_0`` counted from 1, or its ``q_4`` counted from 0 (the
+            reading does not fit; the caller makes it a ``LatexError`` and the reading is
+            dropped).
+    """
+    if n != 4:
+        if 1 <= k <= n:
+            return k - 1, (f"{key}: entry {k} of {vkey} (counted from 1; --let '{key}: "
+                           f"scalar' for a symbol of its own)")
+        return None, ""
+    if k > 4:
+        return None, ""
+    point = base_point(key, vkey)
+    points[point] = BASE_READINGS
+    if choices.get(point, BASE_READINGS[0]) == "entry0":
+        if not 0 <= k <= 3:
+            raise ValueError(f"{key} beside the 4-vector {vkey} counted from 0 (q_0 to q_3)")
+        return k, (f"{key}: entry {k + 1} of {vkey}, counted from 0 (a choice: or from 1)")
+    if not 1 <= k <= 4:
+        raise ValueError(f"{key} beside the 4-vector {vkey} counted from 1 (q_1 to q_4)")
+    return k - 1, f"{key}: entry {k} of {vkey}, counted from 1 (a choice: or from 0)"
+
+
+def base_words(key: str, choice: str) -> str:
+    """One reading of the point ``key`` in words."""
+    name, vec = key[:-len(_BASE)].split(" of ", 1)
+    k = int(name.rsplit("_{", 1)[-1].rstrip("}"))
+    return f"{name} entry {k + 1 if choice == 'entry0' else k} of {vec}" + (
+        " (counted from 0)" if choice == "entry0" else " (counted from 1)")
+
+
+def base_settles(key: str) -> str:
+    """The two ways to write what ``key`` means, for a refusal."""
+    name, vec = key[:-len(_BASE)].split(" of ", 1)
+    k = int(name.rsplit("_{", 1)[-1].rstrip("}"))
+    return (f"{name} is {vec}_{{{k}:{k}}} counted from 1 or {vec}_{{{k + 1}:{k + 1}}} counted "
+            f"from 0: write the one meant (or --let '{name}: scalar' for a symbol of its own)")
