@@ -184,19 +184,26 @@ def test_a_cycle_of_models_is_named():
         rigidsym.check_latex("A = 1", let=["A = B + 1", "B = A - 1"])
 
 
-# ---------------------------------------------------- what matches no rule (issue 52, item 1)
-@pytest.mark.parametrize("latex, lets", [
-    (r"\mathbf{a} = [[\mathbf{u}]]\mathbf{b}", []),  # on main: read as [u], a sign lost
-    (r"\mathbf{a} = \mathbf{N}\mathbf{b}", [r"\mathbf{N} = [[\mathbf{u}]]"]),  # in a model
+# ---------------------------------------------------- Shuster's [[u]] (issue 52, item 1; wave 11)
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # both signs give one verdict: decided (refused by name, "unknown bracket", before wave
+    # 11; on main before issue 52 read as [u], a sign lost)
+    (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T - |\mathbf{u}|^2 I_3", [], "verified"),
+    (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T + |\mathbf{u}|^2 I_3", [], "does-not-hold"),
+    (r"\mathbf{N}^T = -\mathbf{N}", [r"\mathbf{N} = [[\mathbf{u}]]"], "verified"),  # in a model
 ])
-def test_an_unknown_bracket_is_refused_by_name(latex, lets):
-    with pytest.raises(LatexError, match=r"unknown bracket \[\[\.\.\.\]\]"):
-        rigidsym.check_latex(latex, let=lets)
+def test_shusters_double_bracket_is_decided_where_both_signs_agree(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, r.detail
+    assert any("[[u]]: read as" in n for n in r.model), r.model
 
 
 def test_shusters_bracket_written_as_a_function_decides(capsys):
-    code, out, err = _cli(capsys, "--latex", r"\mathbf{a} = [[\mathbf{u}]]\mathbf{b}")
-    assert code == 2 and "unknown bracket" in err + out
+    # the two signs disagree on [[u]]b = b x u: refused naming the choice and what settles it
+    code, out, err = _cli(capsys, "--latex", r"[[\mathbf{u}]]\mathbf{b} = \mathbf{b}\times"
+                          r"\mathbf{u}", "--no-repairs")
+    assert code == 2 and "[[u]] can be read as the cross-product matrix" in err + out
+    assert "--let function" in err + out
     code, out, err = _cli(capsys, "--latex", r"N(\mathbf{u})\mathbf{b} = \mathbf{b}\times"
                           r"\mathbf{u}", "--let", r"N(\mathbf{u}) = -[\mathbf{u}]_\times",
                           "--no-repairs")

@@ -224,6 +224,9 @@ def _choice_words(key: str) -> str:
     if is_base_point(key):
         name, vec = key.split(" of ", 1)
         return f"{name} can be an entry of the 4-vector {vec.split(' counted')[0]} counted from 1 or from 0"
+    if key.startswith("[["):
+        return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
+                f"its negative (Shuster's (57))")
     if key.endswith(" hat"):
         return (f"{key[:-4]} can be read as a unit vector of its own (Lynch-Park, Corke) or "
                 f"as the skew matrix of {key[5:-5]} (Murray-Li-Sastry)")
@@ -240,6 +243,9 @@ def _settles(key: str) -> str:
 
     if is_base_point(key):
         return base_settles(key)
+    if key.startswith("[["):
+        return (f"write [{key[2:-2]}]_\\times or -[{key[2:-2]}]_\\times for {key}, or a "
+                f"--let function (--let 'N(\\mathbf{{u}}) = -[\\mathbf{{u}}]_\\times')")
     if key.endswith(" hat"):
         return (f"--let '{key[:-4]}: unit vector' (a vector of its own) or --notation "
                 f"murray-li-sastry (or --let '{key[:-4]} = [{key[5:-5]}]_\\times': the skew "

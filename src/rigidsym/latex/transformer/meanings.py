@@ -34,10 +34,13 @@ __all__: list[str] = []
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
-                "index": ("name", "entry"), "hat": HAT_READINGS, "base": BASE_READINGS}
+                "index": ("name", "entry"), "hat": HAT_READINGS, "base": BASE_READINGS,
+                "double": ("cpm", "neg")}
 
 
 def _kind(key: str) -> str:
+    if key.startswith("[["):  # Shuster's [[u]]: the cross-product matrix or its negative
+        return "double"
     if is_base_point(key):  # a 4-vector's entries counted from 1 or 0 (latex.entries)
         return "base"
     if key.endswith(" hat"):  # an undeclared \hat{X} (rigidsym.latex.hats)
@@ -55,6 +58,8 @@ def said(key: str, choice: str) -> str:
     its entry``."""
     if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "double":
+        return f"{key} {'-' if choice == 'neg' else ''}[{key[2:-2]}]_×"
     if _kind(key) == "base":
         return base_words(key, choice)
     if _kind(key) == "hat":
@@ -284,6 +289,25 @@ class MeaningRules:
         if sup is not None:
             arg = self.power([arg, sup])
         return self.mul([f, arg])
+
+    def double_bracket(self, h):
+        r"""Shuster's ``[[\mathbf{u}]]`` (``h``, the hat the inner bracket read): the
+        cross-product matrix ``[u]_\times`` or its negative, a choice point (wave 11). His
+        survey (1993) defines it with the sign of its passive attitude matrix, and the two
+        readings of the books disagree on that sign (the corpus's note: the negative, his
+        (57)), so neither is guessed: where both give one verdict (``[[u]]^2``, every even
+        power) it is decided, else refused naming the choice (before wave 11 any
+        ``[[u]]`` was refused: "unknown bracket")."""
+        from rigidsym.printing import notation
+
+        u = h.args[0]
+        key = f"[[{notation.text(u)}]]"
+        self.choice_points.setdefault(key, alternatives(key))
+        if self.choices.get(key) == "neg":
+            self._note(f"{key}: read as -[{notation.text(u)}]_× (a choice: or [{notation.text(u)}]_×)")
+            return sp.MatMul(-1, Cpm(u))
+        self._note(f"{key}: read as [{notation.text(u)}]_× (a choice: or its negative)")
+        return Cpm(u)
 
     def _sized(self, key, base, rest, accent):
         """An identity or zero the subscript sizes (module docstring), else ``None``."""
