@@ -209,7 +209,25 @@ class GlyphRules:
                 self.readings.append(f"{key}: read as entry {k} of {vkey} (a choice: or a "
                                      f"symbol of its own)")
                 return GlyphKey(key, base, rest, accent, self._symbol(vkey, vbase)[k - 1, 0])
-        return None
+        return self._free_entry(key, base, rest, accent, k)
+
+    def _free_entry(self, key, base, rest, accent, k):
+        r"""``q_k`` outside a function whose parameter ``\mathbf{q}`` no ``--let`` declares,
+        in the reading where the body's ``q_k`` are the parameter's entries: entry k of the
+        free ``\mathbf{q}`` too, so that one notation holds for the letter throughout
+        (Diebel's ``R(\mathbf{q})`` beside ``q_0^2 + ... + q_3^2``: before wave 11 the body
+        read entries and the statement names, two readings of one letter at once)."""
+        vbase = ("bold", base[1])
+        vkey = self._key(vbase, [], None)
+        if self.choices.get(f"{key} of {vkey}") != "entry" or vkey in self.overrides:
+            return None
+        v = self._symbol(vkey, vbase)
+        shape = getattr(v, "shape", ())
+        if not (len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1):
+            return None
+        self.readings.append(f"{key}: read as entry {k} of {vkey} (a choice: or a symbol of "
+                             f"its own)")
+        return GlyphKey(key, base, rest, accent, v[k - 1, 0])
 
     def _slice(self, key, base, rest, accent, pre):
         """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the
