@@ -222,8 +222,8 @@ def _choice_words(key: str) -> str:
     from rigidsym.latex.entries import is_base_point
 
     if is_base_point(key):
-        name, vec = key.split(" of ", 1)
-        return f"{name} can be an entry of the 4-vector {vec.split(' counted')[0]} counted from 1 or from 0"
+        return (f"the subscripts of the 4-vector {key.split(' of ', 1)[1].split(' counted')[0]}"
+                f" can count its entries from 1 or from 0")
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")

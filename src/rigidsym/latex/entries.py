@@ -41,9 +41,10 @@ def is_base_point(key: str) -> bool:
     return key.endswith(_BASE)
 
 
-def base_point(key: str, vkey: str) -> str:
-    r"""The choice point of ``key`` (``q_{1}``) as an entry of the 4-vector ``vkey``."""
-    return f"{key} of {vkey}{_BASE}"
+def base_point(vkey: str) -> str:
+    r"""The choice point of the 4-vector ``vkey``'s subscripts: one for the letter, so that
+    every ``q_k`` is counted alike (a subscript met only past another's failure, too)."""
+    return f"the entries of {vkey}{_BASE}"
 
 
 def entry_index(key: str, vkey: str, k: int, n: int, choices: dict,
@@ -68,7 +69,7 @@ def entry_index(key: str, vkey: str, k: int, n: int, choices: dict,
         return None, ""
     if k > 4:
         return None, ""
-    point = base_point(key, vkey)
+    point = base_point(vkey)
     points[point] = BASE_READINGS
     if choices.get(point, BASE_READINGS[0]) == "entry0":
         if not 0 <= k <= 3:
@@ -81,15 +82,12 @@ def entry_index(key: str, vkey: str, k: int, n: int, choices: dict,
 
 def base_words(key: str, choice: str) -> str:
     """One reading of the point ``key`` in words."""
-    name, vec = key[:-len(_BASE)].split(" of ", 1)
-    k = int(name.rsplit("_{", 1)[-1].rstrip("}"))
-    return f"{name} entry {k + 1 if choice == 'entry0' else k} of {vec}" + (
-        " (counted from 0)" if choice == "entry0" else " (counted from 1)")
+    return f"{key[:-len(_BASE)]} counted from {0 if choice == 'entry0' else 1}"
 
 
 def base_settles(key: str) -> str:
-    """The two ways to write what ``key`` means, for a refusal."""
-    name, vec = key[:-len(_BASE)].split(" of ", 1)
-    k = int(name.rsplit("_{", 1)[-1].rstrip("}"))
-    return (f"{name} is {vec}_{{{k}:{k}}} counted from 1 or {vec}_{{{k + 1}:{k + 1}}} counted "
-            f"from 0: write the one meant (or --let '{name}: scalar' for a symbol of its own)")
+    """The ways to write what the subscripts of ``key``'s vector mean, for a refusal."""
+    vec = key[len("the entries of "):-len(_BASE)]
+    return (f"write the entry meant as {vec}_{{k:k}}, counted from 1 (q_1 is {vec}_{{1:1}} "
+            f"counted from 1, {vec}_{{2:2}} counted from 0), or --let 'q_k: scalar' for a "
+            f"symbol of its own")
