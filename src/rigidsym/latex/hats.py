@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import re
 
-
 __all__ = ["hat_reading", "HAT_READINGS", "hat_point", "no_hat_reading"]
 
 #: the readings of an undeclared hat, the default first
@@ -42,7 +41,8 @@ def hat_reading(key: str, choices: dict, points: dict) -> tuple[object, str] | N
         points: the choice points met, updated with this one (its readings).
 
     Returns:
-        ``(let, note)``, ``let`` a :class:`rigidsym.latex.lets.Let`: ``--let '\hat{T}: unit vector'`` (a unit 3-vector of its own) or
+        ``(let, note)``, ``let`` a :class:`rigidsym.latex.lets.Let`: ``--let '\hat{T}: unit
+        vector'`` (a unit 3-vector of its own) or
         ``--let '\hat{T} = [T]_\times'`` (the skew matrix of a 3-vector ``T``; of anything
         else the model is refused when read, and the reading dropped).
     """

@@ -304,7 +304,8 @@ class MeaningRules:
         key = f"[[{notation.text(u)}]]"
         self.choice_points.setdefault(key, alternatives(key))
         if self.choices.get(key) == "neg":
-            self._note(f"{key}: read as -[{notation.text(u)}]_× (a choice: or [{notation.text(u)}]_×)")
+            self._note(f"{key}: read as -[{notation.text(u)}]_× (a choice: or "
+                       f"[{notation.text(u)}]_×)")
             return sp.MatMul(-1, Cpm(u))
         self._note(f"{key}: read as [{notation.text(u)}]_× (a choice: or its negative)")
         return Cpm(u)
