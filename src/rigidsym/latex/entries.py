@@ -64,8 +64,8 @@ def entry_index(key: str, vkey: str, k: int, n: int, choices: dict,
     """
     if n != 4:
         if 1 <= k <= n:
-            return k - 1, (f"{key}: entry {k} of {vkey} (counted from 1; --let '{key}: "
-                           f"scalar' for a symbol of its own)")
+            return k - 1, (f"{key}: read as entry {k} of {vkey} (counted from 1; --let "
+                           f"'{key}: scalar' for a symbol of its own)")
         return None, ""
     if k > 4:
         return None, ""
@@ -74,10 +74,10 @@ def entry_index(key: str, vkey: str, k: int, n: int, choices: dict,
     if choices.get(point, BASE_READINGS[0]) == "entry0":
         if not 0 <= k <= 3:
             raise ValueError(f"{key} beside the 4-vector {vkey} counted from 0 (q_0 to q_3)")
-        return k, (f"{key}: entry {k + 1} of {vkey}, counted from 0 (a choice: or from 1)")
+        return k, f"{key}: read as entry {k + 1} of {vkey}, counted from 0 (a choice: or from 1)"
     if not 1 <= k <= 4:
         raise ValueError(f"{key} beside the 4-vector {vkey} counted from 1 (q_1 to q_4)")
-    return k - 1, f"{key}: entry {k} of {vkey}, counted from 1 (a choice: or from 0)"
+    return k - 1, f"{key}: read as entry {k} of {vkey}, counted from 1 (a choice: or from 0)"
 
 
 def base_words(key: str, choice: str) -> str:
