@@ -37,7 +37,7 @@ def entry_of_declared(ev, t, k: int, letter: str, decls: dict, base_letter, text
         if not V.is_matrix(v) or v.cols != 1 or v.rows == 1:
             return None
         if v.rows == 4 and k <= 4:
-            zero = ev._choose(f"count of {letter}", ("from 1", "from 0")) == "from 0"
+            zero = ev.choose(f"count of {letter}", ("from 1", "from 0")) == "from 0"
             i = k if zero else k - 1
             if not 0 <= i <= 3:
                 raise V.NotCovered(f"{text_of(t)}: entry {k} of the 4-vector "

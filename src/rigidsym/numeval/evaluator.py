@@ -275,11 +275,11 @@ class Evaluator:
         if V.is_matrix(v) and v.cols == 1 and v.rows in (3, 6):
             if inner.data in ("glyph", "accented", "accented_bare"):
                 return V.hat(v)
-            return V.hat(v) if self._choose(f"bracket {text_of(inner)}",
+            return V.hat(v) if self.choose(f"bracket {text_of(inner)}",
                                             ("hat", "group")) == "hat" else v
         return v
 
-    def _choose(self, key: str, options: tuple[str, ...]) -> str:
+    def choose(self, key: str, options: tuple[str, ...]) -> str:
         """The reading taken at the choice point ``key`` (its first option unless the
         enumeration of :func:`residuals` says otherwise); the point recorded as met."""
         self.env.point.setdefault(" met", {})[key] = options
@@ -561,7 +561,7 @@ class Evaluator:
                 arg = self.value(args[0])
                 if not V.is_matrix(V.scalar(arg)) and not isinstance(arg, V.Eye | V.Zero):
                     return self.value(f)
-            if self._choose(f"apply {key}", ("product", "apply")) == "apply":
+            if self.choose(f"apply {key}", ("product", "apply")) == "apply":
                 return self.value(f)  # X(\mathbf{y}): X itself, applied
         if d is None or not d.params:
             if many:

@@ -22,7 +22,7 @@ def undeclared_hat(ev, t, key: str, text: str):
     glyph or free glyphs are not read (a notation's meanings).
 
     Args:
-        ev: the :class:`rigidsym.numeval.evaluator.Evaluator` (its ``env`` and ``_choose``).
+        ev: the :class:`rigidsym.numeval.evaluator.Evaluator` (its ``env`` and ``choose``).
         t: the ``accented`` tree: the accent token, then the glyph under it.
         key: the glyph key of ``t`` (where its unit-vector reading is drawn, once per point).
         text: its text, for the choice point's key and the messages.
@@ -40,7 +40,7 @@ def undeclared_hat(ev, t, key: str, text: str):
         return None
     if inner.data == "bare":
         inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
-    if ev._choose(f"hat {text}", ("unit", "skew")) == "skew":
+    if ev.choose(f"hat {text}", ("unit", "skew")) == "skew":
         v = ev.value(inner)
         if not V.is_matrix(v) or (v.rows, v.cols) != (3, 1):
             raise V.NotCovered(f"the skew matrix {text} of a value that is no 3-vector")
