@@ -224,6 +224,9 @@ def _choice_words(key: str) -> str:
     if is_base_point(key):
         return (f"the subscripts of the 4-vector {key.split(' of ', 1)[1].split(' counted')[0]}"
                 f" can count its entries from 1 or from 0")
+    if key.endswith(" shape"):
+        return (f"{key[:-6]} (a bold capital no --let declares) can be a 3×3 matrix or a "
+                f"3-vector")
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -243,6 +246,8 @@ def _settles(key: str) -> str:
 
     if is_base_point(key):
         return base_settles(key)
+    if key.endswith(" shape"):
+        return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
     if key.startswith("[["):
         return (f"write [{key[2:-2]}]_\\times or -[{key[2:-2]}]_\\times for {key}, or a "
                 f"--let function (--let 'N(\\mathbf{{u}}) = -[\\mathbf{{u}}]_\\times')")

@@ -8,6 +8,9 @@ keeping each that type-checks. Where the shapes allow one (``\hat\omega^2``, ``\
 the unit vector) that is the reading; where both type-check and their verdicts differ the
 statement is refused naming the ``--let`` and the ``--notation`` that settle it.
 
+A free bold capital whose conventional 3 x 3 does not fit is a choice of the same kind
+(:func:`capital_point`): a 3 x 3 matrix or a 3-vector (wave 11).
+
 A ``--let`` for ``\hat{X}`` (a kind or a model), a ``--notation`` line or a book's glyph row
 wins over this: the choice is met only by a hat nothing declares.
 """
@@ -16,7 +19,8 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["hat_reading", "HAT_READINGS", "hat_point", "no_hat_reading"]
+__all__ = ["hat_reading", "HAT_READINGS", "hat_point", "no_hat_reading", "CAPITAL_READINGS",
+           "capital_point", "is_capital"]
 
 #: the readings of an undeclared hat, the default first
 HAT_READINGS = ("unit", "skew")
@@ -90,3 +94,25 @@ def _short(why: str) -> str:
     why = why.split("; its meaning depends")[0].split("; say it another way")[0]
     return why.split("': ", 1)[1] if why.startswith(("cannot read '", "the reading '")) \
         and "': " in why else why
+
+
+# ---- a free bold capital whose conventional 3 x 3 does not fit (the same kind of choice)
+
+#: the readings of a free bold capital, the convention first
+CAPITAL_READINGS = ("matrix", "vector")
+
+_CAPITAL = re.compile(r"\\(?:mathbf|boldsymbol)\{[A-Z]\}")
+
+
+def is_capital(key: str) -> bool:
+    r"""``key`` is a bold capital with nothing else (``\mathbf{Y}``)."""
+    return _CAPITAL.fullmatch(key) is not None
+
+
+def capital_point(key: str) -> str:
+    r"""The choice point of the free bold capital ``key``: 3 x 3 by the books' convention,
+    or a 3-vector (Ma-Soatto-Košecká-Sastry's point ``\mathbf{X}``, ``N\times\mathbf{Y}``).
+    Met only where the convention's shape does not fit (a reading failed on shapes), so a
+    statement the convention reads is read as before; where both type-check and disagree,
+    refused naming ``--let '\mathbf{Y}: vector'`` (wave 11)."""
+    return f"{key} shape"

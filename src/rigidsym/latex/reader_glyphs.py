@@ -12,9 +12,9 @@ from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.core.errors import BadInput
 from rigidsym.latex.entries import DECLARED_PARAM
-from rigidsym.latex.hats import hat_reading
+from rigidsym.latex.hats import CAPITAL_READINGS, capital_point, hat_reading, is_capital
 from rigidsym.latex.kinematics import rate_target
-from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
+from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError, matrix_shape, name_from_key
 from rigidsym.latex.table import Glyph, glyph_table, lookup
@@ -102,6 +102,14 @@ class GlyphReader:
                 shape = tuple(sym.shape) if isinstance(sym, sp.MatrixSymbol) else ()
                 new[key] = Glyph(key, "*", name, shape, "module", "lent by --module")
                 continue
+            if g.kind == "free" and key not in self.declared \
+                    and self.choices.get(capital_point(key)) == "vector":
+                self.choice_points[capital_point(key)] = CAPITAL_READINGS
+                (v,) = read_lets([f"{key}: vector"])
+                self.notes.append(f"{key}: read as a 3-vector (a bold capital no --let declares: "
+                                  f"3×3 by the convention, which does not fit here; a choice)")
+                new[key] = self._let_glyph(v, f"the reading '{v.text}'")
+                continue
             x = hat_reading(key, self.choices, self.choice_points) \
                 if g.kind == "free" and key not in self.declared else None
             if x is not None:  # an undeclared hat: a unit vector or a skew matrix (a choice)
@@ -146,6 +154,11 @@ class GlyphReader:
                 if extra:
                     self.over.update(extra)
                     continue
+                if exc.construct == "shapes":  # a free bold capital: a 3-vector too? (wave 11)
+                    self.choice_points.update({capital_point(k): CAPITAL_READINGS
+                                               for k, g in exc.glyphs.items() if g.kind == "free"
+                                               and k not in (over or {}) and is_capital(k)
+                                               and k not in self.declared})
                 raise self._hint(exc, what) from None
             extra = {k: g for k, g in self._extra(p.glyphs).items() if k not in (over or {})}
             if not extra:

@@ -152,8 +152,11 @@ class Env:
             raise NotCovered(f"the undeclared glyph {text_of(tree)}")
         if bold and letter.islower():
             return sample("vector", self.rng)
-        if bold and letter.isupper():
-            return sample("matrix", self.rng)
+        if bold and letter.isupper():  # 3x3 by the convention; a 3-vector where it fails
+            said = self.point.get(" choices", {})  # a choice only where the first failed
+            if said.get(" capitals", True):
+                self.point.setdefault(" met", {})[f"shape {text_of(tree)}"] = ("matrix", "vector")
+            return sample(said.get(f"shape {text_of(tree)}", "matrix"), self.rng)
         return sample("scalar", self.rng)
 
 
@@ -726,6 +729,8 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
         out, met = _at_points(chains, table, points, seed, free, {}, spread, fixed)
     except NotCovered as exc:
         out, met, first_error = [], getattr(exc, "met", {}), exc
+    if first_error is None:  # a free bold capital read as the convention: no choice
+        met = {k: v for k, v in met.items() if not k.startswith("shape ")}
     if not met:
         if first_error is not None:
             raise first_error
@@ -739,7 +744,8 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
         for combo in itertools.product(*(seen[k] for k in keys)):
             try:
                 rs, m = _at_points(chains, table, points, seed, free,
-                                   dict(zip(keys, combo, strict=True)), spread, fixed)
+                                   {**dict(zip(keys, combo, strict=True)),
+                                    " capitals": first_error is not None}, spread, fixed)
             except NotCovered as exc:
                 errors.append(exc)
                 met.update(getattr(exc, "met", {}))

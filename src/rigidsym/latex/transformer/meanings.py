@@ -24,7 +24,7 @@ import sympy as sp
 
 from rigidsym.algebra.operators import Cpm
 from rigidsym.latex.entries import BASE_READINGS, base_words, is_base_point
-from rigidsym.latex.hats import HAT_READINGS
+from rigidsym.latex.hats import CAPITAL_READINGS, HAT_READINGS
 from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, as_scalar, matrix_shape
 from rigidsym.latex.table import lookup
 
@@ -35,10 +35,12 @@ __all__: list[str] = []
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
                 "index": ("name", "entry"), "hat": HAT_READINGS, "base": BASE_READINGS,
-                "double": ("cpm", "neg")}
+                "double": ("cpm", "neg"), "shape": CAPITAL_READINGS}
 
 
 def _kind(key: str) -> str:
+    if key.endswith(" shape"):  # a free bold capital: 3x3 or a 3-vector (latex.hats)
+        return "shape"
     if key.startswith("[["):  # Shuster's [[u]]: the cross-product matrix or its negative
         return "double"
     if is_base_point(key):  # a 4-vector's entries counted from 1 or 0 (latex.entries)
@@ -58,6 +60,8 @@ def said(key: str, choice: str) -> str:
     its entry``."""
     if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "shape":
+        return f"{key[:-6]} {'a 3-vector' if choice == 'vector' else 'a 3×3 matrix'}"
     if _kind(key) == "double":
         return f"{key} {'-' if choice == 'neg' else ''}[{key[2:-2]}]_×"
     if _kind(key) == "base":
