@@ -620,8 +620,9 @@ AFTER_ATTEMPT = {'sh-axis-fixed': 'right',
 
 #: the verdicts as typed after wave 11's readings (issue 63): a free hat read both ways, q_k
 #: beside a --let's vector its entry (a 4-vector counted from 1 or 0), Shuster's [[u]] with
-#: either sign, one notation per letter in and outside a function's body; each decided
-#: where its readings agree, refused naming the choice where they differ
+#: either sign, one notation per letter in and outside a function's body, a free bold
+#: capital a 3-vector where its conventional 3x3 does not fit; each decided where its
+#: readings agree, refused naming the choice where they differ
 AFTER_W11 = {'sh-axis-fixed': 'right',
              'sh-trace': 'right',
              'sh-trace-slip': 'right',
@@ -646,7 +647,7 @@ AFTER_W11 = {'sh-axis-fixed': 'right',
              'msks-et': 'right',
              'msks-et-slip': 'right',
              'msks-tr-eet': 'right',
-             'msks-homography': 'refused',
+             'msks-homography': 'right',
              'msks-hat-anti': 'right',
              'di-quat-orth': 'right',
              'di-r1-compose': 'right',
