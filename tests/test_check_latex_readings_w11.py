@@ -115,3 +115,13 @@ def test_a_parameters_entries_are_the_free_vectors_entries_outside_the_body():
     with pytest.raises(BadInput, match="the readings disagree"):  # q^T q: entries only
         _check(r"R(\mathbf{q})^TR(\mathbf{q}) = (q_0^2 + \mathbf{q}^T\mathbf{q})^2 I_3",
                [DIEBEL])
+
+
+# ------------------------------------------------------------------ a free bold capital
+def test_a_free_bold_capital_is_a_vector_only_where_its_3x3_does_not_fit():
+    r = _check(r"\mathbf{a} + \mathbf{Y} = \mathbf{Y} + \mathbf{a}")  # 3-vector + 3x3: no
+    assert r.verdict == "verified", r.detail
+    assert any(r"\mathbf{Y}: read as a 3-vector" in n for n in r.model), r.model
+    assert _check(r"\mathbf{a} + \mathbf{Y} = \mathbf{Y} - \mathbf{a}").verdict == "does-not-hold"
+    r = _check(r"\mathbf{Y}\mathbf{a} = \mathbf{a}")  # the convention fits: no choice
+    assert r.verdict == "does-not-hold" and not any("read as a 3-vector" in n for n in r.model)
