@@ -22,6 +22,11 @@ from rigidsym.latex.transformer.book_notations import TIMED
 
 __all__: list[str] = []
 
+#: the shape errors a vector where a 3 x 3 stands would mend: a sum, a juxtaposition, a
+#: cross-product matrix (not ``|\mathbf{A}|``, refused as a determinant written so)
+_VECTOR_USES = ("shapes do not fit", "no product fits", "expected a 3-vector")
+
+
 def _in(section: str, book: str) -> bool:
     return book == "3" or section == book or section.startswith(book + ".")
 
@@ -154,7 +159,8 @@ class GlyphReader:
                 if extra:
                     self.over.update(extra)
                     continue
-                if exc.construct == "shapes":  # a free bold capital: a 3-vector too? (wave 11)
+                if exc.construct == "shapes" and any(  # a free bold capital: a 3-vector too?
+                        w in str(exc) for w in _VECTOR_USES):  # (wave 11; not |A|: a det)
                     self.choice_points.update({capital_point(k): CAPITAL_READINGS
                                                for k, g in exc.glyphs.items() if g.kind == "free"
                                                and k not in (over or {}) and is_capital(k)

@@ -9,10 +9,11 @@ Imports lark and the standard library only (the contract of :mod:`rigidsym.numev
 from __future__ import annotations
 
 import lark
+import mpmath as mp
 
 from rigidsym.numeval import values as V
 
-__all__ = ["entry_of_declared"]
+__all__ = ["entry_of_declared", "entries_of"]
 
 
 def entry_of_declared(ev, t, k: int, letter: str, decls: dict, base_letter, text_of):
@@ -45,3 +46,30 @@ def entry_of_declared(ev, t, k: int, letter: str, decls: dict, base_letter, text
             return v[i]
         return v[k - 1] if 1 <= k <= v.rows else None
     return None
+
+
+def entries_of(ev, t, base_letter, text_of):
+    r"""``q_{1:3}``: entries 1 to 3 of the vector q (1-based, inclusive), ``q_{4:4}`` entry 4;
+    ``q_4`` beside a declared ``q`` or ``\mathbf{q}`` (:func:`entry_of_declared`); ``None``
+    where the glyph ``t`` is neither.
+
+    Raises:
+        NotCovered: a range of a value that is no vector or past its entries."""
+    if t.data != "glyph" or len(t.children) != 2:
+        return None
+    sub = t.children[1]
+    if not isinstance(sub, lark.Tree) or sub.data != "subscript" or len(sub.children) != 1:
+        return None
+    tok = sub.children[0]
+    if not (isinstance(tok, lark.Token) and tok.type == "SUBRANGE"):
+        if isinstance(tok, lark.Token) and tok.type == "SUBATOM" and str(tok).isdigit():
+            return entry_of_declared(ev, t, int(str(tok)), base_letter(t)[0], ev.env.decls,
+                                     base_letter, text_of)
+        return None
+    lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
+    v = ev.value(lark.Tree("glyph", [t.children[0]]))
+    if not V.is_matrix(v) or v.cols != 1 or not 1 <= lo <= hi <= v.rows:
+        raise V.NotCovered(f"the entries {text_of(t)}")
+    if lo == hi:
+        return v[lo - 1]
+    return mp.matrix([v[i] for i in range(lo - 1, hi)])

@@ -409,27 +409,8 @@ class Evaluator:
         return V.Eye(dims[0]) if dims and dims[0] == dims[1] else None
 
     def _entries(self, t):
-        """``q_{1:3}``: entries 1 to 3 of the vector q (1-based, inclusive)."""
-        if t.data != "glyph" or len(t.children) != 2:
-            return None
-        sub = t.children[1]
-        if not isinstance(sub, lark.Tree) or sub.data != "subscript" or len(sub.children) != 1:
-            return None
-        tok = sub.children[0]
-        if not (isinstance(tok, lark.Token) and tok.type == "SUBRANGE"):
-            if isinstance(tok, lark.Token) and tok.type == "SUBATOM" and str(tok).isdigit():
-                # q_4 beside a declared q or \mathbf{q} (issue 63, wave 11)
-                return entries.entry_of_declared(self, t, int(str(tok)), _base_letter(t)[0],
-                                                 self.env.decls, _base_letter, text_of)
-            return None
-        lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
-        base = lark.Tree("glyph", [t.children[0]])
-        v = self.value(base)
-        if not V.is_matrix(v) or v.cols != 1 or not 1 <= lo <= hi <= v.rows:
-            raise NotCovered(f"the entries {text_of(t)}")
-        if lo == hi:
-            return v[lo - 1]
-        return mp.matrix([v[i] for i in range(lo - 1, hi)])
+        """``q_{1:3}``, ``q_4`` of a declared ``\\mathbf{q}``: :mod:`~rigidsym.numeval.entries`."""
+        return entries.entries_of(self, t, _base_letter, text_of)
 
     def r_norm(self, t):
         return V.norm(self.value(self._kids(t)[0]))
