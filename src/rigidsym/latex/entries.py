@@ -12,6 +12,9 @@ book writes a vector's entries (Markley & Crassidis' ``q_4``, Shuster's ``q_1 ..
   reading is unique wherever the LaTeX writes either; where it writes neither and the two
   verdicts differ, the statement is refused naming the entry that settles it
   (``\mathbf{q}_{1:1}``).
+- A bold subscripted name, ``\mathbf{p}_1`` beside ``\mathbf{p}``, is a vector's name in the
+  books (point 1) as often as an entry: issue 52's choice between a symbol of its own and
+  the entry, unchanged; the rule above reads the plain (or Greek) letters only.
 - A function's parameter that no ``--let`` declares globally (``R(\mathbf{q})`` with only its
   body's ``q_i``): a symbol of its own or an entry (issue 52's choice point, unchanged),
   since the statement's own ``q_i`` are then no entries of anything.

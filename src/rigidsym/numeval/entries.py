@@ -34,6 +34,13 @@ def entry_of_declared(ev, t, k: int, letter: str, decls: dict, base_letter, text
         if not (isinstance(d.name, lark.Tree) and base_letter(d.name)[0] == letter
                 and base_letter(d.name)[2]):
             continue
+        if base_letter(t)[1]:  # a bold q_4 (a vector's name in the books): a choice
+            if ev.choose(f"entries of {letter}", ("name", "entry")) == "name":
+                return None
+            v = ev.value(d.name)
+            if not V.is_matrix(v) or v.cols != 1 or not 1 <= k <= v.rows:
+                raise V.NotCovered(f"{text_of(t)}: entry {k} of {text_of(d.name)}")
+            return v[k - 1]
         v = ev.value(d.name)
         if not V.is_matrix(v) or v.cols != 1 or v.rows == 1:
             return None

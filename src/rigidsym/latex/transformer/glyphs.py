@@ -188,7 +188,7 @@ class GlyphRules:
             vkey = self._key(vbase, [], None)
             g = self.overrides.get(vkey)
             shape = getattr(g, "shape", ())
-            if len(shape) == 2 and shape[1] == 1 and shape[0] > 1 and (
+            if len(shape) == 2 and shape[1] == 1 and shape[0] > 1 and base[0] != "bold" and (
                     g.kind != "param" or g.meaning.endswith(DECLARED_PARAM)):
                 try:  # a --let's vector: its entry, counted from 1 (from 0 too: a 4-vector)
                     at, note = entry_index(key, vkey, k, shape[0], self.choices,
