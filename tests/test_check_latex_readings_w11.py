@@ -130,5 +130,5 @@ def test_a_free_bold_capital_is_a_vector_only_where_its_3x3_does_not_fit():
 def test_a_bold_subscripted_name_beside_a_declared_vector_stays_a_choice():
     # \mathbf{p}_1 is point 1 as often as an entry: issue 52's two readings, the entry (a
     # scalar = a 3-vector) does not type-check, so point 1, a vector of its own, is decided
-    r = _check(r"\mathbf{p}_1 = R\mathbf{p}_2", [r"\mathbf{p}: vector", "R: rotation"])
+    r = _check(r"\mathbf{p}_1 = R\mathbf{p}_2 + \mathbf{p}", [r"\mathbf{p}: vector", "R: rotation"])
     assert r.verdict == "does-not-hold", r.detail
