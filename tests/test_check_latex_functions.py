@@ -184,19 +184,26 @@ def test_a_cycle_of_models_is_named():
         rigidsym.check_latex("A = 1", let=["A = B + 1", "B = A - 1"])
 
 
-# ---------------------------------------------------- what matches no rule (issue 52, item 1)
-@pytest.mark.parametrize("latex, lets", [
-    (r"\mathbf{a} = [[\mathbf{u}]]\mathbf{b}", []),  # on main: read as [u], a sign lost
-    (r"\mathbf{a} = \mathbf{N}\mathbf{b}", [r"\mathbf{N} = [[\mathbf{u}]]"]),  # in a model
+# ---------------------------------------------------- Shuster's [[u]] (issue 52, item 1; wave 11)
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # both signs give one verdict: decided (refused by name, "unknown bracket", before wave
+    # 11; on main before issue 52 read as [u], a sign lost)
+    (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T - |\mathbf{u}|^2 I_3", [], "verified"),
+    (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T + |\mathbf{u}|^2 I_3", [], "does-not-hold"),
+    (r"\mathbf{N}^T = -\mathbf{N}", [r"\mathbf{N} = [[\mathbf{u}]]"], "verified"),  # in a model
 ])
-def test_an_unknown_bracket_is_refused_by_name(latex, lets):
-    with pytest.raises(LatexError, match=r"unknown bracket \[\[\.\.\.\]\]"):
-        rigidsym.check_latex(latex, let=lets)
+def test_shusters_double_bracket_is_decided_where_both_signs_agree(latex, lets, verdict):
+    r = rigidsym.check_latex(latex, let=lets, repairs=False)
+    assert r.verdict == verdict, r.detail
+    assert any("[[u]]: read as" in n for n in r.model), r.model
 
 
 def test_shusters_bracket_written_as_a_function_decides(capsys):
-    code, out, err = _cli(capsys, "--latex", r"\mathbf{a} = [[\mathbf{u}]]\mathbf{b}")
-    assert code == 2 and "unknown bracket" in err + out
+    # the two signs disagree on [[u]]b = b x u: refused naming the choice and what settles it
+    code, out, err = _cli(capsys, "--latex", r"[[\mathbf{u}]]\mathbf{b} = \mathbf{b}\times"
+                          r"\mathbf{u}", "--no-repairs")
+    assert code == 2 and "[[u]] can be read as the cross-product matrix" in err + out
+    assert "--let function" in err + out
     code, out, err = _cli(capsys, "--latex", r"N(\mathbf{u})\mathbf{b} = \mathbf{b}\times"
                           r"\mathbf{u}", "--let", r"N(\mathbf{u}) = -[\mathbf{u}]_\times",
                           "--no-repairs")
@@ -306,16 +313,21 @@ def test_a_subscript_is_a_name_or_an_entry_by_the_reading_that_type_checks(latex
 
 
 def test_a_subscript_whose_readings_disagree_is_refused_naming_what_settles_it(capsys):
-    # on main: does-not-hold, a_1 a free scalar (a true equation where a_1 is a's entry)
-    code, out, err = _cli(capsys, "--latex", r"a_1 = \mathbf{a}^T\mathbf{i}",
-                          *(f"--let={x}" for x in I1), "--no-repairs")
-    assert code == 2, out + err
-    assert r"a_{1} can be read as a symbol of its own or as an entry of \mathbf{a}" in err, err
-    assert r"a_{1} a symbol of its own: does-not-hold; a_{1} entry 1 of \mathbf{a}: verified" \
-        in err, err
-    r = rigidsym.check_latex(r"\mathbf{a}_{1:1} = \mathbf{a}^T\mathbf{i}", let=I1,
-                             repairs=False)
+    # on main: does-not-hold, a_1 a free scalar (a true equation where a_1 is a's entry);
+    # issue 52: refused, a symbol of its own or the entry; wave 11: beside a --let's vector
+    # it is the entry, as the books write one (latex.entries)
+    r = rigidsym.check_latex(r"a_1 = \mathbf{a}^T\mathbf{i}", let=I1, repairs=False)
     assert r.verdict == "verified", r.detail
+    # a 4-vector counted from 1 or 0, the LaTeX writing neither q_0 nor q_4: refused
+    code, out, err = _cli(capsys, "--latex", r"q_1 = \mathbf{q}^T\mathbf{i}",
+                          r"--let=\mathbf{q}: 4-vector",
+                          r"--let=\mathbf{i} = \begin{bmatrix}1\\0\\0\\0\end{bmatrix}",
+                          "--no-repairs")
+    assert code == 2, out + err
+    assert r"the subscripts of the 4-vector \mathbf{q} can count its entries from 1 or from 0" \
+        in err, err
+    assert r"counted from 1: verified; the entries of \mathbf{q} counted from 0: does-not-hold" \
+        in err, err
 
 
 def test_a_bracket_around_one_symbol_is_its_hat_by_the_rule():
@@ -539,11 +551,15 @@ def test_an_application_with_left_and_right_decides_as_with_plain_parentheses():
 def test_the_subscripts_of_one_vector_read_alike_and_disagreeing_readings_are_refused():
     """q_1^2 + ... + q_4^2 = qᵀq: four index choice points were cut to three, and the eight
     readings decided (all does-not-hold) never held the one meant (all four entries). The
-    subscripts of one letter now read together: names (does-not-hold) or entries (verified)
-    disagree, so it is refused naming them."""
-    with pytest.raises((BadInput, LatexError)) as exc:
-        rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 + q_4^2 = q^Tq", let=[r"q: 4-vector"])
-    assert "q_{4}" in str(exc.value) and "entry 4 of q" in str(exc.value), str(exc.value)
+    subscripts of one letter read together: since wave 11 beside a --let's 4-vector as its
+    entries, counted from 1 (q_4 written) or 0 (q_0 written), one choice for the letter."""
+    r = rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 + q_4^2 = q^Tq", let=[r"q: 4-vector"])
+    assert r.verdict == "verified", r.detail
+    r = rigidsym.check_latex(r"q_0^2 + q_1^2 + q_2^2 + q_3^2 = q^Tq", let=[r"q: 4-vector"])
+    assert r.verdict == "verified", r.detail
+    with pytest.raises((BadInput, LatexError)) as exc:  # neither written: the counts differ
+        rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 = q^Tq - q_{4:4}^2", let=[r"q: 4-vector"])
+    assert "count its entries from 1 or from 0" in str(exc.value), str(exc.value)
     r = rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 + q_4^2 = q^Tq",
                              let=[r"q: 4-vector", r"q_1 = q_{1:1}", r"q_2 = q_{2:2}",
                                   r"q_3 = q_{3:3}", r"q_4 = q_{4:4}"])

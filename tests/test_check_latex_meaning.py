@@ -445,15 +445,18 @@ def test_a_matrix_without_a_model_applied_is_still_refused(capsys):
 def test_a_wide_accent_is_its_narrow_accent(hat, wide):
     r"""``\widehat``, ``\widetilde`` only draw wider (unknown macros before): the same glyph as
     ``\hat``, ``\tilde``, so a model given for one serves the other and a free one is
-    refused alike."""
+    read alike (wave 11: a free hat is read both ways, a unit vector or a skew matrix)."""
     let = [rf"{hat}{{\mathbf{{a}}}} = [\mathbf{{a}}]_\times"]
     r = rigidsym.check_latex(rf"{wide}{{\mathbf{{a}}}}\mathbf{{a}} = \mathbf{{0}}", let=let)
     assert r.verdict == "verified", r.detail                  # a × a = 0, through the model
     slip = rigidsym.check_latex(rf"{wide}{{\mathbf{{a}}}}^T = {hat}{{\mathbf{{a}}}}", let=let)
     assert slip.verdict == "does-not-hold", slip.detail      # skew, not symmetric
     if hat == r"\hat":  # Lynch-Park's unit vector or Murray-Li-Sastry's skew matrix
-        with pytest.raises(rigidsym.BadInput, match="murray-li-sastry"):
-            rigidsym.check_latex(rf"2{wide}{{\omega}} = {wide}{{\omega}} + {hat}{{\omega}}")
+        # one glyph: 2u = u + u; of a scalar omega only the unit vector reads (said)
+        r = rigidsym.check_latex(rf"2{wide}{{\omega}} = {wide}{{\omega}} + {hat}{{\omega}}")
+        assert r.verdict == "verified" and any("unit vector of its own" in n for n in r.model)
+        slip = rigidsym.check_latex(rf"2{wide}{{\omega}} = {wide}{{\omega}} - {hat}{{\omega}}")
+        assert slip.verdict == "does-not-hold", slip.detail
         assert rigidsym.check_latex(rf"{wide}{{\omega}}^T = -{wide}{{\omega}}",
                                     notation="murray-li-sastry").verdict == "verified"
 

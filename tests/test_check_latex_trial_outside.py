@@ -3,7 +3,8 @@ from Shuster (1993), Markley & Crassidis (2014), Kuipers (1999), Murray, Li & Sa
 Ma, Soatto, Košecká & Sastry (2004) and Diebel (2006), typed from memory with the
 declarations their readers write, judged against the data file's own NumPy truth (which
 never imports rigidsym). No verdict may be wrong; each case answers as recorded, as typed
-(``AFTER``) and after the one attempt its refusal names (``AFTER_ATTEMPT``).
+(``AFTER_W11``, wave 11's readings; ``AFTER`` the wave-10 record) and after the one attempt
+its refusal named (``AFTER_ATTEMPT``).
 
 And the messages of every refusal and undecided verdict, over the LaTeX corpus
 (``tests/data/latex_corpus``) and this trial, leak no exception text: a sample in the
@@ -31,7 +32,7 @@ CASES = {c["id"]: c for c in trial.CASES}
 
 #: cheap cases (each under 0.5 s) for the default run, one per kind of answer and fix
 FAST = {"sh-trace-slip", "mc-axang-transpose", "ku-trace", "mls-2link-reach-slip",
-        "k-mls-rz", "mls-exp-orth", "msks-et-slip", "mc-psi-q"}
+        "k-mls-rz", "mls-exp-orth", "msks-et-slip", "mc-psi-q", "sh-skew-square"}
 
 
 def _holds(case: dict) -> bool:
@@ -50,6 +51,14 @@ def _answer(case: dict, latex: str, lets: list, options: dict) -> tuple[str, str
     holds = _holds(case)
     said = {"verified": True, "definition": True, "does-not-hold": False}[r.verdict]
     return ("right" if said == holds else "WRONG"), ""
+
+
+def test_wave_11_refuses_at_most_a_tenth_of_the_valid_equations_as_typed():
+    # the issue's acceptance, on the recorded answers (each checked by the test below)
+    valid = [c["id"] for c in trial.CASES if not c["slip"]]
+    refused = [i for i in valid if trial.AFTER_W11[i] == "refused"]
+    assert len(refused) <= 0.1 * len(valid), refused
+    assert "WRONG" not in trial.AFTER_W11.values()
 
 
 def test_the_trial_is_forty_cases_from_six_books_with_kinematics_and_slips():
@@ -73,7 +82,7 @@ def _params(ids):
 def test_a_trial_case_answers_as_recorded_and_never_wrongly(cid):
     case = CASES[cid]
     typed, _ = _answer(case, case["latex"], list(case["let"]), {})
-    assert typed != "WRONG" and typed == trial.AFTER[cid], typed
+    assert typed != "WRONG" and typed == trial.AFTER_W11[cid], typed
     if cid in trial.ATTEMPT:
         tried, _ = _answer(case, *trial.attempted(case))
         assert tried != "WRONG" and tried == trial.AFTER_ATTEMPT[cid], tried
@@ -120,7 +129,7 @@ def test_a_corpus_message_leaks_no_exception_text(eid):
     assert not msg.rstrip().endswith("expected one of:"), msg
 
 
-_REFUSED_FAST = {"sh-skew-square", "mc-psi-orth"}
+_REFUSED_FAST = {"msks-epipolar", "sh-gibbs-from-a"}  # still refused as typed (wave 11)
 
 
 @pytest.mark.parametrize("cid", [pytest.param(i, marks=() if i in _REFUSED_FAST

@@ -225,6 +225,20 @@ def _choice_words(key: str) -> str:
     if key == "\\tilde":
         return ("\\tilde{x} of a 3-vector can be read as its cross-product matrix [x]_\\times "
                 "(Wittenburg, Shabana) or as a vector of its own")
+    from rigidsym.latex.entries import is_base_point
+
+    if is_base_point(key):
+        return (f"the subscripts of the 4-vector {key.split(' of ', 1)[1].split(' counted')[0]}"
+                f" can count its entries from 1 or from 0")
+    if key.endswith(" shape"):
+        return (f"{key[:-6]} (a bold capital no --let declares) can be a 3×3 matrix or a "
+                f"3-vector")
+    if key.startswith("[["):
+        return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
+                f"its negative (Shuster's (57))")
+    if key.endswith(" hat"):
+        return (f"{key[:-4]} can be read as a unit vector of its own (Lynch-Park, Corke) or "
+                f"as the skew matrix of {key[5:-5]} (Murray-Li-Sastry)")
     if key.startswith("["):
         return f"{key} can be read as the hat of the vector or as a bracket that groups it"
     if " of " in key:
@@ -237,6 +251,19 @@ def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
                 "--let '\\tilde{\\mathbf{a}}: vector' (its own)")
+    from rigidsym.latex.entries import base_settles, is_base_point
+
+    if is_base_point(key):
+        return base_settles(key)
+    if key.endswith(" shape"):
+        return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
+    if key.startswith("[["):
+        return (f"write [{key[2:-2]}]_\\times or -[{key[2:-2]}]_\\times for {key}, or a "
+                f"--let function (--let 'N(\\mathbf{{u}}) = -[\\mathbf{{u}}]_\\times')")
+    if key.endswith(" hat"):
+        return (f"--let '{key[:-4]}: unit vector' (a vector of its own) or --notation "
+                f"murray-li-sastry (or --let '{key[:-4]} = [{key[5:-5]}]_\\times': the skew "
+                f"matrix)")
     if key.startswith("["):
         return f"{key[:-1]}]_\\times for the hat or ({key[1:-1]}) to group"
     if " of " in key:

@@ -50,8 +50,6 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     if not isinstance(latex, str) or not latex.strip():
         raise LatexError(f"latex: expected a non-empty LaTeX string, got {latex!r}")
     tree = _tree(latex)
-    if reader:
-        _no_double_brackets(tree, latex)
     build = LatexTransformer(section, overrides or {}, block_rows, reader)
     build.braces = []
     build.functions = functions or {}
@@ -117,28 +115,3 @@ def _tree(latex: str):
     """lark's parse tree, or a :class:`LatexError` that says where and what was expected
     (:func:`rigidsym.latex.lexing.tree`: pylatexenc's boundaries of the macros)."""
     return tree(latex)
-
-
-def _is_square(t) -> bool:
-    """A ``[ ... ]`` (or ``\\left[ ... \\right]``) group of the parse tree."""
-    if not isinstance(t, lark.Tree):
-        return False
-    if t.data == "bracket":
-        return True
-    return t.data == "sized" and "[" in str(t.children[0])
-
-
-def _no_double_brackets(tree, latex: str) -> None:
-    """A bracket holding only a bracket (Shuster's ``[[\\mathbf{u}]]``, the *negative* of
-    the cross-product matrix) matches no rule: refused by name, never read as the one
-    bracket it resembles (issue 52; before, ``[[g]]`` was ``[g]``, a sign lost unsaid)."""
-    for t in tree.iter_subtrees():
-        if _is_square(t):
-            inner = [c for c in t.children if isinstance(c, lark.Tree)]
-            if len(inner) == 1 and _is_square(inner[0]):
-                raise LatexError(
-                    f"unknown bracket [[...]] in {latex!r}: no rule reads a bracket directly "
-                    f"inside a bracket (Shuster writes [[u]] for the negative of the "
-                    f"cross-product matrix); say what it is with a --let function, e.g. "
-                    f"--let 'N(\\mathbf{{u}}) = -[\\mathbf{{u}}]_\\times' and N(\\mathbf{{u}})",
-                    "unknown bracket [[...]]")

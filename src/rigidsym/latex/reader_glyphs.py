@@ -11,14 +11,21 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.entries import DECLARED_PARAM
+from rigidsym.latex.hats import CAPITAL_READINGS, capital_point, hat_reading, is_capital
 from rigidsym.latex.kinematics import rate_target
-from rigidsym.latex.lets import KIND_WORDS, Let, kind_of
+from rigidsym.latex.lets import KIND_WORDS, Let, kind_of, read_lets
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError, matrix_shape, name_from_key
 from rigidsym.latex.table import Glyph, glyph_table, lookup
 from rigidsym.latex.transformer.book_notations import TIMED
 
 __all__: list[str] = []
+
+#: the shape errors a vector where a 3 x 3 stands would mend: a sum, a juxtaposition, a
+#: cross-product matrix (not ``|\mathbf{A}|``, refused as a determinant written so)
+_VECTOR_USES = ("shapes do not fit", "no product fits", "expected a 3-vector")
+
 
 def _in(section: str, book: str) -> bool:
     return book == "3" or section == book or section.startswith(book + ".")
@@ -99,18 +106,37 @@ class GlyphReader:
                 sym, _ = self.lend[name]
                 shape = tuple(sym.shape) if isinstance(sym, sp.MatrixSymbol) else ()
                 new[key] = Glyph(key, "*", name, shape, "module", "lent by --module")
+                continue
+            if g.kind == "free" and key not in self.declared \
+                    and self.choices.get(capital_point(key)) == "vector":
+                self.choice_points[capital_point(key)] = CAPITAL_READINGS
+                (v,) = read_lets([f"{key}: vector"])
+                self.notes.append(f"{key}: read as a 3-vector (a bold capital no --let declares: "
+                                  f"3×3 by the convention, which does not fit here; a choice)")
+                new[key] = self._let_glyph(v, f"the reading '{v.text}'")
+                continue
+            x = hat_reading(key, self.choices, self.choice_points) \
+                if g.kind == "free" and key not in self.declared else None
+            if x is not None:  # an undeclared hat: a unit vector or a skew matrix (a choice)
+                self.notes.append(x[1])
+                new[key] = self._let_glyph(x[0], f"the reading '{x[0].text}'", "a reading")
         return new
 
     def _notation_glyph(self, x: Let) -> Glyph:
-        self.declared[x.key] = x
         self.by_notation.add(x.key)
+        return self._let_glyph(x, f"--notation {self.notation.name}: '{x.text}'")
+
+    def _let_glyph(self, x: Let, what: str, meaning: str = "--notation") -> Glyph:
+        """The glyph of a declaration the reader takes as a ``--let`` (a line of
+        ``--notation``, a reading of an undeclared hat): its kind, or its model parsed."""
+        self.declared[x.key] = x
         if x.kind:
             shape, _, words = kind_of(x.kind, x.text)
             return Glyph(x.key, "*", self._name(x.key), shape, "let", words)
-        p = self.parse(f"{x.name} = {x.latex}", f"--notation {self.notation.name}: '{x.text}'")
+        p = self.parse(f"{x.name} = {x.latex}", what)
         rhs = p.chains[0][1]
         self.in_models |= set(p.glyphs) - {x.key}
-        g = Glyph(x.key, "*", self._name(x.key), matrix_shape(rhs) or (), "model", "--notation")
+        g = Glyph(x.key, "*", self._name(x.key), matrix_shape(rhs) or (), "model", meaning)
         self.models[glyph_symbol(g)] = rhs
         self.model_rhs[g.name] = rhs
         return g
@@ -133,6 +159,12 @@ class GlyphReader:
                 if extra:
                     self.over.update(extra)
                     continue
+                if exc.construct == "shapes" and any(  # a free bold capital: a 3-vector too?
+                        w in str(exc) for w in _VECTOR_USES):  # (wave 11; not |A|: a det)
+                    self.choice_points.update({capital_point(k): CAPITAL_READINGS
+                                               for k, g in exc.glyphs.items() if g.kind == "free"
+                                               and k not in (over or {}) and is_capital(k)
+                                               and k not in self.declared})
                 raise self._hint(exc, what) from None
             extra = {k: g for k, g in self._extra(p.glyphs).items() if k not in (over or {})}
             if not extra:
@@ -171,8 +203,11 @@ class GlyphReader:
                 raise LatexError(f"{call}: the parameter {pk} of {x.key} is declared "
                                  f"'{d.text}', the argument {notation.text(a)} is "
                                  f"{_shape_words(shape)}", "shapes")
+            own = self.over.get(pk)  # a --let's vector of that name: its entries here too
             g = Glyph(pk, "*", f"{self._name(x.key)}⟨{self._name(pk)}⟩", shape, "param",
-                      f"parameter of {x.key}")
+                      f"parameter of {x.key}" + (DECLARED_PARAM if own is not None and
+                                                 own.kind in ("let", "model")
+                                                 and tuple(own.shape) == shape else ""))
             over[pk] = g
             subs[glyph_symbol(g)] = a
         self._no_shadowed_model(x, args, call)

@@ -23,6 +23,7 @@ from rigidsym.core.errors import BadInput
 from rigidsym.latex import guards
 from rigidsym.latex.declgraph import glyph_keys
 from rigidsym.latex.kinematics import dot_key
+from rigidsym.latex.hats import no_hat_reading
 from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
@@ -123,6 +124,9 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
             continue
         kept.append(r)
     if not kept:  # no reading type-checks: the first one's error, or its shapes refused
+        hat = no_hat_reading(points, dropped)  # an undeclared hat: its meanings named
+        if hat:
+            raise BadInput(hat)
         if first is None:
             raise error
         return _typed(first)

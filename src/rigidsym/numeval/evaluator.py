@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import accents, motion, names, rates, tilde
+from rigidsym.numeval import accents, entries, hats, motion, names, rates, tilde
 from rigidsym.numeval import values as V
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
@@ -152,8 +152,11 @@ class Env:
             raise NotCovered(f"the undeclared glyph {text_of(tree)}")
         if bold and letter.islower():
             return sample("vector", self.rng)
-        if bold and letter.isupper():
-            return sample("matrix", self.rng)
+        if bold and letter.isupper():  # 3x3 by the convention; a 3-vector where it fails
+            said = self.point.get(" choices", {})  # a choice only where the first failed
+            if said.get(" capitals", True):
+                self.point.setdefault(" met", {})[f"shape {text_of(tree)}"] = ("matrix", "vector")
+            return sample(said.get(f"shape {text_of(tree)}", "matrix"), self.rng)
         return sample("scalar", self.rng)
 
 
@@ -275,11 +278,11 @@ class Evaluator:
         if V.is_matrix(v) and v.cols == 1 and v.rows in (3, 6):
             if inner.data in ("glyph", "accented", "accented_bare"):
                 return V.hat(v)
-            return V.hat(v) if self._choose(f"bracket {text_of(inner)}",
+            return V.hat(v) if self.choose(f"bracket {text_of(inner)}",
                                             ("hat", "group")) == "hat" else v
         return v
 
-    def _choose(self, key: str, options: tuple[str, ...]) -> str:
+    def choose(self, key: str, options: tuple[str, ...]) -> str:
         """The reading taken at the choice point ``key`` (its first option unless the
         enumeration of :func:`residuals` says otherwise); the point recorded as met."""
         self.env.point.setdefault(" met", {})[key] = options
@@ -369,6 +372,9 @@ class Evaluator:
                                                                inner]), _TIME_TREE, t)
         if (v := accents.undeclared_accent(self, t, key)) is not None:  # ~a, a rate (issue 63)
             return v
+        hat = hats.undeclared_hat(self, t, key, text_of(t))  # issue 63: two readings
+        if hat is not None:
+            return hat
         raise NotCovered(f"the undeclared glyph {text_of(t)} (an accent's meaning is the "
                          f"reader's)")
 
@@ -405,35 +411,8 @@ class Evaluator:
         return V.Eye(dims[0]) if dims and dims[0] == dims[1] else None
 
     def _entries(self, t):
-        """``q_{1:3}``: entries 1 to 3 of the vector q (1-based, inclusive)."""
-        if t.data != "glyph" or len(t.children) != 2:
-            return None
-        sub = t.children[1]
-        if not isinstance(sub, lark.Tree) or sub.data != "subscript" or len(sub.children) != 1:
-            return None
-        tok = sub.children[0]
-        if not (isinstance(tok, lark.Token) and tok.type == "SUBRANGE"):
-            if isinstance(tok, lark.Token) and tok.type == "SUBATOM":
-                letter = _base_letter(t)[0]
-                for d in self.env.decls.values():  # q_4 beside a declared q or \mathbf{q}
-                    if isinstance(d.name, lark.Tree) and _base_letter(d.name)[0] == letter \
-                            and _base_letter(d.name)[2] and str(tok).isdigit():
-                        if self._choose(f"entries of {letter}", ("name", "entry")) == "name":
-                            return None
-                        v = self.value(d.name)
-                        k = int(str(tok))
-                        if not V.is_matrix(v) or v.cols != 1 or not 1 <= k <= v.rows:
-                            raise NotCovered(f"{text_of(t)}: entry {k} of {text_of(d.name)}")
-                        return v[k - 1]
-            return None
-        lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
-        base = lark.Tree("glyph", [t.children[0]])
-        v = self.value(base)
-        if not V.is_matrix(v) or v.cols != 1 or not 1 <= lo <= hi <= v.rows:
-            raise NotCovered(f"the entries {text_of(t)}")
-        if lo == hi:
-            return v[lo - 1]
-        return mp.matrix([v[i] for i in range(lo - 1, hi)])
+        """``q_{1:3}``, ``q_4`` of a declared ``\\mathbf{q}``: :mod:`~rigidsym.numeval.entries`."""
+        return entries.entries_of(self, t, _base_letter, text_of)
 
     def r_norm(self, t):
         return V.norm(self.value(self._kids(t)[0]))
@@ -568,7 +547,7 @@ class Evaluator:
                 arg = self.value(args[0])
                 if not V.is_matrix(V.scalar(arg)) and not isinstance(arg, V.Eye | V.Zero):
                     return self.value(f)
-            if self._choose(f"apply {key}", ("product", "apply")) == "apply":
+            if self.choose(f"apply {key}", ("product", "apply")) == "apply":
                 return self.value(f)  # X(\mathbf{y}): X itself, applied
         if d is None or not d.params:
             if many:
@@ -731,24 +710,31 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
         out, met = _at_points(chains, table, points, seed, free, {}, spread, fixed)
     except NotCovered as exc:
         out, met, first_error = [], getattr(exc, "met", {}), exc
+    if first_error is None:  # a free bold capital read as the convention: no choice
+        met = {k: v for k, v in met.items() if not k.startswith("shape ")}
     if not met:
         if first_error is not None:
             raise first_error
         return out
     # choice points: every reading whose evaluation succeeds (sides of one shape) is kept,
     # each with its own reading number; the rule asks all of them to agree
-    keys = sorted(met)[:3]
-    kept, errors = [], []
-    for combo in itertools.product(*(met[k] for k in keys)):
-        try:
-            rs, _ = _at_points(chains, table, points, seed, free,
-                               dict(zip(keys, combo, strict=True)), spread, fixed)
-        except NotCovered as exc:
-            errors.append(exc)
-            continue
-        if rs and any(getattr(r, "unused", False) for r in rs):
-            continue  # a declaration this reading never uses: the reader refuses it
-        kept.append(rs)
+    # a point met only under another reading (a second hat past the first one's) joins
+    keys, kept, errors = [], [], []
+    while set(keys) != set(sorted(met)[:3]):
+        keys, kept, errors, seen = sorted(met)[:3], [], [], dict(met)
+        for combo in itertools.product(*(seen[k] for k in keys)):
+            try:
+                rs, m = _at_points(chains, table, points, seed, free,
+                                   {**dict(zip(keys, combo, strict=True)),
+                                    " capitals": first_error is not None}, spread, fixed)
+            except NotCovered as exc:
+                errors.append(exc)
+                met.update(getattr(exc, "met", {}))
+                continue
+            met.update(m)
+            if rs and any(getattr(r, "unused", False) for r in rs):
+                continue  # a declaration this reading never uses: the reader refuses it
+            kept.append(rs)
     if not kept:
         raise tilde.reported(first_error, errors)  # a tilde's own first: it names the --let
     for n, rs in enumerate(kept):

@@ -37,7 +37,7 @@ from rigidsym.latex.shapes import (
 from rigidsym.latex.table import Glyph, lookup
 from rigidsym.latex.transformer.book_notations import BookNotationRules, sup_word
 from rigidsym.latex.transformer.glyphs import TIME, GlyphKey, GlyphRules
-from rigidsym.latex.transformer.meanings import MeaningRules
+from rigidsym.latex.transformer.meanings import BracketCpm, MeaningRules
 from rigidsym.latex.transformer.rigid_motions import RigidMotionRules
 
 __all__ = ["LatexError", "Relation", "Parsed", "parser"]
@@ -70,12 +70,16 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
         x = items[0]
         if self.block_rows:
             return self._block_row(x)
+        if self.reader and type(value_of(x)) is BracketCpm:  # Shuster's [[u]]
+            return self.double_bracket(value_of(x))
         return self.hat_bracket(x) if self.reader else value_of(x)
 
     def sized(self, items):
         x = items[1]
         if self.block_rows and "[" in str(items[0]):
             return self._block_row(x)
+        if self.reader and "[" in str(items[0]) and type(value_of(x)) is BracketCpm:
+            return self.double_bracket(value_of(x))
         return self.hat_bracket(x) if self.reader and "[" in str(items[0]) else value_of(x)
 
     def _val(self, x):

@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import lark
 import sympy as sp
 
+from rigidsym.latex.entries import DECLARED_PARAM, entry_index
 from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
 from rigidsym.latex.table import lookup
@@ -192,6 +193,17 @@ class GlyphRules:
             vkey = self._key(vbase, [], None)
             g = self.overrides.get(vkey)
             shape = getattr(g, "shape", ())
+            if len(shape) == 2 and shape[1] == 1 and shape[0] > 1 and base[0] != "bold" and (
+                    g.kind != "param" or g.meaning.endswith(DECLARED_PARAM)):
+                try:  # a --let's vector: its entry, counted from 1 (from 0 too: a 4-vector)
+                    at, note = entry_index(key, vkey, k, shape[0], self.choices,
+                                           self.choice_points)
+                except ValueError as exc:
+                    raise LatexError(str(exc), "subscript") from None
+                if at is None:
+                    return None
+                self.readings.append(note)
+                return GlyphKey(key, base, rest, accent, self._symbol(vkey, vbase)[at, 0])
             if len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1:
                 point = f"{key} of {vkey}"
                 self.choice_points.setdefault(point, alternatives(point))
@@ -202,7 +214,25 @@ class GlyphRules:
                 self.readings.append(f"{key}: read as entry {k} of {vkey} (a choice: or a "
                                      f"symbol of its own)")
                 return GlyphKey(key, base, rest, accent, self._symbol(vkey, vbase)[k - 1, 0])
-        return None
+        return self._free_entry(key, base, rest, accent, k)
+
+    def _free_entry(self, key, base, rest, accent, k):
+        r"""``q_k`` outside a function whose parameter ``\mathbf{q}`` no ``--let`` declares,
+        in the reading where the body's ``q_k`` are the parameter's entries: entry k of the
+        free ``\mathbf{q}`` too, so that one notation holds for the letter throughout
+        (Diebel's ``R(\mathbf{q})`` beside ``q_0^2 + ... + q_3^2``: before wave 11 the body
+        read entries and the statement names, two readings of one letter at once)."""
+        vbase = ("bold", base[1])
+        vkey = self._key(vbase, [], None)
+        if self.choices.get(f"{key} of {vkey}") != "entry" or vkey in self.overrides:
+            return None
+        v = self._symbol(vkey, vbase)
+        shape = getattr(v, "shape", ())
+        if not (len(shape) == 2 and shape[1] == 1 and 1 <= k <= shape[0] > 1):
+            return None
+        self.readings.append(f"{key}: read as entry {k} of {vkey} (a choice: or a symbol of "
+                             f"its own)")
+        return GlyphKey(key, base, rest, accent, v[k - 1, 0])
 
     def _slice(self, key, base, rest, accent, pre):
         """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the

@@ -23,6 +23,8 @@ import re
 import sympy as sp
 
 from rigidsym.algebra.operators import Cpm
+from rigidsym.latex.entries import BASE_READINGS, base_words, is_base_point
+from rigidsym.latex.hats import CAPITAL_READINGS, HAT_READINGS
 from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, as_scalar, matrix_shape
 from rigidsym.latex.table import lookup
 
@@ -32,12 +34,21 @@ __all__: list[str] = []
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
-                "index": ("name", "entry"), "tilde": ("skew", "own")}
+                "index": ("name", "entry"), "tilde": ("skew", "own"), "hat": HAT_READINGS,
+                "base": BASE_READINGS, "double": ("cpm", "neg"), "shape": CAPITAL_READINGS}
 
 
 def _kind(key: str) -> str:
     if key == "\\tilde":  # every tilde of a 3-vector (rigidsym.latex.transformer.tilde)
         return "tilde"
+    if key.endswith(" shape"):  # a free bold capital: 3x3 or a 3-vector (latex.hats)
+        return "shape"
+    if key.startswith("[["):  # Shuster's [[u]]: the cross-product matrix or its negative
+        return "double"
+    if is_base_point(key):  # a 4-vector's entries counted from 1 or 0 (latex.entries)
+        return "base"
+    if key.endswith(" hat"):  # an undeclared \hat{X} (rigidsym.latex.hats)
+        return "hat"
     return "bracket" if key.startswith("[") else "index" if " of " in key else "apply"
 
 
@@ -54,6 +65,16 @@ def said(key: str, choice: str) -> str:
     if _kind(key) == "tilde":
         return ("each \\tilde{x} of a 3-vector " + ("a vector of its own" if choice == "own"
                                                     else "its cross-product matrix [x]_\\times"))
+    if _kind(key) == "shape":
+        return f"{key[:-6]} {'a 3-vector' if choice == 'vector' else 'a 3×3 matrix'}"
+    if _kind(key) == "double":
+        return f"{key} {'-' if choice == 'neg' else ''}[{key[2:-2]}]_×"
+    if _kind(key) == "base":
+        return base_words(key, choice)
+    if _kind(key) == "hat":
+        hat = key[:-4]
+        return (f"{hat} the skew matrix of {hat[5:-1]}" if choice == "skew" else
+                f"{hat} a unit vector of its own")
     if _kind(key) == "index":
         name, vec = key.split(" of ", 1)
         k = name.rsplit("_{", 1)[-1].rstrip("}")
@@ -289,6 +310,26 @@ class MeaningRules:
         if sup is not None:
             arg = self.power([arg, sup])
         return self.mul([f, arg])
+
+    def double_bracket(self, h):
+        r"""Shuster's ``[[\mathbf{u}]]`` (``h``, the hat the inner bracket read): the
+        cross-product matrix ``[u]_\times`` or its negative, a choice point (wave 11). His
+        survey (1993) defines it with the sign of its passive attitude matrix, and the two
+        readings of the books disagree on that sign (the corpus's note: the negative, his
+        (57)), so neither is guessed: where both give one verdict (``[[u]]^2``, every even
+        power) it is decided, else refused naming the choice (before wave 11 any
+        ``[[u]]`` was refused: "unknown bracket")."""
+        from rigidsym.printing import notation
+
+        u = h.args[0]
+        key = f"[[{notation.text(u)}]]"
+        self.choice_points.setdefault(key, alternatives(key))
+        if self.choices.get(key) == "neg":
+            self._note(f"{key}: read as -[{notation.text(u)}]_× (a choice: or "
+                       f"[{notation.text(u)}]_×)")
+            return sp.MatMul(-1, Cpm(u))
+        self._note(f"{key}: read as [{notation.text(u)}]_× (a choice: or its negative)")
+        return Cpm(u)
 
     def _sized(self, key, base, rest, accent):
         """An identity or zero the subscript sizes (module docstring), else ``None``."""
