@@ -22,8 +22,8 @@ import sympy as sp
 from rigidsym.core.errors import BadInput
 from rigidsym.latex import guards
 from rigidsym.latex.declgraph import glyph_keys
-from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.hats import no_hat_reading
+from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
