@@ -636,8 +636,8 @@ AFTER = {
     'sha-rod-ep': 'right',
     'sha-rod-ep-slip': 'right',
     'sha-gbar-gbart': 'right',
-    'k-sha-body': 'refused',
-    'k-sha-space': 'refused',
+    'k-sha-body': 'right',
+    'k-sha-space': 'right',
 }
 
 #: after the reader's one attempt (:data:`ATTEMPT`), with the session's fixes

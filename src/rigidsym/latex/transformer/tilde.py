@@ -34,7 +34,7 @@ def tilde_of(tr, key: str, inner):
         key: the tilde glyph's key, ``\\tilde{\\mathbf{a}}``.
         inner: the :class:`~rigidsym.latex.transformer.glyphs.GlyphKey` under the tilde.
     """
-    from rigidsym.latex.transformer.meanings import alternatives, as_written
+    from rigidsym.latex.transformer.meanings import alternatives
 
     if not getattr(tr, "reader", False) or key in tr.overrides \
             or matrix_shape(inner.value) != (3, 1):
@@ -46,7 +46,8 @@ def tilde_of(tr, key: str, inner):
         return None
     tr._note(f"{key}: the cross-product matrix [{inner.key}]_\\times, as in Wittenburg, "
              f"Shabana, Greenwood, Schaub & Junkins (a choice: or a vector of its own)")
-    return as_written(rigid_motions.hat(inner.value))
+    # the chapter's CPM, not a reader's bracket: [\tilde{a}] is then never Shuster's [[a]]
+    return rigid_motions.hat(inner.value)
 
 
 def own_tilde(tr, x) -> None:
