@@ -36,8 +36,8 @@ _PYTHON_CHECKED = frozenset({"inertia_at_point", "inertia_dyad_at_point"})
 SOA_F32 = frozenset({"rotation_from_euler_rodrigues"})
 #: the same in float64: K1's row-major loop (4 strided loads, 9 strided stores a sample) is
 #: scalar, with a division; through local columns it vectorises (callgrind 88 -> 47
-#: instructions a sample, the peer benchmark's outputs-allocated regime 1.07-1.11 -> 0.97-0.99
-#: of the fastest peer, benchmarks/RESULTS.md)
+#: instructions a sample; the peer benchmark, N = 1e6, 1.22 -> 0.95 of the fastest peer,
+#: benchmarks/RESULTS.md)
 SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
 
 
