@@ -45,7 +45,7 @@ VARIANT = ""
 def _driver():
     """rigidsym.kernels.cbuild.driver, loaded by path (standard library only: the harness's
     environment need not have rigidsym's dependencies)."""
-    path = ROOT / "src" / "rigidsym" / "kernels" / "_build.py"
+    path = ROOT / "src" / "rigidsym" / "kernels" / "cbuild" / "driver.py"
     spec = importlib.util.spec_from_file_location("_rigidsym_build", path)
     mod = importlib.util.module_from_spec(spec)
     sys.modules[spec.name] = mod

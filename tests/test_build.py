@@ -419,13 +419,16 @@ def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
                                       "double g(double x) { return x * x; }\n")
     (tmp_path / "plain2.c").write_text("double cosh_like(double x) { return x; }\n")
     (tmp_path / "rigidsym_table.c").write_text("/* table */\n")
+    # no sin/cos, but measured faster on x86-64-v4 (issue 67): compiled there too
+    (tmp_path / "instant_screw_point_pitch.c").write_text("double f(double x) { return x; }\n")
     srcs = sorted(tmp_path.glob("*.c"))
     plan, aliases = _paths.partial_plan(_paths.X86_PATHS, srcs, "rigidsym_table.c")
     names = {k: sorted(p.name for p in v) for k, v in plan.items()}
     assert names["v3"] == names["v2"] == sorted(p.name for p in srcs)
     if sys.platform.startswith("linux"):
         # a text match: a comment naming sin( counts, which only costs a compile
-        assert names["v4"] == ["plain.c", "rigidsym_table.c", "trig.c"]
+        assert names["v4"] == ["instant_screw_point_pitch.c", "plain.c", "rigidsym_table.c",
+                               "trig.c"]
         assert "-Wl,--defsym,rigidsym_plain2_threads_v4=rigidsym_plain2_threads_v3" in aliases
         assert not any("trig" in a or "table" in a for a in aliases)
     # without a path after it, a trig_only path compiles everything

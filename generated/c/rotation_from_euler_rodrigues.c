@@ -47,13 +47,46 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes(
     double *RIGIDSYM_RESTRICT out_Q)
 {
     int64_t count = 0;
-    /* branch-free so that the compiler can vectorise it */
-    RIGIDSYM_SIMD_COUNT
+    /* Structure of arrays (issue 67): the samples' inputs transposed into local columns,
+     * the sample function run over them in a plain loop that the compiler vectorises with
+     * contiguous loads (no gathers), its outputs transposed back. The same IEEE operations
+     * per sample (no contraction: -ffp-contract=off, and none in float32), so the same
+     * bits as the row-major loop; chosen where it measured faster (benchmarks/soa_check.py,
+     * the peer benchmark). */
+    RIGIDSYM_ALIGNED double c_eta[4][RIGIDSYM_LANES];
+    RIGIDSYM_ALIGNED double r_Q[9][RIGIDSYM_LANES];
     for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+        c_eta[0][j] = in_eta[4 * j + 0];
+        c_eta[1][j] = in_eta[4 * j + 1];
+        c_eta[2][j] = in_eta[4 * j + 2];
+        c_eta[3][j] = in_eta[4 * j + 3];
+    }
+    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+        double x_eta[4] = {c_eta[0][j], c_eta[1][j], c_eta[2][j], c_eta[3][j]};
+        double y_Q[9];
         count += (int64_t)(rigidsym_rotation_from_euler_rodrigues_sample(
-            in_eta + 4 * j,
-            out_Q + 9 * j) != 0) << j;
-
+            x_eta,
+            y_Q) != 0) << j;
+        r_Q[0][j] = y_Q[0];
+        r_Q[1][j] = y_Q[1];
+        r_Q[2][j] = y_Q[2];
+        r_Q[3][j] = y_Q[3];
+        r_Q[4][j] = y_Q[4];
+        r_Q[5][j] = y_Q[5];
+        r_Q[6][j] = y_Q[6];
+        r_Q[7][j] = y_Q[7];
+        r_Q[8][j] = y_Q[8];
+    }
+    for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
+        out_Q[9 * j + 0] = r_Q[0][j];
+        out_Q[9 * j + 1] = r_Q[1][j];
+        out_Q[9 * j + 2] = r_Q[2][j];
+        out_Q[9 * j + 3] = r_Q[3][j];
+        out_Q[9 * j + 4] = r_Q[4][j];
+        out_Q[9 * j + 5] = r_Q[5][j];
+        out_Q[9 * j + 6] = r_Q[6][j];
+        out_Q[9 * j + 7] = r_Q[7][j];
+        out_Q[9 * j + 8] = r_Q[8][j];
     }
     return count;
 }
@@ -68,8 +101,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes_f3
     /* Structure of arrays (issue 67): the samples' inputs transposed into local columns,
      * the sample function run over them in a plain loop that the compiler vectorises with
      * contiguous loads (no gathers), its outputs transposed back. The same IEEE operations
-     * per sample (no contraction in float32), so the same bits as the row-major loop;
-     * chosen where it measured faster (benchmarks/soa_check.py). */
+     * per sample (no contraction: -ffp-contract=off, and none in float32), so the same
+     * bits as the row-major loop; chosen where it measured faster (benchmarks/soa_check.py,
+     * the peer benchmark). */
     RIGIDSYM_ALIGNED float c_eta[4][RIGIDSYM_LANES_F32];
     RIGIDSYM_ALIGNED float r_Q[9][RIGIDSYM_LANES_F32];
     for (int64_t j = 0; j < RIGIDSYM_LANES_F32; ++j) {

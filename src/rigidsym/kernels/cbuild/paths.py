@@ -5,10 +5,12 @@ As in NumPy's dispatcher, every kernel is compiled once per path; the module pic
 path the CPU runs at import. The x86-64-v4 path compiles only the kernels that call ``sin``
 or ``cos``: what it buys is 8-wide AVX-512 sin/cos in their SIMD loops (libmvec's then,
 measured 0.83-0.92x the x86-64-v3 time on the trigonometric K3 and K5; the generated
-header's own since issue 37, level on K1, K4 and K6, which call neither:
-``benchmarks/RESULTS.md``), and those 34 of 134 kernels cost 29 % of its compile time for
-nothing (issue 27). The others' x86-64-v4 entries are the x86-64-v3 functions, aliased at
-link time (``--defsym``, GNU ld). Standard library only (``setup.py`` loads it by path).
+header's own since issue 37: ``benchmarks/RESULTS.md``), and those 34 of 134 kernels cost
+29 % of its compile time for nothing (issue 27); and the few of :data:`V4_KERNELS`, which
+call neither but measured faster there in issue 67's measure (outputs allocated, N = 1e6:
+their range test and lanes loop run 8 doubles wide). The others' x86-64-v4 entries are the
+x86-64-v3 functions, aliased at link time (``--defsym``, GNU ld). Standard library only
+(``setup.py`` loads it by path).
 """
 
 from __future__ import annotations
@@ -21,7 +23,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["IsaPath", "X86_V4", "X86_PATHS", "NATIVE", "BASELINE", "default_paths",
+__all__ = ["IsaPath", "X86_V4", "V4_KERNELS", "X86_PATHS", "NATIVE", "BASELINE", "default_paths",
            "host_paths", "cpu_features", "calls_trig", "partial_plan"]
 
 @dataclass(frozen=True)
@@ -40,6 +42,12 @@ class IsaPath:
 #: K5 (libmvec's 8-wide _ZGVeN8v_sin/cos), level on K1, K4, K6 (benchmarks/RESULTS.md), and
 #: what keeps the default build within 1.10x of -march=native on K3 on an AVX-512 CPU
 X86_V4 = IsaPath("v4", "x86-64-v4", ("-march=x86-64-v4",), trig_only=True)
+#: kernels without sin/cos that the x86-64-v4 path compiles too, where it measured faster
+#: (issue 67, the peer benchmark's K1, K4, K6 at N = 1e6, outputs allocated: 0.97 -> 0.93,
+#: 1.11-1.14 -> 1.03-1.05 and 1.14-1.16 -> 1.07-1.08 of the fastest peer; their range test
+#: and lanes loop run 8 doubles wide; benchmarks/RESULTS.md)
+V4_KERNELS = frozenset({"rotation_from_euler_rodrigues", "instant_screw_point_pitch",
+                        "newton_euler_residual"})
 X86_PATHS = (X86_V4, IsaPath("v3", "x86-64-v3", ("-march=x86-64-v3",)),
              IsaPath("v2", "x86-64-v2", ("-march=x86-64-v2",)))
 NATIVE = IsaPath("native", "native", ("-march=native",))
@@ -155,7 +163,8 @@ def calls_trig(src: Path) -> bool:
 def partial_plan(paths: tuple[IsaPath, ...], sources: list[Path],
                  table: str) -> tuple[dict[str, list[Path]], list[str]]:
     """The sources each path compiles, by suffix, and the linker's aliases (``--defsym``
-    flags) that give a ``trig_only`` path the next path's functions for the others. A
+    flags) that give a ``trig_only`` path the next path's functions for the others (the
+    sources calling sin or cos and those of :data:`V4_KERNELS` are its own). A
     ``trig_only`` path compiles everything when no path follows it or the linker is not GNU
     ld's kind (not Linux)."""
     plan, aliases = {}, []
@@ -164,7 +173,8 @@ def partial_plan(paths: tuple[IsaPath, ...], sources: list[Path],
         if not (path.trig_only and i + 1 < len(paths) and sys.platform.startswith("linux")):
             continue
         nxt = paths[i + 1].suffix
-        plan[path.suffix] = [s for s in sources if s.name == table or calls_trig(s)]
+        plan[path.suffix] = [s for s in sources
+                             if s.name == table or s.stem in V4_KERNELS or calls_trig(s)]
         for s in sources:
             if s not in plan[path.suffix]:
                 aliases += [f"-Wl,--defsym,rigidsym_{s.stem}{e}_{path.suffix}="

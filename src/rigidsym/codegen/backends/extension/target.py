@@ -32,8 +32,13 @@ _PYTHON_CHECKED = frozenset({"inertia_at_point", "inertia_dyad_at_point"})
 #: kernels whose float32 lanes function reads its samples through local columns (structure
 #: of arrays, issue 67): where that measured faster than the row-major loop, which gcc
 #: leaves scalar for them (``benchmarks/soa_check.py``, ``benchmarks/RESULTS.md``); slower
-#: for kernels whose row-major loop vectorises (K4, K6) and in float64, so not the default
+#: for kernels whose row-major loop vectorises (K4, K6), so not the default
 SOA_F32 = frozenset({"rotation_from_euler_rodrigues"})
+#: the same in float64: K1's row-major loop (4 strided loads, 9 strided stores a sample) is
+#: scalar, with a division; through local columns it vectorises (callgrind 88 -> 47
+#: instructions a sample; the peer benchmark, N = 1e6, 1.22 -> 0.95 of the fastest peer,
+#: benchmarks/RESULTS.md)
+SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
 
 
 def _kernel(env, kc, ctx: RenderContext) -> dict[str, str]:
@@ -59,6 +64,7 @@ def _kernel(env, kc, ctx: RenderContext) -> dict[str, str]:
                                                  used=used, trig=trig_plan(kc, cp),
                                                  never_singular=never_singular,
                                                  soa_f32=k.name in SOA_F32,
+                                                 soa_f64=k.name in SOA_F64,
                                                  f32=f32_code(kc), **common)
     return files
 
