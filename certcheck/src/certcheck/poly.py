@@ -13,6 +13,8 @@ path: the answers are the same, a test compares them).
 
 from __future__ import annotations
 
+import heapq
+
 WIDTH = 16
 MASK = (1 << WIDTH) - 1
 MAX_DEGREE = MASK
@@ -148,6 +150,45 @@ class Ring:
     def nterms(self, p: Poly) -> int:
         return len(p.terms)
 
+    def divexact(self, p: Poly, f: Poly) -> Poly | None:
+        """``p / f`` when ``f`` (primitive, not zero) divides ``p`` exactly, else ``None``:
+        the division algorithm in the packed order (an integer's order on the packed
+        monomials is a monomial order), the remainder's terms taken from the highest by a
+        heap; by Gauss's lemma a primitive ``f`` dividing ``p`` over Q gives an integer
+        quotient, so a coefficient that does not divide stops it."""
+        if not p.terms:
+            return p
+        if max(p.deg, f.deg) >= 1 << (WIDTH - 1):
+            return None  # the guard bits below need exponents under 2^15 (never cancelled)
+        lead = max(f.terms)
+        lc = f.terms[lead]
+        rest = [(m - lead, c) for m, c in f.terms.items() if m != lead]
+        guard = sum(1 << (WIDTH * i + WIDTH - 1) for i in range(len(self.names) + 1))
+        pending = dict(p.terms)
+        heap = [-m for m in pending]
+        heapq.heapify(heap)
+        q = {}
+        while heap:
+            m = -heapq.heappop(heap)
+            c = pending.pop(m)
+            if not c:
+                continue
+            if ((m | guard) - lead) & guard != guard:
+                return None  # the remainder's leading monomial is not a multiple of f's
+            qc, r = divmod(c, lc)
+            if r:
+                return None
+            q[m - lead] = qc
+            for d, fc in rest:  # m + d < m: a monomial once popped never comes back
+                k = m + d
+                v = pending.get(k)
+                if v is None:
+                    pending[k] = -qc * fc
+                    heapq.heappush(heap, -k)
+                else:
+                    pending[k] = v - qc * fc
+        return Poly(q, p.deg)
+
 
 class FlintRing(Ring):
     """The same operations on python-flint's ``fmpz_mpoly`` (optional fast path)."""
@@ -201,6 +242,11 @@ class FlintRing(Ring):
 
     def nterms(self, p) -> int:
         return len(p)
+
+    def divexact(self, p, f):
+        """``p / f`` when ``f`` divides ``p`` exactly (remainder zero), else ``None``."""
+        q, r = divmod(p, f)
+        return q if r.is_zero() else None
 
 
 def make_ring(names: list[str], fast: bool = True) -> Ring:
