@@ -7,10 +7,8 @@ exponent. Adding brings both to the lowest exponent of each factor; no gcd is ev
 so the representation is not unique, but it is always a correct one: a factor is stored
 only after it is checked to be a non-zero polynomial, so the element is the zero rational
 function exactly when ``num`` is the zero polynomial. A factor of the denominator that
-divides ``num`` exactly (:meth:`certcheck.poly.Ring.divexact`: the division algorithm, no
-gcd) is cancelled at once, so ``c = q_O / m`` with ``q_O = m o`` is ``o`` and a quaternion
-rotation's angular velocity is its numerator over ``n``, not over ``n^3``: a moving body's
-expressions stay the size of their values instead of growing by the factors' powers.
+divides ``num`` is cancelled at once (:meth:`certcheck.poly.Ring.divexact`, no gcd): ``q_O /
+m`` with ``q_O = m o`` is ``o``, so a moving body's expressions stay the size of their values.
 
 The time derivative :meth:`Field.d` acts on the polynomials by the chain rule over jet
 variables: ``d(x_k) = x_(k+1)`` for the variables :attr:`Field.next` maps.

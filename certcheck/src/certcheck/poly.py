@@ -14,6 +14,7 @@ path: the answers are the same, a test compares them).
 from __future__ import annotations
 
 import heapq
+from math import gcd
 
 WIDTH = 16
 MASK = (1 << WIDTH) - 1
@@ -103,18 +104,10 @@ class Ring:
 
     def constant(self, p: Poly):
         """The constant ``int`` when ``p`` is one, else ``None``."""
-        if not p.terms:
-            return 0
-        if len(p.terms) == 1 and 0 in p.terms:
-            return p.terms[0]
-        return None
+        return None if p.terms.keys() - {0} else p.terms.get(0, 0)
 
     def content(self, p: Poly) -> int:
-        from math import gcd
-        g = 0
-        for c in p.terms.values():
-            g = gcd(g, c)
-        return g
+        return gcd(*p.terms.values())  # 0 for the zero polynomial
 
     def scale_div(self, p: Poly, d: int) -> Poly:
         return Poly({m: c // d for m, c in p.terms.items()}, p.deg)
@@ -151,42 +144,31 @@ class Ring:
         return len(p.terms)
 
     def divexact(self, p: Poly, f: Poly) -> Poly | None:
-        """``p / f`` when ``f`` (primitive, not zero) divides ``p`` exactly, else ``None``:
-        the division algorithm in the packed order (an integer's order on the packed
-        monomials is a monomial order), the remainder's terms taken from the highest by a
-        heap; by Gauss's lemma a primitive ``f`` dividing ``p`` over Q gives an integer
-        quotient, so a coefficient that does not divide stops it."""
-        if not p.terms:
-            return p
-        if max(p.deg, f.deg) >= 1 << (WIDTH - 1):
-            return None  # the guard bits below need exponents under 2^15 (never cancelled)
+        """``p / f`` when the primitive ``f`` divides ``p``, else ``None``: division by the
+        leading term in the packed order (a monomial order), the remainder's highest term
+        first; the quotient is integral (Gauss's lemma), so a coefficient that does not
+        divide stops it, as does a leading monomial that is not a multiple of f's."""
+        if max(p.deg, f.deg) >= 1 << (WIDTH - 1):  # the guard bits need exponents < 2^15
+            return None
         lead = max(f.terms)
-        lc = f.terms[lead]
-        rest = [(m - lead, c) for m, c in f.terms.items() if m != lead]
+        lc, rest = f.terms[lead], [(m - lead, c) for m, c in f.terms.items() if m != lead]
         guard = sum(1 << (WIDTH * i + WIDTH - 1) for i in range(len(self.names) + 1))
-        pending = dict(p.terms)
+        pending, q = dict(p.terms), {}
         heap = [-m for m in pending]
         heapq.heapify(heap)
-        q = {}
         while heap:
             m = -heapq.heappop(heap)
-            c = pending.pop(m)
-            if not c:
+            if not (c := pending.pop(m)):
                 continue
-            if ((m | guard) - lead) & guard != guard:
-                return None  # the remainder's leading monomial is not a multiple of f's
-            qc, r = divmod(c, lc)
-            if r:
+            if ((m | guard) - lead) & guard != guard or c % lc:
                 return None
-            q[m - lead] = qc
-            for d, fc in rest:  # m + d < m: a monomial once popped never comes back
-                k = m + d
-                v = pending.get(k)
-                if v is None:
+            q[m - lead] = qc = c // lc
+            for d, fc in rest:  # m + d < m: a monomial popped never comes back
+                if (k := m + d) in pending:
+                    pending[k] -= qc * fc
+                else:
                     pending[k] = -qc * fc
                     heapq.heappush(heap, -k)
-                else:
-                    pending[k] = v - qc * fc
         return Poly(q, p.deg)
 
 
@@ -244,8 +226,7 @@ class FlintRing(Ring):
         return len(p)
 
     def divexact(self, p, f):
-        """``p / f`` when ``f`` divides ``p`` exactly (remainder zero), else ``None``."""
-        q, r = divmod(p, f)
+        q, r = divmod(p, f)  # p / f when the remainder is zero, else None
         return q if r.is_zero() else None
 
 
