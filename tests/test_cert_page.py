@@ -654,6 +654,7 @@ def test_moving_body_integrals_read_firmly_and_tamperings_rejected(moving_read):
                    "model's body" in x and "\\dot{\\mathbf{p}}" in x for x in lines), lines
         other = "3.144" if i == "3.126" else "3.126"
         mass = [mass_changed(c)] if i == "3.126" else []
+        assert velocity_changed(c) is not None, i  # the body line gives the particles' rates
         for t in (*mass, velocity_changed(c), another_printed_text(c, book, other)):
             assert f"({i})" in _rejected(t, book), i
 
