@@ -207,6 +207,59 @@ def test_identity_iff_zero(coeffs, c0):
                 check_certificate(c, fast=fast)
 
 
+_poly_terms = st.lists(st.tuples(st.integers(-5, 5), st.integers(0, 3), st.integers(0, 3),
+                                 st.integers(0, 2)), min_size=1, max_size=6)
+
+
+def _poly(R, terms):
+    x = [R.var(i) for i in range(3)]
+    out = R.const(0)
+    for c, a, b, e in terms:
+        out = out + R.const(c) * x[0] ** a * x[1] ** b * x[2] ** e
+    return out
+
+
+@settings(max_examples=30, deadline=None)
+@given(g=_poly_terms, f=_poly_terms)
+def test_exact_division_finds_exactly_the_factors(g, f):
+    """Ring.divexact (issue 65): for a primitive non-constant f, (g f) / f is g and g f + 1
+    is no multiple of f (f would divide 1); python-flint's path answers the same."""
+    from certcheck.poly import FlintRing, Ring
+
+    rings = [Ring(["x", "y", "z"])]
+    try:
+        rings.append(FlintRing(["x", "y", "z"]))
+    except ImportError:
+        pass
+    for R in rings:
+        fp, gp = _poly(R, f), _poly(R, g)
+        if R.constant(fp) is not None or R.is_zero(gp):
+            continue
+        fp = R.scale_div(fp, R.content(fp))
+        q = R.divexact(gp * fp, fp)
+        assert q is not None and R.is_zero(q - gp)
+        assert R.divexact(gp * fp + R.const(1), fp) is None
+
+
+def test_field_cancels_a_dividing_factor_of_the_denominator():
+    """The centroid c = q_O / m with q_O = m o (m = m_1 + m_2) is o over no denominator
+    (issue 65: the factor cancelled at once), m o^2 / m / m is o^2 over one m, and o / m
+    keeps its m; each value at an exact point is the rational function's."""
+    from certcheck.field import Field
+    from certcheck.poly import make_ring
+
+    at = [Fraction(2), Fraction(3, 2), Fraction(-5, 7)]
+    for fast in (True, False):
+        F = Field(make_ring(["m_1", "m_2", "o"], fast))
+        m, o = F.add(F.var(0), F.var(1)), F.var(2)
+        centroid = F.div(F.mul(m, o), m)
+        assert centroid[2] == {} and F.is_zero(F.sub(centroid, o))
+        c = F.div(F.div(F.mul(m, F.mul(o, o)), m), m)
+        assert sorted(c[2].values()) == [-1], c[2]
+        assert F.value(c, at) == at[2] ** 2 / (at[0] + at[1])
+        assert F.div(o, m)[2] and F.value(F.div(o, m), at) == at[2] / (at[0] + at[1])
+
+
 def test_bare_angle_is_transcendental():
     """phi = 2 atan(1/2) is transcendental: phi - 1 is not zero there; cos(phi) at tan = 0
     is 1, so cos(phi) = 1 is no counterexample there."""

@@ -6,7 +6,9 @@ from the index of a *factor* (a non-zero polynomial in :attr:`Field.factors`) to
 exponent. Adding brings both to the lowest exponent of each factor; no gcd is ever taken,
 so the representation is not unique, but it is always a correct one: a factor is stored
 only after it is checked to be a non-zero polynomial, so the element is the zero rational
-function exactly when ``num`` is the zero polynomial.
+function exactly when ``num`` is the zero polynomial. A factor of the denominator that
+divides ``num`` is cancelled at once (:meth:`certcheck.poly.Ring.divexact`, no gcd): ``q_O /
+m`` with ``q_O = m o`` is ``o``, so a moving body's expressions stay the size of their values.
 
 The time derivative :meth:`Field.d` acts on the polynomials by the chain rule over jet
 variables: ``d(x_k) = x_(k+1)`` for the variables :attr:`Field.next` maps.
@@ -66,6 +68,10 @@ class Field:
     def _norm(self, num, c: int, F: dict) -> tuple:
         if self.ring.is_zero(num):
             return self.zero
+        for i, e in F.items():  # a factor of the denominator that divides num: cancelled
+            while e < 0 and (q := self.ring.divexact(num, self.factors[i])) is not None:
+                num, e = q, e + 1
+            F[i] = e
         g = gcd(self.ring.content(num), c)
         if g > 1:
             num, c = self.ring.scale_div(num, g), c // g

@@ -13,6 +13,9 @@ path: the answers are the same, a test compares them).
 
 from __future__ import annotations
 
+import heapq
+from math import gcd
+
 WIDTH = 16
 MASK = (1 << WIDTH) - 1
 MAX_DEGREE = MASK
@@ -101,18 +104,10 @@ class Ring:
 
     def constant(self, p: Poly):
         """The constant ``int`` when ``p`` is one, else ``None``."""
-        if not p.terms:
-            return 0
-        if len(p.terms) == 1 and 0 in p.terms:
-            return p.terms[0]
-        return None
+        return None if p.terms.keys() - {0} else p.terms.get(0, 0)
 
     def content(self, p: Poly) -> int:
-        from math import gcd
-        g = 0
-        for c in p.terms.values():
-            g = gcd(g, c)
-        return g
+        return gcd(*p.terms.values())  # 0 for the zero polynomial
 
     def scale_div(self, p: Poly, d: int) -> Poly:
         return Poly({m: c // d for m, c in p.terms.items()}, p.deg)
@@ -147,6 +142,34 @@ class Ring:
 
     def nterms(self, p: Poly) -> int:
         return len(p.terms)
+
+    def divexact(self, p: Poly, f: Poly) -> Poly | None:
+        """``p / f`` when the primitive ``f`` divides ``p``, else ``None``: division by the
+        leading term in the packed order (a monomial order), the remainder's highest term
+        first; the quotient is integral (Gauss's lemma), so a coefficient that does not
+        divide stops it, as does a leading monomial that is not a multiple of f's."""
+        if max(p.deg, f.deg) >= 1 << (WIDTH - 1):  # the guard bits need exponents < 2^15
+            return None
+        lead = max(f.terms)
+        lc, rest = f.terms[lead], [(m - lead, c) for m, c in f.terms.items() if m != lead]
+        guard = sum(1 << (WIDTH * i + WIDTH - 1) for i in range(len(self.names) + 1))
+        pending, q = dict(p.terms), {}
+        heap = [-m for m in pending]
+        heapq.heapify(heap)
+        while heap:
+            m = -heapq.heappop(heap)
+            if not (c := pending.pop(m)):
+                continue
+            if ((m | guard) - lead) & guard != guard or c % lc:
+                return None
+            q[m - lead] = qc = c // lc
+            for d, fc in rest:  # m + d < m: a monomial popped never comes back
+                if (k := m + d) in pending:
+                    pending[k] -= qc * fc
+                else:
+                    pending[k] = -qc * fc
+                    heapq.heappush(heap, -k)
+        return Poly(q, p.deg)
 
 
 class FlintRing(Ring):
@@ -201,6 +224,10 @@ class FlintRing(Ring):
 
     def nterms(self, p) -> int:
         return len(p)
+
+    def divexact(self, p, f):
+        q, r = divmod(p, f)  # p / f when the remainder is zero, else None
+        return q if r.is_zero() else None
 
 
 def make_ring(names: list[str], fast: bool = True) -> Ring:

@@ -7,7 +7,11 @@ masses ``m_i`` at ``p_i = o + Q rho_i`` with body coordinates ``rho_i = m_4 s_i`
 4``) and ``rho_4 = -(m_1 s_1 + m_2 s_2 + m_3 s_3)``; the book's integral ``\\int_B rho f
 dB`` over it is the sum of ``m_i f(p_i)``. The line of the integral sign lists the
 particles, each a small table of its own glyphs (its mass as ``\\rho``, its position as
-``\\mathbf{p}`` and their rates); certcheck reads an integrand once per particle under it.
+``\\mathbf{p}`` and, for a moving body (the table gives ``\\dot{\\mathbf{Q}}`` or
+``\\dot{\\mathbf{o}}``), their rates); certcheck reads an integrand once per particle under
+it. A moving body's integrals cost certcheck under 2 s of CPU per id without python-flint
+since its field cancels a denominator's factors as soon as they divide (issue 65; they took
+20-40 s before, and a moving body had no line).
 Every other line cites the page: ``m`` as printed in (3.123), ``I_C`` as printed under the
 brace of (3.130), ``c``'s rates from (3.124)-(3.125) with ``m`` constant; ``r``, ``q_O``,
 ``c``, ``T``, ``I_A`` the reader takes from their printed definitions (``\\equiv``).
@@ -18,15 +22,10 @@ from __future__ import annotations
 __all__ = ["point_body_symbols"]
 
 #: the model's words on the integral sign, printed by certcheck beside the page
-BODY_WORDS = ("body of four point masses m_i at p_i = o + Q rho_i (Q = 1 at rest), rho_i = "
-              "m_4 s_i (i < 4), rho_4 = -(m_1 s_1 + m_2 s_2 + m_3 s_3): the integral of "
-              "rho f over B is the sum of m_i f(p_i)")
-
-#: why a moving body has no line: certcheck's pure-Python arithmetic takes 20-40 s of CPU
-#: per printed side of a moving body's integrals (3.144's T through (3.126): 40 s), past
-#: the 1.25x time budget of the chapter's check; the rates' lines below are kept for when
-#: it is faster
-MOVING_WHY = "reading a moving body's integrals costs 20-40 s of CPU per side without flint"
+BODY_WORDS = ("body of four point masses m_i at p_i = o + Q rho_i (Q = 1 at rest; moving, "
+              "their rates o' + Q' rho_i and o'' + Q'' rho_i), rho_i = m_4 s_i (i < 4), "
+              "rho_4 = -(m_1 s_1 + m_2 s_2 + m_3 s_3): the integral of rho f over B is the "
+              "sum of m_i f(p_i)")
 
 _IC = (r"\int_{\mathcal{B}} \rho (\|\mathbf{r}\|^2 \mathbf{1} - \mathbf{r}\mathbf{r}^T) "
        r"d\mathcal{B}")
@@ -69,9 +68,7 @@ def point_body_symbols(have: set, section: str) -> list[dict]:
                  "particles": [{"\\rho": m} for m in ms]},
                 {"glyph": "m", "latex": r"\int_{\mathcal{B}} \rho d\mathcal{B}",
                  "model": "mass as printed in (3.123)"}][:1 + ("m" not in have)]
-    if {"\\dot{\\mathbf{Q}}", "\\dot{\\mathbf{o}}"} & have:  # see MOVING_WHY
-        return []
-    moving = False
+    moving = bool({"\\dot{\\mathbf{Q}}", "\\dot{\\mathbf{o}}"} & have)
     rho = [f"{ms[3]}\\mathbf{{s}}_{i}" for i in (1, 2, 3)]
     rho.append("-(" + " + ".join(f"{ms[i]}\\mathbf{{s}}_{i + 1}" for i in range(3)) + ")")
     parts = []
