@@ -78,7 +78,7 @@ def _book() -> str:
 
 def _rejected(cert: dict, book: str) -> str:
     """The message of certcheck's rejection (page, cause, reader or mathematics)."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     i = cert["id"]
     try:
@@ -240,7 +240,7 @@ def test_tamperings_rejected_naming_the_id(five):
 def test_reader_rejects_what_is_not_printed(five):
     """3.96e's corrected form claimed as printed and verified; a printed side doubled where
     the reader reads it; the unit vector e declared free in the symbol table."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = five
     book = _book()
@@ -294,7 +294,7 @@ def chapter(tmp_path_factory):
 def test_chapter_tamperings_rejected(chapter):
     """Every id: another id's statement, another printed text, 0 = 0, the other verdicts,
     a point off the sphere, a cause dropped: each rejected, naming the id."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = chapter
     book = _book()
@@ -319,7 +319,7 @@ def test_chapter_tamperings_rejected(chapter):
 def test_chapter_shifted_sides_rejected_where_read(chapter):
     """Where the reader reads a printed side, both sides shifted by 1 (the relation proved
     unchanged) is rejected (for a definition too: checked against the page)."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = chapter
     book = _book()
@@ -486,7 +486,7 @@ def test_reader_notation_frames_braces_norms_powers():
 def test_reader_a_glyph_defined_here_shadows_an_earlier_one():
     """G \\equiv rhs on the page: the G defined by an earlier id is another quantity of the
     same name (3.140's 6x6 W against 3.86's 3x3 W): its lhs is not read through it."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     x = ["x_1", "x_2", "x_3"]
     cert = {"format": "rigidsym-certificate", "version": 1, "id": "3.999",
@@ -512,7 +512,7 @@ def test_model_glyphs_read_firmly_and_tamperings_rejected(model_read):
     """3.98 (a definition, read through the frames' lines) and 3.84 (through p = a + Q r and
     Omega-dot): read firmly; a doubled right side, both sides shifted, the model's line
     changed (p = a + 2 Q r, [rho]_F = 2 Q rho) and another id's printed text: rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     book = _book()
     for i, c in model_read.items():
@@ -602,7 +602,7 @@ def test_point_body_integrals_read_firmly_and_tamperings_rejected(body_read):
     """3.131 (a definition: I_A's integral) and 3.133a (Steiner: I_A through (3.131)) are
     read firmly through the integral sign's body line; a doubled right side, both sides
     shifted, a particle's mass doubled in the body line and another id's text: rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     book = _book()
     for i, c in body_read.items():
@@ -620,7 +620,7 @@ def test_chapter_body_line_tampering_rejected_where_read(chapter):
     """Every id read firmly through the integral sign's body line (section 3.8, a body at
     rest: 3.123-3.125, 3.131, 3.133a, 3.133b, 3.147): a particle's mass doubled in the line
     is rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = chapter
     book = _book()
@@ -648,7 +648,7 @@ def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
     through the model's lines of the points the page defines in words; the point moved
     (p_0 + e, p_2 + p_1: in 3.19 no move is seen, its printed side being 0 for every p_2)
     and both sides shifted: rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     book = _book()
     moved = {"3.8": ("\\mathbf{p}_0", " + \\mathbf{e}"), "3.21": ("\\mathbf{p}_2",
