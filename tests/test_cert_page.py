@@ -663,3 +663,58 @@ def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
         entry["latex"] = f"({entry['latex']}){shift}"
         for bad in (t, shifted_sides(c)):
             assert f"({i})" in _rejected(bad, book), i
+
+
+def test_reader_notation_families_alternatives_bare_blocks():
+    """An index family ``e_i^T A e_j = delta_ij, i, j = 1, 2, 3`` is one 3 x 3 relation (row
+    i, column j; e_k the table's columns of R); ``a \\text{or} b`` two relations; a bare
+    0 or 1 block takes its row's height and its column's width; ``1_{6 x 6}``; a norm the
+    table gives (exact rational values, random atoms)."""
+    import random
+
+    from certcheck.reader import read_relations
+
+    rng = random.Random(654)
+    R, a, p = [f"r_{k}" for k in range(9)], ["a_1", "a_2", "a_3"], ["p_1", "p_2", "p_3"]
+    table = [{"glyph": "\\mathbf{R}", "kind": "free", "atoms": R},
+             {"glyph": "\\mathbf{a}", "kind": "free", "atoms": a},
+             {"glyph": "\\mathbf{p}", "kind": "free", "atoms": p},
+             {"glyph": "\\mathbf{A}", "cpm_of": "\\mathbf{a}"},
+             {"glyph": "W", "kind": "free", "atoms": ["W"]},
+             {"glyph": "\\|\\mathbf{p}\\|", "latex": "W", "model": "p's magnitude"}]
+    table += [{"glyph": f"\\mathbf{{e}}_{k}", "model": "column k of R", "latex":
+               "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k)) for j in (1, 2, 3))
+               + " \\end{bmatrix}"} for k in (1, 2, 3)]
+    lets: list = []
+    (dots, delta), (e3, cross) = read_relations(
+        "\\mathbf{e}_i^T \\mathbf{A}\\mathbf{e}_j = \\delta_{ij}, \\quad i, j = 1, 2, 3, \\quad "
+        "\\mathbf{e}_3 = \\mathbf{e}_1 \\times \\mathbf{e}_2", table, None, lets)
+    (block, one), (unit, scaled) = read_relations(
+        "\\begin{bmatrix} \\mathbf{1} & \\mathbf{A} \\\\ \\mathbf{0} & \\mathbf{1} \\end{bmatrix}"
+        " = \\mathbf{1}_{6 \\times 6} \\quad \\text{or} \\quad \\frac{\\mathbf{p}}"
+        "{\\|\\mathbf{p}\\|} = 2\\pi\\|\\mathbf{p}\\|^2", table, None, lets)
+    assert "\\mathbf{e}_1 as the model's column k of R" in dots[2]
+    assert block[0].shape == one[0].shape == (6, 6) and delta[0].shape == (3, 3)
+    assert scaled[0].rows == [["((2)*(pi))*((W)^2)"]]
+    for _ in range(5):
+        at = {n: Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for n in R + a + p}
+        at["W"] = Fraction(rng.randint(1, 9), rng.randint(1, 5))
+        for name, text in lets:
+            at[name] = _value(text, at)
+
+        def val(m, at=at):
+            return [[_value(e, at) for e in r] for r in m[0].rows]
+        col = [[at[R[3 * i + k]] for i in range(3)] for k in range(3)]  # R's columns
+        A = [[0, -at["a_3"], at["a_2"]], [at["a_3"], 0, -at["a_1"]], [-at["a_2"], at["a_1"], 0]]
+        Ae = [[sum(A[r][k] * col[j][k] for k in range(3)) for r in range(3)] for j in range(3)]
+        assert val(dots) == [[sum(x * y for x, y in zip(col[i], Ae[j], strict=True))
+                              for j in range(3)] for i in range(3)]  # row i, column j
+        assert val(delta) == [[int(i == j) for j in range(3)] for i in range(3)]
+        assert val(e3) == [[x] for x in col[2]]
+        assert val(cross) == [[col[0][(i + 1) % 3] * col[1][(i + 2) % 3] - col[0][(i + 2) % 3]
+                               * col[1][(i + 1) % 3]] for i in range(3)]
+        b = val(block)
+        assert [r[:3] for r in b] == [r[:3] for r in val(one)]  # 1 over 0, 3 x 3 each
+        assert [r[3:] for r in b[3:]] == [r[3:] for r in val(one)[3:]]
+        assert [r[3:] for r in b[:3]] == A
+        assert val(unit) == [[at[x] / at["W"]] for x in p]

@@ -24,6 +24,7 @@ Each read side becomes a matrix of texts in the certificate's grammar
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from certcheck.arrays import M, NotRead, add, cpm, cross, inverse, mul, scalar, vec3
@@ -153,6 +154,10 @@ class _Reader:
             return scalar(self.take())
         if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
             self.take()
+            end = self.t.index("\\|", self.i) if "\\|" in self.t[self.i:] else self.i
+            if (key := "\\|" + "".join(self.t[self.i:end]) + "\\|") in self.table:
+                self.i = end + 1  # a norm the table gives (the model's magnitude)
+                return self.lookup(key)
             self.norm += 1
             x = vec3(self.expr())
             self.norm -= 1
@@ -275,17 +280,36 @@ class _Reader:
         self.take("}")
         return v
 
+    def block(self) -> M | str:
+        """A block of a block matrix: an expression, or ``0`` / ``1`` for a bare zero or
+        identity, sized by the other blocks of its row and column."""
+        bare = self.t[self.i:self.i + 4]
+        if bare[:2] + bare[3:] == ["\\mathbf", "{", "}"] and bare[2] in "0O1" and \
+                self.peek(4) in ("&", "\\\\", "\\end{bmatrix}"):
+            self.i += 4
+            return "1" if bare[2] == "1" else "0"
+        return self.expr()
+
     def bmatrix(self) -> M:
         self.take("\\begin{bmatrix}")
-        rows, row = [], [self.expr()]
+        rows, row = [], [self.block()]
         while self.peek() != "\\end{bmatrix}":
             sep = self.take()
             if sep == "\\\\":
                 rows.append(row)
                 row = []
-            row.append(self.expr())
+            row.append(self.block())
         self.take()
         rows.append(row)
+        hs = [next((b.shape[0] for b in r if isinstance(b, M)), None) for r in rows]
+        ws = [next((r[k].shape[1] for r in rows if k < len(r) and isinstance(r[k], M)), None)
+              for k in range(max(map(len, rows)))]
+        for r, h in zip(rows, hs, strict=True):  # a bare block's size: its row's, column's
+            for k, b in enumerate(r):
+                if isinstance(b, str):
+                    self.assumed = self.assumed or h is None or ws[k] is None
+                    r[k] = M([[("1" if i == j and b == "1" else "0") for j in range(ws[k] or 3)]
+                              for i in range(h or 3)])
         out = []
         for blocks in rows:
             h = blocks[0].shape[0]
@@ -345,6 +369,12 @@ class _Reader:
                       for i in range(3)])
         if key == "\\mathbf{0}":
             return M([["0"] for _ in range(3)])
+        if m := re.fullmatch(r"\\mathbf\{1\}_\{(\d)\\times\1\}", key):  # 1_{6 x 6}
+            return M([[str(int(i == j)) for j in range(int(m[1]))] for i in range(int(m[1]))])
+        if m := re.fullmatch(r"\\delta_\{(\d)(\d)\}", key):  # Kronecker's delta
+            return scalar(str(int(m[1] == m[2])))
+        if key == "\\pi":  # the grammar's pi
+            return scalar("pi")
         if self.frame:  # a glyph inside [...]_{K}: only the table's [G]_{K} is read
             key = f"[{key}]_{{{self.frame}}}"
             if key not in self.table:
@@ -393,10 +423,13 @@ class _Reader:
 
 
 def _split(tokens: list[str]) -> list[list[list[str]]]:
-    """The printed relations: chains ``a = b = ...`` (or ``\\equiv``) separated by commas,
-    each a list of sides, split at depth 0."""
+    """The printed relations: chains ``a = b = ...`` (or ``\\equiv``) separated by commas
+    or ``\\text{or}``, each a list of sides, split at depth 0; a family's range (``, i, j =
+    1, 2, 3``) becomes a token ``@ij`` closing its relation's last side."""
     chains, sides, cur, depth = [], [], [], 0
-    for tok in tokens:
+    text = " ".join(tokens).replace("\\text { o r }", ",")  # a or b: two relations
+    text = re.sub(r" , ([ijk])(?: , ([ijk]))? = 1 , 2 , 3(?= ,|$)", r" @\1\2", text)
+    for tok in text.split(" ") if tokens else []:
         depth += tok in ("{", "(", "[", "\\begin{bmatrix}")
         depth -= tok in ("}", ")", "]", "\\end{bmatrix}")
         if depth == 0 and tok in ("=", "\\equiv"):
@@ -424,14 +457,43 @@ def read_relations(page: str, symbols: list, defs: dict | None = None,
         if not isinstance(e, dict) or "glyph" not in e:
             raise NotRead(f"a symbol-table entry without a glyph: {e!r}")
         table[str(e["glyph"]).replace(" ", "")] = e
-    out, seen = [], {}  # a glyph read once per page
+    out, seen, lets = [], {}, [] if lets is None else lets  # a glyph read once per page
     for chain in _split(tokens(page.rstrip(",. "))):
+        idx = chain[-1].pop()[1:] if chain[-1][-1:] and chain[-1][-1][0] == "@" else ""
         out.append([])
         for toks in chain:
-            r = _Reader(toks, table, defs, None, lets, seen)
-            try:
-                v = r.chain()[0]
-            except (NotRead, IndexError) as exc:
-                v = exc if isinstance(exc, NotRead) else NotRead("unbalanced text")
-            out[-1].append((v, r.assumed, r.cited))
+            read, cited, assumed = [], [], False
+            for vals in itertools.product("123", repeat=len(idx)):  # a family: each member
+                r = _Reader(_bind(toks, dict(zip(idx, vals, strict=True))), table, defs,
+                            cited, lets, seen)
+                try:
+                    read.append(r.chain()[0])
+                except (NotRead, IndexError) as exc:
+                    read = [exc if isinstance(exc, NotRead) else NotRead("unbalanced text")]
+                    break
+                assumed = assumed or r.assumed
+            v = read[0] if len(read) == 1 else _family(read, len(idx))
+            out[-1].append((v, assumed, list(dict.fromkeys(cited))))
     return out
+
+
+def _bind(toks: list[str], vals: dict) -> list[str]:
+    """A family's member: each index (``i``, ``j``) in a subscript given its value."""
+    out, inside = [], False
+    for k, t in enumerate(toks):
+        prev = toks[k - 1] if k else None
+        if t in vals and (inside or prev == "_"):
+            t = vals[t]
+        inside = inside and t != "}" or prev == "_" and t == "{"
+        out.append(t)
+    return out
+
+
+def _family(read: list, n: int):
+    """The members of a family over ``n`` indices, each 1 x 1, as one array: a column
+    (``i = 1, 2, 3``) or a 3 x 3 matrix (``i, j = 1, 2, 3``, row i, column j)."""
+    if any(isinstance(v, NotRead) for v in read) or any(v.shape != (1, 1) for v in read):
+        return next((v for v in read if isinstance(v, NotRead)),
+                    NotRead("a family of arrays (its members not scalars)"))
+    entries = [v.rows[0][0] for v in read]
+    return M([entries[3 * i:3 * i + 3] for i in range(3)] if n == 2 else [[x] for x in entries])

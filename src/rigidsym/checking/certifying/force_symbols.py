@@ -1,0 +1,70 @@
+"""Symbol-table lines of section 3.7's systems of forces (issue 65): how certcheck's second
+reader binds the book's resultant force ``f``, its magnitude ``||f||`` and the moments
+``n_A``, ``n_P`` (which the page defines in words: "a system of forces acting on a rigid
+body") to a certificate's atoms, each line in the book's glyphs for a referee to hold
+against the page.
+
+The project's models (``derivations/sec3_7.py``, ``_force_system``) are
+
+- two forces ``f_1``, ``f_2`` applied at ``r_1``, ``r_2`` plus a couple ``c`` (reaching
+  every pair of resultant and moment): ``f = f_1 + f_2`` and the moment about X
+  ``n_X = (r_1 - x) x f_1 + (r_2 - x) x f_2 + c``;
+- one force ``W e`` at ``r_1`` plus a couple ``c``, ``e`` a unit vector, where the page
+  prints ``||f||``: ``f = W e``, ``||f|| = W`` (``W > 0``; a rational identity in ``W`` that
+  holds for ``W > 0`` holds for every ``W``), ``n_X = W (r_1 - x) x e + c``.
+
+Section 3.7's ``A`` and ``P`` are the cross-product matrices of ``a`` and ``p`` (3.119b).
+"""
+
+from __future__ import annotations
+
+__all__ = ["force_symbols"]
+
+_TWO = "two forces f_1 at r_1 and f_2 at r_2 and a couple c (the page's system of forces)"
+_ONE = ("one force W e at r_1 (e unit, W = ||f|| > 0) and a couple c (the page's system of "
+        "forces)")
+
+
+def force_symbols(have: set, section: str) -> list[dict]:
+    """The lines of section 3.7's system of forces for a table whose glyphs are ``have``.
+
+    Args:
+        have: the glyphs the table already gives (atoms' glyphs and model lines).
+        section: the id's section; only ``3.7`` has the system of forces.
+
+    Returns:
+        Entries ``{"glyph", "latex", "model"}`` for ``f``, ``||f||`` (one-force model), and
+        ``n_A``, ``n_P`` (where ``a``, ``p`` are points of the table), and ``{"glyph",
+        "cpm_of"}`` for ``A`` and ``P``; only glyphs the table lacks; ``[]`` where the table
+        has neither model.
+    """
+    if section != "3.7":
+        return []
+    out: list[dict] = []
+
+    def line(glyph: str, latex: str, words: str) -> None:
+        if glyph not in have:
+            out.append({"glyph": glyph, "latex": latex, "model": words})
+
+    two = {"\\mathbf{f}_1", "\\mathbf{f}_2", "\\mathbf{r}_1", "\\mathbf{r}_2",
+           "\\mathbf{c}"} <= have
+    one = {"\\mathbf{e}", "W", "\\mathbf{r}_1", "\\mathbf{c}"} <= have and not two
+    for x in ("a", "p"):
+        if f"\\mathbf{{{x}}}" in have and f"\\mathbf{{{x.upper()}}}" not in have:
+            out.append({"glyph": f"\\mathbf{{{x.upper()}}}", "cpm_of": f"\\mathbf{{{x}}}"})
+    if two:
+        line("\\mathbf{f}", "\\mathbf{f}_1 + \\mathbf{f}_2", "resultant of " + _TWO)
+        for x in ("a", "p"):
+            if f"\\mathbf{{{x}}}" in have:
+                line(f"\\mathbf{{n}}_{x.upper()}", f"(\\mathbf{{r}}_1 - \\mathbf{{{x}}}) \\times"
+                     f" \\mathbf{{f}}_1 + (\\mathbf{{r}}_2 - \\mathbf{{{x}}}) \\times "
+                     f"\\mathbf{{f}}_2 + \\mathbf{{c}}", f"moment about {x.upper()} of " + _TWO)
+    elif one:
+        line("\\mathbf{f}", "W\\mathbf{e}", "resultant of " + _ONE)
+        line("\\|\\mathbf{f}\\|", "W", "magnitude of the resultant of " + _ONE)
+        for x in ("a", "p"):
+            if f"\\mathbf{{{x}}}" in have:
+                line(f"\\mathbf{{n}}_{x.upper()}", f"W(\\mathbf{{r}}_1 - \\mathbf{{{x}}}) "
+                     f"\\times \\mathbf{{e}} + \\mathbf{{c}}", f"moment about {x.upper()} of "
+                     + _ONE)
+    return out
