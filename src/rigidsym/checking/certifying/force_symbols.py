@@ -13,7 +13,9 @@ The project's models (``derivations/sec3_7.py``, ``_force_system``) are
   prints ``||f||``: ``f = W e``, ``||f|| = W`` (``W > 0``; a rational identity in ``W`` that
   holds for ``W > 0`` holds for every ``W``), ``n_X = W (r_1 - x) x e + c``.
 
-Section 3.7's ``A`` and ``P`` are the cross-product matrices of ``a`` and ``p`` (3.119b).
+(``A`` and ``P``, the cross-product matrices of ``a`` and ``p``, are given only where the id
+prints them: 3.122's certificate proves the restatement ``V U^T = 1``, against which the
+printed ``U^T`` read through (3.83b) would differ.)
 """
 
 from __future__ import annotations
@@ -34,9 +36,8 @@ def force_symbols(have: set, section: str) -> list[dict]:
 
     Returns:
         Entries ``{"glyph", "latex", "model"}`` for ``f``, ``||f||`` (one-force model), and
-        ``n_A``, ``n_P`` (where ``a``, ``p`` are points of the table), and ``{"glyph",
-        "cpm_of"}`` for ``A`` and ``P``; only glyphs the table lacks; ``[]`` where the table
-        has neither model.
+        ``n_A``, ``n_P`` (where ``a``, ``p`` are points of the table); only glyphs the table
+        lacks; ``[]`` where the table has neither model.
     """
     if section != "3.7":
         return []
@@ -49,9 +50,6 @@ def force_symbols(have: set, section: str) -> list[dict]:
     two = {"\\mathbf{f}_1", "\\mathbf{f}_2", "\\mathbf{r}_1", "\\mathbf{r}_2",
            "\\mathbf{c}"} <= have
     one = {"\\mathbf{e}", "W", "\\mathbf{r}_1", "\\mathbf{c}"} <= have and not two
-    for x in ("a", "p"):
-        if f"\\mathbf{{{x}}}" in have and f"\\mathbf{{{x.upper()}}}" not in have:
-            out.append({"glyph": f"\\mathbf{{{x.upper()}}}", "cpm_of": f"\\mathbf{{{x}}}"})
     if two:
         line("\\mathbf{f}", "\\mathbf{f}_1 + \\mathbf{f}_2", "resultant of " + _TWO)
         for x in ("a", "p"):
