@@ -718,3 +718,38 @@ def test_reader_notation_families_alternatives_bare_blocks():
         assert [r[3:] for r in b[3:]] == [r[3:] for r in val(one)[3:]]
         assert [r[3:] for r in b[:3]] == A
         assert val(unit) == [[at[x] / at["W"]] for x in p]
+
+
+@pytest.fixture(scope="module")
+def forces_read(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _write(tmp_path_factory.mktemp("forces"), ["3.106", "3.121", "3.38"])
+
+
+def test_forces_blocks_and_families_read_firmly_and_tamperings_rejected(forces_read):
+    """3.106 (n_P = n_A + (a - p) x f through section 3.7's system of forces), 3.121 (U^T V
+    of 6 x 6 blocks with bare 0 and 1 = 1_{6x6}, through (3.83b) and (3.119b)) and 3.38 (the
+    family e_i . e_j = delta_ij, the triad R's columns) read firmly; a doubled right side,
+    both sides shifted, a model line changed (the couple doubled, e_1 R's second column) and
+    another id's printed text: rejected."""
+    from certcheck.compare import compare
+
+    book = _book()
+    changed = {"3.106": ("\\mathbf{n}_A", "\\mathbf{c}", "2\\mathbf{c}"),
+               "3.38": ("\\mathbf{e}_1", "1 \\\\ 0 \\\\ 0", "0 \\\\ 1 \\\\ 0")}
+    for k, (i, c) in enumerate(forces_read.items()):
+        lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
+        assert any(x.startswith("read from the page: relation 1's") for x in lines), lines
+        assert not any(x.startswith(("matched", "NOT READ")) for x in lines), lines
+        cases = [doubled_rhs(c), shifted_sides(c),
+                 another_printed_text(c, book, list(forces_read)[k - 1])]
+        if i in changed:
+            glyph, old, new = changed[i]
+            t = copy.deepcopy(c)
+            entry = next(e for e in t["symbols"] if e.get("glyph") == glyph)
+            assert old in entry["latex"]
+            entry["latex"] = entry["latex"].replace(old, new)
+            cases.append(t)
+        for t in cases:
+            assert f"({i})" in _rejected(t, book), i

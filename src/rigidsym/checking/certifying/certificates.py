@@ -319,8 +319,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     out += force_symbols({e["glyph"] for e in out}, section)
     if section == "3.2.3" and "\\mathbf{e}_i" in latex and "\\mathbf{e}_1" not in glyphs \
             and any(e.get("kind") == "rotation" and e["glyph"] == "\\mathbf{R}" for e in out):
-        out += [{"glyph": f"\\mathbf{{e}}_{k}", "model": "the triad's vector e_k: column k of "
-                 "the rotation R (the model's orthonormal right-hand triad)", "latex":
+        out += [{"glyph": f"\\mathbf{{e}}_{k}", "model": f"column {k} of the rotation R (the "
+                 "triad e_1, e_2, e_3 orthonormal and right-handed)", "latex":
                  "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k))
                                                             for j in (1, 2, 3)) + " \\end{bmatrix}"}
                 for k in (1, 2, 3)]
