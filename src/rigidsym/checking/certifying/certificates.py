@@ -263,7 +263,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     the printed inverse is 1), whose printed side read through (2.49) differs from the
     certificate's, and a firm (2.49) would reject them. Section 3.8's point-mass body:
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
-    system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`."""
+    system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
+    section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
         if section == sec or section.startswith(sec + "."):
