@@ -317,7 +317,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                         "printed_as": "the time derivative of (2.49)"})
             out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
     out += model_symbols({e["glyph"] for e in out}, section, out)
-    out += force_symbols({e["glyph"] for e in out}, section)
+    out += force_symbols({e["glyph"] for e in out}, section, out)
     if section == "3.2.3" and "\\mathbf{e}_i" in latex and "\\mathbf{e}_1" not in glyphs \
             and any(e.get("kind") == "rotation" and e["glyph"] == "\\mathbf{R}" for e in out):
         out += [{"glyph": f"\\mathbf{{e}}_{k}", "model": f"column {k} of the rotation R (the "
