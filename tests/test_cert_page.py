@@ -78,7 +78,7 @@ def _book() -> str:
 
 def _rejected(cert: dict, book: str) -> str:
     """The message of certcheck's rejection (page, cause, reader or mathematics)."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     i = cert["id"]
     try:
@@ -240,7 +240,7 @@ def test_tamperings_rejected_naming_the_id(five):
 def test_reader_rejects_what_is_not_printed(five):
     """3.96e's corrected form claimed as printed and verified; a printed side doubled where
     the reader reads it; the unit vector e declared free in the symbol table."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = five
     book = _book()
@@ -294,7 +294,7 @@ def chapter(tmp_path_factory):
 def test_chapter_tamperings_rejected(chapter):
     """Every id: another id's statement, another printed text, 0 = 0, the other verdicts,
     a point off the sphere, a cause dropped: each rejected, naming the id."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = chapter
     book = _book()
@@ -319,7 +319,7 @@ def test_chapter_tamperings_rejected(chapter):
 def test_chapter_shifted_sides_rejected_where_read(chapter):
     """Where the reader reads a printed side, both sides shifted by 1 (the relation proved
     unchanged) is rejected (for a definition too: checked against the page)."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = chapter
     book = _book()
@@ -486,7 +486,7 @@ def test_reader_notation_frames_braces_norms_powers():
 def test_reader_a_glyph_defined_here_shadows_an_earlier_one():
     """G \\equiv rhs on the page: the G defined by an earlier id is another quantity of the
     same name (3.140's 6x6 W against 3.86's 3x3 W): its lhs is not read through it."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     x = ["x_1", "x_2", "x_3"]
     cert = {"format": "rigidsym-certificate", "version": 1, "id": "3.999",
@@ -512,7 +512,7 @@ def test_model_glyphs_read_firmly_and_tamperings_rejected(model_read):
     """3.98 (a definition, read through the frames' lines) and 3.84 (through p = a + Q r and
     Omega-dot): read firmly; a doubled right side, both sides shifted, the model's line
     changed (p = a + 2 Q r, [rho]_F = 2 Q rho) and another id's printed text: rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     book = _book()
     for i, c in model_read.items():
@@ -602,7 +602,7 @@ def test_point_body_integrals_read_firmly_and_tamperings_rejected(body_read):
     """3.131 (a definition: I_A's integral) and 3.133a (Steiner: I_A through (3.131)) are
     read firmly through the integral sign's body line; a doubled right side, both sides
     shifted, a particle's mass doubled in the body line and another id's text: rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     book = _book()
     for i, c in body_read.items():
@@ -664,7 +664,7 @@ def test_chapter_body_line_tampering_rejected_where_read(chapter):
     """Every id read firmly through the integral sign's body line (section 3.8: at rest
     3.123-3.125, 3.131, 3.133a, 3.133b, 3.147; moving 3.126, 3.134b, 3.135, 3.136, 3.142,
     3.144, 3.145): a particle's mass doubled in the line is rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     _, certs = chapter
     book = _book()
@@ -692,7 +692,7 @@ def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
     through the model's lines of the points the page defines in words; the point moved
     (p_0 + e, p_2 + p_1: in 3.19 no move is seen, its printed side being 0 for every p_2)
     and both sides shifted: rejected."""
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     book = _book()
     moved = {"3.8": ("\\mathbf{p}_0", " + \\mathbf{e}"), "3.21": ("\\mathbf{p}_2",
@@ -707,3 +707,97 @@ def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
         entry["latex"] = f"({entry['latex']}){shift}"
         for bad in (t, shifted_sides(c)):
             assert f"({i})" in _rejected(bad, book), i
+
+
+def test_reader_notation_families_alternatives_bare_blocks():
+    """An index family ``e_i^T A e_j = delta_ij, i, j = 1, 2, 3`` is one 3 x 3 relation (row
+    i, column j; e_k the table's columns of R); ``a \\text{or} b`` two relations; a bare
+    0 or 1 block takes its row's height and its column's width; ``1_{6 x 6}``; a norm the
+    table gives (exact rational values, random atoms)."""
+    import random
+
+    from certcheck.reader import read_relations
+
+    rng = random.Random(654)
+    R, a, p = [f"r_{k}" for k in range(9)], ["a_1", "a_2", "a_3"], ["p_1", "p_2", "p_3"]
+    table = [{"glyph": "\\mathbf{R}", "kind": "free", "atoms": R},
+             {"glyph": "\\mathbf{a}", "kind": "free", "atoms": a},
+             {"glyph": "\\mathbf{p}", "kind": "free", "atoms": p},
+             {"glyph": "\\mathbf{A}", "cpm_of": "\\mathbf{a}"},
+             {"glyph": "W", "kind": "free", "atoms": ["W"]},
+             {"glyph": "\\|\\mathbf{p}\\|", "latex": "W", "model": "p's magnitude"}]
+    table += [{"glyph": f"\\mathbf{{e}}_{k}", "model": "column k of R", "latex":
+               "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k)) for j in (1, 2, 3))
+               + " \\end{bmatrix}"} for k in (1, 2, 3)]
+    lets: list = []
+    (dots, delta), (e3, cross) = read_relations(
+        "\\mathbf{e}_i^T \\mathbf{A}\\mathbf{e}_j = \\delta_{ij}, \\quad i, j = 1, 2, 3, \\quad "
+        "\\mathbf{e}_3 = \\mathbf{e}_1 \\times \\mathbf{e}_2", table, None, lets)
+    (block, one), (unit, scaled) = read_relations(
+        "\\begin{bmatrix} \\mathbf{1} & \\mathbf{A} \\\\ \\mathbf{0} & \\mathbf{1} \\end{bmatrix}"
+        " = \\mathbf{1}_{6 \\times 6} \\quad \\text{or} \\quad \\frac{\\mathbf{p}}"
+        "{\\|\\mathbf{p}\\|} = 2\\pi\\|\\mathbf{p}\\|^2", table, None, lets)
+    assert "\\mathbf{e}_1 as the model's column k of R" in dots[2]
+    assert block[0].shape == one[0].shape == (6, 6) and delta[0].shape == (3, 3)
+    assert scaled[0].rows == [["((2)*(pi))*((W)^2)"]]
+    for _ in range(5):
+        at = {n: Fraction(rng.randint(-9, 9), rng.randint(1, 5)) for n in R + a + p}
+        at["W"] = Fraction(rng.randint(1, 9), rng.randint(1, 5))
+        for name, text in lets:
+            at[name] = _value(text, at)
+
+        def val(m, at=at):
+            return [[_value(e, at) for e in r] for r in m[0].rows]
+        col = [[at[R[3 * i + k]] for i in range(3)] for k in range(3)]  # R's columns
+        A = [[0, -at["a_3"], at["a_2"]], [at["a_3"], 0, -at["a_1"]], [-at["a_2"], at["a_1"], 0]]
+        Ae = [[sum(A[r][k] * col[j][k] for k in range(3)) for r in range(3)] for j in range(3)]
+        assert val(dots) == [[sum(x * y for x, y in zip(col[i], Ae[j], strict=True))
+                              for j in range(3)] for i in range(3)]  # row i, column j
+        assert val(delta) == [[int(i == j) for j in range(3)] for i in range(3)]
+        assert val(e3) == [[x] for x in col[2]]
+        assert val(cross) == [[col[0][(i + 1) % 3] * col[1][(i + 2) % 3] - col[0][(i + 2) % 3]
+                               * col[1][(i + 1) % 3]] for i in range(3)]
+        b = val(block)
+        assert [r[:3] for r in b] == [r[:3] for r in val(one)]  # 1 over 0, 3 x 3 each
+        assert [r[3:] for r in b[3:]] == [r[3:] for r in val(one)[3:]]
+        assert [r[3:] for r in b[:3]] == A
+        assert val(unit) == [[at[x] / at["W"]] for x in p]
+
+
+@pytest.fixture(scope="module")
+def forces_read(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _write(tmp_path_factory.mktemp("forces"), ["3.106", "3.121", "3.38", "3.117"])
+
+
+def test_forces_blocks_and_families_read_firmly_and_tamperings_rejected(forces_read):
+    """3.106 (n_P = n_A + (a - p) x f through section 3.7's system of forces), 3.121 (U^T V
+    of 6 x 6 blocks with bare 0 and 1 = 1_{6x6}, through (3.83b) and (3.119b)) and 3.38 (the
+    family e_i . e_j = delta_ij, the triad R's columns) and 3.117 (s_w^T Gamma s_t = 0 or
+    s_t^T Gamma s_w = 0, the screws of (3.71)) read firmly; a doubled right side, both sides
+    shifted, a model line changed (the couple doubled, e_1 R's second column, the wrench's
+    pitch doubled) and another id's printed text: rejected."""
+    from certcheck.compare import compare
+
+    book = _book()
+    changed = {"3.106": ("\\mathbf{n}_A", "\\mathbf{c}", "2\\mathbf{c}"),
+               "3.38": ("\\mathbf{e}_1", "1 \\\\ 0 \\\\ 0", "0 \\\\ 1 \\\\ 0"),
+               "3.117": ("\\mathbf{s}_w", "h_w", "2h_w")}
+    for k, (i, c) in enumerate(forces_read.items()):
+        lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
+        assert any(x.startswith("read from the page: relation 1's") for x in lines), lines
+        assert not any(x.startswith(("matched", "NOT READ")) for x in lines), lines
+        cases = [shifted_sides(c), another_printed_text(c, book, list(forces_read)[k - 1])]
+        if any(x != "0" for r in c["relations"] if r["role"] == "printed"
+               for row in r["rhs"] for x in row):  # 2 x 0 is no change
+            cases.append(doubled_rhs(c))
+        if i in changed:
+            glyph, old, new = changed[i]
+            t = copy.deepcopy(c)
+            entry = next(e for e in t["symbols"] if e.get("glyph") == glyph)
+            assert old in entry["latex"]
+            entry["latex"] = entry["latex"].replace(old, new)
+            cases.append(t)
+        for t in cases:
+            assert f"({i})" in _rejected(t, book), i

@@ -21,7 +21,7 @@ from certcheck.book import (
     locate,
 )
 from certcheck.check import CheckError, check_certificate, load
-from certcheck.reader import compare
+from certcheck.compare import compare
 
 
 def _files(paths: list[str]) -> list[str]:

@@ -18,15 +18,18 @@ defines in words, in the table's glyphs; it is read firmly. An integral over the
 read through the table's body line (:meth:`_Reader.integral`). ``[G]`` with no frame named
 (3.40's ``[\\mathbf{Q}]``) is not read. A side the reader cannot read is reported, never passed.
 
-Each read side becomes entries in the certificate's grammar and is compared with the
-certificate's side by :func:`certcheck.check.check_identity` (the kinds' hypotheses only).
+Each read side becomes a matrix of texts in the certificate's grammar
+(:mod:`certcheck.arrays`); :mod:`certcheck.compare` holds it against the certificate's.
 """
 
 from __future__ import annotations
 
+import itertools
 import re
 
-__all__ = ["NotRead", "read_relations", "compare"]
+from certcheck.arrays import M, NotRead, add, cpm, cross, inverse, mul, scalar, vec3
+
+__all__ = ["NotRead", "read_relations", "tokens"]
 
 _TOKEN = re.compile(
     r"\\begin\{bmatrix\}|\\end\{bmatrix\}|\\begin\{aligned\}|\\end\{aligned\}"
@@ -34,86 +37,12 @@ _TOKEN = re.compile(
     r"|\\[A-Za-z]+|\\\\|\\\||\\[,;! ]|\d+|[A-Za-z]|[{}()\[\]^_'+\-=&/|]|\s+|.")
 
 
-class NotRead(Exception):
-    """The reader cannot read this text (the message says what)."""
-
-
-def _tokens(text: str) -> list[str]:
+def tokens(text: str) -> list[str]:
+    """The tokens of printed LaTeX, spacing and alignment marks dropped."""
     out = [t for t in _TOKEN.findall(text) if not t.isspace()]
     return [t for t in out if t not in ("\\,", "\\;", "\\!", "\\ ", "\\quad", "\\qquad",
                                         "\\begin{aligned}", "\\end{aligned}",
                                         "\\left", "\\right")]
-
-
-class M:
-    """A matrix of grammar texts."""
-
-    def __init__(self, rows):
-        self.rows = [list(r) for r in rows]
-
-    @property
-    def shape(self):
-        return len(self.rows), len(self.rows[0])
-
-    def t(self):
-        return M(list(zip(*self.rows, strict=True)))
-
-
-def _s(x: str) -> M:
-    return M([[x]])
-
-
-def _add(a: M, b: M, sign: str) -> M:
-    if a.shape != b.shape:
-        raise NotRead(f"a sum of shapes {a.shape} and {b.shape}")
-    return M([[f"({x}) {sign} ({y})" for x, y in zip(ra, rb, strict=True)]
-              for ra, rb in zip(a.rows, b.rows, strict=True)])
-
-
-def _mul(a: M, b: M) -> M:
-    if a.shape == (1, 1):
-        return M([[f"({a.rows[0][0]})*({y})" for y in r] for r in b.rows])
-    if b.shape == (1, 1):
-        return M([[f"({x})*({b.rows[0][0]})" for x in r] for r in a.rows])
-    if a.shape[1] != b.shape[0]:
-        raise NotRead(f"a product of shapes {a.shape} and {b.shape}")
-    cols = b.t().rows
-    return M([[" + ".join(f"({x})*({y})" for x, y in zip(r, c, strict=True)) for c in cols]
-              for r in a.rows])
-
-
-def _vec(v: M) -> list[str]:
-    if v.shape in ((3, 1), (1, 3)):  # a column or a row: its three entries in order
-        return [x for r in v.rows for x in r]
-    raise NotRead(f"a 3-vector expected, shape {v.shape}")
-
-
-def _cross(a: M, b: M) -> M:
-    x, y = _vec(a), _vec(b)
-    return M([[f"({x[(i + 1) % 3]})*({y[(i + 2) % 3]}) - ({x[(i + 2) % 3]})*({y[(i + 1) % 3]})"]
-              for i in range(3)])
-
-
-def _cpm(v: M) -> M:
-    x = _vec(v)
-    return M([["0", f"-({x[2]})", f"{x[1]}"], [f"{x[2]}", "0", f"-({x[0]})"],
-              [f"-({x[1]})", f"{x[0]}", "0"]])
-
-
-def _inverse(v: M) -> M:
-    """A scalar's reciprocal or a 3 x 3 matrix's inverse (adjugate over determinant)."""
-    if v.shape == (1, 1):
-        return _s(f"1/({v.rows[0][0]})")
-    if v.shape != (3, 3):
-        raise NotRead(f"the inverse of a {v.shape} array")
-    a = v.rows
-
-    def cof(i, j):  # the cofactor of entry (i, j)
-        r, c = [k for k in range(3) if k != i], [k for k in range(3) if k != j]
-        return (f"(({a[r[0]][c[0]]})*({a[r[1]][c[1]]}) - ({a[r[0]][c[1]]})*"
-                f"({a[r[1]][c[0]]}))*({(-1) ** (i + j)})")
-    det = " + ".join(f"({a[0][j]})*{cof(0, j)}" for j in range(3))
-    return M([[f"({cof(j, i)})/({det})" for j in range(3)] for i in range(3)])
 
 
 class _Reader:
@@ -163,10 +92,10 @@ class _Reader:
         sign = self.take() if self.peek() in ("+", "-") else "+"
         v = self.term()
         if sign == "-":
-            v = _mul(_s("-1"), v)
+            v = mul(scalar("-1"), v)
         while self.peek() in ("+", "-"):
             op = self.take()
-            v = _add(v, self.term(), op)
+            v = add(v, self.term(), op)
         return v
 
     _STOP = (None, "+", "-", "=", "\\equiv", ")", "]", "}", "&", "\\\\", "\\end{bmatrix}",
@@ -180,12 +109,12 @@ class _Reader:
                 w = self.factor()  # a x B c: a x (B c), B c the vector
                 while w.shape == (3, 3) and self.peek() not in (*self._STOP, "\\times",
                                                                 "\\cdot", "/"):
-                    w = _mul(w, self.factor())
-                v = _cross(v, w)
+                    w = mul(w, self.factor())
+                v = cross(v, w)
             elif self.peek() == "\\cdot":
                 self.take()
                 w = self.factor()
-                v = _s(" + ".join(f"({x})*({y})" for x, y in zip(_vec(v), _vec(w),
+                v = scalar(" + ".join(f"({x})*({y})" for x, y in zip(vec3(v), vec3(w),
                                                                    strict=True)))
             elif self.peek() == "/":
                 self.take()
@@ -194,7 +123,7 @@ class _Reader:
                     raise NotRead("a division by a matrix")
                 v = M([[f"({x})/({d.rows[0][0]})" for x in r] for r in v.rows])
             else:
-                v = _mul(v, self.factor())
+                v = mul(v, self.factor())
         return v
 
     def factor(self) -> M:
@@ -205,14 +134,14 @@ class _Reader:
             if e == "T":
                 v = v.t()
             elif e.isdigit() and v.shape == (1, 1):
-                v = _s(f"({v.rows[0][0]})^{e}")
+                v = scalar(f"({v.rows[0][0]})^{e}")
             elif e.isdigit() and 1 < int(e) < 5 and v.shape[0] == v.shape[1]:
                 w = v
                 for _ in range(int(e) - 1):
-                    w = _mul(w, v)
+                    w = mul(w, v)
                 v = w
             elif e == "-1":
-                v = _inverse(v)
+                v = inverse(v)
             else:
                 raise NotRead(f"the power ^{{{e}}}")
         return v
@@ -222,11 +151,15 @@ class _Reader:
         if tok is None:
             raise NotRead("an expression ends early")
         if tok.isdigit():
-            return _s(self.take())
+            return scalar(self.take())
         if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
             self.take()
+            end = self.t.index("\\|", self.i) if "\\|" in self.t[self.i:] else self.i
+            if (key := "\\|" + "".join(self.t[self.i:end]) + "\\|") in self.table:
+                self.i = end + 1  # a norm the table gives (the model's magnitude)
+                return self.lookup(key)
             self.norm += 1
-            x = _vec(self.expr())
+            x = vec3(self.expr())
             self.norm -= 1
             self.take("\\|")
             if self.t[self.i:self.i + 2] != ["^", "2"] and \
@@ -234,7 +167,7 @@ class _Reader:
                 raise NotRead("a norm not squared (a square root)")
             self.take("^")
             self.group()
-            return _s(" + ".join(f"({c})^2" for c in x))
+            return scalar(" + ".join(f"({c})^2" for c in x))
         if tok in ("(", "["):
             self.take()
             outer, frame = self.frame, self.frame_after() if tok == "[" else None
@@ -266,7 +199,7 @@ class _Reader:
         if tok in ("\\cos", "\\sin"):
             self.take()
             arg = self.factor() if self.peek() in ("(", "{") else self.primary()
-            return _s(f"{tok[1:]}({arg.rows[0][0]})")
+            return scalar(f"{tok[1:]}({arg.rows[0][0]})")
         if tok in ("\\mathrm", "\\text", "\\operatorname"):
             start = self.i
             self.take()
@@ -278,7 +211,7 @@ class _Reader:
                 if v.shape != (3, 3) and word == "vect":
                     raise NotRead(f"vect of a {v.shape} array")
                 if word == "tr":
-                    return _s(" + ".join(v.rows[i][i] for i in range(v.shape[0])))
+                    return scalar(" + ".join(v.rows[i][i] for i in range(v.shape[0])))
                 a = v.rows  # vect(A): the axial vector of A's skew part, (1/2) of the sums
                 return M([[f"(1/2)*(({a[j][k]}) - ({a[k][j]}))"] for j, k in
                           ((2, 1), (0, 2), (1, 0))])
@@ -319,7 +252,7 @@ class _Reader:
             common.update({k: w for k, w in inner.seen.items() if not w[2] & bound})
             self.assumed = self.assumed or inner.assumed
             self.used |= inner.used - bound
-            total = v if total is None else _add(total, v, "+")
+            total = v if total is None else add(total, v, "+")
         for k, w in common.items():
             self.seen.setdefault(k, w)
         self.cited.append(f"{key} as the model's {entry['model']}")
@@ -347,17 +280,36 @@ class _Reader:
         self.take("}")
         return v
 
+    def block(self) -> M | str:
+        """A block of a block matrix: an expression, or ``0`` / ``1`` for a bare zero or
+        identity, sized by the other blocks of its row and column."""
+        bare = self.t[self.i:self.i + 4]
+        if bare[:2] + bare[3:] == ["\\mathbf", "{", "}"] and bare[2] in "0O1" and \
+                self.peek(4) in ("&", "\\\\", "\\end{bmatrix}"):
+            self.i += 4
+            return "1" if bare[2] == "1" else "0"
+        return self.expr()
+
     def bmatrix(self) -> M:
         self.take("\\begin{bmatrix}")
-        rows, row = [], [self.expr()]
+        rows, row = [], [self.block()]
         while self.peek() != "\\end{bmatrix}":
             sep = self.take()
             if sep == "\\\\":
                 rows.append(row)
                 row = []
-            row.append(self.expr())
+            row.append(self.block())
         self.take()
         rows.append(row)
+        hs = [next((b.shape[0] for b in r if isinstance(b, M)), None) for r in rows]
+        ws = [next((r[k].shape[1] for r in rows if k < len(r) and isinstance(r[k], M)), None)
+              for k in range(max(map(len, rows)))]
+        for r, h in zip(rows, hs, strict=True):  # a bare block's size: its row's, column's
+            for k, b in enumerate(r):
+                if isinstance(b, str):
+                    self.assumed = self.assumed or h is None or ws[k] is None
+                    r[k] = M([[("1" if i == j and b == "1" else "0") for j in range(ws[k] or 3)]
+                              for i in range(h or 3)])
         out = []
         for blocks in rows:
             h = blocks[0].shape[0]
@@ -417,6 +369,12 @@ class _Reader:
                       for i in range(3)])
         if key == "\\mathbf{0}":
             return M([["0"] for _ in range(3)])
+        if m := re.fullmatch(r"\\mathbf\{1\}_\{(\d)\\times\1\}", key):  # 1_{6 x 6}
+            return M([[str(int(i == j)) for j in range(int(m[1]))] for i in range(int(m[1]))])
+        if m := re.fullmatch(r"\\delta_\{(\d)(\d)\}", key):  # Kronecker's delta
+            return scalar(str(int(m[1] == m[2])))
+        if key == "\\pi":  # the grammar's pi
+            return scalar("pi")
         if self.frame:  # a glyph inside [...]_{K}: only the table's [G]_{K} is read
             key = f"[{key}]_{{{self.frame}}}"
             if key not in self.table:
@@ -428,7 +386,7 @@ class _Reader:
             if (v := self.again(key)) is not None:
                 return v
             rest, n = {k: v for k, v in self.defs.items() if k != key}, len(self.cited)
-            inner = _Reader(_tokens(text), self.table, rest, self.cited, self.lets,
+            inner = _Reader(tokens(text), self.table, rest, self.cited, self.lets,
                             self.seen)
             value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
             self.used |= inner.used
@@ -444,7 +402,7 @@ class _Reader:
             return v
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
             n = len(self.cited)
-            inner = _Reader(_tokens(str(entry["latex"])), self.table,
+            inner = _Reader(tokens(str(entry["latex"])), self.table,
                             {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
             value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
@@ -454,21 +412,24 @@ class _Reader:
             self.seen[key] = (*self.seen[key][:3], self.cited[n:])
             return value
         if "cpm_of" in entry:
-            return _cpm(self.lookup(entry["cpm_of"]))
+            return cpm(self.lookup(entry["cpm_of"]))
         atoms = list(entry.get("atoms", []))
         if not atoms:
             raise NotRead(f"the glyph {name} names no atoms")
         if len(atoms) in (9, 16):  # a rotation or transform, row-major
             n = 3 if len(atoms) == 9 else 4
             return M([atoms[n * i:n * i + n] for i in range(n)])
-        return _s(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
+        return scalar(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
 
 
 def _split(tokens: list[str]) -> list[list[list[str]]]:
-    """The printed relations: chains ``a = b = ...`` (or ``\\equiv``) separated by commas,
-    each a list of sides, split at depth 0."""
+    """The printed relations: chains ``a = b = ...`` (or ``\\equiv``) separated by commas
+    or ``\\text{or}``, each a list of sides, split at depth 0; a family's range (``, i, j =
+    1, 2, 3``) becomes a token ``@ij`` closing its relation's last side."""
     chains, sides, cur, depth = [], [], [], 0
-    for tok in tokens:
+    text = " ".join(tokens).replace("\\text { o r }", ",")  # a or b: two relations
+    text = re.sub(r" , ([ijk])(?: , ([ijk]))? = 1 , 2 , 3(?= ,|$)", r" @\1\2", text)
+    for tok in text.split(" ") if tokens else []:
         depth += tok in ("{", "(", "[", "\\begin{bmatrix}")
         depth -= tok in ("}", ")", "]", "\\end{bmatrix}")
         if depth == 0 and tok in ("=", "\\equiv"):
@@ -496,105 +457,43 @@ def read_relations(page: str, symbols: list, defs: dict | None = None,
         if not isinstance(e, dict) or "glyph" not in e:
             raise NotRead(f"a symbol-table entry without a glyph: {e!r}")
         table[str(e["glyph"]).replace(" ", "")] = e
-    out, seen = [], {}  # a glyph read once per page
-    for chain in _split(_tokens(page.rstrip(",. "))):
+    out, seen, lets = [], {}, [] if lets is None else lets  # a glyph read once per page
+    for chain in _split(tokens(page.rstrip(",. "))):
+        idx = chain[-1].pop()[1:] if chain[-1][-1:] and chain[-1][-1][0] == "@" else ""
         out.append([])
         for toks in chain:
-            r = _Reader(toks, table, defs, None, lets, seen)
-            try:
-                v = r.chain()[0]
-            except (NotRead, IndexError) as exc:
-                v = exc if isinstance(exc, NotRead) else NotRead("unbalanced text")
-            out[-1].append((v, r.assumed, r.cited))
+            read, cited, assumed = [], [], False
+            for vals in itertools.product("123", repeat=len(idx)):  # a family: each member
+                r = _Reader(_bind(toks, dict(zip(idx, vals, strict=True))), table, defs,
+                            cited, lets, seen)
+                try:
+                    read.append(r.chain()[0])
+                except (NotRead, IndexError) as exc:
+                    read = [exc if isinstance(exc, NotRead) else NotRead("unbalanced text")]
+                    break
+                assumed = assumed or r.assumed
+            v = read[0] if len(read) == 1 else _family(read, len(idx))
+            out[-1].append((v, assumed, list(dict.fromkeys(cited))))
     return out
 
 
-def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) -> list[str]:
-    """Read ``page`` under the certificate's symbol table and check that each printed
-    relation of the certificate is the printed one: each side the reader reads is the
-    certificate's side as a rational function under the kinds' hypotheses. ``defs``
-    (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
-    their printed definitions above the id, each cited.
-
-    Returns:
-        Lines for the referee: what was read, and what was not (a finding, never a pass).
-
-    Raises:
-        certcheck.check.CheckError: a side read differs from the certificate's.
-    """
-    from certcheck.check import CheckError, Statement, check_identity
-
-    symbols = cert.get("symbols") or []
-    kinds = {g.get("group"): g.get("kind") for g in cert.get("atoms", [])}
-    for e in symbols:  # the table's kinds are the certificate's groups' kinds
-        for a in e.get("atoms", []) if isinstance(e, dict) else []:
-            group = next((g for g in cert.get("atoms", [])
-                          if a.rstrip("'") in g.get("names", [])), None)
-            if group is None or e.get("kind") != group.get("kind"):
-                raise CheckError(f"({cert.get('id')}) symbol {e.get('glyph')}: declared "
-                                 f"{e.get('kind')!r}, its atom {a} is of kind "
-                                 f"{kinds.get((group or {}).get('group'))!r}")
-    printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
-    here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
-            for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
-    defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
-    try:
-        sides = read_relations(page, symbols, defs, lets := [])
-    except NotRead as exc:
-        raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
-    pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
-    soft = len(pairs) == 1 and len(printed) > 1  # one printed relation under several models
-    pairs = pairs * len(printed) if soft else pairs
-    if len(pairs) != len(printed):
-        return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
-                f"has {len(printed)} (a family the reader does not match); each relation is "
-                "the certificate's word"]
-    out = []
-    for k, rel in enumerate(printed):
-        read, matched = [], []
-        for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
-            if isinstance(mine, NotRead):
-                out.append(f"NOT READ: relation {k + 1}'s {side} ({mine}); the certificate's "
-                           "word")
-                continue
-            theirs = rel[side]
-            if assumed and mine.shape != (len(theirs), len(theirs[0])):
-                out.append(f"NOT READ: relation {k + 1}'s {side} (a 1, O or 0 of a size "
-                           "other than 3); the certificate's word")
-                continue
-            if soft and mine.shape != (len(theirs), len(theirs[0])):
-                out.append(f"NOT READ: relation {k + 1}'s {side} (the printed relation's "
-                           f"shape is not this model's); the certificate's word")
-                continue
-            if mine.shape != (len(theirs), len(theirs[0])):
-                raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
-                                 f"the page's reads "
-                                 f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
-                                 f"{len(theirs)}x{len(theirs[0])}")
-            probe = {**cert, "verdict": "verified", "let": [*cert.get("let", []), *lets],
-                     "relations": [
-                {"label": f"page {side}", "role": "printed", "lhs": mine.rows, "rhs": theirs,
-                 "evidence": {"type": "identity"}}]}
-            try:
-                check_identity(Statement(probe), Statement(probe).rels, fast)
-            except CheckError as exc:
-                if soft or any(c.endswith("an equation") for c in cited):
-                    out.append(f"NOT READ: relation {k + 1}'s {side} (read "
-                               + (f"through {', '.join(dict.fromkeys(cited))}" if cited
-                                  else "as one of the certificate's models")
-                               + ", it differs: the model's glyph or relation may be another"
-                               "); the certificate's word")
-                    continue
-                raise CheckError(f"({cert.get('id')}) the printed {side} of relation {k + 1} is "
-                                 f"not the "
-                                 f"certificate's: {exc}") from None
-            tentative = soft or any(c.endswith("an equation") for c in cited)
-            (matched if tentative else read).append(
-                side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))
-        if read:
-            out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
-                       "certificate's under the symbol table")
-        if matched:  # a difference here would be NOT READ, not a rejection
-            out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
-                       "the certificate's" + (" under one of its models" if soft else ""))
+def _bind(toks: list[str], vals: dict) -> list[str]:
+    """A family's member: each index (``i``, ``j``) in a subscript given its value."""
+    out, inside = [], False
+    for k, t in enumerate(toks):
+        prev = toks[k - 1] if k else None
+        if t in vals and (inside or prev == "_"):
+            t = vals[t]
+        inside = inside and t != "}" or prev == "_" and t == "{"
+        out.append(t)
     return out
+
+
+def _family(read: list, n: int):
+    """The members of a family over ``n`` indices, each 1 x 1, as one array: a column
+    (``i = 1, 2, 3``) or a 3 x 3 matrix (``i, j = 1, 2, 3``, row i, column j)."""
+    if any(isinstance(v, NotRead) for v in read) or any(v.shape != (1, 1) for v in read):
+        return next((v for v in read if isinstance(v, NotRead)),
+                    NotRead("a family of arrays (its members not scalars)"))
+    entries = [v.rows[0][0] for v in read]
+    return M([entries[3 * i:3 * i + 3] for i in range(3)] if n == 2 else [[x] for x in entries])

@@ -30,6 +30,7 @@ from pathlib import Path
 import sympy as sp
 
 from rigidsym.checking.certifying.body_symbols import point_body_symbols
+from rigidsym.checking.certifying.force_symbols import force_symbols
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.deciding.evidence import small_witness
 from rigidsym.checking.deciding.explicit import (
@@ -261,7 +262,9 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     3.14's and 3.16's certificates prove a restatement of the printed relation (A^T A times
     the printed inverse is 1), whose printed side read through (2.49) differs from the
     certificate's, and a firm (2.49) would reject them. Section 3.8's point-mass body:
-    :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`."""
+    :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
+    system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
+    section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
         if section == sec or section.startswith(sec + "."):
@@ -314,6 +317,14 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                         "printed_as": "the time derivative of (2.49)"})
             out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
     out += model_symbols({e["glyph"] for e in out}, section, out)
+    out += force_symbols({e["glyph"] for e in out}, section, out)
+    if section == "3.2.3" and "\\mathbf{e}_i" in latex and "\\mathbf{e}_1" not in glyphs \
+            and any(e.get("kind") == "rotation" and e["glyph"] == "\\mathbf{R}" for e in out):
+        out += [{"glyph": f"\\mathbf{{e}}_{k}", "model": f"column {k} of the rotation R (the "
+                 "triad e_1, e_2, e_3 orthonormal and right-handed)", "latex":
+                 "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k))
+                                                            for j in (1, 2, 3)) + " \\end{bmatrix}"}
+                for k in (1, 2, 3)]
     return out + point_body_symbols({e["glyph"] for e in out}, section)
 
 

@@ -1,0 +1,85 @@
+"""The arrays of certcheck's second reader: matrices whose entries are texts of the
+certificate's grammar (``(a)*(b) + ...``), and the operations the chapter's notation prints
+on them (sum, product, transpose, cross product, cross-product matrix, inverse). Each entry
+is built as text, never simplified: :func:`certcheck.check.check_identity` compares it.
+"""
+
+from __future__ import annotations
+
+__all__ = ["NotRead", "M", "scalar", "add", "mul", "vec3", "cross", "cpm", "inverse"]
+
+
+class NotRead(Exception):
+    """The reader cannot read this text (the message says what)."""
+
+
+class M:
+    """A matrix of grammar texts (rows of strings)."""
+
+    def __init__(self, rows):
+        self.rows = [list(r) for r in rows]
+
+    @property
+    def shape(self):
+        return len(self.rows), len(self.rows[0])
+
+    def t(self):
+        return M(list(zip(*self.rows, strict=True)))
+
+
+def scalar(x: str) -> M:
+    return M([[x]])
+
+
+def add(a: M, b: M, sign: str) -> M:
+    if a.shape != b.shape:
+        raise NotRead(f"a sum of shapes {a.shape} and {b.shape}")
+    return M([[f"({x}) {sign} ({y})" for x, y in zip(ra, rb, strict=True)]
+              for ra, rb in zip(a.rows, b.rows, strict=True)])
+
+
+def mul(a: M, b: M) -> M:
+    if a.shape == (1, 1):
+        return M([[f"({a.rows[0][0]})*({y})" for y in r] for r in b.rows])
+    if b.shape == (1, 1):
+        return M([[f"({x})*({b.rows[0][0]})" for x in r] for r in a.rows])
+    if a.shape[1] != b.shape[0]:
+        raise NotRead(f"a product of shapes {a.shape} and {b.shape}")
+    cols = b.t().rows
+    return M([[" + ".join(f"({x})*({y})" for x, y in zip(r, c, strict=True)) for c in cols]
+              for r in a.rows])
+
+
+def vec3(v: M) -> list[str]:
+    if v.shape in ((3, 1), (1, 3)):  # a column or a row: its three entries in order
+        return [x for r in v.rows for x in r]
+    raise NotRead(f"a 3-vector expected, shape {v.shape}")
+
+
+def cross(a: M, b: M) -> M:
+    x, y = vec3(a), vec3(b)
+    return M([[f"({x[(i + 1) % 3]})*({y[(i + 2) % 3]}) - ({x[(i + 2) % 3]})*({y[(i + 1) % 3]})"]
+              for i in range(3)])
+
+
+def cpm(v: M) -> M:
+    x = vec3(v)
+    return M([["0", f"-({x[2]})", f"{x[1]}"], [f"{x[2]}", "0", f"-({x[0]})"],
+              [f"-({x[1]})", f"{x[0]}", "0"]])
+
+
+def inverse(v: M) -> M:
+    """A scalar's reciprocal or a 3 x 3 matrix's inverse (adjugate over determinant)."""
+    if v.shape == (1, 1):
+        return scalar(f"1/({v.rows[0][0]})")
+    if v.shape != (3, 3):
+        raise NotRead(f"the inverse of a {v.shape} array")
+    a = v.rows
+
+    def cof(i, j):  # the cofactor of entry (i, j)
+        r, c = [k for k in range(3) if k != i], [k for k in range(3) if k != j]
+        return (f"(({a[r[0]][c[0]]})*({a[r[1]][c[1]]}) - ({a[r[0]][c[1]]})*"
+                f"({a[r[1]][c[0]]}))*({(-1) ** (i + j)})")
+    det = " + ".join(f"({a[0][j]})*{cof(0, j)}" for j in range(3))
+    return M([[f"({cof(j, i)})/({det})" for j in range(3)] for i in range(3)])
+

@@ -1,0 +1,105 @@
+"""The comparison of certcheck's second reader: each printed side read
+(:func:`certcheck.reader.read_relations`) is held against the certificate's side, as a
+rational function under the kinds' hypotheses (:func:`certcheck.check.check_identity`); a
+side read firmly that differs is a rejection, one matched through an equation of the page
+or one of several models is NOT READ when it differs, and a side not read is said so.
+"""
+
+from __future__ import annotations
+
+import re
+
+from certcheck.reader import NotRead, read_relations
+
+__all__ = ["compare"]
+
+
+def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) -> list[str]:
+    """Read ``page`` under the certificate's symbol table and check that each printed
+    relation of the certificate is the printed one: each side the reader reads is the
+    certificate's side as a rational function under the kinds' hypotheses. ``defs``
+    (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
+    their printed definitions above the id, each cited.
+
+    Returns:
+        Lines for the referee: what was read, and what was not (a finding, never a pass).
+
+    Raises:
+        certcheck.check.CheckError: a side read differs from the certificate's.
+    """
+    from certcheck.check import CheckError, Statement, check_identity
+
+    symbols = cert.get("symbols") or []
+    kinds = {g.get("group"): g.get("kind") for g in cert.get("atoms", [])}
+    for e in symbols:  # the table's kinds are the certificate's groups' kinds
+        for a in e.get("atoms", []) if isinstance(e, dict) else []:
+            group = next((g for g in cert.get("atoms", [])
+                          if a.rstrip("'") in g.get("names", [])), None)
+            if group is None or e.get("kind") != group.get("kind"):
+                raise CheckError(f"({cert.get('id')}) symbol {e.get('glyph')}: declared "
+                                 f"{e.get('kind')!r}, its atom {a} is of kind "
+                                 f"{kinds.get((group or {}).get('group'))!r}")
+    printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
+    here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
+            for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
+    defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
+    try:
+        sides = read_relations(page, symbols, defs, lets := [])
+    except NotRead as exc:
+        raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
+    pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
+    soft = len(pairs) == 1 and len(printed) > 1  # one printed relation under several models
+    pairs = pairs * len(printed) if soft else pairs
+    if len(pairs) != len(printed):
+        return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
+                f"has {len(printed)} (a family the reader does not match); each relation is "
+                "the certificate's word"]
+    out = []
+    for k, rel in enumerate(printed):
+        read, matched = [], []
+        for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
+            if isinstance(mine, NotRead):
+                out.append(f"NOT READ: relation {k + 1}'s {side} ({mine}); the certificate's "
+                           "word")
+                continue
+            theirs = rel[side]
+            if assumed and mine.shape != (len(theirs), len(theirs[0])):
+                out.append(f"NOT READ: relation {k + 1}'s {side} (a 1, O or 0 of a size "
+                           "other than 3); the certificate's word")
+                continue
+            if soft and mine.shape != (len(theirs), len(theirs[0])):
+                out.append(f"NOT READ: relation {k + 1}'s {side} (the printed relation's "
+                           f"shape is not this model's); the certificate's word")
+                continue
+            if mine.shape != (len(theirs), len(theirs[0])):
+                raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
+                                 f"the page's reads "
+                                 f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
+                                 f"{len(theirs)}x{len(theirs[0])}")
+            probe = {**cert, "verdict": "verified", "let": [*cert.get("let", []), *lets],
+                     "relations": [
+                {"label": f"page {side}", "role": "printed", "lhs": mine.rows, "rhs": theirs,
+                 "evidence": {"type": "identity"}}]}
+            try:
+                check_identity(Statement(probe), Statement(probe).rels, fast)
+            except CheckError as exc:
+                if soft or any(c.endswith("an equation") for c in cited):
+                    out.append(f"NOT READ: relation {k + 1}'s {side} (read "
+                               + (f"through {', '.join(dict.fromkeys(cited))}" if cited
+                                  else "as one of the certificate's models")
+                               + ", it differs: the model's glyph or relation may be another"
+                               "); the certificate's word")
+                    continue
+                raise CheckError(f"({cert.get('id')}) the printed {side} of relation {k + 1} is "
+                                 f"not the "
+                                 f"certificate's: {exc}") from None
+            tentative = soft or any(c.endswith("an equation") for c in cited)
+            (matched if tentative else read).append(
+                side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))
+        if read:
+            out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
+                       "certificate's under the symbol table")
+        if matched:  # a difference here would be NOT READ, not a rejection
+            out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
+                       "the certificate's" + (" under one of its models" if soft else ""))
+    return out

@@ -1,0 +1,100 @@
+"""Symbol-table lines of section 3.7's systems of forces (issue 65): how certcheck's second
+reader binds the book's resultant force ``f``, its magnitude ``||f||`` and the moments
+``n_A``, ``n_P`` (which the page defines in words: "a system of forces acting on a rigid
+body") to a certificate's atoms, each line in the book's glyphs for a referee to hold
+against the page.
+
+The project's models (``derivations/sec3_7.py``, ``_force_system``) are
+
+- two forces ``f_1``, ``f_2`` applied at ``r_1``, ``r_2`` plus a couple ``c`` (reaching
+  every pair of resultant and moment): ``f = f_1 + f_2`` and the moment about X
+  ``n_X = (r_1 - x) x f_1 + (r_2 - x) x f_2 + c``;
+- one force ``W e`` at ``r_1`` plus a couple ``c``, ``e`` a unit vector, where the page
+  prints ``||f||``: ``f = W e``, ``||f|| = W`` (``W > 0``; a rational identity in ``W`` that
+  holds for ``W > 0`` holds for every ``W``), ``n_X = W (r_1 - x) x e + c``.
+
+A wrench and a twist of screws ``s_w``, ``s_t`` (3.71) (``derivations/sec3_7_reciprocity.py``):
+axes through ``rw`` and ``rt`` along the unit vectors ``e`` and ``et``, pitch ``hw``, and the
+twist's pitch solved from zero power (a reciprocal pair, 3.116-3.117).
+
+(``A`` and ``P``, the cross-product matrices of ``a`` and ``p``, are given only where the id
+prints them: 3.122's certificate proves the restatement ``V U^T = 1``, against which the
+printed ``U^T`` read through (3.83b) would differ.)
+"""
+
+from __future__ import annotations
+
+__all__ = ["force_symbols"]
+
+_TWO = "two forces f_1 at r_1 and f_2 at r_2 and a couple c (the page's system of forces)"
+_ONE = ("one force W e at r_1 (e unit, W = ||f|| > 0) and a couple c (the page's system of "
+        "forces)")
+
+
+def force_symbols(have: set, section: str, table: list[dict] | None = None) -> list[dict]:
+    """The lines of section 3.7's system of forces for a table whose glyphs are ``have``.
+
+    Args:
+        have: the glyphs the table already gives (atoms' glyphs and model lines).
+        section: the id's section; only ``3.7`` has the system of forces.
+        table: the table's entries so far (the wrench's pitch ``hw``, named ``h_w``).
+
+    Returns:
+        Entries ``{"glyph", "latex", "model"}`` for ``f``, ``||f||`` (one-force model), and
+        ``n_A``, ``n_P`` (where ``a``, ``p`` are points of the table); only glyphs the table
+        lacks; ``[]`` where the table has neither model.
+    """
+    if section != "3.7":
+        return []
+    out: list[dict] = []
+
+    def line(glyph: str, latex: str, words: str) -> None:
+        if glyph not in have:
+            out.append({"glyph": glyph, "latex": latex, "model": words})
+
+    two = {"\\mathbf{f}_1", "\\mathbf{f}_2", "\\mathbf{r}_1", "\\mathbf{r}_2",
+           "\\mathbf{c}"} <= have
+    one = {"\\mathbf{e}", "W", "\\mathbf{r}_1", "\\mathbf{c}"} <= have and not two
+    if two:
+        line("\\mathbf{f}", "\\mathbf{f}_1 + \\mathbf{f}_2", "resultant of " + _TWO)
+        for x in ("a", "p"):
+            if f"\\mathbf{{{x}}}" in have:
+                line(f"\\mathbf{{n}}_{x.upper()}", f"(\\mathbf{{r}}_1 - \\mathbf{{{x}}}) \\times"
+                     f" \\mathbf{{f}}_1 + (\\mathbf{{r}}_2 - \\mathbf{{{x}}}) \\times "
+                     f"\\mathbf{{f}}_2 + \\mathbf{{c}}", f"moment about {x.upper()} of " + _TWO)
+    elif one:
+        line("\\mathbf{f}", "W\\mathbf{e}", "resultant of " + _ONE)
+        line("\\|\\mathbf{f}\\|", "W", "magnitude of the resultant of " + _ONE)
+        for x in ("a", "p"):
+            if f"\\mathbf{{{x}}}" in have:
+                line(f"\\mathbf{{n}}_{x.upper()}", f"W(\\mathbf{{r}}_1 - \\mathbf{{{x}}}) "
+                     f"\\times \\mathbf{{e}} + \\mathbf{{c}}", f"moment about {x.upper()} of "
+                     + _ONE)
+    if {"\\mathbf{e}", "\\mathbf{et}", "\\mathbf{rw}", "\\mathbf{rt}", "hw"} <= have:
+        out += _screw_pair(have, table or [])
+    return [e for e in out if e["glyph"] not in have]
+
+
+def _screw(e: str, r: str, h: str) -> str:
+    """The screw (3.71) of the axis through ``r`` along ``e`` of pitch ``h``, in LaTeX."""
+    return f"\\begin{{bmatrix}} {e} \\\\ {r} \\times {e} + {h}{e} \\end{{bmatrix}}"
+
+
+def _screw_pair(have: set, table: list[dict]) -> list[dict]:
+    """Section 3.7's wrench and twist of screws ``s_w``, ``s_t`` (``derivations/
+    sec3_7_reciprocity.py``): the wrench's axis through ``rw`` along the unit ``e``, pitch
+    ``hw``; the twist's through ``rt`` along the unit ``et``, its pitch solved from zero
+    power (``W e . v(rw) + hw W e . T et = 0``): the printed relations of these ids (3.116,
+    3.117) are of a reciprocal pair (3.116's claim, of a general pair, is not read); the
+    page's ``\\Gamma`` is (3.112)'s ``\\mathbf{\\Gamma}``."""
+    pitches = [{**e, "glyph": "h_w"} for e in table if e.get("glyph") == "hw"]  # one letter
+    ht = ("(-\\frac{\\mathbf{e} \\cdot (\\mathbf{et} \\times (\\mathbf{rw} - \\mathbf{rt})) + "
+          "h_w\\mathbf{e} \\cdot \\mathbf{et}}{\\mathbf{e} \\cdot \\mathbf{et}})")
+    words = ", its pitch solved from zero power (a reciprocal pair)"
+    return [*pitches,
+            {"glyph": "\\mathbf{s}_w", "latex": _screw("\\mathbf{e}", "\\mathbf{rw}", "h_w"),
+             "model": "wrench's screw (3.71): axis through rw along e, pitch hw"},
+            {"glyph": "\\mathbf{s}_t", "latex": _screw("\\mathbf{et}", "\\mathbf{rt}", ht),
+             "model": "twist's screw (3.71): axis through rt along et" + words},
+            {"glyph": "\\Gamma", "latex": "\\mathbf{\\Gamma}",
+             "model": "(3.112)'s Gamma, printed here without bold"}]
