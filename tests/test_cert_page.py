@@ -643,7 +643,7 @@ def test_moving_body_integrals_read_firmly_and_tamperings_rejected(moving_read):
     and (3.126, the cheaper) a particle's mass doubled: rejected naming the id."""
     import time
 
-    from certcheck.reader import compare
+    from certcheck.compare import compare
 
     book = _book()
     for i, c in moving_read.items():

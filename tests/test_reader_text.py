@@ -137,8 +137,9 @@ def _forget_latex_ids():
 
 
 def test_a_scalar_K_1_and_the_unit_vector_K_print_apart(capsys, _forget_latex_ids):
+    # K_1 declared a scalar of its own (undeclared beside the vector K it is K's entry 1)
     code = main(["check", "--latex", r"K_1 = \mathbf{K}^T\mathbf{a}",
-                 "--let", r"\mathbf{K}: unit vector"])
+                 "--let", r"\mathbf{K}: unit vector", "--let", "K_1: scalar"])
     out = capsys.readouterr().out
     assert code == 1 and "Counterexample" in out
     block = out.split("Counterexample", 1)[1].split("left side", 1)[0]

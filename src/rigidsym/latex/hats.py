@@ -33,7 +33,7 @@ def hat_point(key: str) -> str:
     return f"{key} hat"
 
 
-def hat_reading(key: str, choices: dict, points: dict) -> tuple[object, str] | None:
+def hat_reading(key: str, choices: dict, points: dict) -> tuple[str, str] | None:
     r"""The declaration that reads the undeclared glyph ``key`` at its choice point, and the
     note that says so; ``None`` where ``key`` is no hat.
 
@@ -45,13 +45,12 @@ def hat_reading(key: str, choices: dict, points: dict) -> tuple[object, str] | N
         points: the choice points met, updated with this one (its readings).
 
     Returns:
-        ``(let, note)``, ``let`` a :class:`rigidsym.latex.lets.Let`: ``--let '\hat{T}: unit
-        vector'`` (a unit 3-vector of its own) or
-        ``--let '\hat{T} = [T]_\times'`` (the skew matrix of a 3-vector ``T``; of anything
+        ``(let, note)``, ``let`` the text of a ``--let`` (read by the caller:
+        :mod:`rigidsym.latex.lets` imports the parser, which imports this): ``\hat{T}: unit
+        vector`` (a unit 3-vector of its own) or
+        ``\hat{T} = [T]_\times`` (the skew matrix of a 3-vector ``T``; of anything
         else the model is refused when read, and the reading dropped).
     """
-    from rigidsym.latex.lets import read_lets  # lets imports the parser, which imports this
-
     m = _HAT.fullmatch(key)
     if m is None:
         return None
@@ -59,12 +58,12 @@ def hat_reading(key: str, choices: dict, points: dict) -> tuple[object, str] | N
     points[point] = HAT_READINGS
     inner = m.group(1)
     if choices.get(point, HAT_READINGS[0]) == "skew":
-        (x,) = read_lets([f"{key} = [{inner}]_\\times"])
-        return x, (f"{key}: read as the skew matrix [{inner}]_× (Murray-Li-Sastry's hat; a "
-                   f"choice: or a unit vector of its own)")
-    (x,) = read_lets([f"{key}: unit vector"])
-    return x, (f"{key}: read as a unit vector of its own (Lynch-Park's hat; a choice: or the "
-               f"skew matrix [{inner}]_×)")
+        return f"{key} = [{inner}]_\\times", (
+            f"{key}: read as the skew matrix [{inner}]_× (Murray-Li-Sastry's hat; a "
+            f"choice: or a unit vector of its own)")
+    return f"{key}: unit vector", (
+        f"{key}: read as a unit vector of its own (Lynch-Park's hat; a choice: or the "
+        f"skew matrix [{inner}]_×)")
 
 
 def no_hat_reading(points, dropped: list) -> str | None:

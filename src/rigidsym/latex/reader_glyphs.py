@@ -118,8 +118,9 @@ class GlyphReader:
             x = hat_reading(key, self.choices, self.choice_points) \
                 if g.kind == "free" and key not in self.declared else None
             if x is not None:  # an undeclared hat: a unit vector or a skew matrix (a choice)
+                (v,) = read_lets([x[0]])
                 self.notes.append(x[1])
-                new[key] = self._let_glyph(x[0], f"the reading '{x[0].text}'", "a reading")
+                new[key] = self._let_glyph(v, f"the reading '{v.text}'", "a reading")
         return new
 
     def _notation_glyph(self, x: Let) -> Glyph:

@@ -33,7 +33,7 @@ def undeclared_accent(ev, t, key: str):
     inner = t.children[1]
     if inner.data == "bare":
         inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
-    from rigidsym.numeval.evaluator import glyph_key
+    from rigidsym.numeval.names import glyph_key
 
     d = ev.env.decls.get(glyph_key(inner))
     if d is None or d.timed or d.body is not None or d.params \

@@ -11,7 +11,8 @@ import lark
 import mpmath as mp
 
 from rigidsym.numeval import motion
-from rigidsym.numeval.evaluator import DIGITS, TIME, Residual, glyph_key, residuals, text_of
+from rigidsym.numeval.evaluator import DIGITS, TIME, Residual, residuals, text_of
+from rigidsym.numeval.names import glyph_key
 
 __all__ = ["value_of", "residuals_at", "subtree_values"]
 

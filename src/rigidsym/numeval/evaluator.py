@@ -22,6 +22,7 @@ import mpmath as mp
 
 from rigidsym.numeval import accents, entries, hats, motion, names, rates, tilde
 from rigidsym.numeval import values as V
+from rigidsym.numeval.names import glyph_key
 from rigidsym.numeval.sampler import sample
 from rigidsym.numeval.values import NotCovered
 
@@ -72,22 +73,6 @@ def text_of(t) -> str:
     if isinstance(t, lark.Token):
         return str(t)
     return " ".join(str(v) for v in t.scan_values(lambda v: isinstance(v, lark.Token)))
-
-
-def glyph_key(t) -> str:
-    """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
-    parse alike)."""
-    t = names.canonical(t)  # \dot{\Omega}_1 is \dot{\Omega_1} (issue 63)
-    if isinstance(t, lark.Token):
-        # bold by any macro is one glyph, as the books and the reader take it
-        return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",
-                "\\bm": "\\mathbf"}.get(str(t).strip(), str(t).strip())
-    if t.data == "accented" and len(t.children) == 2 and isinstance(t.children[1], lark.Tree) \
-            and len(t.children[1].children) == 1 and t.children[1].children[0].data == "base" \
-            and len(t.children[1].children[0].children) == 1:  # \hat{\omega} is \hat\omega
-        return glyph_key(lark.Tree("accented_bare", [
-            t.children[0], lark.Tree("bare", t.children[1].children[0].children)]))
-    return f"{t.data}(" + ",".join(glyph_key(c) for c in t.children) + ")"
 
 
 def _base_letter(t) -> tuple[str, bool, bool]:

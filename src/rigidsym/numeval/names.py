@@ -11,7 +11,7 @@ import re
 
 import lark
 
-__all__ = ["canonical", "decorated_name", "unlabelled"]
+__all__ = ["canonical", "decorated_name", "glyph_key", "unlabelled"]
 
 
 def canonical(t: object) -> object:
@@ -80,3 +80,19 @@ def decorated_name(tree: object) -> bool:
         return False
     return all(isinstance(c, lark.Token) and c.type == "SUBATOM"
                for s in subs for c in s.children)
+
+
+def glyph_key(t) -> str:
+    """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
+    parse alike)."""
+    t = canonical(t)  # \dot{\Omega}_1 is \dot{\Omega_1} (issue 63)
+    if isinstance(t, lark.Token):
+        # bold by any macro is one glyph, as the books and the reader take it
+        return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",
+                "\\bm": "\\mathbf"}.get(str(t).strip(), str(t).strip())
+    if t.data == "accented" and len(t.children) == 2 and isinstance(t.children[1], lark.Tree) \
+            and len(t.children[1].children) == 1 and t.children[1].children[0].data == "base" \
+            and len(t.children[1].children[0].children) == 1:  # \hat{\omega} is \hat\omega
+        return glyph_key(lark.Tree("accented_bare", [
+            t.children[0], lark.Tree("bare", t.children[1].children[0].children)]))
+    return f"{t.data}(" + ",".join(glyph_key(c) for c in t.children) + ")"
