@@ -138,7 +138,8 @@ class Config:
     def describe(self) -> str:
         """One line per path: its name and flags (the module's ``build`` attribute); a
         ``trig_only`` path says so."""
-        return "; ".join(f"{p.name}{' (kernels calling sin/cos, and V4_KERNELS)' if p.trig_only else ''}: "
+        some = " (kernels calling sin/cos, and V4_KERNELS)"
+        return "; ".join(f"{p.name}{some if p.trig_only else ''}: "
                          f"{' '.join(self.object_flags(p)[len(COMMON_FLAGS):-1])}"
                          for p in self.paths)
 
