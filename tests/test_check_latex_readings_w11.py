@@ -132,3 +132,16 @@ def test_a_bold_subscripted_name_beside_a_declared_vector_stays_a_choice():
     # scalar = a 3-vector) does not type-check, so point 1, a vector of its own, is decided
     r = _check(r"\mathbf{p}_1 = R\mathbf{p}_2 + \mathbf{p}", [r"\mathbf{p}: vector", "R: rotation"])
     assert r.verdict == "does-not-hold", r.detail
+
+
+def test_a_hat_met_only_once_another_is_a_matrix_is_read_both_ways_too():
+    # Murray-Li-Sastry's \hat{u}v = -\hat{v}u, nothing declared: with the first hat a unit
+    # vector the reading fails before the second hat is met; the second's readings are
+    # enumerated once the first is the skew matrix (the statement was refused as "neither
+    # reading fits"); only [u]x v = -[v]x u type-checks, and its slip does not hold
+    ok = rigidsym.check_latex(r"\hat{\mathbf{u}}\mathbf{v} = -\hat{\mathbf{v}}\mathbf{u}",
+                              repairs=False)
+    assert ok.verdict == "verified"
+    slip = rigidsym.check_latex(r"\hat{\mathbf{u}}\mathbf{v} = \hat{\mathbf{v}}\mathbf{u}",
+                                repairs=False)
+    assert slip.verdict == "does-not-hold"

@@ -23,8 +23,7 @@ import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-__all__ = ["EXIT", "install", "for_worker", "deferred", "quiet", "received",
-           "end_workers",
+__all__ = ["EXIT", "install", "for_worker", "deferred", "quiet", "received", "end_workers",
            "note_kept", "line", "reset"]
 
 #: the exit status of an interrupted command (128 + SIGINT, as a shell reports it)

@@ -100,29 +100,14 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
         if not first.choices:
             return _typed(first)
         error, points = None, first.choices
-    groups: dict[str, list[str]] = {}  # q_{1} of q, q_{2} of q: one notation, chosen together
-    for k in sorted(points):
-        groups.setdefault(_group(k), []).append(k)
-    if len(groups) > _MAX_POINTS:
-        raise BadInput(
-            f"--latex: {len(groups)} constructs each read two ways ({', '.join(groups)}): "
-            f"{2 ** len(groups)} readings, more than the {2 ** _MAX_POINTS} decided, and a "
-            f"verdict on some of them would be a guess: settle some with a --let (a kind "
-            f"for a vector's letter, a model or a function)")
-    kept, dropped = [], []
-    for combo in itertools.product(*(alternatives(g[0]) for g in groups.values())):
-        choices = {k: c for g, c in zip(groups.values(), combo, strict=True) for k in g}
-        try:
-            r = first if first is not None and choices == first.choices else read_one(
-                latex, lets, book, lend, table, choices)
-        except (LatexError, BadInput) as exc:
-            dropped.append((choices, str(exc).splitlines()[0]))
-            continue
-        why = _shape_slip(r)
-        if why:
-            dropped.append((choices, why))
-            continue
-        kept.append(r)
+    while True:
+        kept, dropped, met = _readings(latex, lets, book, lend, table, first, points)
+        # a point met only in a reading that failed (the second hat of \hat{u}v = -\hat{v}u,
+        # reached once the first hat is a matrix): while no reading type-checks, its
+        # readings are enumerated too; never once one has (the kept ones stay those decided)
+        if kept or not met:
+            break
+        points = {**points, **met}
     if not kept:  # no reading type-checks: the first one's error, or its shapes refused
         hat = no_hat_reading(points, dropped)  # an undeclared hat: its meanings named
         if hat:
@@ -140,6 +125,38 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
 #: readings (q_1^2 + ... + q_4^2 = q^T q was decided on 8 of its 16 before the sixth session
 #: of wave 6, none of them the one meant)
 _MAX_POINTS = 3
+
+
+def _readings(latex, lets, book, lend, table, first, points):
+    """``(kept, dropped, met)``: the readings of every combination of ``points``' readings
+    that type-check, those that do not with why, and the choice points that the failing
+    ones met beyond ``points``."""
+    groups: dict[str, list[str]] = {}  # q_{1} of q, q_{2} of q: one notation, chosen together
+    for k in sorted(points):
+        groups.setdefault(_group(k), []).append(k)
+    if len(groups) > _MAX_POINTS:
+        raise BadInput(
+            f"--latex: {len(groups)} constructs each read two ways ({', '.join(groups)}): "
+            f"{2 ** len(groups)} readings, more than the {2 ** _MAX_POINTS} decided, and a "
+            f"verdict on some of them would be a guess: settle some with a --let (a kind "
+            f"for a vector's letter, a model or a function)")
+    kept, dropped, met = [], [], {}
+    for combo in itertools.product(*(alternatives(g[0]) for g in groups.values())):
+        choices = {k: c for g, c in zip(groups.values(), combo, strict=True) for k in g}
+        try:
+            r = first if first is not None and choices == first.choices else read_one(
+                latex, lets, book, lend, table, choices)
+        except (LatexError, BadInput) as exc:
+            dropped.append((choices, str(exc).splitlines()[0]))
+            met.update({k: v for k, v in (getattr(exc, "choice_points", None) or {}).items()
+                        if k not in points})
+            continue
+        why = _shape_slip(r)
+        if why:
+            dropped.append((choices, why))
+            continue
+        kept.append(r)
+    return kept, dropped, met
 
 
 def _group(key: str) -> str:
