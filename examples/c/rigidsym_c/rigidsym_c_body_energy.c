@@ -288,16 +288,15 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 2), _mm_load_sd(inertia + 2 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 4), _mm_load_sd(inertia + 4 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 6), _mm_load_sd(inertia + 6 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega + 1), _mm_load_sd(omega + 1 + 1))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 2), _mm_load_sd(inertia + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 4), _mm_load_sd(inertia + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 6), _mm_load_sd(inertia + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega + 1), _mm_load_sd(omega + 1 + 1)))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -625,12 +624,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2])), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2]))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1201,16 +1199,15 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 2), _mm_load_sd(inertia + 2 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 4), _mm_load_sd(inertia + 4 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 6), _mm_load_sd(inertia + 6 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega + 1), _mm_load_sd(omega + 1 + 1))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 2), _mm_load_sd(inertia + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 4), _mm_load_sd(inertia + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 6), _mm_load_sd(inertia + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega + 1), _mm_load_sd(omega + 1 + 1)))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1737,12 +1734,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2])), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2]))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
     }
 #elif RIGIDSYM_C_VECTOR

@@ -326,58 +326,62 @@ static inline rigidsym_c_vf rigidsym_c_odd_vf(rigidsym_c_vf b)
 #define RIGIDSYM_C_VECTOR 0
 #endif
 
-/* x86-64 (SSE2): cheaper still, byte lanes. Per component a = |x|'s bits (the sign
- * cleared) and z = a - 1 (64-bit; float: 32-bit), of which only the top byte counts: a's
- * is the exponent's top 7 bits (double: exponent >> 4; float: >> 1), z's the same except
- * that x = 0 (and only it: the borrow runs through all 8 bytes) sends it to 0xff. So one
- * unsigned byte max over a (pmaxub) and one unsigned byte min over z (pminub) per register
- * are the whole test, two instructions after the and and the subtraction (the 16-bit test
- * before needed an and, an add, a shift, a max, an add and a min): a component is flagged
- * when a's top byte is at least 0x46 (double: |x| >= 2^97; float 0x4f: |x| >= 2^31; inf
- * and NaN included) or z's at most 0x39 (double: 0 < |x| <= 2^-95; float 0x30:
- * 0 < |x| <= 2^-29), and rigidsym_c_q_odd reads only the top bytes (pmovmskb's bits 7 and
- * 15, float 3, 7, 11, 15; the other bytes' min and max are of significand bits and
- * ignored). Sound: every component outside [2^-100, 2^101) (float [2^-30, 2^31)) and
- * nonzero is flagged; the ones flagged inside the range (within 5 octaves of an end,
- * float 1) the cold path (<name>_odd) tests again exactly. Measured (benchmarks/c_scalar.py
- * --fast, gcc 12): the Newton-Euler wrench's checked double call 1.5x -> 1.3x the
- * hand-written formula. A register of doubles is filled by one load per component (movsd
- * and movhpd), not one 16-byte load: a caller that has just stored its inputs one by one
- * would stall on store forwarding (measured: quaternion_rotation 21 -> 13.6 ns, kinetic
- * energy 22 -> 13 ns, for 3-7 more instructions; the twist transfer 9.3 -> 14.3 ns). */
+/* x86-64 (SSE2): cheaper still, byte lanes and one accumulator. Per component s = x + x
+ * (64-bit lanes; float: 32-bit), |x|'s bits shifted left by one (the sign shifted out; no
+ * constant), and n = -s (0 - s), of which only the top bytes count: s's is the exponent's
+ * top 8 bits (double: exponent >> 3; float: the whole exponent), n's is 0xff less that (or
+ * 0x100 less, where s's lower bytes are all zero), except that x = 0 (and only it: the
+ * borrow runs through all 8 bytes) keeps it 0. So the unsigned byte max of s and n is large
+ * exactly when |x| is large (s) or nonzero and small (n), and one unsigned byte max over
+ * every register (pmaxub) is the whole test: add, subtract and two maxes per register, one
+ * accumulator, and the end a saturating subtraction and pmovmskb (the two-accumulator test
+ * before, a max over |x| and a min over |x| - 1, needed an and with a constant, a min, and
+ * a compare, min, compare and or at the end). A component is flagged when the max's top
+ * byte is at least t = 0x8c (double: |x| >= 2^97, or 0 < |x| <= 2^-95; float 0x9e: |x| >=
+ * 2^31, or 0 < |x| <= 2^-29; inf and NaN included): rigidsym_c_q_odd subtracts t - 0x80
+ * with unsigned saturation, so that a top byte's bit 7 is set exactly then, and reads only
+ * the top bytes (pmovmskb's bits 7 and 15, float 3, 7, 11, 15; the other bytes are of
+ * significand bits and ignored). Sound: every component outside [2^-100, 2^101) (float
+ * [2^-30, 2^31)) and nonzero is flagged (s's top byte of such a double is at least 0x8c
+ * or at most 0x73, where n's is at least 0xff - 0x73 = 0x8c; float: at least 0x9e, or at
+ * most 0x60, n's at least 0x9f); the ones flagged inside the range (within 5 octaves of an
+ * end, float 1) the cold path (<name>_odd) tests again exactly. Measured
+ * (benchmarks/c_scalar.py --fast, gcc 12, -O3): the checked float call of the twist
+ * transfer 1.20x -> 1.07-1.13x the hand-written formula, the Newton-Euler wrench's double
+ * 1.38x -> 1.23-1.29x (the two-accumulator test before it: 1.5x -> 1.3x). A register of
+ * doubles is filled by one load per component (movsd and movhpd), not one 16-byte load: a
+ * caller that has just stored its inputs one by one would stall on store forwarding
+ * (measured: quaternion_rotation 21 -> 13.6 ns, kinetic energy 22 -> 13 ns, for 3-7 more
+ * instructions; the twist transfer 9.3 -> 14.3 ns). */
 /* -DRIGIDSYM_C_NO_SSE2 takes the generic vector test instead (Arm's path), so that x86-64
  * runs it in the tests (tests/test_c_target.py: the three tests agree bit for bit). */
 #if RIGIDSYM_C_VECTOR && defined(__SSE2__) && !defined(RIGIDSYM_C_NO_SSE2)
 #define RIGIDSYM_C_SSE2 1
 #include <emmintrin.h>
 
-static inline void rigidsym_c_q_d(__m128i b, __m128i *mx, __m128i *mn)
+/* the byte max of s = b + b and n = -s for the 2 doubles of b (the kernels take the byte max
+ * of these over their registers) */
+static inline __m128i rigidsym_c_q_d(__m128i b)
 {
-    const __m128i a = _mm_and_si128(b, _mm_set1_epi64x(0x7fffffffffffffffLL));
-    *mx = _mm_max_epu8(*mx, a);
-    *mn = _mm_min_epu8(*mn, _mm_sub_epi64(a, _mm_set1_epi64x(1)));
+    const __m128i s = _mm_add_epi64(b, b);
+    return _mm_max_epu8(s, _mm_sub_epi64(_mm_setzero_si128(), s));
 }
 
-static inline void rigidsym_c_q_f(__m128i b, __m128i *mx, __m128i *mn)
+/* the same for the 4 floats of b */
+static inline __m128i rigidsym_c_q_f(__m128i b)
 {
-    const __m128i a = _mm_and_si128(b, _mm_set1_epi32(0x7fffffff));
-    *mx = _mm_max_epu8(*mx, a);
-    *mn = _mm_min_epu8(*mn, _mm_sub_epi32(a, _mm_set1_epi32(1)));
+    const __m128i s = _mm_add_epi32(b, b);
+    return _mm_max_epu8(s, _mm_sub_epi32(_mm_setzero_si128(), s));
 }
 
-/* 1 when a component's top byte is flagged: mx's above hi, or mn's below lo (unsigned: the
- * min with lo - 1 is mn itself); top selects the top bytes of the lanes (then <name>_odd
- * looks again) */
-static inline int rigidsym_c_q_odd(__m128i mx, __m128i mn, int lo, int hi, int top)
+/* 1 when a lane's top byte of q (the byte max over the registers) is at least t; top
+ * selects the top bytes of the lanes (then <name>_odd looks again) */
+static inline int rigidsym_c_q_odd(__m128i q, int t, int top)
 {
-    const __m128i big = _mm_cmpgt_epi8(mx, _mm_set1_epi8((char)hi));
-    const __m128i tiny = _mm_cmpeq_epi8(_mm_min_epu8(mn, _mm_set1_epi8((char)(lo - 1))), mn);
-    return (_mm_movemask_epi8(_mm_or_si128(big, tiny)) & top) != 0;
+    return (_mm_movemask_epi8(_mm_subs_epu8(q, _mm_set1_epi8((char)(t - 0x80)))) & top) != 0;
 }
-/* the start of the two accumulators: no component yet */
-#define RIGIDSYM_C_Q_START __m128i mx_ = _mm_setzero_si128(), mn_ = _mm_set1_epi8((char)-1)
-#define RIGIDSYM_C_Q_ODD_D(mx, mn) rigidsym_c_q_odd(mx, mn, 0x3a, 0x45, 0x8080)
-#define RIGIDSYM_C_Q_ODD_F(mx, mn) rigidsym_c_q_odd(mx, mn, 0x31, 0x4e, 0x8888)
+#define RIGIDSYM_C_Q_ODD_D(q) rigidsym_c_q_odd(q, 0x8c, 0x8080)
+#define RIGIDSYM_C_Q_ODD_F(q) rigidsym_c_q_odd(q, 0x9e, 0x8888)
 #else
 #define RIGIDSYM_C_SSE2 0
 #endif

@@ -301,13 +301,12 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q), _mm_load_sd(Q + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 2), _mm_load_sd(Q + 2 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 4), _mm_load_sd(Q + 4 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 6), _mm_load_sd(Q + 6 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&Q[8], 0.0)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q), _mm_load_sd(Q + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 2), _mm_load_sd(Q + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 4), _mm_load_sd(Q + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 6), _mm_load_sd(Q + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&Q[8], 0.0))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_natural_invariants_from_rotation_odd(Q, e, phi);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -637,11 +636,10 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q), *(Q + 1), *(Q + 2), *(Q + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q + 4), *(Q + 4 + 1), *(Q + 4 + 2), *(Q + 4 + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&Q[8], 0.0f, 0.0f, 0.0f)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q), *(Q + 1), *(Q + 2), *(Q + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q + 4), *(Q + 4 + 1), *(Q + 4 + 2), *(Q + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&Q[8], 0.0f, 0.0f, 0.0f))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_natural_invariants_from_rotation_f32_odd(Q, e, phi);
     }
 #elif RIGIDSYM_C_VECTOR

@@ -315,18 +315,17 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 6), _mm_load_sd(I_C + 6 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega), _mm_load_sd(omega + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega_dot + 1), _mm_load_sd(omega_dot + 1 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(c_ddot), _mm_load_sd(c_ddot + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 6), _mm_load_sd(I_C + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega), _mm_load_sd(omega + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega_dot + 1), _mm_load_sd(omega_dot + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(c_ddot), _mm_load_sd(c_ddot + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -694,13 +693,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1763,18 +1761,17 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 6), _mm_load_sd(I_C + 6 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega), _mm_load_sd(omega + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega_dot + 1), _mm_load_sd(omega_dot + 1 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(c_ddot), _mm_load_sd(c_ddot + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 6), _mm_load_sd(I_C + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega), _mm_load_sd(omega + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega_dot + 1), _mm_load_sd(omega_dot + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(c_ddot), _mm_load_sd(c_ddot + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -2772,13 +2769,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
     }
 #elif RIGIDSYM_C_VECTOR

@@ -233,10 +233,9 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -499,9 +498,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -884,10 +882,9 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1230,9 +1227,8 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
     }
 #elif RIGIDSYM_C_VECTOR

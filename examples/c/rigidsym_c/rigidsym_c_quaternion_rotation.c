@@ -178,10 +178,9 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1)))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_quaternion_rotation_odd(q, Q);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -386,9 +385,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -815,10 +813,9 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1)))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1184,9 +1181,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
     }
 #elif RIGIDSYM_C_VECTOR

@@ -200,10 +200,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -433,9 +432,8 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -913,10 +911,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1324,9 +1321,8 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
     }
 #elif RIGIDSYM_C_VECTOR

@@ -249,14 +249,13 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A), _mm_load_sd(w_A + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 2), _mm_load_sd(w_A + 2 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 4), _mm_load_sd(w_A + 4 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(a), _mm_load_sd(a + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(p + 1), _mm_load_sd(p + 1 + 1))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A), _mm_load_sd(w_A + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 2), _mm_load_sd(w_A + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 4), _mm_load_sd(w_A + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(a), _mm_load_sd(a + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(p + 1), _mm_load_sd(p + 1 + 1)))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_wrench_transfer_odd(w_A, a, p, w_P);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -545,11 +544,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(w_A), *(w_A + 1), *(w_A + 2), *(w_A + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&w_A[4], *&w_A[5], *&a[0], *&a[1])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(w_A), *(w_A + 1), *(w_A + 2), *(w_A + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&w_A[4], *&w_A[5], *&a[0], *&a[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2]))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_wrench_transfer_f32_odd(w_A, a, p, w_P);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1229,14 +1227,13 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A), _mm_load_sd(w_A + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 2), _mm_load_sd(w_A + 2 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 4), _mm_load_sd(w_A + 4 + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(a), _mm_load_sd(a + 1))), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0])), &mx_, &mn_);
-        rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(p + 1), _mm_load_sd(p + 1 + 1))), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_D(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A), _mm_load_sd(w_A + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 2), _mm_load_sd(w_A + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(w_A + 4), _mm_load_sd(w_A + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(a), _mm_load_sd(a + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(p + 1), _mm_load_sd(p + 1 + 1)))));
+        if (RIGIDSYM_C_Q_ODD_D(q_))
             return rigidsym_c_wrench_transfer_with_jacobians_odd(w_A, a, p, w_P, w_P_D_w_A, w_P_D_a, w_P_D_p);
     }
 #elif RIGIDSYM_C_VECTOR
@@ -1855,11 +1852,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        RIGIDSYM_C_Q_START;
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(w_A), *(w_A + 1), *(w_A + 2), *(w_A + 3))), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&w_A[4], *&w_A[5], *&a[0], *&a[1])), &mx_, &mn_);
-        rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2])), &mx_, &mn_);
-        if (RIGIDSYM_C_Q_ODD_F(mx_, mn_))
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(w_A), *(w_A + 1), *(w_A + 2), *(w_A + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&w_A[4], *&w_A[5], *&a[0], *&a[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2]))));
+        if (RIGIDSYM_C_Q_ODD_F(q_))
             return rigidsym_c_wrench_transfer_with_jacobians_f32_odd(w_A, a, p, w_P, w_P_D_w_A, w_P_D_a, w_P_D_p);
     }
 #elif RIGIDSYM_C_VECTOR
