@@ -299,7 +299,8 @@ int main(void)
         /* and none is flagged in (2^-95, 2^97) (float: (2^-29, 2^31)), nor a zero */
         fp += RIGIDSYM_C_Q_ODD_D(q) && (x == 0 || (fabs(x) > 0x1p-95 && fabs(x) < 0x1p97));
         RIGIDSYM_C_ODD_F(accf, xf);
-        qf = _mm_max_epu8(rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(onef, xf, 0.0f, onef))), ordf);
+        qf = _mm_max_epu8(ordf,
+                          rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(onef, xf, 0.0f, onef))));
         fn += (accf >> 31) && !RIGIDSYM_C_Q_ODD_F(qf);
         fp += RIGIDSYM_C_Q_ODD_F(qf) && (xf == 0 || (fabsf(xf) > 0x1p-29f && fabsf(xf) < 0x1p31f));
     }
