@@ -347,8 +347,9 @@ static inline rigidsym_c_vf rigidsym_c_odd_vf(rigidsym_c_vf b)
  * most 0x60, n's at least 0x9f); the ones flagged inside the range (within 5 octaves of an
  * end, float 1) the cold path (<name>_odd) tests again exactly. Measured
  * (benchmarks/c_scalar.py --fast, gcc 12, -O3): the checked float call of the twist
- * transfer 1.20x -> 1.07-1.13x the hand-written formula, the Newton-Euler wrench's double
- * 1.38x -> 1.23-1.29x (the two-accumulator test before it: 1.5x -> 1.3x). A register of
+ * transfer 1.19-1.24x -> 1.07-1.09x the hand-written formula, the wrench transfer's
+ * 1.24-1.26x -> 1.11-1.15x, the Newton-Euler wrench's double 1.33x -> 1.27x (the
+ * two-accumulator test before it: 1.5x -> 1.3x). A register of
  * doubles is filled by one load per component (movsd and movhpd), not one 16-byte load: a
  * caller that has just stored its inputs one by one would stall on store forwarding
  * (measured: quaternion_rotation 21 -> 13.6 ns, kinetic energy 22 -> 13 ns, for 3-7 more
