@@ -153,14 +153,45 @@ def _double_plan(kc: KernelCode) -> dict:
 
 _TODO: list = []
 _PLAN32: list = [True]
+#: the origin whose package files the workers render (``[None]``: compile only)
+_RENDER: list = [None]
 
 
 def _compile_group(group: tuple[int, ...]) -> list:
+    """One job of the pool: the kernels ``group`` of ``_TODO`` compiled and, when
+    ``_RENDER[0]`` names an origin, each one's files of the package targets rendered here
+    too (:func:`_kernel_files`), so that the parent only merges them."""
     out = []
     for i in group:
         kc = compile_kernel(_TODO[i], _PLAN32[0])
-        out.append((i, (kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32)))
+        files = None if _RENDER[0] is None else _kernel_files(kc, _RENDER[0])
+        out.append((i, (kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32),
+                    files))
     return out
+
+
+_WORKER_CTX: dict = {}
+
+
+def _context(done: list, metas: list, origin: str, memo: dict | None = None) -> RenderContext:
+    ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
+    return RenderContext(done, metas, ver, origin,
+                         header=lambda kc, t: _header(kc, t, origin), meta=_meta,
+                         memo={} if memo is None else memo)
+
+
+def _kernel_files(kc: KernelCode, origin: str) -> dict:
+    """``{(target name, kernel name): {path: text}}``: the files of ``kc`` for every package
+    target that renders a kernel apart (``Target.render_kernel``), rendered in a worker
+    with one context per process (its Jinja2 environments made once)."""
+    ctx = _WORKER_CTX.get(origin)
+    if ctx is None:
+        ctx = _WORKER_CTX[origin] = _context([], [], origin)
+    got = {(t.name, kc.kernel.name): t.render_kernel(ctx, kc)
+           for t in targets(package=True) if t.render_kernel is not None}
+    for key in [k for k in ctx.memo if k[0] == "array derivatives"]:
+        del ctx.memo[key]   # one kernel's work, not needed again
+    return got
 
 
 def _groups(todo: list[Kernel]) -> list[tuple[int, ...]]:
@@ -181,33 +212,41 @@ def _groups(todo: list[Kernel]) -> list[tuple[int, ...]]:
     return sorted(groups, key=size)
 
 
-def _compile_all(todo: list, plan32: bool = True) -> list[KernelCode]:
-    """Compile kernels, over two forked workers when there are many (same result, in order)."""
+def _compile_all(todo: list, plan32: bool = True, render: str | None = None) -> tuple:
+    """Compile kernels, over two forked workers when there are many (same result, in
+    order); ``render``: the origin whose package files the workers also render (see
+    :func:`_kernel_files`). Returns ``(kernels, files)``, ``files`` the workers' rendered
+    files (``{}`` when compiled here)."""
     jobs = min(2, os.cpu_count() or 1)
     if len(todo) < 8 or jobs < 2 or os.environ.get("RIGIDSYM_GENERATE_JOBS") == "1":
-        return [compile_kernel(k, plan32) for k in todo]
+        return [compile_kernel(k, plan32) for k in todo], {}
     import multiprocessing as mp
 
     _TODO[:] = todo
     _PLAN32[0] = plan32
+    _RENDER[0] = render
     parts: dict = {}
+    files: dict = {}
     try:
         from rigidsym.core.interrupts import for_worker
 
         with mp.get_context("fork").Pool(jobs, initializer=for_worker) as pool:
             for got in pool.imap_unordered(_compile_group, _groups(todo), chunksize=1):
-                parts.update(got)
+                for i, part, rendered in got:
+                    parts[i] = part
+                    files.update(rendered or {})
     finally:
         _TODO.clear()
         _PLAN32[0] = True
-    return [KernelCode(k, *parts[i]) for i, k in enumerate(todo)]
+        _RENDER[0] = None
+    return [KernelCode(k, *parts[i]) for i, k in enumerate(todo)], files
 
 
 def compile_many(kernels: list[Kernel], plan32: bool = True) -> list[KernelCode]:
     """``kernels`` and their Jacobian twins (sorted by name), compiled to programs
     (``plan32=False``: without the float32 precision plans of the package's kernels)."""
     return _compile_all(_with_jacobian_kernels(sorted(kernels, key=lambda k: k.name)),
-                        plan32)
+                        plan32)[0]
 
 
 def _header(kc: KernelCode, template: str, origin: str = BOOK_ORIGIN) -> list[str]:
@@ -263,15 +302,15 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
     if kernels is None:  # by name: the generator imports no book
         kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
     todo = sorted(kernels, key=lambda k: k.name)
-    done = _compile_all(_with_jacobian_kernels(todo))
+    done, rendered = _compile_all(_with_jacobian_kernels(todo), render=origin)
     metas = [_meta(kc) for kc in done]
     if kernels_are_book:
         acc = _accuracy_data()
         for m in metas:
             m["accuracy"] = acc.get(m["name"])
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
-    ctx = RenderContext(done, metas, ver, origin,
-                        header=lambda kc, t: _header(kc, t, origin), meta=_meta)
+    ctx = _context(done, metas, origin,
+                   {("kernel files", *key): got for key, got in rendered.items()})
     files: dict[str, str] = {}
     for target in targets(package=True):
         got = target.render(ctx)
