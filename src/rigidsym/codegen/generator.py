@@ -15,6 +15,7 @@ from __future__ import annotations
 import importlib
 import json
 import os
+import pickle
 import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -78,6 +79,35 @@ class KernelCode:
     inputs: list = field(default_factory=list)   # [(arg, [symbols])]
     rewrites: list = field(default_factory=list)  # accuracy rewrites kept (accuracy.rewrites)
     plan32: dict = field(default_factory=dict)   # float32 precision plans (accuracy.float32)
+
+
+class PackedKernelCode(KernelCode):
+    """A :class:`KernelCode` whose files a pool worker rendered: its ``variants`` and
+    ``plan32`` came back pickled and are unpickled on first use (rebuilding the sympy
+    programs was 7 % of a cold generation's CPU, for programs the parent no longer prints).
+    """
+
+    def __init__(self, kernel: Kernel, packed: bytes, hash: str, ops: int, inputs: list,
+                 rewrites: list):
+        self.kernel, self.hash, self.ops = kernel, hash, ops
+        self.inputs, self.rewrites = inputs, rewrites
+        self._packed = packed
+        self._unpacked: tuple | None = None
+
+    def _unpack(self) -> tuple:
+        if self._unpacked is None:
+            self._unpacked = pickle.loads(self._packed)
+        return self._unpacked
+
+    @property
+    def variants(self) -> list[Variant]:  # type: ignore[override]
+        """The kernel's programs (:attr:`KernelCode.variants`)."""
+        return self._unpack()[0]
+
+    @property
+    def plan32(self) -> dict:  # type: ignore[override]
+        """The float32 precision plans (:attr:`KernelCode.plan32`)."""
+        return self._unpack()[1]
 
 
 @dataclass
@@ -164,9 +194,13 @@ def _compile_group(group: tuple[int, ...]) -> list:
     out = []
     for i in group:
         kc = compile_kernel(_TODO[i], _PLAN32[0])
-        files = None if _RENDER[0] is None else _kernel_files(kc, _RENDER[0])
-        out.append((i, (kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32),
-                    files))
+        if _RENDER[0] is None:
+            out.append((i, (kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites,
+                            kc.plan32), None))
+        else:   # the programs packed: the parent reads the files, not the programs
+            packed = pickle.dumps((kc.variants, kc.plan32), pickle.HIGHEST_PROTOCOL)
+            out.append((i, (packed, kc.hash, kc.ops, kc.inputs, kc.rewrites),
+                        _kernel_files(kc, _RENDER[0])))
     return out
 
 
@@ -239,7 +273,8 @@ def _compile_all(todo: list, plan32: bool = True, render: str | None = None) -> 
         _TODO.clear()
         _PLAN32[0] = True
         _RENDER[0] = None
-    return [KernelCode(k, *parts[i]) for i, k in enumerate(todo)], files
+    return [(KernelCode if render is None else PackedKernelCode)(k, *parts[i])
+            for i, k in enumerate(todo)], files
 
 
 def compile_many(kernels: list[Kernel], plan32: bool = True) -> list[KernelCode]:
