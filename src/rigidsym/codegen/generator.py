@@ -204,9 +204,6 @@ def _compile_group(group: tuple[int, ...]) -> list:
     return out
 
 
-_WORKER_CTX: dict = {}
-
-
 def _context(done: list, metas: list, origin: str, memo: dict | None = None) -> RenderContext:
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
     return RenderContext(done, metas, ver, origin,
@@ -217,15 +214,10 @@ def _context(done: list, metas: list, origin: str, memo: dict | None = None) -> 
 def _kernel_files(kc: KernelCode, origin: str) -> dict:
     """``{(target name, kernel name): {path: text}}``: the files of ``kc`` for every package
     target that renders a kernel apart (``Target.render_kernel``), rendered in a worker
-    with one context per process (its Jinja2 environments made once)."""
-    ctx = _WORKER_CTX.get(origin)
-    if ctx is None:
-        ctx = _WORKER_CTX[origin] = _context([], [], origin)
-    got = {(t.name, kc.kernel.name): t.render_kernel(ctx, kc)
-           for t in targets(package=True) if t.render_kernel is not None}
-    for key in [k for k in ctx.memo if k[0] == "array derivatives"]:
-        del ctx.memo[key]   # one kernel's work, not needed again
-    return got
+    (the targets share one memo per kernel, as in one generation)."""
+    ctx = _context([], [], origin)
+    return {(t.name, kc.kernel.name): t.render_kernel(ctx, kc)
+            for t in targets(package=True) if t.render_kernel is not None}
 
 
 def _groups(todo: list[Kernel]) -> list[tuple[int, ...]]:

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from functools import cache
 from pathlib import Path
 from typing import Any
 
@@ -132,13 +133,12 @@ def kernel_files(ctx: RenderContext, target: Target, kc: Any) -> dict[str, str]:
     return dict(got) if got is not None else target.render_kernel(ctx, kc)
 
 
-def shared_environment(ctx: RenderContext, template_dir: Path) -> jinja2.Environment:
-    """The :func:`environment` of ``template_dir`` made once per ``ctx`` (its templates
-    compiled once for all the kernels of a generation)."""
-    key = ("environment", Path(template_dir))
-    if key not in ctx.memo:
-        ctx.memo[key] = environment(template_dir)
-    return ctx.memo[key]
+@cache
+def shared_environment(template_dir: Path) -> jinja2.Environment:
+    """The :func:`environment` of ``template_dir`` made once per process (its templates
+    compiled once for every kernel a package target renders; not to be changed: a target
+    that adds filters makes its own with :func:`environment`)."""
+    return environment(template_dir)
 
 
 # the built-in targets, in the order of their registration (each registers itself)

@@ -248,7 +248,7 @@ def array_kernel_files(ctx, kc: Any, backend: str, module: str, printer) -> dict
     """:func:`render_array_kernel` of ``kc`` in the generation ``ctx`` (a
     :class:`rigidsym.codegen.backends.RenderContext`: its shared environment, header and
     memo), printed by a new ``printer()``: an array target's ``render_kernel``."""
-    return render_array_kernel(shared_environment(ctx, TEMPLATES), kc, ctx.header, backend,
+    return render_array_kernel(shared_environment(TEMPLATES), kc, ctx.header, backend,
                                module, printer(), ctx.memo)
 
 

@@ -43,7 +43,7 @@ SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
 
 def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
     """``c/<kernel>.h`` and ``c/<kernel>.c`` of the compiled kernel ``kc``."""
-    env = shared_environment(ctx, TEMPLATES)
+    env = shared_environment(TEMPLATES)
     k = kc.kernel
     cp = KernelCPrinter()
     divides = any(v.program.dens for v in kc.variants)
@@ -103,7 +103,7 @@ def render_module(env, metas: list[dict], ver: dict) -> dict[str, str]:
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The extension target's files of a generation (``{relative path: text}``)."""
-    env = shared_environment(ctx, TEMPLATES)
+    env = shared_environment(TEMPLATES)
     files: dict[str, str] = {}
     for kc in ctx.kernels:
         files.update(kernel_files(ctx, TARGET, kc))

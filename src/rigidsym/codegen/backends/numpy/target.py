@@ -30,7 +30,7 @@ TEMPLATES = Path(__file__).parent / "templates"
 
 def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
     """``{"numpy/<kernel>.py": text}``: the compiled kernel ``kc``'s NumPy module."""
-    env = shared_environment(ctx, TEMPLATES)
+    env = shared_environment(TEMPLATES)
     k = kc.kernel
     npp = KernelNumPyPrinter()
     # kernels without a division (or sqrt, atan2 of possibly zero arguments) give finite
@@ -48,7 +48,7 @@ def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The NumPy target's files of a generation (``{relative path: text}``)."""
-    env = shared_environment(ctx, TEMPLATES)
+    env = shared_environment(TEMPLATES)
     files: dict[str, str] = {}
     for kc in ctx.kernels:
         files.update(kernel_files(ctx, TARGET, kc))
