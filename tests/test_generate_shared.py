@@ -1,6 +1,8 @@
 """The generator's shortcuts for time (issue 66: all book kernels <= 60 s cold) compute what
 sympy computes: the math hash as ``srepr`` prints it, lambdify's implemented functions as
-its own walk finds them, and the pool's jobs hold every kernel once, a twin with its kernel.
+its own walk finds them, and the pool's jobs hold every kernel once, a twin with its kernel;
+a worker renders a kernel's files as the targets do, and the printers order an Add's terms
+as sympy does.
 """
 
 from __future__ import annotations
@@ -65,3 +67,52 @@ def test_pool_jobs_hold_every_kernel_once_with_its_twin():
         assert all(n == base + "_with_jacobians" for n in names[1:]), names
     twins = [n for n in (k.name for k in todo) if n.endswith("_with_jacobians")]
     assert sum(len(gr) == 2 for gr in groups) == len(twins)
+
+
+def test_a_workers_rendered_files_are_the_targets_own():
+    """A pool job compiles a kernel and renders its package files; the parent gets the
+    files and the programs packed: the files are what each target's ``render_kernel``
+    prints from the unpacked kernel, and the unpacked programs are the compiled ones."""
+    import importlib
+
+    from rigidsym.codegen import generator as g
+    from rigidsym.codegen.backends import targets
+    from rigidsym.core.config import KERNEL_SPEC
+
+    book = {k.name: k for k in importlib.import_module(KERNEL_SPEC).KERNELS}
+    todo = g._with_jacobian_kernels([book["kinetic_energy"]])
+    assert [k.name for k in todo] == ["kinetic_energy", "kinetic_energy_with_jacobians"]
+    g._TODO[:], g._RENDER[0] = todo, KERNEL_SPEC
+    try:
+        got = g._compile_group((0, 1))
+    finally:
+        g._TODO.clear()
+        g._RENDER[0] = None
+    rendering = [t for t in targets(package=True) if t.render_kernel is not None]
+    assert {t.name for t in rendering} >= {"numpy", "extension", "torch", "jax"}
+    for (i, part, files), k in zip(got, todo, strict=True):
+        assert todo[i] is k
+        kc = g.PackedKernelCode(k, *part)
+        fresh = g.compile_kernel(k)
+        assert kc.hash == fresh.hash and kc.ops == fresh.ops
+        assert [v.program.outputs for v in kc.variants] == \
+            [v.program.outputs for v in fresh.variants]
+        assert kc.plan32 == fresh.plan32
+        ctx = g._context([kc], [g._meta(kc)], KERNEL_SPEC)
+        assert set(files) == {(t.name, k.name) for t in rendering}
+        for t in rendering:
+            assert files[(t.name, k.name)] == t.render_kernel(ctx, fresh), (t.name, k.name)
+
+
+def test_the_printers_order_of_terms_is_sympys():
+    from rigidsym.codegen.backends.extension.printer import KernelCPrinter
+    from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
+
+    x, y, z = sp.symbols("x y z")
+    sums = [x - 2 * y + sp.sin(z), 1 - x * y, sp.Rational(1, 3) + z**2 - x, _deep(2) + y]
+    for pr in (KernelCPrinter(), KernelNumPyPrinter()):
+        for e in sums:
+            first = pr._as_ordered_terms(e)
+            assert first == e.as_ordered_terms()
+            first.reverse()    # the caller's list is its own: the remembered order stays
+            assert pr._as_ordered_terms(e) == e.as_ordered_terms()

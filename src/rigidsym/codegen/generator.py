@@ -15,6 +15,7 @@ from __future__ import annotations
 import importlib
 import json
 import os
+import pickle
 import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -78,6 +79,35 @@ class KernelCode:
     inputs: list = field(default_factory=list)   # [(arg, [symbols])]
     rewrites: list = field(default_factory=list)  # accuracy rewrites kept (accuracy.rewrites)
     plan32: dict = field(default_factory=dict)   # float32 precision plans (accuracy.float32)
+
+
+class PackedKernelCode(KernelCode):
+    """A :class:`KernelCode` whose files a pool worker rendered: its ``variants`` and
+    ``plan32`` came back pickled and are unpickled on first use (rebuilding the sympy
+    programs was 7 % of a cold generation's CPU, for programs the parent no longer prints).
+    """
+
+    def __init__(self, kernel: Kernel, packed: bytes, hash: str, ops: int, inputs: list,
+                 rewrites: list):
+        self.kernel, self.hash, self.ops = kernel, hash, ops
+        self.inputs, self.rewrites = inputs, rewrites
+        self._packed = packed
+        self._unpacked: tuple | None = None
+
+    def _unpack(self) -> tuple:
+        if self._unpacked is None:
+            self._unpacked = pickle.loads(self._packed)
+        return self._unpacked
+
+    @property
+    def variants(self) -> list[Variant]:  # type: ignore[override]
+        """The kernel's programs (:attr:`KernelCode.variants`)."""
+        return self._unpack()[0]
+
+    @property
+    def plan32(self) -> dict:  # type: ignore[override]
+        """The float32 precision plans (:attr:`KernelCode.plan32`)."""
+        return self._unpack()[1]
 
 
 @dataclass
@@ -153,14 +183,41 @@ def _double_plan(kc: KernelCode) -> dict:
 
 _TODO: list = []
 _PLAN32: list = [True]
+#: the origin whose package files the workers render (``[None]``: compile only)
+_RENDER: list = [None]
 
 
 def _compile_group(group: tuple[int, ...]) -> list:
+    """One job of the pool: the kernels ``group`` of ``_TODO`` compiled and, when
+    ``_RENDER[0]`` names an origin, each one's files of the package targets rendered here
+    too (:func:`_kernel_files`), so that the parent only merges them."""
     out = []
     for i in group:
         kc = compile_kernel(_TODO[i], _PLAN32[0])
-        out.append((i, (kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites, kc.plan32)))
+        if _RENDER[0] is None:
+            out.append((i, (kc.variants, kc.hash, kc.ops, kc.inputs, kc.rewrites,
+                            kc.plan32), None))
+        else:   # the programs packed: the parent reads the files, not the programs
+            packed = pickle.dumps((kc.variants, kc.plan32), pickle.HIGHEST_PROTOCOL)
+            out.append((i, (packed, kc.hash, kc.ops, kc.inputs, kc.rewrites),
+                        _kernel_files(kc, _RENDER[0])))
     return out
+
+
+def _context(done: list, metas: list, origin: str, memo: dict | None = None) -> RenderContext:
+    ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
+    return RenderContext(done, metas, ver, origin,
+                         header=lambda kc, t: _header(kc, t, origin), meta=_meta,
+                         memo={} if memo is None else memo)
+
+
+def _kernel_files(kc: KernelCode, origin: str) -> dict:
+    """``{(target name, kernel name): {path: text}}``: the files of ``kc`` for every package
+    target that renders a kernel apart (``Target.render_kernel``), rendered in a worker
+    (the targets share one memo per kernel, as in one generation)."""
+    ctx = _context([], [], origin)
+    return {(t.name, kc.kernel.name): t.render_kernel(ctx, kc)
+            for t in targets(package=True) if t.render_kernel is not None}
 
 
 def _groups(todo: list[Kernel]) -> list[tuple[int, ...]]:
@@ -181,33 +238,42 @@ def _groups(todo: list[Kernel]) -> list[tuple[int, ...]]:
     return sorted(groups, key=size)
 
 
-def _compile_all(todo: list, plan32: bool = True) -> list[KernelCode]:
-    """Compile kernels, over two forked workers when there are many (same result, in order)."""
+def _compile_all(todo: list, plan32: bool = True, render: str | None = None) -> tuple:
+    """Compile kernels, over two forked workers when there are many (same result, in
+    order); ``render``: the origin whose package files the workers also render (see
+    :func:`_kernel_files`). Returns ``(kernels, files)``, ``files`` the workers' rendered
+    files (``{}`` when compiled here)."""
     jobs = min(2, os.cpu_count() or 1)
     if len(todo) < 8 or jobs < 2 or os.environ.get("RIGIDSYM_GENERATE_JOBS") == "1":
-        return [compile_kernel(k, plan32) for k in todo]
+        return [compile_kernel(k, plan32) for k in todo], {}
     import multiprocessing as mp
 
     _TODO[:] = todo
     _PLAN32[0] = plan32
+    _RENDER[0] = render
     parts: dict = {}
+    files: dict = {}
     try:
         from rigidsym.core.interrupts import for_worker
 
         with mp.get_context("fork").Pool(jobs, initializer=for_worker) as pool:
             for got in pool.imap_unordered(_compile_group, _groups(todo), chunksize=1):
-                parts.update(got)
+                for i, part, rendered in got:
+                    parts[i] = part
+                    files.update(rendered or {})
     finally:
         _TODO.clear()
         _PLAN32[0] = True
-    return [KernelCode(k, *parts[i]) for i, k in enumerate(todo)]
+        _RENDER[0] = None
+    return [(KernelCode if render is None else PackedKernelCode)(k, *parts[i])
+            for i, k in enumerate(todo)], files
 
 
 def compile_many(kernels: list[Kernel], plan32: bool = True) -> list[KernelCode]:
     """``kernels`` and their Jacobian twins (sorted by name), compiled to programs
     (``plan32=False``: without the float32 precision plans of the package's kernels)."""
     return _compile_all(_with_jacobian_kernels(sorted(kernels, key=lambda k: k.name)),
-                        plan32)
+                        plan32)[0]
 
 
 def _header(kc: KernelCode, template: str, origin: str = BOOK_ORIGIN) -> list[str]:
@@ -263,15 +329,15 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
     if kernels is None:  # by name: the generator imports no book
         kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
     todo = sorted(kernels, key=lambda k: k.name)
-    done = _compile_all(_with_jacobian_kernels(todo))
+    done, rendered = _compile_all(_with_jacobian_kernels(todo), render=origin)
     metas = [_meta(kc) for kc in done]
     if kernels_are_book:
         acc = _accuracy_data()
         for m in metas:
             m["accuracy"] = acc.get(m["name"])
     ver = {"sympy": sp.__version__, "rigidsym": rigidsym.__version__}
-    ctx = RenderContext(done, metas, ver, origin,
-                        header=lambda kc, t: _header(kc, t, origin), meta=_meta)
+    ctx = _context(done, metas, origin,
+                   {("kernel files", *key): got for key, got in rendered.items()})
     files: dict[str, str] = {}
     for target in targets(package=True):
         got = target.render(ctx)

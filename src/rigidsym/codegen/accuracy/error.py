@@ -123,10 +123,13 @@ def implementations(exprs) -> dict:
 def lambdified(args, exprs: list, modules, **kw):
     """``sympy.lambdify(args, exprs, modules, **kw)``, the same function, with the
     implemented functions found by :func:`implementations` (``exprs`` a list of sympy
-    expressions; ``modules`` a module name or a list of them and dicts)."""
+    expressions; ``modules`` a module name or a list of them and dicts), and no expression
+    in its docstring unless ``docstring_limit`` is given."""
     mods = [modules] if isinstance(modules, str | dict) else list(modules)
+    # docstring_limit=0: no docstring printing each expression (str() of every candidate
+    # form, 2 % of a cold generation); the function is the same
     return sp.lambdify(args, exprs, modules=[implementations(exprs), *mods], use_imps=False,
-                       **kw)
+                       **{"docstring_limit": 0, **kw})
 
 
 class Meter:

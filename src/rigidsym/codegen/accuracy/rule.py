@@ -72,7 +72,7 @@ _TEXTBOOK: dict = {}
 def _textbook_variants(kernel):
     """``[(cond or None, f)]`` per variant (branches first): the declaration's builds as
     declared, lambdified plainly for NumPy (no rewrite of the generator; CSE only shares
-    subexpressions, it changes no rounding)."""
+    subexpressions, it changes no rounding; no docstring printing the expressions)."""
     import numpy as np
     import sympy as sp
 
@@ -93,10 +93,11 @@ def _textbook_variants(kernel):
                                      for c in choices], default)
         mods = [{"select": select}, "numpy"]
         out = [(sp.lambdify(flat, br.when(**syms), modules="math"),
-                sp.lambdify(flat, _flatten(kernel, br.build(**syms)), modules=mods, cse=True))
+                sp.lambdify(flat, _flatten(kernel, br.build(**syms)), modules=mods, cse=True,
+                            docstring_limit=0))
                for br in kernel.branches]
         out.append((None, sp.lambdify(flat, _flatten(kernel, kernel.build(**syms)),
-                                      modules=mods, cse=True)))
+                                      modules=mods, cse=True, docstring_limit=0)))
         _TEXTBOOK[key] = (out, dt)
     return _TEXTBOOK[key]
 

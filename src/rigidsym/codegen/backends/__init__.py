@@ -21,12 +21,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from functools import cache
 from pathlib import Path
 from typing import Any
 
 import jinja2
 
-__all__ = ["Target", "RenderContext", "register", "unregister", "targets", "environment"]
+__all__ = ["Target", "RenderContext", "register", "unregister", "targets", "environment",
+           "kernel_files", "shared_environment"]
 
 
 @dataclass(frozen=True)
@@ -69,6 +71,10 @@ class Target:
         render: ``render(ctx) -> {relative path: text}``: its files of a generation.
         package: whether :func:`rigidsym.codegen.generator.generate` renders it into the
             Python package (``generated/``); the C-only target writes a folder of its own.
+        render_kernel: ``render_kernel(ctx, kc) -> {relative path: text}``: the files of one
+            compiled kernel alone (``None``: the target has none apart). With it the
+            generator renders each kernel's files in the worker that compiled it, in
+            parallel, and ``render`` takes them through :func:`kernel_files`.
     """
 
     name: str
@@ -76,6 +82,7 @@ class Target:
     printer: Callable[[], Any]
     render: Callable[[RenderContext], dict[str, str]]
     package: bool = True
+    render_kernel: Callable[[RenderContext, Any], dict[str, str]] | None = None
 
 
 _TARGETS: dict[str, Target] = {}
@@ -115,6 +122,23 @@ def environment(template_dir: Path) -> jinja2.Environment:
         loader=jinja2.FileSystemLoader(str(template_dir)), keep_trailing_newline=True,
         trim_blocks=True, lstrip_blocks=True, undefined=jinja2.StrictUndefined,
         autoescape=False)
+
+
+def kernel_files(ctx: RenderContext, target: Target, kc: Any) -> dict[str, str]:
+    """The files of the compiled kernel ``kc`` for ``target``: those a worker of the
+    generator rendered already (``ctx.memo[("kernel files", target name, kernel name)]``),
+    else ``target.render_kernel(ctx, kc)`` now. The same text either way: a worker renders
+    with the same ``render_kernel``."""
+    got = ctx.memo.get(("kernel files", target.name, kc.kernel.name))
+    return dict(got) if got is not None else target.render_kernel(ctx, kc)
+
+
+@cache
+def shared_environment(template_dir: Path) -> jinja2.Environment:
+    """The :func:`environment` of ``template_dir`` made once per process (its templates
+    compiled once for every kernel a package target renders; not to be changed: a target
+    that adds filters makes its own with :func:`environment`)."""
+    return environment(template_dir)
 
 
 # the built-in targets, in the order of their registration (each registers itself)

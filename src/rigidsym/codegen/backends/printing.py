@@ -17,6 +17,8 @@ into sympy's printer of its language.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 from sympy.printing.precedence import PRECEDENCE
@@ -35,6 +37,14 @@ class KernelPrinterMixin:
     exponents, roots for halves), the compensated products' helper calls and named temps,
     removable quotients. A printer sets ``_one`` (its literal 1), ``_diffprod`` and
     ``_sumprod`` (its helpers' names) and defines ``_sqrt``."""
+
+    def _as_ordered_terms(self, expr, order=None):
+        # sympy's order of an Add's terms, computed once per sum for every printer (five
+        # targets print each program: sorting the terms was a third of the printing time)
+        order = order or self.order
+        if order in ("old", "none"):
+            return super()._as_ordered_terms(expr, order=order)
+        return list(_ordered_terms(expr, order))
 
     def _print_QuotientBase(self, expr):
         # a removable quotient (codegen.removable): its branch, series below t*, closed
@@ -97,6 +107,13 @@ class KernelPrinterMixin:
         if isinstance(self, NumPyPrinter):
             return super()._print_Pow(expr, rational=rational)
         return super()._print_Pow(expr)
+
+
+@lru_cache(maxsize=1 << 16)
+def _ordered_terms(expr: sp.Expr, order) -> tuple:
+    """``expr.as_ordered_terms(order=order)``, remembered (a function of the expression's
+    structure only, so the same for every printer)."""
+    return tuple(expr.as_ordered_terms(order=order))
 
 
 def dyadic_repr(expr) -> str | None:

@@ -19,7 +19,7 @@ from typing import Any
 
 import sympy as sp
 
-from rigidsym.codegen.backends import environment
+from rigidsym.codegen.backends import kernel_files, shared_environment
 from rigidsym.codegen.backends.printing import ARRAY_SOURCE, is_compensated, uses_diffprod
 from rigidsym.codegen.derivatives.jacobians import has_jacobian
 from rigidsym.codegen.derivatives.vjp import (
@@ -29,8 +29,8 @@ from rigidsym.codegen.derivatives.vjp import (
     vjp_program,
 )
 
-__all__ = ["TEMPLATES", "render_array_kernel", "render_array_target", "hoist_compensated",
-           "JAX_TRIG_SOURCE", "JAX_KEEP_SOURCE"]
+__all__ = ["TEMPLATES", "render_array_kernel", "array_kernel_files", "render_array_target",
+           "hoist_compensated", "JAX_TRIG_SOURCE", "JAX_KEEP_SOURCE"]
 
 #: the template both targets print into
 TEMPLATES = Path(__file__).parent / "templates"
@@ -244,14 +244,20 @@ def render_array_kernel(env, kc: Any, header, backend: str, module: str, printer
         divides=bool(kc.variants[0].program.dens), helpers="\n\n\n".join(helpers))}
 
 
-def render_array_target(ctx, backend: str, module: str, printer) -> dict[str, str]:
+def array_kernel_files(ctx, kc: Any, backend: str, module: str, printer) -> dict[str, str]:
+    """:func:`render_array_kernel` of ``kc`` in the generation ``ctx`` (a
+    :class:`rigidsym.codegen.backends.RenderContext`: its shared environment, header and
+    memo), printed by a new ``printer()``: an array target's ``render_kernel``."""
+    return render_array_kernel(shared_environment(TEMPLATES), kc, ctx.header, backend,
+                               module, printer(), ctx.memo)
+
+
+def render_array_target(ctx, target) -> dict[str, str]:
     """An array target's files of a generation (``{"<backend>/<kernel>.py": text}``): every
-    compiled kernel of ``ctx`` (a :class:`rigidsym.codegen.backends.RenderContext`) printed
-    by a new ``printer()`` into :data:`TEMPLATES`; ``backend`` and ``module`` as in
-    :func:`render_array_kernel`."""
-    env = environment(TEMPLATES)
+    compiled kernel of ``ctx`` (a :class:`rigidsym.codegen.backends.RenderContext`) through
+    :func:`rigidsym.codegen.backends.kernel_files` (``target.render_kernel``, or what a
+    worker of the generator rendered with it)."""
     files: dict[str, str] = {}
     for kc in ctx.kernels:
-        files.update(render_array_kernel(env, kc, ctx.header, backend, module, printer(),
-                                         ctx.memo))
+        files.update(kernel_files(ctx, target, kc))
     return files

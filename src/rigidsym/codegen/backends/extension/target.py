@@ -13,13 +13,13 @@ from pathlib import Path
 
 import sympy as sp
 
-from rigidsym.codegen.backends import RenderContext, Target, environment
+from rigidsym.codegen.backends import RenderContext, Target, kernel_files, shared_environment
 from rigidsym.codegen.backends.extension.printer import KernelCPrinter
 from rigidsym.codegen.backends.extension.program import f32_code, finite_check, trig_plan
 from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.core import kinds as _kinds
 
-__all__ = ["TARGET", "TEMPLATES", "render", "render_module"]
+__all__ = ["TARGET", "TEMPLATES", "render", "render_kernel", "render_module"]
 
 #: the target's templates
 TEMPLATES = Path(__file__).parent / "templates"
@@ -41,8 +41,9 @@ SOA_F32 = frozenset({"rotation_from_euler_rodrigues"})
 SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
 
 
-def _kernel(env, kc, ctx: RenderContext) -> dict[str, str]:
-    """``c/<kernel>.h`` and ``c/<kernel>.c``."""
+def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
+    """``c/<kernel>.h`` and ``c/<kernel>.c`` of the compiled kernel ``kc``."""
+    env = shared_environment(TEMPLATES)
     k = kc.kernel
     cp = KernelCPrinter()
     divides = any(v.program.dens for v in kc.variants)
@@ -102,10 +103,10 @@ def render_module(env, metas: list[dict], ver: dict) -> dict[str, str]:
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The extension target's files of a generation (``{relative path: text}``)."""
-    env = environment(TEMPLATES)
+    env = shared_environment(TEMPLATES)
     files: dict[str, str] = {}
     for kc in ctx.kernels:
-        files.update(_kernel(env, kc, ctx))
+        files.update(kernel_files(ctx, TARGET, kc))
     for t, path in (("c_common.h.j2", "c/rigidsym_common.h"),
                     ("c_kernels_index.h.j2", "c/rigidsym_kernels.h")):
         files[path] = env.get_template(t).render(kernels=ctx.metas, template=t,
@@ -114,4 +115,4 @@ def render(ctx: RenderContext) -> dict[str, str]:
     return files
 
 
-TARGET = Target("extension", TEMPLATES, KernelCPrinter, render)
+TARGET = Target("extension", TEMPLATES, KernelCPrinter, render, render_kernel=render_kernel)

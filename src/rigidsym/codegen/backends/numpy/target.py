@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from rigidsym.codegen.backends import RenderContext, Target, environment
+from rigidsym.codegen.backends import RenderContext, Target, kernel_files, shared_environment
 from rigidsym.codegen.backends.numpy.api_spec import render_api
 from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 from rigidsym.codegen.backends.printing import (
@@ -17,7 +17,7 @@ from rigidsym.codegen.backends.printing import (
     uses_diffprod,
 )
 
-__all__ = ["TARGET", "TEMPLATES", "NUMPY_CHUNK", "render"]
+__all__ = ["TARGET", "TEMPLATES", "NUMPY_CHUNK", "render", "render_kernel"]
 
 #: samples per block of the generated NumPy kernels: the temporaries of one block (tens of
 #: arrays of 8 bytes a sample) stay in L2, so large batches are not memory-bound; measured in
@@ -28,27 +28,30 @@ NUMPY_CHUNK = 16384
 TEMPLATES = Path(__file__).parent / "templates"
 
 
-def _kernel(env, kc, ctx: RenderContext) -> str:
-    """The text of ``numpy/<kernel>.py``."""
+def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
+    """``{"numpy/<kernel>.py": text}``: the compiled kernel ``kc``'s NumPy module."""
+    env = shared_environment(TEMPLATES)
     k = kc.kernel
     npp = KernelNumPyPrinter()
     # kernels without a division (or sqrt, atan2 of possibly zero arguments) give finite
     # outputs for finite inputs: no finiteness check in the generated code
     divides = any(v.program.dens for v in kc.variants)
     t = "numpy_kernel.py.j2"
-    return env.get_template(t).render(
+    return {f"numpy/{k.name}.py": env.get_template(t).render(
         header=ctx.header(kc, t), ops=kc.ops, hash=kc.hash, chunk=NUMPY_CHUNK,
         helpers=NUMPY_SOURCE.strip("\n") if uses_diffprod(kc) else "",
         variants=[{"name": v.name, "cond": None if v.cond is None else npp.doprint(v.cond),
                    "risky": risky_names(v.program, npp), **program_lines(v.program, npp)}
                   for v in kc.variants],
-        k=k, meta=ctx.meta(kc), inputs=kc.inputs, divides=divides)
+        k=k, meta=ctx.meta(kc), inputs=kc.inputs, divides=divides)}
 
 
 def render(ctx: RenderContext) -> dict[str, str]:
     """The NumPy target's files of a generation (``{relative path: text}``)."""
-    env = environment(TEMPLATES)
-    files = {f"numpy/{kc.kernel.name}.py": _kernel(env, kc, ctx) for kc in ctx.kernels}
+    env = shared_environment(TEMPLATES)
+    files: dict[str, str] = {}
+    for kc in ctx.kernels:
+        files.update(kernel_files(ctx, TARGET, kc))
     files["api.py"] = render_api(env, ctx.metas, ctx.versions)
     for t, path in (("package_init.py.j2", "__init__.py"),
                     ("numpy_index.py.j2", "numpy/__init__.py")):
@@ -57,4 +60,4 @@ def render(ctx: RenderContext) -> dict[str, str]:
     return files
 
 
-TARGET = Target("numpy", TEMPLATES, KernelNumPyPrinter, render)
+TARGET = Target("numpy", TEMPLATES, KernelNumPyPrinter, render, render_kernel=render_kernel)
