@@ -2,7 +2,8 @@
 (:func:`certcheck.reader.read_relations`) is held against the certificate's side, as a
 rational function under the kinds' hypotheses (:func:`certcheck.check.check_identity`); a
 side read firmly that differs is a rejection, one matched through an equation of the page
-or one of several models is NOT READ when it differs, and a side not read is said so.
+or one of several models is NOT READ when it differs, and a side not read is said so. A
+printed ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y.
 """
 
 from __future__ import annotations
@@ -113,14 +114,10 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
 
 
 def _restated(cert: dict, rel: dict, page: str, symbols: list, defs: dict, lets: list):
-    """The pair (X Y, 1) of a printed ``X^{-1} = Y`` proved as ``X Y = 1`` (the relation's
-    ``restated``: X, Y its printed sides), each read from the page; X must be square.
-
-    Raises:
-        certcheck.check.CheckError: the marking is not the printed relation's restatement.
-    """
+    """The sides (X Y, 1) of a printed ``X^{-1} = Y`` proved as ``X Y = 1`` (``restated``:
+    X, Y as printed), X and Y read from the page, square. Raises CheckError: the marking is
+    not the printed relation's restatement."""
     from certcheck.check import CheckError
-
     r, who = rel["restated"], f"({cert.get('id')}) relation {rel.get('label') or ''}"
     x, y = str(r.get("X", "")), str(r.get("Y", ""))
     t, depth = tokens(x), list(accumulate((c == "(") - (c == ")") for c in tokens(x)))
