@@ -275,10 +275,10 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``. Where ``e``
     and ``phi`` are atoms and no rotation group is, ``{"glyph": "\\mathbf{Q}", "latex":
     ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
-    (and its time derivative term by term), which certcheck reads and cites, tentatively:
-    3.14's and 3.16's certificates prove a restatement of the printed relation (A^T A times
-    the printed inverse is 1), whose printed side read through (2.49) differs from the
-    certificate's, and a firm (2.49) would reject them. Section 3.8's point-mass body:
+    (and its time derivative term by term), which certcheck reads firmly and cites (3.14's
+    and 3.16's printed inverse, proved as A^T A times it being 1, is marked ``restated``:
+    :func:`restated_pair`); 3.14's ``alpha``, ``beta`` as printed in (3.15); ``A``, ``P``
+    where ``U`` (3.83b) or ``V`` (3.119b) is printed. Section 3.8's point-mass body:
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
     system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
     section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
