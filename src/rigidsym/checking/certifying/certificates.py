@@ -205,7 +205,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             except Unsupported as exc:
                 raise Unprintable(str(exc)) from None
         rels.append(relation_record(pr, r.label, role, lhs, rhs, ev))
-        if role != "corrected" and (pair := restated_pair(eq.latex or "", lhs, rhs)):
+        if role != "corrected" and (pair := _restated_pair(eq.latex or "", lhs, rhs)):
             rels[-1]["restated"] = {"printed": "X^{-1} = Y", "proved": "X Y = 1",
                                     "X": pair[0], "Y": pair[1]}
     # the groups in a fixed order (their first naming follows sympy's traversal, which
@@ -222,7 +222,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     return out
 
 
-def restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
+def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
     """The printed sides ``(X, Y)`` of a printed ``X^{-1} = Y`` (one relation, X a glyph or
     a bracketed product) whose relation is proved as ``X Y = 1``: ``rhs`` the identity and
     ``lhs`` a square matrix of its size (:func:`derived_sides`, or a model written so, 3.14).
@@ -277,7 +277,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
     (and its time derivative term by term), which certcheck reads firmly and cites (3.14's
     and 3.16's printed inverse, proved as A^T A times it being 1, is marked ``restated``:
-    :func:`restated_pair`); 3.14's ``alpha``, ``beta`` as printed in (3.15); ``A``, ``P``
+    :func:`_restated_pair`); 3.14's ``alpha``, ``beta`` as printed in (3.15); ``A``, ``P``
     where ``U`` (3.83b) or ``V`` (3.119b) is printed. Section 3.8's point-mass body:
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
     system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
