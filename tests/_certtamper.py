@@ -241,6 +241,64 @@ TAMPERINGS = {f.__name__: f for f in (
     dropped_cofactor, altered_cofactor, extra_hypothesis, zero_D)}
 
 
+# ------------------------------------------------------------------ restated relations
+# A printed X^{-1} = Y proved as X Y = 1 (the relation's "restated": X, Y as printed):
+# certcheck reads X and Y from the page, so each of these must be rejected by its reader
+# (tests/test_cert_page.py), never by the mathematics, which none of them changes.
+def _restated(cert):
+    return [r for r in cert["relations"] if "restated" in r]
+
+
+def restated_other_y(cert):
+    """The restatement's Y doubled: X (2 Y) = 1 is not the printed relation's."""
+    c = copy.deepcopy(cert)
+    for r in _restated(c):
+        r["restated"]["Y"] = f"2({r['restated']['Y']})"
+    return c if _restated(c) else None
+
+
+def restated_swapped(cert):
+    """X and Y exchanged: the page prints X^{-1} = Y, not Y^{-1} = X."""
+    c = copy.deepcopy(cert)
+    for r in _restated(c):
+        r["restated"]["X"], r["restated"]["Y"] = r["restated"]["Y"], r["restated"]["X"]
+    return c if _restated(c) else None
+
+
+def restated_scaled(cert):
+    """The proved relation 2 X Y = 2 (the same relation, but its sides are not X Y and 1)."""
+    c = copy.deepcopy(cert)
+    for r in _restated(c):
+        for side in ("lhs", "rhs"):
+            r[side] = [[f"2*({x})" for x in row] for row in r[side]]
+    return c if _restated(c) else None
+
+
+def restated_elsewhere(cert):
+    """The marking moved onto another printed relation of the id (one not proved as X Y =
+    1): its sides are then held against X Y and 1."""
+    c = copy.deepcopy(cert)
+    marked = _restated(c)
+    other = [r for r in c["relations"] if r["role"] == "printed" and "restated" not in r]
+    if not marked or not other:
+        return None
+    other[0]["restated"] = marked[0].pop("restated")
+    return c
+
+
+def restated_unmarked(cert):
+    """The marking dropped: the page's X^{-1} is then held against the certificate's X Y."""
+    c = copy.deepcopy(cert)
+    for r in _restated(c):
+        del r["restated"]
+    return c if c != cert else None
+
+
+#: the tamperings of a restated relation, by name
+RESTATED = {f.__name__: f for f in (restated_other_y, restated_swapped, restated_scaled,
+                                    restated_elsewhere, restated_unmarked)}
+
+
 def roundtrip(cert):
     return json.loads(json.dumps(cert))
 

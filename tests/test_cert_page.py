@@ -15,6 +15,7 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
+import _certtamper as certtamper
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -801,3 +802,79 @@ def test_forces_blocks_and_families_read_firmly_and_tamperings_rejected(forces_r
             cases.append(t)
         for t in cases:
             assert f"({i})" in _rejected(t, book), i
+
+
+# ------------------------------------------------------------------ restated relations
+def _reader_verdict(cert: dict, book: str) -> str | list[str]:
+    """certcheck's reader on the certificate: its rejection's message, or its lines."""
+    from certcheck.compare import compare
+
+    i = cert["id"]
+    try:
+        return compare(cert, locate(book, i), fast=True, defs=definitions_before(book, i))
+    except CheckError as exc:
+        return str(exc)
+
+
+def _restated_cases(c: dict, other: dict) -> list[tuple[str, dict]]:
+    """The tamperings of a restated id: each of _certtamper.RESTATED, the right side
+    doubled (X Y = 2), and another restated id's marking (its X and Y)."""
+    cases = [(n, t(c)) for n, t in certtamper.RESTATED.items()]
+    mark = next(r["restated"] for r in other["relations"] if "restated" in r)
+    moved = copy.deepcopy(c)
+    for r in moved["relations"]:
+        if "restated" in r:
+            r["restated"] = copy.deepcopy(mark)
+    return [x for x in (*cases, ("doubled_rhs", doubled_rhs(c)), ("other_mark", moved))
+            if x[1] is not None]
+
+
+def _assert_restated_read_and_tamperings_rejected(certs: dict, book: str) -> None:
+    ids = sorted(certs)
+    for k, i in enumerate(ids):
+        c = certs[i]
+        lines = _reader_verdict(c, book)
+        assert isinstance(lines, list), lines
+        n = [j + 1 for j, r in enumerate(r for r in c["relations"] if r["role"] == "printed")
+             if "restated" in r]
+        assert n and all(f"relation {j} restated" in "\n".join(lines) for j in n), lines
+        assert all(any(x.startswith(f"read from the page: relation {j}'s lhs") and " and rhs"
+                       in x for x in lines) for j in n), lines
+        assert not any(x.startswith(("NOT READ", "matched")) for x in lines), lines
+        for name, t in _restated_cases(c, certs[ids[k - 1]]):
+            got = _reader_verdict(t, book)
+            if name == "restated_unmarked" and isinstance(got, list):  # unread, not passed:
+                # a 6 x 6 X^{-1} (3.31), or one printed relation under two models (3.16)
+                assert any(x.startswith("NOT READ: relation") for x in got), (i, got)
+                continue
+            assert isinstance(got, str) and f"({i})" in got, (i, name, got)
+
+
+@pytest.fixture(scope="module")
+def restated_read(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _write(tmp_path_factory.mktemp("restated"), ["3.16", "3.122"])
+
+
+def test_restated_relations_read_firmly_and_forgeries_rejected(restated_read):
+    """3.16 ((A^T A)^{-1} = 1/(2(1 - cos phi)) 1 + ..., Q by (2.49); its second relation)
+    and 3.122 (V^{-1} = U^T, 6 x 6, V and U by (3.119b) and (3.83b)) are proved as X Y = 1:
+    the certificate marks it, certcheck reads X and Y from the page and their product is the
+    proved left side. A different Y, X and Y exchanged, 2 X Y = 2, the marking moved onto
+    3.16's other relation, the right side doubled and the other id's marking: rejected by
+    the reader, naming the id; the marking dropped: 3.122 rejected (the page's U^T against
+    1), 3.16 NOT READ (one printed relation under two models)."""
+    _assert_restated_read_and_tamperings_rejected(restated_read, _book())
+
+
+@pytest.mark.slow
+def test_chapter_restated_relations_read_and_forgeries_rejected(chapter):
+    """Every id of the chapter with a restated relation (3.14, with alpha and beta as
+    printed in (3.15), 3.16, 3.122): read firmly, and every tampering of the marking
+    rejected."""
+    _, certs = chapter
+    restated = {i: c for i, c in certs.items()
+                if any("restated" in r for r in c["relations"])}
+    assert {"3.14", "3.16", "3.122"} <= set(restated)
+    _assert_restated_read_and_tamperings_rejected(restated, _book())

@@ -2,14 +2,17 @@
 (:func:`certcheck.reader.read_relations`) is held against the certificate's side, as a
 rational function under the kinds' hypotheses (:func:`certcheck.check.check_identity`); a
 side read firmly that differs is a rejection, one matched through an equation of the page
-or one of several models is NOT READ when it differs, and a side not read is said so.
+or one of several models is NOT READ when it differs, and a side not read is said so. A
+printed ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y.
 """
 
 from __future__ import annotations
 
 import re
+from itertools import accumulate
 
-from certcheck.reader import NotRead, read_relations
+from certcheck.arrays import M, mul
+from certcheck.reader import NotRead, read_relations, tokens
 
 __all__ = ["compare"]
 
@@ -48,13 +51,18 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
-    soft = len(pairs) == 1 and len(printed) > 1  # one printed relation under several models
-    pairs = pairs * len(printed) if soft else pairs
+    # one printed relation under several models (a restatement is not another model)
+    soft = len(pairs) == 1 and len([r for r in printed if "restated" not in r]) > 1
+    pairs = pairs * len(printed) if len(pairs) == 1 and len(printed) > 1 else pairs
     if len(pairs) != len(printed):
         return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
                 f"has {len(printed)} (a family the reader does not match); each relation is "
                 "the certificate's word"]
-    out = []
+    for k, rel in enumerate(printed):  # X^{-1} = Y proved as X Y = 1: X, Y read
+        if "restated" in rel:
+            pairs[k] = _restated(cert, rel, page, symbols, defs, lets)
+    out = [f"relation {k + 1} restated: the printed X^{{-1}} = Y proved as X Y = 1, X and Y"
+           " read from the page" for k, r in enumerate(printed) if "restated" in r]
     for k, rel in enumerate(printed):
         read, matched = [], []
         for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
@@ -103,3 +111,28 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
             out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
                        "the certificate's" + (" under one of its models" if soft else ""))
     return out
+
+
+def _restated(cert: dict, rel: dict, page: str, symbols: list, defs: dict, lets: list):
+    """The sides (X Y, 1) of a printed ``X^{-1} = Y`` proved as ``X Y = 1`` (``restated``:
+    X, Y as printed), X and Y read from the page, square. Raises CheckError: the marking is
+    not the printed relation's restatement."""
+    from certcheck.check import CheckError
+    r, who = rel["restated"], f"({cert.get('id')}) relation {rel.get('label') or ''}"
+    x, y = str(r.get("X", "")), str(r.get("Y", ""))
+    t, depth = tokens(x), list(accumulate((c == "(") - (c == ")") for c in tokens(x)))
+    whole = len(t) == 4 and t[0] in ("\\mathbf", "\\boldsymbol") or t[:1] == ["("] and \
+        0 not in depth[:-1] and depth[-1] == 0  # a glyph, or one bracket: X^{-1} is X's
+    if (r.get("printed"), r.get("proved")) != ("X^{-1} = Y", "X Y = 1") or not whole or \
+            tokens(page.rstrip(",. ")) != tokens(f"{x}^{{-1}} = {y}"):
+        raise CheckError(f"{who}: restated as {r.get('proved')!r} of X = {x!r}, Y = {y!r}, "
+                         f"which is not the printed relation's restatement")
+    (a, b), = read_relations(f"{x} = {y}", symbols, defs, lets)
+    if (why := next((v[0] for v in (a, b) if isinstance(v[0], NotRead)), None)) is not None:
+        return (why, False, []), (why, False, [])  # X or Y not read: nor is X Y
+    n = a[0].shape[0]
+    if a[0].shape != (n, n) or b[0].shape != (n, n):
+        raise CheckError(f"{who}: X Y = 1 of shapes {a[0].shape}, {b[0].shape} does not make "
+                         "Y the inverse of X")
+    one = M([[str(int(i == j)) for j in range(n)] for i in range(n)])
+    return (mul(a[0], b[0]), a[1] or b[1], a[2] + b[2]), (one, False, [])

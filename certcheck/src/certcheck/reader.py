@@ -408,7 +408,7 @@ class _Reader:
             value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
             self.used |= inner.used
             self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
-                              else f"{key} by {entry.get('printed_as', '?')}, an equation")
+                              else f"{key} as printed in {entry.get('printed_as', '?')}")
             self.seen[key] = (*self.seen[key][:3], self.cited[n:])
             return value
         if "cpm_of" in entry:

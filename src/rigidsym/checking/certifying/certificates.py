@@ -205,6 +205,9 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             except Unsupported as exc:
                 raise Unprintable(str(exc)) from None
         rels.append(relation_record(pr, r.label, role, lhs, rhs, ev))
+        if role != "corrected" and (pair := _restated_pair(eq.latex or "", lhs, rhs)):
+            rels[-1]["restated"] = {"printed": "X^{-1} = Y", "proved": "X Y = 1",
+                                    "X": pair[0], "Y": pair[1]}
     # the groups in a fixed order (their first naming follows sympy's traversal, which
     # differs across PYTHONHASHSEED): the same statement gives the same bytes
     atoms = sorted(pr.groups.values(), key=lambda g: g["group"])
@@ -217,6 +220,20 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     if verdict == "does-not-hold":
         out["cause"] = cause_record(eq)
     return out
+
+
+def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
+    """The printed sides ``(X, Y)`` of a printed ``X^{-1} = Y`` (one relation, X a glyph or
+    a bracketed product) whose relation is proved as ``X Y = 1``: ``rhs`` the identity and
+    ``lhs`` a square matrix of its size (:func:`derived_sides`, or a model written so, 3.14).
+    certcheck reads X and Y from the page and requires ``lhs`` to be their product; ``None``
+    where the page or the relation is not of that form."""
+    m = re.fullmatch(r"\s*(\\mathbf\{\w\}|\([^=]*\))\^\{-1\}\s*=\s*([^=,]*?)\s*", latex)
+    n = shape_of(rhs)[0]
+    if m is None or not isinstance(rhs, sp.MatrixBase) or rhs != sp.eye(n) or \
+            shape_of(lhs) != (n, n):
+        return None
+    return m.group(1), m.group(2)
 
 
 #: the cross-product matrices by section, as latex/glyphs.csv declares them (the checking
@@ -258,10 +275,10 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``. Where ``e``
     and ``phi`` are atoms and no rotation group is, ``{"glyph": "\\mathbf{Q}", "latex":
     ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
-    (and its time derivative term by term), which certcheck reads and cites, tentatively:
-    3.14's and 3.16's certificates prove a restatement of the printed relation (A^T A times
-    the printed inverse is 1), whose printed side read through (2.49) differs from the
-    certificate's, and a firm (2.49) would reject them. Section 3.8's point-mass body:
+    (and its time derivative term by term), which certcheck reads firmly and cites (3.14's
+    and 3.16's printed inverse, proved as A^T A times it being 1, is marked ``restated``:
+    :func:`_restated_pair`); 3.14's ``alpha``, ``beta`` as printed in (3.15); ``A``, ``P``
+    where ``U`` (3.83b) or ``V`` (3.119b) is printed. Section 3.8's point-mass body:
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
     system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
     section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
@@ -297,8 +314,9 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
             continue
         glyph = _glyph(base, True)
         add(glyph, {"kind": kind, "atoms": sorted(names)}, timed)
-        for cap in cpm.get(glyph, ()):
-            if cap in latex:
+        for cap in cpm.get(glyph, ()):  # U of (3.83b), V of (3.119b) print A and P
+            if cap in latex or cap in ("\\mathbf{A}", "\\mathbf{P}") and \
+                    re.search(r"\\mathbf\{[UV]\}", latex):
                 out.append({"glyph": cap, "cpm_of": glyph})
     for g in atoms:  # a rotation or transform: its matrix, row-major
         if g["kind"] in ("rotation", "transform"):
@@ -316,6 +334,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
             out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
                         "printed_as": "the time derivative of (2.49)"})
             out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
+    if section == "3.2.1" and "\\beta \\mathbf{e}" in latex and "\\phi" in glyphs:
+        out += [{"glyph": g, "latex": x, "printed_as": "(3.15)"} for g, x in _ALPHA_BETA]
     out += model_symbols({e["glyph"] for e in out}, section, out)
     out += force_symbols({e["glyph"] for e in out}, section, out)
     if section == "3.2.3" and "\\mathbf{e}_i" in latex and "\\mathbf{e}_1" not in glyphs \
@@ -476,7 +496,10 @@ _QDOT_QUATERNION = (r"\frac{(2q_4u_4 - 2\mathbf{q}^T\mathbf{u})\mathbf{1} + 2\ma
 #: the rotation of angle phi about the unit vector e, as printed in chapter 2 (2.49)
 _Q_NATURAL = (r"\mathbf{e}\mathbf{e}^T + \cos\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
               r"+ \sin\phi\mathbf{E}")
-#: its time derivative, term by term (product rule; e, phi functions of time)
+#: (3.14)'s coefficients, as printed in (3.15)
+_ALPHA_BETA = (("\\alpha", r"\frac{1}{2(1 - \cos \phi)}"),
+               ("\\beta", r"\frac{1 - 2 \cos \phi}{2(1 - \cos \phi)}"))
+#: Q's time derivative, term by term (product rule; e, phi functions of time)
 _QDOT_NATURAL = (r"\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T "
                  r"- \dot{\phi}\sin\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
                  r"- \cos\phi(\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T) "
