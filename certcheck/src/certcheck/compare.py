@@ -40,6 +40,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                                  f"{e.get('kind')!r}, its atom {a} is of kind "
                                  f"{kinds.get((group or {}).get('group'))!r}")
     printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
+    for r in sorted((r for r in cert.get("relations", []) if r.get("role") == "claim"
+                     and isinstance(r.get("page"), int)), key=lambda r: r["page"]):
+        printed.insert(r["page"] - 1, r)  # a chain's member the page prints, proved as a claim
     here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
             for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
@@ -47,7 +50,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
         sides = read_relations(page, symbols, defs, lets := [])
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
-    pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
+    pairs = [(c[0] if k == 1 or not isinstance(c[0][0], NotRead) else  # a = b = c: a is b
+              (c[1][0], c[1][1], [*c[1][2], "the chain's member before"]), c[k])
+             for c in sides for k in range(1, len(c))]
     soft = len(pairs) == 1 and len(printed) > 1  # one printed relation under several models
     pairs = pairs * len(printed) if soft else pairs
     if len(pairs) != len(printed):

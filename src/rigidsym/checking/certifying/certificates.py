@@ -205,6 +205,8 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             except Unsupported as exc:
                 raise Unprintable(str(exc)) from None
         rels.append(relation_record(pr, r.label, role, lhs, rhs, ev))
+        if role == "claim" and getattr(r, "page", 0):  # a chain's member the page prints
+            rels[-1]["page"] = r.page
     # the groups in a fixed order (their first naming follows sympy's traversal, which
     # differs across PYTHONHASHSEED): the same statement gives the same bytes
     atoms = sorted(pr.groups.values(), key=lambda g: g["group"])

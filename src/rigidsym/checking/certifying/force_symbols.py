@@ -70,9 +70,46 @@ def force_symbols(have: set, section: str, table: list[dict] | None = None) -> l
                 line(f"\\mathbf{{n}}_{x.upper()}", f"W(\\mathbf{{r}}_1 - \\mathbf{{{x}}}) "
                      f"\\times \\mathbf{{e}} + \\mathbf{{c}}", f"moment about {x.upper()} of "
                      + _ONE)
+        out += _wrench_axis(have, table or [])
     if {"\\mathbf{e}", "\\mathbf{et}", "\\mathbf{rw}", "\\mathbf{rt}", "hw"} <= have:
         out += _screw_pair(have, table or [])
     return [e for e in out if e["glyph"] not in have]
+
+
+def _wrench_axis(have: set, table: list[dict]) -> list[dict]:
+    """The wrench axis L'' of the one-force model as ``derivations/sec3_7.py`` has it (the
+    page defines it in words, Theorem 3.7.1): ``p_0''`` the point where the moment is
+    parallel to ``f`` and ``f . x = 0`` (solved there: ``r_1 - (e^T r_1) e + e x c / W``),
+    a point ``p_0'' + lambda f`` of it, the moment there (``n_0``, the minimum moment),
+    ``e''`` the unit ``e`` of ``f = W e``, ``n''`` the axis' moment about the origin, the
+    Plücker array's six atoms, and ``n_0`` as (3.108) prints it."""
+    words = "wrench axis L'' of " + _ONE
+    p0 = ("\\mathbf{r}_1 - (\\mathbf{e}^T\\mathbf{r}_1)\\mathbf{e} + \\frac{1}{W}\\mathbf{e}"
+          " \\times \\mathbf{c}")
+    out = [{"glyph": "\\mathbf{p}_0''", "latex": p0, "model": "point closest to the origin "
+            "(moment parallel to f, f . x = 0, solved) of the " + words},
+           {"glyph": "\\mathbf{e}''", "latex": "\\mathbf{e}", "model": "unit vector of the "
+            + words}]
+    lam = [{**e, "glyph": "\\lambda"} for e in table if e.get("glyph") == "lam"]
+    point = "(\\mathbf{p}_0'' + \\lambda\\mathbf{f})"
+    if lam:
+        out += [*lam, {"glyph": "\\mathbf{n}_0", "latex": f"W(\\mathbf{{r}}_1 - {point}) "
+                       "\\times \\mathbf{e} + \\mathbf{c}", "model": "minimum-magnitude "
+                       "moment: the moment about the point p_0'' + lambda f of the " + words},
+                {"glyph": "\\mathbf{n}''", "latex": f"{point} \\times \\mathbf{{e}}''",
+                 "model": "moment about the origin of the point p_0'' + lambda f of the "
+                 + words}]
+        if "\\mathbf{p}" not in have:
+            out.append({"glyph": "\\mathbf{p}", "latex": point[1:-1], "model": "any point "
+                        "P of the " + words})
+    if "\\mathbf{p}" in have:  # n_P is given
+        out.append({"glyph": "n_0", "latex": "\\frac{\\mathbf{n}_P \\cdot \\mathbf{f}}"
+                    "{\\|\\mathbf{f}\\|}", "model": "magnitude of the minimum moment, as "
+                    "printed in (3.108)"})
+    pl = [a for e in table if e.get("glyph", "").startswith("p_L2_") for a in e["atoms"]]
+    if len(pl) == 6:
+        out.append({"glyph": "\\mathbf{p}_{\\mathcal{L}''}", "kind": "free", "atoms": pl})
+    return out
 
 
 def _screw(e: str, r: str, h: str) -> str:
