@@ -378,6 +378,9 @@ def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) ->
                     else g
                 if "atoms" in e and undotted == base:
                     out.append({**e, "glyph": f"[{e['glyph']}]_{{\\mathcal{{{frame}}}}}"})
+    if section == "3.2" and {"\\mathbf{a}'", "\\mathbf{e}"} <= have and "d_0" not in have:
+        out.append({"glyph": "d_0", "latex": "\\mathbf{e}^T(\\mathbf{a}' - \\mathbf{a})",
+                    "model": "slide along the axis e^T d_A (3.5), d_A = a' - a (3.3)"})
     if section == "3.2.2" and {"\\mathbf{p}_1", "\\mathbf{u}", "ell"} <= have:
         out += _line_points(have, table or [])
     if {"\\mathbf{w_axis}", "\\mathbf{e}"} <= have:

@@ -73,6 +73,7 @@ def force_symbols(have: set, section: str, table: list[dict] | None = None) -> l
         out += _wrench_axis(have, table or [])
     if {"\\mathbf{e}", "\\mathbf{et}", "\\mathbf{rw}", "\\mathbf{rt}", "hw"} <= have:
         out += _screw_pair(have, table or [])
+    out += _wrench_twist(have)
     return [e for e in out if e["glyph"] not in have]
 
 
@@ -110,6 +111,68 @@ def _wrench_axis(have: set, table: list[dict]) -> list[dict]:
     if len(pl) == 6:
         out.append({"glyph": "\\mathbf{p}_{\\mathcal{L}''}", "kind": "free", "atoms": pl})
     return out
+
+
+def _wrench_twist(have: set) -> list[dict]:
+    """The wrench array ``w = [n; f]`` (3.113) and the twist array ``t = [omega; v]`` of the
+    models of ``derivations/sec3_7_reciprocity.py``, in the page's words:
+
+    - (3.113): a force ``f = A e`` on the line through ``rw`` along ``e`` and the parallel
+      moment ``h f``: ``n = rw x f + h f`` (the display above (3.113), its P at ``rw``);
+    - (3.115): a general wrench and twist at the origin, ``f = W e``, ``n = c`` (free),
+      ``omega = T et``, ``v`` free; their screws (3.71) as the model solves them (the axis
+      point nearest the origin where the moment, the velocity, is parallel to ``f``,
+      ``omega``: ``e x c / W``, ``et x v / T``; pitches ``c . e / W``, ``v . et / T``);
+    - (3.114): a moving body loaded by forces ``f_1``, ``f_2`` at its points ``a + Q s_i``
+      and a couple ``c``: ``n_X`` about its point X (``a``, ``p``), ``omega = vect(Q-dot
+      Q^T)``, the twist at X ``[omega; x-dot]`` and the power ``Pi`` of the forces."""
+    out = []
+    bf, be, bc, bv = "\\mathbf{f}", "\\mathbf{e}", "\\mathbf{c}", "\\mathbf{v}"
+    w_words = "wrench array (3.113) of the resultant f and the moment n"
+    if {be, "\\mathbf{rw}", "A", "h"} <= have:
+        out += [(bf, "A\\mathbf{e}", "force of magnitude A along the line through rw along e"),
+                ("\\mathbf{n}", "\\mathbf{rw} \\times \\mathbf{f} + h\\mathbf{f}",
+                 "moment about the origin of f on the line through rw plus the parallel "
+                 "moment of pitch h (the display above (3.113), its P at rw)")]
+    elif {be, "\\mathbf{et}", bc, bv, "W", "T"} <= have and "\\mathbf{rw}" not in have:
+        out += [(bf, "W\\mathbf{e}", "resultant of a general wrench at the origin"),
+                ("\\mathbf{n}", bc, "moment about the origin of that wrench (free)"),
+                ("\\boldsymbol{\\omega}", "T\\mathbf{et}", "angular velocity of a general "
+                 "twist at the origin"),
+                ("\\mathbf{s}_w", _screw(be, "(\\frac{1}{W}\\mathbf{e} \\times \\mathbf{c})",
+                                        "\\frac{\\mathbf{c} \\cdot \\mathbf{e}}{W}"),
+                 "wrench's screw (3.71) as solved: axis point e x c / W, pitch c . e / W"),
+                ("\\mathbf{s}_t", _screw("\\mathbf{et}", "(\\frac{1}{T}\\mathbf{et} \\times "
+                                        "\\mathbf{v})", "\\frac{\\mathbf{v} \\cdot "
+                                        "\\mathbf{et}}{T}"),
+                 "twist's screw (3.71) as solved: axis point et x v / T, pitch v . et / T"),
+                ("\\mathbf{t}", "\\begin{bmatrix} \\boldsymbol{\\omega} \\\\ \\mathbf{v} "
+                 "\\end{bmatrix}", "twist array at the origin, the velocity v of the point "
+                 "there")]
+    elif {"\\mathbf{s}_1", "\\mathbf{s}_2", "\\mathbf{f}_1", "\\mathbf{f}_2",
+          "\\dot{\\mathbf{Q}}", "\\dot{\\mathbf{p}}"} <= have:
+        body = "forces f_1, f_2 at the moving body's points a + Q s_i and a couple c"
+        out += [(bf, "\\mathbf{f}_1 + \\mathbf{f}_2", "resultant of " + body),
+                ("\\boldsymbol{\\omega}", "\\text{vect}(\\dot{\\mathbf{Q}}\\mathbf{Q}^T)",
+                 "angular velocity, vect(Q-dot Q^T) (3.44)-(3.45)"),
+                ("\\Pi", " + ".join(f"\\mathbf{{f}}_{k} \\cdot (\\dot{{\\mathbf{{a}}}} + "
+                                     f"\\dot{{\\mathbf{{Q}}}}\\mathbf{{s}}_{k})" for k in (1, 2))
+                 + " + \\mathbf{c} \\cdot \\boldsymbol{\\omega}", "power of " + body)]
+        for x in ("a", "p"):  # the body's points A and P
+            n = " + ".join(f"(\\mathbf{{a}} + \\mathbf{{Q}}\\mathbf{{s}}_{k} - \\mathbf{{{x}}}) "
+                           f"\\times \\mathbf{{f}}_{k}" for k in (1, 2)) + " + \\mathbf{c}"
+            X = x.upper()
+            out += [(f"\\mathbf{{n}}_{X}", n, f"moment about {X} of " + body),
+                    (f"\\mathbf{{w}}_{X}", f"\\begin{{bmatrix}} \\mathbf{{n}}_{X} \\\\ "
+                     "\\mathbf{f} \\end{bmatrix}", f"wrench array (3.113) at {X} of " + body),
+                    (f"\\mathbf{{t}}_{X}", f"\\begin{{bmatrix}} \\boldsymbol{{\\omega}} \\\\ "
+                     f"\\dot{{\\mathbf{{{x}}}}} \\end{{bmatrix}}", f"twist array at {X}")]
+        out += [("\\mathbf{w}", "\\mathbf{w}_P", "wrench array at P"),
+                ("\\mathbf{t}", "\\mathbf{t}_P", "twist array at P")]
+    if out and out[1][0] == "\\mathbf{n}":
+        out.append(("\\mathbf{w}", "\\begin{bmatrix} \\mathbf{n} \\\\ \\mathbf{f} "
+                    "\\end{bmatrix}", w_words))
+    return [{"glyph": g, "latex": latex, "model": words} for g, latex, words in out]
 
 
 def _screw(e: str, r: str, h: str) -> str:
