@@ -18,13 +18,13 @@ from test_cert_page import (
     _rejected,
     _write,
     another_printed_text,
+    definitions_before,
     doubled_rhs,
+    locate,
     relabelled,
     shifted_sides,
     unit_declared_free,
 )
-
-from certcheck.book import definitions_before, locate
 
 #: newly read ids, each with a line of its table the page reads, and a change of it
 CHANGED = {"3.109": ("\\mathbf{n}_P", "\\mathbf{c}", "2\\mathbf{c}"),
