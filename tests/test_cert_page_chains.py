@@ -1,6 +1,6 @@
 """Chains and section 3.7's wrench ids read by certcheck's second reader (issue 65, wave 9,
 third session). A chain ``a \\equiv b = c`` is read as ``a = b`` and ``a = c``, its later
-``a`` read as the member before it (the page says ``a`` is ``b``); the certificate marks
+``a`` read as ``b`` (the page says ``a`` is ``b``); the certificate marks
 the claim that proves a member the definition does not state (``"page": k``), so the
 member is read against a proof, not only claimed. The wrench axis (``p_0''``, ``e''``,
 ``n''``, ``n_0``) and the wrench and twist arrays ``w = [n; f]``, ``t = [omega; v]`` are
@@ -92,7 +92,7 @@ def test_chain_member_and_wrench_arrays_read_and_tamperings_rejected(chains_read
     assert [r.get("page") for r in c["relations"] if r["role"] == "claim"] == [2, None, None]
     lines = _compare(c, book)
     assert any(x.startswith("read from the page: relation 2's lhs") and " and rhs" in x
-               and "the chain's member before" in x for x in lines), lines
+               and "the chain's second member" in x for x in lines), lines
     assert sum(x.startswith("NOT READ") for x in lines) == 2, lines  # p'' defined, twice
     lines = _compare(chains_read["3.115"], book)
     assert sum(x.startswith("read from the page") and " and rhs" in x for x in lines) == 2

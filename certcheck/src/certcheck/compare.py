@@ -51,7 +51,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     pairs = [(c[0] if k == 1 or not isinstance(c[0][0], NotRead) else  # a = b = c: a is b
-              (c[1][0], c[1][1], [*c[1][2], "the chain's member before"]), c[k])
+              (c[1][0], c[1][1], [*c[1][2], "the chain's second member"]), c[k])
              for c in sides for k in range(1, len(c))]
     soft = len(pairs) == 1 and len(printed) > 1  # one printed relation under several models
     pairs = pairs * len(printed) if soft else pairs
