@@ -34,7 +34,8 @@ CHANGED = {"3.109": ("\\mathbf{n}_P", "\\mathbf{c}", "2\\mathbf{c}"),
            "3.111": ("\\mathbf{p}_0''", "(\\mathbf{e}^T\\mathbf{r}_1)", "2(\\mathbf{e}^T"
                      "\\mathbf{r}_1)"),
            "3.113": ("\\mathbf{n}", "h\\mathbf{f}", "2h\\mathbf{f}"),
-           "3.114": ("\\Pi", "\\mathbf{c} \\cdot", "2\\mathbf{c} \\cdot")}
+           "3.114": ("\\Pi", "\\mathbf{c} \\cdot", "2\\mathbf{c} \\cdot"),
+           "3.120": ("\\mathbf{n}_A", "+ \\mathbf{c}", "+ 2\\mathbf{c}")}
 
 
 def _compare(c: dict, book: str) -> list[str]:
@@ -106,12 +107,13 @@ def test_chain_member_and_wrench_arrays_read_and_tamperings_rejected(chains_read
 def test_chapter_section_3_7_wrench_ids_read_and_tamperings_rejected(tmp_path):
     """3.108 (both members of ``n_0 = n_0 f/||f||, n_0 \\equiv ...``, the first the marked
     claim), 3.110 (the Plücker array of the wrench axis), 3.111 (``p_0''`` against the
-    model's solved point), 3.113 (``w = [n; f]``) and 3.114 (``Pi = t^T w`` on the moving
-    body): every side read firmly, each tampering rejected naming the id."""
+    model's solved point), 3.113 (``w = [n; f]``), 3.114 (``Pi = t^T w`` on the moving
+    body) and 3.120 (``t_P^T w_P = t_A^T U^T V w_A``, U and V through (3.83b), (3.119b)):
+    every side read firmly, each tampering rejected naming the id."""
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
     book = _book()
-    for i, c in _write(tmp_path, ["3.108", "3.110", "3.111", "3.113", "3.114"]).items():
+    for i, c in _write(tmp_path, ["3.108", "3.110", "3.111", "3.113", "3.114", "3.120"]).items():
         lines = _compare(c, book)
         assert not any(x.startswith(("NOT READ", "matched")) for x in lines), (i, lines)
         for t in _tamperings(c, book):

@@ -126,7 +126,7 @@ def _wrench_twist(have: set) -> list[dict]:
     - (3.114): a moving body loaded by forces ``f_1``, ``f_2`` at its points ``a + Q s_i``
       and a couple ``c``: ``n_X`` about its point X (``a``, ``p``), ``omega = vect(Q-dot
       Q^T)``, the twist at X ``[omega; x-dot]`` and the power ``Pi`` of the forces."""
-    out = []
+    out, cpms = [], []
     bf, be, bc, bv = "\\mathbf{f}", "\\mathbf{e}", "\\mathbf{c}", "\\mathbf{v}"
     w_words = "wrench array (3.113) of the resultant f and the moment n"
     if {be, "\\mathbf{rw}", "A", "h"} <= have:
@@ -169,10 +169,12 @@ def _wrench_twist(have: set) -> list[dict]:
                      f"\\dot{{\\mathbf{{{x}}}}} \\end{{bmatrix}}", f"twist array at {X}")]
         out += [("\\mathbf{w}", "\\mathbf{w}_P", "wrench array at P"),
                 ("\\mathbf{t}", "\\mathbf{t}_P", "twist array at P")]
+        cpms = [{"glyph": f"\\mathbf{{{x.upper()}}}", "cpm_of": f"\\mathbf{{{x}}}"}
+                for x in ("a", "p")]  # through (3.83b), (3.119b): U, V of the moving body
     if out and out[1][0] == "\\mathbf{n}":
         out.append(("\\mathbf{w}", "\\begin{bmatrix} \\mathbf{n} \\\\ \\mathbf{f} "
                     "\\end{bmatrix}", w_words))
-    return [{"glyph": g, "latex": latex, "model": words} for g, latex, words in out]
+    return [{"glyph": g, "latex": latex, "model": words} for g, latex, words in out] + cpms
 
 
 def _screw(e: str, r: str, h: str) -> str:
