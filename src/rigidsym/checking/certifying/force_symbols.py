@@ -15,11 +15,16 @@ The project's models (``derivations/sec3_7.py``, ``_force_system``) are
 
 A wrench and a twist of screws ``s_w``, ``s_t`` (3.71) (``derivations/sec3_7_reciprocity.py``):
 axes through ``rw`` and ``rt`` along the unit vectors ``e`` and ``et``, pitch ``hw``, and the
-twist's pitch solved from zero power (a reciprocal pair, 3.116-3.117).
+twist's pitch solved from zero power (a reciprocal pair, 3.116-3.117). The wrench axis of
+the one-force model (``p_0''``, ``e''``, ``n''``, the minimum moment ``n_0``: 3.108-3.111)
+and the wrench and twist arrays ``w = [n; f]``, ``t = [omega; v]`` of the models of 3.113-3.115
+and of the moving body (3.114, 3.120), as the models have them (:func:`_wrench_axis`,
+:func:`_wrench_twist`).
 
 (``A`` and ``P``, the cross-product matrices of ``a`` and ``p``, are given only where the id
-prints them: 3.122's certificate proves the restatement ``V U^T = 1``, against which the
-printed ``U^T`` read through (3.83b) would differ.)
+prints them, or on the moving body (3.120's ``U``, ``V`` through (3.83b), (3.119b)): 3.122's
+certificate proves the restatement ``V U^T = 1``, against which the printed ``U^T`` read
+through (3.83b) would differ.)
 """
 
 from __future__ import annotations
@@ -41,8 +46,9 @@ def force_symbols(have: set, section: str, table: list[dict] | None = None) -> l
 
     Returns:
         Entries ``{"glyph", "latex", "model"}`` for ``f``, ``||f||`` (one-force model), and
-        ``n_A``, ``n_P`` (where ``a``, ``p`` are points of the table); only glyphs the table
-        lacks; ``[]`` where the table has neither model.
+        ``n_A``, ``n_P`` (where ``a``, ``p`` are points of the table), the wrench axis,
+        the wrench and twist arrays; only glyphs the table lacks; ``[]`` where the table
+        has none of the models.
     """
     if section != "3.7":
         return []
