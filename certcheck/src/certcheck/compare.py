@@ -50,7 +50,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
         sides = read_relations(page, symbols, defs, lets := [])
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
-    pairs = [(c[0] if k == 1 or not isinstance(c[0][0], NotRead) else  # a = b = c: a is b
+    held = cert.get("verdict") != "does-not-hold"  # a = b = c: a is b, where a = b holds
+    pairs = [(c[0] if k == 1 or not held or not isinstance(c[0][0], NotRead) else
               (c[1][0], c[1][1], [*c[1][2], "the chain's second member"]), c[k])
              for c in sides for k in range(1, len(c))]
     soft = len(pairs) == 1 and len(printed) > 1  # one printed relation under several models
