@@ -149,7 +149,7 @@ def displacement_pitch() -> Statement:
     kernel = pitch_of_displacement(model[e], model[d_A], phi)
     return Statement([Rel(pitch, d_0 / phi), Rel(pitch_turn, 2 * sp.pi * d_0 / phi)], model,
                      defines=("pitch", "pitch_turn"),
-                     claims=[Rel(pitch, (d_P.T * e)[0, 0] / phi, "second member"),
+                     claims=[Rel(pitch, (d_P.T * e)[0, 0] / phi, "second member", page=2),
                              Rel(pitch, kernel, "pitch_of_displacement")])
 
 

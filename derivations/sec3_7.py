@@ -252,7 +252,7 @@ def minimum_moment() -> Statement:
     model.update({n0_vec: im(ex["moment"](ex["p0"] + ex["lam"] * model[f])),
                   n0: sp.Matrix(n0_def.xreplace(model).as_explicit())[0]})
     return Statement([Rel(n0, n0_def)], model, defines=("n_0",),
-                     claims=[Rel(n0_vec, n0 * f / norm_f, "minimum moment n_0")])
+                     claims=[Rel(n0_vec, n0 * f / norm_f, "minimum moment n_0", page=1)])
 
 
 @equation("3.109", "Pitch of the wrench (m/rad and m/turn)", section="3.7",
@@ -276,7 +276,7 @@ def wrench_pitch_definition() -> Statement:
     return Statement(
         [Rel(pitch_w, n0 / norm_f), Rel(pitch_w_turn, 2 * sp.pi * (n_P.T * f) / norm_f**2)],
         model, defines=("p_wrench", "p_wrench_turn"),
-        claims=[Rel(pitch_w, (n_P.T * f) / norm_f**2, "second member"),
+        claims=[Rel(pitch_w, (n_P.T * f) / norm_f**2, "second member", page=2),
                 Rel(pitch_w, kernel, "kernel wrench_pitch"),
                 Rel(n0_vec, pitch_w * f, "moment on the axis = pitch x force")])
 

@@ -43,6 +43,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                                  f"{e.get('kind')!r}, its atom {a} is of kind "
                                  f"{kinds.get((group or {}).get('group'))!r}")
     printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
+    for r in sorted((r for r in cert.get("relations", []) if r.get("role") == "claim"
+                     and isinstance(r.get("page"), int)), key=lambda r: r["page"]):
+        printed.insert(r["page"] - 1, r)  # a chain's member the page prints, proved as a claim
     here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
             for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
@@ -50,7 +53,10 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
         sides = read_relations(page, symbols, defs, lets := [])
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
-    pairs = [(c[0], c[k]) for c in sides for k in range(1, len(c))]
+    held = cert.get("verdict") != "does-not-hold"  # a = b = c: a is b, where a = b holds
+    pairs = [(c[0] if k == 1 or not held or not isinstance(c[0][0], NotRead) else
+              (c[1][0], c[1][1], [*c[1][2], "the chain's second member"]), c[k])
+             for c in sides for k in range(1, len(c))]
     # one printed relation under several models (a restatement is not another model)
     soft = len(pairs) == 1 and len([r for r in printed if "restated" not in r]) > 1
     pairs = pairs * len(printed) if len(pairs) == 1 and len(printed) > 1 else pairs

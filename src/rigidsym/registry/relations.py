@@ -129,6 +129,11 @@ class Rel:
         lhs: the left-hand side.
         rhs: the right-hand side, of the same shape.
         label: names the member in reports (``"d_P"``, ``"second member"``); optional.
+        page: for a claim that the page prints as a member of the id's chain (``p'' \\equiv
+            n_0 / ||f|| = n_P . f / ||f||^2``: the last member, derived, not defined), its
+            place k (1, 2, ...) among the printed relations as the page reads them (each
+            chain ``a = b = c`` as ``a = b``, ``a = c``); 0: not printed. The certificate
+            marks it (``"page": k``) so that certcheck reads that member against the proof.
 
     Raises:
         BadInput: a side holds a node the engine does not know (the message names it and
@@ -138,6 +143,7 @@ class Rel:
     lhs: Any
     rhs: Any
     label: str = ""
+    page: int = 0
 
     def __post_init__(self):
         try:

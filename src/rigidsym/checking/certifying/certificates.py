@@ -208,6 +208,8 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         if role != "corrected" and (pair := _restated_pair(eq.latex or "", lhs, rhs)):
             rels[-1]["restated"] = {"printed": "X^{-1} = Y", "proved": "X Y = 1",
                                     "X": pair[0], "Y": pair[1]}
+        if role == "claim" and getattr(r, "page", 0):  # a chain's member the page prints
+            rels[-1]["page"] = r.page
     # the groups in a fixed order (their first naming follows sympy's traversal, which
     # differs across PYTHONHASHSEED): the same statement gives the same bytes
     atoms = sorted(pr.groups.values(), key=lambda g: g["group"])
@@ -396,6 +398,9 @@ def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) ->
                     else g
                 if "atoms" in e and undotted == base:
                     out.append({**e, "glyph": f"[{e['glyph']}]_{{\\mathcal{{{frame}}}}}"})
+    if section == "3.2" and {"\\mathbf{a}'", "\\mathbf{e}"} <= have and "d_0" not in have:
+        out.append({"glyph": "d_0", "latex": "\\mathbf{e}^T(\\mathbf{a}' - \\mathbf{a})",
+                    "model": "slide along the axis e^T d_A (3.5), d_A = a' - a (3.3)"})
     if section == "3.2.2" and {"\\mathbf{p}_1", "\\mathbf{u}", "ell"} <= have:
         out += _line_points(have, table or [])
     if {"\\mathbf{w_axis}", "\\mathbf{e}"} <= have:
