@@ -1,0 +1,80 @@
+"""Symbol-table lines of section 3.8's twists and momenta (issue 65): how certcheck's second
+reader binds the book's twist ``t``, momentum screw ``mu``, wrench ``w``, momenta ``m``,
+``h_C``, the resultant ``f`` and moment ``n_C`` and their rates to a certificate's atoms,
+each line in the book's glyphs for a referee to hold against the page.
+
+The project's model (``derivations/sec3_8_newton_euler.py``, ``dynamics_model``) is the
+moving body of four point masses of :mod:`rigidsym.checking.certifying.body_symbols`, with
+
+- ``t = [omega; c-dot]``: "the twist of the body, defined at its center of mass" (the page's
+  words in Exercise 3.17; (3.72) with ``v = c-dot``), and ``t-dot`` its rate;
+- ``m = m c-dot``, ``h_C = I_C omega`` as printed in (3.135), their rates the time
+  derivatives (``m`` constant; ``I_C-dot`` the derivative of the integral of (3.130));
+- ``W`` as printed in (3.140); ``mu = M t`` as printed in (3.142), ``mu-dot`` the time
+  derivative of ``M(t) t(t)``, ``M-dot = diag(I_C-dot, O)`` (``M`` of (3.138) the page's);
+- ``f`` and ``n_C``, the wrench the motion requires (the page: "the resultant of the external
+  forces", "their moment about C"): the integrals of ``rho p-ddot`` and ``rho r x p-ddot``
+  (internal forces cancel in pairs), and ``w = [n_C; f]``, (3.113)'s wrench about C.
+
+``M`` is read through its printed definition (3.138); a body whose table has no ``o`` (the
+certificate's relation free of it) or no ``s_i`` gets no lines (3.134a, 3.138, 3.141).
+"""
+
+from __future__ import annotations
+
+__all__ = ["twist_symbols"]
+
+_R_DOT = r"(\dot{\mathbf{p}} - \dot{\mathbf{c}})"
+#: (glyph, LaTeX in the table's glyphs, the model's words)
+_LINES = (
+    (r"\mathbf{t}", r"\begin{bmatrix} \boldsymbol{\omega} \\ \dot{\mathbf{c}} \end{bmatrix}",
+     "twist at the centre of mass, [omega; c-dot] ((3.72) with v = c-dot)"),
+    (r"\dot{\mathbf{t}}", r"\begin{bmatrix} \dot{\boldsymbol{\omega}} \\ \ddot{\mathbf{c}} "
+     r"\end{bmatrix}", "rate of the twist at the centre of mass"),
+    (r"\mathbf{m}", r"m\dot{\mathbf{c}}", "momentum as printed in (3.135)"),
+    (r"\mathbf{h}_C", r"\mathbf{I}_C\boldsymbol{\omega}",
+     "angular momentum about C as printed in (3.135)"),
+    (r"\dot{\mathbf{I}}_C", r"\int_{\mathcal{B}} \rho (2\mathbf{r}^T" + _R_DOT + r"\mathbf{1} - "
+     + _R_DOT + r"\mathbf{r}^T - \mathbf{r}" + _R_DOT + r"^T) d\mathcal{B}",
+     "rate of I_C (3.130): the time derivative of its integral, r-dot = p-dot - c-dot"),
+    (r"\dot{\mathbf{m}}", r"m\ddot{\mathbf{c}}", "rate of m = m c-dot (3.135), m constant"),
+    (r"\dot{\mathbf{h}}_C", r"\dot{\mathbf{I}}_C\boldsymbol{\omega} + \mathbf{I}_C"
+     r"\dot{\boldsymbol{\omega}}", "rate of h_C = I_C omega (3.135)"),
+    (r"\mathbf{W}", r"\begin{bmatrix} \boldsymbol{\Omega} & \mathbf{O} \\ \mathbf{O} & "
+     r"\mathbf{O} \end{bmatrix}", "angular-velocity dyad as printed in (3.140)"),
+    (r"\boldsymbol{\mu}", r"\mathbf{M}\mathbf{t}", "momentum screw, mu = M t (3.142)"),
+    (r"\dot{\mathbf{M}}", r"\begin{bmatrix} \dot{\mathbf{I}}_C & \mathbf{O} \\ \mathbf{O} & "
+     r"\mathbf{O} \end{bmatrix}", "rate of M (3.138), m constant"),
+    (r"\dot{\boldsymbol{\mu}}", r"\dot{\mathbf{M}}\mathbf{t} + \mathbf{M}\dot{\mathbf{t}}",
+     "rate of mu = M t (3.142)"),
+    (r"\mathbf{f}", r"\int_{\mathcal{B}} \rho\ddot{\mathbf{p}} d\mathcal{B}",
+     "resultant of the forces the motion requires, the integral of rho p-ddot (internal "
+     "forces cancel in pairs)"),
+    (r"\mathbf{n}_C", r"\int_{\mathcal{B}} \rho\mathbf{r} \times \ddot{\mathbf{p}} "
+     r"d\mathcal{B}", "their moment about C, the integral of rho r x p-ddot"),
+    (r"\mathbf{w}", r"\begin{bmatrix} \mathbf{n}_C \\ \mathbf{f} \end{bmatrix}",
+     "the wrench about C, [n_C; f] ((3.113) at C)"),
+)
+
+
+def twist_symbols(have: set, section: str) -> list[dict]:
+    """The lines of section 3.8's twists and momenta for a table whose glyphs are ``have``.
+
+    Args:
+        have: the glyphs the table already gives (atoms' glyphs, model lines and the lines
+            of :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`).
+        section: the id's section; only ``3.8`` has them.
+
+    Returns:
+        Entries ``{"glyph", "latex", "model"}``, only for glyphs the table lacks: ``W``
+        where it has ``Q-dot``, the others only where it has the moving body (``omega``,
+        ``c-dot``, ``c-ddot``, ``omega-dot``, ``I_C``, ``p-dot``, ``p-ddot`` through the body
+        line); ``[]`` outside section 3.8.
+    """
+    need = {"\\boldsymbol{\\omega}", "\\dot{\\boldsymbol{\\omega}}", "\\dot{\\mathbf{c}}",
+            "\\ddot{\\mathbf{c}}", "\\mathbf{I}_C", "\\boldsymbol{\\Omega}", "\\ddot{\\mathbf{o}}"}
+    if not section.startswith("3.8"):
+        return []
+    body = need <= have  # W needs only Omega (its printed definition (3.44) if not a line)
+    return [{"glyph": g, "latex": x, "model": w} for g, x, w in _LINES if g not in have
+            and (body or g == "\\mathbf{W}" and "\\dot{\\mathbf{Q}}" in have)]
