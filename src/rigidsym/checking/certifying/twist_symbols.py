@@ -22,7 +22,7 @@ certificate's relation free of it) or no ``s_i`` gets no lines (3.134a, 3.138, 3
 
 from __future__ import annotations
 
-__all__ = ["twist_symbols"]
+__all__ = ["TWIST_GLYPHS", "twist_symbols"]
 
 _R_DOT = r"(\dot{\mathbf{p}} - \dot{\mathbf{c}})"
 #: (glyph, LaTeX in the table's glyphs, the model's words)
@@ -55,6 +55,9 @@ _LINES = (
     (r"\mathbf{w}", r"\begin{bmatrix} \mathbf{n}_C \\ \mathbf{f} \end{bmatrix}",
      "the wrench about C, [n_C; f] ((3.113) at C)"),
 )
+
+#: the glyphs these lines give, in order
+TWIST_GLYPHS = tuple(g for g, _, _ in _LINES)
 
 
 def twist_symbols(have: set, section: str) -> list[dict]:
