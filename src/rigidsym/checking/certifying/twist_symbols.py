@@ -18,6 +18,10 @@ moving body of four point masses of :mod:`rigidsym.checking.certifying.body_symb
 
 ``M`` is read through its printed definition (3.138); a body whose table has no ``o`` (the
 certificate's relation free of it) or no ``s_i`` gets no lines (3.134a, 3.138, 3.141).
+
+Section 3.4.2's twist at a point A (``derivations/sec3_4_2.py``, ``rates_model``): ``v =
+a-dot``, the velocity of the model's reference point A, ``t = [omega; v]`` as printed in
+(3.72), ``t_A``, ``t_P`` as printed in (3.81) (``v_A``, ``v_P`` the model's lines).
 """
 
 from __future__ import annotations
@@ -56,26 +60,41 @@ _LINES = (
      "the wrench about C, [n_C; f] ((3.113) at C)"),
 )
 
-#: the glyphs these lines give, in order
+#: section 3.4.2's twist at the point A (``derivations/sec3_4_2.py``, ``rates_model``)
+_AT_A = (
+    (r"\mathbf{v}", r"\dot{\mathbf{a}}", "the velocity of the twist's point A"),
+    (r"\mathbf{t}", r"\begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v} \end{bmatrix}",
+     "the twist at A as printed in (3.72)"),
+    (r"\mathbf{t}_A", r"\begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v}_A "
+     r"\end{bmatrix}", "the twist at A as printed in (3.81)"),
+    (r"\mathbf{t}_P", r"\begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v}_P "
+     r"\end{bmatrix}", "the twist at P as printed in (3.81)"),
+)
+#: the glyphs of section 3.8's lines, in order
 TWIST_GLYPHS = tuple(g for g, _, _ in _LINES)
 
 
 def twist_symbols(have: set, section: str) -> list[dict]:
-    """The lines of section 3.8's twists and momenta for a table whose glyphs are ``have``.
+    """The lines of the twists and momenta for a table whose glyphs are ``have``.
 
     Args:
         have: the glyphs the table already gives (atoms' glyphs, model lines and the lines
             of :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`).
-        section: the id's section; only ``3.8`` has them.
+        section: the id's section: ``3.8`` (and its subsections), or ``3.4.2`` (the twist
+            at A, where the table has ``a-dot``).
 
     Returns:
         Entries ``{"glyph", "latex", "model"}``, only for glyphs the table lacks: ``W``
         where it has ``Q-dot``, the others only where it has the moving body (``omega``,
         ``c-dot``, ``c-ddot``, ``omega-dot``, ``I_C``, ``p-dot``, ``p-ddot`` through the body
-        line); ``[]`` outside section 3.8.
+        line); in section 3.4.2 ``v``, ``t``, ``t_A`` and ``t_P`` (where ``v_P`` is given);
+        ``[]`` elsewhere.
     """
     need = {"\\boldsymbol{\\omega}", "\\dot{\\boldsymbol{\\omega}}", "\\dot{\\mathbf{c}}",
             "\\ddot{\\mathbf{c}}", "\\mathbf{I}_C", "\\boldsymbol{\\Omega}", "\\ddot{\\mathbf{o}}"}
+    if section == "3.4.2" and "\\dot{\\mathbf{a}}" in have:  # the twist at a point A
+        return [{"glyph": g, "latex": x, "model": w} for g, x, w in _AT_A if g not in have
+                and (g != "\\mathbf{t}_P" or "\\mathbf{v}_P" in have)]
     if not section.startswith("3.8"):
         return []
     body = need <= have  # W needs only Omega (its printed definition (3.44) if not a line)
