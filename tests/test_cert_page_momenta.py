@@ -24,7 +24,6 @@ from test_cert_page import (  # noqa: E402
     mass_changed,
     relabelled,
     shifted_sides,
-    velocity_changed,
 )
 
 from certcheck import CheckError, check_certificate  # noqa: E402
@@ -116,8 +115,9 @@ def test_twist_and_angular_velocity_dyad_read_firmly_and_tamperings_rejected(boo
 def test_newton_euler_read_through_the_lines_and_each_line_doubled_rejected(book):
     """Every Newton-Euler id read through the lines: every printed side read firmly, and
     each twist or momentum line it uses doubled, both sides shifted, the right side doubled
-    (where not 0), a particle's mass or velocity changed, another id's text: rejected naming
-    the id."""
+    (where not 0), a particle's mass changed, another id's text: rejected naming the id (a
+    particle's velocity without o-dot is not: 3.134b reads no velocity, and in 3.139 c-dot
+    meets only W's zero block)."""
     from rigidsym.checking.certifying.twist_symbols import TWIST_GLYPHS
 
     certs = certificates(NEWTON_EULER)
@@ -127,7 +127,7 @@ def test_newton_euler_read_through_the_lines_and_each_line_doubled_rejected(book
         used = [g for g in TWIST_GLYPHS if any(f"{g} as the model's" in x for x in lines)]
         assert used, i
         cases = [line_doubled(c, g) for g in used]
-        cases += [shifted_sides(c), doubled_rhs(c), mass_changed(c), velocity_changed(c),
+        cases += [shifted_sides(c), doubled_rhs(c), mass_changed(c),
                   another_printed_text(c, book, NEWTON_EULER[k - 1])]
         for t in filter(None, cases):
             assert f"({i})" in rejection(t, book), i
