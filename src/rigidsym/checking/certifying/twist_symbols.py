@@ -12,9 +12,10 @@ moving body of four point masses of :mod:`rigidsym.checking.certifying.body_symb
   derivatives (``m`` constant; ``I_C-dot`` the derivative of the integral of (3.130));
 - ``W`` as printed in (3.140); ``mu = M t`` as printed in (3.142), ``mu-dot`` the time
   derivative of ``M(t) t(t)``, ``M-dot = diag(I_C-dot, O)`` (``M`` of (3.138) the page's);
-- ``f`` and ``n_C``, the wrench the motion requires (the page: "the resultant of the external
-  forces", "their moment about C"): the integrals of ``rho p-ddot`` and ``rho r x p-ddot``
-  (internal forces cancel in pairs), and ``w = [n_C; f]``, (3.113)'s wrench about C.
+- ``f`` and ``n_C``, the force and the moment about the centre of mass of the wrench acting
+  on the body (the page's words before (3.134a)), as the model has them: the wrench the
+  motion requires, the integrals of ``rho p-ddot`` and ``rho r x p-ddot`` (internal forces
+  cancel in pairs); ``w = [n_C; f]``, (3.113)'s wrench about C.
 
 ``M`` is read through its printed definition (3.138); a body whose table has no ``o`` (the
 certificate's relation free of it) or no ``s_i`` gets no lines (3.134a, 3.138, 3.141).
@@ -52,10 +53,10 @@ _LINES = (
     (r"\dot{\boldsymbol{\mu}}", r"\dot{\mathbf{M}}\mathbf{t} + \mathbf{M}\dot{\mathbf{t}}",
      "rate of mu = M t (3.142)"),
     (r"\mathbf{f}", r"\int_{\mathcal{B}} \rho\ddot{\mathbf{p}} d\mathcal{B}",
-     "resultant of the forces the motion requires, the integral of rho p-ddot (internal "
-     "forces cancel in pairs)"),
+     "force of the wrench acting on the body, the one the motion requires: the integral of "
+     "rho p-ddot (internal forces cancel in pairs)"),
     (r"\mathbf{n}_C", r"\int_{\mathcal{B}} \rho\mathbf{r} \times \ddot{\mathbf{p}} "
-     r"d\mathcal{B}", "their moment about C, the integral of rho r x p-ddot"),
+     r"d\mathcal{B}", "moment about C of that wrench: the integral of rho r x p-ddot"),
     (r"\mathbf{w}", r"\begin{bmatrix} \mathbf{n}_C \\ \mathbf{f} \end{bmatrix}",
      "the wrench about C, [n_C; f] ((3.113) at C)"),
 )
