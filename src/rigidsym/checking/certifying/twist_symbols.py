@@ -23,6 +23,8 @@ certificate's relation free of it) or no ``s_i`` gets no lines (3.134a, 3.138, 3
 Section 3.4.2's twist at a point A (``derivations/sec3_4_2.py``, ``rates_model``): ``v =
 a-dot``, the velocity of the model's reference point A, ``t = [omega; v]`` as printed in
 (3.72), ``t_A``, ``t_P`` as printed in (3.81) (``v_A``, ``v_P`` the model's lines).
+Section 3.5's twist at a body point P (``derivations/sec3_5.py``): ``v = p-dot``, ``v-dot =
+p-ddot``, ``t = [omega; v]`` (3.72) and ``t-dot = [omega-dot; v-dot]`` as printed in (3.90).
 """
 
 from __future__ import annotations
@@ -71,6 +73,15 @@ _AT_A = (
     (r"\mathbf{t}_P", r"\begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v}_P "
      r"\end{bmatrix}", "the twist at P as printed in (3.81)"),
 )
+#: section 3.5's twist at a body point P (``derivations/sec3_5.py``, ``_generic``)
+_AT_P = (
+    (r"\mathbf{v}", r"\dot{\mathbf{p}}", "the velocity of the twist's body point P"),
+    (r"\dot{\mathbf{v}}", r"\ddot{\mathbf{p}}", "the acceleration of the twist's point P"),
+    (r"\mathbf{t}", r"\begin{bmatrix} \boldsymbol{\omega} \\ \mathbf{v} \end{bmatrix}",
+     "the twist at P as printed in (3.72)"),
+    (r"\dot{\mathbf{t}}", r"\begin{bmatrix} \dot{\boldsymbol{\omega}} \\ \dot{\mathbf{v}}"
+     r" \end{bmatrix}", "the twist's rate as printed in (3.90)"),
+)
 #: the glyphs of section 3.8's lines, in order
 TWIST_GLYPHS = tuple(g for g, _, _ in _LINES)
 
@@ -81,21 +92,23 @@ def twist_symbols(have: set, section: str) -> list[dict]:
     Args:
         have: the glyphs the table already gives (atoms' glyphs, model lines and the lines
             of :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`).
-        section: the id's section: ``3.8`` (and its subsections), or ``3.4.2`` (the twist
-            at A, where the table has ``a-dot``).
+        section: the id's section: ``3.8`` (and its subsections), ``3.4.2`` (the twist
+            at A, where the table has ``a-dot``) or ``3.5`` (at P, where it has ``p-ddot``).
 
     Returns:
         Entries ``{"glyph", "latex", "model"}``, only for glyphs the table lacks: ``W``
         where it has ``Q-dot``, the others only where it has the moving body (``omega``,
         ``c-dot``, ``c-ddot``, ``omega-dot``, ``I_C``, ``p-dot``, ``p-ddot`` through the body
         line); in section 3.4.2 ``v``, ``t``, ``t_A`` and ``t_P`` (where ``v_P`` is given);
-        ``[]`` elsewhere.
+        in section 3.5 ``v``, ``v-dot``, ``t``, ``t-dot``; ``[]`` elsewhere.
     """
     need = {"\\boldsymbol{\\omega}", "\\dot{\\boldsymbol{\\omega}}", "\\dot{\\mathbf{c}}",
             "\\ddot{\\mathbf{c}}", "\\mathbf{I}_C", "\\boldsymbol{\\Omega}", "\\ddot{\\mathbf{o}}"}
     if section == "3.4.2" and "\\dot{\\mathbf{a}}" in have:  # the twist at a point A
         return [{"glyph": g, "latex": x, "model": w} for g, x, w in _AT_A if g not in have
                 and (g != "\\mathbf{t}_P" or "\\mathbf{v}_P" in have)]
+    if section == "3.5" and "\\ddot{\\mathbf{p}}" in have:  # the twist at a body point P
+        return [{"glyph": g, "latex": x, "model": w} for g, x, w in _AT_P if g not in have]
     if not section.startswith("3.8"):
         return []
     body = need <= have  # W needs only Omega (its printed definition (3.44) if not a line)
