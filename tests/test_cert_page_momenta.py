@@ -131,3 +131,18 @@ def test_newton_euler_read_through_the_lines_and_each_line_doubled_rejected(book
                   another_printed_text(c, book, NEWTON_EULER[k - 1])]
         for t in filter(None, cases):
             assert f"({i})" in rejection(t, book), i
+
+
+@pytest.mark.slow
+def test_twist_rate_at_a_body_point_read_firmly_and_tamperings_rejected(book):
+    """3.90 (section 3.5: t-dot = [omega-dot; v-dot], v-dot the acceleration of the twist's
+    body point P) read firmly on both sides; its t-dot or v-dot line doubled, both sides
+    shifted, another id's text, the verdict changed: rejected naming the id."""
+    c = certificates(["3.90"])["3.90"]
+    lines = read_lines(c, book, fast=False)
+    assert lines and all(x.startswith("read from the page") for x in lines), lines
+    cases = [line_doubled(c, "\\dot{\\mathbf{t}}"), line_doubled(c, "\\dot{\\mathbf{v}}"),
+             shifted_sides(c), another_printed_text(c, book, "3.89"), relabelled(c, "verified")]
+    assert None not in cases
+    for t in cases:
+        assert "(3.90)" in rejection(t, book)
