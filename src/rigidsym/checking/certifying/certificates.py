@@ -32,6 +32,7 @@ import sympy as sp
 from rigidsym.checking.certifying.body_symbols import point_body_symbols
 from rigidsym.checking.certifying.force_symbols import force_symbols
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
+from rigidsym.checking.certifying.twist_symbols import twist_symbols
 from rigidsym.checking.deciding.evidence import small_witness
 from rigidsym.checking.deciding.explicit import (
     EXPLICIT_CACHE,
@@ -283,7 +284,9 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     where ``U`` (3.83b) or ``V`` (3.119b) is printed. Section 3.8's point-mass body:
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
     system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
-    section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
+    section 3.8's twists and momenta:
+    :func:`rigidsym.checking.certifying.twist_symbols.twist_symbols`; section 3.2.3's
+    triad ``e_k`` where printed: column k of the rotation ``R``."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
         if section == sec or section.startswith(sec + "."):
@@ -347,7 +350,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                  "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k))
                                                             for j in (1, 2, 3)) + " \\end{bmatrix}"}
                 for k in (1, 2, 3)]
-    return out + point_body_symbols({e["glyph"] for e in out}, section)
+    out += point_body_symbols({e["glyph"] for e in out}, section)
+    return out + twist_symbols({e["glyph"] for e in out}, section)
 
 
 def _has(glyphs: set, latex: str) -> bool:
