@@ -352,6 +352,16 @@ def test_an_error_caused_by_the_interrupt_is_reported_as_the_interrupt(monkeypat
             raise ImportError('PyCapsule_Import could not import module "datetime"')
         return run
 
+    # a run started ignoring SIGINT (a background job, nohup) keeps ignoring it, by design
+    # (interrupts.install); here the caller is a terminal's: Python's own handler
+    outer = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        _interrupt_or_error(monkeypatch, capsys, cli, failing)
+    finally:
+        signal.signal(signal.SIGINT, outer)
+
+
+def _interrupt_or_error(monkeypatch, capsys, cli, failing) -> None:
     before = signal.getsignal(signal.SIGINT)
     monkeypatch.setattr(cli, "_main", failing(True))
     assert main(["verify"]) == interrupts.EXIT
