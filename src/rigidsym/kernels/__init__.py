@@ -60,6 +60,7 @@ from rigidsym.kernels.runtime.inputs import UNIT_TOL as UNIT_TOL
 from rigidsym.kernels.runtime.jacobians import jacobian
 from rigidsym.kernels.runtime.namespace import KERNEL_NAMES as KERNEL_NAMES  # their names
 from rigidsym.kernels.runtime.namespace import load
+from rigidsym.kernels.runtime.outpool import release_output_pool, set_output_pool
 from rigidsym.kernels.runtime.scale import get_num_threads as get_num_threads
 from rigidsym.kernels.runtime.scale import set_num_threads as set_num_threads
 
@@ -67,5 +68,6 @@ __all__ = ["SingularConfigurationError", "NonFiniteResultError", "BroadcastWarni
            "backend",
            "swap_blocks", "load", "batch_function", "euler_rate_matrix", "euler_angle_rates",
            "euler_angles_from_rotation",
-           "jacobian", "set_num_threads", "get_num_threads", "build_info", "accuracy"]
+           "jacobian", "set_num_threads", "get_num_threads", "build_info", "accuracy",
+           "set_output_pool", "release_output_pool"]
 __all__ += _KERNELS

@@ -16,6 +16,11 @@ compile it, which an import must not do):
 
 Selecting the NumPy backend turns the C entries off (``_enable``): they then take the Python
 path, which runs the NumPy kernels.
+
+With the output pool on (:mod:`rigidsym.kernels.runtime.outpool`) the functions run their
+Python body instead, and ``_F`` is :func:`pooled`'s namespace: each entry first takes its
+outputs from the pool when the call's are large and plain (``out=None``), then calls the C
+entry with them as ``out``.
 """
 
 from __future__ import annotations
@@ -27,11 +32,15 @@ from typing import Any
 import numpy as np
 
 from rigidsym.core import kinds as _kinds
+from rigidsym.kernels.runtime import outpool as _outpool
 from rigidsym.kernels.runtime import state as _state
 from rigidsym.kernels.runtime.inputs import UNIT_AS_IS_EPS
 from rigidsym.kernels.runtime.scale import MIN_PARALLEL, get_num_threads
 
-__all__ = ["Lazy", "bind_api", "entries", "unbind"]
+__all__ = ["Lazy", "bind_api", "entries", "unbind", "pooled", "rebind"]
+
+#: the (space, api module) pairs bound to their C entries, rebound when the pool turns on/off
+_BOUND: list = []
 
 
 class Lazy:
@@ -45,9 +54,60 @@ class Lazy:
             raise AttributeError(name)
         ns = self._space.entries()
         if ns is self._space._entries and self._mod is not None:
-            self._mod._F = ns                  # the C entries: bound for good
-            _install(self._space, self._mod)
+            with _state.LOCK:
+                if (self._space, self._mod) not in _BOUND:
+                    _BOUND.append((self._space, self._mod))
+                ns = _bind_c(self._space, self._mod)   # the C entries: bound for good
         return getattr(ns, name)
+
+
+def _bind_c(space: Any, mod: types.ModuleType) -> types.SimpleNamespace:
+    """Bind ``mod`` to its C entries: directly (the functions' vectorcall), or through the
+    output pool's wrappers while it is on; returns the namespace bound."""
+    if _outpool.enabled():
+        cmod = space.c_lib().module
+        if hasattr(cmod, "_install"):
+            cmod._install(None, None)          # the functions run their body: _F below
+        mod._F = ns = pooled(space)
+    else:
+        mod._F = ns = space._entries
+        _install(space, mod)
+    return ns
+
+
+def rebind() -> None:
+    """Rebind every api module bound to its C entries after the pool turned on or off."""
+    with _state.LOCK:
+        for space, mod in _BOUND:
+            if space._entries is not None and type(mod._F) is not Lazy:
+                _bind_c(space, mod)
+
+
+_outpool.on_change(rebind)
+
+
+def pooled(space: Any) -> types.SimpleNamespace:
+    """The C entries of ``space`` behind the output pool: ``out=None`` with large, plain
+    outputs (:func:`~rigidsym.kernels.runtime.outpool.take_for_inputs`) becomes ``out=`` the
+    pool's arrays; every other call goes to the entry unchanged."""
+    if space._pooled is None or space._pooled[0] is not space._entries:
+        def make(name: str, entry: Any):
+            meta = space.meta[name]
+            ins = tuple(tuple(a["shape"]) for a in meta["args"])
+            outs = tuple(tuple(o["shape"]) for o in meta["outputs"])
+            nin, take = len(ins), _outpool.take_for_inputs
+
+            def f(*a):
+                if a[nin] is None and len(a) == nin + 4:
+                    y = take(a, ins, outs)
+                    if y is not None:
+                        a = (*a[:nin], y[0] if len(y) == 1 else y, *a[nin + 1:])
+                return entry(*a)
+            f.__name__ = f.__qualname__ = name
+            return f
+        space._pooled = (space._entries, types.SimpleNamespace(
+            **{n: make(n, e) for n, e in vars(space._entries).items()}))
+    return space._pooled[1]
 
 
 #: the keyword-only parameters of every generated kernel function, in the entries' order

@@ -69,6 +69,7 @@ class KernelSpace:
     _c_failed: bool = False
     _entries: Any = None        # the C entry points by name (rigidsym.kernels.runtime.entries)
     _py_entries: Any = None
+    _pooled: Any = None         # (C entries, their output-pool wrappers): entries.pooled
     _apis: list = field(default_factory=list)
 
     @classmethod
