@@ -93,8 +93,8 @@ def _holders(y: np.ndarray) -> list:
     """Every kind of object that keeps y's memory alive without being y."""
     mv = memoryview(y)
     return [y[::2], y.reshape(-1)[5:], y.T, y.view(np.uint8), mv, np.frombuffer(mv),
-            np.asarray(mv), pickle.PickleBuffer(y), y.ctypes.data_as(ctypes.POINTER(ctypes.c_double)),
-            y.base]
+            np.asarray(mv), pickle.PickleBuffer(y),
+            y.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), y.base]
 
 
 @pytest.mark.parametrize("which", range(10))

@@ -25,6 +25,7 @@ entry with them as ``out``.
 
 from __future__ import annotations
 
+import math
 import os
 import types
 from typing import Any
@@ -95,10 +96,16 @@ def pooled(space: Any) -> types.SimpleNamespace:
             meta = space.meta[name]
             ins = tuple(tuple(a["shape"]) for a in meta["args"])
             outs = tuple(tuple(o["shape"]) for o in meta["outputs"])
-            nin, take = len(ins), _outpool.take_for_inputs
+            nin, take, limits = len(ins), _outpool.take_for_inputs, _outpool.LIMITS
+            # the outputs' bytes over the first input's: a call whose first input is too
+            # small for outputs of min_bytes goes to the entry at once
+            per_in = math.prod(ins[0])
+            per_out = sum(math.prod(s) for s in outs)
 
             def f(*a):
-                if a[nin] is None and len(a) == nin + 4:
+                x = a[0]
+                if a[nin] is None and type(x) is np.ndarray \
+                        and x.nbytes * per_out >= limits["min_bytes"] * per_in:
                     y = take(a, ins, outs)
                     if y is not None:
                         a = (*a[:nin], y[0] if len(y) == 1 else y, *a[nin + 1:])

@@ -35,7 +35,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-__all__ = ["DEFAULT_MAX_BYTES", "MIN_BYTES", "supported", "set_output_pool",
+__all__ = ["DEFAULT_MAX_BYTES", "MIN_BYTES", "LIMITS", "supported", "set_output_pool",
            "release_output_pool", "enabled", "take", "take_for_inputs", "on_change",
            "parse_setting"]
 
@@ -71,7 +71,6 @@ class _Pool:
         self.blocks: list[np.ndarray] = []
         self.on = False
         self.max_bytes = DEFAULT_MAX_BYTES
-        self.min_bytes = MIN_BYTES
 
     def free(self, i: int) -> bool:
         return _refs(self.blocks, i) == _FREE
@@ -105,6 +104,8 @@ class _Pool:
 
 
 _POOL = _Pool()
+#: the settings the callers' gates read (min_bytes: the smallest outputs pooled, in all)
+LIMITS: dict[str, int] = {"min_bytes": MIN_BYTES}
 _LISTENERS: list[Callable[[], None]] = []
 
 
@@ -135,7 +136,7 @@ def take(shapes: Sequence[tuple[int, ...]], dtype: np.dtype) -> tuple[np.ndarray
         return None
     dtype = np.dtype(dtype)
     sizes = [math.prod(s) * dtype.itemsize for s in shapes]
-    if sum(sizes) < _POOL.min_bytes:
+    if sum(sizes) < LIMITS["min_bytes"]:
         return None
     outs = []
     with _POOL.lock:
@@ -243,7 +244,7 @@ def set_output_pool(enabled: bool | None = None, *, max_bytes: int | None = None
         if max_bytes is not None:
             _POOL.max_bytes = max_bytes
         if min_bytes is not None:
-            _POOL.min_bytes = min_bytes
+            LIMITS["min_bytes"] = min_bytes
         if enabled is not None:
             _POOL.on = enabled
     if enabled is False or max_bytes is not None:
@@ -290,7 +291,8 @@ def release_output_pool() -> int:
 def _state() -> dict[str, int | bool]:
     with _POOL.lock:
         free = sum(_POOL.blocks[i].nbytes for i in range(len(_POOL.blocks)) if _POOL.free(i))
-        return {"enabled": _POOL.on, "max_bytes": _POOL.max_bytes, "min_bytes": _POOL.min_bytes,
+        return {"enabled": _POOL.on, "max_bytes": _POOL.max_bytes,
+                "min_bytes": LIMITS["min_bytes"],
                 "blocks": len(_POOL.blocks), "bytes": sum(b.nbytes for b in _POOL.blocks),
                 "free_bytes": free}
 
