@@ -9,8 +9,16 @@ with :mod:`rigidsym.kernels.cbuild.driver` (the same driver, flags, OpenMP and l
 into ``ctx["build_dir"]``, cached by the sources' hash: the default build is what a user of
 the wheel runs. ``peers_adapter_native.py`` is the second column: the ``-march=native``
 build (``rigidsym build-c --native``). The harness's ``cflags`` are not used: the point is
-the build users get. Each K is one call of the module's ``batch`` (no validation, the
-equivalent of ``check=False``), outputs allocated inside the call like every other peer.
+the build users get.
+
+Each K is one call of the public kernel, ``rigidsym.kernels.<name>(*inputs, check=False)``,
+as a user calls it: the compiled entry of the package's own module (built by ``pip install``
+from the same ``generated/c``), outputs allocated by the library inside every call; with
+``RIGIDSYM_OUTPUT_POOL=1`` in the environment they come from its output pool
+(``rigidsym.kernels.set_output_pool``). rigidsym is imported from the harness's environment,
+else from this checkout's ``.venv``; where neither imports, and for the native column, each K
+is one call of the built module's ``batch`` (no validation, the equivalent of
+``check=False``) on ``np.empty`` outputs, as before. ``VARIANT`` says which.
 
 K1 rotation_from_euler_rodrigues, K2 rotation_from_natural_invariants, K3 screw_axis_point,
 K4 instant_screw_point_pitch (ISA point and pitch), K5 N_matrix, K6 newton_euler_residual
@@ -21,6 +29,8 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import os
+import site
 import sys
 import sysconfig
 import tempfile
@@ -88,9 +98,49 @@ def _wrap(mod, name: str):
     return call
 
 
+def _public():
+    """rigidsym.kernels, from the harness's environment or this checkout's ``.venv`` (its
+    site-packages appended: the harness's own NumPy stays first); None if neither imports."""
+    try:
+        import rigidsym.kernels as rk
+        return rk
+    except ImportError:
+        pass
+    venv = ROOT / ".venv" / "lib" / f"python{sys.version_info[0]}.{sys.version_info[1]}"
+    if not (venv / "site-packages").is_dir():
+        return None
+    site.addsitedir(str(venv / "site-packages"))
+    try:
+        import rigidsym.kernels as rk
+        return rk
+    except ImportError:
+        return None
+
+
+def _call(f):
+    def call(*xs):
+        return f(*xs, check=False)
+    call.__name__ = f.__name__
+    return call
+
+
 def setup(ctx=None) -> None:
-    """Build (cached) and bind K1..K6; ``ctx`` as passed by the peers-bench harness."""
+    """Bind K1..K6 (the public kernels, else the module built here, cached); ``ctx`` as
+    passed by the peers-bench harness."""
+    global VARIANT
     ctx = ctx or {}
+    rk = None if NATIVE else _public()
+    if rk is not None:
+        info = rk.build_info()
+        pool = rk.set_output_pool()
+        VARIANT = (f"public API, check=False, {info.get('path', '?')}, output pool "
+                   + (f"on ({pool['max_bytes'] >> 20} MiB)" if pool["enabled"] else "off")
+                   + f" (RIGIDSYM_OUTPUT_POOL={os.environ.get('RIGIDSYM_OUTPUT_POOL', '')!r})")
+        for kid, name in BENCH.items():
+            if name in _META:
+                KERNELS[kid] = _call(getattr(rk, name))
+        print(f"  rigidsym-c: {VARIANT}", file=sys.stderr)
+        return
     build_dir = Path(ctx.get("build_dir") or (ROOT / "benchmarks" / ".build"))
     mod = _build(build_dir, NATIVE)
     for kid, name in BENCH.items():
