@@ -16,9 +16,10 @@ as a user calls it: the compiled entry of the package's own module (built by ``p
 from the same ``generated/c``), outputs allocated by the library inside every call; with
 ``RIGIDSYM_OUTPUT_POOL=1`` in the environment they come from its output pool
 (``rigidsym.kernels.set_output_pool``). rigidsym is imported from the harness's environment,
-else from this checkout's ``.venv``; where neither imports, and for the native column, each K
-is one call of the built module's ``batch`` (no validation, the equivalent of
-``check=False``) on ``np.empty`` outputs, as before. ``VARIANT`` says which.
+else from this checkout's ``.venv``; where neither imports, for the native column, and for
+K4 and K6 (no public kernel of that name), each K is one call of the built module's
+``batch`` (no validation, the equivalent of ``check=False``) on ``np.empty`` outputs, as
+before. ``VARIANT`` says which.
 
 K1 rotation_from_euler_rodrigues, K2 rotation_from_natural_invariants, K3 screw_axis_point,
 K4 instant_screw_point_pitch (ISA point and pitch), K5 N_matrix, K6 newton_euler_residual
@@ -130,19 +131,21 @@ def setup(ctx=None) -> None:
     global VARIANT
     ctx = ctx or {}
     rk = None if NATIVE else _public()
+    build_dir = Path(ctx.get("build_dir") or (ROOT / "benchmarks" / ".build"))
+    mod = None
     if rk is not None:
         info = rk.build_info()
         pool = rk.set_output_pool()
         VARIANT = (f"public API, check=False, {info.get('path', '?')}, output pool "
                    + (f"on ({pool['max_bytes'] >> 20} MiB)" if pool["enabled"] else "off")
-                   + f" (RIGIDSYM_OUTPUT_POOL={os.environ.get('RIGIDSYM_OUTPUT_POOL', '')!r})")
-        for kid, name in BENCH.items():
-            if name in _META:
-                KERNELS[kid] = _call(getattr(rk, name))
+                   + f" (RIGIDSYM_OUTPUT_POOL={os.environ.get('RIGIDSYM_OUTPUT_POOL', '')!r});"
+                   " the batch of the module built here for a K with no public kernel")
         print(f"  rigidsym-c: {VARIANT}", file=sys.stderr)
-        return
-    build_dir = Path(ctx.get("build_dir") or (ROOT / "benchmarks" / ".build"))
-    mod = _build(build_dir, NATIVE)
     for kid, name in BENCH.items():
-        if name in _META:
-            KERNELS[kid] = _wrap(mod, name)
+        if name not in _META:
+            continue
+        if rk is not None and name in rk.KERNEL_NAMES:
+            KERNELS[kid] = _call(getattr(rk, name))
+            continue
+        mod = mod or _build(build_dir, NATIVE)
+        KERNELS[kid] = _wrap(mod, name)
