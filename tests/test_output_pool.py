@@ -254,3 +254,16 @@ def test_settings():
     assert outpool.parse_setting("1000") == 1000
     with pytest.raises(ValueError, match="RIGIDSYM_OUTPUT_POOL"):
         outpool.parse_setting("lots")
+
+
+def test_off_again_restores_the_direct_entries(pool):
+    import rigidsym.generated.api as api
+    f = kernels.N_matrix
+    xs = _inputs("N_matrix")
+    f(*xs)
+    space = kernels.load()._SPACE
+    assert api._F is not space._entries                 # on: the pool's wrappers
+    kernels.set_output_pool(False)
+    assert api._F is space._entries                     # off: the C entries themselves
+    y = f(*xs, check=False)
+    assert y.base is None and kernels.set_output_pool()["blocks"] == 0
