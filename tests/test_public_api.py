@@ -52,8 +52,8 @@ PUBLIC = {
         "backend",
         "batch_function", "build_info",
         "euler_angle_rates", "euler_angles_from_rotation", "euler_rate_matrix",
-        "get_num_threads", "jacobian", "load",
-        "set_num_threads", "swap_blocks", "use_backend", *KERNELS],
+        "get_num_threads", "jacobian", "load", "release_output_pool",
+        "set_num_threads", "set_output_pool", "swap_blocks", "use_backend", *KERNELS],
     # issue 48: Grouped marks a group the removable-singularity pass never distributes
     "rigidsym.codegen.spec": ["Arg", "Branch", "Grouped", "Kernel", "Out", "input_symbols"],
     "rigidsym.cli": ["build_parser", "main"],
