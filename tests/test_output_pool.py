@@ -267,3 +267,9 @@ def test_off_again_restores_the_direct_entries(pool):
     assert api._F is space._entries                     # off: the C entries themselves
     y = f(*xs, check=False)
     assert y.base is None and kernels.set_output_pool()["blocks"] == 0
+
+
+def test_empty_batches_are_not_pooled(pool):
+    xs = _inputs("N_matrix", n=0)
+    y, z = kernels.N_matrix(*xs, check=False), kernels.N_matrix(*xs, check=False)
+    assert y.shape == (0, 4, 3) and y.base is None and z.base is None

@@ -136,7 +136,7 @@ def take(shapes: Sequence[tuple[int, ...]], dtype: np.dtype) -> tuple[np.ndarray
         return None
     dtype = np.dtype(dtype)
     sizes = [math.prod(s) * dtype.itemsize for s in shapes]
-    if sum(sizes) < LIMITS["min_bytes"]:
+    if sum(sizes) < LIMITS["min_bytes"] or 0 in sizes:
         return None
     outs = []
     with _POOL.lock:
@@ -199,13 +199,13 @@ def set_output_pool(enabled: bool | None = None, *, max_bytes: int | None = None
     """Turn on or off the reuse of the kernels' large output blocks, or bound it; returns
     the pool's state.
 
-    When on, a kernel called with ``out=None`` on float64 or float32 arrays of one batch shape
-    whose outputs take at least 1 MiB gets them on blocks that earlier outputs held and the
-    program has let go of (no array, view, memoryview or buffer export of them left, and no
-    weak reference): the page faults of fresh memory are not paid again. The results are the
-    same values, writeable, C-contiguous; they are views (``out.base`` is the block, so
-    ``out.flags.owndata`` is False and ``out.resize()`` refuses). Other calls allocate as
-    before. Off by default (``RIGIDSYM_OUTPUT_POOL`` sets the default: ``1`` or a bound such
+    When on, a kernel of the C back-end called with ``out=None`` on float64 or float32 arrays
+    of one batch shape whose outputs take at least 1 MiB gets them on blocks that earlier
+    outputs held and the program has let go of (no array, view, memoryview or buffer export of
+    them left, and no weak reference): the page faults of fresh memory are not paid again.
+    The results are the same values, writeable, C-contiguous; they are views (``out.base`` is
+    the block, so ``out.flags.owndata`` is False and ``out.resize()`` refuses). Other calls
+    allocate as before. Off by default (``RIGIDSYM_OUTPUT_POOL`` sets the default: ``1`` or a bound such
     as ``512M``); it costs a Python frame in every kernel call while on (about 0.7 us).
 
     Args:
