@@ -205,8 +205,9 @@ def set_output_pool(enabled: bool | None = None, *, max_bytes: int | None = None
     them left, and no weak reference): the page faults of fresh memory are not paid again.
     The results are the same values, writeable, C-contiguous; they are views (``out.base`` is
     the block, so ``out.flags.owndata`` is False and ``out.resize()`` refuses). Other calls
-    allocate as before. Off by default (``RIGIDSYM_OUTPUT_POOL`` sets the default: ``1`` or a bound such
-    as ``512M``); it costs a Python frame in every kernel call while on (about 0.7 us).
+    allocate as before. Off by default (``RIGIDSYM_OUTPUT_POOL`` sets the default: ``1`` or a
+    bound such as ``512M``); it costs a Python frame in every kernel call while on (about
+    0.7 us).
 
     Args:
         enabled: True or False, or None to leave it as it is.
