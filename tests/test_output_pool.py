@@ -65,21 +65,21 @@ def pool():
     kernels.release_output_pool()
 
 
-@pytest.mark.parametrize("dtype", [np.float64, np.float32])
-@pytest.mark.parametrize("name", NAMES)
-def test_same_bits_as_without_the_pool(pool, name, dtype):
-    f = getattr(kernels, name)
-    xs = _inputs(name, dtype=dtype)
-    kernels.set_output_pool(False)
-    ref = [o.copy() for o in _outs(f(*xs, check=False))]
-    kernels.set_output_pool(True)
-    for _ in range(3):                 # the first call takes new blocks, the others reuse
-        got = _outs(f(*xs, check=False))
-        assert all(g.base is not None for g in got)           # on pooled blocks
-        for g, r in zip(got, ref, strict=True):
-            assert g.dtype == r.dtype and g.shape == r.shape and g.flags.c_contiguous
-            assert g.tobytes() == r.tobytes()
-        del got
+def test_same_bits_as_without_the_pool(pool):
+    for name in NAMES:
+        for dtype in (np.float64, np.float32):
+            f = getattr(kernels, name)
+            xs = _inputs(name, dtype=dtype)
+            kernels.set_output_pool(False)
+            ref = [o.copy() for o in _outs(f(*xs, check=False))]
+            kernels.set_output_pool(True)
+            for _ in range(3):         # the first call takes new blocks, the others reuse
+                got = _outs(f(*xs, check=False))
+                assert all(g.base is not None for g in got)           # on pooled blocks
+                for g, r in zip(got, ref, strict=True):
+                    assert g.dtype == r.dtype and g.shape == r.shape and g.flags.c_contiguous
+                    assert g.tobytes() == r.tobytes(), (name, dtype)
+                del got
 
 
 def test_a_freed_block_is_reused(pool):
@@ -97,22 +97,23 @@ def _holders(y: np.ndarray) -> list:
             y.ctypes.data_as(ctypes.POINTER(ctypes.c_double)), y.base]
 
 
-@pytest.mark.parametrize("which", range(10))
-def test_never_hands_out_memory_still_referenced(pool, which):
+def test_never_hands_out_memory_still_referenced(pool):
     f = kernels.screw_axis_point
     xs = _inputs("screw_axis_point")
-    y = f(*xs, check=False)
-    lo, hi = _span(y)
-    bits = y.tobytes()
-    keep = _holders(y)[which]
-    del y
-    for _ in range(4):
-        z = f(*xs, check=False)
-        z0, z1 = _span(z)
-        assert not (lo < z1 and z0 < hi)
-        z[...] = -1.0                       # the new output written over entirely
-        del z
-    assert keep is not None and ctypes.string_at(lo, hi - lo) == bits
+    for which in range(10):
+        y = f(*xs, check=False)
+        lo, hi = _span(y)
+        bits = y.tobytes()
+        keep = _holders(y)[which]
+        del y
+        for _ in range(4):
+            z = f(*xs, check=False)
+            z0, z1 = _span(z)
+            assert not (lo < z1 and z0 < hi), which
+            z[...] = -1.0                   # the new output written over entirely
+            del z
+        assert keep is not None and ctypes.string_at(lo, hi - lo) == bits, which
+        del keep
 
 
 def test_views_keep_their_bits(pool):
