@@ -274,3 +274,18 @@ def test_empty_batches_are_not_pooled(pool):
     xs = _inputs("N_matrix", n=0)
     y, z = kernels.N_matrix(*xs, check=False), kernels.N_matrix(*xs, check=False)
     assert y.shape == (0, 4, 3) and y.base is None and z.base is None
+
+
+def test_flagged_rows_the_same(pool):
+    # singular rows (phi = 0: no screw axis) and rows of extreme magnitude, which the entry
+    # hands to the Python path with the pool's arrays as out=
+    f = kernels.screw_axis_point
+    xs = _inputs("screw_axis_point")
+    xs[1][::7] = 0.0
+    xs[2][3::11] *= 1e-300
+    xs[3][5::13] *= 1e200
+    kernels.set_output_pool(False)
+    ref = f(*xs, on_singular="nan")
+    kernels.set_output_pool(True)
+    got = f(*xs, on_singular="nan")
+    assert got.base is not None and np.isnan(ref).any() and got.tobytes() == ref.tobytes()
