@@ -159,11 +159,34 @@ _SEC35 = (
     (r"\dot{\mathbf{v}}", r"\ddot{\mathbf{a}}", "the acceleration of that point A"),
     (r"\mathbf{t}", _col(r"\boldsymbol{\omega}", r"\mathbf{v}"),
      "the twist at A as printed in (3.72)"),
+    (r"\dot{\mathbf{t}}", _col(r"\dot{\boldsymbol{\omega}}", r"\dot{\mathbf{v}}"),
+     "the twist's rate at A as printed in (3.90)"),
+    (r"\dot{\boldsymbol{\omega}}", r"\text{vect}(\ddot{\mathbf{Q}}\mathbf{Q}^T + "
+     r"\dot{\mathbf{Q}}\dot{\mathbf{Q}}^T)", "rate of omega = vect(Q-dot Q^T) (3.44), "
+     "(3.45), term by term"),
+    (r"\ddot{\mathbf{Q}}", r"\ddot{\mathbf{e}}\mathbf{e}^T + 2\dot{\mathbf{e}}"
+     r"\dot{\mathbf{e}}^T + \mathbf{e}\ddot{\mathbf{e}}^T - (\ddot{\phi}\sin\phi + "
+     r"\dot{\phi}^2\cos\phi)(\mathbf{1} - \mathbf{e}\mathbf{e}^T) + 2\dot{\phi}\sin\phi"
+     r"(\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T) - \cos\phi(\ddot{"
+     r"\mathbf{e}}\mathbf{e}^T + 2\dot{\mathbf{e}}\dot{\mathbf{e}}^T + \mathbf{e}\ddot{"
+     r"\mathbf{e}}^T) + (\ddot{\phi}\cos\phi - \dot{\phi}^2\sin\phi)\mathbf{E} + 2"
+     r"\dot{\phi}\cos\phi\dot{\mathbf{E}} + \sin\phi\ddot{\mathbf{E}}",
+     "the second time derivative of (2.49), term by term"),
+)
+#: the jets of a motion given by its angular velocity (``omega_model``: e, phi, omega atoms)
+_JETS = (
+    (r"\dot{\mathbf{e}}", r"[\sin \phi / (2(1 - \cos \phi))] (\mathbf{1} - \mathbf{e}"
+     r"\mathbf{e}^T)\boldsymbol{\omega} - (1/2)\mathbf{E}\boldsymbol{\omega}", "e-dot of the "
+     "motion of angular velocity omega: the upper block of nu-dot = N omega (3.76a), N as "
+     "printed in (3.76b)"),
+    (r"\dot{\phi}", r"\mathbf{e}^T\boldsymbol{\omega}", "phi-dot of that motion: the last "
+     "row of nu-dot = N omega (3.76a)"),
 )
 #: section 3.5's twist at A, only where the table has a-dot and no body point P
-_AT_A = (r"\mathbf{v}", r"\dot{\mathbf{v}}", r"\mathbf{t}")
+_AT_A = (r"\mathbf{v}", r"\dot{\mathbf{v}}", r"\mathbf{t}", r"\dot{\mathbf{t}}",
+         r"\dot{\boldsymbol{\omega}}", r"\ddot{\mathbf{Q}}")
 #: the glyphs of every line above (cross-product matrices and the slip apart)
-INVARIANT_RATE_GLYPHS = tuple(g for g, _, _ in _COMMON + _SEC342 + _SEC35)
+INVARIANT_RATE_GLYPHS = tuple(g for g, _, _ in _COMMON + _SEC342 + _SEC35 + _JETS)
 
 #: per representation: (F, F-tilde, the invariants' array, the page's words)
 _REPS = {"N": (r"\boldsymbol{\nu}", "natural invariants"),
@@ -219,6 +242,8 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
     if section not in ("3.4.2", "3.5"):
         return []
     lines = _COMMON + (_SEC342 if section == "3.4.2" else _SEC35)
+    if {r"\boldsymbol{\omega}", r"\mathbf{e}"} <= have and r"\dot{\phi}" not in have:
+        lines += _JETS  # e and phi move with the angular velocity omega (an atom)
     text = latex + (" ".join(x for r in "NLH" for _, x, _ in _members(r))
                     if _FAMILY.search(latex) else "")
     out: list[dict] = []
@@ -235,6 +260,10 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
     if section == "3.4.2" and r"\mathbf{P}" in text and r"\mathbf{P}" not in given and \
             r"\mathbf{p}" in given:  # "A and P denote the cross-product matrices of a and p"
         out.append({"glyph": r"\mathbf{P}", "cpm_of": r"\mathbf{p}"})
+    if r"\dot{\mathbf{e}}" in text and r"\dot{\mathbf{E}}" not in given:
+        out.append({"glyph": r"\dot{\mathbf{E}}", "cpm_of": r"\dot{\mathbf{e}}"})
+    if r"\ddot{\mathbf{Q}}" in text and r"\ddot{\mathbf{E}}" not in given:
+        out.append({"glyph": r"\ddot{\mathbf{E}}", "cpm_of": r"\ddot{\mathbf{e}}"})
     if r"\dot{\mathbf{R}}" in text and r"\dot{\mathbf{R}}" not in given:
         out.append({"glyph": r"\dot{\mathbf{R}}", "cpm_of": r"\dot{\mathbf{r}}"})
     if r"\mathbf{1tr}" in text:  # the conversion ran 1 and tr together (3.96b)
