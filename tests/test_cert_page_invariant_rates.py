@@ -23,9 +23,16 @@ from test_cert_page_momenta import (
 
 #: the ids whose every printed side is read through the lines (measured)
 EVERY_SIDE = ["3.76a", "3.76b", "3.76c", "3.76d", "3.78", "3.79", "3.80a", "3.80b", "3.83a",
-              "3.83b", "3.86", "3.92", "3.95a", "3.95b", "3.96b", "3.96c", "3.97e"]
+              "3.83b", "3.86", "3.91", "3.92", "3.93", "3.95a", "3.95b", "3.96b", "3.96c",
+              "3.97e"]
 #: does-not-hold ids with a side read through the lines: the printed relation still fails
-FAILING = ["3.94", "3.97a", "3.97b", "3.97c"]
+FAILING = ["3.94", "3.96a", "3.97a", "3.97b", "3.97c"]
+#: tamperings that change no value (measured; why): the zero matrices doubled; t = S s-dot
+#: and t-dot = S s-ddot + S-dot s-dot hold under every member's lines (the swap reads the
+#: same t); in 3.91 v meets only T-dot's zero block; in 3.93 H-tilde-dot eta-dot = 0
+NO_CHANGE = {r"\mathbf{O}_{43}", r"\mathbf{O}_{34}", ("3.91", r"\mathbf{v}"),
+             ("3.93", r"\dot{\boldsymbol{\eta}}"), ("3.93", r"\dot{\tilde{\mathbf{H}}}")}
+SWAP_INVARIANT = {"3.80a", "3.93"}
 
 
 @pytest.fixture(scope="module")
@@ -120,9 +127,12 @@ def test_every_invariant_rate_id_read_and_each_line_doubled_rejected(book):
         used = [g for g in INVARIANT_RATE_GLYPHS if any(f"{g} as the model's" in x
                                                          for x in lines)]
         assert used, i
-        cases = [line_doubled(c, g) for g in used]
-        cases += [shifted_sides(c), doubled_rhs(c), member_swapped(c),
-                  another_printed_text(c, book, EVERY_SIDE[k - 1])]
+        cases = [line_doubled(c, g) for g in used if g not in NO_CHANGE
+                 and (i, g) not in NO_CHANGE]
+        cases += [shifted_sides(c), doubled_rhs(c), another_printed_text(c, book,
+                                                                          EVERY_SIDE[k - 1])]
+        if i not in SWAP_INVARIANT:
+            cases.append(member_swapped(c))
         for t in filter(None, cases):
             assert f"({i})" in rejection(t, book), i
     for i in FAILING:
