@@ -24,7 +24,11 @@ The project's models (``derivations/sec3_4_2.py``, ``rates_model``;
   (3.95b), ``r-dot``, ``r_0-dot`` their rates and ``R-dot`` the cross-product matrix of
   ``r-dot`` ("R denotes the cross-product matrix of r", under (3.96d)); ``D`` as printed
   in (3.97e); section 3.5's twist at A (the model's ``[omega; a-dot]``): ``v = a-dot``,
-  ``v-dot = a-ddot``, ``t`` as printed in (3.72);
+  ``v-dot = a-ddot``, ``t`` as printed in (3.72), ``t-dot`` as printed in (3.90),
+  ``omega-dot = vect(Q-ddot Q^T + Q-dot Q-dot^T)`` (the rate of (3.44)-(3.45)) and
+  ``Q-ddot`` the second time derivative of (2.49) term by term;
+- where the model moves ``e`` and ``phi`` with an angular velocity ``omega`` (an atom,
+  ``omega_model`` of 3.96a): ``e-dot`` and ``phi-dot`` from ``nu-dot = N omega`` (3.76a);
 - ``\\mathbf{1tr}``, the converted text's run-together of ``\\mathbf{1}`` and ``\\text{tr}``
   in (3.96b): read as those two glyphs (the project's conjecture about the printed page).
 
