@@ -117,6 +117,8 @@ def check_page(cert: dict, book: str) -> list[str]:
                         f", page {page[where:where + 50]!r}")
     lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
     lines += [f"symbol: {_symbol_words(s)}" for s in cert.get("symbols") or []]
+    lines += [f"symbol of {r.get('label')}: {_symbol_words(s)}" for r in cert.get("relations")
+              or [] if isinstance(r, dict) for s in r.get("symbols") or []]
     return lines + cause_lines(cert)
 
 

@@ -51,6 +51,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
     try:
         sides = read_relations(page, symbols, defs, lets := [])
+        if len(sides) == 1 and printed and all(r.get("symbols") for r in printed):  # F = N,
+            sides = [read_relations(page, [*symbols, *r["symbols"]], defs, lets)[0]  # L or H:
+                     for r in printed]  # each member read under its own lines (its F)
     except NotRead as exc:
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     held = cert.get("verdict") != "does-not-hold"  # a = b = c: a is b, where a = b holds

@@ -331,6 +331,10 @@ class _Reader:
             if self.take() == "_":
                 self.group()
         name = "".join(self.t[start:self.i])
+        if (slip := self.table.get(name.replace(" ", ""), {})).get("reads_as") == "text":
+            self.t[self.i:self.i] = tokens(str(slip.get("latex", "")))  # a converted slip:
+            self.cited.append(f"{name} read as {slip.get('latex')}")  # its words in its place
+            return self.primary()
         if self.t[self.i:self.i + 3] == ["(", "t", ")"]:  # p(t): the glyph at time t
             self.i += 3
         return self.lookup(name)

@@ -31,6 +31,10 @@ import sympy as sp
 
 from rigidsym.checking.certifying.body_symbols import point_body_symbols
 from rigidsym.checking.certifying.force_symbols import force_symbols
+from rigidsym.checking.certifying.invariant_rate_symbols import (
+    invariant_rate_symbols,
+    member_symbols,
+)
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.certifying.twist_symbols import twist_symbols
 from rigidsym.checking.deciding.evidence import small_witness
@@ -209,6 +213,8 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         if role != "corrected" and (pair := _restated_pair(eq.latex or "", lhs, rhs)):
             rels[-1]["restated"] = {"printed": "X^{-1} = Y", "proved": "X Y = 1",
                                     "X": pair[0], "Y": pair[1]}
+        if role != "corrected" and (own := member_symbols(r.label, eq.section or "")):
+            rels[-1]["symbols"] = own  # F = N, L or H: this member's F (the page's words)
         if role == "claim" and getattr(r, "page", 0):  # a chain's member the page prints
             rels[-1]["page"] = r.page
     # the groups in a fixed order (their first naming follows sympy's traversal, which
@@ -351,6 +357,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                                                             for j in (1, 2, 3)) + " \\end{bmatrix}"}
                 for k in (1, 2, 3)]
     out += point_body_symbols({e["glyph"] for e in out}, section)
+    out += invariant_rate_symbols({e["glyph"] for e in out}, section, latex)
     return out + twist_symbols({e["glyph"] for e in out}, section)
 
 

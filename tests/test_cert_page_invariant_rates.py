@@ -1,0 +1,141 @@
+"""The rates of the rotation invariants read from the page (issue 65): the symbol table's
+lines of ``rigidsym.checking.certifying.invariant_rate_symbols`` (``N``, ``L``, ``H`` and
+their tildes as printed in (3.76b-d), (3.77b-d), their rates term by term, the pose's
+rates, ``T``, ``S``, ``U``, ``W``, ``u``, ``r``, ...) and the per-member lines of the family
+``F = N, L, H`` let certcheck's second reader read those ids firmly; a changed line, a
+member read under another member's ``F``, a changed side and another id's text are rejected
+naming the id, and a does-not-hold stays one. Cheap ids here, every id in slow."""
+
+from __future__ import annotations
+
+import copy
+
+import pytest
+from test_cert_page import another_printed_text, doubled_rhs, relabelled, shifted_sides
+from test_cert_page_momenta import (
+    BOOK,
+    certificates,
+    line_changed,
+    line_doubled,
+    read_lines,
+    rejection,
+)
+
+#: the ids whose every printed side is read through the lines (measured)
+EVERY_SIDE = ["3.76a", "3.76b", "3.76c", "3.76d", "3.78", "3.79", "3.80a", "3.80b", "3.83a",
+              "3.83b", "3.86", "3.91", "3.92", "3.93", "3.95a", "3.95b", "3.96b", "3.96c",
+              "3.97e"]
+#: does-not-hold ids with a side read through the lines: the printed relation still fails
+FAILING = ["3.94", "3.96a", "3.97a", "3.97b", "3.97c"]
+#: tamperings that change no value (measured; why): the zero matrices doubled; t = S s-dot
+#: and t-dot = S s-ddot + S-dot s-dot hold under every member's lines (the swap reads the
+#: same t); in 3.91 v meets only T-dot's zero block; in 3.93 H-tilde-dot eta-dot = 0
+NO_CHANGE = {r"\mathbf{O}_{43}", r"\mathbf{O}_{34}", ("3.91", r"\mathbf{v}"),
+             ("3.93", r"\dot{\boldsymbol{\eta}}"), ("3.93", r"\dot{\tilde{\mathbf{H}}}")}
+SWAP_INVARIANT = {"3.80a", "3.93"}
+
+
+@pytest.fixture(scope="module")
+def book() -> str:
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return BOOK.read_text(encoding="utf-8")
+
+
+def member_swapped(cert: dict) -> dict | None:
+    """Each member's own lines moved to the next member (F = N read under L's lines)."""
+    c = copy.deepcopy(cert)
+    own = [r.get("symbols") for r in c["relations"] if r.get("symbols")]
+    if len(own) < 2:
+        return None
+    for r, lines in zip((r for r in c["relations"] if r.get("symbols")), own[1:] + own[:1],
+                        strict=True):
+        r["symbols"] = lines
+    return c
+
+
+def members_dropped(cert: dict) -> dict:
+    """The members' lines removed (one printed relation under several models again)."""
+    c = copy.deepcopy(cert)
+    for r in c["relations"]:
+        r.pop("symbols", None)
+    return c
+
+
+def test_member_lines_read_each_representation_firmly_and_a_swap_rejected(book):
+    """3.79 (T = [F O_43; O 1], F = N, L, H): each member read firmly under its own F; the
+    members' lines swapped, T's line changed, both sides shifted, another id's text and the
+    verdict changed: rejected naming the id; the members' lines dropped: NOT READ, never a
+    pass read from the page."""
+    c = certificates(["3.79"])["3.79"]
+    lines = read_lines(c, book, fast=False)
+    assert len(lines) == 3 and all(x.startswith("read from the page") for x in lines), lines
+    for rep in "NLH":
+        assert any(f"F is {rep} for the" in x for x in lines), lines
+    cases = [member_swapped(c), line_changed(c, "\\mathbf{T}", "\\mathbf{1}", "2\\mathbf{1}"),
+             shifted_sides(c), another_printed_text(c, book, "3.78"), relabelled(c, "verified")]
+    assert None not in cases
+    for t in cases:
+        assert "(3.79)" in rejection(t, book)
+    soft = read_lines(members_dropped(c), book, fast=False)
+    assert not any(x.startswith("read from the page") for x in soft), soft
+
+
+def test_rates_and_the_converted_slip_read_firmly_and_tamperings_rejected(book):
+    """3.96c (H-dot = (1/2)[r0-dot 1 - R-dot; -r-dot^T]): both sides read through the rates
+    of (3.76d) and (3.95b); each line doubled rejected. 3.96b's \\mathbf{1tr}, the
+    conversion's run-together, is read as 1 tr(.) and cited so; read as 1 alone, rejected."""
+    certs = certificates(["3.96b", "3.96c"])
+    c = certs["3.96c"]
+    lines = read_lines(c, book, fast=False)
+    assert lines and all(x.startswith("read from the page") for x in lines), lines
+    for g in ("\\dot{\\mathbf{H}}", "\\dot{\\mathbf{r}}", "\\dot{r}_0"):
+        assert f"{g} as the model's" in lines[0], lines
+        assert "(3.96c)" in rejection(line_doubled(c, g), book), g
+    c = certs["3.96b"]
+    lines = read_lines(c, book)
+    assert len(lines) == 2 and all(x.startswith("read from the page") for x in lines), lines
+    assert "\\mathbf{1tr} read as \\mathbf{1}\\text{tr}" in lines[0], lines
+    t = line_changed(c, "\\mathbf{1tr}", "\\mathbf{1}\\text{tr}", "\\mathbf{1}")
+    assert t is not None and "(3.96b)" in rejection(t, book)
+
+
+def test_a_does_not_hold_stays_one_where_its_left_side_is_read(book):
+    """3.97c (the printed H-dot bracket, a conversion slip): its left side read through the
+    rate of (3.76d), its printed bracket NOT READ, and certcheck still finds the printed
+    relation failing; its verdict changed to verified: rejected."""
+    c = certificates(["3.97c"])["3.97c"]
+    lines = read_lines(c, book, fast=False)
+    assert any(x.startswith("read from the page: relation 1's lhs") for x in lines), lines
+    assert any(x.startswith("NOT READ: relation 1's rhs") for x in lines), lines
+    assert "(3.97c)" in rejection(relabelled(c, "verified"), book)
+
+
+@pytest.mark.slow
+def test_every_invariant_rate_id_read_and_each_line_doubled_rejected(book):
+    """Every id of EVERY_SIDE read firmly on every side, and each line of the module it
+    reads doubled, both sides shifted, the right side doubled (where not 0), the members'
+    lines swapped, another id's text: rejected naming the id. FAILING: the left side read,
+    the printed relation still failing (verdict verified: rejected)."""
+    from rigidsym.checking.certifying.invariant_rate_symbols import INVARIANT_RATE_GLYPHS
+
+    certs = certificates(EVERY_SIDE + FAILING)
+    for k, i in enumerate(EVERY_SIDE):
+        c = certs[i]
+        lines = read_lines(c, book)
+        assert lines and all(x.startswith("read from the page") for x in lines), (i, lines)
+        used = [g for g in INVARIANT_RATE_GLYPHS if any(f"{g} as the model's" in x
+                                                         for x in lines)]
+        assert used, i
+        cases = [line_doubled(c, g) for g in used if g not in NO_CHANGE
+                 and (i, g) not in NO_CHANGE]
+        cases += [shifted_sides(c), doubled_rhs(c), another_printed_text(c, book,
+                                                                          EVERY_SIDE[k - 1])]
+        if i not in SWAP_INVARIANT:
+            cases.append(member_swapped(c))
+        for t in filter(None, cases):
+            assert f"({i})" in rejection(t, book), i
+    for i in FAILING:
+        lines = read_lines(certs[i], book)
+        assert any(x.startswith("read from the page: relation 1's lhs") for x in lines), i
+        assert f"({i})" in rejection(relabelled(certs[i], "verified"), book), i
