@@ -35,7 +35,7 @@ Section 3.4.2 (``derivations/sec3_4_2_twists.py``): the screw's pitch ``p`` (the
 
 from __future__ import annotations
 
-__all__ = ["instant_screw_symbols"]
+__all__ = ["INSTANT_SCREW_GLYPHS", "instant_screw_symbols"]
 
 _W2 = r"\|\boldsymbol{\omega}\|^2"
 _R = rf"\mathbf{{a}} + \frac{{1}}{{{_W2}}}\boldsymbol{{\Omega}}\dot{{\mathbf{{a}}}}"
@@ -98,6 +98,10 @@ _ARRAYS = (
     (r"\boldsymbol{\eta}", r"\begin{bmatrix} [\sin(\phi/2)]\mathbf{e} \\ \cos(\phi/2) "
      r"\end{bmatrix}", "Euler-Rodrigues parameters as printed in (3.75)", r"\phi"),
 )
+#: the glyphs of the lines in the book's LaTeX (those given by a model's words or an atom)
+INSTANT_SCREW_GLYPHS = tuple(dict.fromkeys(
+    [g for rows in (_FIXED_POINT, _ISA, _TRANSLATION) for g, _, _ in rows] + ["\\mathbf{p}"]
+    + [g for g, _, _, _ in _ARRAYS] + ["p", "\\|\\mathbf{v}\\|"]))
 
 
 def _lines(rows, have: set) -> list[dict]:
