@@ -23,6 +23,9 @@ from test_cert_page_momenta import (
 READ_THROUGH_LINES = ["3.41", "3.42", "3.43", "3.44", "3.45", "3.46", "3.56", "3.60", "3.61",
                       "3.62a", "3.62b", "3.63", "3.64", "3.65", "3.66", "3.67", "3.70", "3.71",
                       "3.73", "3.74", "3.75"]
+#: ids with a side read through a line and another not read (3.52's v_0 ||omega||^-1: a
+#: square root)
+PARTLY = ["3.52"]
 
 
 @pytest.fixture(scope="module")
@@ -74,13 +77,15 @@ def test_isa_point_read_firmly_and_tamperings_rejected(book):
 
 @pytest.mark.slow
 def test_sections_3_3_to_3_4_2_read_through_the_lines_and_tamperings_rejected(book):
-    """Every id of the list read through the lines: every printed side read firmly, and each
-    line it uses doubled (where that changes what is read), p'_0 made r, both sides
-    shifted, the right side doubled (where not 0), another id's text, the other verdict:
-    rejected naming the id."""
-    certs = certificates(READ_THROUGH_LINES)
+    """Every id of the lists read through the lines: every printed side read firmly (a side
+    of 3.52), and each line it uses doubled (where that changes what is read), p'_0 made r,
+    both sides shifted, the right side doubled (where not 0), another id's text, the other
+    verdict: rejected naming the id."""
+    ids = READ_THROUGH_LINES + PARTLY
+    certs = certificates(ids)
     for k, (i, c) in enumerate(certs.items()):
         lines = read_lines(c, book)
-        assert lines and all(x.startswith("read from the page") for x in lines), (i, lines)
-        for t in filter(None, _cases(c, lines, book, READ_THROUGH_LINES[k - 1])):
+        read = [x.startswith("read from the page") for x in lines]
+        assert lines and (any(read) if i in PARTLY else all(read)), (i, lines)
+        for t in filter(None, _cases(c, lines, book, ids[k - 1])):
             assert f"({i})" in rejection(t, book), i

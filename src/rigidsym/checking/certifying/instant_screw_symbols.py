@@ -24,7 +24,9 @@ their printed definitions (3.44), (3.45). The lines:
 - ``r``, ``A``, ``b`` as printed in (3.62b), (3.66), the displays that define them just
   below their first use ((3.62a), (3.65));
 - ``a-dot_par``, ``a-dot_perp``, the components of ``a-dot`` along and normal to
-  ``omega`` (the words before (3.56); (2.6a), (2.6b) with ``e = omega / ||omega||``).
+  ``omega`` (the words before (3.56); (2.6a), (2.6b) with ``e = omega / ||omega||``);
+- ``v_0``, Theorem 3.4.2's velocity common to the ISA's points: every point's axial
+  component ((3.59)'s first brace), the normal one vanishing on the ISA (3.60).
 
 Section 3.4.2 (``derivations/sec3_4_2_twists.py``): the screw's pitch ``p`` (the atom
 ``pitch``: the words before (3.71)); a pure translation's ``||v||`` (the atom
@@ -69,6 +71,10 @@ _ISA = (
      "component of a-dot normal to omega, (1 - e e^T) a-dot with e = omega / ||omega|| "
      "((2.6b); the words before (3.56))"),
 )
+#: Theorem 3.4.2's v_0, where (3.52) prints it
+_V0 = (r"\mathbf{v}_0", rf"{_PAR}\dot{{\mathbf{{a}}}}", "minimum-magnitude velocity common to "
+       "the ISA's points (Theorem 3.4.2): the axial component of every point's velocity "
+       "((3.59)'s first brace), the normal one vanishing on the ISA (3.60)")
 #: the ISA point p: a generic one (alpha in the table), or (3.63)'s, nearest A
 _ON_ISA = (r"\mathbf{p}'_0 + \alpha\boldsymbol{\omega}", "point of the ISA, p'_0 + alpha "
            "omega, alpha free (the words after (3.63): alpha omega added to an ISA point)")
@@ -100,7 +106,7 @@ _ARRAYS = (
 )
 #: the glyphs of the lines in the book's LaTeX (those given by a model's words or an atom)
 INSTANT_SCREW_GLYPHS = tuple(dict.fromkeys(
-    [g for rows in (_FIXED_POINT, _ISA, _TRANSLATION) for g, _, _ in rows] + ["\\mathbf{p}"]
+    [g for rows in (_FIXED_POINT, _ISA, _TRANSLATION, [_V0]) for g, _, _ in rows] + ["\\mathbf{p}"]
     + [g for g, _, _, _ in _ARRAYS] + ["p", "\\|\\mathbf{v}\\|"]))
 
 
@@ -126,7 +132,7 @@ def instant_screw_symbols(have: set, section: str, latex: str,
         the table has ``p_0``), ``Omega``, ``omega`` (where it has ``Q-dot``); in section
         3.4.1, where it has ``a`` and ``a-dot`` (and no body vector ``r``), ``p'_0``,
         ``r``, ``A``, ``b``, and ``p`` where it has ``alpha`` or the page prints (3.63);
-        ``a-dot_par``, ``a-dot_perp`` where they are printed; in section 3.4.2 the pitch
+        ``a-dot_par``, ``a-dot_perp``, ``v_0`` where they are printed; in section 3.4.2 the pitch
         ``p`` and ``s`` (the atom ``pitch``), the pure translation's ``||v||``, ``v``,
         ``omega``, ``t``, ``s_inf`` (the atom ``sec342_sigma``), ``nu``, ``lambda``,
         ``eta`` where (3.75) is printed.
@@ -136,6 +142,7 @@ def instant_screw_symbols(have: set, section: str, latex: str,
         return _lines(_FIXED_POINT if "\\mathbf{p}_0" in have else _FIXED_POINT[2:], have)
     if section == "3.4.1" and adot in have:
         rows = list(_ISA[4:]) if "\\dot{\\mathbf{a}}_{\\parallel}" in latex else []
+        rows += [_V0] if "\\mathbf{v}_0 =" in latex else []
         if "\\mathbf{a}" in have and "\\mathbf{r}" not in have:
             rows[:0] = _ISA[:4]
             if "\\alpha" in have or "\\mathbf{p} = \\mathbf{r}" in latex:
