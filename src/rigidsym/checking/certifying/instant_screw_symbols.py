@@ -26,7 +26,11 @@ their printed definitions (3.44), (3.45). The lines:
 - ``a-dot_par``, ``a-dot_perp``, the components of ``a-dot`` along and normal to
   ``omega`` (the words before (3.56); (2.6a), (2.6b) with ``e = omega / ||omega||``);
 - ``v_0``, Theorem 3.4.2's velocity common to the ISA's points: every point's axial
-  component ((3.59)'s first brace), the normal one vanishing on the ISA (3.60).
+  component ((3.59)'s first brace), the normal one vanishing on the ISA (3.60);
+- ``p-dot = a-dot + Q-dot r``, a generic body point's velocity (``r`` constant), where the
+  table has ``r`` and ``a`` cancelled from the certificate's relation, where ``p-dot .``
+  is printed ((3.53); not (3.59), whose one printed chain the certificate proves as its
+  ``p-dot_perp`` brace's relation, which ``p-dot`` is not).
 
 Section 3.4.2 (``derivations/sec3_4_2_twists.py``): the screw's pitch ``p`` (the atom
 ``pitch``: the words before (3.71)); a pure translation's ``||v||`` (the atom
@@ -75,6 +79,10 @@ _ISA = (
 _V0 = (r"\mathbf{v}_0", rf"{_PAR}\dot{{\mathbf{{a}}}}", "minimum-magnitude velocity common to "
        "the ISA's points (Theorem 3.4.2): the axial component of every point's velocity "
        "((3.59)'s first brace), the normal one vanishing on the ISA (3.60)")
+#: the velocity of a generic body point p = a + Q r (r constant), where a is not in the table
+_BODY_VELOCITY = (r"\dot{\mathbf{p}}", r"\dot{\mathbf{a}} + \dot{\mathbf{Q}}\mathbf{r}",
+                  "velocity of the body point P = a + Q r, r constant (the words before "
+                  "(3.47): any point of the body)")
 #: the ISA point p: a generic one (alpha in the table), or (3.63)'s, nearest A
 _ON_ISA = (r"\mathbf{p}'_0 + \alpha\boldsymbol{\omega}", "point of the ISA, p'_0 + alpha "
            "omega, alpha free (the words after (3.63): alpha omega added to an ISA point)")
@@ -106,7 +114,8 @@ _ARRAYS = (
 )
 #: the glyphs of the lines in the book's LaTeX (those given by a model's words or an atom)
 INSTANT_SCREW_GLYPHS = tuple(dict.fromkeys(
-    [g for rows in (_FIXED_POINT, _ISA, _TRANSLATION, [_V0]) for g, _, _ in rows] + ["\\mathbf{p}"]
+    [g for rows in (_FIXED_POINT, _ISA, _TRANSLATION, [_V0]) for g, _, _ in rows]
+    + ["\\mathbf{p}"]
     + [g for g, _, _, _ in _ARRAYS] + ["p", "\\|\\mathbf{v}\\|"]))
 
 
@@ -127,14 +136,15 @@ def instant_screw_symbols(have: set, section: str, latex: str,
         table: the table's entries (an atom's entry, bound to the page's glyph for it).
 
     Returns:
-        Entries ``{"glyph", "latex", "model"}`` (or an atom's entry under the page's
-        glyph), only for glyphs the table lacks: in section 3.3 ``p``, ``p-dot`` (where
-        the table has ``p_0``), ``Omega``, ``omega`` (where it has ``Q-dot``); in section
-        3.4.1, where it has ``a`` and ``a-dot`` (and no body vector ``r``), ``p'_0``,
-        ``r``, ``A``, ``b``, and ``p`` where it has ``alpha`` or the page prints (3.63);
-        ``a-dot_par``, ``a-dot_perp``, ``v_0`` where they are printed; in section 3.4.2 the pitch
-        ``p`` and ``s`` (the atom ``pitch``), the pure translation's ``||v||``, ``v``,
-        ``omega``, ``t``, ``s_inf`` (the atom ``sec342_sigma``), ``nu``, ``lambda``,
+        Entries ``{"glyph", "latex", "model"}`` (or an atom's entry under the page's glyph),
+        only for glyphs the table lacks: in section 3.3 ``p``, ``p-dot`` (where the table
+        has ``p_0``), ``Omega``, ``omega`` (where it has ``Q-dot``); in section 3.4.1, where
+        it has ``a`` and ``a-dot`` (and no body vector ``r``), ``p'_0``, ``r``, ``A``,
+        ``b``, and ``p`` where it has ``alpha`` or the page prints (3.63); ``a-dot_par``,
+        ``a-dot_perp``, ``v_0`` where they are printed; ``p-dot`` of the body point ``a + Q
+        r`` where it has the body vector ``r`` and ``p-dot .`` is printed; in section 3.4.2
+        the pitch ``p`` and ``s`` (the atom ``pitch``), the pure translation's ``||v||``,
+        ``v``, ``omega``, ``t``, ``s_inf`` (the atom ``sec342_sigma``), ``nu``, ``lambda``,
         ``eta`` where (3.75) is printed.
     """
     dot_q, adot = "\\dot{\\mathbf{Q}}", "\\dot{\\mathbf{a}}"
@@ -143,6 +153,8 @@ def instant_screw_symbols(have: set, section: str, latex: str,
     if section == "3.4.1" and adot in have:
         rows = list(_ISA[4:]) if "\\dot{\\mathbf{a}}_{\\parallel}" in latex else []
         rows += [_V0] if "\\mathbf{v}_0 =" in latex else []
+        if "\\mathbf{r}" in have and "\\dot{\\mathbf{p}} \\cdot" in latex:  # (3.53), not
+            rows.append(_BODY_VELOCITY)  # (3.59): its certificate's relation is a brace's
         if "\\mathbf{a}" in have and "\\mathbf{r}" not in have:
             rows[:0] = _ISA[:4]
             if "\\alpha" in have or "\\mathbf{p} = \\mathbf{r}" in latex:
