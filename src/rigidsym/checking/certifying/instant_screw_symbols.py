@@ -27,10 +27,10 @@ their printed definitions (3.44), (3.45). The lines:
   ``omega`` (the words before (3.56); (2.6a), (2.6b) with ``e = omega / ||omega||``);
 - ``v_0``, Theorem 3.4.2's velocity common to the ISA's points: every point's axial
   component ((3.59)'s first brace), the normal one vanishing on the ISA (3.60);
-- ``p-dot = a-dot + Q-dot r``, a generic body point's velocity (``r`` constant), where the
-  table has ``r`` and ``a`` cancelled from the certificate's relation, where ``p-dot .``
-  is printed ((3.53); not (3.59), whose one printed chain the certificate proves as its
-  ``p-dot_perp`` brace's relation, which ``p-dot`` is not).
+- ``p-dot = a-dot + Q-dot r``, a generic body point's velocity (``r`` constant), in
+  (3.53), whose certificate has ``r`` but no ``a`` (cancelled); not in (3.59), whose one
+  printed relation in the certificate is its ``p-dot_perp`` brace's, which ``p-dot`` is
+  not.
 
 Section 3.4.2 (``derivations/sec3_4_2_twists.py``): the screw's pitch ``p`` (the atom
 ``pitch``: the words before (3.71)); a pure translation's ``||v||`` (the atom
