@@ -31,6 +31,7 @@ import sympy as sp
 
 from rigidsym.checking.certifying.body_symbols import point_body_symbols
 from rigidsym.checking.certifying.force_symbols import force_symbols
+from rigidsym.checking.certifying.instant_screw_symbols import instant_screw_symbols
 from rigidsym.checking.certifying.invariant_rate_symbols import (
     invariant_rate_symbols,
     member_symbols,
@@ -291,7 +292,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
     system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
     section 3.8's twists and momenta:
-    :func:`rigidsym.checking.certifying.twist_symbols.twist_symbols`; section 3.2.3's
+    :func:`rigidsym.checking.certifying.twist_symbols.twist_symbols`; sections 3.3-3.4.2's:
+    :func:`rigidsym.checking.certifying.instant_screw_symbols.instant_screw_symbols`; 3.2.3's
     triad ``e_k`` where printed: column k of the rotation ``R``."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
@@ -356,6 +358,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                  "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k))
                                                             for j in (1, 2, 3)) + " \\end{bmatrix}"}
                 for k in (1, 2, 3)]
+    out += instant_screw_symbols({e["glyph"] for e in out}, section, latex, out)
     out += point_body_symbols({e["glyph"] for e in out}, section)
     out += invariant_rate_symbols({e["glyph"] for e in out}, section, latex)
     return out + twist_symbols({e["glyph"] for e in out}, section)
