@@ -323,7 +323,8 @@ class _Reader:
     def glyph(self) -> M:
         start = self.i
         tok = self.take()
-        if tok in ("\\mathbf", "\\boldsymbol", "\\dot", "\\ddot", "\\tilde", "\\mathrm"):
+        if tok in ("\\mathbf", "\\boldsymbol", "\\dot", "\\ddot", "\\tilde", "\\mathrm",
+                   "\\overrightarrow"):  # AP_1 of (3.37): the vector from A to P_1, a glyph
             self.group()
         elif not (tok.startswith("\\") or tok.isalpha()):
             raise NotRead(f"unexpected {tok!r}")

@@ -30,6 +30,7 @@ from pathlib import Path
 import sympy as sp
 
 from rigidsym.checking.certifying.body_symbols import point_body_symbols
+from rigidsym.checking.certifying.displacement_symbols import displacement_symbols
 from rigidsym.checking.certifying.force_symbols import force_symbols
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.certifying.twist_symbols import twist_symbols
@@ -350,6 +351,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                  "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k))
                                                             for j in (1, 2, 3)) + " \\end{bmatrix}"}
                 for k in (1, 2, 3)]
+    out += displacement_symbols({e["glyph"] for e in out}, section, latex)
     out += point_body_symbols({e["glyph"] for e in out}, section)
     return out + twist_symbols({e["glyph"] for e in out}, section)
 
