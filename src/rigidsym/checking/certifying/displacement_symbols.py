@@ -21,9 +21,11 @@ The project's models (``derivations/sec3_2*.py``):
   (3.29a), printed before it) with ``B`` the cross-product matrix of ``b``;
 - section 3.2.3 (``invariants_model``, ``triad_model``): ``q``, ``q_0`` the Euler-Rodrigues
   parameters (the invariants the model takes: the page's first example below (3.34)), the
-  pose ``s`` as printed in (3.34); the vector from ``A`` to the body point ``P_k = A + (column
-  k of R)`` (the triad of (3.37), orthonormal and right-handed) and the displaced triad
-  ``e'_k = p'_k - a' = Q (p_k - a)``.
+  pose ``s`` as printed in (3.34) (not in (3.35), whose two relations are two models, the
+  Euler-Rodrigues parameters and the linear invariants: one line would cite the first for
+  both); the vector from ``A`` to the body point ``P_k = A + (column k of R)`` (the triad
+  of (3.37), orthonormal and right-handed) and the displaced triad ``e'_k = p'_k - a' = Q
+  (p_k - a)``.
 
 Each line is given only where the id prints the glyph (and the table has the glyphs its
 LaTeX names), so the other ids keep reading through the page's own definitions.
@@ -56,10 +58,12 @@ _LINES = (
      "(3.3), x' = Q x + c", (r"\mathbf{p}'",), r"\mathbf{d}_P\equiv"),
     ("3.2", r"\mathbf{d}_{\parallel}", r"\mathbf{e}\mathbf{e}^T\mathbf{d}_P", "part of d_P "
      "parallel to the axis e (the words before (3.6a)), as printed in (3.6b)",
-     (r"\mathbf{p}'",), r"\mathbf{d}_P=\mathbf{d}_{\parallel}"),
+     (r"\mathbf{p}'",), (r"\mathbf{d}_P=\mathbf{d}_{\parallel}", r"\mathbf{d}_{\parallel}=")),
     ("3.2", r"\mathbf{d}_{\perp}", _ONE_E + r"\mathbf{d}_P", "part of d_P normal to the axis "
      "e (the words before (3.6a)), as printed in (3.6b)", (r"\mathbf{p}'",),
-     r"\mathbf{d}_P=\mathbf{d}_{\parallel}"),
+     (r"\mathbf{d}_P=\mathbf{d}_{\parallel}", r"\mathbf{d}_{\perp}=")),
+    ("3.2", r"\mathbf{d}_0", r"d_0\mathbf{e}", "displacement along the axis as printed in "
+     "(3.6b)", ("d_0",), r"\mathbf{d}_{\parallel}="),
     ("3.2.1", r"\mathbf{d}_0", r"\mathbf{Q}\mathbf{p}_0 + \mathbf{c} - \mathbf{p}_0",
      "displacement of P_0 (the words before (3.9a)), p_0' - p_0 with x' = Q x + c",
      (r"\mathbf{p}_0", r"\mathbf{c}"), r"\mathbf{d}_0="),
@@ -106,10 +110,10 @@ _LINES = (
      (r"\mathbf{f}",), r"\boldsymbol{\kappa}_\infty="),
     ("3.2.3", r"\mathbf{q}", r"\sin(\frac{\phi}{2})\mathbf{e}", "Euler-Rodrigues "
      "parameters' vector, the invariants the model takes (the page's first example below "
-     "(3.34))", (r"\mathbf{e}", r"\phi"), (r"\mathbf{s}\equiv", r"\|\mathbf{q}\|")),
+     "(3.34))", (r"\mathbf{e}", r"\phi"), r"\mathbf{s}\equiv"),
     ("3.2.3", "q_0", r"\cos(\frac{\phi}{2})", "Euler-Rodrigues parameters' scalar, the "
      "invariants the model takes (the page's first example below (3.34))",
-     (r"\mathbf{e}", r"\phi"), (r"\mathbf{s}\equiv", r"\|\mathbf{q}\|")),
+     (r"\mathbf{e}", r"\phi"), r"\mathbf{s}\equiv"),
     ("3.2.3", r"\mathbf{s}", r"\begin{bmatrix} \mathbf{q} \\ q_0 \\ \mathbf{d}_A "
      r"\end{bmatrix}", "pose array as printed in (3.34)", (r"\mathbf{a}'",),
      r"\mathbf{s}\equiv"),
