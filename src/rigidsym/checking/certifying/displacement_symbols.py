@@ -6,8 +6,9 @@ page (read firmly: a side that differs is a rejection).
 The project's models (``derivations/sec3_2*.py``):
 
 - section 3.2 (``split_model``): the displacement ``x' = Q x + c``; ``d_A``, ``d_P`` as
-  printed in (3.3) (3.3's own left sides); ``d_par``, ``d_perp``, which (3.6a) prints before
-  (3.6b) defines them: the parts of ``d_P`` along and normal to the axis ``e``;
+  printed in (3.3) (3.3's own left sides); ``d_par``, ``d_perp``, the parts of ``d_P`` along
+  and normal to the axis ``e`` as printed in (3.6b) (read in (3.6a), printed before them,
+  and in (3.6b) itself), and (3.6b)'s bold ``d_0 = d_0 e``;
 - section 3.2.1 (``screw_displacement_model``): bold ``d_0``, the displacement of ``P_0``
   ("the displacement d_0 of P_0", the words before (3.9a)): ``Q p_0 + c - p_0``; ``A``,
   ``b`` as printed in (3.11) (read in (3.10), printed before them, and as (3.11)'s own left
