@@ -25,7 +25,7 @@ from test_cert_page import (
 
 #: the ids the lines make read on every printed side (measured; 3.40's [Q] names no frame)
 EVERY_SIDE = ["3.3", "3.5", "3.6a", "3.6b", "3.9a", "3.10", "3.11", "3.15", "3.21", "3.22",
-              "3.23", "3.25", "3.26", "3.29a", "3.29b", "3.33", "3.34", "3.37"]
+              "3.23", "3.25", "3.26", "3.29a", "3.29b", "3.33", "3.34", "3.37", "3.39"]
 
 
 def _lines(c: dict, book: str) -> list[str]:
@@ -53,8 +53,8 @@ def _doubled(c: dict, glyph: str) -> dict:
 
 def _tamperings(c: dict, book: str, other: str) -> list[dict]:
     """Each line of the module doubled, both sides shifted, the right sides doubled (where
-    not 0), another id's printed text, the other verdicts, a unit declared free, and a
-    marked chain member's right side doubled."""
+    not 0), another id's printed text, the other verdicts, a unit declared free, a family
+    in words transposed, and a marked chain member's right side doubled."""
     out = [_doubled(c, g) for g in _mine(c)]
     out += [shifted_sides(c), another_printed_text(c, book, other),
             *(relabelled(c, v) for v in ("verified", "definition", "does-not-hold")
@@ -64,6 +64,11 @@ def _tamperings(c: dict, book: str, other: str) -> list[dict]:
         out.append(doubled_rhs(c))
     if (t := unit_declared_free(c)) is not None:
         out.append(t)
+    for e in c["symbols"]:
+        if e.get("family"):  # the family in words transposed
+            t = copy.deepcopy(c)
+            next(f for f in t["symbols"] if f.get("family"))["family"] = e["family"][::-1]
+            out.append(t)
     for k, r in enumerate(c["relations"]):
         if "page" in r:
             t = copy.deepcopy(c)
@@ -116,6 +121,37 @@ def test_reader_reads_a_vector_between_two_points_as_a_glyph():
     cert["symbols"] = cert["symbols"][:1] + cert["symbols"][2:]
     lines = compare(cert, page, fast=False)
     assert any(x.startswith("NOT READ: relation 1's rhs") for x in lines), lines
+
+
+def test_reader_reads_a_family_the_table_states_in_words():
+    """A relation with indices and no printed range (3.39's ``q_ij = e_i . e'_j``) is read as
+    a family over 1, 2, 3 where a table line carries ``"family": "ij"`` (row i, column j);
+    without it, NOT READ; with ``ji``, the transpose, which a non-symmetric side rejects."""
+    from certcheck.check import CheckError
+    from certcheck.compare import compare
+
+    x = [f"x_{k}{m}" for k in (1, 2, 3) for m in (1, 2, 3)]
+    lines = [{"glyph": f"q_{{{k}{m}}}", "latex": f"y_{{{k}{m}}}", "model": "q_km"}
+             for k in (1, 2, 3) for m in (1, 2, 3)]
+    lines += [{"glyph": f"y_{{{k}{m}}}", "kind": "free", "atoms": [f"x_{k}{m}"]}
+              for k in (1, 2, 3) for m in (1, 2, 3)]
+    lines += [{"glyph": f"z_{{{k}{m}}}", "kind": "free", "atoms": [f"x_{k}{m}"]}
+              for k in (1, 2, 3) for m in (1, 2, 3)]
+    lines[0]["family"] = "ij"
+    rows = [x[3 * k:3 * k + 3] for k in range(3)]
+    cert = {"format": "rigidsym-certificate", "version": 1, "id": "3.999",
+            "verdict": "verified", "let": [],
+            "atoms": [{"group": a, "kind": "free", "names": [a], "timed": False} for a in x],
+            "symbols": lines, "relations": [{"role": "printed", "label": "", "lhs": rows,
+                                             "rhs": rows, "evidence": {"type": "identity"}}]}
+    page = "q_{ij} = z_{ij}"
+    assert compare(cert, page, fast=False)[0].startswith(
+        "read from the page: relation 1's lhs"), cert
+    del lines[0]["family"]
+    assert all(x.startswith("NOT READ") for x in compare(cert, page, fast=False))
+    lines[0]["family"] = "ji"
+    with pytest.raises(CheckError, match="3.999"):
+        compare(cert, page, fast=False)
 
 
 @pytest.fixture(scope="module")

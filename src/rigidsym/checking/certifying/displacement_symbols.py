@@ -26,7 +26,9 @@ The project's models (``derivations/sec3_2*.py``):
   Euler-Rodrigues parameters and the linear invariants: one line would cite the first for
   both); the vector from ``A`` to the body point ``P_k = A + (column k of R)`` (the triad
   of (3.37), orthonormal and right-handed) and the displaced triad ``e'_k = p'_k - a' = Q
-  (p_k - a)``.
+  (p_k - a)``; (3.39)'s ``q_ij``, the entries of ``Q`` in the triad's frame, ``R^T Q R``
+  (change of basis), with the range ``i, j = 1, 2, 3`` the page states in words (the line
+  of ``q_11`` carries ``"family": "ij"``: certcheck reads the relation for each i, j).
 
 Each line is given only where the id prints the glyph (and the table has the glyphs its
 LaTeX names), so the other ids keep reading through the page's own definitions.
@@ -45,8 +47,10 @@ _B = (r"\begin{bmatrix} (\mathbf{Q} - \mathbf{1})\mathbf{a} - " + _ONE_E + r"\ma
       r"\\ 0 \end{bmatrix}")
 _D21 = r"\mathbf{p}_2 - \mathbf{p}_1"
 _NORM = r"\|\mathbf{p}_2 - \mathbf{p}_1\|"
-_COL = {k: r"\mathbf{R}\begin{bmatrix} " + r" \\ ".join(str(int(j == k)) for j in (1, 2, 3))
-        + r" \end{bmatrix}" for k in (1, 2, 3)}
+_UNIT = {k: [str(int(j == k)) for j in (1, 2, 3)] for k in (1, 2, 3)}
+_COL = {k: r"\mathbf{R}\begin{bmatrix} " + r" \\ ".join(_UNIT[k]) + r" \end{bmatrix}"
+        for k in (1, 2, 3)}
+_QF = r"\mathbf{R}^T\mathbf{Q}\mathbf{R}"  # Q in the triad's frame (change of basis)
 _TRIAD = "orthonormal and right-handed"
 
 #: (section, glyph, LaTeX in the table's glyphs, the model's words, the glyphs the table
@@ -126,7 +130,13 @@ _LINES = (
       for k in (1, 2, 3)),
     *(("3.2.3", rf"\mathbf{{e}}'_{k}", rf"\mathbf{{Q}}\mathbf{{e}}_{k}", f"triad in the "
        f"displaced configuration, e'_{k} = p'_{k} - a' = Q (p_{k} - a) with x' = Q x + c",
-       (r"\mathbf{Q}", r"\mathbf{R}"), r"[\mathbf{Q}]=") for k in (1, 2, 3)),
+       (r"\mathbf{Q}", r"\mathbf{R}"), (r"[\mathbf{Q}]=", "q_{ij}=")) for k in (1, 2, 3)),
+    *(("3.2.3", f"q_{{{k}{m}}}", r"\begin{bmatrix} " + " & ".join(_UNIT[k]) + r" \end{bmatrix}"
+       + _QF + r"\begin{bmatrix} " + r" \\ ".join(_UNIT[m]) + r" \end{bmatrix}", f"entry {k}, "
+       f"{m} of [Q] = R^T Q R, the matrix of Q in the frame X, Y, Z of axes parallel to e_1, "
+       "e_2, e_3 (the columns of R; change of basis), its entries q_ij, i, j = 1, 2, 3 (the "
+       "words before (3.39))", (r"\mathbf{Q}", r"\mathbf{R}"), "q_{ij}=")
+      for k in (1, 2, 3) for m in (1, 2, 3)),
 )
 #: the glyphs of the lines, in order (a glyph may have a line in more than one section)
 DISPLACEMENT_GLYPHS = tuple(dict.fromkeys(g for _, g, _, _, _, _ in _LINES))
@@ -158,5 +168,7 @@ def displacement_symbols(have: set, section: str, latex: str) -> list[dict]:
         if glyph == "\\mathbf{U}" and "\\mathbf{B}" not in have:
             out.append({"glyph": "\\mathbf{B}", "cpm_of": "\\mathbf{b}"})
         out.append({"glyph": glyph, "latex": tex, "model": words})
+        if glyph == "q_{11}":  # the page's family in words: certcheck reads it for each i, j
+            out[-1]["family"] = "ij"
         have.add(glyph)
     return out
