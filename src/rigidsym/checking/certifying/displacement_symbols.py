@@ -155,7 +155,8 @@ def displacement_symbols(have: set, section: str, latex: str) -> list[dict]:
 
     Returns:
         Entries ``{"glyph", "latex", "model"}`` (and ``{"glyph": "\\mathbf{B}", "cpm_of":
-        "\\mathbf{b}"}`` beside ``U``), only for glyphs the table lacks and whose needed
+        "\\mathbf{b}"}`` beside ``U``; ``q_11``'s with ``"family": "ij"``, the range of
+        (3.39) the page states in words), only for glyphs the table lacks and whose needed
         glyphs it has; ``[]`` elsewhere.
     """
     starts = re.split(r",\\quad", latex.replace(" ", ""))  # the printed relations
