@@ -100,7 +100,7 @@ def axial_displacement() -> Statement:
     Book: Sec. 3.2, Eq. (3.5).
     """
     return Statement([Rel(d_0, (e.T * d_A)[0, 0])], split_model(), defines=("d_0",),
-                     claims=[Rel(e.T * d_P, e.T * d_A, "e^T d_P = e^T d_A")])
+                     claims=[Rel(e.T * d_P, e.T * d_A, "e^T d_P = e^T d_A", page=1)])
 
 
 @equation("3.6a", "Split of d_P along and normal to e", section="3.2",
@@ -126,7 +126,7 @@ def displacement_parts() -> Statement:
     return Statement(
         [Rel(d_par, e * e.T * d_P), Rel(d0_vec, d_0 * e), Rel(d_perp, (I3 - e * e.T) * d_P)],
         split_model(), defines=("d_par", "d_perp", "d0_vec"),
-        claims=[Rel(e * e.T * d_P, d_0 * e, "e e^T d_P = d_0 e"),
+        claims=[Rel(e * e.T * d_P, d_0 * e, "e e^T d_P = d_0 e", page=2),
                 Rel(d_par.T * d_perp, sp.ZeroMatrix(1, 1), "d_par . d_perp = 0")])
 
 

@@ -323,7 +323,8 @@ class _Reader:
     def glyph(self) -> M:
         start = self.i
         tok = self.take()
-        if tok in ("\\mathbf", "\\boldsymbol", "\\dot", "\\ddot", "\\tilde", "\\mathrm"):
+        if tok in ("\\mathbf", "\\boldsymbol", "\\dot", "\\ddot", "\\tilde", "\\mathrm",
+                   "\\overrightarrow"):  # AP_1 of (3.37): the vector from A to P_1, a glyph
             self.group()
         elif not (tok.startswith("\\") or tok.isalpha()):
             raise NotRead(f"unexpected {tok!r}")
@@ -462,8 +463,10 @@ def read_relations(page: str, symbols: list, defs: dict | None = None,
             raise NotRead(f"a symbol-table entry without a glyph: {e!r}")
         table[str(e["glyph"]).replace(" ", "")] = e
     out, seen, lets = [], {}, [] if lets is None else lets  # a glyph read once per page
-    for chain in _split(tokens(page.rstrip(",. "))):
-        idx = chain[-1].pop()[1:] if chain[-1][-1:] and chain[-1][-1][0] == "@" else ""
+    words = next((str(e["family"]) for e in table.values() if e.get("family")), "")
+    for chain in _split(tokens(page.rstrip(",. "))):  # a range printed, or the table's
+        idx = chain[-1].pop()[1:] if chain[-1][-1:] and chain[-1][-1][0] == "@" else \
+            re.sub(r"[^ijk]", "", words)[:2]  # (the page's family in words: 3.39's q_ij)
         out.append([])
         for toks in chain:
             read, cited, assumed = [], [], False

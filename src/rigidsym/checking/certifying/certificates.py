@@ -30,6 +30,7 @@ from pathlib import Path
 import sympy as sp
 
 from rigidsym.checking.certifying.body_symbols import point_body_symbols
+from rigidsym.checking.certifying.displacement_symbols import displacement_symbols
 from rigidsym.checking.certifying.force_symbols import force_symbols
 from rigidsym.checking.certifying.instant_screw_symbols import instant_screw_symbols
 from rigidsym.checking.certifying.invariant_rate_symbols import (
@@ -358,6 +359,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                  "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k))
                                                             for j in (1, 2, 3)) + " \\end{bmatrix}"}
                 for k in (1, 2, 3)]
+    out += displacement_symbols({e["glyph"] for e in out}, section, latex)
     out += instant_screw_symbols({e["glyph"] for e in out}, section, latex, out)
     out += point_body_symbols({e["glyph"] for e in out}, section)
     out += invariant_rate_symbols({e["glyph"] for e in out}, section, latex)
