@@ -33,6 +33,7 @@ from rigidsym.checking.certifying.body_symbols import point_body_symbols
 from rigidsym.checking.certifying.force_symbols import force_symbols
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.certifying.twist_symbols import twist_symbols
+from rigidsym.checking.certifying.wrench_inertia_symbols import wrench_inertia_symbols
 from rigidsym.checking.deciding.evidence import small_witness
 from rigidsym.checking.deciding.explicit import (
     EXPLICIT_CACHE,
@@ -285,8 +286,10 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
     system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
     section 3.8's twists and momenta:
-    :func:`rigidsym.checking.certifying.twist_symbols.twist_symbols`; section 3.2.3's
-    triad ``e_k`` where printed: column k of the rotation ``R``."""
+    :func:`rigidsym.checking.certifying.twist_symbols.twist_symbols`; the glyphs sections
+    3.7 and 3.8 define on the id itself, ``V`` and ``M_A``:
+    :func:`rigidsym.checking.certifying.wrench_inertia_symbols.wrench_inertia_symbols`;
+    section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
         if section == sec or section.startswith(sec + "."):
@@ -351,7 +354,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                                                             for j in (1, 2, 3)) + " \\end{bmatrix}"}
                 for k in (1, 2, 3)]
     out += point_body_symbols({e["glyph"] for e in out}, section)
-    return out + twist_symbols({e["glyph"] for e in out}, section)
+    out += twist_symbols({e["glyph"] for e in out}, section)
+    return out + wrench_inertia_symbols({e["glyph"] for e in out}, section, latex)
 
 
 def _has(glyphs: set, latex: str) -> bool:
