@@ -3,7 +3,8 @@
 rational function under the kinds' hypotheses (:func:`certcheck.check.check_identity`); a
 side read firmly that differs is a rejection, one matched through an equation of the page
 or one of several models is NOT READ when it differs, and a side not read is said so. A
-printed ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y.
+printed ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y, and
+``\\underbrace{X}_{Y}`` as ``X = Y`` where the certificate has that many more relations.
 """
 
 from __future__ import annotations

@@ -12,6 +12,9 @@ particles, each a small table of its own glyphs (its mass as ``\\rho``, its posi
 it. A moving body's integrals cost certcheck under 2 s of CPU per id without python-flint
 since its field cancels a denominator's factors as soon as they divide (issue 65; they took
 20-40 s before, and a moving body had no line).
+Where the certificate's relation is free of ``o`` but has ``Q`` and the body's shape (the
+inertia dyad (3.138), unchanged by a translation), each particle binds ``\\mathbf{r}``, its
+position from the centre of mass, ``r_i = p_i - c = Q rho_i`` (the model's C is at ``o``).
 Every other line cites the page: ``m`` as printed in (3.123), ``I_C`` as printed under the
 brace of (3.130), ``c``'s rates from (3.124)-(3.125) with ``m`` constant; ``r``, ``q_O``,
 ``c``, ``T``, ``I_A`` the reader takes from their printed definitions (``\\equiv``).
