@@ -103,3 +103,32 @@ def test_chapter_sections_3_7_3_8_own_glyphs_read_and_tamperings_rejected(tmp_pa
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
     _check(_write(tmp_path, sorted(set(CHANGED) - {"3.112", "3.118", "3.125"})), _book())
+
+
+def test_an_underbrace_is_a_printed_relation_where_the_certificate_proves_it():
+    """``x = 2\\underbrace{y + z}_{w}`` with a certificate of two printed relations (``x =
+    2 (y + z)`` and the brace's ``y + z = w``) is read as two relations, the brace's firmly:
+    a certificate whose second relation is not the brace's is rejected; with one relation the
+    brace is only the term it groups (its label not read)."""
+    from certcheck.compare import compare
+
+    from certcheck import CheckError
+
+    names = ("x", "y", "z", "w")
+    cert = {"format": "rigidsym-certificate", "version": 1, "id": "t", "verdict": "verified",
+            "let": [],
+            "atoms": [{"group": n, "kind": "free", "names": [n], "timed": False} for n in names],
+            "symbols": [{"glyph": n, "kind": "free", "atoms": [n]} for n in names],
+            "relations": [{"label": "", "role": "printed", "lhs": [[a]], "rhs": [[b]],
+                           "evidence": {"type": "identity"}}
+                          for a, b in (("x", "2*(y + z)"), ("y + z", "w"))]}
+    page = "x = 2\\underbrace{y + z}_{w}"
+    lines = compare(cert, page)
+    assert lines == [f"read from the page: relation {k}'s lhs and rhs, the certificate's under"
+                     " the symbol table" for k in (1, 2)], lines
+    forged = copy.deepcopy(cert)
+    forged["relations"][1]["rhs"] = [["2*w"]]
+    with pytest.raises(CheckError, match=r"\(t\) the printed rhs of relation 2"):
+        compare(forged, page)
+    one = {**cert, "relations": cert["relations"][:1]}
+    assert compare(one, page) == [lines[0]]
