@@ -78,9 +78,9 @@ def wrench_inertia_symbols(have: set, section: str, latex: str) -> list[dict]:
         the table lacks: ``Gamma``, ``q_O``, ``c``, ``r``, ``T``, ``M``, ``I_A`` where the
         id defines them (``c``, ``q_O``, ``T``, ``M``, ``I_A`` on a body line); ``c`` and
         its rates, ``p``, ``p-dot``, ``omega``, ``R``, ``C`` where the table has ``o`` but
-        not the body's shape ``s_i``; ``w_A``, ``w_P`` where ``n_A``, ``n_P`` and ``f`` are
-        given; ``V`` where printed with ``A``, ``P`` given; ``M_A`` where printed on a
-        static body with ``a``.
+        not the body's shape ``s_i``; ``w_A``, ``w_P`` where printed with ``n_A``, ``n_P``
+        and ``f`` given; ``V`` where printed with ``A``, ``P`` given; ``M_A`` where printed
+        on a static body with ``a``.
     """
     sec = section.split(".")[:2]
     if sec not in (["3", "7"], ["3", "8"]):
@@ -103,7 +103,7 @@ def wrench_inertia_symbols(have: set, section: str, latex: str) -> list[dict]:
             line(glyph, text, words)
     if sec == "3.7":
         for x in ("A", "P"):
-            if {f"\\mathbf{{n}}_{x}", "\\mathbf{f}"} <= have:
+            if {f"\\mathbf{{n}}_{x}", "\\mathbf{f}"} <= have and f"\\mathbf{{w}}_{x}" in latex:
                 line(f"\\mathbf{{w}}_{x}", f"\\begin{{bmatrix}} \\mathbf{{n}}_{x} \\\\ "
                      "\\mathbf{f} \\end{bmatrix}", f"wrench array (3.113) about {x}")
         if "\\mathbf{V}" in latex and {"\\mathbf{A}", "\\mathbf{P}"} <= have:
