@@ -3,7 +3,8 @@
 rational function under the kinds' hypotheses (:func:`certcheck.check.check_identity`); a
 side read firmly that differs is a rejection, one matched through an equation of the page
 or one of several models is NOT READ when it differs, and a side not read is said so. A
-printed ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y.
+printed ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y, and
+``\\underbrace{X}_{Y}`` as ``X = Y`` where the certificate has that many more relations.
 """
 
 from __future__ import annotations
@@ -60,6 +61,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     pairs = [(c[0] if k == 1 or not held or not isinstance(c[0][0], NotRead) else
               (c[1][0], c[1][1], [*c[1][2], "the chain's second member"]), c[k])
              for c in sides for k in range(1, len(c))]
+    if len(pairs) != len(printed) and len(pairs) + len(b := list(_braces(page))) == len(printed):
+        pairs += [(c[0], c[1]) for x in b for c in read_relations(x, symbols, defs, lets)]
     # one printed relation under several models (a restatement is not another model)
     soft = len(pairs) == 1 and len([r for r in printed if "restated" not in r]) > 1
     pairs = pairs * len(printed) if len(pairs) == 1 and len(printed) > 1 else pairs
@@ -132,6 +135,15 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
             out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
                        "the certificate's" + (" under one of its models" if soft else ""))
     return out
+
+
+def _braces(page: str):
+    """Each ``\\underbrace{X}_{Y}`` of ``page`` as the printed relation ``X = Y``."""
+    depth = list(accumulate(map(lambda c: (c == "{") - (c == "}"), t := tokens(page))))
+    for i in (k for k, x in enumerate(t[:-1]) if x == "\\underbrace" and t[k + 1] == "{"):
+        j = depth.index(depth[i], i + 1)  # X's closing brace
+        y = t[j + 3:depth.index(depth[i], j + 3)] if t[j + 2:j + 3] == ["{"] else t[j + 2:j + 3]
+        yield " ".join(t[i + 2:j]) + " = " + " ".join(y)
 
 
 def _restated(cert: dict, rel: dict, page: str, symbols: list, defs: dict, lets: list):

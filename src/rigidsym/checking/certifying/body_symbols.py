@@ -12,6 +12,9 @@ particles, each a small table of its own glyphs (its mass as ``\\rho``, its posi
 it. A moving body's integrals cost certcheck under 2 s of CPU per id without python-flint
 since its field cancels a denominator's factors as soon as they divide (issue 65; they took
 20-40 s before, and a moving body had no line).
+Where the certificate's relation is free of ``o`` but has ``Q`` and the body's shape (the
+inertia dyad (3.138), unchanged by a translation), each particle binds ``\\mathbf{r}``, its
+position from the centre of mass, ``r_i = p_i - c = Q rho_i`` (the model's C is at ``o``).
 Every other line cites the page: ``m`` as printed in (3.123), ``I_C`` as printed under the
 brace of (3.130), ``c``'s rates from (3.124)-(3.125) with ``m`` constant; ``r``, ``q_O``,
 ``c``, ``T``, ``I_A`` the reader takes from their printed definitions (``\\equiv``).
@@ -56,21 +59,33 @@ def point_body_symbols(have: set, section: str) -> list[dict]:
         Entries ``{"glyph": "\\int_{\\mathcal{B}}", "model", "particles"}`` (each particle
         ``{glyph: LaTeX}``), and ``{"glyph", "latex", "model"}`` or ``{"glyph",
         "cpm_of"}`` for ``m``, the generic body point ``p`` and its rate, ``c``'s rates,
-        ``omega``, ``Omega``, ``R``, ``C``, ``I_C`` where the table lacks them; ``[]``
-        where the table has no point-mass body.
+        ``omega``, ``Omega``, ``R``, ``C``, ``I_C`` where the table lacks them; where the
+        table has ``Q`` and the ``s_i`` but no ``o`` (the relation free of the translation),
+        the particles' ``r_i = Q rho_i`` (C at o), ``m`` and ``I_C``; ``[]`` where the
+        table has no point-mass body.
     """
     ms = _masses(have)
     if not section.startswith("3.8") or ms is None:
         return []
-    if not {"\\mathbf{o}", "\\mathbf{s}_1", "\\mathbf{s}_2", "\\mathbf{s}_3"} <= have:
+    shape = {"\\mathbf{s}_1", "\\mathbf{s}_2", "\\mathbf{s}_3"} <= have
+    rho = [f"{ms[3]}\\mathbf{{s}}_{i}" for i in (1, 2, 3)]
+    rho.append("-(" + " + ".join(f"{ms[i]}\\mathbf{{s}}_{i + 1}" for i in range(3)) + ")")
+    if shape and "\\mathbf{o}" not in have and "\\mathbf{Q}" in have:  # r_i free of o
+        return [e for e in (
+            {"glyph": "\\int_{\\mathcal{B}}", "model": BODY_WORDS + "; C is at o, so r_i = "
+             "p_i - c = Q rho_i", "particles": [{"\\rho": m, "\\mathbf{r}": f"\\mathbf{{Q}}({x})"}
+                                                for m, x in zip(ms, rho, strict=True)]},
+            {"glyph": "m", "latex": r"\int_{\mathcal{B}} \rho d\mathcal{B}",
+             "model": "mass as printed in (3.123)"},
+            {"glyph": r"\mathbf{I}_C", "latex": _IC,
+             "model": "I_C as printed under the brace of (3.130)"}) if e["glyph"] not in have]
+    if not shape or "\\mathbf{o}" not in have:
         return [{"glyph": "\\int_{\\mathcal{B}}", "model": "body of four point masses m_i: "
                  "the integral of rho over B is the sum of the m_i",
                  "particles": [{"\\rho": m} for m in ms]},
                 {"glyph": "m", "latex": r"\int_{\mathcal{B}} \rho d\mathcal{B}",
                  "model": "mass as printed in (3.123)"}][:1 + ("m" not in have)]
     moving = bool({"\\dot{\\mathbf{Q}}", "\\dot{\\mathbf{o}}"} & have)
-    rho = [f"{ms[3]}\\mathbf{{s}}_{i}" for i in (1, 2, 3)]
-    rho.append("-(" + " + ".join(f"{ms[i]}\\mathbf{{s}}_{i + 1}" for i in range(3)) + ")")
     parts = []
     for m, x in zip(ms, rho, strict=True):
         if not moving:

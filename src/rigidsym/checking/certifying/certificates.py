@@ -39,6 +39,7 @@ from rigidsym.checking.certifying.invariant_rate_symbols import (
 )
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
 from rigidsym.checking.certifying.twist_symbols import twist_symbols
+from rigidsym.checking.certifying.wrench_inertia_symbols import wrench_inertia_symbols
 from rigidsym.checking.deciding.evidence import small_witness
 from rigidsym.checking.deciding.explicit import (
     EXPLICIT_CACHE,
@@ -294,8 +295,10 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
     section 3.8's twists and momenta:
     :func:`rigidsym.checking.certifying.twist_symbols.twist_symbols`; sections 3.3-3.4.2's:
-    :func:`rigidsym.checking.certifying.instant_screw_symbols.instant_screw_symbols`; 3.2.3's
-    triad ``e_k`` where printed: column k of the rotation ``R``."""
+    :func:`rigidsym.checking.certifying.instant_screw_symbols.instant_screw_symbols`; the glyphs
+    sections 3.7 and 3.8 define on the id itself, ``V`` and ``M_A``:
+    :func:`rigidsym.checking.certifying.wrench_inertia_symbols.wrench_inertia_symbols`;
+    section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
     cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
     for sec, letters in _CPM_BY_SECTION.items():
         if section == sec or section.startswith(sec + "."):
@@ -363,7 +366,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     out += instant_screw_symbols({e["glyph"] for e in out}, section, latex, out)
     out += point_body_symbols({e["glyph"] for e in out}, section)
     out += invariant_rate_symbols({e["glyph"] for e in out}, section, latex)
-    return out + twist_symbols({e["glyph"] for e in out}, section)
+    out += twist_symbols({e["glyph"] for e in out}, section)
+    return out + wrench_inertia_symbols({e["glyph"] for e in out}, section, latex)
 
 
 def _has(glyphs: set, latex: str) -> bool:
