@@ -190,9 +190,14 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_dot_with_jacobians_block(
     any |= rigidsym_any_nonfinite(out_N_matrix_dot_D_phi, 12 * m);
     any |= rigidsym_any_nonfinite(out_N_matrix_dot_D_omega, 36 * m);
 #endif
-    any |= rigidsym_any_extreme(in_e, 3 * m);
-    any |= rigidsym_any_extreme(in_phi, 1 * m);
-    any |= rigidsym_any_extreme(in_omega, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_e, 3 * m);
+        rigidsym_extreme_add(&xs, in_phi, 1 * m);
+        rigidsym_extreme_add(&xs, in_omega, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

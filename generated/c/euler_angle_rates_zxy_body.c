@@ -187,8 +187,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_zxy_body_block(
 #else
     any |= rigidsym_any_nonfinite(out_eta_dot, 3 * m);
 #endif
-    any |= rigidsym_any_extreme(in_angles, 3 * m);
-    any |= rigidsym_any_extreme(in_omega, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_angles, 3 * m);
+        rigidsym_extreme_add(&xs, in_omega, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

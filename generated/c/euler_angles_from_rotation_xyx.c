@@ -113,7 +113,12 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angles_from_rotation_xyx_block(
     any |= rigidsym_any_nonfinite(out_angles_other, 3 * m);
     any |= rigidsym_any_nonfinite(out_gimbal_lock, 1 * m);
 #endif
-    any |= rigidsym_any_extreme(in_Q, 9 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_Q, 9 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

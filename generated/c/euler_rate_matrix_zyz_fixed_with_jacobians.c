@@ -188,7 +188,12 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zyz_fixed_with_jacob
     any |= rigidsym_any_nonfinite(out_W, 9 * m);
     any |= rigidsym_any_nonfinite(out_W_D_angles, 27 * m);
 #endif
-    any |= rigidsym_any_extreme(in_angles, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_angles, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

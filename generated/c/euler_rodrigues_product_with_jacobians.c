@@ -120,8 +120,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
     any |= rigidsym_any_nonfinite(out_eta_D_eta1, 16 * m);
     any |= rigidsym_any_nonfinite(out_eta_D_eta2, 16 * m);
 #endif
-    any |= rigidsym_any_extreme(in_eta1, 4 * m);
-    any |= rigidsym_any_extreme(in_eta2, 4 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_eta1, 4 * m);
+        rigidsym_extreme_add(&xs, in_eta2, 4 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

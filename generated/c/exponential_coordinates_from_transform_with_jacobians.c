@@ -106,7 +106,12 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_from_transform
     any |= rigidsym_any_nonfinite(out_xi, 6 * m);
     any |= rigidsym_any_nonfinite(out_xi_D_T, 96 * m);
 #endif
-    any |= rigidsym_any_extreme(in_T, 16 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_T, 16 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -107,7 +107,12 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_exponential_coordinates_left_jacobian_
     any |= rigidsym_any_nonfinite(out_J, 36 * m);
     any |= rigidsym_any_nonfinite(out_J_D_xi, 216 * m);
 #endif
-    any |= rigidsym_any_extreme(in_xi, 6 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_xi, 6 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

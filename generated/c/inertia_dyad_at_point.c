@@ -118,10 +118,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_dyad_at_point_block(
 #else
     any |= rigidsym_any_nonfinite(out_M_A, 36 * m);
 #endif
-    any |= rigidsym_any_extreme(in_I_C, 9 * m);
-    any |= rigidsym_any_extreme(in_m, 1 * m);
-    any |= rigidsym_any_extreme(in_c, 3 * m);
-    any |= rigidsym_any_extreme(in_a, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_I_C, 9 * m);
+        rigidsym_extreme_add(&xs, in_m, 1 * m);
+        rigidsym_extreme_add(&xs, in_c, 3 * m);
+        rigidsym_extreme_add(&xs, in_a, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

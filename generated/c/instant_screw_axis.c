@@ -133,9 +133,14 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     any |= rigidsym_any_nonfinite(out_pitch, 1 * m);
     any |= rigidsym_any_nonfinite(out_plucker, 6 * m);
 #endif
-    any |= rigidsym_any_extreme(in_omega, 3 * m);
-    any |= rigidsym_any_extreme(in_a, 3 * m);
-    any |= rigidsym_any_extreme(in_a_dot, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_omega, 3 * m);
+        rigidsym_extreme_add(&xs, in_a, 3 * m);
+        rigidsym_extreme_add(&xs, in_a_dot, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

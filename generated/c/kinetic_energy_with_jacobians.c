@@ -155,10 +155,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_with_jacobians_block(
     any |= rigidsym_any_nonfinite(out_T_D_omega, 3 * m);
     any |= rigidsym_any_nonfinite(out_T_D_c_dot, 3 * m);
 #endif
-    any |= rigidsym_any_extreme(in_I_C, 9 * m);
-    any |= rigidsym_any_extreme(in_m, 1 * m);
-    any |= rigidsym_any_extreme(in_omega, 3 * m);
-    any |= rigidsym_any_extreme(in_c_dot, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_I_C, 9 * m);
+        rigidsym_extreme_add(&xs, in_m, 1 * m);
+        rigidsym_extreme_add(&xs, in_omega, 3 * m);
+        rigidsym_extreme_add(&xs, in_c_dot, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

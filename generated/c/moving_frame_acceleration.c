@@ -136,13 +136,18 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_block(
 #else
     any |= rigidsym_any_nonfinite(out_p_ddot, 3 * m);
 #endif
-    any |= rigidsym_any_extreme(in_o_ddot, 3 * m);
-    any |= rigidsym_any_extreme(in_Q, 9 * m);
-    any |= rigidsym_any_extreme(in_omega, 3 * m);
-    any |= rigidsym_any_extreme(in_omega_dot, 3 * m);
-    any |= rigidsym_any_extreme(in_rho_M, 3 * m);
-    any |= rigidsym_any_extreme(in_rho_dot_M, 3 * m);
-    any |= rigidsym_any_extreme(in_rho_ddot_M, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_o_ddot, 3 * m);
+        rigidsym_extreme_add(&xs, in_Q, 9 * m);
+        rigidsym_extreme_add(&xs, in_omega, 3 * m);
+        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+        rigidsym_extreme_add(&xs, in_rho_M, 3 * m);
+        rigidsym_extreme_add(&xs, in_rho_dot_M, 3 * m);
+        rigidsym_extreme_add(&xs, in_rho_ddot_M, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -124,11 +124,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
 #else
     any |= rigidsym_any_nonfinite(out_w, 6 * m);
 #endif
-    any |= rigidsym_any_extreme(in_I_C, 9 * m);
-    any |= rigidsym_any_extreme(in_m, 1 * m);
-    any |= rigidsym_any_extreme(in_omega, 3 * m);
-    any |= rigidsym_any_extreme(in_omega_dot, 3 * m);
-    any |= rigidsym_any_extreme(in_c_ddot, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_I_C, 9 * m);
+        rigidsym_extreme_add(&xs, in_m, 1 * m);
+        rigidsym_extreme_add(&xs, in_omega, 3 * m);
+        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+        rigidsym_extreme_add(&xs, in_c_ddot, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -113,8 +113,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block(
 #else
     any |= rigidsym_any_nonfinite(out_kappa, 6 * m);
 #endif
-    any |= rigidsym_any_extreme(in_p1, 3 * m);
-    any |= rigidsym_any_extreme(in_p2, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_p1, 3 * m);
+        rigidsym_extreme_add(&xs, in_p2, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

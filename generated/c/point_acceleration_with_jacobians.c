@@ -159,11 +159,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_bloc
     any |= rigidsym_any_nonfinite(out_p_ddot_D_p, 9 * m);
     any |= rigidsym_any_nonfinite(out_p_ddot_D_a, 9 * m);
 #endif
-    any |= rigidsym_any_extreme(in_a_ddot, 3 * m);
-    any |= rigidsym_any_extreme(in_omega, 3 * m);
-    any |= rigidsym_any_extreme(in_omega_dot, 3 * m);
-    any |= rigidsym_any_extreme(in_p, 3 * m);
-    any |= rigidsym_any_extreme(in_a, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_a_ddot, 3 * m);
+        rigidsym_extreme_add(&xs, in_omega, 3 * m);
+        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+        rigidsym_extreme_add(&xs, in_p, 3 * m);
+        rigidsym_extreme_add(&xs, in_a, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

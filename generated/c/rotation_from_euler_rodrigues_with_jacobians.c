@@ -105,7 +105,12 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_with_jac
     any |= rigidsym_any_nonfinite(out_Q, 9 * m);
     any |= rigidsym_any_nonfinite(out_Q_D_eta, 36 * m);
 #endif
-    any |= rigidsym_any_extreme(in_eta, 4 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_eta, 4 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

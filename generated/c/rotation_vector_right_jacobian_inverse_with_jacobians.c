@@ -107,7 +107,12 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_vector_right_jacobian_inverse
     any |= rigidsym_any_nonfinite(out_J, 9 * m);
     any |= rigidsym_any_nonfinite(out_J_D_w, 27 * m);
 #endif
-    any |= rigidsym_any_extreme(in_w, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_w, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

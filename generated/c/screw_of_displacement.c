@@ -157,9 +157,14 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_of_displacement_block(
     any |= rigidsym_any_nonfinite(out_pitch, 1 * m);
     any |= rigidsym_any_nonfinite(out_plucker, 6 * m);
 #endif
-    any |= rigidsym_any_extreme(in_Q, 9 * m);
-    any |= rigidsym_any_extreme(in_a, 3 * m);
-    any |= rigidsym_any_extreme(in_a_prime, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_Q, 9 * m);
+        rigidsym_extreme_add(&xs, in_a, 3 * m);
+        rigidsym_extreme_add(&xs, in_a_prime, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

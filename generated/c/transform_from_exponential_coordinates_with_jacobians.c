@@ -107,7 +107,12 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_transform_from_exponential_coordinates
     any |= rigidsym_any_nonfinite(out_T, 16 * m);
     any |= rigidsym_any_nonfinite(out_T_D_xi, 96 * m);
 #endif
-    any |= rigidsym_any_extreme(in_xi, 6 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_xi, 6 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

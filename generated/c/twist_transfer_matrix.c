@@ -106,8 +106,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_matrix_block(
 #else
     any |= rigidsym_any_nonfinite(out_U, 36 * m);
 #endif
-    any |= rigidsym_any_extreme(in_a, 3 * m);
-    any |= rigidsym_any_extreme(in_p, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_a, 3 * m);
+        rigidsym_extreme_add(&xs, in_p, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -120,8 +120,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_twist_transfer_matrix_with_jacobians_b
     any |= rigidsym_any_nonfinite(out_U_D_a, 108 * m);
     any |= rigidsym_any_nonfinite(out_U_D_p, 108 * m);
 #endif
-    any |= rigidsym_any_extreme(in_a, 3 * m);
-    any |= rigidsym_any_extreme(in_p, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_a, 3 * m);
+        rigidsym_extreme_add(&xs, in_p, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;

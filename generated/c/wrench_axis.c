@@ -127,8 +127,13 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_block(
     any |= rigidsym_any_nonfinite(out_pitch, 1 * m);
     any |= rigidsym_any_nonfinite(out_plucker, 6 * m);
 #endif
-    any |= rigidsym_any_extreme(in_w_A, 6 * m);
-    any |= rigidsym_any_extreme(in_a, 3 * m);
+    {
+        rigidsym_extreme_acc xs;
+        rigidsym_extreme_init(&xs);
+        rigidsym_extreme_add(&xs, in_w_A, 6 * m);
+        rigidsym_extreme_add(&xs, in_a, 3 * m);
+        any |= rigidsym_extreme_any(&xs);
+    }
     if (any == 0)
         return 0;
     int64_t count = 0;
