@@ -50,6 +50,9 @@ def test_every_declaration_names_its_book_section():
         assert eq.title and eq.latex
 
 
+# on the worker that checked the chapter for the verdicts above: its module fixture is
+# reused, where another worker would check the whole chapter again (30 s of setup)
+@pytest.mark.xdist_group("registry_verdicts")
 def test_committed_chapter_report_is_fresh(results):
     """generated/report/chapter3.{md,json,html} equal what the current declarations produce
     (the report is deterministic: no timings, tiny residuals bounded)."""
