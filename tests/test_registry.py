@@ -11,6 +11,10 @@ from rigidsym.registry.declarations import REGISTRY, load_all
 
 load_all()
 IDS = sorted(REGISTRY)
+# one worker checks the chapter, for every test of this module that reads the results
+# (every xdist worker that ran one of them checked the whole chapter again: 51 s of setup on
+# each of two workers, side by side, against 26 s for one)
+pytestmark = pytest.mark.xdist_group("registry_verdicts")
 
 
 @pytest.fixture(scope="module")
@@ -20,9 +24,6 @@ def results():
     return {r.id: r for r in run_checks(IDS, jobs=jobs, progress=False)}
 
 
-# one worker checks the chapter (issue 54: every xdist worker ran the whole chapter for its
-# share of these ids, 22 s of setup on each of a newcomer's two workers)
-@pytest.mark.xdist_group("registry_verdicts")
 @pytest.mark.parametrize("eq_id", IDS)
 def test_computed_verdict_equals_recorded(eq_id, results):
     r = results[eq_id]
@@ -50,9 +51,6 @@ def test_every_declaration_names_its_book_section():
         assert eq.title and eq.latex
 
 
-# on the worker that checked the chapter for the verdicts above: its module fixture is
-# reused, where another worker would check the whole chapter again (30 s of setup)
-@pytest.mark.xdist_group("registry_verdicts")
 def test_committed_chapter_report_is_fresh(results):
     """generated/report/chapter3.{md,json,html} equal what the current declarations produce
     (the report is deterministic: no timings, tiny residuals bounded)."""
