@@ -60,7 +60,9 @@ def test_numpy_math_names_the_target_of_this_cpu():
     assert here.startswith(f"numpy {np.__version__}, ")
     cur = np.lib.introspect.opt_func_info(func_name="^sin$")["sin"]["dd"]["current"]
     target = here.split(", ")[1]
-    assert cur.startswith(target) or (target == "baseline" and cur.startswith("baseline"))
+    assert target in ("X86_V4", "X86_V3", "baseline")
+    if cur.startswith(("X86_V4", "X86_V3")):     # sin's loop is one the record ranks
+        assert cur.startswith(target) or target == "X86_V4", (cur, here)
 
 
 def test_loadgroup_keeps_this_module_on_one_worker(request):
