@@ -40,7 +40,7 @@ FIVE = ["3.1", "3.96e", "3.94", "3.66", "3.41"]
 needs_book = pytest.mark.skipif(not BOOK.exists(), reason="the book is never shipped")
 
 
-def _write(folder: Path, ids: list[str]) -> dict:
+def certs_for(folder: Path, ids: list[str]) -> dict:
     from rigidsym.checking.certifying.certificates import (
         certificate,
         certificate_file,
@@ -63,7 +63,7 @@ def five(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
     folder = tmp_path_factory.mktemp("page")
-    return folder, _write(folder, FIVE)
+    return folder, certs_for(folder, FIVE)
 
 
 def _certcheck(*args) -> subprocess.CompletedProcess:
@@ -73,11 +73,11 @@ def _certcheck(*args) -> subprocess.CompletedProcess:
                           capture_output=True, text=True, timeout=300)
 
 
-def _book() -> str:
+def book_text() -> str:
     return BOOK.read_text(encoding="utf-8")
 
 
-def _rejected(cert: dict, book: str) -> str:
+def rejection(cert: dict, book: str) -> str:
     """The message of certcheck's rejection (page, cause, reader or mathematics)."""
     from certcheck.compare import compare
 
@@ -205,7 +205,7 @@ def another_printed_text(cert: dict, book: str, other_id: str) -> dict:
 def test_locator_finds_every_printed_id(registry):
     """Every book id (equations and theorems) is printed in exactly one place, and its
     declared LaTeX is that text."""
-    book = _book()
+    book = book_text()
     for i, eq in registry.items():
         if i[0].isdigit() or i.startswith(("thm", "cor", "caveat")):
             check_page({"id": i, "verdict": "verified", "book_latex": eq.latex}, book)
@@ -224,7 +224,7 @@ def test_referee_command_passes_and_prints_the_page(five):
 
 def test_tamperings_rejected_naming_the_id(five):
     _, certs = five
-    book = _book()
+    book = book_text()
     ids = list(certs)
     for k, i in enumerate(ids):
         c = certs[i]
@@ -235,7 +235,7 @@ def test_tamperings_rejected_naming_the_id(five):
         cases += [relabelled(c, v) for v in ("verified", "does-not-hold", "definition")
                   if v != c["verdict"]]
         for t in filter(None, cases):
-            assert f"({i})" in _rejected(t, book), (i, t.get("verdict"))
+            assert f"({i})" in rejection(t, book), (i, t.get("verdict"))
 
 
 def test_reader_rejects_what_is_not_printed(five):
@@ -244,11 +244,11 @@ def test_reader_rejects_what_is_not_printed(five):
     from certcheck.compare import compare
 
     _, certs = five
-    book = _book()
+    book = book_text()
     c = certs["3.96e"]
     assert any(x.startswith("read from the page") for x in compare(c, locate(book, "3.96e")))
     for t in (corrected_as_printed(c), doubled_rhs(c), unit_declared_free(c)):
-        assert "(3.96e)" in _rejected(t, book)
+        assert "(3.96e)" in rejection(t, book)
 
 
 def test_manifest_binds_the_folder_to_one_run(five, tmp_path):
@@ -288,7 +288,7 @@ def chapter(tmp_path_factory):
     load_all()
     ids = [i for i in REGISTRY if ":" not in i]   # the chapter's ids, not other books'
     folder = tmp_path_factory.mktemp("chapter")
-    return folder, _write(folder, ids)
+    return folder, certs_for(folder, ids)
 
 
 @pytest.mark.slow
@@ -298,7 +298,7 @@ def test_chapter_tamperings_rejected(chapter):
     from certcheck.compare import compare
 
     _, certs = chapter
-    book = _book()
+    book = book_text()
     ids = sorted(certs)
     for k, i in enumerate(ids):
         c = certs[i]
@@ -313,7 +313,7 @@ def test_chapter_tamperings_rejected(chapter):
         cases += [relabelled(c, v) for v in ("verified", "does-not-hold", "definition")
                   if v != c["verdict"]]
         for t in filter(None, cases):
-            assert f"({i})" in _rejected(t, book), (i, t.get("verdict"))
+            assert f"({i})" in rejection(t, book), (i, t.get("verdict"))
 
 
 @pytest.mark.slow
@@ -323,7 +323,7 @@ def test_chapter_shifted_sides_rejected_where_read(chapter):
     from certcheck.compare import compare
 
     _, certs = chapter
-    book = _book()
+    book = book_text()
     read = 0
     for i, c in sorted(certs.items()):
         if not i[0].isdigit() or not any(
@@ -331,7 +331,7 @@ def test_chapter_shifted_sides_rejected_where_read(chapter):
                 compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))):
             continue
         read += 1
-        assert f"({i})" in _rejected(shifted_sides(c), book), i
+        assert f"({i})" in rejection(shifted_sides(c), book), i
     assert read >= 5
 
 
@@ -506,7 +506,7 @@ def test_reader_a_glyph_defined_here_shadows_an_earlier_one():
 def model_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("model"), ["3.98", "3.84"])
+    return certs_for(tmp_path_factory.mktemp("model"), ["3.98", "3.84"])
 
 
 def test_model_glyphs_read_firmly_and_tamperings_rejected(model_read):
@@ -515,7 +515,7 @@ def test_model_glyphs_read_firmly_and_tamperings_rejected(model_read):
     changed (p = a + 2 Q r, [rho]_F = 2 Q rho) and another id's printed text: rejected."""
     from certcheck.compare import compare
 
-    book = _book()
+    book = book_text()
     for i, c in model_read.items():
         lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
         assert any(x.startswith("read from the page: relation 1's lhs") and " and rhs" in x
@@ -528,7 +528,7 @@ def test_model_glyphs_read_firmly_and_tamperings_rejected(model_read):
         other = "3.84" if i == "3.98" else "3.98"
         for t in (doubled_rhs(c), shifted_sides(c), changed,
                   another_printed_text(c, book, other)):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i
 
 
 def test_reader_notation_integral_over_the_tables_body():
@@ -585,7 +585,7 @@ def test_reader_notation_integral_over_the_tables_body():
 def body_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("body"), ["3.131", "3.133a"])
+    return certs_for(tmp_path_factory.mktemp("body"), ["3.131", "3.133a"])
 
 
 def mass_changed(cert: dict) -> dict | None:
@@ -605,7 +605,7 @@ def test_point_body_integrals_read_firmly_and_tamperings_rejected(body_read):
     shifted, a particle's mass doubled in the body line and another id's text: rejected."""
     from certcheck.compare import compare
 
-    book = _book()
+    book = book_text()
     for i, c in body_read.items():
         lines = compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))
         assert any(x.startswith("read from the page") and "\\int_{\\mathcal{B}} as the "
@@ -613,14 +613,14 @@ def test_point_body_integrals_read_firmly_and_tamperings_rejected(body_read):
         other = "3.133a" if i == "3.131" else "3.131"
         for t in (doubled_rhs(c), shifted_sides(c), mass_changed(c),
                   another_printed_text(c, book, other)):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i
 
 
 @pytest.fixture(scope="module")
 def moving_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("moving"), ["3.126", "3.144"])
+    return certs_for(tmp_path_factory.mktemp("moving"), ["3.126", "3.144"])
 
 
 def velocity_changed(cert: dict) -> dict | None:
@@ -646,7 +646,7 @@ def test_moving_body_integrals_read_firmly_and_tamperings_rejected(moving_read):
 
     from certcheck.compare import compare
 
-    book = _book()
+    book = book_text()
     for i, c in moving_read.items():
         t = time.process_time()
         lines = compare(c, locate(book, i), fast=False, defs=definitions_before(book, i))
@@ -657,7 +657,7 @@ def test_moving_body_integrals_read_firmly_and_tamperings_rejected(moving_read):
         mass = [mass_changed(c)] if i == "3.126" else []
         assert velocity_changed(c) is not None, i  # the body line gives the particles' rates
         for t in (*mass, velocity_changed(c), another_printed_text(c, book, other)):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i
 
 
 @pytest.mark.slow
@@ -668,7 +668,7 @@ def test_chapter_body_line_tampering_rejected_where_read(chapter):
     from certcheck.compare import compare
 
     _, certs = chapter
-    book = _book()
+    book = book_text()
     read = 0
     for i, c in sorted(certs.items()):
         if mass_changed(c) is None or not any(
@@ -676,7 +676,7 @@ def test_chapter_body_line_tampering_rejected_where_read(chapter):
                 compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))):
             continue
         read += 1
-        assert f"({i})" in _rejected(mass_changed(c), book), i
+        assert f"({i})" in rejection(mass_changed(c), book), i
     assert read >= 14
 
 
@@ -684,7 +684,7 @@ def test_chapter_body_line_tampering_rejected_where_read(chapter):
 def points_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("points"), ["3.8", "3.21"])
+    return certs_for(tmp_path_factory.mktemp("points"), ["3.8", "3.21"])
 
 
 def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
@@ -695,7 +695,7 @@ def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
     and both sides shifted: rejected."""
     from certcheck.compare import compare
 
-    book = _book()
+    book = book_text()
     moved = {"3.8": ("\\mathbf{p}_0", " + \\mathbf{e}"), "3.21": ("\\mathbf{p}_2",
                                                                " + \\mathbf{p}_1")}
     for i, c in points_read.items():
@@ -707,7 +707,7 @@ def test_points_in_words_read_firmly_and_a_moved_point_rejected(points_read):
         entry = next(e for e in t["symbols"] if e.get("glyph") == glyph)
         entry["latex"] = f"({entry['latex']}){shift}"
         for bad in (t, shifted_sides(c)):
-            assert f"({i})" in _rejected(bad, book), i
+            assert f"({i})" in rejection(bad, book), i
 
 
 def test_reader_notation_families_alternatives_bare_blocks():
@@ -769,7 +769,7 @@ def test_reader_notation_families_alternatives_bare_blocks():
 def forces_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("forces"), ["3.106", "3.121", "3.38", "3.117"])
+    return certs_for(tmp_path_factory.mktemp("forces"), ["3.106", "3.121", "3.38", "3.117"])
 
 
 def test_forces_blocks_and_families_read_firmly_and_tamperings_rejected(forces_read):
@@ -781,7 +781,7 @@ def test_forces_blocks_and_families_read_firmly_and_tamperings_rejected(forces_r
     pitch doubled) and another id's printed text: rejected."""
     from certcheck.compare import compare
 
-    book = _book()
+    book = book_text()
     changed = {"3.106": ("\\mathbf{n}_A", "\\mathbf{c}", "2\\mathbf{c}"),
                "3.38": ("\\mathbf{e}_1", "1 \\\\ 0 \\\\ 0", "0 \\\\ 1 \\\\ 0"),
                "3.117": ("\\mathbf{s}_w", "h_w", "2h_w")}
@@ -801,7 +801,7 @@ def test_forces_blocks_and_families_read_firmly_and_tamperings_rejected(forces_r
             entry["latex"] = entry["latex"].replace(old, new)
             cases.append(t)
         for t in cases:
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i
 
 
 # ------------------------------------------------------------------ restated relations
@@ -854,7 +854,7 @@ def _assert_restated_read_and_tamperings_rejected(certs: dict, book: str) -> Non
 def restated_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("restated"), ["3.16", "3.122"])
+    return certs_for(tmp_path_factory.mktemp("restated"), ["3.16", "3.122"])
 
 
 def test_restated_relations_read_firmly_and_forgeries_rejected(restated_read):
@@ -865,7 +865,7 @@ def test_restated_relations_read_firmly_and_forgeries_rejected(restated_read):
     3.16's other relation, the right side doubled and the other id's marking: rejected by
     the reader, naming the id; the marking dropped: 3.122 rejected (the page's U^T against
     1), 3.16 NOT READ (one printed relation under two models)."""
-    _assert_restated_read_and_tamperings_rejected(restated_read, _book())
+    _assert_restated_read_and_tamperings_rejected(restated_read, book_text())
 
 
 @pytest.mark.slow
@@ -877,4 +877,4 @@ def test_chapter_restated_relations_read_and_forgeries_rejected(chapter):
     restated = {i: c for i, c in certs.items()
                 if any("restated" in r for r in c["relations"])}
     assert {"3.14", "3.16", "3.122"} <= set(restated)
-    _assert_restated_read_and_tamperings_rejected(restated, _book())
+    _assert_restated_read_and_tamperings_rejected(restated, book_text())

@@ -14,13 +14,13 @@ import copy
 import pytest
 from test_cert_page import (
     BOOK,
-    _book,
-    _rejected,
-    _write,
     another_printed_text,
+    book_text,
+    certs_for,
     definitions_before,
     doubled_rhs,
     locate,
+    rejection,
     relabelled,
     shifted_sides,
     unit_declared_free,
@@ -38,7 +38,7 @@ CHANGED = {"3.109": ("\\mathbf{n}_P", "\\mathbf{c}", "2\\mathbf{c}"),
            "3.120": ("\\mathbf{n}_A", "+ \\mathbf{c}", "+ 2\\mathbf{c}")}
 
 
-def _compare(c: dict, book: str) -> list[str]:
+def page_comparison(c: dict, book: str) -> list[str]:
     from certcheck.compare import compare
 
     i = c["id"]
@@ -79,7 +79,7 @@ def _tamperings(c: dict, book: str) -> list[dict]:
 def chains_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("chains"), ["3.109", "3.115"])
+    return certs_for(tmp_path_factory.mktemp("chains"), ["3.109", "3.115"])
 
 
 def test_chain_member_and_wrench_arrays_read_and_tamperings_rejected(chains_read):
@@ -88,19 +88,19 @@ def test_chain_member_and_wrench_arrays_read_and_tamperings_rejected(chains_read
     ``n_0/||f||`` (through (3.108)) and rhs through the one-force model; 3.115 (``w = W
     Gamma s_w, t = T s_t``) through ``w = [n; f]``, ``t = [omega; v]`` and the screws as the
     model solves them: every side read firmly. Each tampering rejected naming the id."""
-    book = _book()
+    book = book_text()
     c = chains_read["3.109"]
     assert [r.get("page") for r in c["relations"] if r["role"] == "claim"] == [2, None, None]
-    lines = _compare(c, book)
+    lines = page_comparison(c, book)
     assert any(x.startswith("read from the page: relation 2's lhs") and " and rhs" in x
                and "the chain's second member" in x for x in lines), lines
     assert sum(x.startswith("NOT READ") for x in lines) == 2, lines  # p'' defined, twice
-    lines = _compare(chains_read["3.115"], book)
+    lines = page_comparison(chains_read["3.115"], book)
     assert sum(x.startswith("read from the page") and " and rhs" in x for x in lines) == 2
     assert not any(x.startswith(("NOT READ", "matched")) for x in lines), lines
     for i, c in chains_read.items():
         for t in _tamperings(c, book):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i
 
 
 @pytest.mark.slow
@@ -112,9 +112,9 @@ def test_chapter_section_3_7_wrench_ids_read_and_tamperings_rejected(tmp_path):
     every side read firmly, each tampering rejected naming the id."""
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    book = _book()
-    for i, c in _write(tmp_path, ["3.108", "3.110", "3.111", "3.113", "3.114", "3.120"]).items():
-        lines = _compare(c, book)
+    book = book_text()
+    for i, c in certs_for(tmp_path, ["3.108", "3.110", "3.111", "3.113", "3.114", "3.120"]).items():
+        lines = page_comparison(c, book)
         assert not any(x.startswith(("NOT READ", "matched")) for x in lines), (i, lines)
         for t in _tamperings(c, book):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i

@@ -11,13 +11,13 @@ import copy
 import pytest
 from test_cert_page import (
     BOOK,
-    _book,
-    _rejected,
-    _write,
     another_printed_text,
+    book_text,
+    certs_for,
     definitions_before,
     doubled_rhs,
     locate,
+    rejection,
     relabelled,
     shifted_sides,
     unit_declared_free,
@@ -158,7 +158,7 @@ def test_reader_reads_a_family_the_table_states_in_words():
 def displacement_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("displacement"), ["3.6b", "3.10", "3.22", "3.29a"])
+    return certs_for(tmp_path_factory.mktemp("displacement"), ["3.6b", "3.10", "3.22", "3.29a"])
 
 
 def test_displacement_ids_read_firmly_and_tamperings_rejected(displacement_read):
@@ -168,7 +168,7 @@ def test_displacement_ids_read_firmly_and_tamperings_rejected(displacement_read)
     it): every side read firmly; each line doubled, both sides
     shifted, the right side doubled, another id's text, the other verdicts, a unit declared
     free, the marked member changed: rejected naming the id."""
-    book = _book()
+    book = book_text()
     for i, c in displacement_read.items():
         lines = _lines(c, book)
         assert lines and all(x.startswith("read from the page") for x in lines), (i, lines)
@@ -176,7 +176,7 @@ def test_displacement_ids_read_firmly_and_tamperings_rejected(displacement_read)
         assert all(any(f"{g.replace(' ', '')} as the model's" in x for x in lines)
                    for g in _mine(c)), i
         for t in _tamperings(c, book, "3.8"):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i
 
 
 @pytest.mark.slow
@@ -187,8 +187,8 @@ def test_chapter_section_3_2_read_through_the_lines_and_tamperings_rejected(tmp_
     tamperings rejected naming the id."""
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    book = _book()
-    for i, c in _write(tmp_path, [*EVERY_SIDE, "3.40"]).items():
+    book = book_text()
+    for i, c in certs_for(tmp_path, [*EVERY_SIDE, "3.40"]).items():
         lines = _lines(c, book)
         if i == "3.40":
             assert [x[:33] for x in lines] == ["NOT READ: relation 1's lhs ([G] w",
@@ -198,4 +198,4 @@ def test_chapter_section_3_2_read_through_the_lines_and_tamperings_rejected(tmp_
         assert _mine(c) or i == "3.5", i  # 3.5: its marked member alone
         other = "3.8" if i != "3.8" else "3.12"
         for t in _tamperings(c, book, other):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i

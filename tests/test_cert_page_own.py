@@ -14,16 +14,16 @@ import copy
 import pytest
 from test_cert_page import (
     BOOK,
-    _book,
-    _rejected,
-    _write,
     another_printed_text,
+    book_text,
+    certs_for,
     doubled_rhs,
+    rejection,
     relabelled,
     shifted_sides,
     unit_declared_free,
 )
-from test_cert_page_chains import _compare
+from test_cert_page_chains import page_comparison
 
 #: newly read ids, each with a line of its table the page reads, and a change of it
 CHANGED = {"3.112": ("\\mathbf{\\Gamma}", "& \\mathbf{1} \\\\", "& 2\\mathbf{1} \\\\"),
@@ -68,20 +68,20 @@ def _tamperings(c: dict, book: str) -> list[dict]:
 
 def _check(certs: dict, book: str) -> None:
     for i, c in certs.items():
-        lines = _compare(c, book)
+        lines = page_comparison(c, book)
         assert any(x.startswith("read from the page") for x in lines), (i, lines)
         assert not any(x.startswith("matched") for x in lines), (i, lines)
         if i in EVERY_SIDE:
             assert not any(x.startswith("NOT READ") for x in lines), (i, lines)
         for t in _tamperings(c, book):
-            assert f"({i})" in _rejected(t, book), i
+            assert f"({i})" in rejection(t, book), i
 
 
 @pytest.fixture(scope="module")
 def own_read(tmp_path_factory):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    return _write(tmp_path_factory.mktemp("own"), ["3.112", "3.118", "3.125"])
+    return certs_for(tmp_path_factory.mktemp("own"), ["3.112", "3.118", "3.125"])
 
 
 def test_glyphs_defined_on_the_id_read_firmly_and_tamperings_rejected(own_read):
@@ -90,7 +90,7 @@ def test_glyphs_defined_on_the_id_read_firmly_and_tamperings_rejected(own_read):
     the model's centre of mass is ``o``, ``q_O`` through (3.124)'s integral): every side read
     firmly; another id's text, the other verdicts, the right side doubled, both sides
     shifted and the line changed are each rejected naming the id."""
-    _check(own_read, _book())
+    _check(own_read, book_text())
 
 
 @pytest.mark.slow
@@ -102,7 +102,7 @@ def test_chapter_sections_3_7_3_8_own_glyphs_read_and_tamperings_rejected(tmp_pa
     the id."""
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    _check(_write(tmp_path, sorted(set(CHANGED) - {"3.112", "3.118", "3.125"})), _book())
+    _check(certs_for(tmp_path, sorted(set(CHANGED) - {"3.112", "3.118", "3.125"})), book_text())
 
 
 def test_an_underbrace_is_a_printed_relation_where_the_certificate_proves_it():
