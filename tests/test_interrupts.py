@@ -371,3 +371,30 @@ def _interrupt_or_error(monkeypatch, capsys, cli, failing) -> None:
     with pytest.raises(ImportError):
         main(["verify"])
     assert signal.getsignal(signal.SIGINT) is before  # the caller's handler, restored
+
+
+PROGRAM = '''
+import sys
+from rigidsym.core import interrupts
+
+interrupts.install()
+try:
+    # a string that exec runs (as sympy's lambdify does) cut short by the interrupt
+    exec("import os, signal, time\\nos.kill(os.getpid(), signal.SIGINT)\\ntime.sleep(5)")
+except KeyboardInterrupt:
+    interrupts.quiet()
+    print("rigidsym: interrupted; run again to continue", file=sys.stderr)
+    sys.exit(interrupts.EXIT)
+'''
+
+
+def test_an_interrupt_inside_an_evaluated_string_still_exits_130_under_python_m(tmp_path):
+    """CPython marks an interrupt that ends an exec'd string "unhandled", even when caught,
+    and ``python -m`` then kills itself by SIGINT at exit (status -2, not 130: seen in
+    ``generate`` interrupted inside sympy's lambdify); :func:`interrupts.quiet` clears it."""
+    (tmp_path / "cut_short.py").write_text(PROGRAM, encoding="utf-8")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), *sys.path]))
+    p = subprocess.run([sys.executable, "-m", "cut_short"], cwd=tmp_path, env=env,
+                       capture_output=True, text=True, timeout=60)
+    assert p.returncode == interrupts.EXIT, (p.returncode, p.stderr)
+    assert p.stderr.strip() == "rigidsym: interrupted; run again to continue", p.stderr

@@ -70,9 +70,14 @@ def quiet() -> None:
         try:  # signal.signal runs a pending handler before it changes the disposition
             for sig in _SIGNALS:
                 signal.signal(sig, signal.SIG_IGN)
-            return
+            break
         except KeyboardInterrupt:
             continue
+    # CPython marks "unhandled KeyboardInterrupt" when one ends a string that exec or eval
+    # ran (sympy's lambdify and monomial builders do), even one caught later, and ``python
+    # -m`` then ends itself by SIGINT at exit instead of status 130; each evaluated string
+    # resets that mark first, and this one completes
+    eval("None")  # noqa: S307 - a constant string, only for that reset
 
 
 def end_workers() -> None:
