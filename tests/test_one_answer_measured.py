@@ -76,8 +76,14 @@ def test_torch_differs_from_c_only_through_its_sqrt(monkeypatch):
                         lambda x: torch.from_numpy(np.sqrt(x.detach().numpy())))
     exact = rt.euler_rodrigues_from_rotation(Q, check=False).numpy().reshape(c.shape)
     assert not _differ(exact, c).any()
-    # the documented count: "differs from C at N of 1e5 rows"; here a fifth of that many
-    m = re.search(r"`euler_rodrigues_from_rotation` then differs from C at (\d+) of 1e5", DOC)
-    assert m, "docs/kernels.md no longer quotes the torch count"
+    # the documented count per CPU capability (torch's sqrt differs with it): "differs from
+    # C at N of 1e5 rows on an AVX-512 CPU and at M on an AVX2 one"; here a fifth of that
+    m = re.search(r"`euler_rodrigues_from_rotation` then differs from C at (\d+) of 1e5 rows"
+                  r" on an AVX-512 CPU\s+and at ([\d,]+) on an AVX2 one", DOC)
+    assert m, "docs/kernels.md no longer quotes the torch counts"
+    quoted = {"AVX512": int(m.group(1)), "AVX2": int(m.group(2).replace(",", ""))}
+    cap = torch.backends.cpu.get_cpu_capability()
+    if cap not in quoted:
+        pytest.skip(f"docs/kernels.md quotes no count for torch's {cap} path")
     got = int(_differ(plain, c).sum()) * 5
-    assert abs(got - int(m.group(1))) <= 0.5 * int(m.group(1)) + 50, (got, m.group(1))
+    assert abs(got - quoted[cap]) <= 0.5 * quoted[cap] + 50, (cap, got, quoted[cap])
