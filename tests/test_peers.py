@@ -255,3 +255,20 @@ def test_a_peer_through_the_logarithm_fails_outside_its_domain():
         if "Jlog" in p.call or "jlog" in p.call:
             with pytest.raises(ValueError, match="pi"):
                 f(w)
+
+
+def test_a_users_file_named_like_a_peer_library_is_never_taken_for_it(tmp_path, monkeypatch):
+    """A ``--module`` folder stays on ``sys.path`` (examples/ holds modern_robotics.py): a
+    file there named like a peer's library is not the library, whether or not the library is
+    installed, and is never executed (it would register its declarations a second time)."""
+    (tmp_path / "modern_robotics.py").write_text(
+        "raise RuntimeError('a user file executed as the peer library')\n", encoding="utf-8")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setattr(T, "_LOADED", {})
+    monkeypatch.delitem(sys.modules, "modern_robotics", raising=False)
+    kernel = next(p.kernel for p in T.PEERS if p.library == "Modern Robotics")
+    ok, missing = T.available(kernel)
+    assert not [p for p, _ in ok if p.library == "Modern Robotics"]
+    why = [w for p, w in missing if p.library == "Modern Robotics"]
+    assert why and all("not available" in w for w in why), why
+    assert "modern_robotics" not in sys.modules

@@ -32,9 +32,12 @@ derivatives then from the textbook formula alone), and the derivative peers list
 from __future__ import annotations
 
 import importlib
+import importlib.metadata
+import importlib.util
 import warnings
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from pathlib import Path
 
 from rigidsym.codegen.accuracy import peer_adapters as A
 from rigidsym.codegen.accuracy.peer_adapters import x64
@@ -97,11 +100,30 @@ PEERS: tuple[Peer, ...] = _table()
 _LOADED: dict[str, object] = {}
 
 
+def _installed_copy(mod: str, dist: str) -> None:
+    """Raise ImportError unless ``mod``'s top-level package would be imported from the
+    installed distribution ``dist``: a user's file of that name on ``sys.path`` (a
+    ``--module`` folder, which stays last on the path, holds examples/modern_robotics.py)
+    is not the library, and importing it would run it. Checked before any import."""
+    try:
+        where = Path(str(importlib.metadata.distribution(dist).locate_file(""))).resolve()
+    except importlib.metadata.PackageNotFoundError:
+        raise ImportError(f"the {dist} distribution is not installed") from None
+    spec = importlib.util.find_spec(mod.split(".")[0])
+    origin = None if spec is None else spec.origin or next(
+        iter(spec.submodule_search_locations or ()), None)
+    if origin is None or not Path(origin).resolve().is_relative_to(where):
+        raise ImportError(f"`{mod.split('.')[0]}` would be imported from {origin}, not from "
+                          f"the installed {dist} ({where})")
+
+
 def _load(library: str):
-    """The library's module, imported once; an ImportError (with its reason) if missing."""
+    """The library's module, imported once; an ImportError (with its reason) if missing or
+    if the name finds another file first (:func:`_installed_copy`)."""
     if library not in _LOADED:
         mod = LIBRARIES[library][0]
         try:
+            _installed_copy(mod, LIBRARIES[library][1])
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
                 m = importlib.import_module(mod)
@@ -113,8 +135,8 @@ def _load(library: str):
             _LOADED[library] = e
     got = _LOADED[library]
     if isinstance(got, ImportError):
-        raise ImportError(f"{library} ({LIBRARIES[library][1]}): not installed, the "
-                          f"[oracles] extra ({got})")
+        raise ImportError(f"{library} ({LIBRARIES[library][1]}): not available, the "
+                          f"[oracles] extra installs it ({got})")
     return got
 
 
