@@ -239,7 +239,13 @@ def test_other_calls_unchanged(pool):
     assert f(xs[0][0], xs[1][0], xs[2][0], xs[3][0]).base is None   # one sample: no pool
     out = np.empty((N, 3))
     assert f(*xs, out=out) is out
-    assert f(*[x.astype(np.float32) for x in xs[:2]], *xs[2:]).base is None   # mixed dtypes
+    # mixed float32 and float64 inputs: float64 outputs, pooled as well (the C entry knows
+    # the outputs' dtype and batch shape after it reads the inputs), the same values
+    mixed = [x.astype(np.float32) for x in xs[:2]] + xs[2:]
+    y = f(*mixed)
+    assert y.dtype == np.float64 and y.base is not None
+    kernels.set_output_pool(False)
+    np.testing.assert_array_equal(y, f(*mixed))
 
 
 def test_settings():
@@ -257,17 +263,27 @@ def test_settings():
         outpool.parse_setting("lots")
 
 
-def test_off_again_restores_the_direct_entries(pool):
+def test_on_or_off_the_functions_call_their_c_entries(pool, monkeypatch):
+    """The compiled entries ask the pool themselves (no Python frame in a call, pool on or
+    off): a call below ``min_bytes`` never reaches Python, a larger one asks once."""
     import rigidsym.generated.api as api
     f = kernels.N_matrix
     xs = _inputs("N_matrix")
     f(*xs)
     space = kernels.load()._SPACE
-    assert api._F is not space._entries                 # on: the pool's wrappers
+    assert api._F is space._entries
+    asked = []
+    take = outpool.take
+    monkeypatch.setattr(outpool, "take", lambda *a: asked.append(a) or take(*a))
+    kernels.set_output_pool(True, min_bytes=1 << 20)     # rebinds: the C reads both anew
+    small = [x[:10] for x in xs]
+    assert f(*small, check=False).base is None and not asked
+    big = _inputs("N_matrix", n=30000)                   # 30000 x 12 doubles: 2.9 MB
+    assert f(*big, check=False).base is not None and len(asked) == 1
     kernels.set_output_pool(False)
-    assert api._F is space._entries                     # off: the C entries themselves
+    assert api._F is space._entries
     y = f(*xs, check=False)
-    assert y.base is None and kernels.set_output_pool()["blocks"] == 0
+    assert y.base is None and kernels.set_output_pool()["blocks"] == 0 and len(asked) == 1
 
 
 def test_empty_batches_are_not_pooled(pool):

@@ -1578,6 +1578,12 @@ static int rigidsym_enabled = 1;   /* 0 while the NumPy backend is selected */
 static PyObject *rigidsym_names[RIGIDSYM_NKERNELS];
 static PyObject *rigidsym_kw[4];   /* "out", "check", "on_singular", "threads" */
 static PyObject *rigidsym_s_nan, *rigidsym_s_raise;
+/* Set by _pool(): the output pool's take(shapes, dtype) (rigidsym.kernels.runtime.outpool)
+ * and the fewest output bytes it serves; NULL: off. A call with out=None whose outputs
+ * reach that size asks it for them (views of recycled blocks, or None: allocate); every
+ * other call pays one compare. */
+static PyObject *rigidsym_pool_take = NULL;
+static double rigidsym_pool_min = 0.0;
 
 /* The Python path, with the call's own arguments. */
 static PyObject *rigidsym_slow(int k, PyObject *const *args, int nin, PyObject *const *kw)
@@ -1898,6 +1904,60 @@ static int rigidsym_env_threads(void)
     return v != NULL;
 }
 
+/* The output pool's arrays for a call (Y[0..nout), new references), or Y[0] = NULL when
+ * it has none to give (then the caller allocates); -1 with an exception set on an error of
+ * take(). Only C-contiguous arrays of the outputs' exact dtype and shape are taken. */
+static int rigidsym_pool_outputs(const rigidsym_entry *E, int bnd, const npy_intp *bshape,
+                                 int f32, PyArrayObject **Y)
+{
+    const int nout = E->nout;
+    Y[0] = NULL;
+    PyObject *shapes = PyTuple_New(nout);
+    if (shapes == NULL)
+        return -1;
+    for (int o = 0; o < nout; ++o) {
+        const rigidsym_slot *s = &E->out[o];
+        PyObject *t = PyTuple_New(bnd + s->nd);
+        if (t == NULL) {
+            Py_DECREF(shapes);
+            return -1;
+        }
+        PyTuple_SET_ITEM(shapes, o, t);
+        for (int d = 0; d < bnd + s->nd; ++d) {
+            PyObject *v = PyLong_FromSsize_t(d < bnd ? bshape[d] : s->dims[d - bnd]);
+            if (v == NULL) {
+                Py_DECREF(shapes);
+                return -1;
+            }
+            PyTuple_SET_ITEM(t, d, v);
+        }
+    }
+    PyObject *got = PyObject_CallFunctionObjArgs(rigidsym_pool_take, shapes,
+                                                 (PyObject *)rigidsym_descr[f32], NULL);
+    Py_DECREF(shapes);
+    if (got == NULL)
+        return -1;
+    int ok = PyTuple_CheckExact(got) && PyTuple_GET_SIZE(got) == nout;
+    for (int o = 0; ok && o < nout; ++o) {
+        const rigidsym_slot *s = &E->out[o];
+        PyObject *a = PyTuple_GET_ITEM(got, o);
+        ok = PyArray_Check(a);
+        PyArrayObject *y = (PyArrayObject *)a;
+        ok = ok && PyArray_TYPE(y) == (f32 ? NPY_FLOAT : NPY_DOUBLE) && PyArray_ISNOTSWAPPED(y)
+            && PyArray_IS_C_CONTIGUOUS(y) && PyArray_ISALIGNED(y) && PyArray_ISWRITEABLE(y)
+            && PyArray_NDIM(y) == bnd + s->nd;
+        for (int d = 0; ok && d < bnd + s->nd; ++d)
+            ok = PyArray_DIM(y, d) == (d < bnd ? bshape[d] : s->dims[d - bnd]);
+    }
+    if (ok)
+        for (int o = 0; o < nout; ++o) {
+            Y[o] = (PyArrayObject *)PyTuple_GET_ITEM(got, o);
+            Py_INCREF(Y[o]);
+        }
+    Py_DECREF(got);
+    return 0;
+}
+
 /* Kernel k on its nin inputs args[0..nin) and the keywords kw[0..3] (out, check,
  * on_singular, threads). */
 static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
@@ -1975,7 +2035,17 @@ static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
     /* outputs: the caller's (checked here; the Python path raises for a bad one) or new */
     PyArrayObject *Y[RIGIDSYM_MAXOUT];
     int own = 0;
-    if (out == Py_None) {
+    Y[0] = NULL;
+    if (out == Py_None && rigidsym_pool_take != NULL && n > 0 && bnd > 0) {
+        Py_ssize_t per = 0;
+        for (int o = 0; o < nout; ++o)
+            per += E->out[o].size;
+        if ((double)n * (double)per * (double)item >= rigidsym_pool_min
+                && rigidsym_pool_outputs(E, bnd, bshape, f32, Y) < 0)
+            return NULL;
+        own = Y[0] != NULL;
+    }
+    if (out == Py_None && !own) {
         for (int o = 0; o < nout; ++o) {
             npy_intp dims[NPY_MAXDIMS];
             const rigidsym_slot *s = &E->out[o];
@@ -1994,7 +2064,7 @@ static PyObject *rigidsym_run(int k, PyObject *const *args, PyObject *const *kw)
             }
         }
         own = 1;
-    } else {
+    } else if (out != Py_None) {
         PyObject *const *outs = &out;
         if (PyTuple_CheckExact(out)) {
             if (PyTuple_GET_SIZE(out) != nout)
@@ -4707,11 +4777,33 @@ static PyObject *rigidsym_enable(PyObject *self, PyObject *flag)
     Py_RETURN_NONE;
 }
 
+PyDoc_STRVAR(rigidsym_pool_doc,
+"_pool(take, min_bytes)\n\nThe output pool: take(shapes, dtype) -> a tuple of arrays or None\n"
+"(rigidsym.kernels.runtime.outpool.take), asked for the outputs of a call with out=None whose\n"
+"outputs take at least min_bytes; take None: off.");
+
+static PyObject *rigidsym_pool(PyObject *self, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)self;
+    if (nargs != 2 || (args[0] != Py_None && !PyCallable_Check(args[0]))) {
+        PyErr_SetString(PyExc_TypeError, "_pool: expected (take or None, min_bytes)");
+        return NULL;
+    }
+    const double least = PyFloat_AsDouble(args[1]);
+    if (least == -1.0 && PyErr_Occurred())
+        return NULL;
+    Py_XINCREF(args[0] == Py_None ? NULL : args[0]);
+    Py_XSETREF(rigidsym_pool_take, args[0] == Py_None ? NULL : args[0]);
+    rigidsym_pool_min = least;
+    Py_RETURN_NONE;
+}
+
 #define RIGIDSYM_FAST_METHODS                                                              \
     {"_bind", (PyCFunction)(void (*)(void))rigidsym_bind, METH_FASTCALL, rigidsym_bind_doc}, \
     {"_enable", (PyCFunction)rigidsym_enable, METH_O, rigidsym_enable_doc}, \
     {"_environ", (PyCFunction)(void (*)(void))rigidsym_environ, METH_FASTCALL, rigidsym_environ_doc}, \
-    {"_install", (PyCFunction)(void (*)(void))rigidsym_install, METH_FASTCALL, rigidsym_install_doc},
+    {"_install", (PyCFunction)(void (*)(void))rigidsym_install, METH_FASTCALL, rigidsym_install_doc}, \
+    {"_pool", (PyCFunction)(void (*)(void))rigidsym_pool, METH_FASTCALL, rigidsym_pool_doc},
 
 /* Module exec: NumPy's C API, the interned names, and the attribute `entries` (the entry
  * points in kernels.json order). */

@@ -63,10 +63,15 @@ class Lazy:
 
 
 def _bind_c(space: Any, mod: types.ModuleType) -> types.SimpleNamespace:
-    """Bind ``mod`` to its C entries: directly (the functions' vectorcall), or through the
-    output pool's wrappers while it is on; returns the namespace bound."""
-    if _outpool.enabled():
-        cmod = space.c_lib().module
+    """Bind ``mod`` to its C entries: directly (the functions' vectorcall), the output pool
+    asked by the compiled entries themselves while it is on (a module with ``_pool``: no
+    Python frame in any call), or through the pool's Python wrappers (a module built before
+    ``_pool`` existed); returns the namespace bound."""
+    cmod = space.c_lib().module
+    if hasattr(cmod, "_pool"):
+        on = _outpool.enabled()
+        cmod._pool(_outpool.take if on else None, _outpool.LIMITS["min_bytes"])
+    if _outpool.enabled() and not hasattr(cmod, "_pool"):
         if hasattr(cmod, "_install"):
             cmod._install(None, None)          # the functions run their body: _F below
         mod._F = ns = pooled(space)

@@ -240,7 +240,9 @@ def set_output_pool(enabled: bool | None = None, *, max_bytes: int | None = None
     if enabled and not supported():
         raise RuntimeError("set_output_pool: needs CPython with the GIL (reference counts "
                            "tell a free block)")
-    changed = enabled is not None and enabled != _POOL.on
+    # the compiled entries read min_bytes when bound: a new one rebinds them too
+    changed = (enabled is not None and enabled != _POOL.on) or (
+        min_bytes is not None and min_bytes != LIMITS["min_bytes"])
     with _POOL.lock:
         if max_bytes is not None:
             _POOL.max_bytes = max_bytes
