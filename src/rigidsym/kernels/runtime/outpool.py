@@ -16,10 +16,12 @@ list refers to it, and never one with a weak reference (which could bring it bac
 one lock. CPython with the GIL only: elsewhere (no ``sys.getrefcount``, free-threaded
 builds) the pool stays off.
 
-Off by default: the kernels' functions call their compiled entry directly (no Python frame),
-and the pool needs one in each call (:mod:`rigidsym.kernels.runtime.entries`), about 0.7 us
-on a one-sample call. Turn it on with ``RIGIDSYM_OUTPUT_POOL=1`` (or a byte count, ``512M``,
-as the bound) or :func:`set_output_pool`; :func:`release_output_pool` frees what it keeps.
+The compiled entries ask it themselves (``_pool`` of ``c_fast.h.j2``): below ``min_bytes``
+a call pays one compare, above it one call of :func:`take`; a module built before that hook
+goes through Python wrappers (:mod:`rigidsym.kernels.runtime.entries`, about 0.7 us a call).
+Off by default: it keeps up to ``max_bytes`` after a large computation. Turn it on with
+``RIGIDSYM_OUTPUT_POOL=1`` (or a byte count, ``512M``, as the bound) or
+:func:`set_output_pool`; :func:`release_output_pool` frees what it keeps.
 """
 
 from __future__ import annotations
@@ -199,15 +201,17 @@ def set_output_pool(enabled: bool | None = None, *, max_bytes: int | None = None
     """Turn on or off the reuse of the kernels' large output blocks, or bound it; returns
     the pool's state.
 
-    When on, a kernel of the C back-end called with ``out=None`` on float64 or float32 arrays
-    of one batch shape whose outputs take at least 1 MiB gets them on blocks that earlier
+    When on, a kernel of the C back-end called with ``out=None`` on a batch (at least one
+    batch axis) whose outputs take at least 1 MiB gets them on blocks that earlier
     outputs held and the program has let go of (no array, view, memoryview or buffer export of
     them left, and no weak reference): the page faults of fresh memory are not paid again.
     The results are the same values, writeable, C-contiguous; they are views (``out.base`` is
     the block, so ``out.flags.owndata`` is False and ``out.resize()`` refuses). Other calls
     allocate as before. Off by default (``RIGIDSYM_OUTPUT_POOL`` sets the default: ``1`` or a
-    bound such as ``512M``); it costs a Python frame in every kernel call while on (about
-    0.7 us).
+    bound such as ``512M``): it keeps up to ``max_bytes`` until :func:`release_output_pool`.
+    The compiled entries ask it only for calls of at least ``min_bytes`` (a call of
+    :func:`take` from C); a module generated before that hook runs a Python wrapper in every
+    call while on (about 0.7 us).
 
     Args:
         enabled: True or False, or None to leave it as it is.
