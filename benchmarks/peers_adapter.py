@@ -19,7 +19,7 @@ from the same ``generated/c``), outputs allocated by the library inside every ca
 else from this checkout's ``.venv``; where neither imports, for the native column, and for
 K4 and K6 (no public kernel of that name), each K is one call of the built module's
 ``batch`` (no validation, the equivalent of ``check=False``) on ``np.empty`` outputs, as
-before. ``VARIANT`` says which.
+before, or on the output pool's arrays when it is on. ``VARIANT`` says which.
 
 K1 rotation_from_euler_rodrigues, K2 rotation_from_natural_invariants, K3 screw_axis_point,
 K4 instant_screw_point_pitch (ISA point and pitch), K5 N_matrix, K6 newton_euler_residual
@@ -84,15 +84,19 @@ def _build(build_dir: Path, native: bool):
     return mod
 
 
-def _wrap(mod, name: str):
+def _wrap(mod, name: str, take=None):
+    """``name``'s call through the built module's ``batch``; ``take(shapes, dtype)``: where
+    the outputs come from (the library's output pool when it is on), else ``np.empty``."""
     meta = _META[name]
     k = mod.kernels.index(name)
     batch = mod.batch
     shapes = [tuple(o["shape"]) for o in meta["outputs"]]
+    f64 = np.dtype(np.float64)
 
     def call(*xs):
         n = xs[0].shape[0]
-        outs = [np.empty((n,) + s) for s in shapes]
+        outs = take and take([(n,) + s for s in shapes], f64)
+        outs = outs or [np.empty((n,) + s) for s in shapes]
         batch(k, False, n, 1, *xs, *outs)
         return outs[0] if len(outs) == 1 else tuple(outs)
     call.__name__ = name
@@ -139,7 +143,8 @@ def setup(ctx=None) -> None:
         VARIANT = (f"public API, check=False, {info.get('path', '?')}, output pool "
                    + (f"on ({pool['max_bytes'] >> 20} MiB)" if pool["enabled"] else "off")
                    + f" (RIGIDSYM_OUTPUT_POOL={os.environ.get('RIGIDSYM_OUTPUT_POOL', '')!r});"
-                   " the batch of the module built here for a K with no public kernel")
+                   " the batch of the module built here for a K with no public kernel"
+                   " (its outputs from the same pool when on)")
         print(f"  rigidsym-c: {VARIANT}", file=sys.stderr)
     for kid, name in BENCH.items():
         if name not in _META:
@@ -148,4 +153,7 @@ def setup(ctx=None) -> None:
             KERNELS[kid] = _call(getattr(rk, name))
             continue
         mod = mod or _build(build_dir, NATIVE)
-        KERNELS[kid] = _wrap(mod, name)
+        take = None
+        if rk is not None and rk.set_output_pool()["enabled"]:
+            from rigidsym.kernels.runtime.outpool import take
+        KERNELS[kid] = _wrap(mod, name, take)
