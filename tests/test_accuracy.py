@@ -32,7 +32,7 @@ EXTRA = ["plucker_from_points_with_jacobians", "instant_screw_axis_with_jacobian
          "euler_angle_rates_zyz_body", "euler_angle_rates_xyz_fixed"]
 
 
-def _backends() -> list[str]:
+def available_backends() -> list[str]:
     if K.use_backend("c") != "c":
         if shutil.which("gcc") or shutil.which("cc"):
             pytest.fail("a C compiler is present but the C backend did not build")
@@ -117,7 +117,7 @@ def test_accurate_over_the_regimes_float64(name):
     open ones (OPEN). Old main: no second yardstick (tests/test_accuracy_rule.py shows the
     loss it let through); the libmvec build of the session before: the trig kernels on C
     past the rule (rotation_from_natural_invariants 1.9)."""
-    rows = A.sweep([name], [np.float64], _backends(), n_random=3, small=SMALL)
+    rows = A.sweep([name], [np.float64], available_backends(), n_random=3, small=SMALL)
     K.use_backend("numpy")
     assert rows and sum(r.samples for r in rows) >= 5
     assert all(r.worst_ratio <= 1 and not r.spurious for r in rows), _losses(rows)
@@ -138,7 +138,7 @@ def test_float32_c_plan_at_gimbal_lock():
     middle angle 1e-1 .. 1e-15 from 0 and pi): old main 1.73 of the rule, 11.9 u where the
     textbook is 3.4 u (a random omega cancels in the numerator; the plan kept it in
     float, having measured no point near pi)."""
-    if "c" not in _backends():
+    if "c" not in available_backends():
         pytest.skip("no C backend")
     name = "euler_angle_rates_yzy_body"
     pts = A.P.regimes(A.R.kernel_of(name), np.float32, seed=2)["gimbal lock"]
@@ -151,7 +151,7 @@ def test_float32_c_plan_at_gimbal_lock():
 def test_float32_c_plans_over_the_regimes(name):
     """The harness's float32 rows of the kernels of F32_PLANNED (seeds 0-3, every regime):
     within the rule, OPEN aside (old main: F32_PLANNED's ratios)."""
-    rows = A.sweep([name], [np.float32], _backends(), seeds=(0, 1, 2, 3))
+    rows = A.sweep([name], [np.float32], available_backends(), seeds=(0, 1, 2, 3))
     K.use_backend("numpy")
     assert not _within(rows), _losses(_within(rows))
 
@@ -185,7 +185,7 @@ def test_lie_jacobian_inverse_at_the_range_ends():
     # skew part -[w]/2, symmetric part e e^T + m (1 - e e^T) (then J w = w)
     wb = e * 2.0**997
     Wb = np.array([[0, -wb[2], wb[1]], [wb[2], 0, -wb[0]], [-wb[1], wb[0], 0]])
-    for b in _backends():
+    for b in available_backends():
         K.use_backend(b)
         J = K.rotation_vector_left_jacobian_inverse(wb)
         S, P_ = (J + J.T) / 2, np.eye(3) - np.outer(e, e)
@@ -266,7 +266,7 @@ def test_full_sweep_both_types():
     on the loaded 2-core host with the [oracles] extra). At the wave-6 merge it raised
     sympy's "Can't calculate derivative wrt" on the SE(3) inverse Jacobian's Grouped marks;
     spec.Grouped._eval_derivative differentiates what it groups."""
-    rows = A.sweep(A.kernel_names(), [np.float64, np.float32], _backends(), n_random=4)
+    rows = A.sweep(A.kernel_names(), [np.float64, np.float32], available_backends(), n_random=4)
     K.use_backend("numpy")
     # every row of every regime is judged, the Lie kernels' at the ends of the range too
     # (RANGE_DEFECTS: none open)
@@ -299,6 +299,6 @@ def test_at_the_old_worst_point(name, regime, seed, limit):
     """A closed row at its old worst point (float64, C and NumPy): within ``limit``, where
     old main was past the rule (OLD_WORST)."""
     pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=seed)[regime]
-    rows = A.judge(name, regime, pts, np.float64, _backends())
+    rows = A.judge(name, regime, pts, np.float64, available_backends())
     K.use_backend("numpy")
     assert all(r.rule_ratio <= limit for r in rows), _losses(rows)

@@ -23,7 +23,7 @@ from rigidsym.codegen.spec import flat_symbols, input_symbols
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 pytest.importorskip("flint")
-from test_accuracy import _backends  # noqa: E402
+from test_accuracy import available_backends  # noqa: E402
 
 from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
 from rigidsym.codegen.accuracy.harness import yardsticks as O  # noqa: E402
@@ -62,7 +62,7 @@ def test_the_harness_fails_a_kernel_worse_than_the_textbook():
                    runner=_plain_cross)
     assert rows[0].worst_ratio <= 1          # the old rule alone lets it through
     assert rows[0].rule_ratio > 1e2 and not rows[0].accurate
-    good = A.judge("plucker_from_points", "p2->p1 at 1e6", pts, np.float64, _backends())
+    good = A.judge("plucker_from_points", "p2->p1 at 1e6", pts, np.float64, available_backends())
     assert all(r.accurate for r in good), [(r.backend, r.rule_ratio) for r in good]
 
 
@@ -107,7 +107,7 @@ def test_a_yardstick_lucky_at_one_input_does_not_fail_the_kernel(monkeypatch):
     makes the screen fail and the medians pass."""
     name = "rotation_from_rotation_vector"
     consulted = _lucky_peer(monkeypatch, name, W_LUCKY)
-    rows = A.judge(name, "lucky", [[[A.P.q(x) for x in W_LUCKY]]], np.float64, _backends())
+    rows = A.judge(name, "lucky", [[[A.P.q(x) for x in W_LUCKY]]], np.float64, available_backends())
     assert consulted, "the per-point screen passed: the kernel is no longer 137 u there"
     assert all(r.rule_ratio <= 1 for r in rows), [(r.backend, r.rule_ratio) for r in rows]
 
@@ -136,7 +136,7 @@ def test_a_program_systematically_worse_than_the_yardsticks_is_still_caught():
     worse = A.judge(name, "|w| 3 .. 4.5", pts, np.float64, ["numpy"], runner=_worse)[0]
     assert worse.worst_ratio <= 1           # the condition half alone lets it through
     assert worse.rule_ratio > 1.5, worse.rule_ratio
-    good = A.judge(name, "|w| 3 .. 4.5", pts, np.float64, _backends())
+    good = A.judge(name, "|w| 3 .. 4.5", pts, np.float64, available_backends())
     assert all(r.rule_ratio <= 1 for r in good), [(r.backend, r.rule_ratio) for r in good]
 
 
@@ -227,7 +227,7 @@ def test_screw_axis_point_from_the_skew_part():
         arrays = A.round_points([[Q, a, ap]], np.float64, k)
         f = A.R.pick("screw_of_displacement", [float(x) for y in arrays for x in y[0].ravel()])
         ref, _ = A.R.reference(f, [x for y in (Q, a, ap) for x in y])
-        for b in _backends():
+        for b in available_backends():
             got = A.run_kernel("screw_of_displacement", arrays, np.float64, b)[0]
             err = np.linalg.norm(got[4:7] - ref[4:7]) / np.linalg.norm(ref[4:7])
             assert err <= 16 * U, (b, t, err / U)
@@ -243,7 +243,7 @@ def test_screw_axis_point_from_the_axis():
     k = A.R.kernel_of(name)
     regs = A.P.regimes(k, np.float64, n_random=8, seed=2)
     for regime in ("random", "unit off by ulps"):
-        rows = A.judge(name, regime, regs[regime], np.float64, _backends())
+        rows = A.judge(name, regime, regs[regime], np.float64, available_backends())
         assert all(r.rule_ratio <= 1 and not r.spurious for r in rows), [
             (r.backend, regime, r.rule_ratio, r.err_u) for r in rows]
     src = (ROOT / "generated" / "numpy" / f"{name}.py").read_text()
@@ -278,7 +278,7 @@ def test_pitch_of_a_twist_nearly_perpendicular_to_its_axis():
     ad = np.array([1.3, 0.9, 0.0])
     ad[2] = -(ad[0] * w[0] + ad[1] * w[1]) / w[2] * (1 + 1e-8)
     exact = sum(F(x) * F(y) for x, y in zip(ad, w, strict=True)) / sum(F(x) ** 2 for x in w)
-    for b in _backends():
+    for b in available_backends():
         K.use_backend(b)
         pitch = float(K.instant_screw_axis(w, a, ad)[1])
         assert abs(F(pitch) - exact) <= 4 * U * abs(exact), b

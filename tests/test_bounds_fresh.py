@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
 pytest.importorskip("flint")
 import _accuracy_seeds as SEEDS  # noqa: E402
-from test_accuracy import _backends  # noqa: E402  (C and NumPy, or NumPy without a compiler)
+from test_accuracy import available_backends  # noqa: E402  (C and NumPy, or NumPy without a compiler)
 
 from rigidsym.codegen.accuracy import regimes as P  # noqa: E402
 from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
@@ -56,7 +56,7 @@ def _remeasure(name: str, dtype, n_random: int, small) -> list:
     rows = []
     for regime, pts in P.regimes(k, dtype, n_random=n_random, seed=SEED,
                                  small=small).items():
-        rows += A.judge(name, regime, pts, dtype, _backends())
+        rows += A.judge(name, regime, pts, dtype, available_backends())
     return rows
 
 

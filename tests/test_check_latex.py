@@ -23,12 +23,12 @@ RODRIGUES = r"\mathbf{Q} = \mathbf{1} + \sin\phi\,\mathbf{E} + (1 - \cos\phi)\ma
 
 
 @pytest.fixture(autouse=True)
-def _forget_latex_ids():
+def forget_latex_ids():
     yield
     registry.forget_module("rigidsym.latex.statement")
 
 
-def _cli(capsys, *args) -> tuple[int, str, str]:
+def run_cli(capsys, *args) -> tuple[int, str, str]:
     code = main(["check", *args])
     out = capsys.readouterr()
     return code, out.out, out.err
@@ -49,7 +49,7 @@ def test_rotation_identity_prints_verified_from_the_command_line():
 
 
 def test_rodrigues_holds_with_first_principles_models(capsys):
-    code, out, _ = _cli(capsys, "--latex", RODRIGUES, *sum((["--let", x]
+    code, out, _ = run_cli(capsys, "--latex", RODRIGUES, *sum((["--let", x]
                                                             for x in RODRIGUES_LETS), []))
     assert code == 0 and "Verdict: verified" in out
 
@@ -63,7 +63,7 @@ def test_rodrigues_holds_with_first_principles_models(capsys):
 ])
 def test_a_one_edit_slip_of_rodrigues_does_not_hold_with_exact_point_and_repair(
         capsys, slip, repair):
-    code, out, _ = _cli(capsys, "--latex", slip, "--let", RODRIGUES_LETS[0],
+    code, out, _ = run_cli(capsys, "--latex", slip, "--let", RODRIGUES_LETS[0],
                         "--let", RODRIGUES_LETS[1])
     assert code == 1
     assert "Verdict: does-not-hold" in out and "Counterexample" in out
@@ -132,20 +132,20 @@ def test_let_as_list_and_as_dict_agree():
 
 
 def test_a_definition_and_an_undecided_exit_codes(capsys):
-    code, out, _ = _cli(capsys, "--latex", r"\mathbf{V} \equiv \mathbf{a}\mathbf{a}^T")
+    code, out, _ = run_cli(capsys, "--latex", r"\mathbf{V} \equiv \mathbf{a}\mathbf{a}^T")
     assert code == 0 and "Verdict: definition" in out
     # x also occurs bare, so it is no angle (a half angle alone would be: periodic.py)
-    code, out, _ = _cli(capsys, "--latex", r"x\sin x = 2x\sin(x/2)\cos(x/2)")
+    code, out, _ = run_cli(capsys, "--latex", r"x\sin x = 2x\sin(x/2)\cos(x/2)")
     assert code == 3 and "undecided" in out  # x is no angle: its trig is never guessed
 
 
 # ------------------------------------------------------------------ --book and --module
 def test_book_section_names_glyphs_and_an_ambiguous_glyph_asks_for_let(capsys):
-    code, out, _ = _cli(capsys, "--latex", r"\mathbf{E}^T = -\mathbf{E}", "--book", "3.2")
+    code, out, _ = run_cli(capsys, "--latex", r"\mathbf{E}^T = -\mathbf{E}", "--book", "3.2")
     assert code == 0 and "cross-product matrix of e" in out   # E = CPM(e), the table's row
-    code, out, _ = _cli(capsys, "--latex", r"\mathbf{W}^T = -\mathbf{W}", "--book", "3.5")
+    code, out, _ = run_cli(capsys, "--latex", r"\mathbf{W}^T = -\mathbf{W}", "--book", "3.5")
     assert code == 1 and "angular-acceleration matrix" in " ".join(out.split())  # not skew
-    code, _, err = _cli(capsys, "--latex", r"\mathbf{W}^T = -\mathbf{W}", "--book", "3")
+    code, _, err = run_cli(capsys, "--latex", r"\mathbf{W}^T = -\mathbf{W}", "--book", "3")
     assert code == 2 and "ambiguous" in err and "--let" in err and "3.5" in err
 
 
@@ -187,10 +187,10 @@ def module(tmp_path):
 
 def test_module_lends_its_symbols_and_models(capsys, module):
     latex = r"\mathbf{R}\boldsymbol{\omega} = \boldsymbol{\omega}"
-    code, out, _ = _cli(capsys, "--latex", latex, "--module", module)
+    code, out, _ = run_cli(capsys, "--latex", latex, "--module", module)
     assert code == 0 and "Verdict: verified" in out
     assert "lent by --module: " in " ".join(out.split())  # wrapped to the width
-    code, out, _ = _cli(capsys, "--latex", latex.replace("= ", "= 2"), "--module", module)
+    code, out, _ = run_cli(capsys, "--latex", latex.replace("= ", "= 2"), "--module", module)
     assert code == 1
 
 
@@ -217,7 +217,7 @@ def test_equation_with_latex_and_no_printed_form_reads_it(module):
     ([r"\mathbf{a} = \mathbf{a}", "--book", "4.1"], ["--book"]),
 ])
 def test_bad_input_is_named_with_exit_2_and_no_traceback(capsys, args, words):
-    code, out, err = _cli(capsys, "--latex", *args)
+    code, out, err = run_cli(capsys, "--latex", *args)
     assert code == 2 and not out
     for w in words:
         assert w in err, (w, err)
@@ -239,7 +239,7 @@ def test_bad_input_from_python_raises_value_errors():
 
 # ------------------------------------------------------------------ --json
 def test_json_is_the_schema_2_record_with_the_reading(capsys):
-    code, out, _ = _cli(capsys, "--latex", r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}",
+    code, out, _ = run_cli(capsys, "--latex", r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}",
                         "--let", Q_ROT, "--json")
     rec = json.loads(out)
     assert code == 0 and rec["id"].startswith("latex:") and rec["verdict"] == "verified"
@@ -263,7 +263,7 @@ def test_a_readers_matrix_of_scalars_prints_as_one_matrix(capsys):
     """Craig's rotation written entry by entry: read (and printed) as one 2 x 2 matrix, not
     four 1 x 1 blocks (``[[c_θ], [-s_θ]; ...]`` before), with the Greek subscripts in their
     letters."""
-    code, out, _ = _cli(capsys, "--latex", r"\mathbf{A} = \begin{bmatrix} c_\theta & -s_\theta"
+    code, out, _ = run_cli(capsys, "--latex", r"\mathbf{A} = \begin{bmatrix} c_\theta & -s_\theta"
                         r" \\ s_\theta & c_\theta \end{bmatrix}", "--let",
                         r"c_\theta = \cos\theta", "--let", r"s_\theta = \sin\theta",
                         "--let", r"\theta: angle", "--let", r"\mathbf{A}: 2×2 matrix",

@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import sympy as sp
-from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
+from test_check_latex import forget_latex_ids, run_cli  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
 from rigidsym.core.errors import BadInput
@@ -200,11 +200,11 @@ def test_shusters_double_bracket_is_decided_where_both_signs_agree(latex, lets, 
 
 def test_shusters_bracket_written_as_a_function_decides(capsys):
     # the two signs disagree on [[u]]b = b x u: refused naming the choice and what settles it
-    code, out, err = _cli(capsys, "--latex", r"[[\mathbf{u}]]\mathbf{b} = \mathbf{b}\times"
+    code, out, err = run_cli(capsys, "--latex", r"[[\mathbf{u}]]\mathbf{b} = \mathbf{b}\times"
                           r"\mathbf{u}", "--no-repairs")
     assert code == 2 and "[[u]] can be read as the cross-product matrix" in err + out
     assert "--let function" in err + out
-    code, out, err = _cli(capsys, "--latex", r"N(\mathbf{u})\mathbf{b} = \mathbf{b}\times"
+    code, out, err = run_cli(capsys, "--latex", r"N(\mathbf{u})\mathbf{b} = \mathbf{b}\times"
                           r"\mathbf{u}", "--let", r"N(\mathbf{u}) = -[\mathbf{u}]_\times",
                           "--no-repairs")
     assert code == 0, out + err
@@ -245,12 +245,12 @@ def test_readings_that_agree_give_the_verdict_and_say_so():
 def test_readings_that_disagree_are_refused_naming_the_choice(capsys):
     args = ["--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let", r"A = \mathbf{B}^T",
             "--let", r"\mathbf{B}: matrix"]
-    code, out, err = _cli(capsys, *args)
+    code, out, err = run_cli(capsys, *args)
     assert code == 2, out + err
     assert "A(...) can be read as a product or as A applied" in err + out
     assert "A(...) a product: does-not-hold; A(...) applied: verified" in err + out
     # the --let the message names settles it
-    code, out, err = _cli(capsys, "--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let",
+    code, out, err = run_cli(capsys, "--latex", r"A(\mathbf{B}) = \mathbf{B}^T", "--let",
                           r"A(\mathbf{C}) = \mathbf{C}^T", "--no-repairs")
     assert code == 0, out + err
 
@@ -276,7 +276,7 @@ def test_a_bracket_around_a_product_keeps_the_reading_that_type_checks():
 def test_a_bracket_whose_readings_disagree_is_refused_naming_it_and_what_settles_it(capsys):
     # c^T [R a] c: the hat gives c . (R a x c) = 0, the group (c^T R a) c, no zero
     latex = r"\mathbf{c}^T [R\mathbf{a}] \mathbf{c} = 0"
-    code, out, err = _cli(capsys, "--latex", latex, *(f"--let={x}" for x in RAB),
+    code, out, err = run_cli(capsys, "--latex", latex, *(f"--let={x}" for x in RAB),
                           "--no-repairs")
     assert code == 2, out + err
     assert "[R a] can be read as the hat of the vector or as a bracket that groups it" in err
@@ -319,7 +319,7 @@ def test_a_subscript_whose_readings_disagree_is_refused_naming_what_settles_it(c
     r = rigidsym.check_latex(r"a_1 = \mathbf{a}^T\mathbf{i}", let=I1, repairs=False)
     assert r.verdict == "verified", r.detail
     # a 4-vector counted from 1 or 0, the LaTeX writing neither q_0 nor q_4: refused
-    code, out, err = _cli(capsys, "--latex", r"q_1 = \mathbf{q}^T\mathbf{i}",
+    code, out, err = run_cli(capsys, "--latex", r"q_1 = \mathbf{q}^T\mathbf{i}",
                           r"--let=\mathbf{q}: 4-vector",
                           r"--let=\mathbf{i} = \begin{bmatrix}1\\0\\0\\0\end{bmatrix}",
                           "--no-repairs")
@@ -476,7 +476,7 @@ def test_a_bad_time_limit_is_refused_naming_it(bad):
 
 
 def test_an_ad_hoc_check_expects_nothing_and_angles_print_as_numbers(capsys):
-    code, out, err = _cli(capsys, "--latex", r"\mathbf{a}^T\mathbf{a} = \cos\psi", "--let",
+    code, out, err = run_cli(capsys, "--latex", r"\mathbf{a}^T\mathbf{a} = \cos\psi", "--let",
                           r"\mathbf{a}: unit vector; \psi: angle", "--no-repairs")
     assert code == 1 and "as expected" not in out + err
     import sympy as sp

@@ -13,7 +13,7 @@ import time
 
 import numpy as np
 import pytest
-from test_check_latex import _forget_latex_ids  # noqa: F401  (autouse fixture)
+from test_check_latex import forget_latex_ids  # noqa: F401  (autouse fixture)
 
 import rigidsym
 from rigidsym.core.errors import BadInput

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
-from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
+from test_check_latex import forget_latex_ids, run_cli  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
 from rigidsym.latex import LatexError
@@ -95,10 +95,10 @@ def test_a_norm_whose_square_agrees_but_whose_sign_may_not_is_undecided():
 
 def test_an_undecided_verdict_prints_its_reason(capsys):
     # on main the text said "Verdict: undecided" and nothing else about why
-    code, out, _ = _cli(capsys, "--latex", NESTED, "--let", "x: vector")
+    code, out, _ = run_cli(capsys, "--latex", NESTED, "--let", "x: vector")
     assert code == 3
     assert "Undecided: printed: irrational root at the sample point" in out
-    code, out, _ = _cli(capsys, "--latex", r"x\sin x = 2x\sin(x/2)\cos(x/2)")
+    code, out, _ = run_cli(capsys, "--latex", r"x\sin x = 2x\sin(x/2)\cos(x/2)")
     assert code == 3 and "Undecided: printed: trig" in out
 
 
@@ -109,9 +109,9 @@ def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
     lets = ["--let", r"w: vector; \theta = \sqrt{w^T w}",
             "--let", r"J = I + \frac{1 - \cos\theta}{\theta^2}[w] + "
                      r"\frac{\theta - \sin\theta}{\theta^3}[w]^2"]
-    code, out, _ = _cli(capsys, "--latex", "J w = w", *lets)
+    code, out, _ = run_cli(capsys, "--latex", "J w = w", *lets)
     assert code == 0, out
-    code, out, _ = _cli(capsys, "--latex", "J w = 2 w", *lets)
+    code, out, _ = run_cli(capsys, "--latex", "J w = 2 w", *lets)
     said = " ".join(out.split())
     assert code == 3 and "Undecided: printed: the norm of a free vector under sin/cos: written " \
         "so (|(w₁, w₂, w₃)| = θ > 0, (w₁, w₂, w₃) = θ u, u a unit vector), the sides differ" \
@@ -170,7 +170,7 @@ def test_other_parentheses_stay_products(latex, let):
 def test_an_application_the_reading_cannot_settle_is_bad_input(capsys, latex, words):
     let = [OMEGA] + ([r"\phi: angle"] if r"\phi" in latex else []) + \
         ([] if "books" in words else ["R: rotation"] if "no model" in words else [R_MODEL])
-    code, _, err = _cli(capsys, "--latex", latex, *sum((["--let", x] for x in let), []))
+    code, _, err = run_cli(capsys, "--latex", latex, *sum((["--let", x] for x in let), []))
     assert code == 2 and words in err, err
     assert "--let 'R" in err
 
@@ -209,7 +209,7 @@ def test_a_letter_subscript_of_i_stays_a_name():
     (r"x = R", "R: rotation", "x has the shape of the convention (x a scalar)"),
 ])
 def test_a_guess_the_verdict_would_rest_on_is_bad_input(capsys, latex, let, words):
-    code, _, err = _cli(capsys, "--latex", latex, "--let", let)
+    code, _, err = run_cli(capsys, "--latex", latex, "--let", let)
     assert code == 2 and words in err, err
     assert "--let '" in err
 
@@ -221,7 +221,7 @@ def test_a_guess_the_verdict_would_rest_on_is_bad_input(capsys, latex, let, word
     (r"\hat\omega^3 = -\hat\omega", "--notation lynch-park or --notation murray-li-sastry"),
 ])
 def test_a_symbol_whose_meaning_differs_between_books_is_named(capsys, latex, words):
-    code, _, err = _cli(capsys, "--latex", latex)
+    code, _, err = run_cli(capsys, "--latex", latex)
     assert code == 2 and words in err, err
 
 
@@ -243,7 +243,7 @@ def test_a_zero_whose_size_is_written_or_fixed_by_its_operands_is_never_resized(
 
 def test_a_written_zero_size_that_cannot_be_added_is_bad_input(capsys):
     # on main: verified (\mathbf{0}_{3\times 3} read as the unsized zero vector)
-    code, _, err = _cli(capsys, "--latex", r"\omega = \mathbf{0}_{3\times 3} + \omega",
+    code, _, err = run_cli(capsys, "--latex", r"\omega = \mathbf{0}_{3\times 3} + \omega",
                         "--let", r"\omega: vector")
     assert code == 2 and "a sum of a 3x3 matrix and a 3x1 matrix" in err, err
 
@@ -257,7 +257,7 @@ def test_a_written_zero_size_that_cannot_be_added_is_bad_input(capsys):
     (r"\det R = 1", "det of a scalar: expected a square matrix"),
 ])
 def test_a_shape_the_convention_gave_is_never_decided_on(latex, said, capsys):
-    code, _, err = _cli(capsys, "--latex", latex)
+    code, _, err = run_cli(capsys, "--latex", latex)
     assert code == 2 and said in err, err
 
 
@@ -383,13 +383,13 @@ def test_the_trig_abbreviations_of_a_notation():
 
 
 def test_an_unknown_notation_is_bad_input(capsys):
-    code, _, err = _cli(capsys, "--latex", "x = x", "--notation", "lynch")
+    code, _, err = run_cli(capsys, "--latex", "x = x", "--notation", "lynch")
     assert code == 2 and "lynch-park" in err
 
 
 # ------------------------------------------------------- item 5: printed back as written
 def test_greek_variants_print_as_glyphs(capsys):
-    code, out, _ = _cli(capsys, "--latex", r"\varphi + \vartheta = \vartheta + \varphi")
+    code, out, _ = run_cli(capsys, "--latex", r"\varphi + \vartheta = \vartheta + \varphi")
     assert code == 0 and "read as: ϕ + ϑ = ϕ + ϑ" in out  # on main: varphi + vartheta
 
 
@@ -406,7 +406,7 @@ def test_a_readers_bracket_stays_a_bracket_in_every_view():
     (r"(a \times b) \cdot a = 0", "((a × b)·a) = 0"),       # on main: (a × b·a)
 ])
 def test_a_scalar_product_prints_as_written(capsys, latex, shown):
-    code, out, _ = _cli(capsys, "--latex", latex, "--let", AB)
+    code, out, _ = run_cli(capsys, "--latex", latex, "--let", AB)
     assert code == 0 and f"read as: {shown}" in out
 
 
@@ -436,7 +436,7 @@ def test_a_vector_without_a_model_times_a_parenthesised_scalar_is_a_product(late
 
 
 def test_a_matrix_without_a_model_applied_is_still_refused(capsys):
-    code, out, err = _cli(capsys, "--latex", r"R(\theta) = e^{[\hat\omega]\theta}",
+    code, out, err = run_cli(capsys, "--latex", r"R(\theta) = e^{[\hat\omega]\theta}",
                           "--let", r"\hat\omega: unit vector; \theta: angle; R: rotation")
     assert code == 2 and "R has no model" in " ".join((out + err).split())
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
+from test_check_latex import forget_latex_ids, run_cli  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
 from rigidsym.core.errors import BadInput
@@ -87,7 +87,7 @@ def test_an_internal_error_is_one_line_naming_the_construct(monkeypatch, capsys)
         rigidsym.check_latex(r"\frac{a}{b} = a", let=["a: scalar; b: scalar"])
     assert "AttributeError" not in str(exc.value) and "is_commutative" not in str(exc.value)
     assert r"\frac" in str(exc.value) and "internal error" in str(exc.value)
-    code, _, err = _cli(capsys, "--latex", r"\frac{a}{b} = a", "--let", "a: scalar; b: scalar")
+    code, _, err = run_cli(capsys, "--latex", r"\frac{a}{b} = a", "--let", "a: scalar; b: scalar")
     assert code == 2 and "is_commutative" not in err and "Traceback" not in err, err
 
 
@@ -104,7 +104,7 @@ def test_sides_of_different_shapes_are_bad_input_naming_both(latex, lets, shapes
         rigidsym.check_latex(latex, let=lets)
     assert exc.value.construct == "shapes"
     assert all(s in str(exc.value) for s in shapes), str(exc.value)
-    code, _, err = _cli(capsys, "--latex", latex, *[a for x in lets for a in ("--let", x)])
+    code, _, err = run_cli(capsys, "--latex", latex, *[a for x in lets for a in ("--let", x)])
     assert code == 2 and "differ in shape" in err
 
 

@@ -10,7 +10,7 @@ import re
 import mpmath as mp
 import pytest
 import sympy as sp
-from test_check_latex import _forget_latex_ids, module  # noqa: F401  (fixtures)
+from test_check_latex import forget_latex_ids, module  # noqa: F401  (fixtures)
 
 import rigidsym
 from rigidsym.core.errors import BadInput
@@ -204,7 +204,7 @@ def test_the_corpus_decides_as_before_and_the_second_semantics_covers_it():
 
 
 def test_a_construct_it_lacks_is_refused_naming_it_never_decided(monkeypatch, capsys):
-    from test_check_latex import _cli
+    from test_check_latex import run_cli
 
     from rigidsym.numeval.evaluator import Evaluator
 
@@ -213,17 +213,17 @@ def test_a_construct_it_lacks_is_refused_naming_it_never_decided(monkeypatch, ca
         r"\mathbf{a}: vector; \mathbf{b}: vector"]
     with pytest.raises(BadInput, match=r"does not evaluate .*\(cpm\)"):
         rigidsym.check_latex(latex, let=let, repairs=False)
-    code, out, err = _cli(capsys, "--latex", latex, "--let", let[0])
+    code, out, err = run_cli(capsys, "--latex", latex, "--let", let[0])
     assert code == 2 and "cpm" in err and "Verdict" not in out, (out, err)
 
 
 def test_a_disagreement_at_the_command_line_is_exit_2_and_no_verdict(monkeypatch, capsys):
-    from test_check_latex import _cli
+    from test_check_latex import run_cli
 
     from rigidsym.latex.reader_glyphs import GlyphReader
 
     monkeypatch.setattr(GlyphReader, "_rebind", lambda self, x, over, call: [])
-    code, out, err = _cli(capsys, "--latex", r"F(2\mathbf{u}) = F(\mathbf{u})",
+    code, out, err = run_cli(capsys, "--latex", r"F(2\mathbf{u}) = F(\mathbf{u})",
                           *[a for x in U for a in ("--let", x)])
     assert code == 2 and "two semantics disagree" in err and "Verdict" not in out, (out, err)
     errors = [x for x in err.splitlines() if x.startswith("rigidsym: error")]

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_check_latex import _forget_latex_ids  # noqa: F401  (autouse fixture)
+from test_check_latex import forget_latex_ids  # noqa: F401  (autouse fixture)
 
 import rigidsym
 

@@ -208,7 +208,7 @@ def _case(call, specs, arg: int, corruption: str, rng):
     return inputs
 
 
-def _bad_input_table(name: str, n_cases: int, seed: int, call=None) -> dict:
+def bad_input_table(name: str, n_cases: int, seed: int, call=None) -> dict:
     """The corruptions on kernel ``name`` (``call``: another back-end's function of it)."""
     call, specs = call or KERNELS[name][0], KERNELS[name][1]
     names = [s["name"] for s in specs]
@@ -252,7 +252,7 @@ def _bad_input_table(name: str, n_cases: int, seed: int, call=None) -> dict:
 @pytest.mark.parametrize("name", sorted(KERNELS))
 def test_bad_input_table(name):
     """>= 200 generated corruptions per kernel: 0 escapes, 0 silent non-finite outputs."""
-    res = _bad_input_table(name, 200, seed=12)
+    res = bad_input_table(name, 200, seed=12)
     assert res["escapes"] == [], res["escapes"][:10]
     s = res["stats"]
     # the table exercises both error classes (and, but for a lone constrained argument such
@@ -263,7 +263,7 @@ def test_bad_input_table(name):
 @pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(KERNELS))
 def test_bad_input_table_large(name):
-    res = _bad_input_table(name, 3000, seed=1234)
+    res = bad_input_table(name, 3000, seed=1234)
     assert res["escapes"] == [], res["escapes"][:10]
 
 

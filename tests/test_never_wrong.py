@@ -75,7 +75,7 @@ def _backends():
     K.use_backend("numpy")
 
 
-def _rel_err(got, want):
+def relative_error(got, want):
     got, want = np.asarray(got, dtype=np.float64), np.asarray(want, dtype=np.float64)
     scale = np.abs(want).max()
     return float(np.abs(got - want).max() / scale) if scale else float(np.abs(got).max())
@@ -132,7 +132,7 @@ def test_finite_in_finite_out(name, dtype):
                                           (got if isinstance(got, tuple) else (got,))])
                     want = scale_out(y, s)
                     assert np.isfinite(got).all(), (b, k, check, got)
-                    assert _rel_err(got, want) <= 16 * u, (b, k, check, got, want)
+                    assert relative_error(got, want) <= 16 * u, (b, k, check, got, want)
     K.use_backend("numpy")
 
 

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from test_kernels_props import KERNELS, _bad_input_table, valid
-from test_never_wrong import EXPONENTS, SCALING, _rel_err
+from test_kernels_props import KERNELS, bad_input_table, valid
+from test_never_wrong import EXPONENTS, SCALING, relative_error
 
 from rigidsym import kernels as K
 
@@ -188,7 +188,7 @@ def test_finite_in_finite_out_arrays(b, name, dtype):
         for r, k in enumerate(ks):
             want = scale_out(y, np.ldexp(dtype(1.0), k))
             assert np.isfinite(got[r]).all(), (b, k, check, got[r])
-            assert _rel_err(got[r], want) <= 16 * u, (b, k, check, got[r], want)
+            assert relative_error(got[r], want) <= 16 * u, (b, k, check, got[r], want)
 
 
 @pytest.mark.parametrize("b", BACKENDS)
@@ -285,7 +285,7 @@ def test_bad_input_table_arrays(b, name):
     (or a SingularConfigurationError naming one). Old main: a batch mismatch said "batch
     shapes do not broadcast: e (3, 3), phi (2,)", naming no argument first."""
     mod, to, back = backend(b)
-    res = _bad_input_table(name, 200, seed=12, call=array_call(mod, name))
+    res = bad_input_table(name, 200, seed=12, call=array_call(mod, name))
     assert res["escapes"] == [], res["escapes"][:10]
 
 

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_accuracy import _backends
+from test_accuracy import available_backends
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "benchmarks"))
 from rigidsym.codegen.accuracy.harness import judge as A  # noqa: E402
@@ -38,7 +38,7 @@ def plain(name: str) -> bool:
 
 
 def test_c_and_numpy_give_the_same_bits():
-    if "c" not in _backends():
+    if "c" not in available_backends():
         pytest.skip("no C backend")
     names = [n for n in A.kernel_names() if plain(n)]
     assert len(names) >= 25, len(names)      # 27 of 158 on this main

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_accuracy import _backends
+from test_accuracy import available_backends
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
@@ -43,7 +43,7 @@ def _differ(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def test_float32_numpy_fallback_differs_from_c_as_the_docs_say():
-    if "c" not in _backends():
+    if "c" not in available_backends():
         pytest.skip("no C backend")
     section = DOC[DOC.index("**One program on every back-end.**"):]
     section = section[:section.index("float64: 0 %")]
@@ -64,7 +64,7 @@ def test_float32_numpy_fallback_differs_from_c_as_the_docs_say():
 def test_torch_differs_from_c_only_through_its_sqrt(monkeypatch):
     torch = pytest.importorskip("torch", reason="PyTorch is not installed (the [torch] extra)")
     from rigidsym.kernels import torch as rt
-    if "c" not in _backends():
+    if "c" not in available_backends():
         pytest.skip("no C backend")
     name = "euler_rodrigues_from_rotation"
     arrays = _rows(name, np.float64, 20000)

@@ -9,7 +9,7 @@ bare occurrence) the symbol stays free and the reason names the fix."""
 from __future__ import annotations
 
 import pytest
-from test_check_latex import _cli, _forget_latex_ids  # noqa: F401  (autouse fixture, CLI helper)
+from test_check_latex import forget_latex_ids, run_cli  # noqa: F401  (autouse fixture, CLI helper)
 
 import rigidsym
 
@@ -73,7 +73,7 @@ def test_a_fractional_multiple_is_decided_over_a_whole_period(latex, verdict):
     r"\theta\sin\theta = \theta\cos\theta",  # a bare occurrence
 ])
 def test_where_the_range_would_be_an_assumption_the_symbol_stays_free(latex, capsys):
-    code, out, _ = _cli(capsys, "--latex", latex)
+    code, out, _ = run_cli(capsys, "--latex", latex)
     out = " ".join(out.split())
     assert code == 3 and "an angle (no --let declares it)" not in out, out
     assert "trig of non-angle argument θ (an angle is a symbol declared so: --let 'NAME: " \
@@ -81,7 +81,7 @@ def test_where_the_range_would_be_an_assumption_the_symbol_stays_free(latex, cap
 
 
 def test_the_reading_is_printed(capsys):
-    code, out, _ = _cli(capsys, "--latex", r"\sin 2\theta = 2\sin\theta\cos\theta")
+    code, out, _ = run_cli(capsys, "--latex", r"\sin 2\theta = 2\sin\theta\cos\theta")
     out = " ".join(out.split())
     assert code == 0
     assert "read as: sin(2 θ) = 2 cos θ sin θ" in out, out
