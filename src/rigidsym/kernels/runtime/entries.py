@@ -68,10 +68,10 @@ def _bind_c(space: Any, mod: types.ModuleType) -> types.SimpleNamespace:
     Python frame in any call), or through the pool's Python wrappers (a module built before
     ``_pool`` existed); returns the namespace bound."""
     cmod = space.c_lib().module
-    if hasattr(cmod, "_pool"):
-        on = _outpool.enabled()
+    on, hook = _outpool.enabled(), hasattr(cmod, "_pool")
+    if hook:
         cmod._pool(_outpool.take if on else None, _outpool.LIMITS["min_bytes"])
-    if _outpool.enabled() and not hasattr(cmod, "_pool"):
+    if on and not hook:
         if hasattr(cmod, "_install"):
             cmod._install(None, None)          # the functions run their body: _F below
         mod._F = ns = pooled(space)
