@@ -24,7 +24,7 @@
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.731 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x1, x6, x11, x15, x19
+ *   trig_0, trig_1, x1, x6, x11, x19
  */
 #ifndef RIGIDSYM_L_MATRIX_DOT_H
 #define RIGIDSYM_L_MATRIX_DOT_H
@@ -197,7 +197,7 @@ static inline int rigidsym_L_matrix_dot_sample_trig_f32(
         const float x12 = e_2*x7;
         const float x13 = x11 + x12;
         const float x14 = e_0*x7;
-        const double x15 = ((double)omega_0)*((double)x14) + ((double)omega_1)*((double)x8) + ((double)omega_2)*((double)x12);
+        const float x15 = omega_0*x14 + omega_1*x8 + omega_2*x12;
         const float x16 = e_1*e_2*x3;
         const float x17 = x14 + x16;
         const float x18 = (e_1*e_1);

@@ -21,10 +21,10 @@
  * Singular set: 1 + cos(phi) = 0 (phi = pi)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.991 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.992 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x5, x8, x9, x10, x11, x12, x13, x15, x16, x18, x21, x25, x26, x29, L_tilde_dot[2], L_tilde_dot[4]
+ *   trig_0, trig_1, x5, x8, x9, x10, x11, x12, x13, x15, x16, x18, x19, x20, x21, x25, x26, x29, L_tilde_dot[2], L_tilde_dot[4]
  */
 #ifndef RIGIDSYM_L_TILDE_DOT_H
 #define RIGIDSYM_L_TILDE_DOT_H
@@ -209,14 +209,14 @@ static inline int rigidsym_L_tilde_dot_sample_trig_f32(
         const double x16 = ((double)e_2)*((double)x2);
         const float x17 = e_0*x15 + e_1*x16 + x0*x13;
         const double x18 = (x9*x9)/(x8*x8);
-        const float x19 = x1 + x10*x6 + x18*(x1*x14 - x17);
-        const float x20 = e_0*x0;
-        const double x21 = -x15 + ((double)x20);
+        const double x19 = ((double)x1) + x10*((double)x6) + x18*(((double)x1)*((double)x14) - ((double)x17));
+        const double x20 = ((double)e_0)*((double)x0);
+        const double x21 = -x15 + x20;
         const float x22 = e_1*x0;
         const float x23 = e_0*x5 + e_2*x22 + x12*x2;
         const float x24 = -x4;
         const double x25 = -x16 + ((double)x22);
-        const double x26 = ((double)e_1)*((double)x3) + ((double)e_2)*((double)x20) + x11*((double)x4);
+        const double x26 = ((double)e_1)*((double)x3) + ((double)e_2)*x20 + x11*((double)x4);
         const float x27 = x10*x25 + x18*(x14*x24 - x26) + x24;
         const float x28 = -x2;
         const double x29 = -x10*x21 + x18*(((double)x14)*((double)x28) - ((double)x23)) + ((double)x28);

@@ -23,7 +23,7 @@
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.997 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x3, x5, x8, x9, x10, x11, x12, x13, x15, x18, x19, x20, x21, x23, x24, x25, x26, x27, x36, x37, x40, x42, x47, x50, x51, x57, x59, x60, x62, x65, x66, x72, x73, x74, x83, x84, x85, x91, x92, x93, x98, x101
+ *   trig_0, trig_1, x3, x5, x8, x9, x10, x11, x12, x13, x15, x19, x20, x21, x23, x24, x25, x26, x27, x34, x36, x37, x40, x45, x51, x54, x56, x57, x60, x71, x73, x74, x83, x84, x85, x91, x92, x93, x96, x98, x101
  */
 #ifndef RIGIDSYM_L_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_L_TILDE_DOT_WITH_JACOBIANS_H
@@ -544,7 +544,7 @@ static inline int rigidsym_L_tilde_dot_with_jacobians_sample_trig_f32(
         const double x15 = ((double)e_2)*((double)x4);
         const float x16 = e_2*x2;
         const float x17 = e_0*x15 + e_1*x16 + x0*x13;
-        const double x18 = ((double)x1)*((double)x14) - ((double)x17);
+        const float x18 = x1*x14 - x17;
         const double x19 = 1.0/(x8*x8);
         const double x20 = (x9*x9);
         const double x21 = x19*x20;
@@ -560,7 +560,7 @@ static inline int rigidsym_L_tilde_dot_with_jacobians_sample_trig_f32(
         const float x31 = x14*x28 - x30;
         const float x32 = x10*x29 + x21*x31 + x28;
         const float x33 = -x6;
-        const float x34 = x0*x14 + x17;
+        const double x34 = ((double)x0)*((double)x14) + ((double)x17);
         const float x35 = -x2;
         const double x36 = -x24;
         const double x37 = ((double)x14)*((double)x35) - x26;
@@ -568,37 +568,37 @@ static inline int rigidsym_L_tilde_dot_with_jacobians_sample_trig_f32(
         const float x39 = -x29;
         const double x40 = ((double)x14)*((double)x4) + ((double)x30);
         const float x41 = x10*x2;
-        const double x42 = ((double)e_0)*((double)omega_2);
+        const float x42 = e_0*omega_2;
         const float x43 = x15 + x42;
         const float x44 = -x21*x43 + x41;
-        const float x45 = x10*x4;
+        const double x45 = x10*((double)x4);
         const float x46 = e_1*omega_2;
-        const double x47 = ((double)x16) + ((double)x46);
+        const float x47 = x16 + x46;
         const float x48 = -x19*x20*x47 - x45;
         const float x49 = e_0*x4;
-        const double x50 = ((double)e_1)*((double)x2);
-        const double x51 = 2.0*((double)e_2)*((double)omega_2) + ((double)x49) + x50;
+        const float x50 = e_1*x2;
+        const double x51 = 2.0*((double)e_2)*((double)omega_2) + ((double)x49) + ((double)x50);
         const float x52 = -x21*x51;
         const float x53 = x0*x10;
-        const float x54 = e_0*omega_1;
+        const double x54 = ((double)e_0)*((double)omega_1);
         const float x55 = x5 + x54;
-        const float x56 = e_2*x0;
-        const double x57 = 2.0*((double)e_1)*((double)omega_1) + ((double)x49) + ((double)x56);
+        const double x56 = ((double)e_2)*((double)x0);
+        const double x57 = 2.0*((double)e_1)*((double)omega_1) + ((double)x49) + x56;
         const float x58 = e_2*omega_1;
-        const double x59 = x25 + ((double)x58);
-        const double x60 = 2.0*((double)e_0)*((double)omega_0) + x50 + ((double)x56);
+        const float x59 = x25 + x58;
+        const double x60 = 2.0*((double)e_0)*((double)omega_0) + ((double)x50) + x56;
         const float x61 = -x21*x60;
-        const double x62 = ((double)e_1)*((double)omega_0);
+        const float x62 = e_1*omega_0;
         const float x63 = x3 + x62;
         const float x64 = -x21*x63 + x53;
-        const double x65 = ((double)e_2)*((double)omega_0);
-        const double x66 = x23 + x65;
+        const float x65 = e_2*omega_0;
+        const float x66 = x23 + x65;
         const float x67 = -x19*x20*x66 - x41;
         const float x68 = -x19*x20*x55 - x53;
         const float x69 = -x21*x57;
         const float x70 = -x21*x59 + x45;
-        const float x71 = (0.25f)*x54;
-        const double x72 = (0.25)*x62;
+        const double x71 = (0.25)*x54;
+        const float x72 = (0.25f)*x62;
         const double x73 = (0.5)*x21;
         const double x74 = (x9*x9*x9)/(x8*x8*x8);
         const float x75 = x10*x18 + x18*x74 + x6*x73 + x71 - x72;
@@ -622,7 +622,7 @@ static inline int rigidsym_L_tilde_dot_with_jacobians_sample_trig_f32(
         const double x93 = x13 + x91 + x92;
         const float x94 = -x21*x93 - 0.5f;
         const float x95 = e_2*x82;
-        const float x96 = e_0*e_1*x73;
+        const double x96 = ((double)e_0)*((double)e_1)*x73;
         const float x97 = -x95 + x96;
         const double x98 = (0.5)*x13;
         const float x99 = x12 + x92 + x98;

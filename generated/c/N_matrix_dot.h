@@ -13,10 +13,10 @@
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.697 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.726 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, x6, x7, x15, x16, x17
+ *   trig_0, x6, x7, x15, x36
  */
 #ifndef RIGIDSYM_N_MATRIX_DOT_H
 #define RIGIDSYM_N_MATRIX_DOT_H
@@ -232,8 +232,8 @@ static inline int rigidsym_N_matrix_dot_sample_trig_f32(
         const float x13 = x11 - x12;
         const float x14 = (e_0*e_0);
         const double x15 = 6.0 - 4.0*x7;
-        const double x16 = ((double)x0) + ((double)x1) + ((double)x3);
-        const double x17 = (0.125)/x7;
+        const float x16 = x0 + x1 + x3;
+        const float x17 = (0.125f)/x7;
         const float x18 = e_0*omega_1;
         const float x19 = 2.0f*x18;
         const float x20 = e_1*omega_0;
@@ -252,7 +252,7 @@ static inline int rigidsym_N_matrix_dot_sample_trig_f32(
         const float x33 = 2.0f*x11;
         const float x34 = 2.0f*x12;
         const float x35 = e_0*x16 - omega_0;
-        const float x36 = -e_1*e_2*x15*x16 - 2.0f*x10*x6*(e_1*x30 + e_2*x25);
+        const double x36 = -((double)e_1)*((double)e_2)*x15*((double)x16) - 2.0*((double)x10)*x6*(((double)e_1)*((double)x30) + ((double)e_2)*((double)x25));
         const float x37 = (e_2*e_2);
         const float x38 = (0.5f)*e_2;
         const float x39 = (0.5f)*e_1;

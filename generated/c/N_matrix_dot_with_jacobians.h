@@ -13,10 +13,10 @@
  * Singular set: phi = 0 (mod 2 pi): the axis is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.815 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.89 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x0, x7, x8, x11, x17, x18, x19, x21, x22, x33, x40, x149, x151
+ *   trig_0, trig_1, x0, x2, x4, x7, x8, x9, x10, x11, x17, x18, x19, x21, x27, x40, x149, x151
  */
 #ifndef RIGIDSYM_N_MATRIX_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_MATRIX_DOT_WITH_JACOBIANS_H
@@ -688,14 +688,14 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig_f32(
     {
         const double x0 = ((double)e_0)*((double)omega_0);
         const float x1 = 4.0f*x0;
-        const float x2 = e_1*omega_1;
+        const double x2 = ((double)e_1)*((double)omega_1);
         const float x3 = 2.0f*x2;
-        const float x4 = e_2*omega_2;
+        const double x4 = ((double)e_2)*((double)omega_2);
         const float x5 = 2.0f*x4;
         const double x7 = trig_0;
         const double x8 = (x7*x7);
-        const float x9 = 1.0f - 2.0f*x8;
-        const float x10 = 2.0f*x0;
+        const double x9 = 1.0 - 2.0*x8;
+        const double x10 = 2.0*x0;
         const double x11 = trig_1;
         const float x12 = e_1*omega_2;
         const float x13 = e_2*omega_1;
@@ -703,22 +703,22 @@ static inline int rigidsym_N_matrix_dot_with_jacobians_sample_trig_f32(
         const float x15 = x12 + x14;
         const float x16 = (e_0*e_0);
         const double x17 = 6.0 - 4.0*x8;
-        const double x18 = x0 + ((double)x2);
-        const double x19 = x18 + ((double)x4);
+        const double x18 = x0 + x2;
+        const double x19 = x18 + x4;
         const float x20 = 4.0f*e_0*x11*x15*x7 - x1 - x10*x9 + x16*x17*x19 - x3 - x5;
         const double x21 = 1.0/x8;
-        const double x22 = (0.125)*x21;
+        const float x22 = (0.125f)*x21;
         const float x23 = e_0*omega_1;
         const float x24 = 2.0f*x23;
         const float x25 = e_1*omega_0;
         const float x26 = 2.0f*x25;
-        const float x27 = e_2*x19;
+        const double x27 = ((double)e_2)*x19;
         const float x28 = -omega_2 + x27;
         const float x29 = x11*x7;
         const float x30 = 2.0f*x29;
         const float x31 = e_0*omega_2;
         const float x32 = -e_2*omega_0;
-        const double x33 = -((double)x31) - ((double)x32);
+        const float x33 = -x31 - x32;
         const float x34 = e_0*x33 + e_1*x15;
         const float x35 = -e_0*e_1*x17*x19 - 2.0f*x11*x34*x7;
         const float x36 = -x24 - x26*x9 - x28*x30 - x35;

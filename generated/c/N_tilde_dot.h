@@ -22,10 +22,10 @@
  * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.742 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.745 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_1, x2, x5, x15, N_tilde_dot[4]
+ *   trig_0, x2, x5, x14, N_tilde_dot[8]
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_H
 #define RIGIDSYM_N_TILDE_DOT_H
@@ -165,8 +165,8 @@ static inline int rigidsym_N_tilde_dot_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_e,
     const float *RIGIDSYM_RESTRICT in_phi,
     const float *RIGIDSYM_RESTRICT in_omega,
-    const float trig_0,
-    const double trig_1,
+    const double trig_0,
+    const float trig_1,
     float *RIGIDSYM_RESTRICT out_N_tilde_dot)
 {
     const float e_0 = in_e[0];
@@ -179,10 +179,10 @@ static inline int rigidsym_N_tilde_dot_sample_trig_f32(
     int singular = 0;
     {
         const float x0 = e_0*omega_0 + e_1*omega_1 + e_2*omega_2;
-        const double x2 = ((double)trig_0);
+        const double x2 = trig_0;
         const float x3 = (x2*x2);
         const float x4 = 2.0f*x3;
-        const double x5 = trig_1;
+        const double x5 = ((double)trig_1);
         const float x6 = x0*((x3 < 0.5f) ? (1.0f - x4) : (2.0f*(x5*x5) - 1.0f));
         const float x7 = 2.0f*x0*x2*x5;
         const float x8 = e_2*x7;
@@ -191,8 +191,8 @@ static inline int rigidsym_N_tilde_dot_sample_trig_f32(
         const float x11 = x5/x2;
         const float x12 = e_2*x11;
         const float x13 = x10*x12;
-        const float x14 = x12*x9;
-        const double x15 = (0.5)*((double)x11);
+        const double x14 = ((double)x12)*((double)x9);
+        const float x15 = (0.5f)*x11;
         const float x16 = omega_0*(-x13 + x9) + omega_1*(-x10 - x14) + omega_2*x15*(1.0f - (e_2*e_2));
         const float x17 = e_1*x7;
         const float x18 = (0.5f)*e_2;
@@ -204,11 +204,11 @@ static inline int rigidsym_N_tilde_dot_sample_trig_f32(
         out_N_tilde_dot[1] = -2.0f*x16*x3 - x8;
         out_N_tilde_dot[2] = x17 + x20*x4;
         out_N_tilde_dot[3] = x21;
-        out_N_tilde_dot[4] = ((double)x16)*((double)x4) + ((double)x8);
+        out_N_tilde_dot[4] = x16*x4 + x8;
         out_N_tilde_dot[5] = x6;
         out_N_tilde_dot[6] = -2.0f*x21*x3 - x22;
         out_N_tilde_dot[7] = x20;
-        out_N_tilde_dot[8] = -x17 - 2.0f*x20*x3;
+        out_N_tilde_dot[8] = -((double)x17) - 2.0*((double)x20)*((double)x3);
         out_N_tilde_dot[9] = x21*x4 + x22;
         out_N_tilde_dot[10] = x6;
         out_N_tilde_dot[11] = x16;

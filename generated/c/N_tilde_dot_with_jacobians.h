@@ -31,10 +31,10 @@
  * Singular set: phi = 0 (mod 2 pi): the axis, and so its rate, is undefined
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.726 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.729 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x3, x5, x6, x8, x12, x26, x37, x40, x95, x96, x98, x104
+ *   trig_0, trig_1, x3, x5, x6, x8, x12, x17, x32, x37, x40, x95, x96, x98, x104
  */
 #ifndef RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
 #define RIGIDSYM_N_TILDE_DOT_WITH_JACOBIANS_H
@@ -564,7 +564,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const float x14 = e_2*x13;
         const float x15 = (0.5f)*e_1;
         const float x16 = (0.5f)*e_0;
-        const float x17 = x8/x5;
+        const double x17 = x8/x5;
         const float x18 = e_2*x17;
         const float x19 = x16*x18;
         const float x20 = -x15 + x19;
@@ -573,13 +573,13 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const float x23 = x16 + x22;
         const float x24 = -x23;
         const float x25 = (e_2*e_2);
-        const double x26 = 1.0 - ((double)x25);
+        const float x26 = 1.0f - x25;
         const float x27 = (0.5f)*omega_2;
         const float x28 = omega_0*x21 + omega_1*x24 + x17*x26*x27;
         const float x29 = -x28;
         const float x30 = e_1*x13;
         const float x31 = (0.5f)*e_2;
-        const float x32 = x15*x17;
+        const double x32 = ((double)x15)*x17;
         const float x33 = e_0*x32;
         const float x34 = x31 + x33;
         const float x35 = -x34;
@@ -587,7 +587,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const double x37 = (((double)e_1)*((double)e_1));
         const float x38 = 1.0f - x37;
         const float x39 = (0.5f)*omega_1;
-        const double x40 = ((double)omega_0)*((double)x35) + ((double)omega_2)*((double)x36) + ((double)x17)*((double)x38)*((double)x39);
+        const double x40 = ((double)omega_0)*((double)x35) + ((double)omega_2)*((double)x36) + x17*((double)x38)*((double)x39);
         const float x41 = -x31 + x33;
         const float x42 = -x41;
         const float x43 = x15 + x19;
@@ -645,7 +645,7 @@ static inline int rigidsym_N_tilde_dot_with_jacobians_sample_trig_f32(
         const double x95 = 1.0/x6;
         const double x96 = (0.25)*x95;
         const float x97 = e_2*x96;
-        const double x98 = -0.25*((double)omega_2)*x26*x95 + ((double)x0)*((double)x97) + ((double)x1)*((double)x97);
+        const double x98 = -0.25*((double)omega_2)*((double)x26)*x95 + ((double)x0)*((double)x97) + ((double)x1)*((double)x97);
         const float x99 = e_1*x10;
         const float x100 = e_1*x96;
         const float x101 = -omega_1*x38*x96 + x0*x100 + x100*x2;

@@ -13,10 +13,10 @@
  * Singular set: det W = 0 (gimbal lock)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.498 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.5 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_2, trig_3, x3, x4, x5, x6
+ *   none
  */
 #ifndef RIGIDSYM_EULER_ANGLE_RATES_XZX_FIXED_H
 #define RIGIDSYM_EULER_ANGLE_RATES_XZX_FIXED_H
@@ -103,8 +103,8 @@ static inline int rigidsym_euler_angle_rates_xzx_fixed_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_omega,
     const float trig_0,
     const float trig_1,
-    const double trig_2,
-    const double trig_3,
+    const float trig_2,
+    const float trig_3,
     float *RIGIDSYM_RESTRICT out_eta_dot)
 {
     (void)in_angles;
@@ -116,10 +116,10 @@ static inline int rigidsym_euler_angle_rates_xzx_fixed_sample_trig_f32(
         const float x0 = trig_0;
         const float x1 = 1.0f/x0;
         const float x2 = trig_1;
-        const double x3 = trig_2;
-        const double x4 = ((double)omega_1)*x3;
-        const double x5 = trig_3;
-        const double x6 = ((double)omega_2)*x5;
+        const float x3 = trig_2;
+        const float x4 = omega_1*x3;
+        const float x5 = trig_3;
+        const float x6 = omega_2*x5;
         out_eta_dot[0] = -x1*(-omega_0*x0 + x2*x4 + x2*x6);
         out_eta_dot[1] = -x1*(omega_1*x0*x5 - omega_2*x0*x3);
         out_eta_dot[2] = -x1*(-x4 - x6);

@@ -13,10 +13,10 @@
  * Singular set: det W = 0 (gimbal lock)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.497 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.5 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_1, trig_2, x2, x3, x4, x5
+ *   none
  */
 #ifndef RIGIDSYM_EULER_ANGLE_RATES_YZX_BODY_H
 #define RIGIDSYM_EULER_ANGLE_RATES_YZX_BODY_H
@@ -102,8 +102,8 @@ static inline int rigidsym_euler_angle_rates_yzx_body_sample_trig_f32(
     const float *RIGIDSYM_RESTRICT in_angles,
     const float *RIGIDSYM_RESTRICT in_omega,
     const float trig_0,
-    const double trig_1,
-    const double trig_2,
+    const float trig_1,
+    const float trig_2,
     const float trig_3,
     float *RIGIDSYM_RESTRICT out_eta_dot)
 {
@@ -115,10 +115,10 @@ static inline int rigidsym_euler_angle_rates_yzx_body_sample_trig_f32(
     {
         const float x0 = trig_0;
         const float x1 = 1.0f/x0;
-        const double x2 = trig_1;
-        const double x3 = ((double)omega_1)*x2;
-        const double x4 = trig_2;
-        const double x5 = ((double)omega_2)*x4;
+        const float x2 = trig_1;
+        const float x3 = omega_1*x2;
+        const float x4 = trig_2;
+        const float x5 = omega_2*x4;
         const float x6 = trig_3;
         out_eta_dot[0] = x1*(x3 - x5);
         out_eta_dot[1] = x1*(omega_1*x0*x4 + omega_2*x0*x2);

@@ -14,7 +14,7 @@
  *     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
  *     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
  *     tried, per point; rigidsym.codegen.accuracy.rule) at 96 points of the regimes
- *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.38,
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.31,
  *     never worse than the textbook formula by that rule; equal to the declared formula by the
  *     zero test (exact-cancel)
  *
@@ -22,7 +22,7 @@
  * Q = Rx(angles[0]) Ry(angles[1]) Rz(angles[2]); a = atan2(A_s, A_c), b by atan2 against rho = |(A_s, A_c)|, c = atan2 of rho R_i(a)^T Q's row j; at the lock (A_s = A_c = 0) c = 0
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.499 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.5 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   branch 1: none

@@ -13,7 +13,7 @@
  * Q = Rx(angles[0]) Rz(angles[1]) Rx(angles[2]); a = atan2(A_s, A_c), b by atan2 against rho = |(A_s, A_c)|, c = atan2 of rho R_i(a)^T Q's row j; at the lock (A_s = A_c = 0) c = 0
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.566 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.5 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   branch 1: none

@@ -14,7 +14,7 @@
  *     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
  *     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
  *     tried, per point; rigidsym.codegen.accuracy.rule) at 96 points of the regimes
- *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.43,
+ *     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.35,
  *     never worse than the textbook formula by that rule; equal to the declared formula by the
  *     zero test (exact-cancel)
  */

@@ -13,14 +13,14 @@
  * w = Log(R), v = J_l(w)^-1 p; below pi/4 in s = norm of vect(R) alone (asin, sqrt(1 - s^2)), near pi the symmetric part of R
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.75 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.741 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   branch 1: x37, x39, x40
- *   branch 2: none
- *   branch 3: none
- *   branch 4: xi[3], xi[4], xi[5]
- *   branch 5: none
+ *   branch 1: x37, x39, x40, xi[3], xi[5]
+ *   branch 2: xi[5]
+ *   branch 3: xi[4]
+ *   branch 4: xi[3], xi[5]
+ *   branch 5: x1
  */
 #ifndef RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
 #define RIGIDSYM_EXPONENTIAL_COORDINATES_FROM_TRANSFORM_H
@@ -349,9 +349,9 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[0] = x19;
         out_xi[1] = x20;
         out_xi[2] = x21;
-        out_xi[3] = T_03*(-x36 - x37) + T_13*(x22 + x34) + T_23*(x23*x24*x3*x32*x7 - x35);
+        out_xi[3] = ((double)T_03)*(-((double)x36) - x37) + ((double)T_13)*(((double)x22) + ((double)x34)) + ((double)T_23)*(((double)x23)*((double)x24)*((double)x3)*((double)x32)*((double)x7) - ((double)x35));
         out_xi[4] = T_03*(-x22 + x34) + T_13*(-x37 - x40) + T_23*(x38 + x39);
-        out_xi[5] = T_03*(x33*x7 + x35) + T_13*(-x38 + x39) + T_23*(-x36 - x40 + 1.0f);
+        out_xi[5] = ((double)T_03)*(((double)x33)*((double)x7) + ((double)x35)) + ((double)T_13)*(-((double)x38) + x39) + ((double)T_23)*(-((double)x36) - x40 + 1.0);
         singular |= (((double)x31)) == 0.0;
         singular |= (((double)x29)) == 0.0;
         singular |= (((double)x13)) == 0.0;
@@ -401,7 +401,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[2] = x18;
         out_xi[3] = T_03*(-x34 - x35) + T_13*(x19 + x31) + T_23*(-x32 + x33);
         out_xi[4] = T_03*(-x19 + x31) + T_13*(-x35 - x37) + T_23*(x22*x29*x3*x8 + x36);
-        out_xi[5] = T_03*(x32 + x33) + T_13*(x20*x21*x29*x3*x8 - x36) + T_23*(-x34 - x37 + 1.0f);
+        out_xi[5] = ((double)T_03)*(((double)x32) + ((double)x33)) + ((double)T_13)*(((double)x20)*((double)x21)*((double)x29)*((double)x3)*((double)x8) - ((double)x36)) + ((double)T_23)*(-((double)x34) - ((double)x37) + 1.0);
         singular |= (((double)x28)) == 0.0;
         singular |= (((double)x26)) == 0.0;
         singular |= (((double)x10)) == 0.0;
@@ -451,7 +451,7 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[1] = x18;
         out_xi[2] = x19;
         out_xi[3] = T_03*(-x35 - x36) + T_13*(x20 + x32) + T_23*(-x33 + x34);
-        out_xi[4] = T_03*(-x20 + x32) + T_13*(-x36 - x38) + T_23*(x23*x30*x4*x9 + x37);
+        out_xi[4] = ((double)T_03)*(-((double)x20) + ((double)x32)) + ((double)T_13)*(-((double)x36) - ((double)x38)) + ((double)T_23)*(((double)x23)*((double)x30)*((double)x4)*((double)x9) + ((double)x37));
         out_xi[5] = T_03*(x33 + x34) + T_13*(x21*x22*x30*x4*x9 - x37) + T_23*(-x35 - x38 + 1.0f);
         singular |= (((double)x29)) == 0.0;
         singular |= (((double)x27)) == 0.0;
@@ -486,11 +486,11 @@ static inline int rigidsym_exponential_coordinates_from_transform_sample_f32(
         out_xi[1] = x1*x5 - x2*x5;
         out_xi[2] = (0.5f)*T_10*x5 - x0*x5;
         out_xi[3] = (0.25)*((double)T_01)*((double)T_03)*((double)T_10)*((double)x9) + (0.125)*((double)T_01)*((double)T_12)*((double)T_23)*((double)x9) + (0.25)*((double)T_02)*((double)T_03)*((double)T_20)*((double)x9) - ((double)T_02)*((double)T_12)*((double)x13) + (0.125)*((double)T_02)*((double)T_13)*((double)T_21)*((double)x9) - ((double)T_02)*((double)x8) + ((double)T_03) + (0.25)*((double)T_10)*((double)T_13)*((double)x5) + (0.125)*((double)T_10)*((double)T_21)*((double)T_23)*((double)x9) + (0.125)*((double)T_12)*((double)T_13)*((double)T_20)*((double)x9) - ((double)T_12)*((double)x14) + (0.25)*((double)T_20)*((double)T_23)*((double)x5) - ((double)T_21)*((double)x12) - ((double)T_21)*((double)x15) - ((double)x16)*((double)x17) - ((double)x17)*((double)x18) - ((double)x17)*((double)x19) - ((double)x17)*((double)x20) - ((double)x6)*((double)x7);
-        out_xi[4] = (0.25)*((double)T_01)*((double)T_03)*((double)x5) + (0.25)*((double)T_01)*((double)T_10)*((double)T_13)*((double)x9) + (0.125)*((double)T_01)*((double)T_20)*((double)T_23)*((double)x9) + (0.125)*((double)T_02)*((double)T_03)*((double)T_21)*((double)x9) + (0.125)*((double)T_02)*((double)T_10)*((double)T_23)*((double)x9) - ((double)T_02)*((double)T_12)*((double)x17) - ((double)T_02)*((double)x12) - ((double)T_03)*((double)T_10)*((double)x6) + (0.125)*((double)T_03)*((double)T_12)*((double)T_20)*((double)x9) + (0.25)*((double)T_12)*((double)T_13)*((double)T_21)*((double)x9) - ((double)T_12)*((double)x8) + ((double)T_13) - ((double)T_20)*((double)T_21)*((double)x17) - ((double)T_20)*((double)x14) + (0.25)*((double)T_21)*((double)T_23)*((double)x5) - ((double)x13)*((double)x16) - ((double)x13)*((double)x19) - ((double)x13)*((double)x21) - ((double)x13)*((double)x22);
+        out_xi[4] = (0.25f)*T_01*T_03*x5 + (0.25f)*T_01*T_10*T_13*x9 + (0.125f)*T_01*T_20*T_23*x9 + (0.125f)*T_02*T_03*T_21*x9 + (0.125f)*T_02*T_10*T_23*x9 - T_02*T_12*x17 - T_02*x12 - T_03*T_10*x6 + (0.125f)*T_03*T_12*T_20*x9 + (0.25f)*T_12*T_13*T_21*x9 - T_12*x8 + T_13 - T_20*T_21*x17 - T_20*x14 + (0.25f)*T_21*T_23*x5 - x13*x16 - x13*x19 - x13*x21 - x13*x22;
         out_xi[5] = (0.125)*((double)T_01)*((double)T_03)*((double)T_12)*((double)x9) + (0.125)*((double)T_01)*((double)T_13)*((double)T_20)*((double)x9) - ((double)T_01)*((double)T_21)*((double)x17) + (0.25)*((double)T_02)*((double)T_03)*((double)x5) + (0.125)*((double)T_02)*((double)T_10)*((double)T_13)*((double)x9) + (0.25)*((double)T_02)*((double)T_20)*((double)T_23)*((double)x9) - ((double)T_02)*((double)x10)*((double)x7) + (0.125)*((double)T_03)*((double)T_10)*((double)T_21)*((double)x9) - ((double)T_03)*((double)T_20)*((double)x6) - ((double)T_10)*((double)T_12)*((double)x17) - ((double)T_10)*((double)x15) + (0.25)*((double)T_12)*((double)T_13)*((double)x5) + (0.25)*((double)T_12)*((double)T_21)*((double)T_23)*((double)x9) - ((double)T_13)*((double)T_21)*((double)x6) + ((double)T_23) - ((double)x11)*((double)x18) - ((double)x11)*((double)x20) - ((double)x11)*((double)x21) - ((double)x11)*((double)x22);
     } else {
         const float x0 = -0.5f*T_12 + (0.5f)*T_21;
-        const float x1 = acos((0.5f)*T_00 + (0.5f)*T_11 + (0.5f)*T_22 - 0.5f);
+        const double x1 = acos((0.5)*((double)T_00) + (0.5)*((double)T_11) + (0.5)*((double)T_22) - 0.5);
         const float x2 = sin(x1);
         const float x3 = x1/x2;
         const float x4 = x0*x3;

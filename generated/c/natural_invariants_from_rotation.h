@@ -14,7 +14,7 @@
  * Singular set: vect(Q) != 0 with ||vect(Q)||^2 below the type's range (phi under about 1e-154 in float64, 1e-19 in float32): the axis's direction is lost
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.68 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.644 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   branch 1: none

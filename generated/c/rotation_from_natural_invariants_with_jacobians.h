@@ -12,7 +12,7 @@
  * Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) CPM(e); and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.728 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.708 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, x3

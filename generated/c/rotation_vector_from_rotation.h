@@ -19,7 +19,7 @@
  *   branch 1: none
  *   branch 2: none
  *   branch 3: none
- *   branch 4: x4
+ *   branch 4: none
  *   branch 5: none
  */
 #ifndef RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_H
@@ -220,7 +220,7 @@ static inline int rigidsym_rotation_vector_from_rotation_sample_f32(
         const float x1 = (0.5f)*Q_02;
         const float x2 = (0.5f)*Q_20;
         const float x3 = (0.5f)*Q_12;
-        const double x4 = (((((0.5)*((double)Q_10) - ((double)x0))*((0.5)*((double)Q_10) - ((double)x0))) + (((0.5)*((double)Q_21) - ((double)x3))*((0.5)*((double)Q_21) - ((double)x3))) + ((((double)x1) - ((double)x2))*(((double)x1) - ((double)x2))) < 9.0949470177292824e-13) ? (0.16666666666666666*(((0.5)*((double)Q_10) - ((double)x0))*((0.5)*((double)Q_10) - ((double)x0))) + 0.16666666666666666*(((0.5)*((double)Q_21) - ((double)x3))*((0.5)*((double)Q_21) - ((double)x3))) + 0.16666666666666666*((((double)x1) - ((double)x2))*(((double)x1) - ((double)x2))) + 1.0) : ((((((0.5)*((double)Q_10) - ((double)x0))*((0.5)*((double)Q_10) - ((double)x0))) + (((0.5)*((double)Q_21) - ((double)x3))*((0.5)*((double)Q_21) - ((double)x3))) + ((((double)x1) - ((double)x2))*(((double)x1) - ((double)x2))) < 9.0949470177292824e-13) ? (1048576.0) : (1.0/sqrt((((0.5)*((double)Q_10) - ((double)x0))*((0.5)*((double)Q_10) - ((double)x0))) + (((0.5)*((double)Q_21) - ((double)x3))*((0.5)*((double)Q_21) - ((double)x3))) + ((((double)x1) - ((double)x2))*(((double)x1) - ((double)x2))))))*asin((((((0.5)*((double)Q_10) - ((double)x0))*((0.5)*((double)Q_10) - ((double)x0))) + (((0.5)*((double)Q_21) - ((double)x3))*((0.5)*((double)Q_21) - ((double)x3))) + ((((double)x1) - ((double)x2))*(((double)x1) - ((double)x2))) < 9.0949470177292824e-13) ? (9.5367431640625e-7) : (sqrt((((0.5)*((double)Q_10) - ((double)x0))*((0.5)*((double)Q_10) - ((double)x0))) + (((0.5)*((double)Q_21) - ((double)x3))*((0.5)*((double)Q_21) - ((double)x3))) + ((((double)x1) - ((double)x2))*(((double)x1) - ((double)x2)))))))));
+        const float x4 = (((((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + (((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + ((x1 - x2)*(x1 - x2)) < 9.094947017729282e-13f) ? (0.1666666716337204f*(((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + 0.1666666716337204f*(((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + 0.1666666716337204f*((x1 - x2)*(x1 - x2)) + 1.0f) : ((((((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + (((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + ((x1 - x2)*(x1 - x2)) < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf((((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + (((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + ((x1 - x2)*(x1 - x2)))))*asin((((((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + (((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + ((x1 - x2)*(x1 - x2)) < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf((((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + (((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + ((x1 - x2)*(x1 - x2))))))));
         out_w[0] = (0.5f)*Q_21*x4 - x3*x4;
         out_w[1] = x1*x4 - x2*x4;
         out_w[2] = (0.5f)*Q_10*x4 - x0*x4;

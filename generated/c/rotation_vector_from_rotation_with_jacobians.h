@@ -13,14 +13,14 @@
  * w = (phi / sin phi) vect(Q); asin near 0, the symmetric part near pi; and d(output)/d(input) by sympy on the declared formula
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.744 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.746 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   branch 1: x49, x67, w_D_Q[0]
- *   branch 2: none
- *   branch 3: none
- *   branch 4: x5
- *   branch 5: x2
+ *   branch 1: x25, x27, x49, x67
+ *   branch 2: x19, x39, x53
+ *   branch 3: x20, x43
+ *   branch 4: none
+ *   branch 5: none
  */
 #ifndef RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_WITH_JACOBIANS_H
 #define RIGIDSYM_ROTATION_VECTOR_FROM_ROTATION_WITH_JACOBIANS_H
@@ -532,9 +532,9 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x22 = x18*x21;
         const float x23 = (0.5f)*x22;
         const float x24 = (0.25f)*Q_00 - 0.25f*Q_11 - 0.25f*Q_22 + 0.25f;
-        const float x25 = x17/(x12*sqrt(x12));
+        const double x25 = ((double)x17)/(((double)x12)*sqrt(((double)x12)));
         const float x26 = -x24*x25;
-        const float x27 = x21*x3;
+        const double x27 = ((double)x21)*((double)x3);
         const float x28 = (x19*x19) + (x20*x20);
         const float x29 = 1.0f/x28;
         const float x30 = (0.5f)*x29;
@@ -556,7 +556,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x46 = x14*x43 + x16*x43 + x32*x5 + x43*x9;
         const float x47 = x45 + x46;
         const float x48 = x39 + x40;
-        const double x49 = ((double)x24)*((double)x25);
+        const double x49 = ((double)x24)*x25;
         const float x50 = x31 + x34*(x14*x49 + x16*x49 - x33 + x49*x9);
         const float x51 = -x23 + x27*x49 + x36*x50;
         const float x52 = x20*x30/x12;
@@ -580,7 +580,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         out_w[0] = x22*x3;
         out_w[1] = x10*x22;
         out_w[2] = x22*x8;
-        out_w_D_Q[0] = ((double)x23) + ((double)x26)*((double)x27) + ((double)x35)*((double)x36);
+        out_w_D_Q[0] = x23 + x26*x27 + x35*x36;
         out_w_D_Q[1] = x38 + x41*x42;
         out_w_D_Q[2] = x42*x47 + x44;
         out_w_D_Q[3] = x38 + x42*x48;
@@ -631,7 +631,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x16 = x11*x15 + x13*x15 + x15*x5;
         const float x17 = (0.5f)*Q_11 + x6;
         const float x18 = atan2(x16, x17);
-        const float x19 = x15*x18;
+        const double x19 = ((double)x15)*((double)x18);
         const float x20 = (0.25f)*Q_00 - 0.25f*Q_11 + (0.25f)*Q_22 - 0.25f;
         const float x21 = x14/(x9*sqrt(x9));
         const float x22 = -x20*x21;
@@ -651,7 +651,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x36 = x10*x28 + x11*x35 + x13*x35 + x35*x5;
         const float x37 = -x34 + x36;
         const float x38 = x30*x32;
-        const float x39 = (0.5f)*x19;
+        const double x39 = (0.5)*x19;
         const float x40 = x23*x35 + x39;
         const float x41 = x17*x26/x9;
         const float x42 = x41*x7;
@@ -665,7 +665,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x50 = x11*x47 + x13*x47 + x2*x28 + x47*x5;
         const float x51 = -x49 + x50;
         const float x52 = x49 + x50;
-        const float x53 = x18*x7;
+        const double x53 = ((double)x18)*((double)x7);
         const float x54 = x15*x7;
         const float x55 = x22*x53 + x31*x54 - x39;
         const float x56 = x35*x53;
@@ -734,7 +734,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x17 = x12*x16 + x14*x16 + x16*x6;
         const float x18 = (0.5f)*Q_22 + x7;
         const float x19 = atan2(x17, x18);
-        const float x20 = x16*x19;
+        const double x20 = ((double)x16)*((double)x19);
         const float x21 = (0.25f)*Q_00 + (0.25f)*Q_11 - 0.25f*Q_22 - 0.25f;
         const float x22 = x15/(x10*sqrt(x10));
         const float x23 = -x21*x22;
@@ -757,7 +757,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x40 = x11*x29 + x12*x39 + x14*x39 + x39*x6;
         const float x41 = x38 + x40;
         const float x42 = x31*x33;
-        const float x43 = (0.5f)*x20;
+        const double x43 = (0.5)*x20;
         const float x44 = x24*x39 + x43;
         const float x45 = x22*(-0.25f*Q_12 - 0.25f*Q_21);
         const float x46 = x24*x45;
@@ -822,7 +822,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
         const float x2 = (0.5f)*Q_20;
         const float x3 = (0.5f)*Q_12;
         const float x4 = (((0.5f)*Q_10 - x0)*((0.5f)*Q_10 - x0)) + (((0.5f)*Q_21 - x3)*((0.5f)*Q_21 - x3)) + ((x1 - x2)*(x1 - x2));
-        const double x5 = ((((double)x4) < 9.0949470177292824e-13) ? (0.16666666666666666*((double)x4) + 1.0) : (((((double)x4) < 9.0949470177292824e-13) ? (1048576.0) : (1.0/sqrt(((double)x4))))*asin(((((double)x4) < 9.0949470177292824e-13) ? (9.5367431640625e-7) : (sqrt(((double)x4)))))));
+        const float x5 = ((x4 < 9.094947017729282e-13f) ? (0.1666666716337204f*x4 + 1.0f) : (((x4 < 9.094947017729282e-13f) ? (1048576.0f) : (1.0f/sqrtf(x4)))*asin(((x4 < 9.094947017729282e-13f) ? (9.5367431640625e-07f) : (sqrtf(x4))))));
         const float x6 = ((x4 < 0.125f) ? (x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(x4*(-0.12528826296329498f*x4 - 0.1284913867712021f) - 0.13195279240608215f) - 0.1357090324163437f) - 0.13980430364608765f) - 0.1442926675081253f) - 0.14924098551273346f) - 0.15473304688930511f) - 0.1608755737543106f) - 0.1678067147731781f) - 0.17570896446704865f) - 0.18482881784439087f) - 0.19550780951976776f) - 0.20823317766189575f) - 0.22372159361839294f) - 0.2430555522441864f) - 0.2678571343421936f) - 0.30000001192092896f) - 0.3333333432674408f) : ((sqrt(1.0f - ((x4 < 0.125f) ? (0.125f) : (x4)))*asin(((x4 < 0.125f) ? (0.3535533845424652f) : (sqrtf(x4)))) - ((x4 < 0.125f) ? (0.3535533845424652f) : (sqrtf(x4))))*((x4 < 0.125f) ? (22.627416610717773f) : (1.0f/(x4*sqrt(x4))))/sqrt(1.0f - ((x4 < 0.125f) ? (0.125f) : (x4)))));
         const float x7 = (0.125f)*x6;
         const float x8 = Q_12*x7;
@@ -887,7 +887,7 @@ static inline int rigidsym_rotation_vector_from_rotation_with_jacobians_sample_f
     } else {
         const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
         const float x1 = (0.5f)*Q_00 + (0.5f)*Q_11 + (0.5f)*Q_22 - 0.5f;
-        const double x2 = acos(((double)x1));
+        const float x2 = acos(x1);
         const float x3 = sin(x2);
         const float x4 = 1.0f/x3;
         const float x5 = x2*x4;

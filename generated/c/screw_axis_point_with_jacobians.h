@@ -22,10 +22,10 @@
  * Singular set: phi = 0 (pure translation)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.966 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.875 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   trig_0, trig_1, x1, x2, x4, x5, x6, x7, x9, x10, x12, x13, x14, x15, x16, x18, x19, x20, x21, x22, x23, x24, x25, x26, x28, x29, x30, x31, x33, x34, x36, x37, x38, x39, x54, x59, x65, x69, x72, x73, x74, x75, x76, x78, x79, x81, x82, x83, x86, x87, p0_D_phi[1]
+ *   trig_0, trig_1, x1, x2, x4, x5, x6, x7, x8, x9, x12, x13, x15, x16, x17, x19, x20, x21, x22, x25, x26, x30, x31, x32, x33, x34, x35, x37, x38, x39, x40, x41, x43, x47, x54, x59, x65, x69, x73, x76, x77, x78, x79, x80, x81, x82, x83, x84, x85, x86, x87, p0_D_e[8]
  */
 #ifndef RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
 #define RIGIDSYM_SCREW_AXIS_POINT_WITH_JACOBIANS_H
@@ -387,46 +387,46 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         const double x5 = ((double)e_0)*x4;
         const double x6 = trig_1;
         const double x7 = x1*x6;
-        const float x8 = 2.0f*x7;
-        const double x9 = ((double)e_2)*((double)x8);
-        const double x10 = x5 - x9;
+        const double x8 = 2.0*x7;
+        const double x9 = ((double)e_2)*x8;
+        const float x10 = x5 - x9;
         const float x11 = 2.0f*e_0;
         const double x12 = ((double)e_2)*x2;
         const double x13 = ((double)x11)*x12;
-        const double x14 = ((double)x3)*x7;
-        const double x15 = x13 + x14;
+        const float x14 = x3*x7;
+        const double x15 = x13 + ((double)x14);
         const double x16 = (((double)e_0)*((double)e_0));
-        const float x17 = 1.0f - x16;
-        const double x18 = (-x1 + x6)*(x1 + x6);
-        const double x19 = x16 + ((double)x17)*x18;
-        const double x20 = ((double)a_0)*x19 + ((double)a_1)*x10 + ((double)a_2)*x15 - ((double)a_prime_0);
+        const double x17 = 1.0 - x16;
+        const float x18 = (-x1 + x6)*(x1 + x6);
+        const double x19 = x16 + x17*((double)x18);
+        const double x20 = ((double)a_0)*x19 + ((double)a_1)*((double)x10) + ((double)a_2)*x15 - ((double)a_prime_0);
         const double x21 = x2*(2.0*x16 - 2.0);
         const double x22 = x5 + x9;
-        const double x23 = x12*((double)x3);
-        const double x24 = ((double)x11)*x7;
-        const double x25 = -x23 + x24;
+        const float x23 = x12*x3;
+        const float x24 = x11*x7;
+        const double x25 = -((double)x23) + ((double)x24);
         const double x26 = -x25;
         const float x27 = (e_1*e_1);
-        const double x28 = 1.0 - ((double)x27);
-        const double x29 = x18*x28 + ((double)x27);
-        const double x30 = ((double)a_0)*x22 + ((double)a_1)*x29 + ((double)a_2)*x26 - ((double)a_prime_1);
-        const double x31 = x13 - x14;
-        const float x32 = x23 + x24;
+        const float x28 = 1.0f - x27;
+        const float x29 = x18*x28 + x27;
+        const double x30 = ((double)a_0)*x22 + ((double)a_1)*((double)x29) + ((double)a_2)*x26 - ((double)a_prime_1);
+        const double x31 = x13 - ((double)x14);
+        const double x32 = ((double)x23) + ((double)x24);
         const double x33 = (((double)e_2)*((double)e_2));
         const double x34 = 1.0 - x33;
-        const float x35 = x18*x34 + x33;
-        const double x36 = ((double)a_0)*x31 + ((double)a_1)*((double)x32) + ((double)a_2)*((double)x35) - ((double)a_prime_2);
-        const double x37 = x20*x21 + x22*x30 + x31*x36;
+        const double x35 = ((double)x18)*x34 + x33;
+        const float x36 = a_0*x31 + a_1*x32 + a_2*x35 - a_prime_2;
+        const double x37 = x20*x21 + x22*x30 + x31*((double)x36);
         const double x38 = 1.0/x2;
         const double x39 = (0.25)*x38;
-        const float x40 = x2*(2.0f*x27 - 2.0f);
-        const float x41 = x10*x20 + x30*x40 + x32*x36;
+        const double x40 = x2*(2.0*((double)x27) - 2.0);
+        const double x41 = ((double)x10)*x20 + x30*x40 + x32*((double)x36);
         const float x42 = x2*(2.0f*x33 - 2.0f);
-        const float x43 = x15*x20 + x26*x30 + x36*x42;
+        const double x43 = x15*x20 + x26*x30 + ((double)x36)*((double)x42);
         const float x44 = a_2*x8;
         const float x45 = a_0*x4 - x44;
         const float x46 = 2.0f*x12;
-        const float x47 = a_1*x8;
+        const double x47 = ((double)a_1)*x8;
         const float x48 = a_0*x46 + x47;
         const float x49 = a_0*x2;
         const float x50 = 4.0f*e_0;
@@ -438,35 +438,35 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         const float x56 = x36*x46;
         const float x57 = a_1*x2;
         const float x58 = x11*x57 + x44;
-        const double x59 = ((double)a_0)*((double)x8);
+        const double x59 = ((double)a_0)*x8;
         const float x60 = 2.0f*a_1*e_2*x2 - x59;
         const float x61 = x11*x49;
         const float x62 = 4.0f*e_1;
         const float x63 = x52 + x57*x62 + x61;
         const float x64 = x11*x2;
-        const double x65 = x36*((double)x8);
+        const double x65 = ((double)x36)*x8;
         const float x66 = 2.0f*a_2*e_0*x2 - x47;
         const float x67 = a_2*x4 + x59;
         const float x68 = 4.0f*x12;
         const double x69 = ((double)a_2)*((double)x68) + ((double)x51) + ((double)x61);
         const float x70 = x30*x8;
         const float x71 = x11*x54;
-        const double x72 = x20*((double)x8);
+        const float x72 = x20*x8;
         const double x73 = (0.25)*x6/(x1*x1*x1);
-        const double x74 = ((double)e_2)*x24;
-        const double x75 = ((double)e_1)*x18;
-        const double x76 = x74 + x75;
-        const float x77 = e_0*x14;
-        const double x78 = ((double)e_2)*x18;
-        const double x79 = ((double)x77) - x78;
-        const float x80 = a_1*x79 + a_2*x76 - x17*x59;
-        const double x81 = ((double)x77) + x78;
-        const double x82 = ((double)e_0)*x18;
+        const float x74 = e_2*x24;
+        const float x75 = e_1*x18;
+        const double x76 = ((double)x74) + ((double)x75);
+        const double x77 = ((double)e_0)*((double)x14);
+        const double x78 = ((double)e_2)*((double)x18);
+        const double x79 = x77 - x78;
+        const double x80 = ((double)a_1)*x79 + ((double)a_2)*x76 - x17*x59;
+        const double x81 = x77 + x78;
+        const double x82 = ((double)e_0)*((double)x18);
         const double x83 = 2.0*((double)e_1)*((double)e_2)*x1*x6 - x82;
-        const float x84 = a_0*x81 + a_2*x83 - x28*x47;
-        const float x85 = e_2*x14 + x82;
-        const double x86 = x74 - x75;
-        const double x87 = ((double)a_0)*x86 + ((double)a_1)*((double)x85) - x34*((double)x44);
+        const double x84 = ((double)a_0)*x81 + ((double)a_2)*x83 - ((double)x28)*x47;
+        const double x85 = ((double)e_2)*((double)x14) + x82;
+        const double x86 = ((double)x74) - ((double)x75);
+        const double x87 = ((double)a_0)*x86 + ((double)a_1)*x85 - x34*((double)x44);
         const float x88 = x31*x32;
         const float x89 = x22*x26;
         const float x90 = x10*x15;
@@ -481,9 +481,9 @@ static inline int rigidsym_screw_axis_point_with_jacobians_sample_trig_f32(
         out_p0_D_e[5] = x39*(x10*x66 + x32*x69 + x36*x4 + x40*x67 - x72);
         out_p0_D_e[6] = x39*(x15*x53 + x20*x46 + x26*x45 + x42*x48 - x70);
         out_p0_D_e[7] = x39*(x15*x58 + x26*x63 + x30*x46 + x42*x60 + x72);
-        out_p0_D_e[8] = x39*(x15*x66 + x26*x67 + x36*x68 + x42*x69 + x55 + x71);
+        out_p0_D_e[8] = x39*(x15*((double)x66) + x26*((double)x67) + ((double)x36)*((double)x68) + ((double)x42)*x69 + ((double)x55) + ((double)x71));
         out_p0_D_phi[0] = -x37*x73 + (0.25f)*x38*(-x17*x72 + x21*x80 + x22*x84 + x30*x81 + x31*x87 + x36*x86);
-        out_p0_D_phi[1] = (0.25)*x38*(x10*((double)x80) + x20*x79 - x28*((double)x70) + ((double)x32)*x87 + x36*((double)x85) + ((double)x40)*((double)x84)) - ((double)x41)*x73;
+        out_p0_D_phi[1] = (0.25f)*x38*(x10*x80 + x20*x79 - x28*x70 + x32*x87 + x36*x85 + x40*x84) - x41*x73;
         out_p0_D_phi[2] = (0.25f)*x38*(x15*x80 + x20*x76 + x26*x84 + x30*x83 - x34*x65 + x42*x87) - x43*x73;
         out_p0_D_a[0] = x39*(x19*x21 + (x22*x22) + (x31*x31));
         out_p0_D_a[1] = x39*(x10*x21 + x22*x29 + x88);

@@ -35,9 +35,9 @@
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.997 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   branch 1: x3, x9, x16, x17, x19, x20, x22, x24, x27, x37, pitch[0]
- *   branch 2: x4, x6, x7, x8, x9, x14, x15, x16, x17, x19, x31, pitch[0], plucker[3], plucker[5]
- *   branch 3: x2, x7, x8, x15, x16, x17, x18, x25, x35, pitch[0]
+ *   branch 1: x3, x5, x9, x16, x17, x18, x19, x20, x22, x24, x34, x35, x37, pitch[0]
+ *   branch 2: x1, x4, x6, x7, x13, x14, x15, x16, x19, x38, x39, x40, pitch[0], plucker[3]
+ *   branch 3: x2, x5, x7, x8, x9, x10, x15, x16, x17, x30, x35, pitch[0]
  *   branch 4: none
  *   branch 5: x1, x2, x4, x5, x9, x10, x11, x12, x13, x14, x15, x16, x17, x21, x28, x29, x31, x32, x33, x34, x35, x36, x37, pitch[0]
  */
@@ -388,7 +388,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x2 = (0.5f)*Q_22;
         const double x3 = ((double)x0) - ((double)x1) - ((double)x2) + 0.5;
         const float x4 = (0.5f)*Q_01;
-        const float x5 = (0.5f)*Q_10 + x4;
+        const double x5 = (0.5)*((double)Q_10) + ((double)x4);
         const float x6 = (x5*x5);
         const float x7 = (0.5f)*Q_02;
         const float x8 = (0.5f)*Q_20;
@@ -399,9 +399,9 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x13 = (0.5f)*Q_10 - x4;
         const float x14 = x7 - x8;
         const float x15 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const double x16 = ((((double)x13)*x9 + ((double)x14)*((double)x5) + ((double)x15)*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x12));
+        const double x16 = ((((double)x13)*x9 + ((double)x14)*x5 + ((double)x15)*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x12));
         const double x17 = x16*x3;
-        const float x18 = x16*x5;
+        const double x18 = x16*x5;
         const double x19 = x16*x9;
         const double x20 = atan2(sqrt((((double)x13)*((double)x13)) + (((double)x14)*((double)x14)) + (((double)x15)*((double)x15))), ((double)x0) + ((double)x1) + ((double)x2) - 0.5);
         const float x21 = -a_prime_1;
@@ -410,15 +410,15 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const double x24 = ((double)Q_20)*((double)a_0) + ((double)Q_21)*((double)a_1) + ((double)Q_22)*((double)a_2) + ((double)x23);
         const float x25 = Q_00 - 1.0f;
         const float x26 = -a_prime_0;
-        const double x27 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x26);
+        const float x27 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x26;
         const float x28 = Q_10*x22 + Q_20*x24 + x25*x27;
         const float x29 = Q_11 - 1.0f;
         const float x30 = Q_22 - 1.0f;
         const float x31 = -(x25) - (x29) - (x30);
         const float x32 = 1.0f/x31;
         const float x33 = Q_01*x27 + Q_21*x24 + x22*x29;
-        const float x34 = Q_02*x27 + Q_12*x22 + x24*x30;
-        const float x35 = 1.0f/x12;
+        const double x34 = ((double)Q_02)*((double)x27) + ((double)Q_12)*x22 + x24*((double)x30);
+        const double x35 = 1.0/((double)x12);
         const float x36 = x10*x35 + x11*x35 + x35*x6;
         const double x37 = 1.0/sqrt(((double)x36));
         const float x38 = x17*x37;
@@ -431,7 +431,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_p0[0] = x28*x32;
         out_p0[1] = x32*x33;
         out_p0[2] = x32*x34;
-        out_pitch[0] = (x17*(-((double)a_0) - ((double)x26)) + ((double)x18)*(-((double)a_1) - ((double)x21)) + x19*(-((double)a_2) - ((double)x23)))/x20;
+        out_pitch[0] = (x17*(-((double)a_0) - ((double)x26)) + x18*(-((double)a_1) - ((double)x21)) + x19*(-((double)a_2) - ((double)x23)))/x20;
         out_plucker[0] = x38;
         out_plucker[1] = x39;
         out_plucker[2] = x40;
@@ -446,23 +446,23 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         singular |= finite != finite;
     } else if (((double)Q_11) >= ((double)Q_00) && ((double)Q_11) >= ((double)Q_22) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
         const float x0 = (0.5f)*Q_01;
-        const float x1 = (0.5f)*Q_10 + x0;
+        const double x1 = (0.5)*((double)Q_10) + ((double)x0);
         const float x2 = (x1*x1);
         const float x3 = (0.5f)*Q_12;
         const double x4 = (0.5)*((double)Q_21) + ((double)x3);
         const float x5 = (x4*x4);
         const double x6 = (0.5)*((double)Q_00) + (0.5)*((double)Q_22) - 0.5;
         const double x7 = (0.5)*((double)Q_11) - x6;
-        const double x8 = (x7*x7);
-        const double x9 = ((double)x2) + ((double)x5) + x8;
+        const float x8 = (x7*x7);
+        const float x9 = x2 + x5 + x8;
         const float x10 = (0.5f)*Q_10 - x0;
         const float x11 = (0.5f)*Q_21 - x3;
         const float x12 = (0.5f)*Q_02 - 0.5f*Q_20;
-        const float x13 = ((x1*x11 + x10*x4 + x12*x7 < 0.0f) ? (-1.0f) : (1.0f))/sqrt(x9);
-        const double x14 = ((double)x1)*((double)x13);
-        const double x15 = ((double)x13)*x7;
-        const double x16 = ((double)x13)*x4;
-        const double x17 = atan2(sqrt((((double)x10)*((double)x10)) + (((double)x11)*((double)x11)) + (((double)x12)*((double)x12))), (0.5)*((double)Q_11) + x6);
+        const double x13 = ((x1*((double)x11) + ((double)x10)*x4 + ((double)x12)*x7 < 0.0) ? (-1.0) : (1.0))/sqrt(((double)x9));
+        const double x14 = x1*x13;
+        const double x15 = x13*x7;
+        const double x16 = x13*x4;
+        const float x17 = atan2(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), (0.5f)*Q_11 + x6);
         const float x18 = -a_prime_1;
         const double x19 = rigidsym_sumprod4(((double)Q_10), ((double)a_0), ((double)Q_11), ((double)a_1), ((double)Q_12), ((double)a_2), ((double)x18), 1.0);
         const float x20 = -a_prime_2;
@@ -476,16 +476,16 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const float x28 = 1.0f/x27;
         const float x29 = 1.0f/x9;
         const float x30 = x2*x29 + x29*x5 + x29*x8;
-        const double x31 = 1.0/sqrt(((double)x30));
+        const float x31 = 1.0f/sqrtf(x30);
         const float x32 = x14*x31;
         const float x33 = x15*x31;
         const float x34 = x16*x31;
         const float x35 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x23;
         const float x36 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x20;
         const float x37 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x18;
-        const float x38 = Q_01*x35 + Q_21*x36 + x25*x37;
-        const float x39 = Q_02*x35 + Q_12*x37 + x26*x36;
-        const float x40 = Q_10*x37 + Q_20*x36 + x22*x35;
+        const double x38 = ((double)Q_01)*((double)x35) + ((double)Q_21)*((double)x36) + ((double)x25)*((double)x37);
+        const double x39 = ((double)Q_02)*((double)x35) + ((double)Q_12)*((double)x37) + ((double)x26)*((double)x36);
+        const double x40 = ((double)Q_10)*((double)x37) + ((double)Q_20)*((double)x36) + ((double)x22)*((double)x35);
         out_e[0] = x14;
         out_e[1] = x15;
         out_e[2] = x16;
@@ -493,17 +493,17 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_p0[0] = x28*rigidsym_sumprod3(Q_10, x19, Q_20, x21, x22, x24);
         out_p0[1] = x28*rigidsym_sumprod3(Q_01, x24, Q_21, x21, x25, x19);
         out_p0[2] = x28*rigidsym_sumprod3(Q_02, x24, Q_12, x19, x26, x21);
-        out_pitch[0] = (x14*(-((double)a_0) - ((double)x23)) + x15*(-((double)a_1) - ((double)x18)) + x16*(-((double)a_2) - ((double)x20)))/x17;
+        out_pitch[0] = (x14*(-((double)a_0) - ((double)x23)) + x15*(-((double)a_1) - ((double)x18)) + x16*(-((double)a_2) - ((double)x20)))/((double)x17);
         out_plucker[0] = x32;
         out_plucker[1] = x33;
         out_plucker[2] = x34;
-        out_plucker[3] = -((double)x28)*((double)x33)*((double)x39) + ((double)x28)*((double)x34)*((double)x38);
+        out_plucker[3] = -((double)x28)*((double)x33)*x39 + ((double)x28)*((double)x34)*x38;
         out_plucker[4] = x28*x32*x39 - x28*x34*x40;
-        out_plucker[5] = -((double)x28)*((double)x32)*((double)x38) + ((double)x28)*((double)x33)*((double)x40);
+        out_plucker[5] = -x28*x32*x38 + x28*x33*x40;
         singular |= (((double)x30)) == 0.0;
-        singular |= (x9) == 0.0;
+        singular |= (((double)x9)) == 0.0;
         singular |= (((double)x27)) == 0.0;
-        singular |= (x17) == 0.0;
+        singular |= (((double)x17)) == 0.0;
         const double finite = ((((x13 - x13) + (x17 - x17)) + ((x28 - x28) + ((x29 - x29) + (x31 - x31)))) + (((out_pitch[0] - out_pitch[0]) + (x9 - x9)) + ((((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12))) + ((x27 - x27) + (x30 - x30)))));
         singular |= finite != finite;
     } else if (((double)Q_22) >= ((double)Q_00) && ((double)Q_22) >= ((double)Q_11) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) < 0.0) {
@@ -512,32 +512,32 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         const double x2 = ((double)x0) + ((double)x1);
         const float x3 = (x2*x2);
         const float x4 = (0.5f)*Q_12;
-        const float x5 = (0.5f)*Q_21 + x4;
+        const double x5 = (0.5)*((double)Q_21) + ((double)x4);
         const float x6 = (x5*x5);
         const double x7 = (0.5)*((double)Q_00) + (0.5)*((double)Q_11) - 0.5;
         const double x8 = (0.5)*((double)Q_22) - x7;
-        const float x9 = (x8*x8);
-        const float x10 = x3 + x6 + x9;
+        const double x9 = (x8*x8);
+        const double x10 = ((double)x3) + ((double)x6) + x9;
         const float x11 = x0 - x1;
         const float x12 = (0.5f)*Q_21 - x4;
         const float x13 = -0.5f*Q_01 + (0.5f)*Q_10;
-        const float x14 = ((x11*x5 + x12*x2 + x13*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x10);
+        const float x14 = ((x11*x5 + x12*x2 + x13*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrt(x10);
         const double x15 = ((double)x14)*x2;
-        const double x16 = ((double)x14)*((double)x5);
+        const double x16 = ((double)x14)*x5;
         const double x17 = ((double)x14)*x8;
-        const double x18 = atan2(sqrt((((double)x11)*((double)x11)) + (((double)x12)*((double)x12)) + (((double)x13)*((double)x13))), (0.5)*((double)Q_22) + x7);
+        const float x18 = atan2(sqrtf((x11*x11) + (x12*x12) + (x13*x13)), (0.5f)*Q_22 + x7);
         const float x19 = -a_prime_1;
         const float x20 = Q_10*a_0 + Q_11*a_1 + Q_12*a_2 + x19;
         const float x21 = -a_prime_2;
         const float x22 = Q_20*a_0 + Q_21*a_1 + Q_22*a_2 + x21;
         const float x23 = Q_00 - 1.0f;
         const float x24 = -a_prime_0;
-        const double x25 = ((double)Q_00)*((double)a_0) + ((double)Q_01)*((double)a_1) + ((double)Q_02)*((double)a_2) + ((double)x24);
+        const float x25 = Q_00*a_0 + Q_01*a_1 + Q_02*a_2 + x24;
         const float x26 = Q_10*x20 + Q_20*x22 + x23*x25;
         const float x27 = Q_11 - 1.0f;
         const float x28 = Q_22 - 1.0f;
         const float x29 = -(x23) - (x27) - (x28);
-        const float x30 = 1.0f/x29;
+        const double x30 = 1.0/((double)x29);
         const float x31 = Q_01*x25 + Q_21*x22 + x20*x27;
         const float x32 = Q_02*x25 + Q_12*x20 + x22*x28;
         const float x33 = 1.0f/x10;
@@ -553,7 +553,7 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_p0[0] = x26*x30;
         out_p0[1] = x30*x31;
         out_p0[2] = x30*x32;
-        out_pitch[0] = (x15*(-((double)a_0) - ((double)x24)) + x16*(-((double)a_1) - ((double)x19)) + x17*(-((double)a_2) - ((double)x21)))/x18;
+        out_pitch[0] = (x15*(-((double)a_0) - ((double)x24)) + x16*(-((double)a_1) - ((double)x19)) + x17*(-((double)a_2) - ((double)x21)))/((double)x18);
         out_plucker[0] = x36;
         out_plucker[1] = x37;
         out_plucker[2] = x38;
@@ -561,9 +561,9 @@ static inline int rigidsym_screw_of_displacement_sample_f32(
         out_plucker[4] = -x26*x30*x38 + x30*x32*x36;
         out_plucker[5] = x26*x30*x37 - x30*x31*x36;
         singular |= (((double)x34)) == 0.0;
-        singular |= (((double)x10)) == 0.0;
+        singular |= (x10) == 0.0;
         singular |= (((double)x29)) == 0.0;
-        singular |= (x18) == 0.0;
+        singular |= (((double)x18)) == 0.0;
         const double finite = ((((x14 - x14) + (x18 - x18)) + ((x30 - x30) + ((x33 - x33) + (x35 - x35)))) + (((out_pitch[0] - out_pitch[0]) + (x10 - x10)) + ((((x11*x11) + (x12*x12) + (x13*x13)) - ((x11*x11) + (x12*x12) + (x13*x13))) + ((x29 - x29) + (x34 - x34)))));
         singular |= finite != finite;
     } else if (((double)Q_02) >= ((double)Q_20) && ((double)Q_10) >= ((double)Q_01) && ((double)Q_21) >= ((double)Q_12) && ((double)Q_02) <= ((double)Q_20) && ((double)Q_10) <= ((double)Q_01) && ((double)Q_21) <= ((double)Q_12) && ((double)Q_00) + ((double)Q_11) + ((double)Q_22) > 1.0) {

@@ -21,7 +21,7 @@
  *     Jacobian of a norm's quotient (f x n / ||f||^2 differentiated) sums several of them;
  *     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
  *     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 38 points of
- *     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.2 -> 0.74,
+ *     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.6 -> 0.74,
  *     never worse than the textbook formula by that rule; equal to the declared formula by the
  *     zero test (exact-cancel)
  *
@@ -30,10 +30,10 @@
  * Singular set: f = 0 (pure moment)
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
- * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.742 of what
+ * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.738 of what
  * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
- *   x0, x1, x2, x3, x4, x5, x7, x9, x10, x12, x13, x15, x16, x18, x35, x49, x51, x61, x62
+ *   x0, x1, x2, x3, x4, x5, x9, x10, x12, x13, x15, x16, x35, x42, x49, x51, x61, x62, x72
  */
 #ifndef RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
 #define RIGIDSYM_WRENCH_AXIS_WITH_JACOBIANS_H
@@ -287,7 +287,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const double x4 = x0 + x3;
         const double x5 = 1.0/x4;
         const float x6 = a_0*w_A_4;
-        const double x7 = -((double)a_1)*((double)w_A_3) + ((double)w_A_2);
+        const float x7 = -a_1*w_A_3 + w_A_2;
         const float x8 = x6 + x7;
         const double x9 = -((double)a_0)*((double)w_A_5);
         const double x10 = ((double)a_2)*((double)w_A_3);
@@ -298,7 +298,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const double x15 = -((double)a_2)*((double)w_A_4) + ((double)w_A_0);
         const double x16 = ((double)x14) + x15;
         const float x17 = -w_A_3*x8 + w_A_5*x16;
-        const double x18 = ((double)w_A_3)*x12 - ((double)w_A_4)*x16;
+        const float x18 = w_A_3*x12 - w_A_4*x16;
         const float x19 = 1.0f/sqrt(x4);
         const float x20 = 1.0f/(x4*sqrt(x4));
         const float x21 = x18*x20;
@@ -322,7 +322,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const float x39 = 2.0f*x14 + x15;
         const float x40 = w_A_1 + 2.0f*x10 + x9;
         const float x41 = x18*x29;
-        const float x42 = 2.0f*a_2*w_A_4 - w_A_0 - x14;
+        const double x42 = 2.0*((double)a_2)*((double)w_A_4) - ((double)w_A_0) - ((double)x14);
         const float x43 = -x26 - x37;
         const float x44 = -w_A_3*x25;
         const float x45 = -w_A_3*x24;
@@ -352,7 +352,7 @@ static inline int rigidsym_wrench_axis_with_jacobians_sample_f32(
         const float x69 = x18*x51;
         const float x70 = x17*x51;
         const float x71 = x30*x62;
-        const float x72 = x13*x62;
+        const double x72 = x13*x62;
         const float x73 = -w_A_4*w_A_5*x72;
         const float x74 = x13*x51;
         const float x75 = w_A_4*x20;

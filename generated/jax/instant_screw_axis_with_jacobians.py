@@ -29,7 +29,7 @@
 #     Jacobian of a norm's quotient (f x n / ||f||^2 differentiated) sums several of them;
 #     worst ratio to the rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook
 #     formula and the forms tried, per point; rigidsym.codegen.accuracy.rule) at 42 points of
-#     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.2 -> 0.92,
+#     the regimes (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) 1.2 -> 0.88,
 #     never worse than the textbook formula by that rule; equal to the declared formula by the
 #     zero test (exact-cancel)
 """Instant screw axis of a twist: point, pitch and Plücker array, with the Jacobians of its outputs.

@@ -13,7 +13,7 @@
 #     rigidsym.codegen.accuracy.compensated.SumProd) it keeps about 1 u; worst ratio to the
 #     rule max(2 e_best, 4 u) (e_best: the most accurate of the textbook formula and the forms
 #     tried, per point; rigidsym.codegen.accuracy.rule) at 96 points of the regimes
-#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.38,
+#     (rigidsym.codegen.accuracy.regimes, exact, rounded to float64) a singular flag -> 0.31,
 #     never worse than the textbook formula by that rule; equal to the declared formula by the
 #     zero test (exact-cancel)
 """Intrinsic XYZ Euler angles of a rotation, both branches, and the gimbal-lock flag.

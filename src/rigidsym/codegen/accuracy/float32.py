@@ -40,7 +40,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rigidsym.codegen.accuracy import rule
+from rigidsym.codegen.accuracy import elementary, rule
 from rigidsym.codegen.accuracy.compensated import diffprod, sumprod
 from rigidsym.codegen.accuracy.error import budget, normwise, round_up, worst
 from rigidsym.codegen.accuracy.points import (  # noqa: F401  (the planner's points, re-exported)
@@ -51,7 +51,6 @@ from rigidsym.codegen.accuracy.points import (  # noqa: F401  (the planner's poi
     regime_inputs,
     sample_inputs,
 )
-from rigidsym.codegen.backends.numpy.printer import KernelNumPyPrinter
 
 __all__ = ["BUDGET", "U32", "N_RANDOM", "REGIME_SEEDS", "RANGE32", "sample_inputs",
            "regime_inputs", "plan_inputs", "choose", "ProgramSpec", "trig_spec", "plan_kernel"]
@@ -77,19 +76,21 @@ _F32, _F64 = np.float32, np.float64
 
 class _Shim:
     """``numpy`` for the printed expressions: the transcendental functions in double (C's
-    ``sin`` of a promoted float), everything else NumPy's (sqrt keeps its argument's type)."""
+    ``sin`` of a promoted float), with the values of
+    :mod:`rigidsym.codegen.accuracy.elementary` (the same on every machine); everything
+    else NumPy's (sqrt keeps its argument's type)."""
 
     def sin(self, x):
-        return np.sin(np.asarray(x, dtype=_F64))
+        return elementary.sin(np.asarray(x, dtype=_F64))
 
     def cos(self, x):
-        return np.cos(np.asarray(x, dtype=_F64))
+        return elementary.cos(np.asarray(x, dtype=_F64))
 
     def arctan2(self, y, x):
-        return np.arctan2(np.asarray(y, dtype=_F64), np.asarray(x, dtype=_F64))
+        return elementary.arctan2(np.asarray(y, dtype=_F64), np.asarray(x, dtype=_F64))
 
     def __getattr__(self, name):
-        return getattr(np, name)
+        return getattr(elementary.NUMPY, name)
 
 
 def _diffprod64(*args):
@@ -110,7 +111,7 @@ class ProgramSpec:
     (``trig_<k>`` symbols, computed in double by the batch loop)."""
 
     def __init__(self, temps: list, outputs: list, trig: dict | None = None):
-        npp = KernelNumPyPrinter()
+        npp = elementary.KERNEL_PRINTER()
         self.temps = [(str(s), compile(npp.doprint(e), str(s), "eval")) for s, e in temps]
         self.outputs = [compile(npp.doprint(e), f"out{j}", "eval")
                         for j, e in enumerate(outputs)]
@@ -249,7 +250,7 @@ def _search(nodes: list, ratios, r: np.ndarray) -> dict:
 def trig_spec(calls: dict, pre: list) -> dict:
     """The trig values of a split program: ``{trig_k: compiled double expression}`` (the
     prelude's temporaries substituted)."""
-    npp = KernelNumPyPrinter()
+    npp = elementary.KERNEL_PRINTER()
     defs = dict(pre)
     out = {}
     for name, call in calls.items():
@@ -265,7 +266,7 @@ def trig_spec(calls: dict, pre: list) -> dict:
 
 def _variant_points(variants, cols: dict) -> list[np.ndarray]:
     """Per variant, the points whose branch it is (conditions in double, first true wins)."""
-    npp = KernelNumPyPrinter()
+    npp = elementary.KERNEL_PRINTER()
     env64 = {k: np.asarray(v, dtype=_F64) for k, v in cols.items()}
     n = len(next(iter(cols.values())))
     left = np.ones(n, dtype=bool)

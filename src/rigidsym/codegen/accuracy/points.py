@@ -24,7 +24,8 @@ __all__ = ["GENERATOR_STEPS", "regime_points", "exact_points", "N_RANDOM", "REGI
            "RANGE32", "sample_inputs", "regime_inputs", "plan_inputs"]
 
 #: the approach steps of the generator's regimes (a subsample of the harness's, for time)
-GENERATOR_STEPS = [10.0**-k for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
+# decimal literals, correctly rounded everywhere (10.0**-k is the C library's pow)
+GENERATOR_STEPS = [float(f"1e-{k}") for k in (1, 3, 5, 7, 9, 11, 13, 15, 20, 100)]
 
 
 def regime_points(kernel, dtype, seeds, n_random: int = 8, small=None) -> list:

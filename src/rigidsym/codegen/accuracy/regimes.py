@@ -29,12 +29,14 @@ import math
 import numpy as np
 from flint import fmpq
 
+from rigidsym.codegen.accuracy import elementary
+
 #: log-spaced approaches: 1e-1 ... 1e-15, then toward the smallest useful step: the size
 #: whose fourth power (the highest power of a norm in the Jacobian kernels) is still a
 #: normal number, 1e-75 in float64; float32 goes to 1e-18 (its square). Below it a power of
 #: a norm underflows: the float format itself, not a formula, gives up.
-STEPS = [10.0**-k for k in range(1, 16)] + [1e-20, 1e-40, 1e-75]
-STEPS32 = [10.0**-k for k in range(1, 16)] + [1e-18]
+STEPS = [float(f"1e-{k}") for k in range(1, 16)] + [1e-20, 1e-40, 1e-75]
+STEPS32 = [float(f"1e-{k}") for k in range(1, 16)] + [1e-18]
 
 
 def q(x: float) -> fmpq:
@@ -136,7 +138,7 @@ def euler_rotation_exact(seq: str, angles: list) -> list[fmpq]:
     the Euler angles of a rotation."""
     Q = [[fmpq(int(r == k)) for k in range(3)] for r in range(3)]
     for ax, ang in zip(seq.lower(), angles, strict=True):
-        t = ang if ang is None or isinstance(ang, fmpq) else q(math.tan(ang / 2))
+        t = ang if ang is None or isinstance(ang, fmpq) else q(float(elementary.tan(ang / 2)))
         R = _axis_rotation("xyz".index(ax), t)
         Q = [[sum((Q[r][m] * R[m][k] for m in range(3)), fmpq(0)) for k in range(3)]
              for r in range(3)]

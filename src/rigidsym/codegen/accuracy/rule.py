@@ -72,10 +72,12 @@ _TEXTBOOK: dict = {}
 def _textbook_variants(kernel):
     """``[(cond or None, f)]`` per variant (branches first): the declaration's builds as
     declared, lambdified plainly for NumPy (no rewrite of the generator; CSE only shares
-    subexpressions, it changes no rounding; no docstring printing the expressions)."""
+    subexpressions, it changes no rounding; no docstring printing the expressions), with
+    :mod:`rigidsym.codegen.accuracy.elementary`'s correctly rounded functions."""
     import numpy as np
     import sympy as sp
 
+    from rigidsym.codegen.accuracy import elementary
     from rigidsym.codegen.spec import flat_symbols, input_symbols
     from rigidsym.codegen.spec import flatten_outputs as _flatten
 
@@ -91,13 +93,16 @@ def _textbook_variants(kernel):
             return np.select(conds, [np.asarray(c, dtype=dt["now"])
                                      if np.asarray(c).dtype.kind in "iub" else c
                                      for c in choices], default)
-        mods = [{"select": select}, "numpy"]
+        # sin, cos, atan2, asin, acos and pow correctly rounded: NumPy's loops differ per
+        # CPU, and a yardstick that moves with the machine moved the generated plans
+        mods = [{"select": select, "numpy": elementary.NUMPY}, "numpy"]
+        pr = elementary.TEXTBOOK_PRINTER
         out = [(sp.lambdify(flat, br.when(**syms), modules="math"),
                 sp.lambdify(flat, _flatten(kernel, br.build(**syms)), modules=mods, cse=True,
-                            docstring_limit=0))
+                            docstring_limit=0, printer=pr))
                for br in kernel.branches]
         out.append((None, sp.lambdify(flat, _flatten(kernel, kernel.build(**syms)),
-                                      modules=mods, cse=True, docstring_limit=0)))
+                                      modules=mods, cse=True, docstring_limit=0, printer=pr)))
         _TEXTBOOK[key] = (out, dt)
     return _TEXTBOOK[key]
 
@@ -106,7 +111,12 @@ def textbook(kernel, cols: list, dtype):
     """The textbook formula of ``kernel`` (its declaration, evaluated naively) in ``dtype``
     arithmetic: ``cols`` the flat inputs (one array per input symbol, in the order of
     :func:`rigidsym.codegen.spec.flat_symbols`); returns ``(n, outputs)`` float64, each row
-    by the variant the kernel takes there (the branches' conditions in float64)."""
+    by the variant the kernel takes there (the branches' conditions in float64). Its sin,
+    cos, atan2, asin, acos and pow are correctly rounded
+    (:mod:`rigidsym.codegen.accuracy.elementary`): "the formula in float32 arithmetic" is
+    the same yardstick on every machine, for the generator's plans, the tests and the
+    harness (NumPy's own loops differ per CPU by an ulp, which at the margin of the rule
+    moved plans and verdicts)."""
     import numpy as np
 
     variants, dt = _textbook_variants(kernel)
