@@ -32,7 +32,7 @@ import sympy as sp
 
 from rigidsym.core.config import KERNEL_SPEC
 
-__all__ = ["MANIFEST", "ENTRY_MODULES", "input_files", "manifest", "compare", "numpy_math"]
+__all__ = ["MANIFEST", "ENTRY_MODULES", "input_files", "manifest", "compare"]
 
 #: the manifest's name under generated/
 MANIFEST = "inputs.json"
@@ -146,38 +146,13 @@ def _sha(text: bytes) -> str:
     return hashlib.sha256(text).hexdigest()
 
 
-#: NumPy's inexact ufuncs the generation's measurements may call (float32 precision plans,
-#: accuracy ratios printed in the kernels' comments)
-_MATH_UFUNCS = ("sin cos tan arcsin arccos arctan arctan2 sinh cosh tanh arcsinh arccosh "
-                "arctanh exp exp2 expm1 log log2 log10 log1p cbrt power hypot")
-_TARGET_ORDER = ("X86_V4", "X86_V3")
-
-
-def numpy_math() -> str:
-    """``"numpy <version>, <target>"``: the NumPy build and the highest SIMD target its
-    float32/float64 transcendental loops run on this CPU (``X86_V4``, ``X86_V3`` or
-    ``baseline``; NumPy's ``np.lib.introspect.opt_func_info``). Those loops round differently
-    on different targets (AVX-512's against AVX2's, a few ulp), and generation measures float32
-    precision plans with them, so byte-for-byte regeneration holds only where this string is
-    the one ``generated/inputs.json`` records."""
-    import numpy as np
-
-    name = "^(" + "|".join(_MATH_UFUNCS.split()) + ")$"
-    current = {d["current"] for loops in np.lib.introspect.opt_func_info(func_name=name).values()
-               for sig, d in loops.items() if set(sig) <= set("fd")}
-    target = next((t for t in _TARGET_ORDER if any(c.startswith(t) for c in current)),
-                  "baseline")
-    return f"numpy {np.__version__}, {target}"
-
-
 def manifest(outputs: dict[str, str] | None = None) -> dict:
     """The record ``generated/inputs.json`` holds: ``inputs`` (label -> SHA-256 of every file of
     :func:`input_files`), ``sympy`` (its version, which the printed code depends on),
-    ``numpy_math`` (:func:`numpy_math`: where the measurements ran; recorded, not compared
-    here) and, when ``outputs`` (relative path -> text, the generation's files) is given,
+    and, when ``outputs`` (relative path -> text, the generation's files) is given,
     ``outputs`` (path -> SHA-256 of its UTF-8 text)."""
     roots = _roots()
-    rec: dict = {"format": 1, "sympy": sp.__version__, "numpy_math": numpy_math(),
+    rec: dict = {"format": 1, "sympy": sp.__version__,
                  "inputs": {_label(p, roots): _sha(p.read_bytes()) for p in input_files()}}
     if outputs is not None:
         rec["outputs"] = {rel: _sha(text.encode("utf-8")) for rel, text in sorted(outputs.items())
