@@ -74,8 +74,14 @@ OPEN = {
         # form and the textbook's; NumPy (float64 arithmetic, rounded once) the same
         ("screw_of_displacement", "c", "float32"): 1.4,
         ("screw_of_displacement", "numpy", "float32"): 1.4,
-        ("L_tilde_dot_with_jacobians", "c", "float32"): 1.3,
-        ("L_tilde_dot_with_jacobians", "numpy", "float32"): 1.3,
+        # since the plans and the textbook use correctly rounded sin, cos, atan2
+        # (rigidsym.codegen.accuracy.elementary; one yardstick on every CPU): 1.3 -> 1.50
+        # at a unit e off by ulps, and L_tilde_with_jacobians 1.09 at a random point (both
+        # on seeds 0-3; the search over every kernel no longer finds either)
+        ("L_tilde_dot_with_jacobians", "c", "float32"): 1.65,
+        ("L_tilde_dot_with_jacobians", "numpy", "float32"): 1.65,
+        ("L_tilde_with_jacobians", "c", "float32"): 1.2,
+        ("L_tilde_with_jacobians", "numpy", "float32"): 1.2,
         # issue 48's derived regimes (|w| -> 2 pi k, never approached before): on main the
         # 1 - cos form was 2.5e-2 off at 2 pi - 1e-9 (ratio ~1e13); the half-angle form is
         # within 8 u (kappa + 1) everywhere there but, a step 0.1 past 6 pi (|w| = 18.95),
