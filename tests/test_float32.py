@@ -154,7 +154,7 @@ def test_float32_error_bound_1000_points(name):
 #: do not reach (4000 reach more: 9 of 20000, worst 1.65, at 3x the plan's time). Before
 #: issue 37 the measure was 1 ulp of the float64 program, normwise. Since the plans and the
 #: textbook use correctly rounded sin, cos, atan2 (one yardstick on every CPU),
-#: screw_axis_point 1.19 at one of these points (its header: 1.0 of the rule at the planner's).
+#: screw_axis_point 1.19 at one of these points (its header: 0.956 of the rule at the planner's).
 OPEN_C_1000 = {"exponential_coordinates_left_jacobian_inverse": 1.6, "screw_axis_point": 1.31}
 
 
