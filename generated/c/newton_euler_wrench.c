@@ -48,12 +48,70 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_lanes(
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_omega_dot,
     const double *RIGIDSYM_RESTRICT in_c_ddot,
-    double *RIGIDSYM_RESTRICT out_w)
+    double *RIGIDSYM_RESTRICT out_w, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
-    /* No division, root or branch: nothing to count per sample. A plain loop; the
-     * compiler's cost model decides on vectorisation (forcing it turns the strided
-     * row-major loads into gathers, measured slower). */
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns; the outputs
+     * transposed back. Each lane's bits are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_I_C[9];
+        rigidsym_load_cols(in_I_C + 9 * rsv_j, 9, rsv_c_I_C);
+        for (int rsv_q = 0; rsv_q < 9; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_I_C[rsv_q]);
+        __m256d rsv_c_m[1];
+        rigidsym_load_cols(in_m + 1 * rsv_j, 1, rsv_c_m);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_m[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        __m256d rsv_c_omega_dot[3];
+        rigidsym_load_cols(in_omega_dot + 3 * rsv_j, 3, rsv_c_omega_dot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega_dot[rsv_q]);
+        __m256d rsv_c_c_ddot[3];
+        rigidsym_load_cols(in_c_ddot + 3 * rsv_j, 3, rsv_c_c_ddot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_c_ddot[rsv_q]);
+        const rigidsym_v4d I_C_00 = (rigidsym_v4d)rsv_c_I_C[0];
+        const rigidsym_v4d I_C_01 = (rigidsym_v4d)rsv_c_I_C[1];
+        const rigidsym_v4d I_C_02 = (rigidsym_v4d)rsv_c_I_C[2];
+        const rigidsym_v4d I_C_10 = (rigidsym_v4d)rsv_c_I_C[3];
+        const rigidsym_v4d I_C_11 = (rigidsym_v4d)rsv_c_I_C[4];
+        const rigidsym_v4d I_C_12 = (rigidsym_v4d)rsv_c_I_C[5];
+        const rigidsym_v4d I_C_20 = (rigidsym_v4d)rsv_c_I_C[6];
+        const rigidsym_v4d I_C_21 = (rigidsym_v4d)rsv_c_I_C[7];
+        const rigidsym_v4d I_C_22 = (rigidsym_v4d)rsv_c_I_C[8];
+        const rigidsym_v4d m = (rigidsym_v4d)rsv_c_m[0];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d omega_dot_0 = (rigidsym_v4d)rsv_c_omega_dot[0];
+        const rigidsym_v4d omega_dot_1 = (rigidsym_v4d)rsv_c_omega_dot[1];
+        const rigidsym_v4d omega_dot_2 = (rigidsym_v4d)rsv_c_omega_dot[2];
+        const rigidsym_v4d c_ddot_0 = (rigidsym_v4d)rsv_c_c_ddot[0];
+        const rigidsym_v4d c_ddot_1 = (rigidsym_v4d)rsv_c_c_ddot[1];
+        const rigidsym_v4d c_ddot_2 = (rigidsym_v4d)rsv_c_c_ddot[2];
+        const rigidsym_v4d x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
+        const rigidsym_v4d x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
+        const rigidsym_v4d x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
+        __m256d rsv_r_w[6];
+        rsv_r_w[0] = (__m256d)(I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1);
+        rsv_r_w[1] = (__m256d)(I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2);
+        rsv_r_w[2] = (__m256d)(I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2);
+        rsv_r_w[3] = (__m256d)(c_ddot_0*m);
+        rsv_r_w[4] = (__m256d)(c_ddot_1*m);
+        rsv_r_w[5] = (__m256d)(c_ddot_2*m);
+        rigidsym_store_cols(out_w + 6 * rsv_j, 6, rsv_r_w);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
         (void)rigidsym_newton_euler_wrench_sample(
             in_I_C + 9 * j,
@@ -64,6 +122,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_lanes(
             out_w + 6 * j);
 
     }
+#endif
     return count;
 }
 
@@ -106,6 +165,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
     double *RIGIDSYM_RESTRICT out_w)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -115,7 +176,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
             in_omega + 3 * j,
             in_omega_dot + 3 * j,
             in_c_ddot + 3 * j,
-            out_w + 6 * j);
+            out_w + 6 * j, &xs);
 
         any |= mask[g];
     }
@@ -124,16 +185,18 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_block(
 #else
     any |= rigidsym_any_nonfinite(out_w, 6 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_I_C, 9 * m);
-        rigidsym_extreme_add(&xs, in_m, 1 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
-        rigidsym_extreme_add(&xs, in_c_ddot, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_I_C, 9 * m);
+    rigidsym_extreme_add(&xs, in_m, 1 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+    rigidsym_extreme_add(&xs, in_c_ddot, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

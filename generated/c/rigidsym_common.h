@@ -442,6 +442,133 @@ static inline void rigidsym_extreme_add(rigidsym_extreme_acc *s,
 static inline int rigidsym_extreme_any(const rigidsym_extreme_acc *s) { return s->any; }
 #endif
 
+/* float64 lanes across samples (RIGIDSYM_VEC_F64, the kernels of VEC_F64 in
+ * rigidsym.codegen.backends.extension.target): on x86-64-v3 such a kernel's lanes function
+ * transposes each group of 4 samples' row-major inputs into columns of 4 (4 x 4 tiles of
+ * unpack and 128-bit permutes, contiguous loads, no gathers), runs the sample's arithmetic
+ * on GCC vector types (rigidsym_v4d: one IEEE operation per lane and operator, in the
+ * sample function's order, no contraction under -ffp-contract=off, so each lane's bits are
+ * the scalar sample's), feeds the same columns to the block's range filter while they are
+ * in registers, and transposes the outputs back. Measured against the row-major loop and
+ * its second pass: benchmarks/RESULTS.md. */
+#if defined(__AVX2__) && !defined(__AVX512F__) && defined(__GNUC__)
+#define RIGIDSYM_VEC_F64 1
+typedef double rigidsym_v4d __attribute__((vector_size(32)));
+/* the 4 x 4 transpose: rows r0..r3 in, their columns out (its own inverse) */
+static inline void rigidsym_tr4(__m256d r0, __m256d r1, __m256d r2, __m256d r3, __m256d *c)
+{
+    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+    c[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
+    c[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
+    c[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
+    c[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+/* c[q] = (p[q], p[w + q], p[2w + q], p[3w + q]) for q < w: the w columns of 4 consecutive
+ * rows of w doubles; reads exactly those 4w doubles (w is a constant at every call) */
+static inline __attribute__((always_inline)) void rigidsym_load_cols(
+    const double *RIGIDSYM_RESTRICT p, int w, __m256d *c)
+{
+    if (w == 1) {
+        c[0] = _mm256_loadu_pd(p);
+    } else if (w == 2) {
+        const __m256d v0 = _mm256_loadu_pd(p), v1 = _mm256_loadu_pd(p + 4);
+        const __m256d t0 = _mm256_permute2f128_pd(v0, v1, 0x20);
+        const __m256d t1 = _mm256_permute2f128_pd(v0, v1, 0x31);
+        c[0] = _mm256_unpacklo_pd(t0, t1);
+        c[1] = _mm256_unpackhi_pd(t0, t1);
+    } else if (w == 3) {
+        const __m256d v0 = _mm256_loadu_pd(p), v1 = _mm256_loadu_pd(p + 4);
+        const __m256d v2 = _mm256_loadu_pd(p + 8);
+        const __m256d m03 = _mm256_permute2f128_pd(v0, v1, 0x30);
+        const __m256d m14 = _mm256_permute2f128_pd(v0, v2, 0x21);
+        const __m256d m25 = _mm256_permute2f128_pd(v1, v2, 0x30);
+        c[0] = _mm256_shuffle_pd(m03, m14, 0xa);
+        c[1] = _mm256_shuffle_pd(m03, m25, 0x5);
+        c[2] = _mm256_shuffle_pd(m14, m25, 0xa);
+    } else {
+        int k = 0;
+        for (; k + 4 <= w; k += 4)
+            rigidsym_tr4(_mm256_loadu_pd(p + k), _mm256_loadu_pd(p + w + k),
+                         _mm256_loadu_pd(p + 2 * w + k), _mm256_loadu_pd(p + 3 * w + k), c + k);
+        if (w - k == 1) {
+            const __m128d lo = _mm_loadh_pd(_mm_load_sd(p + k), p + w + k);
+            const __m128d hi = _mm_loadh_pd(_mm_load_sd(p + 2 * w + k), p + 3 * w + k);
+            c[k] = _mm256_insertf128_pd(_mm256_castpd128_pd256(lo), hi, 1);
+        } else if (w - k == 2) {
+            const __m256d v02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(
+                _mm_loadu_pd(p + k)), _mm_loadu_pd(p + 2 * w + k), 1);
+            const __m256d v13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(
+                _mm_loadu_pd(p + w + k)), _mm_loadu_pd(p + 3 * w + k), 1);
+            c[k] = _mm256_unpacklo_pd(v02, v13);
+            c[k + 1] = _mm256_unpackhi_pd(v02, v13);
+        } else if (w - k == 3) {   /* the last 4 columns again, of which the last 3 */
+            __m256d t[4];
+            rigidsym_tr4(_mm256_loadu_pd(p + w - 4), _mm256_loadu_pd(p + 2 * w - 4),
+                         _mm256_loadu_pd(p + 3 * w - 4), _mm256_loadu_pd(p + 4 * w - 4), t);
+            c[k] = t[1];
+            c[k + 1] = t[2];
+            c[k + 2] = t[3];
+        }
+    }
+}
+/* the inverse: the w columns c[0..w) written as 4 rows of w doubles at p (exactly those) */
+static inline __attribute__((always_inline)) void rigidsym_store_cols(
+    double *RIGIDSYM_RESTRICT p, int w, const __m256d *c)
+{
+    if (w == 1) {
+        _mm256_storeu_pd(p, c[0]);
+    } else if (w == 2) {
+        const __m256d t0 = _mm256_unpacklo_pd(c[0], c[1]), t1 = _mm256_unpackhi_pd(c[0], c[1]);
+        _mm256_storeu_pd(p, _mm256_permute2f128_pd(t0, t1, 0x20));
+        _mm256_storeu_pd(p + 4, _mm256_permute2f128_pd(t0, t1, 0x31));
+    } else if (w == 3) {
+        const __m256d m03 = _mm256_shuffle_pd(c[0], c[1], 0x0);
+        const __m256d m14 = _mm256_shuffle_pd(c[2], c[0], 0xa);
+        const __m256d m25 = _mm256_shuffle_pd(c[1], c[2], 0xf);
+        _mm256_storeu_pd(p, _mm256_permute2f128_pd(m03, m14, 0x20));
+        _mm256_storeu_pd(p + 4, _mm256_permute2f128_pd(m25, m03, 0x30));
+        _mm256_storeu_pd(p + 8, _mm256_permute2f128_pd(m14, m25, 0x31));
+    } else {
+        __m256d t[4];
+        int k = 0;
+        for (; k + 4 <= w; k += 4) {
+            rigidsym_tr4(c[k], c[k + 1], c[k + 2], c[k + 3], t);
+            for (int s = 0; s < 4; ++s)
+                _mm256_storeu_pd(p + s * w + k, t[s]);
+        }
+        if (w - k == 1) {
+            const __m128d lo = _mm256_castpd256_pd128(c[k]), hi = _mm256_extractf128_pd(c[k], 1);
+            _mm_store_sd(p + k, lo);
+            _mm_storeh_pd(p + w + k, lo);
+            _mm_store_sd(p + 2 * w + k, hi);
+            _mm_storeh_pd(p + 3 * w + k, hi);
+        } else if (w - k == 2) {
+            const __m256d lo = _mm256_unpacklo_pd(c[k], c[k + 1]);
+            const __m256d hi = _mm256_unpackhi_pd(c[k], c[k + 1]);
+            _mm_storeu_pd(p + k, _mm256_castpd256_pd128(lo));
+            _mm_storeu_pd(p + w + k, _mm256_castpd256_pd128(hi));
+            _mm_storeu_pd(p + 2 * w + k, _mm256_extractf128_pd(lo, 1));
+            _mm_storeu_pd(p + 3 * w + k, _mm256_extractf128_pd(hi, 1));
+        } else if (w - k == 3) {   /* the last 4 columns, whose first was written already */
+            rigidsym_tr4(c[w - 4], c[w - 3], c[w - 2], c[w - 1], t);
+            for (int s = 0; s < 4; ++s)
+                _mm256_storeu_pd(p + s * w + w - 4, t[s]);
+        }
+    }
+}
+/* rigidsym_extreme_add over one column of 4 values: the same two reductions */
+static inline void rigidsym_extreme_add4(rigidsym_extreme_acc *s, __m256d x)
+{
+    const __m256i a = _mm256_and_si256(_mm256_castpd_si256(x),
+                                       _mm256_set1_epi64x(0x7fffffffffffffffLL));
+    s->hi = _mm256_max_epu32(s->hi, a);
+    s->lo = _mm256_min_epu32(s->lo, _mm256_sub_epi64(a, _mm256_set1_epi64x(1)));
+}
+#else
+#define RIGIDSYM_VEC_F64 0
+#endif
+
 /* The same for float32 values, range [2^-30, 2^31): the float arithmetic of a precision
  * plan squares and cubes (float overflows at 2^128). */
 static inline int rigidsym_any_extreme_f32(const float *RIGIDSYM_RESTRICT p, int64_t len)

@@ -9,6 +9,7 @@ points (``c_fast.h.j2``).
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import sympy as sp
@@ -19,7 +20,8 @@ from rigidsym.codegen.backends.extension.program import f32_code, finite_check, 
 from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.core import kinds as _kinds
 
-__all__ = ["TARGET", "TEMPLATES", "render", "render_kernel", "render_module"]
+__all__ = ["TARGET", "TEMPLATES", "SOA_F32", "SOA_F64", "VEC_F64", "render", "render_kernel",
+           "render_module", "vectorisable"]
 
 #: the target's templates
 TEMPLATES = Path(__file__).parent / "templates"
@@ -39,6 +41,26 @@ SOA_F32 = frozenset({"rotation_from_euler_rodrigues"})
 #: instructions a sample; the peer benchmark, N = 1e6, 1.22 -> 0.95 of the fastest peer,
 #: benchmarks/RESULTS.md)
 SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
+#: kernels whose float64 lanes function runs across samples on x86-64-v3 (``RIGIDSYM_VEC_F64``
+#: in ``c_common.h.j2``): inputs transposed to columns of 4 with AVX2 shuffles, the range
+#: filter fed from those columns in the same pass, the arithmetic on GCC vector types. K6's
+#: row-major loop is scalar (I_C is a group of 9) and its filter was a second pass: in a C
+#: driver, 8.9 -> 7.3 ns a sample in cache, 12.8 -> 10.2 at N = 1e6 (benchmarks/RESULTS.md).
+#: Only straight-line kernels qualify (:func:`vectorisable`).
+VEC_F64 = frozenset({"newton_euler_residual", "newton_euler_wrench"})
+#: a call in printed C (``name(``): the vector form has no vector version of a function
+_CALL = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\s*\(")
+
+
+def vectorisable(cvars: list[dict], never_singular: bool, trig) -> bool:
+    """Whether a kernel's printed sample function can run on GCC vector types as it is: one
+    variant, nothing to flag (no division, root, branch or finiteness test), no sin/cos and
+    no function call (``+``, ``-``, ``*`` and literals only, which act lane by lane)."""
+    if len(cvars) != 1 or not never_singular or trig:
+        return False
+    v = cvars[0]
+    texts = [e for _, e in v["temps"]] + list(v["outputs"])
+    return not any(_CALL.search(t) for t in texts)
 
 
 def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
@@ -59,13 +81,19 @@ def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
     # loop needs no count
     never_singular = len(cvars) == 1 and not divides and not cvars[0]["finite"]
     common = {"k": k, "meta": ctx.meta(kc), "inputs": kc.inputs, "divides": divides}
+    trig = trig_plan(kc, cp)
+    vec = k.name in VEC_F64
+    if vec and not vectorisable(cvars, never_singular, trig):
+        raise ValueError(f"VEC_F64 lists {k.name!r}, whose sample function is not "
+                         "straight-line arithmetic (one variant, nothing flagged, no call)")
     files = {}
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=ctx.header(kc, t), variants=cvars,
-                                                 used=used, trig=trig_plan(kc, cp),
+                                                 used=used, trig=trig,
                                                  never_singular=never_singular,
                                                  soa_f32=k.name in SOA_F32,
                                                  soa_f64=k.name in SOA_F64,
+                                                 vec_f64=vec,
                                                  f32=f32_code(kc), **common)
     return files
 
