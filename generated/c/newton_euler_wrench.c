@@ -54,8 +54,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_lanes(
 #if RIGIDSYM_VEC_F64
     /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
      * transposed to columns, which the block's range filter reads here, in registers, instead
-     * of in a second pass; the sample function's arithmetic on columns; the outputs
-     * transposed back. Each lane's bits are the scalar sample's. */
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
     rigidsym_extreme_acc rsv_xs = *xs;
     for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
         __m256d rsv_c_I_C[9];
@@ -112,6 +113,9 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_newton_euler_wrench_lanes(
     *xs = rsv_xs;
 #else
     (void)xs;
+    /* No division, root or branch: nothing to count per sample. A plain loop; the
+     * compiler's cost model decides on vectorisation (forcing it turns the strided
+     * row-major loads into gathers, measured slower). */
     for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
         (void)rigidsym_newton_euler_wrench_sample(
             in_I_C + 9 * j,

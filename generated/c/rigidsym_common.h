@@ -634,4 +634,57 @@ static inline double rigidsym_sumprod4(double a0, double b0, double a1, double b
     return p + s;
 }
 
+#if RIGIDSYM_VEC_F64
+/* The compensated helpers above on columns of 4 (the vector lanes of RIGIDSYM_VEC_F64):
+ * the same operations in the same order, fma as _mm256_fmadd_pd (one rounding, as fma),
+ * so each lane's result is the scalar helper's. A lane mask of the singular tests is a
+ * vector of 64-bit integers (0 or -1: GCC's vector comparisons). */
+typedef long long rigidsym_v4l __attribute__((vector_size(32)));
+#define RIGIDSYM_FMA_V4(a, b, c) \
+    ((rigidsym_v4d)_mm256_fmadd_pd((__m256d)(a), (__m256d)(b), (__m256d)(c)))
+static inline rigidsym_v4d rigidsym_diffprod_v4(rigidsym_v4d a, rigidsym_v4d b,
+                                                rigidsym_v4d c, rigidsym_v4d d)
+{
+    const rigidsym_v4d w = c * d;
+    const rigidsym_v4d e = RIGIDSYM_FMA_V4(-c, d, w);
+    const rigidsym_v4d f = RIGIDSYM_FMA_V4(a, b, -w);
+    return f + e;
+}
+#define RIGIDSYM_DOT2_STEP_V4(a, b) do { \
+        const rigidsym_v4d h_ = (a) * (b); \
+        const rigidsym_v4d r_ = RIGIDSYM_FMA_V4((a), (b), -h_); \
+        const rigidsym_v4d t_ = p + h_; \
+        const rigidsym_v4d z_ = t_ - p; \
+        s += ((p - (t_ - z_)) + (h_ - z_)) + r_; \
+        p = t_; \
+    } while (0)
+static inline rigidsym_v4d rigidsym_sumprod2_v4(rigidsym_v4d a0, rigidsym_v4d b0,
+                                                rigidsym_v4d a1, rigidsym_v4d b1)
+{
+    rigidsym_v4d p = a0 * b0, s = RIGIDSYM_FMA_V4(a0, b0, -p);
+    RIGIDSYM_DOT2_STEP_V4(a1, b1);
+    return p + s;
+}
+static inline rigidsym_v4d rigidsym_sumprod3_v4(rigidsym_v4d a0, rigidsym_v4d b0,
+                                                rigidsym_v4d a1, rigidsym_v4d b1,
+                                                rigidsym_v4d a2, rigidsym_v4d b2)
+{
+    rigidsym_v4d p = a0 * b0, s = RIGIDSYM_FMA_V4(a0, b0, -p);
+    RIGIDSYM_DOT2_STEP_V4(a1, b1);
+    RIGIDSYM_DOT2_STEP_V4(a2, b2);
+    return p + s;
+}
+static inline rigidsym_v4d rigidsym_sumprod4_v4(rigidsym_v4d a0, rigidsym_v4d b0,
+                                                rigidsym_v4d a1, rigidsym_v4d b1,
+                                                rigidsym_v4d a2, rigidsym_v4d b2,
+                                                rigidsym_v4d a3, rigidsym_v4d b3)
+{
+    rigidsym_v4d p = a0 * b0, s = RIGIDSYM_FMA_V4(a0, b0, -p);
+    RIGIDSYM_DOT2_STEP_V4(a1, b1);
+    RIGIDSYM_DOT2_STEP_V4(a2, b2);
+    RIGIDSYM_DOT2_STEP_V4(a3, b3);
+    return p + s;
+}
+#endif
+
 #endif /* RIGIDSYM_COMMON_H */

@@ -21,7 +21,7 @@ from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.core import kinds as _kinds
 
 __all__ = ["TARGET", "TEMPLATES", "SOA_F32", "SOA_F64", "VEC_F64", "render", "render_kernel",
-           "render_module", "vectorisable"]
+           "render_module", "vector_text", "vectorisable", "VEC_CALLS"]
 
 #: the target's templates
 TEMPLATES = Path(__file__).parent / "templates"
@@ -43,24 +43,41 @@ SOA_F32 = frozenset({"rotation_from_euler_rodrigues"})
 SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
 #: kernels whose float64 lanes function runs across samples on x86-64-v3 (``RIGIDSYM_VEC_F64``
 #: in ``c_common.h.j2``): inputs transposed to columns of 4 with AVX2 shuffles, the range
-#: filter fed from those columns in the same pass, the arithmetic on GCC vector types. K6's
-#: row-major loop is scalar (I_C is a group of 9) and its filter was a second pass: in a C
-#: driver, 8.9 -> 7.3 ns a sample in cache, 12.8 -> 10.2 at N = 1e6 (benchmarks/RESULTS.md).
-#: Only straight-line kernels qualify (:func:`vectorisable`).
-VEC_F64 = frozenset({"newton_euler_residual", "newton_euler_wrench"})
-#: a call in printed C (``name(``): the vector form has no vector version of a function
-_CALL = re.compile(r"[A-Za-z_][A-Za-z0-9_]*\s*\(")
+#: filter fed from those columns in the same pass instead of a second one, the arithmetic on
+#: GCC vector types. In a C driver against the row-major loop and its second pass (ns a
+#: sample, in cache / N = 1e6): K6 8.9 -> 7.3 / 12.8 -> 10.1, K4 5.4 -> 4.0 / 5.8 -> 4.5
+#: (benchmarks/RESULTS.md). Only kernels :func:`vectorisable` qualify.
+VEC_F64 = frozenset({"newton_euler_residual", "newton_euler_wrench",
+                     "instant_screw_point_pitch"})
+#: the functions a vectorised sample may call: each has a ``_v4`` form in ``c_common.h.j2``
+#: doing the same IEEE operations lane by lane (fma as ``_mm256_fmadd_pd``, one rounding)
+VEC_CALLS = frozenset({"rigidsym_diffprod", "rigidsym_sumprod2", "rigidsym_sumprod3",
+                       "rigidsym_sumprod4"})
+#: a call in printed C (``name(``)
+_CALL = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(")
 
 
-def vectorisable(cvars: list[dict], never_singular: bool, trig) -> bool:
+def vectorisable(cvars: list[dict], trig) -> bool:
     """Whether a kernel's printed sample function can run on GCC vector types as it is: one
-    variant, nothing to flag (no division, root, branch or finiteness test), no sin/cos and
-    no function call (``+``, ``-``, ``*`` and literals only, which act lane by lane)."""
-    if len(cvars) != 1 or not never_singular or trig:
+    variant (no branch), no sin/cos, and no call but those of :data:`VEC_CALLS`; ``+``,
+    ``-``, ``*``, ``/``, comparisons and literals act lane by lane."""
+    if len(cvars) != 1 or trig:
         return False
     v = cvars[0]
-    texts = [e for _, e in v["temps"]] + list(v["outputs"])
-    return not any(_CALL.search(t) for t in texts)
+    texts = [e for _, e in v["temps"]] + list(v["outputs"]) + list(v["dens"])
+    texts += [v["finite"]] if v["finite"] else []
+    return all(name in VEC_CALLS for t in texts for name in _CALL.findall(t))
+
+
+def vector_text(cvar: dict) -> dict:
+    """The printed sample ``cvar`` with its calls renamed to their ``_v4`` forms (the text the
+    vector lanes function evaluates on ``rigidsym_v4d`` columns)."""
+    def v4(t: str) -> str:
+        return _CALL.sub(lambda m: m.group(1) + "_v4(", t)
+    return {"temps": [(n, v4(e)) for n, e in cvar["temps"]],
+            "outputs": [v4(e) for e in cvar["outputs"]],
+            "dens": [v4(e) for e in cvar["dens"]],
+            "finite": v4(cvar["finite"]) if cvar["finite"] else None}
 
 
 def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
@@ -83,9 +100,10 @@ def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
     common = {"k": k, "meta": ctx.meta(kc), "inputs": kc.inputs, "divides": divides}
     trig = trig_plan(kc, cp)
     vec = k.name in VEC_F64
-    if vec and not vectorisable(cvars, never_singular, trig):
-        raise ValueError(f"VEC_F64 lists {k.name!r}, whose sample function is not "
-                         "straight-line arithmetic (one variant, nothing flagged, no call)")
+    if vec and (not vectorisable(cvars, trig) or k.name in SOA_F64):
+        raise ValueError(f"VEC_F64 lists {k.name!r}, whose sample function does not run on "
+                         "vector types as printed (a branch, sin/cos, a call without a _v4 "
+                         "form) or which SOA_F64 lists too")
     files = {}
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=ctx.header(kc, t), variants=cvars,
@@ -94,6 +112,7 @@ def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
                                                  soa_f32=k.name in SOA_F32,
                                                  soa_f64=k.name in SOA_F64,
                                                  vec_f64=vec,
+                                                 vec_text=vector_text(cvars[0]) if vec else None,
                                                  f32=f32_code(kc), **common)
     return files
 
