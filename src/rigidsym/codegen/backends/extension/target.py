@@ -57,7 +57,7 @@ VEC_CALLS = frozenset({"rigidsym_diffprod", "rigidsym_sumprod2", "rigidsym_sumpr
 _CALL = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(")
 
 
-def vectorisable(cvars: list[dict], trig) -> bool:
+def vectorisable(cvars: list[dict], trig: dict | None) -> bool:
     """Whether a kernel's printed sample function can run on GCC vector types as it is: one
     variant (no branch), no sin/cos, and no call but those of :data:`VEC_CALLS`; ``+``,
     ``-``, ``*``, ``/``, comparisons and literals act lane by lane."""
