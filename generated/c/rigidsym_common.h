@@ -450,8 +450,10 @@ static inline int rigidsym_extreme_any(const rigidsym_extreme_acc *s) { return s
  * sample function's order, no contraction under -ffp-contract=off, so each lane's bits are
  * the scalar sample's), feeds the same columns to the block's range filter while they are
  * in registers, and transposes the outputs back. Measured against the row-major loop and
- * its second pass: benchmarks/RESULTS.md. */
-#if defined(__AVX2__) && !defined(__AVX512F__) && defined(__GNUC__)
+ * its second pass: benchmarks/RESULTS.md. -DRIGIDSYM_NO_VEC_F64 compiles the row-major loop
+ * instead (the same bits: tests/test_vector_lanes.py compares the two). */
+#if defined(__AVX2__) && !defined(__AVX512F__) && defined(__GNUC__) && \
+    !defined(RIGIDSYM_NO_VEC_F64)
 #define RIGIDSYM_VEC_F64 1
 typedef double rigidsym_v4d __attribute__((vector_size(32)));
 /* the 4 x 4 transpose: rows r0..r3 in, their columns out (its own inverse) */
@@ -640,6 +642,14 @@ static inline double rigidsym_sumprod4(double a0, double b0, double a1, double b
  * so each lane's result is the scalar helper's. A lane mask of the singular tests is a
  * vector of 64-bit integers (0 or -1: GCC's vector comparisons). */
 typedef long long rigidsym_v4l __attribute__((vector_size(32)));
+/* c ? a : b per lane (c a comparison's lane mask, 0 or -1): the branch the scalar ternary
+ * takes, bit for bit; sqrt per lane, correctly rounded as sqrt() */
+static inline rigidsym_v4d rigidsym_select_v4_(rigidsym_v4l m, rigidsym_v4d a, rigidsym_v4d b)
+{
+    return (rigidsym_v4d)((m & (rigidsym_v4l)a) | (~m & (rigidsym_v4l)b));
+}
+#define rigidsym_select_v4(c, a, b) rigidsym_select_v4_((rigidsym_v4l)(c), (a), (b))
+#define rigidsym_sqrt_v4(x) ((rigidsym_v4d)_mm256_sqrt_pd((__m256d)(x)))
 #define RIGIDSYM_FMA_V4(a, b, c) \
     ((rigidsym_v4d)_mm256_fmadd_pd((__m256d)(a), (__m256d)(b), (__m256d)(c)))
 static inline rigidsym_v4d rigidsym_diffprod_v4(rigidsym_v4d a, rigidsym_v4d b,

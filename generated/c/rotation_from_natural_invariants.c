@@ -55,7 +55,7 @@
 static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes(
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
-    double *RIGIDSYM_RESTRICT out_Q)
+    double *RIGIDSYM_RESTRICT out_Q, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -88,6 +88,59 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes
                 trig_1[j] = cos(x1);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d x0 = (e_0*e_0);
+        const rigidsym_v4d x2 = trig_0;
+        const rigidsym_v4d x3 = (x2*x2);
+        const rigidsym_v4d x4 = 2.0*x3;
+        const rigidsym_v4d x5 = trig_1;
+        const rigidsym_v4d x6 = rigidsym_select_v4((x3 < 0.5), (1.0 - x4), (2.0*(x5*x5) - 1.0));
+        const rigidsym_v4d x7 = e_0*x4;
+        const rigidsym_v4d x8 = e_1*x7;
+        const rigidsym_v4d x9 = 2.0*x2*x5;
+        const rigidsym_v4d x10 = e_2*x9;
+        const rigidsym_v4d x11 = e_2*x7;
+        const rigidsym_v4d x12 = e_1*x9;
+        const rigidsym_v4d x13 = (e_1*e_1);
+        const rigidsym_v4d x14 = e_0*x9;
+        const rigidsym_v4d x15 = (e_2*e_2);
+        __m256d rsv_r_Q[9];
+        rsv_r_Q[0] = (__m256d)(x0 + x6*(1.0 - x0));
+        rsv_r_Q[1] = (__m256d)(-x10 + x8);
+        rsv_r_Q[2] = (__m256d)(x11 + x12);
+        rsv_r_Q[3] = (__m256d)(x10 + x8);
+        rsv_r_Q[4] = (__m256d)(x13 + x6*(1.0 - x13));
+        rsv_r_Q[5] = (__m256d)(2.0*e_1*e_2*x3 - x14);
+        rsv_r_Q[6] = (__m256d)(x11 - x12);
+        rsv_r_Q[7] = (__m256d)(e_1*e_2*x4 + x14);
+        rsv_r_Q[8] = (__m256d)(x15 + x6*(1.0 - x15));
+        rigidsym_store_cols(out_Q + 9 * rsv_j, 9, rsv_r_Q);
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_rotation_from_natural_invariants_sample_trig(
             in_e + 3 * j,
@@ -96,6 +149,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_lanes
             trig_1[j],
             out_Q + 9 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -157,13 +211,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_block
     double *RIGIDSYM_RESTRICT out_Q)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_rotation_from_natural_invariants_lanes(
             in_e + 3 * j,
             in_phi + 1 * j,
-            out_Q + 9 * j);
+            out_Q + 9 * j, &xs);
 
         any |= mask[g];
     }
@@ -172,13 +228,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_natural_invariants_block
 #else
     any |= rigidsym_any_nonfinite(out_Q, 9 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

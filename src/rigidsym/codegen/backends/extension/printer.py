@@ -14,7 +14,7 @@ from sympy.printing.c import C99CodePrinter
 
 from rigidsym.codegen.backends.printing import KernelPrinterMixin, dyadic_repr
 
-__all__ = ["KernelCPrinter", "KernelCFloatPrinter", "c_code"]
+__all__ = ["KernelCPrinter", "KernelCFloatPrinter", "KernelCVectorPrinter", "c_code"]
 
 
 class KernelCPrinter(KernelPrinterMixin, C99CodePrinter):
@@ -45,6 +45,31 @@ class KernelCPrinter(KernelPrinterMixin, C99CodePrinter):
 
     def _print_Integer(self, expr):  # doubles throughout: 2 -> 2.0
         return f"{int(expr)}.0"
+
+
+class KernelCVectorPrinter(KernelCPrinter):
+    """The same programs on columns of 4 samples (``rigidsym_v4d``, GCC vector types: the
+    vector lanes of ``RIGIDSYM_VEC_F64`` in ``c_common.h.j2``): operators act lane by lane as
+    printed; the compensated helpers and the square root by their ``_v4`` forms (the same
+    operations); a ``Piecewise`` as ``rigidsym_select_v4`` of both branches by the condition's
+    lane mask (each lane gets the branch the scalar ternary takes, bit for bit; the other
+    branch is evaluated too, which can only raise a floating-point flag, and a raised flag
+    only sends the block to its exact per-sample test)."""
+
+    _diffprod = "rigidsym_diffprod_v4"
+    _sumprod = "rigidsym_sumprod{n}_v4"
+
+    def _sqrt(self, arg: str) -> str:
+        return f"rigidsym_sqrt_v4({arg})"
+
+    def _print_Piecewise(self, expr):
+        *head, (last, cond) = expr.args
+        if cond is not sp.true:
+            raise ValueError("Piecewise without a default branch")
+        text = self._print(last)
+        for e, c in reversed(head):
+            text = f"rigidsym_select_v4(({self._print(c)}), ({self._print(e)}), ({text}))"
+        return text
 
 
 class KernelCFloatPrinter(KernelCPrinter):

@@ -15,9 +15,10 @@ from pathlib import Path
 import sympy as sp
 
 from rigidsym.codegen.backends import RenderContext, Target, kernel_files, shared_environment
-from rigidsym.codegen.backends.extension.printer import KernelCPrinter
+from rigidsym.codegen.backends.extension.printer import KernelCPrinter, KernelCVectorPrinter
 from rigidsym.codegen.backends.extension.program import f32_code, finite_check, trig_plan
 from rigidsym.codegen.backends.printing import program_lines
+from rigidsym.codegen.optimise import trig_split
 from rigidsym.core import kinds as _kinds
 
 __all__ = ["TARGET", "TEMPLATES", "SOA_F32", "SOA_F64", "VEC_F64", "render", "render_kernel",
@@ -44,40 +45,37 @@ SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
 #: kernels whose float64 lanes function runs across samples on x86-64-v3 (``RIGIDSYM_VEC_F64``
 #: in ``c_common.h.j2``): inputs transposed to columns of 4 with AVX2 shuffles, the range
 #: filter fed from those columns in the same pass instead of a second one, the arithmetic on
-#: GCC vector types. In a C driver against the row-major loop and its second pass (ns a
-#: sample, in cache / N = 1e6): K6 8.9 -> 7.3 / 12.8 -> 10.1, K4 5.4 -> 4.0 / 5.8 -> 4.5
-#: (benchmarks/RESULTS.md). Only kernels :func:`vectorisable` qualify.
+#: GCC vector types (for a kernel with sin/cos, the per-sample loop after the sin/cos loop).
+#: In a C driver against the row-major loop and its second pass (ns a sample, in cache /
+#: N = 1e6): K6 8.9 -> 7.0 / 13.6 -> 11.2, K4 5.4 -> 4.2 / 5.9 -> 5.0 (benchmarks/RESULTS.md).
+#: Only kernels whose vector text is :func:`vectorisable` qualify.
 VEC_F64 = frozenset({"newton_euler_residual", "newton_euler_wrench",
-                     "instant_screw_point_pitch"})
-#: the functions a vectorised sample may call: each has a ``_v4`` form in ``c_common.h.j2``
-#: doing the same IEEE operations lane by lane (fma as ``_mm256_fmadd_pd``, one rounding)
-VEC_CALLS = frozenset({"rigidsym_diffprod", "rigidsym_sumprod2", "rigidsym_sumprod3",
-                       "rigidsym_sumprod4"})
+                     "instant_screw_point_pitch", "rotation_from_natural_invariants"})
+#: the functions the vector text may call: each is defined in ``c_common.h.j2`` and does the
+#: scalar form's IEEE operations lane by lane (fma as ``_mm256_fmadd_pd``, one rounding)
+VEC_CALLS = frozenset({"rigidsym_diffprod_v4", "rigidsym_sumprod2_v4", "rigidsym_sumprod3_v4",
+                       "rigidsym_sumprod4_v4", "rigidsym_select_v4", "rigidsym_sqrt_v4"})
 #: a call in printed C (``name(``)
 _CALL = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(")
+#: C's ternary and logical operators (defined for scalars, not GCC's vector types in C)
+_SCALAR_OP = re.compile(r"\?|&&|\|\||!(?!=)")
 
 
-def vectorisable(cvars: list[dict], trig: dict | None) -> bool:
-    """Whether a kernel's printed sample function can run on GCC vector types as it is: one
-    variant (no branch), no sin/cos, and no call but those of :data:`VEC_CALLS`; ``+``,
-    ``-``, ``*``, ``/``, comparisons and literals act lane by lane."""
-    if len(cvars) != 1 or trig:
-        return False
-    v = cvars[0]
-    texts = [e for _, e in v["temps"]] + list(v["outputs"]) + list(v["dens"])
-    texts += [v["finite"]] if v["finite"] else []
-    return all(name in VEC_CALLS for t in texts for name in _CALL.findall(t))
+def vector_text(program, kernel) -> dict:
+    """``program`` printed on columns of 4 samples (:class:`KernelCVectorPrinter`):
+    ``{"temps", "outputs", "dens", "finite"}`` as the templates read them."""
+    vp = KernelCVectorPrinter()
+    return {**program_lines(program, vp), "finite": finite_check(program, kernel, vp) or None}
 
 
-def vector_text(cvar: dict) -> dict:
-    """The printed sample ``cvar`` with its calls renamed to their ``_v4`` forms (the text the
-    vector lanes function evaluates on ``rigidsym_v4d`` columns)."""
-    def v4(t: str) -> str:
-        return _CALL.sub(lambda m: m.group(1) + "_v4(", t)
-    return {"temps": [(n, v4(e)) for n, e in cvar["temps"]],
-            "outputs": [v4(e) for e in cvar["outputs"]],
-            "dens": [v4(e) for e in cvar["dens"]],
-            "finite": v4(cvar["finite"]) if cvar["finite"] else None}
+def vectorisable(text: dict) -> bool:
+    """Whether a vector text (:func:`vector_text`) runs as printed on GCC vector types: no
+    call but those of :data:`VEC_CALLS`, and no ternary or logical operator (which C defines
+    for scalars only); ``+``, ``-``, ``*``, ``/``, comparisons and literals act lane by lane."""
+    texts = [e for _, e in text["temps"]] + list(text["outputs"]) + list(text["dens"])
+    texts += [text["finite"]] if text["finite"] else []
+    return all(name in VEC_CALLS for t in texts for name in _CALL.findall(t)) and not any(
+        _SCALAR_OP.search(t) for t in texts)
 
 
 def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
@@ -100,10 +98,17 @@ def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
     common = {"k": k, "meta": ctx.meta(kc), "inputs": kc.inputs, "divides": divides}
     trig = trig_plan(kc, cp)
     vec = k.name in VEC_F64
-    if vec and (not vectorisable(cvars, trig) or k.name in SOA_F64):
-        raise ValueError(f"VEC_F64 lists {k.name!r}, whose sample function does not run on "
-                         "vector types as printed (a branch, sin/cos, a call without a _v4 "
-                         "form) or which SOA_F64 lists too")
+    vtext = None
+    if vec:
+        split = trig_split(kc) if trig else None
+        if (split is None and len(kc.variants) != 1) or k.name in SOA_F64:
+            raise ValueError(f"VEC_F64 lists {k.name!r}, which has several variants (a "
+                             "branch per sample) or which SOA_F64 lists too")
+        vtext = vector_text(split["program"] if split else kc.variants[0].program, k)
+        if not vectorisable(vtext):
+            raise ValueError(f"VEC_F64 lists {k.name!r}, whose sample calls a function "
+                             "without a _v4 form or has a ternary or logical operator: "
+                             f"{vtext}")
     files = {}
     for t, path in (("c_kernel.h.j2", f"c/{k.name}.h"), ("c_kernel.c.j2", f"c/{k.name}.c")):
         files[path] = env.get_template(t).render(header=ctx.header(kc, t), variants=cvars,
@@ -112,7 +117,7 @@ def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
                                                  soa_f32=k.name in SOA_F32,
                                                  soa_f64=k.name in SOA_F64,
                                                  vec_f64=vec,
-                                                 vec_text=vector_text(cvars[0]) if vec else None,
+                                                 vec_text=vtext,
                                                  f32=f32_code(kc), **common)
     return files
 
