@@ -47,7 +47,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_lanes(
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     const double *RIGIDSYM_RESTRICT in_omega,
-    double *RIGIDSYM_RESTRICT out_H_tilde_dot)
+    double *RIGIDSYM_RESTRICT out_H_tilde_dot, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -80,6 +80,66 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_lanes(
                 trig_1[j] = cos(x0);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d x1 = trig_0;
+        const rigidsym_v4d x2 = e_0*x1;
+        const rigidsym_v4d x3 = e_1*x1;
+        const rigidsym_v4d x4 = e_2*x1;
+        const rigidsym_v4d x5 = -omega_0*x2 - omega_1*x3 - omega_2*x4;
+        const rigidsym_v4d x6 = trig_1;
+        const rigidsym_v4d x7 = -e_0*omega_1*x1 + omega_0*x3 + omega_2*x6;
+        const rigidsym_v4d x8 = -x7;
+        const rigidsym_v4d x9 = -omega_0*x4 + omega_1*x6 + omega_2*x2;
+        const rigidsym_v4d x10 = -e_1*omega_2*x1 + omega_0*x6 + omega_1*x4;
+        const rigidsym_v4d x11 = -x10;
+        const rigidsym_v4d x12 = -x9;
+        __m256d rsv_r_H_tilde_dot[12];
+        rsv_r_H_tilde_dot[0] = (__m256d)(x5);
+        rsv_r_H_tilde_dot[1] = (__m256d)(x8);
+        rsv_r_H_tilde_dot[2] = (__m256d)(x9);
+        rsv_r_H_tilde_dot[3] = (__m256d)(x11);
+        rsv_r_H_tilde_dot[4] = (__m256d)(x7);
+        rsv_r_H_tilde_dot[5] = (__m256d)(x5);
+        rsv_r_H_tilde_dot[6] = (__m256d)(x11);
+        rsv_r_H_tilde_dot[7] = (__m256d)(x12);
+        rsv_r_H_tilde_dot[8] = (__m256d)(x12);
+        rsv_r_H_tilde_dot[9] = (__m256d)(x10);
+        rsv_r_H_tilde_dot[10] = (__m256d)(x5);
+        rsv_r_H_tilde_dot[11] = (__m256d)(x8);
+        rigidsym_store_cols(out_H_tilde_dot + 12 * rsv_j, 12, rsv_r_H_tilde_dot);
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_H_tilde_dot_sample_trig(
             in_e + 3 * j,
@@ -89,6 +149,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_lanes(
             trig_1[j],
             out_H_tilde_dot + 12 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -153,6 +214,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_block(
     double *RIGIDSYM_RESTRICT out_H_tilde_dot)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
@@ -160,7 +223,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_block(
             in_e + 3 * j,
             in_phi + 1 * j,
             in_omega + 3 * j,
-            out_H_tilde_dot + 12 * j);
+            out_H_tilde_dot + 12 * j, &xs);
 
         any |= mask[g];
     }
@@ -169,14 +232,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_H_tilde_dot_block(
 #else
     any |= rigidsym_any_nonfinite(out_H_tilde_dot, 12 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -55,7 +55,7 @@
 static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_lanes(
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
-    double *RIGIDSYM_RESTRICT out_L_matrix)
+    double *RIGIDSYM_RESTRICT out_L_matrix, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -88,6 +88,65 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_lanes(
                 trig_1[j] = cos(x1);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d x0 = (e_2*e_2);
+        const rigidsym_v4d x2 = trig_0;
+        const rigidsym_v4d x3 = (x2*x2);
+        const rigidsym_v4d x4 = trig_1;
+        const rigidsym_v4d x5 = (0.5)*rigidsym_select_v4((x3 < 0.5), (1.0 - 2.0*x3), (2.0*(x4*x4) - 1.0));
+        const rigidsym_v4d x6 = (0.5)*x0 + x5*(1.0 - x0);
+        const rigidsym_v4d x7 = (e_1*e_1);
+        const rigidsym_v4d x8 = x5*(1.0 - x7) + (0.5)*x7;
+        const rigidsym_v4d x9 = e_0*x3;
+        const rigidsym_v4d x10 = e_1*x9;
+        const rigidsym_v4d x11 = x2*x4;
+        const rigidsym_v4d x12 = e_2*x11;
+        const rigidsym_v4d x13 = e_2*x9;
+        const rigidsym_v4d x14 = e_1*x11;
+        const rigidsym_v4d x15 = (e_0*e_0);
+        const rigidsym_v4d x16 = (0.5)*x15 + x5*(1.0 - x15);
+        const rigidsym_v4d x17 = e_0*x11;
+        const rigidsym_v4d x18 = e_1*e_2*x3;
+        __m256d rsv_r_L_matrix[12];
+        rsv_r_L_matrix[0] = (__m256d)(x6 + x8);
+        rsv_r_L_matrix[1] = (__m256d)(-x10 + x12);
+        rsv_r_L_matrix[2] = (__m256d)(-x13 - x14);
+        rsv_r_L_matrix[3] = (__m256d)(-x10 - x12);
+        rsv_r_L_matrix[4] = (__m256d)(x16 + x6);
+        rsv_r_L_matrix[5] = (__m256d)(x17 - x18);
+        rsv_r_L_matrix[6] = (__m256d)(-x13 + x14);
+        rsv_r_L_matrix[7] = (__m256d)(-x17 - x18);
+        rsv_r_L_matrix[8] = (__m256d)(x16 + x8);
+        rsv_r_L_matrix[9] = (__m256d)(-2.0*x17);
+        rsv_r_L_matrix[10] = (__m256d)(-2.0*x14);
+        rsv_r_L_matrix[11] = (__m256d)(-2.0*x12);
+        rigidsym_store_cols(out_L_matrix + 12 * rsv_j, 12, rsv_r_L_matrix);
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_L_matrix_sample_trig(
             in_e + 3 * j,
@@ -96,6 +155,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_lanes(
             trig_1[j],
             out_L_matrix + 12 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -157,13 +217,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_block(
     double *RIGIDSYM_RESTRICT out_L_matrix)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_L_matrix_lanes(
             in_e + 3 * j,
             in_phi + 1 * j,
-            out_L_matrix + 12 * j);
+            out_L_matrix + 12 * j, &xs);
 
         any |= mask[g];
     }
@@ -172,13 +234,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_block(
 #else
     any |= rigidsym_any_nonfinite(out_L_matrix, 12 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

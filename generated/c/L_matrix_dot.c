@@ -56,7 +56,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_lanes(
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     const double *RIGIDSYM_RESTRICT in_omega,
-    double *RIGIDSYM_RESTRICT out_L_matrix_dot)
+    double *RIGIDSYM_RESTRICT out_L_matrix_dot, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -89,6 +89,84 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_lanes(
                 trig_1[j] = cos(x0);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d x1 = trig_0;
+        const rigidsym_v4d x2 = (x1*x1);
+        const rigidsym_v4d x3 = 2.0*x2;
+        const rigidsym_v4d x4 = e_0*x3;
+        const rigidsym_v4d x5 = e_2*x4;
+        const rigidsym_v4d x6 = trig_1;
+        const rigidsym_v4d x7 = 2.0*x1*x6;
+        const rigidsym_v4d x8 = e_1*x7;
+        const rigidsym_v4d x9 = x5 - x8;
+        const rigidsym_v4d x10 = (0.5)*omega_1;
+        const rigidsym_v4d x11 = e_1*x4;
+        const rigidsym_v4d x12 = e_2*x7;
+        const rigidsym_v4d x13 = x11 + x12;
+        const rigidsym_v4d x14 = e_0*x7;
+        const rigidsym_v4d x15 = omega_0*x14 + omega_1*x8 + omega_2*x12;
+        const rigidsym_v4d x16 = e_1*e_2*x3;
+        const rigidsym_v4d x17 = x14 + x16;
+        const rigidsym_v4d x18 = (e_1*e_1);
+        const rigidsym_v4d x19 = rigidsym_select_v4((x2 < 0.5), (1.0 - x3), (2.0*(x6*x6) - 1.0));
+        const rigidsym_v4d x20 = x18 + x19*(1.0 - x18);
+        const rigidsym_v4d x21 = x14 - x16;
+        const rigidsym_v4d x22 = -x21;
+        const rigidsym_v4d x23 = (e_2*e_2);
+        const rigidsym_v4d x24 = x19*(1.0 - x23) + x23;
+        const rigidsym_v4d x25 = (0.5)*omega_0;
+        const rigidsym_v4d x26 = (e_0*e_0);
+        const rigidsym_v4d x27 = x19*(1.0 - x26) + x26;
+        const rigidsym_v4d x28 = (0.5)*omega_2;
+        const rigidsym_v4d x29 = x11 - x12;
+        const rigidsym_v4d x30 = x5 + x8;
+        __m256d rsv_r_L_matrix_dot[12];
+        rsv_r_L_matrix_dot[0] = (__m256d)((0.5)*omega_2*x13 - x10*x9 - x15);
+        rsv_r_L_matrix_dot[1] = (__m256d)((0.5)*omega_2*x20 - x10*x17);
+        rsv_r_L_matrix_dot[2] = (__m256d)((0.5)*omega_2*x22 - x10*x24);
+        rsv_r_L_matrix_dot[3] = (__m256d)(x25*x9 - x27*x28);
+        rsv_r_L_matrix_dot[4] = (__m256d)((0.5)*omega_0*x17 - x15 - x28*x29);
+        rsv_r_L_matrix_dot[5] = (__m256d)(x24*x25 - x28*x30);
+        rsv_r_L_matrix_dot[6] = (__m256d)((0.5)*omega_1*x27 - x13*x25);
+        rsv_r_L_matrix_dot[7] = (__m256d)((0.5)*omega_1*x29 - x20*x25);
+        rsv_r_L_matrix_dot[8] = (__m256d)((0.5)*omega_1*x30 - x15 - x22*x25);
+        rsv_r_L_matrix_dot[9] = (__m256d)(x10*x29 - x25*(x20 + x24) + x28*x30);
+        rsv_r_L_matrix_dot[10] = (__m256d)(-x10*(x24 + x27) + x13*x25 - x21*x28);
+        rsv_r_L_matrix_dot[11] = (__m256d)(x10*x17 + x25*x9 - x28*(x20 + x27));
+        rigidsym_store_cols(out_L_matrix_dot + 12 * rsv_j, 12, rsv_r_L_matrix_dot);
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_L_matrix_dot_sample_trig(
             in_e + 3 * j,
@@ -98,6 +176,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_lanes(
             trig_1[j],
             out_L_matrix_dot + 12 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -162,6 +241,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_block(
     double *RIGIDSYM_RESTRICT out_L_matrix_dot)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
@@ -169,7 +250,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_block(
             in_e + 3 * j,
             in_phi + 1 * j,
             in_omega + 3 * j,
-            out_L_matrix_dot + 12 * j);
+            out_L_matrix_dot + 12 * j, &xs);
 
         any |= mask[g];
     }
@@ -178,14 +259,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_matrix_dot_block(
 #else
     any |= rigidsym_any_nonfinite(out_L_matrix_dot, 12 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -55,7 +55,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_lanes(
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     const double *RIGIDSYM_RESTRICT in_omega,
-    double *RIGIDSYM_RESTRICT out_L_tilde_dot)
+    double *RIGIDSYM_RESTRICT out_L_tilde_dot, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -88,6 +88,88 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_lanes(
                 trig_1[j] = sin(x7);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d x0 = (0.5)*omega_2;
+        const rigidsym_v4d x1 = -x0;
+        const rigidsym_v4d x2 = (0.5)*omega_1;
+        const rigidsym_v4d x3 = e_0*x2;
+        const rigidsym_v4d x4 = (0.5)*omega_0;
+        const rigidsym_v4d x5 = e_1*x4;
+        const rigidsym_v4d x6 = x3 - x5;
+        const rigidsym_v4d x8 = trig_0;
+        const rigidsym_v4d x9 = trig_1;
+        const rigidsym_v4d x10 = x9/x8;
+        const rigidsym_v4d x11 = (e_0*e_0);
+        const rigidsym_v4d x12 = (e_1*e_1);
+        const rigidsym_v4d x13 = (e_2*e_2);
+        const rigidsym_v4d x14 = x11 + x12 + x13 - 1.0;
+        const rigidsym_v4d x15 = e_2*x4;
+        const rigidsym_v4d x16 = e_2*x2;
+        const rigidsym_v4d x17 = e_0*x15 + e_1*x16 + x0*x13;
+        const rigidsym_v4d x18 = (x9*x9)/(x8*x8);
+        const rigidsym_v4d x19 = x1 + x10*x6 + x18*(x1*x14 - x17);
+        const rigidsym_v4d x20 = e_0*x0;
+        const rigidsym_v4d x21 = -x15 + x20;
+        const rigidsym_v4d x22 = e_1*x0;
+        const rigidsym_v4d x23 = e_0*x5 + e_2*x22 + x12*x2;
+        const rigidsym_v4d x24 = -x4;
+        const rigidsym_v4d x25 = -x16 + x22;
+        const rigidsym_v4d x26 = e_1*x3 + e_2*x20 + x11*x4;
+        const rigidsym_v4d x27 = x10*x25 + x18*(x14*x24 - x26) + x24;
+        const rigidsym_v4d x28 = -x2;
+        const rigidsym_v4d x29 = -x10*x21 + x18*(x14*x28 - x23) + x28;
+        __m256d rsv_r_L_tilde_dot[12];
+        rsv_r_L_tilde_dot[0] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_L_tilde_dot[1] = (__m256d)(x19);
+        rsv_r_L_tilde_dot[2] = (__m256d)(x10*x21 + x18*(x14*x2 + x23) + x2);
+        rsv_r_L_tilde_dot[3] = (__m256d)(x27);
+        rsv_r_L_tilde_dot[4] = (__m256d)(x0 - x10*x6 + x18*(x0*x14 + x17));
+        rsv_r_L_tilde_dot[5] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_L_tilde_dot[6] = (__m256d)(x27);
+        rsv_r_L_tilde_dot[7] = (__m256d)(x29);
+        rsv_r_L_tilde_dot[8] = (__m256d)(x29);
+        rsv_r_L_tilde_dot[9] = (__m256d)(-x10*x25 + x18*(x14*x4 + x26) + x4);
+        rsv_r_L_tilde_dot[10] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_L_tilde_dot[11] = (__m256d)(x19);
+        rigidsym_store_cols(out_L_tilde_dot + 12 * rsv_j, 12, rsv_r_L_tilde_dot);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x8) == 0.0;
+        const rigidsym_v4d finite = ((x10 - x10) + ((x18 - x18) + (x8 - x8)));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_L_tilde_dot_sample_trig(
             in_e + 3 * j,
@@ -97,6 +179,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_lanes(
             trig_1[j],
             out_L_tilde_dot + 12 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -161,6 +244,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_block(
     double *RIGIDSYM_RESTRICT out_L_tilde_dot)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
@@ -168,7 +253,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_block(
             in_e + 3 * j,
             in_phi + 1 * j,
             in_omega + 3 * j,
-            out_L_tilde_dot + 12 * j);
+            out_L_tilde_dot + 12 * j, &xs);
 
         any |= mask[g];
     }
@@ -177,14 +262,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_L_tilde_dot_block(
 #else
     any |= rigidsym_any_nonfinite(out_L_tilde_dot, 12 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -46,7 +46,7 @@
 static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_lanes(
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
-    double *RIGIDSYM_RESTRICT out_N_matrix)
+    double *RIGIDSYM_RESTRICT out_N_matrix, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -79,6 +79,62 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_lanes(
                 trig_1[j] = cos(x0);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d x1 = trig_0;
+        const rigidsym_v4d x2 = trig_1/x1;
+        const rigidsym_v4d x3 = (0.5)*x2;
+        const rigidsym_v4d x4 = (0.5)*e_2;
+        const rigidsym_v4d x5 = (0.5)*e_1;
+        const rigidsym_v4d x6 = e_0*x2;
+        const rigidsym_v4d x7 = x5*x6;
+        const rigidsym_v4d x8 = x4*x6;
+        const rigidsym_v4d x9 = (0.5)*e_0;
+        const rigidsym_v4d x10 = e_1*x2*x4;
+        __m256d rsv_r_N_matrix[12];
+        rsv_r_N_matrix[0] = (__m256d)(x3*(1.0 - (e_0*e_0)));
+        rsv_r_N_matrix[1] = (__m256d)(x4 - x7);
+        rsv_r_N_matrix[2] = (__m256d)(-x5 - x8);
+        rsv_r_N_matrix[3] = (__m256d)(-x4 - x7);
+        rsv_r_N_matrix[4] = (__m256d)(x3*(1.0 - (e_1*e_1)));
+        rsv_r_N_matrix[5] = (__m256d)(-x10 + x9);
+        rsv_r_N_matrix[6] = (__m256d)(x5 - x8);
+        rsv_r_N_matrix[7] = (__m256d)(-x10 - x9);
+        rsv_r_N_matrix[8] = (__m256d)(x3*(1.0 - (e_2*e_2)));
+        rsv_r_N_matrix[9] = (__m256d)(e_0);
+        rsv_r_N_matrix[10] = (__m256d)(e_1);
+        rsv_r_N_matrix[11] = (__m256d)(e_2);
+        rigidsym_store_cols(out_N_matrix + 12 * rsv_j, 12, rsv_r_N_matrix);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x1) == 0.0;
+        const rigidsym_v4d finite = ((x2 - x2) + (x1 - x1));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_N_matrix_sample_trig(
             in_e + 3 * j,
@@ -87,6 +143,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_lanes(
             trig_1[j],
             out_N_matrix + 12 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -148,13 +205,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_block(
     double *RIGIDSYM_RESTRICT out_N_matrix)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_N_matrix_lanes(
             in_e + 3 * j,
             in_phi + 1 * j,
-            out_N_matrix + 12 * j);
+            out_N_matrix + 12 * j, &xs);
 
         any |= mask[g];
     }
@@ -163,13 +222,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_block(
 #else
     any |= rigidsym_any_nonfinite(out_N_matrix, 12 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

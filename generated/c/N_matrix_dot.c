@@ -47,7 +47,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_dot_lanes(
     const double *RIGIDSYM_RESTRICT in_e,
     const double *RIGIDSYM_RESTRICT in_phi,
     const double *RIGIDSYM_RESTRICT in_omega,
-    double *RIGIDSYM_RESTRICT out_N_matrix_dot)
+    double *RIGIDSYM_RESTRICT out_N_matrix_dot, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -80,6 +80,105 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_dot_lanes(
                 trig_1[j] = cos(x5);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d x0 = e_0*omega_0;
+        const rigidsym_v4d x1 = e_1*omega_1;
+        const rigidsym_v4d x2 = 2.0*x1;
+        const rigidsym_v4d x3 = e_2*omega_2;
+        const rigidsym_v4d x4 = 2.0*x3;
+        const rigidsym_v4d x6 = trig_0;
+        const rigidsym_v4d x7 = (x6*x6);
+        const rigidsym_v4d x8 = 1.0 - 2.0*x7;
+        const rigidsym_v4d x9 = 2.0*x0;
+        const rigidsym_v4d x10 = trig_1;
+        const rigidsym_v4d x11 = e_1*omega_2;
+        const rigidsym_v4d x12 = e_2*omega_1;
+        const rigidsym_v4d x13 = x11 - x12;
+        const rigidsym_v4d x14 = (e_0*e_0);
+        const rigidsym_v4d x15 = 6.0 - 4.0*x7;
+        const rigidsym_v4d x16 = x0 + x1 + x3;
+        const rigidsym_v4d x17 = (0.125)/x7;
+        const rigidsym_v4d x18 = e_0*omega_1;
+        const rigidsym_v4d x19 = 2.0*x18;
+        const rigidsym_v4d x20 = e_1*omega_0;
+        const rigidsym_v4d x21 = 2.0*x20;
+        const rigidsym_v4d x22 = e_2*x16 - omega_2;
+        const rigidsym_v4d x23 = 2.0*x10*x6;
+        const rigidsym_v4d x24 = e_0*omega_2;
+        const rigidsym_v4d x25 = e_2*omega_0 - x24;
+        const rigidsym_v4d x26 = -e_0*e_1*x15*x16 - 2.0*x10*x6*(e_0*x25 + e_1*x13);
+        const rigidsym_v4d x27 = 2.0*x24;
+        const rigidsym_v4d x28 = 2.0*e_2*omega_0;
+        const rigidsym_v4d x29 = e_1*x16 - omega_1;
+        const rigidsym_v4d x30 = x18 - x20;
+        const rigidsym_v4d x31 = -e_0*e_2*x15*x16 - 2.0*x10*x6*(e_0*x30 + e_2*x13);
+        const rigidsym_v4d x32 = (e_1*e_1);
+        const rigidsym_v4d x33 = 2.0*x11;
+        const rigidsym_v4d x34 = 2.0*x12;
+        const rigidsym_v4d x35 = e_0*x16 - omega_0;
+        const rigidsym_v4d x36 = -e_1*e_2*x15*x16 - 2.0*x10*x6*(e_1*x30 + e_2*x25);
+        const rigidsym_v4d x37 = (e_2*e_2);
+        const rigidsym_v4d x38 = (0.5)*e_2;
+        const rigidsym_v4d x39 = (0.5)*e_1;
+        const rigidsym_v4d x40 = x10/x6;
+        const rigidsym_v4d x41 = e_0*x40;
+        const rigidsym_v4d x42 = x39*x41;
+        const rigidsym_v4d x43 = x38*x41;
+        const rigidsym_v4d x44 = (0.5)*x40;
+        const rigidsym_v4d x45 = (0.5)*e_0;
+        const rigidsym_v4d x46 = e_1*x38*x40;
+        __m256d rsv_r_N_matrix_dot[12];
+        rsv_r_N_matrix_dot[0] = (__m256d)(x17*(4.0*e_0*x10*x13*x6 - 4.0*x0 + x14*x15*x16 - x2 - x4 - x8*x9));
+        rsv_r_N_matrix_dot[1] = (__m256d)(x17*(-x19 - x21*x8 - x22*x23 - x26));
+        rsv_r_N_matrix_dot[2] = (__m256d)(x17*(x23*x29 - x27 - x28*x8 - x31));
+        rsv_r_N_matrix_dot[3] = (__m256d)(x17*(-x19*x8 - x21 + x22*x23 - x26));
+        rsv_r_N_matrix_dot[4] = (__m256d)(x17*(4.0*e_1*x10*x25*x6 - 4.0*x1 + x15*x16*x32 - x2*x8 - x4 - x9));
+        rsv_r_N_matrix_dot[5] = (__m256d)(x17*(-x23*x35 - x33 - x34*x8 - x36));
+        rsv_r_N_matrix_dot[6] = (__m256d)(x17*(-x23*x29 - x27*x8 - x28 - x31));
+        rsv_r_N_matrix_dot[7] = (__m256d)(x17*(x23*x35 - x33*x8 - x34 - x36));
+        rsv_r_N_matrix_dot[8] = (__m256d)(x17*(4.0*e_2*x10*x30*x6 + x15*x16*x37 - x2 - 4.0*x3 - x4*x8 - x9));
+        rsv_r_N_matrix_dot[9] = (__m256d)(omega_0*x44*(1.0 - x14) + omega_1*(x38 - x42) + omega_2*(-x39 - x43));
+        rsv_r_N_matrix_dot[10] = (__m256d)(omega_0*(-x38 - x42) + omega_1*x44*(1.0 - x32) + omega_2*(x45 - x46));
+        rsv_r_N_matrix_dot[11] = (__m256d)(omega_0*(x39 - x43) + omega_1*(-x45 - x46) + omega_2*x44*(1.0 - x37));
+        rigidsym_store_cols(out_N_matrix_dot + 12 * rsv_j, 12, rsv_r_N_matrix_dot);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x6) == 0.0;
+        const rigidsym_v4d finite = (((x17 - x17) + (x40 - x40)) + ((x7 - x7) + (x6 - x6)));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_N_matrix_dot_sample_trig(
             in_e + 3 * j,
@@ -89,6 +188,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_dot_lanes(
             trig_1[j],
             out_N_matrix_dot + 12 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -153,6 +253,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_dot_block(
     double *RIGIDSYM_RESTRICT out_N_matrix_dot)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
@@ -160,7 +262,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_dot_block(
             in_e + 3 * j,
             in_phi + 1 * j,
             in_omega + 3 * j,
-            out_N_matrix_dot + 12 * j);
+            out_N_matrix_dot + 12 * j, &xs);
 
         any |= mask[g];
     }
@@ -169,14 +271,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_N_matrix_dot_block(
 #else
     any |= rigidsym_any_nonfinite(out_N_matrix_dot, 12 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -46,7 +46,7 @@
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzy_body_lanes(
     const double *RIGIDSYM_RESTRICT in_angles,
     const double *RIGIDSYM_RESTRICT in_omega,
-    double *RIGIDSYM_RESTRICT out_eta_dot)
+    double *RIGIDSYM_RESTRICT out_eta_dot, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -89,6 +89,54 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzy_body_lanes(
                 trig_3[j] = sin(angles_1);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_angles[3];
+        rigidsym_load_cols(in_angles + 3 * rsv_j, 3, rsv_c_angles);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_angles[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        const __m256d rsv_t_trig_2 = _mm256_loadu_pd(trig_2 + rsv_j);
+        const __m256d rsv_t_trig_3 = _mm256_loadu_pd(trig_3 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d trig_2 = (rigidsym_v4d)rsv_t_trig_2;
+        const rigidsym_v4d trig_3 = (rigidsym_v4d)rsv_t_trig_3;
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d x0 = trig_0;
+        const rigidsym_v4d x1 = 1.0/x0;
+        const rigidsym_v4d x2 = trig_1;
+        const rigidsym_v4d x3 = omega_0*x2;
+        const rigidsym_v4d x4 = trig_2;
+        const rigidsym_v4d x5 = omega_2*x4;
+        const rigidsym_v4d x6 = trig_3;
+        __m256d rsv_r_eta_dot[3];
+        rsv_r_eta_dot[0] = (__m256d)(-x1*(-x3 - x5));
+        rsv_r_eta_dot[1] = (__m256d)(-x1*(omega_0*x0*x4 - omega_2*x0*x2));
+        rsv_r_eta_dot[2] = (__m256d)(-x1*(-omega_1*x0 - x3*x6 - x5*x6));
+        rigidsym_store_cols(out_eta_dot + 3 * rsv_j, 3, rsv_r_eta_dot);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x0) == 0.0;
+        const rigidsym_v4d finite = ((x1 - x1) + (x0 - x0));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_euler_angle_rates_xzy_body_sample_trig(
             in_angles + 3 * j,
@@ -99,6 +147,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzy_body_lanes(
             trig_3[j],
             out_eta_dot + 3 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -172,13 +221,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzy_body_block(
     double *RIGIDSYM_RESTRICT out_eta_dot)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_euler_angle_rates_xzy_body_lanes(
             in_angles + 3 * j,
             in_omega + 3 * j,
-            out_eta_dot + 3 * j);
+            out_eta_dot + 3 * j, &xs);
 
         any |= mask[g];
     }
@@ -187,13 +238,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_angle_rates_xzy_body_block(
 #else
     any |= rigidsym_any_nonfinite(out_eta_dot, 3 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_angles, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_angles, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

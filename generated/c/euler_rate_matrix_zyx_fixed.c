@@ -45,7 +45,7 @@
  * measured, more than a one-sample call). */
 static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zyx_fixed_lanes(
     const double *RIGIDSYM_RESTRICT in_angles,
-    double *RIGIDSYM_RESTRICT out_W)
+    double *RIGIDSYM_RESTRICT out_W, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -88,6 +88,44 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zyx_fixed_lanes(
                 trig_3[j] = sin(angles_1);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_angles[3];
+        rigidsym_load_cols(in_angles + 3 * rsv_j, 3, rsv_c_angles);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_angles[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        const __m256d rsv_t_trig_2 = _mm256_loadu_pd(trig_2 + rsv_j);
+        const __m256d rsv_t_trig_3 = _mm256_loadu_pd(trig_3 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d trig_2 = (rigidsym_v4d)rsv_t_trig_2;
+        const rigidsym_v4d trig_3 = (rigidsym_v4d)rsv_t_trig_3;
+        const rigidsym_v4d x0 = trig_0;
+        const rigidsym_v4d x1 = trig_1;
+        const rigidsym_v4d x2 = trig_2;
+        __m256d rsv_r_W[9];
+        rsv_r_W[0] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_W[1] = (__m256d)(-x0);
+        rsv_r_W[2] = (__m256d)(x1*x2);
+        rsv_r_W[3] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_W[4] = (__m256d)(x1);
+        rsv_r_W[5] = (__m256d)(x0*x2);
+        rsv_r_W[6] = (__m256d)(((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        rsv_r_W[7] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_W[8] = (__m256d)(-trig_3);
+        rigidsym_store_cols(out_W + 9 * rsv_j, 9, rsv_r_W);
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_euler_rate_matrix_zyx_fixed_sample_trig(
             in_angles + 3 * j,
@@ -97,6 +135,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zyx_fixed_lanes(
             trig_3[j],
             out_W + 9 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -167,12 +206,14 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zyx_fixed_block(
     double *RIGIDSYM_RESTRICT out_W)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
         mask[g] = rigidsym_euler_rate_matrix_zyx_fixed_lanes(
             in_angles + 3 * j,
-            out_W + 9 * j);
+            out_W + 9 * j, &xs);
 
         any |= mask[g];
     }
@@ -181,12 +222,14 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rate_matrix_zyx_fixed_block(
 #else
     any |= rigidsym_any_nonfinite(out_W, 9 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_angles, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_angles, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

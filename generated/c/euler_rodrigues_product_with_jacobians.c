@@ -47,9 +47,85 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
     const double *RIGIDSYM_RESTRICT in_eta2,
     double *RIGIDSYM_RESTRICT out_eta,
     double *RIGIDSYM_RESTRICT out_eta_D_eta1,
-    double *RIGIDSYM_RESTRICT out_eta_D_eta2)
+    double *RIGIDSYM_RESTRICT out_eta_D_eta2, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_eta1[4];
+        rigidsym_load_cols(in_eta1 + 4 * rsv_j, 4, rsv_c_eta1);
+        for (int rsv_q = 0; rsv_q < 4; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_eta1[rsv_q]);
+        __m256d rsv_c_eta2[4];
+        rigidsym_load_cols(in_eta2 + 4 * rsv_j, 4, rsv_c_eta2);
+        for (int rsv_q = 0; rsv_q < 4; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_eta2[rsv_q]);
+        const rigidsym_v4d eta1_0 = (rigidsym_v4d)rsv_c_eta1[0];
+        const rigidsym_v4d eta1_1 = (rigidsym_v4d)rsv_c_eta1[1];
+        const rigidsym_v4d eta1_2 = (rigidsym_v4d)rsv_c_eta1[2];
+        const rigidsym_v4d eta1_3 = (rigidsym_v4d)rsv_c_eta1[3];
+        const rigidsym_v4d eta2_0 = (rigidsym_v4d)rsv_c_eta2[0];
+        const rigidsym_v4d eta2_1 = (rigidsym_v4d)rsv_c_eta2[1];
+        const rigidsym_v4d eta2_2 = (rigidsym_v4d)rsv_c_eta2[2];
+        const rigidsym_v4d eta2_3 = (rigidsym_v4d)rsv_c_eta2[3];
+        const rigidsym_v4d x0 = -eta2_1;
+        const rigidsym_v4d x1 = -eta2_2;
+        const rigidsym_v4d x2 = -eta2_0;
+        const rigidsym_v4d x3 = -eta1_2;
+        const rigidsym_v4d x4 = -eta1_0;
+        const rigidsym_v4d x5 = -eta1_1;
+        __m256d rsv_r_eta[4];
+        rsv_r_eta[0] = (__m256d)(eta1_0*eta2_3 + eta1_1*eta2_2 - eta1_2*eta2_1 + eta1_3*eta2_0);
+        rsv_r_eta[1] = (__m256d)(-eta1_0*eta2_2 + eta1_1*eta2_3 + eta1_2*eta2_0 + eta1_3*eta2_1);
+        rsv_r_eta[2] = (__m256d)(eta1_0*eta2_1 - eta1_1*eta2_0 + eta1_2*eta2_3 + eta1_3*eta2_2);
+        rsv_r_eta[3] = (__m256d)(-eta1_0*eta2_0 - eta1_1*eta2_1 - eta1_2*eta2_2 + eta1_3*eta2_3);
+        rigidsym_store_cols(out_eta + 4 * rsv_j, 4, rsv_r_eta);
+        __m256d rsv_r_eta_D_eta1[16];
+        rsv_r_eta_D_eta1[0] = (__m256d)(eta2_3);
+        rsv_r_eta_D_eta1[1] = (__m256d)(eta2_2);
+        rsv_r_eta_D_eta1[2] = (__m256d)(x0);
+        rsv_r_eta_D_eta1[3] = (__m256d)(eta2_0);
+        rsv_r_eta_D_eta1[4] = (__m256d)(x1);
+        rsv_r_eta_D_eta1[5] = (__m256d)(eta2_3);
+        rsv_r_eta_D_eta1[6] = (__m256d)(eta2_0);
+        rsv_r_eta_D_eta1[7] = (__m256d)(eta2_1);
+        rsv_r_eta_D_eta1[8] = (__m256d)(eta2_1);
+        rsv_r_eta_D_eta1[9] = (__m256d)(x2);
+        rsv_r_eta_D_eta1[10] = (__m256d)(eta2_3);
+        rsv_r_eta_D_eta1[11] = (__m256d)(eta2_2);
+        rsv_r_eta_D_eta1[12] = (__m256d)(x2);
+        rsv_r_eta_D_eta1[13] = (__m256d)(x0);
+        rsv_r_eta_D_eta1[14] = (__m256d)(x1);
+        rsv_r_eta_D_eta1[15] = (__m256d)(eta2_3);
+        rigidsym_store_cols(out_eta_D_eta1 + 16 * rsv_j, 16, rsv_r_eta_D_eta1);
+        __m256d rsv_r_eta_D_eta2[16];
+        rsv_r_eta_D_eta2[0] = (__m256d)(eta1_3);
+        rsv_r_eta_D_eta2[1] = (__m256d)(x3);
+        rsv_r_eta_D_eta2[2] = (__m256d)(eta1_1);
+        rsv_r_eta_D_eta2[3] = (__m256d)(eta1_0);
+        rsv_r_eta_D_eta2[4] = (__m256d)(eta1_2);
+        rsv_r_eta_D_eta2[5] = (__m256d)(eta1_3);
+        rsv_r_eta_D_eta2[6] = (__m256d)(x4);
+        rsv_r_eta_D_eta2[7] = (__m256d)(eta1_1);
+        rsv_r_eta_D_eta2[8] = (__m256d)(x5);
+        rsv_r_eta_D_eta2[9] = (__m256d)(eta1_0);
+        rsv_r_eta_D_eta2[10] = (__m256d)(eta1_3);
+        rsv_r_eta_D_eta2[11] = (__m256d)(eta1_2);
+        rsv_r_eta_D_eta2[12] = (__m256d)(x4);
+        rsv_r_eta_D_eta2[13] = (__m256d)(x5);
+        rsv_r_eta_D_eta2[14] = (__m256d)(x3);
+        rsv_r_eta_D_eta2[15] = (__m256d)(eta1_3);
+        rigidsym_store_cols(out_eta_D_eta2 + 16 * rsv_j, 16, rsv_r_eta_D_eta2);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -62,6 +138,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
             out_eta_D_eta2 + 16 * j);
 
     }
+#endif
     return count;
 }
 
@@ -101,6 +178,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
     double *RIGIDSYM_RESTRICT out_eta_D_eta2)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -109,7 +188,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
             in_eta2 + 4 * j,
             out_eta + 4 * j,
             out_eta_D_eta1 + 16 * j,
-            out_eta_D_eta2 + 16 * j);
+            out_eta_D_eta2 + 16 * j, &xs);
 
         any |= mask[g];
     }
@@ -120,13 +199,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_euler_rodrigues_product_with_jacobians
     any |= rigidsym_any_nonfinite(out_eta_D_eta1, 16 * m);
     any |= rigidsym_any_nonfinite(out_eta_D_eta2, 16 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_eta1, 4 * m);
-        rigidsym_extreme_add(&xs, in_eta2, 4 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_eta1, 4 * m);
+    rigidsym_extreme_add(&xs, in_eta2, 4 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -47,9 +47,74 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_lanes(
     const double *RIGIDSYM_RESTRICT in_m,
     const double *RIGIDSYM_RESTRICT in_c,
     const double *RIGIDSYM_RESTRICT in_a,
-    double *RIGIDSYM_RESTRICT out_I_A)
+    double *RIGIDSYM_RESTRICT out_I_A, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_I_C[9];
+        rigidsym_load_cols(in_I_C + 9 * rsv_j, 9, rsv_c_I_C);
+        for (int rsv_q = 0; rsv_q < 9; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_I_C[rsv_q]);
+        __m256d rsv_c_m[1];
+        rigidsym_load_cols(in_m + 1 * rsv_j, 1, rsv_c_m);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_m[rsv_q]);
+        __m256d rsv_c_c[3];
+        rigidsym_load_cols(in_c + 3 * rsv_j, 3, rsv_c_c);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_c[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        const rigidsym_v4d I_C_00 = (rigidsym_v4d)rsv_c_I_C[0];
+        const rigidsym_v4d I_C_01 = (rigidsym_v4d)rsv_c_I_C[1];
+        const rigidsym_v4d I_C_02 = (rigidsym_v4d)rsv_c_I_C[2];
+        const rigidsym_v4d I_C_10 = (rigidsym_v4d)rsv_c_I_C[3];
+        const rigidsym_v4d I_C_11 = (rigidsym_v4d)rsv_c_I_C[4];
+        const rigidsym_v4d I_C_12 = (rigidsym_v4d)rsv_c_I_C[5];
+        const rigidsym_v4d I_C_20 = (rigidsym_v4d)rsv_c_I_C[6];
+        const rigidsym_v4d I_C_21 = (rigidsym_v4d)rsv_c_I_C[7];
+        const rigidsym_v4d I_C_22 = (rigidsym_v4d)rsv_c_I_C[8];
+        const rigidsym_v4d m = (rigidsym_v4d)rsv_c_m[0];
+        const rigidsym_v4d c_0 = (rigidsym_v4d)rsv_c_c[0];
+        const rigidsym_v4d c_1 = (rigidsym_v4d)rsv_c_c[1];
+        const rigidsym_v4d c_2 = (rigidsym_v4d)rsv_c_c[2];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d x0 = a_1 - c_1;
+        const rigidsym_v4d x1 = (x0*x0);
+        const rigidsym_v4d x2 = a_2 - c_2;
+        const rigidsym_v4d x3 = (x2*x2);
+        const rigidsym_v4d x4 = a_0 - c_0;
+        const rigidsym_v4d x5 = m*x4;
+        const rigidsym_v4d x6 = -x0*x5;
+        const rigidsym_v4d x7 = -x2*x5;
+        const rigidsym_v4d x8 = (x4*x4);
+        const rigidsym_v4d x9 = -m*x0*x2;
+        __m256d rsv_r_I_A[9];
+        rsv_r_I_A[0] = (__m256d)(I_C_00 + m*(x1 + x3));
+        rsv_r_I_A[1] = (__m256d)(I_C_01 + x6);
+        rsv_r_I_A[2] = (__m256d)(I_C_02 + x7);
+        rsv_r_I_A[3] = (__m256d)(I_C_10 + x6);
+        rsv_r_I_A[4] = (__m256d)(I_C_11 + m*(x3 + x8));
+        rsv_r_I_A[5] = (__m256d)(I_C_12 + x9);
+        rsv_r_I_A[6] = (__m256d)(I_C_20 + x7);
+        rsv_r_I_A[7] = (__m256d)(I_C_21 + x9);
+        rsv_r_I_A[8] = (__m256d)(I_C_22 + m*(x1 + x8));
+        rigidsym_store_cols(out_I_A + 9 * rsv_j, 9, rsv_r_I_A);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -62,6 +127,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_lanes(
             out_I_A + 9 * j);
 
     }
+#endif
     return count;
 }
 
@@ -101,6 +167,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
     double *RIGIDSYM_RESTRICT out_I_A)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -109,7 +177,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
             in_m + 1 * j,
             in_c + 3 * j,
             in_a + 3 * j,
-            out_I_A + 9 * j);
+            out_I_A + 9 * j, &xs);
 
         any |= mask[g];
     }
@@ -118,15 +186,17 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_inertia_at_point_block(
 #else
     any |= rigidsym_any_nonfinite(out_I_A, 9 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_I_C, 9 * m);
-        rigidsym_extreme_add(&xs, in_m, 1 * m);
-        rigidsym_extreme_add(&xs, in_c, 3 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_I_C, 9 * m);
+    rigidsym_extreme_add(&xs, in_m, 1 * m);
+    rigidsym_extreme_add(&xs, in_c, 3 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -57,9 +57,74 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_lanes(
     const double *RIGIDSYM_RESTRICT in_a_dot,
     double *RIGIDSYM_RESTRICT out_p0,
     double *RIGIDSYM_RESTRICT out_pitch,
-    double *RIGIDSYM_RESTRICT out_plucker)
+    double *RIGIDSYM_RESTRICT out_plucker, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        __m256d rsv_c_a_dot[3];
+        rigidsym_load_cols(in_a_dot + 3 * rsv_j, 3, rsv_c_a_dot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a_dot[rsv_q]);
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d a_dot_0 = (rigidsym_v4d)rsv_c_a_dot[0];
+        const rigidsym_v4d a_dot_1 = (rigidsym_v4d)rsv_c_a_dot[1];
+        const rigidsym_v4d a_dot_2 = (rigidsym_v4d)rsv_c_a_dot[2];
+        const rigidsym_v4d x0 = (omega_0*omega_0) + (omega_1*omega_1) + (omega_2*omega_2);
+        const rigidsym_v4d x1 = 1.0/x0;
+        const rigidsym_v4d x2 = a_0*omega_1 - a_1*omega_0 + a_dot_2;
+        const rigidsym_v4d x3 = -a_0*omega_2 + a_2*omega_0 + a_dot_1;
+        const rigidsym_v4d x4 = omega_1*x2 - omega_2*x3;
+        const rigidsym_v4d x5 = x1*x4;
+        const rigidsym_v4d x6 = a_1*omega_2 - a_2*omega_1 + a_dot_0;
+        const rigidsym_v4d x7 = -omega_0*x2 + omega_2*x6;
+        const rigidsym_v4d x8 = x1*x7;
+        const rigidsym_v4d x9 = x1*(omega_0*x3 - omega_1*x6);
+        const rigidsym_v4d x10 = 1.0/rigidsym_sqrt_v4(x0);
+        __m256d rsv_r_p0[3];
+        rsv_r_p0[0] = (__m256d)(x5);
+        rsv_r_p0[1] = (__m256d)(x8);
+        rsv_r_p0[2] = (__m256d)(x9);
+        rigidsym_store_cols(out_p0 + 3 * rsv_j, 3, rsv_r_p0);
+        __m256d rsv_r_pitch[1];
+        rsv_r_pitch[0] = (__m256d)(x1*rigidsym_sumprod3_v4(a_dot_0, omega_0, a_dot_1, omega_1, a_dot_2, omega_2));
+        rigidsym_store_cols(out_pitch + 1 * rsv_j, 1, rsv_r_pitch);
+        __m256d rsv_r_plucker[6];
+        rsv_r_plucker[0] = (__m256d)(omega_0*x10);
+        rsv_r_plucker[1] = (__m256d)(omega_1*x10);
+        rsv_r_plucker[2] = (__m256d)(omega_2*x10);
+        rsv_r_plucker[3] = (__m256d)(x10*(-omega_1*x9 + omega_2*x1*x7));
+        rsv_r_plucker[4] = (__m256d)(x10*(omega_0*x9 - omega_2*x5));
+        rsv_r_plucker[5] = (__m256d)(x10*(-omega_0*x8 + omega_1*x1*x4));
+        rigidsym_store_cols(out_plucker + 6 * rsv_j, 6, rsv_r_plucker);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x0) == 0.0;
+        const rigidsym_v4d finite = ((x1 - x1) + ((x10 - x10) + (x0 - x0)));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
     for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
@@ -72,6 +137,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_lanes(
             out_plucker + 6 * j) != 0) << j;
 
     }
+#endif
     return count;
 }
 
@@ -113,6 +179,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     double *RIGIDSYM_RESTRICT out_plucker)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -122,7 +190,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
             in_a_dot + 3 * j,
             out_p0 + 3 * j,
             out_pitch + 1 * j,
-            out_plucker + 6 * j);
+            out_plucker + 6 * j, &xs);
 
         any |= mask[g];
     }
@@ -133,14 +201,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_instant_screw_axis_block(
     any |= rigidsym_any_nonfinite(out_pitch, 1 * m);
     any |= rigidsym_any_nonfinite(out_plucker, 6 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        rigidsym_extreme_add(&xs, in_a_dot, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    rigidsym_extreme_add(&xs, in_a_dot, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

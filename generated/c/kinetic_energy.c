@@ -56,9 +56,57 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_lanes(
     const double *RIGIDSYM_RESTRICT in_m,
     const double *RIGIDSYM_RESTRICT in_omega,
     const double *RIGIDSYM_RESTRICT in_c_dot,
-    double *RIGIDSYM_RESTRICT out_T)
+    double *RIGIDSYM_RESTRICT out_T, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_I_C[9];
+        rigidsym_load_cols(in_I_C + 9 * rsv_j, 9, rsv_c_I_C);
+        for (int rsv_q = 0; rsv_q < 9; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_I_C[rsv_q]);
+        __m256d rsv_c_m[1];
+        rigidsym_load_cols(in_m + 1 * rsv_j, 1, rsv_c_m);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_m[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        __m256d rsv_c_c_dot[3];
+        rigidsym_load_cols(in_c_dot + 3 * rsv_j, 3, rsv_c_c_dot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_c_dot[rsv_q]);
+        const rigidsym_v4d I_C_00 = (rigidsym_v4d)rsv_c_I_C[0];
+        const rigidsym_v4d I_C_01 = (rigidsym_v4d)rsv_c_I_C[1];
+        const rigidsym_v4d I_C_02 = (rigidsym_v4d)rsv_c_I_C[2];
+        const rigidsym_v4d I_C_10 = (rigidsym_v4d)rsv_c_I_C[3];
+        const rigidsym_v4d I_C_11 = (rigidsym_v4d)rsv_c_I_C[4];
+        const rigidsym_v4d I_C_12 = (rigidsym_v4d)rsv_c_I_C[5];
+        const rigidsym_v4d I_C_20 = (rigidsym_v4d)rsv_c_I_C[6];
+        const rigidsym_v4d I_C_21 = (rigidsym_v4d)rsv_c_I_C[7];
+        const rigidsym_v4d I_C_22 = (rigidsym_v4d)rsv_c_I_C[8];
+        const rigidsym_v4d m = (rigidsym_v4d)rsv_c_m[0];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d c_dot_0 = (rigidsym_v4d)rsv_c_c_dot[0];
+        const rigidsym_v4d c_dot_1 = (rigidsym_v4d)rsv_c_c_dot[1];
+        const rigidsym_v4d c_dot_2 = (rigidsym_v4d)rsv_c_c_dot[2];
+        const rigidsym_v4d x0 = (0.5)*m;
+        __m256d rsv_r_T[1];
+        rsv_r_T[0] = (__m256d)((c_dot_0*c_dot_0)*x0 + (c_dot_1*c_dot_1)*x0 + (c_dot_2*c_dot_2)*x0 + (0.5)*omega_0*rigidsym_sumprod3_v4(I_C_00, omega_0, I_C_10, omega_1, I_C_20, omega_2) + (0.5)*omega_1*rigidsym_sumprod3_v4(I_C_01, omega_0, I_C_11, omega_1, I_C_21, omega_2) + (0.5)*omega_2*rigidsym_sumprod3_v4(I_C_02, omega_0, I_C_12, omega_1, I_C_22, omega_2));
+        rigidsym_store_cols(out_T + 1 * rsv_j, 1, rsv_r_T);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -71,6 +119,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_lanes(
             out_T + 1 * j);
 
     }
+#endif
     return count;
 }
 
@@ -110,6 +159,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_block(
     double *RIGIDSYM_RESTRICT out_T)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -118,7 +169,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_block(
             in_m + 1 * j,
             in_omega + 3 * j,
             in_c_dot + 3 * j,
-            out_T + 1 * j);
+            out_T + 1 * j, &xs);
 
         any |= mask[g];
     }
@@ -127,15 +178,17 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_kinetic_energy_block(
 #else
     any |= rigidsym_any_nonfinite(out_T, 1 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_I_C, 9 * m);
-        rigidsym_extreme_add(&xs, in_m, 1 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        rigidsym_extreme_add(&xs, in_c_dot, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_I_C, 9 * m);
+    rigidsym_extreme_add(&xs, in_m, 1 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    rigidsym_extreme_add(&xs, in_c_dot, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -50,9 +50,99 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_lanes(
     const double *RIGIDSYM_RESTRICT in_rho_M,
     const double *RIGIDSYM_RESTRICT in_rho_dot_M,
     const double *RIGIDSYM_RESTRICT in_rho_ddot_M,
-    double *RIGIDSYM_RESTRICT out_p_ddot)
+    double *RIGIDSYM_RESTRICT out_p_ddot, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_o_ddot[3];
+        rigidsym_load_cols(in_o_ddot + 3 * rsv_j, 3, rsv_c_o_ddot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_o_ddot[rsv_q]);
+        __m256d rsv_c_Q[9];
+        rigidsym_load_cols(in_Q + 9 * rsv_j, 9, rsv_c_Q);
+        for (int rsv_q = 0; rsv_q < 9; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_Q[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        __m256d rsv_c_omega_dot[3];
+        rigidsym_load_cols(in_omega_dot + 3 * rsv_j, 3, rsv_c_omega_dot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega_dot[rsv_q]);
+        __m256d rsv_c_rho_M[3];
+        rigidsym_load_cols(in_rho_M + 3 * rsv_j, 3, rsv_c_rho_M);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_rho_M[rsv_q]);
+        __m256d rsv_c_rho_dot_M[3];
+        rigidsym_load_cols(in_rho_dot_M + 3 * rsv_j, 3, rsv_c_rho_dot_M);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_rho_dot_M[rsv_q]);
+        __m256d rsv_c_rho_ddot_M[3];
+        rigidsym_load_cols(in_rho_ddot_M + 3 * rsv_j, 3, rsv_c_rho_ddot_M);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_rho_ddot_M[rsv_q]);
+        const rigidsym_v4d o_ddot_0 = (rigidsym_v4d)rsv_c_o_ddot[0];
+        const rigidsym_v4d o_ddot_1 = (rigidsym_v4d)rsv_c_o_ddot[1];
+        const rigidsym_v4d o_ddot_2 = (rigidsym_v4d)rsv_c_o_ddot[2];
+        const rigidsym_v4d Q_00 = (rigidsym_v4d)rsv_c_Q[0];
+        const rigidsym_v4d Q_01 = (rigidsym_v4d)rsv_c_Q[1];
+        const rigidsym_v4d Q_02 = (rigidsym_v4d)rsv_c_Q[2];
+        const rigidsym_v4d Q_10 = (rigidsym_v4d)rsv_c_Q[3];
+        const rigidsym_v4d Q_11 = (rigidsym_v4d)rsv_c_Q[4];
+        const rigidsym_v4d Q_12 = (rigidsym_v4d)rsv_c_Q[5];
+        const rigidsym_v4d Q_20 = (rigidsym_v4d)rsv_c_Q[6];
+        const rigidsym_v4d Q_21 = (rigidsym_v4d)rsv_c_Q[7];
+        const rigidsym_v4d Q_22 = (rigidsym_v4d)rsv_c_Q[8];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d omega_dot_0 = (rigidsym_v4d)rsv_c_omega_dot[0];
+        const rigidsym_v4d omega_dot_1 = (rigidsym_v4d)rsv_c_omega_dot[1];
+        const rigidsym_v4d omega_dot_2 = (rigidsym_v4d)rsv_c_omega_dot[2];
+        const rigidsym_v4d rho_M_0 = (rigidsym_v4d)rsv_c_rho_M[0];
+        const rigidsym_v4d rho_M_1 = (rigidsym_v4d)rsv_c_rho_M[1];
+        const rigidsym_v4d rho_M_2 = (rigidsym_v4d)rsv_c_rho_M[2];
+        const rigidsym_v4d rho_dot_M_0 = (rigidsym_v4d)rsv_c_rho_dot_M[0];
+        const rigidsym_v4d rho_dot_M_1 = (rigidsym_v4d)rsv_c_rho_dot_M[1];
+        const rigidsym_v4d rho_dot_M_2 = (rigidsym_v4d)rsv_c_rho_dot_M[2];
+        const rigidsym_v4d rho_ddot_M_0 = (rigidsym_v4d)rsv_c_rho_ddot_M[0];
+        const rigidsym_v4d rho_ddot_M_1 = (rigidsym_v4d)rsv_c_rho_ddot_M[1];
+        const rigidsym_v4d rho_ddot_M_2 = (rigidsym_v4d)rsv_c_rho_ddot_M[2];
+        const rigidsym_v4d x0 = 2.0*omega_2;
+        const rigidsym_v4d x1 = omega_0*omega_2;
+        const rigidsym_v4d x2 = omega_dot_1 + x1;
+        const rigidsym_v4d x3 = omega_0*omega_1;
+        const rigidsym_v4d x4 = -omega_dot_2 + x3;
+        const rigidsym_v4d x5 = (omega_1*omega_1);
+        const rigidsym_v4d x6 = (omega_2*omega_2);
+        const rigidsym_v4d x7 = -x5 - x6;
+        const rigidsym_v4d x8 = 2.0*omega_0;
+        const rigidsym_v4d x9 = omega_dot_2 + x3;
+        const rigidsym_v4d x10 = omega_1*omega_2;
+        const rigidsym_v4d x11 = -omega_dot_0 + x10;
+        const rigidsym_v4d x12 = (omega_0*omega_0);
+        const rigidsym_v4d x13 = -x12 - x6;
+        const rigidsym_v4d x14 = 2.0*omega_1;
+        const rigidsym_v4d x15 = omega_dot_0 + x10;
+        const rigidsym_v4d x16 = -omega_dot_1 + x1;
+        const rigidsym_v4d x17 = -x12 - x5;
+        __m256d rsv_r_p_ddot[3];
+        rsv_r_p_ddot[0] = (__m256d)(Q_00*rho_ddot_M_0 + Q_01*rho_ddot_M_1 + Q_02*rho_ddot_M_2 + o_ddot_0 + rho_M_0*(Q_00*x7 + Q_10*x4 + Q_20*x2) + rho_M_1*(Q_01*x7 + Q_11*x4 + Q_21*x2) + rho_M_2*(Q_02*x7 + Q_12*x4 + Q_22*x2) + rho_dot_M_0*(-Q_10*x0 + 2.0*Q_20*omega_1) + rho_dot_M_1*(-Q_11*x0 + 2.0*Q_21*omega_1) + rho_dot_M_2*(-Q_12*x0 + 2.0*Q_22*omega_1));
+        rsv_r_p_ddot[1] = (__m256d)(Q_10*rho_ddot_M_0 + Q_11*rho_ddot_M_1 + Q_12*rho_ddot_M_2 + o_ddot_1 + rho_M_0*(Q_00*x9 + Q_10*x13 + Q_20*x11) + rho_M_1*(Q_01*x9 + Q_11*x13 + Q_21*x11) + rho_M_2*(Q_02*x9 + Q_12*x13 + Q_22*x11) + rho_dot_M_0*(Q_00*x0 - Q_20*x8) + rho_dot_M_1*(Q_01*x0 - Q_21*x8) + rho_dot_M_2*(Q_02*x0 - Q_22*x8));
+        rsv_r_p_ddot[2] = (__m256d)(Q_20*rho_ddot_M_0 + Q_21*rho_ddot_M_1 + Q_22*rho_ddot_M_2 + o_ddot_2 + rho_M_0*(Q_00*x16 + Q_10*x15 + Q_20*x17) + rho_M_1*(Q_01*x16 + Q_11*x15 + Q_21*x17) + rho_M_2*(Q_02*x16 + Q_12*x15 + Q_22*x17) + rho_dot_M_0*(-Q_00*x14 + 2.0*Q_10*omega_0) + rho_dot_M_1*(-Q_01*x14 + 2.0*Q_11*omega_0) + rho_dot_M_2*(-Q_02*x14 + 2.0*Q_12*omega_0));
+        rigidsym_store_cols(out_p_ddot + 3 * rsv_j, 3, rsv_r_p_ddot);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -68,6 +158,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_lanes(
             out_p_ddot + 3 * j);
 
     }
+#endif
     return count;
 }
 
@@ -116,6 +207,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_block(
     double *RIGIDSYM_RESTRICT out_p_ddot)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -127,7 +220,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_block(
             in_rho_M + 3 * j,
             in_rho_dot_M + 3 * j,
             in_rho_ddot_M + 3 * j,
-            out_p_ddot + 3 * j);
+            out_p_ddot + 3 * j, &xs);
 
         any |= mask[g];
     }
@@ -136,18 +229,20 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_block(
 #else
     any |= rigidsym_any_nonfinite(out_p_ddot, 3 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_o_ddot, 3 * m);
-        rigidsym_extreme_add(&xs, in_Q, 9 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
-        rigidsym_extreme_add(&xs, in_rho_M, 3 * m);
-        rigidsym_extreme_add(&xs, in_rho_dot_M, 3 * m);
-        rigidsym_extreme_add(&xs, in_rho_ddot_M, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_o_ddot, 3 * m);
+    rigidsym_extreme_add(&xs, in_Q, 9 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+    rigidsym_extreme_add(&xs, in_rho_M, 3 * m);
+    rigidsym_extreme_add(&xs, in_rho_dot_M, 3 * m);
+    rigidsym_extreme_add(&xs, in_rho_ddot_M, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -57,9 +57,266 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     double *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_M,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_dot_M,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_o_ddot[3];
+        rigidsym_load_cols(in_o_ddot + 3 * rsv_j, 3, rsv_c_o_ddot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_o_ddot[rsv_q]);
+        __m256d rsv_c_Q[9];
+        rigidsym_load_cols(in_Q + 9 * rsv_j, 9, rsv_c_Q);
+        for (int rsv_q = 0; rsv_q < 9; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_Q[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        __m256d rsv_c_omega_dot[3];
+        rigidsym_load_cols(in_omega_dot + 3 * rsv_j, 3, rsv_c_omega_dot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega_dot[rsv_q]);
+        __m256d rsv_c_rho_M[3];
+        rigidsym_load_cols(in_rho_M + 3 * rsv_j, 3, rsv_c_rho_M);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_rho_M[rsv_q]);
+        __m256d rsv_c_rho_dot_M[3];
+        rigidsym_load_cols(in_rho_dot_M + 3 * rsv_j, 3, rsv_c_rho_dot_M);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_rho_dot_M[rsv_q]);
+        __m256d rsv_c_rho_ddot_M[3];
+        rigidsym_load_cols(in_rho_ddot_M + 3 * rsv_j, 3, rsv_c_rho_ddot_M);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_rho_ddot_M[rsv_q]);
+        const rigidsym_v4d o_ddot_0 = (rigidsym_v4d)rsv_c_o_ddot[0];
+        const rigidsym_v4d o_ddot_1 = (rigidsym_v4d)rsv_c_o_ddot[1];
+        const rigidsym_v4d o_ddot_2 = (rigidsym_v4d)rsv_c_o_ddot[2];
+        const rigidsym_v4d Q_00 = (rigidsym_v4d)rsv_c_Q[0];
+        const rigidsym_v4d Q_01 = (rigidsym_v4d)rsv_c_Q[1];
+        const rigidsym_v4d Q_02 = (rigidsym_v4d)rsv_c_Q[2];
+        const rigidsym_v4d Q_10 = (rigidsym_v4d)rsv_c_Q[3];
+        const rigidsym_v4d Q_11 = (rigidsym_v4d)rsv_c_Q[4];
+        const rigidsym_v4d Q_12 = (rigidsym_v4d)rsv_c_Q[5];
+        const rigidsym_v4d Q_20 = (rigidsym_v4d)rsv_c_Q[6];
+        const rigidsym_v4d Q_21 = (rigidsym_v4d)rsv_c_Q[7];
+        const rigidsym_v4d Q_22 = (rigidsym_v4d)rsv_c_Q[8];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d omega_dot_0 = (rigidsym_v4d)rsv_c_omega_dot[0];
+        const rigidsym_v4d omega_dot_1 = (rigidsym_v4d)rsv_c_omega_dot[1];
+        const rigidsym_v4d omega_dot_2 = (rigidsym_v4d)rsv_c_omega_dot[2];
+        const rigidsym_v4d rho_M_0 = (rigidsym_v4d)rsv_c_rho_M[0];
+        const rigidsym_v4d rho_M_1 = (rigidsym_v4d)rsv_c_rho_M[1];
+        const rigidsym_v4d rho_M_2 = (rigidsym_v4d)rsv_c_rho_M[2];
+        const rigidsym_v4d rho_dot_M_0 = (rigidsym_v4d)rsv_c_rho_dot_M[0];
+        const rigidsym_v4d rho_dot_M_1 = (rigidsym_v4d)rsv_c_rho_dot_M[1];
+        const rigidsym_v4d rho_dot_M_2 = (rigidsym_v4d)rsv_c_rho_dot_M[2];
+        const rigidsym_v4d rho_ddot_M_0 = (rigidsym_v4d)rsv_c_rho_ddot_M[0];
+        const rigidsym_v4d rho_ddot_M_1 = (rigidsym_v4d)rsv_c_rho_ddot_M[1];
+        const rigidsym_v4d rho_ddot_M_2 = (rigidsym_v4d)rsv_c_rho_ddot_M[2];
+        const rigidsym_v4d x0 = Q_10*omega_2;
+        const rigidsym_v4d x1 = 2.0*x0;
+        const rigidsym_v4d x2 = -2.0*Q_20*omega_1;
+        const rigidsym_v4d x3 = -x1 - x2;
+        const rigidsym_v4d x4 = Q_11*omega_2;
+        const rigidsym_v4d x5 = 2.0*x4;
+        const rigidsym_v4d x6 = -2.0*Q_21*omega_1;
+        const rigidsym_v4d x7 = -x5 - x6;
+        const rigidsym_v4d x8 = Q_12*omega_2;
+        const rigidsym_v4d x9 = 2.0*x8;
+        const rigidsym_v4d x10 = -2.0*Q_22*omega_1;
+        const rigidsym_v4d x11 = -x10 - x9;
+        const rigidsym_v4d x12 = omega_0*omega_2;
+        const rigidsym_v4d x13 = omega_dot_1 + x12;
+        const rigidsym_v4d x14 = omega_0*omega_1;
+        const rigidsym_v4d x15 = -omega_dot_2 + x14;
+        const rigidsym_v4d x16 = (omega_1*omega_1);
+        const rigidsym_v4d x17 = (omega_2*omega_2);
+        const rigidsym_v4d x18 = -x16 - x17;
+        const rigidsym_v4d x19 = Q_00*x18 + Q_10*x15 + Q_20*x13;
+        const rigidsym_v4d x20 = Q_01*x18 + Q_11*x15 + Q_21*x13;
+        const rigidsym_v4d x21 = Q_02*x18 + Q_12*x15 + Q_22*x13;
+        const rigidsym_v4d x22 = Q_00*omega_2;
+        const rigidsym_v4d x23 = 2.0*x22;
+        const rigidsym_v4d x24 = -2.0*Q_20*omega_0;
+        const rigidsym_v4d x25 = x23 + x24;
+        const rigidsym_v4d x26 = Q_01*omega_2;
+        const rigidsym_v4d x27 = 2.0*x26;
+        const rigidsym_v4d x28 = -2.0*Q_21*omega_0;
+        const rigidsym_v4d x29 = x27 + x28;
+        const rigidsym_v4d x30 = Q_02*omega_2;
+        const rigidsym_v4d x31 = 2.0*x30;
+        const rigidsym_v4d x32 = -2.0*Q_22*omega_0;
+        const rigidsym_v4d x33 = x31 + x32;
+        const rigidsym_v4d x34 = omega_dot_2 + x14;
+        const rigidsym_v4d x35 = omega_1*omega_2;
+        const rigidsym_v4d x36 = -omega_dot_0 + x35;
+        const rigidsym_v4d x37 = (omega_0*omega_0);
+        const rigidsym_v4d x38 = -x17 - x37;
+        const rigidsym_v4d x39 = Q_00*x34 + Q_10*x38 + Q_20*x36;
+        const rigidsym_v4d x40 = Q_01*x34 + Q_11*x38 + Q_21*x36;
+        const rigidsym_v4d x41 = Q_02*x34 + Q_12*x38 + Q_22*x36;
+        const rigidsym_v4d x42 = Q_00*omega_1;
+        const rigidsym_v4d x43 = 2.0*x42;
+        const rigidsym_v4d x44 = -2.0*Q_10*omega_0;
+        const rigidsym_v4d x45 = -x43 - x44;
+        const rigidsym_v4d x46 = Q_01*omega_1;
+        const rigidsym_v4d x47 = 2.0*x46;
+        const rigidsym_v4d x48 = -2.0*Q_11*omega_0;
+        const rigidsym_v4d x49 = -x47 - x48;
+        const rigidsym_v4d x50 = Q_02*omega_1;
+        const rigidsym_v4d x51 = 2.0*x50;
+        const rigidsym_v4d x52 = -2.0*Q_12*omega_0;
+        const rigidsym_v4d x53 = -x51 - x52;
+        const rigidsym_v4d x54 = omega_dot_0 + x35;
+        const rigidsym_v4d x55 = -omega_dot_1 + x12;
+        const rigidsym_v4d x56 = -x16 - x37;
+        const rigidsym_v4d x57 = Q_00*x55 + Q_10*x54 + Q_20*x56;
+        const rigidsym_v4d x58 = Q_01*x55 + Q_11*x54 + Q_21*x56;
+        const rigidsym_v4d x59 = Q_02*x55 + Q_12*x54 + Q_22*x56;
+        const rigidsym_v4d x60 = 2.0*omega_2;
+        const rigidsym_v4d x61 = rho_dot_M_0*x60;
+        const rigidsym_v4d x62 = rho_dot_M_1*x60;
+        const rigidsym_v4d x63 = rho_dot_M_2*x60;
+        const rigidsym_v4d x64 = 2.0*omega_1;
+        const rigidsym_v4d x65 = rho_dot_M_0*x64;
+        const rigidsym_v4d x66 = rho_dot_M_1*x64;
+        const rigidsym_v4d x67 = rho_dot_M_2*x64;
+        const rigidsym_v4d x68 = 2.0*omega_0;
+        const rigidsym_v4d x69 = rho_dot_M_0*x68;
+        const rigidsym_v4d x70 = rho_dot_M_1*x68;
+        const rigidsym_v4d x71 = rho_dot_M_2*x68;
+        const rigidsym_v4d x72 = Q_10*omega_1;
+        const rigidsym_v4d x73 = Q_20*omega_2;
+        const rigidsym_v4d x74 = Q_11*omega_1;
+        const rigidsym_v4d x75 = Q_21*omega_2;
+        const rigidsym_v4d x76 = Q_12*omega_1;
+        const rigidsym_v4d x77 = Q_22*omega_2;
+        const rigidsym_v4d x78 = 2.0*rho_dot_M_0;
+        const rigidsym_v4d x79 = 2.0*rho_dot_M_1;
+        const rigidsym_v4d x80 = 2.0*rho_dot_M_2;
+        const rigidsym_v4d x81 = Q_20*x78 + Q_21*x79 + Q_22*x80;
+        const rigidsym_v4d x82 = Q_10*x78 + Q_11*x79 + Q_12*x80;
+        const rigidsym_v4d x83 = Q_00*omega_0;
+        const rigidsym_v4d x84 = Q_01*omega_0;
+        const rigidsym_v4d x85 = Q_02*omega_0;
+        const rigidsym_v4d x86 = Q_00*x78 + Q_01*x79 + Q_02*x80;
+        const rigidsym_v4d x87 = Q_20*rho_M_0 + Q_21*rho_M_1 + Q_22*rho_M_2;
+        const rigidsym_v4d x88 = Q_10*rho_M_0 + Q_11*rho_M_1 + Q_12*rho_M_2;
+        const rigidsym_v4d x89 = Q_00*rho_M_0 + Q_01*rho_M_1 + Q_02*rho_M_2;
+        __m256d rsv_r_p_ddot[3];
+        rsv_r_p_ddot[0] = (__m256d)(Q_00*rho_ddot_M_0 + Q_01*rho_ddot_M_1 + Q_02*rho_ddot_M_2 + o_ddot_0 + rho_M_0*x19 + rho_M_1*x20 + rho_M_2*x21 + rho_dot_M_0*x3 + rho_dot_M_1*x7 + rho_dot_M_2*x11);
+        rsv_r_p_ddot[1] = (__m256d)(Q_10*rho_ddot_M_0 + Q_11*rho_ddot_M_1 + Q_12*rho_ddot_M_2 + o_ddot_1 + rho_M_0*x39 + rho_M_1*x40 + rho_M_2*x41 + rho_dot_M_0*x25 + rho_dot_M_1*x29 + rho_dot_M_2*x33);
+        rsv_r_p_ddot[2] = (__m256d)(Q_20*rho_ddot_M_0 + Q_21*rho_ddot_M_1 + Q_22*rho_ddot_M_2 + o_ddot_2 + rho_M_0*x57 + rho_M_1*x58 + rho_M_2*x59 + rho_dot_M_0*x45 + rho_dot_M_1*x49 + rho_dot_M_2*x53);
+        rigidsym_store_cols(out_p_ddot + 3 * rsv_j, 3, rsv_r_p_ddot);
+        __m256d rsv_r_p_ddot_D_o_ddot[9];
+        rsv_r_p_ddot_D_o_ddot[0] = (__m256d)(((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        rsv_r_p_ddot_D_o_ddot[1] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_o_ddot[2] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_o_ddot[3] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_o_ddot[4] = (__m256d)(((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        rsv_r_p_ddot_D_o_ddot[5] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_o_ddot[6] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_o_ddot[7] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_o_ddot[8] = (__m256d)(((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        rigidsym_store_cols(out_p_ddot_D_o_ddot + 9 * rsv_j, 9, rsv_r_p_ddot_D_o_ddot);
+        __m256d rsv_r_p_ddot_D_Q[27];
+        rsv_r_p_ddot_D_Q[0] = (__m256d)(rho_M_0*x18 + rho_ddot_M_0);
+        rsv_r_p_ddot_D_Q[1] = (__m256d)(rho_M_1*x18 + rho_ddot_M_1);
+        rsv_r_p_ddot_D_Q[2] = (__m256d)(rho_M_2*x18 + rho_ddot_M_2);
+        rsv_r_p_ddot_D_Q[3] = (__m256d)(rho_M_0*x15 - x61);
+        rsv_r_p_ddot_D_Q[4] = (__m256d)(rho_M_1*x15 - x62);
+        rsv_r_p_ddot_D_Q[5] = (__m256d)(rho_M_2*x15 - x63);
+        rsv_r_p_ddot_D_Q[6] = (__m256d)(rho_M_0*x13 + x65);
+        rsv_r_p_ddot_D_Q[7] = (__m256d)(rho_M_1*x13 + x66);
+        rsv_r_p_ddot_D_Q[8] = (__m256d)(rho_M_2*x13 + x67);
+        rsv_r_p_ddot_D_Q[9] = (__m256d)(rho_M_0*x34 + x61);
+        rsv_r_p_ddot_D_Q[10] = (__m256d)(rho_M_1*x34 + x62);
+        rsv_r_p_ddot_D_Q[11] = (__m256d)(rho_M_2*x34 + x63);
+        rsv_r_p_ddot_D_Q[12] = (__m256d)(rho_M_0*x38 + rho_ddot_M_0);
+        rsv_r_p_ddot_D_Q[13] = (__m256d)(rho_M_1*x38 + rho_ddot_M_1);
+        rsv_r_p_ddot_D_Q[14] = (__m256d)(rho_M_2*x38 + rho_ddot_M_2);
+        rsv_r_p_ddot_D_Q[15] = (__m256d)(rho_M_0*x36 - x69);
+        rsv_r_p_ddot_D_Q[16] = (__m256d)(rho_M_1*x36 - x70);
+        rsv_r_p_ddot_D_Q[17] = (__m256d)(rho_M_2*x36 - x71);
+        rsv_r_p_ddot_D_Q[18] = (__m256d)(rho_M_0*x55 - x65);
+        rsv_r_p_ddot_D_Q[19] = (__m256d)(rho_M_1*x55 - x66);
+        rsv_r_p_ddot_D_Q[20] = (__m256d)(rho_M_2*x55 - x67);
+        rsv_r_p_ddot_D_Q[21] = (__m256d)(rho_M_0*x54 + x69);
+        rsv_r_p_ddot_D_Q[22] = (__m256d)(rho_M_1*x54 + x70);
+        rsv_r_p_ddot_D_Q[23] = (__m256d)(rho_M_2*x54 + x71);
+        rsv_r_p_ddot_D_Q[24] = (__m256d)(rho_M_0*x56 + rho_ddot_M_0);
+        rsv_r_p_ddot_D_Q[25] = (__m256d)(rho_M_1*x56 + rho_ddot_M_1);
+        rsv_r_p_ddot_D_Q[26] = (__m256d)(rho_M_2*x56 + rho_ddot_M_2);
+        rigidsym_store_cols(out_p_ddot_D_Q + 27 * rsv_j, 27, rsv_r_p_ddot_D_Q);
+        __m256d rsv_r_p_ddot_D_omega[9];
+        rsv_r_p_ddot_D_omega[0] = (__m256d)(rho_M_0*(x72 + x73) + rho_M_1*(x74 + x75) + rho_M_2*(x76 + x77));
+        rsv_r_p_ddot_D_omega[1] = (__m256d)(rho_M_0*(Q_10*omega_0 - x43) + rho_M_1*(Q_11*omega_0 - x47) + rho_M_2*(Q_12*omega_0 - x51) + x81);
+        rsv_r_p_ddot_D_omega[2] = (__m256d)(rho_M_0*(Q_20*omega_0 - x23) + rho_M_1*(Q_21*omega_0 - x27) + rho_M_2*(Q_22*omega_0 - x31) - x82);
+        rsv_r_p_ddot_D_omega[3] = (__m256d)(rho_M_0*(x42 + x44) + rho_M_1*(x46 + x48) + rho_M_2*(x50 + x52) - x81);
+        rsv_r_p_ddot_D_omega[4] = (__m256d)(rho_M_0*(x73 + x83) + rho_M_1*(x75 + x84) + rho_M_2*(x77 + x85));
+        rsv_r_p_ddot_D_omega[5] = (__m256d)(rho_M_0*(Q_20*omega_1 - x1) + rho_M_1*(Q_21*omega_1 - x5) + rho_M_2*(Q_22*omega_1 - x9) + x86);
+        rsv_r_p_ddot_D_omega[6] = (__m256d)(rho_M_0*(x22 + x24) + rho_M_1*(x26 + x28) + rho_M_2*(x30 + x32) + x82);
+        rsv_r_p_ddot_D_omega[7] = (__m256d)(rho_M_0*(x0 + x2) + rho_M_1*(x4 + x6) + rho_M_2*(x10 + x8) - x86);
+        rsv_r_p_ddot_D_omega[8] = (__m256d)(rho_M_0*(x72 + x83) + rho_M_1*(x74 + x84) + rho_M_2*(x76 + x85));
+        rigidsym_store_cols(out_p_ddot_D_omega + 9 * rsv_j, 9, rsv_r_p_ddot_D_omega);
+        __m256d rsv_r_p_ddot_D_omega_dot[9];
+        rsv_r_p_ddot_D_omega_dot[0] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_omega_dot[1] = (__m256d)(x87);
+        rsv_r_p_ddot_D_omega_dot[2] = (__m256d)(-x88);
+        rsv_r_p_ddot_D_omega_dot[3] = (__m256d)(-x87);
+        rsv_r_p_ddot_D_omega_dot[4] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_omega_dot[5] = (__m256d)(x89);
+        rsv_r_p_ddot_D_omega_dot[6] = (__m256d)(x88);
+        rsv_r_p_ddot_D_omega_dot[7] = (__m256d)(-x89);
+        rsv_r_p_ddot_D_omega_dot[8] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rigidsym_store_cols(out_p_ddot_D_omega_dot + 9 * rsv_j, 9, rsv_r_p_ddot_D_omega_dot);
+        __m256d rsv_r_p_ddot_D_rho_M[9];
+        rsv_r_p_ddot_D_rho_M[0] = (__m256d)(x19);
+        rsv_r_p_ddot_D_rho_M[1] = (__m256d)(x20);
+        rsv_r_p_ddot_D_rho_M[2] = (__m256d)(x21);
+        rsv_r_p_ddot_D_rho_M[3] = (__m256d)(x39);
+        rsv_r_p_ddot_D_rho_M[4] = (__m256d)(x40);
+        rsv_r_p_ddot_D_rho_M[5] = (__m256d)(x41);
+        rsv_r_p_ddot_D_rho_M[6] = (__m256d)(x57);
+        rsv_r_p_ddot_D_rho_M[7] = (__m256d)(x58);
+        rsv_r_p_ddot_D_rho_M[8] = (__m256d)(x59);
+        rigidsym_store_cols(out_p_ddot_D_rho_M + 9 * rsv_j, 9, rsv_r_p_ddot_D_rho_M);
+        __m256d rsv_r_p_ddot_D_rho_dot_M[9];
+        rsv_r_p_ddot_D_rho_dot_M[0] = (__m256d)(x3);
+        rsv_r_p_ddot_D_rho_dot_M[1] = (__m256d)(x7);
+        rsv_r_p_ddot_D_rho_dot_M[2] = (__m256d)(x11);
+        rsv_r_p_ddot_D_rho_dot_M[3] = (__m256d)(x25);
+        rsv_r_p_ddot_D_rho_dot_M[4] = (__m256d)(x29);
+        rsv_r_p_ddot_D_rho_dot_M[5] = (__m256d)(x33);
+        rsv_r_p_ddot_D_rho_dot_M[6] = (__m256d)(x45);
+        rsv_r_p_ddot_D_rho_dot_M[7] = (__m256d)(x49);
+        rsv_r_p_ddot_D_rho_dot_M[8] = (__m256d)(x53);
+        rigidsym_store_cols(out_p_ddot_D_rho_dot_M + 9 * rsv_j, 9, rsv_r_p_ddot_D_rho_dot_M);
+        __m256d rsv_r_p_ddot_D_rho_ddot_M[9];
+        rsv_r_p_ddot_D_rho_ddot_M[0] = (__m256d)(Q_00);
+        rsv_r_p_ddot_D_rho_ddot_M[1] = (__m256d)(Q_01);
+        rsv_r_p_ddot_D_rho_ddot_M[2] = (__m256d)(Q_02);
+        rsv_r_p_ddot_D_rho_ddot_M[3] = (__m256d)(Q_10);
+        rsv_r_p_ddot_D_rho_ddot_M[4] = (__m256d)(Q_11);
+        rsv_r_p_ddot_D_rho_ddot_M[5] = (__m256d)(Q_12);
+        rsv_r_p_ddot_D_rho_ddot_M[6] = (__m256d)(Q_20);
+        rsv_r_p_ddot_D_rho_ddot_M[7] = (__m256d)(Q_21);
+        rsv_r_p_ddot_D_rho_ddot_M[8] = (__m256d)(Q_22);
+        rigidsym_store_cols(out_p_ddot_D_rho_ddot_M + 9 * rsv_j, 9, rsv_r_p_ddot_D_rho_ddot_M);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -82,6 +339,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
             out_p_ddot_D_rho_ddot_M + 9 * j);
 
     }
+#endif
     return count;
 }
 
@@ -151,6 +409,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     double *RIGIDSYM_RESTRICT out_p_ddot_D_rho_ddot_M)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -169,7 +429,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
             out_p_ddot_D_omega_dot + 9 * j,
             out_p_ddot_D_rho_M + 9 * j,
             out_p_ddot_D_rho_dot_M + 9 * j,
-            out_p_ddot_D_rho_ddot_M + 9 * j);
+            out_p_ddot_D_rho_ddot_M + 9 * j, &xs);
 
         any |= mask[g];
     }
@@ -185,18 +445,20 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_moving_frame_acceleration_with_jacobia
     any |= rigidsym_any_nonfinite(out_p_ddot_D_rho_dot_M, 9 * m);
     any |= rigidsym_any_nonfinite(out_p_ddot_D_rho_ddot_M, 9 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_o_ddot, 3 * m);
-        rigidsym_extreme_add(&xs, in_Q, 9 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
-        rigidsym_extreme_add(&xs, in_rho_M, 3 * m);
-        rigidsym_extreme_add(&xs, in_rho_dot_M, 3 * m);
-        rigidsym_extreme_add(&xs, in_rho_ddot_M, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_o_ddot, 3 * m);
+    rigidsym_extreme_add(&xs, in_Q, 9 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+    rigidsym_extreme_add(&xs, in_rho_M, 3 * m);
+    rigidsym_extreme_add(&xs, in_rho_dot_M, 3 * m);
+    rigidsym_extreme_add(&xs, in_rho_ddot_M, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -54,9 +54,53 @@
 static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_lanes(
     const double *RIGIDSYM_RESTRICT in_p1,
     const double *RIGIDSYM_RESTRICT in_p2,
-    double *RIGIDSYM_RESTRICT out_kappa)
+    double *RIGIDSYM_RESTRICT out_kappa, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_p1[3];
+        rigidsym_load_cols(in_p1 + 3 * rsv_j, 3, rsv_c_p1);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_p1[rsv_q]);
+        __m256d rsv_c_p2[3];
+        rigidsym_load_cols(in_p2 + 3 * rsv_j, 3, rsv_c_p2);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_p2[rsv_q]);
+        const rigidsym_v4d p1_0 = (rigidsym_v4d)rsv_c_p1[0];
+        const rigidsym_v4d p1_1 = (rigidsym_v4d)rsv_c_p1[1];
+        const rigidsym_v4d p1_2 = (rigidsym_v4d)rsv_c_p1[2];
+        const rigidsym_v4d p2_0 = (rigidsym_v4d)rsv_c_p2[0];
+        const rigidsym_v4d p2_1 = (rigidsym_v4d)rsv_c_p2[1];
+        const rigidsym_v4d p2_2 = (rigidsym_v4d)rsv_c_p2[2];
+        const rigidsym_v4d x0 = -p1_0 + p2_0;
+        const rigidsym_v4d x1 = -p1_1 + p2_1;
+        const rigidsym_v4d x2 = -p1_2 + p2_2;
+        const rigidsym_v4d x3 = (x0*x0) + (x1*x1) + (x2*x2);
+        const rigidsym_v4d x4 = 1.0/rigidsym_sqrt_v4(x3);
+        __m256d rsv_r_kappa[6];
+        rsv_r_kappa[0] = (__m256d)(x0*x4);
+        rsv_r_kappa[1] = (__m256d)(x1*x4);
+        rsv_r_kappa[2] = (__m256d)(x2*x4);
+        rsv_r_kappa[3] = (__m256d)(x4*rigidsym_diffprod_v4(p1_1, p2_2, p1_2, p2_1));
+        rsv_r_kappa[4] = (__m256d)(x4*rigidsym_diffprod_v4(-p1_0, p2_2, -p1_2, p2_0));
+        rsv_r_kappa[5] = (__m256d)(x4*rigidsym_diffprod_v4(p1_0, p2_1, p1_1, p2_0));
+        rigidsym_store_cols(out_kappa + 6 * rsv_j, 6, rsv_r_kappa);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x3) == 0.0;
+        const rigidsym_v4d finite = ((x4 - x4) + (x3 - x3));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
     for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
@@ -66,6 +110,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_lanes(
             out_kappa + 6 * j) != 0) << j;
 
     }
+#endif
     return count;
 }
 
@@ -98,13 +143,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block(
     double *RIGIDSYM_RESTRICT out_kappa)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
         mask[g] = rigidsym_plucker_from_points_lanes(
             in_p1 + 3 * j,
             in_p2 + 3 * j,
-            out_kappa + 6 * j);
+            out_kappa + 6 * j, &xs);
 
         any |= mask[g];
     }
@@ -113,13 +160,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_block(
 #else
     any |= rigidsym_any_nonfinite(out_kappa, 6 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_p1, 3 * m);
-        rigidsym_extreme_add(&xs, in_p2, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_p1, 3 * m);
+    rigidsym_extreme_add(&xs, in_p2, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -54,9 +54,119 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_lan
     const double *RIGIDSYM_RESTRICT in_p2,
     double *RIGIDSYM_RESTRICT out_kappa,
     double *RIGIDSYM_RESTRICT out_kappa_D_p1,
-    double *RIGIDSYM_RESTRICT out_kappa_D_p2)
+    double *RIGIDSYM_RESTRICT out_kappa_D_p2, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_p1[3];
+        rigidsym_load_cols(in_p1 + 3 * rsv_j, 3, rsv_c_p1);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_p1[rsv_q]);
+        __m256d rsv_c_p2[3];
+        rigidsym_load_cols(in_p2 + 3 * rsv_j, 3, rsv_c_p2);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_p2[rsv_q]);
+        const rigidsym_v4d p1_0 = (rigidsym_v4d)rsv_c_p1[0];
+        const rigidsym_v4d p1_1 = (rigidsym_v4d)rsv_c_p1[1];
+        const rigidsym_v4d p1_2 = (rigidsym_v4d)rsv_c_p1[2];
+        const rigidsym_v4d p2_0 = (rigidsym_v4d)rsv_c_p2[0];
+        const rigidsym_v4d p2_1 = (rigidsym_v4d)rsv_c_p2[1];
+        const rigidsym_v4d p2_2 = (rigidsym_v4d)rsv_c_p2[2];
+        const rigidsym_v4d x0 = p1_0 - p2_0;
+        const rigidsym_v4d x1 = -x0;
+        const rigidsym_v4d x2 = (x1*x1);
+        const rigidsym_v4d x3 = p1_1 - p2_1;
+        const rigidsym_v4d x4 = -x3;
+        const rigidsym_v4d x5 = (x4*x4);
+        const rigidsym_v4d x6 = p1_2 - p2_2;
+        const rigidsym_v4d x7 = -x6;
+        const rigidsym_v4d x8 = (x7*x7);
+        const rigidsym_v4d x9 = x2 + x5 + x8;
+        const rigidsym_v4d x10 = 1.0/rigidsym_sqrt_v4(x9);
+        const rigidsym_v4d x11 = rigidsym_diffprod_v4(p1_1, p2_2, p1_2, p2_1);
+        const rigidsym_v4d x12 = rigidsym_diffprod_v4(-p1_0, p2_2, -p1_2, p2_0);
+        const rigidsym_v4d x13 = rigidsym_diffprod_v4(p1_0, p2_1, p1_1, p2_0);
+        const rigidsym_v4d x14 = -x10;
+        const rigidsym_v4d x15 = 1.0/(x9*rigidsym_sqrt_v4(x9));
+        const rigidsym_v4d x16 = x1*x15;
+        const rigidsym_v4d x17 = x16*x4;
+        const rigidsym_v4d x18 = x16*x7;
+        const rigidsym_v4d x19 = x15*x4;
+        const rigidsym_v4d x20 = x19*x7;
+        const rigidsym_v4d x21 = p2_2*x10;
+        const rigidsym_v4d x22 = p2_1*x10;
+        const rigidsym_v4d x23 = p2_0*x10;
+        const rigidsym_v4d x24 = x15*x7;
+        const rigidsym_v4d x25 = x11*x15;
+        const rigidsym_v4d x26 = p1_2*x10;
+        const rigidsym_v4d x27 = p1_1*x10;
+        const rigidsym_v4d x28 = x12*x15;
+        const rigidsym_v4d x29 = p1_0*x10;
+        const rigidsym_v4d x30 = x13*x15;
+        __m256d rsv_r_kappa[6];
+        rsv_r_kappa[0] = (__m256d)(x1*x10);
+        rsv_r_kappa[1] = (__m256d)(x10*x4);
+        rsv_r_kappa[2] = (__m256d)(x10*x7);
+        rsv_r_kappa[3] = (__m256d)(x10*x11);
+        rsv_r_kappa[4] = (__m256d)(x10*x12);
+        rsv_r_kappa[5] = (__m256d)(x10*x13);
+        rigidsym_store_cols(out_kappa + 6 * rsv_j, 6, rsv_r_kappa);
+        __m256d rsv_r_kappa_D_p1[18];
+        rsv_r_kappa_D_p1[0] = (__m256d)(x14 + x15*x2);
+        rsv_r_kappa_D_p1[1] = (__m256d)(x17);
+        rsv_r_kappa_D_p1[2] = (__m256d)(x18);
+        rsv_r_kappa_D_p1[3] = (__m256d)(x17);
+        rsv_r_kappa_D_p1[4] = (__m256d)(x14 + x15*x5);
+        rsv_r_kappa_D_p1[5] = (__m256d)(x20);
+        rsv_r_kappa_D_p1[6] = (__m256d)(x18);
+        rsv_r_kappa_D_p1[7] = (__m256d)(x20);
+        rsv_r_kappa_D_p1[8] = (__m256d)(x14 + x15*x8);
+        rsv_r_kappa_D_p1[9] = (__m256d)(x11*x16);
+        rsv_r_kappa_D_p1[10] = (__m256d)(x11*x19 + x21);
+        rsv_r_kappa_D_p1[11] = (__m256d)(x11*x15*x7 - x22);
+        rsv_r_kappa_D_p1[12] = (__m256d)(x1*x12*x15 - x21);
+        rsv_r_kappa_D_p1[13] = (__m256d)(x12*x19);
+        rsv_r_kappa_D_p1[14] = (__m256d)(x12*x24 + x23);
+        rsv_r_kappa_D_p1[15] = (__m256d)(x13*x16 + x22);
+        rsv_r_kappa_D_p1[16] = (__m256d)(x13*x15*x4 - x23);
+        rsv_r_kappa_D_p1[17] = (__m256d)(x13*x24);
+        rigidsym_store_cols(out_kappa_D_p1 + 18 * rsv_j, 18, rsv_r_kappa_D_p1);
+        __m256d rsv_r_kappa_D_p2[18];
+        rsv_r_kappa_D_p2[0] = (__m256d)(x0*x16 + x10);
+        rsv_r_kappa_D_p2[1] = (__m256d)(x16*x3);
+        rsv_r_kappa_D_p2[2] = (__m256d)(x16*x6);
+        rsv_r_kappa_D_p2[3] = (__m256d)(x0*x19);
+        rsv_r_kappa_D_p2[4] = (__m256d)(x10 + x19*x3);
+        rsv_r_kappa_D_p2[5] = (__m256d)(x19*x6);
+        rsv_r_kappa_D_p2[6] = (__m256d)(x0*x24);
+        rsv_r_kappa_D_p2[7] = (__m256d)(x24*x3);
+        rsv_r_kappa_D_p2[8] = (__m256d)(x10 + x24*x6);
+        rsv_r_kappa_D_p2[9] = (__m256d)(x0*x25);
+        rsv_r_kappa_D_p2[10] = (__m256d)(x11*x15*x3 - x26);
+        rsv_r_kappa_D_p2[11] = (__m256d)(x25*x6 + x27);
+        rsv_r_kappa_D_p2[12] = (__m256d)(x0*x28 + x26);
+        rsv_r_kappa_D_p2[13] = (__m256d)(x28*x3);
+        rsv_r_kappa_D_p2[14] = (__m256d)(x12*x15*x6 - x29);
+        rsv_r_kappa_D_p2[15] = (__m256d)(x0*x13*x15 - x27);
+        rsv_r_kappa_D_p2[16] = (__m256d)(x29 + x3*x30);
+        rsv_r_kappa_D_p2[17] = (__m256d)(x30*x6);
+        rigidsym_store_cols(out_kappa_D_p2 + 18 * rsv_j, 18, rsv_r_kappa_D_p2);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x9) == 0.0;
+        const rigidsym_v4d finite = ((x10 - x10) + ((x15 - x15) + (x9 - x9)));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
     for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
@@ -68,6 +178,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_lan
             out_kappa_D_p2 + 18 * j) != 0) << j;
 
     }
+#endif
     return count;
 }
 
@@ -106,6 +217,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_blo
     double *RIGIDSYM_RESTRICT out_kappa_D_p2)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -114,7 +227,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_blo
             in_p2 + 3 * j,
             out_kappa + 6 * j,
             out_kappa_D_p1 + 18 * j,
-            out_kappa_D_p2 + 18 * j);
+            out_kappa_D_p2 + 18 * j, &xs);
 
         any |= mask[g];
     }
@@ -125,13 +238,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_from_points_with_jacobians_blo
     any |= rigidsym_any_nonfinite(out_kappa_D_p1, 18 * m);
     any |= rigidsym_any_nonfinite(out_kappa_D_p2, 18 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_p1, 3 * m);
-        rigidsym_extreme_add(&xs, in_p2, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_p1, 3 * m);
+    rigidsym_extreme_add(&xs, in_p2, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -46,9 +46,56 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_lanes(
     const double *RIGIDSYM_RESTRICT in_kappa_A,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_b,
-    double *RIGIDSYM_RESTRICT out_kappa_B)
+    double *RIGIDSYM_RESTRICT out_kappa_B, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_kappa_A[6];
+        rigidsym_load_cols(in_kappa_A + 6 * rsv_j, 6, rsv_c_kappa_A);
+        for (int rsv_q = 0; rsv_q < 6; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_kappa_A[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        __m256d rsv_c_b[3];
+        rigidsym_load_cols(in_b + 3 * rsv_j, 3, rsv_c_b);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_b[rsv_q]);
+        const rigidsym_v4d kappa_A_0 = (rigidsym_v4d)rsv_c_kappa_A[0];
+        const rigidsym_v4d kappa_A_1 = (rigidsym_v4d)rsv_c_kappa_A[1];
+        const rigidsym_v4d kappa_A_2 = (rigidsym_v4d)rsv_c_kappa_A[2];
+        const rigidsym_v4d kappa_A_3 = (rigidsym_v4d)rsv_c_kappa_A[3];
+        const rigidsym_v4d kappa_A_4 = (rigidsym_v4d)rsv_c_kappa_A[4];
+        const rigidsym_v4d kappa_A_5 = (rigidsym_v4d)rsv_c_kappa_A[5];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d b_0 = (rigidsym_v4d)rsv_c_b[0];
+        const rigidsym_v4d b_1 = (rigidsym_v4d)rsv_c_b[1];
+        const rigidsym_v4d b_2 = (rigidsym_v4d)rsv_c_b[2];
+        const rigidsym_v4d x0 = a_2 - b_2;
+        const rigidsym_v4d x1 = a_1 - b_1;
+        const rigidsym_v4d x2 = a_0 - b_0;
+        __m256d rsv_r_kappa_B[6];
+        rsv_r_kappa_B[0] = (__m256d)(kappa_A_0);
+        rsv_r_kappa_B[1] = (__m256d)(kappa_A_1);
+        rsv_r_kappa_B[2] = (__m256d)(kappa_A_2);
+        rsv_r_kappa_B[3] = (__m256d)(-kappa_A_1*x0 + kappa_A_2*x1 + kappa_A_3);
+        rsv_r_kappa_B[4] = (__m256d)(kappa_A_0*x0 - kappa_A_2*x2 + kappa_A_4);
+        rsv_r_kappa_B[5] = (__m256d)(-kappa_A_0*x1 + kappa_A_1*x2 + kappa_A_5);
+        rigidsym_store_cols(out_kappa_B + 6 * rsv_j, 6, rsv_r_kappa_B);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -60,6 +107,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_lanes(
             out_kappa_B + 6 * j);
 
     }
+#endif
     return count;
 }
 
@@ -96,6 +144,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_block(
     double *RIGIDSYM_RESTRICT out_kappa_B)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -103,7 +153,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_block(
             in_kappa_A + 6 * j,
             in_a + 3 * j,
             in_b + 3 * j,
-            out_kappa_B + 6 * j);
+            out_kappa_B + 6 * j, &xs);
 
         any |= mask[g];
     }
@@ -112,14 +162,16 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_plucker_transfer_block(
 #else
     any |= rigidsym_any_nonfinite(out_kappa_B, 6 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_kappa_A, 6 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        rigidsym_extreme_add(&xs, in_b, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_kappa_A, 6 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    rigidsym_extreme_add(&xs, in_b, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -48,9 +48,67 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_lanes(
     const double *RIGIDSYM_RESTRICT in_omega_dot,
     const double *RIGIDSYM_RESTRICT in_p,
     const double *RIGIDSYM_RESTRICT in_a,
-    double *RIGIDSYM_RESTRICT out_p_ddot)
+    double *RIGIDSYM_RESTRICT out_p_ddot, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_a_ddot[3];
+        rigidsym_load_cols(in_a_ddot + 3 * rsv_j, 3, rsv_c_a_ddot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a_ddot[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        __m256d rsv_c_omega_dot[3];
+        rigidsym_load_cols(in_omega_dot + 3 * rsv_j, 3, rsv_c_omega_dot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega_dot[rsv_q]);
+        __m256d rsv_c_p[3];
+        rigidsym_load_cols(in_p + 3 * rsv_j, 3, rsv_c_p);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_p[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        const rigidsym_v4d a_ddot_0 = (rigidsym_v4d)rsv_c_a_ddot[0];
+        const rigidsym_v4d a_ddot_1 = (rigidsym_v4d)rsv_c_a_ddot[1];
+        const rigidsym_v4d a_ddot_2 = (rigidsym_v4d)rsv_c_a_ddot[2];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d omega_dot_0 = (rigidsym_v4d)rsv_c_omega_dot[0];
+        const rigidsym_v4d omega_dot_1 = (rigidsym_v4d)rsv_c_omega_dot[1];
+        const rigidsym_v4d omega_dot_2 = (rigidsym_v4d)rsv_c_omega_dot[2];
+        const rigidsym_v4d p_0 = (rigidsym_v4d)rsv_c_p[0];
+        const rigidsym_v4d p_1 = (rigidsym_v4d)rsv_c_p[1];
+        const rigidsym_v4d p_2 = (rigidsym_v4d)rsv_c_p[2];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d x0 = -a_2 + p_2;
+        const rigidsym_v4d x1 = -a_1 + p_1;
+        const rigidsym_v4d x2 = -a_0 + p_0;
+        const rigidsym_v4d x3 = omega_0*x1 - omega_1*x2;
+        const rigidsym_v4d x4 = -omega_0*x0 + omega_2*x2;
+        const rigidsym_v4d x5 = omega_1*x0 - omega_2*x1;
+        __m256d rsv_r_p_ddot[3];
+        rsv_r_p_ddot[0] = (__m256d)(a_ddot_0 + omega_1*x3 - omega_2*x4 + omega_dot_1*x0 - omega_dot_2*x1);
+        rsv_r_p_ddot[1] = (__m256d)(a_ddot_1 - omega_0*x3 + omega_2*x5 - omega_dot_0*x0 + omega_dot_2*x2);
+        rsv_r_p_ddot[2] = (__m256d)(a_ddot_2 + omega_0*x4 - omega_1*x5 + omega_dot_0*x1 - omega_dot_1*x2);
+        rigidsym_store_cols(out_p_ddot + 3 * rsv_j, 3, rsv_r_p_ddot);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -64,6 +122,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_lanes(
             out_p_ddot + 3 * j);
 
     }
+#endif
     return count;
 }
 
@@ -106,6 +165,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block(
     double *RIGIDSYM_RESTRICT out_p_ddot)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -115,7 +176,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block(
             in_omega_dot + 3 * j,
             in_p + 3 * j,
             in_a + 3 * j,
-            out_p_ddot + 3 * j);
+            out_p_ddot + 3 * j, &xs);
 
         any |= mask[g];
     }
@@ -124,16 +185,18 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_block(
 #else
     any |= rigidsym_any_nonfinite(out_p_ddot, 3 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_a_ddot, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
-        rigidsym_extreme_add(&xs, in_p, 3 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_a_ddot, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+    rigidsym_extreme_add(&xs, in_p, 3 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

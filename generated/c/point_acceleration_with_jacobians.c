@@ -53,9 +53,146 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_lane
     double *RIGIDSYM_RESTRICT out_p_ddot_D_omega,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_omega_dot,
     double *RIGIDSYM_RESTRICT out_p_ddot_D_p,
-    double *RIGIDSYM_RESTRICT out_p_ddot_D_a)
+    double *RIGIDSYM_RESTRICT out_p_ddot_D_a, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_a_ddot[3];
+        rigidsym_load_cols(in_a_ddot + 3 * rsv_j, 3, rsv_c_a_ddot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a_ddot[rsv_q]);
+        __m256d rsv_c_omega[3];
+        rigidsym_load_cols(in_omega + 3 * rsv_j, 3, rsv_c_omega);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega[rsv_q]);
+        __m256d rsv_c_omega_dot[3];
+        rigidsym_load_cols(in_omega_dot + 3 * rsv_j, 3, rsv_c_omega_dot);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_omega_dot[rsv_q]);
+        __m256d rsv_c_p[3];
+        rigidsym_load_cols(in_p + 3 * rsv_j, 3, rsv_c_p);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_p[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        const rigidsym_v4d a_ddot_0 = (rigidsym_v4d)rsv_c_a_ddot[0];
+        const rigidsym_v4d a_ddot_1 = (rigidsym_v4d)rsv_c_a_ddot[1];
+        const rigidsym_v4d a_ddot_2 = (rigidsym_v4d)rsv_c_a_ddot[2];
+        const rigidsym_v4d omega_0 = (rigidsym_v4d)rsv_c_omega[0];
+        const rigidsym_v4d omega_1 = (rigidsym_v4d)rsv_c_omega[1];
+        const rigidsym_v4d omega_2 = (rigidsym_v4d)rsv_c_omega[2];
+        const rigidsym_v4d omega_dot_0 = (rigidsym_v4d)rsv_c_omega_dot[0];
+        const rigidsym_v4d omega_dot_1 = (rigidsym_v4d)rsv_c_omega_dot[1];
+        const rigidsym_v4d omega_dot_2 = (rigidsym_v4d)rsv_c_omega_dot[2];
+        const rigidsym_v4d p_0 = (rigidsym_v4d)rsv_c_p[0];
+        const rigidsym_v4d p_1 = (rigidsym_v4d)rsv_c_p[1];
+        const rigidsym_v4d p_2 = (rigidsym_v4d)rsv_c_p[2];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d x0 = a_2 - p_2;
+        const rigidsym_v4d x1 = -x0;
+        const rigidsym_v4d x2 = a_1 - p_1;
+        const rigidsym_v4d x3 = -x2;
+        const rigidsym_v4d x4 = omega_0*x3;
+        const rigidsym_v4d x5 = a_0 - p_0;
+        const rigidsym_v4d x6 = -x5;
+        const rigidsym_v4d x7 = -omega_1*x6;
+        const rigidsym_v4d x8 = x4 + x7;
+        const rigidsym_v4d x9 = omega_0*x1;
+        const rigidsym_v4d x10 = omega_2*x6 - x9;
+        const rigidsym_v4d x11 = omega_1*x1;
+        const rigidsym_v4d x12 = -omega_2*x3;
+        const rigidsym_v4d x13 = x11 + x12;
+        const rigidsym_v4d x14 = omega_2*x6;
+        const rigidsym_v4d x15 = (omega_1*omega_1);
+        const rigidsym_v4d x16 = (omega_2*omega_2);
+        const rigidsym_v4d x17 = x15 + x16;
+        const rigidsym_v4d x18 = omega_0*omega_1;
+        const rigidsym_v4d x19 = -omega_dot_2 + x18;
+        const rigidsym_v4d x20 = omega_0*omega_2;
+        const rigidsym_v4d x21 = omega_dot_1 + x20;
+        const rigidsym_v4d x22 = omega_dot_2 + x18;
+        const rigidsym_v4d x23 = (omega_0*omega_0);
+        const rigidsym_v4d x24 = x16 + x23;
+        const rigidsym_v4d x25 = omega_1*omega_2;
+        const rigidsym_v4d x26 = -omega_dot_0 + x25;
+        const rigidsym_v4d x27 = -omega_dot_1 + x20;
+        const rigidsym_v4d x28 = omega_dot_0 + x25;
+        const rigidsym_v4d x29 = x15 + x23;
+        __m256d rsv_r_p_ddot[3];
+        rsv_r_p_ddot[0] = (__m256d)(a_ddot_0 + omega_1*x8 - omega_2*x10 + omega_dot_1*x1 - omega_dot_2*x3);
+        rsv_r_p_ddot[1] = (__m256d)(a_ddot_1 - omega_0*x8 + omega_2*x13 - omega_dot_0*x1 + omega_dot_2*x6);
+        rsv_r_p_ddot[2] = (__m256d)(a_ddot_2 + omega_0*x10 - omega_1*x13 + omega_dot_0*x3 - omega_dot_1*x6);
+        rigidsym_store_cols(out_p_ddot + 3 * rsv_j, 3, rsv_r_p_ddot);
+        __m256d rsv_r_p_ddot_D_a_ddot[9];
+        rsv_r_p_ddot_D_a_ddot[0] = (__m256d)(((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        rsv_r_p_ddot_D_a_ddot[1] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_a_ddot[2] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_a_ddot[3] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_a_ddot[4] = (__m256d)(((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        rsv_r_p_ddot_D_a_ddot[5] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_a_ddot[6] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_a_ddot[7] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_a_ddot[8] = (__m256d)(((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        rigidsym_store_cols(out_p_ddot_D_a_ddot + 9 * rsv_j, 9, rsv_r_p_ddot_D_a_ddot);
+        __m256d rsv_r_p_ddot_D_omega[9];
+        rsv_r_p_ddot_D_omega[0] = (__m256d)(omega_1*x3 - omega_2*x0);
+        rsv_r_p_ddot_D_omega[1] = (__m256d)(omega_1*x5 + x8);
+        rsv_r_p_ddot_D_omega[2] = (__m256d)(-2.0*x14 + x9);
+        rsv_r_p_ddot_D_omega[3] = (__m256d)(-2.0*x4 - x7);
+        rsv_r_p_ddot_D_omega[4] = (__m256d)(-omega_0*x5 + omega_2*x1);
+        rsv_r_p_ddot_D_omega[5] = (__m256d)(omega_2*x2 + x13);
+        rsv_r_p_ddot_D_omega[6] = (__m256d)(omega_0*x0 + x14 - x9);
+        rsv_r_p_ddot_D_omega[7] = (__m256d)(-2.0*x11 - x12);
+        rsv_r_p_ddot_D_omega[8] = (__m256d)(omega_0*x6 - omega_1*x2);
+        rigidsym_store_cols(out_p_ddot_D_omega + 9 * rsv_j, 9, rsv_r_p_ddot_D_omega);
+        __m256d rsv_r_p_ddot_D_omega_dot[9];
+        rsv_r_p_ddot_D_omega_dot[0] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_omega_dot[1] = (__m256d)(x1);
+        rsv_r_p_ddot_D_omega_dot[2] = (__m256d)(x2);
+        rsv_r_p_ddot_D_omega_dot[3] = (__m256d)(x0);
+        rsv_r_p_ddot_D_omega_dot[4] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rsv_r_p_ddot_D_omega_dot[5] = (__m256d)(x6);
+        rsv_r_p_ddot_D_omega_dot[6] = (__m256d)(x3);
+        rsv_r_p_ddot_D_omega_dot[7] = (__m256d)(x5);
+        rsv_r_p_ddot_D_omega_dot[8] = (__m256d)(((rigidsym_v4d){0.0, 0.0, 0.0, 0.0}));
+        rigidsym_store_cols(out_p_ddot_D_omega_dot + 9 * rsv_j, 9, rsv_r_p_ddot_D_omega_dot);
+        __m256d rsv_r_p_ddot_D_p[9];
+        rsv_r_p_ddot_D_p[0] = (__m256d)(-x17);
+        rsv_r_p_ddot_D_p[1] = (__m256d)(x19);
+        rsv_r_p_ddot_D_p[2] = (__m256d)(x21);
+        rsv_r_p_ddot_D_p[3] = (__m256d)(x22);
+        rsv_r_p_ddot_D_p[4] = (__m256d)(-x24);
+        rsv_r_p_ddot_D_p[5] = (__m256d)(x26);
+        rsv_r_p_ddot_D_p[6] = (__m256d)(x27);
+        rsv_r_p_ddot_D_p[7] = (__m256d)(x28);
+        rsv_r_p_ddot_D_p[8] = (__m256d)(-x29);
+        rigidsym_store_cols(out_p_ddot_D_p + 9 * rsv_j, 9, rsv_r_p_ddot_D_p);
+        __m256d rsv_r_p_ddot_D_a[9];
+        rsv_r_p_ddot_D_a[0] = (__m256d)(x17);
+        rsv_r_p_ddot_D_a[1] = (__m256d)(-x19);
+        rsv_r_p_ddot_D_a[2] = (__m256d)(-x21);
+        rsv_r_p_ddot_D_a[3] = (__m256d)(-x22);
+        rsv_r_p_ddot_D_a[4] = (__m256d)(x24);
+        rsv_r_p_ddot_D_a[5] = (__m256d)(-x26);
+        rsv_r_p_ddot_D_a[6] = (__m256d)(-x27);
+        rsv_r_p_ddot_D_a[7] = (__m256d)(-x28);
+        rsv_r_p_ddot_D_a[8] = (__m256d)(x29);
+        rigidsym_store_cols(out_p_ddot_D_a + 9 * rsv_j, 9, rsv_r_p_ddot_D_a);
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* No division, root or branch: nothing to count per sample. A plain loop; the
      * compiler's cost model decides on vectorisation (forcing it turns the strided
      * row-major loads into gathers, measured slower). */
@@ -74,6 +211,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_lane
             out_p_ddot_D_a + 9 * j);
 
     }
+#endif
     return count;
 }
 
@@ -131,6 +269,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_bloc
     double *RIGIDSYM_RESTRICT out_p_ddot_D_a)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -145,7 +285,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_bloc
             out_p_ddot_D_omega + 9 * j,
             out_p_ddot_D_omega_dot + 9 * j,
             out_p_ddot_D_p + 9 * j,
-            out_p_ddot_D_a + 9 * j);
+            out_p_ddot_D_a + 9 * j, &xs);
 
         any |= mask[g];
     }
@@ -159,16 +299,18 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_point_acceleration_with_jacobians_bloc
     any |= rigidsym_any_nonfinite(out_p_ddot_D_p, 9 * m);
     any |= rigidsym_any_nonfinite(out_p_ddot_D_a, 9 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_a_ddot, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega, 3 * m);
-        rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
-        rigidsym_extreme_add(&xs, in_p, 3 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_a_ddot, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega, 3 * m);
+    rigidsym_extreme_add(&xs, in_omega_dot, 3 * m);
+    rigidsym_extreme_add(&xs, in_p, 3 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -57,7 +57,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_lanes(
     const double *RIGIDSYM_RESTRICT in_phi,
     const double *RIGIDSYM_RESTRICT in_a,
     const double *RIGIDSYM_RESTRICT in_a_prime,
-    double *RIGIDSYM_RESTRICT out_p0)
+    double *RIGIDSYM_RESTRICT out_p0, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -90,6 +90,74 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_lanes(
                 trig_1[j] = cos(x8);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        __m256d rsv_c_a_prime[3];
+        rigidsym_load_cols(in_a_prime + 3 * rsv_j, 3, rsv_c_a_prime);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a_prime[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d a_prime_0 = (rigidsym_v4d)rsv_c_a_prime[0];
+        const rigidsym_v4d a_prime_1 = (rigidsym_v4d)rsv_c_a_prime[1];
+        const rigidsym_v4d a_prime_2 = (rigidsym_v4d)rsv_c_a_prime[2];
+        const rigidsym_v4d x0 = a_1 + a_prime_1;
+        const rigidsym_v4d x1 = a_0 + a_prime_0;
+        const rigidsym_v4d x2 = (0.5)*e_0*x0 - 0.5*e_1*x1;
+        const rigidsym_v4d x3 = a_2 + a_prime_2;
+        const rigidsym_v4d x4 = -e_0*x3 + e_2*x1;
+        const rigidsym_v4d x5 = (0.5)*e_2;
+        const rigidsym_v4d x6 = -a_2 + a_prime_2;
+        const rigidsym_v4d x7 = -a_1 + a_prime_1;
+        const rigidsym_v4d x9 = trig_0;
+        const rigidsym_v4d x10 = (0.5)*trig_1/x9;
+        const rigidsym_v4d x11 = rigidsym_sumprod4_v4(e_0, e_0, e_1, e_1, e_2, e_2, ((rigidsym_v4d){-1.0, -1.0, -1.0, -1.0}), ((rigidsym_v4d){1.0, 1.0, 1.0, 1.0}));
+        const rigidsym_v4d x12 = (x9*x9);
+        const rigidsym_v4d x13 = x11*x12;
+        const rigidsym_v4d x14 = (e_0*e_0) + (e_1*e_1) + (e_2*e_2);
+        const rigidsym_v4d x15 = a_0*e_0 + a_1*e_1 + a_2*e_2;
+        const rigidsym_v4d x16 = e_1*x3 - e_2*x0;
+        const rigidsym_v4d x17 = -a_0 + a_prime_0;
+        __m256d rsv_r_p0[3];
+        rsv_r_p0[0] = (__m256d)(-e_1*x2 + x10*(e_1*x6 - e_2*x7) + x11*(a_0*x13 + (0.5)*a_0 - 0.5*a_prime_0 + x12*(-a_0*x14 + e_0*x15)) + x4*x5);
+        rsv_r_p0[1] = (__m256d)(e_0*x2 + x10*(-e_0*x6 + e_2*x17) + x11*(a_1*x13 + (0.5)*a_1 - 0.5*a_prime_1 + x12*(-a_1*x14 + e_1*x15)) - x16*x5);
+        rsv_r_p0[2] = (__m256d)(-0.5*e_0*x4 + (0.5)*e_1*x16 + x10*(e_0*x7 - e_1*x17) + x11*(a_2*x13 + (0.5)*a_2 - 0.5*a_prime_2 + x12*(-a_2*x14 + e_2*x15)));
+        rigidsym_store_cols(out_p0 + 3 * rsv_j, 3, rsv_r_p0);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x9) == 0.0;
+        const rigidsym_v4d finite = ((x10 - x10) + (x9 - x9));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_screw_axis_point_sample_trig(
             in_e + 3 * j,
@@ -100,6 +168,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_lanes(
             trig_1[j],
             out_p0 + 3 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -167,6 +236,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_block(
     double *RIGIDSYM_RESTRICT out_p0)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
@@ -175,7 +246,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_block(
             in_phi + 1 * j,
             in_a + 3 * j,
             in_a_prime + 3 * j,
-            out_p0 + 3 * j);
+            out_p0 + 3 * j, &xs);
 
         any |= mask[g];
     }
@@ -184,15 +255,17 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_block(
 #else
     any |= rigidsym_any_nonfinite(out_p0, 3 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        rigidsym_extreme_add(&xs, in_a_prime, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    rigidsym_extreme_add(&xs, in_a_prime, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

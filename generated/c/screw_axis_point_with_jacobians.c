@@ -61,7 +61,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_lanes(
     double *RIGIDSYM_RESTRICT out_p0_D_e,
     double *RIGIDSYM_RESTRICT out_p0_D_phi,
     double *RIGIDSYM_RESTRICT out_p0_D_a,
-    double *RIGIDSYM_RESTRICT out_p0_D_a_prime)
+    double *RIGIDSYM_RESTRICT out_p0_D_a_prime, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
     RIGIDSYM_ALIGNED double trig_0[RIGIDSYM_LANES_TRIG];
@@ -94,6 +94,185 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_lanes(
                 trig_1[j] = cos(x0);
         }
     }
+#if RIGIDSYM_VEC_F64
+    /* the per-sample loop across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h;
+     * as the kernels without sin/cos below): the sin/cos values read as columns */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES_TRIG; rsv_j += 4) {
+        __m256d rsv_c_e[3];
+        rigidsym_load_cols(in_e + 3 * rsv_j, 3, rsv_c_e);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_e[rsv_q]);
+        __m256d rsv_c_phi[1];
+        rigidsym_load_cols(in_phi + 1 * rsv_j, 1, rsv_c_phi);
+        for (int rsv_q = 0; rsv_q < 1; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_phi[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        __m256d rsv_c_a_prime[3];
+        rigidsym_load_cols(in_a_prime + 3 * rsv_j, 3, rsv_c_a_prime);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a_prime[rsv_q]);
+        const __m256d rsv_t_trig_0 = _mm256_loadu_pd(trig_0 + rsv_j);
+        const __m256d rsv_t_trig_1 = _mm256_loadu_pd(trig_1 + rsv_j);
+        {
+        const rigidsym_v4d trig_0 = (rigidsym_v4d)rsv_t_trig_0;
+        const rigidsym_v4d trig_1 = (rigidsym_v4d)rsv_t_trig_1;
+        const rigidsym_v4d e_0 = (rigidsym_v4d)rsv_c_e[0];
+        const rigidsym_v4d e_1 = (rigidsym_v4d)rsv_c_e[1];
+        const rigidsym_v4d e_2 = (rigidsym_v4d)rsv_c_e[2];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d a_prime_0 = (rigidsym_v4d)rsv_c_a_prime[0];
+        const rigidsym_v4d a_prime_1 = (rigidsym_v4d)rsv_c_a_prime[1];
+        const rigidsym_v4d a_prime_2 = (rigidsym_v4d)rsv_c_a_prime[2];
+        const rigidsym_v4d x1 = trig_0;
+        const rigidsym_v4d x2 = (x1*x1);
+        const rigidsym_v4d x3 = 2.0*e_1;
+        const rigidsym_v4d x4 = x2*x3;
+        const rigidsym_v4d x5 = e_0*x4;
+        const rigidsym_v4d x6 = trig_1;
+        const rigidsym_v4d x7 = x1*x6;
+        const rigidsym_v4d x8 = 2.0*x7;
+        const rigidsym_v4d x9 = e_2*x8;
+        const rigidsym_v4d x10 = x5 - x9;
+        const rigidsym_v4d x11 = 2.0*e_0;
+        const rigidsym_v4d x12 = e_2*x2;
+        const rigidsym_v4d x13 = x11*x12;
+        const rigidsym_v4d x14 = x3*x7;
+        const rigidsym_v4d x15 = x13 + x14;
+        const rigidsym_v4d x16 = (e_0*e_0);
+        const rigidsym_v4d x17 = 1.0 - x16;
+        const rigidsym_v4d x18 = (-x1 + x6)*(x1 + x6);
+        const rigidsym_v4d x19 = x16 + x17*x18;
+        const rigidsym_v4d x20 = a_0*x19 + a_1*x10 + a_2*x15 - a_prime_0;
+        const rigidsym_v4d x21 = x2*(2.0*x16 - 2.0);
+        const rigidsym_v4d x22 = x5 + x9;
+        const rigidsym_v4d x23 = x12*x3;
+        const rigidsym_v4d x24 = x11*x7;
+        const rigidsym_v4d x25 = -x23 + x24;
+        const rigidsym_v4d x26 = -x25;
+        const rigidsym_v4d x27 = (e_1*e_1);
+        const rigidsym_v4d x28 = 1.0 - x27;
+        const rigidsym_v4d x29 = x18*x28 + x27;
+        const rigidsym_v4d x30 = a_0*x22 + a_1*x29 + a_2*x26 - a_prime_1;
+        const rigidsym_v4d x31 = x13 - x14;
+        const rigidsym_v4d x32 = x23 + x24;
+        const rigidsym_v4d x33 = (e_2*e_2);
+        const rigidsym_v4d x34 = 1.0 - x33;
+        const rigidsym_v4d x35 = x18*x34 + x33;
+        const rigidsym_v4d x36 = a_0*x31 + a_1*x32 + a_2*x35 - a_prime_2;
+        const rigidsym_v4d x37 = x20*x21 + x22*x30 + x31*x36;
+        const rigidsym_v4d x38 = 1.0/x2;
+        const rigidsym_v4d x39 = (0.25)*x38;
+        const rigidsym_v4d x40 = x2*(2.0*x27 - 2.0);
+        const rigidsym_v4d x41 = x10*x20 + x30*x40 + x32*x36;
+        const rigidsym_v4d x42 = x2*(2.0*x33 - 2.0);
+        const rigidsym_v4d x43 = x15*x20 + x26*x30 + x36*x42;
+        const rigidsym_v4d x44 = a_2*x8;
+        const rigidsym_v4d x45 = a_0*x4 - x44;
+        const rigidsym_v4d x46 = 2.0*x12;
+        const rigidsym_v4d x47 = a_1*x8;
+        const rigidsym_v4d x48 = a_0*x46 + x47;
+        const rigidsym_v4d x49 = a_0*x2;
+        const rigidsym_v4d x50 = 4.0*e_0;
+        const rigidsym_v4d x51 = a_1*x4;
+        const rigidsym_v4d x52 = a_2*x46;
+        const rigidsym_v4d x53 = x49*x50 + x51 + x52;
+        const rigidsym_v4d x54 = x2*x20;
+        const rigidsym_v4d x55 = x30*x4;
+        const rigidsym_v4d x56 = x36*x46;
+        const rigidsym_v4d x57 = a_1*x2;
+        const rigidsym_v4d x58 = x11*x57 + x44;
+        const rigidsym_v4d x59 = a_0*x8;
+        const rigidsym_v4d x60 = 2.0*a_1*e_2*x2 - x59;
+        const rigidsym_v4d x61 = x11*x49;
+        const rigidsym_v4d x62 = 4.0*e_1;
+        const rigidsym_v4d x63 = x52 + x57*x62 + x61;
+        const rigidsym_v4d x64 = x11*x2;
+        const rigidsym_v4d x65 = x36*x8;
+        const rigidsym_v4d x66 = 2.0*a_2*e_0*x2 - x47;
+        const rigidsym_v4d x67 = a_2*x4 + x59;
+        const rigidsym_v4d x68 = 4.0*x12;
+        const rigidsym_v4d x69 = a_2*x68 + x51 + x61;
+        const rigidsym_v4d x70 = x30*x8;
+        const rigidsym_v4d x71 = x11*x54;
+        const rigidsym_v4d x72 = x20*x8;
+        const rigidsym_v4d x73 = (0.25)*x6/(x1*x1*x1);
+        const rigidsym_v4d x74 = e_2*x24;
+        const rigidsym_v4d x75 = e_1*x18;
+        const rigidsym_v4d x76 = x74 + x75;
+        const rigidsym_v4d x77 = e_0*x14;
+        const rigidsym_v4d x78 = e_2*x18;
+        const rigidsym_v4d x79 = x77 - x78;
+        const rigidsym_v4d x80 = a_1*x79 + a_2*x76 - x17*x59;
+        const rigidsym_v4d x81 = x77 + x78;
+        const rigidsym_v4d x82 = e_0*x18;
+        const rigidsym_v4d x83 = 2.0*e_1*e_2*x1*x6 - x82;
+        const rigidsym_v4d x84 = a_0*x81 + a_2*x83 - x28*x47;
+        const rigidsym_v4d x85 = e_2*x14 + x82;
+        const rigidsym_v4d x86 = x74 - x75;
+        const rigidsym_v4d x87 = a_0*x86 + a_1*x85 - x34*x44;
+        const rigidsym_v4d x88 = x31*x32;
+        const rigidsym_v4d x89 = x22*x26;
+        const rigidsym_v4d x90 = x10*x15;
+        __m256d rsv_r_p0[3];
+        rsv_r_p0[0] = (__m256d)(x37*x39);
+        rsv_r_p0[1] = (__m256d)(x39*x41);
+        rsv_r_p0[2] = (__m256d)(x39*x43);
+        rigidsym_store_cols(out_p0 + 3 * rsv_j, 3, rsv_r_p0);
+        __m256d rsv_r_p0_D_e[9];
+        rsv_r_p0_D_e[0] = (__m256d)(x39*(x21*x53 + x22*x45 + x31*x48 + x50*x54 + x55 + x56));
+        rsv_r_p0_D_e[1] = (__m256d)(x39*(x21*x58 + x22*x63 + x30*x64 + x31*x60 - x65));
+        rsv_r_p0_D_e[2] = (__m256d)(x39*(x21*x66 + x22*x67 + x31*x69 + x36*x64 + x70));
+        rsv_r_p0_D_e[3] = (__m256d)(x39*(x10*x53 + x20*x4 + x32*x48 + x40*x45 + x65));
+        rsv_r_p0_D_e[4] = (__m256d)(x39*(x10*x58 + x2*x30*x62 + x32*x60 + x40*x63 + x56 + x71));
+        rsv_r_p0_D_e[5] = (__m256d)(x39*(x10*x66 + x32*x69 + x36*x4 + x40*x67 - x72));
+        rsv_r_p0_D_e[6] = (__m256d)(x39*(x15*x53 + x20*x46 + x26*x45 + x42*x48 - x70));
+        rsv_r_p0_D_e[7] = (__m256d)(x39*(x15*x58 + x26*x63 + x30*x46 + x42*x60 + x72));
+        rsv_r_p0_D_e[8] = (__m256d)(x39*(x15*x66 + x26*x67 + x36*x68 + x42*x69 + x55 + x71));
+        rigidsym_store_cols(out_p0_D_e + 9 * rsv_j, 9, rsv_r_p0_D_e);
+        __m256d rsv_r_p0_D_phi[3];
+        rsv_r_p0_D_phi[0] = (__m256d)(-x37*x73 + (0.25)*x38*(-x17*x72 + x21*x80 + x22*x84 + x30*x81 + x31*x87 + x36*x86));
+        rsv_r_p0_D_phi[1] = (__m256d)((0.25)*x38*(x10*x80 + x20*x79 - x28*x70 + x32*x87 + x36*x85 + x40*x84) - x41*x73);
+        rsv_r_p0_D_phi[2] = (__m256d)((0.25)*x38*(x15*x80 + x20*x76 + x26*x84 + x30*x83 - x34*x65 + x42*x87) - x43*x73);
+        rigidsym_store_cols(out_p0_D_phi + 3 * rsv_j, 3, rsv_r_p0_D_phi);
+        __m256d rsv_r_p0_D_a[9];
+        rsv_r_p0_D_a[0] = (__m256d)(x39*(x19*x21 + (x22*x22) + (x31*x31)));
+        rsv_r_p0_D_a[1] = (__m256d)(x39*(x10*x21 + x22*x29 + x88));
+        rsv_r_p0_D_a[2] = (__m256d)(x39*(x15*x21 + x31*x35 + x89));
+        rsv_r_p0_D_a[3] = (__m256d)(x39*(x10*x19 + x22*x40 + x88));
+        rsv_r_p0_D_a[4] = (__m256d)(x39*((x10*x10) + x29*x40 + (x32*x32)));
+        rsv_r_p0_D_a[5] = (__m256d)(x39*(x26*x40 + x32*x35 + x90));
+        rsv_r_p0_D_a[6] = (__m256d)(x39*(x15*x19 + x31*x42 + x89));
+        rsv_r_p0_D_a[7] = (__m256d)(x39*(x26*x29 + x32*x42 + x90));
+        rsv_r_p0_D_a[8] = (__m256d)(x39*((x15*x15) + (x26*x26) + x35*x42));
+        rigidsym_store_cols(out_p0_D_a + 9 * rsv_j, 9, rsv_r_p0_D_a);
+        __m256d rsv_r_p0_D_a_prime[9];
+        rsv_r_p0_D_a_prime[0] = (__m256d)(0.5 - 0.5*x16);
+        rsv_r_p0_D_a_prime[1] = (__m256d)(-x22*x39);
+        rsv_r_p0_D_a_prime[2] = (__m256d)(-x31*x39);
+        rsv_r_p0_D_a_prime[3] = (__m256d)(-x10*x39);
+        rsv_r_p0_D_a_prime[4] = (__m256d)(0.5 - 0.5*x27);
+        rsv_r_p0_D_a_prime[5] = (__m256d)(-x32*x39);
+        rsv_r_p0_D_a_prime[6] = (__m256d)(-x15*x39);
+        rsv_r_p0_D_a_prime[7] = (__m256d)(x25*x39);
+        rsv_r_p0_D_a_prime[8] = (__m256d)(0.5 - 0.5*x33);
+        rigidsym_store_cols(out_p0_D_a_prime + 9 * rsv_j, 9, rsv_r_p0_D_a_prime);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x1) == 0.0;
+        const rigidsym_v4d finite = (((x38 - x38) + (x73 - x73)) + ((x2 - x2) + (x1 - x1)));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+        }
+    }
+    *xs = rsv_xs;
+
+#else
+    (void)xs;
     for (int64_t j = 0; j < RIGIDSYM_LANES_TRIG; ++j) {
         count += (int64_t)(rigidsym_screw_axis_point_with_jacobians_sample_trig(
             in_e + 3 * j,
@@ -108,6 +287,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_lanes(
             out_p0_D_a + 9 * j,
             out_p0_D_a_prime + 9 * j) != 0) << j;
     }
+#endif
     return count;
 }
 
@@ -187,6 +367,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block(
     double *RIGIDSYM_RESTRICT out_p0_D_a_prime)
 {
     int64_t mask[64 / RIGIDSYM_LANES_TRIG], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES_TRIG < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES_TRIG;
@@ -199,7 +381,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block(
             out_p0_D_e + 9 * j,
             out_p0_D_phi + 3 * j,
             out_p0_D_a + 9 * j,
-            out_p0_D_a_prime + 9 * j);
+            out_p0_D_a_prime + 9 * j, &xs);
 
         any |= mask[g];
     }
@@ -212,15 +394,17 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_screw_axis_point_with_jacobians_block(
     any |= rigidsym_any_nonfinite(out_p0_D_a, 9 * m);
     any |= rigidsym_any_nonfinite(out_p0_D_a_prime, 9 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_e, 3 * m);
-        rigidsym_extreme_add(&xs, in_phi, 1 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        rigidsym_extreme_add(&xs, in_a_prime, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_e, 3 * m);
+    rigidsym_extreme_add(&xs, in_phi, 1 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    rigidsym_extreme_add(&xs, in_a_prime, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

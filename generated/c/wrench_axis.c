@@ -56,9 +56,70 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_lanes(
     const double *RIGIDSYM_RESTRICT in_a,
     double *RIGIDSYM_RESTRICT out_p0,
     double *RIGIDSYM_RESTRICT out_pitch,
-    double *RIGIDSYM_RESTRICT out_plucker)
+    double *RIGIDSYM_RESTRICT out_plucker, rigidsym_extreme_acc *RIGIDSYM_RESTRICT xs)
 {
     int64_t count = 0;
+#if RIGIDSYM_VEC_F64
+    /* Across samples, 4 at a time (RIGIDSYM_VEC_F64 in rigidsym_common.h): the inputs
+     * transposed to columns, which the block's range filter reads here, in registers, instead
+     * of in a second pass; the sample function's arithmetic on columns (compensated sums by
+     * their _v4 forms, the same operations); the outputs transposed back; the singular
+     * tests as lane masks. Each lane's bits and flag are the scalar sample's. */
+    rigidsym_extreme_acc rsv_xs = *xs;
+    for (int64_t rsv_j = 0; rsv_j < RIGIDSYM_LANES; rsv_j += 4) {
+        __m256d rsv_c_w_A[6];
+        rigidsym_load_cols(in_w_A + 6 * rsv_j, 6, rsv_c_w_A);
+        for (int rsv_q = 0; rsv_q < 6; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_w_A[rsv_q]);
+        __m256d rsv_c_a[3];
+        rigidsym_load_cols(in_a + 3 * rsv_j, 3, rsv_c_a);
+        for (int rsv_q = 0; rsv_q < 3; ++rsv_q)
+            rigidsym_extreme_add4(&rsv_xs, rsv_c_a[rsv_q]);
+        const rigidsym_v4d w_A_0 = (rigidsym_v4d)rsv_c_w_A[0];
+        const rigidsym_v4d w_A_1 = (rigidsym_v4d)rsv_c_w_A[1];
+        const rigidsym_v4d w_A_2 = (rigidsym_v4d)rsv_c_w_A[2];
+        const rigidsym_v4d w_A_3 = (rigidsym_v4d)rsv_c_w_A[3];
+        const rigidsym_v4d w_A_4 = (rigidsym_v4d)rsv_c_w_A[4];
+        const rigidsym_v4d w_A_5 = (rigidsym_v4d)rsv_c_w_A[5];
+        const rigidsym_v4d a_0 = (rigidsym_v4d)rsv_c_a[0];
+        const rigidsym_v4d a_1 = (rigidsym_v4d)rsv_c_a[1];
+        const rigidsym_v4d a_2 = (rigidsym_v4d)rsv_c_a[2];
+        const rigidsym_v4d x0 = (w_A_3*w_A_3) + (w_A_4*w_A_4) + (w_A_5*w_A_5);
+        const rigidsym_v4d x1 = 1.0/x0;
+        const rigidsym_v4d x2 = a_0*w_A_4 - a_1*w_A_3 + w_A_2;
+        const rigidsym_v4d x3 = -a_0*w_A_5 + a_2*w_A_3 + w_A_1;
+        const rigidsym_v4d x4 = w_A_4*x2 - w_A_5*x3;
+        const rigidsym_v4d x5 = a_1*w_A_5 - a_2*w_A_4 + w_A_0;
+        const rigidsym_v4d x6 = -w_A_3*x2 + w_A_5*x5;
+        const rigidsym_v4d x7 = w_A_3*x3 - w_A_4*x5;
+        const rigidsym_v4d x8 = 1.0/rigidsym_sqrt_v4(x0);
+        const rigidsym_v4d x9 = 1.0/(x0*rigidsym_sqrt_v4(x0));
+        const rigidsym_v4d x10 = x7*x9;
+        __m256d rsv_r_p0[3];
+        rsv_r_p0[0] = (__m256d)(x1*x4);
+        rsv_r_p0[1] = (__m256d)(x1*x6);
+        rsv_r_p0[2] = (__m256d)(x1*x7);
+        rigidsym_store_cols(out_p0 + 3 * rsv_j, 3, rsv_r_p0);
+        __m256d rsv_r_pitch[1];
+        rsv_r_pitch[0] = (__m256d)(x1*rigidsym_sumprod3_v4(w_A_0, w_A_3, w_A_1, w_A_4, w_A_2, w_A_5));
+        rigidsym_store_cols(out_pitch + 1 * rsv_j, 1, rsv_r_pitch);
+        __m256d rsv_r_plucker[6];
+        rsv_r_plucker[0] = (__m256d)(w_A_3*x8);
+        rsv_r_plucker[1] = (__m256d)(w_A_4*x8);
+        rsv_r_plucker[2] = (__m256d)(w_A_5*x8);
+        rsv_r_plucker[3] = (__m256d)(-w_A_4*x10 + w_A_5*x6*x9);
+        rsv_r_plucker[4] = (__m256d)(w_A_3*x10 - w_A_5*x4*x9);
+        rsv_r_plucker[5] = (__m256d)(-w_A_3*x6*x9 + w_A_4*x4*x9);
+        rigidsym_store_cols(out_plucker + 6 * rsv_j, 6, rsv_r_plucker);
+        rigidsym_v4l rsv_s = {0, 0, 0, 0};
+        rsv_s |= (x0) == 0.0;
+        const rigidsym_v4d finite = (((x1 - x1) + (x8 - x8)) + ((x9 - x9) + (x0 - x0)));
+        rsv_s |= finite != finite;
+        count |= (int64_t)_mm256_movemask_pd((__m256d)rsv_s) << rsv_j;
+    }
+    *xs = rsv_xs;
+#else
+    (void)xs;
     /* branch-free so that the compiler can vectorise it */
     RIGIDSYM_SIMD_COUNT
     for (int64_t j = 0; j < RIGIDSYM_LANES; ++j) {
@@ -70,6 +131,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_lanes(
             out_plucker + 6 * j) != 0) << j;
 
     }
+#endif
     return count;
 }
 
@@ -108,6 +170,8 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_block(
     double *RIGIDSYM_RESTRICT out_plucker)
 {
     int64_t mask[RIGIDSYM_CHECK_BLOCK / RIGIDSYM_LANES], any = 0;
+    rigidsym_extreme_acc xs;
+    rigidsym_extreme_init(&xs);
     rigidsym_fp_clear();
     for (int64_t g = 0; g * RIGIDSYM_LANES < nl; ++g) {
         const int64_t j = g * RIGIDSYM_LANES;
@@ -116,7 +180,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_block(
             in_a + 3 * j,
             out_p0 + 3 * j,
             out_pitch + 1 * j,
-            out_plucker + 6 * j);
+            out_plucker + 6 * j, &xs);
 
         any |= mask[g];
     }
@@ -127,13 +191,15 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_wrench_axis_block(
     any |= rigidsym_any_nonfinite(out_pitch, 1 * m);
     any |= rigidsym_any_nonfinite(out_plucker, 6 * m);
 #endif
-    {
-        rigidsym_extreme_acc xs;
-        rigidsym_extreme_init(&xs);
-        rigidsym_extreme_add(&xs, in_w_A, 6 * m);
-        rigidsym_extreme_add(&xs, in_a, 3 * m);
-        any |= rigidsym_extreme_any(&xs);
-    }
+#if RIGIDSYM_VEC_F64
+    /* the lanes function fed the filter every input of the nl samples: those of the first
+     * m, and copies of the m-th (the padding), so the same verdict as over the first m */
+    any |= rigidsym_extreme_any(&xs);
+#else
+    rigidsym_extreme_add(&xs, in_w_A, 6 * m);
+    rigidsym_extreme_add(&xs, in_a, 3 * m);
+    any |= rigidsym_extreme_any(&xs);
+#endif
     if (any == 0)
         return 0;
     int64_t count = 0;

@@ -62,13 +62,26 @@ class KernelCVectorPrinter(KernelCPrinter):
     def _sqrt(self, arg: str) -> str:
         return f"rigidsym_sqrt_v4({arg})"
 
+    def compensated_call(self, expr) -> str:
+        name = self._diffprod if expr.func.__name__ == "DiffProd" else \
+            self._sumprod.format(n=len(expr.args) // 2)
+        return f"{name}({', '.join(self.column(a) for a in expr.args)})"
+
+    def column(self, expr) -> str:
+        """``expr`` as a column: a number broadcast to the 4 lanes (a scalar converts to a
+        vector only in GCC's binary operators)."""
+        if sp.sympify(expr).is_Number:
+            v = self._print(expr)
+            return f"((rigidsym_v4d){{{v}, {v}, {v}, {v}}})"
+        return self._print(expr)
+
     def _print_Piecewise(self, expr):
         *head, (last, cond) = expr.args
         if cond is not sp.true:
             raise ValueError("Piecewise without a default branch")
-        text = self._print(last)
+        text = self.column(last)
         for e, c in reversed(head):
-            text = f"rigidsym_select_v4(({self._print(c)}), ({self._print(e)}), ({text}))"
+            text = f"rigidsym_select_v4(({self._print(c)}), ({self.column(e)}), ({text}))"
         return text
 
 

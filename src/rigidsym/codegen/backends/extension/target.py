@@ -46,11 +46,41 @@ SOA_F64 = frozenset({"rotation_from_euler_rodrigues"})
 #: in ``c_common.h.j2``): inputs transposed to columns of 4 with AVX2 shuffles, the range
 #: filter fed from those columns in the same pass instead of a second one, the arithmetic on
 #: GCC vector types (for a kernel with sin/cos, the per-sample loop after the sin/cos loop).
-#: In a C driver against the row-major loop and its second pass (ns a sample, in cache /
-#: N = 1e6): K6 8.9 -> 7.0 / 13.6 -> 11.2, K4 5.4 -> 4.2 / 5.9 -> 5.0 (benchmarks/RESULTS.md).
-#: Only kernels whose vector text is :func:`vectorisable` qualify.
-VEC_F64 = frozenset({"newton_euler_residual", "newton_euler_wrench",
-                     "instant_screw_point_pitch", "rotation_from_natural_invariants"})
+#: Chosen by measurement on an AVX2 CPU (``benchmarks/vec_lanes_select.py``): of the 131
+#: kernels whose vector text is :func:`vectorisable`, those faster than their row-major loop
+#: in cache (N = 4096) and at N = 2e5 in two runs; slower were mostly Jacobians with large
+#: outputs (up to 1.8x: their columns spill). K6 13.6 -> 11.2, K4 5.9 -> 5.0, K2 17.1 -> 9.7 ns
+#: a sample at N = 1e6 in a C driver (benchmarks/RESULTS.md).
+VEC_F64 = frozenset({"H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_matrix",
+    "L_matrix_dot", "L_tilde", "L_tilde_dot", "N_matrix", "N_matrix_dot", "N_tilde",
+    "N_tilde_dot", "euler_angle_rates_xyx_fixed", "euler_angle_rates_xyz_body",
+    "euler_angle_rates_xyz_fixed", "euler_angle_rates_xzx_fixed",
+    "euler_angle_rates_xzy_body", "euler_angle_rates_xzy_fixed",
+    "euler_angle_rates_yxy_fixed", "euler_angle_rates_yxz_body",
+    "euler_angle_rates_yxz_fixed", "euler_angle_rates_yzx_body",
+    "euler_angle_rates_zxy_body", "euler_angle_rates_zxz_fixed",
+    "euler_angle_rates_zyx_body", "euler_angle_rates_zyx_fixed",
+    "euler_angle_rates_zyz_fixed", "euler_rate_matrix_xyx_body",
+    "euler_rate_matrix_xyx_fixed", "euler_rate_matrix_xyz_body",
+    "euler_rate_matrix_xyz_fixed", "euler_rate_matrix_xzx_body",
+    "euler_rate_matrix_xzx_fixed", "euler_rate_matrix_xzy_body",
+    "euler_rate_matrix_xzy_fixed", "euler_rate_matrix_yxy_body",
+    "euler_rate_matrix_yxy_fixed", "euler_rate_matrix_yxz_body",
+    "euler_rate_matrix_yxz_fixed", "euler_rate_matrix_yzx_body",
+    "euler_rate_matrix_yzx_fixed", "euler_rate_matrix_yzy_body",
+    "euler_rate_matrix_yzy_fixed", "euler_rate_matrix_zxy_body",
+    "euler_rate_matrix_zxy_fixed", "euler_rate_matrix_zxz_body",
+    "euler_rate_matrix_zxz_fixed", "euler_rate_matrix_zyx_body",
+    "euler_rate_matrix_zyx_fixed", "euler_rate_matrix_zyz_body",
+    "euler_rate_matrix_zyz_fixed", "euler_rodrigues_product",
+    "euler_rodrigues_product_with_jacobians", "inertia_at_point", "instant_screw_axis",
+    "instant_screw_point_pitch", "kinetic_energy", "kinetic_energy_with_jacobians",
+    "moving_frame_acceleration", "moving_frame_acceleration_with_jacobians",
+    "newton_euler_residual", "newton_euler_wrench", "plucker_from_points",
+    "plucker_from_points_with_jacobians", "plucker_transfer", "point_acceleration",
+    "point_acceleration_with_jacobians", "rotation_from_natural_invariants",
+    "screw_axis_point", "screw_axis_point_with_jacobians", "twist_transfer", "wrench_axis",
+    "wrench_transfer"})
 #: the functions the vector text may call: each is defined in ``c_common.h.j2`` and does the
 #: scalar form's IEEE operations lane by lane (fma as ``_mm256_fmadd_pd``, one rounding)
 VEC_CALLS = frozenset({"rigidsym_diffprod_v4", "rigidsym_sumprod2_v4", "rigidsym_sumprod3_v4",
@@ -65,7 +95,10 @@ def vector_text(program, kernel) -> dict:
     """``program`` printed on columns of 4 samples (:class:`KernelCVectorPrinter`):
     ``{"temps", "outputs", "dens", "finite"}`` as the templates read them."""
     vp = KernelCVectorPrinter()
-    return {**program_lines(program, vp), "finite": finite_check(program, kernel, vp) or None}
+    return {"temps": [(str(s), vp.column(v)) for s, v in program.temps],
+            "outputs": [vp.column(v) for v in program.outputs],
+            "dens": [vp.doprint(v) for v in program.dens],
+            "finite": finite_check(program, kernel, vp) or None}
 
 
 def vectorisable(text: dict) -> bool:
