@@ -394,7 +394,14 @@ def test_an_interrupt_inside_an_evaluated_string_still_exits_130_under_python_m(
     ``generate`` interrupted inside sympy's lambdify); :func:`interrupts.quiet` clears it."""
     (tmp_path / "cut_short.py").write_text(PROGRAM, encoding="utf-8")
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), *sys.path]))
-    p = subprocess.run([sys.executable, "-m", "cut_short"], cwd=tmp_path, env=env,
-                       capture_output=True, text=True, timeout=60)
+    # a child inherits an ignored SIGINT (pytest started as a background job, `cmd &`) and
+    # then keeps ignoring it, by design (interrupts.install): here a terminal's caller, whose
+    # handler exec resets to the default
+    outer = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        p = subprocess.run([sys.executable, "-m", "cut_short"], cwd=tmp_path, env=env,
+                           capture_output=True, text=True, timeout=60)
+    finally:
+        signal.signal(signal.SIGINT, outer)
     assert p.returncode == interrupts.EXIT, (p.returncode, p.stderr)
     assert p.stderr.strip() == "rigidsym: interrupted; run again to continue", p.stderr
