@@ -18,7 +18,8 @@ from rigidsym.codegen.backends import RenderContext, Target, kernel_files, share
 from rigidsym.codegen.backends.extension.printer import KernelCPrinter, KernelCVectorPrinter
 from rigidsym.codegen.backends.extension.program import f32_code, finite_check, trig_plan
 from rigidsym.codegen.backends.printing import program_lines
-from rigidsym.codegen.optimise import trig_split
+from rigidsym.codegen.optimise import Program, trig_split
+from rigidsym.codegen.spec import Kernel
 from rigidsym.core import kinds as _kinds
 
 __all__ = ["TARGET", "TEMPLATES", "SOA_F32", "SOA_F64", "VEC_F64", "render", "render_kernel",
@@ -91,7 +92,7 @@ _CALL = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(")
 _SCALAR_OP = re.compile(r"\?|&&|\|\||!(?!=)")
 
 
-def vector_text(program, kernel) -> dict:
+def vector_text(program: Program, kernel: Kernel) -> dict:
     """``program`` printed on columns of 4 samples (:class:`KernelCVectorPrinter`):
     ``{"temps", "outputs", "dens", "finite"}`` as the templates read them."""
     vp = KernelCVectorPrinter()
