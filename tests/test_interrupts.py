@@ -255,6 +255,28 @@ def test_show_and_report_after_verify_decide_nothing_and_the_api_shares_the_stor
     assert _work.since(before, "decide") == {f"{tag}:e2": 2}
 
 
+def test_an_interrupt_after_the_checks_counts_what_they_stored(quick, monkeypatch, capsys):
+    """An interrupt in the runner's tail (the durations written, after every id is stored)
+    says the ids it stored, not "nothing kept": the next run then decides none (CI once
+    met that window under load, and the second run found every id stored)."""
+    from rigidsym.checking import runner
+
+    mod, tag = quick
+
+    def interrupted(*_a, **_k):
+        raise KeyboardInterrupt
+
+    saved = runner.save_durations
+    monkeypatch.setattr(runner, "save_durations", interrupted)
+    assert main(["verify", "--module", str(mod), "--jobs", "1", "--quiet"]) == interrupts.EXIT
+    assert capsys.readouterr().err.rstrip().endswith(
+        "rigidsym: interrupted: 2 of 2 ids kept; run again to continue")
+    monkeypatch.setattr(runner, "save_durations", saved)
+    before = _work.snapshot()
+    assert main(["verify", "--module", str(mod), "--jobs", "1", "--quiet"]) == 0
+    assert _work.since(before, "decide") == {}
+
+
 def test_the_lock_of_a_key_is_held_by_one_holder_at_a_time(tmp_path, monkeypatch):
     monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
     key = "ab" + "0" * 62

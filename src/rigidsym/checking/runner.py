@@ -249,15 +249,15 @@ def run_checks(ids: list[str], jobs: int = 1, progress: bool = True, cache: bool
             hits = {i: r for i, r in hits.items() if r.derived is not None}
     results = dict(hits)
     todo = [i for i in ids if i not in hits]
+    # what the workers stored is kept, and the interrupted command says how much: counted
+    # when it says so, so that an interrupt in the tail below (the durations written) or
+    # after the return counts the same stored entries
+    interrupts.note_kept(partial(verdict_cache.present, keys), len(ids))
     try:
         _run(ids, todo, results, jobs, progress, reporter, settings, expanded, extra, keys)
-    except KeyboardInterrupt:  # what the workers stored is kept; the command says so
-        interrupts.note_kept(verdict_cache.present(keys), len(ids))
-        raise
     finally:
         save_durations(DURATIONS, {i: results[i].seconds for i in todo
                                    if i in results and not results[i].cached})
-    interrupts.note_kept(verdict_cache.present(keys), len(ids))
     return [results[i] for i in ids]
 
 

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import signal
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 
 __all__ = ["EXIT", "install", "for_worker", "deferred", "quiet", "received", "end_workers",
@@ -118,9 +118,11 @@ def deferred() -> Iterator[None]:
         block(signal.SIG_SETMASK, old)
 
 
-def note_kept(kept: int, total: int, what: str = "ids") -> None:
-    """Record that ``kept`` of ``total`` ``what`` are finished and stored (the runner calls
-    it as results are stored; :func:`line` reports the last call)."""
+def note_kept(kept: int | Callable[[], int], total: int, what: str = "ids") -> None:
+    """Record that ``kept`` of ``total`` ``what`` are finished and stored; :func:`line`
+    reports the last call. ``kept`` may be a function that counts them, called when the
+    line is said: the runner registers one before its work starts, so that an interrupt at
+    any moment after (even while the count would be taken) reports what is stored then."""
     _KEPT[0] = (kept, total, what)
 
 
@@ -137,4 +139,6 @@ def line() -> str:
     if _KEPT[0] is None:
         return "interrupted; run again to continue"
     kept, total, what = _KEPT[0]
+    if callable(kept):
+        kept = kept()
     return f"interrupted: {kept} of {total} {what} kept; run again to continue"
