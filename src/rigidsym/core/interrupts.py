@@ -140,5 +140,8 @@ def line() -> str:
         return "interrupted; run again to continue"
     kept, total, what = _KEPT[0]
     if callable(kept):
-        kept = kept()
+        try:
+            kept = kept()
+        except OSError:  # the store unreadable now: what was written is still whole
+            return "interrupted; run again to continue"
     return f"interrupted: {kept} of {total} {what} kept; run again to continue"
