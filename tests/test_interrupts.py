@@ -277,6 +277,23 @@ def test_an_interrupt_after_the_checks_counts_what_they_stored(quick, monkeypatc
     assert _work.since(before, "decide") == {}
 
 
+def test_the_line_counts_when_said_and_survives_an_unreadable_store():
+    """The count registered as a function is taken when the line is said (not when it was
+    registered); one that cannot read the store gives the plain line, not a traceback."""
+    stored = [0]
+    interrupts.reset()
+    interrupts.note_kept(lambda: stored[0], 5)
+    stored[0] = 3
+    assert interrupts.line() == "interrupted: 3 of 5 ids kept; run again to continue"
+
+    def unreadable() -> int:
+        raise PermissionError("verdicts/ab")
+
+    interrupts.note_kept(unreadable, 5)
+    assert interrupts.line() == "interrupted; run again to continue"
+    interrupts.reset()
+
+
 def test_the_lock_of_a_key_is_held_by_one_holder_at_a_time(tmp_path, monkeypatch):
     monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
     key = "ab" + "0" * 62
