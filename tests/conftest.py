@@ -1,6 +1,8 @@
 """Shared fixtures: the registry, loaded once; the chapter text when it is present; the
 kernels' backend, switched for a test (NumPy, then C; fails if a compiler is present but the
-C backend does not build); and a guard that fails a test whose child processes outlive it."""
+C backend does not build); a guard that fails a test whose child processes outlive it; and
+the two profiles of ``tests/_profile.py`` (Hypothesis's settings profiles, the seeded sample
+of a family marked ``sample``)."""
 
 from __future__ import annotations
 
@@ -9,13 +11,24 @@ import shutil
 import tempfile
 from pathlib import Path
 
+import _profile
 import pytest
 from _procguard import _no_process_outlives_its_test, become_subreaper  # noqa: F401
+from hypothesis import HealthCheck, settings
 
 from rigidsym import kernels as K
 from rigidsym.registry.declarations import load_all
 
 _CREATED: list[str] = []
+
+# no property depends on the machine's speed: no deadline, no health check on slow data;
+# the quick profile draws the same examples every run (a failure reproduces), the thorough
+# one new examples each run, at _profile.THOROUGH_FACTOR times the budget (_profile.examples)
+settings.register_profile("quick", deadline=None, derandomize=True, print_blob=True,
+                          suppress_health_check=[HealthCheck.too_slow])
+settings.register_profile("thorough", deadline=None, print_blob=True,
+                          suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile(_profile.PROFILE)
 
 
 def pytest_configure(config):
@@ -66,32 +79,24 @@ def backend(request):
     K.use_backend("numpy")
 
 
-#: what this process collected (tests/test_budget.py): every node id before the marker
-#: expression deselects, then the ids selected, and whether the whole of tests/ was collected
-COLLECTED: dict = {}
-
-
-def _plain_id(item) -> str:
-    """The node id without the ``@group`` suffix that ``--dist loadgroup`` appends."""
-    nodeid = item.nodeid
-    for mark in item.iter_markers("xdist_group"):
-        name = mark.args[0] if mark.args else mark.kwargs.get("name", "")
-        nodeid = nodeid.removesuffix(f"@{name}")
-    return nodeid
-
-
 @pytest.hookimpl(tryfirst=True)
 def pytest_collection_modifyitems(session, config, items):
-    COLLECTED["all"] = [_plain_id(i) for i in items]
-    tests = Path(__file__).resolve().parent
-    args = [Path(str(a).split("::")[0]).resolve() for a in config.args] or [tests]
-    COLLECTED["whole"] = all(tests.is_relative_to(a) for a in args) and \
-        not config.getoption("keyword") and not config.getoption("deselect")
-
-
-def pytest_collection_finish(session):
-    COLLECTED["selected"] = [_plain_id(i) for i in session.items]
-    # the tests that need no extra: the same set whichever extras are installed
-    COLLECTED["core"] = [_plain_id(i) for i in session.items
-                         if i.get_closest_marker("extra") is None]
-    COLLECTED["markexpr"] = session.config.getoption("markexpr")
+    """Before the marker expression deselects: every Hypothesis property gets the ``budget``
+    mark (the thorough run runs it again at its larger budget), and the parameters of a
+    family marked ``sample`` outside the seeded sample get ``slow``."""
+    families: dict[tuple, list] = {}
+    for item in items:
+        if getattr(getattr(item, "obj", None), "is_hypothesis_test", False):
+            item.add_marker("budget")
+        mark = item.get_closest_marker("sample")
+        if mark is not None and item.get_closest_marker("slow") is None:
+            key = (item.path, item.cls, getattr(item, "originalname", item.name))
+            families.setdefault(key, []).append(item)
+    for members in families.values():
+        mark = members[0].get_closest_marker("sample")
+        fraction = mark.kwargs.get("fraction", mark.args[0] if mark.args else
+                                   _profile.DEFAULT_FRACTION)
+        keep = _profile.kept([i.nodeid for i in members], fraction)
+        for item in members:
+            if item.nodeid not in keep:
+                item.add_marker("slow")

@@ -115,6 +115,7 @@ def _within(rows) -> list:
 RANGE_DEFECTS: dict[str, str] = {}
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", [
     pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=RANGE_DEFECTS[n]))
     if n in RANGE_DEFECTS else n for n in sorted(K.KERNEL_NAMES) + EXTRA])

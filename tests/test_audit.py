@@ -74,6 +74,7 @@ def _no_false_alarm(func, op, seed):
     assert rep.generators == [] and rep.residual <= 1e-12
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("seed", [0, 1, 2])
 @pytest.mark.parametrize("func, op", CORRECT, ids=[c[0].__name__ for c in CORRECT])
 def test_correct_variants_pass(func, op, seed):

@@ -11,6 +11,7 @@ from fractions import Fraction
 import flint
 import pytest
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -27,7 +28,7 @@ R = rotation("bR")
 v = vector("bv")
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=examples(25), deadline=None)
 @given(st.integers(0, 10**6))
 def test_balls_contain_the_exact_rational_values(seed):
     # rational in the atoms: the exact value at a rational point is a Fraction
@@ -81,7 +82,7 @@ def test_precision_rises_where_a_ball_is_too_wide():
     assert b.certified
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(st.fractions(min_value=Fraction(1, 10**60), max_value=Fraction(10**30)))
 def test_round_up_keeps_an_upper_bound_in_two_digits(x):
     r = balls.round_up(x)

@@ -70,6 +70,7 @@ def _over(name: str, dtype, rows) -> list[str]:
             for r in rows if 8 * r.worst_ratio > MARGIN * b or r.spurious]
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
 @pytest.mark.parametrize("name", QUICK)
 def test_stated_bound_holds_on_fresh_points(name, dtype):

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -83,6 +84,8 @@ _LOAD = """
 """
 
 
+# four cold builds; quick: test_a_second_build_reuses_every_object_and_links_the_same_module
+@pytest.mark.slow
 @needs_cc
 def test_four_processes_on_an_empty_cache_compile_once(user_dir, tmp_path):
     cache = tmp_path / "cache"
@@ -106,6 +109,7 @@ def test_four_processes_on_an_empty_cache_compile_once(user_dir, tmp_path):
     np.testing.assert_allclose(ws[0], v * np.linspace(-2, 2, 10)[:, None], rtol=1e-15)
 
 
+@pytest.mark.slow  # a build; quick: test_a_corrupt_object_is_compiled_again_never_linked
 @needs_cc
 def test_corrupt_cached_module_is_rebuilt_with_a_warning_never_loaded(user_dir, tmp_path):
     cache = tmp_path / "cache"
@@ -129,6 +133,7 @@ def test_corrupt_cached_module_is_rebuilt_with_a_warning_never_loaded(user_dir, 
     assert _ext._valid(so, _build.embedded_hash(good)) is False
 
 
+@pytest.mark.slow  # a build; quick: test_a_corrupt_object_is_compiled_again_never_linked
 @needs_cc
 def test_stale_module_is_never_loaded_and_rebuilt_with_a_notice(user_dir, tmp_path,
                                                                 monkeypatch, capfd):
@@ -191,6 +196,7 @@ _DISPATCH = """
 """
 
 
+@pytest.mark.slow  # a build of every path; the wheel test builds them all too
 @needs_cc
 def test_forced_baseline_agrees_with_the_dispatched_path(tmp_path):
     """RIGIDSYM_DISPATCH=baseline runs the x86-64-v2 objects: every kernel agrees with the
@@ -255,7 +261,7 @@ _NORMALISING = {   # kernel -> (args given a direction d and a scale s, unit out
 }
 
 
-@settings(max_examples=40, deadline=None,
+@settings(max_examples=examples(40), deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(name=st.sampled_from(sorted(_NORMALISING)),
        exponent=st.floats(150.0, 160.0),
@@ -288,6 +294,8 @@ def test_n_tilde_dot_names_phi_at_its_singular_set(backend):
     assert err.value.argument == "phi"
 
 
+# a native build; quick: test_loading_a_user_directory_never_loads_the_package_kernels
+@pytest.mark.slow
 @needs_cc
 def test_native_build_is_used_when_present(user_dir, tmp_path):
     cache = tmp_path / "cache"
@@ -373,6 +381,8 @@ def test_a_corrupt_object_is_compiled_again_never_linked(user_dir, tmp_path):
     assert victim.read_bytes() != b"\x7fELF not an object"   # replaced by the fresh compile
 
 
+# three builds; quick: test_a_second_build_reuses_every_object_and_links_the_same_module
+@pytest.mark.slow
 @needs_cc
 def test_other_flags_or_sources_miss_the_object_cache(user_dir, tmp_path, monkeypatch):
     objects = tmp_path / "objects"

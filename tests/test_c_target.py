@@ -21,6 +21,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -199,7 +200,7 @@ def call(lib, name: str, *args, dtype=np.float64):
 finite = st.floats(-1e3, 1e3, allow_nan=False, allow_infinity=False)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(st.lists(finite, min_size=3, max_size=3), finite)
 def test_status_ok_and_values_for_ordinary_inputs(lib, e, phi):
     from rigidsym import kernels as K
@@ -216,7 +217,7 @@ def test_status_ok_and_values_for_ordinary_inputs(lib, e, phi):
     assert np.max(np.abs(Q - want)) <= 1e-12 * scale
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(st.lists(finite, min_size=3, max_size=3), st.sampled_from([np.nan, np.inf, -np.inf]),
        st.integers(0, 3))
 def test_every_kernel_flags_a_nonfinite_input(lib, e, bad, where):
@@ -399,6 +400,8 @@ def test_the_vector_and_scalar_range_tests_are_the_definition(tmp_path):
 RANGE_TESTS = {"sse2": [], "vector": ["-DRIGIDSYM_C_NO_SSE2"], "scalar": ["-DRIGIDSYM_C_NO_VECTOR"]}
 
 
+# three builds of every source; quick: test_the_vector_and_scalar_range_tests_are_the_definition
+@pytest.mark.slow
 @needs_gcc
 def test_the_three_range_tests_give_the_same_status_and_values(tmp_path):
     """Each input range test (the SSE2 one run here, and the two that Arm and Cortex-M
@@ -436,7 +439,7 @@ WIDE = np.finfo(np.longdouble).maxexp > np.finfo(np.float64).maxexp
 
 
 @pytest.mark.skipif(not WIDE, reason="long double is double here: no wider type to rescue in")
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=examples(25), deadline=None)
 @given(st.sampled_from([1e-300, 1e-200, 1e-40, 1e-12, 1e30]), st.integers(0, 2**32 - 1))
 def test_extreme_inputs_are_rescued_in_long_double(lib, scale, seed):
     """Inputs scaled to 1e-300 ... 1e30 (every intermediate representable in long double):
@@ -456,7 +459,7 @@ def test_extreme_inputs_are_rescued_in_long_double(lib, scale, seed):
     assert np.max(np.abs(Q - want)) <= 1e-15 * np.max(np.abs(want))
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(st.floats(2.0**101, 1e300))
 def test_overflow_is_flagged_never_silent(lib, big):
     """v |v|^2 overflows: the status says so (the package's batch path re-runs the row)."""
@@ -470,7 +473,7 @@ def test_overflow_is_flagged_never_silent(lib, big):
     assert np.isfinite(T[0]) or status & NONFINITE_RESULT
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(st.integers(0, 9), st.data())
 def test_batch_function_is_the_scalar_function_per_row(lib, n, data):
     """rigidsym_c_<k>_batch over n rows gives each row what the scalar function gives it,
@@ -752,7 +755,7 @@ SAFE = ["-O2", "-O3", "-std=c99", "-ffp-contract=off", "-ffp-contract=fast", "-m
         "-fno-math-errno", "-g"]
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(st.lists(st.sampled_from(SAFE), max_size=4), st.sampled_from(sorted(
     __import__("rigidsym.kernels.cbuild.driver", fromlist=["UNSAFE_FLAGS"]).UNSAFE_FLAGS)),
     st.lists(st.sampled_from(SAFE), max_size=3), st.booleans())
@@ -1106,7 +1109,7 @@ FLOAT_SCALES = [1e-36, 1e-12, 3e9, 1e37]
 DOUBLE_SCALES = [1e-300, 1e-200, 1e-40, 1e300]
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(st.sampled_from(sorted(RESCUED)), st.sampled_from(FLOAT_SCALES),
        st.integers(0, 2**32 - 1))
 def test_extreme_float_inputs_are_rescaled(lib, name, scale, seed):
@@ -1116,7 +1119,7 @@ def test_extreme_float_inputs_are_rescaled(lib, name, scale, seed):
 
 
 @pytest.mark.slow   # its own build of the example's sources (-DRIGIDSYM_C_NO_WIDE)
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(st.sampled_from(sorted(RESCUED)), st.sampled_from(DOUBLE_SCALES),
        st.integers(0, 2**32 - 1))
 def test_extreme_double_inputs_are_rescaled_without_long_double(lib_narrow, name, scale,
@@ -1170,7 +1173,7 @@ def judge_flagged(name: str, dtype, xs: list, status: int, got: np.ndarray,
         assert np.all(np.abs(got - ref) <= 8 * eps / 2 * mag), (got, ref, mag)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(st.sampled_from(sorted(FLAGGED)), st.sampled_from([1e-12, 1e-15, 1e-20, 1e-30, 1e-41]),
        st.integers(0, 2**32 - 1))
 def test_extreme_float_inputs_no_rescue_takes_are_right_or_flagged(lib, name, scale, seed):
@@ -1187,7 +1190,7 @@ def test_extreme_float_inputs_no_rescue_takes_are_right_or_flagged(lib, name, sc
 
 
 @pytest.mark.slow   # its own build of the example's sources (-DRIGIDSYM_C_NO_WIDE)
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(st.sampled_from(sorted(FLAGGED)), st.sampled_from([1e-120, 1e-160, 1e-200, 1e-310]),
        st.integers(0, 2**32 - 1))
 def test_extreme_double_inputs_no_rescue_takes_without_long_double(lib_narrow, name, scale,
@@ -1312,7 +1315,7 @@ def judge_rescued(name: str, dtype, xs: list, status: int, got: np.ndarray) -> N
     assert np.all(np.abs(got - ref) <= 8 * float(fi.eps) / 2 * mag), (got, ref, mag)
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(st.lists(st.tuples(st.integers(-3, 3).filter(bool), st.integers(0, 3),
                           st.integers(0, 3), st.integers(0, 2)), min_size=1, max_size=4),
        st.booleans())

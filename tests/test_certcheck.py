@@ -12,6 +12,7 @@ from pathlib import Path
 
 import _certtamper as certtamper
 import pytest
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -172,7 +173,7 @@ def test_rotation_and_transform_kinds():
 _small = st.fractions(min_value=-3, max_value=3, max_denominator=4)
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=examples(25), deadline=None)
 @given(u=_small, v=_small, x=_small, k=st.integers(1, 5))
 def test_counterexample_on_the_sphere(u, v, x, k):
     """A rational point of the sphere (stereographic) is on the constraint set exactly;
@@ -192,7 +193,7 @@ def test_counterexample_on_the_sphere(u, v, x, k):
         check_certificate(c)
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=examples(25), deadline=None)
 @given(coeffs=st.lists(st.integers(-9, 9), min_size=1, max_size=5), c0=st.integers(-9, 9))
 def test_identity_iff_zero(coeffs, c0):
     """p(x) (e.e) = p(x) + c0 is an identity exactly when c0 = 0; both arithmetic paths
@@ -219,7 +220,7 @@ def _poly(R, terms):
     return out
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(g=_poly_terms, f=_poly_terms)
 def test_exact_division_finds_exactly_the_factors(g, f):
     """Ring.divexact (issue 65): for a primitive non-constant f, (g f) / f is g and g f + 1

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import _certtamper as certtamper
 import pytest
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -217,6 +218,8 @@ def _export_digests(seeds: tuple[str, str], ids: list[str]) -> tuple[str, str]:
     return outs[0], outs[1]
 
 
+# two exports in fresh processes; quick: test_reports_say_how_each_verdict_is_certified
+@pytest.mark.slow
 def test_export_is_byte_reproducible_across_hash_seeds():
     """Two processes with different PYTHONHASHSEED write the same bytes (the ids whose
     atom groups used to come out in a hash-dependent order)."""
@@ -257,7 +260,7 @@ def test_reports_say_how_each_verdict_is_certified(tmp_path, capsys):
     assert "certcheck REJECTED it" in to_markdown(results, certified=fields)
 
 
-@settings(max_examples=15, deadline=None)
+@settings(max_examples=examples(15), deadline=None)
 @given(st.lists(st.integers(-3, 3), min_size=14, max_size=14), st.integers(0, 13),
        st.integers(1, 3))
 def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
@@ -297,7 +300,7 @@ def test_rotation_chain_reduces_exactly_the_ideal(coeffs, where, off):
             assert mult * f == back
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(st.lists(st.tuples(st.integers(0, 6), st.integers(0, 8), st.integers(-3, 3)),
                 min_size=1, max_size=5), st.integers(1, 4))
 def test_linear_ansatz_finds_combinations_and_nothing_else(terms, off):

@@ -10,6 +10,7 @@ import re
 import mpmath as mp
 import pytest
 import sympy as sp
+from _profile import examples
 from test_check_latex import forget_latex_ids, module  # noqa: F401  (fixtures)
 
 import rigidsym
@@ -257,7 +258,7 @@ def test_the_two_semantics_agree_on_random_vector_identities():
     (false unless parallel): every verdict given, none refused as a disagreement."""
     from hypothesis import given, settings
 
-    @settings(max_examples=10, deadline=None, derandomize=True)
+    @settings(max_examples=examples(10), deadline=None, derandomize=True)
     @given(_vector_expressions(), _vector_expressions())
     def check(x, y):
         for latex, holds in ((rf"R({x} \times {y}) = R{x} \times R{y}", True),

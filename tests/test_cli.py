@@ -68,6 +68,7 @@ MUTABLE = [i for i in ("3.1", "3.2", "3.13", "3.16", "3.18", "3.29a", "thm3.2.1"
            if i in REGISTRY]
 
 
+@pytest.mark.sample(fraction=0.3)
 @pytest.mark.parametrize("eq_id", MUTABLE)
 def test_a_sign_change_in_a_printed_form_exits_1(eq_id, monkeypatch, capsys):
     _mutate(monkeypatch, eq_id, _flip_sign)
@@ -78,6 +79,7 @@ def test_a_sign_change_in_a_printed_form_exits_1(eq_id, monkeypatch, capsys):
         registry._build.cache_clear()
 
 
+@pytest.mark.sample(fraction=0.3)
 @pytest.mark.parametrize("eq_id", MUTABLE)
 def test_a_changed_derivation_exits_1(eq_id, monkeypatch, capsys):
     def perturb(st):

@@ -4,6 +4,7 @@ computes: each shortcut gives the very expressions sympy's own route gives."""
 from __future__ import annotations
 
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -27,7 +28,7 @@ def _pair(draw, entries=_ENTRIES):
     return draw(_matrix(n, k, entries)), draw(_matrix(k, m, entries))
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(_pair())
 def test_matmul_gives_sympys_product_entry_for_entry(ab):
     a, b = ab
@@ -37,7 +38,7 @@ def test_matmul_gives_sympys_product_entry_for_entry(ab):
         assert g == w  # the same expression, not only an equal value
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(_pair(st.sampled_from([sp.S.Zero, sp.S.One, _X, sp.oo, sp.zoo, -sp.oo, sp.nan])))
 def test_matmul_with_infinities_is_sympys_product(ab):
     a, b = ab  # 0 * oo is nan: sympy's product, taken as such
@@ -61,7 +62,7 @@ _TREES = st.recursive(
     max_leaves=12)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(st.lists(_TREES, min_size=1, max_size=4))
 def test_nodes_are_sympys_atoms(exprs):
     from rigidsym.checking.deciding.branches import _nodes

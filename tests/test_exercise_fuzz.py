@@ -14,6 +14,7 @@ import io
 import time
 
 import pytest
+from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -99,7 +100,7 @@ def _check(ex_id: str, sets: list[str]) -> None:
 
 def _property(max_examples: int):
     def decorate(fn):
-        return settings(max_examples=max_examples, deadline=None, derandomize=True,
+        return settings(max_examples=examples(max_examples), deadline=None, derandomize=True,
                         database=None,
                         suppress_health_check=[HealthCheck.too_slow,
                                                HealthCheck.data_too_large])(fn)
@@ -114,6 +115,7 @@ def short_budget(monkeypatch):
     monkeypatch.setattr(worked, "SOLVE_BUDGET", 3.0)
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("ex_id", WITH_DATA)
 def test_data_strings_never_crash(ex_id, short_budget):
     # the slow exact exercises (3.10, 3.12 solve in seconds) get fewer draws

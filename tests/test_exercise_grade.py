@@ -11,6 +11,7 @@ import json
 import numpy as np
 import pytest
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -179,7 +180,7 @@ _METRES_PER = {"m": 1, "cm": sp.Rational(1, 100), "mm": sp.Rational(1, 1000),
 
 
 @given(unit=st.sampled_from(sorted(_METRES_PER)), per_entry=st.booleans())
-@settings(max_examples=12, deadline=None, derandomize=True, database=None)
+@settings(max_examples=examples(12), deadline=None, derandomize=True, database=None)
 def test_an_answer_in_any_compatible_unit_grades_right(ex311, unit, per_entry):
     a, h = sp.Rational(1, 20), sp.Rational(1, 100)
     centroid = [0, 0, h / 2]                     # metres: the prism's middle, on its axis

@@ -16,6 +16,7 @@ from rigidsym.cli import main
 from rigidsym.course.worked import parameters, render_markdown, render_text, to_json_value
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("ex_id", EXERCISE_IDS)
 def test_exercise_solved_and_checked(ex_id):
     s = solve(ex_id)
@@ -36,6 +37,9 @@ def test_normalise_id():
             normalise_id(bad)
 
 
+# every exercise solved; quick: the sample of test_exercise_solved_and_checked,
+# test_cli_single_and_bad_input
+@pytest.mark.slow
 def test_cli_json_schema(tmp_path, capsys):
     path = tmp_path / "ex.json"
     assert main(["exercise", "--all", "--json", str(path)]) == 0

@@ -46,6 +46,7 @@ def _flat(res) -> np.ndarray:
     return np.concatenate([np.asarray(r).reshape(-1) for r in res])
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
 @pytest.mark.parametrize("name", PUBLIC)
 def test_one_sample_has_the_bits_of_its_row_in_a_batch(name, dtype):

@@ -112,6 +112,7 @@ def _rule_ratio(name, arrays, got, ref):
 OPEN_C: dict = {}
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", PUBLIC + EULER)
 def test_float32_error_bound_against_50_digits(name, backend):
     """Old main: the plan's budget (1 ulp against the float64 program) and this test's

@@ -17,6 +17,7 @@ import math
 import numpy as np
 import pytest
 import sympy as sp
+from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -179,12 +180,12 @@ def _check(ex_id, member, blank):
         assert g.correct is False and g.missing and g.note == "blank"
 
 
-def _property(ex_id, examples):
+def _property(ex_id, n):
     _, key = key_of(ex_id)
     names = sorted(key) or ["-"]
 
     @given(member=members(ex_id), blank=st.sampled_from(names))
-    @settings(max_examples=examples, deadline=None, derandomize=True, database=None,
+    @settings(max_examples=examples(n), deadline=None, derandomize=True, database=None,
               suppress_health_check=list(HealthCheck))
     def run(member, blank):
         _check(ex_id, member, blank)
@@ -247,7 +248,7 @@ def test_numbers_as_people_write_them():
 @given(key=st.lists(st.floats(-5, 5), min_size=4, max_size=4).filter(
            lambda v: max(map(abs, v)) > 0.5),
        factor=st.floats(0.1, 10), sign=st.sampled_from((1.0, -1.0)))
-@settings(max_examples=15, deadline=None, derandomize=True, database=None)
+@settings(max_examples=examples(15), deadline=None, derandomize=True, database=None)
 def test_the_sign_and_scale_classes(key, factor, sign):
     """A unit quaternion's class (+-q) and a Plücker array up to scale: members built
     here by the group action are right, the key's other edits are not."""

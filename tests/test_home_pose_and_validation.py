@@ -18,6 +18,7 @@ import subprocess
 
 import numpy as np
 import pytest
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -117,7 +118,7 @@ def _tol(dtype) -> float:
     return kinds.get("unit").tolerance(dtype)
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=examples(25), deadline=None)
 @given(st.sampled_from([np.float64, np.float32]), st.floats(-0.95, 0.95),
        st.integers(0, 2**32 - 1))
 def test_near_unit_axis_is_normalised_and_the_round_trip_accepted(dtype, frac, seed):
@@ -172,7 +173,7 @@ def test_a_body_that_cannot_exist_is_refused(kernel, bad, match):
     getattr(K, kernel)(*args, check=False)        # check=False: the caller's promise
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(st.integers(0, 2**32 - 1))
 def test_every_rigid_body_is_accepted(seed):
     """A body of point masses (any layout, so moments that meet the triangle inequality

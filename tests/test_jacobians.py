@@ -166,6 +166,7 @@ def _check(name, backend, n, seed, adversarial=False, tol=TOL):
     return err.max()
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", SMALL + EULER_DEFAULT + SLOW_BIG)
 def test_jacobian_matches_symbolic_derivative(name, backend):
     _check(name, backend, N_RANDOM, 10)
@@ -215,6 +216,7 @@ CONSTRAINED = [c if c[0] not in BIG else pytest.param(*c, marks=pytest.mark.slow
                for c in CONSTRAINED]
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize(("name", "arg", "kind"), CONSTRAINED)
 def test_tangent_derivative_against_manifold_difference(name, arg, kind):
     k = BASES[name]

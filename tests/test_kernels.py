@@ -157,6 +157,7 @@ def cached_case(name: str, n: int, seed: int):
     return arrays, ref_eval(name, arrays)
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", PUBLIC)
 def test_kernel_matches_declaration_mpmath(name, backend):
     arrays, ref = cached_case(name, 1000, 0)
@@ -168,6 +169,7 @@ def test_kernel_matches_declaration_mpmath(name, backend):
                              f"{worst} ({[a[worst].tolist() for a in arrays]})"
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", EULER)
 def test_euler_kernels_match_declaration(name, backend):
     arrays, ref = cached_case(name, 40, 1)

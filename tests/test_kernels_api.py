@@ -185,6 +185,7 @@ def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
     assert count == len(bad) and flagged.tolist() == bad
 
 
+@pytest.mark.sample(fraction=0.5)
 def test_load_other_generated_directory(tmp_path, backend):
     """load(DIR) builds the same checked namespace from any generated directory (here two
     kernels written by the generator into a temporary folder)."""

@@ -24,6 +24,7 @@ import warnings
 
 import numpy as np
 import pytest
+from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -122,8 +123,9 @@ def _check_broadcast(name, data):
         assert all(o.shape[:len(batch)] == batch for o in outs)
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=4, deadline=None,
+@settings(max_examples=examples(4), deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_broadcast_equals_per_sample(name, data):
@@ -132,7 +134,7 @@ def test_broadcast_equals_per_sample(name, data):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=150, deadline=None,
+@settings(max_examples=examples(150), deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_broadcast_equals_per_sample_many(name, data):
@@ -249,6 +251,7 @@ def bad_input_table(name: str, n_cases: int, seed: int, call=None) -> dict:
     return {"stats": stats, "escapes": escapes}
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", sorted(KERNELS))
 def test_bad_input_table(name):
     """>= 200 generated corruptions per kernel: 0 escapes, 0 silent non-finite outputs."""

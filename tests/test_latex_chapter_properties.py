@@ -18,6 +18,7 @@ from functools import cache
 from pathlib import Path
 
 import pytest
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -77,7 +78,7 @@ def _same(k: str, name: str) -> bool:
     return True
 
 
-@settings(max_examples=8, deadline=None, derandomize=True, database=None)
+@settings(max_examples=examples(8), deadline=None, derandomize=True, database=None)
 @given(data=st.data())
 def test_a_chapter_parse_is_unchanged_by_an_equivalent_spelling_quick(data):
     k = data.draw(st.sampled_from(IDS))

@@ -35,6 +35,7 @@ def test_every_id_is_listed(module):
     assert set(module.ids) == set(_FAST) | _SLOW
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("eq_id", _FAST)
 def test_identity_verified(module, eq_id):
     out = check(eq_id, repairs=False, expanded=False)

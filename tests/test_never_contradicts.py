@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import pytest
 import sympy as sp
+from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -113,7 +114,7 @@ def _build(ops: list[int], leaves: list[int]):
     return x
 
 
-@settings(max_examples=12, deadline=None, derandomize=True,
+@settings(max_examples=examples(12), deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(st.integers(0, 11), min_size=1, max_size=3),
        st.lists(st.integers(0, 5), min_size=4, max_size=4))

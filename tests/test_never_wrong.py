@@ -169,6 +169,7 @@ def _nan_cases():
     return KERNELS, valid
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", sorted(_nan_cases()[0]))
 def test_one_nan_policy(name):
     """check=False, a NaN (or inf) in one input component: NaN in exactly the outputs that
@@ -224,6 +225,7 @@ def _outs(res):
     return [np.asarray(r) for r in (res if isinstance(res, tuple) else (res,))]
 
 
+@pytest.mark.sample
 @pytest.mark.filterwarnings("ignore:rigidsym.kernels. the NumPy backend runs on one thread")
 @pytest.mark.parametrize("name", sorted(_nan_cases()[0]))
 def test_check_false_is_check_true_on_valid_input(name):

@@ -13,6 +13,7 @@ from __future__ import annotations
 import mpmath
 import numpy as np
 import pytest
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -72,13 +73,13 @@ def _check_points(p1, p2):
         assert _err(got["c"], got["numpy"]) <= allowed
 
 
-@settings(max_examples=60, deadline=None, derandomize=True)
+@settings(max_examples=examples(60), deadline=None, derandomize=True)
 @given(two_points())
 def test_plucker_never_worse_than_textbook(pts):
     _check_points(*pts)
 
 
-@settings(max_examples=40, deadline=None, derandomize=True)
+@settings(max_examples=examples(40), deadline=None, derandomize=True)
 @given(two_points(max_exp=300))
 def test_plucker_finite_over_the_range(pts):
     """1e-300..1e300: the moment is representable (|n| <= |p1|), so never an error and
@@ -102,7 +103,7 @@ def test_plucker_finite_over_the_range(pts):
 
 
 @pytest.mark.slow
-@settings(max_examples=3000, deadline=None)
+@settings(max_examples=examples(3000), deadline=None)
 @given(two_points(max_exp=300))
 def test_plucker_long_profile(pts):
     p1, p2 = pts

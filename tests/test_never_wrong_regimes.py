@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from test_kernels_props import KERNELS, valid
@@ -172,18 +173,20 @@ def test_float32_nan_policy_c_numpy(name):
             np.testing.assert_array_equal(np.isnan(g), np.isnan(w), err_msg=f"{b} {name}")
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("dtype", DTYPES)
 @pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=3, derandomize=True, **_SETTINGS)
+@settings(max_examples=examples(3), derandomize=True, **_SETTINGS)
 @given(data=st.data())
 def test_regimes_c_numpy(name, dtype, data):
     check_backends(name, data.draw(regime_batch(name, dtype)), dtype)
 
 
+@pytest.mark.sample
 @pytest.mark.extra
 @pytest.mark.parametrize("dtype", DTYPES)
 @pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=3, derandomize=True, **_SETTINGS)
+@settings(max_examples=examples(3), derandomize=True, **_SETTINGS)
 @given(data=st.data())
 def test_regimes_four_backends(name, dtype, data):
     """C, NumPy, PyTorch (every kernel) and JAX (QUICK_JAX's; every kernel in the long
@@ -195,7 +198,7 @@ def test_regimes_four_backends(name, dtype, data):
 @pytest.mark.slow
 @pytest.mark.parametrize("dtype", DTYPES)
 @pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=60, **_SETTINGS)
+@settings(max_examples=examples(60), **_SETTINGS)
 @given(data=st.data())
 def test_regimes_long_profile(name, dtype, data):
     arrays = [b for b in ("torch", "jax") if _installed(b)]

@@ -9,6 +9,7 @@ from fractions import Fraction
 import flint
 import pytest
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -40,7 +41,7 @@ def _point(plan, seed):
     return random_point(plan, random.Random(seed))
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(st.integers(0, 10**6))
 def test_program_values_equal_the_tree_walker(seed):
     plan = make_plan(EXPRS)

@@ -127,6 +127,7 @@ def maps():
     return out
 
 
+@pytest.mark.sample(fraction=0.5)
 @pytest.mark.parametrize("name", ["rotation_from_rotation_vector",
                                   "rotation_vector_left_jacobian",
                                   "rotation_vector_right_jacobian",

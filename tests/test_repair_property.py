@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -50,7 +51,7 @@ def identities():
         del REGISTRY[k]
 
 
-@settings(max_examples=12, deadline=None, derandomize=True,
+@settings(max_examples=examples(12), deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_a_one_edit_mutant_is_repaired(identities, data):

@@ -62,6 +62,7 @@ def test_three_slips_of_every_kind_of_edit():
     assert {kinds[i] for i in QUICK} == set(KINDS)
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("eq_id", [pytest.param(i, marks=() if i in QUICK else
                                                 pytest.mark.slow) for i in _kinds()])
 def test_the_expected_edit_is_among_the_repairs(slips, eq_id):

@@ -59,6 +59,9 @@ def test_report_command_says_where_and_writes_0644(tmp_path, monkeypatch, capsys
         len((folder / "chapter3.json").read_text())
 
 
+# the whole exercise report twice; quick: test_report_command_says_where_and_writes_0644,
+# test_html_independent_of_hash_seed
+@pytest.mark.slow
 def test_exercise_figure_and_pages_are_0644_and_deterministic(tmp_path, monkeypatch):
     from rigidsym.cli.exercise import write_report
     from rigidsym.course import exercise_report as exercises

@@ -10,6 +10,7 @@ from __future__ import annotations
 import mpmath
 import pytest
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from rigidsym.derivations.sec3_2_1 import pitch_of_displacement, screw_axis_point
@@ -53,7 +54,7 @@ def _small(x, scale=1) -> bool:
     return abs(sp.N(x, DIGITS)) < sp.Float(10) ** (-(DIGITS - 20)) * scale
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(axis=vec3, phi=angles, a=vec3, c=vec3)
 def test_screw_axis_point_is_closest_point_of_the_axis(axis, phi, a, c):
     e = _unit(axis)
@@ -70,7 +71,7 @@ def test_screw_axis_point_is_closest_point_of_the_axis(axis, phi, a, c):
         assert _small(x, scale)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(axis=vec3, phi=angles, a=vec3, p=vec3, c=vec3)
 def test_pitch_is_the_same_from_every_point(axis, phi, a, p, c):
     e = _unit(axis)
@@ -83,7 +84,7 @@ def test_pitch_is_the_same_from_every_point(axis, phi, a, p, c):
     assert _small(pa - pp, 1 + abs(pa))
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(p1=vec3, p2=vec3, t=coord)
 def test_plucker_array_satisfies_its_constraints_and_is_point_independent(p1, p2, t):
     p1, p2 = _col(p1), _col(p2)
@@ -100,7 +101,7 @@ def test_plucker_array_satisfies_its_constraints_and_is_point_independent(p1, p2
         assert _small(x, 1000)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(p=vec3, axis=vec3, a=vec3, b=vec3)
 def test_plucker_transfer_moves_the_moment(p, axis, a, b):
     e = _unit(axis)

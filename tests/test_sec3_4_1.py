@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import mpmath
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from rigidsym.derivations.sec3_4_1 import (
@@ -43,19 +44,19 @@ def _check_point_and_pitch(omega, a, a_dot):
         instant_screw_pitch(omega, a_dot)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(_nonzero, _vec, _vec)
 def test_isa_point_and_pitch_uniform(omega, a, a_dot):
     _check_point_and_pitch(omega, a, a_dot)
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(_small, _vec, _vec)
 def test_isa_point_and_pitch_near_pure_translation(omega, a, a_dot):
     _check_point_and_pitch(omega, a, a_dot)
 
 
-@settings(max_examples=20, deadline=None)
+@settings(max_examples=examples(20), deadline=None)
 @given(_nonzero, _vec, _vec)
 def test_plucker_array_is_a_unit_line_through_the_isa(omega, a, a_dot):
     k = instant_screw_plucker(omega, a, a_dot)

@@ -10,6 +10,7 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from rigidsym.derivations.sec3_4_2 import (
@@ -54,7 +55,7 @@ angles = st.one_of(st.floats(0.05, 2 * np.pi - 0.05),
                    st.floats(1e-6, 1e-2), st.floats(np.pi - 1e-2, np.pi - 1e-6))
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(unit, angles)
 def test_left_inverses_and_projectors(e, phi):
     m = _mats(e, phi)
@@ -68,7 +69,7 @@ def test_left_inverses_and_projectors(e, phi):
         assert np.allclose(P @ P, P, atol=1e-8)
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(unit, st.floats(1e-6, 1e-2))
 def test_regular_near_singular_sets(e, eps):
     """Ntilde, L, H, Htilde stay bounded at phi -> 0; N, Ntilde, H, Htilde at phi -> pi."""
@@ -119,7 +120,7 @@ def test_rates_along_an_explicit_trajectory(t0):
             assert max(abs(x) for x in (om - Ftv * qd)) < 1e-30, k
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(*[st.lists(st.floats(-5, 5), min_size=3, max_size=3)] * 4)
 def test_twist_transfer(a, p, w, vA):
     a_, p_ = sp.Matrix(a), sp.Matrix(p)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from rigidsym.derivations import sec3_6, sec3_7, sec3_7_reciprocity
@@ -16,7 +17,7 @@ vec3 = st.tuples(ints, ints, ints).map(lambda v: sp.Matrix(v))
 nonzero = vec3.filter(lambda v: any(v))
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(nonzero, vec3, vec3, vec3, st.integers(-5, 5))
 def test_wrench_axis_point_and_pitch(f, n_A, a, q, lam):
     """The kernel point has the moment parallel to f, is normal to f, minimises |n|."""
@@ -33,7 +34,7 @@ def test_wrench_axis_point_and_pitch(f, n_A, a, q, lam):
     assert sec3_7.wrench_pitch(moment(q), f) == sec3_7.wrench_pitch(n_A, f)
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(vec3, vec3, vec3, vec3)
 def test_wrench_transfer(n_A, f, a, p):
     """w_P = V w_A is the moment transfer (3.106); V^-1 = U^T."""

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 import sympy as sp
+from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from rigidsym.derivations.sec3_8 import (
@@ -61,7 +62,7 @@ def inertia_about(masses, pts, a):
 seeds = st.integers(0, 2**32 - 1)
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(seeds)
 def test_centroidal_inertia_is_a_gram_form_and_positive_definite(seed):
     masses, pts = body(seed)
@@ -72,7 +73,7 @@ def test_centroidal_inertia_is_a_gram_form_and_positive_definite(seed):
     assert np.linalg.eigvalsh(I_C).min() > 0
 
 
-@settings(max_examples=30, deadline=None)
+@settings(max_examples=examples(30), deadline=None)
 @given(seeds, st.floats(1e-9, 1e-3))
 def test_inertia_of_a_nearly_linear_body_is_semidefinite_along_the_line(seed, eps):
     masses, pts = body(seed, spread=(1.0, eps, eps))  # near the singular set: a segment
@@ -82,7 +83,7 @@ def test_inertia_of_a_nearly_linear_body_is_semidefinite_along_the_line(seed, ep
     assert abs(abs(vec[:, 0] @ np.array([1.0, 0, 0])) - 1) < 1e-4  # null space along x
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 @given(seeds)
 def test_steiner_3x3_and_6x6(seed):
     masses, pts = body(seed)
@@ -109,7 +110,7 @@ def test_steiner_3x3_and_6x6(seed):
     assert np.linalg.eigvalsh(M_A - M_C).min() < 0
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(seeds)
 def test_kinetic_energy_and_wrench_kernels(seed):
     masses, pts = body(seed)
@@ -123,7 +124,7 @@ def test_kinetic_energy_and_wrench_kernels(seed):
     assert np.allclose(wr[3:], m * cd)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=examples(40), deadline=None)
 @given(seeds, st.integers(4, 30))
 def test_every_body_has_the_moments_of_four_equal_point_masses(seed, n):
     """The reduction of the module docstring: X = V V^T, rotate V so its last row is

@@ -86,6 +86,8 @@ def test_openmp_build_when_the_compiler_has_it():
     K.use_backend("numpy")
 
 
+# a build without OpenMP; quick: test_thread_counts_and_positions_give_the_same_bits
+@pytest.mark.slow
 def test_no_openmp_falls_back_to_one_thread_with_one_warning(monkeypatch, tmp_path):
     """A compiler without OpenMP builds the one-thread kernels; loading them warns once."""
     if not HAVE_CC:
@@ -158,6 +160,7 @@ def c_backend():
     K.use_backend("numpy")
 
 
+@pytest.mark.sample
 @pytest.mark.parametrize("name", sorted(AVAILABLE))
 def test_thread_counts_and_positions_give_the_same_bits(name, c_backend):
     arrays = _hard_inputs(name)

@@ -124,6 +124,7 @@ DEFAULT = ("newton_euler_residual", "instant_screw_point_pitch", "rotation_from_
            "plucker_from_points", "screw_axis_point", "instant_screw_axis", "N_matrix")
 
 
+@pytest.mark.sample(fraction=0.3)
 @pytest.mark.parametrize("name", [n if n in DEFAULT else pytest.param(n, marks=pytest.mark.slow)
                                   for n in sorted(VEC_F64)])
 def test_vector_lanes_give_the_scalar_samples_bits_and_flags(name, tmp_path):

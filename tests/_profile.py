@@ -1,0 +1,51 @@
+"""The two test profiles: one set of properties, two budgets.
+
+- ``quick`` (the default; the README's test command): each property at its quick budget;
+  a family marked ``sample`` runs on a seeded sample of its parameters, the rest of the
+  family is marked ``slow``.
+- ``thorough`` (``RIGIDSYM_TEST_PROFILE=thorough``; the second part of ``.ci/run``, which
+  selects ``-m "slow or extra or budget"``): the rest of every sampled family (through its
+  ``slow`` mark), and every Hypothesis property again at :data:`THOROUGH_FACTOR` times its
+  quick budget.
+
+The sample is the same in every process (xdist workers must collect the same items): a
+parameter is in it when the CRC-32 of its node id and the seed ``RIGIDSYM_TEST_SEED``
+(default 0) is among the smallest of its family. Another seed draws another sample.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import zlib
+
+#: ``quick`` or ``thorough``
+PROFILE = os.environ.get("RIGIDSYM_TEST_PROFILE", "quick")
+if PROFILE not in ("quick", "thorough"):
+    raise ValueError(f"RIGIDSYM_TEST_PROFILE: expected 'quick' or 'thorough', got {PROFILE!r}")
+#: the seed of the sampled families' draw
+SEED = int(os.environ.get("RIGIDSYM_TEST_SEED", "0"))
+#: the thorough run's Hypothesis budget, in quick budgets
+THOROUGH_FACTOR = 5
+#: the share of a sampled family the quick run keeps, when its mark names none
+DEFAULT_FRACTION = 0.25
+
+
+def examples(n: int) -> int:
+    """A Hypothesis property's ``max_examples``: ``n`` in the quick profile,
+    :data:`THOROUGH_FACTOR` times ``n`` in the thorough one."""
+    return n if PROFILE == "quick" else THOROUGH_FACTOR * n
+
+
+def rank(nodeid: str) -> int:
+    """The draw's key of one parameter: CRC-32 of the seed and the node id."""
+    return zlib.crc32(f"{SEED}:{nodeid}".encode())
+
+
+def kept(nodeids: list[str], fraction: float) -> set[str]:
+    """The quick run's share of a family: the ``ceil(fraction * n)`` node ids (at least one)
+    of smallest :func:`rank`."""
+    if not 0 < fraction <= 1:
+        raise ValueError(f"fraction: expected a number in (0, 1], got {fraction!r}")
+    k = max(1, math.ceil(fraction * len(nodeids)))
+    return set(sorted(nodeids, key=rank)[:k])
