@@ -5,8 +5,9 @@
   family is marked ``slow``.
 - ``thorough`` (``RIGIDSYM_TEST_PROFILE=thorough``; the second part of ``.ci/run``, which
   selects ``-m "slow or extra or budget"``): the rest of every sampled family (through its
-  ``slow`` mark), and every Hypothesis property again at :data:`THOROUGH_FACTOR` times its
-  quick budget.
+  ``slow`` mark), and every Hypothesis property again: a quick one at
+  :data:`THOROUGH_FACTOR` times its quick budget (``max_examples=examples(n)``), a ``slow``
+  one at the budget it writes as a number.
 
 The sample is the same in every process (xdist workers must collect the same items): a
 parameter is in it when the CRC-32 of its node id and the seed ``RIGIDSYM_TEST_SEED``

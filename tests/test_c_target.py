@@ -1119,7 +1119,7 @@ def test_extreme_float_inputs_are_rescaled(lib, name, scale, seed):
 
 
 @pytest.mark.slow   # its own build of the example's sources (-DRIGIDSYM_C_NO_WIDE)
-@settings(max_examples=examples(30), deadline=None)
+@settings(max_examples=30, deadline=None)
 @given(st.sampled_from(sorted(RESCUED)), st.sampled_from(DOUBLE_SCALES),
        st.integers(0, 2**32 - 1))
 def test_extreme_double_inputs_are_rescaled_without_long_double(lib_narrow, name, scale,
@@ -1190,7 +1190,7 @@ def test_extreme_float_inputs_no_rescue_takes_are_right_or_flagged(lib, name, sc
 
 
 @pytest.mark.slow   # its own build of the example's sources (-DRIGIDSYM_C_NO_WIDE)
-@settings(max_examples=examples(30), deadline=None)
+@settings(max_examples=30, deadline=None)
 @given(st.sampled_from(sorted(FLAGGED)), st.sampled_from([1e-120, 1e-160, 1e-200, 1e-310]),
        st.integers(0, 2**32 - 1))
 def test_extreme_double_inputs_no_rescue_takes_without_long_double(lib_narrow, name, scale,

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from _profile import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from rigidsym.derivations import euler_angles as E
@@ -78,7 +77,7 @@ def test_off_the_lock_both_branches_rebuild_q(seq):
 
 
 @pytest.mark.slow
-@settings(max_examples=examples(60), deadline=None)
+@settings(max_examples=60, deadline=None)
 @given(seq=st.sampled_from(SEQUENCES), seed=st.integers(0, 2**32 - 1))
 def test_off_the_lock_every_sequence(seq, seed):
     _check_off_lock(seq, _principal(seq, np.random.default_rng(seed), 50))

@@ -14,7 +14,6 @@ import io
 import time
 
 import pytest
-from _profile import examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -100,7 +99,7 @@ def _check(ex_id: str, sets: list[str]) -> None:
 
 def _property(max_examples: int):
     def decorate(fn):
-        return settings(max_examples=examples(max_examples), deadline=None, derandomize=True,
+        return settings(max_examples=max_examples, deadline=None, derandomize=True,
                         database=None,
                         suppress_health_check=[HealthCheck.too_slow,
                                                HealthCheck.data_too_large])(fn)

@@ -16,7 +16,6 @@ import numpy as np
 import pytest
 import sympy as sp
 from _independent import lines, motions, prism
-from _profile import examples
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
@@ -406,7 +405,7 @@ def _run(ex_id: str, n: int) -> None:
     draw, check, _, _ = CASES[ex_id]
     seen = set()
 
-    @settings(max_examples=examples(n), deadline=None, derandomize=True, database=None,
+    @settings(max_examples=n, deadline=None, derandomize=True, database=None,
               suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large,
                                      HealthCheck.filter_too_much])
     @given(draw())

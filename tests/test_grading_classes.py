@@ -185,7 +185,7 @@ def _property(ex_id, n):
     names = sorted(key) or ["-"]
 
     @given(member=members(ex_id), blank=st.sampled_from(names))
-    @settings(max_examples=examples(n), deadline=None, derandomize=True, database=None,
+    @settings(max_examples=n, deadline=None, derandomize=True, database=None,
               suppress_health_check=list(HealthCheck))
     def run(member, blank):
         _check(ex_id, member, blank)

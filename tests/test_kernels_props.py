@@ -134,7 +134,7 @@ def test_broadcast_equals_per_sample(name, data):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=examples(150), deadline=None,
+@settings(max_examples=150, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_broadcast_equals_per_sample_many(name, data):

@@ -351,7 +351,7 @@ def test_the_verdict_is_unchanged_quick(prop, data, monkeypatch):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("prop", sorted(PROPERTIES))
-@settings(max_examples=examples(1), deadline=None, derandomize=True, database=None,
+@settings(max_examples=1, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
 @given(data=st.data())
 def test_the_verdict_is_unchanged_on_every_entry(prop, data, monkeypatch):

@@ -103,7 +103,7 @@ def test_plucker_finite_over_the_range(pts):
 
 
 @pytest.mark.slow
-@settings(max_examples=examples(3000), deadline=None)
+@settings(max_examples=3000, deadline=None)
 @given(two_points(max_exp=300))
 def test_plucker_long_profile(pts):
     p1, p2 = pts

@@ -198,7 +198,7 @@ def test_regimes_four_backends(name, dtype, data):
 @pytest.mark.slow
 @pytest.mark.parametrize("dtype", DTYPES)
 @pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=examples(60), **_SETTINGS)
+@settings(max_examples=60, **_SETTINGS)
 @given(data=st.data())
 def test_regimes_long_profile(name, dtype, data):
     arrays = [b for b in ("torch", "jax") if _installed(b)]
