@@ -345,7 +345,7 @@ def default_src(tmp_path_factory):
     return generate(DEFAULT_KERNELS, tmp_path_factory.mktemp("c_rescue"))
 
 
-@pytest.mark.sample(fraction=0.34)
+@pytest.mark.sample(fraction=0.33)
 @pytest.mark.parametrize("flags", [[], ["-DRIGIDSYM_C_NO_WIDE"], ["-DDRIVER_FTZ"]],
                          ids=["wide", "no_wide", "ftz"])
 def test_independent_exponents_never_a_silent_wrong(default_src, tmp_path, flags):

@@ -121,7 +121,7 @@ def _point(name, t):
     return w if name.startswith("rotation_vector") else np.r_[w, 0.3, -1.2, 0.5]
 
 
-@pytest.mark.sample(fraction=0.34)
+@pytest.mark.sample(fraction=0.33)
 @pytest.mark.parametrize("name", INVERSES)
 def test_inverse_jacobians_near_2pi_k(name):
     """Within 8 u (kappa + 1) of the declared formula at every norm of NEAR (on main: 2.5e-2
