@@ -400,11 +400,11 @@ def test_the_repair_search_stops_at_its_time_limit_and_says_so(monkeypatch):
 
 
 def test_the_time_limit_stops_a_step_inside_it_and_only_in_the_main_thread():
-    """Gap 2 of issue 52: one step of the search (sympy's Gauss-Jordan inverse of a 4x4 in
-    a final check) ran 20-100 s past the 10 s limit, which was read between candidates. A
-    limit already past stops a step that never looks at the clock (the step's own bound
-    only guards against an alarm that never comes); leaving the block disarms the alarm
-    and restores the handler; outside the main thread the block runs unguarded."""
+    """One step of the search (sympy's Gauss-Jordan inverse of a 4x4 in a final check) can
+    outlast the limit by a minute, read between candidates only. A limit already past stops
+    a step that never looks at the clock (the step's own bound only guards against an alarm
+    that never comes); leaving the block disarms the alarm and restores the handler;
+    outside the main thread the block runs unguarded."""
     import signal
     import threading
     import time
@@ -460,9 +460,9 @@ def test_the_exact_inverse_is_the_inverse(make):
 
 @pytest.mark.slow
 def test_mccarthys_cayley_slip_stops_at_its_time_limit_and_says_so(monkeypatch):
-    """The slowest corpus entries of issue 52's gap 2 (15-20 s with a 10 s limit): on a
-    clock that passes the limit at its first reading after the search starts, the search
-    stops there, and the verdict comes with its counterexample and the reason."""
+    """McCarthy's Cayley slip, whose whole search takes 15-20 s: on a clock that passes the
+    limit at its first reading after the search starts, the search stops there, and the
+    verdict comes with its counterexample and the reason."""
     import itertools
     import time
 
