@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -51,9 +50,7 @@ CORRECT = [(X.wrench_ad_inverse_transpose, "wrench_transfer"),
 
 @pytest.mark.parametrize("func, op, kind, where", BUGS, ids=[b[0].__name__ for b in BUGS])
 def test_each_recreated_bug_is_found_and_named(func, op, kind, where):
-    t0 = time.perf_counter()
     rep = audit(func, op, spec=f"audit_examples:{func.__name__}")
-    assert time.perf_counter() - t0 <= 60
     assert not rep.ok and rep.convention is not None
     errors = [f for f in rep.findings if f.severity == "error"]
     assert any(f.kind == kind and where in f.text for f in errors), report.text(rep)

@@ -262,7 +262,8 @@ _NORMALISING = {   # kernel -> (args given a direction d and a scale s, unit out
 
 
 @settings(max_examples=examples(40), deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+          suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                 HealthCheck.too_slow])
 @given(name=st.sampled_from(sorted(_NORMALISING)),
        exponent=st.floats(150.0, 160.0),
        d=st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3))

@@ -1,6 +1,6 @@
 """Data never crash (issue 32 item 3): every data string for every exercise with data is
 solved (exit 0), answered as ill-posed (exit 1) or refused as bad input naming the
-parameter (exit 2), within seconds; never a traceback, never exit 3 (a defect).
+parameter (exit 2); never a traceback, never exit 3 (a defect).
 
 The strings drawn are what a class types: exact, decimal, transcendental (``pi``,
 ``cos(30)``), degrees (``cos(30°)``), huge, tiny, nan, inf and garbage. The default run
@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import contextlib
 import io
-import time
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -21,8 +20,6 @@ import rigidsym.exercises as ex
 from rigidsym.cli import main
 
 WITH_DATA = [i for i in ex.EXERCISE_IDS if len(ex.parameters(i))]
-#: one solve's budget (the slowest exercise, 3.12, takes ~4 s on the book's data)
-SECONDS = 30
 
 EXACT = st.one_of(st.integers(-20, 20).map(str),
                   st.tuples(st.integers(-9, 9), st.integers(1, 9)).map(lambda t: f"{t[0]}/{t[1]}"),
@@ -66,23 +63,21 @@ def exercise_data(draw, ex_id: str):
     return [f"{p.name}={_text(draw, p)}" for p in chosen]
 
 
-def _run(ex_id: str, sets: list[str]) -> tuple[int, str, str, float]:
+def _run(ex_id: str, sets: list[str]) -> tuple[int, str, str]:
     argv = ["exercise", ex_id[2:]]
     for s in sets:
         argv += ["--set", s]
     out, err = io.StringIO(), io.StringIO()
-    t = time.perf_counter()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         rc = main(argv)
-    return rc, out.getvalue(), err.getvalue(), time.perf_counter() - t
+    return rc, out.getvalue(), err.getvalue()
 
 
 def _check(ex_id: str, sets: list[str]) -> None:
-    rc, out, err, seconds = _run(ex_id, sets)
+    rc, out, err = _run(ex_id, sets)
     assert "Traceback" not in out + err
     assert rc != 3, f"internal error on {sets}: {err}"
     assert rc in (0, 1, 2, 4), (rc, sets, err)          # 4: not solved for these data
-    assert seconds < SECONDS, f"{ex_id} {sets} took {seconds:.1f} s"
     if rc == 2:
         lines = [ln for ln in err.splitlines() if ln.startswith("rigidsym: error:")]
         assert len(lines) == 1, err
@@ -108,8 +103,8 @@ def _property(max_examples: int):
 
 @pytest.fixture
 def short_budget(monkeypatch):
-    """An exact solve is refused after 3 CPU s (the default is 20), so that a drawn
-    datum's answer, or refusal, comes within SECONDS of wall time on a loaded machine."""
+    """An exact solve is refused after 3 CPU s (the default is 20), so that the many drawn
+    data are each answered or refused in a few seconds (a refusal is an accepted answer)."""
     import rigidsym.course.worked as worked
     monkeypatch.setattr(worked, "SOLVE_BUDGET", 3.0)
 
@@ -130,9 +125,8 @@ def test_data_strings_never_crash(ex_id, short_budget):
 @pytest.mark.slow
 @pytest.mark.parametrize("ex_id", WITH_DATA)
 def test_data_strings_never_crash_exhaustive(ex_id, short_budget):
-    # the short budget here too: 20 CPU s on a loaded machine is more than SECONDS of wall;
-    # derandomized, as the default run: CI draws the same 150 data sets every time (a new
-    # seed is a new search, for a person, not a coin CI flips)
+    # the short budget here too; derandomized, as the default run: CI draws the same 150
+    # data sets every time (a new seed is a new search, for a person, not a coin CI flips)
     @_property(150)
     @given(exercise_data(ex_id))
     def prop(sets):
@@ -151,8 +145,8 @@ def test_data_strings_never_crash_exhaustive(ex_id, short_budget):
     ("3.4", ["n_1=nan,0,0"], 2, "n_1[0]: 'nan' is not a finite real number"),
 ])
 def test_the_issue_cases(ex_id, sets, rc, words):
-    got, out, err, seconds = _run("ex" + ex_id, sets)
-    assert got == rc and words in out + err and seconds < SECONDS
+    got, out, err = _run("ex" + ex_id, sets)
+    assert got == rc and words in out + err
     assert ("cos(30): 30 rad" in out) == ("cos(30)" in sets[0])      # the radians hint
     assert ("certified" in out) == ("cos(30)" in sets[0] or "pi," in sets[0])
 
@@ -162,14 +156,14 @@ def test_integers_past_sympys_reach_are_refused_not_a_defect(monkeypatch):
     sympy factor integers past a float's range (OverflowError): refused (2), not exit 3.
     3.6's directions are now measurements (rounded to 30 certified digits, the grasp frame
     fitted in floating point): solved; the overflow is planted to keep the refusal tested."""
-    got, out, err, seconds = _run("ex3.6", ["face_normal=pi,pi,cos(30°)"])
-    assert got == 0 and "certified" in out and "residual" in out and seconds < SECONDS, err
+    got, out, err = _run("ex3.6", ["face_normal=pi,pi,cos(30°)"])
+    assert got == 0 and "certified" in out and "residual" in out, err
     from rigidsym.course.worked import exercise_module
 
     def overflowing(**kw):
         raise OverflowError("int too large to convert to float")
     monkeypatch.setattr(exercise_module("ex3.7"), "solve", overflowing)
-    got, out, err, seconds = _run("ex3.7", ["a=7,0,0", "b=0,7,7"])    # not cached
+    got, out, err = _run("ex3.7", ["a=7,0,0", "b=0,7,7"])    # not cached
     assert got == 2 and "integers too large" in err, (got, err)
 
 
@@ -179,7 +173,7 @@ def test_a_defect_exits_3_not_an_answer_code(monkeypatch):
     def broken(*a, **k):
         raise ZeroDivisionError("a planted defect")
     monkeypatch.setattr(worked, "solve", broken)
-    rc, out, err, _ = _run("ex3.7", [])
+    rc, out, err = _run("ex3.7", [])
     assert rc == 3 and "internal error, please report" in err and "ZeroDivisionError" in err
 
 
@@ -187,5 +181,5 @@ def test_string_data_read_the_same_through_solve_and_the_cli():
     text = "cos(pi/6),-sin(pi/6),0;sin(pi/6),cos(pi/6),0;0,0,1"
     s = ex.solve("3.19", Q=text)
     assert s.status == "solved" and s.checked and s.tol is None      # exact: algebraic
-    rc, out, _, _ = _run("ex3.19", [f"Q={text}"])
+    rc, out, _ = _run("ex3.19", [f"Q={text}"])
     assert rc == 0 and str(s.answers["f_2"][0]) in out

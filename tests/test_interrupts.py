@@ -1,15 +1,18 @@
-"""Interrupted, repeated and concurrent commands (issue 69): an interrupt keeps what was
-decided, exits 130 with one line and no traceback; the next run reuses the kept work and
-ends with the results of an uninterrupted run; ``show``, ``report`` and the API read what
-``verify`` stored; two processes at once decide each id once.
+"""Interrupted, repeated and concurrent commands: an interrupt keeps what was decided, exits
+130 with one line and no traceback; the next run reuses the kept work and ends with the
+results of an uninterrupted run; ``show``, ``report`` and the API read what ``verify``
+stored; two processes at once decide each id once.
 
-The reuse is counted (the ``decide`` counts a command writes to ``RIGIDSYM_WORK_FILE``,
-:mod:`rigidsym.core.work`), never timed. The user module's declarations sleep while they
-build, so that an interrupt or a second process meets a run in its middle at little CPU
-cost; a first run without repairs (:func:`_warm`) leaves them known to build, so that a
-run with repairs, cold for its verdicts, builds them while it checks them rather than
-while it loads the module. Every process is waited for (killed if still running) and
-every file lies under ``tmp_path``.
+An interrupt lands at a named checkpoint, never at a moment in time: the command sends
+itself SIGINT or SIGTERM at the checkpoint ``RIGIDSYM_INTERRUPT_AT`` names (a file written,
+a unit of work begun, a progress phase begun or advanced: :mod:`rigidsym.core.interrupts`),
+and an uninterrupted run with ``RIGIDSYM_INTERRUPT_TRACE`` lists the checkpoints there are,
+so that the slow set walks through each of them (a seeded sample of ``generate``'s), on a
+fast machine or a loaded one alike. The reuse is counted (the ``decide`` counts a command
+writes to ``RIGIDSYM_WORK_FILE``, :mod:`rigidsym.core.work`), never timed. The declarations
+of the concurrency test sleep while they build, so that the two processes' checks overlap
+(without the lock per id each would decide every id). Every process is waited for (killed if
+still running) and every file lies under ``tmp_path``.
 """
 
 from __future__ import annotations
@@ -21,8 +24,9 @@ import re
 import signal
 import subprocess
 import sys
-import time
 import tomllib
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 import pytest
@@ -36,7 +40,7 @@ from rigidsym.registry.declarations import REGISTRY
 
 ROOT = Path(__file__).resolve().parents[1]
 HEAD = '''
-"""Declarations that take a while to build (a sleep): interrupt tests."""
+"""Declarations for the interrupt tests (a sleep while they build, where asked)."""
 import time
 import sympy as sp
 from rigidsym import Rel, Statement, angle, equation
@@ -54,25 +58,46 @@ LINE = re.compile(r"rigidsym: interrupted(: (\d+) of (\d+) ids kept)?; run again
                   r"|rigidsym: interrupted while starting; nothing was done")
 
 
-def _module(where: Path, tag: str, n: int, sleep: float) -> Path:
+def _module(where: Path, tag: str, n: int, sleep: float = 0.0) -> Path:
     path = where / f"{tag}.py"
     path.write_text(HEAD + "".join(DECL.format(tag=tag, k=k, sleep=sleep)
                                    for k in range(1, n + 1)), encoding="utf-8")
     return path
 
 
-def _env(cache: Path, work: Path) -> dict:
+def _env(cache: Path, work: Path, at: str | None = None, trace: Path | None = None) -> dict:
+    """The command's environment: its cache and work file; ``at`` the checkpoint it
+    interrupts itself at, ``trace`` where it lists the checkpoints it passes."""
     env = dict(os.environ, RIGIDSYM_CACHE=str(cache), RIGIDSYM_WORK_FILE=str(work))
-    env.pop("RIGIDSYM_ASCII", None)
+    for name in ("RIGIDSYM_ASCII", interrupts.AT, interrupts.TRACE):
+        env.pop(name, None)
+    if at is not None:
+        env[interrupts.AT] = at
+    if trace is not None:
+        env[interrupts.TRACE] = str(trace)
     return env
 
 
+@contextmanager
+def _terminal_caller() -> Iterator[None]:
+    """Python's own SIGINT handler in this process while a child starts: a child inherits
+    an ignored SIGINT (pytest started as a background job, ``cmd &``) and keeps ignoring it,
+    by design (:func:`interrupts.install`); a terminal's caller does not ignore it."""
+    outer = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, outer)
+
+
 def _start(args: list[str], env: dict, cwd: Path) -> subprocess.Popen:
-    return subprocess.Popen([sys.executable, "-m", "rigidsym", *args], env=env, cwd=cwd,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    with _terminal_caller():
+        return subprocess.Popen([sys.executable, "-m", "rigidsym", *args], env=env, cwd=cwd,
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
 def _finish(p: subprocess.Popen, timeout: float = 300) -> tuple[int, str, str]:
+    """Wait for ``p`` (``timeout`` only guards against a hang); its status and output."""
     try:
         out, err = p.communicate(timeout=timeout)
     finally:
@@ -82,30 +107,31 @@ def _finish(p: subprocess.Popen, timeout: float = 300) -> tuple[int, str, str]:
     return p.returncode, out, err
 
 
-def _interrupt(p: subprocess.Popen, delay: float, sig=signal.SIGINT,
-               after: str | None = "checking") -> tuple[int, str, str]:
-    """Signal ``p`` ``delay`` s after its stderr shows ``after`` (else after its start)."""
-    head = ""
-    try:
-        while after is not None and after not in head and p.poll() is None:
-            head += p.stderr.readline()
-        time.sleep(delay)
-        if p.poll() is None:
-            p.send_signal(sig)
-    except BaseException:
-        p.kill()
-        p.wait()
-        raise
-    rc, out, err = _finish(p)
-    return rc, out, head + err
+def _run(args: list[str], env: dict, cwd: Path) -> tuple[int, str, str]:
+    return _finish(_start(args, env, cwd))
+
+
+def _points(args: list[str], cache: Path, work: Path, cwd: Path) -> tuple[list[str], str]:
+    """An uninterrupted run of ``args`` into ``cache``: the checkpoints it passed, in order,
+    and its stdout."""
+    trace = cwd / f"{cache.name}.trace"
+    rc, out, err = _run(args, _env(cache, work, trace=trace), cwd)
+    assert rc == 0, err
+    points = trace.read_text(encoding="utf-8").split()
+    assert points[0] == "start" and "write" in points, points
+    return points, out
+
+
+def _signal_at(k: int) -> str:
+    """The signal of the ``k``-th checkpoint's interrupt: SIGTERM for every fourth."""
+    return "SIGTERM" if k % 4 == 3 else "SIGINT"
 
 
 def _warm(mod: Path, cache: Path, tmp_path: Path) -> None:
     """Verify ``mod`` without repairs into ``cache``: its declarations are then known to
     build (the verdict cache's marks), and verdicts with repairs (another key) still cold."""
-    rc, _, err = _finish(_start(["verify", "--module", str(mod), "--no-repairs", "--quiet",
-                                 "--jobs", "1"], _env(cache, tmp_path / "warm.json"),
-                                tmp_path))
+    rc, _, err = _run(["verify", "--module", str(mod), "--no-repairs", "--quiet", "--jobs",
+                       "1"], _env(cache, tmp_path / "warm.json"), tmp_path)
     assert rc == 0, err
 
 
@@ -134,75 +160,72 @@ def _assert_one_line(rc: int, err: str, total: int) -> int:
     return int(m.group(2))
 
 
-def _interrupt_and_resume(tmp_path: Path, delay: float, sig=signal.SIGINT,
-                          reference: bool = True) -> None:
-    """Interrupt a cold ``verify`` ``delay`` s into its checks, run it again; with
-    ``reference``, beside an uninterrupted run whose results the second run's must equal."""
-    n = 6
-    mod = _module(tmp_path, "intr", n, 0.3)
-    args = ["verify", "--module", str(mod), "--jobs", "2", "--format", "json"]
-    work = tmp_path / "work.json"
-    _warm(mod, tmp_path / "c", tmp_path)
-    ref = _start(args + ["--no-cache"], _env(tmp_path / "ref", tmp_path / "ref.json"),
-                 tmp_path) if reference else None
-    try:
-        rc, _, err = _interrupt(_start(args, _env(tmp_path / "c", work), tmp_path), delay,
-                                sig)
-    finally:
-        ref_rc, ref_doc, _ = _finish(ref) if ref else (0, "", "")
-    assert ref_rc == 0
-    if rc == 0:  # the delay outlasted the run: nothing to resume
-        return
+def _verify_args(mod: Path, jobs: int) -> list[str]:
+    return ["verify", "--module", str(mod), "--jobs", str(jobs), "--format", "json"]
+
+
+def _interrupt_and_resume(tmp_path: Path, args: list[str], n: int, at: str, name: str,
+                          ) -> tuple[int, str]:
+    """Run ``args`` (a verify of ``n`` ids) into a fresh cache, interrupted at the
+    checkpoint ``at``; check its one line; run it again: it decides only what was not kept
+    and reads the rest. Returns ``(ids kept, the second run's document)``."""
+    cache, work = tmp_path / f"c-{name}", tmp_path / f"w-{name}.json"
+    rc, _, err = _run(args, _env(cache, work, at=at), tmp_path)
     kept = _assert_one_line(rc, err, n)
-    rc, doc, err = _finish(_start(args, _env(tmp_path / "c", work), tmp_path))
+    rc, doc, err = _run(args, _env(cache, work), tmp_path)
     assert rc == 0, err
     assert _decided(work) == n - kept  # the kept work is reused, the rest decided once
     assert sum(r["cached"] for r in json.loads(doc)["equations"]) == kept
     assert [r["verdict"] for r in _rows(doc)] == ["verified"] * n
-    if ref:
-        assert _rows(doc) == _rows(ref_doc)
+    return kept, doc
 
 
 def test_sigint_during_verify_keeps_the_decided_ids_and_the_next_run_reuses_them(tmp_path):
-    """One random moment, without the uninterrupted run beside it (the slow set's 20
-    moments compare with one)."""
-    _interrupt_and_resume(tmp_path, random.Random().uniform(0.4, 1.2), reference=False)
+    """Interrupted as the second of four ids is done: two ids kept, and the next run decides
+    only the other two (the slow set walks through every checkpoint, over one worker and
+    two)."""
+    n = 4
+    mod = _module(tmp_path, "intr", n)
+    kept, _ = _interrupt_and_resume(tmp_path, _verify_args(mod, 1), n, "advance:2", "mid")
+    assert kept == 2
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("moment", range(20))
-def test_sigint_or_sigterm_at_random_moments_of_verify(tmp_path, moment):
-    rng = random.Random(moment)
-    _interrupt_and_resume(tmp_path, rng.uniform(0.0, 1.5),
-                          signal.SIGTERM if moment % 4 == 3 else signal.SIGINT)
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_sigint_or_sigterm_at_each_checkpoint_of_verify(tmp_path, jobs):
+    """Every checkpoint of a cold ``verify`` (a cache entry written, an id decided, ...):
+    interrupted there, then run again, its results equal an uninterrupted run's."""
+    n = 3
+    mod = _module(tmp_path, "intr", n)
+    args = _verify_args(mod, jobs)
+    points, ref = _points(args, tmp_path / "ref", tmp_path / "ref.json", tmp_path)
+    assert points.count("decide") == (n if jobs == 1 else 0), points  # workers' uncounted
+    for k in range(1, len(points) + 1):
+        _, doc = _interrupt_and_resume(tmp_path, args, n, f"{k}@{_signal_at(k)}", str(k))
+        assert _rows(doc) == _rows(ref), (k, points[k - 1])
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("moment", range(20))
-def test_sigint_at_random_moments_of_report(tmp_path, moment):
-    """``report --module``: interrupted, then run again: the same files as an uninterrupted
-    run's, the kept ids not decided again."""
-    n = 6
-    mod = _module(tmp_path, "rep", n, 0.4)
-    work = tmp_path / "work.json"
+def test_sigint_at_each_checkpoint_of_report(tmp_path):
+    """``report --module``: interrupted at each checkpoint, then run again: the same files
+    as an uninterrupted run's, the kept ids not decided again."""
+    n = 3
+    mod = _module(tmp_path, "rep", n)
 
-    def report(out: str, cache: str, work: Path) -> subprocess.Popen:
-        return _start(["report", "--module", str(mod), "--out", str(tmp_path / out),
-                       "--jobs", "2"], _env(tmp_path / cache, work), tmp_path)
+    def args(out: str) -> list[str]:
+        return ["report", "--module", str(mod), "--out", str(tmp_path / out), "--jobs", "2"]
 
-    ref = report("ref", "refc", tmp_path / "ref.json")
-    try:
-        rc, _, err = _interrupt(report("out", "c", work), random.Random(moment).uniform(0, 2))
-    finally:
-        assert _finish(ref)[0] == 0
-    if rc == 0:
-        return
-    kept = _assert_one_line(rc, err, n)
-    rc, _, err = _finish(report("out", "c", work))
-    assert rc == 0, err
-    assert _decided(work) == n - kept
-    for name in ("rep.md", "rep.json"):
-        assert (tmp_path / "out" / name).read_bytes() == (tmp_path / "ref" / name).read_bytes()
+    points, _ = _points(args("ref"), tmp_path / "refc", tmp_path / "ref.json", tmp_path)
+    for k in range(1, len(points) + 1):
+        cache, work, out = tmp_path / f"c{k}", tmp_path / f"w{k}.json", f"out{k}"
+        rc, _, err = _run(args(out), _env(cache, work, at=f"{k}@{_signal_at(k)}"), tmp_path)
+        kept = _assert_one_line(rc, err, n)
+        rc, _, err = _run(args(out), _env(cache, work), tmp_path)
+        assert rc == 0, err
+        assert _decided(work) == n - kept, (k, points[k - 1])
+        for name in ("rep.md", "rep.json"):
+            assert (tmp_path / out / name).read_bytes() == \
+                (tmp_path / "ref" / name).read_bytes(), (k, points[k - 1], name)
 
 
 def test_two_verify_at_once_decide_each_id_once(tmp_path):
@@ -294,6 +317,70 @@ def test_the_line_counts_when_said_and_survives_an_unreadable_store():
     interrupts.reset()
 
 
+@pytest.fixture
+def handlers() -> Iterator[None]:
+    """This process's SIGINT and SIGTERM handlers restored after the test (which installs
+    the command's), Python's own SIGINT handler during it (as a terminal's caller has)."""
+    saved = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
+    with _terminal_caller():
+        yield
+    for sig, handler in saved.items():
+        signal.signal(sig, handler)
+    interrupts.reset()
+
+
+def test_a_checkpoint_sends_the_signal_at_the_point_named_and_nowhere_else(
+        handlers, monkeypatch, tmp_path):
+    """``NAME:N@SIGNAL``: the Nth passing of that checkpoint raises the interrupt, at once
+    (recorded as received); inside ``deferred`` at the block's end, after its work; the
+    trace lists every point passed; after ``quiet`` nothing counts. ``N``: the Nth
+    checkpoint of any name, where a forked worker passes its checkpoints uncounted (its
+    interrupt is the parent's to decide). Text that names no point is refused."""
+    trace = tmp_path / "trace"
+    monkeypatch.setenv(interrupts.AT, "write:2@SIGTERM")
+    monkeypatch.setenv(interrupts.TRACE, str(trace))
+    interrupts.install()
+    interrupts.reset()
+    interrupts.checkpoint("write")
+    interrupts.checkpoint("phase")
+    assert not interrupts.received()
+    done = []
+    with pytest.raises(KeyboardInterrupt):
+        with interrupts.deferred():
+            interrupts.checkpoint("write")
+            done.append("the entry's second half")
+    assert done and interrupts.received()
+    assert trace.read_text().split() == ["write", "phase", "write"]
+    interrupts.checkpoint("write")  # past the point: nothing more
+    interrupts.quiet()
+    interrupts.checkpoint("start")
+    assert trace.read_text().split() == ["write", "phase", "write", "write"]
+
+    monkeypatch.setenv(interrupts.AT, "3")
+    monkeypatch.delenv(interrupts.TRACE)
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # quiet ignored it
+    interrupts.install()
+    pid = os.fork()
+    if pid == 0:  # a worker: three checkpoints, no signal
+        code = 1
+        try:
+            for name in ("decide", "write", "advance"):
+                interrupts.checkpoint(name)
+            code = 0
+        finally:
+            os._exit(code)
+    assert os.waitpid(pid, 0)[1] == 0
+    interrupts.checkpoint("decide")
+    interrupts.checkpoint("write")
+    with pytest.raises(KeyboardInterrupt):
+        interrupts.checkpoint("advance")
+
+    for bad in ("0", "write:", "x", "write:2@SIGHUP", "-1"):
+        monkeypatch.setenv(interrupts.AT, bad)
+        with pytest.raises(ValueError, match=interrupts.AT):
+            interrupts.install()
+
+
 def test_the_lock_of_a_key_is_held_by_one_holder_at_a_time(tmp_path, monkeypatch):
     monkeypatch.setenv("RIGIDSYM_CACHE", str(tmp_path))
     key = "ab" + "0" * 62
@@ -344,34 +431,38 @@ variants = 2
 """
 
 
+#: how many of ``generate``'s checkpoints (a file written, a kernel built: about forty) the
+#: slow set interrupts, the first and the last among them
+GENERATE_SAMPLE = 8
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("command", ["exam", "generate"])
-@pytest.mark.parametrize("moment", range(20))
-def test_sigint_at_random_moments_of_exam_and_generate(tmp_path, command, moment):
-    """Interrupted at a random moment from its start, then run again: exit 130 and one
-    line, then the files of an uninterrupted run, byte for byte."""
+def test_sigint_or_sigterm_at_checkpoints_of_exam_and_generate(tmp_path, command):
+    """Interrupted at each checkpoint of ``exam`` (an exercise solved, a file written), at a
+    seeded sample of ``generate``'s, then run again: exit 130 and one line, then the files
+    of an uninterrupted run, byte for byte."""
     (tmp_path / "quiz.toml").write_text(SPEC, encoding="utf-8")
     example = ROOT / "examples" / "rotation_identities.py"
 
-    def run(out: str, cache: str) -> subprocess.Popen:
-        args = (["exam", str(tmp_path / "quiz.toml"), "--out", str(tmp_path / out)]
+    def args(out: str) -> list[str]:
+        return (["exam", str(tmp_path / "quiz.toml"), "--out", str(tmp_path / out)]
                 if command == "exam" else
                 ["generate", "--module", str(example), "--out", str(tmp_path / out),
                  "--no-build"])
-        return _start(args, _env(tmp_path / cache, tmp_path / f"{out}.json"), tmp_path)
 
-    ref = run("ref", "refc")
-    try:
-        rc, _, err = _interrupt(run("out", "c"), random.Random(moment).uniform(0.5, 20),
-                                after=None)
-    finally:
-        assert _finish(ref)[0] == 0
-    if rc != 0:
+    points, _ = _points(args("ref"), tmp_path / "refc", tmp_path / "ref.json", tmp_path)
+    every = range(1, len(points) + 1)
+    chosen = sorted({1, len(points), *random.Random(command).sample(
+        every, min(GENERATE_SAMPLE, len(points)))}) if command == "generate" else every
+    for k in chosen:
+        env = _env(tmp_path / f"c{k}", tmp_path / f"w{k}.json", at=f"{k}@{_signal_at(k)}")
+        rc, _, err = _run(args(f"out{k}"), env, tmp_path)
         _assert_one_line(rc, err, 0)
-        rc, _, err = _finish(run("out", "c"))
+        rc, _, err = _run(args(f"out{k}"), _env(tmp_path / f"c{k}", tmp_path / f"w{k}.json"),
+                          tmp_path)
         assert rc == 0, err
-    assert _files(tmp_path / "out") == _files(tmp_path / "ref")
-
+        assert _files(tmp_path / f"out{k}") == _files(tmp_path / "ref"), (k, points[k - 1])
 
 
 def test_an_error_caused_by_the_interrupt_is_reported_as_the_interrupt(monkeypatch, capsys):
@@ -384,8 +475,7 @@ def test_an_error_caused_by_the_interrupt_is_reported_as_the_interrupt(monkeypat
         def run(argv):
             if signalled:
                 try:
-                    os.kill(os.getpid(), signal.SIGINT)  # main's handler: KeyboardInterrupt
-                    time.sleep(1)
+                    signal.raise_signal(signal.SIGINT)  # main's handler, run at once
                 except KeyboardInterrupt:
                     pass  # as an import's C code does: the interrupt becomes its error
             raise ImportError('PyCapsule_Import could not import module "datetime"')
@@ -393,11 +483,8 @@ def test_an_error_caused_by_the_interrupt_is_reported_as_the_interrupt(monkeypat
 
     # a run started ignoring SIGINT (a background job, nohup) keeps ignoring it, by design
     # (interrupts.install); here the caller is a terminal's: Python's own handler
-    outer = signal.signal(signal.SIGINT, signal.default_int_handler)
-    try:
+    with _terminal_caller():
         _interrupt_or_error(monkeypatch, capsys, cli, failing)
-    finally:
-        signal.signal(signal.SIGINT, outer)
 
 
 def _interrupt_or_error(monkeypatch, capsys, cli, failing) -> None:
@@ -419,7 +506,7 @@ from rigidsym.core import interrupts
 interrupts.install()
 try:
     # a string that exec runs (as sympy's lambdify does) cut short by the interrupt
-    exec("import os, signal, time\\nos.kill(os.getpid(), signal.SIGINT)\\ntime.sleep(5)")
+    exec("import signal\\nsignal.raise_signal(signal.SIGINT)")
 except KeyboardInterrupt:
     interrupts.quiet()
     print("rigidsym: interrupted; run again to continue", file=sys.stderr)
@@ -433,14 +520,8 @@ def test_an_interrupt_inside_an_evaluated_string_still_exits_130_under_python_m(
     ``generate`` interrupted inside sympy's lambdify); :func:`interrupts.quiet` clears it."""
     (tmp_path / "cut_short.py").write_text(PROGRAM, encoding="utf-8")
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), *sys.path]))
-    # a child inherits an ignored SIGINT (pytest started as a background job, `cmd &`) and
-    # then keeps ignoring it, by design (interrupts.install): here a terminal's caller, whose
-    # handler exec resets to the default
-    outer = signal.signal(signal.SIGINT, signal.default_int_handler)
-    try:
+    with _terminal_caller():  # its handler, which exec resets to the default
         p = subprocess.run([sys.executable, "-m", "cut_short"], cwd=tmp_path, env=env,
                            capture_output=True, text=True, timeout=60)
-    finally:
-        signal.signal(signal.SIGINT, outer)
     assert p.returncode == interrupts.EXIT, (p.returncode, p.stderr)
     assert p.stderr.strip() == "rigidsym: interrupted; run again to continue", p.stderr

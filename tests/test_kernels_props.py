@@ -126,7 +126,8 @@ def _check_broadcast(name, data):
 @pytest.mark.sample
 @pytest.mark.parametrize("name", sorted(KERNELS))
 @settings(max_examples=examples(4), deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+          suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                 HealthCheck.too_slow])
 @given(data=st.data())
 def test_broadcast_equals_per_sample(name, data):
     _check_broadcast(name, data)
@@ -135,7 +136,8 @@ def test_broadcast_equals_per_sample(name, data):
 @pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(KERNELS))
 @settings(max_examples=150, deadline=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+          suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                 HealthCheck.too_slow])
 @given(data=st.data())
 def test_broadcast_equals_per_sample_many(name, data):
     _check_broadcast(name, data)

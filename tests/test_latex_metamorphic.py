@@ -342,7 +342,8 @@ def _holds(i: str, prop: str, data, monkeypatch) -> bool:
 
 @pytest.mark.parametrize("prop", sorted(PROPERTIES))
 @settings(max_examples=examples(4), deadline=None, derandomize=True, database=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+          suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                 HealthCheck.too_slow])
 @given(data=st.data())
 def test_the_verdict_is_unchanged_quick(prop, data, monkeypatch):
     i = data.draw(st.sampled_from(QUICK))

@@ -52,7 +52,8 @@ def identities():
 
 
 @settings(max_examples=examples(12), deadline=None, derandomize=True,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
+          suppress_health_check=[HealthCheck.function_scoped_fixture,
+                                 HealthCheck.too_slow])
 @given(data=st.data())
 def test_a_one_edit_mutant_is_repaired(identities, data):
     rels, model = data.draw(st.sampled_from(identities))

@@ -126,6 +126,7 @@ def main(argv: list[str] | None = None) -> int:
     interrupts.install()
     interrupts.reset()
     try:
+        interrupts.checkpoint("start")
         code = _main(argv)
         if argv is None:  # the program: done and written; an interrupt now changes nothing
             interrupts.quiet()

@@ -30,6 +30,10 @@ class Generation(Protocol):
 #: except the report folder, which belongs to ``rigidsym report``, and the notebooks, which
 #: ``rigidsym generate`` writes through :mod:`rigidsym.course.notebooks`).
 _FOREIGN = ("report/", "notebooks/")
+#: the file that marks a folder as a generation's (``rigidsym generate --out`` writes into a
+#: folder that is not empty only when it holds it): written first, so that a write cut short
+#: (an interrupt) leaves a folder that the next run takes up and completes
+_MARK = "kernels.json"
 
 
 def files_on_disk(out: Path) -> dict[str, Path]:
@@ -46,11 +50,12 @@ def files_on_disk(out: Path) -> dict[str, Path]:
 
 
 def write(result: Generation, out: Path | None = None) -> list[str]:
-    """Write changed files atomically, delete orphans; returns the paths touched."""
+    """Write changed files atomically (the folder's mark, ``kernels.json``, first), delete
+    orphans; returns the paths touched."""
     out = Path(out) if out is not None else generated_dir()
     touched = []
     disk = files_on_disk(out)
-    for rel, text in result.files.items():
+    for rel, text in sorted(result.files.items(), key=lambda item: item[0] != _MARK):
         p = out / rel
         if rel in disk and p.read_text(encoding="utf-8") == text:
             continue

@@ -1,5 +1,6 @@
-"""Files in and out without half states: atomic writes (nothing half-written on disk) and
-loading a module from a file (nothing half-registered in ``sys.modules``).
+"""Files in and out without half states: atomic writes (nothing half-written on disk; the
+moment before a file's rename is the ``write`` checkpoint of :mod:`rigidsym.core.interrupts`)
+and loading a module from a file (nothing half-registered in ``sys.modules``).
 """
 
 from __future__ import annotations
@@ -10,6 +11,8 @@ import sys
 import tempfile
 import types
 from pathlib import Path
+
+from rigidsym.core.interrupts import checkpoint
 
 __all__ = ["write_atomic", "write_atomic_bytes", "load_module", "NotAModule"]
 
@@ -58,6 +61,7 @@ def write_atomic_bytes(path: str | os.PathLike, data: bytes) -> Path:
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)
+        checkpoint("write")  # an interrupt here leaves the old file and no temporary one
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

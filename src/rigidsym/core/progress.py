@@ -9,7 +9,9 @@ reads as the list of phases with their durations.
 
 The estimate is the caller's (:meth:`Phase.estimate`): the parallel checker predicts each
 id's time from its previous runs (:func:`load_durations`), which moves far less than a
-rate measured over the last few ids. Imports nothing of rigidsym but :mod:`rigidsym.core.cache`.
+rate measured over the last few ids. A phase's start and each item done are checkpoints of
+:mod:`rigidsym.core.interrupts`. Imports nothing of rigidsym but :mod:`rigidsym.core.cache`
+and :mod:`rigidsym.core.interrupts`.
 """
 
 from __future__ import annotations
@@ -19,6 +21,8 @@ import os
 import sys
 import time
 from contextlib import contextmanager
+
+from rigidsym.core.interrupts import checkpoint
 
 __all__ = ["Reporter", "Phase", "load_durations", "save_durations", "format_seconds"]
 
@@ -61,6 +65,7 @@ class Phase:
         if self._task is not None:
             kw = {"description": label} if label else {}
             self.reporter.bar.update(self._task, advance=n, **kw)
+        checkpoint("advance")
 
     def estimate(self, seconds_left: float | None) -> None:
         """The caller's estimate of the time left (``None``: unknown), smoothed: the shown
@@ -153,6 +158,7 @@ class Reporter:
             print(f"{self.command}: {what} ...", file=self._stream(), flush=True)
         failed, stopped = True, False
         try:
+            checkpoint("phase")
             yield ph
             failed = False
         except KeyboardInterrupt:  # the command's one line says it (issue 69): no ✓

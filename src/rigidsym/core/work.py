@@ -4,12 +4,16 @@ checked, exercises solved (issue 39).
 A cache hit counts nothing; only the work behind a miss does, so a test can say "a warm
 ``verify --json`` builds no declaration" without timing anything. Worker processes count in
 their own copy; the runner (:mod:`rigidsym.checking.runner`) adds each worker's counts to
-the parent's, so :data:`COUNTS` is the whole command's work. Imports nothing of rigidsym.
+the parent's, so :data:`COUNTS` is the whole command's work. Each count is a checkpoint
+of :mod:`rigidsym.core.interrupts`, named by its kind: the point where a unit of work
+begins. Imports nothing of rigidsym but :mod:`rigidsym.core.interrupts`.
 """
 
 from __future__ import annotations
 
 from collections import Counter
+
+from rigidsym.core.interrupts import checkpoint
 
 __all__ = ["COUNTS", "KINDS", "ENV", "count", "snapshot", "since", "merge", "dump"]
 
@@ -26,8 +30,10 @@ COUNTS: Counter = Counter()
 
 
 def count(kind: str, what: str) -> None:
-    """Count one piece of work of ``kind`` (one of :data:`KINDS`) on ``what`` (an id)."""
+    """Count one piece of work of ``kind`` (one of :data:`KINDS`) on ``what`` (an id), as it
+    begins (the checkpoint ``kind``)."""
     COUNTS[(kind, what)] += 1
+    checkpoint(kind)
 
 
 def snapshot() -> Counter:
