@@ -130,7 +130,14 @@ class Equation:
     repair_budget: int | None = None
 
     def build(self) -> Statement:
-        """The statement, built once per run (derivations can be expensive)."""
+        """The statement, built once per process (derivations can be expensive); a book
+        declaration's is read from the user cache when a process stored it before
+        (:mod:`rigidsym.registry.statement_cache`).
+
+        Raises:
+            DeclarationTypeError: the declaration returned something other than a
+                :class:`Statement` of :class:`Rel`.
+        """
         return _build(self.id)
 
 
