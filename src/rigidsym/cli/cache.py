@@ -1,8 +1,9 @@
 """``rigidsym cache info | clear``: where the user cache is, what it holds, and emptying it.
 
 The cache (:mod:`rigidsym.core.cache`) holds compiled kernels (``kernels/``), checked results
-(``verdicts/``, :mod:`rigidsym.checking.verdict_cache`) and the LaTeX grammar's analysis
-(``latex/``). Clearing never changes a verdict:
+(``verdicts/``, :mod:`rigidsym.checking.verdict_cache`), the LaTeX grammar's analysis
+(``latex/``) and the book's built statements (``statements/``,
+:mod:`rigidsym.registry.statement_cache`). Clearing never changes a verdict:
 what is gone is computed again on the next run. ``info`` lists the C driver's object cache
 too (:mod:`rigidsym.kernels.cbuild.objects`: ``objects/``, or ``RIGIDSYM_OBJECT_CACHE``),
 which ``pip install`` fills and reads; ``rm -r`` of its folder empties it.
@@ -21,7 +22,8 @@ def add_arguments(c) -> None:
     """Arguments of ``rigidsym cache``."""
     sub = c.add_subparsers(dest="action", required=True)
     sub.add_parser("info", help="where the cache is, how big, how many entries")
-    clear = sub.add_parser("clear", help="remove cached verdicts and compiled kernels")
+    clear = sub.add_parser("clear", help="remove cached verdicts, compiled kernels and "
+                                         "built statements")
     which = clear.add_mutually_exclusive_group()
     which.add_argument("--verdicts", action="store_true", help="only the checked results")
     which.add_argument("--kernels", action="store_true", help="only the compiled kernels")
@@ -53,7 +55,7 @@ def _objects_line() -> str:
 def run(args) -> int:
     """``rigidsym cache info`` prints the cache folder (``RIGIDSYM_CACHE``, else the user
     cache folder) and per kind its path, entries and size; ``rigidsym cache clear`` removes
-    the verdicts and the kernels (``--verdicts`` or ``--kernels``: only those)."""
+    every kind (``--verdicts`` or ``--kernels``: only those)."""
     if args.action == "info":
         info = _cache.info()
         print(f"cache: {info['root']} (set RIGIDSYM_CACHE to move it)")

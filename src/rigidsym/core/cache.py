@@ -5,15 +5,18 @@ Layout (``RIGIDSYM_CACHE``, else ``$XDG_CACHE_HOME/rigidsym``, else ``~/.cache/r
     <root>/kernels/    compiled C kernels (rigidsym.kernels.cbuild.driver)
     <root>/verdicts/   checked results (the verdict cache)
     <root>/latex/      the LaTeX grammar's LALR analysis (lark's own cache=, issue 40)
+    <root>/statements/ the book declarations' built statements
+                       (rigidsym.registry.statement_cache)
 
-Both writers take :func:`lock` (a cross-process file lock from the well-kept ``filelock``
-package, not a lock of our own: parallel first-use writers into one cache otherwise race)
-and write through :func:`put` (a temporary file and a rename, so a reader never sees half
-an entry). :func:`get` returns ``None`` for a missing entry and for one whose SHA-256 does
-not match what :func:`put` recorded (truncated, overwritten, foreign), so a corrupt entry is
-recomputed, never trusted. An interrupt (SIGINT, SIGTERM) waits while :func:`put` writes
-(:func:`rigidsym.core.interrupts.deferred`): an entry is whole or absent (issue 69). Imports
-nothing else of rigidsym but :mod:`rigidsym.core.files` and :mod:`rigidsym.core.interrupts`.
+The writers of kernels, verdicts and statements take :func:`lock` (a cross-process file
+lock from the well-kept ``filelock`` package, not a lock of our own: parallel first-use
+writers into one cache otherwise race) and write through :func:`put` (a temporary file and
+a rename, so a reader never sees half an entry). :func:`get` returns ``None`` for a missing
+entry and for one whose SHA-256 does not match what :func:`put` recorded (truncated,
+overwritten, foreign), so a corrupt entry is recomputed, never trusted. An interrupt
+(SIGINT, SIGTERM) waits while :func:`put` writes (:func:`rigidsym.core.interrupts.deferred`):
+an entry is whole or absent (issue 69). Imports nothing else of rigidsym but
+:mod:`rigidsym.core.files` and :mod:`rigidsym.core.interrupts`.
 """
 
 from __future__ import annotations
@@ -31,7 +34,7 @@ from rigidsym.core.interrupts import deferred
 __all__ = ["root", "folder", "lock", "put", "get", "digest", "info", "clear", "KINDS"]
 
 #: the cache's sub-folders
-KINDS = ("kernels", "verdicts", "latex")
+KINDS = ("kernels", "verdicts", "latex", "statements")
 #: seconds a writer waits for another process's lock before giving up with an error
 LOCK_TIMEOUT = 600.0
 
@@ -46,7 +49,7 @@ def root() -> Path:
 
 
 def folder(kind: str) -> Path:
-    """The sub-folder of ``kind`` (``"kernels"`` or ``"verdicts"``), not created.
+    """The sub-folder of ``kind`` (one of :data:`KINDS`), not created.
 
     Raises:
         ValueError: ``kind`` is not one of :data:`KINDS`.

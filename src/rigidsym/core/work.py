@@ -18,9 +18,11 @@ from rigidsym.core.interrupts import checkpoint
 __all__ = ["COUNTS", "KINDS", "ENV", "count", "snapshot", "since", "merge", "dump"]
 
 #: what is counted: ``build`` (a declaration's function run: a miss of the registry's
-#: built statements), ``decide`` (one id decided by the checker), ``transcribe`` (one
-#: printed form checked against its LaTeX), ``solve`` (one exercise solved)
-KINDS = ("build", "decide", "transcribe", "solve")
+#: built statements), ``load`` (a built statement read from the user cache instead,
+#: :mod:`rigidsym.registry.statement_cache`: not a build), ``decide`` (one id decided by
+#: the checker), ``transcribe`` (one printed form checked against its LaTeX), ``solve``
+#: (one exercise solved)
+KINDS = ("build", "load", "decide", "transcribe", "solve")
 #: the environment variable naming a file the command writes its counts to, at its end
 #: (``{"build": {id: n}, ...}``: how the tests and ``benchmarks/verify.py`` count the work
 #: of a real, fresh command)

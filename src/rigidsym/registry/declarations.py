@@ -39,6 +39,7 @@ __all__ = [
     "is_user_id",
     "book_ids",
     "forget_module",
+    "forget_built",
     "DeclarationTypeError",
     "USER_CAUSE_DEFAULT",
     "check_budget",
@@ -129,23 +130,95 @@ class Equation:
     repair_budget: int | None = None
 
     def build(self) -> Statement:
-        """The statement, built once per run (derivations can be expensive)."""
+        """The statement, built once per process (derivations can be expensive); a book
+        declaration's is read from the user cache when a process stored it before
+        (:mod:`rigidsym.registry.statement_cache`).
+
+        Raises:
+            DeclarationTypeError: the declaration returned something other than a
+                :class:`Statement` of :class:`Rel`.
+        """
         return _build(self.id)
 
 
 REGISTRY: dict[str, Equation] = {}
 #: Built statements, by id (cleared for an id when its declaration is replaced).
 _BUILT: dict[str, Statement] = {}
+#: The function each statement of :data:`_BUILT` came from (a test or a notebook may have
+#: replaced a declaration's function since: such a statement is never stored on disk).
+_BUILT_BY: dict[str, Callable] = {}
+#: Per book module, what this process read of its entry in the user cache
+#: (:mod:`rigidsym.registry.statement_cache`): ``{id: statement}`` not yet taken, or ``None``
+#: for a miss (the module's statements are stored once this process has built them all).
+_STORED: dict[str, dict[str, Statement] | None] = {}
 
 
 class DeclarationTypeError(TypeError):
     """A declaration returned something other than a :class:`Statement` of :class:`Rel`."""
 
 
+def _as_written(eq: Equation) -> bool:
+    """Whether ``eq`` is a book declaration whose function is the one its module defines
+    (not replaced in memory by a test or a notebook): its statement may be kept on disk."""
+    if not _in_book(eq.module) or "<locals>" in eq.function:
+        return False
+    obj = sys.modules.get(eq.module)
+    for part in eq.function.split("."):
+        obj = getattr(obj, part, None)
+    return obj is eq.build_fn
+
+
+def _module_ids(module: str) -> list[str]:
+    return [k for k, e in REGISTRY.items() if e.module == module]
+
+
+def _from_disk(eq: Equation) -> Statement | None:
+    """The statement of ``eq`` read from the user cache, or ``None`` (a user declaration, a
+    replaced one, a miss). The module's entry is read once per process."""
+    if not _as_written(eq):
+        return None
+    if eq.module not in _STORED:
+        from rigidsym.registry import statement_cache
+
+        key = statement_cache.key_of(eq.module)
+        got = statement_cache.load(eq.module, key) if key else None
+        ids = _module_ids(eq.module)
+        if got is not None and (set(got) != set(ids) or not all(
+                isinstance(st, Statement) for st in got.values())):
+            got = None  # not this module's declarations as they are now: built again
+        _STORED[eq.module] = got
+    got = _STORED[eq.module]
+    return None if got is None else got.pop(eq.id, None)
+
+
+def _to_disk(eq: Equation) -> None:
+    """Store the statements of ``eq``'s module once this process holds every one of them,
+    each built from the function its module defines (best effort: see
+    :func:`rigidsym.registry.statement_cache.store`)."""
+    if _STORED.get(eq.module, {}) is not None:
+        return  # read from the cache (or not looked up): nothing to write
+    ids = _module_ids(eq.module)
+    if not all(i in _BUILT and _BUILT_BY.get(i) is REGISTRY[i].build_fn
+               and _as_written(REGISTRY[i]) for i in ids):
+        return
+    from rigidsym.registry import statement_cache
+
+    key = statement_cache.key_of(eq.module)
+    if key is not None:
+        statement_cache.store(eq.module, key, {i: _BUILT[i] for i in ids})
+    _STORED[eq.module] = {}  # written (or not writable): once per process
+
+
 def _build(eq_id: str) -> Statement:
     hit = _BUILT.get(eq_id)
     if hit is not None:
         return hit
+    eq = REGISTRY[eq_id]
+    st = _from_disk(eq)
+    if st is not None:
+        _work.count("load", eq_id)  # read, not built: a test counting builds sees none
+        _BUILT[eq_id], _BUILT_BY[eq_id] = st, eq.build_fn
+        return st
     from sympy.matrices.utilities import dotprodsimp
 
     _work.count("build", eq_id)  # a real build (issue 39: counted, so a test sees a rebuild)
@@ -153,8 +226,7 @@ def _build(eq_id: str) -> Statement:
     # entry of a Matrix power, for instance): a model is decided exactly, not read, and
     # this took a third of the time of building the chapter's declarations
     with dotprodsimp(False):
-        st = REGISTRY[eq_id].build_fn()
-    eq = REGISTRY[eq_id]
+        st = eq.build_fn()
     if isinstance(st, dict) and eq.latex:  # the model alone: the printed form is the LaTeX
         st = Statement([], st)
     if not isinstance(st, Statement):
@@ -167,11 +239,22 @@ def _build(eq_id: str) -> Statement:
     if bad:
         raise DeclarationTypeError(f"declaration {eq_id}: printed/corrected/claims hold "
                                    f"{bad[0]}, not Rel")
-    _BUILT[eq_id] = st
+    _BUILT[eq_id], _BUILT_BY[eq_id] = st, eq.build_fn
+    if _as_written(eq):
+        _to_disk(eq)
     return st
 
 
-_build.cache_clear = _BUILT.clear  # the functools.cache spelling, kept for callers
+def forget_built() -> None:
+    """Forget every built statement of this process and what it read of the user cache: the
+    next :meth:`Equation.build` of an id reads the cache again (a book declaration as
+    written) or runs its declaration."""
+    _BUILT.clear()
+    _BUILT_BY.clear()
+    _STORED.clear()
+
+
+_build.cache_clear = forget_built  # the functools.cache spelling, kept for callers
 
 
 def _where(fn) -> str:
@@ -267,6 +350,7 @@ def equation(eq_id: str, title: str, *, section: str | None = None,
         # the same function declared again (a notebook cell run twice): the new one replaces it
         REGISTRY[eq_id] = new
         _BUILT.pop(eq_id, None)
+        _BUILT_BY.pop(eq_id, None)
         return fn
 
     return deco
@@ -288,6 +372,7 @@ def forget_module(module: str) -> list[str]:
     for k in gone:
         del REGISTRY[k]
         _BUILT.pop(k, None)
+        _BUILT_BY.pop(k, None)
     return gone
 
 
