@@ -4,8 +4,13 @@ the kernels' input checks and rescue; grading by meaning; the LaTeX reader's ``-
 their scope; certcheck's comparison), each mutant judged by a fixed selection of the test
 files that exercise its group (:data:`GROUPS`).
 
+    pip install -e ".[test,mutation]"
     nice -n 15 python benchmarks/mutation_sample.py [--limit N] [--resume] [--all-marks]
         [--tests-from DIR] [--seed 2026] [--per-group 50] [--out FILE]
+    nice -n 15 python benchmarks/mutation_sample.py --tests-from ../repriced --out AFTER.json
+
+``--list`` prints the draw (each mutant's changed lines) and ``--baselines`` times each
+group's unmutated selection; neither judges a mutant.
 
 The mutants are cosmic-ray's (its core operators, those that take no arguments: arithmetic,
 comparison, boolean and unary operators swapped, numbers moved by one, ``break`` and
@@ -321,7 +326,8 @@ def run_tests(tree: Path, tests: tuple[str, ...], marks: list[str],
     if proc.returncode == 0:
         return "passed", seconds, ""
     failed = re.search(r"^(?:FAILED|ERROR) (\S+)", out, re.M)
-    return "failed", seconds, failed.group(1) if failed else out.strip().splitlines()[-1][-200:]
+    last = (out.strip().splitlines() or [f"exit status {proc.returncode}"])[-1]
+    return "failed", seconds, failed.group(1) if failed else last[-200:]
 
 
 def _kill_child() -> None:
