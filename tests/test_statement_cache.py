@@ -5,7 +5,8 @@ cache is no error; processes filling one cache at once leave it whole.
 
 Each process here is fresh (as a command or a test worker starts) and counts its work
 (:mod:`rigidsym.core.work`): ``build`` for a declaration run, ``load`` for a statement read
-from the cache. Marked slow: the default run is at the size docs/testing.md records.
+from the cache. The comparison of every statement and the four processes at once are
+``slow``; the rest runs in the quick profile.
 """
 
 from __future__ import annotations
@@ -21,8 +22,6 @@ import pytest
 from rigidsym.core import cache, sources, work
 from rigidsym.registry import declarations, statement_cache
 from rigidsym.registry.declarations import REGISTRY, book_ids
-
-pytestmark = pytest.mark.slow
 
 #: small modules of the book (7 and 16 declarations, a tenth of a second to build each)
 SMALL = "rigidsym.derivations.sec3_3"
@@ -88,6 +87,9 @@ def entry(module: str) -> Path:
     return statement_cache.path_of(statement_cache.key_of(module))
 
 
+# every statement built twice in fresh processes; quick:
+# test_a_damaged_entry_is_built_again_and_replaced
+@pytest.mark.slow
 def test_every_statement_read_back_equals_the_one_its_declaration_builds(tmp_path):
     every = set(book_ids())
     first = fresh(tmp_path)  # the first process builds each and stores them, per module
@@ -172,6 +174,7 @@ def test_a_cache_that_cannot_be_written_is_no_error(tmp_path):
         assert got["build"] == dict.fromkeys(small, 1) and got["load"] == {}
 
 
+@pytest.mark.slow  # four processes; quick: test_a_cache_that_cannot_be_written_is_no_error
 def test_four_processes_filling_one_cache_at_once_leave_it_whole(tmp_path):
     modules = [SMALL, OTHER]
     env = dict(os.environ, RIGIDSYM_CACHE=str(tmp_path))
