@@ -5,6 +5,7 @@ Layout (``RIGIDSYM_CACHE``, else ``$XDG_CACHE_HOME/rigidsym``, else ``~/.cache/r
     <root>/kernels/    compiled C kernels (rigidsym.kernels.cbuild.driver)
     <root>/verdicts/   checked results (the verdict cache)
     <root>/latex/      the LaTeX grammar's LALR analysis (lark's own cache=, issue 40)
+    <root>/codegen/    derived kernels, by the digest of their inputs (rigidsym.codegen.inputs)
 
 Both writers take :func:`lock` (a cross-process file lock from the well-kept ``filelock``
 package, not a lock of our own: parallel first-use writers into one cache otherwise race)
@@ -31,7 +32,7 @@ from rigidsym.core.interrupts import deferred
 __all__ = ["root", "folder", "lock", "put", "get", "digest", "info", "clear", "KINDS"]
 
 #: the cache's sub-folders
-KINDS = ("kernels", "verdicts", "latex")
+KINDS = ("kernels", "verdicts", "latex", "codegen")
 #: seconds a writer waits for another process's lock before giving up with an error
 LOCK_TIMEOUT = 600.0
 
@@ -46,7 +47,7 @@ def root() -> Path:
 
 
 def folder(kind: str) -> Path:
-    """The sub-folder of ``kind`` (``"kernels"`` or ``"verdicts"``), not created.
+    """The sub-folder of ``kind`` (one of :data:`KINDS`), not created.
 
     Raises:
         ValueError: ``kind`` is not one of :data:`KINDS`.
