@@ -34,11 +34,12 @@ def _generate_args(p) -> None:
     p.add_argument("--no-measure", action="store_true",
                    help="with --target c or cpp and --module: do not measure the module's "
                         "float bounds (a few seconds per kernel; its headers then say \"not "
-                        "measured\"); default: measure them (needs a C compiler); with the "
-                        "package target: do not build and measure the accuracy of the "
-                        "kernels that have no measurement or whose code changed (default: "
-                        "measure them into derivations/kernels_accuracy.json, seconds a "
-                        "kernel)")
+                        "measured\"); default: measure them (needs a C compiler)")
+    p.add_argument("--no-accuracy", action="store_true",
+                   help="with the package target: do not build and measure the accuracy of "
+                        "the kernels that have no measurement or whose code changed "
+                        "(default: measure them into derivations/kernels_accuracy.json, "
+                        "seconds a kernel)")
     p.add_argument("--namespace", default=None, metavar="NAME",
                    help="with --target cpp: the C++ namespace of the layer (default: "
                         "rigidsym)")
@@ -77,7 +78,8 @@ def cmd_generate(args) -> int:
     for opt, given in (("--single-header", getattr(args, "single_header", False)),
                        ("--namespace", getattr(args, "namespace", None)),
                        ("--prefix", getattr(args, "prefix", None)),
-                       ("--notice", getattr(args, "notice", None))):
+                       ("--notice", getattr(args, "notice", None)),
+                       ("--no-measure", getattr(args, "no_measure", False))):
         if given is not None and given is not False:    # --notice "" is given
             print(f"error: {opt}: only with --target c or cpp", file=sys.stderr)
             return 2
@@ -116,7 +118,7 @@ def cmd_generate(args) -> int:
               f"{len(books)} notebook files ({time.perf_counter() - t0:.1f} s)")
         return 0
     touched = write(res, out)
-    if not getattr(args, "no_measure", False):
+    if not getattr(args, "no_accuracy", False):
         names = _unmeasured(res, touched, set(since(before, "derive")))
         if names and _measure(names, out):
             res = render(res.kernels, res.kernel_files)
