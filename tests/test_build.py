@@ -477,3 +477,28 @@ def test_an_editable_install_compiles_the_paths_its_cpu_runs(flags, want, monkey
     # no flags line (not Linux's cpuinfo): unchanged
     monkeypatch.delenv("RIGIDSYM_PATHS")
     assert _paths.host_paths(_paths.X86_PATHS, cpuinfo="model name: x\n") == _paths.X86_PATHS
+
+
+@pytest.mark.slow
+@needs_cc
+def test_a_header_compiles_again_only_the_objects_that_include_it(user_dir, tmp_path):
+    """A header no source includes (a kernel added beside) compiles only the module's C (it
+    embeds the sources' hash); a kernel's header edited, that kernel's objects, the table's
+    (it includes every kernel's header) and the module's."""
+    import shutil
+
+    objects = tmp_path / "objects"
+    _build_with_objects(user_dir, tmp_path, objects)
+    copy = tmp_path / "added"
+    shutil.copytree(user_dir, copy)
+    (copy / "c" / "another_kernel.h").write_text("/* a header no source includes */\n")
+    stats, _ = _build_with_objects(copy, tmp_path, objects)
+    assert stats["compiled"] == 1, stats
+    srcs = _build.kernel_sources(copy / "c")
+    kernel = next(s for s in srcs if (copy / "c" / f"{s.stem}.h").is_file())
+    header = copy / "c" / f"{kernel.stem}.h"
+    header.write_text(header.read_text() + "\n/* an edit */\n")
+    stats, _ = _build_with_objects(copy, tmp_path, objects)
+    plan, _ = _build._paths.partial_plan(_build.configure().paths, srcs, "rigidsym_table.c")
+    readers = {kernel.name, "rigidsym_table.c"}
+    assert stats["compiled"] == sum(s.name in readers for v in plan.values() for s in v) + 1

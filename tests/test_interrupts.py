@@ -54,7 +54,8 @@ def e{k}() -> Statement:
     time.sleep({sleep})
     return Statement([Rel(sp.cos({k} * phi) ** 2 + sp.sin({k} * phi) ** 2, 1)], {{}})
 '''
-LINE = re.compile(r"rigidsym: interrupted(: (\d+) of (\d+) ids kept)?; run again to continue"
+LINE = re.compile(r"rigidsym: interrupted(: (\d+) of (\d+) (?:ids|kernels) kept)?; run again to "
+                  r"continue"
                   r"|rigidsym: interrupted while starting; nothing was done")
 
 

@@ -35,6 +35,11 @@ def _generate_args(p) -> None:
                    help="with --target c or cpp and --module: do not measure the module's "
                         "float bounds (a few seconds per kernel; its headers then say \"not "
                         "measured\"); default: measure them (needs a C compiler)")
+    p.add_argument("--no-accuracy", action="store_true",
+                   help="with the package target: do not build and measure the accuracy of "
+                        "the kernels that have no measurement or whose code changed "
+                        "(default: measure them into derivations/kernels_accuracy.json, "
+                        "seconds a kernel)")
     p.add_argument("--namespace", default=None, metavar="NAME",
                    help="with --target cpp: the C++ namespace of the layer (default: "
                         "rigidsym)")
@@ -46,7 +51,14 @@ def _generate_args(p) -> None:
                         "rigidsym_c, namespace rigidsym)")
     p.add_argument("--kernel", action="append", metavar="NAME",
                    help="with --target c: a book kernel to include (repeatable; default: "
-                        "every book kernel when no --module is given, none otherwise)")
+                        "every book kernel when no --module is given, none otherwise); with "
+                        "the package target: derive this kernel (and its _with_jacobians) "
+                        "even when stored, every other one from the store (repeatable)")
+    p.add_argument("--no-store", action="store_true",
+                   help="with the package target or --module: derive every kernel, "
+                        "neither reading nor writing the store of derived kernels (default: "
+                        "derive only the kernels whose inputs changed, keep each one as it "
+                        "finishes)")
     p.add_argument("--single-header", action="store_true",
                    help="with --target c: also write rigidsym_c_single.h, every kernel in "
                         "one self-contained header (default: off)")
@@ -54,7 +66,8 @@ def _generate_args(p) -> None:
 
 def cmd_generate(args) -> int:
     """Generate the NumPy and C kernels into generated/ (--check: compare only)."""
-    from rigidsym.codegen.generator import check, default_out_dir, generate, write
+    from rigidsym.codegen.generator import check, default_out_dir, generate, render, write
+    from rigidsym.core.work import since, snapshot
 
     if getattr(args, "target", "package") in ("c", "cpp"):
         if args.target == "c" and getattr(args, "namespace", None):
@@ -62,8 +75,7 @@ def cmd_generate(args) -> int:
             return 2
         from rigidsym.codegen.usergen import cmd_generate_c
         return cmd_generate_c(args)
-    for opt, given in (("--kernel", getattr(args, "kernel", None)),
-                       ("--single-header", getattr(args, "single_header", False)),
+    for opt, given in (("--single-header", getattr(args, "single_header", False)),
                        ("--namespace", getattr(args, "namespace", None)),
                        ("--prefix", getattr(args, "prefix", None)),
                        ("--notice", getattr(args, "notice", None)),
@@ -72,6 +84,9 @@ def cmd_generate(args) -> int:
             print(f"error: {opt}: only with --target c or cpp", file=sys.stderr)
             return 2
     if args.module:
+        if getattr(args, "kernel", None):
+            print("error: --kernel: with --target c, or without --module", file=sys.stderr)
+            return 2
         from rigidsym.codegen.usergen import cmd_generate_user
         return cmd_generate_user(args)
     t0 = time.perf_counter()
@@ -84,8 +99,12 @@ def cmd_generate(args) -> int:
     from rigidsym.core.progress import Reporter
     with Reporter("rigidsym generate") as rep, \
             rep.phase("deriving, optimising and printing the kernels") as ph:
-        res = generate()
-        ph.finish(f"{len(res.kernels)} kernels, {len(res.files)} files")
+        before = snapshot()
+        res = generate(stored=not getattr(args, "no_store", False),
+                       only=getattr(args, "kernel", None))
+        derived = len(since(before, "derive"))
+        ph.finish(f"{len(res.kernels)} kernels ({derived} derived, "
+                  f"{len(res.kernels) - derived} stored), {len(res.files)} files")
     books = _notebooks()
     if args.check:
         diff = check(res, out)
@@ -99,6 +118,11 @@ def cmd_generate(args) -> int:
               f"{len(books)} notebook files ({time.perf_counter() - t0:.1f} s)")
         return 0
     touched = write(res, out)
+    if not getattr(args, "no_accuracy", False):
+        names = _unmeasured(res, touched, set(since(before, "derive")))
+        if names and _measure(names, out):
+            res = render(res.kernels, res.kernel_files)
+            touched += [t for t in write(res, out) if t not in touched]
     if books:
         from rigidsym.course import NOTEBOOK_DIR, write_files
         touched += [f"{NOTEBOOK_DIR}/{n}" for n in write_files(books, out / NOTEBOOK_DIR)]
@@ -107,6 +131,50 @@ def cmd_generate(args) -> int:
     print(f"{len(res.kernels)} kernels, {len(res.files)} files, {len(touched)} changed "
           f"({time.perf_counter() - t0:.1f} s)")
     return 0
+
+
+def _unmeasured(res, touched: list[str], derived: set[str]) -> list[str]:
+    """The kernels of the generation ``res`` whose accuracy is to be measured: those with
+    no measurement in ``kernels.json``, and those derived now (``derived``) whose NumPy
+    code changed on disk (``touched``)."""
+    import json
+
+    metas = json.loads(res.files["kernels.json"])["kernels"]
+    return sorted(m["name"] for m in metas if m.get("accuracy") is None or (
+        m["name"] in derived and f"numpy/{m['name']}.py" in touched))
+
+
+def _measure(names: list[str], out: Path) -> bool:
+    """Build the package's C of ``out`` (only the objects whose sources changed compile)
+    and measure the accuracy of ``names`` into ``derivations/kernels_accuracy.json``
+    (``benchmarks/accuracy.py --kernels``, the harness of every recorded row); True when
+    the data file was written. Outside a checkout (no ``benchmarks/``) a note says how."""
+    import subprocess
+
+    from rigidsym.codegen.generator import ACCURACY_DATA
+    from rigidsym.kernels.cbuild import driver as _build
+    from rigidsym.kernels.cbuild import extension as _ext
+
+    root = out.resolve().parent
+    script, data = root / "benchmarks" / "accuracy.py", root / "derivations" / ACCURACY_DATA
+    if not script.is_file() or not data.parent.is_dir():
+        print(f"note: the accuracy of {', '.join(names)} is not measured: no "
+              f"benchmarks/accuracy.py beside {out}", file=sys.stderr)
+        return False
+    try:
+        _ext.ensure(out.resolve(), why="rigidsym generate (to measure new kernels)")
+    except _build.CompilerNotFound as exc:
+        print(f"note: not compiled ({exc}): measuring on NumPy only", file=sys.stderr)
+    except _build.BuildError as exc:
+        print(f"error: compiling {out} failed: {exc}", file=sys.stderr)
+        return False
+    print(f"measuring the accuracy of {len(names)} kernels: {', '.join(names)}", flush=True)
+    rc = subprocess.run([sys.executable, str(script), "--kernels", ",".join(names),
+                         "--data", str(data)], cwd=root).returncode
+    if rc != 0:
+        print(f"note: a row of {', '.join(names)} is past the accuracy rule (exit {rc}; "
+              f"docs/accuracy.md); recorded as measured", file=sys.stderr)
+    return True
 
 
 def _notebooks() -> dict[str, str]:

@@ -7,7 +7,10 @@ them (:mod:`.optimise`): :func:`compile_kernel`; then every registered package t
 compiled kernels into its templates, and the generator merges their files with
 ``kernels.json``. :func:`generate` returns ``{relative path: text}``; :func:`write` writes
 it atomically and removes orphans; :func:`check` compares it with the disk and returns a
-unified diff (both in :mod:`rigidsym.codegen.files`, re-exported here).
+unified diff (both in :mod:`rigidsym.codegen.files`, re-exported here). With ``stored``, a
+kernel whose inputs are unchanged comes from the store of derived kernels
+(:mod:`rigidsym.codegen.inputs`) and each one derived is stored as it finishes; every kernel
+derived counts one ``derive`` (:mod:`rigidsym.core.work`).
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ import os
 import pickle
 import textwrap
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 
 import sympy as sp
@@ -37,8 +41,11 @@ from rigidsym.codegen.spec import flatten_outputs as _flatten
 from rigidsym.core import kinds as _kinds
 from rigidsym.core.config import KERNEL_SPEC as BOOK_ORIGIN
 from rigidsym.core.config import generated_dir
+from rigidsym.core.errors import BadInput
+from rigidsym.core.work import count
 
-__all__ = ["generate", "write", "check", "GenerationResult", "default_out_dir", "TEMPLATES"]
+__all__ = ["generate", "render", "write", "check", "GenerationResult", "default_out_dir",
+           "TEMPLATES"]
 
 #: the template folders of the built-in package targets (file names unique across them)
 TEMPLATES = tuple(dict.fromkeys(t.template_dir for t in targets(package=True)))
@@ -112,8 +119,13 @@ class PackedKernelCode(KernelCode):
 
 @dataclass
 class GenerationResult:
+    """A generation: ``files`` (relative path -> text), the compiled ``kernels`` (sorted by
+    name) and ``kernel_files``, each kernel's files of the package targets rendered apart
+    (``{(target name, kernel name): {path: text}}``; :func:`render` takes them again)."""
+
     files: dict[str, str]
     kernels: list[KernelCode]
+    kernel_files: dict = field(default_factory=dict)
 
 
 def compile_kernel(kernel: Kernel, plan32: bool = True) -> KernelCode:
@@ -238,14 +250,22 @@ def _groups(todo: list[Kernel]) -> list[tuple[int, ...]]:
     return sorted(groups, key=size)
 
 
-def _compile_all(todo: list, plan32: bool = True, render: str | None = None) -> tuple:
+def _compile_all(todo: list, plan32: bool = True, render: str | None = None,
+                 finished=None) -> tuple:
     """Compile kernels, over two forked workers when there are many (same result, in
     order); ``render``: the origin whose package files the workers also render (see
     :func:`_kernel_files`). Returns ``(kernels, files)``, ``files`` the workers' rendered
-    files (``{}`` when compiled here)."""
+    files (``{}`` when compiled here). ``finished(group, parts, files)``, when given, is
+    called in this process as each group of :func:`_groups` is done (``parts``: ``{index:
+    (packed programs, hash, ops, inputs, rewrites)}``; ``render`` is then required): the
+    store keeps it before the next one ends."""
     jobs = min(2, os.cpu_count() or 1)
-    if len(todo) < 8 or jobs < 2 or os.environ.get("RIGIDSYM_GENERATE_JOBS") == "1":
-        return [compile_kernel(k, plan32) for k in todo], {}
+    serial = len(todo) < 8 or jobs < 2 or os.environ.get("RIGIDSYM_GENERATE_JOBS") == "1"
+    if serial and finished is None:
+        done = [compile_kernel(k, plan32) for k in todo]
+        for k in todo:
+            count("derive", k.name)
+        return done, {}
     import multiprocessing as mp
 
     _TODO[:] = todo
@@ -253,14 +273,27 @@ def _compile_all(todo: list, plan32: bool = True, render: str | None = None) -> 
     _RENDER[0] = render
     parts: dict = {}
     files: dict = {}
-    try:
-        from rigidsym.core.interrupts import for_worker
 
-        with mp.get_context("fork").Pool(jobs, initializer=for_worker) as pool:
-            for got in pool.imap_unordered(_compile_group, _groups(todo), chunksize=1):
-                for i, part, rendered in got:
-                    parts[i] = part
-                    files.update(rendered or {})
+    def take(got: list) -> None:
+        group_parts, group_files = {}, {}
+        for i, part, rendered in got:
+            count("derive", todo[i].name)
+            group_parts[i] = part
+            group_files.update(rendered or {})
+        if finished is not None:
+            finished(tuple(sorted(group_parts)), group_parts, group_files)
+        parts.update(group_parts)
+        files.update(group_files)
+    try:
+        if serial:
+            for group in _groups(todo):
+                take(_compile_group(group))
+        else:
+            from rigidsym.core.interrupts import for_worker
+
+            with mp.get_context("fork").Pool(jobs, initializer=for_worker) as pool:
+                for got in pool.imap_unordered(_compile_group, _groups(todo), chunksize=1):
+                    take(got)
     finally:
         _TODO.clear()
         _PLAN32[0] = True
@@ -319,19 +352,39 @@ def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
     return sorted(todo + jacobian_kernels(todo), key=lambda k: k.name)
 
 
-def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
+def generate(kernels=None, origin: str = BOOK_ORIGIN, *, stored: bool = False,
+             only: list[str] | None = None) -> GenerationResult:
     """Render every kernel; returns the files (relative path -> text) and the compiled kernels.
 
     ``kernels`` defaults to the book's; a user module's kernels come with ``origin`` (the
     module's name, written in the headers) and sources already named, not imported here.
+    ``stored``: take each kernel whose inputs are unchanged from the store
+    (:mod:`rigidsym.codegen.inputs`) and keep each kernel derived there as it finishes (the
+    same files as without). ``only`` (kernel names, with ``stored``): derive these kernels
+    (and their ``_with_jacobians``) even when stored, and every other one from the store.
+
+    Raises:
+        BadInput: ``only`` names no kernel, or another kernel is not in the store.
     """
     kernels_are_book = kernels is None
     if kernels is None:  # by name: the generator imports no book
         kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
-    todo = sorted(kernels, key=lambda k: k.name)
-    done, rendered = _compile_all(_with_jacobian_kernels(todo), render=origin)
+    todo = _with_jacobian_kernels(sorted(kernels, key=lambda k: k.name))
+    if stored:
+        done, rendered = _derive_stored(todo, origin, only)
+    else:
+        done, rendered = _compile_all(todo, render=origin)
+    return render(done, rendered, origin, kernels_are_book)
+
+
+def render(done: list[KernelCode], rendered: dict, origin: str = BOOK_ORIGIN,
+           book: bool = True) -> GenerationResult:
+    """The files of a generation of the compiled kernels ``done`` (sorted by name):
+    ``rendered`` holds each kernel's files of the package targets rendered already
+    (``{(target name, kernel name): {path: text}}``), the rest are rendered here; ``book``:
+    with the measured accuracy (read now) and ``inputs.json``."""
     metas = [_meta(kc) for kc in done]
-    if kernels_are_book:
+    if book:
         acc = _accuracy_data()
         for m in metas:
             m["accuracy"] = acc.get(m["name"])
@@ -347,10 +400,61 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN) -> GenerationResult:
         files.update(got)
     files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas},
                                        indent=1, sort_keys=True) + "\n"
-    if kernels_are_book:
+    if book:
         # what the default test run compares instead of generating again (issue 54)
         files[inputs.MANIFEST] = inputs.render(files)
-    return GenerationResult(dict(sorted(files.items())), done)
+    return GenerationResult(dict(sorted(files.items())), done, rendered)
+
+
+def _derive_stored(todo: list[Kernel], origin: str, only: list[str] | None) -> tuple:
+    """``(kernels, files)`` as :func:`_compile_all` returns them with ``render=origin``: each
+    group whose key the store holds loaded, the others derived and stored one by one as
+    they finish (an interrupt keeps every stored one; :func:`rigidsym.core.interrupts.line`
+    says how many)."""
+    from rigidsym.core import interrupts
+
+    groups = [[todo[i] for i in g] for g in _groups(todo)]
+    if only is not None:
+        unknown = sorted(set(only) - {k.name for k in todo})
+        if unknown:
+            raise BadInput(f"--kernel {unknown[0]}: no such kernel")
+        wanted = {n.removesuffix("_with_jacobians") for n in only}
+    keys = [inputs.kernel_key(g, origin) for g in groups]
+    interrupts.note_kept(partial(inputs.kept, {d: len(g) for d, g in zip(
+        keys, groups, strict=True)}), len(todo), "kernels")
+    kept: dict[str, tuple] = {}
+    derive: list[Kernel] = []
+    where: dict[str, str] = {}
+    for g, digest in zip(groups, keys, strict=True):
+        forced = only is not None and g[0].name.removesuffix("_with_jacobians") in wanted
+        entry = None if forced else inputs.load_entry(digest)
+        if entry is None:
+            derive += g
+            where.update((k.name, digest) for k in g)
+        else:
+            kept.update((e[0], e[1:]) for e in entry)
+    if only is not None:
+        missing = sorted(k.name for k in derive
+                         if k.name.removesuffix("_with_jacobians") not in wanted)
+        if missing:
+            raise BadInput(f"{len(missing)} other kernels are not stored ({missing[0]}, ...): "
+                           f"run `rigidsym generate` without --kernel first")
+
+    def finished(group: tuple, parts: dict, files: dict) -> None:
+        names = [derive[i].name for i in group]
+        inputs.save_entry(where[names[0]], [
+            (n, *parts[i], {tk: f for tk, f in files.items() if tk[1] == n})
+            for i, n in zip(group, names, strict=True)])
+        kept.update((n, (*parts[i], {tk: f for tk, f in files.items() if tk[1] == n}))
+                    for i, n in zip(group, names, strict=True))
+    if derive:
+        _compile_all(derive, render=origin, finished=finished)
+    done, rendered = [], {}
+    for k in todo:
+        *part, files = kept[k.name]
+        done.append(PackedKernelCode(k, *part))
+        rendered.update(files)
+    return done, rendered
 
 
 #: the measured accuracy of the book's kernels (benchmarks/accuracy.py --data), shipped in

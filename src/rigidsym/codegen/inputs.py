@@ -17,6 +17,21 @@ output itself, is never an input. Over-inclusion only asks for a regeneration th
 nothing; a file missed would let a stale ``generated/`` pass, so the rule errs on the side of
 inclusion, and a ``slow`` test generates in a fresh process and requires every ``rigidsym``
 module it imported to be among the inputs.
+
+**The store of derived kernels.** ``rigidsym generate`` keeps what it derived for each kernel
+under the digest of that kernel's own inputs (:func:`kernel_key`), so that a generation
+re-derives only the kernels whose inputs changed (the rule of make, ninja and Bazel: rebuild
+what an input changed, keep what finished). The unit is a group of the generator's pool: a
+kernel and its ``_with_jacobians`` twin, derived together in one process. Its key is the
+SHA-256 of its declaration (every field of each kernel of the group that is data, and the
+digest of the mathematics its formula functions build, :func:`declared_hash`: a change
+anywhere in a formula's call chain is seen, an unrelated edit of the same file is not), of
+the machinery (:func:`machinery_hash`: every input file above but the book's own modules,
+whose part is the declaration) and of the settings (:func:`settings`, and the origin written
+in the headers). An entry holds each kernel's compiled programs (pickled), hash, operation
+count, inputs, rewrites and its files of every package target, in the user cache
+(:mod:`rigidsym.core.cache`, ``<root>/codegen/``), written atomically and checksummed: a
+missing or corrupt entry is derived again, never trusted.
 """
 
 from __future__ import annotations
@@ -25,14 +40,24 @@ import ast
 import hashlib
 import importlib.util
 import json
+import pickle
+import sys
+from dataclasses import fields
 from functools import cache
 from pathlib import Path
 
 import sympy as sp
 
+import rigidsym
+from rigidsym.codegen.optimise import math_hash
+from rigidsym.codegen.spec import Kernel, input_symbols
+from rigidsym.codegen.spec import flatten_outputs as _flatten
+from rigidsym.core import cache as _cache
 from rigidsym.core.config import KERNEL_SPEC
 
-__all__ = ["MANIFEST", "ENTRY_MODULES", "input_files", "manifest", "compare"]
+__all__ = ["MANIFEST", "ENTRY_MODULES", "input_files", "manifest", "compare", "STORE",
+           "settings", "machinery_hash", "declared_hash", "declaration", "kernel_key",
+           "entry_path", "load_entry", "save_entry", "kept"]
 
 #: the manifest's name under generated/
 MANIFEST = "inputs.json"
@@ -194,3 +219,114 @@ def compare(out: Path) -> list[str]:
         elif _sha(disk[rel].read_bytes()) != recorded[rel]:
             lines.append(f"changed by hand: generated/{rel}")
     return lines
+
+
+#: the user cache's folder of the store
+STORE = "codegen"
+#: the labels of the book's modules among the generator's inputs (their part of a kernel is
+#: its declaration)
+_BOOK = "rigidsym/derivations/"
+#: the entry format (a change of what an entry holds changes every key)
+_FORMAT = 1
+
+
+def settings() -> dict[str, str]:
+    """The versions a derivation depends on besides the sources: Python (the pickles),
+    rigidsym, sympy (the printed code), numpy (the points the float32 plans are measured on)
+    and mpmath (the reference)."""
+    import mpmath
+    import numpy as np
+
+    return {"python": f"{sys.version_info[0]}.{sys.version_info[1]}",
+            "rigidsym": rigidsym.__version__, "sympy": sp.__version__,
+            "numpy": np.__version__, "mpmath": mpmath.__version__,
+            "format": str(_FORMAT)}
+
+
+@cache
+def machinery_hash() -> str:
+    """The digest of the generator's input files but the book's modules, and of
+    :func:`settings` (once per process: the files do not change while it runs)."""
+    h = hashlib.sha256()
+    for label, digest in sorted(manifest()["inputs"].items()):
+        if not label.startswith(_BOOK):
+            h.update(f"{label}\0{digest}\n".encode())
+    for name, version in sorted(settings().items()):
+        h.update(f"{name}\0{version}\n".encode())
+    return h.hexdigest()
+
+
+def declared_hash(kernel: Kernel) -> str:
+    """The digest of the mathematics ``kernel`` declares: the conditions and outputs of its
+    branches and of its main build, as sympy builds them from its formula functions (for a
+    Jacobian kernel differentiated over the program: those of the kernel it differentiates)."""
+    spec = kernel.jacobian_of if kernel.jacobian_from == "program" and kernel.jacobian_of \
+        else kernel
+    syms = input_symbols(spec)
+    parts: list = []
+    for br in spec.branches:
+        parts += [br.when(**syms), *_flatten(spec, br.build(**syms))]
+    parts += _flatten(spec, spec.build(**syms))
+    return math_hash(parts)
+
+
+def declaration(kernel: Kernel) -> str:
+    """The data fields of ``kernel``'s declaration, as text (its callables aside: their part
+    is :func:`declared_hash`; a branch by its name, doc and default)."""
+    out = []
+    for f in fields(kernel):
+        value = getattr(kernel, f.name)
+        if f.name == "branches":
+            value = [(b.name, b.doc, b.default) for b in value]
+        elif f.name == "jacobian_of":
+            value = None if value is None else value.name
+        elif callable(value):
+            continue
+        out.append(f"{f.name}={value!r}")
+    return "\n".join(out)
+
+
+def kernel_key(group: list[Kernel], origin: str) -> str:
+    """The key of a group of kernels (a kernel, then its ``_with_jacobians`` twin, if any):
+    the digest of their declarations, the machinery and the settings (module docstring). A
+    twin of a kernel in the group adds its fields only: its mathematics is the kernel's,
+    differentiated by the machinery."""
+    h = hashlib.sha256()
+    h.update(f"{machinery_hash()}\0{origin}\n".encode())
+    names = {k.name for k in group}
+    for k in group:
+        h.update(declaration(k).encode() + b"\0")
+        twin_of = k.name.removesuffix("_with_jacobians")
+        if twin_of == k.name or twin_of not in names:
+            h.update(declared_hash(k).encode() + b"\0")
+    return h.hexdigest()
+
+
+def entry_path(digest: str) -> Path:
+    """The file of the entry of key ``digest`` (not created)."""
+    return _cache.folder(STORE) / digest[:2] / f"{digest}.pkl"
+
+
+def load_entry(digest: str) -> list | None:
+    """The store's entry of key ``digest``: ``[(kernel name, packed programs, hash, ops, inputs,
+    rewrites, {(target, kernel name): {path: text}})]`` per kernel of the group, or None
+    when it is missing or corrupt."""
+    data = _cache.get(entry_path(digest))
+    if data is None:
+        return None
+    try:
+        return pickle.loads(data)
+    except Exception:  # noqa: BLE001 - an entry of another version: derived again
+        return None
+
+
+def save_entry(digest: str, entry: list) -> Path:
+    """Store ``entry`` (as :func:`load_entry` returns it) under ``digest``, atomically (an
+    interrupt waits until it is written whole)."""
+    return _cache.put(entry_path(digest), pickle.dumps(entry, pickle.HIGHEST_PROTOCOL))
+
+
+def kept(digests: dict[str, int]) -> int:
+    """How many kernels the stored entries among ``digests`` (key -> kernels in its group)
+    hold: what an interrupted generation keeps."""
+    return sum(n for d, n in digests.items() if _cache.get(entry_path(d)) is not None)

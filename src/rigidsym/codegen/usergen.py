@@ -84,8 +84,10 @@ def load_user_kernels(modules) -> tuple[list[Kernel], str]:
     return kernels, ", ".join(titles)
 
 
-def generate_user(modules):
-    """Generate the kernels of user modules (paths or dotted names) in memory.
+def generate_user(modules, stored: bool = False):
+    """Generate the kernels of user modules (paths or dotted names) in memory (``stored``:
+    each kernel whose inputs are unchanged from the store of derived kernels, each one
+    derived stored as it finishes: :func:`rigidsym.codegen.generator.generate`).
 
     Returns:
         The generator's result (relative path -> text), headers naming the modules.
@@ -97,7 +99,7 @@ def generate_user(modules):
     from rigidsym.codegen.generator import generate
 
     kernels, origin = load_user_kernels(modules)
-    return generate(kernels, origin=origin)
+    return generate(kernels, origin=origin, stored=stored)
 
 
 def cmd_generate_user(args) -> int:
@@ -118,7 +120,7 @@ def cmd_generate_user(args) -> int:
     from rigidsym.codegen.validate import one_line_warnings
 
     with one_line_warnings():
-        res = generate_user(args.module)
+        res = generate_user(args.module, stored=not getattr(args, "no_store", False))
     rc = check_or_write(res, out, check_only=args.check, kernels=len(res.kernels),
                         rerun=f"rigidsym generate --module ... --out {out}", t0=t0)
     if rc is not None:

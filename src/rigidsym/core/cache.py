@@ -7,6 +7,7 @@ Layout (``RIGIDSYM_CACHE``, else ``$XDG_CACHE_HOME/rigidsym``, else ``~/.cache/r
     <root>/latex/      the LaTeX grammar's LALR analysis (lark's own cache=, issue 40)
     <root>/statements/ the book declarations' built statements
                        (rigidsym.registry.statement_cache)
+    <root>/codegen/    derived kernels, by the digest of their inputs (rigidsym.codegen.inputs)
 
 The writers of kernels, verdicts and statements take :func:`lock` (a cross-process file
 lock from the well-kept ``filelock`` package, not a lock of our own: parallel first-use
@@ -34,7 +35,7 @@ from rigidsym.core.interrupts import deferred
 __all__ = ["root", "folder", "lock", "put", "get", "digest", "info", "clear", "KINDS"]
 
 #: the cache's sub-folders
-KINDS = ("kernels", "verdicts", "latex", "statements")
+KINDS = ("kernels", "verdicts", "latex", "statements", "codegen")
 #: seconds a writer waits for another process's lock before giving up with an error
 LOCK_TIMEOUT = 600.0
 

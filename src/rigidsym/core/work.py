@@ -1,5 +1,5 @@
 """Counts of the real work a command does: declarations built, ids decided, transcriptions
-checked, exercises solved (issue 39).
+checked, exercises solved (issue 39), kernels derived.
 
 A cache hit counts nothing; only the work behind a miss does, so a test can say "a warm
 ``verify --json`` builds no declaration" without timing anything. Worker processes count in
@@ -21,8 +21,9 @@ __all__ = ["COUNTS", "KINDS", "ENV", "count", "snapshot", "since", "merge", "dum
 #: built statements), ``load`` (a built statement read from the user cache instead,
 #: :mod:`rigidsym.registry.statement_cache`: not a build), ``decide`` (one id decided by
 #: the checker), ``transcribe`` (one printed form checked against its LaTeX), ``solve``
-#: (one exercise solved)
-KINDS = ("build", "load", "decide", "transcribe", "solve")
+#: (one exercise solved), ``derive`` (one kernel derived by the generator: a miss of its
+#: store, rigidsym.codegen.inputs)
+KINDS = ("build", "load", "decide", "transcribe", "solve", "derive")
 #: the environment variable naming a file the command writes its counts to, at its end
 #: (``{"build": {id: n}, ...}``: how the tests and ``benchmarks/verify.py`` count the work
 #: of a real, fresh command)

@@ -319,11 +319,13 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
                          f"version of rigidsym (`rigidsym generate`)")
     t0, r0 = time.perf_counter(), resource.getrusage(resource.RUSAGE_CHILDREN)
     tasks = _tasks(cdir, cfg, Path(tmp))
-    where, headers = _objects.root(), _objects.headers_digest(cdir)
+    where = _objects.root()
     neutral = {str(cdir): "<generated>", _numpy_include(): f"<numpy {numpy.__version__}>"}
     total, compiled = len(tasks) + 1, 0
     with ThreadPoolExecutor(max_workers=min(jobs(), len(tasks))) as pool:
-        futures = [pool.submit(_objects.compile_cached, _run, argv, where, headers, neutral)
+        futures = [pool.submit(_objects.compile_cached, _run, argv, where,
+                               _objects.headers_digest(cdir, Path(argv[argv.index("-c") + 1])),
+                               neutral)
                    for argv, _ in tasks]
         try:
             for done, f in enumerate(as_completed(futures), 1):

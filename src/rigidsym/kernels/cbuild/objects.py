@@ -5,11 +5,12 @@ each object instead of compiling it again.
 An object's key is the SHA-256 of everything that decides its bytes: the compile command
 with the folders it names made neutral (the generated folder by the bytes of its sources
 and headers, NumPy's headers by NumPy's version, the object's own path dropped), the
-source's bytes, the bytes of every header of its folder, and the compiler's identity
-(``cc --version`` and ``cc -dumpmachine``). Entries live in ``<root>/<key[:2]>/<key>.o``
-with a ``.sha256`` beside them, written as the kernel cache writes its entries (a temporary
-file and a rename, the checksum last, under a ``filelock`` lock): an entry that fails its
-checksum is compiled again, never linked.
+source's bytes, the bytes of every header of its folder that it includes (directly or
+through another: a kernel's object keeps its key when another kernel is added), and the
+compiler's identity (``cc --version`` and ``cc -dumpmachine``). Entries live in
+``<root>/<key[:2]>/<key>.o`` with a ``.sha256`` beside them, written as the kernel cache
+writes its entries (a temporary file and a rename, the checksum last, under a ``filelock``
+lock): an entry that fails its checksum is compiled again, never linked.
 
 The root is ``RIGIDSYM_OBJECT_CACHE``, else ``<RIGIDSYM_CACHE>/objects``, else
 ``$XDG_CACHE_HOME/rigidsym/objects`` (``~/.cache/rigidsym/objects``);
@@ -22,6 +23,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import re
 import subprocess
 from collections.abc import Callable
 from functools import cache
@@ -134,12 +136,41 @@ def store(where: Path, k: str, obj: Path) -> None:
             tmp.unlink(missing_ok=True)
 
 
-def headers_digest(cdir: Path) -> str:
-    """SHA-256 over the names and bytes of every header of ``cdir`` (part of every key)."""
+def headers_digest(cdir: Path, src: Path | None = None) -> str:
+    """SHA-256 over the names and bytes of the headers of ``cdir`` that ``src`` includes,
+    directly or through another (part of its key; ``src`` None: every header). A kernel's
+    object then keeps its key when another kernel is added or changed (its own header and
+    ``rigidsym_common.h`` are all it reads), and only the objects that read the changed
+    headers compile again. Every ``#include`` written counts, whatever conditional it sits
+    in (more headers than the compiler reads: never fewer); an ``#include`` of a macro
+    counts every header."""
+    cdir = Path(cdir)
+    every = sorted(p.name for p in cdir.glob("*.h"))
+    if src is None:
+        names = every
+    else:
+        names, todo = set(), [Path(src)]
+        while todo:
+            text = todo.pop().read_bytes()
+            if _MACRO_INCLUDE.search(text):
+                names = set(every)
+                break
+            for m in _INCLUDE.finditer(text):
+                name = m.group(1).decode()
+                if name not in names and (cdir / name).is_file():
+                    names.add(name)
+                    todo.append(cdir / name)
+        names = sorted(names)
     h = hashlib.sha256()
-    for p in sorted(Path(cdir).glob("*.h")):
-        h.update(p.name.encode() + b"\0" + p.read_bytes() + b"\0")
+    for name in names:
+        h.update(name.encode() + b"\0" + (cdir / name).read_bytes() + b"\0")
     return h.hexdigest()
+
+
+#: an ``#include "x.h"`` or ``#include <x.h>`` (the name)
+_INCLUDE = re.compile(rb'^[ \t]*#[ \t]*include[ \t]*[<"]([^>"]+)[>"]', re.M)
+#: an ``#include`` of a macro's expansion
+_MACRO_INCLUDE = re.compile(rb"^[ \t]*#[ \t]*include[ \t]+[A-Za-z_]", re.M)
 
 
 def compile_cached(run: Callable[[list[str]], None], argv: list[str], where: Path | None,
