@@ -67,6 +67,9 @@ def test_cli_single_and_bad_input(capsys):
     assert capsys.readouterr().out.count("\n  3.") == 21
 
 
+# every exercise solved and rendered; quick: the sample of test_exercise_solved_and_checked renders
+# its pages
+@pytest.mark.slow
 def test_report_hook(tmp_path):
     from rigidsym.cli.exercise import write_report
     write_report(tmp_path)
