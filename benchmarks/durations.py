@@ -28,6 +28,8 @@ import time
 from collections import defaultdict
 from pathlib import Path
 
+from test_command import host
+
 ROOT = Path(__file__).resolve().parents[1]
 SELECTION = {"quick": [], "thorough": ["-m", "slow or extra or budget"]}
 
@@ -43,19 +45,6 @@ def pytest_runtest_logreport(report):
                             "s": round(report.duration, 4),
                             "outcome": report.outcome}) + "\\n")
 '''
-
-
-def host() -> dict:
-    """CPU model, cores and Python of this machine."""
-    model = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    return {"cpu": model, "cores": os.cpu_count(), "python": sys.version.split()[0]}
 
 
 def family(nodeid: str) -> str:

@@ -64,6 +64,8 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+from test_command import host
+
 ROOT = Path(__file__).resolve().parents[1]
 OUT = ROOT / "benchmarks" / "results" / "mutation_sample.json"
 SEED = 2026
@@ -343,14 +345,7 @@ def _kill_child() -> None:
 
 
 def machine() -> dict:
-    cpu = ""
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
+    cpu = host()["cpu"]
     return {"cpu": cpu or platform.processor() or platform.machine(),
             "cores": os.cpu_count(), "cores_usable": len(os.sched_getaffinity(0)),
             "python": platform.python_version(), "system": platform.platform()}

@@ -46,6 +46,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from test_command import host
+
 ROOT = Path(__file__).resolve().parents[1]
 
 #: run in the child: every book statement, timed, and the work counted where it is
@@ -156,14 +158,7 @@ def lean(path: Path) -> list:
 
 def machine() -> dict:
     """The CPU model, the cores, the versions of Python and sympy, the platform."""
-    model = ""
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
+    model = host()["cpu"]
     import sympy
 
     return {"cpu model": model or platform.processor(), "cores": os.cpu_count(),
