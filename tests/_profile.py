@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 import zlib
 
 #: ``quick`` or ``thorough``
@@ -36,6 +37,11 @@ def examples(n: int) -> int:
     """A Hypothesis property's ``max_examples``: ``n`` in the quick profile,
     :data:`THOROUGH_FACTOR` times ``n`` in the thorough one."""
     return n if PROFILE == "quick" else THOROUGH_FACTOR * n
+
+
+def plain(nodeid: str) -> str:
+    """The node id without the ``@group`` suffix that ``--dist loadgroup`` appends."""
+    return re.sub(r"@[^\[\]@]*$", "", nodeid)
 
 
 def rank(nodeid: str) -> int:

@@ -96,7 +96,8 @@ def pytest_collection_modifyitems(session, config, items):
         mark = members[0].get_closest_marker("sample")
         fraction = mark.kwargs.get("fraction", mark.args[0] if mark.args else
                                    _profile.DEFAULT_FRACTION)
-        keep = _profile.kept([i.nodeid for i in members], fraction)
+        # the draw is of plain ids: the same with and without --dist loadgroup's @group suffix
+        keep = _profile.kept([_profile.plain(i.nodeid) for i in members], fraction)
         for item in members:
-            if item.nodeid not in keep:
+            if _profile.plain(item.nodeid) not in keep:
                 item.add_marker("slow")
