@@ -1,4 +1,4 @@
-"""Shared inputs of the PyTorch and JAX kernel tests (issue 31): random valid samples for
+"""Shared inputs of the PyTorch and JAX kernel tests: random valid samples for
 every public kernel and for the Euler-angle kernels, and probes within 1e-6 of the singular
 sets, all as float64 NumPy arrays; the reference values and Jacobians come from the NumPy
 kernels (:mod:`rigidsym.kernels`, :func:`rigidsym.kernels.jacobian`)."""

@@ -1,4 +1,4 @@
-"""Tamperings of certificates (issue 49 item 2) for tests/test_certcheck.py: each returns a
+"""Tamperings of certificates for tests/test_certcheck.py: each returns a
 changed copy, or ``None`` where it does not apply. None touches a checksum or a signature
 (the format has none): each changes the mathematics, which the checker must reject."""
 

@@ -1,4 +1,4 @@
-"""A guard that fails a test whose child processes outlive it (issue 27 item 5): imported by
+"""A guard that fails a test whose child processes outlive it: imported by
 conftest.py as an autouse fixture; tests/test_procguard.py runs it on a test that leaks."""
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
-"""Accuracy against the condition of the problem (issue 30) and never worse than the textbook
-formula or a peer (issue 37): the regimes of ``benchmarks/accuracy.py`` as a test, in float64
+"""Accuracy against the condition of the problem and never worse than the textbook
+formula or a peer: the regimes of ``benchmarks/accuracy.py`` as a test, in float64
 on a subsample of the approach steps, so that a rewrite that loses digits fails here.
 
 Every public kernel (and a few Jacobian and Euler-angle kernels) at exact points rounded to
@@ -235,7 +235,7 @@ def test_the_harness_sees_the_loss_it_was_built_for():
 
 
 def test_no_singular_error_at_a_small_representable_angle():
-    """The headline of issue 30: a rotation by 1e-9 rad has a finite screw (p0 ~ |t|/phi),
+    """The headline of a rotation by 1e-9 rad has a finite screw (p0 ~ |t|/phi),
     condition ~ 1/phi; the kernel neither raises nor loses the digits."""
     e = np.array([0.48, 0.6, 0.64])
     Q = K.rotation_from_natural_invariants(e, 1e-9)
@@ -257,7 +257,7 @@ def test_accuracy_rows_are_shipped():
     assert K.accuracy("screw_of_displacement")["float64"]["bound"] > 0
     for name in K.KERNEL_NAMES:
         r = K.accuracy(name)
-        # issue 37: accurate means the whole rule, on every back-end and type
+        # accurate means the whole rule, on every back-end and type
         f64, f32 = r["float64"], r["float32"]
         assert set(f64["backends"]) >= {"numpy"} and "rule" in f64, name
         assert r["accurate"] == (max(f64["rule"], f32["rule"]) <= 1 and not f64["spurious"]
@@ -280,7 +280,7 @@ def test_full_sweep_both_types():
     rows = [r for r in rows if not (r.kernel in RANGE_DEFECTS and r.regime.startswith("range"))]
     over = [r for r in rows if r.worst_ratio > 1]
     assert not over, [(r.kernel, r.backend, r.dtype, r.regime, r.worst_ratio) for r in over]
-    # open (issue 37): the per-row limits of OPEN were measured at the default test's points;
+    # open: the per-row limits of OPEN were measured at the default test's points;
     # over this sweep more C rows pass max(2 e_ref, 4 u) by up to SWEEP_RULE (fma
     # contraction, Lie kernels at points scaled 1e6): none beyond it, no spurious singularity
     past = [r for r in rows if r.rule_ratio > SWEEP_RULE or r.spurious]

@@ -1,5 +1,5 @@
 """The PyTorch and JAX kernels against the 50-digit reference of tests/test_kernels.py
-(issue 31): float64 and float32, random and adversarial rows (phi -> 0, pi, ||omega|| -> 0,
+: float64 and float32, random and adversarial rows (phi -> 0, pi, ||omega|| -> 0,
 Q near 1 and pi), within ``8 u kappa + 8 u`` taken at ``kappa = 1`` (16 u: the tightest
 form of the harness's bound, since kappa >= 1). Measured at 50 points per kernel: float64
 at most 3.6 u, float32 at most 6.2 u (the whole program in float32 arithmetic)."""
@@ -53,7 +53,7 @@ def test_error_against_50_digits(name, dtype, backend):
     arrays = [a.astype(dtype) for a in arrays32]
     got = _flat(backend(name, arrays), arrays[0].shape[0])
     u = float(np.finfo(dtype).eps)
-    # ON_SO3 kernels (issue 30): the reference at a rounded Q is off by its rounding / sin^2
+    # ON_SO3 kernels: the reference at a rounded Q is off by its rounding / sin^2
     err = rel_err(got, ref) / row_tol(name, ref, 2.0**-24, 16 * u) * (16 * u)
     assert np.isfinite(err).all(), f"{name}: non-finite output"
     assert err.max() <= 16 * u, f"{name} {np.dtype(dtype).name}: {err.max() / u:.2f} u"

@@ -1,4 +1,4 @@
-"""The PyTorch and JAX kernels on a CUDA GPU (issue 31): every public kernel's values on the
+"""The PyTorch and JAX kernels on a CUDA GPU: every public kernel's values on the
 GPU are the NumPy kernel's (float64: 1e-12 relative; float32: the accuracy harness's bound),
 the results stay on the device, the gradients on the GPU are the CPU's generated Jacobians,
 and a singular sample raises there as on the CPU.

@@ -1,4 +1,4 @@
-"""dtypes of the PyTorch and JAX kernels as the libraries treat them (issue 38, item 5).
+"""dtypes of the PyTorch and JAX kernels as the libraries treat them.
 
 float16 and bfloat16 are computed in float32 and rounded once to the input dtype (old main:
 float16 ended in torch's raw ``NotImplementedError: "lu_cpu"`` from the rotation check,

@@ -1,4 +1,4 @@
-"""Gradients as documented (issue 38, item 3): a sample masked by ``on_singular="nan"``
+"""Gradients as documented: a sample masked by ``on_singular="nan"``
 gives a zero gradient and never a NaN in a parameter the batch shares; double backward
 through the PyTorch kernels and ``jax.hessian`` through the JAX ones.
 
@@ -71,7 +71,7 @@ def test_torch_masked_row_has_zero_gradient(name):
         outs = getattr(rk, name)(*args, **kw, on_singular="nan")
         outs = outs if isinstance(outs, tuple) else (outs,)
         if name in ("natural_invariants_from_rotation", "screw_of_displacement"):
-            # Q = 1 is answered (phi = 0, the default axis, issue 70), not masked: the shared
+            # Q = 1 is answered (phi = 0, the default axis), not masked: the shared
             # parameter's gradient must still be finite and row 1's alone
             assert (outs[1][0] == 0).all() and torch.isfinite(outs[0][0]).all()
         else:

@@ -1,4 +1,4 @@
-"""Counterexamples in the statement's own symbols (issue 24 item 1).
+"""Counterexamples in the statement's own symbols.
 
 The values shown for the book's symbols are checked against what they must satisfy: the
 constraints (``e·e = 1``, ``cos² + sin² = 1``, ``φ = 2 atan(t)``), the model's own

@@ -1,4 +1,4 @@
-"""The stated accuracy bounds hold on points the harness did not use (issue 37, item 5).
+"""The stated accuracy bounds hold on points the harness did not use.
 
 Every kernel's docstring says ``error <= B u (kappa + 1)`` per float type, ``B`` the
 ``bound`` of ``derivations/kernels_accuracy.json`` (measured by ``benchmarks/accuracy.py``
@@ -91,7 +91,7 @@ def test_docstrings_state_the_json_bounds():
             assert f"<= {_stated(name, dt):.3g} u (kappa + 1) in {dt}" in doc, name
 
 
-#: open rows (issue 37): none. The log of SE(3)'s NaN "at inputs 1e-160" was the harness
+#: open rows: none. The log of SE(3)'s NaN "at inputs 1e-160" was the harness
 #: feeding it 4 x 4 matrices that are no transform (now the "transform" argument kind)
 _OPEN: dict[str, str] = {}
 

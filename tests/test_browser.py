@@ -125,7 +125,7 @@ def test_screenshots_for_a_person(browser):
 
 
 def _word_forms() -> dict:
-    """One printed form per word of the vocabulary of rigid motions (issue 28), built with
+    """One printed form per word of the vocabulary of rigid motions, built with
     the words themselves on book symbols, as a reader's declaration writes them."""
     import sympy as sp
 
@@ -202,7 +202,7 @@ def test_reader_report_renders(browser, tmp_path):
     page.close()
 
 
-# ------------------------------------------------------------------ issue 69: pages a reader sees
+# ------------------------------------------------------------------ pages a reader sees
 #: each table cell's content that shows outside its cell (clipped by any scrolling box
 #: between, as the browser paints it); MathML text nodes have no reliable range boxes, so
 #: its elements are measured, HTML text by its ranges

@@ -1,4 +1,4 @@
-"""The compiled kernels (issue 19): CPU dispatch, the cache (one compile for many processes,
+"""The compiled kernels: CPU dispatch, the cache (one compile for many processes,
 checksums), the notice before a compile, staleness, and overflow in the normalising kernels.
 
 The wheel itself (built once per session, no compiler at run time) is tested in
@@ -283,7 +283,7 @@ def test_normalised_vectors_near_overflow_are_right_or_raise(backend, name, expo
 
 
 def test_plucker_from_points_of_the_probe_is_its_representable_line(backend):
-    # the probe's squares overflow, its line does not: e = (1, 2, 2)/3, moment 0 (issue 37:
+    # the probe's squares overflow, its line does not: e = (1, 2, 2)/3, moment 0 (
     # a representable result is returned, never NonFiniteResultError, never zeros)
     res = np.asarray(K.plucker_from_points(p1=[0, 0, 0], p2=[1e155, 2e155, 2e155]))
     np.testing.assert_allclose(res, [1 / 3, 2 / 3, 2 / 3, 0, 0, 0], rtol=4e-16, atol=0)
@@ -341,7 +341,7 @@ def test_loading_a_user_directory_never_loads_the_package_kernels(user_dir, tmp_
     assert calls == [False]
 
 
-# ------------------------------------------------------------------ the object cache (issue 27)
+# ------------------------------------------------------------------ the object cache
 def _build_with_objects(user_dir: Path, tmp: Path, objects: Path) -> tuple[dict, bytes]:
     cfg = _build.configure()
     stats: dict = {}
@@ -430,7 +430,7 @@ def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
                                       "double g(double x) { return x * x; }\n")
     (tmp_path / "plain2.c").write_text("double cosh_like(double x) { return x; }\n")
     (tmp_path / "rigidsym_table.c").write_text("/* table */\n")
-    # no sin/cos, but measured faster on x86-64-v4 (issue 67): compiled there too
+    # no sin/cos, but measured faster on x86-64-v4: compiled there too
     (tmp_path / "instant_screw_point_pitch.c").write_text("double f(double x) { return x; }\n")
     srcs = sorted(tmp_path.glob("*.c"))
     plan, aliases = _paths.partial_plan(_paths.X86_PATHS, srcs, "rigidsym_table.c")
@@ -460,7 +460,7 @@ def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
     ("sse2", ["v4", "v3", "v2"]),
 ])
 def test_an_editable_install_compiles_the_paths_its_cpu_runs(flags, want, monkeypatch):
-    """Issue 54: an editable install (setup.py, ``editable_mode``) compiles only the paths
+    """an editable install (setup.py, ``editable_mode``) compiles only the paths
     this CPU runs, down to one that compiles every kernel: what it imports is then the same
     path a full build's dispatcher picks on this CPU."""
     from rigidsym.kernels.cbuild import paths as _paths

@@ -1,5 +1,5 @@
 """``rigidsym generate --target c --module M.py`` measures the module's float bounds itself
-(issue 66 item 3; :mod:`rigidsym.codegen.accuracy.float_measure`): its headers state a
+(:mod:`rigidsym.codegen.accuracy.float_measure`): its headers state a
 measured bound, not "not measured", with no script of the repository; ``--no-measure``
 leaves them unmeasured."""
 

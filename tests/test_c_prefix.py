@@ -1,4 +1,4 @@
-"""``rigidsym generate --target c|cpp --prefix NAME`` (issue 66, item 2): every name a
+"""``rigidsym generate --target c|cpp --prefix NAME``: every name a
 generated folder exports carries the prefix, so that two folders (the book's kernels with
 the default prefix, a user module with ``--prefix mybot``) link into one program.
 

@@ -1,4 +1,4 @@
-"""The C target on Arm (issue 53), run under emulation (qemu-user): the NEON range test and
+"""The C target on Arm, run under emulation (qemu-user): the NEON range test and
 the rescue where ``long double`` is ``double``, which the x86-64 tests only compile or
 imitate (``-DRIGIDSYM_C_NO_SSE2``, ``-DRIGIDSYM_C_NO_WIDE``).
 

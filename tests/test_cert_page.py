@@ -1,4 +1,4 @@
-"""Certificates bound to the page and to one run (issue 65): certcheck --book finds each id's
+"""Certificates bound to the page and to one run: certcheck --book finds each id's
 printed text in the book and requires the certificate's book_latex to be it, verifies the
 folder's MANIFEST.json, requires a cause of every does-not-hold, and rejects a verified id
 whose printed relations all have identical sides. The tamperings are made from the real
@@ -636,7 +636,7 @@ def velocity_changed(cert: dict) -> dict | None:
 
 
 def test_moving_body_integrals_read_firmly_and_tamperings_rejected(moving_read):
-    """A moving body (issue 65): 3.126 (T as the integral of its particles' speeds) and
+    """A moving body: 3.126 (T as the integral of its particles' speeds) and
     3.144 (T = m|c-dot|^2/2 + omega^T I_C omega/2, its I_C an integral through the
     centroid c = q_O/m) are read firmly through the body line and its rates; a particle's
     velocity without o-dot, another id's text and (3.126, the cheaper) a particle's mass

@@ -1,4 +1,4 @@
-"""Chains and section 3.7's wrench ids read by certcheck's second reader (issue 65, wave 9,
+"""Chains and section 3.7's wrench ids read by certcheck's second reader (
 third session). A chain ``a \\equiv b = c`` is read as ``a = b`` and ``a = c``, its later
 ``a`` read as ``b`` (the page says ``a`` is ``b``); the certificate marks
 the claim that proves a member the definition does not state (``"page": k``), so the

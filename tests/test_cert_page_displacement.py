@@ -1,4 +1,4 @@
-"""Section 3.2's displacement, lines and pose read from the page (issue 65): the symbol
+"""Section 3.2's displacement, lines and pose read from the page: the symbol
 table's lines of ``rigidsym.checking.certifying.displacement_symbols`` (the glyphs sections
 3.2-3.2.3 define in words, by a later display or by the id's own definition) let certcheck's
 second reader read those ids firmly; a changed line, a changed side and another id's text

@@ -1,4 +1,4 @@
-"""Sections 3.3-3.4.2 read from the page (issue 65): the symbol table's lines of
+"""Sections 3.3-3.4.2 read from the page: the symbol table's lines of
 ``rigidsym.checking.certifying.instant_screw_symbols`` (3.3's ``p = Q p_0`` and its rate,
 ``Omega``, ``omega``; the ISA's point ``p'_0`` closest to the origin, its points ``p``,
 ``r``, ``A``, ``b`` of (3.62b), (3.66); 3.4.2's pitch, pure translation and printed arrays)

@@ -1,4 +1,4 @@
-"""The rates of the rotation invariants read from the page (issue 65): the symbol table's
+"""The rates of the rotation invariants read from the page: the symbol table's
 lines of ``rigidsym.checking.certifying.invariant_rate_symbols`` (``N``, ``L``, ``H`` and
 their tildes as printed in (3.76b-d), (3.77b-d), their rates term by term, the pose's
 rates, ``T``, ``S``, ``U``, ``W``, ``u``, ``r``, ...) and the per-member lines of the family

@@ -1,4 +1,4 @@
-"""Section 3.8's twists and momenta read from the page (issue 65): the symbol table's lines
+"""Section 3.8's twists and momenta read from the page: the symbol table's lines
 of ``rigidsym.checking.certifying.twist_symbols`` (the twist ``t`` at the centre of mass,
 ``W`` of (3.140), ``mu = M t`` of (3.142), the momenta of (3.135), the rates, the wrench
 ``w = [n_C; f]`` the motion requires) let certcheck's second reader read the Newton-Euler

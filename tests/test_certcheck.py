@@ -1,4 +1,4 @@
-"""The independent checker certcheck/ (issue 49): it imports neither rigidsym nor sympy nor
+"""The independent checker certcheck/: it imports neither rigidsym nor sympy nor
 numpy, passes the certificates rigidsym writes, and rejects every tampering by the
 mathematics. The whole chapter: tests/test_certificates.py (slow)."""
 
@@ -223,7 +223,7 @@ def _poly(R, terms):
 @settings(max_examples=examples(30), deadline=None)
 @given(g=_poly_terms, f=_poly_terms)
 def test_exact_division_finds_exactly_the_factors(g, f):
-    """Ring.divexact (issue 65): for a primitive non-constant f, (g f) / f is g and g f + 1
+    """Ring.divexact: for a primitive non-constant f, (g f) / f is g and g f + 1
     is no multiple of f (f would divide 1); python-flint's path answers the same."""
     from certcheck.poly import FlintRing, Ring
 
@@ -244,7 +244,7 @@ def test_exact_division_finds_exactly_the_factors(g, f):
 
 def test_field_cancels_a_dividing_factor_of_the_denominator():
     """The centroid c = q_O / m with q_O = m o (m = m_1 + m_2) is o over no denominator
-    (issue 65: the factor cancelled at once), m o^2 / m / m is o^2 over one m, and o / m
+    (the factor cancelled at once), m o^2 / m / m is o^2 over one m, and o / m
     keeps its m; each value at an exact point is the rational function's."""
     from certcheck.field import Field
     from certcheck.poly import make_ring

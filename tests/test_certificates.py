@@ -1,4 +1,4 @@
-"""Certificates of verdicts (issue 49): ``rigidsym verify --certificates DIR`` writes one
+"""Certificates of verdicts: ``rigidsym verify --certificates DIR`` writes one
 per decided id and certcheck re-checks them; the whole chapter, with every tampering
 applied to every certificate, is the slow test here."""
 

@@ -1,4 +1,4 @@
-"""LaTeX in, verdict out (issue 29, item 4): ``rigidsym check --latex`` with ``--let``,
+"""LaTeX in, verdict out: ``rigidsym check --latex`` with ``--let``,
 ``rigidsym.check_latex``, and ``equation(latex=...)`` without a printed form."""
 
 from __future__ import annotations

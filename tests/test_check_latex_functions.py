@@ -1,5 +1,5 @@
 """Functions as the books define them, declarations in any order, and no bracket read as
-the one it resembles (issue 52, items 1-3): the three wrong verdicts of the issue and the
+the one it resembles: the three wrong verdicts of the issue and the
 ``S(\\mathbf{i})`` case, each with what it gave on main before the fix."""
 
 from __future__ import annotations
@@ -138,7 +138,7 @@ def test_a_declared_parameter_kind_must_fit_the_argument():
         rigidsym.check_latex(r"S(R) = R", let=[S_LET, r"\mathbf{a}: vector", "R: rotation"])
 
 
-# ------------------------------------------------ declarations as a graph (issue 52, item 3)
+# ------------------------------------------------ declarations as a graph
 W = r"\mathbf{w} = F\mathbf{x}"
 
 
@@ -184,7 +184,7 @@ def test_a_cycle_of_models_is_named():
         rigidsym.check_latex("A = 1", let=["A = B + 1", "B = A - 1"])
 
 
-# ---------------------------------------------------- Shuster's [[u]] (issue 52, item 1; wave 11)
+# ---------------------------------------------------- Shuster's [[u]]
 @pytest.mark.parametrize("latex, lets, verdict", [
     # both signs give one verdict: decided (refused by name, "unknown bracket", before wave
     # 11; on main before issue 52 read as [u], a sign lost)
@@ -219,7 +219,7 @@ def test_a_reading_inside_a_model_is_printed():
                for n in r.model), r.model
 
 
-# ------------------------------------------- readings enumerated and agreed (issue 52, item 2)
+# ------------------------------------------- readings enumerated and agreed
 ROD = [r"\mathbf{e}: unit vector; \theta: angle", r"\mathbf{g} = \tan\frac{\theta}{2}\mathbf{e}",
        r"R = \cos\theta\,I_{3\times3} + (1-\cos\theta)\mathbf{e}\mathbf{e}^T"
        r" - \sin\theta[\mathbf{e}]_\times"]
@@ -255,7 +255,7 @@ def test_readings_that_disagree_are_refused_naming_the_choice(capsys):
     assert code == 0, out + err
 
 
-# a bracket around a product: its hat or a bracket that groups (issue 52, item 2)
+# a bracket around a product: its hat or a bracket that groups
 RAB = [r"R: rotation", r"\mathbf{a}: vector", r"\mathbf{c}: vector"]
 
 
@@ -288,7 +288,7 @@ def test_a_bracket_whose_readings_disagree_is_refused_naming_it_and_what_settles
         assert r.verdict == verdict, (spelled, r.detail)
 
 
-# a subscript: part of a name or an entry of a declared vector (issue 52, item 2)
+# a subscript: part of a name or an entry of a declared vector
 HALF = [r"\mathbf{e}: unit vector; \theta: angle",
         r"\mathbf{q} = \begin{bmatrix}\sin\frac{\theta}{2}\mathbf{e}\\ \cos\frac{\theta}{2}"
         r"\end{bmatrix}"]
@@ -314,7 +314,7 @@ def test_a_subscript_is_a_name_or_an_entry_by_the_reading_that_type_checks(latex
 
 def test_a_subscript_whose_readings_disagree_is_refused_naming_what_settles_it(capsys):
     # on main: does-not-hold, a_1 a free scalar (a true equation where a_1 is a's entry);
-    # issue 52: refused, a symbol of its own or the entry; wave 11: beside a --let's vector
+    # refused, a symbol of its own or the entry; wave 11: beside a --let's vector
     # it is the entry, as the books write one (latex.entries)
     r = rigidsym.check_latex(r"a_1 = \mathbf{a}^T\mathbf{i}", let=I1, repairs=False)
     assert r.verdict == "verified", r.detail
@@ -338,7 +338,7 @@ def test_a_bracket_around_one_symbol_is_its_hat_by_the_rule():
     assert not any("type-check" in n or "not read as" in n for n in r.model), r.model
 
 
-# --------------------------------------------------- the constructs of item 4 (issue 52)
+# --------------------------------------------------- the constructs of item 4
 @pytest.mark.parametrize("latex, lets, verdict", [
     # Markley-Crassidis' vector part q_{1:3} (on main: "unexpected ':'")
     (r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} + q_4^2 = 1",
@@ -376,7 +376,7 @@ def test_what_item_4_refuses_it_refuses_with_a_reason(latex, lets, match):
         rigidsym.check_latex(latex, let=lets)
 
 
-# ------------------------------------------------ item 6: the repair search bounded (issue 52)
+# ------------------------------------------------ item 6: the repair search bounded
 MR_SLIP = (r"e^{[\hat\omega]\theta} = I + \sin\theta\,[\hat\omega]^3 + (1 - \sin\theta)"
            r"[\hat\omega]^2\cos\theta")  # far from Rodrigues: 5000 candidates take ~9 s
 

@@ -1,4 +1,4 @@
-"""Kinematic differential equations of the attitude books (issue 63): ``\\dot C =
+"""Kinematic differential equations of the attitude books: ``\\dot C =
 -[\\omega]_\\times C`` with ``C`` a model in parameters declared functions of time, their
 rates declared (``--let '\\dot{\\mathbf{q}} = ...'``) or free, for classical and modified
 Rodrigues parameters, Euler parameters and two Euler-angle sequences (Schaub & Junkins'

@@ -1,4 +1,4 @@
-"""A reader's LaTeX decided on what it means, never on a guess (issue 40, items 1, 2 and the
+"""A reader's LaTeX decided on what it means, never on a guess (2 and the
 printing half of 5): a matrix word inside a product decided, every undecided verdict with its
 reason in words, function application, sized identities, bad input naming the --let that
 settles a conventional shape, the per-book notations."""
@@ -103,7 +103,7 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
 
 
 def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
-    # issue 40: its reason ("trig of non-angle argument") was only in --json; wave 10: the
+    # its reason ("trig of non-angle argument") was only in --json; wave 10: the
     # norm is written θ u (rigidsym.zero.polar), so J w = w is verified, and J w = 2 w, which
     # does not hold, is undecided with the reason naming the construct
     lets = ["--let", r"w: vector; \theta = \sqrt{w^T w}",
@@ -189,7 +189,7 @@ def test_an_identity_or_zero_with_a_size_subscript(latex, verdict):
 
 def _verdict_or_shapes(latex, let, verdict):
     """The verdict, or ``"shapes"``: sides of different shapes are bad input naming both
-    (issue 62; before, does-not-hold)."""
+    (before, does-not-hold)."""
     if verdict == "shapes":
         with pytest.raises(LatexError, match="differ in shape"):
             rigidsym.check_latex(latex, let=let)
@@ -270,7 +270,7 @@ def test_declared_they_are_decided(latex, let):
 
 
 def test_a_shape_mismatch_of_declared_symbols_is_bad_input_naming_both_shapes():
-    # before issue 62: does-not-hold, a verdict on no equation
+    # before does-not-hold, a verdict on no equation
     with pytest.raises(LatexError, match="a 3-vector = a 3×3 matrix"):
         rigidsym.check_latex(r"\omega = R", let=[r"R: rotation; \omega: vector"])
 
@@ -480,7 +480,7 @@ def _subscript_first(latex: str) -> str:
     (r"x^2_1 = x_1 x_2", [], None, "does-not-hold"),
 ])
 def test_a_superscript_before_a_subscript_reads_as_after_it(latex, let, notation, verdict):
-    r"""An outside trial of 16 books (wave 6): Spong's ``R^T_{k,\theta}`` was a syntax error;
+    r"""An outside trial of 16 books: Spong's ``R^T_{k,\theta}`` was a syntax error;
     in TeX ``X^a_b`` and ``X_b^a`` are one symbol, so the order never changes the verdict
     (R_{z,θ} is a rotation: R^T R = 1 and R_{z,θ}^T = R_{z,-θ}, not R_{z,θ})."""
     r = rigidsym.check_latex(latex, let=let, notation=notation)

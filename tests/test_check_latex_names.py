@@ -1,4 +1,4 @@
-"""Names as the attitude books write them (issue 63, item 2): superscript labels, an accent
+"""Names as the attitude books write them: superscript labels, an accent
 over a subscripted letter either way, Hughes' ``\\epsilon^\\times``, font macros, a declared
 ``e`` before ``^``, functions beside their barred namesakes; an index range as a ``--let``
 NAME refused naming the ``--let`` that settles it; no refusal ends in an empty "expected one

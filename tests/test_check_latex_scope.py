@@ -1,4 +1,4 @@
-"""Scope as the books mean it and no internal error text in a message (issue 62, items 3
+"""Scope as the books mean it and no internal error text in a message (items 3
 and 4): a ``--let`` function's body sees its parameter *and every model built on it*
 re-bound to the argument; a parameter that is also a model, with two readings left, is
 refused naming both; an internal error is one line naming the construct."""
@@ -29,11 +29,11 @@ def test_the_truth_of_the_scope_cases_by_numpy():
 
 
 @pytest.mark.parametrize("latex, verdict", [
-    # before issue 62: does-not-hold (the body's n stayed the global |u|: F(2u) = F(u))
+    # before does-not-hold (the body's n stayed the global |u|: F(2u) = F(u))
     (r"F(2\mathbf{u}) = 4F(\mathbf{u})", "verified"),
     (r"F(2\mathbf{u}) = 2F(\mathbf{u})", "does-not-hold"),
     (r"F(2\mathbf{u}) = 4F(2\mathbf{u})", "does-not-hold"),
-    # before issue 62: verified (a false equation)
+    # before verified (a false equation)
     (r"F(2\mathbf{u}) = F(\mathbf{u})", "does-not-hold"),
     (r"F(-\mathbf{u}) = F(\mathbf{u})", "verified"),
 ])
@@ -99,7 +99,7 @@ def test_an_internal_error_is_one_line_naming_the_construct(monkeypatch, capsys)
      ("a 3×3 matrix", "a 3-vector")),
 ])
 def test_sides_of_different_shapes_are_bad_input_naming_both(latex, lets, shapes, capsys):
-    # before issue 62: does-not-hold (exit 1), a verdict on no equation
+    # before does-not-hold (exit 1), a verdict on no equation
     with pytest.raises(LatexError) as exc:
         rigidsym.check_latex(latex, let=lets)
     assert exc.value.construct == "shapes"
@@ -109,7 +109,7 @@ def test_sides_of_different_shapes_are_bad_input_naming_both(latex, lets, shapes
 
 
 @pytest.mark.parametrize("latex, lets, verdict", [
-    # before issue 62: "noncommutative scalars in MatMul are not supported" (exit 2)
+    # before "noncommutative scalars in MatMul are not supported" (exit 2)
     (r"\det(Q)\,Q = Q", ["Q: rotation"], "verified"),
     (r"\det(Q)\,Q = 2Q", ["Q: rotation"], "does-not-hold"),
     (r"\det(\mathbf{M})\,\mathbf{M}^T = \mathbf{M}^T\det(\mathbf{M}^T)", [r"\mathbf{M}: matrix"],

@@ -1,4 +1,4 @@
-"""The second semantics of ``check --latex`` (issue 62, items 1 and 2): independent of the
+"""The second semantics of ``check --latex``: independent of the
 reader by construction, it agrees with every verdict it covers, and a mistake injected into
 the symbolic path (a function body at the wrong scope, a product read where an application
 was meant, a transposed model, a dropped factor) is refused, never given as a verdict."""
@@ -367,7 +367,7 @@ def test_a_function_of_time_is_fixed_at_the_given_rate(monkeypatch):
 
 def test_a_notation_function_used_only_in_a_models_body_is_taken(monkeypatch):
     # Diebel's R_{123}(φ, θ, ψ) = R_1(φ)R_2(θ)R_3(ψ) given by --let, R_1(α) by the table
-    # (issue 62: the reader took a table's function only where the LaTeX itself applied it)
+    # (the reader took a table's function only where the LaTeX itself applied it)
     from rigidsym.latex import notations
     from rigidsym.latex.lets import read_lets
 

@@ -3,7 +3,7 @@ Attitude Dynamics*; Markley & Crassidis, *Fundamentals of Spacecraft Attitude De
 and Control*; Schaub & Junkins, *Analytical Mechanics of Space Systems*; Wertz, *Spacecraft
 Attitude Determination and Control*; Kuipers, *Quaternions and Rotation Sequences*), typed as
 a reader would, with one-edit slips; each judged against an independent NumPy evaluation
-(``TRUTH``). Before issue 63: 7 right, 14 refused; after: 21 right, none wrong or refused."""
+(``TRUTH``). Before 7 right, 14 refused; after: 21 right, none wrong or refused."""
 
 # ruff: noqa: E501  (a table of the books' LaTeX, one equation a line, as typed)
 from __future__ import annotations

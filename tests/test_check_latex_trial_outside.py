@@ -129,7 +129,7 @@ def test_a_corpus_message_leaks_no_exception_text(eid):
     assert not msg.rstrip().endswith("expected one of:"), msg
 
 
-_REFUSED_FAST = {"msks-epipolar", "sh-gibbs-from-a"}  # still refused as typed (wave 11)
+_REFUSED_FAST = {"msks-epipolar", "sh-gibbs-from-a"}  # still refused as typed
 
 
 @pytest.mark.parametrize("cid", [pytest.param(i, marks=() if i in _REFUSED_FAST

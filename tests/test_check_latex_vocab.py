@@ -217,7 +217,7 @@ def test_two_cross_products_without_parentheses_are_refused(latex, verdict):
      r"\mathbf{c}\times\mathbf{b}", "does-not-hold"),                  # the sign of c x b
 ])
 def test_a_sized_bracket_before_times_is_the_cross_product_matrix(latex, verdict):
-    r"""An outside trial of 16 books (wave 6): ``\left[\mathbf{a}\right]_\times`` was a syntax
+    r"""An outside trial of 16 books: ``\left[\mathbf{a}\right]_\times`` was a syntax
     error, while ``\left(`` already read as ``(``; TeX only draws the brackets taller, so it
     is ``[\mathbf{a}]_\times`` (a x b = -b x a; the matrix is skew; it is linear in a)."""
     assert rigidsym.check_latex(latex).verdict == verdict
@@ -245,7 +245,7 @@ def test_a_sized_bracket_before_times_of_no_3_vector_is_refused(latex, words):
     (r"(AB)^{-T} = B^{-T}A^{-T}", "A: matrix; B: matrix", "does-not-hold"),
 ])
 def test_the_inverse_transpose_of_a_square_matrix(latex, let, verdict):
-    r"""An outside trial of 16 books (wave 6): ``A^{-T}`` was refused unless A was a spatial
+    r"""An outside trial of 16 books: ``A^{-T}`` was refused unless A was a spatial
     transform (Featherstone's dual); of any square matrix it is (A^{-1})^T = (A^T)^{-1}, so
     (AB)^{-T} = (B^{-1}A^{-1})^T = A^{-T}B^{-T}, and a rotation's is the rotation."""
     assert rigidsym.check_latex(latex, let=[let]).verdict == verdict
@@ -283,7 +283,7 @@ _TRIPLE = r"\mathbf{a}\cdot(\mathbf{b}\times\mathbf{c})"
      "does-not-hold"),
 ])
 def test_a_dot_and_a_cross_without_parentheses_read_by_the_shapes(latex, let, verdict):
-    r"""An outside trial of 16 books (wave 6): Goldstein's and Kane's triple product
+    r"""An outside trial of 16 books: Goldstein's and Kane's triple product
     ``\mathbf{a}\cdot\mathbf{b}\times\mathbf{c}`` was read (a · b) × c and refused; of
     3-vectors only a · (b × c) is typed, so it is the reading. The triple product is cyclic
     and changes sign under a swap; Ra · (Rb × Rc) = det(R) a · (b × c)."""

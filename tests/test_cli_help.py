@@ -1,4 +1,4 @@
-"""Help that shows the way (issue 24 item 3): every option has help and its default, the
+"""Help that shows the way: every option has help and its default, the
 top-level help lists the commands one line each with examples, ``rigidsym exercise`` lists
 the exercises without solving any, errors name the next step, piped output is never cut."""
 
@@ -110,7 +110,7 @@ def test_errors_name_the_next_step(argv, hint, capsys):
     (["check", "--latex", "x = x", "--let", "x: rotaton"], "'rotation'"),   # a kind
 ])
 def test_a_mistyped_word_gets_a_did_you_mean(argv, meant, capsys):
-    """Issue 69 item 5: the close matches (difflib) come first, on the one error line."""
+    """the close matches (difflib) come first, on the one error line."""
     with pytest.raises(SystemExit) as exc:
         raise SystemExit(main(argv))
     assert exc.value.code == 2
@@ -172,7 +172,7 @@ def test_a_reader_who_closes_the_pipe_sees_no_traceback():
 
 
 def test_cache_info_lists_the_object_cache(tmp_path, monkeypatch, capsys):
-    """Issue 69 item 5: ``cache info`` lists the C build's object cache, its objects and
+    """``cache info`` lists the C build's object cache, its objects and
     folder, beside the verdicts; and says when it is off."""
     pytest.importorskip("filelock")
     objects = tmp_path / "objs"
@@ -191,7 +191,7 @@ def test_cache_info_lists_the_object_cache(tmp_path, monkeypatch, capsys):
 
 
 def test_build_c_info_says_how_to_watch_pips_compile(capsys):
-    """Issue 69 item 5: pip is silent for the minutes it compiles; ``build-c --info`` (stdout
+    """pip is silent for the minutes it compiles; ``build-c --info`` (stdout
     still one JSON document) says on stderr that ``pip install -v`` shows the progress."""
     assert main(["build-c", "--info"]) == 0
     cap = capsys.readouterr()

@@ -1,4 +1,4 @@
-"""The accuracy rewrites of the code generator (issue 30, rigidsym.codegen.accuracy.rewrites): kept
+"""The accuracy rewrites of the code generator (rigidsym.codegen.accuracy.rewrites): kept
 only when measured more accurate, and only when the zero test decides them equal to the
 declared formula."""
 
@@ -27,7 +27,7 @@ def _improve(name: str):
 
 def test_skew_part_rewrite_is_kept_measured_and_decided():
     before, after, chosen = _improve("screw_of_displacement")
-    # issue 37: the axis point from the skew part (it replaces the declared grouping of p0,
+    # the axis point from the skew part (it replaces the declared grouping of p0,
     # 3 - tr Q with it, wholesale; the rule "1 - cos(phi) from the skew part" of issue 30
     # then finds nothing left)
     assert [c.name for c in chosen] == ["the axis point from the skew part of Q"]
@@ -59,7 +59,7 @@ def test_an_unequal_rewrite_is_refused_by_the_zero_test():
 
 
 def test_powers_by_pow_not_under_a_quotient():
-    """Issue 37: ``1/(x sqrt x)`` rounds three times where ``pow`` rounds once, and the
+    """``1/(x sqrt x)`` rounds three times where ``pow`` rounds once, and the
     meter evaluated every form with sympy's printer (``pow``), so it saw no loss in the
     kernels' printing (wrench_axis' Jacobian 6.7 u where the textbook is 2 u). The rule
     writes the exponent as its float (printed ``pow``); a norm under a function keeps its
@@ -88,7 +88,7 @@ def test_powers_by_pow_not_under_a_quotient():
 
 
 def test_fractions_in_cos_phi_merged_and_decided():
-    """Issue 37: sympy.diff of ``sin phi / (2 - 2 cos phi)`` (the cot(phi/2) of ``e_dot``)
+    """sympy.diff of ``sin phi / (2 - 2 cos phi)`` (the cot(phi/2) of ``e_dot``)
     sums ``cos phi / (2 - 2 cos phi) - 2 sin^2 phi / (2 - 2 cos phi)^2``, which cancel;
     the rule merges the terms of one phi-free factor into their reduced fraction
     ``-1 / (2 - 2 cos phi)`` and leaves a sum it cannot shorten alone."""
@@ -115,7 +115,7 @@ def _ctx(name: str) -> tuple:
 
 
 def test_tan_half_polynomial_exact_off_the_sphere_and_decided():
-    """Issue 37: L_tilde_dot's fractions over ``1 + cos phi`` as the polynomial in ``t =
+    """L_tilde_dot's fractions over ``1 + cos phi`` as the polynomial in ``t =
     tan(phi/2)`` they are, each coefficient homogenised in ``e`` (old main: 6.3 u where the
     textbook is 2.3 u, tests/test_accuracy.py). Equal to the declaration everywhere, off
     the unit sphere too (the harness's unit vectors a few ulps off read the declared

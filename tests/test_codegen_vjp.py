@@ -1,4 +1,4 @@
-"""The generated vector-Jacobian and Jacobian-vector products (issue 38, item 4), without
+"""The generated vector-Jacobian and Jacobian-vector products, without
 the array extras: the reverse- and forward-mode programs of ``rigidsym.codegen.derivatives.vjp``,
 evaluated with NumPy, against the contraction of the generated Jacobian kernel
 (``rigidsym.kernels.jacobian``, sympy's derivative of the declared formula), and their cost

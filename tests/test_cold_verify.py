@@ -1,4 +1,4 @@
-"""The cold path of ``rigidsym verify`` made cheaper (issue 54) without changing what it
+"""The cold path of ``rigidsym verify`` made cheaper without changing what it
 computes: each shortcut gives the very expressions sympy's own route gives."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""A class from a roster (issue 51): an exam per student (name, seed, version printed; a
+"""A class from a roster: an exam per student (name, seed, version printed; a
 different variant of every drawn problem; no answer in the handout), one key, a Moodle XML
 export; ``rigidsym grade`` on a filled answers CSV gives a per-student, per-box CSV
 (points, weights, partial credit, blanks missing, the slip named) and a gradebook, and

@@ -1,4 +1,4 @@
-"""Variants of all 21 exercises (issue 51 item 3), each graded by the grader through the
+"""Variants of all 21 exercises, each graded by the grader through the
 class key's round trip (the record an exam writes, rebuilt by ``solution_of``): the right
 answers typed as ``--set`` types data are right, a changed answer is wrong, a blank is
 missing. The proofs' true-or-false statements are decided by the sound zero test; an

@@ -1,4 +1,4 @@
-"""The C++ layer over the C target (issue 66): ``rigidsym generate --target cpp`` writes
+"""The C++ layer over the C target: ``rigidsym generate --target cpp`` writes
 ``rigidsym_c.hpp`` beside the C, a header-only namespace of functions on Eigen matrices of
 static shape (either storage order) and on nested ``std::array``.
 

@@ -183,7 +183,7 @@ def test_docstring_examples_run(modname):
 
 def test_the_markdown_api_reference_is_fresh():
     """docs/api.md, readable unbuilt, is what docs/make_api_md.py makes of the docstrings
-    now (issue 27 item 7); a stale one names the command that rewrites it."""
+    now; a stale one names the command that rewrites it."""
     pytest.importorskip("sphinx_markdown_builder",
                         reason="sphinx-markdown-builder is not installed (the [docs] extra)")
     sys.path.insert(0, str(DOCS))

@@ -1,6 +1,6 @@
 """The landing page docs/index.md reaches every page of docs/ in one click, as Markdown on
 the repository page (no Sphinx needed; tests/test_docs.py checks the built HTML), and shows
-no Sphinx directive there (issue 69 item 3)."""
+no Sphinx directive there."""
 
 from __future__ import annotations
 

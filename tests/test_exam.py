@@ -1,4 +1,4 @@
-"""Exam sets (issue 32 item 1): a handout and a key from a spec of three problems, the same
+"""Exam sets: a handout and a key from a spec of three problems, the same
 bytes for the same seed, and no answer of the key in the handout."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Random exam variants of every exercise that draws them (issue 32: "n random
+"""Random exam variants of every exercise that draws them ("n random
 well-posed variants of an exercise drawn from a seed with readable exact numbers"): each
 draw is solved and checked, readable (small denominators, short decimals), deterministic
 for its seed, and a handout of one variant of each gives no answer of the key away."""

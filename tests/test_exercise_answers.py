@@ -1,4 +1,4 @@
-"""Exercises 3.7 and 3.12 answer on data the solver once refused (issue 50): parallel
+"""Exercises 3.7 and 3.12 answer on data the solver once refused: parallel
 moments fit one line or two mirror lines; a cut through the top face leaves two parts."""
 
 import subprocess
@@ -111,7 +111,7 @@ def test_ex3_10_evaluated_at_given_angles():
 
 
 def test_ex3_12_principal_check_decides_and_can_fail(monkeypatch):
-    """3.12 checks its principal pairs' formula once, in symbols (issue 50: a draw costs no
+    """3.12 checks its principal pairs' formula once, in symbols (a draw costs no
     minimal polynomial): the formula holds, and a formula with a slip does not pass."""
     import importlib
 

@@ -1,4 +1,4 @@
-"""Exercises on a student's data (issue 22): constructed data with answers known before
+"""Exercises on a student's data: constructed data with answers known before
 solving, measured (float) data, ill-posed data answered with one sentence, bad input.
 
 Each constructed case builds the data *from* the answer (a Cayley rotation, a chosen line,

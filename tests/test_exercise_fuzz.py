@@ -1,4 +1,4 @@
-"""Data never crash (issue 32 item 3): every data string for every exercise with data is
+"""Data never crash: every data string for every exercise with data is
 solved (exit 0), answered as ill-posed (exit 1) or refused as bad input naming the
 parameter (exit 2); never a traceback, never exit 3 (a defect).
 

@@ -1,4 +1,4 @@
-"""The grader names a student's slip (issue 32 item 2): each slip is planted in the right
+"""The grader names a student's slip: each slip is planted in the right
 answer of a variant of its exercise (the expected slip is built here from the exercise's
 physics, not read from the grader), the right answers pass, random ones are "not a known
 slip"; the CLI grades one student (text, JSON) and a class (folder, CSV)."""

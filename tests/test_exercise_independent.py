@@ -1,4 +1,4 @@
-"""Right on any data (issue 50, item 1): each exercise with data, solved on drawn data --
+"""Right on any data: each exercise with data, solved on drawn data --
 degenerate configurations included -- agrees with an independent solution in plain NumPy
 (``tests/_independent``, which never imports rigidsym): the same answers, or a refusal
 exactly where the independent solution finds no answer or more than one.

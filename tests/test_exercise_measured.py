@@ -1,4 +1,4 @@
-"""Measured data (issue 50, item 3): decimals in a measured exercise are readings, judged
+"""Measured data: decimals in a measured exercise are readings, judged
 within a tolerance derived from the digits given (stated); a refusal names the tolerance
 that would accept the data, and that tolerance does accept them."""
 

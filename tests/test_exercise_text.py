@@ -1,4 +1,4 @@
-"""Solutions a student reads (issue 50, items 4-5): every exercise's text output keeps
+"""Solutions a student reads: every exercise's text output keeps
 to 100 columns, shows no internal name, and reads in plain ASCII under --ascii (given
 before or after the command); ``--all --format plain`` lists the answers."""
 

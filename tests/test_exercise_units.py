@@ -1,4 +1,4 @@
-"""Units on a student's data (issue 50, item 2): a unit after the value converts every
+"""Units on a student's data: a unit after the value converts every
 entry exactly (pint); a bare number keeps the documented unit, and an implausible one is
 read as given and warned of, naming the unit assumed."""
 
@@ -54,7 +54,7 @@ def test_bare_millimetres_warn_naming_the_unit(capsys):
 
 
 def test_a_unit_right_after_the_digits_converts_as_with_a_space(capsys):
-    """Issue 50: ``100mm`` as students type it is ``100 mm`` (before: "'mm' is not a name the
+    """``100mm`` as students type it is ``100 mm`` (before: "'mm' is not a name the
     reader knows"); letters that are not a unit are still refused as bad data."""
     assert main(["exercise", "3.19", "--set", "d=0,0,100mm"]) == 0
     with_space = capsys.readouterr().out

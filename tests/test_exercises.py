@@ -63,7 +63,7 @@ def test_cli_single_and_bad_input(capsys):
     assert main(["exercise", "3.99"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("rigidsym: error:")
-    assert main(["exercise"]) == 0  # no id: the list of the exercises (issue 24)
+    assert main(["exercise"]) == 0  # no id: the list of the exercises
     assert capsys.readouterr().out.count("\n  3.") == 21
 
 

@@ -1,4 +1,4 @@
-"""The per-call entry points in C (issue 20): the same bits, errors and NumPy conventions as
+"""The per-call entry points in C: the same bits, errors and NumPy conventions as
 the Python path, which they hand every case they do not take.
 
 The Python path (``KernelSpace.call``) is the reference: it runs the same compiled batch

@@ -2,7 +2,7 @@
 the error against the 50-digit reference evaluated at the *same* float32 inputs.
 
 The C kernels compute in float32 arithmetic, in float64 only for the subexpressions their
-precision plan keeps there (issue 20; rigidsym.codegen.accuracy.float32, named in each generated
+precision plan keeps there (rigidsym.codegen.accuracy.float32, named in each generated
 header). Since issue 37 (item 6) plan and test read the same rule, rigidsym.codegen.accuracy.rule's:
 per output, the normwise relative error within ``max(2 e_ref, 4 u)``, ``e_ref`` the textbook
 formula's error (the declaration, naively, in float32 arithmetic) at the same inputs,
@@ -102,7 +102,7 @@ def _rule_ratio(name, arrays, got, ref):
         return np.where(err == 0, 0.0, err / allowed).max(axis=1)
 
 
-#: Open (issue 37): C float32 rows past the rule at this test's points, each held to its
+#: Open: C float32 rows past the rule at this test's points, each held to its
 #: measured ratio (+10 %). The plans meet the rule at the planner's points; the C float32 code
 #: is compiled without FMA contraction as the planner simulates it (RIGIDSYM_F32_BEGIN; with
 #: contraction instant_screw_axis 1.3, point_acceleration 1.3, wrench_axis 1.4 were open
@@ -132,7 +132,7 @@ def test_float32_error_bound_against_50_digits(name, backend):
 @pytest.mark.slow
 @pytest.mark.parametrize("name", PUBLIC)
 def test_float32_error_bound_1000_points(name):
-    """Issue 20: 1000 random points and the adversarial ones per kernel, compiled float32."""
+    """1000 random points and the adversarial ones per kernel, compiled float32."""
     if K.use_backend("c") != "c":
         pytest.skip("no C backend")
     arrays, ref = _case(name, 1000)
@@ -143,7 +143,7 @@ def test_float32_error_bound_1000_points(name):
     assert r.max() <= limit, f"{name}: {r.max():.3g} of the rule"
 
 
-#: Open (issue 37 item 6): at 1000 points these float32 plans pass max(2 e_ref, 4 u) by
+#: Open: at 1000 points these float32 plans pass max(2 e_ref, 4 u) by
 #: these factors (measured +10 %), the planner's points not covering them; each is held to it.
 #: Compiled with FMA contraction seven were open (instant_screw_axis 3.9, wrench_axis 4.5,
 #: moving_frame_acceleration 1.85, now within 1); without it (RIGIDSYM_F32_BEGIN) four.

@@ -1,4 +1,4 @@
-"""The C blocks' floating-point exception flags (issue 37 item 3): a non-finite output of
+"""The C blocks' floating-point exception flags: a non-finite output of
 finite inputs of ordinary magnitude is caught by the flags its arithmetic raised, which stand
 for the finiteness pass over a block's outputs. A reader's kernel whose powers overflow from
 inputs inside the range test's [2^-100, 2^101) is the case no package kernel has (their

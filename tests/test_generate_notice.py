@@ -1,4 +1,4 @@
-"""``rigidsym generate --target c|cpp --notice TEXT`` (issue 66): the user's generated code
+"""``rigidsym generate --target c|cpp --notice TEXT``: the user's generated code
 carries the user's notice, or none, instead of the rigidsym project's MIT notice."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The generator's shortcuts for time (issue 66: all book kernels <= 60 s cold) compute what
+"""The generator's shortcuts for time (all book kernels <= 60 s cold) compute what
 sympy computes: the math hash as ``srepr`` prints it, lambdify's implemented functions as
 its own walk finds them, and the pool's jobs hold every kernel once, a twin with its kernel;
 a worker renders a kernel's files as the targets do, and the printers order an Add's terms

@@ -1,4 +1,4 @@
-"""Every docs reference a generated file cites resolves (issue 66 item 3): the templates of
+"""Every docs reference a generated file cites resolves: the templates of
 every target and the committed generated folders name ``docs/X.md`` (a file that exists),
 ``docs/X.md#anchor`` or ``docs/X.md, "Heading"`` (a heading of that file: the anchor
 GitHub makes from its text)."""
@@ -60,7 +60,7 @@ def test_the_anchor_is_githubs():
     assert github_anchor("C++") == "c"
     assert github_anchor("How it is measured (`benchmarks/accuracy.py`)") == \
         "how-it-is-measured-benchmarksaccuracypy"
-    assert github_anchor("Never worse than the textbook formula or a peer (issue 37)") == \
+    assert github_anchor("Never worse than the textbook formula or a peer") == \
         "never-worse-than-the-textbook-formula-or-a-peer-issue-37"
 
 

@@ -2,7 +2,7 @@
 
 The default run compares generated/inputs.json (the digests of every input file of the
 generator and of every file it wrote) with the tree: seconds instead of a generation of 70 to
-360 s of CPU (issue 54). The `slow` tests generate again in-process and compare byte for byte
+360 s of CPU. The `slow` tests generate again in-process and compare byte for byte
 (the `--check` logic), regenerate in a fresh process under another PYTHONHASHSEED to prove the
 output does not depend on set iteration order, and check that every module that generation
 imported is among the recorded inputs (the digest rule misses nothing the generator reads).
@@ -87,7 +87,7 @@ def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
                  "rigidsym/codegen/derivatives/jacobians.py"):
         assert must in labels, must
     assert not any(lab.startswith("rigidsym/generated") for lab in labels)
-    # every template the generator's loader can render is an input (issue 53: they live in
+    # every template the generator's loader can render is an input (they live in
     # codegen/backends/<language>/templates/), and none hides another of the same name
     found = [p for folder in TEMPLATES for p in sorted(folder.glob("*.j2"))]
     assert {p.name for p in found} >= {"c_fast.h.j2", "numpy_kernel.py.j2", "api.py.j2"}

@@ -1,4 +1,4 @@
-"""The words (issue 24 item 4): one glossary, in the docs and in the package, that covers
+"""The words: one glossary, in the docs and in the package, that covers
 the words of the verdicts and reports, whose links resolve, and that the HTML report and
 ``rigidsym show`` point to."""
 

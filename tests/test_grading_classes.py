@@ -1,5 +1,5 @@
 """Each exercise's question tests: every member of the key's class is right, every one-edit
-slip is wrong and named, a blank is a blank (issue 64).
+slip is wrong and named, a blank is a blank.
 
 The members are generated here by the group action each answer's meaning allows, written
 in this file (an axis and angle (e, phi) ~ (-e, -phi) and phi + 2 pi k with the Plücker

@@ -70,7 +70,7 @@ def test_the_required_kernels_have_jacobians():
     assert callable(K.jacobian("euler_rate_matrix"))
     for k in KERNELS:
         # per-sample branches: no single ambient derivative, unless each branch is
-        # differentiated with its value (branch_jacobian: the Lie logs, issue 38)
+        # differentiated with its value (branch_jacobian: the Lie logs)
         if k.branches:
             assert (jacobian_name(k.name) in _state.meta()) == k.branch_jacobian, k.name
     assert not any(n.endswith("_with_jacobians") for n in K.KERNEL_NAMES)

@@ -1,4 +1,4 @@
-"""The compiled ``jax.jit`` value + gradient programs of the JAX kernels (issue 38 item 4):
+"""The compiled ``jax.jit`` value + gradient programs of the JAX kernels:
 what XLA computes once, and the gradients' accuracy on cancelling inputs against 50-digit
 references and the textbook formula."""
 

@@ -1,4 +1,4 @@
-"""The JAX kernels (issue 31): the NumPy kernels' values, the generated Jacobians as their
+"""The JAX kernels: the NumPy kernels' values, the generated Jacobians as their
 JVPs (jacfwd, jacrev, grad), check_grads at random points, no NaN gradient within 1e-6 of
 the singular sets, jit / vmap keyword rules, and float64 only under jax_enable_x64."""
 

@@ -31,7 +31,7 @@ AVAILABLE = {k.name: k for k in KERNELS
 PUBLIC = sorted(n for n, k in AVAILABLE.items() if k.public)
 EULER = sorted(n for n, k in AVAILABLE.items() if not k.public)
 ADV_PHI = [1e-12, 1e-8, 1e-4, np.pi - 1e-8]
-#: kernels whose generated formula rests on an identity that holds on SO(3) only (issue 30,
+#: kernels whose generated formula rests on an identity that holds on SO(3) only (
 #: rigidsym.codegen.accuracy.rewrites: 1 - cos phi from the skew part of Q), name -> column of phi
 # in : the flat output. The reference here is the declared formula at the *rounded* Q, off SO(3):
 #: that differs from the problem's answer by the rounding of Q over sin^2(phi) (the loss the

@@ -24,7 +24,7 @@ def test_lists_and_floats_and_broadcasting():
     assert Qs.shape == (2, 5, 3, 3)
     np.testing.assert_allclose(Qs[1, 2], K.rotation_from_natural_invariants(E, phis[1, 2]))
     e2 = np.stack([E, [1.0, 0, 0]])[:, None, :]            # (2, 1, 3) x (4,) -> (2, 4)
-    with pytest.warns(K.BroadcastWarning, match="new batch shape"):   # issue 69: said
+    with pytest.warns(K.BroadcastWarning, match="new batch shape"):   # said
         assert K.rotation_from_natural_invariants(e2, np.ones(4)).shape == (2, 4, 3, 3)
 
 
@@ -122,7 +122,7 @@ def test_fallback_warns_once(monkeypatch):
 
 # (name, argument scaled, scale): finite inputs whose output overflows, one per batch-loop
 # shape of the C template: plain loop (no singular set), counting loop, blocked sin/cos loop
-# (issue 37: plucker_from_points at p1 = 1e308 [1, 0, 0] was here, but its moment is
+# (plucker_from_points at p1 = 1e308 [1, 0, 0] was here, but its moment is
 # |p1| sin(angle) / ... = 1 there: the overflow was spurious, and the rescue now returns it;
 # a Plücker array never overflows. instant_screw_axis's pitch and p0 do: 2.5e309)
 OVERFLOW = [("kinetic_energy", "omega", 1e200), ("instant_screw_axis", "a_dot", 1e308),
@@ -219,7 +219,7 @@ def test_load_other_generated_directory(tmp_path, backend):
 
 @pytest.mark.parametrize("name,arg,scale", OVERFLOW[:1])
 def test_an_unbatched_error_names_no_batch_index(name, arg, scale):
-    """Issue 69 item 5: an unbatched call has no batch index to name (not "[()]")."""
+    """an unbatched call has no batch index to name (not "[()]")."""
     kw = dict({k: np.asarray(v, dtype=float) for k, v in _ARGS[name].items()})
     kw[arg] = kw[arg] * scale
     with pytest.raises(K.NonFiniteResultError) as info:
@@ -229,7 +229,7 @@ def test_an_unbatched_error_names_no_batch_index(name, arg, scale):
 
 
 def test_two_batch_shapes_making_a_new_axis_warn_naming_both(backend):
-    """Issue 69 item 5: e (5, 3) and phi (5, 1) broadcast to batch (5, 5), as NumPy does, with
+    """e (5, 3) and phi (5, 1) broadcast to batch (5, 5), as NumPy does, with
     a BroadcastWarning naming both arguments and their shapes; the values are those of the
     explicit broadcast, which does not warn."""
     e = np.array([[0.0, 0.6, 0.8], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0],

@@ -1,4 +1,4 @@
-"""Property tests over every public kernel (issue 12, item 4).
+"""Property tests over every public kernel.
 
 1. Broadcasting is only bookkeeping: random valid inputs with random broadcastable batch
    shapes give, sample by sample, what a call on that one sample gives, to 4 ulp of the
@@ -103,7 +103,7 @@ def _check_broadcast(name, data):
     rng = np.random.default_rng(data.draw(st.integers(0, 2**32 - 1)))
     inputs = {s["name"]: valid(s, b, rng) for s, b in zip(specs, per, strict=True)}
     batch = np.broadcast_shapes(*per)
-    # issue 69: a warning exactly when the batch holds more samples than any argument's
+    # a warning exactly when the batch holds more samples than any argument's
     new_axis = 0 < int(np.prod(batch)) > max(int(np.prod(b)) for b in per)
     with warnings.catch_warnings(record=True) as rec:
         warnings.simplefilter("always", K.BroadcastWarning)
@@ -292,7 +292,7 @@ def test_common_keywords_validated(threads, exc):
         K.twist_transfer(np.zeros(6), [0, 0, 0], [1, 2, 3], on_singular="ignore")
 
 
-#: the public callables of rigidsym.kernels other than the kernels (issue 37 item 7): a
+#: the public callables of rigidsym.kernels other than the kernels: a
 #: wrong type, shape or dtype is a TypeError/ValueError whose message starts with the
 #: argument's name. Old main: accuracy(True) was a KeyError, accuracy([..]) and
 #: accuracy(np.array(..)) "TypeError: unhashable type", use_backend(1) and jacobian(3) a

@@ -1,4 +1,4 @@
-"""Book notation throughout the terminal (issue 24 items 4-5): ASCII labels and evidence
+"""Book notation throughout the terminal: ASCII labels and evidence
 in the book's Unicode, LaTeX pieces of running text rendered, ``--ascii`` for terminals
 without Unicode, and the book operators printed as operators."""
 

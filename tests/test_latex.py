@@ -1,4 +1,4 @@
-"""The reader of the chapter's LaTeX and the transcription check (issue 29)."""
+"""The reader of the chapter's LaTeX and the transcription check."""
 
 from __future__ import annotations
 
@@ -73,7 +73,7 @@ def test_prose_and_integrals_are_not_parsed_with_their_construct():
         assert t["status"] == "not parsed" and word in t["construct"]
 
 
-# Every book id checked against its LaTeX (issue 29): those left out, with their construct,
+# Every book id checked against its LaTeX: those left out, with their construct,
 # are listed in docs/latex.md; every other id must be machine-checked (a differs is a
 # defect of the declaration or of the glyph table).
 NOT_PARSED = {"thm3.2.1": "prose", "thm3.2.2": "prose", "thm3.3.1": "prose",

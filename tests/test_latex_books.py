@@ -1,4 +1,4 @@
-"""The books' notations in a reader's LaTeX (issue 40, item 3) and the messages that quote
+"""The books' notations in a reader's LaTeX and the messages that quote
 it (item 5): each construct read with its book's meaning, each refusal naming what settles
 it, each error quoting the macro with its boundaries. Every test here fails on the main of
 before issue 40 (the constructs were walls; the messages glued macros: '\\cotfrac')."""
@@ -140,7 +140,7 @@ def test_d_dt_of_dot_and_cross_products_by_the_product_rule(latex, let, verdict)
 
 
 def test_a_derivative_goes_through_the_models_of_its_variable():
-    """A model of a function of time is one too, and a model in v depends on v (issue 52,
+    """A model of a function of time is one too, and a model in v depends on v (
     item 5 (d): found by the metamorphic variant that writes Y for theta): before, d/dt
     and d/d(theta) took Y for a constant and the verdicts flipped."""
     lets = ["Y = Z", r"Z = (\theta)", r"\theta(t): angle"]

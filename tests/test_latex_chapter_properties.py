@@ -1,4 +1,4 @@
-"""Properties of the reader on the chapter's own transcriptions (issue 52, item 5; the 157
+"""Properties of the reader on the chapter's own transcriptions (the 157
 of ``tests/data/latex_parses.json`` that parse): each parses to the same structure (its
 chains in sympy's ``srepr`` and its relation symbols, so the same verdict, which is decided
 from that structure) when it is spelt another equivalent way: spacing around ``=``, ``+``

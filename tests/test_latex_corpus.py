@@ -1,4 +1,4 @@
-"""The corpus of equations from the robotics books (issue 40, item 4): each entry read with
+"""The corpus of equations from the robotics books: each entry read with
 its book's symbol table alone (``tests/data/latex_corpus/``), decided by
 ``rigidsym.check_latex`` and compared with the verdict the corpus's own NumPy evaluation
 confirms at random points.
@@ -34,7 +34,7 @@ QUICK = {"lynch-park-06", "lynch-park-07", "murray-li-sastry-16", "siciliano-12"
          "spong-07", "spong-08", "corke-11", "featherstone-01", "craig-01", "craig-16",
          "barfoot-03", "sola-03", "sola-04", "diebel-11", "shuster-06"}
 
-XFAIL = {  # id -> what is wrong with its reading today (issue 40; remove a line once fixed)
+XFAIL = {  # id -> what is wrong with its reading today (remove a line once fixed)
     "siciliano-09": "unread",  # \boldsymbol{S}(\cdot) an operator: no notation line gives it
 }
 

@@ -1,4 +1,4 @@
-"""Properties of any correct reader, over the corpus (issue 52, item 5): the verdict of an
+"""Properties of any correct reader, over the corpus: the verdict of an
 entry read with its book's table is unchanged when
 
 (a) its ``--let``s come in another order (with two models declared top-down, ``Y = Z``
@@ -366,7 +366,7 @@ def test_the_verdict_is_unchanged_on_every_entry(prop, data, monkeypatch):
         monkeypatch.undo()
     decided = [i for i in ENTRIES if base(i) in ("verified", "does-not-hold")]
     # each property applies to at least 97 % of the decided entries, so at most 3 % of the
-    # variants are skipped (issue 52: at most 5 %); measured on 255: a 250, b 254, c 255,
+    # variants are skipped (at most 5 %); measured on 255: a 250, b 254, c 255,
     # d 250, e 255, 11 of 1,275 skipped (0.9 %; what and why: docs/check-latex.md)
     floor = 0.97
     assert len(ran) >= floor * len(decided), (prop, len(ran), len(decided))

@@ -1,4 +1,4 @@
-"""The acceptance of issue 38 item 2: the Lie-group kernels on all four back-ends (C, NumPy,
+"""The acceptance of the Lie-group kernels on all four back-ends (C, NumPy,
 PyTorch, JAX) at |w| in {0, 1e-12, 1e-8, 1e-4, 1e-2, 1} and at theta -> pi, against the
 declared formulas of ``derivations/lie_maps.py`` evaluated to 50 digits (at w = 0 their
 limit, through a point 1e-30 away): values within 4 u and Jacobians within 8 u (kappa + 1)

@@ -1,4 +1,4 @@
-"""The Jacobian kernels of the branched Lie maps (issue 38 item 2: "each map gets its
+"""The Jacobian kernels of the branched Lie maps ("each map gets its
 Jacobian kernel"): ``rotation_vector_from_rotation_with_jacobians`` and
 ``euler_rodrigues_from_rotation_with_jacobians``, each branch differentiated with its value
 (``Kernel.branch_jacobian``, :mod:`rigidsym.codegen.derivatives.jacobians`).

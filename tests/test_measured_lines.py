@@ -1,4 +1,4 @@
-"""Lines given as measurements (issue 64): Exercise 3.5's Plücker coordinates and 3.7's
+"""Lines given as measurements: Exercise 3.5's Plücker coordinates and 3.7's
 moments written to 6 decimals are judged within the tolerance, not exactly.
 
 The lines are drawn here (a rational unit direction from a Pythagorean quadruple, a point

@@ -1,5 +1,5 @@
 """examples/modern_robotics.py verifies as declared, its slips are repaired by the search,
-and its kernels compute what scipy computes (issue 28, item 6)."""
+and its kernels compute what scipy computes."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""Soundness of the zero test under mutation (issue 21, "Soundness stays first").
+"""Soundness of the zero test under mutation ("Soundness stays first").
 
 For every member the engine verifies, mutants are built by the one edit generator that the
 repair search also uses (:mod:`rigidsym.checking.repairing.mutate`): a term's sign flipped, a

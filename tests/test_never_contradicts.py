@@ -1,4 +1,4 @@
-"""A does-not-hold never contradicts its counterexample (issue 28, item 2).
+"""A does-not-hold never contradicts its counterexample.
 
 A verdict does-not-hold rests on an exact non-zero residual backed by a ball, or on a shape
 mismatch that the shape rules establish from nodes whose shapes they know; a node the
@@ -83,7 +83,7 @@ def test_a_matrix_derivative_inside_an_expression_is_refused():
 @pytest.mark.parametrize("node, word", [
     (sp.exp(theta * Omega), "rigidsym.expm"),
     (sp.Function("f", real=True)(theta), "rigidsym.scalar"),
-    (sp.acot(theta), "rigidsym.atan2"),   # (asin: decided on its principal branch, issue 38)
+    (sp.acot(theta), "rigidsym.atan2"),   # (asin: decided on its principal branch)
 ])
 def test_unknown_nodes_are_refused_naming_the_word(node, word):
     with pytest.raises(BadInput) as err:

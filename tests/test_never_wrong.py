@@ -1,4 +1,4 @@
-"""Kernels never silently wrong (issue 37): never worse than the textbook formula, finite in
+"""Kernels never silently wrong: never worse than the textbook formula, finite in
 finite out over the whole floating range, one NaN policy, the same answer on C and NumPy.
 
 Each test names the defect of the main branch before issue 37 that it caught.

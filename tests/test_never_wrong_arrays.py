@@ -1,4 +1,4 @@
-"""Kernels never silently wrong on PyTorch and JAX (issue 37, items 3 and 4): finite in,
+"""Kernels never silently wrong on PyTorch and JAX: finite in,
 finite out over the whole floating range, ``check=False`` equal to ``check=True`` on valid
 input, and one NaN policy, the same NaN positions as the C and NumPy kernels, on every
 public kernel. Skipped where PyTorch or JAX is not installed.
@@ -337,7 +337,7 @@ def test_subnormal_inputs_arrays(b, dtype):
 
 
 def test_propagates_inf_is_decided_from_the_program():
-    """Issue 38: a traced call leaves inf inputs alone only for a program whose every
+    """a traced call leaves inf inputs alone only for a program whose every
     operation is non-finite wherever an argument is (then its non-finite outputs become
     NaN); a division (1/inf = 0), a negative power, atan2 or an unknown call refuses it.
     The generated programs: the quaternion product propagates, the screw axis (which

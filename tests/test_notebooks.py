@@ -1,4 +1,4 @@
-"""The exercise notebooks (issue 22): generated deterministically, shipped, and runnable.
+"""The exercise notebooks: generated deterministically, shipped, and runnable.
 
 nbclient executes each notebook in a fresh ipykernel: no cell may fail, the solve cell
 must display the solution's HTML (MathML) and the figure cell an SVG figure. Five
@@ -111,7 +111,7 @@ def test_every_notebook_executes(ex_id):
 
 
 def test_a_variants_try_other_data_cell_is_a_second_valid_variant():
-    # issue 32: the book's changes merged into a variant's readings were incompatible
+    # the book's changes merged into a variant's readings were incompatible
     import json
     import re
 

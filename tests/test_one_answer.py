@@ -1,4 +1,4 @@
-"""One answer on every back-end (issue 37): the C kernels compute the program the NumPy
+"""One answer on every back-end: the C kernels compute the program the NumPy
 kernels compute, operation for operation, so where neither calls a library function of its
 own (C's sine and cosine, NumPy's SIMD arctan2, the compensated products: C's hardware fma
 against NumPy's exact emulation), their float64 results are the same bits.

@@ -1,4 +1,4 @@
-"""The figures docs/kernels.md quotes on "one answer on every back-end", re-measured (issue 70,
+"""The figures docs/kernels.md quotes on "one answer on every back-end", re-measured (
 items 4 and 5): a test that fails when the docs' claim drifts.
 
 - float32 on the NumPy fallback: a float32 call is evaluated in float64 and rounded once, the

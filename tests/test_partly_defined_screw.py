@@ -1,4 +1,4 @@
-"""Partly defined outputs of ``screw_of_displacement`` (issue 70, item 2).
+"""Partly defined outputs of ``screw_of_displacement``.
 
 At Q = 1 the displacement is a pure translation by a' - a (or none): phi = 0 is known
 exactly, while the axis, its point and the pitch (infinite, or 0/0 at a' = a) are not

@@ -1,4 +1,4 @@
-"""The peers' table (:mod:`rigidsym.codegen.accuracy.peers`, issue 48 item 2): every adapter
+"""The peers' table (:mod:`rigidsym.codegen.accuracy.peers`): every adapter
 computes its kernel's outputs, and the conventions the adapters rest on (right or left Jacobians,
 ``[v; w]`` or ``[w; v]``, the logarithm's domain) hold numerically, not by belief.
 

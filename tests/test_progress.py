@@ -195,7 +195,7 @@ def test_exercise_all_in_a_pipe(tmp_path):
                        capture_output=True, text=True)
     assert p.stderr.splitlines()[0] == "rigidsym exercise --all: solving 21 exercises ..."
     assert "21 / 21 solved and checked" in p.stderr.splitlines()[1]
-    # a line per exercise (its answers indented under it, issue 50) and the summary
+    # a line per exercise (its answers indented under it) and the summary
     out = p.stdout.splitlines()
     assert [ln.split()[0] for ln in out if not ln.startswith(" ")][:-1] == \
         EXERCISE_IDS

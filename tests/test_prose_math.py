@@ -1,4 +1,4 @@
-"""The ASCII mathematics of the exercises' sentences typeset (issue 69): runs of mathematics
+"""The ASCII mathematics of the exercises' sentences typeset: runs of mathematics
 become inline LaTeX in book notation, which the page's converter turns into MathML; the
 English words stay text. (The whole page in a browser: tests/test_browser.py.)"""
 

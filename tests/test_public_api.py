@@ -20,10 +20,10 @@ DECLARE = [
     "rotation_from_euler_rodrigues", "rotation_from_natural_invariants",
     "rotation_from_quaternion", "scalar", "symmetric_matrix", "trace", "unit_vector",
     "unit_vector4", "vec", "vect", "vector",
-    # issue 28: the vocabulary of rigid motions
+    # the vocabulary of rigid motions
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
     "expm", "logm", "diff", "acos", "atan2", "ORDERS",
-    "norm3",  # issue 38
+    "norm3",
 ]
 KERNELS = [
     "H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_matrix", "L_matrix_dot",
@@ -34,7 +34,7 @@ KERNELS = [
     "rotation_from_euler_rodrigues", "rotation_from_natural_invariants", "screw_axis_point",
     "screw_of_displacement", "twist_transfer", "twist_transfer_matrix", "wrench_axis",
     "wrench_transfer", "wrench_transfer_matrix",
-    # issue 38: the Lie-group maps (their Jacobians through kernels.jacobian(name))
+    # the Lie-group maps (their Jacobians through kernels.jacobian(name))
     "euler_rodrigues_from_rotation", "euler_rodrigues_product",
     "exponential_coordinates_from_transform", "exponential_coordinates_left_jacobian",
     "exponential_coordinates_left_jacobian_inverse", "rotation_from_rotation_vector",
@@ -54,25 +54,25 @@ PUBLIC = {
         "euler_angle_rates", "euler_angles_from_rotation", "euler_rate_matrix",
         "get_num_threads", "jacobian", "load", "release_output_pool",
         "set_num_threads", "set_output_pool", "swap_blocks", "use_backend", *KERNELS],
-    # issue 48: Grouped marks a group the removable-singularity pass never distributes
+    # Grouped marks a group the removable-singularity pass never distributes
     "rigidsym.codegen.spec": ["Arg", "Branch", "Grouped", "Kernel", "Out", "input_symbols"],
     "rigidsym.cli": ["build_parser", "main"],
-    # issue 22: the exercises to run, see and vary
+    # the exercises to run, see and vary
     "rigidsym.exercises": ["EXERCISE_IDS", "Graded", "IllPosed", "Param", "Parameters",
                            "Solution", "exam", "figure", "grade", "parameters", "solve",
-                           "write_notebook"],   # issue 32: exam, grade, Graded
-    # issue 29: the reader of the chapter's LaTeX and the transcription check
+                           "write_notebook"],   # exam, grade, Graded
+    # the reader of the chapter's LaTeX and the transcription check
     "rigidsym.latex": ["Glyph", "LatexError", "Parsed", "Relation", "glyph_table", "lookup",
                        "parse_latex"],
     "rigidsym.latex.transcription": ["STATUSES", "check_transcription", "notes",
                                      "transcription_for", "transcription_words"],
-    # issue 29 item 4: LaTeX in, verdict out (rigidsym.check_latex, rigidsym check --latex)
+    # LaTeX in, verdict out (rigidsym.check_latex, rigidsym check --latex)
     "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "rated_lets", "read_lets",
                             "split_lets"],
 }
 
 
-#: issue 31: the differentiable back-ends, importable where their extra is installed
+#: the differentiable back-ends, importable where their extra is installed
 ARRAY_BACKENDS = ["NonFiniteResultError", "SingularConfigurationError", "euler_angle_rates",
                   "euler_angles_from_rotation", "euler_rate_matrix", "load", *KERNELS]
 EXTRA_PUBLIC = {"rigidsym.kernels.torch": ("torch", ARRAY_BACKENDS),
@@ -122,7 +122,7 @@ def test_old_public_import_paths_keep_working():
 
 
 def test_repair_keywords_and_fields_are_public():
-    """Issue 23: the repair search's keywords and the Result fields it fills."""
+    """the repair search's keywords and the Result fields it fills."""
     import dataclasses
     import inspect
 

@@ -1,6 +1,6 @@
 """The block range test of the generated C (``rigidsym_any_extreme`` in ``c_common.h.j2``) has
-two forms: bit arithmetic on x86-64-v2/v3, max/min reductions under AVX-512 (issue 67). Both
-must give the verdict of its definition (issue 37): an input is extreme when it is not finite,
+two forms: bit arithmetic on x86-64-v2/v3, max/min reductions under AVX-512. Both
+must give the verdict of its definition: an input is extreme when it is not finite,
 or nonzero with magnitude outside [2^-100, 2^101). Checked here against that definition,
 written in Python with floats, over every exponent field, the range's edges, zeros of both
 signs, subnormals, inf and NaN, alone and among ordinary values."""

@@ -1,4 +1,4 @@
-"""No internal name reaches a reader (issue 28, item 3): the rendered text of the chapter's
+"""No internal name reaches a reader: the rendered text of the chapter's
 report (HTML and Markdown), of ``show`` and of a reader's report carries no Python slice,
 no ``_alt``/``_neg``/``2prime`` suffix, no ASCII norm ``||``, no ``Pluecker``, no accent or
 tag spelled out (``adot_perp``, ``e_2prime``) and no underscore name that is not book

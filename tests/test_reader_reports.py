@@ -1,5 +1,5 @@
 """What `show` says of a record: one bound per record, and nothing of a corrected form
-that does not exist (issue 28, item 3)."""
+that does not exist."""
 
 from __future__ import annotations
 

@@ -123,7 +123,7 @@ def test_the_exercises_page_sets_letter_subscripts_too():
     assert "I<sub>C</sub> e<sub>z</sub> = I<sub>zz</sub> e<sub>z</sub>" in page
     assert "I_C_per_kg_m2" in page and "<text>p_C</text>" in page
     shown = (REPORT / "exercises.html").read_text("utf-8")
-    # the page's sentences typeset their mathematics (issue 69): I_C is a MathML subscript
+    # the page's sentences typeset their mathematics: I_C is a MathML subscript
     assert "<msub><mi>I</mi><mrow><mi>C</mi></mrow></msub>" in shown
     text = re.sub(r"<math\b.*?</math>|<svg\b.*?</svg>|<code>.*?</code>", " ", shown, flags=re.S)
     assert "I_C" not in text

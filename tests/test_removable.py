@@ -1,4 +1,4 @@
-"""Removable singularities (issue 38 item 1): the series and certificates of
+"""Removable singularities: the series and certificates of
 codegen.removable.series, the rewrite of codegen.removable.singularities, and the generated
 Lie-group kernels at |w| in {0, 1e-12, 1e-8, 1e-4, 1e-2, 1} against a 50-digit mpmath
 reference.
@@ -78,7 +78,7 @@ def _horner_within(h, cert, bound: float, points: int) -> None:
 
 @pytest.mark.slow
 def test_a_derivative_quotient_switches_where_its_closed_form_is_accurate():
-    """Issue 37: the derivative quotient (s cos s + 2 s - 3 sin s) / s^5 switched at t* = 2,
+    """the derivative quotient (s cos s + 2 s - 3 sin s) / s^5 switched at t* = 2,
     where its closed form cancels (181 u bound): the SE(3) left Jacobian's Jacobian was 9 u
     at |w|^2 just above 2, the textbook 3 u (old main: threshold 2.0, closed64 181). It
     switches at 4 now, its series within 2.5 u there, checked against 50 digits."""

@@ -1,4 +1,4 @@
-"""A property of the repair search (issue 23): a verified identity with one random edit,
+"""A property of the repair search: a verified identity with one random edit,
 drawn from kinds whose inverse is in the vocabulary, is repaired when it stops holding, and
 every repair reported is decided to hold (again, with another seed)."""
 

@@ -1,4 +1,4 @@
-"""The repair search (issue 23): the smallest edits that make a failing member hold.
+"""The repair search: the smallest edits that make a failing member hold.
 
 Slips of every kind of edit the vocabulary can undo (``tests/data/repair_slips.py``); the
 verdict that follows the counterexample; the bounds and words of the search; determinism;

@@ -1,4 +1,4 @@
-"""The repository as a reader meets it (issue 27 item 7): no merge leftovers, a README of at
+"""The repository as a reader meets it: no merge leftovers, a README of at
 most 10 KB that says nothing twice, set-up first, and docs pages that are plain Markdown."""
 
 from __future__ import annotations

@@ -80,7 +80,7 @@ def test_exercise_figure_and_pages_are_0644_and_deterministic(tmp_path, monkeypa
         os.umask(old)
     names = {p.name for p in first}
     assert {"exercises.md", "exercises.html", "ex3_10_condition.svg"} <= names
-    # issue 22: a figure drawn from the solution for each of these exercises
+    # a figure drawn from the solution for each of these exercises
     for k in (1, 2, 4, 5, 6, 7, 10, 11, 12, 19):
         assert any(n.startswith(f"ex3_{k:02d}_") and n.endswith(".svg") for n in names), k
     for a, b in zip(sorted(first), sorted(second), strict=True):
@@ -115,7 +115,7 @@ def test_committed_reports_are_lean():
     if not (COMMITTED / "chapter3.md").exists():
         pytest.skip("no committed report in this checkout")
     # Caps with room, measured on the regenerated report of the repairs branch: Markdown
-    # 132 884 B, JSON 363 882 B, of which the repairs (issue 23: an errata table and each
+    # 132 884 B, JSON 363 882 B, of which the repairs (an errata table and each
     # entry's repairs) are about 5.7 kB and 23 kB and the ball enclosures of issue 21 most of
     # the rest of the growth from 114 336 / 341 618 B. Issue 24 ("first hour") adds the
     # counterexamples in book symbols to the 11 does-not-hold entries, about 2 kB each in

@@ -1,4 +1,4 @@
-"""The reports in the book's notation (issue 24 items 1, 4, 5): no raw LaTeX left as text in
+"""The reports in the book's notation: no raw LaTeX left as text in
 the HTML, evidence with LaTeX as MathML, labels in book notation, the counterexample in book
 symbols with the parametrisation folded away, and the glossary at the end of the page."""
 

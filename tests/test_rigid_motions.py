@@ -1,4 +1,4 @@
-"""The vocabulary of rigid motions against numeric ground truth (issue 28, item 1).
+"""The vocabulary of rigid motions against numeric ground truth.
 
 Each word's model is evaluated at random numbers and compared with what it must equal,
 computed independently: scipy's ``expm`` for the exponentials, numpy's cross product,
@@ -113,7 +113,7 @@ def test_expm_of_a_pure_translation_and_a_free_axis():
     S = sp.Matrix.vstack(sp.zeros(3, 1), e)
     T = expm(th * hat(S))
     assert T[:3, :3] == sp.eye(3) and T[:3, 3] == e * th
-    # a free axis (issue 38): the closed form in the norm theta = |w|, not Rodrigues'
+    # a free axis: the closed form in the norm theta = |w|, not Rodrigues'
     # unit-axis form (which would be false); against scipy's expm at a point
     R = expm(cpm(v))
     vn = {x: c for x, c in zip(v, (0.3, -1.1, 0.7), strict=True)}

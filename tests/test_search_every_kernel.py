@@ -1,4 +1,4 @@
-"""The Herbie-style search over every kernel (issue 48 item 1, acceptance: "the search runs
+"""The Herbie-style search over every kernel ("the search runs
 over every kernel (float64 and float32, C and NumPy; torch and JAX in slow)").
 
 ``tests/test_whole_domain.py`` searches the Lie-group maps, two seeds each; here the same

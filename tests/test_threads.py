@@ -32,7 +32,7 @@ def test_lazy_build_runs_once_under_a_thread_pool(monkeypatch):
         return real(gdir, package)
 
     space = _state.builtin()
-    # the kernels' entry points bind at the first call too (issue 20): unbind them (the
+    # the kernels' entry points bind at the first call too: unbind them (the
     # functions' direct calls of C as well)
     import rigidsym.generated.api as api
 

@@ -1,4 +1,4 @@
-"""The PyTorch kernels (issue 31): the NumPy kernels' values, the generated Jacobians as
+"""The PyTorch kernels: the NumPy kernels' values, the generated Jacobians as
 their derivatives (backward, forward mode, vmap), gradcheck at random points, no NaN
 gradient within 1e-6 of the singular sets, the keyword rules of eager and compiled calls,
 dtypes, broadcasting, devices, and a user directory."""
@@ -121,7 +121,7 @@ def test_forward_mode_and_vmap_use_the_same_jacobian(name):
 @pytest.mark.parametrize("name", ["rotation_vector_left_jacobian_inverse",
                                   "rotation_vector_from_rotation"])
 def test_forward_mode_on_dual_tensors_is_reverse_mode(name):
-    """Issue 70 item 5: forward-mode AD on dual tensors (torch.autograd.forward_ad, outside
+    """forward-mode AD on dual tensors (torch.autograd.forward_ad, outside
     torch.func) through a kernel whose eager autograd class saves the forward's temps for
     its backward (no jvp of its own: the call takes the class with the generated jvp) and
     through one without saved temps: the tangents are the reverse-mode Jacobian (one
@@ -239,7 +239,7 @@ def test_float32_broadcasting_and_double_backward():
     assert out.dtype == torch.float32 and tuple(out.shape) == (2, 5, 6)
     ref = K.twist_transfer(t.double().numpy(), a.double().numpy(), p.double().numpy())
     np.testing.assert_allclose(out.numpy(), ref, rtol=1e-5, atol=1e-5)
-    # double backward (issue 38; old main refused create_graph=True): T = x.x/2 + m x.x/2
+    # double backward (old main refused create_graph=True): T = x.x/2 + m x.x/2
     # with I = 1 and m = 2 has the Hessian 3 * 1 at every x
     x = torch.tensor(rng.standard_normal(3), requires_grad=True)
     T = rk.kinetic_energy(torch.eye(3, dtype=torch.float64), 2.0, x, x)
@@ -396,7 +396,7 @@ def test_inside_a_module_with_its_own_parameters():
 
 
 def test_backward_reuses_the_forward_temps():
-    """Issue 38 item 4: the eager backward takes the temps of the forward that the
+    """the eager backward takes the temps of the forward that the
     generated VJP reads (saved by autograd) instead of computing them again. Old main's
     backward of Rodrigues' formula computed the sine of phi / 2 again (one aten::sin,
     two aten::cos); now none (the regenerated forward names its cosine too). The
@@ -427,7 +427,7 @@ def test_backward_reuses_the_forward_temps():
 
 @pytest.mark.parametrize("dtype", [torch.float64, torch.float32])
 def test_the_cpu_route_is_the_torch_program_bit_for_bit(dtype):
-    """Issue 38 item 4: eager value + gradient on CPU tensors runs the generated forward
+    """eager value + gradient on CPU tensors runs the generated forward
     and VJP on NumPy views (``kernels._torch_host``, a fixed cost per operation ~2.5x
     lower at N = 1e3). Its values, singular masks, saved temps and input cotangents are
     those of the PyTorch programs bit for bit, on every kernel that has the programs,
@@ -463,7 +463,7 @@ def test_the_cpu_route_is_the_torch_program_bit_for_bit(dtype):
 
 
 def test_backward_takes_the_compensated_sums_from_the_forward():
-    """Issue 38 item 4: the backward (``_vjp_saved``, eager and compiled) computes no
+    """the backward (``_vjp_saved``, eager and compiled) computes no
     compensated sum of products (``_sumprod``, ``_diffprod``: ~65 operations for the pitch
     of instant_screw_axis, which old main's VJP computed again, its first torch.compile
     1.6-2x the hand's); the forward names each one and saves it. Counted by wrapping the
@@ -495,7 +495,7 @@ def test_backward_takes_the_compensated_sums_from_the_forward():
 
 @pytest.mark.slow
 def test_compiled_masked_row_has_zero_gradient():
-    """Issue 38: under torch.compile the backward takes the temps its forward saved
+    """under torch.compile the backward takes the temps its forward saved
     (``_torch_compiled.compiled_saving``) and sets the input cotangents of a masked sample
     to zero after the VJP (NaN there, 0 * inf), so its gradient is exactly 0 and a
     parameter the batch shares stays finite, equal to eager autograd's."""

@@ -1,4 +1,4 @@
-"""Gradients of the PyTorch kernels within 1e-6 of the singular sets (issue 31, item 4).
+"""Gradients of the PyTorch kernels within 1e-6 of the singular sets.
 
 Two checks at the probes of ``tests/_arrays_cases.py`` (phi -> 0 or pi, ||omega|| -> 0,
 p2 -> p1, f -> 0, Q -> 1 and pi, Euler angles at gimbal lock; float64):

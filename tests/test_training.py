@@ -70,7 +70,7 @@ def test_quaternion_network_trains(ex):
 
 
 def test_the_readmes_pytorch_example_runs_and_fits_the_motion():
-    # the README's PyTorch example is this training loop (issue 38 item 6): run as printed
+    # the README's PyTorch example is this training loop: run as printed
     torch = pytest.importorskip("torch", reason="needs the [torch] extra")
     text = (_EX.parents[1] / "README.md").read_text()
     block = re.search(r"\n((?:    .*\n|\n)*?    import torch\n(?:    .*\n|\n)*?)\S", text)

@@ -238,7 +238,7 @@ def test_report_and_generate_for_a_user_module(tmp_path, capsys):
     c_text = (gen / "c" / "doubled_value.c").read_text()
     assert "source: kern.doubled (composed in kern)" in c_text
     assert "derivations" not in c_text
-    # issue 31: the PyTorch and JAX programs too, from the same optimised program
+    # the PyTorch and JAX programs too, from the same optimised program
     for backend in ("torch", "jax"):
         text = (gen / backend / "doubled_value.py").read_text()
         assert "source: kern.doubled (composed in kern)" in text and "2.0*x" in text

@@ -17,7 +17,7 @@ import sympy as sp
 
 REPO = Path(__file__).resolve().parents[1]
 #: one xdist worker builds the wheel and runs every test of it (``--dist loadgroup``).
-#: ``slow`` (issue 54): building the wheel recompiles the 444 objects wherever the object
+#: ``slow``: building the wheel recompiles the 444 objects wherever the object
 #: cache misses (281 s of the default run on a newcomer's cold machine); .ci/run's slow part
 #: builds it, and the editable install of the README's command already compiles the same C.
 pytestmark = [pytest.mark.xdist_group("wheel"), pytest.mark.slow]
@@ -68,7 +68,7 @@ def test_the_wheel_has_one_top_level_package(wheel):
 
 
 def test_wheel_ships_every_template(wheel):
-    """Issue 53: the generator's templates moved to codegen/backends/<target>/templates/;
+    """the generator's templates moved to codegen/backends/<target>/templates/;
     the wheel carries every one of the checkout's (``generate`` and ``--target c`` from an
     installed package need them), the report's too."""
     with zipfile.ZipFile(wheel) as z:
@@ -163,7 +163,7 @@ np.savez("outputs.npz", Q=k.rodrigues_rotation(d["e"], d["phi"]),
         np.testing.assert_allclose(got["eta"][i], want, rtol=0, atol=1e-14)
 
 
-# -- issue 19: the wheel carries the compiled kernels; nothing is compiled at run time -----
+# -- the wheel carries the compiled kernels; nothing is compiled at run time -----
 
 _FIRST_CALL = """
 from rigidsym import kernels
@@ -249,7 +249,7 @@ print(k._SPACE.backend(), float(Q[0, 1]))
 
 
 def test_wheel_ships_the_exercise_notebooks(wheel, installed, tmp_path):
-    """Issue 22: the 21 notebooks are package data, and an installed wheel writes one."""
+    """the 21 notebooks are package data, and an installed wheel writes one."""
     with zipfile.ZipFile(wheel) as z:
         names = set(z.namelist())
     for k in range(1, 22):
@@ -261,7 +261,7 @@ def test_wheel_ships_the_exercise_notebooks(wheel, installed, tmp_path):
 
 
 def test_wheel_ships_the_torch_and_jax_programs(wheel):
-    """Issue 31: generated/torch and generated/jax are package data, one program per kernel
+    """generated/torch and generated/jax are package data, one program per kernel
     (and per Jacobian kernel), as generated/numpy."""
     with zipfile.ZipFile(wheel) as z:
         names = set(z.namelist())
@@ -274,7 +274,7 @@ def test_wheel_ships_the_torch_and_jax_programs(wheel):
 
 
 def test_wheel_ships_the_latex_reader(wheel):
-    """Issue 29: the grammar, the glyph table and the per-id notes are package data."""
+    """the grammar, the glyph table and the per-id notes are package data."""
     with zipfile.ZipFile(wheel) as z:
         names = set(z.namelist())
     for f in ("grammar.lark", "glyphs.csv", "notes.json", "transformer/chapter.py",

@@ -1,4 +1,4 @@
-"""Kernels right over their whole domain (issue 48): the cases an outside audit found where
+"""Kernels right over their whole domain: the cases an outside audit found where
 no regime of the harness looked.
 
 1. The inverse Jacobians near ``|w| = 2 pi k``: the closed form above the removable series
@@ -346,7 +346,7 @@ def test_20000_rows_near_2pi_k_c_equals_numpy_on_nan():
 
 #: (kernel, point, the rule ratio on main where it was found, float type): c68045c for the
 #: first four; d987a31e for the SE(3) Jacobian's and the inverse's at |w| ~ 200 .. 240,
-#: where Barfoot's Q cancelled (issue 48: lie_maps.se3_q_block now writes it without)
+#: where Barfoot's Q cancelled (lie_maps.se3_q_block now writes it without)
 SEARCHED = [
     ("rotation_vector_left_jacobian_inverse",
      [[0.005347627677738755, -0.023251940379964108, -6.686345435212432]], 1.12, "float64"),
@@ -373,7 +373,7 @@ SEARCHED = [
     ("exponential_coordinates_left_jacobian_inverse",
      [[0.436380335850562, -3.793315210194787, -242.45010759734396, 145.3209406391041,
        -0.6470304241294565, 17.431943554373824]], 1.68, "float64"),
-    # issue 48 item 2: the slow search with every peer judging (Pinocchio's exp6 4.4 u,
+    # the slow search with every peer judging (Pinocchio's exp6 4.4 u,
     # jaxlie 3.8 u; the kernel 16 u, its cloud median 3.7 times theirs) before J_l(w) v was
     # written without its cancellation (lie_maps.rotation_vector_left_jacobian_times)
     ("transform_from_exponential_coordinates",
@@ -446,7 +446,7 @@ SEARCH_OPEN = {
         "the rule) the cloud's medians are 5.4 u (R, absolute) and 7.7 u (p) against the "
         "float32 textbook's 1.7 u and 2.3 u, 1.16 still; the seeds' searches now find 0.56 "
         "and 0.99, seeds 5 and 7 1.3 and 2.7 at |w| = 122, 179 (main: 2.3 at the latter); "
-        "J_l(w) v, which lost theta relative there, no longer does (issue 48)"}
+        "J_l(w) v, which lost theta relative there, no longer does"}
 
 
 @pytest.mark.slow

@@ -1,4 +1,4 @@
-"""Counted, not timed (issue 39): the work a command does, from the counts it writes
+"""Counted, not timed: the work a command does, from the counts it writes
 (:mod:`rigidsym.core.work`): a warm ``verify --json`` builds no declaration, a cold one builds
 each once, a change to one module rebuilds that module's ids only.
 

@@ -88,7 +88,7 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
                                   cache=cache))
 
 
-#: the default time limit of check_latex's repair search, seconds (issue 52, item 6)
+#: the default time limit of check_latex's repair search, seconds
 REPAIR_SECONDS = 10.0
 
 
@@ -123,7 +123,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         repair_budget: candidates tried per failing relation (``None``: 5000).
         repair_seconds: a time limit of the repair search in seconds (default
             :data:`REPAIR_SECONDS`, 10; ``None``: none): past it the verdict is given with
-            "search stopped after N s, K candidates tried" (issue 52).
+            "search stopped after N s, K candidates tried".
         notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
             ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
             ``"sola"``, ``"corke"``: ``rigidsym.latex.notations.NOTATIONS``): what its
@@ -175,7 +175,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
 
     _repair_args(repairs, repair_budget)
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
-    latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power (issue 63)
+    latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     for note in (labels, tilde, respelt):
@@ -187,7 +187,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
     from rigidsym.latex.crosscheck import cross_check, given_point
 
-    # issue 62: a verdict needs the second, independent semantics to agree (a does-not-hold
+    # a verdict needs the second, independent semantics to agree (a does-not-hold
     # at the symbolic path's own counterexample, handed over as plain data)
     at = given_point(r.counterexample, reading.eq.build(), reading.symbols) \
         if r.verdict == "does-not-hold" else None
@@ -202,7 +202,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
 
 
 def _readings_agree(reading, first, others) -> None:
-    """Issue 52, item 2: the verdict of every reading that type-checks, or bad input naming
+    """the verdict of every reading that type-checks, or bad input naming
     the choice, each reading's verdict and the ``--let`` that settles it."""
     from rigidsym.core.errors import BadInput
 

@@ -17,7 +17,7 @@ All of it is re-exported from :mod:`rigidsym` (``from rigidsym import equation, 
   :func:`rotation_from_natural_invariants` (2.49), :func:`rotation_from_euler_rodrigues`,
   :func:`rotation_from_quaternion`, :func:`linear_invariants`,
   :func:`euler_rodrigues_parameters`.
-- Rigid motions (Modern Robotics ch. 3, Murray-Li-Sastry ch. 2; issue 28): :func:`twist`,
+- Rigid motions (Modern Robotics ch. 3, Murray-Li-Sastry ch. 2): :func:`twist`,
   :func:`wrench`, :func:`hat`, :func:`vee`, :func:`transform`, :func:`transform_inverse`,
   :func:`Ad`, :func:`ad`, :func:`ad_dual` (6-vector orders named per word, :data:`ORDERS`),
   :func:`expm`, :func:`logm`, :func:`diff`, :data:`acos`, :data:`atan2` and
@@ -84,10 +84,10 @@ __all__ = [
     "rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
     "rotation_from_quaternion", "linear_invariants", "euler_rodrigues_parameters",
     "as_vector", "block", "eye3", "cancel_matrix",
-    # the vocabulary of rigid motions (issue 28; rigidsym.algebra.rigid_motions)
+    # the vocabulary of rigid motions (rigidsym.algebra.rigid_motions)
     "twist", "wrench", "hat", "vee", "transform", "transform_inverse", "Ad", "ad", "ad_dual",
     "expm", "logm", "diff", "acos", "atan2", "ORDERS",
-    # issue 38: the angle of a rotation vector, read through w = theta e by the zero test
+    # the angle of a rotation vector, read through w = theta e by the zero test
     "norm3",
 ]
 

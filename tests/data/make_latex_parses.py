@@ -1,7 +1,7 @@
 """Write ``latex_parses.json``: for each chapter id whose LaTeX parses, a hash of what
 ``parse_latex(latex, section)`` builds (its chains in sympy's ``srepr`` and its readings),
 so a change to the grammar or the tokenizer is tested to leave every parse as it was
-(issue 40: "every chapter id that parses today parses to the same structure").
+("every chapter id that parses today parses to the same structure").
 Run: ``python tests/data/make_latex_parses.py`` (only to record a deliberate change)."""
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 and examples/rotation_identities.py) as tests/data/verdict_snapshot.json.
 
 Run from the repository root: ``python tests/data/make_verdict_snapshot.py OUT.json``.
-The committed snapshot was taken on the engine before python-flint (issue 21); the test
+The committed snapshot was taken on the engine before python-flint; the test
 ``tests/test_verdict_snapshot.py`` holds the current engine to it (same verdicts, bounds
 no higher).
 """

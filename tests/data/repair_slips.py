@@ -1,4 +1,4 @@
-"""Slips the repair search must undo: three per kind of edit in its vocabulary (issue 23).
+"""Slips the repair search must undo: three per kind of edit in its vocabulary.
 
 Each slip is a true identity of rotations or of a rigid motion with one edit made to it;
 ``corrected=`` is the identity, and ``KIND[id]`` the kind of edit that undoes the slip. The

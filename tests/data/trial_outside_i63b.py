@@ -1,5 +1,5 @@
 # ruff: noqa: E501 - the LaTeX of a book equation is one line, as typed
-"""Issue 63's second outside trial (wave 11): 40 equations from six books, typed from memory.
+"""Issue 63's second outside trial: 40 equations from six books, typed from memory.
 
 Books (none named by the LaTeX corpus, any test, docs/check-latex.md or the first trial,
 ``trial_outside_i63.py``): Wie, *Space Vehicle Dynamics and Control* (1998); Wittenburg,

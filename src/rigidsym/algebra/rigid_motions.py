@@ -366,7 +366,7 @@ def exp_explicit(X, lin: int = 0, theta=None, unit: bool = False) -> sp.Matrix:
 
     An axis not known to be unit (a free rotation vector ``w``, a kernel's unconstrained
     input) takes the closed forms in the norm ``theta = sqrt(w^T w)``
-    (:func:`exp_of_vector`, issue 38), singular as printed at
+    (:func:`exp_of_vector`), singular as printed at
     ``w = 0`` only: a removable singularity (:mod:`rigidsym.codegen.removable.singularities`).
     """
     if theta is None:

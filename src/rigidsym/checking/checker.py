@@ -76,7 +76,7 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
     counterexample is described in the book symbols of ``st`` when it is given."""
     try:
         ls, rs = shape_of(rel.lhs), shape_of(rel.rhs)
-    except UnknownShape as exc:  # a guessed shape is never evidence (issue 28)
+    except UnknownShape as exc:  # a guessed shape is never evidence
         return _RelOutcome(None, "undecided", str(exc), None, rel.label)
     lhs, rhs = explicit(rel.lhs, model), explicit(rel.rhs, model)
     if ls != rs and shape_of(lhs) == shape_of(rhs):
@@ -107,7 +107,7 @@ def decide_rel(rel: Rel, model: dict, seed: int, st: Statement | None = None) ->
     alts = cases(lhs, rhs)  # acos/atan2 on their principal branches (branches.py)
     if alts == [(lhs, rhs, lhs, rhs, {})]:
         return _decide_case(rel, lhs, rhs, lhs, rhs, seed, describe)
-    # a split case is described in the reader's angle (a = s b), never in b (issue 28)
+    # a split case is described in the reader's angle (a = s b), never in b
     outs = [_decide_case(rel, *alt[:4], seed, None if describe is None else
                          (lambda plan, pt, sub=alt[4]: describe(plan, pt, sub)))
             for alt in alts]
@@ -337,7 +337,7 @@ def _numeric(verdict: str, detail: str, rels: list[Rel], decisive: bool, model: 
                                                        model, seed)
                 certified = certified and ok
         if verdict == "does-not-hold" and not decisive:
-            # no corrected form: the printed form's points say nothing of one (issue 28);
+            # no corrected form: the printed form's points say nothing of one;
             # the ball at the counterexample is the certificate
             numeric["enclosure"] = None
             certified = bool(bad and bad.ball and bad.ball[0])

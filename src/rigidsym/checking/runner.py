@@ -21,7 +21,7 @@ __all__ = ["run_checks", "check_cached", "verdict_words", "Extra"]
 
 @dataclass(frozen=True)
 class Extra:
-    """Work per id done beside its verdict, in the worker that built the id (issue 39: the
+    """Work per id done beside its verdict, in the worker that built the id (the
     transcription record), so that the parent never builds a declaration again.
 
     Attributes:
@@ -77,7 +77,7 @@ def _decide(eq_id: str, settings: RepairSettings, expanded: bool, key: str | Non
         if hit is not None:
             return hit
         r = _check_one(eq_id, settings, expanded)
-        verdict_cache.store([r], {eq_id: key})  # per id: an interrupt keeps it (issue 69)
+        verdict_cache.store([r], {eq_id: key})  # per id: an interrupt keeps it
         return r
 
 
@@ -85,7 +85,7 @@ def check_cached(eq_id: str, repairs: bool = True, repair_budget: int | None = N
                  expanded: bool = True, cache: bool = True):
     """One id through the verdict cache (``rigidsym show``, :func:`rigidsym.api.check`):
     read where ``verdict``, ``report`` or an earlier call stored it under the same key,
-    else checked and stored (issue 69: one store of decided work).
+    else checked and stored (one store of decided work).
 
     Args:
         eq_id: a registered id.
@@ -175,7 +175,7 @@ class _Estimate:
 
     def _rates(self) -> tuple[float, float]:
         """``(scale, mean)`` as of the ids finished so far, computed once per finished id
-        (issue 39: once per id and per progress tick, 20 times a second, it took a second of
+        (once per id and per progress tick, 20 times a second, it took a second of
         the parent's CPU in a cold chapter run, beside the workers, and 33 s on a loaded
         machine)."""
         n = len(self.actual)

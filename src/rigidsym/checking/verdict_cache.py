@@ -158,7 +158,7 @@ def _declaration_parts(eq_id: str, deps: dict | None) -> list[str] | None:
         return None
     if eq.module == _config.BOOK or eq.module.startswith(_config.BOOK + "."):
         # the declaring module and the book modules it imports: an edit elsewhere in the
-        # book leaves its verdicts cached (issue 39)
+        # book leaves its verdicts cached
         files: dict | None = dict(_sources.book_module_files(eq.module))
     else:
         deps = {} if deps is None else deps
@@ -180,7 +180,7 @@ def _digest(parts: list[str], eq_id: str) -> str:
         h.update(part.encode() + b"\0")
     # version 2: no back-references, whose use depends on reference counts at the time
     # (a key computed after a check differed from one computed before it)
-    # version 3 (issue 69): without the file's path, which an install moves
+    # version 3: without the file's path, which an install moves
     h.update(_sources.code_bytes(REGISTRY[eq_id].build_fn.__code__))
     return h.hexdigest()
 
@@ -220,7 +220,7 @@ def known_to_build(ids: tuple[str, ...]) -> set[str]:
 
 
 def transcription_key(eq_id: str, _deps: dict | None = None) -> str | None:
-    """The cache key of ``eq_id``'s transcription record (issue 39): what
+    """The cache key of ``eq_id``'s transcription record: what
     :func:`key_of` covers but the engine's and the repair search's settings, which a
     transcription does not depend on; found without building the declaration. ``None``
     when it must not be cached.
@@ -239,14 +239,14 @@ def _path(key: str) -> Path:
 
 def present(keys: dict) -> int:
     """How many of ``keys`` (``id -> key``, ``None``: never cached) have an entry stored
-    (what an interrupted run kept, issue 69)."""
+    (what an interrupted run kept)."""
     return sum(1 for k in keys.values() if k and _path(k).exists())
 
 
 @contextmanager
 def claimed(key: str, wait: bool = True) -> Iterator[bool]:
     """Hold the lock of one key while its id is decided and stored, so that two processes
-    share the work rather than both doing it (issue 69): ``<verdicts>/ab/<key>.lock``,
+    share the work rather than both doing it: ``<verdicts>/ab/<key>.lock``,
     locked with ``flock``, which the system releases when the holder exits or is killed.
 
     Args:

@@ -3,7 +3,7 @@ build-c, audit, cache, glossary.
 
 Exit codes: 0 = all as expected, 1 = some computed verdict differs from its expectation,
 2 = bad input (a one-line message naming what was expected and, where there is one, the
-next step), 130 = interrupted (SIGINT or SIGTERM: one line saying what was kept, issue 69).
+next step), 130 = interrupted (SIGINT or SIGTERM: one line saying what was kept).
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import sys
 
 def _loading(signum, frame) -> None:  # noqa: ARG001 - a signal handler's signature
     """SIGINT or SIGTERM while the command loads, before :func:`main` runs: nothing was
-    done yet; one line, exit 130, no traceback (issue 69)."""
+    done yet; one line, exit 130, no traceback."""
     os.write(2, b"rigidsym: interrupted while starting; nothing was done\n")
     os._exit(130)
 

@@ -1,4 +1,4 @@
-"""``rigidsym check --latex``: LaTeX in, verdict out, for anyone's equations (issue 29)."""
+"""``rigidsym check --latex``: LaTeX in, verdict out, for anyone's equations."""
 
 from __future__ import annotations
 
@@ -78,7 +78,7 @@ def run(args) -> int:
             r, reading = check_latex_run(args.latex, args.let, args.book, args.module or (),
                                       opts["repairs"], opts["repair_budget"], args.notation,
                                       args.repair_seconds)
-            ph.finish(f"{r.id} {r.verdict}")  # an ad-hoc check expects nothing (issue 52)
+            ph.finish(f"{r.id} {r.verdict}")  # an ad-hoc check expects nothing
     except LatexError as exc:
         print(f"rigidsym: error: --latex: {exc}", file=sys.stderr)
         return 2

@@ -126,7 +126,7 @@ def run(args) -> int:
                 ph.advance(1, label=f"wrote {name}")
         from rigidsym.course import rendered
 
-        if rendered() is None:  # else nothing they depend on changed (issue 39)
+        if rendered() is None:  # else nothing they depend on changed
             _solve_exercises(rep)
         with rep.phase("rendering and writing the exercises (Markdown, HTML, figures)") as ph:
             more = write_exercises(out)

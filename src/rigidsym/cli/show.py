@@ -38,7 +38,7 @@ def add_arguments(s) -> None:
 
 
 def reader_path(path: str, cwd: str | None = None) -> str:
-    """A path a reader can use (issue 28): relative to ``cwd`` when the file lies under
+    """A path a reader can use: relative to ``cwd`` when the file lies under
     it (``examples/rot.py``); a file of the installed package as ``rigidsym/...``
     (``rigidsym/derivations/sec3_2.py``); else the absolute path, never a relative one
     that climbs out (``../../work/...``)."""

@@ -189,7 +189,7 @@ def run(args) -> int:
     ids = select_with_modules(args.ids, args.section, args.module)
     fmt = output_format(args)
     # a JSON document carries the transcription records: computed beside the verdicts in
-    # the workers that build the declarations, never built again here (issue 39)
+    # the workers that build the declarations, never built again here
     extra = transcription_extra() if args.json or fmt == "json" else None
     t0 = time.perf_counter()
     results = run_checks(ids, jobs=args.jobs, progress=not args.quiet,

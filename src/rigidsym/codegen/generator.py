@@ -401,7 +401,7 @@ def render(done: list[KernelCode], rendered: dict, origin: str = BOOK_ORIGIN,
     files["kernels.json"] = json.dumps({"generator": ver, "kernels": metas},
                                        indent=1, sort_keys=True) + "\n"
     if book:
-        # what the default test run compares instead of generating again (issue 54)
+        # what the default test run compares instead of generating again
         files[inputs.MANIFEST] = inputs.render(files)
     return GenerationResult(dict(sorted(files.items())), done, rendered)
 

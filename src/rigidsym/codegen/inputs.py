@@ -1,6 +1,6 @@
 """What ``generated/`` is made from: the source files of ``rigidsym generate`` and their digests.
 
-A full generation takes 70 to 360 s of CPU (issue 54), too much for the default test run. The
+A full generation takes 70 to 360 s of CPU, too much for the default test run. The
 generator therefore records, in ``generated/inputs.json``, the SHA-256 of every file that can
 decide its output and of every file it wrote. The default run compares those digests with
 the tree (seconds); a ``slow`` test still regenerates everything and compares byte for byte.

@@ -34,7 +34,7 @@ __all__ = ["COS_FORMS", "half_angle_optims", "Program", "compile_program", "math
 #: the forms of a bare ``cos phi`` from ``s = sin(phi/2)``, ``c = cos(phi/2)`` (each rounded,
 #: relative error about u/2). ``1 - 2 s^2`` is off by about 3 u absolute near pi, where
 #: ``cos phi`` itself (libm, the textbook) is off by u/2: the error of ``s^2`` (1.5 u) twice
-#: (issue 37: L_matrix 5.2 u near pi where the textbook is 2-4 u). ``2 c^2 - 1`` is the
+#: (L_matrix 5.2 u near pi where the textbook is 2-4 u). ``2 c^2 - 1`` is the
 #: mirror image (accurate near pi, 3 u near 0); the piecewise form takes the better of the
 #: two (at most about 1.5 u); ``(c - s)(c + s)`` has no branch (at most about 2.5 u).
 COS_FORMS = {

@@ -209,7 +209,7 @@ def flatten_outputs(kernel: Kernel, values: dict) -> list[sp.Expr]:
 class Grouped(sp.UnevaluatedExpr):
     """A sub-expression the removable-singularity pass
     (:mod:`rigidsym.codegen.removable.singularities`)
-    rewrites alone and never distributes into the monomials around it (issue 48: the SE(3)
+    rewrites alone and never distributes into the monomials around it (the SE(3)
     inverse Jacobian's 3 x 3 matrix products, which distributed into monomials of degree 9 in
     ``w`` lost up to 470 times the rule at large ``|w|``); that pass removes the marks from
     what it returns, so the program keeps the grouping as its structure and nothing after it

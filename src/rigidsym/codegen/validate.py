@@ -1,4 +1,4 @@
-"""A user's kernel declarations checked before generation (issue 53 item 7): errors a user
+"""A user's kernel declarations checked before generation: errors a user
 can act on, one line each, naming the module, the kernel and the symbol, and a warning for a
 division by an argument that can vanish.
 

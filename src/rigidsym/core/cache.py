@@ -4,7 +4,7 @@ Layout (``RIGIDSYM_CACHE``, else ``$XDG_CACHE_HOME/rigidsym``, else ``~/.cache/r
 
     <root>/kernels/    compiled C kernels (rigidsym.kernels.cbuild.driver)
     <root>/verdicts/   checked results (the verdict cache)
-    <root>/latex/      the LaTeX grammar's LALR analysis (lark's own cache=, issue 40)
+    <root>/latex/      the LaTeX grammar's LALR analysis (lark's own cache=)
     <root>/statements/ the book declarations' built statements
                        (rigidsym.registry.statement_cache)
     <root>/codegen/    derived kernels, by the digest of their inputs (rigidsym.codegen.inputs)
@@ -16,7 +16,7 @@ a rename, so a reader never sees half an entry). :func:`get` returns ``None`` fo
 entry and for one whose SHA-256 does not match what :func:`put` recorded (truncated,
 overwritten, foreign), so a corrupt entry is recomputed, never trusted. An interrupt
 (SIGINT, SIGTERM) waits while :func:`put` writes (:func:`rigidsym.core.interrupts.deferred`):
-an entry is whole or absent (issue 69). Imports nothing else of rigidsym but
+an entry is whole or absent. Imports nothing else of rigidsym but
 :mod:`rigidsym.core.files` and :mod:`rigidsym.core.interrupts`.
 """
 

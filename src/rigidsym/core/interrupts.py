@@ -1,4 +1,4 @@
-"""Interrupts of a long command (issue 69): SIGINT (Ctrl-C) and SIGTERM end it with one
+"""Interrupts of a long command: SIGINT (Ctrl-C) and SIGTERM end it with one
 line and exit status 130, keeping the work it finished.
 
 - :func:`install` makes SIGINT and SIGTERM raise ``KeyboardInterrupt`` in the main thread

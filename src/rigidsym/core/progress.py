@@ -161,7 +161,7 @@ class Reporter:
             checkpoint("phase")
             yield ph
             failed = False
-        except KeyboardInterrupt:  # the command's one line says it (issue 69): no ✓
+        except KeyboardInterrupt:  # the command's one line says it: no ✓
             stopped = True
             raise
         finally:

@@ -4,7 +4,7 @@ versions of the libraries behind the results.
 
 The book's ``.py`` files are digested per module, with the book modules each imports
 (transitively), so that a change to one module invalidates the results of what uses it
-only (issue 39); every other file of the package (the machinery, the book's data files)
+only; every other file of the package (the machinery, the book's data files)
 is in :func:`machinery_digest`. Imports nothing of rigidsym but :mod:`rigidsym.core.config` and
 :mod:`rigidsym.core.cache`.
 """
@@ -54,7 +54,7 @@ def _book_root() -> Path | None:
 def is_built(path: Path) -> bool:
     """Whether ``path`` is an output of the package's build rather than a source: the C
     kernels' extension module and its build record (``_ckernels.build.json``), which
-    differ between a regular and an editable install of the same sources (issue 69), and
+    differ between a regular and an editable install of the same sources, and
     compiled ``__pycache__`` files."""
     import importlib.machinery
 
@@ -74,7 +74,7 @@ def _files(book_py: bool) -> list[tuple[str, Path]]:
     """``(name, path)`` of the package's source files, named as they are in an installed
     wheel (``derivations/sec3_2.py``) whether the book lies inside the package's folder (a
     regular install) or beside it (an editable one), sorted by name: the digest is the
-    same for the same sources however installed (issue 69). ``rigidsym.generated`` is left
+    same for the same sources however installed. ``rigidsym.generated`` is left
     out: the generator's output, made from sources the digest covers."""
     book, generated = _book_root(), _generated_root()
     prefix = _config.BOOK.split(".", 1)[1].replace(".", "/") + "/"
@@ -96,7 +96,7 @@ def code_bytes(code) -> bytes:
     """A code object's marshal bytes without where its file lies (``co_filename``, in it
     and in the code objects it holds): the same source compiled in ``site-packages`` and
     in a source tree gives the same bytes (a regular then an editable install keep the
-    verdict cache's keys, issue 69)."""
+    verdict cache's keys)."""
     import marshal
 
     def bare(c):
@@ -132,7 +132,7 @@ def imported_names(path: Path, package: str) -> set[str]:
     """Module names an ``import`` of the file may bind (submodules of ``from`` imports too).
 
     Kept in the user cache by the file's content (``<key>.imports``): parsing the book's
-    modules was most of a warm command's cache keys (issue 39)."""
+    modules was most of a warm command's cache keys."""
     from rigidsym.core import cache as _cache
 
     data = path.read_bytes()

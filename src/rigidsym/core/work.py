@@ -1,5 +1,5 @@
 """Counts of the real work a command does: declarations built, ids decided, transcriptions
-checked, exercises solved (issue 39), kernels derived.
+checked, exercises solved, kernels derived.
 
 A cache hit counts nothing; only the work behind a miss does, so a test can say "a warm
 ``verify --json`` builds no declaration" without timing anything. Worker processes count in

@@ -1,4 +1,4 @@
-"""Exam sets: a student handout and an answer key from a spec (issue 32 item 1).
+"""Exam sets: a student handout and an answer key from a spec.
 
 A spec (TOML, or the same as a dict) lists problems: an exercise with its data, or ``n``
 random well-posed variants of an exercise drawn from the seed with readable exact numbers

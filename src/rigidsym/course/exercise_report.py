@@ -55,7 +55,7 @@ def write_report(out_dir: Path) -> list[Path]:
 
     The files are kept in the user cache under the keys of the solutions they render
     (:mod:`rigidsym.course.worked.solution_store`) and the package: while nothing changed
-    they are written from there, nothing solved or drawn (issue 39)."""
+    they are written from there, nothing solved or drawn."""
     files = rendered()
     if files is None:
         files = _render()

@@ -1,4 +1,4 @@
-"""Grading a class from its exam folder (issue 51 item 1): every student's answers against
+"""Grading a class from its exam folder: every student's answers against
 the student's own key, a per-student, per-question CSV and a gradebook an LMS imports.
 
 ``grade_class(DIR, answers)`` reads ``DIR/key.json`` (written by

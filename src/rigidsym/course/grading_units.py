@@ -1,4 +1,4 @@
-"""Units on a student's answers when grading (issue 50): an answer written with a unit
+"""Units on a student's answers when grading: an answer written with a unit
 (``"25 mm"``, ``"30 deg"``, ``"1,0,2 cm"``) is converted to the answer's documented unit
 (:func:`~.worked.units.answer_unit`) before it is compared, so any compatible unit grades
 right; a bare number off by a unit's factor is named a unit slip, with the unit it was

@@ -1,4 +1,4 @@
-"""A class from a roster: one exam per student, one key, a Moodle export (issue 51 item 1).
+"""A class from a roster: one exam per student, one key, a Moodle export.
 
 ``class_exam(spec, roster, out_dir)`` draws, for every student of the roster, the spec's
 problems from the student's own seed (``student_seed``: the spec's seed and the name),

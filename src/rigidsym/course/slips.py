@@ -1,4 +1,4 @@
-"""Slips made along the way (issue 51 item 2): the solution replayed with one common slip
+"""Slips made along the way: the solution replayed with one common slip
 injected into its data, as STACK's potential-response trees name a student's mistake.
 
 A slip in a step is a slip in what that step reads: ``Q`` used for ``Q^T`` is the solution

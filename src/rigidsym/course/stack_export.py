@@ -1,4 +1,4 @@
-"""Moodle STACK export of a class (issue 64 item 5): the LMS grades each box as the
+"""Moodle STACK export of a class: the LMS grades each box as the
 gradebook does, the linked boxes of one answer jointly.
 
 A Cloze question scores each number on its own, so it cannot see that (-e, -phi) with

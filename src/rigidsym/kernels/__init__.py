@@ -15,7 +15,7 @@ Common keyword arguments of every kernel
 * ``out``: preallocated output array (a tuple for several outputs), shape batch + output.
 * ``check``: validate finiteness, unit vectors and rotations (default True); ``False``
   skips only that: on valid input the same result (an overflow of the result is still
-  reported), a NaN or inf input gives NaN in the outputs that depend on it (issue 37).
+  reported), a NaN or inf input gives NaN in the outputs that depend on it.
 * ``on_singular``: ``"raise"`` (default) raises :class:`SingularConfigurationError` naming
   the argument and the batch indices (:class:`NonFiniteResultError` for an overflow);
   ``"nan"`` returns NaN in exactly those rows.

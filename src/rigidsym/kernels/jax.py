@@ -1,4 +1,4 @@
-"""JAX kernels generated from the verified chapter-3 declarations (issue 31).
+"""JAX kernels generated from the verified chapter-3 declarations.
 
 ``pip install "rigidsym[jax]"``. The same kernels, names and positional arguments as
 :mod:`rigidsym.kernels`, on JAX arrays: leading batch axes broadcast, float32 and float64,
@@ -105,7 +105,7 @@ def _make(space: _evaluation.Space, name: str):
         # a kernel that divides: the values on the safe point's inputs in the singular
         # samples too (NaN there after Space.call's mask), so that the forward temps the JVP
         # program reads are the values' own, computed once (XLA merges the two), not again
-        # on other inputs (issue 38: the backward reuses the forward's subexpressions)
+        # on other inputs (the backward reuses the forward's subexpressions)
         res = space.values(name, primals, divides, _traced(primals))
         # the generated forward-mode program, linear in the tangents (JAX transposes it)
         touts = space.jvp(name, primals, list(tangents), res[-1], _traced(primals))

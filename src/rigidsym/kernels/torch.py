@@ -1,4 +1,4 @@
-"""PyTorch kernels generated from the verified chapter-3 declarations (issue 31).
+"""PyTorch kernels generated from the verified chapter-3 declarations.
 
 ``pip install "rigidsym[torch]"``. The same kernels, names and positional arguments as
 :mod:`rigidsym.kernels`, on tensors: leading batch axes broadcast, float32 and float64
@@ -31,7 +31,7 @@ safe-``where`` idiom at their branches. A sample masked by ``on_singular="nan"``
 gradient: its inputs are replaced by a regular point before a differentiated evaluation.
 Eager calls on CPU tensors (batch <= 32768, outside torch.func) run the same programs on
 NumPy views of the tensors, PyTorch's own functions routed, bit for bit the same results at
-~1/3 the fixed cost per operation (:mod:`rigidsym.kernels.arrays.torch_host`, issue 38).
+~1/3 the fixed cost per operation (:mod:`rigidsym.kernels.arrays.torch_host`).
 
 Example:
     >>> import torch
@@ -125,7 +125,7 @@ def _same_float(values):
     """The dtype of ``values`` when all are dimensioned floating tensors of one dtype (the
     common case), else None: a loop Dynamo traces quickly (the general rule of
     :func:`_dtype` cost 0.6 s of Dynamo's tracing of a call under torch.compile, a third of
-    it, issue 38)."""
+    it)."""
     dt = None
     for v in values:
         if not (isinstance(v, torch.Tensor) and v.ndim > 0 and v.dtype.is_floating_point) \
@@ -209,7 +209,7 @@ def _make(space: _evaluation.Space, name: str):
         if not _recorded(xs):  # nothing to differentiate: the program alone
             host = _torch_host.forward(space.progs, name, xs)
             return space.values(name, xs) if host is None else (*host[0], host[1])
-        if _dual(xs):  # forward-mode AD: the saving class has no jvp (issue 70)
+        if _dual(xs):  # forward-mode AD: the saving class has no jvp
             return eager_apply(*xs)
         return fast(*xs)
 
@@ -219,7 +219,7 @@ def _make(space: _evaluation.Space, name: str):
 
 
 def _saving(space: _evaluation.Space, name: str):
-    """The ``torch.autograd.Function`` of eager autograd outside torch.func (issue 38: the
+    """The ``torch.autograd.Function`` of eager autograd outside torch.func (the
     backward reuses the forward's common subexpressions): its forward saves the temps the
     generated VJP would compute again, and its backward takes them, unless a sample is
     singular (its VJP then runs on the safe point there) or the backward is differentiated
@@ -258,7 +258,7 @@ def _saving(space: _evaluation.Space, name: str):
 
 
 def _plain_apply(cls):
-    """``cls.apply`` less what eager autograd outside torch.func does not need (issue 38:
+    """``cls.apply`` less what eager autograd outside torch.func does not need (
     a fixed cost of a call at small N): ``Function.apply`` binds the arguments to
     ``forward``'s signature through ``inspect`` at every call (for default values, which
     these ``forward``s have none of), then calls the C ``apply`` on the arguments with
@@ -300,7 +300,7 @@ def _clear(mask) -> bool:
 
 
 class _Rescued(torch.autograd.Function):
-    """Outputs whose masked rows came from the long-double rescue (issue 37): the
+    """Outputs whose masked rows came from the long-double rescue: the
     identity on the outputs, and a NaN derivative for the inputs of those rows wherever
     their cotangent is nonzero (autograd cannot follow the host; a zero derivative would be
     silently wrong), zero where it is zero (a loss that ignores them stays finite)."""

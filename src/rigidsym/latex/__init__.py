@@ -1,5 +1,5 @@
 """A reader of the chapter's LaTeX (lark grammar + glyph table) and the transcription
-check of every declaration against its LaTeX (issue 29)."""
+check of every declaration against its LaTeX."""
 
 from rigidsym.latex.lexing import Parsed, Relation
 from rigidsym.latex.reader import parse_latex

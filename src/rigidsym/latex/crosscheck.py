@@ -1,4 +1,4 @@
-"""The rule of issue 62: a verdict of ``check --latex`` needs the second semantics
+"""The rule of a verdict of ``check --latex`` needs the second semantics
 (:mod:`rigidsym.numeval`) to agree. ``verified`` needs its residual to vanish at every
 point (relative to the terms' size, :data:`VANISHES`); ``does-not-hold`` needs it to fail
 somewhere (:data:`FAILS`). A disagreement is bad input naming the relation, its two sides

@@ -1,4 +1,4 @@
-"""The ``--let`` declarations as a graph (issue 52, item 3): which glyphs each model (or
+"""The ``--let`` declarations as a graph: which glyphs each model (or
 function) mentions, read from lark's parse tree without deciding any shape, and the order
 in which the models are read: each after the models it mentions, ties by name, so any
 order of the ``--let``s gives the same reading. A cycle is an error naming it.

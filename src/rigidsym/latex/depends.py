@@ -1,5 +1,5 @@
 """What a reader's expression mentions, directly and through the ``--let`` models of the
-names it mentions (issue 52): the dependency a model must have on an argument for ``R(\\theta)``
+names it mentions: the dependency a model must have on an argument for ``R(\\theta)``
 to be an application (:mod:`rigidsym.latex.guards`, :mod:`rigidsym.latex.transformer.meanings`)."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-r"""A subscripted letter beside a declared vector of that letter (issue 63, wave 11): ``q_4``
+r"""A subscripted letter beside a declared vector of that letter: ``q_4``
 beside ``--let '\mathbf{q}: unit 4-vector'`` is entry 4 of ``\mathbf{q}``, as every attitude
 book writes a vector's entries (Markley & Crassidis' ``q_4``, Shuster's ``q_1 ... q_4``).
 

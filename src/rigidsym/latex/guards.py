@@ -1,4 +1,4 @@
-"""What a reading may not guess (issue 40, item 1): checks of a reader's LaTeX after it is
+"""What a reading may not guess: checks of a reader's LaTeX after it is
 read, each a :class:`~rigidsym.core.errors.BadInput` (exit 2) that names the
 symbol and the ``--let`` that settles it, never a does-not-hold resting on a convention.
 
@@ -208,7 +208,7 @@ def matrix_entries(free: list[str], glyphs: dict) -> None:
     """A free glyph ``A_{23}`` beside a square matrix ``A`` of the statement (declared, or a
     model): the books' entry (row 2, column 3; Shuster's Gibbs vector from ``A_{23} -
     A_{32}``), which the reader does not take from the indices; read as a symbol of its own
-    it made such an equation undecided or, decided, false (wave 10): bad input naming it."""
+    it made such an equation undecided or, decided, false: bad input naming it."""
     for key in free:
         m = _ENTRY.match(key)
         g, base = glyphs.get(key), glyphs.get(m.group(1)) if m else None

@@ -1,4 +1,4 @@
-r"""An undeclared hat, ``\hat{X}`` or ``\widehat{X}`` (issue 63, wave 11): the books give it
+r"""An undeclared hat, ``\hat{X}`` or ``\widehat{X}``: the books give it
 two meanings, a unit vector of its own (Lynch & Park, Corke: ``\hat\omega`` the unit axis)
 or the skew (cross-product) matrix of ``X`` (Murray, Li & Sastry (2.9); Ma, Soatto, Košecká &
 Sastry: ``\widehat{T}R``). Neither is guessed: the hat is a choice point whose two readings
@@ -9,7 +9,7 @@ the unit vector) that is the reading; where both type-check and their verdicts d
 statement is refused naming the ``--let`` and the ``--notation`` that settle it.
 
 A free bold capital whose conventional 3 x 3 does not fit is a choice of the same kind
-(:func:`capital_point`): a 3 x 3 matrix or a 3-vector (wave 11).
+(:func:`capital_point`): a 3 x 3 matrix or a 3-vector.
 
 A ``--let`` for ``\hat{X}`` (a kind or a model), a ``--notation`` line or a book's glyph row
 wins over this: the choice is met only by a hat nothing declares.
@@ -113,5 +113,5 @@ def capital_point(key: str) -> str:
     or a 3-vector (Ma-Soatto-Košecká-Sastry's point ``\mathbf{X}``, ``N\times\mathbf{Y}``).
     Met only where the convention's shape does not fit (a reading failed on shapes), so a
     statement the convention reads is read as before; where both type-check and disagree,
-    refused naming ``--let '\mathbf{Y}: vector'`` (wave 11)."""
+    refused naming ``--let '\mathbf{Y}: vector'``."""
     return f"{key} shape"

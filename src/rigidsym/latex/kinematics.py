@@ -1,4 +1,4 @@
-"""Time derivatives of models, entry by entry (issue 63): the kinematic differential
+"""Time derivatives of models, entry by entry: the kinematic differential
 equations of the attitude books, ``\\dot C = -[\\omega]_\\times C`` with ``C`` a model in
 parameters declared functions of time (``--let '\\mathbf{q}(t): vector'``) and their rates
 declared (``--let '\\dot{\\mathbf{q}} = \\frac12(I_3 + [\\mathbf{q}]_\\times +

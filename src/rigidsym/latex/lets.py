@@ -1,4 +1,4 @@
-"""The declarations of ``rigidsym check --latex`` (issue 29, item 4): ``--let NAME: KIND``
+"""The declarations of ``rigidsym check --latex``: ``--let NAME: KIND``
 and ``--let NAME = LATEX``, read and checked (:func:`read_lets`), and the other sources of
 what a reader's symbols are: a trailing ``, R \\in SO(3)`` of the LaTeX
 (:func:`declared_lets`) and the symbols and models a reader's modules lend (:func:`lent`,
@@ -165,10 +165,10 @@ def _key(name: str, decl: str) -> str:
     if not name:
         raise BadInput(f"--let '{decl}': expected a NAME before ':' or '='")
     star = re.fullmatch(r"(.*?)\s*\^\s*(?:\*|\{\s*\*\s*\}|\\ast|\{\s*\\ast\s*\})", name)
-    if star and star.group(1):  # {}^B X_A^{*}: a starred name of its own (issue 52)
+    if star and star.group(1):  # {}^B X_A^{*}: a starred name of its own
         return _key(star.group(1), decl) + "^{*}"
     ranged = re.fullmatch(r"(.+?)_\{\s*(\d+)\s*:\s*(\d+)\s*\}", name.strip())
-    if ranged:  # q_{1:3}: entries of q, read so in the LaTeX (issue 63: said, not "one symbol")
+    if ranged:  # q_{1:3}: entries of q, read so in the LaTeX (said, not "one symbol")
         base, lo, hi = ranged.groups()
         raise BadInput(f"--let '{decl}': {name.strip()} is entries {lo} to {hi} of {base}, "
                        f"not a symbol of its own: declare {base} (e.g. --let '{base}: "
@@ -255,7 +255,7 @@ def _one_let(d: str) -> Let:
         name, tex = d[:eq].strip(), d[eq + 1:].strip()
         params: tuple[str, ...] = ()
         applied = re.fullmatch(r"(.+?)\s*\(([^()]+)\)", name)
-        if applied:  # S(\mathbf{a}) = ...: a function of its parameters (issue 52)
+        if applied:  # S(\mathbf{a}) = ...: a function of its parameters
             name = applied.group(1)
             params = tuple(q.strip() for q in _split_commas(applied.group(2)))
             if not all(params):

@@ -47,7 +47,7 @@ class Parsed:
         applied: the non-scalar symbols read as applied to a parenthesised scalar
             (``R(\\theta)``), by LaTeX key: the arguments (``rigidsym.latex.transformer.meanings``).
         choice_points: the symbols ``X`` of ``X(y)`` that no rule reads (a model applied to
-            no scalar: a product or an application; issue 52), by key: the argument.
+            no scalar: a product or an application), by key: the argument.
     """
 
     chains: list = field(default_factory=list)
@@ -56,7 +56,7 @@ class Parsed:
     readings: list = field(default_factory=list)
     glyphs: dict = field(default_factory=dict)
     applied: dict = field(default_factory=dict)  # R(\theta): key -> arguments (meanings)
-    choice_points: dict = field(default_factory=dict)  # X(y) product or application (issue 52)
+    choice_points: dict = field(default_factory=dict)  # X(y) product or application
 
     def pairs(self):
         """Every pair ``(chain, i, j, E_i, E_j)`` with ``i < j`` of a chain: each is a
@@ -131,7 +131,7 @@ def parser() -> lark.Lark:
                      propagate_positions=True, maybe_placeholders=False, **kept)
 
 
-# ---- the input as TeX reads it, and errors that quote it (issue 40, items 3 and 5)
+# ---- the input as TeX reads it, and errors that quote it
 # pylatexenc's latexwalker is the tokenizer here: it knows where a macro ends (\cot\frac is
 # two macros) and what TeX takes as a macro's argument (\frac\theta2). It runs only where it
 # is needed (an unbraced argument, an error): over all 181 strings of the chapter it costs
@@ -241,7 +241,7 @@ def cross_chains(text: str) -> str | None:
         tok = m.group(0)
         if tok == "\\times" and not re.match(r"\s*\^", text[m.end():]) \
                 and not re.search(r"[_^]\s*\{?\s*$", text[:m.start()]):
-            # not v\times^*, [a]_\times, Hughes' a^\times, a^{\times} (issue 63)
+            # not v\times^*, [a]_\times, Hughes' a^\times, a^{\times}
             count[depth] = count.get(depth, 0) + 1
             if count[depth] == 2:
                 return text[start.get(depth, 0):m.end()].strip() + " ..."
@@ -294,7 +294,7 @@ def tree(latex: str):
         if token.startswith("\\"):
             what = f"unknown macro {token}" if construct == "a macro" else \
                 f"{token} ({construct}) cannot be read here"
-            if construct == "an integral or sum":  # issue 52, item 4: the reason
+            if construct == "an integral or sum":  # the reason
                 what += (": rigidsym decides algebraic identities and does not integrate or "
                          "sum (an integral's closed form is yours to give: name the integral "
                          "and give its value as a --let model, e.g. --let '\\mathbf{J} = "
@@ -321,7 +321,7 @@ def tree(latex: str):
 
 
 def _expected_line(expected: str, before: str) -> str:
-    """What the parser expected, as the message's last line; never an empty list (issue 63:
+    """What the parser expected, as the message's last line; never an empty list (
     the construct is named instead), with the reason where the text before says it (a
     plain ``e^`` is the exponential)."""
     line = f"\n  expected one of: {expected}" if expected else \

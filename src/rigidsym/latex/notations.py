@@ -1,4 +1,4 @@
-"""Per-book notations (``--notation NAME``, issue 40 item 1): what a book's symbols are,
+"""Per-book notations (``--notation NAME``): what a book's symbols are,
 as a table shipped with the package (``rigidsym/latex/notations/NAME.txt``).
 
 A table is ``--let`` lines, one per symbol: ``NAME: KIND`` (a kind of

@@ -33,12 +33,12 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             6-vector symbol or product is its hat, a plain ``I`` no override declares is the
             identity, an identity is sized by its neighbours
             (``rigidsym.latex.transformer.rigid_motions``).
-        functions: the ``--let`` functions by LaTeX key (issue 52): ``expand(args)`` gives
+        functions: the ``--let`` functions by LaTeX key: ``expand(args)`` gives
             ``(value, parameter names)``, the body with the arguments substituted.
-        choices: how to read each choice point by key (``{"R": "apply"}``; issue 52): ``X(y)``
+        choices: how to read each choice point by key (``{"R": "apply"}``): ``X(y)``
             with ``X`` a model and ``y`` no scalar, a product unless told.
         models: the models read so far, their values by symbol name: ``d/dt`` of a model
-            of a function of time differentiates its value (issue 52).
+            of a function of time differentiates its value.
 
     Returns:
         A :class:`Parsed`.
@@ -60,7 +60,7 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     except lark.exceptions.VisitError as exc:
         if isinstance(exc.orig_exc, LatexError):
             exc.orig_exc.glyphs = dict(build.glyphs)  # those read before it: for hints
-            exc.orig_exc.choice_points = dict(build.choice_points)  # issue 52
+            exc.orig_exc.choice_points = dict(build.choice_points)
             raise exc.orig_exc from None
         if isinstance(exc.orig_exc, BadInput):
             raise exc.orig_exc from None

@@ -1,4 +1,4 @@
-"""The glyph rows of a reader's LaTeX (issue 29 item 4, issue 40): :class:`GlyphReader` parses
+"""The glyph rows of a reader's LaTeX (issue 40): :class:`GlyphReader` parses
 the LaTeX and the models of ``--let`` with one set of glyph overrides: the declarations'
 kinds, the models' shapes, the rows of ``--book``, a module's symbols, the lines of
 ``--notation`` (used by :mod:`rigidsym.latex.statement`)."""
@@ -53,11 +53,11 @@ class GlyphReader:
         self.model_rhs: dict = {}  # every model's value by its symbol's name (for d/dt)
         self.by_notation: set[str] = set()  # the glyphs the notation declares
         self.in_models: set[str] = set()  # the glyphs of the notation's models used
-        self.functions: dict[str, Let] = {}  # the --let functions by key (issue 52)
+        self.functions: dict[str, Let] = {}  # the --let functions by key
         self.expanders: dict = {}  # key -> expand(args) for the parser
-        self.choices: dict[str, str] = {}  # X(y): "product" or "apply" (issue 52, item 2)
+        self.choices: dict[str, str] = {}  # X(y): "product" or "apply"
         self.choice_points: dict[str, str] = {}  # the X(y) met, by key: the argument
-        # a declared rate --let '\\dot{X} = ...' makes X a function of time (issue 63)
+        # a declared rate --let '\\dot{X} = ...' makes X a function of time
         rated = {rate_target(x.key) for x in lets if x.latex and not x.params}
         for x in lets + [x for x in (notation.lets if notation else ())
                          if x.kind and x.key not in self.declared]:
@@ -177,7 +177,7 @@ class GlyphReader:
             self.over.update(extra)
         raise LatexError(f"{what}: the glyphs' shapes do not settle", "shapes")
 
-    # ---- --let functions (issue 52): S(\mathbf{a}) = [\mathbf{a}]_\times
+    # ---- --let functions: S(\mathbf{a}) = [\mathbf{a}]_\times
     def add_function(self, x: Let) -> None:
         """Declare the ``--let`` function ``x`` (``NAME(params) = LATEX``): each application
         substitutes its arguments (:meth:`expand`)."""
@@ -307,7 +307,7 @@ class GlyphReader:
                     f"parameter, or write the body in {pk} itself")
 
     def model_readings(self, x: Let, readings: list[str]) -> None:
-        """The readings of a ``--let`` model, printed with the others (issue 52: before, a
+        """The readings of a ``--let`` model, printed with the others (before, a
         bracket read inside a model was never said)."""
         for r in readings:
             note = f"in --let '{x.text}': {r}"

@@ -1,4 +1,4 @@
-"""Respellings of a reader's LaTeX that its ``--let`` declarations settle (issue 63).
+"""Respellings of a reader's LaTeX that its ``--let`` declarations settle.
 
 The grammar reads a plain ``e`` directly before ``^`` as the exponential (``e^{[\\omega]
 \\theta}``), as the books mean it when nothing names a symbol ``e``. A reader who declares

@@ -79,11 +79,11 @@ def default_glyph(key: str, base) -> Glyph:
 def name_from_key(key: str) -> str:
     """The plain name of a glyph key (``\\mathbf{Q}`` -> ``Q``, ``\\dot{a}`` -> ``adot``,
     ``{}^{A}_{B}R`` -> ``^A_B R``): fonts and braces dropped, an accent written after the letter."""
-    m = re.match(r"\{\}((?:[\^_]\{[^{}]*\})+)(.+)$", key)  # {}^{A}_{B}R: ^A_B R (issue 40)
+    m = re.match(r"\{\}((?:[\^_]\{[^{}]*\})+)(.+)$", key)  # {}^{A}_{B}R: ^A_B R
     if m:
         return re.sub(r"[{}]", "", m.group(1)) + " " + name_from_key(m.group(2))
     s = re.sub(r"\\(mathbf|boldsymbol|mathcal)\{([^}]*)\}", r"\2", key)
-    s = re.sub(r"\\math(sf|tt|it)\{([^}]*)\}", r"\2_\1", s)  # \mathsf{R}: R_sf (issue 63)
+    s = re.sub(r"\\math(sf|tt|it)\{([^}]*)\}", r"\2_\1", s)  # \mathsf{R}: R_sf
     s = re.sub(r"\\(dot|ddot|tilde|hat|bar|vec|underline)\{([^}]*)\}",
                lambda m: m.group(2) + m.group(1), s)  # \vec{a}: avec, printed a⃗
     s = s.replace("\\", "").replace("{", "").replace("}", "")

@@ -1,4 +1,4 @@
-"""A reader's LaTeX statement made into a declaration (issue 29, item 4): the LaTeX and its
+"""A reader's LaTeX statement made into a declaration: the LaTeX and its
 ``--let`` declarations read into a :class:`Statement` the checker decides like any other
 (LaTeX in, verdict out: ``rigidsym check --latex``, :func:`rigidsym.check_latex`).
 
@@ -85,7 +85,7 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
     of its choice points (``X(\\mathbf{y})``, ``X`` a model: a product or an application;
     ``[\\mathbf{a}]``: its hat or a bracket that groups; the first :data:`_MAX_POINTS` points)
     that type-checks, the first returned, the others in its
-    ``others`` (issue 52, item 2: the checker decides each, a verdict only when all agree).
+    ``others`` (the checker decides each, a verdict only when all agree).
 
     Args and Raises: as :func:`read_one`; when no reading type-checks, the first reading's
     error.
@@ -177,7 +177,7 @@ def _words(shape) -> str:
 
 
 def _typed(r: Reading) -> Reading:
-    """``r`` when its sides have one shape; else bad input naming both shapes (issue 62:
+    """``r`` when its sides have one shape; else bad input naming both shapes (
     shapes are types; a scalar equal to a vector is no equation to decide, and before it
     was does-not-hold)."""
     why = _shape_slip(r)
@@ -226,8 +226,8 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
             models that refer to each other in a cycle or whose shape differs from a use.
     """
     lend = lend or {}
-    lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let (issue 40)
-    lets += rated_lets(lets)  # --let '\\dot{X} = ...' alone: X a function of time (issue 63)
+    lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let
+    lets += rated_lets(lets)  # --let '\\dot{X} = ...' alone: X a function of time
     functions = _notation_functions(latex, lets, table)
     lets += functions
     rd = GlyphReader(lets, book, lend, table)
@@ -362,7 +362,7 @@ def declare_latex(latex: str, let=None, *, book: str | None = None, modules=(),
     title = "a relation read from LaTeX" if n == 1 else f"{n} relations read from LaTeX"
 
     for n, r in enumerate([reading, *reading.others]):
-        r_id = eq_id if n == 0 else f"{eq_id}.r{n + 1}"  # another reading (issue 52)
+        r_id = eq_id if n == 0 else f"{eq_id}.r{n + 1}"  # another reading
         equation(r_id, title, section=f"book {book}" if book else "latex", latex=latex,
                  kind=r.kind)(lambda st=r.statement: st)
         r.eq = REGISTRY[r_id]

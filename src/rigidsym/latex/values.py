@@ -1,4 +1,4 @@
-"""The values of a reading's symbols (issue 29, item 4; issue 52): the ``--let`` models
+"""The values of a reading's symbols (issue 52): the ``--let`` models
 and functions, each after those it mentions; each used glyph's value (a declared kind, a
 module's model, a glyph-table row or definition, a free matrix of named entries); and the
 models made explicit in dependency order, a cycle refused. Used by
@@ -34,7 +34,7 @@ def _is_function(x: Let) -> bool:
 
 def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
     """The ``NAME = LATEX`` models into ``values`` and the ``NAME(params) = LATEX``
-    functions into the reader, each after the models it mentions (issue 52: any order of
+    functions into the reader, each after the models it mentions (any order of
     the ``--let``s reads the same); the glyphs they use."""
     mentions = {}
     for x in lets:
@@ -50,10 +50,10 @@ def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
             rd.add_function(x)
             _function_model(rd, x, values)
             continue
-        if x.key.endswith("^{*}"):  # a starred NAME (issue 52) reads as a name of its own
+        if x.key.endswith("^{*}"):  # a starred NAME reads as a name of its own
             rd.over.setdefault(x.key, Glyph(x.key, "*", rd._name(x.key), (), "model", ""))
         rate_of = _rate_of(x.key)
-        if rate_of in rd.over:  # --let '\\dot{X} = ...': the rate of X (issue 63), its NAME
+        if rate_of in rd.over:  # --let '\\dot{X} = ...': the rate of X, its NAME
             rd.over.setdefault(x.key, Glyph(x.key, "*", rd._name(x.key), rd.over[rate_of].shape,
                                             "model", "--let model"))
         p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'")

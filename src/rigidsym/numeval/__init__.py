@@ -1,4 +1,4 @@
-"""A second semantics of a reader's LaTeX (issue 62): the lark parse tree and the ``--let``
+"""A second semantics of a reader's LaTeX: the lark parse tree and the ``--let``
 declarations, given as plain data, evaluated numerically with mpmath at random points of
 the declared kinds. It shares no code with the symbolic reader (``rigidsym.latex``) past the
 parse tree: its own scope and function application, matrix algebra, operators, derivatives,

@@ -1,5 +1,5 @@
 """The accented glyphs that no declaration names and the second semantics still reads
-(issue 63, the second outside trial), each as the reader does:
+(the second outside trial), each as the reader does:
 
 - a tilde over a 3-vector: its cross-product matrix, one reading of a choice whose other
   (a vector of its own) only a declaration gives (:mod:`rigidsym.numeval.tilde`);

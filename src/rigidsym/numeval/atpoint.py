@@ -1,4 +1,4 @@
-"""The second semantics at a given point (issue 62): the symbolic path's counterexample,
+"""The second semantics at a given point: the symbolic path's counterexample,
 handed over as plain data (a glyph's parse tree and its value as decimal strings), fixes
 those glyphs; each relation's residual is evaluated there at :data:`~rigidsym.numeval.
 evaluator.DIGITS` digits. A glyph the point does not give is reported, never guessed."""

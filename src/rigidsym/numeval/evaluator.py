@@ -1,4 +1,4 @@
-"""The second semantics' tree walk (issue 62): a relation's parse tree evaluated at random
+"""The second semantics' tree walk: a relation's parse tree evaluated at random
 points of the declared kinds, with mpmath at :data:`DIGITS` digits.
 
 Scope: a glyph is looked up in the environment of its evaluation: a function's parameters
@@ -291,7 +291,7 @@ class Evaluator:
                 raise NotCovered(f"the star of a value that is no 6x6 transform in "
                                  f"{text_of(t)!r}")
             return V.transpose(V.inverse(v))
-        if s in ("\\wedge", "\\times"):  # Hughes' a^\times too (issue 63)
+        if s in ("\\wedge", "\\times"):  # Hughes' a^\times too
             return V.hat(v)
         if s == "\\vee":
             return V.vee(v)
@@ -349,15 +349,15 @@ class Evaluator:
             if inner.data == "bare":
                 inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
             d = self.env.decls.get(glyph_key(inner))
-            if d is not None and (d.timed or rates.is_model(d)):  # or of a model (issue 63)
+            if d is not None and (d.timed or rates.is_model(d)):  # or of a model
                 v = self._derivative(inner, _TIME_TREE, t)
                 if accent == "\\dot":
                     return v
                 return self._derivative(lark.Tree("accented", [lark.Token("ACCENT", "\\dot"),
                                                                inner]), _TIME_TREE, t)
-        if (v := accents.undeclared_accent(self, t, key)) is not None:  # ~a, a rate (issue 63)
+        if (v := accents.undeclared_accent(self, t, key)) is not None:  # ~a, a rate
             return v
-        hat = hats.undeclared_hat(self, t, key, text_of(t))  # issue 63: two readings
+        hat = hats.undeclared_hat(self, t, key, text_of(t))  # two readings
         if hat is not None:
             return hat
         raise NotCovered(f"the undeclared glyph {text_of(t)} (an accent's meaning is the "
@@ -593,7 +593,7 @@ class Evaluator:
     def _derivative(self, expr, var, t):
         key = glyph_key(var)
         d = self.env.decls.get(key)
-        if key == TIME and rates.declared(self.env.decls, glyph_key):  # issue 63
+        if key == TIME and rates.declared(self.env.decls, glyph_key):
             return rates.time_derivative(self, expr, glyph_key, DIGITS)
         if d is not None and (d.body is not None or d.params):
             raise NotCovered(f"a derivative by the model {text_of(var)}")

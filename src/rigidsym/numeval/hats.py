@@ -1,4 +1,4 @@
-r"""The second semantics' reading of an undeclared hat, ``\hat{X}`` (issue 63, wave 11),
+r"""The second semantics' reading of an undeclared hat, ``\hat{X}``,
 written from the books, not from the reader: Lynch & Park's and Corke's ``\hat\omega`` is a
 unit vector of its own, Murray, Li & Sastry's (2.9) and Ma, Soatto, Košecká & Sastry's
 ``\widehat{T}`` the skew matrix of the vector under it. Both are readings of one choice

@@ -1,5 +1,5 @@
 """Smooth motions of the symbols declared functions of time (``--let 'X(t): KIND'``), the
-second semantics' own (issue 62): a random curve of each kind through a random value,
+second semantics' own: a random curve of each kind through a random value,
 quadratic in t (a rotation ``R_0 e^{[w_1 t + w_2 t^2]}``, a unit vector a normalised
 quadratic), evaluated at any t; their derivatives are taken by the evaluator's differences."""
 

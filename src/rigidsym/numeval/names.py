@@ -1,4 +1,4 @@
-"""Spellings of one glyph that the second semantics takes as one (issue 63): an accent over a
+"""Spellings of one glyph that the second semantics takes as one: an accent over a
 bare letter followed by a subscript, ``\\dot{\\Omega}_1`` or ``\\dot\\Omega_1``, is the
 accent over the subscripted letter, ``\\dot{\\Omega_1}`` (TeX sets the same glyph, and the
 reader keys them alike); a superscript label (``\\boldsymbol\\sigma^S``, ``x^{(k)}``) is
@@ -21,7 +21,7 @@ def canonical(t: object) -> object:
     Args:
         t: a parse subtree (``accented``, ``accented_bare``, or anything).
     """
-    if isinstance(t, lark.Tree) and t.data == "label_first":  # a^S_1 is a_1^S (wave 10)
+    if isinstance(t, lark.Tree) and t.data == "label_first":  # a^S_1 is a_1^S
         labels = [c for c in t.children if isinstance(c, lark.Token) and c.type == "SUPLABEL"]
         t = lark.Tree("glyph", [c for c in t.children if c not in labels] + labels)
     if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
@@ -85,7 +85,7 @@ def decorated_name(tree: object) -> bool:
 def glyph_key(t) -> str:
     """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
     parse alike)."""
-    t = canonical(t)  # \dot{\Omega}_1 is \dot{\Omega_1} (issue 63)
+    t = canonical(t)  # \dot{\Omega}_1 is \dot{\Omega_1}
     if isinstance(t, lark.Token):
         # bold by any macro is one glyph, as the books and the reader take it
         return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",

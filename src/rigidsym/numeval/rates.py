@@ -1,4 +1,4 @@
-"""Declared rates of the functions of time, the second semantics' own (issue 63): with a
+"""Declared rates of the functions of time, the second semantics' own: with a
 ``--let '\\dot{\\mathbf{q}} = ...'`` the rate of ``q`` is a model (the kinematic
 differential equations of the attitude books), so ``q`` cannot follow a random motion of
 its own; ``\\frac{d}{dt}X`` and ``\\dot X`` of a model ``X`` are then the derivative of

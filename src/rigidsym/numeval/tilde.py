@@ -1,4 +1,4 @@
-"""The tilde over a vector in the second semantics (issue 63, the second outside trial): an
+"""The tilde over a vector in the second semantics (the second outside trial): an
 undeclared ``\\tilde{X}`` of a 3-vector ``X`` is a choice point, read as the cross-product
 matrix of ``X`` (Wittenburg, Shabana, Greenwood, Schaub & Junkins) or as a vector of its own
 (an estimate's error), every tilde of a reading the same way; the enumeration of

@@ -93,7 +93,7 @@ _LATEX_TOKEN = re.compile(r"\|\||\^T\b|\^-?\d+|[A-Za-z][A-Za-z0-9_]*'*~?|\d+|\s+
 
 
 def label_latex(text: str) -> str:
-    """A member's ASCII label as LaTeX for the MathML printer (issue 28: the errata table
+    """A member's ASCII label as LaTeX for the MathML printer (the errata table
     labels members in MathML, never in ASCII): its mathematics in book notation
     (``"adot . omega/||omega||^2"`` -> ``\\dot{a} \\cdot \\omega/\\|\\omega\\|^{2}``), its English
     words as ``\\text{...}`` (``"pdot_perp brace"`` -> ``\\text{braced } \\dot{p}_{\\perp}``).

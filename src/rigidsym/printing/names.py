@@ -17,7 +17,7 @@ GREEK = {
     "upsilon": "υ", "phi": "φ", "chi": "χ", "psi": "ψ", "omega": "ω",
     "Gamma": "Γ", "Delta": "Δ", "Theta": "Θ", "Lambda": "Λ", "Xi": "Ξ", "Pi": "Π",
     "Sigma": "Σ", "Phi": "Φ", "Psi": "Ψ", "Omega": "Ω",
-    # TeX's variants, each a glyph of its own (issue 40: "read as" printed varphi): \phi is
+    # TeX's variants, each a glyph of its own ("read as" printed varphi): \phi is
     # printed φ throughout, so \varphi takes the other form, ϕ; likewise ϵ for \varepsilon
     "varphi": "ϕ", "vartheta": "ϑ", "varepsilon": "ϵ", "varrho": "ϱ", "varpi": "ϖ",
     "varsigma": "ς", "varkappa": "ϰ", "Upsilon": "Υ",
@@ -27,13 +27,13 @@ _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u03
               "bar": "\u0304", "vec": "\u20d7", "underline": "\u0332"}
 _SUB_TEXT = {"par": "∥", "perp": "⊥", "inf": "∞"}
 _SUB_LATEX = {"par": r"\parallel", "perp": r"\perp", "inf": r"\infty"}
-#: name parts that are primes in the book (issue 28: ``e_2prime`` is e'', ``V_alt`` is the
+#: name parts that are primes in the book (``e_2prime`` is e'', ``V_alt`` is the
 #: other V, V'): the count of primes each adds
 _PRIME_TAGS = {"prime": 1, "alt": 1, **{f"{k}prime": k for k in range(2, 4)}}
 SUBSCRIPT_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 #: names the chapter's declarations give to tell apart two uses of one book letter, or
-#: a model's free atoms, printed as the book prints them (issue 28 item 3): the wrench's
+#: a model's free atoms, printed as the book prints them: the wrench's
 #: pitch is p'' (3.109) in both its forms, the A and b of (3.11) and of (3.66) are both A
 #: and b; the name is code, what a reader sees is the book's glyph. The pitch of (3.7)
 #: stays "pitch" in both forms: its p would read as the point p beside it in (3.71)'s

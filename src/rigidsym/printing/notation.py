@@ -82,7 +82,7 @@ class _BookNotation:
         if d:
             return self._dot(*d)
         if tuple(expr.arg.shape) == (1, 1):  # a reader's 1×1 product: the scalar as written
-            return self._print(expr.arg)     # (aᵀ CPM(b) a, not tr(aᵀ CPM(b) a); issue 40)
+            return self._print(expr.arg)     # (aᵀ CPM(b) a, not tr(aᵀ CPM(b) a))
         return self._trace(expr.arg)
 
     def _print_MatrixElement(self, expr):
@@ -97,7 +97,7 @@ class _BookNotation:
 
     def _print_MatrixSlice(self, expr):
         # an aligned block of a partitioned matrix in block notation, [M_A - M_C]₁₂ for
-        # (M_A - M_C)[:3, 3:]: no Python slice reaches a reader (issue 28)
+        # (M_A - M_C)[:3, 3:]: no Python slice reaches a reader
         sub = _block_index(expr)
         if sub is None:
             return super()._print_MatrixSlice(expr)
@@ -261,7 +261,7 @@ class BookStrPrinter(_BookNotation, StrPrinter):
         # the derivations' Cross(u, v) matrix expression (sympy's own _print_Cross is for
         # sympy.vector and would read attributes this class does not have)
         # a cross product operand of its own in parentheses: × is not associative, and
-        # (a × b) × c and a × (b × c) both printed "a × b × c" before (wave 6)
+        # (a × b) × c and a × (b × c) both printed "a × b × c" before
         u, v = (self._factor(x) if _is_cross(x) else self.parenthesize(
             x, PRECEDENCE["Mul"], strict=False) for x in expr.args)  # (R a) × (R b)
         return f"{u} × {v}"

@@ -6,7 +6,7 @@ axis {f x n_O / ||f||^2 + lambda f}."``. A page that typesets its formulas (the 
 page, like the chapter report) shows these as mathematics too: :func:`prose_markdown` finds
 the runs of mathematics in such a sentence and writes each as inline LaTeX in book notation
 (:func:`rigidsym.printing.names.book_latex`), which the page's Markdown converter turns into
-MathML; the English words stay text (issue 69).
+MathML; the English words stay text.
 
 What counts as mathematics is read token by token, as :func:`rigidsym.printing.labels
 .label_latex` does: a name the book would print as a symbol (one letter, a Greek name, a

@@ -221,7 +221,7 @@ def _build(eq_id: str) -> Statement:
         return st
     from sympy.matrices.utilities import dotprodsimp
 
-    _work.count("build", eq_id)  # a real build (issue 39: counted, so a test sees a rebuild)
+    _work.count("build", eq_id)  # a real build (counted, so a test sees a rebuild)
     # no simplification of intermediate matrix products (sympy applies `cancel` to each
     # entry of a Matrix power, for instance): a model is decided exactly, not read, and
     # this took a third of the time of building the chapter's declarations

@@ -7,7 +7,7 @@ A node the engine does not know would be decided through a guess (sympy calls a
 ``Derivative`` of a 3 x 3 symbol a scalar; an undefined ``f(theta)`` and ``f(phi)`` would
 be one variable): such a node is refused at declaration time with ``BadInput`` naming it
 and the vocabulary word to use. A ``Derivative`` of a matrix at the top of a side becomes the lazy
-:class:`~rigidsym.algebra.operators.Diff`, which the engine knows (issue 28).
+:class:`~rigidsym.algebra.operators.Diff`, which the engine knows.
 """
 
 from __future__ import annotations
@@ -23,7 +23,7 @@ from rigidsym.core.errors import BadInput
 __all__ = ["BadInput", "Rel", "check_side", "UnknownNode", "WORDS"]
 
 #: sympy functions a printed form may not hold, and the word of ``rigidsym`` to use (``asin``
-#: is decided on its principal branch since issue 38: ``asin(sin(b/2)) = b/2`` for ``b`` on
+#: is decided on its principal branch since ``asin(sin(b/2)) = b/2`` for ``b`` on
 #: ``[0, pi]``, :mod:`rigidsym.checking.deciding.branches`; elsewhere undecided)
 WORDS = {
     "exp": "rigidsym.expm (the exponential of so(3) or se(3))",

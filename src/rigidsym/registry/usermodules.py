@@ -185,7 +185,7 @@ def _prebuild(um: UserModule, label: str) -> None:
     Any other exception inside a declaration is left for the checker, which reports that id
     ``undecided`` with the error; built statements are cached (and inherited by forked
     workers). A declaration known to build (:data:`KNOWN_TO_BUILD`) is not built: a warm
-    command builds nothing (issue 39).
+    command builds nothing.
     """
     known = KNOWN_TO_BUILD(um.ids) if KNOWN_TO_BUILD else set()
     for eq_id in um.ids:

@@ -53,7 +53,7 @@ def undecided_reasons(rec: dict) -> list[str]:
     """Why a result is undecided, one line per undecided member (``relation 1: irrational
     root at the sample point``), or the check's own reason when no member got a status (a
     check that raised): printed by ``show``, ``check`` and the reports, never only in the
-    JSON (issue 40)."""
+    JSON."""
     out = [f"{label_text(m['label']) or m['role']}: {m['detail'] or 'no reason recorded'}"
            for m in rec["members"] if m["status"] == "undecided"]
     if rec["verdict"] == "undecided" and not out:
@@ -130,7 +130,7 @@ def _entry(rec: dict, full: bool) -> list[str]:
         line = f"Sec. {rec['section']} · **definition**"
     out += [line, "",
             f"$${rec['printed_latex']}$$", ""]
-    if rec.get("transcription"):  # issue 29: what the text reads, machine-checked
+    if rec.get("transcription"):  # what the text reads, machine-checked
         out += [f"*{transcription_words(rec['transcription'])}*", ""]
     ms = rec["members"]
     if not (len(ms) == 1 and ms[0]["status"] == "holds" and not ms[0]["label"]):

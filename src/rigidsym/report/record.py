@@ -49,7 +49,7 @@ def summary(results: list[Outcome]) -> dict[str, int]:
     return {v: c.get(v, 0) for v in VERDICTS}
 
 
-#: the does-not-hold counted by cause (issue 29): the book's errata, the conversion's slips,
+#: the does-not-hold counted by cause: the book's errata, the conversion's slips,
 #: and those whose cause is not determined
 CAUSE_KEYS = (("erratum", "errata of the book"),
               ("conversion", "slips of the text's conversion"),
@@ -71,7 +71,7 @@ def cause_line(results: list[Outcome]) -> str:
 
 
 def _transcription(r: Outcome) -> dict | None:
-    """The printed form checked against the LaTeX (issue 29), or ``None`` for an id that
+    """The printed form checked against the LaTeX, or ``None`` for an id that
     gives no LaTeX or is not registered: read from the user cache, computed only when no
     record is stored (:func:`rigidsym.latex.transcription.transcription_for`)."""
     from rigidsym.latex.transcription import transcription_for
@@ -226,10 +226,10 @@ def result_record(r: Outcome, timings: bool = True, full: bool = False) -> dict:
         "cause_class": cls or None, "evidence": why or None,
         "counterexample": counterexample_record(r.counterexample),
         "singular": r.singular, "model": r.model, "numeric": numeric,
-        # issue 29: the printed form checked against the LaTeX (additive to schema 2)
+        # the printed form checked against the LaTeX (additive to schema 2)
         "transcription": _transcription(r),
     }
-    rec.update(repair_fields(r))  # issue 23: correction, repairs, repair_search
+    rec.update(repair_fields(r))  # correction, repairs, repair_search
     if timings:
         rec["seconds"] = r.seconds
         rec["cached"] = getattr(r, "cached", False)
@@ -263,7 +263,7 @@ def dumps(doc, indent: int = 0) -> str:
     an object of plain values (a member record, a point of a counterexample, a
     transcription's match) on one line: the same document as ``json.dumps(doc,
     indent=1)``, a tenth shorter (``chapter3.json`` under 400 KB with the transcription
-    records, issue 39)."""
+    records)."""
     inner = (doc.values() if isinstance(doc, dict) else doc) \
         if isinstance(doc, dict | list) else None
     if inner is None or not any(isinstance(v, dict | list) for v in inner):

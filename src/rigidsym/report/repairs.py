@@ -1,4 +1,4 @@
-"""The repairs of the equations that do not hold, in every output (issue 23).
+"""The repairs of the equations that do not hold, in every output.
 
 The schema-2 record gains three keys (:func:`repair_fields`): ``correction`` (where the
 corrected form comes from), ``repairs`` (the verified repairs kept, each with the edits in
@@ -88,7 +88,7 @@ def errata_rows(recs: list[dict]) -> list[dict]:
 
 
 def _label_mathml(label: str) -> Markup | None:
-    """A member's label as inline MathML (issue 28: never ASCII in the HTML table)."""
+    """A member's label as inline MathML (never ASCII in the HTML table)."""
     if not label:
         return None
     try:

@@ -107,7 +107,7 @@ class Result(Outcome):
 
 
     def _repairs_html(self) -> list[str]:
-        """The verified repairs (issue 23), the edited subterm highlighted."""
+        """The verified repairs, the edited subterm highlighted."""
         from rigidsym.report.repairs import EDIT_CLASS, marked_mathml
 
         e = html.escape

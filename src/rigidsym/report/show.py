@@ -119,7 +119,7 @@ def _failing_text(r: Outcome) -> str | None:
 
 
 def _verdict_lines(r: Outcome, rec: dict, width: int) -> list[str]:
-    """The verdict, its method and bound; an undecided one's reasons (issue 40: in words,
+    """The verdict, its method and bound; an undecided one's reasons (in words,
     not only in the JSON)."""
     verdict = f"Verdict: {r.verdict}"
     if r.verdict != r.expected:
@@ -154,7 +154,7 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
            *_hard_wrap(f"{sec} · {r.kind} · declared in {where}", width, "")]
     out += _verdict_lines(r, rec, width)
     bound = rec["failure_bound"]
-    if rec.get("transcription"):  # issue 29: the printed form checked against the LaTeX
+    if rec.get("transcription"):  # the printed form checked against the LaTeX
         out += _hard_wrap(transcription_words(rec["transcription"]), width, "")
     out += [""]
     pools = {k: list(v) for k, v in rels.items()}
@@ -204,7 +204,7 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
 
 
 def repair_lines(r: Outcome, width: int) -> list[str]:
-    """The repairs of a does-not-hold (issue 23), in book notation with each edited
+    """The repairs of a does-not-hold, in book notation with each edited
     subterm in ``⟦…⟧``: per failing member, what was searched and each repair kept, with
     its method, failure bound and whether it is the declared correction."""
     if not r.repair_search and r.correction is None:

@@ -50,7 +50,7 @@ def write_user_report(modules, out: Path, jobs: int = 1, cache: bool = False,
     code = 0
     for um in load_many(modules):
         with Reporter(f"rigidsym report --module {um.title}") as rep:
-            # the files show no expanded strings: verify's stored results serve (issue 69)
+            # the files show no expanded strings: verify's stored results serve
             results = run_checks(select(None, None, [um.name]), jobs=jobs, progress=True,
                                  cache=cache, reporter=rep, extra=transcription_extra(),
                                  expanded=False)

@@ -1,5 +1,5 @@
 """Entries with square roots (a norm ``‖x‖ = √(xᵀx)``) decided exactly without evaluating
-a root (issue 40: ``‖R x‖ = ‖x‖``, the slip ``‖R x‖ = ‖x‖²``).
+a root (``‖R x‖ = ‖x‖``, the slip ``‖R x‖ = ‖x‖²``).
 
 At a random rational point a norm is irrational, so the exact probes of
 :func:`rigidsym.zero.decide.decide_zero` cannot evaluate it. Here the roots of an entry are

@@ -1,4 +1,4 @@
-"""The corpus's own numerical oracle (issue 40, item 4): NumPy values of the books' symbols
+"""The corpus's own numerical oracle: NumPy values of the books' symbols
 at random points, drawn by the kinds of each book's symbol table, and the books' operators
 written out from their definitions. Independent of rigidsym's reader: nothing here imports
 rigidsym; each entry's ``num`` evaluates both members of its equation by hand."""
@@ -228,7 +228,7 @@ def E(section: str, number: str, latex: str, holds: bool, num, note: str = "",
     """One corpus entry: where it is in the book, its LaTeX as the book prints it, whether
     it holds (False: a slip, a realistic mistyping of a true equation) and ``num``, a
     function of a :class:`Point` returning the two members as NumPy values. ``lets``: the
-    ``--let`` models and functions a reader of the book writes (issue 52), beside the
+    ``--let`` models and functions a reader of the book writes, beside the
     table's kinds."""
     return {"section": section, "number": number, "latex": latex, "holds": holds,
             "num": num, "note": note, "lets": list(lets)}

@@ -1,4 +1,4 @@
-"""Load the corpus (issue 40, item 4): the books' modules, each entry with an id, the
+"""Load the corpus: the books' modules, each entry with an id, the
 ``--let`` lines of its book's symbol table for the symbols it uses, and its numerical
 confirmation at random points (:func:`confirm`), independent of rigidsym."""
 
@@ -14,7 +14,7 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 BOOKS = ("lynch_park", "murray_li_sastry", "siciliano", "spong", "corke", "featherstone",
          "craig", "barfoot", "sola",
-         # issue 52: books the corpus did not cover, read with --let functions and models
+         # books the corpus did not cover, read with --let functions and models
          "shuster", "diebel", "markley", "tsai", "mccarthy", "goldstein", "selig")
 POINTS = 6  # random points per entry
 SEED = 40
@@ -78,7 +78,7 @@ def lets_for(latex: str, table: str) -> list[str]:
 
 def lets_of(entry: dict) -> list[str]:
     """Every ``--let`` of an entry: its table's kinds of the symbols its LaTeX and its
-    models use, then its models and functions (issue 52)."""
+    models use, then its models and functions."""
     models = list(entry.get("lets", []))
     return lets_for(" ".join([entry["latex"], *models]), entry["table"]) + models
 

@@ -1,5 +1,5 @@
 """J. Diebel, "Representing attitude: Euler angles, unit quaternions, and rotation
-vectors", Stanford, 2006 (issue 52, item 7). Notation: R_1(phi), R_2(theta), R_3(psi) the
+vectors", Stanford, 2006. Notation: R_1(phi), R_2(theta), R_3(psi) the
 rotations about the coordinate axes, functions of their angle (his (46)-(48), passive); the
 Euler-angle matrix R_{123}(phi, theta, psi), a function of three parameters, and the same
 declared as models that use models, top-down as he gives them. Truth by NumPy."""

@@ -1,5 +1,5 @@
 """H. Goldstein, C. Poole and J. Safko, *Classical Mechanics*, 3rd ed., Addison-Wesley, 2002,
-sec. 4.4 (issue 52, item 7). Notation: the Euler angles (phi, theta, psi) of the x-convention,
+sec. 4.4. Notation: the Euler angles (phi, theta, psi) of the x-convention,
 D(phi) and B(psi) rotations about z and C(theta) about x, functions of their angle ((4.43)-
 (4.45), passive), A(phi, theta, psi) = B(psi) C(theta) D(phi) (4.46), a function of three
 parameters. Truth by NumPy."""

@@ -1,5 +1,5 @@
 """F. L. Markley and J. L. Crassidis, *Fundamentals of Spacecraft Attitude Determination and
-Control*, Springer, 2014, sec. 2.9 (issue 52, item 7). Notation: the quaternion q with its
+Control*, Springer, 2014, sec. 2.9. Notation: the quaternion q with its
 vector part q_{1:3} and scalar part q_4 (scalar last), Xi(q) and Psi(q) the 4x3 matrices of
 (2.88)-(2.89), functions of q; A(q) the attitude matrix (2.125). Truth by NumPy."""
 

@@ -1,5 +1,5 @@
 """J. M. McCarthy, *An Introduction to Theoretical Kinematics*, MIT Press, 1990, ch. 2-3
-(issue 52, item 7). Notation: the Cayley map C(b) = (I - B)^{-1}(I + B) of the Rodrigues
+. Notation: the Cayley map C(b) = (I - B)^{-1}(I + B) of the Rodrigues
 vector b (B = [b]x), a function of b (his (2.33)); its properties. Truth by NumPy."""
 
 import numpy as np

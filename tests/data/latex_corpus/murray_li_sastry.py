@@ -23,7 +23,7 @@ g_2: transform
 \hat\xi: se(3)
 """
 
-# MLS's \hat\omega is hat(omega): a reading of the book's notation (issue 40 item 1), not a
+# MLS's \hat\omega is hat(omega): a reading of the book's notation, not a
 # kind; entries that need it say so in their note.
 _MLS = "needs MLS's reading of \\hat\\omega as the skew matrix of \\omega"
 

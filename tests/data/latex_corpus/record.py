@@ -1,5 +1,5 @@
 """Run every corpus entry through ``rigidsym.check_latex`` with its book's table and write
-what it answered to ``baseline.json`` (issue 40, item 4: today's results, recorded before
+what it answered to ``baseline.json`` (today's results, recorded before
 the reader is changed). Run: ``python tests/data/latex_corpus/record.py [IDS...]``."""
 
 from __future__ import annotations

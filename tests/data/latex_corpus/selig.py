@@ -1,5 +1,5 @@
 """J. M. Selig, *Geometric Fundamentals of Robotics*, 2nd ed., Springer, 2005, sec. 4.3
-(issue 52, item 7). Notation: the rotation R(n, theta) of the unit axis n and angle theta in
+. Notation: the rotation R(n, theta) of the unit axis n and angle theta in
 Rodrigues' form I + sin(theta) N + (1 - cos(theta)) N^2, N = [n]x, a function of a vector and
 an angle; e^{theta [n]x} its exponential form. Truth by NumPy."""
 

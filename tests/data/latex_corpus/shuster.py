@@ -1,5 +1,5 @@
 """M. D. Shuster, "A survey of attitude representations", *J. Astronautical Sciences* 41(4),
-1993, pp. 439-517 (issue 52, item 7). Notation: [[u]] the *negative* of the cross-product
+1993, pp. 439-517. Notation: [[u]] the *negative* of the cross-product
 matrix (his (57)), written here as the --let function N(u) = -[u]x, since the reader refuses
 [[u]] by name; A(n, theta) the attitude matrix of the axis n and angle theta, a function of
 two parameters; Gibbs vector g = tan(theta/2) n; quaternion (q, q4). The attitude matrix is

@@ -1,5 +1,5 @@
 """L.-W. Tsai, *Robot Analysis: The Mechanics of Serial and Parallel Manipulators*, Wiley,
-1999, sec. 3.4 and 3.7 (issue 52, item 7). Notation: \\$ a screw, [s; s_O] with
+1999, sec. 3.4 and 3.7. Notation: \\$ a screw, [s; s_O] with
 s_O = r x s + h s (the pitch h, a point r of the axis); \\$_1 o \\$_2 the reciprocal product
 s_1 . s_O2 + s_2 . s_O1, written \\$_1^T Delta \\$_2 with Delta = [0 1; 1 0]. Truth by NumPy."""
 

@@ -1,4 +1,4 @@
-"""Symbol-table lines of section 3.8's body of point masses (issue 65): how certcheck's
+"""Symbol-table lines of section 3.8's body of point masses: how certcheck's
 second reader binds the book's integral sign, mass, centroid and inertia dyad to a
 certificate's atoms, each line in the book's glyphs for a referee to hold against the page.
 
@@ -10,7 +10,7 @@ particles, each a small table of its own glyphs (its mass as ``\\rho``, its posi
 ``\\mathbf{p}`` and, for a moving body (the table gives ``\\dot{\\mathbf{Q}}`` or
 ``\\dot{\\mathbf{o}}``), their rates); certcheck reads an integrand once per particle under
 it. A moving body's integrals cost certcheck under 2 s of CPU per id without python-flint
-since its field cancels a denominator's factors as soon as they divide (issue 65; they took
+since its field cancels a denominator's factors as soon as they divide (they took
 20-40 s before, and a moving body had no line).
 Where the certificate's relation is free of ``o`` but has ``Q`` and the body's shape (the
 inertia dyad (3.138), unchanged by a translation), each particle binds ``\\mathbf{r}``, its

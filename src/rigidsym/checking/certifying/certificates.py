@@ -1,4 +1,4 @@
-"""Certificates of verdicts (issue 49): each decided id written as a statement and its
+"""Certificates of verdicts: each decided id written as a statement and its
 evidence, in the format of ``docs/certificates.md``, for the independent checker
 ``certcheck/`` (standard library only; it never imports rigidsym or sympy).
 

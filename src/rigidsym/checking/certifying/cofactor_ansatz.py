@@ -1,4 +1,4 @@
-"""Cofactors by a linear ansatz (issue 49), as Lean's ``linear_combination`` is used: find
+"""Cofactors by a linear ansatz, as Lean's ``linear_combination`` is used: find
 polynomials ``mu_i`` with ``f = sum mu_i h_i`` whose monomials are those that bring a term of
 ``h_i`` onto a term of ``f`` (and, ``rounds`` times, onto a term of what they produce), by
 exact linear algebra over Q (python-flint). No multiplier: the cofactors stay as small as the

@@ -1,4 +1,4 @@
-"""Cofactor certificates of identities (issue 49): ``D (lhs - rhs) = sum_i mu_i h_i`` with
+"""Cofactor certificates of identities: ``D (lhs - rhs) = sum_i mu_i h_i`` with
 ``h_i`` the hypotheses the checker generates from the kinds, ``mu_i`` polynomials in the atoms
 and ``D`` a polynomial that is not zero at a stated point of the constraint set.
 

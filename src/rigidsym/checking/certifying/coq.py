@@ -1,4 +1,4 @@
-"""Coq proofs of identity certificates (issue 49): each entry of a relation with cofactor
+"""Coq proofs of identity certificates: each entry of a relation with cofactor
 evidence becomes a lemma ``forall atoms, hypotheses -> divisors <> 0 -> lhs = rhs`` proved,
 as Lean's ``linear_combination`` would, by ``ring`` (or ``field`` where the statement
 divides) checking ``D (lhs - rhs) = sum mu_i h_i`` with the certificate's cofactors, then

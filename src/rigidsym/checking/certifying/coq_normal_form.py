@@ -1,4 +1,4 @@
-"""Coq proofs by normal forms (issue 49): for a relation whose hypotheses are those of unit
+"""Coq proofs by normal forms: for a relation whose hypotheses are those of unit
 vectors and angles only (no rotation, nothing along a motion), the certificate's ``let``
 abbreviations become Coq ``Definition``s (the statement stays as small as the certificate,
 where inlining them made 3.14's file 1.8 MB), each polynomial abbreviation is rewritten to

@@ -1,4 +1,4 @@
-"""Symbol-table lines of section 3.2's displacement, line and pose (issue 65): how certcheck's
+"""Symbol-table lines of section 3.2's displacement, line and pose: how certcheck's
 second reader binds the glyphs sections 3.2-3.2.3 define in words, by a later display or by
 the id's own definition, each line in the book's glyphs for a referee to hold against the
 page (read firmly: a side that differs is a rejection).

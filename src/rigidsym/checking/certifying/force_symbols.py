@@ -1,4 +1,4 @@
-"""Symbol-table lines of section 3.7's systems of forces (issue 65): how certcheck's second
+"""Symbol-table lines of section 3.7's systems of forces: how certcheck's second
 reader binds the book's resultant force ``f``, its magnitude ``||f||`` and the moments
 ``n_A``, ``n_P`` (which the page defines in words: "a system of forces acting on a rigid
 body") to a certificate's atoms, each line in the book's glyphs for a referee to hold

@@ -1,4 +1,4 @@
-"""Symbol-table lines of sections 3.3, 3.4.1 and 3.4.2's first screws (issue 65): how
+"""Symbol-table lines of sections 3.3, 3.4.1 and 3.4.2's first screws: how
 certcheck's second reader binds the glyphs the page defines in words, or by a display
 below the one that uses them, to a certificate's atoms, each line in the book's glyphs for
 a referee to hold against the page.

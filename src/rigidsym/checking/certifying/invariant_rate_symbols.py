@@ -1,4 +1,4 @@
-"""Symbol-table lines of the rates of the rotation invariants (issue 65): how certcheck's
+"""Symbol-table lines of the rates of the rotation invariants: how certcheck's
 second reader binds the glyphs of (3.76a)-(3.97e) (the end of section 3.4.2 and section
 3.5) to a certificate's atoms, each line in the book's glyphs for a referee to hold against
 the page.

@@ -1,5 +1,5 @@
 """The triangular set of a rotation (and of a transform's rotation block) for cofactor
-certificates (issue 49, :mod:`rigidsym.checking.certifying.cofactors`).
+certificates (:mod:`rigidsym.checking.certifying.cofactors`).
 
 The checker's hypotheses of a rotation ``Q`` with columns ``c1, c2, c3`` are
 ``H_ij = c_i . c_j - [i = j]`` (``i <= j``) and ``det Q - 1``; they are not triangular in

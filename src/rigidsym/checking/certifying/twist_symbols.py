@@ -1,4 +1,4 @@
-"""Symbol-table lines of section 3.8's twists and momenta (issue 65): how certcheck's second
+"""Symbol-table lines of section 3.8's twists and momenta: how certcheck's second
 reader binds the book's twist ``t``, momentum screw ``mu``, wrench ``w``, momenta ``m``,
 ``h_C``, the resultant ``f`` and moment ``n_C`` and their rates to a certificate's atoms,
 each line in the book's glyphs for a referee to hold against the page.

@@ -18,7 +18,7 @@ declared domain, and left alone otherwise (the zero test then says ``undecided``
   of at most a quarter turn read from ``|vect Q| = sin(theta)``, ``theta = b/2`` (the Lie
   logs' small-angle branches);
 - a half-integer power ``E^(k/2)`` (the norm ``theta = sqrt(w^T w)`` of a rotation vector
-  and its powers, issue 38) with ``E - (c f(b))^2 = 0`` (decided exactly) for an angle ``b``
+  and its powers) with ``E - (c f(b))^2 = 0`` (decided exactly) for an angle ``b``
   on ``[0, pi]``, ``f`` one of ``b``, ``sin b``, ``cos(b/2)``, ``sin(b/2)`` (each non-
   negative there) and ``c`` in ``{1, 2, 1/2}``, is ``(c f(b))^k``: the polar parametrisation
   ``w = theta e`` (``theta >= 0``, ``e`` a unit vector) makes the trigonometric functions of
@@ -122,7 +122,7 @@ def _nodes(exprs: list, types: tuple) -> set:
     """The subexpressions of ``exprs`` of one of ``types`` (``Basic.atoms(*types)`` of
     each, united), each distinct node visited once: ``atoms`` walks a subexpression shared
     by many entries (a rotation matrix in every entry of a product) once per occurrence,
-    a tenth of a cold ``rigidsym verify`` (issue 54)."""
+    a tenth of a cold ``rigidsym verify``."""
     out, seen = set(), set()
     stack = list(exprs)
     while stack:

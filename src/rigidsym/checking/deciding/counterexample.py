@@ -239,7 +239,7 @@ def _add_fixed(add, in_rels: set, skip: set, model, known: set) -> None:
 def _group_alias(model: dict, failing: set = frozenset(), used: set = frozenset()) -> dict:
     """Constrained group name -> the reader's symbol whose model value is exactly that
     group (``R: rigid_motion().Q`` -> ``{"Q": "R"}``): "how the point was chosen" names
-    the reader's symbol, not the group's internal name (issue 28). A symbol of the failing
+    the reader's symbol, not the group's internal name. A symbol of the failing
     member is preferred, then one of the statement's relations, then any."""
     out: dict = {}
     keys = sorted(model, key=lambda k: (k not in failing, k not in used))

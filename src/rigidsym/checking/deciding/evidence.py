@@ -86,7 +86,7 @@ def _exact_value(x, plan, pt):
             for a in plan.bare if a in plan.angles}
     bare.update({a: sp.Rational(pt[s]) for a, s in plan.bare.items() if a not in bare})
     # a bare angle is its own variable in the zero test (independent of its tangent);
-    # the values shown are the consistent ones, 2M atan(tau), as the balls use (issue 28)
+    # the values shown are the consistent ones, 2M atan(tau), as the balls use
     own = {plan.bare[a] for a in bare if a in plan.angles}
     spt = {k: sp.Rational(v.numerator, v.denominator) for k, v in pt.items() if k not in own}
 
@@ -114,7 +114,7 @@ def exact_counterexample(lhs, rhs, witness, seed, extra=()) -> tuple[dict, objec
         v = evaluate(rule, plan, pt) if rule != atom else pt[atom]
         point[sp.sstr(atom)] = str(v)
     for a, (tau, M) in plan.angles.items():
-        # evaluated where it is a number (issue 52: "ψ = 0", "-pi/2", never "2*atan(0)")
+        # evaluated where it is a number ("ψ = 0", "-pi/2", never "2*atan(0)")
         point[sp.sstr(a)] = sp.sstr(2 * M * sp.atan(sp.Rational(pt[tau].numerator,
                                                                 pt[tau].denominator)))
     lv, rv = _exact_value(lhs, plan, pt), _exact_value(rhs, plan, pt)

@@ -53,7 +53,7 @@ def explicit_scalar(s, model):
     if model and s.has(*_MATRIX_TERMS):
         # evaluated on the model before substituting it: a model's value is often a mutable
         # sp.Matrix, and xreplace would put it inside an operator's arguments (CPM, Ad, ad,
-        # hat ...), where hashing it raises TypeError (issue 40: aᵀ CPM(b) a = 0)
+        # hat ...), where hashing it raises TypeError (aᵀ CPM(b) a = 0)
         s = s.replace(lambda z: isinstance(z, _MATRIX_TERMS), lambda z: _ev(z, model))
     y = s.xreplace(model) if model else s
     if not y.has(*_MATRIX_TERMS, sp.MatrixExpr, sp.Derivative):
@@ -142,7 +142,7 @@ def _inverse(m: sp.ImmutableMatrix) -> sp.ImmutableMatrix:
     symbols, ``b[0, 0]``) fraction-free over their ring (sympy's ``DomainMatrix``), each
     entry one cancelled fraction; any other by ``inv()``. Sympy's ``inv()`` simplifies each
     Gauss-Jordan pivot: it took 6-39 s on the Cayley map's ``(I_3 - [b]x)^{-1}(I_3 + [b]x)``
-    (McCarthy, issue 52) and 29 s on a generic 4x4, the ring 0.01-0.15 s.
+    (McCarthy) and 29 s on a generic 4x4, the ring 0.01-0.15 s.
 
     Raises:
         ValueError: ``m`` is not square, or singular (as ``inv()``:

@@ -65,7 +65,7 @@ def printed_latex(members: list[dict]) -> str:
     """The LaTeX of a user's equation as printed, from its printed members (a user id
     declares no ``latex=``): every member whose book notation was kept (at most
     :data:`MEMBER_TEXT_LIMIT` characters, so a form of 160 is always shown), ``""`` when a
-    member's was not (issue 28)."""
+    member's was not."""
     tex = [m["latex"] for m in members if m["role"] == "printed"]
     return r",\quad ".join(tex) if tex and all(tex) else ""
 

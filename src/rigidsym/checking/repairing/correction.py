@@ -44,7 +44,7 @@ class RepairSettings:
 
     enabled: bool = True
     budget: int | None = None
-    seconds: float | None = None  # a time limit of the search per statement (issue 52)
+    seconds: float | None = None  # a time limit of the search per statement
 
 
 def budget_of(eq, settings: RepairSettings) -> int:
@@ -96,7 +96,7 @@ def _search(eq, st, rels, outs, seed, settings, decide) -> tuple[list, list, dic
     deadline = time.monotonic() + limit if settings.seconds else None
     searches, records, first = [], [], {}
     try:
-        with deadline_.time_limit(deadline):  # a step past the deadline is stopped (issue 52)
+        with deadline_.time_limit(deadline):  # a step past the deadline is stopped
             sh = repair.share(failing, rels, st.model, decide, seed)
             for rel in failing:
                 s = repair.search_member(rel, sh, budget, deadline, limit)

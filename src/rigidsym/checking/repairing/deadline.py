@@ -1,4 +1,4 @@
-"""The repair search's time limit (issue 52 item 6): an alarm that stops the search inside a
+"""The repair search's time limit: an alarm that stops the search inside a
 step (one symbolic inverse of a final check can take a minute), which the search catches and
 reports as "search stopped after N s, K candidates tried"."""
 
@@ -15,7 +15,7 @@ __all__ = ["Late", "time_limit"]
 
 class Late(BaseException):  # noqa: N818  (not an error: the time is up)
     """The repair search's time limit passed inside one of its steps (a symbolic inverse
-    of a final check, issue 52): raised by :func:`time_limit`'s alarm, caught by the search,
+    of a final check): raised by :func:`time_limit`'s alarm, caught by the search,
     which stops and says so. A ``BaseException``, so that no ``except Exception`` on the
     way (sympy's fallbacks) takes it for a failure and goes on."""
 

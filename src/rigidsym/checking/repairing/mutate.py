@@ -1,9 +1,9 @@
 """One generator of small edits of a printed form, for two users:
 
-- the **mutation test** of the zero test (issue 21, "Soundness stays first"): a verified
+- the **mutation test** of the zero test ("Soundness stays first"): a verified
   member with a term's sign flipped, a constant changed, a transpose dropped, ``sin ↔ cos``
   swapped or a term dropped must be decided does-not-hold whenever it is non-zero;
-- the **repair search** (issue 23, :mod:`rigidsym.checking.repairing.repair`): the smallest
+- the **repair search** (:mod:`rigidsym.checking.repairing.repair`): the smallest
   edit that makes a failing member hold.
 
 The vocabulary, in the order repairs are reported (:data:`KINDS`):
@@ -50,11 +50,11 @@ __all__ = ["KINDS", "MUTATION_KINDS", "VOCABULARY_VERSION", "Edit", "Pools", "po
            "single_edits", "compatible", "apply_edits", "describe", "mutants"]
 
 #: bumped whenever the vocabulary or its order changes (it joins the verdict cache's key)
-VOCABULARY_VERSION = 3  # 2: a reader's order (issue 28 item 4); 3: one-minus (issue 29)
+VOCABULARY_VERSION = 3  # 2: a reader's order; 3: one-minus
 KINDS = ("flip-sign", "drop-term", "insert-term", "scale-term", "coefficient", "transpose",
          "drop-transpose", "transpose-every", "swap-factors", "reverse-product", "sin-cos",
          "one-minus", "replace-symbol", "replace-every", "multiply-factor")
-#: the kinds of the mutation test (issue 21)
+#: the kinds of the mutation test
 MUTATION_KINDS = ("flip-sign", "coefficient", "drop-transpose", "sin-cos", "drop-term")
 _RANK = {k: i for i, k in enumerate(KINDS)}
 _SCALES = (sp.Integer(2), sp.Rational(1, 2), sp.S.NegativeOne)

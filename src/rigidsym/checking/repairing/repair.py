@@ -93,7 +93,7 @@ class Search:
     full_tests: int = 0
     undecidable: int = 0
     stopped: str = ""
-    limit: float = 0.0  # the time limit it ran under, seconds (0: none; issue 52)
+    limit: float = 0.0  # the time limit it ran under, seconds (0: none)
 
 
 @dataclass
@@ -123,7 +123,7 @@ class _Ctx:
     deadline: float | None = None  # time.monotonic() after which the search stops
 
     def late(self) -> bool:
-        """Past the deadline: the search stops, saying so (issue 52, item 6)."""
+        """Past the deadline: the search stops, saying so."""
         if self.deadline is not None and time.monotonic() > self.deadline:
             self.search.stopped = "time"
             return True
@@ -150,7 +150,7 @@ def _rational(xs: list) -> list | None:
     ``cos θ`` as a generator, as :func:`sympy.expand` takes it), each one cancelled
     fraction (zero exactly when it is zero), or ``None`` when they are not (a square
     root): the inverse of a 4x4's entries (McCarthy, Sola's ``Ad`` of ``M^{-1}``) took
-    ``expand`` 30 s (issue 52), the fraction field under 1 s."""
+    ``expand`` 30 s, the fraction field under 1 s."""
     sub = {a: sp.Dummy() for x in xs for a in sp.sympify(x).atoms(MatrixElement)}
     try:
         dm = DomainMatrix.from_list_sympy(1, len(xs), [[sp.sympify(x).xreplace(sub)
@@ -326,7 +326,7 @@ def _dies(ctx: _Ctx, raw) -> bool:
         except Inconclusive:
             continue
         except (ValueError, ZeroDivisionError, ArithmeticError):  # a singular candidate
-            return True  # (an inverse of a singular block): skipped, never raised (issue 52)
+            return True  # (an inverse of a singular block): skipped, never raised
     return False
 
 

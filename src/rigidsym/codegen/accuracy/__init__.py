@@ -1,4 +1,4 @@
-"""rigidsym.codegen.accuracy: the choice and measurement of accurate forms (issue 37).
+"""rigidsym.codegen.accuracy: the choice and measurement of accurate forms.
 
 - ``rule``: the accuracy rule, ``err <= min(8 u (kappa + 1), max(2 e_ref, 4 u))``, and the
   textbook formula it is judged against.

@@ -1,4 +1,4 @@
-"""The compensated difference of products ``a b - c d`` (issue 37).
+"""The compensated difference of products ``a b - c d``.
 
 ``a b - c d`` with ``a b`` close to ``c d`` loses ``u |a b| / |a b - c d|`` relative in
 floating point: a cross product ``p1 x p2`` of two nearly parallel vectors (the moment of a

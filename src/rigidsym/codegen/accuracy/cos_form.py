@@ -1,5 +1,5 @@
 """The form of a bare ``cos phi`` in the half-angle rewrite, chosen per kernel by measured
-error (issue 37).
+error.
 
 The half-angle rewrite (:mod:`.optimise`) folds ``1 - cos phi`` into ``2 sin^2(phi/2)`` and
 ``1 + cos phi`` into ``2 cos^2(phi/2)``, then writes a ``cos phi`` left alone from the two

@@ -1,4 +1,4 @@
-"""The error of a form and its worst ratio to the rule (issue 37): the one measure the code
+"""The error of a form and its worst ratio to the rule: the one measure the code
 generator's choice of forms (:mod:`rigidsym.codegen.accuracy.rewrites`,
 :mod:`rigidsym.codegen.accuracy.cos_form`) and the float32 precision plan
 (:mod:`rigidsym.codegen.accuracy.float32`) judge by.

@@ -1,4 +1,4 @@
-"""The precision plan of the float32 kernels (issue 20): float32 arithmetic wherever the
+"""The precision plan of the float32 kernels: float32 arithmetic wherever the
 result stays within the error budget, float64 for the subexpressions that need it.
 
 Found by measuring, per kernel and per subexpression, at generate time. The nodes of a

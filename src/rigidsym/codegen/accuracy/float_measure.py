@@ -1,4 +1,4 @@
-"""The measured accuracy bound of the C target's float functions, per kernel (issue 53 item 4,
+"""The measured accuracy bound of the C target's float functions, per kernel (
 issue 66 item 3).
 
 Builds the C target of some kernels (and their Jacobian twins) with the C compiler and hands

@@ -1,4 +1,4 @@
-"""The peers' adapters (issue 48 item 2): each library's call for each kernel, in the
+"""The peers' adapters: each library's call for each kernel, in the
 kernel's conventions, registered into :mod:`.peers`' table by subject (rotations, lines and
 screws, transfers, mass properties and dynamics, SO(3), SE(3), quaternions). Each function
 here calls ``add(kernel, library, call, outputs, adapt)`` once per peer; the conventions they

@@ -1,4 +1,4 @@
-"""The peers of the kernels (issue 48 item 2): per kernel, the functions a user would call
+"""The peers of the kernels: per kernel, the functions a user would call
 instead, in pytransform3d, Pinocchio, PyPose, jaxlie, spatialmath-python and Modern
 Robotics' library, each with the adapter that puts it in the kernel's conventions.
 

@@ -1,5 +1,5 @@
 """The points a form is measured on, over the regimes of
-:mod:`rigidsym.codegen.accuracy.regimes` (the harness's, issue 37): one builder of them
+:mod:`rigidsym.codegen.accuracy.regimes` (the harness's): one builder of them
 (:func:`regime_points`), and the two ways they are taken.
 
 - The code generator's choice of forms (:mod:`rigidsym.codegen.accuracy.rewrites`,
@@ -120,7 +120,7 @@ def sample_inputs(args, n: int = N_RANDOM, seed: int = 20, exact: bool = False):
         else:
             v = rng.standard_normal((m,) + tuple(a.shape))
             if a.name == "omega" and "omega_dot" not in names and "phi" not in names:
-                # down to 1e-18 (issue 30): a Jacobian's ||omega||^-3 overflows float32
+                # down to 1e-18: a Jacobian's ||omega||^-3 overflows float32
                 # below 7e-13 (the C range test re-runs such rows now: plan_inputs drops them)
                 v[n:n + 5] *= np.array([1e-12, 1e-6, 1e-3, 1e-15, 1e-18])[:, None] / \
                     np.linalg.norm(v[n:n + 5], axis=1, keepdims=True)

@@ -1,5 +1,5 @@
 """The regimes a user meets, per kernel: exact points (rationals) where formulas cancel,
-overflow or lose digits (issue 30; in the package since issue 37, so that the code generator
+overflow or lose digits (in the package since issue 37, so that the code generator
 (:mod:`rigidsym.codegen.accuracy.rewrites`) chooses its forms over the regimes the accuracy harness,
 ``benchmarks/accuracy.py``, judges them on).
 
@@ -204,7 +204,7 @@ def _coincident(rng, small, base, out: dict) -> None:
         d = [q(v) for v in rng.standard_normal(3)]
         p[1] = [x + q(s) * y for x, y in zip(p[0], d, strict=True)]
         out.setdefault("p2->p1", []).append(p)
-    # a large offset, a small difference (issue 37: |p2 - p1| / |p| from 1e-1 to 1e-12)
+    # a large offset, a small difference (|p2 - p1| / |p| from 1e-1 to 1e-12)
     for s in [x for x in small if x >= 1e-12]:
         p = base()
         d = [q(v) for v in rng.standard_normal(3)]
@@ -225,7 +225,7 @@ def _transforms_near(rng, small, add, name: str) -> None:
 
 def _derived(kernel, rng, small, base, out: dict) -> None:
     """The zeros of the kernel's own denominator factors and differences in a norm
-    (:mod:`rigidsym.codegen.accuracy.singular_sets`, issue 48), approached from both sides along a
+    (:mod:`rigidsym.codegen.accuracy.singular_sets`), approached from both sides along a
     random rational axis per point: ``|w| = theta0 -+ delta`` for each step ``delta``."""
     from rigidsym.codegen.accuracy.singular_sets import norm_zeros
 
@@ -259,7 +259,7 @@ def regimes(kernel, dtype, n_random: int = 8, seed: int = 0, small=None,
             extremes: bool = True, derived: bool = False):
     """``{regime: [point]}`` for ``kernel`` (its ``Arg`` kinds and names decide the sweeps);
     ``extremes``: the ends of the floating range too; ``derived``: the zeros of the
-    kernel's own denominator factors and differences in a norm (issue 48,
+    kernel's own denominator factors and differences in a norm (
     :mod:`rigidsym.codegen.accuracy.singular_sets`; the harness's, not yet the generator's choice of
     forms: that would regenerate every kernel with a norm)."""
     rng = np.random.default_rng(seed)

@@ -1,4 +1,4 @@
-"""The candidate rewrites' proposals of :mod:`.rewrites` (issue 30, 37): each
+"""The candidate rewrites' proposals of :mod:`.rewrites`: each
 ``propose(flat, ctx) -> (new flat, [(old, new) parts]) | None``; the parts are what the zero
 test decides equal. Kept apart from the measuring and choosing, which is
 :mod:`.rewrites`'s."""
@@ -32,7 +32,7 @@ def axis_point_from_skew(flat, ctx):
     x c + (c - e (e.c))/2``, with ``Q - 1 = sin phi E + (1 - cos phi) E^2``). The declared
     form reads the diagonal of Q, whose rounding (absolute u) is relative ``u / phi`` of
     ``(Q - 1)^T c`` as phi -> 0; this one reads the axis from the skew part only, as
-    pytransform3d's screw parameters do (issue 37: 3e7 u where they are 4 u at phi = 1e-8)."""
+    pytransform3d's screw parameters do (3e7 u where they are 4 u at phi = 1e-8)."""
     k = ctx["kernel"]
     vecs = [a.name for a in k.args if a.kind == "any" and a.shape == (3,)]
     reps = {}
@@ -66,7 +66,7 @@ def axis_point_from_axis(flat, ctx):
     the declared product is exactly this for every e, unit or not (so its derivatives are
     the declared ones too): the midpoint's part normal to the axis plus the cot term, read
     from the inputs, where the declared form rounds Q's nine entries and two sums of three
-    products over them (issue 37: 5.1 u where the textbook is 1.0 u at a random point); the
+    products over them (5.1 u where the textbook is 1.0 u at a random point); the
     ``d`` terms keep it equal to the declared formula at a unit vector a few ulps off (35 u
     there without them), and ``d`` is ``e.e - 1`` compensated (plainly it is itself a few
     ulps, so half wrong)."""
@@ -181,7 +181,7 @@ def _merge_angle_terms(e: sp.Expr, phi: sp.Symbol, memo: dict) -> sp.Expr:
 def angle_fractions(flat, ctx):
     """Sums of fractions in ``cos phi`` over one phi-free factor as one reduced fraction:
     ``sympy.diff`` of ``sin phi / (2 - 2 cos phi)`` gives ``cos phi / (2 - 2 cos phi) - 2
-    sin^2 phi / (2 - 2 cos phi)^2``, which is ``-1 / (2 - 2 cos phi)`` (issue 37:
+    sin^2 phi / (2 - 2 cos phi)^2``, which is ``-1 / (2 - 2 cos phi)`` (
     ``N_tilde_dot_with_jacobians``' derivative by phi 4.7 u where the textbook is 2.3 u)."""
     out = list(flat)
     for phi in ctx["angles"]:

@@ -1,4 +1,4 @@
-"""Accuracy rewrites of a kernel's outputs, chosen by measured error (issue 30).
+"""Accuracy rewrites of a kernel's outputs, chosen by measured error.
 
 Before the half-angle rewrite and CSE (:mod:`.optimise`), each build of a kernel (the main
 one and each branch) is offered to a few candidate rewrites, in the manner of Herbie

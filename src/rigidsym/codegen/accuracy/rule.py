@@ -1,4 +1,4 @@
-"""The accuracy rule of the kernels (issue 37 item 1): one function, for the harness
+"""The accuracy rule of the kernels: one function, for the harness
 (``benchmarks/accuracy.py``), the code generator's choice of forms (:mod:`.rewrites`) and the
 float32 precision plan (:mod:`.float32`).
 
@@ -13,7 +13,7 @@ in the same type, among the textbook formula of the declaration evaluated naivel
 peer library that has the operation (float64 only). The first half says the kernel is as
 good as the problem allows; the second that it is never worse than what a user would
 write instead, which the first alone does not say where kappa counts perturbations of
-several arguments separately (issue 37: ``plucker_from_points`` 8e12 u off where the
+several arguments separately (``plucker_from_points`` 8e12 u off where the
 textbook is 18 u off, inside ``8 u kappa`` with kappa = 5.8e13).
 """
 

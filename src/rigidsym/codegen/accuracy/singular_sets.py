@@ -1,5 +1,5 @@
 """The singular and cancellation sets of a kernel's program, derived from its formula
-(issue 48 item 1), not listed by hand.
+, not listed by hand.
 
 A list of regimes someone wrote (0, pi, close points, the ends of the range) never
 approaches a singular set it does not name: the inverse Jacobians' ``1 - cos theta`` vanishes

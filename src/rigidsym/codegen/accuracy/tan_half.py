@@ -1,4 +1,4 @@
-"""The rule "a polynomial in tan(phi/2)" of :mod:`.rewrites` (issue 37): a kernel's fractions
+"""The rule "a polynomial in tan(phi/2)" of :mod:`.rewrites`: a kernel's fractions
 over ``1 + cos phi`` as the polynomial in ``t = tan(phi/2)`` they are, each coefficient
 homogenised in the unit vector (``L_tilde_dot``: rule 1.39 -> 0.856 of issue 37). Limited to a
 shape cheap to recognise: sympy's ``cancel`` runs only where it may give a polynomial."""
@@ -79,7 +79,7 @@ def tan_half_polynomial(flat, ctx):
     a polynomial in ``t = tan(phi/2)`` -> that polynomial, each coefficient homogenised in
     the unit vector (:func:`_homogenised`), ``t`` from ``sin(phi/2) / cos(phi/2)``:
     ``L_tilde_dot = [CPM(v) | -v]``, ``v = (w + t (w x e) + t^2 (e (e . w) + w (e . e -
-    1)))/2`` (issue 37: the half-angle program reads ``sin(phi/2)`` apart from ``cos
+    1)))/2`` (the half-angle program reads ``sin(phi/2)`` apart from ``cos
     phi``; 6.3 u where the textbook is 2.3 u). Equal to the declaration off the unit
     sphere too (the identity is ``sin phi = 2t / (1 + t^2)``, ``cos phi = (1 - t^2) / (1 +
     t^2)``), so the harness's unit vectors a few ulps off read the declared formula."""

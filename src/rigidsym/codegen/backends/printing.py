@@ -137,7 +137,7 @@ def program_lines(p: Program, printer) -> dict:
 def divisors_and_radicands(p: Program, printer) -> list[str]:
     """The divisors and radicands of ``p``, printed: a finite quotient of an overflowed
     divisor (``x / inf == 0``: the unit vector of ``1/sqrt(|p|^2)`` with ``|p|^2 = inf``) is
-    finite but wrong, so they are checked for finiteness too (issue 19, item 6)."""
+    finite but wrong, so they are checked for finiteness too."""
     out: list[str] = []
     for e in [v for _, v in p.temps] + list(p.outputs):
         for node in sp.preorder_traversal(sp.sympify(e)):

@@ -13,7 +13,7 @@ or of a rotation ``Q`` is an independent variable); the tangent-space maps of th
 invariants are the book's N, L, H (3.76)-(3.77).
 
 Kernels with per-sample branches are transformed only where they ask for it
-(``Kernel.branch_jacobian``: the Lie logs and ``euler_rodrigues_from_rotation``, issue 38).
+(``Kernel.branch_jacobian``: the Lie logs and ``euler_rodrigues_from_rotation``).
 Their branches agree on the constraint manifold only, so each branch is differentiated with
 its value, under the same condition: the Jacobian kernel takes one branch per sample for
 values and derivatives together, and returns the derivative of the very function the value

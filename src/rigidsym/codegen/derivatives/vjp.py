@@ -1,4 +1,4 @@
-"""The vector-Jacobian product of a kernel's program, by reverse mode (issue 38, item 4).
+"""The vector-Jacobian product of a kernel's program, by reverse mode.
 
 For a straight-line :class:`~rigidsym.codegen.optimise.Program` (``x_k = e_k(inputs,
 x_<k)``, then ``y_i = o_i(...)``) and one cotangent symbol ``_g{i}`` per output, the adjoint
@@ -82,7 +82,7 @@ def _shared(body: list, outputs: list, mine: str, prefix: str) -> tuple[list, li
     them, e.g. a cotangent times a forward temp in several adjoints) and the ``outputs``;
     each common subexpression (``prefix0``, ...) is placed just before its first reader, so
     every temp is still defined before it is read. Fewer operations: a fixed cost of a call
-    in eager PyTorch, where each is one dispatch (issue 38)."""
+    in eager PyTorch, where each is one dispatch."""
     idx = [i for i, (x, _) in enumerate(body) if str(x).startswith(mine)]
     exprs = [body[i][1] for i in idx] + [sp.sympify(o) for o in outputs]
     reps, red = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
@@ -162,7 +162,7 @@ def vjp_program(program: Program, inputs: list[sp.Symbol]) -> Program:
 def jacobian_program(program: Program, args: list[list[sp.Symbol]],
                      sizes: list[int]) -> Program:
     """The program of the values and the full Jacobian of ``program``, by vector forward mode
-    over its straight-line code (issue 38: the SE(3) log's 6 x 16 Jacobian by sympy on the
+    over its straight-line code (the SE(3) log's 6 x 16 Jacobian by sympy on the
     expanded formula took 516 s to generate). ``args``: each argument's flat symbols;
     ``sizes``: each (named) output's number of entries. Outputs ``program.outputs`` then, for
     each output ``o`` and argument ``a``, ``d o[i] / d a[j]`` (``i`` major), as

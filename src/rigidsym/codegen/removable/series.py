@@ -1,4 +1,4 @@
-"""The series of a removable quotient and its certificate (issue 38 item 1): for an even
+"""The series of a removable quotient and its certificate: for an even
 ``h(s)`` with a finite limit at ``s = 0`` (``sin s / s``, ``(1 - cos s) / s^2``, ...), the
 Taylor coefficients of ``g(t) = h(sqrt t)`` in exact rationals, and the order ``n`` and switch
 threshold ``t*`` of the branch ``t < t* -> sum_k c_k t^k`` with its error bounded, remainder
@@ -394,7 +394,7 @@ def _wider(ser: Series, cert: Certificate, bounds: dict) -> Certificate:
     quotient, ``(s cos s + 2 s - 3 sin s) / s^5``: 181 u at ``t* = 2``, 5979 u for a third
     derivative's), ``t*`` doubles (twice at most) while a series within WIDE_SERIES u
     reaches it and the closed form's bound falls by a third at least: the worse of the two
-    branches is what a kernel sees (issue 37: the SE(3) left Jacobian's Jacobian 9 u at
+    branches is what a kernel sees (the SE(3) left Jacobian's Jacobian 9 u at
     ``|w|^2`` just above 2, where the textbook is 3 u)."""
     for _ in range(2):
         t = cert.threshold * 2

@@ -1,4 +1,4 @@
-"""Removable singularities of a kernel's program, derived and certified (issue 38 item 1).
+"""Removable singularities of a kernel's program, derived and certified.
 
 A formula written in a norm ``theta = sqrt(T)`` (``T = w^T w`` for a rotation vector, any
 expression under a square root) divides by powers of ``theta``: ``sin theta / theta``,
@@ -102,7 +102,7 @@ _HA, _HB = sp.symbols("rq_ha rq_hb")
 
 @cache
 def half_angle(h: sp.Expr) -> sp.Expr:
-    """The closed form of ``h`` as printed above ``t*`` (issue 48): where a factor of its
+    """The closed form of ``h`` as printed above ``t*``: where a factor of its
     denominator vanishes at ``s = 2 pi`` (``1 - cos s``, ``sin s``: the zero set of the
     formula's own denominator, derived, not listed), ``h`` in ``a = sin(s/2)``, ``b =
     cos(s/2)`` (``1 - cos s = 2 a^2``, ``sin s = 2 a b``), cancelled and reduced by

@@ -1,5 +1,5 @@
 """The terms of a kernel output in a norm ``s = sqrt(T)``, grouped by their factor free of
-``s`` (issue 38 item 1; used by :mod:`rigidsym.codegen.removable.singularities`).
+``s`` (used by :mod:`rigidsym.codegen.removable.singularities`).
 
 An output is read as a sparse Laurent polynomial: monomials in *atoms* with exact rational
 coefficients (a dict ``{monomial: Fraction}``, a monomial a sorted tuple of ``(atom id,

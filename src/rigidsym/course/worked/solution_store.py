@@ -1,4 +1,4 @@
-"""The worked exercises' solutions on the book's data, kept in the user cache (issue 39):
+"""The worked exercises' solutions on the book's data, kept in the user cache:
 ``rigidsym report`` reads them back instead of solving again while nothing they depend on
 changed. A solution is a pickled :class:`~rigidsym.course.worked.Solution` (exact sympy
 values, steps and checks), in ``verdicts/`` beside the verdicts (``rigidsym cache clear
@@ -16,7 +16,7 @@ FORMAT = 2
 
 
 def path(ex_id: str, module: str, d) -> Path:
-    """Where the solution of ``ex_id`` on ``d`` is kept in the user cache (issue 39): keyed
+    """Where the solution of ``ex_id`` on ``d`` is kept in the user cache: keyed
     by the data (:meth:`~.data.Data.key`), the exercise's module and the book
     modules it imports, the rest of the package and the libraries' versions, so that a
     changed declaration re-solves the exercises that use it only."""

@@ -1,4 +1,4 @@
-"""The evaluation of a generated array program on PyTorch or JAX arrays (issue 31), shared by
+"""The evaluation of a generated array program on PyTorch or JAX arrays, shared by
 both back-ends: no import of either library.
 
 Both back-ends evaluate the same generated programs (``generated/torch``, ``generated/jax``:
@@ -59,7 +59,7 @@ def columns(arrays: list, args: list[dict]) -> list:
         n = int(math.prod(a["shape"]))
         flat = x.reshape(tuple(x.shape[:len(x.shape) - len(a["shape"])]) + (n,))
         # torch's unbind: one dispatch for the n views (and one stack in its backward)
-        # instead of n indexings, a fixed cost of a call at small N (issue 38)
+        # instead of n indexings, a fixed cost of a call at small N
         cols.extend(flat.unbind(-1) if hasattr(flat, "unbind") else
                     (flat[..., i] for i in range(n)))
     return cols
@@ -90,7 +90,7 @@ def evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable, safe=None
     ``safe`` (one float per column, a regular point: :func:`safe_point`) is substituted for
     the inputs of the singular samples before the differentiable evaluation, so that their
     derivatives are finite and a zero cotangent gives exactly zero, never NaN (0 * inf),
-    in a parameter the batch shares (issue 38); their outputs are then the safe point's,
+    in a parameter the batch shares; their outputs are then the safe point's,
     which the caller replaces by NaN or an error. ``singular``: the mask when known (the
     forward's), else found by a first evaluation on ``stop_gradient`` of the inputs.
     """
@@ -131,7 +131,7 @@ def _evaluate(xp, variants: tuple, cols: list, stop_gradient: Callable) -> tuple
 
 def singular_mask(xp, dens, like):
     """The batch mask of the samples where a denominator is 0 or inf (``like``: a column)."""
-    # a denominator that overflowed to inf flags its sample too (issue 37): x / inf = 0 is
+    # a denominator that overflowed to inf flags its sample too: x / inf = 0 is
     # a finite wrong value; eager calls re-run such samples in long double (arrays.rescue)
     sing = None
     for d in dens:
@@ -147,7 +147,7 @@ def nonfinite_rows(xp, arrays: list, batch: tuple):
     """The batch mask of the samples with an inf or NaN entry in one of ``arrays`` (each
     ``batch + shape``): one NaN-propagating sum (``0 * inf`` is NaN) per array, summed,
     where ``isfinite`` then ``all`` was 5 operations an array (``isfinite`` is 4 in
-    PyTorch): fewer nodes for inductor to compile (issue 38); no concatenation, which
+    PyTorch): fewer nodes for inductor to compile; no concatenation, which
     would copy every output once more."""
     total = None
     for a in arrays:
@@ -162,7 +162,7 @@ def rounds_to_inf(xp, arrays: list, batch: tuple, finfo):
     ``|x| >= max + ulp(max) / 2`` (round to nearest even), decided on the float32 values,
     before the rounding: inductor computes a float16 rounding and a check after it in
     float32 without rounding in between, so ``isinf`` of the rounded value is no test there
-    (issue 38)."""
+   ."""
     big = float(finfo.max) + 2.0 ** math.floor(math.log2(float(finfo.max))) * float(
         finfo.eps) / 2
     rows = None
@@ -182,7 +182,7 @@ _NODES = (ast.Module, ast.FunctionDef, ast.arguments, ast.arg, ast.Assign, ast.R
 
 def propagates_inf(source: str) -> bool:
     """Whether the program ``def _main`` in ``source`` (a generated module's text) is
-    non-finite in every output that reads an inf input, decided from the program (issue 38):
+    non-finite in every output that reads an inf input, decided from the program:
     it uses only ``+``, ``-``, ``*``, powers with a positive integer exponent and
     :data:`_NONFINITE_IN_OUT` (each non-finite wherever an argument is: ``inf * 0`` and
     ``inf - inf`` are NaN), so by induction every value that reads an inf is inf or NaN;
@@ -262,7 +262,7 @@ class ArraySpace:
             self._programs["divides", name] = getattr(mod, "DIVIDES", True)
             # an inf input can reach a finite output only through a division, a branch or
             # a function like atan: without them and without a denominator, a traced call
-            # maps its non-finite outputs to NaN instead of its inputs (issue 38)
+            # maps its non-finite outputs to NaN instead of its inputs
             path = self.directory / self.backend / f"{name}.py"
             self._programs["inf", name] = len(v) == 1 and not getattr(
                 mod, "DIVIDES", True) and propagates_inf(path.read_text(encoding="utf-8"))
@@ -329,7 +329,7 @@ class Library:
     ``refuse(exc_type, message)`` (raises the refusals of :func:`modes`), ``note(values)``
     (a warning before conversion, or nothing), ``clear(mask)`` (the mask is known all False
     without a sync or a trace) and ``constant(fn)`` (``fn``'s result a trace-time constant:
-    Dynamo restarted once per float read from an object, issue 38); for the dtypes,
+    Dynamo restarted once per float read from an object); for the dtypes,
     ``floats`` (those accepted), ``float32``, ``finfo``, ``float_dtype(v)`` (the library
     dtype of a floating library or NumPy array, else None) and ``cast(x, dtype)``.
     """
@@ -409,7 +409,7 @@ class Space:
 
     def values_saved(self, name: str, xs) -> tuple:
         """``(outputs, singular, temps)``: :meth:`values` of a kernel with a ``"saved"``
-        program, and the forward temps its VJP reads, for :meth:`vjp_saved` (issue 38)."""
+        program, and the forward temps its VJP reads, for :meth:`vjp_saved`."""
         xp, meta = self.lib.xp, self.progs.meta[name]
         cols = columns(xs, meta["args"])
         outs, dens, temps = self.progs.vjp(name, "saved")[0](*cols)
@@ -468,7 +468,7 @@ class Space:
 
     def _safe_columns(self, name: str, xs, singular, finite: bool = False) -> list:
         """The columns of ``xs``, the safe point's in the ``singular`` samples (no
-        ``where`` without a denominator or with a clear eager mask, issue 38); ``finite``:
+        ``where`` without a denominator or with a clear eager mask); ``finite``:
         inf as NaN first, as :meth:`values`."""
         cols, where = columns(xs, self.progs.meta[name]["args"]), self.lib.xp.where
         if finite and not self.progs.propagates_inf(name):
@@ -480,7 +480,7 @@ class Space:
     def call(self, name: str, values: tuple, check, on_singular):
         """Kernel ``name`` on ``values`` (the public functions' body): convert, validate
         (``check``), broadcast, evaluate, rescue the samples the program cannot compute in
-        its type (eager: :mod:`.rescue`, issue 37), then flag the singular samples
+        its type (eager: :mod:`.rescue`), then flag the singular samples
         and those whose result does not fit the dtype: an error (``on_singular="raise"``)
         or NaN there. ``check=False`` only skips validation."""
         lib, xp = self.lib, self.lib.xp
@@ -511,7 +511,7 @@ class Space:
             # compiled function that flagged the overflowed samples and set NaN there
             return res[0] if len(res) == 1 else tuple(res)
         # a result that does not fit the dtype, from finite inputs (a NaN input's NaN is
-        # its IEEE value, issue 37)
+        # its IEEE value)
         sing = bad
         over = nonfinite_rows(xp, res, batch)
         bad = bad | ((over if big is None else over | big) & ~nonfinite_rows(xp, full, batch))
@@ -537,7 +537,7 @@ class Space:
         if not _ar.screen(lib, full, res, sing, bits):
             return res, sing, True
         rows = _ar.flag_rows(xp, full, res, sing, batch, bits)
-        if not bool(rows.any()):     # flags of ordinary inputs stand (issue 48)
+        if not bool(rows.any()):     # flags of ordinary inputs stand
             return res, sing, False
         res, s, put = _ar.rescue(lib, self.progs, name, full, res, rows, batch, bits)
         dev = lib.device(full)

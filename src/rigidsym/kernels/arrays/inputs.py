@@ -1,4 +1,4 @@
-"""The input rules of the array back-ends (issue 31): the keyword modes of eager and traced
+"""The input rules of the array back-ends: the keyword modes of eager and traced
 calls, the conversion of the arguments, the eager validation of constrained inputs, the
 broadcast batch shape, and the regular point substituted in singular samples. No import of
 PyTorch or JAX.
@@ -112,7 +112,7 @@ def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict],
                     traced: bool = True) -> tuple:
     """The broadcast batch shape of ``xs`` (each less its argument's own trailing shape);
     not ``traced`` (no symbolic shapes), equal batch shapes are taken as they are, without
-    ``broadcast_shapes`` (torch's goes through ``torch._refs``: a fixed cost, issue 38).
+    ``broadcast_shapes`` (torch's goes through ``torch._refs``: a fixed cost).
 
     Raises:
         ValueError: the batch shapes do not broadcast (each argument's shape named).

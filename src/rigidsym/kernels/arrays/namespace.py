@@ -1,4 +1,4 @@
-"""The namespace of an array back-end module (issue 31), its public face: the kernels'
+"""The namespace of an array back-end module, its public face: the kernels'
 functions with their real signatures and docstrings, the namespace of a generated directory
 (``load``), and the module-level functions of ``rigidsym.kernels.torch`` and ``.jax``
 (:func:`module_api`). No import of either library.

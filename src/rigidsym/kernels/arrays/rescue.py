@@ -1,4 +1,4 @@
-"""Finite in, finite out and one NaN policy on the PyTorch and JAX back-ends (issue 37).
+"""Finite in, finite out and one NaN policy on the PyTorch and JAX back-ends.
 
 The C and NumPy kernels re-run the samples they cannot compute in their own type (an input
 of extreme magnitude, an intermediate that overflows or underflows to a zero denominator, a
@@ -62,7 +62,7 @@ def _magnitudes(xp, x, bits: int):
 
 def screen(lib, xs: list, res: list, sing, bits: int) -> bool:
     """Whether :func:`flag_rows` may flag a sample: a few operations over every entry at
-    once and one host read (issue 38: at N = 1e3 eager PyTorch, ``flag_rows`` cost 142 us a
+    once and one host read (at N = 1e3 eager PyTorch, ``flag_rows`` cost 142 us a
     call of ``instant_screw_axis``, this ~40 us; the common case flags nothing)."""
     views = lib.views([*xs, *res, sing])
     if views is not None:  # eager CPU tensors: NumPy's operations cost ~1/3 of PyTorch's
@@ -104,7 +104,7 @@ def finite_columns(cols: list) -> list:
     """:func:`traced_inputs`' rule on the columns inside a kernel's function: ``c + 0 * c``
     is ``c`` bit for bit when finite (signed zeros and subnormals included: ``0 * c`` has
     the sign of ``c``) and NaN for ±inf, with derivative 1. Neither XLA nor inductor folds a
-    float ``0 * c`` (it is NaN at inf). Measured (issue 38), ``jax.jit`` value + gradient of
+    float ``0 * c`` (it is NaN at inf). Measured, ``jax.jit`` value + gradient of
     ``instant_screw_axis`` at N = 1e4, process CPU ms: none 0.77 / 1.10 (float32 / 64),
     ``where(isinf)`` on the inputs before the ``custom_jvp`` 1.12 / 1.50, ``where`` on the
     columns inside it 0.94 / 1.33, this 0.82 / 1.15: XLA fuses it into every reader."""

@@ -1,4 +1,4 @@
-"""The PyTorch kernels' functions under ``torch.compile`` (issue 38, the first compile;
+"""The PyTorch kernels' functions under ``torch.compile`` (the first compile;
 split from :mod:`rigidsym.kernels.torch`): the ``torch.autograd.Function`` of a traced call
 of a kernel with ``SAVED`` programs, made one call in Dynamo's graph."""
 
@@ -30,7 +30,7 @@ def fixed_arity(values, n: int):
 
 def compiled_saving(space: Space, name: str):
     """The ``torch.autograd.Function`` of a traced call (torch.compile) of a kernel with
-    ``SAVED`` programs (issue 38, the first compile: fewer operations for Dynamo to trace
+    ``SAVED`` programs (the first compile: fewer operations for Dynamo to trace
     and inductor to compile): the forward returns, as non-differentiable outputs after the
     mask, the temps the VJP reads; the backward takes them, no forward temp computed again,
     and sets the input cotangents of the flagged samples (singular, or a result that
@@ -93,7 +93,7 @@ def compiled_saving(space: Space, name: str):
 def nonfinite(cols, like):
     """The batch mask of the samples with an inf or NaN among ``cols`` (scalar columns or
     constants): one NaN-propagating sum of ``0.0 * c`` (a float zero: inductor folds an
-    integer ``x * 0`` to zeros, which hid every overflow under torch.compile, issue 38)."""
+    integer ``x * 0`` to zeros, which hid every overflow under torch.compile)."""
     total = torch.zeros_like(like)
     for c in cols:
         total = total + c * 0.0
@@ -104,7 +104,7 @@ def in_graph(cls, nout: int):
     """``cls.apply`` (its outputs and mask) as one call in Dynamo's graph
     (``torch.compiler.allow_in_graph``): Dynamo does not trace its Python bytecode by
     bytecode, AOTAutograd traces the forward and the backward at tensor-operation level
-    (issue 38, the first compile: Dynamo's trace of the Function's forward, backward and
+    (the first compile: Dynamo's trace of the Function's forward, backward and
     outputs took ~0.8 s of ``instant_screw_axis``'s, the hand-written formula's whole trace
     ~0.2 s). Sound here: the function reads no Python state a guard would have to
     watch (the kernel's programs are fixed; the inputs' dtypes and devices Dynamo guards on

@@ -1,4 +1,4 @@
-"""The eager CPU route of the PyTorch kernels' value + gradient (issue 38, item 4).
+"""The eager CPU route of the PyTorch kernels' value + gradient.
 
 At a small batch the cost of an eager step is a fixed cost per operation, not arithmetic:
 the generated program works on one tensor per scalar component, and each of its ~50-180

@@ -16,7 +16,7 @@ elsewhere, ``native`` (``-march=native``, one path) on request, never by default
 Flags of the kernels: ``-O3 -std=c99 -ffp-contract=off -fno-math-errno
 -fno-tree-slp-vectorize`` (never ``-ffast-math``; ``RIGIDSYM_CFLAGS`` replaces them; the last
 because GCC's SLP vectorizer fuses products into vfmaddsub despite -ffp-contract=off, see
-:data:`rigidsym.kernels.cbuild.flags.KERNEL_FLAGS`). No FMA contraction (issue 37): the
+:data:`rigidsym.kernels.cbuild.flags.KERNEL_FLAGS`). No FMA contraction: the
 generator chooses its forms by their error measured with every product rounded (NumPy), and a
 contracted ``a b + c`` rounds differently, not always better: contracted, C was 3.76 times the
 textbook's error in ``rotation_from_rotation_vector`` (theta = |w| 0.79 ulp off, the

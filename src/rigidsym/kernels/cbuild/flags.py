@@ -1,5 +1,5 @@
 """The kernels' compiler flags (:mod:`rigidsym.kernels.cbuild.driver`'s), and the refusal of flags
-that would make the kernels silently wrong (issue 53).
+that would make the kernels silently wrong.
 
 Standard library only: ``setup.py`` loads :mod:`rigidsym.kernels.cbuild.driver` by path, and it
 loads this module by path too (its ``_sibling``). The reasons for each flag are beside it;
@@ -36,7 +36,7 @@ MVEC_FLAGS = ("-fopenmp-simd", "-fno-builtin-sin", "-fno-builtin-cos", "-DRIGIDS
 OMP_FLAGS = ("-fopenmp",)
 
 
-#: flags that let the compiler assume no NaN or inf, or reorder sums (issue 53): the
+#: flags that let the compiler assume no NaN or inf, or reorder sums: the
 #: kernels' NaN/singular tests (x - x, x != x) fold away and rigidsym_sincos' reduction is
 #: reassociated (the book's rotation came back as the identity). Each with the flag that
 #: undoes it when it comes later on the line.

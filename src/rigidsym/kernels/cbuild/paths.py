@@ -5,8 +5,8 @@ As in NumPy's dispatcher, every kernel is compiled once per path; the module pic
 path the CPU runs at import. The x86-64-v4 path compiles only the kernels that call ``sin``
 or ``cos``: what it buys is 8-wide AVX-512 sin/cos in their SIMD loops (libmvec's then,
 measured 0.83-0.92x the x86-64-v3 time on the trigonometric K3 and K5; the generated
-header's own since issue 37: ``benchmarks/RESULTS.md``), and those 34 of 134 kernels cost
-29 % of its compile time for nothing (issue 27); and the few of :data:`V4_KERNELS`, which
+header's own since ``benchmarks/RESULTS.md``), and those 34 of 134 kernels cost
+29 % of its compile time for nothing; and the few of :data:`V4_KERNELS`, which
 call neither but measured faster there in issue 67's measure (outputs allocated, N = 1e6:
 their range test and lanes loop run 8 doubles wide). The others' x86-64-v4 entries are the
 x86-64-v3 functions, aliased at link time (``--defsym``, GNU ld). Standard library only
@@ -43,7 +43,7 @@ class IsaPath:
 #: what keeps the default build within 1.10x of -march=native on K3 on an AVX-512 CPU
 X86_V4 = IsaPath("v4", "x86-64-v4", ("-march=x86-64-v4",), trig_only=True)
 #: kernels without sin/cos that the x86-64-v4 path compiles too, where it measured faster
-#: (issue 67, the peer benchmark's K1, K4, K6 at N = 1e6, outputs allocated: 0.97 -> 0.93,
+#: (the peer benchmark's K1, K4, K6 at N = 1e6, outputs allocated: 0.97 -> 0.93,
 #: 1.11-1.14 -> 1.03-1.05 and 1.14-1.16 -> 1.07-1.08 of the fastest peer; their range test
 #: and lanes loop run 8 doubles wide; benchmarks/RESULTS.md)
 V4_KERNELS = frozenset({"rotation_from_euler_rodrigues", "instant_screw_point_pitch",
@@ -100,7 +100,7 @@ def _runs(path: IsaPath, flags: set[str]) -> bool:
 
 def host_paths(paths: tuple[IsaPath, ...], cpuinfo: str | None = None) -> tuple[IsaPath, ...]:
     """The paths of ``paths`` an editable install needs on this machine: those its CPU runs,
-    down to the first one that compiles every kernel (issue 54: an editable install is this
+    down to the first one that compiles every kernel (an editable install is this
     checkout on this machine, and the x86-64-v2 objects it never runs were 159 of its 419
     objects on an AVX-512 host). ``paths`` unchanged off x86-64 Linux, with
     ``RIGIDSYM_PATHS`` set, or when the CPU's flags cannot be read; the module's dispatcher

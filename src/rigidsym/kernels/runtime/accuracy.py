@@ -13,7 +13,7 @@ __all__ = ["accuracy"]
 
 @public
 def accuracy(name: str) -> dict:
-    """The measured accuracy of a package kernel (issue 30; ``docs/accuracy.md``).
+    """The measured accuracy of a package kernel (``docs/accuracy.md``).
 
     Read from the data shipped with the generated kernels (``kernels.json``, written by
     ``rigidsym generate`` from ``benchmarks/accuracy.py --data``): exact points over the

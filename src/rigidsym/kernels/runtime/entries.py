@@ -1,4 +1,4 @@
-"""The per-call entry points of a kernel space (issue 20): what the generated ``api.py``
+"""The per-call entry points of a kernel space: what the generated ``api.py``
 functions call.
 
 Each public kernel is a thin Python function of ``api.py`` (true signature, docstring, type

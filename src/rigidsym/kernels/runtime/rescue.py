@@ -1,4 +1,4 @@
-"""Finite in, finite out (issue 37): the samples a kernel cannot compute in its own type.
+"""Finite in, finite out: the samples a kernel cannot compute in its own type.
 
 A sample whose intermediates overflow or underflow (an input of extreme magnitude, a
 square that overflows, a norm whose square underflows to a zero denominator) is flagged by

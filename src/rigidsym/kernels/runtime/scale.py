@@ -1,4 +1,4 @@
-"""Threads and dtypes of the kernels (issue 14): the thread-count setting, the dtype of a
+"""Threads and dtypes of the kernels: the thread-count setting, the dtype of a
 call (NEP 50), and float32 over the float64 NumPy kernels (the validation tolerances per
 dtype are the kind table's, :mod:`rigidsym.core.kinds`).
 

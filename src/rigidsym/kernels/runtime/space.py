@@ -155,7 +155,7 @@ class KernelSpace:
         thread below ``MIN_PARALLEL`` samples); outputs are the same for every count.
         float32: float32 arrays in and out, float64 arithmetic inside. Samples the kernel
         cannot compute in its type (an input of extreme magnitude, an intermediate that
-        overflows or underflows) are re-run in a wider one (:mod:`.rescue`, issue 37).
+        overflows or underflows) are re-run in a wider one (:mod:`.rescue`).
         """
         b = backend_name or self.backend()
         t = resolve_threads(threads, b)
@@ -170,7 +170,7 @@ class KernelSpace:
                 n = len(flags)
                 # the rows re-run in the wide type: those with an input of extreme magnitude
                 # or a non-finite one, whatever their flags, and no other (one answer per
-                # row, issue 48: a flagged row of ordinary inputs is singular or cancels to
+                # row, a flagged row of ordinary inputs is singular or cancels to
                 # a zero denominator, and its wide value was a wrong number, which C gave in
                 # raise mode and not in nan mode); float32 samples ran in float64
                 # arithmetic: the C kernels' float32 range
@@ -269,7 +269,7 @@ class KernelSpace:
         idx = np.flatnonzero(nan & ext)
         if idx.size:
             flags[idx] = rescue(self.numpy_kernel(name), flat, bufs, idx)
-        # rows of ordinary inputs are never re-run (one answer per row, issue 48): their
+        # rows of ordinary inputs are never re-run (one answer per row): their
         # flag is the NumPy kernel's in the call's own type, the program C ran
         own = np.flatnonzero(nan & ~ext)
         if own.size:
@@ -301,7 +301,7 @@ def _check_out(out, outs_meta: list, batch: tuple, dtype=np.float64) -> tuple:
 
 def _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular) -> None:
     """Raise for flagged samples, or write NaN in their rows (``on_singular="nan"``).
-    ``check=False`` only skips validation (issue 37): an overflow is reported as with
+    ``check=False`` only skips validation: an overflow is reported as with
     ``check=True``; a sample with a non-finite input (unvalidated) keeps its IEEE values."""
     specs = meta["args"]
     sing = np.flatnonzero(flags == _SINGULAR)

@@ -1,4 +1,4 @@
-"""The notations of the field's books in a reader's LaTeX (issue 40, item 3): transformer
+"""The notations of the field's books in a reader's LaTeX: transformer
 rules of ``grammar.lark`` for constructs the chapter does not print, each read onto a word
 of :mod:`rigidsym.declare` (never re-implemented here): :class:`BookNotationRules`, a mixin of the
 LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
@@ -112,7 +112,7 @@ class BookNotationRules:
             self._note("x^\\wedge: the hat, so(3) of a 3-vector, se(3) of a 6-vector [w; v] "
                        "(MLS (2.4), Barfoot (7.7))")
             return rigid_motions.hat(x)
-        if sup == "times":  # Hughes' \epsilon^\times: the cross-product matrix (issue 63)
+        if sup == "times":  # Hughes' \epsilon^\times: the cross-product matrix
             if matrix_shape(x) != (3, 1):
                 raise LatexError(f"^\\times of {shape_words(x)}: expected a 3-vector (its "
                                  f"cross-product matrix)", "shapes")
@@ -304,7 +304,7 @@ class BookNotationRules:
 
     def models_of(self, names: set[str]) -> dict:
         """The models read so far whose values mention a symbol named in ``names``,
-        directly or through another model, by name: their values (issue 52: ``Y = Z``,
+        directly or through another model, by name: their values (``Y = Z``,
         ``Z = (\\theta)`` depends on ``\\theta`` as ``\\theta`` does)."""
         out: dict = {}
         grew = True
@@ -334,7 +334,7 @@ class BookNotationRules:
             return self._ddt(x, timed)
         except (LatexError, TypeError, ValueError, AttributeError):
             # an operator the product rule does not cover ([x]_\times, a power, a norm, a
-            # fraction, a function): entry by entry along the rates (issue 63)
+            # fraction, a function): entry by entry along the rates
             self._note("d/dt: taken entry by entry, the chain rule along the rates of the "
                        "functions of time")
             return explicit_rate(x, timed, self._moving, self._rate_of)
@@ -380,7 +380,7 @@ class BookNotationRules:
 
     def model_rate(self, key: str):
         """``\\dot X`` of a model ``X`` built on functions of time (``--let 'C = ...'`` in
-        ``\\mathbf{q}(t)``): d/dt of its value (issue 63); ``None`` for any other X."""
+        ``\\mathbf{q}(t)``): d/dt of its value; ``None`` for any other X."""
         g = self.overrides.get(key)
         if g is None or g.kind != "model" or dot_key(key) in self.overrides:
             return None
@@ -394,7 +394,7 @@ class BookNotationRules:
 
     def _ddt(self, x, timed):
         """d/dt of ``x``; a model whose value mentions a function of time (``--let 'Y =
-        \\theta'``, ``\\theta(t)``) by its value's d/dt (issue 52)."""
+        \\theta'``, ``\\theta(t)``) by its value's d/dt."""
         s = matrix_shape(x)
         if isinstance(x, sp.MatrixSymbol):
             if x.name in self._moving:  # a model of a function of time: its value's d/dt

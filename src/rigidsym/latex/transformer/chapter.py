@@ -175,7 +175,7 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
     def power(self, items):
         if items[1] == "*" and isinstance(items[0], GlyphKey) \
                 and items[0].key + "^{*}" in self.overrides:  # a starred name a --let
-            self.glyphs.pop(items[0].key, None)  # declares (issue 52): a symbol of its own
+            self.glyphs.pop(items[0].key, None)  # declares: a symbol of its own
             return self._symbol(items[0].key + "^{*}", items[0].base)
         x, sup = value_of(items[0]), items[1]
         if sup != "T" and not sup.lstrip("-").isdigit():

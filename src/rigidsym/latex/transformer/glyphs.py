@@ -105,7 +105,7 @@ class GlyphRules:
                 and bool(inner.rest) != bool(items[2:]):
             # \dot{\Omega_1} is \dot{\Omega}_1, TeX's one glyph, keyed as the glyph table
             # writes it (\dot{\mathbf{h}}_{C}); the rate of a function of time Omega_1 either
-            # way (issue 63)
+            # way
             under = inner if inner.rest else self._resolve(inner.base, list(items[2:]), None)
             if under is not inner:
                 self._unuse(inner.key)  # \dot\theta_1: theta alone is no glyph of it
@@ -125,7 +125,7 @@ class GlyphRules:
             if self.timed(inner.key) and not self.overrides[inner.key].meaning.startswith(
                     ("rotation", "homogeneous")):
                 return self.second_rate(inner.key)  # X's shape (a 4-vector's)
-        if accent == "\\dot" and not items[2:] and not inner.accent:  # of a model (issue 63)
+        if accent == "\\dot" and not items[2:] and not inner.accent:  # of a model
             rate = self.model_rate(inner.key)
             if rate is not None:
                 return rate
@@ -182,7 +182,7 @@ class GlyphRules:
     def _entry(self, key, base, rest, accent, inner, pre):
         """``a_1``, ``\\mathbf{q}_4`` where nothing declares it but a ``--let`` declares the
         vector ``\\mathbf{a}`` (``\\mathbf{q}``): a symbol of its own or entry 1 (4) of
-        the vector, a choice point (issue 52, item 2; ``self.choices``, a symbol of its own
+        the vector, a choice point (``self.choices``, a symbol of its own
         unless told). ``None`` where it is no choice: the symbol, by the rules."""
         if not getattr(self, "reader", False) or accent or inner is not None or pre \
                 or len(rest) != 1 or not isinstance(rest[0], tuple) \
@@ -236,7 +236,7 @@ class GlyphRules:
 
     def _slice(self, key, base, rest, accent, pre):
         """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the
-        vector ``\\mathbf{q}`` (issue 52, item 4); of a scalar or matrix refused."""
+        vector ``\\mathbf{q}``; of a scalar or matrix refused."""
         lo, hi = (int(n) for n in rest[-1][1].replace(" ", "").split(":"))
         vkey = self._key(base, rest[:-1], accent, pre)
         v = self._symbol(vkey, base)

@@ -1,4 +1,4 @@
-"""Reading rules that choose between meanings in a reader's LaTeX (issue 40, item 1): a
+"""Reading rules that choose between meanings in a reader's LaTeX: a
 symbol before a parenthesised argument, a sized identity or zero (:class:`MeaningRules`, a
 mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`).
 Each choice is written under ``read as:``; docs/check-latex.md lists every rule.
@@ -30,7 +30,7 @@ from rigidsym.latex.table import lookup
 
 __all__: list[str] = []
 
-#: the readings of each kind of choice point (issue 52, item 2), the default first: a model
+#: the readings of each kind of choice point, the default first: a model
 #: before a parenthesised non-scalar (``X(\\mathbf{y})``, keyed by ``X``), a bracket around a
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
@@ -119,12 +119,12 @@ class MeaningRules:
         super().__init__(*args, **kwargs)
         self.applied: dict[str, list] = {}
         self.functions: dict = {}  # key -> expand(args) -> (value, params): --let functions
-        self.choices: dict[str, str] = {}  # key -> one of its alternatives (issue 52, item 2)
+        self.choices: dict[str, str] = {}  # key -> one of its alternatives
         self.choice_points: dict[str, tuple] = {}  # key -> its alternatives, the default first
 
     def apply_many(self, items):
         """``glyph ( a, b, ... )`` with an optional power: a ``--let`` function of several
-        parameters (issue 52), never a product."""
+        parameters, never a product."""
         f, sup = items[0], (items[-1] if isinstance(items[-1], str) else None)
         args = [as_scalar(self._val(a)) for a in (items[1:-1] if sup is not None else items[1:])]
         if f.key not in self.functions:
@@ -180,7 +180,7 @@ class MeaningRules:
     def apply(self, items):
         """``glyph ( expr )`` with an optional power after the parenthesis."""
         f, arg, sup = items[0], items[1], (items[2] if len(items) > 2 else None)
-        if getattr(f, "key", None) in self.functions:  # a --let function (issue 52)
+        if getattr(f, "key", None) in self.functions:  # a --let function
             v = self._expand(f.key, [as_scalar(self._val(arg))])
             return self.power([v, sup]) if sup is not None else v
         primed = _PRIMED.match(getattr(f, "key", None) or "")
@@ -291,7 +291,7 @@ class MeaningRules:
 
     def _choose(self, f, fv, x, arg, sup):
         """``X(\\mathbf{y})``, ``X`` a model without parameters, ``\\mathbf{y}`` no scalar:
-        a product ``X y`` or ``X`` applied to ``y``; no rule settles it (issue 52, item 2).
+        a product ``X y`` or ``X`` applied to ``y``; no rule settles it.
         The reading follows ``self.choices[key]`` (``"product"`` unless told): the reader
         reads the statement once per choice and keeps those that type-check
         (:mod:`rigidsym.latex.statement`), the checker decides each."""
@@ -313,7 +313,7 @@ class MeaningRules:
 
     def double_bracket(self, h):
         r"""Shuster's ``[[\mathbf{u}]]`` (``h``, the hat the inner bracket read): the
-        cross-product matrix ``[u]_\times`` or its negative, a choice point (wave 11). His
+        cross-product matrix ``[u]_\times`` or its negative, a choice point. His
         survey (1993) defines it with the sign of its passive attitude matrix, and the two
         readings of the books disagree on that sign (the corpus's note: the negative, his
         (57)), so neither is guessed: where both give one verdict (``[[u]]^2``, every even

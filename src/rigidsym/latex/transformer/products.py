@@ -1,5 +1,5 @@
 """Products written without parentheses, read by the shapes (the outside trial of 16
-books, issue 52): ``a \\cdot b \\times c`` (Goldstein's and Kane's triple product) and a
+books): ``a \\cdot b \\times c`` (Goldstein's and Kane's triple product) and a
 chain of ``\\cdot`` (``a \\cdot b \\cdot c``). The grammar groups a chain from the left,
 which TeX does not say; :func:`rigidsym.latex.rewrites.mixed_products` marks such chains and
 these functions, a part of the LaTeX transformer

@@ -138,7 +138,7 @@ class RigidMotionRules:
 
     def hat_bracket(self, x):
         """``[x]``: the hat of one symbol or one product of shape 3 x 1 or 6 x 1, else
-        ``x`` (the bracket groups). The hat of a product is a choice point (issue 52, item
+        ``x`` (the bracket groups). The hat of a product is a choice point (item
         2): the other reading, a bracket that groups the product ``[R\\mathbf{a}]``, is
         read too (``self.choices``) and kept where it type-checks. A bracket around one
         symbol groups nothing: it is the hat, by the rule."""
@@ -182,8 +182,8 @@ class RigidMotionRules:
         self._note("d/dv: the vocabulary's derivative diff(X, v) (\\dot{X} stays the time "
                    "derivative)")
         x = as_scalar(x)
-        # a model in v: its value (issue 52), its matrices immutable (a mutable one inside a
-        # product is unhashable: \dot\phi \partial C/\partial\phi leaked it; issue 63)
+        # a model in v: its value, its matrices immutable (a mutable one inside a
+        # product is unhashable: \dot\phi \partial C/\partial\phi leaked it)
         x = expand_models(x, self.models_of({v.name}))
         out = rigid_motions.diff(x, v)
         return sp.ImmutableMatrix(out) if isinstance(out, sp.MatrixBase) else out

@@ -1,9 +1,9 @@
-"""The tilde over a vector in a reader's LaTeX (issue 63, the second outside trial): the
+"""The tilde over a vector in a reader's LaTeX (the second outside trial): the
 cross-product matrix in the multibody and attitude books (Wittenburg's and Shabana's
 ``\\tilde{\\mathbf{a}}``, Greenwood's and Schaub & Junkins' ``\\tilde\\omega``: ``\\tilde{a} b
 = a \\times b``), a vector of its own elsewhere (an estimate's error ``\\tilde{\\mathbf{x}}``).
 
-An undeclared ``\\tilde{X}`` of a 3-vector ``X`` is a choice point of the reader (issue 52,
+An undeclared ``\\tilde{X}`` of a 3-vector ``X`` is a choice point of the reader (
 item 2; :mod:`rigidsym.latex.statement`): every tilde of the LaTeX and its models read the
 one way or the other together (a book writes it one way), each reading that type-checks
 decided, a verdict only when all agree. A ``--let`` of the tilde's own glyph settles it

@@ -1,5 +1,5 @@
 """The reference half of the rule judged over a cloud of neighbouring floating-point inputs
-(issue 48): the judge (:func:`.judge.judge`) asks it where the kernel's error at a point is past
+: the judge (:func:`.judge.judge`) asks it where the kernel's error at a point is past
 ``max(2 e_ref, 4 u)`` of the best yardstick there.
 
 Why. A program's error at one input is a pseudo-random function of that input's low bits
@@ -28,7 +28,7 @@ error not at all (the peer stayed 1 u at all nine such inputs); moves of
 ``sqrt(eps) / (kappa + 1)`` at ``w = (-0.006, 0.005, 32.3)`` shift it by about 0.2 ulp (the peer
 2.4 u median there, the kernel 9.8 u; 13 u and 15 u over the wider cloud).
 
-A program systematically worse than a yardstick over the regime (issue 48 item 4: the
+A program systematically worse than a yardstick over the regime (the
 SE(3) inverse Jacobian at ``|w| = 4.5``, median 7.0 u where pytransform3d's is 2.2 u) fails
 the medians as it failed the points; a yardstick lucky at one input no longer makes a kernel
 fail. The condition half is still judged at the point itself (no median there).

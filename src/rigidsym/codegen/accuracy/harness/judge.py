@@ -103,7 +103,7 @@ def judge(name: str, regime: str, points, dtype, backends, refs=None,
     rows = {b: Row(name, np.dtype(dtype).name, b, regime, len(points)) for b in backends}
     got = {b: (runner or run_kernel)(name, arrays, dtype, b) for b in backends}
     big = float(np.finfo(dtype).max)
-    # the yardsticks (issue 37): the textbook formula in the same type, and each peer
+    # the yardsticks: the textbook formula in the same type, and each peer
     # (float64 only)
     yard = {"textbook": O.textbook(name, arrays, dtype)} if reference_half else {}
     if reference_half and np.dtype(dtype) == np.float64:

@@ -1,4 +1,4 @@
-"""A Herbie-style search for the inputs where a kernel loses accuracy (issue 48 item 1): it
+"""A Herbie-style search for the inputs where a kernel loses accuracy: it
 knows nothing of the regimes someone listed or derived.
 
 Per kernel and float type, seeded: ``n_start`` random points on the floating line

@@ -1,4 +1,4 @@
-"""The peers of the accuracy harness (issue 37 item 1, issue 48 item 2): what a user would
+"""The peers of the accuracy harness (issue 48 item 2): what a user would
 call instead, from the package's table (:mod:`rigidsym.codegen.accuracy.peers`: pytransform3d,
 Pinocchio, PyPose, jaxlie, spatialmath-python, Modern Robotics' library, each wrapped to the
 kernel's conventions), evaluated at the harness's points. Test-only oracles: the

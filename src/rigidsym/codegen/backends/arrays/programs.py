@@ -1,4 +1,4 @@
-"""What the PyTorch and JAX targets share (issue 31): a kernel's optimised program, printed
+"""What the PyTorch and JAX targets share: a kernel's optimised program, printed
 into ``array_kernel.py.j2`` (this package's ``templates/``) by the target's printer.
 
 Each target's file holds the kernel's straight-line program(s) exactly as the NumPy and C
@@ -40,7 +40,7 @@ TEMPLATES = Path(__file__).parent / "templates"
 #: gradient computed it again (jit value + gradient of rotation_from_natural_invariants 2x
 #: a hand-written Rodrigues formula at N = 1e3, a pattern 3x slower at 1e5), but no
 #: producer into a dot: the pair is multiplied by the identity there (exact: x 1 + y 0),
-#: and the consumers read it once computed (issue 38)
+#: and the consumers read it once computed
 JAX_TRIG_SOURCE = '''
 
 def _sincos(x):
@@ -65,7 +65,7 @@ def _cos(x):
 #: 2.2-2.6x a hand-written formula at N = 1e3 on one core); through a dot, as the
 #: ``_sincos`` pair, it is computed once (exact: x 1 + (-0) 0 = x; XLA's CPU code flushes
 #: subnormals wherever it computes). ``jax.lax.optimization_barrier`` does not stop it: XLA
-#: removes it before fusion (issue 38)
+#: removes it before fusion
 JAX_KEEP_SOURCE = '''
 
 def _keep(x):
@@ -98,7 +98,7 @@ def _saved(program, vjp, hoisted: dict) -> list[str]:
     """The forward temps the reverse-mode program reads (it recomputes them from the
     inputs), then the compensated sums it reads (``hoisted``: named by
     :func:`hoist_compensated`): the PyTorch forward returns them for autograd to save, and
-    ``_vjp_saved`` takes them instead of recomputing them (issue 38: the backward reuses the
+    ``_vjp_saved`` takes them instead of recomputing them (the backward reuses the
     forward's common subexpressions)."""
     fwd = {str(s) for s, _ in program.temps}
     nodes = _compensated([e for _, e in vjp.temps] + list(vjp.outputs))
@@ -122,7 +122,7 @@ def hoist_compensated(program) -> dict:
     The printers print a named node as its name (``KernelPrinterMixin.named``) and
     :func:`_lines` computes it once, just before its first reader; the expressions stay
     as they are, so every other term prints in the same order, and values and gradients
-    stay bit for bit. Why (issue 38, the first compile of ``instant_screw_axis``): the VJP
+    stay bit for bit. Why (the first compile of ``instant_screw_axis``): the VJP
     reads the compensated pitch (``_sumprod``, ~65 operations) that the forward computes;
     named, the forward saves it and the VJP takes it instead of computing it again. Empty
     where a node holds another (not printed by one name then). A node that is a temp's whole
@@ -162,7 +162,7 @@ def _kept_tangents(program, lines: list, backend: str) -> list:
     transpose then sums the denominator's cotangent once: XLA had fused that sum of every
     output's contribution into each input's cotangent column (instant_screw_axis, one
     core, N = 1e3: jit value + gradient 1.12-1.21x -> 0.89x a hand-written formula in
-    float32, 0.96-1.00x -> 0.76x in float64; keeping every tangent: 1.22x; issue 38). Only
+    float32, 0.96-1.00x -> 0.76x in float64; keeping every tangent: 1.22x). Only
     a denominator of two input columns or more."""
     if backend != "jax":
         return lines
@@ -192,7 +192,7 @@ def _derivatives(kc: Any, memo: dict) -> tuple:
         vjp = jvp = None
         hoisted: dict = {}
         # the backward of a kernel with a generated Jacobian (one formula, no branches):
-        # reverse mode over its optimised program (issue 38)
+        # reverse mode over its optimised program
         if has_jacobian(kc.kernel) and len(kc.variants) == 1:
             ins = [s for _, syms in kc.inputs for s in syms]
             vjp = vjp_program(kc.variants[0].program, ins)

@@ -34,7 +34,7 @@ _C_PYTHON_CHECK = 3
 #: rigid-body checks of rigidsym.kernels.runtime.inputs.check_inertia (BODY_KERNELS there)
 _PYTHON_CHECKED = frozenset({"inertia_at_point", "inertia_dyad_at_point"})
 #: kernels whose float32 lanes function reads its samples through local columns (structure
-#: of arrays, issue 67): where that measured faster than the row-major loop, which gcc
+#: of arrays): where that measured faster than the row-major loop, which gcc
 #: leaves scalar for them (``benchmarks/soa_check.py``, ``benchmarks/RESULTS.md``); slower
 #: for kernels whose row-major loop vectorises (K4, K6), so not the default
 SOA_F32 = frozenset({"rotation_from_euler_rodrigues"})

@@ -38,10 +38,10 @@ class KernelJaxPrinter(KernelNumPyPrinter, JaxPrinter):
         return f"{int(expr)}.0"
 
     def named_call(self, expr) -> str:
-        # computed once for all its readers (JAX_KEEP_SOURCE, issue 38)
+        # computed once for all its readers (JAX_KEEP_SOURCE)
         return f"_keep({self.compensated_call(expr)})"
 
-    # the sine and cosine of one argument share one evaluation (JAX_TRIG_SOURCE, issue 38)
+    # the sine and cosine of one argument share one evaluation (JAX_TRIG_SOURCE)
     def _print_sin(self, expr):
         return f"_sin({self._print(expr.args[0])})"
 
