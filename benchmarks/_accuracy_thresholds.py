@@ -1,4 +1,4 @@
-"""Where each kernel flags a sample, in units of its input (issue 30 item 3).
+"""Where each kernel flags a sample, in units of its input.
 
 A generated kernel flags a sample (``SingularConfigurationError``, or NaN with
 ``on_singular="nan"``) exactly where a denominator of its generated program is 0 in floating

@@ -1,4 +1,4 @@
-"""Accuracy of every generated kernel against the condition of the problem (issue 30).
+"""Accuracy of every generated kernel against the condition of the problem.
 
 For each kernel (the public ones, their ``<name>_with_jacobians``, the Euler-angle
 variants), each float type (float64, float32) and backend (C, NumPy), and each regime of

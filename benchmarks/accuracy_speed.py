@@ -1,4 +1,4 @@
-"""Speed of the accuracy rewrites (issue 30 item 6): the kernels before and after, interleaved.
+"""Speed of the accuracy rewrites: the kernels before and after, interleaved.
 
 Loads the generated kernels of a git revision (default: the commit before the rewrites)
 with ``kernels.load`` beside the package's, and times the C batch function of each kernel
@@ -86,7 +86,7 @@ def main(argv=None) -> int:
 
 
 def before_after(a) -> None:
-    """The kernels before and after the rewrites of --rev, interleaved (issue 30 item 6)."""
+    """The kernels before and after the rewrites of --rev, interleaved."""
     with tempfile.TemporaryDirectory() as tmp, tempfile.TemporaryDirectory() as tmp2:
         old = K.load(old_generated(a.rev, Path(tmp)))
         mid = None if a.mid is None else K.load(old_generated(a.mid, Path(tmp2)))

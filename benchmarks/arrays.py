@@ -1,6 +1,6 @@
-"""PyTorch and JAX kernels against the NumPy and C kernels (issue 31), on the CPU.
+"""PyTorch and JAX kernels against the NumPy and C kernels, on the CPU.
 
-``python benchmarks/arrays.py --grad [--sizes 1e3 1e4 1e5 1e6]`` (issue 38): value + gradient
+``python benchmarks/arrays.py --grad [--sizes 1e3 1e4 1e5 1e6]``: value + gradient
 against the hand-written formula and the peers, side by side: ``benchmarks/arrays_grad.py``.
 
 ``python benchmarks/arrays.py [--sizes 1e4 1e6]``: median wall time of one call of the

@@ -1,4 +1,4 @@
-"""Value + gradient of the kernels against a hand-written formula (issue 38, item 4).
+"""Value + gradient of the kernels against a hand-written formula.
 
 ``python benchmarks/arrays_grad.py [--sizes 1e3 1e4 1e5 1e6]`` (also ``arrays.py --grad``):
 one training step, the values and the gradient of the sum of the outputs with respect to
@@ -298,7 +298,7 @@ if __name__ == "__main__":
                     help="the modes timed (default all)")
     ap.add_argument("--one-core", action="store_true",
                     help="pin the process to one CPU core before JAX starts: XLA then splits "
-                    "no fusion into parallel tasks (issue 38: on 2 shared cores a split "
+                    "no fusion into parallel tasks (on 2 shared cores a split "
                     "fusion waits for the second one), as torch runs on one thread here")
     ap.add_argument("--first", nargs="*", metavar="KERNEL", default=None,
                     help="only the first torch.compile call (--reps times, kernel and hand "

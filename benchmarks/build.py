@@ -1,4 +1,4 @@
-"""What the build costs (issue 27): `pip install .` in a fresh virtual environment, the build
+"""What the build costs: `pip install .` in a fresh virtual environment, the build
 step alone, a second build served by the object cache, and what each CPU path costs.
 
     python benchmarks/build.py [--results] [--skip-venv]
@@ -84,7 +84,7 @@ def measure(skip_venv: bool) -> list[tuple[str, float, float, float]]:
 
 
 def render(rows) -> str:
-    lines = [BEGIN, "## The build (issue 27)", "",
+    lines = [BEGIN, "## The build", "",
              "`python benchmarks/build.py --results`: one run of each step on "
              f"{os.cpu_count()} cores; CPU = user + system of every process the step started "
              "(pip, the compilers).", "",

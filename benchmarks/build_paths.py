@@ -42,7 +42,7 @@ from rigidsym.kernels.cbuild import extension as _ext  # noqa: E402
 BENCH = {"K1": "rotation_from_euler_rodrigues", "K2": "rotation_from_natural_invariants",
          "K3": "screw_axis_point", "K4": "instant_screw_point_pitch", "K5": "N_matrix",
          "K6": "newton_euler_wrench"}
-#: the target of issue 19: the default build within this factor of native on every kernel
+#: the target of the default build within this factor of native on every kernel
 TARGET = 1.10
 
 
@@ -157,7 +157,7 @@ MARK, END = "<!-- build-paths -->", "<!-- /build-paths -->"
 def write_section(res: dict, path: Path, notes: list[str]) -> None:
     """Replace (or append) this benchmark's section of RESULTS.md, between its markers
     (benchmarks/run.py carries such sections over when it rewrites the file)."""
-    lines = [MARK, "## Default build against native (issue 19)", "",
+    lines = [MARK, "## Default build against native", "",
              f"`python benchmarks/build_paths.py --results`: N = {res['n']:.0e}, one thread, "
              f"ns/sample (thread CPU time), caller-provided outputs, minimum of {res['rounds']} "
              f"alternating rounds; load average {res['load']:.1f} at the start. Native flags: "

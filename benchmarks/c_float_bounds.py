@@ -1,4 +1,4 @@
-"""The accuracy bound of the C target's float functions, per kernel (issue 53 item 4).
+"""The accuracy bound of the C target's float functions, per kernel.
 
     python benchmarks/c_float_bounds.py [--kernel NAME ...] [--module M.py] [--seeds 0,1]
         [--random N] [--write]

@@ -1,4 +1,4 @@
-"""Scalar speed of the C target's functions against hand-written C (issue 53).
+"""Scalar speed of the C target's functions against hand-written C.
 
     python benchmarks/c_scalar.py [--n 2000] [--cc gcc] [--results]
 
@@ -12,7 +12,7 @@ calls; independent of the machine's load), and the CPU time per call (the best o
 the status of docs/c-api.md) and -DRIGIDSYM_C_TRUSTED_INPUTS (no input test: the outputs'
 finiteness test only). ``--results`` writes the table into benchmarks/RESULTS.md (between
 ``<!-- c-scalar -->`` markers). Needs gcc and valgrind. ``--fast``: the time only, built at
--O3 and at -O3 -march=native, of the small kernels (issue 66; its own table).
+-O3 and at -O3 -march=native, of the small kernels (its own table).
 """
 
 from __future__ import annotations
@@ -116,7 +116,7 @@ def main(argv=None) -> int:
         from _results import write_section
 
         lines = ["<!-- c-scalar -->", "## C target: scalar functions against hand-written C "
-                 "(issue 53)", "",
+                 "", "",
                  "`python benchmarks/c_scalar.py --results`: instructions per call by "
                  "callgrind (inclusive of sin/cos; load-independent) and CPU ns per call "
                  "(best of 7, gcc 12 -O2, this shared 2-core machine). *checked*: the "
@@ -212,7 +212,7 @@ def fast(args) -> int:
         cc = subprocess.run([args.cc, "--version"], capture_output=True,
                             text=True).stdout.splitlines()[0]
         lines = ["<!-- c-scalar-o3 -->", "### At -O3 and -O3 -march=native: the checked scalar "
-                 "call against the hand-written formula (issue 66)", "",
+                 "call against the hand-written formula", "",
                  f"`python benchmarks/c_scalar.py --fast --runs {args.runs}"
                  + (" --before DIR" if args.before else "") + " --results`: "
                  f"{cc}, CPU ns per call (the least of {args.runs} interleaved rounds, "

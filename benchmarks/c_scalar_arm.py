@@ -1,4 +1,4 @@
-"""Scalar cost of the C target's functions on Arm, against hand-written C (issue 53).
+"""Scalar cost of the C target's functions on Arm, against hand-written C.
 
     python benchmarks/c_scalar_arm.py [--n 40] [--results]
 
@@ -113,7 +113,7 @@ def main(argv=None) -> int:
         from _results import write_section
 
         lines = ["<!-- c-scalar-arm -->",
-                 "### The same on Arm, instructions under qemu (issue 53)", "",
+                 "### The same on Arm, instructions under qemu", "",
                  "`python benchmarks/c_scalar_arm.py --results`: instructions per call, "
                  "inclusive of sin/cos, from qemu's trace of every executed instruction "
                  "(a run of 2n calls less a run of n), gcc 12 -O2 cross compilers, static. "

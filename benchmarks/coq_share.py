@@ -1,4 +1,4 @@
-"""How many of the chapter's verified identities Coq proves (issue 49): each verified id's
+"""How many of the chapter's verified identities Coq proves: each verified id's
 certificate exported (:func:`rigidsym.checking.certifying.certificates.certificate`), written as a
 Coq file (:func:`rigidsym.checking.certifying.coq.coq_file`) and checked by ``coqc`` with a time
 limit

@@ -1,4 +1,4 @@
-"""Issue 67 item 3: float32 against float64 through the public API, beside the C batch
+"""float32 against float64 through the public API, beside the C batch
 function alone, at N = 1e6 on one thread.
 
 For each kernel (K1 ``rotation_from_euler_rodrigues``, ``instant_screw_axis``, K6

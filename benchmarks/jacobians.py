@@ -4,7 +4,7 @@ Per kernel and N, with caller-provided outputs (the kernel alone): the generated
 kernel, the generated C ``<name>_with_jacobians`` (values and all derivatives), a plain
 ``sympy.cse`` + ``ccode`` C loop of the same values and derivative expressions (built by
 ``run.py``'s helper, through cffi, same flags), and the memory floor of the Jacobian kernel's
-input and output bytes (``run.py``'s helper). Targets (issue 12): value + Jacobian <= 3x the
+input and output bytes (``run.py``'s helper). Targets: value + Jacobian <= 3x the
 value alone on kernels calling sin/cos; <= 1.5x the memory floor on the others; faster than
 the plain sympy C loop wherever sin/cos appear.
 
@@ -167,7 +167,7 @@ def main(argv=None) -> int:
              "large enough to leave the cache, `Jac / floor` is the meaningful figure, and "
              "`<= 3x value` cannot be met by any code",
              "- `value+Jacobian C` includes the per-block scan of every output for non-finite "
-             "values (issue 12 item 3: overflow is reported); the plain sympy C loop checks "
+             "values (overflow is reported); the plain sympy C loop checks "
              "nothing",
              f"- {args.note}" if args.note else "", ""]
     write_section(Path(args.out), lines + table(rows, Ns))

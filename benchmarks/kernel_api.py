@@ -314,7 +314,7 @@ def measure_n1(rounds: int, n1_old: Path | None) -> dict:
 
 def fast_section(d: dict, note: str, ab: dict | None) -> str:
     """The RESULTS.md section of issue 20 from :func:`measure_fast` (and ``--ab``)."""
-    lines = [FAST_MARK[0], "## Kernels cheap at every size (issue 20)", "", note, "",
+    lines = [FAST_MARK[0], "## Kernels cheap at every size", "", note, "",
              *n1_lines(d), "",
              "### N = 1e3 (us per call, caller-provided out=, contiguous inputs)", "",
              "| kernel | bare batch call | check=False | - bare | checked | / bare |",
@@ -346,7 +346,7 @@ def fast_section(d: dict, note: str, ab: dict | None) -> str:
 
 
 def section(old: dict, new: dict, old_label: str, note: str, ab: dict | None = None) -> str:
-    lines = [MARK[0], "## Kernel API cost (issue 12)", "",
+    lines = [MARK[0], "## Kernel API cost", "",
              f"C backend, one thread; {note}. `old` is commit {old_label} "
              "(wrappers taking `*args`, finiteness tested only after divisions and roots); "
              "`new` has true signatures, argument-naming validation, the per-block finiteness "
@@ -392,7 +392,7 @@ def main(argv=None) -> int:
     p.add_argument("--note", default="measured on the shared 2-core machine under load")
     p.add_argument("--results", default=str(Path(__file__).with_name("RESULTS.md")))
     p.add_argument("--fast", action="store_true",
-                   help="issue 20: N = 1, N = 1e3, float32 (and --ab with --threads) into "
+                   help="N = 1, N = 1e3, float32 (and --ab with --threads) into "
                         "RESULTS.md")
     p.add_argument("--threads", default="1", help="--ab thread counts, e.g. 1,2")
     p.add_argument("--n1-old", metavar="OLD_GENERATED_DIR",
@@ -400,7 +400,7 @@ def main(argv=None) -> int:
                         "the same rounds (kernels.load of its generated folder)")
     p.add_argument("--n1-label", default="the previous commit", help="what --n1-old is")
     p.add_argument("--n1-only", action="store_true",
-                   help="issue 20: only the N = 1 table (and its reference rows), replaced in "
+                   help="only the N = 1 table (and its reference rows), replaced in "
                         "the issue-20 section of RESULTS.md")
     args = p.parse_args(argv)
     n1_old = Path(args.n1_old) if args.n1_old else None

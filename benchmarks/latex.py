@@ -1,9 +1,9 @@
-"""Benchmark: parse the chapter's 181 LaTeX strings with the lark reader (issue 29).
+"""Benchmark: parse the chapter's 181 LaTeX strings with the lark reader.
 
 Target: <= 2 s in all on the 2-core machine. Run: ``python benchmarks/latex.py``.
 Reports the parser's construction (once per process) apart from the parses themselves.
 
-Then the wall time of ``rigidsym check --latex`` (issue 29 item 4; target: ``verified`` in
+Then the wall time of ``rigidsym check --latex`` (target: ``verified`` in
 under 2 s): the acceptance command run ``RUNS`` times as a fresh process, the imports alone
 in a fresh process, and ``rigidsym.check_latex`` in this process.
 """

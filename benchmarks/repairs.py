@@ -1,4 +1,4 @@
-"""Benchmark the repair search (issue 23): ``rigidsym verify`` with and without it, one run.
+"""Benchmark the repair search: ``rigidsym verify`` with and without it, one run.
 
 Measured, each in a fresh process with an empty verdict cache (``--no-cache``), side by
 side and interleaved (with, without, with, without, ...) so that a shared machine's load
@@ -8,7 +8,7 @@ falls on both columns alike:
 - ``example``: ``--module examples/rotation_identities.py``, one job.
 
 Also printed: the search's own CPU seconds per does-not-hold id (one process, one job),
-from ``Result.seconds`` with and without the search; and (``corpus``, issue 52) the wall
+from ``Result.seconds`` with and without the search; and (``corpus``) the wall
 time of ``rigidsym.check_latex`` with repairs on (the default ``--repair-seconds`` 10) on
 every entry of the book corpus (``tests/data/latex_corpus``), one process, an empty verdict
 cache, each entry with its book's table and ``--notation`` as the corpus test reads it: the
@@ -18,7 +18,7 @@ Usage (from the repository root)::
 
     python benchmarks/repairs.py [--repeat N] [--skip chapter,example,per-id,corpus]
 
-Target (issue 23): the cold chapter with repairs takes at most 1.5 times as long as with
+Target: the cold chapter with repairs takes at most 1.5 times as long as with
 ``--no-repairs``.
 """
 

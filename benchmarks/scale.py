@@ -1,4 +1,4 @@
-"""Kernels at scale (issue 14): threads, float32, the memory floor, Dask, and N = 1 latency.
+"""Kernels at scale: threads, float32, the memory floor, Dask, and N = 1 latency.
 
 Writes its own section of ``benchmarks/RESULTS.md`` between ``<!-- scale -->`` and
 ``<!-- /scale -->`` (the rest of the file belongs to ``run.py``). Every ratio of a table is
@@ -310,7 +310,7 @@ def main(argv=None) -> int:
     rounds = 3 if args.quick else 7
     assert K.use_backend("c") == "c", "the benchmarks need the C backend"
     load0 = os.getloadavg()
-    body = ["## Kernels at scale (issue 14)", "",
+    body = ["## Kernels at scale", "",
             f"`python benchmarks/scale.py{' --quick' if args.quick else ''}`; "
             f"OpenMP build: {K.build_info()['openmp']}; {os.cpu_count()} cores; load average "
             f"at the "

@@ -1,4 +1,4 @@
-"""Issue 67 item 1: the structure-of-arrays layout of the lanes function and of the range
+"""the structure-of-arrays layout of the lanes function and of the range
 test, measured against the generated C of today, side by side in one driver.
 
 Three variants of a kernel's generated C (``generated/c/<name>.c``), compiled with the

@@ -1,4 +1,4 @@
-"""The README's test command as a newcomer runs it (issue 54 item 1).
+"""The README's test command as a newcomer runs it.
 
 A fresh clone of this checkout's HEAD into a temporary folder (``shared/`` linked beside it,
 as CI has it), a fresh virtual environment, empty caches (the object cache under an empty

@@ -1,4 +1,4 @@
-"""sin/cos pairs, three ways side by side in one run (issue 37, the C back-end's trig).
+"""sin/cos pairs, three ways side by side in one run (the C back-end's trig).
 
 The generated header's ``rigidsym_sin``/``rigidsym_cos`` (``generated/c/rigidsym_common.h``),
 glibc's libmvec and libm's scalar ``sin``/``cos``, each compiled from ``trig_pair.c`` with

@@ -1,4 +1,4 @@
-"""C kernels built several ways from the same generated C, side by side in one run (issue 37).
+"""C kernels built several ways from the same generated C, side by side in one run.
 
 ``--trig`` (default): the trig kernels with three sin/cos, the package's (the generated
 header's own vectorised ``rigidsym_sin``/``rigidsym_cos``), glibc's libmvec

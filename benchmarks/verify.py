@@ -2,7 +2,7 @@
 baseline commit, in one run.
 
 Measured, each in a fresh process (so imports count, as for a reader), ``--jobs 2
---no-repairs`` for verify (issue 39):
+--no-repairs`` for verify:
 
 - ``text`` cold and warm: the chapter with an empty verdict cache, then the same again with
   nothing changed ("n/a" warm for a baseline without a cache);
@@ -138,7 +138,7 @@ def verify_run(tree: Path, argv: list[str], cache: Path, cwd: Path) -> tuple:
     """``(wall s, CPU s, work counted or None)`` of ``rigidsym ARGV`` in a fresh process."""
     counts = cwd / f"work-{time.monotonic_ns()}.json"
     env_code = _VERIFY.format(tree=str(tree), argv=argv)
-    os.environ["RIGIDSYM_WORK_FILE"] = str(counts)  # read by a tree that counts (issue 39)
+    os.environ["RIGIDSYM_WORK_FILE"] = str(counts)  # read by a tree that counts
     try:
         wall, cpu, code = child(env_code, cache, cwd)
     finally:
