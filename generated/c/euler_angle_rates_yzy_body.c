@@ -23,7 +23,7 @@
  * count: RIGIDSYM_LANES at a time through the lanes function, then one range test over the
  * first m samples' inputs (still in cache): a sample with an input of extreme magnitude,
  * whose intermediates could overflow or underflow, or a non-finite input, is flagged (the
- * Python path re-runs it in a wider type, issue 37). A non-finite output of finite inputs of
+ * Python path re-runs it in a wider type). A non-finite output of finite inputs of
  * ordinary magnitude comes from an operation that raised invalid, divide-by-zero or
  * overflow: the block's floating-point exception flags (rigidsym_fp_raised) stand for the
  * finiteness test over its outputs, a second pass, which the block runs only when a flag

@@ -231,7 +231,7 @@ static inline double rigidsym_cos(double x)
 #define RIGIDSYM_ALIGNED
 #endif
 
-/* The floating-point exception flags of the calling thread (issue 37, finite in, finite
+/* The floating-point exception flags of the calling thread (finite in, finite
  * out): finite inputs of ordinary magnitude (the blocks' range test) give a non-finite value
  * only through an operation that raises invalid, divide-by-zero or overflow, so a block whose
  * arithmetic raised none of them (nor underflow, nor on x86 a denormal operand) has finite
@@ -323,7 +323,7 @@ static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, i
 }
 
 /* Nonzero when one of the len doubles at p is non-finite or nonzero of magnitude outside
- * [2^-100, 2^101) (issue 37): there a kernel's intermediates (products of up to ten inputs)
+ * [2^-100, 2^101): there a kernel's intermediates (products of up to ten inputs)
  * could overflow or underflow, so the sample is flagged and re-run in a wider type (the
  * rescue of rigidsym.kernels.runtime.space). Branch- and compare-free integer arithmetic on the bits
  * (a = |x|'s bits, d = a - 2^-100's bits): d and d - range have different signs exactly
@@ -332,7 +332,7 @@ static inline int rigidsym_any_nonfinite_f32(const float *RIGIDSYM_RESTRICT p, i
 static inline int rigidsym_any_extreme(const double *RIGIDSYM_RESTRICT p, int64_t len)
 {
 #if defined(__AVX512F__)
-    /* AVX-512 (x86-64-v4, issue 67): the same test as the largest |x| and the smallest
+    /* AVX-512 (x86-64-v4): the same test as the largest |x| and the smallest
      * nonzero |x|, as signed 64-bit max and min reductions (vpmaxsq, vpminsq), four
      * operations per 8 values instead of six: w = a + (2^63 - 1) maps a = 0 to the largest
      * int64 and a >= 1 in order onto [INT64_MIN, -2], so the smallest w is the smallest

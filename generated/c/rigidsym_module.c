@@ -2001,7 +2001,7 @@ done:
     return result;
 }
 
-/* the per-call entry points (issue 20): rigidsym_fast.h, generated from c_fast.h.j2 */
+/* the per-call entry points: rigidsym_fast.h, generated from c_fast.h.j2 */
 #include "rigidsym_fast.h"
 
 static PyMethodDef rigidsym_methods[] = {

@@ -22,7 +22,7 @@
  * count: RIGIDSYM_LANES at a time through the lanes function, then one range test over the
  * first m samples' inputs (still in cache): a sample with an input of extreme magnitude,
  * whose intermediates could overflow or underflow, or a non-finite input, is flagged (the
- * Python path re-runs it in a wider type, issue 37). A non-finite output of finite inputs of
+ * Python path re-runs it in a wider type). A non-finite output of finite inputs of
  * ordinary magnitude comes from an operation that raised invalid, divide-by-zero or
  * overflow: the block's floating-point exception flags (rigidsym_fp_raised) stand for the
  * finiteness test over its outputs, a second pass, which the block runs only when a flag
@@ -47,7 +47,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes(
     double *RIGIDSYM_RESTRICT out_Q)
 {
     int64_t count = 0;
-    /* Structure of arrays (issue 67): the samples' inputs transposed into local columns,
+    /* Structure of arrays: the samples' inputs transposed into local columns,
      * the sample function run over them in a plain loop that the compiler vectorises with
      * contiguous loads (no gathers), its outputs transposed back. The same IEEE operations
      * per sample (no contraction: -ffp-contract=off, and none in float32), so the same
@@ -98,7 +98,7 @@ static RIGIDSYM_NOINLINE int64_t rigidsym_rotation_from_euler_rodrigues_lanes_f3
     float *RIGIDSYM_RESTRICT out_Q)
 {
     int64_t count = 0;
-    /* Structure of arrays (issue 67): the samples' inputs transposed into local columns,
+    /* Structure of arrays: the samples' inputs transposed into local columns,
      * the sample function run over them in a plain loop that the compiler vectorises with
      * contiguous loads (no gathers), its outputs transposed back. The same IEEE operations
      * per sample (no contraction: -ffp-contract=off, and none in float32), so the same

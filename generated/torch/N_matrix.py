@@ -186,7 +186,7 @@ def _vjp_saved(e_0, e_1, e_2, phi, x0, x1, x2, x3, x4, x5, x6, _g0, _g1, _g2, _g
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -608,7 +608,7 @@ def _vjp_saved(e_0, e_1, e_2, phi, omega_0, omega_1, omega_2, x0, x1, x2, x3, x4
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -117,7 +117,7 @@ def _vjp_saved(angles_0, angles_1, angles_2, x0, x1, x2, _g0, _g1, _g2, _g3, _g4
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

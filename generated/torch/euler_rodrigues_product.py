@@ -91,7 +91,7 @@ def _vjp_saved(eta1_0, eta1_1, eta1_2, eta1_3, eta2_0, eta2_1, eta2_2, eta2_3, _
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

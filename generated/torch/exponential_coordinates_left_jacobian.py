@@ -470,7 +470,7 @@ def _vjp_saved(xi_0, xi_1, xi_2, xi_3, xi_4, xi_5, x0, x1, x2, x3, x4, x8, x10, 
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

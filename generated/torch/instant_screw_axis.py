@@ -280,7 +280,7 @@ def _vjp_saved(omega_0, omega_1, omega_2, a_0, a_1, a_2, a_dot_0, a_dot_1, a_dot
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -192,7 +192,7 @@ def _vjp_saved(I_C_00, I_C_01, I_C_02, I_C_10, I_C_11, I_C_12, I_C_20, I_C_21, I
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

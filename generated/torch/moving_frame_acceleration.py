@@ -300,7 +300,7 @@ def _vjp_saved(o_ddot_0, o_ddot_1, o_ddot_2, Q_00, Q_01, Q_02, Q_10, Q_11, Q_12,
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

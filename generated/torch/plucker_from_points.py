@@ -204,7 +204,7 @@ def _vjp_saved(p1_0, p1_1, p1_2, p2_0, p2_1, p2_2, x0, x1, x2, x3, x4, xc0, xc1,
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -126,7 +126,7 @@ def _vjp_saved(kappa_A_0, kappa_A_1, kappa_A_2, kappa_A_3, kappa_A_4, kappa_A_5,
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -144,7 +144,7 @@ def _vjp_saved(a_ddot_0, a_ddot_1, a_ddot_2, omega_0, omega_1, omega_2, omega_do
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

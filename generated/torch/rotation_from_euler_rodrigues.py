@@ -256,7 +256,7 @@ def _vjp_saved(eta_0, eta_1, eta_2, eta_3, x0, x1, x2, x3, x4, x5, x6, x7, x8, x
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -185,7 +185,7 @@ def _vjp_saved(w_0, w_1, w_2, x0, x1, x2, x3, x6, x8, _g0, _g1, _g2, _g3, _g4, _
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -190,7 +190,7 @@ def _vjp_saved(w_0, w_1, w_2, x0, x1, x2, x3, x4, x7, x8, x9, _g0, _g1, _g2, _g3
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -338,7 +338,7 @@ def _vjp_saved(e_0, e_1, e_2, phi, a_0, a_1, a_2, a_prime_0, a_prime_1, a_prime_
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

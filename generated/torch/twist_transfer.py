@@ -126,7 +126,7 @@ def _vjp_saved(t_A_0, t_A_1, t_A_2, t_A_3, t_A_4, t_A_5, a_0, a_1, a_2, p_0, p_1
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -198,7 +198,7 @@ def _vjp_saved(a_0, a_1, a_2, p_0, p_1, p_2, _g0, _g1, _g2, _g3, _g4, _g5, _g6, 
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 

@@ -126,7 +126,7 @@ def _vjp_saved(w_A_0, w_A_1, w_A_2, w_A_3, w_A_4, w_A_5, a_0, a_1, a_2, p_0, p_1
     )
 
 
-#: the forward returning the temps the VJP reads, and the VJP taking them (issue 38)
+#: the forward returning the temps the VJP reads, and the VJP taking them
 SAVED = (_main_saved, _vjp_saved)
 
 
