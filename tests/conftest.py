@@ -53,6 +53,34 @@ def pytest_unconfigure(config):
         shutil.rmtree(path, ignore_errors=True)
 
 
+
+def _say(config, line: str) -> None:
+    """One line on the terminal, whatever ``-q`` says (the controller's reporter)."""
+    reporter = config.pluginmanager.get_plugin("terminalreporter")
+    if reporter is not None:
+        reporter.write_line(line, flush=True)
+
+
+def pytest_sessionstart(session):
+    # the first line within seconds of the command: what runs and what the first seconds do
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        return
+    workers = getattr(session.config.option, "numprocesses", None)
+    where = f"on {workers} workers" if workers else "in this process"
+    _say(session.config, f"rigidsym tests: profile {_profile.PROFILE}, seed {_profile.SEED}; "
+                         f"collecting {where} (importing sympy and the kernels) ...")
+
+
+_COLLECTED: list[int] = []
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_node_collection_finished(node, ids):
+    if not _COLLECTED:                  # the first worker to finish says it, once
+        _COLLECTED.append(len(ids))
+        _say(node.config, f"rigidsym tests: {len(ids)} collected; running (a mark per test; "
+                          "the chapter's verdicts are decided once, on one worker)")
+
 CHAPTER = Path(__file__).resolve().parents[2] / "shared" / "book" / "angeles-chapter3.md"
 
 
