@@ -32,7 +32,7 @@ ROOT = Path(__file__).resolve().parents[1]
 def readme_command(readme: Path) -> str:
     """The README's test command, found as .ci/run finds it."""
     for line in readme.read_text(encoding="utf-8").splitlines():
-        m = re.match(r'^    (pip install -e "\.\[test\]".*)$', line)
+        m = re.match(r'^    (pip install (?:-v )?-e "\.\[test\]".*)$', line)
         if m:
             return m.group(1)
     raise SystemExit("README.md has no test command")
