@@ -33,7 +33,7 @@ def test_no_merge_leftovers_in_the_repository():
     assert not marks, f"conflict markers in {marks}"
 
 
-def test_readme_at_most_10_kb_with_set_up_first():
+def test_readme_at_most_8_kb_with_set_up_first():
     assert README.stat().st_size <= 8 * 1024, README.stat().st_size   # one screen or two
     heads = re.findall(r"^## (.+)$", README.read_text(), re.M)
     assert heads[0].startswith("Set-up"), heads
