@@ -247,12 +247,11 @@ def _call_log(backend, name, M):
 
 
 #: docs/lie-groups.md's "measured worst on C, NumPy and JAX: values 2.12u, Jacobians
-#: 2.20u(κ + 1) (PyTorch: ... on an AVX-512 CPU, ... on an AVX2 one": torch's SLEEF sin/cos
-#: and sqrt differ with its CPU capability
+#: 2.20u(κ + 1) (PyTorch, ...: values 2.12u to 4.37u, Jacobians 2.50u(κ + 1) ...)": torch's
+#: own sqrt and SLEEF's sin/cos vary with the CPU, so its values are quoted as a range
 QUOTE = re.compile(r"measured\s+worst on C, NumPy and JAX: values ([\d.]+)u,\s+Jacobians "
-                   r"([\d.]+)u\(κ \+ 1\) \(PyTorch: values ([\d.]+)u,\s+Jacobians ([\d.]+)u"
-                   r"\(κ \+ 1\) on an AVX-512 CPU,\s+values ([\d.]+)u,\s+Jacobians ([\d.]+)u"
-                   r"\(κ \+ 1\) on an AVX2\s+one")
+                   r"([\d.]+)u\(κ \+ 1\) \(PyTorch,[^:]*:\s+values ([\d.]+)u to ([\d.]+)u,"
+                   r"\s+Jacobians ([\d.]+)u\(κ \+ 1\)")
 
 
 def worst_ratios(names, backends) -> tuple[float, float]:
@@ -284,18 +283,13 @@ def test_the_quoted_worst_errors_are_measured():
     m = QUOTE.search(doc)
     assert m, "docs/lie-groups.md no longer quotes the measured worst errors"
     quoted = [float(g) for g in m.groups()]
-    torch_quote = None
+    v, j = worst_ratios(W_MAPS + XI_MAPS,
+                        ["c", "numpy"] + (["jax"] if _installed("jax") else []))
+    assert abs(v - quoted[0]) <= 0.25 and abs(j - quoted[1]) <= 0.25, (v, j, quoted[:2])
     if _installed("torch"):
-        import torch
-
-        torch_quote = {"AVX512": quoted[2:4], "AVX2": quoted[4:6]}.get(
-            torch.backends.cpu.get_cpu_capability())
-    groups = [["c", "numpy"] + (["jax"] if _installed("jax") else []),
-              ["torch"] if torch_quote else []]
-    for backends, (qv, qj) in zip(groups, (quoted[:2], torch_quote or (0, 0)), strict=True):
-        if backends:
-            v, j = worst_ratios(W_MAPS + XI_MAPS, backends)
-            assert abs(v - qv) <= 0.25 and abs(j - qj) <= 0.25, (backends, v, j, qv, qj)
+        lo, hi, qj = quoted[2:]
+        v, j = worst_ratios(W_MAPS + XI_MAPS, ["torch"])
+        assert lo - 0.25 <= v <= hi + 0.25 and abs(j - qj) <= 0.25, ("torch", v, j, quoted[2:])
 
 
 def _installed(lib: str) -> bool:

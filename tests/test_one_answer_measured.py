@@ -76,14 +76,11 @@ def test_torch_differs_from_c_only_through_its_sqrt(monkeypatch):
                         lambda x: torch.from_numpy(np.sqrt(x.detach().numpy())))
     exact = rt.euler_rodrigues_from_rotation(Q, check=False).numpy().reshape(c.shape)
     assert not _differ(exact, c).any()
-    # the documented count per CPU capability (torch's sqrt differs with it): "differs from
-    # C at N of 1e5 rows on an AVX-512 CPU and at M on an AVX2 one"; here a fifth of that
-    m = re.search(r"`euler_rodrigues_from_rotation` then differs from C at (\d+) of 1e5 rows"
-                  r" on an AVX-512 CPU\s+and at ([\d,]+) on an AVX2 one", DOC)
+    # the documented count, "differs from C at N to M of 1e5 rows, by the CPU torch runs on"
+    # (its sqrt path varies with the CPU); here a fifth of the rows, so within the range
+    m = re.search(r"`euler_rodrigues_from_rotation` then differs from C at ([\d,]+) to "
+                  r"([\d,]+) of 1e5 rows", DOC)
     assert m, "docs/kernels.md no longer quotes the torch counts"
-    quoted = {"AVX512": int(m.group(1)), "AVX2": int(m.group(2).replace(",", ""))}
-    cap = torch.backends.cpu.get_cpu_capability()
-    if cap not in quoted:
-        pytest.skip(f"docs/kernels.md quotes no count for torch's {cap} path")
+    lo, hi = (int(g.replace(",", "")) for g in m.groups())
     got = int(_differ(plain, c).sum()) * 5
-    assert abs(got - quoted[cap]) <= 0.5 * quoted[cap] + 50, (cap, got, quoted[cap])
+    assert 0.5 * lo - 50 <= got <= 1.5 * hi + 50, (got, lo, hi)
