@@ -48,7 +48,7 @@ def _losses(rows) -> str:
                      for r in rows if not r.accurate)
 
 
-#: Open losses to issue 37's rule (float64; the worst rule ratio over the full sweep,
+#: Open losses to the accuracy rule (float64; the worst rule ratio over the full sweep,
 #: benchmarks/RESULTS.md): the test holds them to it, so they cannot grow unseen.
 #: The slow full sweep's limit on the rule's ratio (more points than the default test's):
 #: what is still open there is FMA contraction and the Lie kernels at points scaled 1e6
@@ -82,8 +82,8 @@ OPEN = {
         ("L_tilde_dot_with_jacobians", "numpy", "float32"): 1.65,
         ("L_tilde_with_jacobians", "c", "float32"): 1.2,
         ("L_tilde_with_jacobians", "numpy", "float32"): 1.2,
-        # issue 48's derived regimes (|w| -> 2 pi k, never approached before): on main the
-        # 1 - cos form was 2.5e-2 off at 2 pi - 1e-9 (ratio ~1e13); the half-angle form is
+        # the derived regimes (|w| -> 2 pi k): the 1 - cos form is 2.5e-2 off at
+        # 2 pi - 1e-9 (ratio ~1e13); the half-angle form is
         # within 8 u (kappa + 1) everywhere there but, a step 0.1 past 6 pi (|w| = 18.95),
         # 2.38 times max(2 e_ref, 4 u) against pytransform3d's tan(theta/2) form, and the
         # SE(3) inverse 1.89 there (1.06 at 2 pi + 0.1 against the textbook): open
@@ -92,9 +92,9 @@ OPEN = {
            for b in ("c", "numpy")},
         **{("exponential_coordinates_left_jacobian_inverse", b, "float64"): 2.0
            for b in ("c", "numpy")},
-        # found by the same derived regimes in kernels issue 48 left unchanged (the same on
-        # main): Exp near 6 pi + 0.1 1.09 against pytransform3d, the SE(3) Exp near 4 pi
-        # 1.72 against the textbook (both within 8 u (kappa + 1): 0.20, 0.14)
+        # found by the same derived regimes: Exp near 6 pi + 0.1 1.09 against pytransform3d,
+        # the SE(3) Exp near 4 pi 1.72 against the textbook (both within 8 u (kappa + 1):
+        # 0.20, 0.14)
         **{("rotation_from_rotation_vector", b, "float64"): 1.15 for b in ("c", "numpy")},
         **{("transform_from_exponential_coordinates", b, "float64"): 1.8
            for b in ("c", "numpy")}}
@@ -106,8 +106,8 @@ def _within(rows) -> list:
             if r.rule_ratio > OPEN.get((r.kernel, r.backend, r.dtype), 1.0) or r.spurious]
 
 
-#: Found by the ends of the range (issue 37 item 2's regimes) in the Lie kernels of issue 38,
-#: open for the rescue of item 3: strict, so a fix turns them into a failure to remove here.
+#: Found by the ends of the range (the harness's regimes) in the Lie kernels, open for the
+#: rescue: strict, so a fix turns them into a failure to remove here.
 #: (The Jacobian inverses' "finite wrong values" at 1e-300 were the reference's: a ball 1e-3
 #: wide at 2000 bits taken for the truth; harness.reference.max_prec. At 1e300 they return
 #: J(w (1 + d)), |d| ~ 2^-65: test_lie_jacobian_inverse_at_the_range_ends. The SE(3) log's
@@ -120,10 +120,10 @@ RANGE_DEFECTS: dict[str, str] = {}
     pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=RANGE_DEFECTS[n]))
     if n in RANGE_DEFECTS else n for n in sorted(K.KERNEL_NAMES) + EXTRA])
 def test_accurate_over_the_regimes_float64(name):
-    """The condition half on every row; the whole rule of issue 37 on every row but the
-    open ones (OPEN). Old main: no second yardstick (tests/test_accuracy_rule.py shows the
-    loss it let through); the libmvec build of the session before: the trig kernels on C
-    past the rule (rotation_from_natural_invariants 1.9)."""
+    """The condition half on every row; the whole accuracy rule on every row but the
+    open ones (OPEN). Guards against a harness without the second yardstick
+    (tests/test_accuracy_rule.py shows the loss it lets through) and a libmvec build (the trig
+    kernels on C past the rule: rotation_from_natural_invariants 1.9)."""
     rows = A.sweep([name], [np.float64], available_backends(), n_random=3, small=SMALL)
     K.use_backend("numpy")
     assert rows and sum(r.samples for r in rows) >= 5
@@ -205,8 +205,8 @@ def test_lie_jacobian_inverse_at_the_range_ends():
 
 
 def _declared_numpy(name):
-    """The declared outputs of ``name`` lambdified for NumPy, no rewrite: what the generated
-    kernel computed before issue 30."""
+    """The declared outputs of ``name`` lambdified for NumPy, no rewrite: the generated
+    kernel without the rewrites."""
     import sympy as sp
 
     from rigidsym.codegen.accuracy.harness import reference as R

@@ -1,5 +1,5 @@
-"""The second yardstick of issue 37 (item 1) and the generator's choice of forms by it
-(item 2): a kernel's error within ``8 u (kappa + 1)`` of the ball truth **and** within
+"""The second yardstick of the accuracy rule and the generator's choice of forms by it:
+a kernel's error within ``8 u (kappa + 1)`` of the ball truth **and** within
 ``max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of the textbook formula and of each peer
 (``rigidsym.codegen.accuracy.rule``).
 
@@ -45,7 +45,7 @@ def test_the_rule():
 
 
 def _plain_cross(name, arrays, dtype, backend):
-    """Issue 30's plucker_from_points: [d/|d|; p1 x p2 / |d|], uncompensated."""
+    """plucker_from_points in its plain form: [d/|d|; p1 x p2 / |d|], uncompensated."""
     p1, p2 = (a.astype(dtype) for a in arrays)
     d = p2 - p1
     n = np.linalg.norm(d, axis=1, keepdims=True)
@@ -53,8 +53,8 @@ def _plain_cross(name, arrays, dtype, backend):
 
 
 def test_the_harness_fails_a_kernel_worse_than_the_textbook():
-    """Old main's harness passed issue 30's p1 x p2 (8e12 u off where the textbook is 18 u
-    off: inside 8 u kappa, kappa = 5.8e13); the second yardstick fails it."""
+    """The plain p1 x p2 (8e12 u off where the textbook is 18 u off) is inside 8 u kappa
+    (kappa = 5.8e13), so the condition half alone passes it; the second yardstick fails it."""
     k = A.R.kernel_of("plucker_from_points")
     pts = A.P.regimes(k, np.float64, n_random=1, small=[1e-3, 1e-6],
                       extremes=False)["p2->p1 at 1e6"]
@@ -125,7 +125,7 @@ def _worse(name, arrays, dtype, backend):
 
 
 def test_a_program_systematically_worse_than_the_yardsticks_is_still_caught():
-    """Issue 48 item 4's kind of loss: the SE(3) inverse Jacobian at ``|w|`` 3, pi, 4.5
+    """A systematic loss: the SE(3) inverse Jacobian at ``|w|`` 3, pi, 4.5
     (pytransform3d's median 1.4 .. 2.2 u). A program 12 u off everywhere there is within
     ``8 u (kappa + 1)`` and past ``max(2 e_ref, 4 u)`` at the point and over its cloud alike:
     the medians still fail it; the package's kernel passes at the same points."""
@@ -196,8 +196,8 @@ def _forms(name: str):
 
 def test_generator_chooses_plucker_form_by_the_rule():
     """plucker_from_points gets the form that wins over the regimes: the plain p1 x p2
-    (issue 30's) fails the rule against the textbook at nearly coincident points and is
-    refused; the compensated one is kept. Old main: no regimes in the generator, no rule."""
+    fails the rule against the textbook at nearly coincident points and is refused; the
+    compensated one is kept."""
     k, syms, sflat, conds, flat, ctx = _forms("plucker_from_points")
     meter = error.Meter(k, flat, sflat, conds, None)
     textbook = meter.errors(flat)

@@ -186,8 +186,8 @@ def test_a_cycle_of_models_is_named():
 
 # ---------------------------------------------------- Shuster's [[u]]
 @pytest.mark.parametrize("latex, lets, verdict", [
-    # both signs give one verdict: decided (refused by name, "unknown bracket", before wave
-    # 11; on main before issue 52 read as [u], a sign lost)
+    # both signs give one verdict: decided, never refused as an unknown bracket nor read as
+    # [u] (which loses a sign)
     (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T - |\mathbf{u}|^2 I_3", [], "verified"),
     (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T + |\mathbf{u}|^2 I_3", [], "does-not-hold"),
     (r"\mathbf{N}^T = -\mathbf{N}", [r"\mathbf{N} = [[\mathbf{u}]]"], "verified"),  # in a model

@@ -2,7 +2,7 @@
 over a subscripted letter either way, Hughes' ``\\epsilon^\\times``, font macros, a declared
 ``e`` before ``^``, functions beside their barred namesakes; an index range as a ``--let``
 NAME refused naming the ``--let`` that settles it; no refusal ends in an empty "expected one
-of:" and none leaks an exception's text. Each case was bad input before issue 63."""
+of:" and none leaks an exception's text."""
 
 from __future__ import annotations
 

@@ -28,8 +28,8 @@ def _improve(name: str):
 def test_skew_part_rewrite_is_kept_measured_and_decided():
     before, after, chosen = _improve("screw_of_displacement")
     # the axis point from the skew part (it replaces the declared grouping of p0,
-    # 3 - tr Q with it, wholesale; the rule "1 - cos(phi) from the skew part" of issue 30
-    # then finds nothing left)
+    # 3 - tr Q with it, wholesale; the rule "1 - cos(phi) from the skew part" then finds
+    # nothing left)
     assert [c.name for c in chosen] == ["the axis point from the skew part of Q"]
     c = chosen[0]
     assert c.decided in ("exact-cancel", "random-exact")

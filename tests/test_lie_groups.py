@@ -1,9 +1,9 @@
-"""The Lie-group maps of issue 38 (derivations/lie_groups.py): every identity verified by the
+"""The Lie-group maps (derivations/lie_groups.py): every identity verified by the
 chapter's checker through the polar parametrisation w = theta e, a slip refuted, and the
 maps against independent numbers (scipy-free: a matrix exponential by its series in mpmath).
 
-On the main of before issue 38 the identities were undecided ("trig of non-angle argument")
-and expm refused a non-unit exponent; these tests fail there.
+They guard against the identities being undecided ("trig of non-angle argument") and expm
+refusing a non-unit exponent.
 """
 
 from __future__ import annotations

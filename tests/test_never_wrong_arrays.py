@@ -192,8 +192,8 @@ def test_finite_in_finite_out_arrays(b, name, dtype):
 
 
 @pytest.mark.parametrize("b", BACKENDS)
-def test_issue_case_arrays(b):
-    """The issue's case as a user types it: plucker_from_points at |p| = 1e155."""
+def test_plucker_from_points_at_1e155_arrays(b):
+    """plucker_from_points at |p| = 1e155, as a user types it."""
     mod, to, back = backend(b)
     p1 = np.array([0.3, -0.7, 1.1]) * 1e155
     want = K.plucker_from_points(p1, 2 * p1 + 1e154)
@@ -239,7 +239,7 @@ def test_traced_jax_nan_policy_and_overflow(name):
 @pytest.mark.parametrize("name", sorted(KERNELS))
 def test_compiled_torch_nan_policy(name):
     """Under torch.compile (no host reads, so no rescue; an inf input taken as NaN inside
-    the compiled kernel's function since issue 38, not by a ``where`` on every input): the
+    the compiled kernel's function, not by a ``where`` on every input): the
     same NaN positions as C and NumPy for a NaN/inf input. Guards that move: a compiled
     call that skipped both mappings gave IEEE limits (the unit axis [0, 0] of an omega at
     inf)."""
@@ -280,10 +280,10 @@ def test_torch_rescued_row_derivative():
 
 @pytest.mark.parametrize(("b", "name"), cases(KERNELS))
 def test_bad_input_table_arrays(b, name):
-    """Issue 37 item 7 on PyTorch and JAX: test_kernels_props' >= 200 generated corruptions
+    """The bad-input table on PyTorch and JAX: test_kernels_props' >= 200 generated corruptions
     per kernel give a finite result or a TypeError/ValueError naming the corrupted argument
-    (or a SingularConfigurationError naming one). Old main: a batch mismatch said "batch
-    shapes do not broadcast: e (3, 3), phi (2,)", naming no argument first."""
+    (or a SingularConfigurationError naming one): a batch mismatch names the arguments first,
+    never only "batch shapes do not broadcast"."""
     mod, to, back = backend(b)
     res = bad_input_table(name, 200, seed=12, call=array_call(mod, name))
     assert res["escapes"] == [], res["escapes"][:10]

@@ -1,4 +1,4 @@
-"""Property-based tests of issue 37 (item 8) for every public kernel: Hypothesis strategies
+"""Property-based tests of the accuracy rule for every public kernel: Hypothesis strategies
 for the regimes a user meets (inputs from 1e-300 to 1e300 in float64 and 1e-35 to 1e35 in
 float32, subnormals among them, squares that overflow; angles near 0 and near pi; unit
 vectors near an axis; a NaN or inf in one component) drive the agreement of C, NumPy,

@@ -3,8 +3,8 @@ codegen.removable.series, the rewrite of codegen.removable.singularities, and th
 Lie-group kernels at |w| in {0, 1e-12, 1e-8, 1e-4, 1e-2, 1} against a 50-digit mpmath
 reference.
 
-On the main of before issue 38 there was no such pass: a reader's exponential map returned
-NaN (or raised) at w = 0 and its Jacobian was 3.7e-9 off at |w| = 1e-8.
+Without the pass a reader's exponential map returns NaN (or raises) at w = 0 and its
+Jacobian is 3.7e-9 off at |w| = 1e-8.
 """
 
 from __future__ import annotations

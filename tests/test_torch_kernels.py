@@ -366,8 +366,8 @@ def test_compiled_torch_func_grad():
 @pytest.mark.slow
 def test_inductor_flags_an_overflowed_result():
     """A result that does not fit the dtype from finite inputs is NaN in its whole row under
-    inductor as in eager mode (issue 37's rule). Old main returned the pitch inf there and
-    the row's other outputs as numbers: inductor folds an integer ``x * 0`` to zeros,
+    inductor as in eager mode (the kernels' rule). Guards against returning the pitch inf
+    there and the row's other outputs as numbers: inductor folds an integer ``x * 0`` to zeros,
     which removed the check (``_arrays_eval.nonfinite_rows``)."""
     omega = torch.tensor([[1e-10, 0.0, 0.0], [0.3, -0.2, 1.0]], dtype=torch.float64)
     a = torch.zeros(2, 3, dtype=torch.float64)

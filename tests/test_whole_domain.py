@@ -384,7 +384,7 @@ SEARCHED = [
 
 def test_exp_se3_kernel_is_the_declared_formula():
     """The SE(3) exponential's kernel builds ``J_l(w) v`` expanded (``[w]^2 v = w (w.v) -
-    theta^2 v``, Pinocchio's form, issue 48; lie_maps.rotation_vector_left_jacobian_times
+    theta^2 v``, Pinocchio's form; lie_maps.rotation_vector_left_jacobian_times
     with its products Grouped); equal to ``lie_maps``' formula at random
     rational points to 50 digits, theta from 1e-3 to 40 (an expansion that dropped a term
     is off by O(1) somewhere there)."""
@@ -460,7 +460,7 @@ def test_search_finds_nothing_outside_the_rule(name, dtype, request):
     ratio, seeded) finds no point outside the rule for the Lie-group maps (on main it found
     471 times the rule in the SE(3) inverse Jacobian, 1.12 in J_l^-1 near 2 pi).
 
-    Where the search still finds a point past the rule (issue 48 left open: SEARCH_OPEN, the
+    Where the search still finds a point past the rule (SEARCH_OPEN, the
     float32 C Exp of SE(3), measured), the case is an expected failure naming it, so
     that the search keeps reporting it without failing CI; the list shrinks as the forms
     improve. (On the merged main of wave 6 it also failed rotation_from_rotation_vector,
@@ -468,7 +468,7 @@ def test_search_finds_nothing_outside_the_rule(name, dtype, request):
     which the cloud of neighbouring inputs now sees for what it is.)"""
     if (name, np.dtype(dtype).name) in SEARCH_OPEN:
         request.applymarker(pytest.mark.xfail(
-            strict=False, reason="issue 48 open: the search finds a point past the rule: "
+            strict=False, reason="open: the search finds a point past the rule: "
                                  + SEARCH_OPEN[name, np.dtype(dtype).name]))
     _harness()
     from rigidsym.codegen.accuracy.harness import search as S

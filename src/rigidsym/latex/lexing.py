@@ -135,7 +135,7 @@ def parser() -> lark.Lark:
 # pylatexenc's latexwalker is the tokenizer here: it knows where a macro ends (\cot\frac is
 # two macros) and what TeX takes as a macro's argument (\frac\theta2). It runs only where it
 # is needed (an unbraced argument, an error): over all 181 strings of the chapter it costs
-# 0.19 s, +24 % of the benchmark's parse time, beyond issue 40's 1.2x budget.
+# 0.19 s, +24 % of the benchmark's parse time, beyond the lexer's 1.2x time budget.
 _ARGS = {"frac": 2, "dfrac": 2, "tfrac": 2, "sqrt": 1}
 _UNBRACED = re.compile(r"\\[dt]frac(?![A-Za-z])|\\frac(?![A-Za-z])\s*([^\s{]|\{[^{}]*\}\s*[^\s{])"
                        r"|\\sqrt(?![A-Za-z])\s*[^\s{\[]")

@@ -1,4 +1,4 @@
-"""The glyph rows of a reader's LaTeX (issue 40): :class:`GlyphReader` parses
+"""The glyph rows of a reader's LaTeX: :class:`GlyphReader` parses
 the LaTeX and the models of ``--let`` with one set of glyph overrides: the declarations'
 kinds, the models' shapes, the rows of ``--book``, a module's symbols, the lines of
 ``--notation`` (used by :mod:`rigidsym.latex.statement`)."""

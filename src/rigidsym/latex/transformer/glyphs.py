@@ -257,8 +257,8 @@ class GlyphRules:
 
     def _unuse(self, key) -> None:
         """The glyph ``key`` read under an accent: no use of its own, unless the LaTeX uses
-        it elsewhere too (``Q(\\mathbf{q})`` beside ``\\bar Q(\\mathbf{p})``: before
-        issue 63 the bar's Q took Q's use away, "Q does not occur")."""
+        it elsewhere too (``Q(\\mathbf{q})`` beside ``\\bar Q(\\mathbf{p})``: the bar's Q
+        does not take Q's own use away, so Q is not reported as "does not occur")."""
         uses = self.__dict__.setdefault("_uses", {})
         uses[key] = uses.get(key, 1) - 1
         if uses[key] <= 0:

@@ -1,4 +1,4 @@
-"""The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words): the
+"""The vocabulary of rigid motions in a reader's LaTeX (on the words of the chapter): the
 spellings of Lynch & Park, *Modern Robotics* (MR) and Murray, Li & Sastry (MLS), each read
 onto a word of :mod:`rigidsym.declare` (never re-implemented here): :class:`RigidMotionRules`, a
 mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.

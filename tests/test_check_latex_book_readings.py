@@ -1,8 +1,7 @@
-r"""Wave 11's readings of issue 63 (``rigidsym.latex.hats``, ``rigidsym.latex.entries``, Shuster's
-``[[u]]``): each reading a book's notation allows is read, a verdict where the readings that
-type-check agree, bad input naming the choice where they differ. The truths are the books'
-(a unit quaternion's entries square to 1; ``[T]_\times`` annihilates ``T``), not the code's.
-"""
+r"""The readings of the books' notations (``rigidsym.latex.hats``, ``rigidsym.latex.entries``,
+Shuster's ``[[u]]``): each reading a book's notation allows is read, a verdict where the readings
+that type-check agree, bad input naming the choice where they differ. The truths are the books' (a
+unit quaternion's entries square to 1; ``[T]_\times`` annihilates ``T``), not the code's."""
 
 from __future__ import annotations
 
@@ -128,7 +127,7 @@ def test_a_free_bold_capital_is_a_vector_only_where_its_3x3_does_not_fit():
 
 
 def test_a_bold_subscripted_name_beside_a_declared_vector_stays_a_choice():
-    # \mathbf{p}_1 is point 1 as often as an entry: issue 52's two readings, the entry (a
+    # \mathbf{p}_1 is point 1 as often as an entry: of the two readings the entry (a
     # scalar = a 3-vector) does not type-check, so point 1, a vector of its own, is decided
     r = _check(r"\mathbf{p}_1 = R\mathbf{p}_2 + \mathbf{p}", [r"\mathbf{p}: vector", "R: rotation"])
     assert r.verdict == "does-not-hold", r.detail

@@ -1,5 +1,5 @@
 # ruff: noqa: E501 - the LaTeX of a book equation is one line, as typed
-"""Issue 63's outside trial: 40 equations from six books, typed from memory.
+"""Equations of six books typed from memory, first set: 40 equations.
 
 Books: Shuster, "A Survey of Attitude Representations" (J. Astronaut. Sci. 41, 1993);
 Markley & Crassidis, *Fundamentals of Spacecraft Attitude Determination and Control* (2014);

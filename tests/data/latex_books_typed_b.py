@@ -1,8 +1,8 @@
 # ruff: noqa: E501 - the LaTeX of a book equation is one line, as typed
-"""Issue 63's second outside trial: 40 equations from six books, typed from memory.
+"""Equations of six books typed from memory, second set: 40 equations.
 
 Books (none named by the LaTeX corpus, any test, docs/check-latex.md or the first trial,
-``trial_outside_i63.py``): Wie, *Space Vehicle Dynamics and Control* (1998); Wittenburg,
+``latex_books_typed_a.py``): Wie, *Space Vehicle Dynamics and Control* (1998); Wittenburg,
 *Dynamics of Multibody Systems* (2008); Greenwood, *Advanced Dynamics* (2003); Groves,
 *Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems* (2013);
 Hartley & Zisserman, *Multiple View Geometry in Computer Vision* (2003); Shabana,
