@@ -270,8 +270,8 @@ def test_accuracy_rows_are_shipped():
 @pytest.mark.slow
 def test_full_sweep_both_types():
     """The whole harness: every kernel, float64 and float32, C and NumPy (minutes; 8.3 min
-    on the loaded 2-core host with the [oracles] extra). At the wave-6 merge it raised
-    sympy's "Can't calculate derivative wrt" on the SE(3) inverse Jacobian's Grouped marks;
+    on the loaded 2-core host with the [oracles] extra). It guards against sympy's "Can't
+    calculate derivative wrt" on the SE(3) inverse Jacobian's Grouped marks:
     spec.Grouped._eval_derivative differentiates what it groups."""
     rows = A.sweep(A.kernel_names(), [np.float64, np.float32], available_backends(), n_random=4)
     K.use_backend("numpy")

@@ -83,7 +83,7 @@ def test_a_4_vectors_count_that_changes_the_verdict_is_refused_naming_the_entry(
 
 def test_a_3_vectors_subscripts_are_its_entries_and_a_let_makes_a_symbol_of_its_own():
     r = _check(r"a_1^2 + a_2^2 + a_3^2 = \mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"])
-    assert r.verdict == "verified", r.detail       # refused before wave 11 (two readings)
+    assert r.verdict == "verified", r.detail       # not refused as two readings
     own = _check(r"a_1^2 + a_2^2 + a_3^2 = \mathbf{a}^T\mathbf{a}",
                  [r"\mathbf{a}: vector", "a_1: scalar"])
     assert own.verdict == "does-not-hold", own.detail
@@ -108,7 +108,7 @@ DIEBEL = (r"R(\mathbf{q}) = \begin{bmatrix} q_0^2 + q_1^2 - q_2^2 - q_3^2 & 2q_1
 
 def test_a_parameters_entries_are_the_free_vectors_entries_outside_the_body():
     # the body's q_i are its parameter's entries or symbols of their own; outside it the
-    # same reading holds (before wave 11 the entry reading read names outside: refused)
+    # same reading holds (names outside would make the readings disagree: refused)
     r = _check(r"R(\mathbf{q})^TR(\mathbf{q}) = (q_0^2 + q_1^2 + q_2^2 + q_3^2)^2 I_3", [DIEBEL])
     assert r.verdict == "verified", r.detail
     with pytest.raises(BadInput, match="the readings disagree"):  # q^T q: entries only

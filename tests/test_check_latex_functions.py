@@ -313,8 +313,8 @@ def test_a_subscript_is_a_name_or_an_entry_by_the_reading_that_type_checks(latex
 
 
 def test_a_subscript_whose_readings_disagree_is_refused_naming_what_settles_it(capsys):
-    # on main: does-not-hold, a_1 a free scalar (a true equation where a_1 is a's entry);
-    # refused, a symbol of its own or the entry; wave 11: beside a --let's vector
+    # never does-not-hold with a_1 a free scalar (a true equation where a_1 is a's entry):
+    # a symbol of its own or the entry is a choice; beside a --let's vector
     # it is the entry, as the books write one (latex.entries)
     r = rigidsym.check_latex(r"a_1 = \mathbf{a}^T\mathbf{i}", let=I1, repairs=False)
     assert r.verdict == "verified", r.detail
@@ -543,9 +543,9 @@ _EXP = [r"\hat\omega: unit vector; \theta: angle", r"R = e^{[\hat\omega]\theta}"
     (r"(a + b)^2(c + d) = (a + b)^2 c + (a + b)^2 d", [], "verified"),
 ])
 def test_an_application_reads_alike_however_it_is_typeset(latex, let, verdict):
-    """The outside trial of wave 6's sixth session: \\left( and a power before the argument
-    were read as products of a free scalar (two false equations verified, six true ones
-    does-not-hold); the truth of each is the textbook's (R_z(0) = I, R_zᵀ(α) = R_z(-α))."""
+    """\\left( and a power before the argument are never read as products of a free scalar
+    (which verifies two false equations and makes six true ones does-not-hold);
+    the truth of each is the textbook's (R_z(0) = I, R_zᵀ(α) = R_z(-α))."""
     r = rigidsym.check_latex(latex, let=let)
     assert r.verdict == verdict, r.detail
 
@@ -558,9 +558,9 @@ def test_an_application_with_left_and_right_decides_as_with_plain_parentheses():
 
 
 def test_the_subscripts_of_one_vector_read_alike_and_disagreeing_readings_are_refused():
-    """q_1^2 + ... + q_4^2 = qᵀq: four index choice points were cut to three, and the eight
-    readings decided (all does-not-hold) never held the one meant (all four entries). The
-    subscripts of one letter read together: since wave 11 beside a --let's 4-vector as its
+    """q_1^2 + ... + q_4^2 = qᵀq: four index choice points cut to three would decide eight
+    readings (all does-not-hold) that miss the one meant (all four entries). The
+    subscripts of one letter read together: beside a --let's 4-vector as its
     entries, counted from 1 (q_4 written) or 0 (q_0 written), one choice for the letter."""
     r = rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 + q_4^2 = q^Tq", let=[r"q: 4-vector"])
     assert r.verdict == "verified", r.detail

@@ -103,7 +103,7 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
 
 
 def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
-    # its reason ("trig of non-angle argument") was only in --json; wave 10: the
+    # its reason ("trig of non-angle argument") is printed, not only in --json; the
     # norm is written θ u (rigidsym.zero.polar), so J w = w is verified, and J w = 2 w, which
     # does not hold, is undecided with the reason naming the construct
     lets = ["--let", r"w: vector; \theta = \sqrt{w^T w}",
@@ -443,9 +443,9 @@ def test_a_matrix_without_a_model_applied_is_still_refused(capsys):
 
 @pytest.mark.parametrize("hat, wide", [(r"\hat", r"\widehat"), (r"\tilde", r"\widetilde")])
 def test_a_wide_accent_is_its_narrow_accent(hat, wide):
-    r"""``\widehat``, ``\widetilde`` only draw wider (unknown macros before): the same glyph as
+    r"""``\widehat``, ``\widetilde`` only draw wider: the same glyph as
     ``\hat``, ``\tilde``, so a model given for one serves the other and a free one is
-    read alike (wave 11: a free hat is read both ways, a unit vector or a skew matrix)."""
+    read alike (a free hat is read both ways, a unit vector or a skew matrix)."""
     let = [rf"{hat}{{\mathbf{{a}}}} = [\mathbf{{a}}]_\times"]
     r = rigidsym.check_latex(rf"{wide}{{\mathbf{{a}}}}\mathbf{{a}} = \mathbf{{0}}", let=let)
     assert r.verdict == "verified", r.detail                  # a × a = 0, through the model

@@ -125,5 +125,5 @@ def test_a_refusal_names_its_construct_and_leaks_nothing(latex, let):
     (r"\mathbf{a}^S_1\cdot\mathbf{a}^S_1 = 2", "does-not-hold"),
 ])
 def test_a_label_before_a_subscript_is_the_same_glyph(latex, verdict):
-    # wave 10: \mathbf{a}^S_1 is TeX's \mathbf{a}_1^S (refused before: "unexpected '_'")
+    # \mathbf{a}^S_1 is TeX's \mathbf{a}_1^S (never refused: "unexpected '_'")
     assert _v(latex, [r"\mathbf{a}_1^S: unit vector"]) == verdict

@@ -183,8 +183,8 @@ def test_the_command_line_reads_modern_robotics_and_exits_by_verdict(capsys):
     (r"\det(\mathbf{a}^\wedge) = 0", "verified"),
 ])
 def test_a_determinant_of_a_cross_product_matrix_is_decided(latex, verdict):
-    """Undecided before wave 6's sixth session ("TypeError while checking: unhashable type:
-    'MutableDenseMatrix'": the operator kept the explicit vector's mutable matrix); det(1 +
+    """Decided, never undecided on "TypeError while checking: unhashable type:
+    'MutableDenseMatrix'" (an operator keeping the explicit vector's mutable matrix); det(1 +
     [a]x) = 1 + |a|^2 by expanding the 3x3 determinant by hand."""
     assert rigidsym.check_latex(latex).verdict == verdict
 

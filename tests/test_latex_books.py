@@ -118,7 +118,7 @@ _AB = r"\mathbf{a}(t): vector; \mathbf{b}(t): vector"
 
 
 @pytest.mark.parametrize("latex, let, verdict", [
-    # refused before the fifth session of wave 6 ("d/dt of a scalar made of matrices",
+    # never refused ("d/dt of a scalar made of matrices",
     # "d/dt of a 3x1 matrix built by Cross: write it as products and sums")
     (r"\frac{d}{dt}(\mathbf{a}\cdot\mathbf{b}) = \dot{\mathbf{a}}\cdot\mathbf{b} + "
      r"\mathbf{a}\cdot\dot{\mathbf{b}}", _AB, "verified"),

@@ -463,9 +463,9 @@ def test_search_finds_nothing_outside_the_rule(name, dtype, request):
     Where the search still finds a point past the rule (SEARCH_OPEN, the
     float32 C Exp of SE(3), measured), the case is an expected failure naming it, so
     that the search keeps reporting it without failing CI; the list shrinks as the forms
-    improve. (On the merged main of wave 6 it also failed rotation_from_rotation_vector,
-    ratio 34 at |w| = 248, and J^-1 1.17 at |w| ~ 56: a yardstick lucky at one input,
-    which the cloud of neighbouring inputs now sees for what it is.)"""
+    improve. (A yardstick lucky at one input would fail rotation_from_rotation_vector, ratio
+    34 at |w| = 248, and J^-1 1.17 at |w| ~ 56; the cloud of neighbouring inputs sees it
+    for what it is.)"""
     if (name, np.dtype(dtype).name) in SEARCH_OPEN:
         request.applymarker(pytest.mark.xfail(
             strict=False, reason="open: the search finds a point past the rule: "

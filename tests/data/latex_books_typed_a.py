@@ -618,7 +618,7 @@ AFTER_ATTEMPT = {'sh-axis-fixed': 'right',
          'k-mc-axis-angle': 'right'}
 
 
-#: the verdicts as typed after wave 11's readings: a free hat read both ways, q_k
+#: the verdicts as typed with the books' readings: a free hat read both ways, q_k
 #: beside a --let's vector its entry (a 4-vector counted from 1 or 0), Shuster's [[u]] with
 #: either sign, one notation per letter in and outside a function's body, a free bold
 #: capital a 3-vector where its conventional 3x3 does not fit; each decided where its
