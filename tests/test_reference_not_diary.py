@@ -22,8 +22,10 @@ EXCLUDED = {ROOT / "docs" / "CHANGELOG.md", ROOT / "CHANGELOG.md", ROOT / "docs"
 #: citations of another project's tracker, exactly as written where they are cited
 CITATIONS = ("box2d's GitHub issue 1086",)
 
-#: a reference to this project's tracker, or a round of work
-DIARY = re.compile(r"\bissues? ?#?\d+|\bwave[- ]\d+\b", re.IGNORECASE)
+#: a reference to this project's tracker, or a round of work, also broken over two lines
+#: (of a comment or docstring: "issue" at the end of one, the number at the start of the next)
+_BREAK = r"(?: |-|\n[ \t]*(?:#:?|\*|//)?[ \t]*)"
+DIARY = re.compile(rf"\bissues?{_BREAK}#?\d+|\bwave{_BREAK}\d+\b", re.IGNORECASE)
 
 
 def _text_files():
@@ -42,15 +44,16 @@ def _text_files():
 
 
 def diary_lines(text: str) -> list[tuple[int, str]]:
-    """``(line number, line)`` of each line of ``text`` that cites this project's tracker
-    or a round of work, the :data:`CITATIONS` of other projects left out."""
+    """``(line number, line)`` of each line of ``text`` where a reference to this project's
+    tracker or a round of work starts, the :data:`CITATIONS` of other projects left out."""
+    for c in CITATIONS:
+        text = text.replace(c, " " * len(c))
+    lines = text.split("\n")
     out = []
-    for n, line in enumerate(text.splitlines(), 1):
-        bare = line
-        for c in CITATIONS:
-            bare = bare.replace(c, "")
-        if DIARY.search(bare):
-            out.append((n, line.strip()))
+    for m in DIARY.finditer(text):
+        n = text.count("\n", 0, m.start()) + 1
+        if not out or out[-1][0] != n:
+            out.append((n, lines[n - 1].strip()))
     return out
 
 
@@ -58,8 +61,9 @@ def test_the_pattern_finds_tracker_references_and_waves_and_spares_citations():
     found = [n for n, _ in diary_lines("a (issue 37)\nIssue 52's rule\nissues #3 and 4\n"
                                        "before wave 11\nthe wave-6 merge\n"
                                        "box2d's GitHub issue 1086\na wave of 3 rows\n"
-                                       "tissue 5\n")]
-    assert found == [1, 2, 3, 4, 5]
+                                       "tissue 5\nbefore issue\n  # 21 in a comment\n"
+                                       "issue 3 and issue 4\n")]
+    assert found == [1, 2, 3, 4, 5, 9, 11]
 
 
 def test_no_tracker_reference_or_round_of_work_in_src_tests_or_docs():

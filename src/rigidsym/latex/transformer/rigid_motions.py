@@ -199,8 +199,8 @@ class RigidMotionRules:
         return ("plain", str(items[0]))
 
     def indexed_accent(self, items):
-        """``{}^{G}\\tilde r_{C}``: a left index before an accented letter, one name (issue
-        63), keyed ``{}^{G}\\tilde{r}_{C}``."""
+        """``{}^{G}\\tilde r_{C}``: a left index before an accented letter, one name,
+        keyed ``{}^{G}\\tilde{r}_{C}``."""
         from rigidsym.latex.transformer.book_notations import index_key
 
         base = ("plain", str(items[2].children[0])) if isinstance(items[2], lark.Tree) \
