@@ -55,7 +55,7 @@ def _losses(rows) -> str:
 #: (`rotation_from_rotation_vector` 1.88). It was LIBMVEC_RULE = 6.0 while the C kernels
 #: took sin/cos from glibc's libmvec (within 4 ulp: up to 5.8); their own vectorised sin/cos
 #: (c_common.h.j2, within 1 ulp) brought every trig kernel within the rule at the default
-#: test's points, so that test allows libmvec nothing (old main's libmvec build fails it:
+#: test's points, so that test allows libmvec nothing (a libmvec build fails it:
 #: rotation_from_natural_invariants 1.9, euler_angle_rates_xzx_fixed 3.2).
 SWEEP_RULE = 2.0
 # (L_tilde_dot_with_jacobians float64, NumPy 1.6, is gone: no default test judged it; its
@@ -142,9 +142,9 @@ F32_PLANNED = {"euler_angle_rates_yzy_body": 1.73, "euler_angle_rates_xzx_fixed"
 
 def test_float32_c_plan_at_gimbal_lock():
     """euler_angle_rates_yzy_body in float32 on C at the gimbal-lock points of seed 2 (the
-    middle angle 1e-1 .. 1e-15 from 0 and pi): old main 1.73 of the rule, 11.9 u where the
-    textbook is 3.4 u (a random omega cancels in the numerator; the plan kept it in
-    float, having measured no point near pi)."""
+    middle angle 1e-1 .. 1e-15 from 0 and pi). A plan that measures no point near pi keeps
+    a random omega's cancelling numerator in float: 1.73 of the rule, 11.9 u where the
+    textbook is 3.4 u."""
     if "c" not in available_backends():
         pytest.skip("no C backend")
     name = "euler_angle_rates_yzy_body"
@@ -157,7 +157,8 @@ def test_float32_c_plan_at_gimbal_lock():
 @pytest.mark.parametrize("name", sorted(F32_PLANNED))
 def test_float32_c_plans_over_the_regimes(name):
     """The harness's float32 rows of the kernels of F32_PLANNED (seeds 0-3, every regime):
-    within the rule, OPEN aside (old main: F32_PLANNED's ratios)."""
+    within the rule, OPEN aside (F32_PLANNED: the ratios of plans that do not measure
+    these regimes)."""
     rows = A.sweep([name], [np.float32], available_backends(), seeds=(0, 1, 2, 3))
     K.use_backend("numpy")
     assert not _within(rows), _losses(_within(rows))
@@ -169,7 +170,7 @@ def test_lie_jacobian_inverse_at_the_range_ends():
     main: a ball 1e-3 wide at 2000 bits, taken for the truth, called the kernel's exact I
     "1.45e12 x 8 u (kappa + 1)" off). At |w| ~ 1e300 the value is -(theta/2) cot(theta/2)
     (e e^T - 1) - [w]/2 + ...: no float64 theta fixes theta mod 2 pi (kappa ~ theta), the
-    condition says so (old main: a step 2^-100 |w| = 1e270 spanned 1e269 periods, kappa read
+    condition says so (guards against: a step 2^-100 |w| = 1e270 spanned 1e269 periods, kappa read
     1e-74, the row was skipped unjudged), and the kernel returns J at a w (1 + d), |d| <<
     u: backward stable, as sin(theta) of the rounded theta in every peer (the rescue's long
     double theta; measured d = -3.6e-20 at w = (-1.35, 0.41, 0.77) 1e300)."""
@@ -289,13 +290,13 @@ def test_full_sweep_both_types():
 
 #: (kernel, regime, seed, limit on the rule's ratio): old worst points of closed rows
 OLD_WORST = [
-    # phi = -0.68: old main 1.03 (d e_dot / d phi 4.7 u where the textbook is 2.3 u:
+    # phi = -0.68: found at 1.03 (d e_dot / d phi 4.7 u where the textbook is 2.3 u:
     # sympy.diff's cancelling fractions in cos phi, merged by accurate_rules._angle_fractions)
     ("N_tilde_dot_with_jacobians", "random", 2, 0.8),
-    # phi = 2.67: old main 1.39 (6.3 u where the textbook is 2.3 u: the half-angle program
+    # phi = 2.67: found at 1.39 (6.3 u where the textbook is 2.3 u: the half-angle program
     # read sin(phi/2) apart from cos phi; the polynomial in tan(phi/2) of codegen.tan_half)
     ("L_tilde_dot", "random", 2, 0.8),
-    # phi = -1.79: old main 1.95 (d/dphi 7.8 u where the textbook is 1.9 u); that polynomial
+    # phi = -1.79: found at 1.95 (d/dphi 7.8 u where the textbook is 1.9 u); that polynomial
     # differentiated: 1.14 (4.6 u, the cancellation in d/dphi, open in docs/accuracy.md)
     ("L_tilde_dot_with_jacobians", "unit off by ulps", 1, 1.2),
 ]
@@ -304,7 +305,7 @@ OLD_WORST = [
 @pytest.mark.parametrize("name,regime,seed,limit", OLD_WORST)
 def test_at_the_old_worst_point(name, regime, seed, limit):
     """A closed row at its old worst point (float64, C and NumPy): within ``limit``, where
-    old main was past the rule (OLD_WORST)."""
+    a program past the rule was found (OLD_WORST)."""
     pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=seed)[regime]
     rows = A.judge(name, regime, pts, np.float64, available_backends())
     K.use_backend("numpy")

@@ -29,7 +29,7 @@ trial = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(trial)
 CASES = {c["id"]: c for c in trial.CASES}
 
-#: cheap cases for the default run, one per fix of the session
+#: cheap cases for the default run, one per rule the set exercises
 FAST = {"wit-tilde-comm", "wit-tilde-ab", "grv-omega-rot-slip", "gr-omega-sq", "hz-fund",
         "sha-rod-ep-slip"}
 

@@ -1,6 +1,6 @@
 """Functions as the books define them, declarations in any order, and no bracket read as
 the one it resembles: the three wrong verdicts of the issue and the
-``S(\\mathbf{i})`` case, each with what it gave on main before the fix."""
+``S(\\mathbf{i})`` case, each with the wrong answer it guards against."""
 
 from __future__ import annotations
 

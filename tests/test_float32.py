@@ -160,7 +160,7 @@ OPEN_C_1000 = {"exponential_coordinates_left_jacobian_inverse": 1.6, "screw_axis
 def test_the_plans_range_is_the_c_kernels():
     """The planner leaves out the points whose inputs the C float32 kernels hand to the
     rescue (rigidsym_any_extreme_f32): its range must be theirs, or a plan is chosen for
-    points C never computes in float (old main: norm(omega) down to 1e-18, re-run in long
+    points C never computes in float (guards against: norm(omega) down to 1e-18, re-run in long
     double by C) while missing the ones it does."""
     from rigidsym.kernels.runtime.rescue import RANGE32
 

@@ -80,7 +80,7 @@ def b():
 
 def test_small_angle_log_slips_refuted(tmp_path):
     """The SE(3) log's small-angle branch (the kernel's, below pi/4), verified as
-    sola:log-se3-small (old main: declared nowhere, only in generated code): a slip in its
+    sola:log-se3-small (guards against: declared nowhere, only in generated code): a slip in its
     g (1 - sqrt(1 - s^2) for 1 + ...) is a counterexample, and asin(sin theta) is theta only
     below a quarter turn: on [0, pi] the claim is not verified."""
     src = '''

@@ -161,7 +161,7 @@ DTYPES = [np.float64, np.float32]
 @pytest.mark.parametrize("name", sorted(KERNELS))
 def test_float32_nan_policy_c_numpy(name):
     """float32, check=False, a NaN or inf in one input component: NumPy gives the NaN
-    positions of C (and of float64). Old main: NumPy's float32 path re-ran only flagged
+    positions of C (and of float64). Guards against: NumPy's float32 path re-ran only flagged
     rows, so an inf input kept its IEEE limits there (natural_invariants_from_rotation: a
     finite phi where C has NaN)."""
     x, _ = nan_rows(KERNELS[name][1], np.random.default_rng(4))

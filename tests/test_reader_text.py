@@ -2,7 +2,7 @@
 ((3.59)'s braces), a block-diagonal matrix as its blocks ((3.148)), the book's O₃₄ ((3.94)),
 one subscript per letter (an entry of I_C is (I_C)₂₁), letter subscripts as subscripts in
 HTML (M_A), and a reader's scalar K_1 never printed as the first entry of their vector K.
-Each test here failed on main before these fixes (3915e94)."""
+Each test guards against a defect of commit 3915e94."""
 
 from __future__ import annotations
 

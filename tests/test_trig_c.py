@@ -1,6 +1,6 @@
 """The C kernels' own vectorised sin/cos (``rigidsym_sin``/``rigidsym_cos`` of the generated
 ``rigidsym_common.h``): within 1 ulp of long double ``sinl``/``cosl`` near and far,
-libm's exact values past the reduction's range, IEEE special values. Old main: the trig
+libm's exact values past the reduction's range, IEEE special values. Guards against: the trig
 loops called glibc's libmvec (3.7 ulp measured; the header had no such functions).
 Compiled as a small C program with the kernels' flags, vectorised as in the kernels."""
 
