@@ -31,7 +31,7 @@ XI_MAPS = ["transform_from_exponential_coordinates", "exponential_coordinates_le
 JACOBIAN = {"rotation_from_rotation_vector", "rotation_vector_left_jacobian",
             "rotation_vector_right_jacobian", "rotation_vector_left_jacobian_inverse",
             "rotation_vector_right_jacobian_inverse", "transform_from_exponential_coordinates",
-            # Jacobian kernels by forward mode over the program (none on main 0171638)
+            # Jacobian kernels by forward mode over the program (none at 0171638)
             "exponential_coordinates_left_jacobian",
             "exponential_coordinates_left_jacobian_inverse"}
 BACKENDS = ["c", "numpy", "torch", "jax"]
