@@ -118,7 +118,7 @@ GROUPS: dict[str, Group] = {
     "grading": Group(
         ("src/rigidsym/course/grading.py", "src/rigidsym/course/answers.py",
          "src/rigidsym/course/matching.py"),
-        ("tests/test_grading_class40.py", "tests/test_exercise_grade.py")),
+        ("tests/test_grading_a_class.py", "tests/test_exercise_grade.py")),
     "latex-lets": Group(
         ("src/rigidsym/latex/lets.py", "src/rigidsym/latex/declgraph.py",
          "src/rigidsym/latex/reader_glyphs.py"),

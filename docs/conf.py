@@ -1,5 +1,5 @@
 """Sphinx configuration of the rigidsym documentation (the API reference and the measured
-pages that used to be long sections of the README).
+pages).
 
 Built by ``tests/test_docs.py`` with warnings as errors (``-W``) and every cross-reference
 checked (``nitpicky``): a reference to a public name, a page or a heading that does not

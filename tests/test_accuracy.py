@@ -48,14 +48,14 @@ def _losses(rows) -> str:
                      for r in rows if not r.accurate)
 
 
-#: Open losses to issue 37's rule (float64; the worst rule ratio over the full sweep,
+#: Open losses to the accuracy rule (float64; the worst rule ratio over the full sweep,
 #: benchmarks/RESULTS.md): the test holds them to it, so they cannot grow unseen.
 #: The slow full sweep's limit on the rule's ratio (more points than the default test's):
 #: what is still open there is FMA contraction and the Lie kernels at points scaled 1e6
 #: (`rotation_from_rotation_vector` 1.88). It was LIBMVEC_RULE = 6.0 while the C kernels
 #: took sin/cos from glibc's libmvec (within 4 ulp: up to 5.8); their own vectorised sin/cos
 #: (c_common.h.j2, within 1 ulp) brought every trig kernel within the rule at the default
-#: test's points, so that test allows libmvec nothing (old main's libmvec build fails it:
+#: test's points, so that test allows libmvec nothing (a libmvec build fails it:
 #: rotation_from_natural_invariants 1.9, euler_angle_rates_xzx_fixed 3.2).
 SWEEP_RULE = 2.0
 # (L_tilde_dot_with_jacobians float64, NumPy 1.6, is gone: no default test judged it; its
@@ -82,8 +82,8 @@ OPEN = {
         ("L_tilde_dot_with_jacobians", "numpy", "float32"): 1.65,
         ("L_tilde_with_jacobians", "c", "float32"): 1.2,
         ("L_tilde_with_jacobians", "numpy", "float32"): 1.2,
-        # issue 48's derived regimes (|w| -> 2 pi k, never approached before): on main the
-        # 1 - cos form was 2.5e-2 off at 2 pi - 1e-9 (ratio ~1e13); the half-angle form is
+        # the derived regimes (|w| -> 2 pi k): the 1 - cos form is 2.5e-2 off at
+        # 2 pi - 1e-9 (ratio ~1e13); the half-angle form is
         # within 8 u (kappa + 1) everywhere there but, a step 0.1 past 6 pi (|w| = 18.95),
         # 2.38 times max(2 e_ref, 4 u) against pytransform3d's tan(theta/2) form, and the
         # SE(3) inverse 1.89 there (1.06 at 2 pi + 0.1 against the textbook): open
@@ -92,9 +92,9 @@ OPEN = {
            for b in ("c", "numpy")},
         **{("exponential_coordinates_left_jacobian_inverse", b, "float64"): 2.0
            for b in ("c", "numpy")},
-        # found by the same derived regimes in kernels issue 48 left unchanged (the same on
-        # main): Exp near 6 pi + 0.1 1.09 against pytransform3d, the SE(3) Exp near 4 pi
-        # 1.72 against the textbook (both within 8 u (kappa + 1): 0.20, 0.14)
+        # found by the same derived regimes: Exp near 6 pi + 0.1 1.09 against pytransform3d,
+        # the SE(3) Exp near 4 pi 1.72 against the textbook (both within 8 u (kappa + 1):
+        # 0.20, 0.14)
         **{("rotation_from_rotation_vector", b, "float64"): 1.15 for b in ("c", "numpy")},
         **{("transform_from_exponential_coordinates", b, "float64"): 1.8
            for b in ("c", "numpy")}}
@@ -106,8 +106,8 @@ def _within(rows) -> list:
             if r.rule_ratio > OPEN.get((r.kernel, r.backend, r.dtype), 1.0) or r.spurious]
 
 
-#: Found by the ends of the range (issue 37 item 2's regimes) in the Lie kernels of issue 38,
-#: open for the rescue of item 3: strict, so a fix turns them into a failure to remove here.
+#: Found by the ends of the range (the harness's regimes) in the Lie kernels, open for the
+#: rescue: strict, so a fix turns them into a failure to remove here.
 #: (The Jacobian inverses' "finite wrong values" at 1e-300 were the reference's: a ball 1e-3
 #: wide at 2000 bits taken for the truth; harness.reference.max_prec. At 1e300 they return
 #: J(w (1 + d)), |d| ~ 2^-65: test_lie_jacobian_inverse_at_the_range_ends. The SE(3) log's
@@ -120,10 +120,10 @@ RANGE_DEFECTS: dict[str, str] = {}
     pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=RANGE_DEFECTS[n]))
     if n in RANGE_DEFECTS else n for n in sorted(K.KERNEL_NAMES) + EXTRA])
 def test_accurate_over_the_regimes_float64(name):
-    """The condition half on every row; the whole rule of issue 37 on every row but the
-    open ones (OPEN). Old main: no second yardstick (tests/test_accuracy_rule.py shows the
-    loss it let through); the libmvec build of the session before: the trig kernels on C
-    past the rule (rotation_from_natural_invariants 1.9)."""
+    """The condition half on every row; the whole accuracy rule on every row but the
+    open ones (OPEN). Guards against a harness without the second yardstick
+    (tests/test_accuracy_rule.py shows the loss it lets through) and a libmvec build (the trig
+    kernels on C past the rule: rotation_from_natural_invariants 1.9)."""
     rows = A.sweep([name], [np.float64], available_backends(), n_random=3, small=SMALL)
     K.use_backend("numpy")
     assert rows and sum(r.samples for r in rows) >= 5
@@ -142,9 +142,9 @@ F32_PLANNED = {"euler_angle_rates_yzy_body": 1.73, "euler_angle_rates_xzx_fixed"
 
 def test_float32_c_plan_at_gimbal_lock():
     """euler_angle_rates_yzy_body in float32 on C at the gimbal-lock points of seed 2 (the
-    middle angle 1e-1 .. 1e-15 from 0 and pi): old main 1.73 of the rule, 11.9 u where the
-    textbook is 3.4 u (a random omega cancels in the numerator; the plan kept it in
-    float, having measured no point near pi)."""
+    middle angle 1e-1 .. 1e-15 from 0 and pi). A plan that measures no point near pi keeps
+    a random omega's cancelling numerator in float: 1.73 of the rule, 11.9 u where the
+    textbook is 3.4 u."""
     if "c" not in available_backends():
         pytest.skip("no C backend")
     name = "euler_angle_rates_yzy_body"
@@ -157,7 +157,8 @@ def test_float32_c_plan_at_gimbal_lock():
 @pytest.mark.parametrize("name", sorted(F32_PLANNED))
 def test_float32_c_plans_over_the_regimes(name):
     """The harness's float32 rows of the kernels of F32_PLANNED (seeds 0-3, every regime):
-    within the rule, OPEN aside (old main: F32_PLANNED's ratios)."""
+    within the rule, OPEN aside (F32_PLANNED: the ratios of plans that do not measure
+    these regimes)."""
     rows = A.sweep([name], [np.float32], available_backends(), seeds=(0, 1, 2, 3))
     K.use_backend("numpy")
     assert not _within(rows), _losses(_within(rows))
@@ -169,7 +170,7 @@ def test_lie_jacobian_inverse_at_the_range_ends():
     main: a ball 1e-3 wide at 2000 bits, taken for the truth, called the kernel's exact I
     "1.45e12 x 8 u (kappa + 1)" off). At |w| ~ 1e300 the value is -(theta/2) cot(theta/2)
     (e e^T - 1) - [w]/2 + ...: no float64 theta fixes theta mod 2 pi (kappa ~ theta), the
-    condition says so (old main: a step 2^-100 |w| = 1e270 spanned 1e269 periods, kappa read
+    condition says so (guards against: a step 2^-100 |w| = 1e270 spanned 1e269 periods, kappa read
     1e-74, the row was skipped unjudged), and the kernel returns J at a w (1 + d), |d| <<
     u: backward stable, as sin(theta) of the rounded theta in every peer (the rescue's long
     double theta; measured d = -3.6e-20 at w = (-1.35, 0.41, 0.77) 1e300)."""
@@ -205,8 +206,8 @@ def test_lie_jacobian_inverse_at_the_range_ends():
 
 
 def _declared_numpy(name):
-    """The declared outputs of ``name`` lambdified for NumPy, no rewrite: what the generated
-    kernel computed before issue 30."""
+    """The declared outputs of ``name`` lambdified for NumPy, no rewrite: the generated
+    kernel without the rewrites."""
     import sympy as sp
 
     from rigidsym.codegen.accuracy.harness import reference as R
@@ -270,8 +271,8 @@ def test_accuracy_rows_are_shipped():
 @pytest.mark.slow
 def test_full_sweep_both_types():
     """The whole harness: every kernel, float64 and float32, C and NumPy (minutes; 8.3 min
-    on the loaded 2-core host with the [oracles] extra). At the wave-6 merge it raised
-    sympy's "Can't calculate derivative wrt" on the SE(3) inverse Jacobian's Grouped marks;
+    on the loaded 2-core host with the [oracles] extra). It guards against sympy's "Can't
+    calculate derivative wrt" on the SE(3) inverse Jacobian's Grouped marks:
     spec.Grouped._eval_derivative differentiates what it groups."""
     rows = A.sweep(A.kernel_names(), [np.float64, np.float32], available_backends(), n_random=4)
     K.use_backend("numpy")
@@ -289,13 +290,13 @@ def test_full_sweep_both_types():
 
 #: (kernel, regime, seed, limit on the rule's ratio): old worst points of closed rows
 OLD_WORST = [
-    # phi = -0.68: old main 1.03 (d e_dot / d phi 4.7 u where the textbook is 2.3 u:
+    # phi = -0.68: found at 1.03 (d e_dot / d phi 4.7 u where the textbook is 2.3 u:
     # sympy.diff's cancelling fractions in cos phi, merged by accurate_rules._angle_fractions)
     ("N_tilde_dot_with_jacobians", "random", 2, 0.8),
-    # phi = 2.67: old main 1.39 (6.3 u where the textbook is 2.3 u: the half-angle program
+    # phi = 2.67: found at 1.39 (6.3 u where the textbook is 2.3 u: the half-angle program
     # read sin(phi/2) apart from cos phi; the polynomial in tan(phi/2) of codegen.tan_half)
     ("L_tilde_dot", "random", 2, 0.8),
-    # phi = -1.79: old main 1.95 (d/dphi 7.8 u where the textbook is 1.9 u); that polynomial
+    # phi = -1.79: found at 1.95 (d/dphi 7.8 u where the textbook is 1.9 u); that polynomial
     # differentiated: 1.14 (4.6 u, the cancellation in d/dphi, open in docs/accuracy.md)
     ("L_tilde_dot_with_jacobians", "unit off by ulps", 1, 1.2),
 ]
@@ -304,7 +305,7 @@ OLD_WORST = [
 @pytest.mark.parametrize("name,regime,seed,limit", OLD_WORST)
 def test_at_the_old_worst_point(name, regime, seed, limit):
     """A closed row at its old worst point (float64, C and NumPy): within ``limit``, where
-    old main was past the rule (OLD_WORST)."""
+    a program past the rule was found (OLD_WORST)."""
     pts = A.P.regimes(A.R.kernel_of(name), np.float64, n_random=8, seed=seed)[regime]
     rows = A.judge(name, regime, pts, np.float64, available_backends())
     K.use_backend("numpy")

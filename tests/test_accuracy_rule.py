@@ -1,5 +1,5 @@
-"""The second yardstick of issue 37 (item 1) and the generator's choice of forms by it
-(item 2): a kernel's error within ``8 u (kappa + 1)`` of the ball truth **and** within
+"""The second yardstick of the accuracy rule and the generator's choice of forms by it:
+a kernel's error within ``8 u (kappa + 1)`` of the ball truth **and** within
 ``max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of the textbook formula and of each peer
 (``rigidsym.codegen.accuracy.rule``).
 
@@ -45,7 +45,7 @@ def test_the_rule():
 
 
 def _plain_cross(name, arrays, dtype, backend):
-    """Issue 30's plucker_from_points: [d/|d|; p1 x p2 / |d|], uncompensated."""
+    """plucker_from_points in its plain form: [d/|d|; p1 x p2 / |d|], uncompensated."""
     p1, p2 = (a.astype(dtype) for a in arrays)
     d = p2 - p1
     n = np.linalg.norm(d, axis=1, keepdims=True)
@@ -53,8 +53,8 @@ def _plain_cross(name, arrays, dtype, backend):
 
 
 def test_the_harness_fails_a_kernel_worse_than_the_textbook():
-    """Old main's harness passed issue 30's p1 x p2 (8e12 u off where the textbook is 18 u
-    off: inside 8 u kappa, kappa = 5.8e13); the second yardstick fails it."""
+    """The plain p1 x p2 (8e12 u off where the textbook is 18 u off) is inside 8 u kappa
+    (kappa = 5.8e13), so the condition half alone passes it; the second yardstick fails it."""
     k = A.R.kernel_of("plucker_from_points")
     pts = A.P.regimes(k, np.float64, n_random=1, small=[1e-3, 1e-6],
                       extremes=False)["p2->p1 at 1e6"]
@@ -125,7 +125,7 @@ def _worse(name, arrays, dtype, backend):
 
 
 def test_a_program_systematically_worse_than_the_yardsticks_is_still_caught():
-    """Issue 48 item 4's kind of loss: the SE(3) inverse Jacobian at ``|w|`` 3, pi, 4.5
+    """A systematic loss: the SE(3) inverse Jacobian at ``|w|`` 3, pi, 4.5
     (pytransform3d's median 1.4 .. 2.2 u). A program 12 u off everywhere there is within
     ``8 u (kappa + 1)`` and past ``max(2 e_ref, 4 u)`` at the point and over its cloud alike:
     the medians still fail it; the package's kernel passes at the same points."""
@@ -152,10 +152,10 @@ class _FixedInput:
 
 def test_the_harness_forgives_a_jump_not_a_conditioning_loss():
     """``_diff`` judges an output by the declared formula at the input the kernel got only
-    where that is a jump (the sign of e near pi). Old main took the nearer of the two at any
-    distance: at Q: phi -> 0 the textbook, reading the diagonal of a rounded Q 7.5e8 u from
-    the truth, was a 1.6 u yardstick, and screw_of_displacement failed the rule there
-    (2.53) for being 10 u from the truth."""
+    where that is a jump (the sign of e near pi). Taking the nearer of the two at any
+    distance would be wrong: at Q: phi -> 0 the textbook, reading the diagonal of a
+    rounded Q 7.5e8 u from the truth, would be a 1.6 u yardstick, and screw_of_displacement
+    would fail the rule there (2.53) for being 10 u from the truth."""
     ref = np.array([0.6, 0.0, 0.8])
     flipped = _FixedInput(-ref)
     near = _FixedInput(ref * (1 + 1e-7))        # the formula at a rounded Q: 1e8 u away
@@ -164,13 +164,13 @@ def test_the_harness_forgives_a_jump_not_a_conditioning_loss():
     assert A.diff(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) == pytest.approx(1e-7)
     assert A.diff(ref * (1 + 1e-15), ref, near, slice(0, 3), bound) < bound
     # and the componentwise figure of an axis of the other sign is taken against that sign
-    # (old main: 1.76e16 ulps for natural_invariants_from_rotation near pi)
+    # (guards against: 1.76e16 ulps for natural_invariants_from_rotation near pi)
     assert A.judged_by(-ref, ref, flipped, slice(0, 3), bound) is not ref
     assert A.judged_by(ref * (1 + 1e-7), ref, near, slice(0, 3), bound) is ref
 
 
 def test_the_componentwise_figure_is_the_kernels_own_error():
-    """plucker_from_points at nearly coincident points (p2 -> p1): old main's harness took the
+    """plucker_from_points at nearly coincident points (p2 -> p1): a harness that takes the
     componentwise ulps against the exact point's truth, which the rounding of the inputs
     (kappa up to 1e13 there) moves by up to 3.8e14 ulps (2.8e13 at these points) while the
     kernel is within 2 u of the truth at its input; the figure is now the latter, as the
@@ -196,8 +196,8 @@ def _forms(name: str):
 
 def test_generator_chooses_plucker_form_by_the_rule():
     """plucker_from_points gets the form that wins over the regimes: the plain p1 x p2
-    (issue 30's) fails the rule against the textbook at nearly coincident points and is
-    refused; the compensated one is kept. Old main: no regimes in the generator, no rule."""
+    fails the rule against the textbook at nearly coincident points and is refused; the
+    compensated one is kept."""
     k, syms, sflat, conds, flat, ctx = _forms("plucker_from_points")
     meter = error.Meter(k, flat, sflat, conds, None)
     textbook = meter.errors(flat)
@@ -212,7 +212,7 @@ def test_generator_chooses_plucker_form_by_the_rule():
 
 @pytest.mark.slow
 def test_screw_axis_point_from_the_skew_part():
-    """screw_of_displacement's p0 near phi = 0: old main read the diagonal of Q ((Q - 1)^T
+    """screw_of_displacement's p0 near phi = 0: the textbook reads the diagonal of Q ((Q - 1)^T
     (Q a - a')), 3.4e7 u off at phi = 1e-8 where pytransform3d's screw parameters are 4 u
     off; the generator now reads the axis from the skew part (within a few u)."""
     from flint import fmpq
@@ -234,7 +234,7 @@ def test_screw_axis_point_from_the_skew_part():
 
 
 def test_screw_axis_point_from_the_axis():
-    """screw_axis_point at the harness's random points of seed 2: old main built Q from (e,
+    """screw_axis_point at the harness's random points of seed 2: a form that builds Q from (e,
     phi) and summed over its entries ((Q - 1)^T (Q a - a')), 5.1 u at phi = 2.92 where the
     textbook formula is 1.0 u (1.27 of the rule); the generator now reads the axis and the
     angle from the inputs (cot(phi/2)/2 e x (a' - a) - e x (e x (a + a'))/2, exact in e.e -
@@ -269,7 +269,7 @@ def test_sumprod_is_a_dot_product_in_twice_the_precision():
 def test_pitch_of_a_twist_nearly_perpendicular_to_its_axis():
     """The pitch ``a_dot . omega / ||omega||^2`` where the dot product cancels by 1e8: the
     textbook formula is ~1e7 u off; the kernel (compensated, chosen by the rule) within
-    4 u on every back-end. Old main: the plain sum (instant_screw_axis, C: 2.5 times the
+    4 u on every back-end. Guards against: the plain sum (instant_screw_axis, C: 2.5 times the
     textbook's error at the harness's points, here as far off as the textbook)."""
     from fractions import Fraction as F
 

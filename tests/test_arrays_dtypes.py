@@ -1,11 +1,11 @@
 """dtypes of the PyTorch and JAX kernels as the libraries treat them.
 
-float16 and bfloat16 are computed in float32 and rounded once to the input dtype (old main:
-float16 ended in torch's raw ``NotImplementedError: "lu_cpu"`` from the rotation check,
-bfloat16 was rejected against the float64 tolerance); mixed dtypes promote by the library's
+float16 and bfloat16 are computed in float32 and rounded once to the input dtype (never
+torch's raw ``NotImplementedError: "lu_cpu"`` from the rotation check for float16, nor
+bfloat16 rejected against the float64 tolerance); mixed dtypes promote by the library's
 own rule (checked against ``torch.result_type`` / ``jnp.result_type``, not restated); a
-unit-norm check uses the tolerance of the lowest precision among the inputs (old main: a
-float32 unit axis with a float64 angle was "not a unit vector 5e-8 > 1e-8"); a float type
+unit-norm check uses the tolerance of the lowest precision among the inputs (so a float32
+unit axis with a float64 angle is not "not a unit vector 5e-8 > 1e-8"); a float type
 outside the four is refused naming those accepted.
 """
 

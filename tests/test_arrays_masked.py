@@ -5,8 +5,8 @@ through the PyTorch kernels and ``jax.hessian`` through the JAX ones.
 The masked-row case of the issue: ``Q = stack([1, Q1]) * s``, a loss reading row 1 only.
 Row 0 is on the singular set (the ZXZ lock), or, for
 ``natural_invariants_from_rotation`` and ``screw_of_displacement``, which answer Q = 1 with
-phi = 0 and the documented defaults, a row whose derivative is not defined there. Old main
-gave ``s.grad = nan`` and a NaN gradient in row 0 (``natural_invariants_from_rotation``,
+phi = 0 and the documented defaults, a row whose derivative is not defined there. Guards
+against ``s.grad = nan`` and a NaN gradient in row 0 (``natural_invariants_from_rotation``,
 ``screw_of_displacement``, ``euler_angle_rates``, autograd through the expression, 0 * inf
 in the backward of the masked row) and refused ``create_graph=True``; these tests fail there.
 """

@@ -110,7 +110,7 @@ def test_stated_bound_holds_on_fresh_points_every_kernel(name):
 def test_a_plain_rerun_measures_each_kernel_over_its_own_seeds():
     """A plain ``benchmarks/accuracy.py --data`` run (``--seeds auto``) measures each kernel
     over the seeds its shipped bound came from, and a ``--kernels`` run keeps the other
-    rows: a re-run never lowers a bound to what one seed shows (old main: the default was
+    rows: a re-run never lowers a bound to what one seed shows (guards against: the default was
     seed 0 alone, the JSON recorded no seeds, and a ``--kernels H_matrix --data`` run
     overwrote the file with that one row; H_matrix, H_tilde and L_tilde_dot came back at
     1, 1, 1.52 where fresh points need 1.62, 1.62, 2.39)."""

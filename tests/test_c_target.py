@@ -984,7 +984,7 @@ def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
                   [2.0, 0.5, 0], *[("out", max(1, int(np.prod(o["shape"]))))
                                    for o in m["outputs"]])
     # a pure translation (Q = 1): phi = 0 exactly, the others their documented defaults,
-    # status RIGIDSYM_C_DEFAULT_OUTPUT (16) alone (old main: singular, all NaN)
+    # status RIGIDSYM_C_DEFAULT_OUTPUT (16) alone (guards against: singular, all NaN)
     assert s == 16
     want = [[1, 0, 0], [0], [0, 0, 0], [0], [1, 0, 0, 0, 0, 0]]
     assert all(np.array_equal(np.ravel(g), w) for g, w in zip(got, want, strict=True))

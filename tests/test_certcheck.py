@@ -78,8 +78,8 @@ def test_import_graph_is_standard_library_only(quick_certs):
 
 def test_checker_size():
     """A referee reads it in an afternoon: at most 1500 lines of mathematics, 800 of the
-    second reader of the printed LaTeX (its notation, arrays and comparison: issue 65's
-    bound) and 250 of the binding to the page (the locator, the manifest, the causes)."""
+    second reader of the printed LaTeX (its notation, arrays and
+    comparison) and 250 of the binding to the page (the locator, the manifest, the causes)."""
     reader, page = ("reader.py", "arrays.py", "compare.py"), ("book.py",)
     lines = {f.name: len(f.read_text().splitlines()) for f in (SRC / "certcheck").glob("*.py")}
     n = sum(k for name, k in lines.items() if name not in reader + page)

@@ -133,7 +133,7 @@ def test_whole_chapter_certified_and_tampering_rejected(tmp_path):
     assert counts == {"verified": 110, "does-not-hold": 11, "definition": 60}
 
 
-#: identities issue 49 asks Coq to check: A^T A, its inverse and the inverse's coefficients
+#: identities Coq checks: A^T A, its inverse and the inverse's coefficients
 #: (3.13-3.16), a Rodrigues-form rotation (3.1: relative position rotated by
 #: Q = e e^T + cos(phi)(1 - e e^T) + sin(phi) E), Steiner's 3.133a and 3.147 (these by
 #: normal forms, checking/normal_forms.py), a rotation along a motion (3.102: the rotation's

@@ -1,6 +1,6 @@
 """Functions as the books define them, declarations in any order, and no bracket read as
 the one it resembles: the three wrong verdicts of the issue and the
-``S(\\mathbf{i})`` case, each with what it gave on main before the fix."""
+``S(\\mathbf{i})`` case, each with the wrong answer it guards against."""
 
 from __future__ import annotations
 
@@ -47,7 +47,7 @@ def test_the_gibbs_form_is_true_by_numpy_and_its_sign_slip_is_not():
 
 @pytest.mark.parametrize("sign, verdict", [("-", "verified"), ("+", "does-not-hold")])
 def test_a_function_of_a_vector_is_applied_not_multiplied(sign, verdict):
-    # on main: R(g) read as R·g, "shape mismatch: 3x1 vs 3x3", with no reading printed
+    # guards against: R(g) read as R·g, "shape mismatch: 3x1 vs 3x3", with no reading printed
     r = rigidsym.check_latex(r"R(\mathbf{g}) = " + _gibbs(sign), let=GIBBS_LETS, repairs=False)
     assert r.verdict == verdict, r.detail
     assert any("R(g): the --let function R(\\mathbf{g})" in n for n in r.model), r.model
@@ -57,11 +57,11 @@ S_LET = r"S(\mathbf{a}) = [\mathbf{a}]_\times"
 
 
 @pytest.mark.parametrize("latex, lets, verdict", [
-    # on main: does-not-hold (S read as a model in a, S(i) as S itself)
+    # guards against: does-not-hold (S read as a model in a, S(i) as S itself)
     (r"S(\mathbf{i}) = [\mathbf{i}]_\times", [S_LET, r"\mathbf{i}: vector"], "verified"),
     (r"S(\mathbf{i}) = [\mathbf{i}]_\times", [S_LET], "verified"),
     (r"S(\mathbf{i}) = -[\mathbf{i}]_\times", [S_LET, r"\mathbf{i}: vector"], "does-not-hold"),
-    # on main: "juxtaposition of a 3x1 matrix and a 3x3 matrix: no product fits"
+    # guards against: "juxtaposition of a 3x1 matrix and a 3x3 matrix: no product fits"
     (r"S(R\mathbf{a}) = R S(\mathbf{a}) R^T", [S_LET, "R: rotation", r"\mathbf{a}: vector"],
      "verified"),
     (r"S(R\mathbf{a}) = R^T S(\mathbf{a}) R", [S_LET, "R: rotation", r"\mathbf{a}: vector"],
@@ -84,7 +84,7 @@ ROTS = [r"R_z(\varphi) = \begin{bmatrix}\cos\varphi & -\sin\varphi & 0\\ \sin\va
     (r"R_z(\varphi)R_z(\psi) = R_z(\psi)^T R_z(\varphi)", "does-not-hold"),
 ])
 def test_one_function_applied_to_several_arguments(latex, verdict):
-    # on main: "R_z applied to 2 different arguments" (bad input)
+    # guards against: "R_z applied to 2 different arguments" (bad input)
     other = [r"\vartheta: angle"] if "vartheta" in latex else [r"\psi: angle"] \
         if "psi" in latex else []
     r = rigidsym.check_latex(latex, let=ROTS + other, repairs=False)
@@ -92,7 +92,7 @@ def test_one_function_applied_to_several_arguments(latex, verdict):
 
 
 def test_a_function_of_several_parameters():
-    # on main: "unexpected ','" at the first comma
+    # guards against: "unexpected ','" at the first comma
     lets = [r"\phi: angle; \theta: angle; \psi: angle",
             r"R_x(\alpha) = \begin{bmatrix}1 & 0 & 0\\ 0 & \cos\alpha & -\sin\alpha\\ 0 & "
             r"\sin\alpha & \cos\alpha\end{bmatrix}", ROTS[0],
@@ -114,7 +114,7 @@ SELIG_R = (r"R(\mathbf{n},\theta) = I_3 + \sin\theta\,[\mathbf{n}]_\times + (1 -
 
 
 @pytest.mark.parametrize("latex, verdict", [
-    # on main: "unexpected ','" (an operator's argument held no application; Selig (4.7))
+    # guards against: "unexpected ','" (an operator's argument held no application; Selig (4.7))
     (r"\operatorname{tr} R(\mathbf{n},\theta) = 1 + 2\cos\theta", "verified"),
     (r"\operatorname{tr} R(\mathbf{n},\theta) = 1 + \cos\theta", "does-not-hold"),
     (r"\mathrm{tr}\,R(\mathbf{n},\theta)^2 = \operatorname{tr} R(\mathbf{n},2\theta)", "verified"),
@@ -144,7 +144,7 @@ W = r"\mathbf{w} = F\mathbf{x}"
 
 @pytest.mark.parametrize("lets", [[W, "F = -I_3"], ["F = -I_3", W]])
 def test_the_minimal_declaration_order_case_verifies_in_both_orders(lets):
-    # on main: W first made F a free scalar (does-not-hold); F first verified
+    # guards against: W first made F a free scalar (does-not-hold); F first verified
     r = rigidsym.check_latex(r"\mathbf{w} = -\mathbf{x}", let=lets, repairs=False)
     assert r.verdict == "verified", (r.detail, r.model)
 
@@ -163,8 +163,8 @@ DIEBEL = [r"R = R_3 R_2 R_1",
 
 @pytest.mark.parametrize("order", [list(range(7)), list(range(6, -1, -1)), [3, 0, 5, 1, 6, 2, 4]])
 def test_models_using_models_top_down_or_bottom_up(order):
-    # Diebel's 3-2-1 Euler angles, R = R_3 R_2 R_1 declared first as the book does: on main
-    # R_3 ... became free scalars ("free: R_1, R_2, R_3") and a rotation identity failed
+    # Diebel's 3-2-1 Euler angles, R = R_3 R_2 R_1 declared first as the book does: guards
+    # against R_3 ... read as free scalars ("free: R_1, R_2, R_3"), failing a rotation identity
     lets = [DIEBEL[i] for i in order]
     r = rigidsym.check_latex(r"R^T R = I_3", let=lets, repairs=False)
     assert r.verdict == "verified", (r.detail, r.model)
@@ -173,7 +173,7 @@ def test_models_using_models_top_down_or_bottom_up(order):
 
 
 def test_a_dependence_through_another_model_is_seen():
-    # on main: "the model of R_3 does not depend on ψ" (false: through c_ψ, s_ψ)
+    # guards against: "the model of R_3 does not depend on ψ" (false: through c_ψ, s_ψ)
     r = rigidsym.check_latex(r"R_3(\psi)^T R_3(\psi) = I_3", let=[
         DIEBEL[3], DIEBEL[5], r"\psi: angle"], repairs=False)
     assert r.verdict == "verified", r.detail
@@ -186,8 +186,8 @@ def test_a_cycle_of_models_is_named():
 
 # ---------------------------------------------------- Shuster's [[u]]
 @pytest.mark.parametrize("latex, lets, verdict", [
-    # both signs give one verdict: decided (refused by name, "unknown bracket", before wave
-    # 11; on main before issue 52 read as [u], a sign lost)
+    # both signs give one verdict: decided, never refused as an unknown bracket nor read as
+    # [u] (which loses a sign)
     (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T - |\mathbf{u}|^2 I_3", [], "verified"),
     (r"[[\mathbf{u}]]^2 = \mathbf{u}\mathbf{u}^T + |\mathbf{u}|^2 I_3", [], "does-not-hold"),
     (r"\mathbf{N}^T = -\mathbf{N}", [r"\mathbf{N} = [[\mathbf{u}]]"], "verified"),  # in a model
@@ -212,7 +212,7 @@ def test_shusters_bracket_written_as_a_function_decides(capsys):
 
 
 def test_a_reading_inside_a_model_is_printed():
-    # on main the readings of a --let model were dropped: [g] read as a hat, unsaid
+    # guards against dropping the readings of a --let model: [g] read as a hat, unsaid
     r = rigidsym.check_latex(r"\mathbf{w} = \mathbf{N}\mathbf{x}",
                              let=[r"\mathbf{N} = [\mathbf{g}]"], repairs=False)
     assert any(n.startswith(r"in --let '\mathbf{N} = [\mathbf{g}]': [x] of a 3-vector")
@@ -228,7 +228,7 @@ ROD = [r"\mathbf{e}: unit vector; \theta: angle", r"\mathbf{g} = \tan\frac{\thet
 @pytest.mark.parametrize("sign, verdict", [("-", "verified"), ("+", "does-not-hold")])
 def test_a_model_applied_to_a_vector_keeps_the_reading_that_type_checks(sign, verdict):
     # R a model without parameters: R(g) a product R g (3-vector) or R applied to g; only
-    # the application type-checks against a 3x3 side. On main: R g, "shape mismatch"
+    # the application type-checks against a 3x3 side, never R g, "shape mismatch"
     r = rigidsym.check_latex(r"R(\mathbf{g}) = " + _gibbs(sign), let=ROD, repairs=False)
     assert r.verdict == verdict, r.detail
     assert "R(g): read as R applied to g (a choice: or the product R g)" in r.model, r.model
@@ -260,7 +260,7 @@ RAB = [r"R: rotation", r"\mathbf{a}: vector", r"\mathbf{c}: vector"]
 
 
 def test_a_bracket_around_a_product_keeps_the_reading_that_type_checks():
-    # on main: [R a] always the hat, "\mathbf{b} = [R\mathbf{a}]" does-not-hold (shapes)
+    # guards against: [R a] always the hat, "\mathbf{b} = [R\mathbf{a}]" does-not-hold (shapes)
     r = rigidsym.check_latex(r"\mathbf{b} = [R\mathbf{a}]",
                              let=RAB[:2] + [r"\mathbf{b} = R\mathbf{a}"], repairs=False)
     assert r.verdict == "verified", r.detail
@@ -296,13 +296,13 @@ I1 = [r"\mathbf{a}: vector", r"\mathbf{i} = \begin{bmatrix}1\\0\\0\end{bmatrix}"
 
 
 @pytest.mark.parametrize("latex, lets, verdict", [
-    # on main: "\mathbf{q} does not occur" (bad input), q_4 a free symbol of its own
+    # guards against: "\mathbf{q} does not occur" (bad input), q_4 a free symbol of its own
     (r"q_4 = \cos\frac{\theta}{2}", HALF, "verified"),
     (r"q_4 = \sin\frac{\theta}{2}", HALF, "does-not-hold"),
     (r"\mathbf{q}_4 = \cos\frac{\theta}{2}", HALF, "verified"),
     # a bold a_1 of its own is a 3-vector by the convention: only the entry type-checks
     (r"\mathbf{a}_1 = \mathbf{a}^T\mathbf{i}", I1, "verified"),
-    # declared, a_1 is no choice: a scalar of its own (on main the same, undeclared)
+    # declared, a_1 is no choice: a scalar of its own
     (r"a_1 = \mathbf{a}^T\mathbf{i}", I1 + ["a_1: scalar"], "does-not-hold"),
 ])
 def test_a_subscript_is_a_name_or_an_entry_by_the_reading_that_type_checks(latex, lets, verdict):
@@ -313,8 +313,8 @@ def test_a_subscript_is_a_name_or_an_entry_by_the_reading_that_type_checks(latex
 
 
 def test_a_subscript_whose_readings_disagree_is_refused_naming_what_settles_it(capsys):
-    # on main: does-not-hold, a_1 a free scalar (a true equation where a_1 is a's entry);
-    # refused, a symbol of its own or the entry; wave 11: beside a --let's vector
+    # never does-not-hold with a_1 a free scalar (a true equation where a_1 is a's entry):
+    # a symbol of its own or the entry is a choice; beside a --let's vector
     # it is the entry, as the books write one (latex.entries)
     r = rigidsym.check_latex(r"a_1 = \mathbf{a}^T\mathbf{i}", let=I1, repairs=False)
     assert r.verdict == "verified", r.detail
@@ -340,21 +340,21 @@ def test_a_bracket_around_one_symbol_is_its_hat_by_the_rule():
 
 # --------------------------------------------------- the constructs of item 4
 @pytest.mark.parametrize("latex, lets, verdict", [
-    # Markley-Crassidis' vector part q_{1:3} (on main: "unexpected ':'")
+    # Markley-Crassidis' vector part q_{1:3} (guards against: "unexpected ':'")
     (r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} + q_4^2 = 1",
      [r"\mathbf{q}: unit 4-vector", r"q_4 = \mathbf{q}_{4:4}"], "verified"),
     (r"\mathbf{q}_{1:3}^T\mathbf{q}_{1:3} = 1", [r"\mathbf{q}: unit 4-vector"], "does-not-hold"),
     (r"\mathbf{q}_{1:3} = \mathbf{v}", [r"\mathbf{q} = \begin{bmatrix}\mathbf{v}\\ 1"
                                         r"\end{bmatrix}"], "verified"),
-    # |a| of a vector its length, of a scalar its absolute value (on main: "unexpected '|'")
+    # |a| of a vector its length, of a scalar its absolute value (guards against: "unexpected '|'")
     (r"|\mathbf{a}| = 1", [r"\mathbf{a}: unit vector"], "verified"),
     (r"|\mathbf{a}|^2 = \mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"], "verified"),
     (r"|\mathbf{a}|^2 = 2\mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"], "does-not-hold"),
     (r"|x|^2 = x^2", [], "verified"),
-    # Tsai's \$ for a screw, a name (on main: "unknown macro \$")
+    # Tsai's \$ for a screw, a name (guards against: "unknown macro \$")
     (r"\$^T\$ = \mathbf{s}^T\mathbf{s} + \mathbf{s}_0^T\mathbf{s}_0",
      [r"\$ = \begin{bmatrix}\mathbf{s}\\ \mathbf{s}_0\end{bmatrix}"], "verified"),
-    # a starred, left-indexed name in a --let (on main: "X^{*} is Featherstone's dual ...")
+    # a starred, left-indexed name in a --let (guards against: "X^{*} is Featherstone's dual ...")
     (r"({}^{B}\mathbf{X}_{A}^{*})^T{}^{B}\mathbf{X}_{A} = \mathbf{1}",
      [r"{}^{B}\mathbf{X}_{A}^{*} = {}^{B}\mathbf{X}_{A}^{-T}",
       r"{}^{B}\mathbf{X}_{A}: spatial transform"], "verified"),
@@ -543,9 +543,9 @@ _EXP = [r"\hat\omega: unit vector; \theta: angle", r"R = e^{[\hat\omega]\theta}"
     (r"(a + b)^2(c + d) = (a + b)^2 c + (a + b)^2 d", [], "verified"),
 ])
 def test_an_application_reads_alike_however_it_is_typeset(latex, let, verdict):
-    """The outside trial of wave 6's sixth session: \\left( and a power before the argument
-    were read as products of a free scalar (two false equations verified, six true ones
-    does-not-hold); the truth of each is the textbook's (R_z(0) = I, R_zᵀ(α) = R_z(-α))."""
+    """\\left( and a power before the argument are never read as products of a free scalar
+    (which verifies two false equations and makes six true ones does-not-hold);
+    the truth of each is the textbook's (R_z(0) = I, R_zᵀ(α) = R_z(-α))."""
     r = rigidsym.check_latex(latex, let=let)
     assert r.verdict == verdict, r.detail
 
@@ -558,9 +558,9 @@ def test_an_application_with_left_and_right_decides_as_with_plain_parentheses():
 
 
 def test_the_subscripts_of_one_vector_read_alike_and_disagreeing_readings_are_refused():
-    """q_1^2 + ... + q_4^2 = qᵀq: four index choice points were cut to three, and the eight
-    readings decided (all does-not-hold) never held the one meant (all four entries). The
-    subscripts of one letter read together: since wave 11 beside a --let's 4-vector as its
+    """q_1^2 + ... + q_4^2 = qᵀq: four index choice points cut to three would decide eight
+    readings (all does-not-hold) that miss the one meant (all four entries). The
+    subscripts of one letter read together: beside a --let's 4-vector as its
     entries, counted from 1 (q_4 written) or 0 (q_0 written), one choice for the letter."""
     r = rigidsym.check_latex(r"q_1^2 + q_2^2 + q_3^2 + q_4^2 = q^Tq", let=[r"q: 4-vector"])
     assert r.verdict == "verified", r.detail

@@ -4,7 +4,7 @@ rates declared (``--let '\\dot{\\mathbf{q}} = ...'``) or free, for classical and
 Rodrigues parameters, Euler parameters and two Euler-angle sequences (Schaub & Junkins'
 conventions: ``C = [BN]``, ``\\omega`` in B). Each family's truth is checked first by an
 independent NumPy evaluation (a central difference along the rates); each family's one-edit
-slip must be does-not-hold. Before issue 63 every one was bad input (``\\dot{\\mathbf{q}}
+slip must be does-not-hold. None may be bad input (``\\dot{\\mathbf{q}}
 does not occur``, ``d/dt of a 3x3 matrix built by Cpm``)."""
 
 from __future__ import annotations

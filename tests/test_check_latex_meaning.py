@@ -16,7 +16,7 @@ AB = "a: vector; b: vector"
 
 
 # ------------------------------------------------------- item 2: a matrix word in a product
-# each was undecided on main with "TypeError: unhashable type: 'MutableDenseMatrix'"
+# guards against undecided with "TypeError: unhashable type: 'MutableDenseMatrix'"
 @pytest.mark.parametrize("latex, let, verdict", [
     (r"a^T \mathrm{CPM}(b) a = 0", AB, "verified"),
     (r"a^T \mathrm{CPM}(b) a = 1", AB, "does-not-hold"),
@@ -36,7 +36,7 @@ def test_a_matrix_word_inside_a_product_is_decided(latex, let, verdict):
 
 @pytest.mark.parametrize("rhs, verdict", [("1", "verified"), ("2", "does-not-hold")])
 def test_the_norm_of_a_unit_vector_is_one(rhs, verdict):
-    # on main: undecided ("the rational function of an expression with |x| or a root"),
+    # guards against: undecided ("the rational function of an expression with |x| or a root"),
     # and = 2 undecided too (its counterexample's sqrt raised)
     r = rigidsym.check_latex(rf"\|\hat\omega\| = {rhs}", let=[r"\hat\omega: unit vector"])
     assert r.verdict == verdict, r.detail
@@ -50,7 +50,7 @@ def test_the_norm_of_a_rotated_unit_vector_and_of_a_free_vector():
     assert rigidsym.check_latex(r"\sqrt{(R\hat\omega)^T R\hat\omega} = 1", let=let).verdict \
         == "verified"
     # a free vector's norm is no rational function: decided through its square, never by
-    # a float (on main: undecided, "irrational root at the sample point"); a nested root is
+    # a float (guards against: undecided, "irrational root at the sample point"); a nested root is
     # still beyond that, undecided and saying so
     r = rigidsym.check_latex(r"\|x\| = 1", let=["x: vector"])
     assert r.verdict == "does-not-hold" and r.counterexample, r.detail
@@ -59,7 +59,7 @@ def test_the_norm_of_a_rotated_unit_vector_and_of_a_free_vector():
 
 
 @pytest.mark.parametrize("latex, let, verdict", [
-    # on main every one of these was undecided ("irrational root at the sample point")
+    # guards against undecided ("irrational root at the sample point")
     (r"\|R x\| = \|x\|", "R: rotation; x: vector", "verified"),
     (r"\frac{1}{\|R x\|^3} = \frac{1}{\|x\|^3}", "R: rotation; x: vector", "verified"),
     (r"\|\omega \times p\| = \|p \times \omega\|", r"\omega: vector; p: vector", "verified"),
@@ -94,7 +94,7 @@ def test_a_norm_whose_square_agrees_but_whose_sign_may_not_is_undecided():
 
 
 def test_an_undecided_verdict_prints_its_reason(capsys):
-    # on main the text said "Verdict: undecided" and nothing else about why
+    # guards against the text saying "Verdict: undecided" and nothing else about why
     code, out, _ = run_cli(capsys, "--latex", NESTED, "--let", "x: vector")
     assert code == 3
     assert "Undecided: printed: irrational root at the sample point" in out
@@ -103,7 +103,7 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
 
 
 def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
-    # its reason ("trig of non-angle argument") was only in --json; wave 10: the
+    # its reason ("trig of non-angle argument") is printed, not only in --json; the
     # norm is written θ u (rigidsym.zero.polar), so J w = w is verified, and J w = 2 w, which
     # does not hold, is undecided with the reason naming the construct
     lets = ["--let", r"w: vector; \theta = \sqrt{w^T w}",
@@ -135,7 +135,7 @@ R_MODEL = r"R = e^{[\hat\omega]\theta}"
 
 
 @pytest.mark.parametrize("latex", [
-    r"R(\theta) = e^{[\hat\omega]\theta}",             # on main: R θ, does-not-hold
+    r"R(\theta) = e^{[\hat\omega]\theta}",             # guards against: R θ, does-not-hold
     r"R(\theta)^T R(\theta) = I",                       # the power binds to R(θ)
     r"\frac{d}{d\theta} R(\theta) = [\hat\omega] R(\theta)",
 ])
@@ -176,7 +176,7 @@ def test_an_application_the_reading_cannot_settle_is_bad_input(capsys, latex, wo
 
 
 @pytest.mark.parametrize("latex, verdict", [
-    (r"\mathbf{R}^T\mathbf{R} = \mathbf{I}_3", "verified"),   # on main: a free matrix I_3
+    (r"\mathbf{R}^T\mathbf{R} = \mathbf{I}_3", "verified"),   # guards against: a free matrix I_3
     (r"R^T R = I_{3\times 3}", "verified"),
     (r"R^T R = I_n", "verified"),
     (r"R^T R = I_4", "shapes"),     # a written size is never resized to fit: bad input
@@ -203,7 +203,7 @@ def test_a_letter_subscript_of_i_stays_a_name():
 
 
 @pytest.mark.parametrize("latex, let, words", [
-    # on main: "shape mismatch" does-not-hold
+    # guards against: "shape mismatch" does-not-hold
     (r"\dot R = [\omega] R", r"R: rotation; \omega: vector",
      r"\dot{R} is the time derivative of R"),
     (r"x = R", "R: rotation", "x has the shape of the convention (x a scalar)"),
@@ -215,7 +215,7 @@ def test_a_guess_the_verdict_would_rest_on_is_bad_input(capsys, latex, let, word
 
 
 @pytest.mark.parametrize("latex, words", [
-    # Spong's law of cosines with c_1 ... free: does-not-hold on main (c_1 a free scalar)
+    # Spong's law of cosines with c_1 ... free: never does-not-hold (c_1 a free scalar)
     (r"(a_1c_1 + a_2c_{12})^2 + (a_1s_1 + a_2s_{12})^2 = a_1^2 + a_2^2 + 2a_1a_2c_2",
      "c_{12}, c_{1}, c_{2}, s_{12}, s_{1}: in Siciliano, Spong and Craig the cos and sin"),
     (r"\hat\omega^3 = -\hat\omega", "--notation lynch-park or --notation murray-li-sastry"),
@@ -226,12 +226,12 @@ def test_a_symbol_whose_meaning_differs_between_books_is_named(capsys, latex, wo
 
 
 @pytest.mark.parametrize("latex, verdict", [
-    # on main: verified, the 3x3 zero resized to the 3-vector its neighbours have
+    # guards against: verified, the 3x3 zero resized to the 3-vector its neighbours have
     (r"\mathbf{R}\omega - \mathbf{R}\omega = \mathbf{0}_{3\times 3}", "shapes"),
     (r"\mathbf{R}\omega - \mathbf{R}\omega = 0_{3\times 3}", "shapes"),
     (r"\omega - \omega = \mathbf{0}_{3}", "verified"),
     (r"\mathbf{R} - \mathbf{R} = \mathbf{0}_{3\times 3}", "verified"),
-    # a plain 0 for the zero vector, as the books write it (on main: a shape mismatch)
+    # a plain 0 for the zero vector, as the books write it (guards against: a shape mismatch)
     (r"\mathbf{R}\omega - \mathbf{R}\omega = 0", "verified"),
     (r"\omega - 2\omega = 0", "does-not-hold"),
 ])
@@ -242,7 +242,7 @@ def test_a_zero_whose_size_is_written_or_fixed_by_its_operands_is_never_resized(
 
 
 def test_a_written_zero_size_that_cannot_be_added_is_bad_input(capsys):
-    # on main: verified (\mathbf{0}_{3\times 3} read as the unsized zero vector)
+    # guards against: verified (\mathbf{0}_{3\times 3} read as the unsized zero vector)
     code, _, err = run_cli(capsys, "--latex", r"\omega = \mathbf{0}_{3\times 3} + \omega",
                         "--let", r"\omega: vector")
     assert code == 2 and "a sum of a 3x3 matrix and a 3x1 matrix" in err, err
@@ -390,7 +390,7 @@ def test_an_unknown_notation_is_bad_input(capsys):
 # ------------------------------------------------------- item 5: printed back as written
 def test_greek_variants_print_as_glyphs(capsys):
     code, out, _ = run_cli(capsys, "--latex", r"\varphi + \vartheta = \vartheta + \varphi")
-    assert code == 0 and "read as: ϕ + ϑ = ϕ + ϑ" in out  # on main: varphi + vartheta
+    assert code == 0 and "read as: ϕ + ϑ = ϕ + ϑ" in out  # guards against: varphi + vartheta
 
 
 def test_a_readers_bracket_stays_a_bracket_in_every_view():
@@ -398,12 +398,12 @@ def test_a_readers_bracket_stays_a_bracket_in_every_view():
     r = rigidsym.check_latex(slip, notation="lynch-park")
     assert r.verdict == "does-not-hold"
     texts = [m["text"] for m in r.members] + [x["text"] for x in r.repairs]
-    assert texts and all("[ω̂]" in t and "CPM" not in t for t in texts), texts  # on main: CPM(ω̂)
+    assert texts and all("[ω̂]" in t and "CPM" not in t for t in texts), texts  # never CPM(ω̂)
 
 
 @pytest.mark.parametrize("latex, shown", [
-    (r"a^T \mathrm{CPM}(b) a = 0", "aᵀ CPM(b) a = 0"),      # on main: tr(aᵀ CPM(b) a)
-    (r"(a \times b) \cdot a = 0", "((a × b)·a) = 0"),       # on main: (a × b·a)
+    (r"a^T \mathrm{CPM}(b) a = 0", "aᵀ CPM(b) a = 0"),      # guards against: tr(aᵀ CPM(b) a)
+    (r"(a \times b) \cdot a = 0", "((a × b)·a) = 0"),       # guards against: (a × b·a)
 ])
 def test_a_scalar_product_prints_as_written(capsys, latex, shown):
     code, out, _ = run_cli(capsys, "--latex", latex, "--let", AB)
@@ -443,9 +443,9 @@ def test_a_matrix_without_a_model_applied_is_still_refused(capsys):
 
 @pytest.mark.parametrize("hat, wide", [(r"\hat", r"\widehat"), (r"\tilde", r"\widetilde")])
 def test_a_wide_accent_is_its_narrow_accent(hat, wide):
-    r"""``\widehat``, ``\widetilde`` only draw wider (unknown macros before): the same glyph as
+    r"""``\widehat``, ``\widetilde`` only draw wider: the same glyph as
     ``\hat``, ``\tilde``, so a model given for one serves the other and a free one is
-    read alike (wave 11: a free hat is read both ways, a unit vector or a skew matrix)."""
+    read alike (a free hat is read both ways, a unit vector or a skew matrix)."""
     let = [rf"{hat}{{\mathbf{{a}}}} = [\mathbf{{a}}]_\times"]
     r = rigidsym.check_latex(rf"{wide}{{\mathbf{{a}}}}\mathbf{{a}} = \mathbf{{0}}", let=let)
     assert r.verdict == "verified", r.detail                  # a × a = 0, through the model

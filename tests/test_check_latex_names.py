@@ -2,7 +2,7 @@
 over a subscripted letter either way, Hughes' ``\\epsilon^\\times``, font macros, a declared
 ``e`` before ``^``, functions beside their barred namesakes; an index range as a ``--let``
 NAME refused naming the ``--let`` that settles it; no refusal ends in an empty "expected one
-of:" and none leaks an exception's text. Each case was bad input before issue 63."""
+of:" and none leaks an exception's text."""
 
 from __future__ import annotations
 
@@ -125,5 +125,5 @@ def test_a_refusal_names_its_construct_and_leaks_nothing(latex, let):
     (r"\mathbf{a}^S_1\cdot\mathbf{a}^S_1 = 2", "does-not-hold"),
 ])
 def test_a_label_before_a_subscript_is_the_same_glyph(latex, verdict):
-    # wave 10: \mathbf{a}^S_1 is TeX's \mathbf{a}_1^S (refused before: "unexpected '_'")
+    # \mathbf{a}^S_1 is TeX's \mathbf{a}_1^S (never refused: "unexpected '_'")
     assert _v(latex, [r"\mathbf{a}_1^S: unit vector"]) == verdict

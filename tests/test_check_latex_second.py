@@ -431,8 +431,8 @@ def test_a_modules_symbol_is_named_as_not_cross_checked(lent):
 
 
 def test_the_rate_of_a_rate_is_the_second_derivative():
-    # d/dt(θ̇ sin θ) = θ̈ sin θ + θ̇² cos θ: before wave 10 the reader took θ̇ for a
-    # constant (θ̇² cos θ alone), the second semantics disagreed, and the check was refused
+    # d/dt(θ̇ sin θ) = θ̈ sin θ + θ̇² cos θ: θ̇ taken for a constant (θ̇² cos θ alone)
+    # would make the second semantics disagree and the check be refused
     r = rigidsym.check_latex(r"\frac{d}{dt}(\dot\theta\sin\theta) = \ddot\theta\sin\theta"
                              r" + \dot\theta^2\cos\theta", let=[r"\theta(t): angle"],
                              repairs=False)
@@ -443,7 +443,7 @@ _ROT2 = r"C = \begin{bmatrix}\cos\theta & -\sin\theta \\ \sin\theta & \cos\theta
 
 
 @pytest.mark.parametrize("latex, let, verdict", [
-    # \ddot of a model: d/dt twice, θ̈ free (wave 10; before, \ddot{C} was a free symbol)
+    # \ddot of a model: d/dt twice, θ̈ free (not \ddot{C} a free symbol)
     (r"\ddot{C} = \dot\theta^2\begin{bmatrix}-\cos\theta & \sin\theta \\ -\sin\theta & "
      r"-\cos\theta\end{bmatrix} + \ddot\theta\begin{bmatrix}-\sin\theta & -\cos\theta \\ "
      r"\cos\theta & -\sin\theta\end{bmatrix}", [_ROT2, r"\theta(t): angle"], "verified"),

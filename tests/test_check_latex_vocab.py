@@ -1,4 +1,4 @@
-"""The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words):
+"""The vocabulary of rigid motions in a reader's LaTeX:
 Modern Robotics' and Murray-Li-Sastry's spellings, read onto ``rigidsym.declare``'s words
 and decided by the exact engine through ``rigidsym.check_latex``."""
 
@@ -50,7 +50,7 @@ def test_a_sign_slip_of_rodrigues_does_not_hold_with_an_exact_point_and_a_repair
 
 @pytest.mark.parametrize("angle, verdict", [
     ("angle in [0, pi]", "verified"),      # MR's theta of the logarithm
-    ("angle", "does-not-hold"),            # on (-pi, pi) acos gives |theta| (issue 28's probe)
+    ("angle", "does-not-hold"),            # on (-pi, pi) acos gives |theta|
 ])
 def test_the_log_trace_formula_holds_on_zero_to_pi_only(angle, verdict):
     let = [rf"\hat\omega: unit vector; \theta: {angle}", R_EXP]
@@ -183,8 +183,8 @@ def test_the_command_line_reads_modern_robotics_and_exits_by_verdict(capsys):
     (r"\det(\mathbf{a}^\wedge) = 0", "verified"),
 ])
 def test_a_determinant_of_a_cross_product_matrix_is_decided(latex, verdict):
-    """Undecided before wave 6's sixth session ("TypeError while checking: unhashable type:
-    'MutableDenseMatrix'": the operator kept the explicit vector's mutable matrix); det(1 +
+    """Decided, never undecided on "TypeError while checking: unhashable type:
+    'MutableDenseMatrix'" (an operator keeping the explicit vector's mutable matrix); det(1 +
     [a]x) = 1 + |a|^2 by expanding the 3x3 determinant by hand."""
     assert rigidsym.check_latex(latex).verdict == verdict
 

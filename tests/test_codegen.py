@@ -44,8 +44,8 @@ def test_half_angle_rewrite_removes_cancellation():
 
 
 def test_cos_forms_near_pi():
-    """The bare cos phi of the half-angle rewrite: ``1 - 2 sin^2(phi/2)`` (the only form of
-    old main) is about 3 u off near pi, where libm's cos is u/2 off; the piecewise form of
+    """The bare cos phi of the half-angle rewrite: ``1 - 2 sin^2(phi/2)`` (a form that alone
+    is about 3 u off near pi), where libm's cos is u/2 off; the piecewise form of
     :data:`~rigidsym.codegen.optimise.COS_FORMS` stays within 2 u on both sides of pi/2,
     and every form is cos phi (the zero test, in ``codegen.cos_form``)."""
     import mpmath

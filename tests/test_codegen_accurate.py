@@ -28,8 +28,8 @@ def _improve(name: str):
 def test_skew_part_rewrite_is_kept_measured_and_decided():
     before, after, chosen = _improve("screw_of_displacement")
     # the axis point from the skew part (it replaces the declared grouping of p0,
-    # 3 - tr Q with it, wholesale; the rule "1 - cos(phi) from the skew part" of issue 30
-    # then finds nothing left)
+    # 3 - tr Q with it, wholesale; the rule "1 - cos(phi) from the skew part" then finds
+    # nothing left)
     assert [c.name for c in chosen] == ["the axis point from the skew part of Q"]
     c = chosen[0]
     assert c.decided in ("exact-cancel", "random-exact")
@@ -116,7 +116,7 @@ def _ctx(name: str) -> tuple:
 
 def test_tan_half_polynomial_exact_off_the_sphere_and_decided():
     """L_tilde_dot's fractions over ``1 + cos phi`` as the polynomial in ``t =
-    tan(phi/2)`` they are, each coefficient homogenised in ``e`` (old main: 6.3 u where the
+    tan(phi/2)`` they are, each coefficient homogenised in ``e`` (guards against: 6.3 u where the
     textbook is 2.3 u, tests/test_accuracy.py). Equal to the declaration everywhere, off
     the unit sphere too (the harness's unit vectors a few ulps off read the declared
     formula): checked exactly at a rational point with ``|e| != 1``, ``t = 1/2``."""

@@ -70,7 +70,7 @@ def test_not_solved_has_its_own_status_and_exit_code():
     assert _exit_code(s) == EXIT_NOT_SOLVED != EXIT_ILL_POSED
 
 
-def test_cli_3_7_on_the_issue_data_exits_0():
+def test_cli_3_7_on_a_users_data_exits_0():
     r = subprocess.run([sys.executable, "-m", "rigidsym", "exercise", "3.7", "--set", "a=1,0,0",
                         "--set", "b=2,0,0", "--set", "n_A=0,1,0", "--set", "n_B=0,2,0"],
                        capture_output=True, text=True, timeout=120)

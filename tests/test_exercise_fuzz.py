@@ -144,7 +144,7 @@ def test_data_strings_never_crash_exhaustive(ex_id, short_budget):
     ("3.11", ["a=10**10**10"], 2, "raises to a power above 100"),
     ("3.4", ["n_1=nan,0,0"], 2, "n_1[0]: 'nan' is not a finite real number"),
 ])
-def test_the_issue_cases(ex_id, sets, rc, words):
+def test_hostile_exercise_data_is_answered_or_refused_by_name(ex_id, sets, rc, words):
     got, out, err = _run("ex" + ex_id, sets)
     assert got == rc and words in out + err
     assert ("cos(30): 30 rad" in out) == ("cos(30)" in sets[0])      # the radians hint

@@ -3,7 +3,7 @@ the error against the 50-digit reference evaluated at the *same* float32 inputs.
 
 The C kernels compute in float32 arithmetic, in float64 only for the subexpressions their
 precision plan keeps there (rigidsym.codegen.accuracy.float32, named in each generated
-header). Since issue 37 (item 6) plan and test read the same rule, rigidsym.codegen.accuracy.rule's:
+header). Plan and test read the same rule, rigidsym.codegen.accuracy.rule's:
 per output, the normwise relative error within ``max(2 e_ref, 4 u)``, ``e_ref`` the textbook
 formula's error (the declaration, naively, in float32 arithmetic) at the same inputs,
 ``u = 2**-24``, at random and adversarial points alike (the rule's condition half is
@@ -107,17 +107,16 @@ def _rule_ratio(name, arrays, got, ref):
 #: is compiled without FMA contraction as the planner simulates it (RIGIDSYM_F32_BEGIN; with
 #: contraction instant_screw_axis 1.3, point_acceleration 1.3, wrench_axis 1.4 were open
 #: here, euler_angle_rates_xzx_fixed 1.25 -> 1.01, within 1 since the plans are measured over
-#: the harness's regimes too). Before issue 37 these rows passed a looser measure (2 ulp of
-#: the largest output, not per output).
+#: the harness's regimes too).
 OPEN_C: dict = {}
 
 
 @pytest.mark.sample
 @pytest.mark.parametrize("name", PUBLIC + EULER)
 def test_float32_error_bound_against_50_digits(name, backend):
-    """Old main: the plan's budget (1 ulp against the float64 program) and this test's
-    (2 ulp, max-norm) were stricter than the harness's rule, so instant_screw_axis kept 9 of
-    11 nodes in double (0.90x float64's time); now both are the rule of issue 37."""
+    """The plan's budget and this test's are both the accuracy rule (a stricter budget,
+    1 ulp against the float64 program, keeps 9 of instant_screw_axis's 11 nodes in double:
+    0.90x float64's time)."""
     arrays, ref = _case(name, 200 if name in PUBLIC else 30)
     got = _run32(name, arrays, backend)
     assert got.dtype == np.float32
@@ -152,9 +151,8 @@ def test_float32_error_bound_1000_points(name):
 #: 1 here; exponential_coordinates_left_jacobian_inverse went 1.10 -> 1.45 at one of these
 #: points although its plan got better over 20000 random points (past the rule at 25 of them,
 #: worst 2.2; the old plan at 46, worst 3.0): a tail of random points that 1000 planner points
-#: do not reach (4000 reach more: 9 of 20000, worst 1.65, at 3x the plan's time). Before
-#: issue 37 the measure was 1 ulp of the float64 program, normwise. Since the plans and the
-#: textbook use correctly rounded sin, cos, atan2 (one yardstick on every CPU),
+#: do not reach (4000 reach more: 9 of 20000, worst 1.65, at 3x the plan's time). Since the plans
+#: and the textbook use correctly rounded sin, cos, atan2 (one yardstick on every CPU),
 #: screw_axis_point 1.19 at one of these points (its header: 0.956 of the rule at the planner's).
 OPEN_C_1000 = {"exponential_coordinates_left_jacobian_inverse": 1.6, "screw_axis_point": 1.31}
 
@@ -162,7 +160,7 @@ OPEN_C_1000 = {"exponential_coordinates_left_jacobian_inverse": 1.6, "screw_axis
 def test_the_plans_range_is_the_c_kernels():
     """The planner leaves out the points whose inputs the C float32 kernels hand to the
     rescue (rigidsym_any_extreme_f32): its range must be theirs, or a plan is chosen for
-    points C never computes in float (old main: norm(omega) down to 1e-18, re-run in long
+    points C never computes in float (guards against: norm(omega) down to 1e-18, re-run in long
     double by C) while missing the ones it does."""
     from rigidsym.kernels.runtime.rescue import RANGE32
 

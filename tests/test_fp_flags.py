@@ -3,7 +3,7 @@ finite inputs of ordinary magnitude is caught by the flags its arithmetic raised
 for the finiteness pass over a block's outputs. A reader's kernel whose powers overflow from
 inputs inside the range test's [2^-100, 2^101) is the case no package kernel has (their
 products of inputs stay finite there): were the flags not read, or read before the lanes
-function's arithmetic, the inf would come back silently. (Old main caught it by that pass,
+function's arithmetic, the inf would come back silently. (A separate pass would catch it,
 so this test guards the flags; it does not fail there.)"""
 
 from __future__ import annotations

@@ -61,7 +61,7 @@ def test_the_anchor_is_githubs():
     assert github_anchor("How it is measured (`benchmarks/accuracy.py`)") == \
         "how-it-is-measured-benchmarksaccuracypy"
     assert github_anchor("Never worse than the textbook formula or a peer") == \
-        "never-worse-than-the-textbook-formula-or-a-peer-issue-37"
+        "never-worse-than-the-textbook-formula-or-a-peer"
 
 
 def test_generated_text_cites_docs():

@@ -23,7 +23,7 @@ def test_the_package_ships_the_docs_glossary_unchanged():
 
 
 @pytest.mark.parametrize("word", glossary.WORDS)
-def test_every_word_of_the_issue_has_an_entry(word):
+def test_every_word_of_the_glossary_list_has_an_entry(word):
     assert word in glossary.entries(), word
     assert len(glossary.entries()[word]) > 80
 

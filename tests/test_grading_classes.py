@@ -210,7 +210,7 @@ def test_question_tests_exhaustive(ex_id):
     _property(ex_id, 40)
 
 
-def test_31_the_issues_equivalent_pairs_are_right():
+def test_31_equivalent_pairs_are_right():
     """3.1: (-e, -phi) with the Plücker array negated to match, and (-e, 2 pi - phi)."""
     s, key = key_of("ex3.1")
     e, phi, pl = key["e"][0], float(key["phi"][0]), key["plucker"][0]

@@ -43,7 +43,7 @@ def _cpu():
                                              (np.float64, "134217729")])
 def test_compensated_pitch_computed_once_under_jit(dtype, splitter):
     """The compensated pitch of ``instant_screw_axis`` (Dot2, ~65 operations, its Veltkamp
-    splitter a constant) in one fusion of the compiled value + gradient. Old main: 6 (XLA
+    splitter a constant) in one fusion of the compiled value + gradient. Guards against: 6 (XLA
     fused it into each reader: the outputs, the gradients; 2-2.6x a hand-written formula
     at N = 1e3 on one core)."""
     _cpu()
@@ -57,7 +57,7 @@ def test_compensated_pitch_computed_once_under_jit(dtype, splitter):
 def test_values_and_jvp_share_the_forward_under_jit():
     """The JVP rule evaluates the program on the values' own columns (inf as NaN), so that
     XLA computes the forward once for both: one sine in the compiled value + gradient of
-    ``rotation_from_natural_invariants``. Old main: 2 (the JVP's columns lacked the values'
+    ``rotation_from_natural_invariants``. Guards against: 2 (the JVP's columns lacked the values'
     inf-to-NaN step; ``instant_screw_axis``'s forward, its compensated pitch included, was
     computed twice too)."""
     _cpu()

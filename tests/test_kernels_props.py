@@ -294,7 +294,7 @@ def test_common_keywords_validated(threads, exc):
 
 #: the public callables of rigidsym.kernels other than the kernels: a
 #: wrong type, shape or dtype is a TypeError/ValueError whose message starts with the
-#: argument's name. Old main: accuracy(True) was a KeyError, accuracy([..]) and
+#: argument's name. Guards against: accuracy(True) was a KeyError, accuracy([..]) and
 #: accuracy(np.array(..)) "TypeError: unhashable type", use_backend(1) and jacobian(3) a
 #: ValueError, batch_function(True) a KeyError, batch_function(.., dtype=int) ran,
 #: swap_blocks(x, matrix="yes") ran, load(3) an AttributeError

@@ -1,7 +1,7 @@
 """The books' notations in a reader's LaTeX and the messages that quote
 it (item 5): each construct read with its book's meaning, each refusal naming what settles
-it, each error quoting the macro with its boundaries. Every test here fails on the main of
-before issue 40 (the constructs were walls; the messages glued macros: '\\cotfrac')."""
+it, each error quoting the macro with its boundaries. The tests guard against
+constructs read as walls and messages that glue macros ('\\cotfrac')."""
 
 from __future__ import annotations
 
@@ -118,7 +118,7 @@ _AB = r"\mathbf{a}(t): vector; \mathbf{b}(t): vector"
 
 
 @pytest.mark.parametrize("latex, let, verdict", [
-    # refused before the fifth session of wave 6 ("d/dt of a scalar made of matrices",
+    # never refused ("d/dt of a scalar made of matrices",
     # "d/dt of a 3x1 matrix built by Cross: write it as products and sums")
     (r"\frac{d}{dt}(\mathbf{a}\cdot\mathbf{b}) = \dot{\mathbf{a}}\cdot\mathbf{b} + "
      r"\mathbf{a}\cdot\dot{\mathbf{b}}", _AB, "verified"),
@@ -201,6 +201,6 @@ def test_what_was_expected_is_said_in_latex_not_in_the_grammars_terminal_names()
                                           (r"x = a \cdots b", r"\cdots"),
                                           (r"x = \tanh y", r"\tanh")])
 def test_a_macro_that_only_starts_like_a_known_one_is_unknown_not_split(latex, macro):
-    # before issue 40 the lexer read \sinh y as \sin(h y) and \cdots as \cdot s
+    # guards against reading \sinh y as \sin(h y) and \cdots as \cdot s
     with pytest.raises(LatexError, match=rf"unknown macro \{macro} at position"):
         _read(latex)

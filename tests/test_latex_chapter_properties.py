@@ -7,8 +7,8 @@ and ``,``; ``^T`` as ``^{T}``, a one-character subscript braced (``_1`` as ``_{1
 has no ``--let`` to permute, and its symbols are named by the book's glyph table, so a
 renaming is no equivalence there (the corpus carries those properties,
 ``tests/test_latex_metamorphic.py``). A quick share draws a few ids and variants; every id
-with every variant that applies runs under ``slow``. These held on main before issue 52 as
-well (the grammar change of issue 52, ``(`` of an argument list, is checked to keep them)."""
+with every variant that applies runs under ``slow``. They guard the grammar's ``(`` of an
+argument list too."""
 
 from __future__ import annotations
 

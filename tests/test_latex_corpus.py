@@ -70,7 +70,7 @@ def test_the_corpus_is_large_enough_and_its_tables_are_kinds():
     for e in ENTRIES.values():
         assert e["section"] and e["number"] and e["book"]["edition"], e["id"]
     for name, kind in {r for e in ENTRIES.values() for r in corpus._rows(e["table"])}:
-        if kind != "spatial transform":  # the kind issue 40 adds
+        if kind != "spatial transform":  # a kind of the corpus's own
             kind_of(kind, f"{name}: {kind}")
 
 

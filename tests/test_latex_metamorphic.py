@@ -14,8 +14,8 @@ entry read with its book's table is unchanged when
 Measured on the entries that are decided (verified or does-not-hold); a variant that does
 not apply to an entry (nothing to rename, no ``^T``) is skipped and counted. Hypothesis
 draws the variants; a quick share runs in the README's command, every entry under ``slow``.
-On main before issue 52, (a) and (d) failed: ``Y`` met in its model before ``Z`` was
-declared became a free scalar (recorded in docs/check-latex.md).
+(a) and (d) guard against reading the models in the order given: ``Y`` met in its model
+before ``Z`` is declared would become a free scalar.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""Every chapter id that parsed when issue 40 began parses to the same structure (its
+"""Every chapter id of the recorded parses parses to the same structure (its
 chains in sympy's srepr, its relation symbols and its readings), whatever the grammar and
 the tokenizer learnt since: ``tests/data/latex_parses.json`` (recorded by
 ``tests/data/make_latex_parses.py`` before the change)."""

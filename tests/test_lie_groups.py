@@ -1,9 +1,9 @@
-"""The Lie-group maps of issue 38 (derivations/lie_groups.py): every identity verified by the
+"""The Lie-group maps (derivations/lie_groups.py): every identity verified by the
 chapter's checker through the polar parametrisation w = theta e, a slip refuted, and the
 maps against independent numbers (scipy-free: a matrix exponential by its series in mpmath).
 
-On the main of before issue 38 the identities were undecided ("trig of non-angle argument")
-and expm refused a non-unit exponent; these tests fail there.
+They guard against the identities being undecided ("trig of non-angle argument") and expm
+refusing a non-unit exponent.
 """
 
 from __future__ import annotations
@@ -80,7 +80,7 @@ def b():
 
 def test_small_angle_log_slips_refuted(tmp_path):
     """The SE(3) log's small-angle branch (the kernel's, below pi/4), verified as
-    sola:log-se3-small (old main: declared nowhere, only in generated code): a slip in its
+    sola:log-se3-small (guards against: declared nowhere, only in generated code): a slip in its
     g (1 - sqrt(1 - s^2) for 1 + ...) is a counterexample, and asin(sin theta) is theta only
     below a quarter turn: on [0, pi] the claim is not verified."""
     src = '''

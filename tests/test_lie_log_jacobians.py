@@ -144,7 +144,7 @@ def test_each_branch_is_differentiated_with_its_value(name):
     """Ambient central differences of the value kernel (step 1e-6, error ~1e-12) against the
     Jacobian kernel, inside the small branch (0.3 rad), the main one (1.2; Shepperd's 2.2 for
     the quaternion) and near pi (2.9): the Jacobian is the derivative of the function the
-    kernel computes, one branch per sample for both (old main: no Jacobian kernel)."""
+    kernel computes, one branch per sample for both (guards against: no Jacobian kernel)."""
     e = np.array([0.48, -0.6, 0.64])
     for th in (0.3, 1.2, 2.2, 2.9):
         Q = np.array(_mp(sp.lambdify(list(_X), L.rotation_from_rotation_vector(_X), "mpmath"),
@@ -172,7 +172,7 @@ def test_the_branched_maps_have_their_jacobian_kernels():
 
 # ------------------------------------------------------------------------------------------
 # the log of SE(3): its Jacobian kernel by forward mode over each branch's optimised program
-# (Kernel.jacobian_from = "program"); old main had none (ValueError from K.jacobian)
+# (Kernel.jacobian_from = "program"); none would raise ValueError from K.jacobian
 
 _XI = sp.Matrix(sp.symbols("x0:6", real=True))
 SE3 = "exponential_coordinates_from_transform"

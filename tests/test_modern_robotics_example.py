@@ -51,7 +51,7 @@ def test_the_summary_counts_no_book_causes_for_a_readers_module(capsys):
 
 
 def test_the_report_shows_every_form_in_book_notation(tmp_path, capsys):
-    # issue 28's acceptance: no "not shown", no internal name, no ASCII member label
+    # no "not shown", no internal name, no ASCII member label
     assert main(["report", "--module", str(EXAMPLE), "--out", str(tmp_path), "--jobs", "1",
                  "--no-cache"]) == 0
     capsys.readouterr()
@@ -102,7 +102,7 @@ def test_the_kernels_compute_what_scipy_computes(tmp_path, capsys):
 
 def _mutants_of_the_example():
     """One mutant of each kind of every member of the example's verified identities (the
-    mutation test of issue 21, over the rigid-motion words)."""
+    mutation test, over the rigid-motion words)."""
     import random
 
     from rigidsym.checking.deciding.explicit import seed_of, shape_of

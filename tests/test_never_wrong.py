@@ -1,7 +1,7 @@
 """Kernels never silently wrong: never worse than the textbook formula, finite in
 finite out over the whole floating range, one NaN policy, the same answer on C and NumPy.
 
-Each test names the defect of the main branch before issue 37 that it caught.
+Each test names the defect it guards against.
 """
 
 from __future__ import annotations
@@ -47,7 +47,7 @@ PLUCKER_CASES = [
 def test_plucker_nearly_coincident_points(case):
     """The moment within max(2 e_ref, 4 u) of the 50-digit reference, e_ref the textbook
     p1 x (p2 - p1)/||p2 - p1|| in float64; C and NumPy within that of each other.
-    Old main: 8e12 u (C) and 1.9e13 u (NumPy) at the first case, ~1e8 u at the second."""
+    Guards against: 8e12 u (C) and 1.9e13 u (NumPy) at the first case, ~1e8 u at the second."""
     p1, p2 = PLUCKER_CASES[case]
     e_ref_true, m_ref = _plucker_ref(p1, p2)
     d = p2 - p1
@@ -109,7 +109,7 @@ EXPONENTS = {np.float64: [-990, -700, -520, -300, 300, 512, 515, 700, 990],
 def test_finite_in_finite_out(name, dtype):
     """Inputs from 1e-300 to 1e300 (float64; 1e-35 to 1e35 float32) whose result is
     representable: the result, never NonFiniteResultError nor a finite wrong value, on C
-    and NumPy, with check=True and check=False alike. Old main: plucker_from_points at
+    and NumPy, with check=True and check=False alike. Guards against: plucker_from_points at
     |p| = 1e155 and instant_screw_axis at |omega| = 7.5e154 raised NonFiniteResultError;
     with check=False NumPy returned e = [-0, 0, -0], C NaN; float32 plucker_from_points at
     |p| = 1e20 failed on C."""
@@ -136,8 +136,9 @@ def test_finite_in_finite_out(name, dtype):
     K.use_backend("numpy")
 
 
-def test_issue_cases_finite():
-    """The issue's two cases, as a user types them."""
+def test_huge_but_finite_inputs_give_finite_results():
+    """plucker_from_points at |p| = 1e155 and instant_screw_axis at |omega| = 7.5e154, as a
+    user types them: finite results."""
     p1 = np.array([0.3, -0.7, 1.1]) * 1e155
     omega = np.array([0.6, 0.0, 0.8]) * 7.5e154
     for b in _backends():
@@ -178,7 +179,7 @@ def test_one_nan_policy(name):
     hold the input with a coefficient that is zero in value, as the moment of an axis does)
     and every other output as with the clean input (to rounding: the sample is re-run in
     long double); the same NaN positions on C and NumPy; check=True keeps its ValueError.
-    Old main: C wrote NaN in the whole row, NumPy a finite e beside a NaN phi, and an inf
+    Guards against: C wrote NaN in the whole row, NumPy a finite e beside a NaN phi, and an inf
     input gave finite limits (e = f/||f|| = [0, 0, 1])."""
     table, valid = _nan_cases()
     call, specs = table[name]
@@ -231,7 +232,7 @@ def _outs(res):
 def test_check_false_is_check_true_on_valid_input(name):
     """check=False only skips validation: on valid input (a batch above MIN_PARALLEL, with
     rows of extreme magnitude) it returns what check=True returns, bit for bit, with out=
-    and threads=2 too, on C and NumPy. Old main: an overflowing row was NaN with check=True
+    and threads=2 too, on C and NumPy. Guards against: an overflowing row was NaN with check=True
     and on_singular="nan" but its IEEE values (e = [-0, 0, -0]) with check=False."""
     table, valid = _nan_cases()
     call, specs = table[name]

@@ -3,7 +3,7 @@ finite out over the whole floating range, ``check=False`` equal to ``check=True`
 input, and one NaN policy, the same NaN positions as the C and NumPy kernels, on every
 public kernel. Skipped where PyTorch or JAX is not installed.
 
-Each test names the defect of the main branch before this change that it caught.
+Each test names the defect it guards against.
 """
 
 from __future__ import annotations
@@ -110,9 +110,9 @@ def nan_rows(specs: list, rng) -> tuple[dict, list]:
 def test_one_nan_policy_arrays(b, name):
     """check=False, a NaN or inf in one input component: NaN in exactly the output
     components where the NumPy and C kernels have it (their rule: those that depend on it),
-    the others as there; check=True keeps its ValueError naming the argument. Old main:
-    an inf gave IEEE limits (finite outputs where NumPy and C give NaN, e.g. the Plücker
-    array of a point at inf) and the overflow mask turned whole rows NaN."""
+    the others as there; check=True keeps its ValueError naming the argument. Guards
+    against: an inf giving IEEE limits (finite outputs where NumPy and C give NaN, e.g. the Plücker
+    array of a point at inf) and the overflow mask turning whole rows NaN."""
     mod, to, back = backend(b)
     call, specs = KERNELS[name]
     x, labels = nan_rows(specs, np.random.default_rng(4))
@@ -147,7 +147,7 @@ def test_check_false_is_check_true_arrays(b, name):
     squares overflow and underflow): check=False returns what check=True returns, bit for
     bit (on_singular="nan", as test_never_wrong's), and the NumPy kernels' values (their
     long-double rescue, rounded once) to 2^-40 (float64) and 2^-14 (float32: torch and JAX
-    compute float32 in float32). Old main: torch and JAX raised NonFiniteResultError with
+    compute float32 in float32). Guards against: torch and JAX raised NonFiniteResultError with
     check=True (plucker_from_points, wrench_axis) and returned NaN or finite wrong values
     (e = [0, -0, 0]) with check=False."""
     mod, to, back = backend(b)
@@ -169,7 +169,7 @@ def test_check_false_is_check_true_arrays(b, name):
 def test_finite_in_finite_out_arrays(b, name, dtype):
     """The exact scaling laws of test_never_wrong over 1e-300..1e300 (float64; 1e-35..1e35
     float32), every scale in one batch: the scaled result, never an error nor a finite
-    wrong value, with check=True and False. Old main: NonFiniteResultError at |p| = 1e155
+    wrong value, with check=True and False. Guards against: NonFiniteResultError at |p| = 1e155
     (torch and JAX); with check=False e = [0, -0, 0]."""
     mod, to, back = backend(b)
     make, scale_in, scale_out = SCALING[name]
@@ -192,8 +192,8 @@ def test_finite_in_finite_out_arrays(b, name, dtype):
 
 
 @pytest.mark.parametrize("b", BACKENDS)
-def test_issue_case_arrays(b):
-    """The issue's case as a user types it: plucker_from_points at |p| = 1e155."""
+def test_plucker_from_points_at_1e155_arrays(b):
+    """plucker_from_points at |p| = 1e155, as a user types it."""
     mod, to, back = backend(b)
     p1 = np.array([0.3, -0.7, 1.1]) * 1e155
     want = K.plucker_from_points(p1, 2 * p1 + 1e154)
@@ -223,7 +223,7 @@ def traced_nan_policy(b: str, name: str, trace) -> None:
 def test_traced_jax_nan_policy_and_overflow(name):
     """Under jax.jit (no host reads, so no rescue): the same NaN positions as C and NumPy for
     a NaN/inf input, and a sample whose denominator overflows is NaN, never a finite wrong
-    value. Old main: plucker_from_points at |p| = 1e155 gave e = [0, -0, 0] under jit, and
+    value. Guards against: plucker_from_points at |p| = 1e155 gave e = [0, -0, 0] under jit, and
     an inf input its IEEE limits."""
     mod, to, back = backend("jax")
     import jax
@@ -239,7 +239,7 @@ def test_traced_jax_nan_policy_and_overflow(name):
 @pytest.mark.parametrize("name", sorted(KERNELS))
 def test_compiled_torch_nan_policy(name):
     """Under torch.compile (no host reads, so no rescue; an inf input taken as NaN inside
-    the compiled kernel's function since issue 38, not by a ``where`` on every input): the
+    the compiled kernel's function, not by a ``where`` on every input): the
     same NaN positions as C and NumPy for a NaN/inf input. Guards that move: a compiled
     call that skipped both mappings gave IEEE limits (the unit axis [0, 0] of an omega at
     inf)."""
@@ -280,10 +280,10 @@ def test_torch_rescued_row_derivative():
 
 @pytest.mark.parametrize(("b", "name"), cases(KERNELS))
 def test_bad_input_table_arrays(b, name):
-    """Issue 37 item 7 on PyTorch and JAX: test_kernels_props' >= 200 generated corruptions
+    """The bad-input table on PyTorch and JAX: test_kernels_props' >= 200 generated corruptions
     per kernel give a finite result or a TypeError/ValueError naming the corrupted argument
-    (or a SingularConfigurationError naming one). Old main: a batch mismatch said "batch
-    shapes do not broadcast: e (3, 3), phi (2,)", naming no argument first."""
+    (or a SingularConfigurationError naming one): a batch mismatch names the arguments first,
+    never only "batch shapes do not broadcast"."""
     mod, to, back = backend(b)
     res = bad_input_table(name, 200, seed=12, call=array_call(mod, name))
     assert res["escapes"] == [], res["escapes"][:10]
@@ -292,7 +292,7 @@ def test_bad_input_table_arrays(b, name):
 @pytest.mark.parametrize("b", BACKENDS)
 def test_bad_input_module_functions(b):
     """load, euler_rate_matrix, euler_angle_rates and the keywords of torch and JAX: a
-    wrong type or value names the argument. Old main: load(3) was "TypeError: expected str,
+    wrong type or value names the argument. Guards against: load(3) was "TypeError: expected str,
     bytes or os.PathLike object, not int"."""
     mod, to, back = backend(b)
     a3 = to([0.1, 0.2, 0.3])

@@ -1,4 +1,4 @@
-"""Property-based tests of issue 37 (item 8): Hypothesis strategies for the regimes a user
+"""Property-based tests of the accuracy rule: Hypothesis strategies for the regimes a user
 meets with two points (nearly coincident points, |p2 - p1|/|p| from 1e-1 to 1e-12; a large
 offset with a small difference; magnitudes from 1e-300 to 1e300), driving the rule "never
 worse than the textbook formula" (error <= max(2 e_ref, 4 u) against a 50-digit

@@ -1,4 +1,4 @@
-"""Property-based tests of issue 37 (item 8) for every public kernel: Hypothesis strategies
+"""Property-based tests of the accuracy rule for every public kernel: Hypothesis strategies
 for the regimes a user meets (inputs from 1e-300 to 1e300 in float64 and 1e-35 to 1e35 in
 float32, subnormals among them, squares that overflow; angles near 0 and near pi; unit
 vectors near an axis; a NaN or inf in one component) drive the agreement of C, NumPy,
@@ -161,7 +161,7 @@ DTYPES = [np.float64, np.float32]
 @pytest.mark.parametrize("name", sorted(KERNELS))
 def test_float32_nan_policy_c_numpy(name):
     """float32, check=False, a NaN or inf in one input component: NumPy gives the NaN
-    positions of C (and of float64). Old main: NumPy's float32 path re-ran only flagged
+    positions of C (and of float64). Guards against: NumPy's float32 path re-ran only flagged
     rows, so an inf input kept its IEEE limits there (natural_invariants_from_rotation: a
     finite phi where C has NaN)."""
     x, _ = nan_rows(KERNELS[name][1], np.random.default_rng(4))

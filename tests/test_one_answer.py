@@ -3,7 +3,7 @@ kernels compute, operation for operation, so where neither calls a library funct
 own (C's sine and cosine, NumPy's SIMD arctan2, the compensated products: C's hardware fma
 against NumPy's exact emulation), their float64 results are the same bits.
 
-Old main's C failed this on moving_frame_acceleration (18 % of random points),
+It guards against C's failing this on moving_frame_acceleration (18 % of random points),
 plucker_transfer and twist_transfer: GCC's SLP vectorizer fused products into
 vfmaddsub/vfmsubadd in the lanes loops despite -ffp-contract=off
 (rigidsym.kernels.cbuild.driver.KERNEL_FLAGS). PyTorch and JAX (eager) compute the same program

@@ -6,7 +6,7 @@ determined. As for ``natural_invariants_from_rotation`` (gtsam's exact zero at t
 identity), phi = 0 exactly is returned and the other outputs hold the documented defaults
 e = [1, 0, 0], p0 = 0, pitch = 0, plucker = [e; p0 x e], on NumPy, the C extension, torch and
 JAX (one declaration: the kernel's branch ``identity``); the C target adds
-RIGIDSYM_C_DEFAULT_OUTPUT (16) to the status. Old main raised SingularConfigurationError
+RIGIDSYM_C_DEFAULT_OUTPUT (16) to the status. It is never a SingularConfigurationError
 (status 1 and NaN in every output in C), phi included.
 
 Rotations by angles whose ||vect(Q)||^2 underflows (phi below about 1e-154 in float64, 1e-19

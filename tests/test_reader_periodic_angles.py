@@ -1,9 +1,9 @@
 """A free scalar that occurs only in sin, cos, tan, ... at rational multiples is d times an
-angle (:mod:`rigidsym.latex.periodic`, wave 6): the relation has period 2πd in it, so
+angle (:mod:`rigidsym.latex.periodic`): the relation has period 2πd in it, so
 deciding it for the angle on the zero test's (-π, π) decides it for every real value.
-Before, ``\\sin 2\\theta = 2\\sin\\theta\\cos\\theta`` was undecided ("trig of non-angle
-argument θ") unless the reader declared ``--let '\\theta: angle'``, and a half angle stayed
-undecided even then or was decided on (-π, π) only. Where (-π, π) would be an assumption (a
+So ``\\sin 2\\theta = 2\\sin\\theta\\cos\\theta`` is decided without ``--let '\\theta:
+angle'`` (not undecided on "trig of non-angle argument θ"), and a half angle is decided on
+every real value, not on (-π, π) only. Where (-π, π) would be an assumption (a
 bare occurrence) the symbol stays free and the reason names the fix."""
 
 from __future__ import annotations

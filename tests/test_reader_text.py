@@ -2,7 +2,7 @@
 ((3.59)'s braces), a block-diagonal matrix as its blocks ((3.148)), the book's O₃₄ ((3.94)),
 one subscript per letter (an entry of I_C is (I_C)₂₁), letter subscripts as subscripts in
 HTML (M_A), and a reader's scalar K_1 never printed as the first entry of their vector K.
-Each test here failed on main before these fixes (3915e94)."""
+Each test guards against a defect of commit 3915e94."""
 
 from __future__ import annotations
 
@@ -163,8 +163,8 @@ def test_a_renamed_vector_entry_never_prints_as_the_scalar():
 
 def test_a_cross_product_of_a_cross_product_keeps_its_parentheses():
     """× is not associative: (a × b) × c and a × (b × c) printed alike ("a × b × c") in the
-    ``read as:`` line and the members until wave 6's fourth session, so a does-not-hold
-    showed two equal-looking sides."""
+    ``read as:`` line and the members would show a does-not-hold with two equal-looking
+    sides."""
     from rigidsym.algebra.operators import Cross
 
     a, b, c = (sp.MatrixSymbol(n, 3, 1) for n in "abc")
@@ -180,7 +180,7 @@ def test_a_cross_product_of_a_cross_product_keeps_its_parentheses():
 
 
 def test_a_power_of_a_sine_is_printed_as_the_books_do():
-    """(sin θ)² printed "sin θ²" until wave 6's fourth session, which reads as sin(θ²)."""
+    """(sin θ)² prints "sin² θ", never "sin θ²", which reads as sin(θ²)."""
     t = sp.Symbol("theta")
     assert notation.text(sp.sin(t) ** 2) == "sin² θ"
     assert notation.text(sp.sin(t ** 2)) == "sin(θ²)"
@@ -188,7 +188,7 @@ def test_a_power_of_a_sine_is_printed_as_the_books_do():
 
 
 def test_a_square_root_covers_its_whole_radicand():
-    """‖R a‖ printed "√aᵀ Rᵀ R a" until wave 6's fifth session: the root seemed to cover aᵀ
+    """‖R a‖ never prints "√aᵀ Rᵀ R a", where the root seems to cover aᵀ
     only. A radicand that is one group keeps its own parentheses, never doubled."""
     a, R = sp.MatrixSymbol("a", 3, 1), sp.MatrixSymbol("R", 3, 3)  # as the reader reads it
     assert notation.text(sp.sqrt(sp.Trace(a.T * R.T * R * a))) == "√(aᵀ Rᵀ R a)"
@@ -201,7 +201,7 @@ def test_a_square_root_covers_its_whole_radicand():
 
 
 def test_vec_and_underline_print_as_accents():
-    """\\vec{a} printed "veca" and \\underline{a} "underlinea" until wave 6's fifth session."""
+    """\\vec{a} and \\underline{a} print as accents, never "veca" and "underlinea"."""
     from rigidsym.latex.shapes import name_from_key
     from rigidsym.printing.names import book_latex, book_text
 
@@ -213,7 +213,7 @@ def test_vec_and_underline_print_as_accents():
 
 
 def test_greek_letters_inside_a_subscript_print_as_letters():
-    """Spong's R_{z,\\theta+\\phi} printed "R_z,theta+phi" until wave 6's fifth session; a
+    """Spong's R_{z,\\theta+\\phi} prints its Greek letters, never "R_z,theta+phi"; a
     Latin subscript stays as written."""
     from rigidsym.latex.shapes import name_from_key
     from rigidsym.printing.names import book_text

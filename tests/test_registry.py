@@ -75,7 +75,7 @@ def test_committed_chapter_report_is_fresh(results):
 
 def test_verdicts_match_the_snapshot_taken_before_python_flint(results):
     """Same verdicts and member statuses as tests/data/verdict_snapshot.json (taken on the
-    engine before issue 21), failure bounds no higher, exact counterexamples."""
+    engine before python-flint), failure bounds no higher, exact counterexamples."""
     from test_verdict_snapshot import SNAPSHOT, assert_matches_snapshot
 
     recorded = SNAPSHOT["chapter"]

@@ -3,8 +3,8 @@ codegen.removable.series, the rewrite of codegen.removable.singularities, and th
 Lie-group kernels at |w| in {0, 1e-12, 1e-8, 1e-4, 1e-2, 1} against a 50-digit mpmath
 reference.
 
-On the main of before issue 38 there was no such pass: a reader's exponential map returned
-NaN (or raised) at w = 0 and its Jacobian was 3.7e-9 off at |w| = 1e-8.
+Without the pass a reader's exponential map returns NaN (or raises) at w = 0 and its
+Jacobian is 3.7e-9 off at |w| = 1e-8.
 """
 
 from __future__ import annotations
@@ -78,10 +78,10 @@ def _horner_within(h, cert, bound: float, points: int) -> None:
 
 @pytest.mark.slow
 def test_a_derivative_quotient_switches_where_its_closed_form_is_accurate():
-    """the derivative quotient (s cos s + 2 s - 3 sin s) / s^5 switched at t* = 2,
-    where its closed form cancels (181 u bound): the SE(3) left Jacobian's Jacobian was 9 u
-    at |w|^2 just above 2, the textbook 3 u (old main: threshold 2.0, closed64 181). It
-    switches at 4 now, its series within 2.5 u there, checked against 50 digits."""
+    """the derivative quotient (s cos s + 2 s - 3 sin s) / s^5 switches at 4, its series
+    within 2.5 u there, checked against 50 digits: switched at t* = 2, where its closed form
+    cancels (181 u bound), the SE(3) left Jacobian's Jacobian would be 9 u at |w|^2 just
+    above 2, the textbook 3 u."""
     h = (S * sp.cos(S) + 2 * S - 3 * sp.sin(S)) / S**5
     cert = certify(h)
     assert cert.threshold == 4.0 and cert.closed64 < 64 and cert.taylor64 <= 2.5

@@ -116,8 +116,8 @@ def test_committed_reports_are_lean():
         pytest.skip("no committed report in this checkout")
     # Caps with room, measured on the regenerated report of the repairs branch: Markdown
     # 132 884 B, JSON 363 882 B, of which the repairs (an errata table and each
-    # entry's repairs) are about 5.7 kB and 23 kB and the ball enclosures of issue 21 most of
-    # the rest of the growth from 114 336 / 341 618 B. Issue 24 ("first hour") adds the
+    # entry's repairs) are about 5.7 kB and 23 kB and the ball enclosures most of
+    # the rest of the growth from 114 336 / 341 618 B. The report adds the
     # counterexamples in book symbols to the 11 does-not-hold entries, about 2 kB each in
     # the JSON and 1-2 kB in the Markdown: the caps leave 30 % (Markdown) and 25 % (JSON).
     # Expanded dumps, which these caps exist to keep out, are hundreds of kilobytes.

@@ -26,7 +26,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 #: (kernel, float type) -> the measured reason the search still finds a point past the rule
 #: (seed 0, C and NumPy). L_tilde_dot, L_tilde_dot_with_jacobians, L_tilde_with_jacobians in
-#: float32 (1.46, 1.84, 1.15 since wave 6) are no longer found since the plans were measured
+#: float32 are not found: the plans are measured
 #: with correctly rounded functions (tests/test_accuracy.py's OPEN keeps what its regimes find)
 OPEN = {
     ("screw_of_displacement", "float64"):

@@ -191,7 +191,7 @@ def test_some_rows_at_block_edges_are_flagged(c_backend):
         kinds[name] = np.flatnonzero(np.isnan(ref).any(axis=1)).tolist()
     assert kinds["N_matrix"] == EDGES[0::2]                  # phi = 0
     # omega = 0 only: the rows times 1e300 have a representable axis (e, pitch, a point),
-    # rescued since issue 37 (they were flagged as overflow before)
+    # rescued (not flagged as overflow)
     assert kinds["instant_screw_axis"] == EDGES[0::2]
     assert kinds["kinetic_energy"] == EDGES[1::2]            # overflow only
     assert kinds["rotation_from_euler_rodrigues"] == []

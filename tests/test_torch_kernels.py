@@ -239,7 +239,7 @@ def test_float32_broadcasting_and_double_backward():
     assert out.dtype == torch.float32 and tuple(out.shape) == (2, 5, 6)
     ref = K.twist_transfer(t.double().numpy(), a.double().numpy(), p.double().numpy())
     np.testing.assert_allclose(out.numpy(), ref, rtol=1e-5, atol=1e-5)
-    # double backward (old main refused create_graph=True): T = x.x/2 + m x.x/2
+    # double backward (never refused: create_graph=True): T = x.x/2 + m x.x/2
     # with I = 1 and m = 2 has the Hessian 3 * 1 at every x
     x = torch.tensor(rng.standard_normal(3), requires_grad=True)
     T = rk.kinetic_energy(torch.eye(3, dtype=torch.float64), 2.0, x, x)
@@ -366,8 +366,8 @@ def test_compiled_torch_func_grad():
 @pytest.mark.slow
 def test_inductor_flags_an_overflowed_result():
     """A result that does not fit the dtype from finite inputs is NaN in its whole row under
-    inductor as in eager mode (issue 37's rule). Old main returned the pitch inf there and
-    the row's other outputs as numbers: inductor folds an integer ``x * 0`` to zeros,
+    inductor as in eager mode (the kernels' rule). Guards against returning the pitch inf
+    there and the row's other outputs as numbers: inductor folds an integer ``x * 0`` to zeros,
     which removed the check (``_arrays_eval.nonfinite_rows``)."""
     omega = torch.tensor([[1e-10, 0.0, 0.0], [0.3, -0.2, 1.0]], dtype=torch.float64)
     a = torch.zeros(2, 3, dtype=torch.float64)
@@ -397,9 +397,9 @@ def test_inside_a_module_with_its_own_parameters():
 
 def test_backward_reuses_the_forward_temps():
     """the eager backward takes the temps of the forward that the
-    generated VJP reads (saved by autograd) instead of computing them again. Old main's
-    backward of Rodrigues' formula computed the sine of phi / 2 again (one aten::sin,
-    two aten::cos); now none (the regenerated forward names its cosine too). The
+    generated VJP reads (saved by autograd) instead of computing them again. Guards
+    against the backward of Rodrigues' formula computing the sine of phi / 2 again (one
+    aten::sin, two aten::cos; the forward names its cosine too). The
     gradient is that of the recomputing path (``create_graph=True``) bit for bit, and a
     singular sample in the batch still takes the recomputing path (zero gradient there)."""
     from torch.profiler import ProfilerActivity, profile
@@ -465,7 +465,7 @@ def test_the_cpu_route_is_the_torch_program_bit_for_bit(dtype):
 def test_backward_takes_the_compensated_sums_from_the_forward():
     """the backward (``_vjp_saved``, eager and compiled) computes no
     compensated sum of products (``_sumprod``, ``_diffprod``: ~65 operations for the pitch
-    of instant_screw_axis, which old main's VJP computed again, its first torch.compile
+    of instant_screw_axis, which the VJP does not compute again, its first torch.compile
     1.6-2x the hand's); the forward names each one and saves it. Counted by wrapping the
     helpers the generated PyTorch programs call, on every kernel that calls one."""
     space = rk._space()

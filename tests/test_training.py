@@ -1,8 +1,7 @@
-"""The training example of issue 38 item 6 (examples/train_rigid_motion.py): from w = 0, Adam in
+"""The training example (examples/train_rigid_motion.py): from w = 0, Adam in
 PyTorch and jax.grad steps in JAX reach the known motion within 1e-6 rad and 1e-6 m from
 noiseless pairs; a network's normalised quaternion through rotation_from_euler_rodrigues
-trains. On the main of before issue 38 there was no exponential map of exponential
-coordinates to train through (and a reader's one was NaN at w = 0).
+trains (a reader's own exponential map is NaN at w = 0, so nothing trains through it).
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """The C kernels' own vectorised sin/cos (``rigidsym_sin``/``rigidsym_cos`` of the generated
 ``rigidsym_common.h``): within 1 ulp of long double ``sinl``/``cosl`` near and far,
-libm's exact values past the reduction's range, IEEE special values. Old main: the trig
+libm's exact values past the reduction's range, IEEE special values. Guards against: the trig
 loops called glibc's libmvec (3.7 ulp measured; the header had no such functions).
 Compiled as a small C program with the kernels' flags, vectorised as in the kernels."""
 
@@ -77,7 +77,7 @@ def test_own_sin_cos_within_one_ulp(tmp_path):
         worst, far, big, nonfinite, neg_zero, cos0 = subprocess.run(
             [str(exe)], check=True, capture_output=True, text=True).stdout.split()
         # measured 0.78 (v2: no fma), 0.60 (v3: the sine's leading term a double-double;
-        # 0.73 before, which took 5 Euler-angle rates at gimbal lock past issue 37's rule)
+        # 0.73 without it, which takes 5 Euler-angle rates at gimbal lock past the accuracy rule)
         assert float(worst) < (0.85 if path != "x86-64-v3" else 0.65), (path, worst)
         assert far == "0" and big == "1" and nonfinite == "2", path
         assert neg_zero == "1" and cos0 == "1", path

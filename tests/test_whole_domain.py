@@ -124,8 +124,8 @@ def _point(name, t):
 @pytest.mark.sample(fraction=0.33)
 @pytest.mark.parametrize("name", INVERSES)
 def test_inverse_jacobians_near_2pi_k(name):
-    """Within 8 u (kappa + 1) of the declared formula at every norm of NEAR (on main: 2.5e-2
-    at 2 pi - 1e-9, kappa u = 7e-7; NonFiniteResultError at 2 pi - 1e-10), and within
+    """Within 8 u (kappa + 1) of the declared formula at every norm of NEAR (guards against:
+    2.5e-2 at 2 pi - 1e-9, kappa u = 7e-7; NonFiniteResultError at 2 pi - 1e-10), and within
     ``max(2 e_peer, 4 u)`` of pytransform3d's ``left_jacobian_SO3_inv``/``_SE3_inv``."""
     for t in NEAR:
         x = _point(name, t)
@@ -143,12 +143,11 @@ def test_inverse_jacobians_near_2pi_k(name):
 
 
 def test_se3_inverse_jacobian_against_pytransform3d():
-    """|w| in {3, pi, 4.5}, 20 random axes and v each, against the rule's ``max(2 e_peer,
-    4 u)`` of pytransform3d's ``left_jacobian_SE3_inv``: on main 33 of these 60 were
-    outside (worst 2.4 times; the audit's 25 of 60, 6.9 times). Open: 3 at |w| = 4.5 on C
-    and NumPy, worst 1.32 times (the 6 x 6 product as generated; the same products in NumPy,
-    associated as pytransform3d's, were within at all 60): held to at most 3 samples and
-    1.5 times."""
+    """|w| in {3, pi, 4.5}, 20 random axes and v each, against the rule's ``max(2 e_peer, 4 u)``
+    of pytransform3d's ``left_jacobian_SE3_inv``: a form that cancels has 33 of these 60 outside
+    (worst 2.4 times; the audit's 25 of 60, 6.9 times). Open: 3 at |w| = 4.5 on C and NumPy,
+    worst 1.32 times (the 6 x 6 product as generated; the same products in NumPy, associated as
+    pytransform3d's, were within at all 60): held to at most 3 samples and 1.5 times."""
     pytest.importorskip("pytransform3d")
     name = "exponential_coordinates_left_jacobian_inverse"
     rng = np.random.default_rng(48)
@@ -176,7 +175,7 @@ def _is_rotation(Q, tol=8 * U):
 
 
 def test_euler_rodrigues_near_unit_is_a_rotation_the_logs_accept():
-    """``|eta| - 1 = 4e-9`` (inside the unit tolerance): on main the matrix was
+    """``|eta| - 1 = 4e-9`` (inside the unit tolerance): guards against the matrix
     ``|eta|^2 Q``, ``|Q^T Q - 1| = 1.6e-8``, rejected by the logs ("Q: not orthogonal")."""
     eta = np.array([0.1, -0.5, 0.3, 0.8])
     eta = eta / np.linalg.norm(eta) * (1 + 4e-9)
@@ -195,7 +194,7 @@ def test_euler_rodrigues_near_unit_is_a_rotation_the_logs_accept():
 
 def test_euler_rodrigues_far_from_unit():
     """``check=True`` still names an eta far from unit; ``check=False`` gives the rotation
-    of eta / |eta| (on main 4 Q for |eta| = 2, det 64); eta = 0 is singular."""
+    of eta / |eta| (not 4 Q for |eta| = 2, det 64); eta = 0 is singular."""
     eta = np.array([0.2, 0.4, -0.4, 0.8]) * 2          # |eta| = 2
     with pytest.raises(ValueError, match="eta"):
         kernels.rotation_from_euler_rodrigues(eta)
@@ -294,9 +293,9 @@ def _same(a, b) -> bool:
 @given(st.integers(0, 2**32 - 1))
 def test_one_answer_per_row(seed):
     """A row's value or NaN depends only on that row, the dtype and on_singular: alone or in
-    a random batch, C or NumPy; NaN (nan mode) exactly where raise mode raises. On main the C
-    fast path kept its NaN rows in nan mode unless some row had an input of extreme
-    magnitude, and re-ran them (a number) in raise mode."""
+    a random batch, C or NumPy; NaN (nan mode) exactly where raise mode raises. Guards against a C
+    fast path that keeps its NaN rows in nan mode unless some row has an input of extreme
+    magnitude, and re-runs them (a number) in raise mode."""
     rng = np.random.default_rng(seed)
     for name in ROW_KERNELS:
         x = _rows(rng, 8, 3 if name.startswith("rotation") else 6)
@@ -319,7 +318,7 @@ def test_one_answer_per_row(seed):
 def test_20000_rows_near_2pi_k_c_equals_numpy_on_nan():
     """The audit's batch: 20 000 rows at 2 pi k - 10^-j (k = 1, 2, 3, j = 6 .. 15), random
     axes: C and NumPy give NaN in the same rows (none: the half-angle form neither cancels
-    nor overflows there) in both modes (on main 804 rows differed in nan mode)."""
+    nor overflows there) in both modes (a form that cancels makes 804 rows differ in nan mode)."""
     rng = np.random.default_rng(4820)
     n = 20000
     d = rng.normal(size=(n, 3))
@@ -341,10 +340,10 @@ def test_20000_rows_near_2pi_k_c_equals_numpy_on_nan():
 
 # ----------------------------------------------------------------------------------------
 # the search's worst points (harness/search.py, item 1), kept as regression
-# cases: each was outside the rule on main (ratio to the rule there, measured by the same
-# judge), C and NumPy
+# cases: each was outside the rule where it was found (ratio to the rule there, measured by
+# the same judge), C and NumPy
 
-#: (kernel, point, the rule ratio on main where it was found, float type): c68045c for the
+#: (kernel, point, the rule ratio where it was found, float type): c68045c for the
 #: first four; d987a31e for the SE(3) Jacobian's and the inverse's at |w| ~ 200 .. 240,
 #: where Barfoot's Q cancelled (lie_maps.se3_q_block now writes it without)
 SEARCHED = [
@@ -384,7 +383,7 @@ SEARCHED = [
 
 def test_exp_se3_kernel_is_the_declared_formula():
     """The SE(3) exponential's kernel builds ``J_l(w) v`` expanded (``[w]^2 v = w (w.v) -
-    theta^2 v``, Pinocchio's form, issue 48; lie_maps.rotation_vector_left_jacobian_times
+    theta^2 v``, Pinocchio's form; lie_maps.rotation_vector_left_jacobian_times
     with its products Grouped); equal to ``lie_maps``' formula at random
     rational points to 50 digits, theta from 1e-3 to 40 (an expansion that dropped a term
     is off by O(1) somewhere there)."""
@@ -457,18 +456,18 @@ SEARCH_OPEN = {
                                              "exponential_coordinates_left_jacobian"])
 def test_search_finds_nothing_outside_the_rule(name, dtype, request):
     """The Herbie-style search (exponent-uniform starts, hill climbing on the measured rule
-    ratio, seeded) finds no point outside the rule for the Lie-group maps (on main it found
-    471 times the rule in the SE(3) inverse Jacobian, 1.12 in J_l^-1 near 2 pi).
+    ratio, seeded) finds no point outside the rule for the Lie-group maps (a form that cancels
+    gives 471 times the rule in the SE(3) inverse Jacobian, 1.12 in J_l^-1 near 2 pi).
 
-    Where the search still finds a point past the rule (issue 48 left open: SEARCH_OPEN, the
+    Where the search still finds a point past the rule (SEARCH_OPEN, the
     float32 C Exp of SE(3), measured), the case is an expected failure naming it, so
     that the search keeps reporting it without failing CI; the list shrinks as the forms
-    improve. (On the merged main of wave 6 it also failed rotation_from_rotation_vector,
-    ratio 34 at |w| = 248, and J^-1 1.17 at |w| ~ 56: a yardstick lucky at one input,
-    which the cloud of neighbouring inputs now sees for what it is.)"""
+    improve. (A yardstick lucky at one input would fail rotation_from_rotation_vector, ratio
+    34 at |w| = 248, and J^-1 1.17 at |w| ~ 56; the cloud of neighbouring inputs sees it
+    for what it is.)"""
     if (name, np.dtype(dtype).name) in SEARCH_OPEN:
         request.applymarker(pytest.mark.xfail(
-            strict=False, reason="issue 48 open: the search finds a point past the rule: "
+            strict=False, reason="open: the search finds a point past the rule: "
                                  + SEARCH_OPEN[name, np.dtype(dtype).name]))
     _harness()
     from rigidsym.codegen.accuracy.harness import search as S

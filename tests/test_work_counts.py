@@ -2,9 +2,9 @@
 (:mod:`rigidsym.core.work`): a warm ``verify --json`` builds no declaration, a cold one builds
 each once, a change to one module rebuilds that module's ids only.
 
-Each command runs in a fresh process (as a user runs it twice), on a cache of its own. On
-main before issue 39 the parent built every declaration with LaTeX again for its
-transcription record: 1 build per such id on a warm ``--json`` run, 2 on a cold one.
+Each command runs in a fresh process (as a user runs it twice), on a cache of its own. It
+guards against the parent building every declaration with LaTeX again for its
+transcription record (1 build per such id on a warm ``--json`` run, 2 on a cold one).
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The norm of a free 3-vector under sin/cos, written θu (rigidsym.zero.polar, wave 10)."""
+"""The norm of a free 3-vector under sin/cos, written θu (rigidsym.zero.polar)."""
 
 from __future__ import annotations
 

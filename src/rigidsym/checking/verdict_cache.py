@@ -67,7 +67,7 @@ class VerdictCacheWarning(UserWarning):
 # --------------------------------------------------------------------------- digests
 _file_digest = _sources.file_digest
 _package_roots = _sources.package_roots
-package_digest = _sources.package_digest  # the package's files (here since issue 22)
+package_digest = _sources.package_digest  # the package's files
 _environment = _sources.environment
 
 

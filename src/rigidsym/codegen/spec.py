@@ -232,5 +232,5 @@ class Grouped(sp.UnevaluatedExpr):
     def _eval_derivative(self, s):
         # the mark is a grouping, not a function: d(group)/ds is the derivative of what it
         # groups (without it sympy leaves Derivative(group, s), which the Jacobian program
-        # cannot substitute into; issue 48's SE(3) inverse Jacobian)
+        # cannot substitute into: the SE(3) inverse Jacobian's)
         return self.args[0].diff(s)

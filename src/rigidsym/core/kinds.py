@@ -365,7 +365,7 @@ register(Kind("angle_pi", (), "angle_0_pi", "angle in [0, pi], half-angle tangen
 # (rigidsym.algebra.rigid_motions.ORDERS); rows for the kernels' specs and docstrings
 register(Kind("twist", (6,), "twist", "twist [omega; v] (6-vector), free", ", twist"))
 register(Kind("wrench", (6,), "wrench", "wrench [n; f] (6-vector), free", ", wrench"))
-# the homogeneous transforms of SE(3) (issue 38's log of SE(3)): its argument is a transform
+# the homogeneous transforms of SE(3) (the log of SE(3)'s argument is a transform)
 register(Kind(
     "transform", (4, 4), "transform", "homogeneous transform, rational quaternion and free p",
     ", homogeneous transform [[R, p], [0, 1]]", ("q1", "q2", "q3", "q0", "p1", "p2", "p3"),

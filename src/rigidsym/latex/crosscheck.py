@@ -402,8 +402,8 @@ def _where_verified(worst, latex: str, lets, let, symbols, statement) -> str:
 def _words(r, latex: str, what: str) -> str:
     """The disagreement in words: the relation as the reader wrote it (its two sides' own
     LaTeX, not the parser's tokens), its residual and the point, each value on one line
-    (wave 11: before, the tokens joined by spaces, ``F 2 \\mathbf u``, and a vector's
-    value printed over several lines)."""
+    (never the tokens joined by spaces, ``F 2 \\mathbf u``, nor a vector's value over
+    several lines)."""
     text, pairs = parsed_text(latex), []
     for ch in (c for c in tree(latex).iter_subtrees_topdown() if c.data == "chain"):
         sides = [text[s.meta.start_pos:s.meta.end_pos].strip() if not s.meta.empty

@@ -3,9 +3,9 @@ function) mentions, read from lark's parse tree without deciding any shape, and 
 in which the models are read: each after the models it mentions, ties by name, so any
 order of the ``--let``s gives the same reading. A cycle is an error naming it.
 
-Before issue 52 the models were read in the order given: a symbol met in a model before its
-own declaration was a free scalar (``--let '\\mathbf{w} = F\\mathbf{x}' --let 'F = -I_3'``
-made ``F`` a scalar and the check does-not-hold; the other order verified).
+Reading in the order given would make a symbol met in a model before its own declaration a
+free scalar (``--let '\\mathbf{w} = F\\mathbf{x}' --let 'F = -I_3'`` would make ``F`` a
+scalar and the check not hold, while the other order verifies).
 """
 
 from __future__ import annotations

@@ -13,15 +13,15 @@ book writes a vector's entries (Markley & Crassidis' ``q_4``, Shuster's ``q_1 ..
   verdicts differ, the statement is refused naming the entry that settles it
   (``\mathbf{q}_{1:1}``).
 - A bold subscripted name, ``\mathbf{p}_1`` beside ``\mathbf{p}``, is a vector's name in the
-  books (point 1) as often as an entry: issue 52's choice between a symbol of its own and
-  the entry, unchanged; the rule above reads the plain (or Greek) letters only.
+  books (point 1) as often as an entry: a choice point between a symbol of its own and the
+  entry; the rule above reads the plain (or Greek) letters only.
 - A function's parameter that no ``--let`` declares globally (``R(\mathbf{q})`` with only its
-  body's ``q_i``): a symbol of its own or an entry (issue 52's choice point, unchanged),
+  body's ``q_i``): a choice point between a symbol of its own and an entry,
   since the statement's own ``q_i`` are then no entries of anything.
 
-Before wave 11 every such ``q_k`` was a choice between a symbol of its own and the entry;
-the two disagree on any identity of a unit quaternion, so 4 of the 40 equations of the
-outside trial were refused as typed.
+The entry reading is not a choice point for a declared vector's letter because the two
+readings disagree on any identity of a unit quaternion: a choice there would refuse every
+such identity as ambiguous.
 """
 
 from __future__ import annotations

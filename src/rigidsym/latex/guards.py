@@ -86,7 +86,7 @@ def time_derivatives(free: list[str], used: set[str], declared: dict,
     the statement takes no derivative (``no_derivative``, :func:`takes_no_derivative`), the
     rate of an ``X`` declared a scalar or an angle: a value of its own at the instant, as
     free as ``X`` (Greenwood's ``\\omega^2 = \\dot\\psi^2 + ... + 2\\dot\\psi\\dot\\phi\\cos
-    \\theta``; wave 11)."""
+    \\theta``)."""
     for key in free:
         m = _DOT.match(key)
         if m and m.group(2) in used:
@@ -233,7 +233,7 @@ def zero_entries(free: list[str], glyphs: dict) -> None:
     """A free ``\\theta_0`` beside a vector ``\\boldsymbol\\theta`` declared by a kind (of 2 or
     more entries): Shabana's and Wittenburg's entries counted from 0 (``\\theta_1`` then is the
     second), or a symbol of its own; the reader counts entries from 1, so either reading
-    could change the equation (a wrong verdict before, wave 11): bad input naming both."""
+    could change the equation (a wrong verdict): bad input naming both."""
     for key in free:
         m = _ZERO.match(key)
         letter = m.group(1) if m else ""

@@ -105,8 +105,8 @@ class Let:
         key: the glyph's key after parsing (``\\mathbf{Q}``).
         kind: the KIND as written, or ``""`` for a model.
         latex: the model's LaTeX, or ``""`` for a kind.
-        params: a function's parameters as written (``S(\\mathbf{a}) = ...``: ``("\\mathbf{a}",)``;
-            issue 52), ``()`` for a symbol.
+        params: a function's parameters as written (``S(\\mathbf{a}) = ...``: ``("\\mathbf{a}",)``),
+            ``()`` for a symbol.
         param_keys: their glyph keys.
     """
 

@@ -135,7 +135,7 @@ def parser() -> lark.Lark:
 # pylatexenc's latexwalker is the tokenizer here: it knows where a macro ends (\cot\frac is
 # two macros) and what TeX takes as a macro's argument (\frac\theta2). It runs only where it
 # is needed (an unbraced argument, an error): over all 181 strings of the chapter it costs
-# 0.19 s, +24 % of the benchmark's parse time, beyond issue 40's 1.2x budget.
+# 0.19 s, +24 % of the benchmark's parse time, beyond the lexer's 1.2x time budget.
 _ARGS = {"frac": 2, "dfrac": 2, "tfrac": 2, "sqrt": 1}
 _UNBRACED = re.compile(r"\\[dt]frac(?![A-Za-z])|\\frac(?![A-Za-z])\s*([^\s{]|\{[^{}]*\}\s*[^\s{])"
                        r"|\\sqrt(?![A-Za-z])\s*[^\s{\[]")
@@ -221,8 +221,8 @@ def caret(text: str, pos: int, width: int = 1) -> str:
 
 
 # \left( ... \right), \bigl( ... \bigr): parentheses TeX only draws taller, read as ( ... ) so
-# that R_z\left(\alpha\right) is the application R_z(\alpha) (a product of a free scalar
-# R_z before the sixth session of wave 6: R_z\left(0\right)a = 0 verified)
+# that R_z\left(\alpha\right) is the application R_z(\alpha) (not a product of a free scalar
+# R_z, under which R_z\left(0\right)a = 0 would verify)
 _SIZED_PAREN = re.compile(r"(?:\\left|\\[bB]igg?l)\s*\(|(?:\\right|\\[bB]igg?r)\s*\)")
 
 
@@ -234,8 +234,8 @@ def cross_chains(text: str) -> str | None:
     """The first ``a \\times b \\times c``: two cross products in one term with no
     parentheses between them, or ``None``. The cross product is not associative and the
     books mean either grouping (a x (b x c) in the triple product), so such a chain has no
-    one reading; lark's grammar would read it from the left, unsaid (an outside trial of
-    wave 6's sixth session: a x b x c = b(a.c) - c(a.b) came out does-not-hold)."""
+    one reading; lark's grammar would read it from the left, unsaid (so that
+    a x b x c = b(a.c) - c(a.b) would come out does-not-hold)."""
     depth, count, start = 0, {}, {}
     for m in _CHAIN_TOKENS.finditer(text):
         tok = m.group(0)

@@ -49,9 +49,9 @@ class Notation:
             ``--let`` function wherever the LaTeX mentions NAME and no ``--let`` declares it.
         hat_is_skew: the table's line ``\\hat{*} = [*]_\\times``: every ``\\hat{X}`` (and
             ``\\widehat{X}``) the table does not list is the skew matrix of X, as
-            Murray-Li-Sastry's (2.9) defines it for any vector (wave 10: only
-            ``\\hat\\omega`` was, so ``\\widehat{T}R`` stayed refused under the notation
-            the refusal named).
+            Murray-Li-Sastry's (2.9) defines it for any vector (not only
+            ``\\hat\\omega``, so that ``\\widehat{T}R`` reads under the notation a refusal
+            names).
     """
 
     name: str

@@ -1,4 +1,4 @@
-"""The glyph rows of a reader's LaTeX (issue 40): :class:`GlyphReader` parses
+"""The glyph rows of a reader's LaTeX: :class:`GlyphReader` parses
 the LaTeX and the models of ``--let`` with one set of glyph overrides: the declarations'
 kinds, the models' shapes, the rows of ``--book``, a module's symbols, the lines of
 ``--notation`` (used by :mod:`rigidsym.latex.statement`)."""
@@ -161,7 +161,7 @@ class GlyphReader:
                     self.over.update(extra)
                     continue
                 if exc.construct == "shapes" and any(  # a free bold capital: a 3-vector too?
-                        w in str(exc) for w in _VECTOR_USES):  # (wave 11; not |A|: a det)
+                        w in str(exc) for w in _VECTOR_USES):  # (not |A|: a det)
                     self.choice_points.update({capital_point(k): CAPITAL_READINGS
                                                for k, g in exc.glyphs.items() if g.kind == "free"
                                                and k not in (over or {}) and is_capital(k)
@@ -324,7 +324,7 @@ class GlyphReader:
                    f"of {', '.join(free)}, which no --let declares: add e.g. --let "
                    f"'{free[0]}: KIND' (KIND one of {', '.join(KIND_WORDS)})")
         hats = [k for k in free if k.startswith("\\hat{")]
-        if exc.construct == "shapes" and hats:  # wave 10: the hat's two meanings first
+        if exc.construct == "shapes" and hats:  # the hat's two meanings first
             msg += (f"; {hats[0]} is a unit vector in Lynch-Park and Corke, the skew matrix of "
                     f"{hats[0][5:-1]} in Murray-Li-Sastry: say which, --notation "
                     f"murray-li-sastry or --let '{hats[0]} = [{hats[0][5:-1]}]_\\times'")

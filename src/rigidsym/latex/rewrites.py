@@ -24,8 +24,8 @@ def _number_arg(t) -> bool:
 
 def multiple_angles(t):
     r"""``\sin 2\theta`` is sin(2θ), as every book means it, not sin(2) θ (the grammar's
-    operator argument is one primary; before wave 6's fourth session the reader printed
-    ``θ sin 2`` and decided that): a product whose left factor ends in a trigonometric
+    operator argument is one primary; read as the grammar has it, it would print ``θ sin 2``
+    and decide that): a product whose left factor ends in a trigonometric
     function of a bare number and whose right factor is a symbol becomes the function of
     their product (``a \sin 2\theta \cos\phi`` is a sin(2θ) cos φ). In place; returns
     ``t``."""

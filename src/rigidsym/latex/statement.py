@@ -122,8 +122,8 @@ def read_statement(latex: str, lets: list[Let], book: str | None = None,
 
 
 #: choice points enumerated (2**3 readings at most); more are refused, never decided on some
-#: readings (q_1^2 + ... + q_4^2 = q^T q was decided on 8 of its 16 before the sixth session
-#: of wave 6, none of them the one meant)
+#: readings (q_1^2 + ... + q_4^2 = q^T q has 16, and any 8 of them could miss the one
+#: meant)
 _MAX_POINTS = 3
 
 

@@ -1,4 +1,4 @@
-"""The values of a reading's symbols (issue 52): the ``--let`` models
+"""The values of a reading's symbols: the ``--let`` models
 and functions, each after those it mentions; each used glyph's value (a declared kind, a
 module's model, a glyph-table row or definition, a free matrix of named entries); and the
 models made explicit in dependency order, a cycle refused. Used by
@@ -78,7 +78,7 @@ def _rate_of(key: str) -> str:
 
 def _function_model(rd: GlyphReader, x: Let, values: dict) -> None:
     """A function of scalar parameters (``R(\\theta) = e^{[\\hat\\omega]\\theta}``) is
-    also the model of its NAME, as before issue 52 (``R`` alone is ``R(θ)``); one of a
+    also the model of its NAME (``R`` alone is ``R(θ)``); one of a
     vector or matrix is a function only (``S`` alone is refused)."""
     try:
         p = rd.parse(f"{x.name} = {x.latex}", f"--let '{x.text}'", record=False)

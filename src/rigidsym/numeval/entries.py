@@ -1,5 +1,5 @@
-r"""The second semantics' reading of ``q_4`` beside a declared vector ``\mathbf{q}`` (
-wave 11), written from the attitude books, not from the reader: a ``--let``'s vector of n
+r"""The second semantics' reading of ``q_4`` beside a declared vector ``\mathbf{q}``,
+written from the attitude books, not from the reader: a ``--let``'s vector of n
 entries has entries ``q_1 ... q_n`` (Markley & Crassidis, Shuster); a 4-vector may be
 counted from 0 instead (Diebel's, Kuipers' ``q_0 ... q_3``, scalar first), a choice point of
 the letter whose reading fails where its count does not fit (``q_0`` from 1, ``q_4`` from

@@ -66,7 +66,7 @@ def unlabelled(t: object) -> object:
 def decorated_name(tree: object) -> bool:
     """A glyph whose subscript or primes are part of its name, so that a free one has its
     letter's shape: ``x_1``, ``\\theta_{2}`` (a subscript of atoms), ``\\mathbf{g}'``,
-    ``\\mathbf{g}''``, ``x_1'`` (primes: Shuster's composed Gibbs vectors, wave 10).
+    ``\\mathbf{g}''``, ``x_1'`` (primes: Shuster's composed Gibbs vectors).
 
     Args:
         tree: a parse subtree (a ``glyph``, or anything: then false).

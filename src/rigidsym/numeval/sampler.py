@@ -1,5 +1,5 @@
-"""Random points of each kind a ``--let`` declares (the second semantics' own sampler,
-issue 62): unit vectors, rotations (from a uniform unit quaternion), angles, transforms,
+"""Random points of each kind a ``--let`` declares (the numeric check's own sampler):
+unit vectors, rotations (from a uniform unit quaternion), angles, transforms,
 twists, ... as mpmath values, drawn from :class:`random.Random` at the working precision."""
 
 from __future__ import annotations

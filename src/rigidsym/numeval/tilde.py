@@ -4,7 +4,7 @@ matrix of ``X`` (Wittenburg, Shabana, Greenwood, Schaub & Junkins) or as a vecto
 (an estimate's error), every tilde of a reading the same way; the enumeration of
 :func:`rigidsym.numeval.evaluator.residuals` keeps each reading it evaluates. The second
 reading is not evaluated (an undeclared accent's meaning is the reader's), so a verdict
-that rests on it alone is refused, as before wave 11.
+that rests on it alone is refused.
 As the reader does (:mod:`rigidsym.latex.transformer.tilde`), written again here: this
 semantics imports nothing of the symbolic one."""
 

@@ -1,5 +1,5 @@
-"""Matrix algebra and the chapter's operators on mpmath values (the second semantics, issue
-62): a value is an mpmath number (a scalar), an :class:`mpmath.matrix` (a vector is n x 1),
+"""Matrix algebra and the chapter's operators on mpmath values (the second semantics):
+a value is an mpmath number (a scalar), an :class:`mpmath.matrix` (a vector is n x 1),
 or an identity or zero whose size its neighbours give (:class:`Eye`, :class:`Zero`).
 Shapes are types: a sum or product whose shapes do not fit raises :class:`NotCovered`."""
 

@@ -164,7 +164,7 @@ def _probe(prog: Program, plan: Plan, rng: random.Random, n: int):
 
 def _traced(e):
     """``e`` with the trace of each explicit matrix written out (``tr A`` of a model ``A``
-    in a fraction: before wave 10 an undecided whose reason printed sympy's ``Trace(Matrix(
+    in a fraction, so that no undecided's reason prints sympy's ``Trace(Matrix(
     [...]))``)."""
     return e.replace(lambda y: isinstance(y, sp.Trace) and isinstance(y.arg, sp.MatrixBase),
                      lambda y: y.arg.trace()) if e.has(sp.Trace) else e
@@ -201,7 +201,7 @@ def decide_zero(entries, seed: int = 0, probes: int = 2, plan: Plan | None = Non
     entry with a square root (a norm) irrational at the sample points is decided through
     its square (:mod:`rigidsym.zero.roots`). ``polar``: a norm of a free 3-vector under
     sin/cos is decided with the vector written θu (:mod:`rigidsym.zero.polar`; the checker's
-    verdicts, wave 10), else undecided (the code generator's rewrites keep their choices).
+    verdicts), else undecided (the code generator's rewrites keep their choices).
     """
     entries = [_traced(sp.sympify(e)) for e in entries]
     entries = [e for e in entries if e != 0]

@@ -1,5 +1,5 @@
-"""The norm of a free 3-vector under a trigonometric function, in polar form (wave 10,
-issue 63 item 2): ``\\sin\\|v\\|/\\|v\\|`` and ``(1 - \\cos\\|v\\|)/\\|v\\|^2``, the
+"""The norm of a free 3-vector under a trigonometric function, in polar form:
+``\\sin\\|v\\|/\\|v\\|`` and ``(1 - \\cos\\|v\\|)/\\|v\\|^2``, the
 coefficients of Rodrigues' formula for a rotation vector (Murray-Li-Sastry (2.14) for
 ``\\|\\omega\\| \\ne 1``, Markley-Crassidis, Diebel).
 

@@ -5,8 +5,8 @@ fractions of polynomials; ``|n/d|`` and ``sqrt(n/d)`` are fractions of polynomia
 the signs are known everywhere. Known here by a sufficient test, exact and cheap: a
 polynomial whose every term has even exponents and a coefficient of one sign (``1 + u² +
 v²``, the stereographic denominator) never changes sign. ``sqrt(s²/t²)`` is ``|s|/|t|`` for
-such ``s`` and ``t`` (``‖ω̂‖`` of a unit vector is ``sqrt((1 + u² + v²)²/(1 + u² + v²)²)``,
-issue 40). Anything else stays :class:`~rigidsym.zero.plan.Unsupported`: never a guessed
+such ``s`` and ``t`` (``‖ω̂‖`` of a unit vector is ``sqrt((1 + u² + v²)²/(1 + u² + v²)²)``).
+Anything else stays :class:`~rigidsym.zero.plan.Unsupported`: never a guessed
 sign.
 """
 

@@ -1,5 +1,5 @@
-"""Symbol-table lines of sections 3.7 and 3.8 that the page defines on the id itself (issue
-65): the glyph an id introduces with ``\\equiv`` (certcheck's reader does not read it through
+"""Symbol-table lines of sections 3.7 and 3.8 that the page defines on the id itself:
+the glyph an id introduces with ``\\equiv`` (certcheck's reader does not read it through
 its own definition), the wrench transfer ``V`` printed below its first use, and section 3.8's
 centre of mass, body point and inertia dyad at a point where the certificate's table has no
 point-mass body line. Each line is in the book's glyphs, for a referee to hold against the

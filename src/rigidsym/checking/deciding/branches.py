@@ -1,5 +1,4 @@
-"""Principal branches the zero test honours exactly: ``acos``, ``asin`` and ``atan2`` (issue
-28; ``asin`` issue 38).
+"""Principal branches the zero test honours exactly: ``acos``, ``asin`` and ``atan2``.
 
 The zero test decides rational functions of its parameters; ``acos`` and ``atan2`` are
 not. Before it runs, each is rewritten where its value is known exactly on the whole

@@ -15,8 +15,8 @@ tried, single edits first, then pairs. Each candidate is
    decided to hold is a repair, with its method and failure bound.
 
 The search is bounded by a count of candidates (``ENGINE.repair_budget`` per member), so its
-results do not depend on the machine, and, where the run sets one (``--repair-seconds``,
-issue 52), by a time limit (:mod:`.deadline`), after which it says it stopped and how many
+results do not depend on the machine, and, where the run sets one (``--repair-seconds``),
+by a time limit (:mod:`.deadline`), after which it says it stopped and how many
 candidates it tried. It reports every single-edit repair,
 else every two-edit one, sorted by edit kind and then position in the tree, keeps
 ``ENGINE.keep`` and says how many were found; a repaired equation found twice by the same kind

@@ -121,8 +121,8 @@ def _compensated(n):
 
 
 def expand_plain(flat, ctx):
-    """The expanded numerator without compensation (issue 30's form ``p1 x p2``): offered
-    so that the rule of issue 37 chooses between it and the compensated one; it loses the
+    """The expanded numerator without compensation (the form ``p1 x p2``): offered
+    so that the accuracy rule chooses between it and the compensated one; it loses the
     exactness of ``p2 - p1`` at nearly coincident points and fails the rule there."""
     return expand_numerators(flat, ctx, compensate=False)
 

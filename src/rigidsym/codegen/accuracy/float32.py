@@ -18,7 +18,7 @@ adversarial ones of the argument kinds (phi near 0 and pi, omega near 0, gimbal 
 the harness's regimes (:mod:`rigidsym.codegen.accuracy.regimes`, drawn with seeds of their
 own, :data:`REGIME_SEEDS`): :func:`rigidsym.codegen.accuracy.points.plan_inputs`. A point with an
 input the C kernels' range test flags (nonzero magnitude outside :data:`RANGE32`) is left
-out: C re-runs it in a wider type (the rescue of issue 37), so the plan never computes it.
+out: C re-runs it in a wider type (the kernels' rescue), so the plan never computes it.
 
 The search (:func:`choose`): all float if that stays within :data:`TARGET` of
 :data:`BUDGET` at every point (where the kernel in double, rounded once, already uses more
@@ -27,7 +27,7 @@ within it); else, from all double, each node is made float in the order of its o
 (the node alone in float), kept float when the whole plan still is. The double nodes are
 named in the generated header.
 
-The budget is the rule of issue 37 (:mod:`rigidsym.codegen.accuracy.rule`), per output and point:
+The budget is the accuracy rule (:mod:`rigidsym.codegen.accuracy.rule`), per output and point:
 the error (normwise relative) within ``max(2 e_ref, 4 u)``, ``e_ref`` the error of the textbook
 formula (the declaration evaluated naively, in float32 arithmetic, at the same inputs),
 ``u = 2**-24``; its condition half (``8 u (kappa + 1)``) is the harness's, which has the
@@ -61,7 +61,7 @@ U32 = 2.0**-24
 
 def BUDGET(e_ref):
     """The largest error the plan allows at a point and output (normwise relative against
-    the float64 program): issue 37's rule, :func:`rigidsym.codegen.accuracy.rule.allowed`, with
+    the float64 program): the accuracy rule, :func:`rigidsym.codegen.accuracy.rule.allowed`, with
     ``e_ref`` the textbook formula's error in float32 there: ``max(2 e_ref, 4 u)``. The
     planner has no condition number: the rule's condition half, ``8 u (kappa + 1)``, is
     judged by the harness (``benchmarks/accuracy.py``, float32 on C and NumPy)."""
@@ -287,7 +287,7 @@ def _variant_points(variants, cols: dict) -> list[np.ndarray]:
 def plan_kernel(kernel, variants, split: dict | None) -> dict:
     """The precision plans of a kernel: of its trig split's per-sample program when it has
     one (``"trig"``), else of each variant (``"variants"``), with their worst ratios to
-    :data:`BUDGET` (issue 37's rule against the textbook formula in float32)."""
+    :data:`BUDGET` (the accuracy rule against the textbook formula in float32)."""
     from rigidsym.codegen.spec import flat_symbols
 
     cols, exact = plan_inputs(kernel)

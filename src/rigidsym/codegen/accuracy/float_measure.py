@@ -1,5 +1,4 @@
-"""The measured accuracy bound of the C target's float functions, per kernel (
-issue 66 item 3).
+"""The measured accuracy bound of the C target's float functions, per kernel.
 
 Builds the C target of some kernels (and their Jacobian twins) with the C compiler and hands
 each ``rigidsym_c_<kernel>_f32_batch`` function to the accuracy harness

@@ -1,5 +1,5 @@
 """The regimes a user meets, per kernel: exact points (rationals) where formulas cancel,
-overflow or lose digits (in the package since issue 37, so that the code generator
+overflow or lose digits (in the package so that the code generator
 (:mod:`rigidsym.codegen.accuracy.rewrites`) chooses its forms over the regimes the accuracy harness,
 ``benchmarks/accuracy.py``, judges them on).
 

@@ -284,7 +284,7 @@ def improve(kernel, variant: str, flat, syms_by_arg, syms_flat, conds, cond=None
                     wide_tb = wide.errors(declared, textbook=True)
                 m, tb, cur = wide, wide_tb, wide.errors(flat)
             err = m.errors(cand)
-            # the rule of issue 37 against the textbook formula, at every point; then the
+            # the accuracy rule against the textbook formula, at every point; then the
             # worst ratio to the best form at each point (textbook, current, candidate)
             if worst(err[:, cols], tb[:, cols]) > 1:
                 continue

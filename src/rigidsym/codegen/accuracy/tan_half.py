@@ -1,6 +1,7 @@
 """The rule "a polynomial in tan(phi/2)" of :mod:`.rewrites`: a kernel's fractions
 over ``1 + cos phi`` as the polynomial in ``t = tan(phi/2)`` they are, each coefficient
-homogenised in the unit vector (``L_tilde_dot``: rule 1.39 -> 0.856 of issue 37). Limited to a
+homogenised in the unit vector (``L_tilde_dot``: its worst ratio to the accuracy
+rule 1.39 -> 0.856). Limited to a
 shape cheap to recognise: sympy's ``cancel`` runs only where it may give a polynomial."""
 
 from __future__ import annotations

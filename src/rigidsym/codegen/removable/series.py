@@ -34,8 +34,7 @@ cancellation in ``s - sin s``) is
 what it is; the series branch keeps the singular neighbourhood within ``2u``.
 
 Long: one certificate (the series, its ball bounds, the switch point and its widening) read
-in one place; 405 lines since the widening of the fifth session, to be split along the
-series/bounds seam.
+in one place; 405 lines, to be split along the series/bounds seam.
 """
 
 from __future__ import annotations

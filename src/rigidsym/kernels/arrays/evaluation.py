@@ -187,7 +187,7 @@ def propagates_inf(source: str) -> bool:
     :data:`_NONFINITE_IN_OUT` (each non-finite wherever an argument is: ``inf * 0`` and
     ``inf - inf`` are NaN), so by induction every value that reads an inf is inf or NaN;
     nothing maps an inf to a finite value (``1 / inf``, ``atan``, a branch condition). Then
-    mapping the non-finite outputs to NaN is issue 37's rule (an inf input taken as NaN)
+    mapping the non-finite outputs to NaN is the kernels' rule (an inf input taken as NaN)
     without touching the inputs."""
     start = source.find("\ndef _main(")
     if start < 0:
@@ -359,7 +359,7 @@ class Library:
     #: ``finite_inside()``: the function of a traced call (``make``) takes an inf input as
     #: NaN itself (``Space.values(finite=True)``); else ``Space.call`` maps the inputs
     finite_inside: Callable = lambda: False
-    #: ``views(arrays)``: NumPy views of eager host arrays (PyTorch's CPU tensors: issue 38,
+    #: ``views(arrays)``: NumPy views of eager host arrays (PyTorch's CPU tensors:
     #: cheaper operations at a small batch), or None
     views: Callable = lambda arrays: None
     #: ``rescued(outputs, rows, inputs)``: the outputs, whose ``rows`` (a batch mask) hold

@@ -123,8 +123,8 @@ def broadcast_batch(broadcast_shapes: Callable, xs: list, args: list[dict],
     try:
         return tuple(broadcast_shapes(*shapes))
     except (RuntimeError, ValueError):  # torch raises RuntimeError, JAX ValueError
-        # the message starts with the arguments' names, as rigidsym.kernels' does (issue 37
-        # item 7): which one is wrong is the caller's
+        # the message starts with the arguments' names, as rigidsym.kernels' does:
+        # which one is wrong is the caller's
         pairs = [(a["name"], tuple(x.shape)) for x, a in zip(xs, args, strict=True)
                  if x.ndim > len(a["shape"])] or [(a["name"], tuple(x.shape))
                                                   for x, a in zip(xs, args, strict=True)]

@@ -83,7 +83,7 @@ def _screen(xp, host, xs: list, res: list, sing, bits: int) -> bool:
 def flag_rows(xp, xs: list, res: list, sing, batch: tuple, bits: int):
     """``batch`` bool on the device: samples with an input that is non-finite or of extreme
     magnitude (:func:`input_range`), the only ones re-run, whatever their flags (one answer
-    per row, issue 48, the rule of C and NumPy: a flagged sample of ordinary inputs keeps its
+    per row, the rule of C and NumPy: a flagged sample of ordinary inputs keeps its
     own flag; its wide value was a wrong number where a difference cancelled to a zero
     denominator). The inputs are tested on their bits, as the C kernels do: XLA on CPU
     flushes subnormals to zero in every floating operation, comparisons included, so a float

@@ -26,7 +26,7 @@ The explicit ``fma`` calls (the compensated forms, the sine's and cosine's error
 OpenMP (threads of
 the batch loops) is used when a probe compiles and links with it (``RIGIDSYM_OPENMP=0``
 skips it). The SIMD ``sin``/``cos`` are the generated header's own (within 1 ulp,
-c_common.h.j2); glibc's libmvec (within 4 ulp, which takes trig kernels past issue 37's
+c_common.h.j2); glibc's libmvec (within 4 ulp, which takes trig kernels past the accuracy
 rule) only on request, ``RIGIDSYM_LIBMVEC=1``, and when its probe links. Objects compile in parallel
 (``RIGIDSYM_BUILD_JOBS``, default the usable cores), or come from the object cache.
 """

@@ -19,10 +19,11 @@ __all__ = ["KERNEL_FLAGS", "COMMON_FLAGS", "MVEC_FLAGS", "OMP_FLAGS", "UNSAFE_FL
 #: scalar (gcc -fopt-info-vec-missed: "control flow in loop"); results are the same bits.
 #: -fno-tree-slp-vectorize: GCC's SLP vectorizer (12.2, x86-64-v3 and -v4) forms fused
 #: multiply-add-subtract instructions (vfmaddsub, vfmsubadd) from alternating `a b - c` and `a
-#: b + c` lanes even under -ffp-contract=off (the class of box2d issue 1086 on RISC-V): 18
-#: functions of the module had them, and 9 float64 kernels gave other bits on C than on NumPy
-#: (moving_frame_acceleration at 18 % of random points, wrench_axis_with_jacobians 1024 ulps of
-#: a small component), and float32 lanes loops left their measured plans. Without it: the
+#: b + c` lanes even under -ffp-contract=off (the bug class of box2d's GitHub issue 1086, on
+#: RISC-V): 18 functions of the module have them, and 9 float64 kernels give other bits on C
+#: than on NumPy (moving_frame_acceleration at 18 % of random points,
+#: wrench_axis_with_jacobians 1024 ulps of a small component), and float32 lanes loops leave
+#: their measured plans. Without it: the
 #: same bits as the scalar program; measured at the geometric mean 0.99 of the time over
 #: the 158 kernels (one thread, N = 1e5), up to 1.2 on two Jacobian kernels. Clang takes the
 #: flag as its -fno-slp-vectorize (and honours -ffp-contract=off there anyway).

@@ -7,7 +7,7 @@ or ``cos``: what it buys is 8-wide AVX-512 sin/cos in their SIMD loops (libmvec'
 measured 0.83-0.92x the x86-64-v3 time on the trigonometric K3 and K5; the generated
 header's own since ``benchmarks/RESULTS.md``), and those 34 of 134 kernels cost
 29 % of its compile time for nothing; and the few of :data:`V4_KERNELS`, which
-call neither but measured faster there in issue 67's measure (outputs allocated, N = 1e6:
+call neither but measured faster there (outputs allocated, N = 1e6:
 their range test and lanes loop run 8 doubles wide). The others' x86-64-v4 entries are the
 x86-64-v3 functions, aliased at link time (``--defsym``, GNU ld). Standard library only
 (``setup.py`` loads it by path).

@@ -32,8 +32,8 @@ def accuracy(name: str) -> dict:
         ``bound * u * (kappa + 1)`` (``u`` the unit roundoff, ``kappa`` the condition number
         on the inputs' tangent space), attained in ``regime`` (``kappa`` and ``err`` there),
         ``ulps`` the worst componentwise error (against the truth at the input as given),
-        ``rule`` the worst ratio to issue 37's rule
-        (``err <= 8 u (kappa + 1)`` and ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest
+        ``rule`` the worst ratio to the accuracy rule (:mod:`rigidsym.codegen.accuracy.rule`:
+        ``err <= 8 u (kappa + 1)`` and ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest
         error of the textbook formula and of the peers: ``docs/accuracy.md``), ``backends``
         per back-end ``{"err_u", "vs_ref", "vs_ref_where", "rule"}`` (the worst error in u,
         the worst ratio to ``e_ref`` where ``e_ref > 2 u`` and where); ``regimes`` swept;

@@ -131,7 +131,7 @@ def _install(space: Any, mod: types.ModuleType) -> None:
     (the compiled module's ``_install``: their vectorcall), for the calls the entries take
     (inputs positionally, keywords among :data:`_KEYWORDS`). Only functions with exactly the
     generated signature (the kernel's inputs, then the four keywords with the same defaults);
-    a module built before this existed has no ``_install``: nothing changes."""
+    a module built without it has no ``_install``: nothing changes."""
     cmod = space.c_lib().module
     install = getattr(cmod, "_install", None)
     if install is None:

@@ -1,5 +1,5 @@
-"""Validation of the non-array arguments of :mod:`rigidsym.kernels`' helpers (issue 37 item
-7): a kernel name, a backend name, a directory, a flag; errors name the argument and what
+"""Validation of the non-array arguments of :mod:`rigidsym.kernels`' helpers: a kernel
+name, a backend name, a directory, a flag; errors name the argument and what
 was expected, as the kernels' own do."""
 
 from __future__ import annotations

@@ -292,8 +292,8 @@ class BookNotationRules:
         self.glyphs[dkey] = Glyph(dkey, "*", d.name, g.shape, "free",
                                   f"the time derivative of {key}", "")
         if g.meaning.startswith("unit") and g.shape and g.shape[1] == 1:
-            # a unit vector's rate is tangent, (1 - X X^T) v with v free (wave 11: a free
-            # rate made X^T \dot X = 0 does-not-hold, which only the second semantics caught)
+            # a unit vector's rate is tangent, (1 - X X^T) v with v free (a free
+            # rate would make X^T \dot X = 0 does-not-hold)
             self._note(f"{dkey} = (1 - {g.name} {g.name}^T) {d.name}: tangent to the unit "
                        f"sphere ({d.name} free)")
             return (sp.Identity(g.shape[0]) - value * value.T) * d
@@ -342,7 +342,7 @@ class BookNotationRules:
     def _free_rates(self, timed: dict) -> dict:
         """The free rates ``\\dot X`` of the scalar and vector functions of time (no --let
         model of the rate): each a function of time too, by its symbol's name -> the key
-        of ``\\dot X`` (wave 10: d/dt(θ̇ sin θ) took θ̇ for a constant, dropping θ̈)."""
+        of ``\\dot X`` (so that d/dt(θ̇ sin θ) keeps θ̈)."""
         out = {}
         for key in timed.values():
             g = self.overrides[key]

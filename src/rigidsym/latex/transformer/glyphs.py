@@ -84,8 +84,7 @@ class GlyphRules:
         return core
 
     def label_first(self, items):
-        """``\\mathbf{a}^S_1``: TeX sets it as ``\\mathbf{a}_1^S``, one glyph, keyed so
-        (wave 10; refused before)."""
+        """``\\mathbf{a}^S_1``: TeX sets it as ``\\mathbf{a}_1^S``, one glyph, keyed so."""
         labels = [i for i in items if isinstance(i, lark.Token) and i.type == "SUPLABEL"]
         return self.glyph([i for i in items if i not in labels] + labels)
 
@@ -116,7 +115,7 @@ class GlyphRules:
         base, rest = inner.base, list(inner.rest) + list(items[2:])
         if accent == "\\dot" and not items[2:] and self.timed(inner.key):  # d/dt of X(t)
             return self.velocity(inner.key, inner.value)
-        if accent == "\\ddot" and not items[2:] and not inner.accent:  # wave 10
+        if accent == "\\ddot" and not items[2:] and not inner.accent:  # d/dt twice
             rate = self.model_rate(inner.key) if not self.timed(inner.key) else \
                 self.velocity(inner.key, inner.value) if dot_key(inner.key) in self.overrides \
                 else None
@@ -220,8 +219,8 @@ class GlyphRules:
         r"""``q_k`` outside a function whose parameter ``\mathbf{q}`` no ``--let`` declares,
         in the reading where the body's ``q_k`` are the parameter's entries: entry k of the
         free ``\mathbf{q}`` too, so that one notation holds for the letter throughout
-        (Diebel's ``R(\mathbf{q})`` beside ``q_0^2 + ... + q_3^2``: before wave 11 the body
-        read entries and the statement names, two readings of one letter at once)."""
+        (Diebel's ``R(\mathbf{q})`` beside ``q_0^2 + ... + q_3^2``: never the body's
+        entries and the statement's names, two readings of one letter at once)."""
         vbase = ("bold", base[1])
         vkey = self._key(vbase, [], None)
         if self.choices.get(f"{key} of {vkey}") != "entry" or vkey in self.overrides:
@@ -257,8 +256,8 @@ class GlyphRules:
 
     def _unuse(self, key) -> None:
         """The glyph ``key`` read under an accent: no use of its own, unless the LaTeX uses
-        it elsewhere too (``Q(\\mathbf{q})`` beside ``\\bar Q(\\mathbf{p})``: before
-        issue 63 the bar's Q took Q's use away, "Q does not occur")."""
+        it elsewhere too (``Q(\\mathbf{q})`` beside ``\\bar Q(\\mathbf{p})``: the bar's Q
+        does not take Q's own use away, so Q is not reported as "does not occur")."""
         uses = self.__dict__.setdefault("_uses", {})
         uses[key] = uses.get(key, 1) - 1
         if uses[key] <= 0:

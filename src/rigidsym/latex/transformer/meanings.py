@@ -137,7 +137,7 @@ class MeaningRules:
     def apply_pre_many(self, items):
         r"""``X^S(a, b)``, the power written before the arguments (Markley & Crassidis'
         ``A^T(\mathbf{e}, \vartheta)``): the power of the ``--let`` function's value, as
-        ``X(a, b)^S`` (wave 10; a syntax error before)."""
+        ``X(a, b)^S``."""
         if not hasattr(items[0], "key"):
             raise LatexError("a power before a list of arguments, (...)^S(a, b): only a --let "
                              "function's name takes arguments", "function")
@@ -194,7 +194,7 @@ class MeaningRules:
             if isinstance(x, sp.MatrixSymbol) or not self._of_scalars(f):
                 return self._choose(f, fv, x, arg, sup)  # R(\mathbf{q}): a label, maybe
             self._note(f"{f.key}(...): the product, {f.key}'s model holding no vector or "
-                       f"matrix to apply the expression to")  # H&Z's K'(R X + t), wave 11
+                       f"matrix to apply the expression to")  # H&Z's K'(R X + t)
             return self.mul([f, self.power([arg, sup]) if sup is not None else arg])
         if self.reader and matrix_shape(x) is None and x is not _TIME \
                 and self._modelless_vector(f, fv):
@@ -233,9 +233,8 @@ class MeaningRules:
         Siciliano's ``\boldsymbol{R}_z^T(\varphi)``, ``R^{-1}(\theta)``): where ``X(y)``
         is an application (a ``--let`` function, a symbol that is no scalar applied to a
         scalar, a function letter), the power of its value, as ``X(y)^S``; otherwise the
-        product ``X^S y`` (``a^2(b + c)``, ``R^T(\mathbf{a} - \mathbf{b})``). Before the
-        sixth session of wave 6 it was always the product, so ``R_z^T(0)\mathbf{a} =
-        \mathbf{0}`` verified."""
+        product ``X^S y`` (``a^2(b + c)``, ``R^T(\mathbf{a} - \mathbf{b})``). Always the
+        product would make ``R_z^T(0)\mathbf{a} = \mathbf{0}`` verify."""
         f, sup, arg = items
         fv, x = self._val(f), as_scalar(self._val(arg))
         key = getattr(f, "key", None)  # None: no glyph, ((a + b)^2 (c + d)), a product
@@ -262,8 +261,8 @@ class MeaningRules:
     def _function_letter(self, f) -> bool:
         """``f`` is a free glyph (no ``--let``, model, module, book row or notation line)
         written with the letter f, g or h: ``f(\\mathbf{a} + \\mathbf{b})`` is a function
-        there, which the product reading would make linear (it verified ``f(a + b) = f(a) +
-        f(b)`` before the fifth session of wave 6)."""
+        there, which the product reading would make linear (it would verify ``f(a + b) = f(a) +
+        f(b)``)."""
         key = getattr(f, "key", None)
         g = self.overrides.get(key) or self.glyphs.get(key)
         return g is not None and g.kind == "free" and _FUNCTION_LETTER.match(key) is not None
@@ -317,8 +316,8 @@ class MeaningRules:
         survey (1993) defines it with the sign of its passive attitude matrix, and the two
         readings of the books disagree on that sign (the corpus's note: the negative, his
         (57)), so neither is guessed: where both give one verdict (``[[u]]^2``, every even
-        power) it is decided, else refused naming the choice (before wave 11 any
-        ``[[u]]`` was refused: "unknown bracket")."""
+        power) it is decided, else refused naming the choice (never as an
+        "unknown bracket")."""
         from rigidsym.printing import notation
 
         u = h.args[0]

@@ -21,7 +21,7 @@ def dot_chain(r, items):
     left; its groupings give one value where at most two operands are vectors (the others
     scalars: every grouping is the scalars' product times the one dot product), and
     differ with three (``(a \\cdot b) c`` against ``a (b \\cdot c)``), which is refused
-    naming both rather than read as one of them (issue 52's outside trial)."""
+    naming both rather than read as one of them."""
     from rigidsym.printing import notation
 
     vals = [r._val(i) for i in items]

@@ -1,4 +1,4 @@
-"""The vocabulary of rigid motions in a reader's LaTeX (issue 29 on issue 28's words): the
+"""The vocabulary of rigid motions in a reader's LaTeX (on the words of the chapter): the
 spellings of Lynch & Park, *Modern Robotics* (MR) and Murray, Li & Sastry (MLS), each read
 onto a word of :mod:`rigidsym.declare` (never re-implemented here): :class:`RigidMotionRules`, a
 mixin of the LaTeX transformer :class:`rigidsym.latex.transformer.chapter.LatexTransformer`.
@@ -199,8 +199,8 @@ class RigidMotionRules:
         return ("plain", str(items[0]))
 
     def indexed_accent(self, items):
-        """``{}^{G}\\tilde r_{C}``: a left index before an accented letter, one name (issue
-        63), keyed ``{}^{G}\\tilde{r}_{C}``."""
+        """``{}^{G}\\tilde r_{C}``: a left index before an accented letter, one name,
+        keyed ``{}^{G}\\tilde{r}_{C}``."""
         from rigidsym.latex.transformer.book_notations import index_key
 
         base = ("plain", str(items[2].children[0])) if isinstance(items[2], lark.Tree) \

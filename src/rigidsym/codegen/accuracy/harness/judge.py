@@ -1,6 +1,6 @@
 """The judge of the accuracy harness: a kernel's (or any program's) outputs at exact points,
 rounded to the float type, against the declared formula's truth (:mod:`.reference`), under
-issue 37's rule (:mod:`rigidsym.codegen.accuracy.rule`).
+the accuracy rule (:mod:`rigidsym.codegen.accuracy.rule`).
 
 Per output ``o`` of a sample: ``err = ||computed - ref|| / ||ref||`` and the condition
 number ``kappa = sum_i ||J_oi|| ||x_i|| / ||ref||``. Verdict **accurate**: ``err <= 8 u

@@ -1,4 +1,4 @@
-"""The peers of the accuracy harness (issue 48 item 2): what a user would
+"""The peers of the accuracy harness: what a user would
 call instead, from the package's table (:mod:`rigidsym.codegen.accuracy.peers`: pytransform3d,
 Pinocchio, PyPose, jaxlie, spatialmath-python, Modern Robotics' library, each wrapped to the
 kernel's conventions), evaluated at the harness's points. Test-only oracles: the
@@ -43,7 +43,7 @@ def _slices(name: str) -> dict[str, slice]:
 def evaluate(name: str, arrays: list[np.ndarray], n_out: int) -> dict[str, np.ndarray]:
     """``{label: (n, n_out)}`` float64 outputs of each peer at the rows of ``arrays``, NaN
     in the outputs it does not compute; a row where the peer raises or returns the wrong
-    shape is NaN (it failed there; its warnings are silenced, as before issue 48)."""
+    shape is NaN (it failed there; its warnings are silenced)."""
     sl = _slices(name)
     out = {}
     for p, f in table.available(name)[0]:

@@ -1,10 +1,10 @@
-"""Issue 63's outside trial of wave 10 (``tests/data/trial_outside_i63.py``): 40 equations
-from Shuster (1993), Markley & Crassidis (2014), Kuipers (1999), Murray, Li & Sastry (1994),
-Ma, Soatto, Košecká & Sastry (2004) and Diebel (2006), typed from memory with the
-declarations their readers write, judged against the data file's own NumPy truth (which
-never imports rigidsym). No verdict may be wrong; each case answers as recorded, as typed
-(``AFTER_W11``, wave 11's readings; ``AFTER`` the wave-10 record) and after the one attempt
-its refusal named (``AFTER_ATTEMPT``).
+"""Equations of six books typed from memory, first set (``tests/data/latex_books_typed_a.py``): 40
+equations from Shuster (1993), Markley & Crassidis (2014), Kuipers (1999), Murray, Li & Sastry
+(1994), Ma, Soatto, Košecká & Sastry (2004) and Diebel (2006), typed from memory with the
+declarations their readers write, judged against the data file's own NumPy truth (which never
+imports rigidsym). No verdict may be wrong; each case answers as recorded, as typed (``AFTER_W11``,
+with the books' readings; ``AFTER`` without them) and after the one attempt its refusal named
+(``AFTER_ATTEMPT``).
 
 And the messages of every refusal and undecided verdict, over the LaTeX corpus
 (``tests/data/latex_corpus``) and this trial, leak no exception text: a sample in the
@@ -24,8 +24,8 @@ import pytest
 import rigidsym
 
 DATA = Path(__file__).resolve().parent / "data"
-_spec = importlib.util.spec_from_file_location("trial_outside_i63",
-                                               DATA / "trial_outside_i63.py")
+_spec = importlib.util.spec_from_file_location("latex_books_typed_a",
+                                               DATA / "latex_books_typed_a.py")
 trial = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(trial)
 CASES = {c["id"]: c for c in trial.CASES}
@@ -53,8 +53,8 @@ def _answer(case: dict, latex: str, lets: list, options: dict) -> tuple[str, str
     return ("right" if said == holds else "WRONG"), ""
 
 
-def test_wave_11_refuses_at_most_a_tenth_of_the_valid_equations_as_typed():
-    # the issue's acceptance, on the recorded answers (each checked by the test below)
+def test_at_most_a_tenth_of_the_valid_equations_is_refused_as_typed():
+    # on the recorded answers (each checked by the test below)
     valid = [c["id"] for c in trial.CASES if not c["slip"]]
     refused = [i for i in valid if trial.AFTER_W11[i] == "refused"]
     assert len(refused) <= 0.1 * len(valid), refused

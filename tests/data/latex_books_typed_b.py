@@ -1,8 +1,8 @@
 # ruff: noqa: E501 - the LaTeX of a book equation is one line, as typed
-"""Issue 63's second outside trial: 40 equations from six books, typed from memory.
+"""Equations of six books typed from memory, second set: 40 equations.
 
 Books (none named by the LaTeX corpus, any test, docs/check-latex.md or the first trial,
-``trial_outside_i63.py``): Wie, *Space Vehicle Dynamics and Control* (1998); Wittenburg,
+``latex_books_typed_a.py``): Wie, *Space Vehicle Dynamics and Control* (1998); Wittenburg,
 *Dynamics of Multibody Systems* (2008); Greenwood, *Advanced Dynamics* (2003); Groves,
 *Principles of GNSS, Inertial, and Multisensor Integrated Navigation Systems* (2013);
 Hartley & Zisserman, *Multiple View Geometry in Computer Vision* (2003); Shabana,
@@ -13,7 +13,7 @@ Each case: an id, its book, the LaTeX and the `--let`s as a reader of that book 
 equation), and a truth: a NumPy function of a random generator returning the residual
 |lhs - rhs| at one random point of the declarations (for a kinematic equation, the time
 derivative by central differences along the declared rates). The truth never imports
-rigidsym: it is the independent judge. The verdicts before the session's fixes are
+rigidsym: it is the independent judge. The verdicts without the books' readings are
 :data:`BEFORE`; as typed after them :data:`AFTER`; after the one attempt a reader makes
 after the message (:data:`ATTEMPT`) :data:`AFTER_ATTEMPT`.
 """
@@ -552,7 +552,7 @@ def attempted(case: dict) -> tuple[str, list, dict]:
         latex, lets = latex.replace(old, new), [x.replace(old, new) for x in lets]
     return latex, lets, {}
 
-#: the verdicts as typed, before any fix of the session (right / refused / undecided / WRONG)
+#: the verdicts as typed, without the books' readings (right / refused / undecided / WRONG)
 BEFORE = {
     'wie-c-orth': 'right',
     'wie-trace': 'right',
@@ -596,7 +596,7 @@ BEFORE = {
     'k-sha-space': 'refused',
 }
 
-#: the verdicts as typed after the session's fixes
+#: the verdicts as typed, with the books' readings
 AFTER = {
     'wie-c-orth': 'right',
     'wie-trace': 'right',
@@ -640,7 +640,7 @@ AFTER = {
     'k-sha-space': 'right',
 }
 
-#: after the reader's one attempt (:data:`ATTEMPT`), with the session's fixes
+#: after the reader's one attempt (:data:`ATTEMPT`), with the books' readings
 AFTER_ATTEMPT = {
     'wie-c-orth': 'right',
     'wie-trace': 'right',

@@ -1,4 +1,4 @@
-"""A class graded end to end against an independent NumPy grader (issue 64's acceptance).
+"""A class graded end to end against an independent NumPy grader.
 
 The test builds a class from a roster saved as a European Excel would (a BOM, ``;``),
 with names in several scripts and two students of one name; each student answers 3.1

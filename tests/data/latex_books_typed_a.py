@@ -1,5 +1,5 @@
 # ruff: noqa: E501 - the LaTeX of a book equation is one line, as typed
-"""Issue 63's outside trial: 40 equations from six books, typed from memory.
+"""Equations of six books typed from memory, first set: 40 equations.
 
 Books: Shuster, "A Survey of Attitude Representations" (J. Astronaut. Sci. 41, 1993);
 Markley & Crassidis, *Fundamentals of Spacecraft Attitude Determination and Control* (2014);
@@ -10,7 +10,7 @@ Rotation Vectors" (2006).
 
 Each case: an id, its book, the LaTeX and the `--let`s as a reader of that book types them,
 `slip` (a deliberate one-edit slip of a true equation), the verdict as typed (`before`, run
-before any fix of the session) and after (`after`), and a truth: a NumPy function of a
+without the books' readings) and with them (`after`), and a truth: a NumPy function of a
 random generator returning the residual |lhs - rhs| at one random point of the declarations
 (for a kinematic equation, the time derivative by central differences along the declared
 rates). The truth never imports rigidsym: it is the independent judge.
@@ -464,7 +464,7 @@ CASES = [
 
 TRUTH_TOLERANCE = 1e-6
 
-#: the verdicts as typed, before any fix of the session (right / refused / undecided / wrong)
+#: the verdicts as typed, without the books' readings (right / refused / undecided / wrong)
 BEFORE = {'sh-axis-fixed': 'right',
           'sh-trace': 'right',
           'sh-trace-slip': 'right',
@@ -533,7 +533,7 @@ def attempted(case: dict) -> tuple[str, list, dict]:
     lets += a.get("add", [])
     return latex, lets, {"notation": a["notation"]} if "notation" in a else {}
 
-#: the verdicts as typed after the session's fixes
+#: the verdicts as typed, with the books' readings
 AFTER = {'sh-axis-fixed': 'right',
          'sh-trace': 'right',
          'sh-trace-slip': 'right',
@@ -575,7 +575,7 @@ AFTER = {'sh-axis-fixed': 'right',
          'k-mls-skew': 'right',
          'k-mc-axis-angle': 'right'}
 
-#: after the reader's one attempt (:data:`ATTEMPT`), with the session's fixes
+#: after the reader's one attempt (:data:`ATTEMPT`), with the books' readings
 AFTER_ATTEMPT = {'sh-axis-fixed': 'right',
          'sh-trace': 'right',
          'sh-trace-slip': 'right',
@@ -618,7 +618,7 @@ AFTER_ATTEMPT = {'sh-axis-fixed': 'right',
          'k-mc-axis-angle': 'right'}
 
 
-#: the verdicts as typed after wave 11's readings: a free hat read both ways, q_k
+#: the verdicts as typed with the books' readings: a free hat read both ways, q_k
 #: beside a --let's vector its entry (a 4-vector counted from 1 or 0), Shuster's [[u]] with
 #: either sign, one notation per letter in and outside a function's body, a free bold
 #: capital a 3-vector where its conventional 3x3 does not fit; each decided where its

@@ -1,8 +1,7 @@
-r"""Wave 11's readings of issue 63 (``rigidsym.latex.hats``, ``rigidsym.latex.entries``, Shuster's
-``[[u]]``): each reading a book's notation allows is read, a verdict where the readings that
-type-check agree, bad input naming the choice where they differ. The truths are the books'
-(a unit quaternion's entries square to 1; ``[T]_\times`` annihilates ``T``), not the code's.
-"""
+r"""The readings of the books' notations (``rigidsym.latex.hats``, ``rigidsym.latex.entries``,
+Shuster's ``[[u]]``): each reading a book's notation allows is read, a verdict where the readings
+that type-check agree, bad input naming the choice where they differ. The truths are the books' (a
+unit quaternion's entries square to 1; ``[T]_\times`` annihilates ``T``), not the code's."""
 
 from __future__ import annotations
 
@@ -84,7 +83,7 @@ def test_a_4_vectors_count_that_changes_the_verdict_is_refused_naming_the_entry(
 
 def test_a_3_vectors_subscripts_are_its_entries_and_a_let_makes_a_symbol_of_its_own():
     r = _check(r"a_1^2 + a_2^2 + a_3^2 = \mathbf{a}^T\mathbf{a}", [r"\mathbf{a}: vector"])
-    assert r.verdict == "verified", r.detail       # refused before wave 11 (two readings)
+    assert r.verdict == "verified", r.detail       # not refused as two readings
     own = _check(r"a_1^2 + a_2^2 + a_3^2 = \mathbf{a}^T\mathbf{a}",
                  [r"\mathbf{a}: vector", "a_1: scalar"])
     assert own.verdict == "does-not-hold", own.detail
@@ -109,7 +108,7 @@ DIEBEL = (r"R(\mathbf{q}) = \begin{bmatrix} q_0^2 + q_1^2 - q_2^2 - q_3^2 & 2q_1
 
 def test_a_parameters_entries_are_the_free_vectors_entries_outside_the_body():
     # the body's q_i are its parameter's entries or symbols of their own; outside it the
-    # same reading holds (before wave 11 the entry reading read names outside: refused)
+    # same reading holds (names outside would make the readings disagree: refused)
     r = _check(r"R(\mathbf{q})^TR(\mathbf{q}) = (q_0^2 + q_1^2 + q_2^2 + q_3^2)^2 I_3", [DIEBEL])
     assert r.verdict == "verified", r.detail
     with pytest.raises(BadInput, match="the readings disagree"):  # q^T q: entries only
@@ -128,7 +127,7 @@ def test_a_free_bold_capital_is_a_vector_only_where_its_3x3_does_not_fit():
 
 
 def test_a_bold_subscripted_name_beside_a_declared_vector_stays_a_choice():
-    # \mathbf{p}_1 is point 1 as often as an entry: issue 52's two readings, the entry (a
+    # \mathbf{p}_1 is point 1 as often as an entry: of the two readings the entry (a
     # scalar = a 3-vector) does not type-check, so point 1, a vector of its own, is decided
     r = _check(r"\mathbf{p}_1 = R\mathbf{p}_2 + \mathbf{p}", [r"\mathbf{p}: vector", "R: rotation"])
     assert r.verdict == "does-not-hold", r.detail

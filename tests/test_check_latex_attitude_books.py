@@ -1,4 +1,4 @@
-"""Issue 63's outside trial: 21 equations of five attitude books (Hughes, *Spacecraft
+"""21 equations of five attitude books (Hughes, *Spacecraft
 Attitude Dynamics*; Markley & Crassidis, *Fundamentals of Spacecraft Attitude Determination
 and Control*; Schaub & Junkins, *Analytical Mechanics of Space Systems*; Wertz, *Spacecraft
 Attitude Determination and Control*; Kuipers, *Quaternions and Rotation Sequences*), typed as

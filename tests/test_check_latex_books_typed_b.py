@@ -1,9 +1,9 @@
-"""Issue 63's second outside trial (wave 11, ``tests/data/trial_outside_i63b.py``): 40
-equations from Wie (1998), Wittenburg (2008), Greenwood (2003), Groves (2013), Hartley &
-Zisserman (2003) and Shabana (2005), typed from memory with the declarations their readers
-write, judged against the data file's own NumPy truth (which never imports rigidsym). No
-verdict may be wrong; each case answers as recorded, as typed (``AFTER``) and after the one
-attempt its refusal names (``AFTER_ATTEMPT``); no message leaks exception text.
+"""Equations of six books typed from memory, second set (``tests/data/latex_books_typed_b.py``): 40
+equations from Wie (1998), Wittenburg (2008), Greenwood (2003), Groves (2013), Hartley & Zisserman
+(2003) and Shabana (2005), typed from memory with the declarations their readers write, judged
+against the data file's own NumPy truth (which never imports rigidsym). No verdict may be wrong;
+each case answers as recorded, as typed (``AFTER``) and after the one attempt its refusal names
+(``AFTER_ATTEMPT``); no message leaks exception text.
 
 And the rules the trial brought: a tilde over a 3-vector (its cross-product matrix or a
 vector of its own, both semantics), a unit vector's rate tangent, ``\\theta_0`` beside a
@@ -23,13 +23,13 @@ import rigidsym
 from rigidsym.core.errors import BadInput
 
 DATA = Path(__file__).resolve().parent / "data"
-_spec = importlib.util.spec_from_file_location("trial_outside_i63b",
-                                               DATA / "trial_outside_i63b.py")
+_spec = importlib.util.spec_from_file_location("latex_books_typed_b",
+                                               DATA / "latex_books_typed_b.py")
 trial = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(trial)
 CASES = {c["id"]: c for c in trial.CASES}
 
-#: cheap cases for the default run, one per fix of the session
+#: cheap cases for the default run, one per rule the set exercises
 FAST = {"wit-tilde-comm", "wit-tilde-ab", "grv-omega-rot-slip", "gr-omega-sq", "hz-fund",
         "sha-rod-ep-slip"}
 
@@ -61,7 +61,7 @@ def test_the_trial_is_forty_cases_from_six_new_books_with_kinematics_and_slips()
     assert len(trial.CASES) == 40 and len(books) == 6, (len(trial.CASES), books)
     assert sum(c["id"].startswith("k-") for c in trial.CASES) >= 8
     assert sum(c["slip"] for c in trial.CASES) >= 8
-    first = (DATA / "trial_outside_i63.py").read_text()
+    first = (DATA / "latex_books_typed_a.py").read_text()
     assert not any(b.split()[0] in first for b in books), books  # none of the first trial's
 
 
