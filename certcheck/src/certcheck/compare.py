@@ -66,10 +66,14 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     # one printed relation under several models (a restatement is not another model)
     soft = len(pairs) == 1 and len([r for r in printed if "restated" not in r]) > 1
     pairs = pairs * len(printed) if len(pairs) == 1 and len(printed) > 1 else pairs
+    if len(pairs) > len(printed) and cert.get("verdict") != "does-not-hold":  # one fails
+        raise CheckError(f"({cert.get('id')}) the page prints {len(pairs)} relation(s), the "
+                         f"certificate proves {len(printed)}: a printed relation is missing "
+                         "or one not printed is added")
     if len(pairs) != len(printed):
         return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
                 f"has {len(printed)} (a family the reader does not match); each relation is "
-                "the certificate's word"]
+                "the certificate's word", f"sides read from the page: 0 of {2 * len(printed)}"]
     for k, rel in enumerate(printed):  # X^{-1} = Y proved as X Y = 1: X, Y read
         if "restated" in rel:
             pairs[k] = _restated(cert, rel, page, symbols, defs, lets)
@@ -87,6 +91,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
         whole = bool(check_identity(st := probe(batch), st.rels, fast))
     except CheckError:
         whole = False
+    n_read = 0
     for k, rel in enumerate(printed):
         read, matched = [], []
         for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
@@ -95,15 +100,14 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                            "word")
                 continue
             theirs = rel[side]
-            if assumed and mine.shape != (len(theirs), len(theirs[0])):
-                out.append(f"NOT READ: relation {k + 1}'s {side} (a 1, O or 0 of a size "
-                           "other than 3); the certificate's word")
-                continue
             if soft and mine.shape != (len(theirs), len(theirs[0])):
                 out.append(f"NOT READ: relation {k + 1}'s {side} (the printed relation's "
                            f"shape is not this model's); the certificate's word")
                 continue
-            if mine.shape != (len(theirs), len(theirs[0])):
+            if assumed and _unit_of(mine.rows) is not None and \
+                    _unit_of(mine.rows) == _unit_of(theirs):  # a bare 0 or 1: its size
+                mine = M(theirs)
+            if mine.shape != (len(theirs), len(theirs[0])):  # a 1, O or 0 sized so too
                 raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
                                  f"the page's reads "
                                  f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
@@ -128,13 +132,23 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
             tentative = soft or any(c.endswith("an equation") for c in cited)
             (matched if tentative else read).append(
                 side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))
+        n_read += len(read) + len(matched)
         if read:
             out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
                        "certificate's under the symbol table")
         if matched:  # a difference here would be NOT READ, not a rejection
             out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
                        "the certificate's" + (" under one of its models" if soft else ""))
-    return out
+    return [*out, f"sides read from the page: {n_read} of {2 * len(printed)}"]
+
+
+def _unit_of(rows: list) -> str | None:
+    """``"0"`` for a zero matrix, ``"1"`` for an identity (entries as written), else None."""
+    t = [[str(x).replace(" ", "") for x in row] for row in rows]
+    if all(x == "0" for row in t for x in row):
+        return "0"
+    eye = all(x == ("1" if i == j else "0") for i, row in enumerate(t) for j, x in enumerate(row))
+    return "1" if eye and len(t) == len(t[0]) else None
 
 
 def _braces(page: str):
