@@ -28,6 +28,25 @@ import json
 from pathlib import Path
 
 
+def _holds(cert, lhs, rhs) -> bool:
+    """``lhs = rhs`` holds under the certificate's kinds (certcheck's own mathematics): a
+    forgery that keeps it true (scaling a side that is zero, transposing a symmetric one)
+    claims nothing false, so it is not made."""
+    from certcheck import CheckError, check_certificate
+    rel = {"label": "probe", "role": "printed", "lhs": lhs, "rhs": rhs,
+           "evidence": {"type": "identity"}}
+    try:
+        check_certificate({**cert, "id": "probe:x", "verdict": "verified",
+                           "relations": [rel], "cause": None})
+    except CheckError:
+        return False
+    return True
+
+
+def _zero(m):
+    return [["0"] * len(row) for row in m]
+
+
 def _printed(c):
     return [r for r in c["relations"] if r["role"] == "printed"]
 
@@ -130,22 +149,20 @@ def true_as_shape_mismatch(cert):
 
 
 def dropped_relation(cert):
+    """The first printed relation left out (a does-not-hold keeps the one that fails)."""
     c = copy.deepcopy(cert)
     printed = _printed(c)
     if len(printed) < 2 or any("restated" in r for r in printed):
         return None  # (a restated relation is a second model of one printed relation)
-    c["relations"].remove(printed[-1])
-    if c["verdict"] == "does-not-hold" and not any(
-            r["evidence"]["type"] in ("counterexample", "shape") for r in _printed(c)):
-        c["relations"].remove(printed[0])  # keep the failing one: drop the first instead
-        c["relations"].insert(0, printed[-1])
+    fails = [r for r in printed if r["evidence"]["type"] in ("counterexample", "shape")]
+    c["relations"].remove(next(r for r in printed if r not in fails[:1]))
     return c
 
 
 def scaled_sides(cert):
     c = copy.deepcopy(cert)
     rels = [r for r in _printed(c) if r["evidence"]["type"] in ("identity", "cofactors")
-            and "restated" not in r]
+            and "restated" not in r and not _holds(c, r["lhs"], _zero(r["lhs"]))]
     if c["verdict"] != "verified" or not rels:
         return None
     for r in rels:
@@ -158,7 +175,7 @@ def scaled_sides(cert):
 def negated_side(cert):
     c = copy.deepcopy(cert)
     rels = [r for r in _printed(c) if "restated" not in r
-            and any(x.strip() != "0" for row in r["rhs"] for x in row)]
+            and not _holds(c, r["rhs"][:1], _zero(r["rhs"][:1]))]
     if c["verdict"] != "verified" or not rels:
         return None
     r = rels[0]
@@ -174,7 +191,8 @@ def transposed_side(cert):
     for r in _printed(c):
         m = r["rhs"]
         t = [list(col) for col in zip(*m, strict=True)]
-        if len(m) > 1 and len(m) == len(m[0]) and t != m and "restated" not in r:
+        if len(m) > 1 and len(m) == len(m[0]) and t != m and "restated" not in r and \
+                not _holds(c, m, t):
             r["rhs"] = t  # the left side kept: lhs = rhs^T
             _plain(c, [r])
             return c

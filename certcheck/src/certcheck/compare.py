@@ -47,6 +47,10 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     for r in sorted((r for r in cert.get("relations", []) if r.get("role") == "claim"
                      and isinstance(r.get("page"), int)), key=lambda r: r["page"]):
         printed.insert(r["page"] - 1, r)  # a chain's member the page prints, proved as a claim
+    if not printed:  # a theorem in words, proved by its claims: nothing read on the page
+        n = 2 * max(1, len(cert.get("relations", [])))
+        return ["NOT READ: no printed relation (the claims are the certificate's reading of"
+                " the page's words)", f"sides read from the page: 0 of {n}"]
     here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
             for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
@@ -106,8 +110,10 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                 out.append(f"NOT READ: relation {k + 1}'s {side} (the printed relation's "
                            f"shape is not this model's); the certificate's word")
                 continue
-            if assumed and _unit_of(mine.rows) is not None and \
-                    _unit_of(mine.rows) == _unit_of(theirs):  # a bare 0 or 1: its size
+            o = pairs[k][side == "lhs"]  # a bare 0 or 1: the size of the page's other side
+            if assumed and _unit_of(mine.rows) is not None and not o[1] and \
+                    _unit_of(mine.rows) == _unit_of(theirs) and not isinstance(o[0], NotRead) \
+                    and o[0].shape == (len(theirs), len(theirs[0])):
                 mine = M(theirs)
             if mine.shape != (len(theirs), len(theirs[0])):  # a 1, O or 0 sized so too
                 raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
