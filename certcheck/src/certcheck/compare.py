@@ -111,10 +111,14 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                            f"shape is not this model's); the certificate's word")
                 continue
             o = pairs[k][side == "lhs"]  # a bare 0 or 1: the size of the page's other side
-            if assumed and _unit_of(mine.rows) is not None and not o[1] and \
-                    _unit_of(mine.rows) == _unit_of(theirs) and not isinstance(o[0], NotRead) \
-                    and o[0].shape == (len(theirs), len(theirs[0])):
+            if assumed and None is not _unit_of(mine.rows) == _unit_of(theirs) and not o[1] \
+                    and getattr(o[0], "shape", 0) == (len(theirs), len(theirs[0])):
                 mine = M(theirs)
+            if assumed and isinstance(o[0], NotRead) and mine.shape != (len(theirs), len(
+                    theirs[0])):  # a bare 0 or 1 whose size the other side would give
+                out.append(f"NOT READ: relation {k + 1}'s {side} (a bare 0 or 1 of a size "
+                           "the page's other side, not read, would give); the certificate's")
+                continue
             if mine.shape != (len(theirs), len(theirs[0])):  # a 1, O or 0 sized so too
                 raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
                                  f"the page's reads "
