@@ -120,11 +120,26 @@ def check_page(cert: dict, book: str) -> list[str]:
         if re.fullmatch(r"3\.\d+[a-z]?", cited) and not _prints(locate(book, cited), s):
             raise BookError(f"({eq_id}): symbol {s.get('glyph')} cited as printed in "
                             f"({cited}), which does not print {s.get('latex')!r}")
+    fam = [r for r in cert.get("relations") or [] if isinstance(r, dict) and
+           r.get("role") == "printed" and r.get("symbols")]  # F = N, L, H: every member
+    g = str((fam or [{"symbols": [{}]}])[0]["symbols"][0].get("glyph")).replace(" ", "")
+    if fam and cert.get("verdict") != "does-not-hold" and _members(book, g) != len(fam):
+        raise BookError(f"({eq_id}): the page's words give {g} {_members(book, g)} "
+                        f"members, the certificate proves {len(fam)}")
     lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
     lines += [f"symbol: {_symbol_words(s)}" for s in cert.get("symbols") or []]
     lines += [f"symbol of {r.get('label')}: {_symbol_words(s)}" for r in cert.get("relations")
               or [] if isinstance(r, dict) for s in r.get("symbols") or []]
     return lines + cause_lines(cert)
+
+
+def _members(book: str, glyph: str) -> int | None:
+    """How many glyphs the page's words give ``glyph``: "$G$ is one of $A$, $B$, or $C$"."""
+    for m in re.finditer(r"\$\s*([^$]+?)\s*\$\s+is(?:,\s*correspondingly,|\s+one of)\s+"
+                         r"((?:\$[^$]+\$\s*,?\s*(?:or\s+)?)+)", book):
+        if m.group(1).replace(" ", "") == glyph:
+            return len(re.findall(r"\$[^$]+\$", m.group(2)))
+    return None
 
 
 def _prints(display: str, s: dict) -> bool:
