@@ -102,8 +102,9 @@ def main(argv: list[str] | None = None) -> int:
             if book is not None:  # the second reader: what is proved is what is printed
                 eq_id = str(cert.get("id"))
                 defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
-                page += compare(cert, locate(book, eq_id), fast=not args.no_flint, defs=defs)
-                k, n = map(int, re.findall(r"(\d+) of (\d+)", page.pop())[0])
+                page += compare(cert, locate(book, eq_id), fast=not args.no_flint, defs=defs,
+                                counts=(counts := []))
+                (k, n), = counts
             elif book is None:
                 n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
         except (CheckError, BookError, OSError, ValueError) as exc:

@@ -18,12 +18,14 @@ from certcheck.reader import NotRead, read_relations, tokens
 __all__ = ["compare"]
 
 
-def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) -> list[str]:
+def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
+            counts: list | None = None) -> list[str]:
     """Read ``page`` under the certificate's symbol table and check that each printed
     relation of the certificate is the printed one: each side the reader reads is the
     certificate's side as a rational function under the kinds' hypotheses. ``defs``
     (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
-    their printed definitions above the id, each cited.
+    their printed definitions above the id, each cited. ``counts``: ``(sides read,
+    printed sides)`` appended to it.
 
     Returns:
         Lines for the referee: what was read, and what was not (a finding, never a pass).
@@ -33,7 +35,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     """
     from certcheck.check import CheckError, Statement, check_identity
 
-    symbols = cert.get("symbols") or []
+    symbols, counts = cert.get("symbols") or [], [] if counts is None else counts
     kinds = {g.get("group"): g.get("kind") for g in cert.get("atoms", [])}
     for e in symbols:  # the table's kinds are the certificate's groups' kinds
         for a in e.get("atoms", []) if isinstance(e, dict) else []:
@@ -48,9 +50,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                      and isinstance(r.get("page"), int)), key=lambda r: r["page"]):
         printed.insert(r["page"] - 1, r)  # a chain's member the page prints, proved as a claim
     if not printed:  # a theorem in words, proved by its claims: nothing read on the page
-        n = 2 * max(1, len(cert.get("relations", [])))
+        counts.append((0, 2 * max(1, len(cert["relations"]))))
         return ["NOT READ: no printed relation (the claims are the certificate's reading of"
-                " the page's words)", f"sides read from the page: 0 of {n}"]
+                " the page's words)"]
     here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
             for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
@@ -77,9 +79,10 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     if len(pairs) > len(printed) == 1 and not held:  # the chain's member that fails:
         pairs = [p for p in pairs if _agrees(cert, printed[0], p, lets, fast)][:1] or pairs
     if len(pairs) != len(printed):
+        counts.append((0, 2 * len(printed)))
         return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
                 f"has {len(printed)} (a family the reader does not match); each relation is "
-                "the certificate's word", f"sides read from the page: 0 of {2 * len(printed)}"]
+                "the certificate's word"]
     for k, rel in enumerate(printed):  # X^{-1} = Y proved as X Y = 1: X, Y read
         if "restated" in rel:
             pairs[k] = _restated(cert, rel, page, symbols, defs, lets)
@@ -151,7 +154,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
         if matched:  # a difference here would be NOT READ, not a rejection
             out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
                        "the certificate's" + (" under one of its models" if soft else ""))
-    return [*out, f"sides read from the page: {n_read} of {2 * len(printed)}"]
+    counts.append((n_read, 2 * len(printed)))
+    return out
 
 
 def _agrees(cert: dict, rel: dict, pair: tuple, lets: list, fast: bool) -> bool:
