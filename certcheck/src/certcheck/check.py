@@ -605,9 +605,10 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
             raise CheckError("a does-not-hold needs a printed member with a counterexample "
                              "or a shape mismatch")
     elif verdict == "definition":
-        if all(not any(st.usage[st.rels.index(rel)][k] for k in (0, 1, 3)) for rel in printed):
-            raise CheckError("a definition whose printed relations are constants only "
-                             "(0 = 0) defines nothing")
+        if all(str(x).strip() == "0" for rel in printed for s in ("lhs", "rhs")
+               for row in rel[0][s] for x in row):
+            raise CheckError("a definition whose printed relations are zeros only (0 = 0) "
+                             "defines nothing")
         if by["counterexample"] or by["shape"] or not printed or \
                 any(rel[0].get("role") != "printed" for rel in by["statement"]) or \
                 any(rel not in by["statement"] for rel in printed):
