@@ -115,11 +115,38 @@ def check_page(cert: dict, book: str) -> list[str]:
         raise BookError(f"({eq_id}): book_latex is not the text printed as ({eq_id}); they "
                         f"differ from character {where}: certificate {latex[where:where + 50]!r}"
                         f", page {page[where:where + 50]!r}")
+    for s in cert.get("symbols") or []:  # a citation of this chapter: its display prints it
+        cited = str(s.get("printed_as", "")).strip("()") if isinstance(s, dict) else ""
+        if re.fullmatch(r"3\.\d+[a-z]?", cited) and not _prints(locate(book, cited), s):
+            raise BookError(f"({eq_id}): symbol {s.get('glyph')} cited as printed in "
+                            f"({cited}), which does not print {s.get('latex')!r}")
+    fam = [r for r in cert.get("relations") or [] if isinstance(r, dict) and
+           r.get("role") == "printed" and r.get("symbols")]  # F = N, L, H: every member
+    g = str((fam or [{"symbols": [{}]}])[0]["symbols"][0].get("glyph")).replace(" ", "")
+    if fam and cert.get("verdict") != "does-not-hold" and _members(book, g) != len(fam):
+        raise BookError(f"({eq_id}): the page's words give {g} {_members(book, g)} "
+                        f"members, the certificate proves {len(fam)}")
     lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
     lines += [f"symbol: {_symbol_words(s)}" for s in cert.get("symbols") or []]
     lines += [f"symbol of {r.get('label')}: {_symbol_words(s)}" for r in cert.get("relations")
               or [] if isinstance(r, dict) for s in r.get("symbols") or []]
     return lines + cause_lines(cert)
+
+
+def _members(book: str, glyph: str) -> int | None:
+    """How many glyphs the page's words give ``glyph``: "$G$ is one of $A$, $B$, or $C$"."""
+    for m in re.finditer(r"\$\s*([^$]+?)\s*\$\s+is(?:,\s*correspondingly,|\s+one of)\s+"
+                         r"((?:\$[^$]+\$\s*,?\s*(?:or\s+)?)+)", book):
+        if m.group(1).replace(" ", "") == glyph:
+            return len(re.findall(r"\$[^$]+\$", m.group(2)))
+    return None
+
+
+def _prints(display: str, s: dict) -> bool:
+    """``display`` prints the symbol line's glyph and its text (spaces aside)."""
+    squash = lambda t: re.sub(r"\s+", "", str(t))  # noqa: E731
+    return squash(s.get("glyph")) in squash(display) and squash(s.get("latex")) in \
+        squash(display)
 
 
 def _symbol_words(s) -> str:
@@ -163,13 +190,16 @@ def cause_lines(cert: dict) -> list[str]:
     return out
 
 
-def check_manifest(folder: str, files: list[str], book: bytes | None) -> list[str]:
+def check_manifest(folder: str, files: list[str], book: bytes | None,
+                   whole: bool = True) -> list[str]:
     """``folder/MANIFEST.json`` against the folder's certificates and the book.
 
     Args:
         folder: the folder of certificates.
         files: the certificate files that will be checked (paths).
         book: the book's bytes, or ``None`` when no book is given.
+        whole: the folder was given (every listed certificate must be there), not some of
+            its files (each of them must still be listed, with its SHA-256).
 
     Raises:
         BookError: no manifest, a certificate missing from it, listed but absent, or whose
@@ -186,6 +216,8 @@ def check_manifest(folder: str, files: list[str], book: bytes | None) -> list[st
     for name in sorted(set(names) | set(listed)):
         if name not in listed:
             raise BookError(f"{name}: not in MANIFEST.json (not of this run)")
+        if name not in names and not whole:
+            continue
         if name not in names:
             raise BookError(f"{name}: listed in MANIFEST.json, absent from the folder")
         with open(names[name], "rb") as f:

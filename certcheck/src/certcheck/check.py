@@ -561,9 +561,11 @@ def check_certificate(cert: dict, fast: bool = True) -> tuple[str, list[str]]:
         raise CheckError(f"({cert.get('id', '?')}) {exc}") from None
 
 
-def _same_sides(rel) -> bool:
-    """The two sides are one expression as written (lets compared by name: one text)."""
-    return rel[0].get("lhs") == rel[0].get("rhs")
+def _same_sides(rel, st: Statement | None = None) -> bool:
+    """Vacuous: the two sides are one expression as written (lets compared by name), or,
+    given ``st``, both sides are constants (no atom: ``1 1 1 = 1`` proves nothing)."""
+    return rel[0].get("lhs") == rel[0].get("rhs") or \
+        st is not None and not any(st.usage[st.rels.index(rel)][k] for k in (0, 1, 3))
 
 
 def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
@@ -586,16 +588,16 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
                 not roles <= {"printed", "claim"}:
             raise CheckError("a verified statement needs identity evidence for every "
                              "printed member and claim")
-        if all(_same_sides(rel) for rel in printed or st.rels):
+        if all(_same_sides(rel, st) for rel in printed or st.rels):
             if ":" not in st.id:  # the book's ids; a reader's own (ns:name) get a note
-                raise CheckError("verified, but every printed relation (or claim) has two "
-                                 "identical sides (nothing derived: a definition or an "
-                                 "identity by definition)")
+                raise CheckError("verified, but every printed relation (or claim) is vacuous:"
+                                 " two identical sides, or constants only (nothing derived: "
+                                 "a definition, a restatement or an identity by definition)")
             lines.append("NOTE: every printed relation has two identical sides: nothing "
                          "derived here (an identity by definition)")
-        lines += [f"{_who(rel[0])}: identity by definition (its two sides are one expression "
-                  "as written); the id is verified by its other printed relations"
-                  for rel in printed if _same_sides(rel)]
+        lines += [f"{_who(rel[0])}: VACUOUS, not evidence (two identical sides, or constants"
+                  " only); the id is verified by its other printed relations"
+                  for rel in printed if _same_sides(rel, st)]
     elif verdict == "does-not-hold":
         failing = [rel for rel in by["counterexample"] + by["shape"]
                    if rel[0].get("role") in ("printed", "claim")]
@@ -603,6 +605,10 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
             raise CheckError("a does-not-hold needs a printed member with a counterexample "
                              "or a shape mismatch")
     elif verdict == "definition":
+        if all(str(x).strip() == "0" for rel in printed for s in ("lhs", "rhs")
+               for row in rel[0][s] for x in row):
+            raise CheckError("a definition whose printed relations are zeros only (0 = 0) "
+                             "defines nothing")
         if by["counterexample"] or by["shape"] or not printed or \
                 any(rel[0].get("role") != "printed" for rel in by["statement"]) or \
                 any(rel not in by["statement"] for rel in printed):

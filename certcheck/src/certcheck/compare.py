@@ -18,12 +18,14 @@ from certcheck.reader import NotRead, read_relations, tokens
 __all__ = ["compare"]
 
 
-def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) -> list[str]:
+def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
+            counts: list | None = None) -> list[str]:
     """Read ``page`` under the certificate's symbol table and check that each printed
     relation of the certificate is the printed one: each side the reader reads is the
     certificate's side as a rational function under the kinds' hypotheses. ``defs``
     (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
-    their printed definitions above the id, each cited.
+    their printed definitions above the id, each cited. ``counts``: ``(sides read,
+    printed sides)`` appended to it.
 
     Returns:
         Lines for the referee: what was read, and what was not (a finding, never a pass).
@@ -33,7 +35,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     """
     from certcheck.check import CheckError, Statement, check_identity
 
-    symbols = cert.get("symbols") or []
+    symbols, counts = cert.get("symbols") or [], [] if counts is None else counts
     kinds = {g.get("group"): g.get("kind") for g in cert.get("atoms", [])}
     for e in symbols:  # the table's kinds are the certificate's groups' kinds
         for a in e.get("atoms", []) if isinstance(e, dict) else []:
@@ -47,6 +49,10 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     for r in sorted((r for r in cert.get("relations", []) if r.get("role") == "claim"
                      and isinstance(r.get("page"), int)), key=lambda r: r["page"]):
         printed.insert(r["page"] - 1, r)  # a chain's member the page prints, proved as a claim
+    if not printed:  # a theorem in words, proved by its claims: nothing read on the page
+        counts.append((0, 2 * max(1, len(cert["relations"]))))
+        return ["NOT READ: no printed relation (the claims are the certificate's reading of"
+                " the page's words)"]
     here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
             for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
@@ -66,7 +72,14 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
     # one printed relation under several models (a restatement is not another model)
     soft = len(pairs) == 1 and len([r for r in printed if "restated" not in r]) > 1
     pairs = pairs * len(printed) if len(pairs) == 1 and len(printed) > 1 else pairs
+    if len(pairs) > len(printed) and cert.get("verdict") != "does-not-hold":  # one fails
+        raise CheckError(f"({cert.get('id')}) the page prints {len(pairs)} relation(s), the "
+                         f"certificate proves {len(printed)}: a printed relation is missing "
+                         "or one not printed is added")
+    if len(pairs) > len(printed) == 1 and not held:  # the chain's member that fails:
+        pairs = [p for p in pairs if _agrees(cert, printed[0], p, lets, fast)][:1] or pairs
     if len(pairs) != len(printed):
+        counts.append((0, 2 * len(printed)))
         return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
                 f"has {len(printed)} (a family the reader does not match); each relation is "
                 "the certificate's word"]
@@ -87,6 +100,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
         whole = bool(check_identity(st := probe(batch), st.rels, fast))
     except CheckError:
         whole = False
+    n_read = 0
     for k, rel in enumerate(printed):
         read, matched = [], []
         for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
@@ -95,15 +109,20 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
                            "word")
                 continue
             theirs = rel[side]
-            if assumed and mine.shape != (len(theirs), len(theirs[0])):
-                out.append(f"NOT READ: relation {k + 1}'s {side} (a 1, O or 0 of a size "
-                           "other than 3); the certificate's word")
-                continue
             if soft and mine.shape != (len(theirs), len(theirs[0])):
                 out.append(f"NOT READ: relation {k + 1}'s {side} (the printed relation's "
                            f"shape is not this model's); the certificate's word")
                 continue
-            if mine.shape != (len(theirs), len(theirs[0])):
+            o = pairs[k][side == "lhs"]  # a bare 0 or 1: the size of the page's other side
+            if assumed and None is not _unit_of(mine.rows) == _unit_of(theirs) and not o[1] \
+                    and getattr(o[0], "shape", 0) == (len(theirs), len(theirs[0])):
+                mine = M(theirs)
+            if assumed and isinstance(o[0], NotRead) and mine.shape != (len(theirs), len(
+                    theirs[0])):  # a bare 0 or 1 whose size the other side would give
+                out.append(f"NOT READ: relation {k + 1}'s {side} (a bare 0 or 1 of a size "
+                           "the page's other side, not read, would give); the certificate's")
+                continue
+            if mine.shape != (len(theirs), len(theirs[0])):  # a 1, O or 0 sized so too
                 raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
                                  f"the page's reads "
                                  f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
@@ -128,13 +147,41 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None) 
             tentative = soft or any(c.endswith("an equation") for c in cited)
             (matched if tentative else read).append(
                 side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))
+        n_read += len(read) + len(matched)
         if read:
             out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
                        "certificate's under the symbol table")
         if matched:  # a difference here would be NOT READ, not a rejection
             out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
                        "the certificate's" + (" under one of its models" if soft else ""))
+    counts.append((n_read, 2 * len(printed)))
     return out
+
+
+def _agrees(cert: dict, rel: dict, pair: tuple, lets: list, fast: bool) -> bool:
+    """Both sides of ``pair`` (a member of the page's chain) read firmly and are ``rel``'s."""
+    from certcheck.check import CheckError, Statement, check_identity
+    if any(isinstance(m, NotRead) or m.shape != (len(rel[s]), len(rel[s][0])) or
+           any(c.endswith("an equation") for c in cited)
+           for s, (m, _, cited) in zip(("lhs", "rhs"), pair, strict=True)):
+        return False
+    st = Statement({**cert, "verdict": "verified", "let": [*cert.get("let", []), *lets],
+                    "relations": [{"label": "member", "role": "printed", "lhs": m.rows,
+                                   "rhs": rel[s], "evidence": {"type": "identity"}}
+                                  for s, (m, _, _) in zip(("lhs", "rhs"), pair, strict=True)]})
+    try:
+        return bool(check_identity(st, st.rels, fast))
+    except CheckError:
+        return False
+
+
+def _unit_of(rows: list) -> str | None:
+    """``"0"`` for a zero matrix, ``"1"`` for an identity (entries as written), else None."""
+    t = [[str(x).replace(" ", "") for x in row] for row in rows]
+    if all(x == "0" for row in t for x in row):
+        return "0"
+    eye = all(x == ("1" if i == j else "0") for i, row in enumerate(t) for j, x in enumerate(row))
+    return "1" if eye and len(t) == len(t[0]) else None
 
 
 def _braces(page: str):

@@ -682,7 +682,9 @@ def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
 
     Returns:
         ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
-        reason}}``; ``rechecked`` is ``None`` when certcheck is not found.
+        reason}, "not_read": {id: what}}``; ``rechecked`` is ``None`` when certcheck is
+        not found; ``not_read``: ids proved whose printed sides are not all read from the
+        page (certcheck's exit 3).
     """
     import os
     import subprocess
@@ -690,7 +692,7 @@ def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
 
     where = _checker_path()
     if where is None:
-        return {"rechecked": None, "checker": None, "failures": {}}
+        return {"rechecked": None, "checker": None, "failures": {}, "not_read": {}}
     env = dict(os.environ)
     if where:
         env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
@@ -698,8 +700,11 @@ def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
     proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", *book_args,
                            str(directory)],
                           capture_output=True, text=True, env=env, check=False)
-    failures = {}
+    failures, not_read = {}, {}
     for line in proc.stdout.splitlines():
+        if line.startswith("NOT READ "):
+            name, _, why = line[len("NOT READ "):].partition(": ")
+            not_read[files.get(name, name)] = why
         if line.startswith("FAILED "):
             name, _, why = line[len("FAILED "):].partition(": ")
             if name in files:
@@ -707,10 +712,10 @@ def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
             else:  # the folder's manifest: no id of its own
                 failures[f"({name.split(' ')[0]})"] = why
     passed = {i: i not in failures for i in files.values()}
-    if proc.returncode not in (0, 1):
+    if proc.returncode not in (0, 1, 3):
         failures["(certcheck)"] = proc.stderr.strip()[-300:]
     return {"rechecked": passed, "checker": where or "installed certcheck",
-            "failures": failures}
+            "failures": failures, "not_read": not_read}
 
 
 def certificate_field(summary: dict, eq_id: str) -> dict:
@@ -732,6 +737,9 @@ def certify_line(summary: dict, directory) -> str:
         return s + "; certcheck not found, not re-checked (pip install ./certcheck)"
     ok = sum(summary["rechecked"].values())
     s += f"; certcheck re-checked {ok} of {len(summary['rechecked'])}"
+    if summary.get("not_read"):
+        s += (f", {len(summary['not_read'])} of them not read from the page on every side "
+              "(the certificate's word there)")
     for i, why in summary["failures"].items():
         s += f"\n  certcheck FAILED ({i}): {why}"
     return s

@@ -1,0 +1,168 @@
+"""certcheck fails closed: every forgery of a real certificate by its mathematics
+(tests/_certforge.py: ``0 = 1 - 1`` verified, ``0 = 0`` a definition, one entry alone, a
+forged does-not-hold, the corrected form passed off as the printed one, a true relation
+given a shape mismatch, a relation dropped, sides scaled or negated, a citation the page
+does not print, files given instead of the folder) exits nonzero with a line naming the id;
+a side not read is never a pass; the summary counts what the per-id lines say. Three ids
+here (a verified id read on every side, one of several relations, a does-not-hold with its
+corrected forms), the chapter in slow."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import re
+import sys
+from pathlib import Path
+
+import _certforge as forge
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+SRC = ROOT / "certcheck" / "src"
+sys.path.insert(0, str(SRC))
+
+from certcheck.__main__ import main  # noqa: E402
+
+from certcheck import CheckError, check_certificate  # noqa: E402
+
+BOOK = ROOT.parent / "shared" / "book" / "angeles-chapter3.md"
+QUICK = ["3.13", "3.18", "3.97b"]
+
+
+def _certs(ids: list[str]) -> dict:
+    from rigidsym.checking.certifying.certificates import certificate
+    from rigidsym.registry.declarations import REGISTRY, load_all
+
+    load_all()
+    return {i: json.loads(json.dumps(certificate(i, REGISTRY[i].expected))) for i in ids}
+
+
+def _run(*args) -> tuple[int, str]:
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        rc = main([*map(str, args)])
+    return rc, out.getvalue()
+
+
+def _named(out: str, eq_id: str) -> bool:
+    """A FAILED or NOT READ line names the id."""
+    return any(f"({eq_id})" in x for x in out.splitlines()
+               if x.startswith(("FAILED", "NOT READ")))
+
+
+def _rejected(tmp: Path, eq_id: str, cert: dict) -> tuple[int, str]:
+    forge.write_run(tmp, {f"{eq_id}.json": cert}, BOOK)
+    return _run("--book", BOOK, tmp, "--quiet")
+
+
+@pytest.fixture(scope="module")
+def quick(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    return _certs(QUICK)
+
+
+def _forgeries(certs: dict):
+    for i, c in certs.items():
+        for name, f in forge.FORGERIES.items():
+            t = f(c)
+            if t is not None:
+                yield i, name, t
+
+
+def test_forgeries_rejected_naming_the_id(quick, tmp_path):
+    seen = set()
+    for k, (i, name, t) in enumerate(_forgeries(quick)):
+        rc, out = _rejected(tmp_path / str(k), i, t)
+        assert rc != 0 and _named(out, i), (i, name, out[-600:])
+        seen.add(name)
+    assert len(seen) >= 8, seen  # the share meets most kinds of forgery
+
+
+def test_files_given_are_held_to_their_folders_manifest(quick, tmp_path):
+    """A changed file given by name (not its folder) is still held to the run's manifest."""
+    i = "3.13"
+    forge.write_run(tmp_path, {f"{i}.json": quick[i]}, BOOK)
+    (tmp_path / f"{i}.json").write_text(json.dumps(forge.zero_is_one_minus_one(quick[i])))
+    rc, out = _run("--book", BOOK, tmp_path / f"{i}.json", "--quiet")
+    assert rc == 1 and "MANIFEST" in out and "SHA-256" in out, out
+
+
+def test_summary_counts_the_per_id_lines_and_exit_says_unread(quick, tmp_path):
+    forge.write_run(tmp_path, {f"{i}.json": c for i, c in quick.items()}, BOOK)
+    rc, out = _run("--book", BOOK, tmp_path, "--quiet")
+    lines = out.splitlines()
+    checked = sum(x.startswith("CHECKED") for x in lines)
+    unread = [x for x in lines if x.startswith("NOT READ")]
+    failed = sum(x.startswith("FAILED") for x in lines)
+    m = re.search(r"(\d+) of (\d+) certificates checked .*?, (\d+) not read on every side "
+                  r"\((\d+) of (\d+) printed sides not read\), (\d+) failed", lines[-1])
+    assert m, lines[-1]
+    assert (int(m[1]), int(m[2]), int(m[3]), int(m[6])) == \
+        (checked, len(quick), len(unread), failed)
+    assert int(m[4]) == sum(int(re.search(r"(\d+) of \d+ printed sides", x)[1])
+                            for x in unread)
+    assert rc == (1 if failed else 3 if unread else 0)
+    if unread and not failed:
+        assert _run("--book", BOOK, tmp_path, "--quiet", "--lenient")[0] == 0
+    assert _run(tmp_path, "--quiet")[0] == 3  # no book: nothing read from the page
+    assert _run(tmp_path, "--quiet", "--lenient")[0] == 0
+
+
+def _vacuous(lhs: str, rhs: str, eq_id: str = "3.0") -> dict:
+    return {"format": "rigidsym-certificate", "version": 1, "id": eq_id,
+            "verdict": "verified",
+            "atoms": [{"group": "e", "kind": "unit", "names": ["e_1", "e_2", "e_3"],
+                       "timed": False}], "let": [],
+            "relations": [{"label": "", "role": "printed", "lhs": [[lhs]], "rhs": [[rhs]],
+                           "evidence": {"type": "identity"}}]}
+
+
+@pytest.mark.parametrize("lhs, rhs", [("1*1*1*1*1*1", "1"), ("e_1", "e_1"), ("2 - 1", "1")])
+def test_vacuous_verified_is_not_evidence(lhs, rhs):
+    """Identical sides, or constants only, prove nothing: a verified id made of them fails,
+    and beside a real relation it is marked VACUOUS."""
+    with pytest.raises(CheckError, match="vacuous"):
+        check_certificate(_vacuous(lhs, rhs))
+    c = _vacuous("e_1^2 + e_2^2 + e_3^2", "1")
+    c["relations"].append({**c["relations"][0], "lhs": [[lhs]], "rhs": [[rhs]]})
+    assert any("VACUOUS" in x for x in check_certificate(c)[1])
+
+
+# ------------------------------------------------------------------ slow: the chapter
+@pytest.mark.slow
+def test_chapter_forgeries_rejected_and_none_vacuous(tmp_path):
+    """Every forgery of every id of the chapter is rejected naming the id, and no verified
+    id of the chapter rests on vacuous relations only (checked by certcheck itself)."""
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    from rigidsym.registry.declarations import REGISTRY, load_all
+
+    load_all()
+    certs = _certs([i for i in REGISTRY if ":" not in i])
+    missed = []
+    for k, (i, name, t) in enumerate(_forgeries(certs)):
+        rc, out = _rejected(tmp_path / str(k), i, t)
+        if rc == 0 or not _named(out, i):
+            missed.append((i, name))
+    assert not missed, missed
+    flagged, expected = set(), set()
+    for i, c in certs.items():
+        try:
+            check_certificate(c)
+        except CheckError as exc:
+            flagged |= {i} if "vacuous" in str(exc) else set()
+        if c["verdict"] == "verified" and all(_constant_or_same(c, r) for r in c["relations"]
+                                              if r["role"] == "printed"):
+            expected.add(i)
+    assert flagged == expected, (flagged, expected)
+
+
+def _constant_or_same(cert: dict, rel: dict) -> bool:
+    """Identical sides as written, or no atom (nor a let) named on either side."""
+    names = {n for g in cert["atoms"] for n in g["names"]}
+    words = set(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", json.dumps([rel["lhs"], rel["rhs"]])))
+    return rel["lhs"] == rel["rhs"] or not words & names and not any(
+        w.startswith("let") or w in ("cos", "sin") for w in words)
