@@ -14,7 +14,7 @@ from sympy.matrices.kind import MatrixKind
 from sympy.polys.matrices import DomainMatrix
 from sympy.polys.matrices.exceptions import DMNonInvertibleMatrixError
 
-from rigidsym.algebra.operators import Diff, DiffEntry
+from rigidsym.algebra.operators import Det, Diff, DiffEntry
 from rigidsym.algebra.rigid_motions import LieOp
 from rigidsym.registry.declarations import Rel
 
@@ -256,6 +256,8 @@ def derived_sides(r, model: dict, lhs, rhs) -> tuple:
     or the sides are still the same expression (a definition of the model: the checker
     rejects it as a verification)."""
     def side(x):
+        if isinstance(x, Det | sp.Determinant):   # every entry in place, a zero one too
+            return laplace_determinant(explicit(x.args[0], model))
         if isinstance(x, sp.Inverse) and x is r.lhs:  # X^-1 = Y: shown as X Y = 1
             with sp.evaluate(False):
                 return explicit(x.arg, model) * explicit(r.rhs, model)
@@ -283,6 +285,30 @@ def derived_sides(r, model: dict, lhs, rhs) -> tuple:
     if isinstance(new[0], sp.MatrixBase) != isinstance(lhs, sp.MatrixBase):
         return lhs, rhs
     return new
+
+
+def laplace_determinant(m: sp.MatrixBase):
+    """The determinant of the explicit square matrix ``m`` by Laplace's expansion along the
+    first row, left unevaluated: every entry appears, a zero one too, so that a checker,
+    not sympy's triangular shortcut (a product of the diagonal), does the arithmetic
+    (``det(U) = 1`` of Eq. (3.30) is then a polynomial identity in the entries of
+    ``A - B``). ``m`` is at most 6 x 6 (720 products).
+
+    Raises:
+        ValueError: ``m`` is not square or larger than 6 x 6.
+    """
+    n = m.rows
+    if m.cols != n or not 1 <= n <= 6:
+        raise ValueError(f"m: expected a square matrix of at most 6 x 6, got {m.shape}")
+    if n == 1:
+        return m[0, 0]
+    with sp.evaluate(False):
+        terms = []
+        for j in range(n):
+            minor = laplace_determinant(m.minor_submatrix(0, j))
+            term = sp.Mul(m[0, j], minor)
+            terms.append(term if j % 2 == 0 else sp.Mul(sp.Integer(-1), term))
+        return sp.Add(*terms)
 
 
 def identical_by_definition(r: Rel, model: dict) -> bool:
