@@ -22,7 +22,7 @@
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.992 of what
- * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * the accuracy rule allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x5, x8, x9, x10, x11, x12, x13, x15, x16, x18, x19, x20, x21, x25, x26, x29, L_tilde_dot[2], L_tilde_dot[4]
  */

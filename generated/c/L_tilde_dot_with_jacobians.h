@@ -21,7 +21,7 @@
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.997 of what
- * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * the accuracy rule allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x3, x5, x8, x9, x10, x11, x12, x13, x15, x19, x20, x21, x23, x24, x25, x26, x27, x34, x36, x37, x40, x45, x51, x54, x56, x57, x60, x71, x73, x74, x83, x84, x85, x91, x92, x93, x96, x98, x101
  */

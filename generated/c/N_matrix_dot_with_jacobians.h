@@ -14,7 +14,7 @@
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.89 of what
- * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * the accuracy rule allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x0, x2, x4, x7, x8, x9, x10, x11, x17, x18, x19, x21, x27, x40, x149, x151
  */

@@ -32,7 +32,7 @@
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.729 of what
- * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * the accuracy rule allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x3, x5, x6, x8, x12, x17, x32, x37, x40, x95, x96, x98, x104
  */

@@ -53,7 +53,7 @@ typedef struct {
  * argument gets a worse value than libm's. With RIGIDSYM_LIBMVEC (opt-in: `RIGIDSYM_LIBMVEC=1
  * rigidsym build-c`, with -fopenmp-simd -fno-builtin-sin -fno-builtin-cos, so that sin and
  * cos are not fused into a scalar sincos call): glibc's libmvec, within 4 ulp, which takes
- * trig kernels past issue 37's rule (docs/accuracy.md). */
+ * trig kernels past the accuracy rule (docs/accuracy.md). */
 #if defined(RIGIDSYM_LIBMVEC)
 #pragma omp declare simd notinbranch
 double sin(double);
@@ -153,8 +153,8 @@ static inline void rigidsym_sincos(double x, double *s_out, double *c_out)
      * sine's leading term S1 y0^3 as a double-double, y0^3 with its errors (vl) and S1 v
      * with its own (pl), added to y0 by Fast2Sum (|ph| < |y0|): the sine 0.73 -> 0.60 ulp,
      * largest error of the pair 0.60 (libm's 0.52; benchmarks/trig_pair.py). It weighed at
-     * gimbal lock, where the Euler-angle rates amplify it (docs/accuracy.md: 5 C rows
-     * past issue 37's rule before). The cosine's C1 z^2 as a double-double too (0.60 ->
+     * gimbal lock, where the Euler-angle rates amplify it (docs/accuracy.md: without
+     * it 5 C rows are past the accuracy rule). The cosine's C1 z^2 as a double-double too (0.60 ->
      * 0.55) was measured and left: 9 % more time on a kernel of two pairs, no row gained. */
     const double zl = fma(y0, y0, -z);
     const double vl = fma(z, y0, -v) + zl * y0;
@@ -208,10 +208,10 @@ static inline double rigidsym_cos(double x)
 
 /* The float32 code (sample functions and lanes loops) without FMA contraction: the float32
  * precision plans (rigidsym.codegen.accuracy.float32) are measured on a simulation that rounds every
- * product, and a contracted `a b + c` moved seven plans past issue 37's rule at 1000 points
+ * product, and a contracted `a b + c` moved seven plans past the accuracy rule at 1000 points
  * (tests/test_float32.py). GCC: an optimize pragma around them, which keeps them so under a
  * RIGIDSYM_CFLAGS with -ffp-contract=fast (the default flags have -ffp-contract=off for all
- * the code since issue 37); elsewhere nothing (clang ignores contraction pragmas under
+ * the code); elsewhere nothing (clang ignores contraction pragmas under
  * -ffp-contract=fast). */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(RIGIDSYM_F32_CONTRACT)
 #define RIGIDSYM_F32_BEGIN _Pragma("GCC push_options") _Pragma("GCC optimize(\"fp-contract=off\")")

@@ -23,7 +23,7 @@
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.875 of what
- * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * the accuracy rule allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   trig_0, trig_1, x1, x2, x4, x5, x6, x7, x8, x9, x12, x13, x15, x16, x17, x19, x20, x21, x22, x25, x26, x30, x31, x32, x33, x34, x35, x37, x38, x39, x40, x41, x43, x47, x54, x59, x65, x69, x73, x76, x77, x78, x79, x80, x81, x82, x83, x84, x85, x86, x87, p0_D_e[8]
  */

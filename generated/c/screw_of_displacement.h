@@ -33,7 +33,7 @@
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.997 of what
- * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * the accuracy rule allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   branch 1: x3, x5, x9, x16, x17, x18, x19, x20, x22, x24, x34, x35, x37, pitch[0]
  *   branch 2: x1, x4, x6, x7, x13, x14, x15, x16, x19, x38, x39, x40, pitch[0], plucker[3]

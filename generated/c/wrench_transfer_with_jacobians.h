@@ -13,7 +13,7 @@
  *
  * float32 kernels: float arithmetic, double only for the nodes that need it (precision plan
  * measured at generation, rigidsym.codegen.accuracy.float32; worst error 0.5 of what
- * the rule of issue 37 allows, max(2 e_textbook, 4 u), per output, normwise, at its
+ * the accuracy rule allows, max(2 e_textbook, 4 u), per output, normwise, at its
  * points where the kernel computed in double is within it). In double:
  *   none
  */
