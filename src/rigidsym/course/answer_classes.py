@@ -41,7 +41,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Verdict", "KINDS", "declared", "judge", "names_of", "data_names", "rotations_onto"]
+__all__ = ["Verdict", "KINDS", "declared", "judge", "names_of", "data_names", "rotations_onto",
+           "column_signs"]
 
 KINDS = ("axis-angle", "sign", "point of line", "columns up to sign", "angle", "up to scale",
          "rotation onto")
@@ -177,7 +178,8 @@ def judge(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Verdict]
                 target = k * rows
         flipped = [j for j, s in enumerate(signs) if s < 0]
         note = f"equivalent: columns {flipped} negated" if ok and flipped else "right"
-        return {name: Verdict(ok, note, target)}
+        others = tuple(m for m in column_signs(k) if not np.array_equal(m, target))
+        return {name: Verdict(ok, note, target, members=others)}
     if kind == "angle":
         period = math.pi if decl.get("period") == "pi" else 2 * math.pi
         w = _wrap(g - k, period)
@@ -231,6 +233,14 @@ def _sign_group(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Ve
                 f" {n} + 2 pi k (k = {turns})"
         verdicts[n] = Verdict(ok, note, target, period=2 * math.pi if n == angle else None)
     return verdicts
+
+
+def column_signs(k: np.ndarray) -> list[np.ndarray]:
+    """The members of a ``columns up to sign`` class: ``k`` with each column's sign
+    chosen, every choice (``k`` first)."""
+    n = k.shape[1]
+    return [k * np.array([-1.0 if c >> j & 1 else 1.0 for j in range(n)])
+            for c in range(2 ** n)]
 
 
 #: the four sign matrices of determinant +1: a principal axis has no sense

@@ -529,7 +529,8 @@ def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
         if v.shape == g.shape and _close(g, v, max(scale, float(np.max(np.abs(v))))):
             return Graded(name, False, word, shown, f"matches the solution with {detail}",
                           note=f"{word} (along the way)")
-    figures = rounded_figures(g, e)
+    figures = next((f for m in (e, *(verdict.members if verdict is not None else ()))
+                    if (f := rounded_figures(g, m))), 0)
     if figures:
         return Graded(name, False, "rounded", shown,
                       f"rounded to {figures} significant figures (the tolerance: {tol})",

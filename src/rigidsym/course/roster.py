@@ -251,9 +251,9 @@ def _key_section(head: str, sols: list) -> str:
 def _template(students: list, columns: list) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["student", *columns])
+    w.writerow(["student", "id", *columns])
     for st in students:
-        w.writerow([st["name"]] + [""] * len(columns))
+        w.writerow([st["name"], st.get("id") or ""] + [""] * len(columns))
     return buf.getvalue()
 
 
