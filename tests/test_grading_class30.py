@@ -140,29 +140,53 @@ def _typed(v):
 
 
 def _answer(rng, ex_id, name, member, key, data):
-    """(what the student types, the expected status, the score) for one box."""
+    """(what the student types, the expected status, the score, the value typed: an
+    array, or None for a blank or a truth) for one box."""
     v, behaviour = member[name], rng.choice(BEHAVIOURS)
     if behaviour == "blank":
-        return "", "missing", 0.0
+        return "", "missing", 0.0, None
     if isinstance(v, bool):
         if behaviour == "right":
-            return _typed(v), "right", 1.0
-        return _typed(not v), "wrong", 0.0
+            return _typed(v), "right", 1.0, None
+        return _typed(not v), "wrong", 0.0, None
     if behaviour == "rounded":
         r = np.vectorize(lambda x: float(f"{x:.1e}"))(v)
         declared = ex_id in SIGN_GROUP or ex_id in POINT_OF_AXIS or ex_id in ROTATION or \
             ex_id == "ex3.12"
         if _in_class(ex_id, name, r, member, key, data):
-            return _typed(r), "right", 1.0
+            return _typed(r), "right", 1.0, r
         if not declared and np.any(v != 0):
-            return _typed(r), "rounded", ROUNDING
+            return _typed(r), "rounded", ROUNDING, r
         behaviour = "slip"
     if behaviour == "slip" and np.any(v != 0):
         unit = name in UNITS_M.get(ex_id, ())
         edited = v * 1000.0 if unit else -v
         if not _in_class(ex_id, name, edited, member, key, data):
-            return _typed(edited), "slip", SLIP
-    return _typed(v), "right", 1.0
+            return _typed(edited), "slip", SLIP, edited
+    return _typed(v), "right", 1.0, v
+
+
+def _sign_group(ex_id, got, key):
+    """A sign group judged jointly, as the documented rule says: the group's sign is the
+    one under which most of the typed pieces are right (the key's on a tie); a piece
+    right only under the other sign is that sign's slip. ``got``: name -> (text,
+    status, score, value), changed in place."""
+    e, phi, pl = SIGN_GROUP[ex_id]
+
+    def right(n, value, s):
+        k = key[n]
+        if n == phi:
+            return _near((value - s * k + math.pi) % (2 * math.pi) - math.pi, 0.0, _scale(k))
+        return _near(value, s * k, _scale(k))
+
+    typed = {n: got[n][3] for n in (e, phi, pl) if got[n][3] is not None}
+    count = {s: sum(right(n, v, s) for n, v in typed.items()) for s in (1.0, -1.0)}
+    s = -1.0 if count[-1.0] > count[1.0] else 1.0
+    for n, v in typed.items():
+        if right(n, v, s):
+            got[n] = (got[n][0], "right", 1.0, v)
+        elif right(n, v, -s):
+            got[n] = (got[n][0], "slip", SLIP, v)       # -(s k): the sign slip
 
 
 def _make_class(tmp_path, problems, names):
@@ -189,12 +213,13 @@ def _answer_class(tmp_path, key, seed):
         cells = {}
         for p in r["problems"]:
             k = {a: _num(p["answers"][a]) for a in p["asked"]}
-            k = {a: v for a, v in k.items()}
             data = {n: np.array(_num(v), dtype=float) for n, v in p["data"].items()
                     if isinstance(v, list)}
             member = _members(rng, p["id"], k, data)
-            for a in p["asked"]:
-                text, status, score = _answer(rng, p["id"], a, member, k, data)
+            got = {a: _answer(rng, p["id"], a, member, k, data) for a in p["asked"]}
+            if p["id"] in SIGN_GROUP:
+                _sign_group(p["id"], got, k)
+            for a, (text, status, score, _) in got.items():
                 cells[f"P{p['problem']}.{a}"] = text
                 expected[(r["id"], p["problem"], a)] = (status, score)
         typed[r["id"]] = cells
@@ -217,7 +242,7 @@ def _check_grades(tmp_path, key, expected):
         else:
             assert x["status"] == status, where
         assert float(x["points"]) == pytest.approx(score * float(x["max_points"]),
-                                                   abs=1e-9), where
+                                                   rel=1e-5, abs=1e-9), where   # 6 digits
     book = {r["ID number"]: r for r in
             csv.DictReader((tmp_path / "c" / "gradebook.csv").open(encoding="utf-8-sig"))}
     assert set(book) == {r["id"] for r in key["students"]}
