@@ -322,3 +322,27 @@ def test_a_class_of_thirty_graded_to_the_end(tmp_path, capsys):
     for r in key["students"]:
         p = r["problems"][4]
         assert p["data"]["I_A"] != p["data"]["I_B"]
+
+
+def test_rows_of_one_name_are_two_students_or_a_stated_refusal(tmp_path):
+    """Two CSV rows of one name: told apart by their id cells (an id without its leading
+    zeros, as a spreadsheet writes it, included); without ids, each row is refused
+    with a line naming the roster's ids, never merged into one student."""
+    from rigidsym.course.answers import read_class_answers
+    from rigidsym.course.matching import match_answers
+
+    students = [{"student": "María García", "id": "00007"},
+                {"student": "María García", "id": "00012"},
+                {"student": "Zoë Müller", "id": "00013"}]
+    table = tmp_path / "a.csv"
+    table.write_text("student,id,P1.x\nMaría García,00012,1\nMaría García,7,2\n"
+                     "Zoë Müller,,3\n", encoding="utf-8")
+    labelled, problems = read_class_answers(table)
+    assert len(labelled) == 3 and not problems
+    got, problems = match_answers(labelled, students)
+    assert not problems
+    assert (got[1][1]["P1.x"], got[0][1]["P1.x"], got[2][1]["P1.x"]) == ("1", "2", "3")
+    table.write_text("student,P1.x\nMaría García,1\nMaría García,2\n", encoding="utf-8")
+    got, problems = match_answers(read_class_answers(table)[0], students)
+    assert not got and len(problems) == 2
+    assert all("00007" in p and "00012" in p for p in problems)
