@@ -118,8 +118,9 @@ BOXES = {
                "invariants": "invariants of [I]: tr I, the sum of its principal 2 x 2 "
                              "minors, det I (3, in this order)",
                "principal_moments": "principal moments, ascending (3, kg m^2)",
-               "Q_B_A": "rotation [Q]_B taking A's frame to B's, [I]_B = Q [I]_A Q^T "
-                        "(3 x 3)",
+               "Q_B_A": "a rotation [Q]_B taking A's frame to B's, [I]_B = Q [I]_A Q^T "
+                        "(3 x 3; a principal axis has no sense, so four rotations have "
+                        "this property when the principal moments differ: give any one)",
                "residual": "least-squares residual (kg m^2)"},
     "ex3.19": {"w_2": "wrench [w]_2 = [n_2; f_2] at P, in F_2 (6: N m, then N)",
                "n_2": "moment [n]_2 about P, in F_2 (3, N m)",
@@ -144,7 +145,8 @@ ANSWER_FORMAT = (
     "the right answer: give at least 4 significant figures. An axis and angle may be given "
     "as (e, phi) or (-e, -phi), an angle plus any whole number of turns, with the Plücker "
     "array of the same sign as e; a point of an axis may be any point of it; principal "
-    "axes each with either sign.")
+    "axes each with either sign; a rotation asked by a property it has (Q [I]_A Q^T = "
+    "[I]_B) may be any rotation that has it.")
 
 
 def task(ex_id: str, statement: str) -> str:
