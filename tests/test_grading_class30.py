@@ -346,3 +346,29 @@ def test_rows_of_one_name_are_two_students_or_a_stated_refusal(tmp_path):
     got, problems = match_answers(read_class_answers(table)[0], students)
     assert not got and len(problems) == 2
     assert all("00007" in p and "00012" in p for p in problems)
+
+
+def test_moodles_cloze_scores_a_truth_typed_as_labelled():
+    """A true-or-false box in moodle.xml is a Cloze MULTICHOICE of the two words its
+    label names: Moodle's mark (the chosen option's fraction, "=" the right one) for
+    `true` and `false` is the gradebook's for the same word."""
+    import re
+
+    from rigidsym import exercises as ex
+    from rigidsym.course.exam import asked
+    from rigidsym.course.exam_text import box_label
+    from rigidsym.course.grading import grade
+    from rigidsym.course.roster import moodle_xml
+    from rigidsym.course.worked import solution_record
+
+    s = ex.solve("3.14")
+    rec = dict(solution_record(s), problem=1, weight=1, asked=asked(s),
+               labels={a: box_label(s.id, a) for a in asked(s)})
+    text = moodle_xml("q", {"students": [{"student": "Amy", "problems": [rec]}]})
+    para = text.split("acceptable?")[1].split("</p>")[0]
+    options = re.search(r"\{\d+:MULTICHOICE:([^}]*)\}", para).group(1).split("~")
+    for word in ("true", "false"):
+        moodle = 1.0 if f"={word}" in options else 0.0
+        assert word in options or f"={word}" in options
+        g = next(g for g in grade(s, {"acceptable": word}) if g.name == "acceptable")
+        assert moodle == (1.0 if g.correct else 0.0), (word, options)
