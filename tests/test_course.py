@@ -113,7 +113,7 @@ def _write(path, rows):
 def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsys):
     d = made
     key = _key(made)
-    header = next(csv.reader((d / "out" / "answers.csv").open()))
+    header = next(csv.reader((d / "out" / "answers.csv").open(encoding="utf-8-sig")))
     right = {r["student"]: {f"P{p['problem']}.{a}": _typed(p["answers"][a])
                             for p in r["problems"] for a in p["asked"]}
              for r in key["students"]}
@@ -144,7 +144,7 @@ def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsy
     out = captured.out
     assert "Cy Cole" in captured.err and "not graded" in captured.err
     assert "P1.n_2: transpose" in out and "P1.n_2: unit" in out
-    rows = list(csv.DictReader((d / "out" / "grades.csv").open()))
+    rows = list(csv.DictReader((d / "out" / "grades.csv").open(encoding="utf-8-sig")))
     by = {(r["student"], r["problem"], r["answer"]): r for r in rows}
     assert by[("Bob Burr", "1", "n_2")]["slip"] == "transpose"
     assert "Q used for Q^T" in by[("Bob Burr", "1", "n_2")]["detail"]
@@ -153,7 +153,8 @@ def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsy
     assert by[("Bob Burr", "1", "w_2")]["status"] == "missing"
     assert all(r["status"] == "not graded" for r in rows if r["student"] == "Cy Cole")
     # partial credit: problem 1 (weight 2, 3 boxes): Amy 2 right + a named slip at 0.5
-    book = {r["Full name"]: r for r in csv.DictReader((d / "out" / "gradebook.csv").open())}
+    with (d / "out" / "gradebook.csv").open(encoding="utf-8-sig") as fh:   # a BOM: Excel
+        book = {r["Full name"]: r for r in csv.DictReader(fh)}
     assert float(book["Amy Ames"]["Problem 1"]) == pytest.approx(2 * (2 + 0.5) / 3, abs=1e-3)
     assert float(book["Amy Ames"]["Total"]) == pytest.approx(2 * 2.5 / 3 + 1, abs=1e-3)
     assert float(book["Bob Burr"]["Problem 1"]) == pytest.approx(2 * 1.5 / 3, abs=1e-3)
@@ -166,7 +167,7 @@ def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsy
             for p in key["students"][0]["problems"]}
     (folder / "Amy_Ames.json").write_text(json.dumps(mine))
     assert main(["grade", str(d / "out"), str(folder)]) == 12     # Bob, Cy: not graded
-    rows = list(csv.DictReader((d / "out" / "grades.csv").open()))
+    rows = list(csv.DictReader((d / "out" / "grades.csv").open(encoding="utf-8-sig")))
     assert all(r["status"] == "right" for r in rows if r["student"] == "Amy Ames")
     assert book["Amy Ames"]["Email address"] == "amy@example.org"
 

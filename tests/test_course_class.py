@@ -54,7 +54,7 @@ def test_thirty_students_made_and_graded(tmp_path, capsys):
     for k in range(4):
         assert len({json.dumps(r["problems"][k]["data"], sort_keys=True)
                     for r in key["students"]}) == 30, k
-    header = next(csv.reader((tmp_path / "c" / "answers.csv").open()))
+    header = next(csv.reader((tmp_path / "c" / "answers.csv").open(encoding="utf-8-sig")))
     rng = random.Random(1)
     rows = [header]
     for r in key["students"]:

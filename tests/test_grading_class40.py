@@ -141,7 +141,7 @@ def _grade_and_compare(tmp_path, key, expected, capsys):
     err = capsys.readouterr().err
     assert code == 12, err                      # two files not graded, each on its line
     assert "broken.json: not graded" in err and "Nobody Here: not graded" in err
-    rows = list(csv.DictReader((tmp_path / "c" / "grades.csv").open(encoding="utf-8")))
+    rows = list(csv.DictReader((tmp_path / "c" / "grades.csv").open(encoding="utf-8-sig")))
     assert {r["id"] for r in rows} == {r["id"] for r in key["students"]}
     for r in rows:
         want = expected[r["id"]][r["answer"]]
@@ -156,7 +156,7 @@ def _grade_and_compare(tmp_path, key, expected, capsys):
             credit = 0.75 if r["slip"] == "rounded" else 0.5    # the spec's policy
             assert float(r["points"]) == pytest.approx(credit * float(r["max_points"]),
                                                        rel=1e-4), where
-    notes = list(csv.DictReader((tmp_path / "c" / "item_analysis.csv").open()))
+    notes = list(csv.DictReader((tmp_path / "c" / "item_analysis.csv").open(encoding="utf-8-sig")))
     assert sum(int(n["count"]) for n in notes) == len(rows)
     return rows
 

@@ -254,7 +254,7 @@ def _template(students: list, columns: list) -> str:
     w.writerow(["student", "id", *columns])
     for st in students:
         w.writerow([st["name"], st.get("id") or ""] + [""] * len(columns))
-    return buf.getvalue()
+    return "\ufeff" + buf.getvalue()       # a BOM: Excel reads the names' accents right
 
 
 def moodle_xml(title: str, key: dict) -> str:
