@@ -113,16 +113,18 @@ def _write(path, rows):
 def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsys):
     d = made
     key = _key(made)
-    header = next(csv.reader((d / "out" / "answers.csv").open()))
+    header = next(csv.reader((d / "out" / "answers.csv").open(encoding="utf-8-sig")))
     right = {r["student"]: {f"P{p['problem']}.{a}": _typed(p["answers"][a])
                             for p in r["problems"] for a in p["asked"]}
              for r in key["students"]}
-    _write(d / "right.csv", [header] + [[w] + [right[w][c] for c in header[1:]]
+    ids = {r["student"]: r["id"] for r in key["students"]}
+    assert header[:2] == ["student", "id"]
+    _write(d / "right.csv", [header] + [[w, ids[w]] + [right[w][c] for c in header[2:]]
                                         for w in right])
     assert main(["grade", str(d / "out"), str(d / "right.csv")]) == 0
     capsys.readouterr()
     # Bob: 3.19 with Q for Q^T (n_2) and the offset typed in mm (f_2 right, w_2 blank);
-    # 3.8 blank. Cy: no row at all.
+    # 3.8 blank. Cy: no row at all (not graded, never a silent zero).
     def slipped(k):
         """Student k's n_2 with Q for Q^T, and with the offset d typed in mm."""
         p = key["students"][k]["problems"][0]
@@ -135,25 +137,28 @@ def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsy
     amy["P1.n_2"] = json.dumps(_floats(slipped(0)[1]))
     bob_row = {"P1.n_2": json.dumps(_floats(slipped(1)[0])),
                "P1.f_2": right["Bob Burr"]["P1.f_2"]}
-    _write(d / "class.csv", [header, ["Amy Ames"] + [amy[c] for c in header[1:]],
-                             ["Bob Burr"] + [bob_row.get(c, "") for c in header[1:]]])
-    assert main(["grade", str(d / "out"), str(d / "class.csv")]) == 1
-    out = capsys.readouterr().out
+    _write(d / "class.csv", [header, ["Amy Ames", ""] + [amy[c] for c in header[2:]],
+                             ["Bob Burr", ""] + [bob_row.get(c, "") for c in header[2:]]])
+    assert main(["grade", str(d / "out"), str(d / "class.csv")]) == 11   # Cy: not graded
+    captured = capsys.readouterr()
+    out = captured.out
+    assert "Cy Cole" in captured.err and "not graded" in captured.err
     assert "P1.n_2: transpose" in out and "P1.n_2: unit" in out
-    rows = list(csv.DictReader((d / "out" / "grades.csv").open()))
+    rows = list(csv.DictReader((d / "out" / "grades.csv").open(encoding="utf-8-sig")))
     by = {(r["student"], r["problem"], r["answer"]): r for r in rows}
     assert by[("Bob Burr", "1", "n_2")]["slip"] == "transpose"
     assert "Q used for Q^T" in by[("Bob Burr", "1", "n_2")]["detail"]
     assert by[("Amy Ames", "1", "n_2")]["slip"] == "unit"
     assert "d typed in mm" in by[("Amy Ames", "1", "n_2")]["detail"]
     assert by[("Bob Burr", "1", "w_2")]["status"] == "missing"
-    assert all(r["status"] == "missing" for r in rows if r["student"] == "Cy Cole")
+    assert all(r["status"] == "not graded" for r in rows if r["student"] == "Cy Cole")
     # partial credit: problem 1 (weight 2, 3 boxes): Amy 2 right + a named slip at 0.5
-    book = {r["Full name"]: r for r in csv.DictReader((d / "out" / "gradebook.csv").open())}
+    with (d / "out" / "gradebook.csv").open(encoding="utf-8-sig") as fh:   # a BOM: Excel
+        book = {r["Full name"]: r for r in csv.DictReader(fh)}
     assert float(book["Amy Ames"]["Problem 1"]) == pytest.approx(2 * (2 + 0.5) / 3, abs=1e-3)
     assert float(book["Amy Ames"]["Total"]) == pytest.approx(2 * 2.5 / 3 + 1, abs=1e-3)
     assert float(book["Bob Burr"]["Problem 1"]) == pytest.approx(2 * 1.5 / 3, abs=1e-3)
-    assert float(book["Cy Cole"]["Total"]) == 0
+    assert book["Cy Cole"]["Total"] == ""            # not graded: empty, not 0
     assert book["Amy Ames"]["ID number"] == "1001"
     # the exam's own answer files: a folder of <handout's stem>.json, {"P1": {...}}
     folder = d / "files"
@@ -161,8 +166,8 @@ def test_grading_a_class_names_slips_counts_blanks_and_exits_nonzero(made, capsy
     mine = {f"P{p['problem']}": {a: p["answers"][a] for a in p["asked"]}
             for p in key["students"][0]["problems"]}
     (folder / "Amy_Ames.json").write_text(json.dumps(mine))
-    assert main(["grade", str(d / "out"), str(folder)]) == 1      # Bob and Cy: missing
-    rows = list(csv.DictReader((d / "out" / "grades.csv").open()))
+    assert main(["grade", str(d / "out"), str(folder)]) == 12     # Bob, Cy: not graded
+    rows = list(csv.DictReader((d / "out" / "grades.csv").open(encoding="utf-8-sig")))
     assert all(r["status"] == "right" for r in rows if r["student"] == "Amy Ames")
     assert book["Amy Ames"]["Email address"] == "amy@example.org"
 
@@ -177,11 +182,14 @@ def test_bad_rosters_and_answers(made, tmp_path, capsys):
     assert main(["exam", str(d / "quiz.toml"), "--students", str(tmp_path / "r.csv"),
                  "--out", str(tmp_path / "o")]) == 2
     assert "twice" in capsys.readouterr().err
-    # a row of no student, or with a box the exam lacks: reported, the class graded
+    # a row of no student, or with a box the exam lacks: reported, the class graded; each
+    # student of the roster with no row graded: a line too (three here), never a zero
     _write(tmp_path / "a.csv", [["student", "P1.w_2"], ["Zed", "1"]])
-    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 11
-    assert "Zed: not graded: no student id or name" in capsys.readouterr().err
+    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 14
+    err = capsys.readouterr().err
+    assert "Zed: not graded: no student id or name" in err
+    assert "Amy Ames (id 1001): not graded" in err
     _write(tmp_path / "a.csv", [["student", "P9.x"], ["Amy Ames", "1"]])
-    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 11
+    assert main(["grade", str(d / "out"), str(tmp_path / "a.csv")]) == 14
     assert re.search(r"'P9.x' is no answer box", capsys.readouterr().err)
     assert main(["grade", str(tmp_path), str(tmp_path / "a.csv")]) == 2

@@ -54,7 +54,7 @@ def test_thirty_students_made_and_graded(tmp_path, capsys):
     for k in range(4):
         assert len({json.dumps(r["problems"][k]["data"], sort_keys=True)
                     for r in key["students"]}) == 30, k
-    header = next(csv.reader((tmp_path / "c" / "answers.csv").open()))
+    header = next(csv.reader((tmp_path / "c" / "answers.csv").open(encoding="utf-8-sig")))
     rng = random.Random(1)
     rows = [header]
     for r in key["students"]:
@@ -67,7 +67,7 @@ def test_thirty_students_made_and_graded(tmp_path, capsys):
                     json.dumps((np.array(_fl(v)) * 1000).tolist()) if u < 0.2 else
                     json.dumps((np.array(_fl(v)) * 3 + 1.7).tolist()) if u < 0.3 else
                     json.dumps(_fl(v)))
-        rows.append([r["student"]] + [ans[c] for c in header[1:]])
+        rows.append([r["student"], r["id"]] + [ans[c] for c in header[2:]])
     with (tmp_path / "answers.csv").open("w", newline="") as fh:
         csv.writer(fh).writerows(rows)
     capsys.readouterr()

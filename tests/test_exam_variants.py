@@ -59,3 +59,22 @@ def test_a_handout_of_every_drawn_exercise_leaks_no_answer(tmp_path):
     assert not _leaks(key, handout)
     drawn_figures = sum(hasattr(exercise_module(i), "given_figure") for i in DRAWN)
     assert handout.count("<svg") == drawn_figures
+
+
+def test_every_students_own_data_where_the_exercise_allows():
+    """Thirty draws each: 3.14's two observers report two different matrices (the same
+    body in two frames), and 3.6's draws turn the grasp (the finger planes' normal and
+    the diagonal CC' vary, so Q, its angle and axis differ between students); checked on
+    the data alone, no solve."""
+    import importlib
+
+    from rigidsym.core import config
+
+    m14 = exercise_module("ex3.14")
+    for k in range(30):
+        d = m14.random_data(random.Random(k))
+        assert d["I_A"] != d["I_B"], k
+    draws = importlib.import_module(f"{config.EXERCISES}._variants")
+    grasps = {json.dumps([[str(x) for x in draws.draw("ex3.6", random.Random(k))[1][n]]
+                          for n in ("face_normal", "CC_prime")]) for k in range(30)}
+    assert len(grasps) >= 10

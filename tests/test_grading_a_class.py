@@ -141,7 +141,7 @@ def _grade_and_compare(tmp_path, key, expected, capsys):
     err = capsys.readouterr().err
     assert code == 12, err                      # two files not graded, each on its line
     assert "broken.json: not graded" in err and "Nobody Here: not graded" in err
-    rows = list(csv.DictReader((tmp_path / "c" / "grades.csv").open(encoding="utf-8")))
+    rows = list(csv.DictReader((tmp_path / "c" / "grades.csv").open(encoding="utf-8-sig")))
     assert {r["id"] for r in rows} == {r["id"] for r in key["students"]}
     for r in rows:
         want = expected[r["id"]][r["answer"]]
@@ -156,7 +156,7 @@ def _grade_and_compare(tmp_path, key, expected, capsys):
             credit = 0.75 if r["slip"] == "rounded" else 0.5    # the spec's policy
             assert float(r["points"]) == pytest.approx(credit * float(r["max_points"]),
                                                        rel=1e-4), where
-    notes = list(csv.DictReader((tmp_path / "c" / "item_analysis.csv").open()))
+    notes = list(csv.DictReader((tmp_path / "c" / "item_analysis.csv").open(encoding="utf-8-sig")))
     assert sum(int(n["count"]) for n in notes) == len(rows)
     return rows
 
@@ -502,17 +502,23 @@ def test_stack_grades_truths_as_the_gradebook():
 def test_stack_grades_an_angle_modulo_pi_as_the_gradebook():
     """3.12's angles of its principal axes (defined modulo pi) in STACK: alpha + pi,
     alpha - 2 pi right; degrees, the sign, a rounding and alpha + pi/2 scored as grade()
-    scores them, each exported box (the principal axes themselves are not exported)."""
+    scores them, each exported box; the principal axes (each column up to its sign):
+    columns negated right, transposed, in mm, rounded scored as grade() scores them."""
     from rigidsym.course.grading import grade
     from tests._stack_maxima import boxes, mark, question_tests
 
     q, s, k = _stack_question("3.12")
     bx = boxes(q)
     angles = [b for b in bx if "angle" in b]
-    assert len(angles) == 2 and "wedge_principal_axes" not in bx
+    assert len(angles) == 2 and "wedge_principal_axes" in bx
     forms = [{}] + [{b: v} for b in angles for v in (
         k[b] + math.pi, k[b] - 2 * math.pi, k[b] * 180 / math.pi, -k[b],
         float(f"{k[b]:.1e}"), k[b] + math.pi / 2)]
+    axes = k["wedge_principal_axes"]
+    signs = np.array([-1.0, 1.0, -1.0])
+    forms += [{"wedge_principal_axes": v} for v in (
+        axes * signs, (axes * signs).T, axes * signs * 1000,
+        np.vectorize(lambda x: float(f"{x:.1e}"))(axes * signs))]
     for form in forms:
         answers = {**k, **form}
         _, notes = mark(q, {inp: answers[b] for b, (inp, _) in bx.items()})

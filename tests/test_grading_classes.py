@@ -4,7 +4,8 @@ slip is wrong and named, a blank is a blank.
 The members are generated here by the group action each answer's meaning allows, written
 in this file (an axis and angle (e, phi) ~ (-e, -phi) and phi + 2 pi k with the Plücker
 array's sign following e; any point of an axis; principal axes each up to sign; a line's
-angle modulo pi), never by the grader's :mod:`rigidsym.course.answer_classes`. The key's
+angle modulo pi; every rotation R with R [I]_A R^T = [I]_B, built from the eigenvectors of
+both matrices), never by the grader's :mod:`rigidsym.course.answer_classes`. The key's
 numbers come from the exact solution through sympy's ``N``; the edits and the membership
 test below are plain NumPy. The default run draws a few members per exercise; the
 exhaustive run (``-m slow``) many.
@@ -32,6 +33,31 @@ SIGN_GROUPS = {"ex3.1": ("e", "phi", ("plucker",)), "ex3.6": ("e", "phi", ("axis
 POINTS_ON_AXIS = {"ex3.6": ("axis_point_p0", "e")}
 COLUMN_SIGNS = {"ex3.12": ("wedge_principal_axes", "upper_principal_axes")}
 ANGLES_MOD_PI = {"ex3.12": ("wedge_axis_angle_from_y_rad", "upper_axis_angle_from_y_rad")}
+#: a rotation box stated by its property R [from] R^T = [to] (the exercise's data)
+ROTATIONS_ONTO = {"ex3.14": ("Q_B_A", "I_A", "I_B")}
+
+
+def rotations_between(source, image):
+    """Every rotation R with R source R^T = image, for two symmetric matrices with the same
+    distinct eigenvalues: R = V_image S V_source^T, S = diag(+-1, +-1, +-1) of determinant
+    +1 (each eigenvector of either matrix has two senses)."""
+    _, va = np.linalg.eigh(np.asarray(source, dtype=float))
+    _, vb = np.linalg.eigh(np.asarray(image, dtype=float))
+    out = []
+    for signs in ((1, 1, 1), (1, 1, -1), (1, -1, 1), (1, -1, -1), (-1, 1, 1), (-1, 1, -1),
+                  (-1, -1, 1), (-1, -1, -1)):
+        r = vb @ np.diag(signs) @ va.T
+        if np.linalg.det(r) > 0:
+            out.append(r)
+    return out
+
+
+def rotation_class(ex_id):
+    """The members of the rotation box of ``ex_id`` on the book's data (four)."""
+    s, _ = key_of(ex_id)
+    _, src, dst = ROTATIONS_ONTO[ex_id]
+    return rotations_between(np.array(s.data[src].tolist(), dtype=float),
+                             np.array(s.data[dst].tolist(), dtype=float))
 
 
 def _key(ex_id):
@@ -81,6 +107,8 @@ def members(draw, ex_id):
         out[name] = out[name] * signs
     for name in ANGLES_MOD_PI.get(ex_id, ()):
         out[name] = out[name] + math.pi * draw(st.integers(-2, 2))
+    if ex_id in ROTATIONS_ONTO:
+        out[ROTATIONS_ONTO[ex_id][0]] = draw(st.sampled_from(rotation_class(ex_id)))
     noise = draw(st.floats(-0.2, 0.2))          # a student's last decimals: in tolerance
     for k, (v, truth) in key.items():
         if not truth:
@@ -117,6 +145,8 @@ def in_class(ex_id, name, value, member) -> bool:
     if name in ANGLES_MOD_PI.get(ex_id, ()):
         w = (value - k + math.pi / 2) % math.pi - math.pi / 2
         return near(w, np.zeros_like(w))
+    if name == ROTATIONS_ONTO.get(ex_id, ("",))[0]:
+        return any(near(value, r) for r in rotation_class(ex_id))
     return near(value, k)
 
 
@@ -201,7 +231,7 @@ SLOW_SOLVES = {"ex3.3", "ex3.10"}
 @pytest.mark.parametrize("ex_id", [i for i in IDS if i not in SLOW_SOLVES])
 def test_question_tests(ex_id):
     """A member or two of each exercise's class, its slips and a blank (default run)."""
-    _property(ex_id, 1 if ex_id not in SIGN_GROUPS | COLUMN_SIGNS else 3)
+    _property(ex_id, 1 if ex_id not in SIGN_GROUPS | COLUMN_SIGNS | ROTATIONS_ONTO else 3)
 
 
 @pytest.mark.slow
@@ -266,3 +296,88 @@ def test_the_sign_and_scale_classes(key, factor, sign):
     if not np.allclose(np.cross(swapped[:3], k[:3]), 0, atol=1e-3) or \
             abs(k[0] - k[1]) > 1e-2 * max(map(abs, key)):
         assert not judge(any_scale, {"q": swapped}, q, RTOL)["q"].right
+
+
+def _turn(axis, angle):
+    """The rotation by ``angle`` about the unit ``axis`` (Rodrigues), NumPy."""
+    k = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
+    kx = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(angle) * kx + (1 - math.cos(angle)) * kx @ kx
+
+
+def _rotation_box(seed):
+    """3.14 on the book's data (seed None) or on an exam's draw: (solution, members)."""
+    import random
+
+    from rigidsym.course.worked import exercise_module
+
+    if seed is None:
+        s = key_of("ex3.14")[0]
+    else:
+        s = ex.solve("ex3.14", **exercise_module("ex3.14").random_data(random.Random(seed)))
+    members = rotations_between(np.array(s.data["I_A"].tolist(), dtype=float),
+                                np.array(s.data["I_B"].tolist(), dtype=float))
+    return s, members
+
+
+@pytest.mark.parametrize("seed", [None, 3])
+def test_every_rotation_of_the_box_is_right(seed):
+    """3.14's rotation box states a property, [I]_B = Q [I]_A Q^T: each of the four
+    rotations that have it (built here from both matrices' eigenvectors), written to 4
+    decimals, is right; each turned by 0.3 degrees more is wrong; each transposed or
+    negated is wrong with its slip named."""
+    s, members = _rotation_box(seed)
+    ia = np.array(s.data["I_A"].tolist(), dtype=float)
+    ib = np.array(s.data["I_B"].tolist(), dtype=float)
+    rng = np.random.default_rng(0 if seed is None else seed)
+    assert len(members) == 4
+    for r in members:
+        assert np.allclose(r @ ia @ r.T, ib) and np.isclose(np.linalg.det(r), 1)
+        g = grade(s, {"Q_B_A": np.round(r, 4).tolist()}, replay=False)
+        assert next(x for x in g if x.name == "Q_B_A").correct is True
+        off = _turn(rng.normal(size=3), math.radians(0.3)) @ r
+        g = next(x for x in grade(s, {"Q_B_A": off.tolist()}, replay=False)
+                 if x.name == "Q_B_A")
+        assert g.correct is False
+        for word, wrong in (("transpose", r.T), ("sign", -r)):
+            if any(np.allclose(wrong, m, atol=1e-3) for m in members):
+                continue
+            g = next(x for x in grade(s, {"Q_B_A": wrong.tolist()}, replay=False)
+                     if x.name == "Q_B_A")
+            assert g.correct is False and g.slip == word, (word, g.detail)
+
+
+@pytest.mark.slow
+@given(seed=st.integers(0, 10_000), which=st.integers(0, 3),
+       axis=st.lists(st.floats(-1, 1), min_size=3, max_size=3).filter(
+           lambda v: np.linalg.norm(v) > 0.1),
+       angle=st.floats(0.1, 20))
+@settings(max_examples=examples(30), deadline=None, derandomize=True, database=None,
+          suppress_health_check=list(HealthCheck))
+def test_rotation_box_on_exam_draws(seed, which, axis, angle):
+    """On exams' draws: a member of the class is right; the member turned by more than
+    the tolerance allows (0.1 to 20 degrees about any axis) is wrong."""
+    s, members = _rotation_box(seed)
+    r = members[which]
+    assert next(x for x in grade(s, {"Q_B_A": np.round(r, 5).tolist()}, replay=False)
+                if x.name == "Q_B_A").correct is True
+    off = _turn(axis, math.radians(angle)) @ r
+    if any(np.all(np.abs(off - m) <= RTOL + 1e-12) for m in members):
+        return                              # a turn so small it stays within tolerance
+    assert next(x for x in grade(s, {"Q_B_A": off.tolist()}, replay=False)
+                if x.name == "Q_B_A").correct is False
+
+
+@pytest.mark.parametrize("text", ["0 m, 0 m, {z} m", "0 mm, 0 mm, {mm} mm",
+                                  "0 cm; 0 cm; {cm} cm", "0, 0, {z} m"])
+def test_a_zero_coordinate_with_its_unit(text):
+    """A vector typed with a unit on every entry, zeros included, is read entry by
+    entry: 3.11's centroid [0, 0, h/2] in m, mm or cm."""
+    s, key = key_of("ex3.11")
+    c = key["centroid_m"][0].reshape(-1)
+    assert c[0] == 0 and c[1] == 0
+    z = float(c[2])
+    answer = text.format(z=repr(z), mm=repr(z * 1000), cm=repr(z * 100))
+    g = next(x for x in grade(s, {"centroid_m": answer}, replay=False)
+             if x.name == "centroid_m")
+    assert g.correct is True, g.detail

@@ -191,6 +191,24 @@ _STATEMENTS = {"ex3.3": _s33, "ex3.8": _s38, "ex3.9": _s39, "ex3.13": _s313,
 _NUMERIC = ("ex3.6",)
 
 
+#: the finger planes' normals a draw of 3.6 takes: the book's cube diagonal, and unit
+#: normals with positive components from Pythagorean quadruples (a corner cut obliquely)
+_NORMALS = ((1, 1, 1), (1, 2, 2), (2, 1, 2), (2, 2, 1), (2, 3, 6), (3, 6, 2), (6, 2, 3),
+            (1, 4, 8), (8, 1, 4), (4, 8, 1), (4, 4, 7), (7, 4, 4), (4, 7, 4))
+
+
+def _grasp_data(rng) -> dict:
+    """3.6 on drawn data: the finger planes' normal (:data:`_NORMALS`), the diagonal CC'
+    of the unit cube (one of the three not along [1, 1, 1], either sense, so C and C' are
+    vertices of the cube) and the gripper point P in quarters of a metre: the rotation,
+    its axis and angle change with the normal and the diagonal."""
+    n = list(rng.choice(_NORMALS))
+    d = [rng.choice((1, -1)) * x for x in rng.choice(((-1, 1, 1), (1, -1, 1), (1, 1, -1)))]
+    return {"face_normal": n, "CC_prime": d,
+            "C_prime": [sp.Rational(x + 1, 2) for x in d],
+            "p": [sp.Rational(rng.randint(-8, 8), 4) for _ in range(3)]}
+
+
 def drawn() -> tuple[str, ...]:
     """The exercises this module draws variants of."""
     return _NUMERIC + tuple(_STATEMENTS)
@@ -222,7 +240,7 @@ def draw(ex_id: str, rng) -> tuple[str, dict] | Solution:
         KeyError: ``ex_id`` has no variant here (see :func:`drawn`).
     """
     if ex_id == "ex3.6":
-        return "data", {"p": [sp.Rational(rng.randint(-8, 8), 4) for _ in range(3)]}
+        return "data", _grasp_data(rng)
     pool = [k for k in range(len(statements(ex_id))) if decided(ex_id, k)[0] is not None]
     picks = rng.sample(pool, _PER_VARIANT)
     mod = exercise_module(ex_id)

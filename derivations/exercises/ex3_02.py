@@ -120,12 +120,12 @@ def given_figure(s: Solution):
 
 def random_data(rng) -> dict:
     """A variant with readable exact numbers (an exam's draw): the regular tetrahedron on
-    alternate corners of a cube of side 2 or 4 (edge 2 sqrt(2) or 4 sqrt(2)), its vertices
+    alternate corners of a cube of side 2, 4 or 6 (edge 2 sqrt(2) k, k = 1, 2, 3), its vertices
     in a random order, turned by a Cayley rotation with entries of denominator 3 and
     shifted by small integers: rational vertices, a regular tetrahedron exactly."""
     from ._random import cayley_small, small_vector
 
     corners = [sp.Matrix(v) for v in ((1, 1, 1), (1, -1, -1), (-1, 1, -1), (-1, -1, 1))]
     rng.shuffle(corners)
-    side, Q, t = rng.choice((1, 2)), cayley_small(rng, halves=False), small_vector(rng, -2, 2)
+    side, Q, t = rng.choice((1, 2, 3)), cayley_small(rng, halves=False), small_vector(rng, -2, 2)
     return {f"P_{k}": list(side * Q * v + t) for k, v in enumerate(corners, 1)}

@@ -183,3 +183,29 @@ def figure(s: Solution):
     line_in_box(ax, s.answers["axis_point_p0"], s.answers["e"], pts, "tab:red", "screw axis")
     axes3d(ax, pts)
     return fig
+
+
+def given_figure(s: Solution):
+    """The given data only (the students' handout): the unit cube in F, the finger
+    planes' normal at the cube's centre, the diagonal from C to C', and the gripper
+    point P; no grasp frame, no rotation, no axis."""
+    import itertools
+
+    from ._draw import arrow, axes3d, new_figure, point, segment
+
+    n, d = sp.Matrix(s.data["face_normal"]), sp.Matrix(s.data["CC_prime"])
+    Cp, p = sp.Matrix(s.data["C_prime"]), sp.Matrix(s.data["p"])
+    C = Cp - d
+    fig, ax = new_figure("The workpiece in F: the finger planes' normal, C to C', and P")
+    corners = [sp.Matrix(c) for c in itertools.product((0, 1), repeat=3)]
+    for a, b in itertools.combinations(corners, 2):
+        if sum(abs(x - y) for x, y in zip(a, b, strict=True)) == 1:
+            segment(ax, a, b, color="0.6")
+    centre = sp.Matrix([sp.Rational(1, 2)] * 3)
+    arrow(ax, centre, n / n.norm(), "tab:olive", "normal of the finger planes", scale=0.6)
+    arrow(ax, C, d, "tab:purple", "diagonal C to C'", dashed=True)
+    point(ax, C, "tab:purple", text="C")
+    point(ax, Cp, "tab:purple", text="C'")
+    point(ax, p, "tab:blue", "P (reference pose)", "P")
+    axes3d(ax, corners + [p, C, Cp])
+    return fig

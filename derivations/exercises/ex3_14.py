@@ -23,6 +23,9 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.14"
 #: the documented unit of each answer with one (graded answers may be written in any
 #: compatible unit, issue 50); the others are pure numbers or mixed
 ANSWER_UNITS = {"principal_moments": "kg m^2"}
+#: what the rotation box is: any rotation Q with Q [I]_A Q^T = [I]_B (four when the
+#: principal moments are distinct: a principal axis has no sense)
+ANSWER_CLASSES = ({"kind": "rotation onto", "name": "Q_B_A", "from": "I_A", "to": "I_B"},)
 MEASURED = True
 PARAMETERS = (
     Param("I_A", sp.ImmutableMatrix(sp.diag(1, 2, 3)), (3, 3),
@@ -195,7 +198,7 @@ def random_data(rng) -> dict:
     """A well-posed variant with readable exact numbers (an exam's draw): distinct integer
     principal moments obeying the strict triangle inequality, seen by A and by B in two
     frames turned by Cayley rotations with entries of denominator 3 (so the matrices have
-    entries of denominator 9)."""
+    entries of denominator 9), the two matrices distinct."""
     from ._random import cayley_small
 
     while True:
@@ -203,5 +206,9 @@ def random_data(rng) -> dict:
         if lam[2] < lam[0] + lam[1]:
             break
     D = sp.diag(*lam)
-    QA, QB = cayley_small(rng, halves=False), cayley_small(rng, halves=False)
+    QA = cayley_small(rng, halves=False)
+    while True:              # two observers in two frames: the reports differ
+        QB = cayley_small(rng, halves=False)
+        if QB * D * QB.T != QA * D * QA.T:
+            break
     return {"I_A": (QA * D * QA.T).tolist(), "I_B": (QB * D * QB.T).tolist()}

@@ -21,6 +21,12 @@ a scalar with a unit, right only near the key's one value. The kinds:
 ``{"kind": "up to scale", "name": "L", "sign": "any" | "positive"}``
     an array defined up to a non-zero (or a positive) factor (a line's Plücker array
     when the problem fixes no normalisation).
+``{"kind": "rotation onto", "name": "Q", "from": "I_A", "to": "I_B"}``
+    any rotation Q with Q [from] Q^T = [to], two symmetric matrices of the exercise's data
+    (two observers' inertia matrices): with eigenvectors V_A of [from], the rotations
+    Q_key V_A D V_A^T for the four sign matrices D of determinant +1 (a principal axis has
+    no sense); where two eigenvalues of [from] are equal the set is a continuum, and Q is
+    a member when it is orthogonal, of determinant +1, and maps [from] onto [to].
 
 :func:`judge` decides, for one declaration, which of the student's pieces are members of
 the key's class (within the grader's tolerance) and which member each should be compared
@@ -35,9 +41,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Verdict", "KINDS", "declared", "judge", "names_of"]
+__all__ = ["Verdict", "KINDS", "declared", "judge", "names_of", "data_names", "rotations_onto",
+           "column_signs"]
 
-KINDS = ("axis-angle", "sign", "point of line", "columns up to sign", "angle", "up to scale")
+KINDS = ("axis-angle", "sign", "point of line", "columns up to sign", "angle", "up to scale",
+         "rotation onto")
 
 
 @dataclass
@@ -49,6 +57,9 @@ class Verdict:
         note: the answer note of a right value (``"right"`` or ``"equivalent ..."``).
         target: the member to compare a wrong value with when looking for its slip (the
             key under the group's chosen sign), a float array of the key's shape.
+        period: an angle's period (radians), compared modulo it; None otherwise.
+        along: a line's unit direction, for a point of it; None otherwise.
+        members: the class's other members, float arrays of the key's shape.
     """
 
     right: bool
@@ -56,6 +67,9 @@ class Verdict:
     target: np.ndarray
     period: float | None = None
     along: np.ndarray | None = None
+    #: other members of the class a wrong value's slip is looked for against (after
+    #: ``target``): a rotation class's other sign choices
+    members: tuple = ()
 
     def matches(self, given: np.ndarray, value: np.ndarray, scale: float, rtol: float) -> bool:
         """``given`` is ``value`` within the tolerance, modulo the class's freedom that a
@@ -87,6 +101,11 @@ def declared(module) -> list[dict]:
             raise ValueError(f"ANSWER_CLASSES of {module.__name__}: kind {d.get('kind')!r} "
                              f"is not one of {', '.join(KINDS)}")
     return decls
+
+
+def data_names(decl: dict) -> list[str]:
+    """The exercise's data one declaration reads (its ``from`` and ``to`` matrices)."""
+    return [decl["from"], decl["to"]] if decl["kind"] == "rotation onto" else []
 
 
 def names_of(decl: dict) -> list[str]:
@@ -123,7 +142,8 @@ def judge(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Verdict]
     Args:
         decl: one entry of an exercise's ``ANSWER_CLASSES``.
         given: answer name -> the student's value (float array, reshaped as the key).
-        key: answer name -> the key's value (float array).
+        key: answer name -> the key's value (float array); for a ``rotation onto``, the
+            data it reads by their names as well (:func:`data_names`).
         rtol: the relative tolerance (of the largest entry of the key's value).
     """
     kind = decl["kind"]
@@ -133,6 +153,8 @@ def judge(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Verdict]
     if name not in given:
         return {}
     g, k = given[name], key[name]
+    if kind == "rotation onto":
+        return {name: _rotation_onto(g, k, key[decl["from"]], key[decl["to"]], rtol)}
     if kind == "point of line":
         d = key[decl["direction"]].reshape(-1)
         d = d / np.linalg.norm(d)
@@ -156,7 +178,8 @@ def judge(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Verdict]
                 target = k * rows
         flipped = [j for j, s in enumerate(signs) if s < 0]
         note = f"equivalent: columns {flipped} negated" if ok and flipped else "right"
-        return {name: Verdict(ok, note, target)}
+        others = tuple(m for m in column_signs(k) if not np.array_equal(m, target))
+        return {name: Verdict(ok, note, target, members=others)}
     if kind == "angle":
         period = math.pi if decl.get("period") == "pi" else 2 * math.pi
         w = _wrap(g - k, period)
@@ -210,3 +233,44 @@ def _sign_group(decl: dict, given: dict, key: dict, rtol: float) -> dict[str, Ve
                 f" {n} + 2 pi k (k = {turns})"
         verdicts[n] = Verdict(ok, note, target, period=2 * math.pi if n == angle else None)
     return verdicts
+
+
+def column_signs(k: np.ndarray) -> list[np.ndarray]:
+    """The members of a ``columns up to sign`` class: ``k`` with each column's sign
+    chosen, every choice (``k`` first)."""
+    n = k.shape[1]
+    return [k * np.array([-1.0 if c >> j & 1 else 1.0 for j in range(n)])
+            for c in range(2 ** n)]
+
+
+#: the four sign matrices of determinant +1: a principal axis has no sense
+_SIGNS = (np.diag([1.0, 1.0, 1.0]), np.diag([1.0, -1.0, -1.0]), np.diag([-1.0, 1.0, -1.0]),
+          np.diag([-1.0, -1.0, 1.0]))
+
+
+def rotations_onto(key_q: np.ndarray, source: np.ndarray) -> list[np.ndarray]:
+    """The rotations ``key_q V D V^T`` (V: unit eigenvectors of the symmetric ``source``,
+    D: the four sign matrices of determinant +1), each mapping ``source`` as ``key_q``
+    does: ``Q source Q^T = key_q source key_q^T``; ``key_q`` first."""
+    _, v = np.linalg.eigh((source + source.T) / 2)
+    return [key_q @ v @ d @ v.T for d in _SIGNS]
+
+
+def _rotation_onto(g: np.ndarray, k: np.ndarray, source: np.ndarray, image: np.ndarray,
+                   rtol: float) -> Verdict:
+    """A rotation judged by the property its box states: ``g source g^T = image``."""
+    members = rotations_onto(k, source)
+    dist = [float(np.max(np.abs(g - m))) for m in members]
+    best = int(np.argmin(dist))
+    ok = _near(g, members[best], 1.0, rtol)
+    lam = np.linalg.eigvalsh((source + source.T) / 2)
+    tied = float(np.min(np.diff(lam))) <= rtol * max(float(np.max(np.abs(lam))), 1e-300)
+    if not ok and tied and g.shape == (3, 3):
+        # a continuum of rotations: membership by the defining property itself
+        ok = _near(g.T @ g, np.eye(3), 1.0, 2 * rtol) and np.linalg.det(g) > 0 and \
+            _near(g @ source @ g.T, image, _scale(image), 3 * rtol)
+    note = "right" if ok and best == 0 else \
+        "equivalent: another rotation with Q [I]_A Q^T = [I]_B" if ok else "right"
+    order = [best] + [i for i in range(len(members)) if i != best]
+    return Verdict(bool(ok), note, members[best],
+                   members=tuple(members[i] for i in order[1:]))

@@ -69,13 +69,30 @@ def read_table(f: Path, what: str = "--grade") -> list[dict]:
 
 
 def _csv_answers(f: Path) -> dict[str, dict]:
+    """A CSV's answer sets by student; two rows of one name (with their ids) are kept
+    apart, each under ``name (id)``."""
+    rows = _csv_rows(f)
+    names = [label for label, _ in rows]
+    out = {}
+    for label, answers in rows:
+        key = label
+        if names.count(label) > 1 and answers.get("id"):
+            key = f"{label} ({answers['id']})"
+        out[key] = answers
+    return out
+
+
+def _csv_rows(f: Path) -> list[tuple[str, dict]]:
+    """A CSV's rows as ``[(student, answers)]``, in file order, none merged: a row's
+    ``id`` cell (when the file has an ``id`` column beside ``student``) is the
+    ``"id"`` entry of its answers, the student id the row declares."""
     rows = read_table(f)
     cols = {k.lower(): k for k in (rows[0] if rows else {})}
     who_col = cols.get("student") or cols.get("name") or cols.get("id")
     if not rows or who_col is None:
         raise ValueError(f"--grade: {f} needs a header row with a 'student' (or 'id') column "
                          f"and one column per answer name")
-    out = {}
+    out = []
     id_col = cols.get("id") if who_col != cols.get("id") else None
     for r in rows:
         who = (r.pop(who_col) or "").strip()
@@ -83,14 +100,15 @@ def _csv_answers(f: Path) -> dict[str, dict]:
         answers = {k: _cell(v) for k, v in r.items() if k and v not in ("", None)}
         if ident:
             answers["id"] = ident
-        out[who or ident] = answers
+        out.append((who or ident, answers))
     return out
 
 
 def read_class_answers(path: str | Path) -> tuple[list[tuple[str, dict]], list[str]]:
     """A class's answers, each file on its own: ``([(label, answers), ...], problems)``;
-    ``label`` is a JSON file's stem or a CSV row's student; a file that cannot be read
-    is a line of ``problems`` (the rest of the class is still read).
+    ``label`` is a JSON file's stem or a CSV row's student (every row on its own: two
+    students of one name stay two, told apart by their ``id`` cells); a file that cannot
+    be read is a line of ``problems`` (the rest of the class is still read).
 
     Raises:
         ValueError: a path that is neither a folder of JSON files nor a readable CSV or
@@ -108,6 +126,8 @@ def read_class_answers(path: str | Path) -> tuple[list[tuple[str, dict]], list[s
             except ValueError as exc:
                 problems.append(f"{f.name}: not graded: {exc}")
         return out, problems
+    if p.suffix.lower() == ".csv":
+        return _csv_rows(p), []
     return list(read_answers(p).items()), []
 
 

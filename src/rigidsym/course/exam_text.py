@@ -32,10 +32,15 @@ TASKS = {
     "ex3.5": "A joint axis is estimated by its Plücker coordinates [e; n] in the gripper "
              "frame (data below). Find the distance d of the axis from the origin and the "
              "point P* of the axis closest to the origin, p* = e x n.",
-    "ex3.6": "A gripper grasps the truncated cube of the data below by its two triangular "
-             "faces and carries vertex C to C'. Find the rotation Q of the grasp, its angle "
-             "phi and unit axis e, and the axis of the points of G displaced least (a point "
-             "p_0 on it and its Plücker coordinates).",
+    "ex3.6": "A gripper G grasps the truncated unit cube [0, 1]^3 of the data below by its "
+             "two cut faces (the finger planes, normal to the data's face normal) and "
+             "carries its point P to the vertex C'. The gripper's frame G'' is fixed by the "
+             "grasp: i'' is the unit normal of the finger planes with positive components; "
+             "j'' is the unit vector normal to i'' and to the diagonal CC' with a positive Z "
+             "component; k'' = i'' x j''. G'' starts parallel to F, so the rotation of the "
+             "grasp is Q = [i'' j'' k''] (columns in F). Find Q, its angle phi and unit axis "
+             "e, and the axis of the points of G displaced least (a point p_0 on it and its "
+             "Plücker coordinates).",
     "ex3.7": "The moment of a line is measured about two points A and B (data below). Find "
              "the unit vector e of the line, the point P* of the line closest to the origin, "
              "and the Plücker coordinates of the line about the origin.",
@@ -43,12 +48,19 @@ TASKS = {
               "eta_dot (in the fixed frame) and W_body (in the body frame), det W, and the "
               "angles at which W is singular.",
     "ex3.11": "A prism with regular hexagonal bases of side a and height h (data below) is "
-              "made of a homogeneous material. Find its volume, its centroid C, its "
-              "centroidal inertia matrix [I_C] per unit density and per unit mass, and its "
-              "principal moments.",
-    "ex3.12": "The hexagonal prism of the data below is cut by a plane through one edge of "
-              "its base at 45 deg to its axis. For each part, find the volume, the centroid, "
-              "the centroidal inertia matrix, the principal moments and axes.",
+              "made of a homogeneous material. The frame: origin O at the centre of the "
+              "lower base, Z along the axis, the base's vertices at (+-a, 0, 0) and "
+              "(+-a/2, +-a sqrt(3)/2, 0) (two sides parallel to X). Find its volume, its "
+              "centroid C, its centroidal inertia matrix [I_C] per unit density and per "
+              "unit mass, and its principal moments.",
+    "ex3.12": "The hexagonal prism of the data below (side a, height h; origin O at the "
+              "centre of the lower base, Z along the axis, the base's vertices at "
+              "(+-a, 0, 0) and (+-a/2, +-a sqrt(3)/2, 0)) is cut by a plane through the base "
+              "edge y = -a sqrt(3)/2, z = 0 at 45 deg to its axis, rising towards +Y: "
+              "z = y + a sqrt(3)/2. The wedge is the part below the plane, the upper part "
+              "the rest. For each part, find the volume, the centroid, the centroidal "
+              "inertia matrix, the principal moments (ascending) and the principal axes (in "
+              "the order of the moments).",
     "ex3.14": "Two observers A and B report the centroidal inertia matrix of one body, each "
               "in its own frame (data below). Show that the two reports are acceptable (the "
               "invariants agree), and find the principal moments and the rotation [Q]_B "
@@ -106,8 +118,9 @@ BOXES = {
                "invariants": "invariants of [I]: tr I, the sum of its principal 2 x 2 "
                              "minors, det I (3, in this order)",
                "principal_moments": "principal moments, ascending (3, kg m^2)",
-               "Q_B_A": "rotation [Q]_B taking A's frame to B's, [I]_B = Q [I]_A Q^T "
-                        "(3 x 3)",
+               "Q_B_A": "a rotation [Q]_B taking A's frame to B's, [I]_B = Q [I]_A Q^T "
+                        "(3 x 3; a principal axis has no sense, so four rotations have "
+                        "this property when the principal moments differ: give any one)",
                "residual": "least-squares residual (kg m^2)"},
     "ex3.19": {"w_2": "wrench [w]_2 = [n_2; f_2] at P, in F_2 (6: N m, then N)",
                "n_2": "moment [n]_2 about P, in F_2 (3, N m)",
@@ -119,7 +132,7 @@ TRUE_OR_FALSE = {"holds": "true or false, for (i), (ii), (iii) in order (3: true
                           "...)",
                  "why": "the number of the reason, for (i), (ii), (iii) in order (3: 1 to 4)"}
 
-_PARTS = {"lower": "the lower part", "upper": "the upper part"}
+_PARTS = {"wedge": "the wedge (below the cut)", "upper": "the upper part"}
 
 
 #: what every handout says about writing an answer (the grader's reading and tolerance)
@@ -132,7 +145,8 @@ ANSWER_FORMAT = (
     "the right answer: give at least 4 significant figures. An axis and angle may be given "
     "as (e, phi) or (-e, -phi), an angle plus any whole number of turns, with the Plücker "
     "array of the same sign as e; a point of an axis may be any point of it; principal "
-    "axes each with either sign.")
+    "axes each with either sign; a rotation asked by a property it has (Q [I]_A Q^T = "
+    "[I]_B) may be any rotation that has it.")
 
 
 def task(ex_id: str, statement: str) -> str:
@@ -148,11 +162,15 @@ def box_label(ex_id: str, name: str) -> str:
         return got
     if ex_id == "ex3.12":
         tag, _, rest = name.partition("_")
-        inner = BOXES["ex3.11"].get(rest) or {
-            "principal_moments_per_rho_m5": "principal moments / rho (3, m^5)",
-            "principal_axes": "principal axes, one per column (3 x 3)",
-            "axis_angle_from_y_rad": "angle of the first principal axis from Y (rad)"}.get(
-            rest)
+        inner = {
+            "principal_moments_per_kg_m2": "principal moments / m (3, m^2, ascending)",
+            "principal_moments_per_rho_m5": "principal moments / rho (3, m^5, ascending)",
+            "principal_axes": "principal axes, one unit vector per column, in the order "
+                              "of the moments (3 x 3)",
+            "axis_angle_from_y_rad": ("angle alpha from Y towards Z of the principal axis "
+                                      "[0, cos alpha, sin alpha] of the smaller moment in "
+                                      "the Y-Z plane (rad)")}.get(
+            rest) or BOXES["ex3.11"].get(rest)
         if inner:
             return f"{_PARTS.get(tag, tag)}: {inner}"
     if ex_id == "ex3.10":

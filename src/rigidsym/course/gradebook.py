@@ -16,7 +16,9 @@ A box scores 1 when right, the spec's ``rounding_credit`` when rounded to fewer
 significant figures than the tolerance asks (default: ``slip_credit``), the spec's
 ``slip_credit`` (default 0) when wrong by a named
 slip, 0 when wrong otherwise or missing (blank or absent); a problem's points are its
-``weight`` times the mean score of its boxes (partial credit).
+``weight`` times the mean score of its boxes (partial credit). A student of the roster
+whose answers no row or file matched is not graded: a line of the report, status ``not
+graded`` in grades.csv and empty cells in gradebook.csv, never a zero.
 """
 
 from __future__ import annotations
@@ -122,7 +124,12 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
     from rigidsym.course.forked import forked_map
 
     n_problems = max(len(r["problems"]) for r in key["students"])
-    done = forked_map(lambda i: _student(key["students"][i], given.get(i, {}), credit),
+    for i, r in enumerate(key["students"]):
+        if i not in given:
+            problems.append(f"{r['student']}" + (f" (id {r['id']})" if r.get("id") else "")
+                            + ": not graded: no answer row or file matched this student "
+                              "(their gradebook cells are left empty)")
+    done = forked_map(lambda i: _student(key["students"][i], given.get(i), credit),
                       len(key["students"]))
     rows = [row for d in done for row in d[0]]
     book = [d[1] for d in done]
@@ -150,10 +157,19 @@ def _items(rows: list) -> str:
                      [int(x) for x in kv[0][0].split(".")], kv[0][1], -kv[1]))]])
 
 
-def _student(r: dict, ans: dict, credit: tuple[float, float]) -> tuple:
+def _student(r: dict, ans: dict | None, credit: tuple[float, float]) -> tuple:
     """One student graded: (rows of grades.csv, the gradebook's row, the summary line,
-    every box right)."""
+    every box right); ``ans`` None: no answers matched, nothing graded (status ``not
+    graded``, the gradebook's cells empty)."""
     from rigidsym.course.grading import grade
+
+    if ans is None:
+        rows = [[r["student"], r["id"], r["version"], p["problem"], p["id"][2:], a,
+                 p["labels"].get(a, a), "", "", "not graded", "",
+                 "no answers matched this student", f"{p['id'][2:]}/{a}: not graded"]
+                for p in r["problems"] for a in p["asked"]]
+        book = [r["id"], r["email"], r["student"], *["" for _ in r["problems"]], ""]
+        return rows, book, f"  {r['student']:24s} not graded: no answers", False
 
     rows, per_problem, wrong, all_right = [], [], [], True
     for p in r["problems"]:
@@ -187,6 +203,8 @@ def _student(r: dict, ans: dict, credit: tuple[float, float]) -> tuple:
 
 
 def _csv(rows: list) -> str:
+    """The rows as CSV text with a UTF-8 byte-order mark, so that Excel reads the names'
+    accents right (Moodle's grade import and :func:`~.answers.read_table` skip it)."""
     buf = io.StringIO()
     csv.writer(buf, lineterminator="\n").writerows(rows)
-    return buf.getvalue()
+    return "\ufeff" + buf.getvalue()

@@ -358,7 +358,7 @@ def _read_all(solution, answers: dict, units: dict) -> dict:
 def _classes(module, solution, read: dict) -> dict:
     """The declared answers' verdicts (:mod:`.answer_classes`): ``name -> Verdict`` for
     each answered piece of a declared class; the pieces of one class judged jointly."""
-    from rigidsym.course.answer_classes import declared, judge, names_of
+    from rigidsym.course.answer_classes import data_names, declared, judge, names_of
 
     out = {}
     for decl in declared(module):
@@ -368,6 +368,11 @@ def _classes(module, solution, read: dict) -> dict:
         key = {n: _expected(solution.answers[n]) for n in names}
         if decl["kind"] == "point of line":
             key[decl["direction"]] = _expected(solution.answers[decl["direction"]])
+        data = getattr(solution, "data", None) or {}
+        if not all(d in data for d in data_names(decl)):
+            continue
+        key.update({d: np.array(sp.N(sp.Matrix(data[d]), 17).tolist(), dtype=float)
+                    for d in data_names(decl)})
         given = {n: read[n][0] for n in names
                  if isinstance(read.get(n), tuple) and read[n][0].shape == key[n].shape}
         out.update(judge(decl, given, key, RTOL))
@@ -507,11 +512,12 @@ def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
                       note=f"units {written}→{unit}" if written and written != unit
                       else "right")
     extra_f = [(w, d, _expected(v)) for w, d, v in extra]
-    for word, detail, value in _candidates(e, name, extra_f):
-        if _close(g, value, max(scale, float(np.max(np.abs(value))))):
-            more = unit_slip(word, value, e, unit, written)
-            return Graded(name, False, word, shown, f"matches {detail}" + more,
-                          note=_slip_note(word, detail, value, e, unit, written))
+    for member in (e, *(verdict.members if verdict is not None else ())):
+        for word, detail, value in _candidates(member, name, extra_f):
+            if _close(g, value, max(scale, float(np.max(np.abs(value))))):
+                more = unit_slip(word, value, member, unit, written)
+                return Graded(name, False, word, shown, f"matches {detail}" + more,
+                              note=_slip_note(word, detail, value, member, unit, written))
     for word, detail, answers in replayed or ():
         value = answers.get(name)
         if value is None or isinstance(value, str):
@@ -523,7 +529,8 @@ def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
         if v.shape == g.shape and _close(g, v, max(scale, float(np.max(np.abs(v))))):
             return Graded(name, False, word, shown, f"matches the solution with {detail}",
                           note=f"{word} (along the way)")
-    figures = rounded_figures(g, e)
+    figures = next((f for m in (e, *(verdict.members if verdict is not None else ()))
+                    if (f := rounded_figures(g, m))), 0)
     if figures:
         return Graded(name, False, "rounded", shown,
                       f"rounded to {figures} significant figures (the tolerance: {tol})",

@@ -22,12 +22,34 @@ def unit_off(given, unit: str | None, where: str):
     Raises:
         ValueError: a unit on an answer with no single unit, or an incompatible one.
     """
+    if isinstance(given, str) and _units_per_entry(given, unit, where):
+        rows = [[x.strip() for x in row.split(",")] for row in given.split(";")]
+        nested = [r if len(r) > 1 else r[0] for r in rows] if len(rows) > 1 else rows[0]
+        seen: set = set()
+        if len(rows) > 1 and all(len(r) == 1 for r in rows):
+            nested = [[x] for x in nested]            # a column typed as rows: 1 m; 2 m
+        return _entry_off(nested, unit, where, seen), 1.0, ", ".join(sorted(seen))
     if isinstance(given, str):
         return answer_factor(given, unit, where)
     if isinstance(given, list | tuple):
         seen: set = set()
         return [_entry_off(x, unit, where, seen) for x in given], 1.0, ", ".join(sorted(seen))
     return given, 1.0, ""
+
+
+def _units_per_entry(text: str, unit: str | None, where: str) -> bool:
+    """A vector or matrix typed as text with a unit on an entry before the last
+    (``"0 mm, 0 mm, 75 mm"``): each entry carries its own unit."""
+    entries = [x.strip() for row in text.split(";") for x in row.split(",")]
+    if len(entries) < 2:
+        return False
+    for x in entries[:-1]:
+        try:
+            if answer_factor(x, unit, where)[2]:
+                return True
+        except ValueError:
+            return False
+    return False
 
 
 def _entry_off(x, unit, where, seen: set):

@@ -4,8 +4,10 @@ and file systems write it (Unicode-normalised, case-folded, accents stripped).
 ``Zoe Muller.json`` for "Zoë Müller", ``li wei.json`` for "Li Wei", a macOS file name in
 NFD (``José`` as ``Jose`` + a combining accent) and ``Amy_Ames.json`` all match; two
 roster names that fold alike (``Zoë Müller`` and ``Zoe Muller``) are reported, never
-guessed, and a name the roster holds twice matches by id only. Each file that matches no
-student is a line of the report, and the rest of the class is graded.
+guessed, and a name the roster holds twice matches by id only; an id a spreadsheet wrote
+without its leading zeros (``42`` for ``00042``) matches the one roster id it reads as.
+Each file that matches no student is a line of the report, and the rest of the class is
+graded.
 """
 
 from __future__ import annotations
@@ -70,6 +72,11 @@ def _one(label, declared, by_id, by_name, by_fold, by_stem, students):
     if declared:
         if declared in by_id:
             return by_id[declared], ""
+        # a spreadsheet drops an id's leading zeros (00042 -> 42): matched when one
+        # roster id alone reads so
+        bare = [i for k, i in by_id.items() if k.lstrip("0") == declared.lstrip("0")]
+        if len(bare) == 1 and declared.isdigit():
+            return bare[0], ""
         return None, f"its student id {declared!r} is not on the roster"
     if label.strip() in by_id:
         return by_id[label.strip()], ""

@@ -251,10 +251,10 @@ def _key_section(head: str, sols: list) -> str:
 def _template(students: list, columns: list) -> str:
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["student", *columns])
+    w.writerow(["student", "id", *columns])
     for st in students:
-        w.writerow([st["name"]] + [""] * len(columns))
-    return buf.getvalue()
+        w.writerow([st["name"], st.get("id") or ""] + [""] * len(columns))
+    return "\ufeff" + buf.getvalue()       # a BOM: Excel reads the names' accents right
 
 
 def moodle_xml(title: str, key: dict) -> str:
@@ -264,9 +264,10 @@ def moodle_xml(title: str, key: dict) -> str:
     0.1 % of the answer's largest entry (the grader's tolerance). Moodle marks a Cloze
     question by its parts' integer weights (it ignores ``<defaultgrade>``): each box's
     entries share lcm(the problem's entry counts) marks, so every box weighs the same, as
-    in the gradebook; Moodle still scores entry by entry (a box graded jointly, an
-    equivalent form or a slip's credit is rigidsym's: import ``gradebook.csv``; which
-    boxes Moodle scores as the gradebook: docs/exams.md)."""
+    in the gradebook; a true-or-false box is a ``MULTICHOICE`` of ``true`` and ``false``,
+    as its label asks. Moodle still scores entry by entry (a box graded jointly, an
+    equivalent form or a slip's credit is rigidsym's: import ``gradebook.csv``, or use
+    ``stack.xml``; which boxes Moodle scores as the gradebook: docs/exams.md)."""
     from rigidsym.course.answer_classes import declared, names_of
     from rigidsym.course.grading import RTOL
 
@@ -303,7 +304,12 @@ def moodle_xml(title: str, key: dict) -> str:
                 extra = "" if a in classed or truth else \
                     _slip_answers(vals, tol, key.get("slip_credit", 0), a,
                                   key.get("rounding_credit", key.get("slip_credit", 0)))
-                parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{tol}{extra}}}" for v in vals)
+                if truth:            # typed as labelled: true or false, one choice right
+                    right = str(p["answers"][a]) == "True"
+                    parts = f"{{{w}:MULTICHOICE:{'=' if right else ''}true~" \
+                            f"{'' if right else '='}false}}"
+                else:
+                    parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{tol}{extra}}}" for v in vals)
                 body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
             name = f"{st['student']}: problem {p['problem']} (Exercise {p['id'][2:]})"
             out.append(f"<question type=\"cloze\"><name><text>{_x(name)}</text></name>"

@@ -30,9 +30,13 @@ student), with:
 
 Only builtins of Maxima are used: ``matrix``, ``args``, ``flatten``, ``abs``, ``lmax``,
 ``floor``, ``is``, ``if then else``, ``and``/``or``, ``.`` (a matrix product) and ``%pi``.
-Boxes that are expressions in symbols (3.10's W) and declared classes of kinds other than
-``axis-angle``, ``sign``, ``angle`` and ``point of line`` are not exported: the question
-says so, and the gradebook (``gradebook.csv``) is then the grade to import.
+A ``rotation onto`` box (3.14's [Q]_B) is right near any of its four rotations, and a
+``columns up to sign`` box (3.12's principal axes) near any choice of its columns' signs;
+a slip or a rounding of any member is named, as the grader judges it. Boxes that are
+expressions in symbols (3.10's W), a ``rotation onto`` whose source has two equal
+eigenvalues (a continuum of rotations) and declared classes of other kinds are not
+exported: the question says so, and the gradebook (``gradebook.csv``) is then the grade
+to import.
 """
 
 from __future__ import annotations
@@ -42,7 +46,7 @@ import math
 
 import numpy as np
 
-from rigidsym.course.answer_classes import declared, names_of
+from rigidsym.course.answer_classes import column_signs, declared, names_of, rotations_onto
 from rigidsym.course.grading import RTOL, key_array, slip_values
 from rigidsym.course.slips import replays
 from rigidsym.course.worked import exercise_module
@@ -50,7 +54,8 @@ from rigidsym.course.worked import exercise_module
 __all__ = ["stack_xml", "STACK_KINDS"]
 
 #: the declared kinds whose membership test the export writes in Maxima
-STACK_KINDS = ("axis-angle", "sign", "angle", "point of line")
+STACK_KINDS = ("axis-angle", "sign", "angle", "point of line", "rotation onto",
+               "columns up to sign")
 _TWO_PI = 2 * math.pi
 
 
@@ -114,7 +119,9 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float]) 
     boxes = _boxes(p, sol)
     inputs = {a: f"ans{i}" for i, a in enumerate(boxes, 1)}
     decls = [d for d in declared(mod) if all(n in sol.answers for n in names_of(d))]
-    skipped = [n for d in decls if d["kind"] not in STACK_KINDS for n in names_of(d)]
+    skipped = [n for d in decls if d["kind"] not in STACK_KINDS or
+               d["kind"] == "rotation onto" and _members(d, sol) is None
+               for n in names_of(d)]
     group = {n: d for d in decls if d["kind"] in STACK_KINDS for n in names_of(d)
              if n in boxes}
     text = [f"<p>{html.escape(p['labels'].get(a, a))}: [[input:{inputs[a]}]] "
@@ -251,6 +258,17 @@ def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol,
             lines.append(f"rd{tag}: {_rounded(inp, s * k)}")
         lines += ["isslip: if is(sg = 1) then slp else slm",
                   "isrounded: if is(sg = 1) then rdp else rdm"]
+    elif kind in ("rotation onto", "columns up to sign"):
+        members = _members(decl, sol)
+        # the grader's scale: 1 for a rotation, the key's largest entry for columns
+        sc = 1.0 if kind == "rotation onto" else _scale(k)
+        near = " or ".join(_near(inp, m, sc) for m in members)
+        lines.append(f"isright: if isblank then false else ({near})")
+        slips = " or ".join(dict.fromkeys(
+            t for m in members for t in _slip_tests(inp, sol, box, m, None, None, replayed)))
+        lines.append(f"isslip: if isblank then false else ({slips or 'false'})")
+        rounded = " or ".join(_rounded_tests(inp, m) for m in members)
+        lines.append(f"isrounded: if isblank then false else ({rounded})")
     else:
         period = along = None
         if kind == "angle":
@@ -276,6 +294,14 @@ def _slips(inp: str, sol, box: str, target: np.ndarray, period, along,
     :meth:`rigidsym.course.answer_classes.Verdict.matches` compares (``period``: an angle
     modulo the period scaled as the slip scaled it; ``along``: modulo a shift along;
     ``replayed``: the solution's replays, computed once per question)."""
+    body = " or ".join(dict.fromkeys(_slip_tests(inp, sol, box, target, period, along,
+                                                 replayed))) or "false"
+    return f"if is({inp} = EMPTYANSWER) then false else ({body})"
+
+
+def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
+                replayed: list) -> list[str]:
+    """The Maxima tests of :func:`_slips`, one per slip value."""
     sc = _scale(target)
     tests = []
     for _, value in slip_values(sol, box, target, replayed=replayed):
@@ -291,19 +317,41 @@ def _slips(inp: str, sol, box: str, target: np.ndarray, period, along,
             tests.append(_along(inp, value, along, s))
         else:
             tests.append(_near(inp, value, s))
-    body = " or ".join(dict.fromkeys(tests)) or "false"
-    return f"if is({inp} = EMPTYANSWER) then false else ({body})"
+    return tests
+
+
+def _members(decl: dict, sol) -> list[np.ndarray] | None:
+    """The members of a finite class: the four rotations of a ``rotation onto`` box (None
+    where the source matrix has two equal eigenvalues: a continuum, not exported), or
+    every choice of the columns' signs of a ``columns up to sign`` box."""
+    import sympy as sp
+
+    if decl["kind"] == "columns up to sign":
+        return column_signs(key_array(sol.answers[decl["name"]]))
+    data = getattr(sol, "data", None) or {}
+    if decl["from"] not in data:
+        return None
+    source = np.array(sp.N(sp.Matrix(data[decl["from"]]), 17).tolist(), dtype=float)
+    lam = np.linalg.eigvalsh((source + source.T) / 2)
+    if float(np.min(np.diff(lam))) <= RTOL * max(float(np.max(np.abs(lam))), 1e-300):
+        return None
+    return rotations_onto(key_array(sol.answers[decl["name"]]), source)
 
 
 def _rounded(inp: str, target: np.ndarray) -> str:
     """``is`` every entry the target rounded to 1, 2 or 3 significant figures (within
     1e-9 relative and 1e-12 absolute, as :func:`rigidsym.course.grading.rounded_figures`)."""
+    return f"if is({inp} = EMPTYANSWER) then false else ({_rounded_tests(inp, target)})"
+
+
+def _rounded_tests(inp: str, target: np.ndarray) -> str:
+    """The tests of :func:`_rounded`, joined by ``or``."""
     tests = []
     for n in range(1, 4):
         r = np.vectorize(lambda x, n=n: float(f"{x:.{n - 1}e}"))(target)
         diff = _dist(f"{inp} - {_lit(r)}", r.ndim > 0, f"1e-9*{_abs(_lit(r), r.ndim > 0)}")
         tests.append(f"is({diff} <= 1e-12)")
-    return f"if is({inp} = EMPTYANSWER) then false else ({' or '.join(tests)})"
+    return " or ".join(tests)
 
 
 def _abs(expr: str, matrix: bool) -> str:
