@@ -72,6 +72,9 @@ class Target:
             in the fixed and the body frame), or () for :attr:`kernel` alone.
         outputs: the kernel's outputs the user's function returns (the Euler angles, not
             the other branch nor the flag), or () for all of them.
+        equivalent: the output's class of outputs of the same rotation
+            (:data:`.equivalence.KINDS`: ``"axis_angle"``, ``"quaternion"``), judged as one
+            answer, or "".
     """
 
     name: str
@@ -84,6 +87,7 @@ class Target:
     antipodal: str = ""
     family: tuple[str, ...] = ()
     outputs: tuple[str, ...] = ()
+    equivalent: str = ""
 
     def user_slice(self, kernel) -> slice:
         """The columns of ``kernel``'s flat output (a :class:`~rigidsym.codegen.spec.Kernel`)
@@ -198,11 +202,11 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
            "(sola:quat-of-rotation): the Euler-Rodrigues parameters eta = [r; r0] of Q "
            "(a unit quaternion, scalar last, r0 >= 0)",
            _one("Q", _ROT), ("transpose_in", "scalar_first_out", "negated_out"),
-           antipodal="quaternion"),
+           antipodal="quaternion", equivalent="quaternion"),
     Target("natural_invariants_from_rotation", "natural_invariants_from_rotation",
            "(2.49), (3.95): the natural invariants (e, phi) of Q, phi in [0, pi]",
            _one("Q", _ROT), ("transpose_in", "degrees_out", "angle_first_out"),
-           antipodal="axis"),
+           antipodal="axis", equivalent="axis_angle"),
     *(Target(n, n, f"({eq}): the {what} of T = [[1, a - p], [0, 1]]",
              (Form("f(a, p)", _PTS, lambda x: [x["a"], x["p"]]),
               Form("f(T), T = [[1, a - p], [0, 1]]", (_TR,),
