@@ -324,7 +324,7 @@ def differ(func, member: Member, points, truth, tgt: Target) -> str:
             continue
         worst = max(worst, d)
 
-        def close(a, b):
+        def close(a, b, nt=nt):
             return float(np.linalg.norm(a - b)) <= 1e-6 * nt
 
         kind = f"by {d:.3g} (relative)"
@@ -365,6 +365,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
     """
     members = _members(tgt, names)
     best, best_key, errors, matches = None, None, {}, []
+    best_r, best_agree = np.inf, 0
     for m in members:
         try:
             with np.errstate(all="ignore"):

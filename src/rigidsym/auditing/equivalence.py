@@ -13,10 +13,11 @@ The classes follow from the book's statements, not from a list of peers' habits:
   and ``-eta`` are the same rotation everywhere.
 
 :func:`nearest` moves a user's output by one of these symmetries (exact operations: a
-negation, a shift by ``2 pi`` in two parts, a rotation of the axis at the identity) to the
-member of its class nearest an anchor (the truth, or rigidsym's kernel there, a few ulps
-from it): what is left is the output's own error. The rotation vector's ``w`` and ``-w``
-at a half turn, and the Euler angles' branches, are judged in :mod:`.worst`.
+negation, a shift by ``fl(2 pi)``, a whole turn as the user's float holds it, a rotation of
+the axis at the identity) to the member of its class nearest an anchor (the truth, or
+rigidsym's kernel there, a few ulps from it): what is left is the output's own error.
+The rotation vector's ``w`` and ``-w`` at a half turn, and the Euler angles' branches, are
+judged in :mod:`.worst`.
 """
 
 from __future__ import annotations
@@ -30,8 +31,8 @@ __all__ = ["KINDS", "nearest", "axis_angle_rotation"]
 #: the output kinds with a class of equivalent outputs (a target's ``equivalent``)
 KINDS = ("axis_angle", "quaternion")
 
-_TWO_PI_HI = 6.283185307179586          # fl(2 pi)
-_TWO_PI_LO = 2.4492935982947064e-16     # 2 pi - fl(2 pi), rounded
+#: a whole turn as a float holds it: an output of fl(2 pi) k is a whole turn k, exactly
+_TWO_PI = 6.283185307179586
 
 
 def axis_angle_rotation(e, phi: float) -> np.ndarray:
@@ -44,7 +45,7 @@ def axis_angle_rotation(e, phi: float) -> np.ndarray:
 
 
 def _shift(phi: float, k: int) -> float:
-    return (phi - k * _TWO_PI_HI) - k * _TWO_PI_LO
+    return phi - k * _TWO_PI
 
 
 def _axis_angle(got: np.ndarray, anchor: np.ndarray) -> np.ndarray:

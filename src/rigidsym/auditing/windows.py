@@ -63,6 +63,7 @@ class Window:
         worst: the worst input's judgement (a :class:`.worst.Judged`).
         lo, hi: the ends of the window over the bound around the worst (``x``), or None
             where the worst is within the bound.
+        lo_open, hi_open: the window reaches the smallest (largest) ``x`` sampled.
         jump: ``(x, ratio inside, ratio outside)`` at an end where the error jumps, or None.
         slope: the slope of ``log err`` against ``log x`` over the window (None: fewer than
             4 samples in it, or a flag).
@@ -79,6 +80,8 @@ class Window:
     jump: tuple | None = None
     slope: float | None = None
     evaluations: int = 0
+    lo_open: bool = False
+    hi_open: bool = False
     judged: list = field(default_factory=list)
 
     def cause(self) -> str:
@@ -86,15 +89,17 @@ class Window:
         v = self.approach.var
         if self.jump is not None:
             x, inside, outside = self.jump
-            side = "below" if self.lo is not None and x > self.lo * 1.5 else "above"
+            near_hi = self.hi is not None and (self.lo is None or abs(math.log(
+                x / self.hi)) < abs(math.log(x / self.lo)))
+            side = "below" if near_hi else "above"
             text = (f"the error jumps {inside / max(outside, 1e-300):.3g}-fold at {v} = "
                     f"{x:.3g} (located to within 1 %; the error {side} it is the window's): "
                     f"a threshold branch")
             if self.slope is not None and abs(self.slope) >= 0.5:
-                text += f"; inside the window the error goes as {v}^{self.slope:.2g}"
+                text += f"; inside the window the error goes as ({v})^{self.slope:.2g}"
             return text
         if self.slope is not None and abs(self.slope) >= 0.5:
-            return (f"the error goes as {v}^{self.slope:.2g} over the window (measured); "
+            return (f"the error goes as ({v})^{self.slope:.2g} over the window (measured); "
                     f"cause not determined")
         return "cause not determined"
 
@@ -103,10 +108,9 @@ class Window:
         v = self.approach.var
         if self.lo is None or self.hi is None:
             return f"worst at {v} = {self.worst_x:.3g}"
-        lo = f"{self.lo:.3g}" if self.lo > 10.0 ** -DECADES * 1.01 else \
-            f"below {10.0 ** -DECADES:.0e}"
-        return f"over the bound for {lo} < {v} < {self.hi:.3g}, worst at {v} = " \
-               f"{self.worst_x:.3g}"
+        lo = f"{self.lo:.3g} (the smallest sampled)" if self.lo_open else f"{self.lo:.3g}"
+        hi = f"{self.hi:.3g} (the largest sampled)" if self.hi_open else f"{self.hi:.3g}"
+        return f"over the bound for {lo} < {v} < {hi}, worst at {v} = {self.worst_x:.3g}"
 
 
 def _q(x: float) -> fmpq:
@@ -252,6 +256,11 @@ def _ends(w: Window, xs, rs, i, r) -> None:
     ends = []
     w.lo = xs[lo_i] if lo_i == 0 else None
     w.hi = xs[hi_i] if hi_i + 1 == len(xs) else None
+    w.lo_open, w.hi_open = lo_i == 0, hi_i + 1 == len(xs)
+    if w.lo_open:
+        w.lo = min(w.lo, w.worst_x)
+    if w.hi_open:
+        w.hi = max(w.hi, w.worst_x)
     if lo_i > 0:
         ins, out = bisect(xs[lo_i], xs[lo_i - 1])
         w.lo = ins
