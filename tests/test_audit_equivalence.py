@@ -228,3 +228,11 @@ def test_any_member_under_any_convention_is_never_accused_many(gens, salt, ks, s
 def test_a_signed_angle_passes_on_more_seeds(seed):
     rep = audit(X.axangle_signed, OP, seed=seed)
     assert rep.ok, report.text(rep)
+
+
+def test_another_return_type_is_said_as_such():
+    """A logarithm that returns the 3 x 3 skew matrix: no member matches, and the report
+    says what it returns against the book's output (not that it raised)."""
+    rep = audit(lambda Q: X.cpm(X.log_atan2(Q)), "rotation_vector_from_rotation", search=False)
+    conv = [f.text for f in rep.findings if f.kind == "convention"]
+    assert conv and "returns a 3 x 3 array (9 values) where the book's output is 3" in conv[0]

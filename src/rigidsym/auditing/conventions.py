@@ -25,7 +25,7 @@ import numpy as np
 from rigidsym.auditing.targets import Form, Target
 
 __all__ = ["Generator", "GENERATORS", "Member", "Found", "find", "call_member", "flat",
-           "ordinary_points", "differ", "TOL"]
+           "ordinary_points", "differ", "describe", "TOL"]
 
 #: the relative residual under which a member matches at ordinary inputs
 TOL = 1e-8
@@ -208,6 +208,14 @@ def flat(v) -> np.ndarray:
     return np.ravel(to_numpy(v))
 
 
+def describe(v) -> str:
+    """What a user's function returned, in words (``a 3 x 3 array``, ``a tuple of 2``)."""
+    if isinstance(v, (tuple, list)):
+        return f"a {type(v).__name__} of {len(v)} ({', '.join(describe(o) for o in v)})"
+    shape = np.shape(to_numpy(v)) if not np.isscalar(v) else ()
+    return "a scalar" if shape == () else f"a {' x '.join(map(str, shape))} array"
+
+
 def call_member(func: Callable, member: Member, x: dict, dtype=None) -> np.ndarray:
     """The user's function under ``member`` at the kernel's arguments ``x`` (its arguments
     cast to ``dtype`` where given): its flat output in the book's layout. Raises what the
@@ -316,7 +324,11 @@ def differ(func, member: Member, points, truth, tgt: Target) -> str:
             continue
         t = tgt.candidates(kernel, np.asarray(full))[0]
         if got.shape != t.shape:
-            return f"returns {got.size} values where the book's has {t.size}"
+            raw = func(*member.user_args(x))
+            return (f"in kind: it returns {describe(raw)} ({got.size} values) where the book's "
+                    f"output is {t.size} values ("
+                    f"{', '.join(f'{o.name}[{o.size}]' for o in kernel.outputs)}); "
+                    f"a wrapper that returns the book's output is audited instead")
         got = nearest(tgt.equivalent, got, t)
         nt = max(float(np.linalg.norm(t)), 1e-300)
         d = float(np.linalg.norm(got - t)) / nt
