@@ -392,3 +392,28 @@ def test_euler_angles_other_branch_passes_and_degrees_extrinsic_are_named():
     assert rep.ok and sorted(rep.generators) == ["degrees_all_out", "extrinsic"], \
         report.text(rep)
     assert "extrinsic XYZ" in rep.convention and "degrees" in rep.convention
+
+
+def test_the_markdown_is_an_issue_body_with_a_reproducer_that_runs_alone(tmp_path):
+    """--markdown: a title naming the function and what it gets wrong, the versions (NumPy
+    at least), the convention block, the worst input in exact hex, and a reproducer that
+    imports no rigidsym and shows the error the audit found."""
+    import re
+
+    rep = audit(X.log_arccos, "rotation_vector_from_rotation", search=False,
+                spec="audit_examples:log_arccos")
+    md = report.markdown(rep)
+    lines = md.splitlines()
+    assert lines[0].startswith("### `log_arccos` ")
+    assert re.search(r"Versions: .*numpy \d+\.\d+", md)
+    assert "Convention:  f(Q), convention: the book's own" in md
+    w = rep.worst[0]
+    assert all(h in md for h in report.hexes(w.args[0]))
+    script = md.split("```python\n")[1].split("```")[0]
+    assert "rigidsym" not in script
+    res = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                         text=True, timeout=60,
+                         env={"PYTHONPATH": str(ROOT / "tests"), "PATH": "/usr/bin:/bin"})
+    assert res.returncode == 0, res.stderr
+    err = float(re.search(r"relative error (\S+)", res.stdout).group(1))
+    assert not err <= 8 * 2.0**-53 * (w.kappa + 1), res.stdout     # nan or past the bound

@@ -76,11 +76,36 @@ class AuditReport:
     seconds: float
     spec: str = ""             # module:function, for a regression test
     form: str = ""
+    versions: dict = field(default_factory=dict)   # the function's library and NumPy
+    equivalent: str = ""       # the output's class of outputs of the same rotation, or ""
+    windows: dict = field(default_factory=dict)    # dtype -> [window over the bound]
 
     @property
     def ok(self) -> bool:
         """No finding of severity "error"."""
         return not any(f.severity == "error" for f in self.findings)
+
+
+def versions(func: Callable, spec: str = "") -> dict:
+    """``{distribution: version}`` of the library ``func`` comes from (its top-level
+    package, where it says) and of NumPy."""
+    from importlib import metadata
+
+    out = {}
+    mod = spec.partition(":")[0] or getattr(getattr(func, "__wrapped__", func),
+                                            "__module__", "") or ""
+    top = mod.split(".")[0]
+    if top and top not in ("__main__", "builtins"):
+        try:
+            out[top] = metadata.version(top)
+        except metadata.PackageNotFoundError:
+            import sys
+
+            v = getattr(sys.modules.get(top), "__version__", None)
+            if isinstance(v, str):
+                out[top] = v
+    out["numpy"] = np.__version__
+    return out
 
 
 def _truth(tgt: Target, points: list[dict]) -> dict:
@@ -162,6 +187,13 @@ def _window_cause(regime: str, wins: list) -> str:
         return " - cause not determined"
     w = max(over, key=lambda w: w.worst_ratio)
     return f" - {w.where()}; {w.cause()}"
+
+
+def _window(w) -> dict:
+    """A window over the bound as plain data (JSON)."""
+    return {"regime": w.approach.regime, "var": w.approach.var, "lo": w.lo, "hi": w.hi,
+            "worst_x": w.worst_x, "worst_ratio": w.worst_ratio, "where": w.where(),
+            "cause": w.cause(), "evaluations": w.evaluations}
 
 
 def _judged_anyway(found: C.Found) -> bool:
@@ -294,5 +326,8 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                       found.broken, {d: [vars(b) | {"examples": [e.flag for e in b.examples]}
                                          for b in rows.values()] for d, rows in beh.items()},
                       worst, batch, _findings(found, tgt, beh, wins, batch),
-                      time.perf_counter() - t0, spec, m.form.label if m else "")
+                      time.perf_counter() - t0, spec, m.form.label if m else "",
+                      versions(func, spec), tgt.equivalent,
+                      {d: [_window(w) for w in ws if w.worst_ratio > 1]
+                       for d, ws in wins.items()})
     return rep
