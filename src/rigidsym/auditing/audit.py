@@ -251,11 +251,14 @@ def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed:
     """Audit ``func`` as the operation ``as_`` of the chapter.
 
     Finds the convention ``func`` implements (its argument layout and the member of the
-    target's convention product, or none with the nearest), the invariants it breaks, its
-    behaviour on each singular set of the book's formula (NaN, inf, exceptions), its worst
-    input (the kernel's regimes and a hill-climbing search on ``err / (8 u (kappa + 1))``)
-    against the declared formula's truth in ball arithmetic, rigidsym's kernel and each
-    installed peer at that input, and whether a row depends on its batch.
+    target's convention product, or none with the nearest and at how many inputs it
+    matches), the invariants it breaks, its behaviour on each singular set of the book's
+    formula (NaN, inf, exceptions), its worst input (the kernel's regimes, each approach
+    searched continuously and a hill-climbing search on ``err / (8 u (kappa + 1))``)
+    against the declared formula's truth in ball arithmetic, an output of the same
+    rotation judged as the same answer, rigidsym's kernel and each installed peer at that
+    input, the cause of each window of error where it is measured, and whether a row
+    depends on its batch.
 
     Args:
         func: the function (NumPy; PyTorch or JAX: called with tensors where NumPy
@@ -266,7 +269,8 @@ def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed:
             which put the argument layouts that fit them first.
         seed: the seed of the random inputs, the regimes and the search.
         dtypes: the float types swept (``"float64"``, ``"float32"``).
-        search: run the hill-climbing search besides the regimes.
+        search: run the continuous search of each approach and the hill-climbing search
+            besides the regimes.
         n_start, steps: the search's random starts and climbing steps.
         spec: ``module:function`` (written into a regression test).
 
