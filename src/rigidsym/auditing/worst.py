@@ -3,8 +3,10 @@
 The project's own search (:mod:`rigidsym.codegen.accuracy.harness`): the regimes of the
 kernel (its derived singular sets, approaches log-spaced from 1e-1 to 1e-75 of each, the
 ends of the floating range), each vector argument's approach to 0 and to exactly 0 (a
-rotation vector's to pi), then hill climbing on ``err / (8 u (kappa + 1))`` from
-exponent-uniform starts. Each input is judged by the harness's judge against the declared
+rotation vector's to pi), each approach searched continuously (:mod:`.windows`), then hill
+climbing on ``err / (8 u (kappa + 1))`` from exponent-uniform starts. The user's output is
+first moved to the member of its class of outputs of the same rotation nearest rigidsym's
+kernel there (:mod:`.equivalence`). Each input is judged by the harness's judge against the declared
 formula in ball arithmetic at the exact input (``reference``: narrower than 1e-3 ulp), the
 condition half of issue 37's rule (``err <= 8 u (kappa + 1)``, the bound rigidsym's kernels
 meet), with rigidsym's kernel judged at the same input beside it. A flag (NaN, inf or an
