@@ -8,7 +8,7 @@ climbing on ``err / (8 u (kappa + 1))`` from exponent-uniform starts. The user's
 first moved to the member of its class of outputs of the same rotation nearest rigidsym's
 kernel there (:mod:`.equivalence`). Each input is judged by the harness's judge against the declared
 formula in ball arithmetic at the exact input (``reference``: narrower than 1e-3 ulp), the
-condition half of issue 37's rule (``err <= 8 u (kappa + 1)``, the bound rigidsym's kernels
+condition half of the accuracy rule (``err <= 8 u (kappa + 1)``, the bound rigidsym's kernels
 meet), with rigidsym's kernel judged at the same input beside it. A flag (NaN, inf or an
 exception) is expected where the truth is undefined or the rounding of the input can reach
 the singular set (``kappa u >= 1/8``), else it is a finding.
