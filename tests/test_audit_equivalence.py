@@ -9,6 +9,7 @@ against SciPy's rotation of the rotation vector (an oracle of this test only).""
 from __future__ import annotations
 
 import math
+import re
 import sys
 from pathlib import Path
 
@@ -167,8 +168,9 @@ def test_near_a_half_turn_and_the_identity_the_class_is_judged_by_its_accuracy()
 def test_a_signed_angle_passes_and_the_eigenvector_axis_bug_is_found():
     """A correct signed angle (transforms3d's convention) passes; transforms3d's
     mat2axangle, re-created, is found in the book's convention and its small-angle axis
-    bug (an eigenvector for an eigenvalue within 1e-5 of 1 that is not the axis) is found,
-    confirmed against SciPy at the worst input."""
+    bug (an eigenvector for an eigenvalue within 1e-5 of 1 that is not the axis) is found
+    below phi = 1e-5, the threshold located, and confirmed at the worst input against the
+    input's own axis and SciPy's."""
     rep = audit(X.axangle_signed, OP)
     assert rep.ok and rep.generators == [], report.text(rep)
     rep = audit(X.axangle_eig, OP)
@@ -176,6 +178,9 @@ def test_a_signed_angle_passes_and_the_eigenvector_axis_bug_is_found():
     assert not any(f.kind == "convention" for f in rep.findings)
     bad = [f for f in rep.findings if f.severity == "error" and "phi->0" in f.text]
     assert bad, report.text(rep)
+    # the window reaches up to the eigenvalue tolerance, phi = 1e-5, located to within 1 %
+    said = re.search(r"jumps \S+ at phi = (\S+) \(located to within 1 %", bad[0].text)
+    assert said and abs(float(said.group(1)) / 1e-5 - 1) < 0.01, bad[0].text
     w = rep.worst[0]
     Q = np.asarray(w.args[0])
     e, phi = X.axangle_eig(Q)

@@ -44,13 +44,14 @@ JUMP = 10.0
 
 @dataclass(frozen=True)
 class Approach:
-    """A one-parameter family of inputs: ``point(x)`` (exact, per argument), ``x`` in (0,
-    1]; ``regime`` the regime it refines (its name in the report), ``var`` what ``x`` is,
-    in the book's words (``phi``, ``pi - phi``, ``|w|``)."""
+    """A one-parameter family of inputs: ``point(x, draw)`` (exact, per argument), ``x`` in
+    (0, 1], everything else (the axis, the other arguments) drawn by the integer ``draw``
+    (the same draw, the same inputs); ``regime`` the regime it refines (its name in the
+    report), ``var`` what ``x`` is, in the book's words (``phi``, ``pi - phi``, ``|w|``)."""
 
     regime: str
     var: str
-    point: Callable[[float], list]
+    point: Callable[[float, int], list]
 
 
 @dataclass
@@ -121,61 +122,68 @@ def approaches(kernel, seed: int) -> list[Approach]:
     """The approaches of ``kernel``'s arguments: a rotation's (or a transform's) toward the
     identity and toward a half turn from both sides, an unconstrained 3- or 6-vector's
     (its first block) toward 0, a rotation vector's toward pi from both sides, and the
-    distance to each derived zero of a norm."""
+    distance to each derived zero of a norm. Each draw takes a new axis and new other
+    arguments (seeded by ``seed`` and the draw)."""
     from rigidsym.codegen.accuracy.singular_sets import norm_zeros
 
-    rng = np.random.default_rng(seed + 11)
-    base = [P.random_arg(a, rng, kernel.name) for a in kernel.args]
-    out: list[Approach] = []
+    cache: dict = {}
+
+    def drawn(i: int, draw: int, n: int = 3):
+        """(the other arguments, a unit n-vector, a random 3-vector) of ``draw``."""
+        key = (i, draw, n)
+        if key not in cache:
+            rng = np.random.default_rng([seed + 11, i, draw])
+            base = [P.random_arg(a, rng, kernel.name) for a in kernel.args]
+            cache[key] = (base, P.unit(rng, n), [_q(v) for v in rng.standard_normal(3)])
+        return cache[key]
 
     def put(i, value_of):
-        def point(x, i=i, value_of=value_of):
+        def point(x, draw, i=i, value_of=value_of):
+            base, e, d = drawn(i, draw)
             p = list(base)
-            p[i] = value_of(x)
+            p[i] = value_of(x, e, d, base[i])
             return p
         return point
 
+    out: list[Approach] = []
     for i, a in enumerate(kernel.args):
         if a.kind in ("rotation", "transform"):
-            e = P.unit(rng)
-            d = [_q(v) for v in rng.standard_normal(3)]
-
-            def wrap(Q, a=a, d=d):
+            def wrap(Q, d, a=a):
                 return P.transform(Q, d) if a.kind == "transform" else Q
 
             name = "Q" if a.kind == "rotation" else a.name
             out += [
-                Approach(f"{name}: phi->0", "phi", put(i, lambda x, e=e, w=wrap: w(
-                    P.rotation(e, _q(math.tan(x / 2)), fmpq(1))))),
-                Approach(f"{name}: phi->pi-", "pi - phi", put(i, lambda x, e=e, w=wrap: w(
-                    P.rotation(e, fmpq(1), _q(math.tan(x / 2)))))),
-                Approach(f"{name}: phi->pi+", "phi - pi", put(i, lambda x, e=e, w=wrap: w(
-                    P.rotation(e, fmpq(1), _q(-math.tan(x / 2))))))]
+                Approach(f"{name}: phi->0", "phi", put(i, lambda x, e, d, _, w=wrap: w(
+                    P.rotation(e, _q(math.tan(x / 2)), fmpq(1)), d))),
+                Approach(f"{name}: phi->pi-", "pi - phi", put(i, lambda x, e, d, _, w=wrap: w(
+                    P.rotation(e, fmpq(1), _q(math.tan(x / 2))), d))),
+                Approach(f"{name}: phi->pi+", "phi - pi", put(i, lambda x, e, d, _, w=wrap: w(
+                    P.rotation(e, fmpq(1), _q(-math.tan(x / 2))), d)))]
         elif a.kind == "any" and a.shape in ((3,), (6,)) and a.name != "m":
-            e = P.unit(rng)
-            rest = list(base[i][3:])
-
-            def vec(r, e=e, rest=rest):
-                return [*(v * r for v in e), *rest]
+            def vec(r, e, own):
+                return [*(v * r for v in e), *own[3:]]
 
             out.append(Approach(f"|{a.name}[0:3]| -> 0", f"|{a.name}|",
-                                put(i, lambda x, f=vec: f(_q(x)))))
+                                put(i, lambda x, e, d, own, f=vec: f(_q(x), e, own))))
             if a.name in ("w", "xi"):
                 out += [Approach(f"|{a.name}[0:3]| -> pi", f"pi - |{a.name}|",
-                                 put(i, lambda x, f=vec: f(_q(math.pi * (1 - x))))),
+                                 put(i, lambda x, e, d, own, f=vec: f(
+                                     _q(math.pi * (1 - x)), e, own))),
                         Approach(f"|{a.name}[0:3]| -> pi", f"|{a.name}| - pi",
-                                 put(i, lambda x, f=vec: f(_q(math.pi * (1 + x)))))]
+                                 put(i, lambda x, e, d, own, f=vec: f(
+                                     _q(math.pi * (1 + x)), e, own)))]
     seen = set()
     for z in norm_zeros(kernel):
         t0 = float(z.theta0)
         if (z.arg, z.comps, t0) in seen:
             continue
         seen.add((z.arg, z.comps, t0))
-        d = P.unit(rng, len(z.comps))
         arg = kernel.args[z.arg].name
         name = f"derived: |{arg}|->{P.sp_str(z.theta0)}"
 
-        def at(x, z=z, d=d, t0=t0, sign=1):
+        def at(x, draw, z=z, t0=t0, sign=1):
+            base, _, _ = drawn(100 + z.arg, draw)
+            _, d, _ = drawn(200 + z.arg, draw, len(z.comps))
             p = list(base)
             v = list(p[z.arg])
             r = _q(t0 + sign * x * max(t0, 1.0))
@@ -185,8 +193,10 @@ def approaches(kernel, seed: int) -> list[Approach]:
             return p
 
         s0 = P.sp_str(z.theta0)
-        out += [Approach(name, f"({s0} - |{arg}|)/{s0}", lambda x, f=at: f(x, sign=-1)),
-                Approach(name, f"(|{arg}| - {s0})/{s0}", lambda x, f=at: f(x, sign=1))]
+        out += [Approach(name, f"({s0} - |{arg}|)/{s0}",
+                         lambda x, draw, f=at: f(x, draw, sign=-1)),
+                Approach(name, f"(|{arg}| - {s0})/{s0}",
+                         lambda x, draw, f=at: f(x, draw, sign=1))]
     return out
 
 
@@ -201,20 +211,26 @@ def _samples(rng) -> list[float]:
 
 def scan(ap: Approach, judge: Callable[[list, str], object], seed: int) -> Window:
     """Search ``ap`` (see the module): ``judge(point, regime)`` returns a judgement with
-    ``ratio`` (err over the bound; inf for a spurious flag) and ``flag``."""
+    ``ratio`` (err over the bound; inf for a spurious flag) and ``flag``. Each stratified
+    sample is a new draw of the approach (a new axis, new other arguments); the search
+    around the worst and the bisection of the window's ends keep the worst's draw."""
     rng = np.random.default_rng(seed + 101)
-    seen: dict[float, object] = {}
+    seen: dict[tuple[float, int], object] = {}
 
-    def r(x: float) -> float:
-        if x not in seen:
-            seen[x] = judge(ap.point(x), ap.regime)
-        j = seen[x]
+    def judged(x: float, draw: int) -> float:
+        if (x, draw) not in seen:
+            seen[(x, draw)] = judge(ap.point(x, draw), ap.regime)
+        j = seen[(x, draw)]
         return j.ratio if j.flag != "expected" else 0.0
 
     xs = _samples(rng)
-    rs = [r(x) for x in xs]
+    rs = [judged(x, k) for k, x in enumerate(xs)]
     i = int(np.argmax(rs))
-    # golden section on log x between the worst sample's neighbours
+
+    def r(x: float) -> float:
+        return judged(x, i)
+
+    # golden section on log x between the worst sample's neighbours, on the worst's draw
     a = math.log(xs[i - 1] if i > 0 else xs[i] / 2)
     b = math.log(xs[i + 1] if i + 1 < len(xs) else min(1.0, xs[i] * 2))
     g = (math.sqrt(5) - 1) / 2
@@ -228,20 +244,23 @@ def scan(ap: Approach, judge: Callable[[list, str], object], seed: int) -> Windo
         else:
             a, c = c, d
             d = a + g * (b - a)
-    wx = max(seen, key=lambda x: (r(x), -abs(math.log(x / xs[i]))))
-    w = Window(ap, wx, r(wx), seen[wx])
+    own = [x for (x, k) in seen if k == i]
+    wx = max(own, key=lambda x: (r(x), -abs(math.log(x / xs[i]))))
+    w = Window(ap, wx, r(wx), seen[(wx, i)])
     if w.worst_ratio > 1:
-        _ends(w, xs, rs, i, r)
+        # the window on the worst's draw: the samples out from the worst re-judged there
+        # until one is within the bound on each side
+        _ends(w, xs, i, r)
     w.evaluations = len(seen)
-    w.judged = sorted(seen.items(), key=lambda t: t[0])
+    w.judged = sorted(((x, j) for (x, _), j in seen.items()), key=lambda t: t[0])
     return w
 
 
-def _ends(w: Window, xs, rs, i, r) -> None:
+def _ends(w: Window, xs, i, r) -> None:
     lo_i, hi_i = i, i
-    while lo_i > 0 and rs[lo_i - 1] > 1:
+    while lo_i > 0 and r(xs[lo_i - 1]) > 1:
         lo_i -= 1
-    while hi_i + 1 < len(xs) and rs[hi_i + 1] > 1:
+    while hi_i + 1 < len(xs) and r(xs[hi_i + 1]) > 1:
         hi_i += 1
 
     def bisect(inside: float, outside: float) -> tuple[float, float]:
@@ -277,9 +296,8 @@ def _ends(w: Window, xs, rs, i, r) -> None:
                 and min(a) > 1:
             if w.jump is None or min(a) / max(b) > w.jump[1] / max(w.jump[2], 1e-300):
                 w.jump = (math.sqrt(ins * out), min(a), max(b))
-    inside = [(x, rr) for x, rr in zip(xs, rs, strict=True)
-              if w.lo is not None and w.hi is not None and w.lo <= x <= w.hi
-              and math.isfinite(rr) and rr > 0]
+    inside = [(x, r(x)) for x in xs[lo_i:hi_i + 1]
+              if math.isfinite(r(x)) and r(x) > 0]
     if len(inside) >= 4:
         lx = np.log([x for x, _ in inside])
         ly = np.log([rr for _, rr in inside])
