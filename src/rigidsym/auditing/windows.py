@@ -3,10 +3,11 @@ decades is missed, and the cause of a window read from the function's own errors
 
 An *approach* is a one-parameter family of inputs ``x -> point`` (the angle ``phi`` of a
 rotation toward the identity, ``pi - phi`` toward a half turn, ``|w|`` toward 0, the
-distance to a derived zero of a norm), everything else drawn once. It is sampled
-stratified in ``log10 x``: each decade from 1 down to 1e-16 cut into :data:`PER_DECADE`
-strata, one log-uniform sample in each (seeded), so that every interval of ``x`` wider than
-a factor ``10 ** (2 / PER_DECADE)`` (2.2 at 4 a decade) holds a whole stratum and a sample.
+distance to a derived zero of a norm), everything else (the axis, the other arguments)
+drawn anew for each sample. It is sampled on a lattice in ``log10 x``, :data:`PER_DECADE`
+points a decade from 1e-16 to 1 shifted by a random offset (seeded), so that every
+interval of ``x`` wider than a factor ``10 ** (1 / PER_DECADE)`` (1.78 at 4 a decade) holds
+a sample.
 Around the worst sample a golden-section search on ``log x`` refines the worst input; the
 window (the run of samples over the bound around it) has its ends located by bisection to
 within a factor :data:`END_FACTOR` of ``x``.
@@ -32,7 +33,7 @@ from rigidsym.codegen.accuracy import regimes as P
 __all__ = ["Approach", "Window", "approaches", "scan", "PER_DECADE", "DECADES",
            "END_FACTOR", "JUMP"]
 
-#: strata per decade of the approach's parameter
+#: samples per decade of the approach's parameter
 PER_DECADE = 4
 #: the decades sampled: x from 10**-DECADES to 1
 DECADES = 16
@@ -201,17 +202,16 @@ def approaches(kernel, seed: int) -> list[Approach]:
 
 
 def _samples(rng) -> list[float]:
-    xs = []
-    for k in range(DECADES):
-        for j in range(PER_DECADE):
-            lo = -(k + 1) + j / PER_DECADE
-            xs.append(10.0 ** (lo + rng.uniform(0, 1 / PER_DECADE)))
-    return sorted(xs)
+    """``x`` on a lattice of :data:`PER_DECADE` points a decade in ``log10 x`` from
+    ``10**-DECADES`` to 1, shifted by a random offset: consecutive samples are a factor
+    ``10 ** (1 / PER_DECADE)`` apart, so every interval wider than that holds one."""
+    off = rng.uniform(0, 1 / PER_DECADE)
+    return [10.0 ** (-DECADES + off + k / PER_DECADE) for k in range(DECADES * PER_DECADE)]
 
 
 def scan(ap: Approach, judge: Callable[[list, str], object], seed: int) -> Window:
     """Search ``ap`` (see the module): ``judge(point, regime)`` returns a judgement with
-    ``ratio`` (err over the bound; inf for a spurious flag) and ``flag``. Each stratified
+    ``ratio`` (err over the bound; inf for a spurious flag) and ``flag``. Each
     sample is a new draw of the approach (a new axis, new other arguments); the search
     around the worst and the bisection of the window's ends keep the worst's draw."""
     rng = np.random.default_rng(seed + 101)
