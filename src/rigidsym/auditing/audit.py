@@ -156,9 +156,11 @@ def _peers(tgt, member, w: WorstInput, x_arrays, truth) -> dict:
     return out
 
 
-def _flag_cause(regime: str, rows: dict) -> str:
+def _flag_cause(regime: str, rows: dict, wins: list) -> str:
     """A flag's cause where the sweep measured it: a flag at exactly 0 whose approach to 0
-    (down to 1e-75) is finite is the lack of a guard for exactly 0; else not determined."""
+    (down to 1e-75) is finite is the lack of a guard for exactly 0; a flag one ulp past
+    +-1 alone, an inverse sine or cosine with no clamp; on an approach, the window where it
+    happens (:func:`_window_cause`); else not determined."""
     if regime == "gimbal lock, +-1 rounded past":
         lock = rows.get("gimbal lock")
         if lock is not None and lock.n and not lock.nan and not lock.raised:
@@ -171,7 +173,7 @@ def _flag_cause(regime: str, rows: dict) -> str:
     elif regime.endswith(" = 0"):
         approach = f"|{regime[:-4]}| -> 0"
     else:
-        return " - cause not determined"
+        return _window_cause(regime, wins)
     near = rows.get(approach)
     if near is not None and near.n and not near.nan and not near.raised:
         return (" - finite on the approach to it (down to 1e-75), a flag at exactly 0 "
@@ -232,7 +234,8 @@ def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str) -> list[Fi
             if b.nan or b.raised:
                 out.append(Finding(sev, "flag", f"{dt}, {b.regime}: {b.nan} NaN/inf and "
                                    f"{b.raised} exceptions of {b.n} inputs where the truth is "
-                                   f"finite ({ex})" + _flag_cause(b.regime, rows)))
+                                   f"finite ({ex})" + _flag_cause(b.regime, rows, wins.get(
+                                       dt, []))))
             if np.isfinite(b.worst_ratio) and b.worst_ratio > 1:
                 u = 2.0**-53 if dt == "float64" else 2.0**-24
                 kind = "silent wrong" if b.worst_ratio * 8 * u > 1e-3 else "inaccurate"

@@ -89,6 +89,9 @@ class Window:
     def cause(self) -> str:
         """The cause as measured, or "cause not determined"."""
         v = self.approach.var
+        if self.jump is not None and not math.isfinite(self.jump[1]):
+            return (f"the output is NaN, inf or an exception on the window, from {v} = "
+                    f"{self.jump[0]:.3g} (located to within 1 %); cause not determined")
         if self.jump is not None:
             x, inside, outside = self.jump
             near_hi = self.hi is not None and (self.lo is None or abs(math.log(
@@ -292,7 +295,7 @@ def _ends(w: Window, xs, i, r) -> None:
         step = ins / out                       # toward the inside
         a = [r(ins * step ** k) for k in range(3)]
         b = [r(out / step ** k) for k in range(3)]
-        if all(map(math.isfinite, a)) and min(a) >= JUMP * max(max(b), 1e-300) \
+        if all(map(math.isfinite, b)) and min(a) >= JUMP * max(max(b), 1e-300) \
                 and min(a) > 1:
             if w.jump is None or min(a) / max(b) > w.jump[1] / max(w.jump[2], 1e-300):
                 w.jump = (math.sqrt(ins * out), min(a), max(b))
