@@ -39,8 +39,8 @@ BUGS = [
 #: the Taylor branch's threshold at |w| = 1e-5, the window of the arccos log near a half
 #: turn, the flag at exactly 0 alone, the flag one ulp past +-1 alone
 NAMED = {"wrench_ad_transpose": "power <t, w> not invariant",
-         "left_jacobian_wrong_taylor": "at |w| = 1e-05 (located to within 1 %; the error "
-                                       "below it is the window's): a threshold branch",
+         "left_jacobian_wrong_taylor": "(located to within 1 %; the error below it is the "
+                                       "window's): a threshold branch",
          "log_arccos": "over the bound for",
          "exp_no_epsilon": "no guard for exactly 0",
          "ypr_asin_no_clamp": "inverse sine or cosine with no clamp"}
@@ -58,6 +58,11 @@ def test_each_recreated_bug_is_found_and_named(func, op, kind, where):
     errors = [f for f in rep.findings if f.severity == "error"]
     assert any(f.kind == kind and where in f.text for f in errors), report.text(rep)
     assert any(NAMED[func.__name__] in f.text for f in errors), report.text(rep)
+    if func is X.left_jacobian_wrong_taylor:     # the Taylor branch's threshold, |w| = 1e-5
+        import re
+
+        said = [re.search(r"at \|w\| = (\S+) \(located", f.text) for f in errors]
+        assert any(m and abs(float(m.group(1)) / 1e-5 - 1) < 0.01 for m in said)
     # a reproducer: the user's own arguments at the worst input, exact
     assert rep.worst and func.__name__ + "(np.array([float.fromhex(" in report.text(rep)
 
