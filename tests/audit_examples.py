@@ -120,3 +120,53 @@ def ypr_atan2(R):
     if R[0, 0] == 0 and R[1, 0] == 0:
         return np.array([np.arctan2(-R[0, 1], R[1, 1]), pitch, 0.0])
     return np.array([np.arctan2(R[1, 0], R[0, 0]), pitch, np.arctan2(R[2, 1], R[2, 2])])
+
+
+# transforms3d 0.4.2's axangles.mat2axangle, re-created: the axis an eigenvector of Q for an
+# eigenvalue within 1e-5 of 1 (the last such), the angle signed (in (-pi, pi]): (e, phi) and
+# (-e, -phi) are the same rotation, so its convention is the book's; below phi ~ 1e-5 every
+# eigenvalue is within 1e-5 of 1 and the eigenvector taken need not be the axis (its bug)
+def axangle_eig(Q):
+    L, V = np.linalg.eig(np.asarray(Q, dtype=np.float64).T)
+    i = np.where(np.abs(L - 1.0) < 1e-5)[0]
+    if not len(i):
+        raise ValueError("no unit eigenvector corresponding to eigenvalue 1")
+    e = np.real(V[:, i[-1]]).squeeze()
+    c = (np.trace(Q) - 1.0) / 2.0
+    if abs(e[2]) > 1e-8:
+        s = (Q[1, 0] + (c - 1.0) * e[0] * e[1]) / e[2]
+    elif abs(e[1]) > 1e-8:
+        s = (Q[0, 2] + (c - 1.0) * e[0] * e[2]) / e[1]
+    else:
+        s = (Q[2, 1] + (c - 1.0) * e[1] * e[2]) / e[0]
+    return e, np.arctan2(s, c)
+
+
+# a correct axis and angle with the angle signed (e[0] >= 0 always) and, at Q = 1, the axis
+# [0, 0, 1]: equivalent to the book's at every input
+def axangle_signed(Q):
+    w = log_atan2(Q)
+    phi = np.linalg.norm(w)
+    if phi == 0:
+        return np.array([0.0, 0.0, 1.0]), 0.0
+    e = w / phi
+    return (e, phi) if e[0] >= 0 else (-e, -phi)
+
+
+# numpy-quaternion's as_rotation_vector, re-created: twice the log of a quaternion whose sign
+# is not normalised, so that past some angle the vector is w + 2 pi w/|w| (not the principal
+# logarithm); here past phi = 2.3
+def log_unwrapped(Q):
+    w = log_atan2(Q)
+    phi = np.linalg.norm(w)
+    return w if phi <= 2.3 else w * (1 - 2 * np.pi / phi)
+
+
+# a truncated series used on a window only, 1e-3 < phi < 2.3e-3 (the window the decades
+# 1e-3 and 1e-2 step over): w = (1 + s^2/6) vect(Q), s = |vect(Q)| = sin(phi)
+def log_series_window(Q):
+    s, c = vee(Q), (np.trace(Q) - 1) / 2
+    ns = np.linalg.norm(s)
+    if c > 0 and 1e-3 < ns < 2.3e-3:
+        return (1 + ns**2 / 6) * s
+    return log_atan2(Q)

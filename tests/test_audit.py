@@ -31,16 +31,19 @@ BUGS = [
     (X.wrench_ad_transpose, "wrench_transfer", "convention", "Ad_T^T where the book's Ad_T^-T"),
     (X.left_jacobian_wrong_taylor, "rotation_vector_left_jacobian", "inaccurate",
      "-> 0: error"),
-    (X.log_arccos, "rotation_vector_from_rotation", "silent wrong", "arccos"),
+    (X.log_arccos, "rotation_vector_from_rotation", "silent wrong", "phi->pi"),
     (X.exp_no_epsilon, "rotation_from_rotation_vector", "flag", "w[0:3] = 0"),
     (X.ypr_asin_no_clamp, "euler_angles_from_rotation", "flag", "gimbal lock"),
 ]
-#: the name each finding gives the bug
+#: what each finding says of the bug, measured on the function (never a guess by regime):
+#: the Taylor branch's threshold at |w| = 1e-5, the window of the arccos log near a half
+#: turn, the flag at exactly 0 alone, the flag one ulp past +-1 alone
 NAMED = {"wrench_ad_transpose": "power <t, w> not invariant",
-         "left_jacobian_wrong_taylor": "small-angle branch (Taylor series) of the wrong sign",
-         "log_arccos": "arccos((tr Q - 1)/2)",
-         "exp_no_epsilon": "no guard or epsilon at 0",
-         "ypr_asin_no_clamp": "SymForce #226"}
+         "left_jacobian_wrong_taylor": "(located to within 1 %; the error below it is the "
+                                       "window's): a threshold branch",
+         "log_arccos": "over the bound for",
+         "exp_no_epsilon": "no guard for exactly 0",
+         "ypr_asin_no_clamp": "inverse sine or cosine with no clamp"}
 CORRECT = [(X.wrench_ad_inverse_transpose, "wrench_transfer"),
            (X.left_jacobian, "rotation_vector_left_jacobian"),
            (X.log_atan2, "rotation_vector_from_rotation"),
@@ -55,6 +58,11 @@ def test_each_recreated_bug_is_found_and_named(func, op, kind, where):
     errors = [f for f in rep.findings if f.severity == "error"]
     assert any(f.kind == kind and where in f.text for f in errors), report.text(rep)
     assert any(NAMED[func.__name__] in f.text for f in errors), report.text(rep)
+    if func is X.left_jacobian_wrong_taylor:     # the Taylor branch's threshold, |w| = 1e-5
+        import re
+
+        said = [re.search(r"at \|w\| = (\S+) \(located", f.text) for f in errors]
+        assert any(m and abs(float(m.group(1)) / 1e-5 - 1) < 0.01 for m in said)
     # a reproducer: the user's own arguments at the worst input, exact
     assert rep.worst and func.__name__ + "(np.array([float.fromhex(" in report.text(rep)
 
@@ -389,3 +397,28 @@ def test_euler_angles_other_branch_passes_and_degrees_extrinsic_are_named():
     assert rep.ok and sorted(rep.generators) == ["degrees_all_out", "extrinsic"], \
         report.text(rep)
     assert "extrinsic XYZ" in rep.convention and "degrees" in rep.convention
+
+
+def test_the_markdown_is_an_issue_body_with_a_reproducer_that_runs_alone(tmp_path):
+    """--markdown: a title naming the function and what it gets wrong, the versions (NumPy
+    at least), the convention block, the worst input in exact hex, and a reproducer that
+    imports no rigidsym and shows the error the audit found."""
+    import re
+
+    rep = audit(X.log_arccos, "rotation_vector_from_rotation", search=False,
+                spec="audit_examples:log_arccos")
+    md = report.markdown(rep)
+    lines = md.splitlines()
+    assert lines[0].startswith("### `log_arccos` ")
+    assert re.search(r"Versions: .*numpy \d+\.\d+", md)
+    assert "Convention:  f(Q), convention: the book's own" in md
+    w = rep.worst[0]
+    assert all(h in md for h in report.hexes(w.args[0]))
+    script = md.split("```python\n")[1].split("```")[0]
+    assert "rigidsym" not in script
+    res = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                         text=True, timeout=60,
+                         env={"PYTHONPATH": str(ROOT / "tests"), "PATH": "/usr/bin:/bin"})
+    assert res.returncode == 0, res.stderr
+    err = float(re.search(r"relative error (\S+)", res.stdout).group(1))
+    assert not err <= 8 * 2.0**-53 * (w.kappa + 1), res.stdout     # nan or past the bound

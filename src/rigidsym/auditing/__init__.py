@@ -3,8 +3,11 @@ book (``rigidsym audit``, :func:`rigidsym.audit`).
 
 - ``targets``: the operations a function can be audited as, their argument layouts.
 - ``conventions``: the convention generators, the finder over their product, the invariants.
+- ``equivalence``: the outputs that denote the same rotation, judged as one answer.
 - ``worst``: the singular sets, the worst-input search and the judge on the user's function
   (the accuracy harness of :mod:`rigidsym.codegen.accuracy.harness`).
+- ``windows``: each approach to a singular set searched continuously, the window of error
+  located, its cause as measured.
 - ``callables``: a ``module:function`` or a C symbol (ctypes) as a callable.
 - ``audit``: :func:`audit` and its :class:`AuditReport`.
 - ``report``: the report as text, JSON, Markdown and a pytest regression file.

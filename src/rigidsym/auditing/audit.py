@@ -76,11 +76,36 @@ class AuditReport:
     seconds: float
     spec: str = ""             # module:function, for a regression test
     form: str = ""
+    versions: dict = field(default_factory=dict)   # the function's library and NumPy
+    equivalent: str = ""       # the output's class of outputs of the same rotation, or ""
+    windows: dict = field(default_factory=dict)    # dtype -> [window over the bound]
 
     @property
     def ok(self) -> bool:
         """No finding of severity "error"."""
         return not any(f.severity == "error" for f in self.findings)
+
+
+def versions(func: Callable, spec: str = "") -> dict:
+    """``{distribution: version}`` of the library ``func`` comes from (its top-level
+    package, where it says) and of NumPy."""
+    from importlib import metadata
+
+    out = {}
+    mod = spec.partition(":")[0] or getattr(getattr(func, "__wrapped__", func),
+                                            "__module__", "") or ""
+    top = mod.split(".")[0]
+    if top and top not in ("__main__", "builtins"):
+        try:
+            out[top] = metadata.version(top)
+        except metadata.PackageNotFoundError:
+            import sys
+
+            v = getattr(sys.modules.get(top), "__version__", None)
+            if isinstance(v, str):
+                out[top] = v
+    out["numpy"] = np.__version__
+    return out
 
 
 def _truth(tgt: Target, points: list[dict]) -> dict:
@@ -131,32 +156,68 @@ def _peers(tgt, member, w: WorstInput, x_arrays, truth) -> dict:
     return out
 
 
-def _likely(regime: str, flag: bool) -> str:
-    """What usually causes a finding on ``regime`` (the bugs of the peers' trackers)."""
-    r = regime.replace(" ", "")
-    if flag and ("=0" in r or "->0" in r or r == "Q=1"):
-        return (" - likely a division by the norm (angle) with no guard or epsilon at 0 "
-                "(SymForce #226)")
-    if "->0" in r or "scale" in r:
-        return (" - likely a small-angle branch (Taylor series) of the wrong sign or order, "
-                "or a cancellation such as 1 - cos(phi) (manif #223, gtsam #746)")
-    if "gimbal" in r:
-        return (" - likely asin or acos of an entry rounded past +-1 with no clamp, or "
-                "atan2(0, 0) at the gimbal lock with no branch for it (SymForce #226)")
-    if "pi" in r:
-        return (" - likely an angle from arccos((tr Q - 1)/2) or an axis from the skew part "
-                "near a half turn (pytransform3d #189, gtsam PR #2723)")
-    return ""
+def _flag_cause(regime: str, rows: dict, wins: list) -> str:
+    """A flag's cause where the sweep measured it: a flag at exactly 0 whose approach to 0
+    (down to 1e-75) is finite is the lack of a guard for exactly 0; a flag one ulp past
+    +-1 alone, an inverse sine or cosine with no clamp; on an approach, the window where it
+    happens (:func:`_window_cause`); else not determined."""
+    if regime == "gimbal lock, +-1 rounded past":
+        lock = rows.get("gimbal lock")
+        if lock is not None and lock.n and not lock.nan and not lock.raised:
+            return (" - a flag only where an entry of Q is rounded one ulp past +-1 (none at "
+                    "the lock itself): the entry taken by an inverse sine or cosine with no "
+                    "clamp")
+        return " - cause not determined"
+    if regime == "Q=1":
+        approach = "Q: phi->0"
+    elif regime.endswith(" = 0"):
+        approach = f"|{regime[:-4]}| -> 0"
+    else:
+        return _window_cause(regime, wins)
+    near = rows.get(approach)
+    if near is not None and near.n and not near.nan and not near.raised:
+        return (" - finite on the approach to it (down to 1e-75), a flag at exactly 0 "
+                "alone: no guard for exactly 0")
+    return " - cause not determined"
 
 
-def _findings(found: C.Found, tgt, beh: dict, worst: list, batch: str) -> list[Finding]:
+def _window_cause(regime: str, wins: list) -> str:
+    """The worst window over the bound on ``regime``'s approaches: where it is, and its
+    cause as measured (:meth:`.windows.Window.cause`)."""
+    over = [w for w in wins if w.approach.regime == regime and w.worst_ratio > 1]
+    if not over:
+        return " - cause not determined"
+    w = max(over, key=lambda w: w.worst_ratio)
+    return f" - {w.where()}; {w.cause()}"
+
+
+def _window(w) -> dict:
+    """A window over the bound as plain data (JSON)."""
+    return {"regime": w.approach.regime, "var": w.approach.var, "lo": w.lo, "hi": w.hi,
+            "worst_x": w.worst_x, "worst_ratio": w.worst_ratio, "where": w.where(),
+            "cause": w.cause(), "evaluations": w.evaluations}
+
+
+def _judged_anyway(found: C.Found) -> bool:
+    """No member matches at every input, but the nearest at most of them: its accuracy is
+    searched and judged all the same (what it gets wrong may be the reason)."""
+    return found.member is None and found.nearest is not None and 2 * found.agree > found.n
+
+
+def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str) -> list[Finding]:
     out = []
     if found.member is None:
+        n = found.nearest.says(tgt)
+        agree = (f"{found.agree} of {found.n} inputs match the book's under the nearest, "
+                 f"{n}; the others differ {found.differ}" if found.agree else
+                 f"no input matches under any; the nearest, {n}, differs {found.differ}")
         out.append(Finding("error", "convention", f"no member of {found.tried} matches the "
-                           f"book's {tgt.name}; the nearest, {found.nearest.says(tgt)}, is "
-                           f"off by {found.residual:.3g} (relative)" + (
+                           f"book's {tgt.name} at every input: {agree} (residual "
+                           f"{found.residual:.3g}, relative)" + (
                                "; a residual of float32 arithmetic: does it compute in "
-                               "float32 (JAX without x64)?" if found.residual < 1e-4 else "")))
+                               "float32 (JAX without x64)?" if found.residual < 1e-4 else "")
+                           + ("; the accuracy below is judged under the nearest"
+                              if _judged_anyway(found) else "")))
     for b in found.broken:
         out.append(Finding("error", "invariant", b))
     m = found.member
@@ -173,13 +234,15 @@ def _findings(found: C.Found, tgt, beh: dict, worst: list, batch: str) -> list[F
             if b.nan or b.raised:
                 out.append(Finding(sev, "flag", f"{dt}, {b.regime}: {b.nan} NaN/inf and "
                                    f"{b.raised} exceptions of {b.n} inputs where the truth is "
-                                   f"finite ({ex})" + _likely(b.regime, True)))
+                                   f"finite ({ex})" + _flag_cause(b.regime, rows, wins.get(
+                                       dt, []))))
             if np.isfinite(b.worst_ratio) and b.worst_ratio > 1:
                 u = 2.0**-53 if dt == "float64" else 2.0**-24
                 kind = "silent wrong" if b.worst_ratio * 8 * u > 1e-3 else "inaccurate"
                 out.append(Finding(sev, kind, f"{dt}, {b.regime}: error {b.worst_ratio:.3g} "
                                    f"x the bound 8 u (kappa + 1) (rigidsym's kernel: "
-                                   f"{b.kernel_worst_ratio:.2g} x)" + _likely(b.regime, False)))
+                                   f"{b.kernel_worst_ratio:.2g} x)" +
+                                   _window_cause(b.regime, wins.get(dt, []))))
     if "differs" in batch:
         out.append(Finding("note", "batch", batch))
     return out
@@ -191,11 +254,14 @@ def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed:
     """Audit ``func`` as the operation ``as_`` of the chapter.
 
     Finds the convention ``func`` implements (its argument layout and the member of the
-    target's convention product, or none with the nearest), the invariants it breaks, its
-    behaviour on each singular set of the book's formula (NaN, inf, exceptions), its worst
-    input (the kernel's regimes and a hill-climbing search on ``err / (8 u (kappa + 1))``)
-    against the declared formula's truth in ball arithmetic, rigidsym's kernel and each
-    installed peer at that input, and whether a row depends on its batch.
+    target's convention product, or none with the nearest and at how many inputs it
+    matches), the invariants it breaks, its behaviour on each singular set of the book's
+    formula (NaN, inf, exceptions), its worst input (the kernel's regimes, each approach
+    searched continuously and a hill-climbing search on ``err / (8 u (kappa + 1))``)
+    against the declared formula's truth in ball arithmetic, an output of the same
+    rotation judged as the same answer, rigidsym's kernel and each installed peer at that
+    input, the cause of each window of error where it is measured, and whether a row
+    depends on its batch.
 
     Args:
         func: the function (NumPy; PyTorch or JAX: called with tensors where NumPy
@@ -206,7 +272,8 @@ def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed:
             which put the argument layouts that fit them first.
         seed: the seed of the random inputs, the regimes and the search.
         dtypes: the float types swept (``"float64"``, ``"float32"``).
-        search: run the hill-climbing search besides the regimes.
+        search: run the continuous search of each approach and the hill-climbing search
+            besides the regimes.
         n_start, steps: the search's random starts and climbing steps.
         spec: ``module:function`` (written into a regression test).
 
@@ -234,13 +301,16 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
     call = as_numpy_callable(func)
     fname = getattr(func, "__qualname__", getattr(func, "__name__", repr(func)))
     found = _find(call, tgt, tuple(names) if names else parameter_names(func), seed)
-    beh, worst, batch = {}, [], ""
+    beh, worst, batch, wins = {}, [], "", {}
     m = found.member
+    if m is None and _judged_anyway(found):
+        m = found.nearest
     if m is not None:
         for d in dtypes:
             dt = np.dtype(d).type
-            b, j, _ = W.sweep(tgt, m, call, dt, seed, n_start, steps, search)
+            b, j, _, win = W.sweep(tgt, m, call, dt, seed, n_start, steps, search)
             beh[d] = b
+            wins[d] = win
             if j is not None:
                 w = _worst_input(tgt, m, j, dt)
                 if dt == np.float64:
@@ -257,10 +327,14 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
         batch = W.batch_dependence(call, m, R.kernel_of(tgt.kernel),
                                    np.random.default_rng(seed + 2))
     rep = AuditReport(fname, tgt.name, tgt.book, found.tried,
-                      m.says(tgt) if m else None, list(m.generators) if m else [],
+                      m.says(tgt) if found.member else None,
+                      list(m.generators) if m else [],
                       found.residual, found.nearest.says(tgt) if found.nearest else None,
                       found.broken, {d: [vars(b) | {"examples": [e.flag for e in b.examples]}
                                          for b in rows.values()] for d, rows in beh.items()},
-                      worst, batch, _findings(found, tgt, beh, [], batch),
-                      time.perf_counter() - t0, spec, m.form.label if m else "")
+                      worst, batch, _findings(found, tgt, beh, wins, batch),
+                      time.perf_counter() - t0, spec, m.form.label if m else "",
+                      versions(func, spec), tgt.equivalent,
+                      {d: [_window(w) for w in ws if w.worst_ratio > 1]
+                       for d, ws in wins.items()})
     return rep

@@ -25,7 +25,7 @@ import numpy as np
 from rigidsym.auditing.targets import Form, Target
 
 __all__ = ["Generator", "GENERATORS", "Member", "Found", "find", "call_member", "flat",
-           "ordinary_points", "TOL"]
+           "ordinary_points", "differ", "describe", "TOL"]
 
 #: the relative residual under which a member matches at ordinary inputs
 TOL = 1e-8
@@ -208,6 +208,14 @@ def flat(v) -> np.ndarray:
     return np.ravel(to_numpy(v))
 
 
+def describe(v) -> str:
+    """What a user's function returned, in words (``a 3 x 3 array``, ``a tuple of 2``)."""
+    if isinstance(v, (tuple, list)):
+        return f"a {type(v).__name__} of {len(v)} ({', '.join(describe(o) for o in v)})"
+    shape = np.shape(to_numpy(v)) if not np.isscalar(v) else ()
+    return "a scalar" if shape == () else f"a {' x '.join(map(str, shape))} array"
+
+
 def call_member(func: Callable, member: Member, x: dict, dtype=None) -> np.ndarray:
     """The user's function under ``member`` at the kernel's arguments ``x`` (its arguments
     cast to ``dtype`` where given): its flat output in the book's layout. Raises what the
@@ -241,6 +249,9 @@ class Found:
         errors: per form label, the first exception the function raised under it.
         broken: the invariants broken, each as a sentence.
         matches: every matching member.
+        n: the inputs tried.
+        agree: at how many of them the member (the nearest where none matched) matches.
+        differ: how the nearest's outputs differ at the others (:func:`differ`), or "".
     """
 
     member: Member | None
@@ -250,6 +261,9 @@ class Found:
     errors: dict = field(default_factory=dict)
     broken: list = field(default_factory=list)
     matches: list = field(default_factory=list)
+    n: int = 0
+    agree: int = 0
+    differ: str = ""
 
 
 def _members(tgt: Target, names: tuple[str, ...] | None) -> list[Member]:
@@ -264,23 +278,87 @@ def _members(tgt: Target, names: tuple[str, ...] | None) -> list[Member]:
             for r in range(len(gens) + 1) for c in itertools.combinations(gens, r)]
 
 
-def _residual(func, member, points, truth, tgt: Target) -> float:
+def _gaps(func, member, points, truth, tgt: Target) -> list[float]:
+    """The relative gap of the user's output under ``member`` to the book's truth, per
+    point (inf where the shapes differ)."""
+    from rigidsym.auditing.equivalence import nearest
     from rigidsym.codegen.accuracy.harness.reference import kernel_of
 
     kernel = kernel_of(member.kernel(tgt))
-    worst = 0.0
+    out = []
     for x, full in zip(points, truth, strict=True):
         got = call_member(func, member, x)
-        # the user's columns; q and -q the same rotation (the book's r0 >= 0 a choice);
-        # either branch of the Euler angles
+        # the user's columns; an output of the same rotation is the same answer
+        # (:mod:`.equivalence`); either branch of the Euler angles
         cands = tgt.candidates(kernel, np.asarray(full))
         t = cands[0]
         if got.shape != t.shape:
-            return np.inf
+            return [np.inf] * len(points)
+        got = nearest(tgt.equivalent, got, t)
         gap = min(float(np.linalg.norm(got - c)) for c in cands)
         d = gap / max(float(np.linalg.norm(t)), 1e-300)
-        worst = max(worst, d if np.isfinite(d) else np.inf)
-    return worst
+        out.append(d if np.isfinite(d) else np.inf)
+    return out
+
+
+def _residual(func, member, points, truth, tgt: Target) -> float:
+    return max(_gaps(func, member, points, truth, tgt))
+
+
+def differ(func, member: Member, points, truth, tgt: Target) -> str:
+    """How the user's outputs under ``member`` differ from the book's at the inputs where
+    they do not match: ``"by sign"``, ``"by 2 pi w/|w|"`` (a rotation vector or an angle
+    off by a whole turn), ``"by a transpose"`` (a 3 x 3), ``"by a factor c"``, else by how
+    much (relative)."""
+    from rigidsym.auditing.equivalence import nearest
+    from rigidsym.codegen.accuracy.harness.reference import kernel_of
+
+    kernel = kernel_of(member.kernel(tgt))
+    kinds, worst = [], 0.0
+    for x, full in zip(points, truth, strict=True):
+        try:
+            with np.errstate(all="ignore"):
+                got = call_member(func, member, x)
+        except Exception as e:  # noqa: BLE001  (the user's function raised there)
+            kinds.append(f"raises {type(e).__name__}")
+            continue
+        t = tgt.candidates(kernel, np.asarray(full))[0]
+        if got.shape != t.shape:
+            raw = func(*member.user_args(x))
+            return (f"in kind: it returns {describe(raw)} ({got.size} values) where the book's "
+                    f"output is {t.size} values ("
+                    f"{', '.join(f'{o.name}[{o.size}]' for o in kernel.outputs)}); "
+                    f"a wrapper that returns the book's output is audited instead")
+        got = nearest(tgt.equivalent, got, t)
+        nt = max(float(np.linalg.norm(t)), 1e-300)
+        d = float(np.linalg.norm(got - t)) / nt
+        if d <= TOL:
+            continue
+        worst = max(worst, d)
+
+        def close(a, b, nt=nt):
+            return float(np.linalg.norm(a - b)) <= 1e-6 * nt
+
+        kind = f"by {d:.3g} (relative)"
+        if close(got, -t):
+            kind = "by sign"
+        elif t.size == 3 and np.linalg.norm(t) > 0 and any(
+                close(got, t + k * 2 * np.pi * t / np.linalg.norm(t)) for k in (-1, 1)):
+            kind = "by 2 pi w/|w| (a whole turn)"
+        elif t.size == 4 and any(close(got, np.concatenate([t[:3], [t[3] + k * 2 * np.pi]]))
+                                 for k in (-1, 1)):
+            kind = "by 2 pi in the angle (a whole turn)"
+        elif t.size == 9 and close(got, t.reshape(3, 3).T.ravel()):
+            kind = "by a transpose"
+        else:
+            c = float(got @ t) / (nt * nt)
+            if abs(c) > 1e-12 and close(got, c * t):
+                kind = f"by a factor {c:.6g}"
+        kinds.append(kind)
+    if not kinds:
+        return ""
+    uniq = sorted(set(kinds), key=kinds.index)
+    return ", ".join(uniq)
 
 
 def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
@@ -298,22 +376,30 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
         :class:`Found` (``member`` None where no member matches to :data:`TOL`).
     """
     members = _members(tgt, names)
-    best, best_r, errors, matches = None, np.inf, {}, []
+    best, best_key, errors, matches = None, None, {}, []
+    best_r, best_agree = np.inf, 0
     for m in members:
         try:
             with np.errstate(all="ignore"):
-                r = _residual(func, m, points, truth[m.kernel(tgt)], tgt)
+                gaps = _gaps(func, m, points, truth[m.kernel(tgt)], tgt)
         except Exception as e:      # noqa: BLE001  (the user's function failed: say so)
             errors.setdefault(m.form.label, f"{type(e).__name__}: {e}")
             continue
-        if r < best_r:
-            best, best_r = m, r
+        r = max(gaps)
+        agree = sum(g <= TOL for g in gaps)
+        # the nearest: the most inputs matched, then the smallest residual on the others
+        key = (-agree, r if agree == len(gaps) else max(g for g in gaps if g > TOL))
+        if best_key is None or key < best_key:
+            best, best_key, best_r, best_agree = m, key, r, agree
         if r <= TOL:
             matches.append(m)
     match = min(matches, key=lambda m: len(m.generators)) if matches else None
     found = Found(match, len(members), best_r if match is None else _residual(
         func, match, points, truth[match.kernel(tgt)], tgt),
-        match or best, errors, [], matches)
+        match or best, errors, [], matches, len(points),
+        len(points) if match is not None else (best_agree if best is not None else 0))
+    if match is None and best is not None:
+        found.differ = differ(func, best, points, truth[best.kernel(tgt)], tgt)
     if match is not None or best is not None:
         found.broken = invariants(func, tgt, match or best, points)
     return found

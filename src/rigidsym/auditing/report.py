@@ -5,6 +5,7 @@ the user's repository. Nothing is written unless asked (:func:`write_pytest`).""
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import asdict
 from pathlib import Path
 
@@ -87,16 +88,64 @@ def to_json(rep: AuditReport) -> str:
     return json.dumps(clean(d), indent=1) + "\n"
 
 
+def _title(rep: AuditReport) -> str:
+    errors = [f for f in rep.findings if f.severity == "error"]
+    if not errors:
+        return f"`{rep.function}` passes the audit as `{rep.target}`"
+    f = errors[0]
+    m = re.match(r"(float\d+, .*?): (error|\d+ NaN)", f.text)
+    where = m.group(1) if m else ""
+    what = {"silent wrong": "returns a wrong value", "inaccurate": "loses accuracy",
+            "flag": "returns NaN or raises where the result is finite",
+            "convention": "does not compute the book's operation at every input",
+            "invariant": "breaks an invariant"}.get(f.kind, f.kind)
+    return f"`{rep.function}` {what}" + (f" ({where})" if where else "")
+
+
+def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
+    """A script that runs without rigidsym: the call at the worst input, exact, and the
+    truth (ball arithmetic, rounded to float64) beside what it returns."""
+    mod, _, name = rep.spec.partition(":")
+    lines = ["import numpy as np"]
+    if mod and name and "<" not in name:
+        lines.append(f"from {mod} import {name.split('.')[0]}")
+    lines.append("")
+    for i, a in enumerate(w.args):
+        lines.append(f"arg{i} = {_array(a)}")
+    call = f"{name or rep.function}({', '.join(f'arg{i}' for i in range(len(w.args)))})"
+    lines += [f"out = {call}",
+              "outs = out if isinstance(out, (tuple, list)) else [out]",
+              "got = np.concatenate([np.ravel(np.asarray(o, dtype=np.float64)) "
+              "for o in outs])"]
+    if w.truth is not None:
+        truth = ", ".join(f"float.fromhex({h!r})" for h in hexes(w.truth))
+        lines += [f"truth = np.array([{truth}])",
+                  "print('got  ', got)", "print('truth', truth)",
+                  "print('relative error', np.linalg.norm(got - truth) / "
+                  "(np.linalg.norm(truth) or 1.0))"]
+        if rep.equivalent:
+            lines.append("# an output of the same rotation is as right (the class of "
+                         "(e, phi): (-e, -phi), phi + 2 pi k; of q: -q)")
+    return lines
+
+
 def markdown(rep: AuditReport) -> str:
-    """A Markdown summary to paste into an issue of the function's project."""
-    lines = [f"### `{rep.function}` audited as `{rep.target}` (rigidsym audit)", "",
-             f"- The book: {rep.book}",
-             f"- Convention found: {rep.convention or 'none; nearest ' + str(rep.nearest)} "
-             f"({rep.tried} members tried)"]
+    """A GitHub issue body to file with the function's project: a title, the versions, the
+    convention block, the findings, the worst input in exact hex and a reproducer that runs
+    without rigidsym."""
+    vers = ", ".join(f"{k} {v}" for k, v in rep.versions.items()) or "not known"
+    conv = rep.convention or f"none at every input; nearest {rep.nearest}"
+    lines = [f"### {_title(rep)}", "",
+             f"Found by `rigidsym audit` ({rep.tried} conventions tried). Versions: {vers}.",
+             "", "```text",
+             f"Operation:   {rep.target}",
+             f"The book:    {rep.book}",
+             f"Convention:  {conv}",
+             "```", "", "**Findings**", ""]
     for f in rep.findings:
         lines.append(f"- **{f.severity}** ({f.kind}): {f.text}")
     for w in rep.worst:
-        lines += ["", f"Worst input ({w.dtype}, {w.regime}): error **{w.err_u:.3g} u** "
+        lines += ["", f"**Worst input** ({w.dtype}, {w.regime}): error **{w.err_u:.3g} u** "
                   f"(condition number {w.kappa:.3g}; the bound 8 u (kappa + 1) x "
                   f"{w.ratio:.3g}); rigidsym's kernel: {w.kernel_err_u:.3g} u.", "",
                   "| | exact value (hex floats) |", "|---|---|"]
@@ -106,7 +155,7 @@ def markdown(rep: AuditReport) -> str:
             lines.append(f"| truth (60+ digits, rounded) | `{' '.join(hexes(w.truth))}` |")
         if w.got is not None:
             lines.append(f"| got | `{' '.join(hexes(w.got))}` |")
-        lines += ["", "```python", _call(rep, w), "```"]
+        lines += ["", "Reproducer (NumPy only):", "", "```python", *_reproducer(rep, w), "```"]
     return "\n".join(lines) + "\n"
 
 

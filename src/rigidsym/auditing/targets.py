@@ -72,6 +72,9 @@ class Target:
             in the fixed and the body frame), or () for :attr:`kernel` alone.
         outputs: the kernel's outputs the user's function returns (the Euler angles, not
             the other branch nor the flag), or () for all of them.
+        equivalent: the output's class of outputs of the same rotation
+            (:data:`.equivalence.KINDS`: ``"axis_angle"``, ``"quaternion"``), judged as one
+            answer, or "".
     """
 
     name: str
@@ -84,6 +87,7 @@ class Target:
     antipodal: str = ""
     family: tuple[str, ...] = ()
     outputs: tuple[str, ...] = ()
+    equivalent: str = ""
 
     def user_slice(self, kernel) -> slice:
         """The columns of ``kernel``'s flat output (a :class:`~rigidsym.codegen.spec.Kernel`)
@@ -163,13 +167,14 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
            _transfer_forms("w_A", _W), ("blocks", "inverse", "dual"),
            dual="twist_transfer", kind="wrench"),
     Target("rotation_from_rotation_vector", "rotation_from_rotation_vector",
-           "(sola:exp-so3): Q = exp(CPM(w)), the rotation of rotation vector w = phi e",
+           "Q = exp(CPM(w)), the rotation of rotation vector w = phi e (Rodrigues' formula, (2.49) "
+           "with the angle phi = |w|; the exponential of SO(3), Sola et al. 2018)",
            _one("w", _ROTVEC), ("transpose_out",), kind="rotation"),
     Target("rotation_vector_left_jacobian", "rotation_vector_left_jacobian",
-           "(sola:jl-w): J_l(w) = 1 + (1 - cos phi)/phi^2 W + (phi - sin phi)/phi^3 W^2, the "
-           "left Jacobian of SO(3)",
+           "J_l(w) = 1 + (1 - cos phi)/phi^2 W + (phi - sin phi)/phi^3 W^2, the "
+           "left Jacobian of SO(3) (Sola et al. 2018)",
            _one("w", _ROTVEC), ("other_side",)),
-    *(Target(n, n, f"(sola:jl-jr, sola:jl-inverse): {what} of SO(3) at w", _one("w", _ROTVEC),
+    *(Target(n, n, f"{what} of SO(3) at w (Sola et al. 2018)", _one("w", _ROTVEC),
              ("other_side",)) for n, what in (
         ("rotation_vector_right_jacobian", "J_r(w) = J_l(-w), the right Jacobian"),
         ("rotation_vector_left_jacobian_inverse", "J_l(w)^-1, the left Jacobian's inverse"),
@@ -195,14 +200,14 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
            antipodal="euler", family=_EULER("euler_angles_from_rotation", ()),
            outputs=("angles",)),
     Target("euler_rodrigues_from_rotation", "euler_rodrigues_from_rotation",
-           "(sola:quat-of-rotation): the Euler-Rodrigues parameters eta = [r; r0] of Q "
-           "(a unit quaternion, scalar last, r0 >= 0)",
+           "(2.3), inverted: the Euler-Rodrigues parameters eta = [r; r0] of Q (a unit "
+           "quaternion, scalar last, r0 >= 0)",
            _one("Q", _ROT), ("transpose_in", "scalar_first_out", "negated_out"),
-           antipodal="quaternion"),
+           antipodal="quaternion", equivalent="quaternion"),
     Target("natural_invariants_from_rotation", "natural_invariants_from_rotation",
            "(2.49), (3.95): the natural invariants (e, phi) of Q, phi in [0, pi]",
            _one("Q", _ROT), ("transpose_in", "degrees_out", "angle_first_out"),
-           antipodal="axis"),
+           antipodal="axis", equivalent="axis_angle"),
     *(Target(n, n, f"({eq}): the {what} of T = [[1, a - p], [0, 1]]",
              (Form("f(a, p)", _PTS, lambda x: [x["a"], x["p"]]),
               Form("f(T), T = [[1, a - p], [0, 1]]", (_TR,),
@@ -216,7 +221,8 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
           ("wrench_transfer_matrix", "3.119", "wrench-transfer matrix V = Ad_T^-T",
            "twist_transfer_matrix", "wrench_matrix"))),
     Target("rotation_vector_from_rotation", "rotation_vector_from_rotation",
-           "(sola:log-so3): the logarithm of SO(3), w = phi e with phi in [0, pi], from Q",
+           "the logarithm of SO(3), w = phi e with (e, phi) the natural invariants of Q, "
+           "phi in [0, pi] ((2.49), inverted; Sola et al. 2018)",
            _one("Q", _ROT), ("transpose_in",), antipodal="rotation_vector"),
     Target("rotation_from_natural_invariants", "rotation_from_natural_invariants",
            "(2.49): Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) E, from axis e and angle phi",
@@ -234,10 +240,11 @@ TARGETS: dict[str, Target] = {t.name: t for t in (
            "scalar last)",
            _one("eta", _QUAT), ("transpose_out", "scalar_first"), kind="rotation"),
     Target("exponential_coordinates_from_transform", "exponential_coordinates_from_transform",
-           "(sola:log-se3): the logarithm of SE(3), xi = [w; v] with |w| <= pi, from T",
+           "the logarithm of SE(3), xi = [w; v] with |w| <= pi, from T (Sola et al. 2018)",
            _one("T", _TR), ("blocks_out", "inverse_in")),
     Target("transform_from_exponential_coordinates", "transform_from_exponential_coordinates",
-           "(sola:exp-se3): the exponential of SE(3), T = exp([W, v; 0, 0]) of xi = [w; v]",
+           "the exponential of SE(3), T = exp([W, v; 0, 0]) of xi = [w; v] (Sola et al. "
+           "2018)",
            _one("xi", _T), ("blocks_in", "inverse_out")),
 )}
 

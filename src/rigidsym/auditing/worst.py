@@ -3,8 +3,10 @@
 The project's own search (:mod:`rigidsym.codegen.accuracy.harness`): the regimes of the
 kernel (its derived singular sets, approaches log-spaced from 1e-1 to 1e-75 of each, the
 ends of the floating range), each vector argument's approach to 0 and to exactly 0 (a
-rotation vector's to pi), then hill climbing on ``err / (8 u (kappa + 1))`` from
-exponent-uniform starts. Each input is judged by the harness's judge against the declared
+rotation vector's to pi), each approach searched continuously (:mod:`.windows`), then hill
+climbing on ``err / (8 u (kappa + 1))`` from exponent-uniform starts. The user's output is
+first moved to the member of its class of outputs of the same rotation nearest rigidsym's
+kernel there (:mod:`.equivalence`). Each input is judged by the harness's judge against the declared
 formula in ball arithmetic at the exact input (``reference``: narrower than 1e-3 ulp), the
 condition half of the accuracy rule (``err <= 8 u (kappa + 1)``, the bound rigidsym's kernels
 meet), with rigidsym's kernel judged at the same input beside it. A flag (NaN, inf or an
@@ -21,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rigidsym.auditing.conventions import Member, call_member, flat, ordinary_points
+from rigidsym.auditing.equivalence import nearest
 from rigidsym.auditing.targets import Target
 from rigidsym.codegen.accuracy import regimes as P
 from rigidsym.codegen.accuracy.harness import judge as J
@@ -49,6 +52,7 @@ class Runner:
         #: a function that returns some of the kernel's outputs (the Euler angles alone):
         #: the others are the kernel's, at the same input (judged beside the user's)
         self.tgt = tgt if tgt is not None and tgt.outputs else None
+        self.equivalent = tgt.equivalent if tgt is not None else ""
 
     def __call__(self, name, arrays, dtype, backend) -> np.ndarray:
         if backend == "kernel":
@@ -64,6 +68,12 @@ class Runner:
             except Exception as e:  # noqa: BLE001  (the user's function raised: a flag)
                 self.raised.append(f"{type(e).__name__}: {e}")
                 rows.append(None)
+        if self.equivalent:
+            # an output of the same rotation is the same answer: moved to the member of its
+            # class nearest rigidsym's kernel there (a few ulps from the truth)
+            anchor = J.run_kernel(name, arrays, np.float64, "numpy")
+            rows = [r if r is None else nearest(self.equivalent, r, anchor[s])
+                    for s, r in enumerate(rows)]
         if self.tgt is not None:
             full = J.run_kernel(name, arrays, dtype, "numpy")
             sl = self.tgt.user_slice(R.kernel_of(name))
@@ -271,8 +281,11 @@ def _at_undefined(name, point, dtype, runner, before) -> tuple[str, float]:
 
 def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
           n_start: int = 12, steps: int = 40, search: bool = True):
-    """``(behaviours by regime, worst Judged, its truth, runner)`` over the regimes and the
-    search, in ``dtype``."""
+    """``(behaviours by regime, worst Judged, runner, windows)`` over the regimes, the
+    approaches searched continuously (:mod:`.windows`: each a :class:`.windows.Window`) and
+    the hill-climbing search, in ``dtype``."""
+    from rigidsym.auditing import windows as V
+
     name = member.kernel(tgt)
     k = R.kernel_of(name)
     runner = Runner(func, member, R.kernel_of(tgt.kernel), tgt)
@@ -284,26 +297,35 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
                              runner=runner, condition=True)
         if pt is not None:
             regs["search (hill climbing)"] = [pt]
-    for regime, pts in regs.items():
+
+    def judge(pt, regime):
+        return judge_point(name, regime, pt, dtype, runner, tgt.antipodal)
+
+    judged = [(regime, judge(pt, regime)) for regime, pts in regs.items() for pt in pts]
+    windows = []
+    if search:
+        for ap in V.approaches(k, seed):
+            w = V.scan(ap, judge, seed)
+            windows.append(w)
+            judged += [(ap.regime, j) for _, j in w.judged]
+    for regime, j in judged:
         b = beh.setdefault(regime, Behaviour(regime))
-        for pt in pts:
-            j = judge_point(name, regime, pt, dtype, runner, tgt.antipodal)
-            b.n += 1
-            b.kernel_worst_ratio = max(b.kernel_worst_ratio, j.kernel_ratio)
-            if j.flag == "expected":
-                b.expected += 1
-                continue
-            if j.flag:
-                b.raised += j.flag.startswith("raises")
-                b.nan += j.flag.startswith("NaN")
-                if len(b.examples) < 2:
-                    b.examples.append(j)
-            b.worst_ratio = max(b.worst_ratio, j.ratio)
-            # the ends of the floating range rank after every other regime
-            key = (not extreme(regime), j.ratio)
-            if worst is None or key > (not extreme(worst.regime), worst.ratio):
-                worst = j
-    return beh, worst, runner
+        b.n += 1
+        b.kernel_worst_ratio = max(b.kernel_worst_ratio, j.kernel_ratio)
+        if j.flag == "expected":
+            b.expected += 1
+            continue
+        if j.flag:
+            b.raised += j.flag.startswith("raises")
+            b.nan += j.flag.startswith("NaN")
+            if len(b.examples) < 2:
+                b.examples.append(j)
+        b.worst_ratio = max(b.worst_ratio, j.ratio)
+        # the ends of the floating range rank after every other regime
+        key = (not extreme(regime), j.ratio)
+        if worst is None or key > (not extreme(worst.regime), worst.ratio):
+            worst = j
+    return beh, worst, runner, windows
 
 
 def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarray]]:

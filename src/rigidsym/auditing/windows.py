@@ -1,0 +1,307 @@
+"""The approaches to each singular set searched continuously, so that no window between two
+decades is missed, and the cause of a window read from the function's own errors.
+
+An *approach* is a one-parameter family of inputs ``x -> point`` (the angle ``phi`` of a
+rotation toward the identity, ``pi - phi`` toward a half turn, ``|w|`` toward 0, the
+distance to a derived zero of a norm), everything else (the axis, the other arguments)
+drawn anew for each sample. It is sampled on a lattice in ``log10 x``, :data:`PER_DECADE`
+points a decade from 1e-16 to 1 shifted by a random offset (seeded), so that every
+interval of ``x`` wider than a factor ``10 ** (1 / PER_DECADE)`` (1.78 at 4 a decade) holds
+a sample.
+Around the worst sample a golden-section search on ``log x`` refines the worst input; the
+window (the run of samples over the bound around it) has its ends located by bisection to
+within a factor :data:`END_FACTOR` of ``x``.
+
+A cause is stated only from what was measured: an error that jumps by :data:`JUMP` or more
+across an end located to within 1 % (three points on each side agreeing) is "a threshold
+branch" at that ``x``; the slope of ``log err`` against ``log x`` inside the window is
+reported as measured; a flag at exactly 0 where the approach to 0 is finite is "no guard
+for exactly 0". Anything else: "cause not determined".
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+from flint import fmpq
+
+from rigidsym.codegen.accuracy import regimes as P
+
+__all__ = ["Approach", "Window", "approaches", "scan", "PER_DECADE", "DECADES",
+           "END_FACTOR", "JUMP"]
+
+#: samples per decade of the approach's parameter
+PER_DECADE = 4
+#: the decades sampled: x from 10**-DECADES to 1
+DECADES = 16
+#: the window's ends are located to within this factor of x
+END_FACTOR = 1.01
+#: an error that changes by this factor across an end located to within 1 % is a jump
+JUMP = 10.0
+
+
+@dataclass(frozen=True)
+class Approach:
+    """A one-parameter family of inputs: ``point(x, draw)`` (exact, per argument), ``x`` in
+    (0, 1], everything else (the axis, the other arguments) drawn by the integer ``draw``
+    (the same draw, the same inputs); ``regime`` the regime it refines (its name in the
+    report), ``var`` what ``x`` is, in the book's words (``phi``, ``pi - phi``, ``|w|``)."""
+
+    regime: str
+    var: str
+    point: Callable[[float, int], list]
+
+
+@dataclass
+class Window:
+    """What :func:`scan` found on one approach.
+
+    Attributes:
+        approach: the approach.
+        worst_x, worst_ratio: the worst input's parameter and its error over the bound.
+        worst: the worst input's judgement (a :class:`.worst.Judged`).
+        lo, hi: the ends of the window over the bound around the worst (``x``), or None
+            where the worst is within the bound.
+        lo_open, hi_open: the window reaches the smallest (largest) ``x`` sampled.
+        jump: ``(x, ratio inside, ratio outside)`` at an end where the error jumps, or None.
+        slope: the slope of ``log err`` against ``log x`` over the window (None: fewer than
+            4 samples in it, or a flag).
+        evaluations: how many inputs were judged.
+        judged: every judgement made, ``(x, judgement)``.
+    """
+
+    approach: Approach
+    worst_x: float
+    worst_ratio: float
+    worst: object
+    lo: float | None = None
+    hi: float | None = None
+    jump: tuple | None = None
+    slope: float | None = None
+    evaluations: int = 0
+    lo_open: bool = False
+    hi_open: bool = False
+    judged: list = field(default_factory=list)
+
+    def cause(self) -> str:
+        """The cause as measured, or "cause not determined"."""
+        v = self.approach.var
+        if self.jump is not None and not math.isfinite(self.jump[1]):
+            return (f"the output is NaN, inf or an exception on the window, from {v} = "
+                    f"{self.jump[0]:.3g} (located to within 1 %); cause not determined")
+        if self.jump is not None:
+            x, inside, outside = self.jump
+            near_hi = self.hi is not None and (self.lo is None or abs(math.log(
+                x / self.hi)) < abs(math.log(x / self.lo)))
+            side = "below" if near_hi else "above"
+            text = (f"the error jumps {inside / max(outside, 1e-300):.3g}-fold at {v} = "
+                    f"{x:.3g} (located to within 1 %; the error {side} it is the window's): "
+                    f"a threshold branch")
+            if self.slope is not None and abs(self.slope) >= 0.5:
+                text += f"; inside the window the error goes as ({v})^{self.slope:.2g}"
+            return text
+        if self.slope is not None and abs(self.slope) >= 0.5:
+            return (f"the error goes as ({v})^{self.slope:.2g} over the window (measured); "
+                    f"cause not determined")
+        return "cause not determined"
+
+    def where(self) -> str:
+        """The window in words: its ends and its worst."""
+        v = self.approach.var
+        if self.lo is None or self.hi is None:
+            return f"worst at {v} = {self.worst_x:.3g}"
+        lo = f"{self.lo:.3g} (the smallest sampled)" if self.lo_open else f"{self.lo:.3g}"
+        hi = f"{self.hi:.3g} (the largest sampled)" if self.hi_open else f"{self.hi:.3g}"
+        return f"over the bound for {lo} < {v} < {hi}, worst at {v} = {self.worst_x:.3g}"
+
+
+def _q(x: float) -> fmpq:
+    return P.q(x)
+
+
+def approaches(kernel, seed: int) -> list[Approach]:
+    """The approaches of ``kernel``'s arguments: a rotation's (or a transform's) toward the
+    identity and toward a half turn from both sides, an unconstrained 3- or 6-vector's
+    (its first block) toward 0, a rotation vector's toward pi from both sides, and the
+    distance to each derived zero of a norm. Each draw takes a new axis and new other
+    arguments (seeded by ``seed`` and the draw)."""
+    from rigidsym.codegen.accuracy.singular_sets import norm_zeros
+
+    cache: dict = {}
+
+    def drawn(i: int, draw: int, n: int = 3):
+        """(the other arguments, a unit n-vector, a random 3-vector) of ``draw``."""
+        key = (i, draw, n)
+        if key not in cache:
+            rng = np.random.default_rng([seed + 11, i, draw])
+            base = [P.random_arg(a, rng, kernel.name) for a in kernel.args]
+            cache[key] = (base, P.unit(rng, n), [_q(v) for v in rng.standard_normal(3)])
+        return cache[key]
+
+    def put(i, value_of):
+        def point(x, draw, i=i, value_of=value_of):
+            base, e, d = drawn(i, draw)
+            p = list(base)
+            p[i] = value_of(x, e, d, base[i])
+            return p
+        return point
+
+    out: list[Approach] = []
+    for i, a in enumerate(kernel.args):
+        if a.kind in ("rotation", "transform"):
+            def wrap(Q, d, a=a):
+                return P.transform(Q, d) if a.kind == "transform" else Q
+
+            name = "Q" if a.kind == "rotation" else a.name
+            out += [
+                Approach(f"{name}: phi->0", "phi", put(i, lambda x, e, d, _, w=wrap: w(
+                    P.rotation(e, _q(math.tan(x / 2)), fmpq(1)), d))),
+                Approach(f"{name}: phi->pi-", "pi - phi", put(i, lambda x, e, d, _, w=wrap: w(
+                    P.rotation(e, fmpq(1), _q(math.tan(x / 2))), d))),
+                Approach(f"{name}: phi->pi+", "phi - pi", put(i, lambda x, e, d, _, w=wrap: w(
+                    P.rotation(e, fmpq(1), _q(-math.tan(x / 2))), d)))]
+        elif a.kind == "any" and a.shape in ((3,), (6,)) and a.name != "m":
+            def vec(r, e, own):
+                return [*(v * r for v in e), *own[3:]]
+
+            out.append(Approach(f"|{a.name}[0:3]| -> 0", f"|{a.name}|",
+                                put(i, lambda x, e, d, own, f=vec: f(_q(x), e, own))))
+            if a.name in ("w", "xi"):
+                out += [Approach(f"|{a.name}[0:3]| -> pi", f"pi - |{a.name}|",
+                                 put(i, lambda x, e, d, own, f=vec: f(
+                                     _q(math.pi * (1 - x)), e, own))),
+                        Approach(f"|{a.name}[0:3]| -> pi", f"|{a.name}| - pi",
+                                 put(i, lambda x, e, d, own, f=vec: f(
+                                     _q(math.pi * (1 + x)), e, own)))]
+    seen = set()
+    for z in norm_zeros(kernel):
+        t0 = float(z.theta0)
+        if (z.arg, z.comps, t0) in seen:
+            continue
+        seen.add((z.arg, z.comps, t0))
+        arg = kernel.args[z.arg].name
+        name = f"derived: |{arg}|->{P.sp_str(z.theta0)}"
+
+        def at(x, draw, z=z, t0=t0, sign=1):
+            base, _, _ = drawn(100 + z.arg, draw)
+            _, d, _ = drawn(200 + z.arg, draw, len(z.comps))
+            p = list(base)
+            v = list(p[z.arg])
+            r = _q(t0 + sign * x * max(t0, 1.0))
+            for j, c in enumerate(z.comps):
+                v[c] = r * d[j]
+            p[z.arg] = v
+            return p
+
+        s0 = P.sp_str(z.theta0)
+        out += [Approach(name, f"({s0} - |{arg}|)/{s0}",
+                         lambda x, draw, f=at: f(x, draw, sign=-1)),
+                Approach(name, f"(|{arg}| - {s0})/{s0}",
+                         lambda x, draw, f=at: f(x, draw, sign=1))]
+    return out
+
+
+def _samples(rng) -> list[float]:
+    """``x`` on a lattice of :data:`PER_DECADE` points a decade in ``log10 x`` from
+    ``10**-DECADES`` to 1, shifted by a random offset: consecutive samples are a factor
+    ``10 ** (1 / PER_DECADE)`` apart, so every interval wider than that holds one."""
+    off = rng.uniform(0, 1 / PER_DECADE)
+    return [10.0 ** (-DECADES + off + k / PER_DECADE) for k in range(DECADES * PER_DECADE)]
+
+
+def scan(ap: Approach, judge: Callable[[list, str], object], seed: int) -> Window:
+    """Search ``ap`` (see the module): ``judge(point, regime)`` returns a judgement with
+    ``ratio`` (err over the bound; inf for a spurious flag) and ``flag``. Each
+    sample is a new draw of the approach (a new axis, new other arguments); the search
+    around the worst and the bisection of the window's ends keep the worst's draw."""
+    rng = np.random.default_rng(seed + 101)
+    seen: dict[tuple[float, int], object] = {}
+
+    def judged(x: float, draw: int) -> float:
+        if (x, draw) not in seen:
+            seen[(x, draw)] = judge(ap.point(x, draw), ap.regime)
+        j = seen[(x, draw)]
+        return j.ratio if j.flag != "expected" else 0.0
+
+    xs = _samples(rng)
+    rs = [judged(x, k) for k, x in enumerate(xs)]
+    i = int(np.argmax(rs))
+
+    def r(x: float) -> float:
+        return judged(x, i)
+
+    # golden section on log x between the worst sample's neighbours, on the worst's draw
+    a = math.log(xs[i - 1] if i > 0 else xs[i] / 2)
+    b = math.log(xs[i + 1] if i + 1 < len(xs) else min(1.0, xs[i] * 2))
+    g = (math.sqrt(5) - 1) / 2
+    c, d = b - g * (b - a), a + g * (b - a)
+    for _ in range(8):
+        if not math.isfinite(r(math.exp(c))) and not math.isfinite(r(math.exp(d))):
+            break
+        if r(math.exp(c)) >= r(math.exp(d)):
+            b, d = d, c
+            c = b - g * (b - a)
+        else:
+            a, c = c, d
+            d = a + g * (b - a)
+    own = [x for (x, k) in seen if k == i]
+    wx = max(own, key=lambda x: (r(x), -abs(math.log(x / xs[i]))))
+    w = Window(ap, wx, r(wx), seen[(wx, i)])
+    if w.worst_ratio > 1:
+        # the window on the worst's draw: the samples out from the worst re-judged there
+        # until one is within the bound on each side
+        _ends(w, xs, i, r)
+    w.evaluations = len(seen)
+    w.judged = sorted(((x, j) for (x, _), j in seen.items()), key=lambda t: t[0])
+    return w
+
+
+def _ends(w: Window, xs, i, r) -> None:
+    lo_i, hi_i = i, i
+    while lo_i > 0 and r(xs[lo_i - 1]) > 1:
+        lo_i -= 1
+    while hi_i + 1 < len(xs) and r(xs[hi_i + 1]) > 1:
+        hi_i += 1
+
+    def bisect(inside: float, outside: float) -> tuple[float, float]:
+        while max(inside, outside) / min(inside, outside) > END_FACTOR:
+            m = math.sqrt(inside * outside)
+            if r(m) > 1:
+                inside = m
+            else:
+                outside = m
+        return inside, outside
+
+    ends = []
+    w.lo = xs[lo_i] if lo_i == 0 else None
+    w.hi = xs[hi_i] if hi_i + 1 == len(xs) else None
+    w.lo_open, w.hi_open = lo_i == 0, hi_i + 1 == len(xs)
+    if w.lo_open:
+        w.lo = min(w.lo, w.worst_x)
+    if w.hi_open:
+        w.hi = max(w.hi, w.worst_x)
+    if lo_i > 0:
+        ins, out = bisect(xs[lo_i], xs[lo_i - 1])
+        w.lo = ins
+        ends.append((ins, out))
+    if hi_i + 1 < len(xs):
+        ins, out = bisect(xs[hi_i], xs[hi_i + 1])
+        w.hi = ins
+        ends.append((ins, out))
+    for ins, out in ends:
+        step = ins / out                       # toward the inside
+        a = [r(ins * step ** k) for k in range(3)]
+        b = [r(out / step ** k) for k in range(3)]
+        if all(map(math.isfinite, b)) and min(a) >= JUMP * max(max(b), 1e-300) \
+                and min(a) > 1:
+            if w.jump is None or min(a) / max(b) > w.jump[1] / max(w.jump[2], 1e-300):
+                w.jump = (math.sqrt(ins * out), min(a), max(b))
+    inside = [(x, r(x)) for x in xs[lo_i:hi_i + 1]
+              if math.isfinite(r(x)) and r(x) > 0]
+    if len(inside) >= 4:
+        lx = np.log([x for x, _ in inside])
+        ly = np.log([rr for _, rr in inside])
+        w.slope = float(np.polyfit(lx, ly, 1)[0])
