@@ -140,7 +140,7 @@ def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = 
              for r in results]
     s = summary(results)
     return letter_subscripts(_env().get_template("chapter3.html.j2").render(
-        causes=cause_line(results) if s["does-not-hold"] else "",
+        causes=cause_line(results) if s["does-not-hold"] else "", n_bad=s["does-not-hold"],
         title=title, source=source, citation=CITATION.replace("*", ""),
         counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],
