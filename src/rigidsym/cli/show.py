@@ -61,15 +61,17 @@ def reader_path(path: str, cwd: str | None = None) -> str:
 
 def declared_where(eq) -> str:
     """Where a declaration lives, function and file first: ``trace_wrong in
-    notes/rot.py``; a book module's dotted name last (a user module's import name is an
-    internal one and is left out)."""
+    notes/rot.py``; a user module imported by its dotted name says it last (the package's
+    own module names and the import name of a module given by path are internal ones and
+    are left out)."""
     mod = sys.modules[eq.module]
     try:
         src = reader_path(inspect.getsourcefile(getattr(mod, eq.function.split(".")[0])))
     except (TypeError, ValueError, AttributeError):  # no source file (a notebook cell)
         src = eq.where
-    tail = "" if eq.module.startswith("_rigidsym_user_") or eq.module == "__main__" else \
-        f" (module {eq.module})"
+    internal = eq.module.startswith(("_rigidsym_user_", "rigidsym.")) or \
+        eq.module in ("__main__", "rigidsym")
+    tail = "" if internal else f" (module {eq.module})"
     return f"{eq.function} in {src}{tail}"
 
 

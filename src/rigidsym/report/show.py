@@ -161,7 +161,9 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int,
     """
     rec = result_record(r, timings=False)
     sec = f"Section {r.section}" if is_user_id(r.id) else f"Book: Sec. {r.section}"
-    head = f"{sec} · {r.kind}" + (f" · declared in {where}" if full else "")
+    # where a user's own equation is declared is theirs to know; a book id's, with --full
+    head = f"{sec} · {r.kind}" + (f" · declared in {where}"
+                                  if full or is_user_id(r.id) else "")
     out = [f"({r.id}) {label_text(r.title)}", *_hard_wrap(head, width, "")]
     out += _verdict_lines(r, rec, width)
     bound = rec["failure_bound"]
