@@ -72,7 +72,9 @@ def cause_line(results: list[Outcome]) -> str:
     """``4 errata of the book, 4 slips of the text's conversion, 3 not attributed to the
     book or the conversion`` (a zero count is left out, unless every count is zero)."""
     c = cause_counts(results)
-    parts = [f"{c[k]} {words}" for k, words in CAUSE_KEYS if c[k]]
+    one = {"erratum": "erratum of the book", "conversion": "slip of the text's conversion",
+           "unattributed": "not attributed to the book or the conversion"}
+    parts = [f"{c[k]} {one[k] if c[k] == 1 else words}" for k, words in CAUSE_KEYS if c[k]]
     return ", ".join(parts or [f"0 {CAUSE_KEYS[0][1]}"])
 
 
@@ -128,12 +130,16 @@ def cause_words(r: Outcome) -> tuple[str, str]:
 
 def cause_sentence(r: Outcome) -> str:
     """One line for a reader: ``Cause: <what is wrong>. Origin: <erratum, slip of the
-    conversion, or neither known>.``; ``""`` for any other verdict than does-not-hold."""
+    conversion, or neither known>.`` (a user's equation: its own class, if it declares one);
+    ``""`` for any other verdict than does-not-hold."""
     origin, why = cause_words(r)
     if not origin:
         return ""
     why = why.rstrip()
-    return f"Cause: {why}{'' if why.endswith(('.', '?', '!')) else '.'} Origin: {origin}."
+    said = f"Cause: {why}{'' if why.endswith(('.', '?', '!')) else '.'}"
+    if is_user_id(r.id) and origin == UNATTRIBUTED:  # the book's classes: not a user's
+        return said
+    return f"{said} Origin: {origin}."
 
 
 def page_reading(r: Outcome) -> str:

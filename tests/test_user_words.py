@@ -1,0 +1,62 @@
+"""The user's words only: what show, verify and check --latex print, and the errors a user
+meets, name no internal module, no private name and no word the glossary lacks ("second
+semantics")."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import re
+import traceback
+
+import pytest
+
+import rigidsym
+from rigidsym.cli import main
+
+#: internal words: the numeric reading's old name, private names, dotted module paths of the
+#: package (``rigidsym.kernels.runtime.errors``, ``rigidsym.derivations.sec3_4_1``)
+INTERNAL = re.compile(r"second semantics|\b_internal|\b_rigidsym|\brigidsym(?:\.[a-z_]+){2,}")
+
+
+def _run(*argv: str) -> str:
+    """``rigidsym ARGV`` in this process: stdout and stderr together."""
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        main(list(argv))
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("argv", [
+    ("show", "3.59"), ("show", "3.148", "--full"), ("show", "3.13"),
+    ("verify", "3.59", "3.148", "3.13", "--jobs", "1"),
+    ("check", "--latex", r"\mathbf{e}^T\mathbf{e} = 2", "--let", r"\mathbf{e}: unit vector"),
+    ("check", "--latex", r"\det(\mathbf{1} + [\mathbf{a}]_\times) = 1 + \|\mathbf{a}\|^2"),
+], ids=lambda a: " ".join(a[:2]))
+def test_outputs_name_no_internal_word(argv):
+    text = _run(*argv)
+    assert text.strip()
+    assert not INTERNAL.findall(text), INTERNAL.findall(text)
+
+
+def test_verify_summary_counts_by_origin():
+    """The summary line splits the does-not-hold into errata of the book and slips of the
+    text's conversion (3.148 is an erratum, 3.94 a slip); never "not determined"."""
+    line = _run("verify", "3.148", "3.94", "--jobs", "1", "--quiet").strip().splitlines()[-1]
+    assert "2 do not hold as printed" in line
+    assert "1 erratum of the book" in line and "1 slip of the text's conversion" in line
+    assert "not determined" not in line
+
+
+def test_errors_a_user_meets_are_named_as_imported():
+    """A traceback names the public class (``rigidsym.BadInput``,
+    ``rigidsym.kernels.SingularConfigurationError``), not the module that defines it."""
+    with pytest.raises(rigidsym.BadInput) as exc:
+        rigidsym.check("3.0")
+    last = traceback.format_exception_only(exc.type, exc.value)[-1]
+    assert last.startswith("rigidsym.BadInput: "), last
+    from rigidsym import kernels
+    for cls in (kernels.SingularConfigurationError, kernels.NonFiniteResultError,
+                kernels.BroadcastWarning):
+        assert cls.__module__ == "rigidsym.kernels"
+        assert getattr(kernels, cls.__name__) is cls
