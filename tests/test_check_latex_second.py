@@ -76,7 +76,7 @@ def test_a_verdict_says_the_second_semantics_agreed(latex, verdict):
 
 # --------------------------------------------- mutations of the symbolic path: refused
 def _refused(latex, let):
-    with pytest.raises(BadInput, match="the two semantics disagree"):
+    with pytest.raises(BadInput, match="the numeric cross-check disagree"):
         rigidsym.check_latex(latex, let=let, repairs=False)
 
 
@@ -412,7 +412,7 @@ def test_a_book_row_the_reader_misreads_is_refused(monkeypatch):
         return real(self, text, what, *args, **kwargs)
 
     monkeypatch.setattr(GlyphReader, "parse", transposed)
-    with pytest.raises(BadInput, match="the two semantics disagree"):
+    with pytest.raises(BadInput, match="the numeric cross-check disagree"):
         rigidsym.check_latex(r"\mathbf{E}\mathbf{x} = \mathbf{e}\times\mathbf{x}", book="3.2",
                              repairs=False)
 
