@@ -20,7 +20,7 @@ from rigidsym.registry.declarations import USER_CAUSE_DEFAULT, VERDICTS, is_user
 from rigidsym.report.repairs import repair_fields
 
 __all__ = ["summary", "cause_counts", "cause_line", "result_record", "to_json", "cause_words",
-           "cause_sentence", "UNATTRIBUTED",
+           "cause_sentence", "origin_shown", "UNATTRIBUTED",
            "page_reading", "failure_bound", "CITATION", "TITLE", "SCHEMA", "RESIDUAL_FLOOR",
            "document_header"]
 
@@ -140,6 +140,13 @@ def cause_sentence(r: Outcome) -> str:
     if is_user_id(r.id) and origin == UNATTRIBUTED:  # the book's classes: not a user's
         return said
     return f"{said} Origin: {origin}."
+
+
+def origin_shown(rec: dict) -> str:
+    """The origin a page prints for a record: its ``cause_class``, but nothing for a user's
+    equation the book's classes do not fit (one that declares no class of its own)."""
+    cls = rec.get("cause_class") or ""
+    return "" if is_user_id(rec["id"]) and cls == UNATTRIBUTED else cls
 
 
 def page_reading(r: Outcome) -> str:
