@@ -76,3 +76,21 @@ def test_errors_a_user_meets_are_named_as_imported():
                 kernels.BroadcastWarning):
         assert cls.__module__ == "rigidsym.kernels"
         assert getattr(kernels, cls.__name__) is cls
+
+
+def test_an_exercise_on_the_users_data_names_those_data():
+    """Exercise 3.2 on a tetrahedron of the user's that is not regular: the title and the
+    assumptions say what the data are (not the book's regular one), and every answer is
+    expanded (no product of a sum with a radical left, as sp.expand would leave it)."""
+    import sympy as sp
+    from rigidsym.derivations.exercises import ex3_02
+
+    s = ex3_02.solve(P_3=[1, 2, 0], P_4=[sp.Rational(1, 2), sp.Rational(1, 3), 2])
+    words = " ".join([s.title, *s.assumptions])
+    assert "regular tetrahedron" not in words and "Fig. 3.10" not in words
+    assert "not regular" in words
+    for name in ("P", "n_min", "f", "P_barycentric"):
+        for e in sp.Matrix(s.answers[name]):
+            assert sp.expand(e) == e, (name, e)
+    book = ex3_02.solve()
+    assert "regular tetrahedron" in " ".join([book.title, *book.assumptions])
