@@ -37,6 +37,8 @@ SHORT_LINES = 40
 #: in the short explanation, a relation or a counterexample longer than this many lines is
 #: summarised in one line that points at ``--full``
 _SHORT_BLOCK = 3
+#: the most continuation lines of the counterexample's residual in the short explanation
+_SHORT_RESIDUAL = 5
 
 
 def output_width() -> int:
@@ -222,18 +224,29 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int,
 
 
 def _short_counterexample(lines: list[str], eq_id: str) -> list[str]:
-    """The counterexample's point and sides, each entry cut to one line, without how the
-    point was chosen (``--full`` keeps it)."""
-    out = []
+    """The counterexample's point and sides, each entry cut to its first line but the
+    residual (where the sides differ), whose exact rows are kept up to
+    :data:`_SHORT_RESIDUAL` more lines; without how the point was chosen (``--full``
+    keeps it)."""
+    entries: list[list[str]] = []
     for line in lines:
         if line.lstrip().startswith("How the point was chosen"):
             break
-        if line.startswith("    ") and out:  # a continuation of the entry above
-            if not out[-1].endswith(" …"):
-                out[-1] += " …"
-            continue
-        out.append(line)
-    if any(x.endswith(" …") for x in out):
+        if line.startswith("    ") and entries:  # a continuation of the entry above
+            entries[-1].append(line)
+        else:
+            entries.append([line])
+    out, cut = [], False
+    for head, *rest in entries:
+        if head.startswith("  residual"):  # its exact rows; the decimals beneath, --full
+            rest = rest[:next((k for k, x in enumerate(rest) if x.lstrip().startswith("≈")),
+                              len(rest))]
+        if not rest or (head.startswith("  residual") and len(rest) <= _SHORT_RESIDUAL):
+            out += [head, *rest]
+        else:
+            out.append(head + " …")
+            cut = True
+    if cut:
         out.append(f"  (… : the entry goes on; rigidsym show {eq_id} --full)")
     return out
 
