@@ -282,8 +282,8 @@ def _adot_parallel_corrected():
 
 @equation("3.57", "Axial and normal components of adot", section="3.4.1", singular=_W,
           expected="does-not-hold", cause="unknown",
-          evidence="first member a_dot . omega/||omega||^2 is a scalar for the vector adot_par: "
-                   "the trailing factor omega is missing",
+          evidence="the trailing factor omega is missing: the first member "
+                   "a_dot . omega/||omega||^2 is a scalar for the vector adot_par",
           latex=r"\dot{\mathbf{a}}_{\parallel} \equiv \dot{\mathbf{a}} \cdot \frac{\boldsymbol"
                 r"{\omega}}{\|\boldsymbol{\omega}\|^2} \equiv \frac{\boldsymbol{\omega} "
                 r"\boldsymbol{\omega}^T}{\|\boldsymbol{\omega}\|^2} \dot{\mathbf{a}}, \quad "
@@ -324,8 +324,9 @@ def omega_matrix_squared() -> Statement:
 
 @equation("3.59", "Axial and normal components of the velocity of P", section="3.4.1",
           singular=_W, expected="does-not-hold", cause="unknown",
-          evidence="the minus sign sits outside the pdot_perp underbrace: the braced term "
-                   "reads +Omega^2 adot/||omega||^2 + Omega(p - a)",
+          evidence="the first term of the braced pdot_perp has the wrong sign: the minus "
+                   "sign sits outside the underbraced group, which reads "
+                   "+Omega^2 adot/||omega||^2 + Omega(p - a)",
           latex=r"\dot{\mathbf{p}} = \underbrace{\frac{\boldsymbol{\omega} \boldsymbol{\omega}"
                 r"^T}{\|\boldsymbol{\omega}\|^2} \dot{\mathbf{a}}}_{\dot{\mathbf{p}}_{\parallel}}"
                 r" - \underbrace{\frac{1}{\|\boldsymbol{\omega}\|^2} \boldsymbol{\Omega}^2 "

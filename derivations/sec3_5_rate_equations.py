@@ -36,8 +36,8 @@ c_phi, s_phi = sp.cos(phi), sp.sin(phi)
 
 # --------------------------------------------------------------------------- (3.96)
 @equation("3.96a", "Rate of N", section="3.5", expected="does-not-hold", cause="unknown",
-          evidence="the last row of N_dot is e_dot^T (rate of the row e^T of N), yet the "
-                   "printed factor 1/(4(1 - cos phi)) multiplies it as well as B",
+          evidence="the factor 1/(4(1 - cos phi)) belongs to B alone: printed, it multiplies "
+                   "the last row e_dot^T of N_dot as well (the rate of the row e^T of N)",
           singular="phi = 0 (mod 2 pi)",
           latex=r"\dot{\mathbf{N}} = \frac{1}{4(1 - \cos \phi)} \begin{bmatrix} \mathbf{B} "
                 r"\\ \dot{\mathbf{e}} \end{bmatrix}")

@@ -155,7 +155,7 @@ def test_a_disagreement_quotes_its_relation_as_written_on_one_line(monkeypatch):
         return sp.MatrixSymbol(g.name, *g.shape)
 
     monkeypatch.setattr(BookNotationRules, "velocity", free_rate)
-    with pytest.raises(BadInput, match="two semantics disagree") as exc:
+    with pytest.raises(BadInput, match="numeric cross-check disagree") as exc:
         rigidsym.check_latex(r"\mathbf{n}^T\dot{\mathbf{n}} = 0",
                              let=[r"\mathbf{n}(t): unit vector"], repairs=False)
     msg = str(exc.value)

@@ -135,7 +135,7 @@ def test_a_kinematic_equation_is_verified_by_both_semantics(family):
     latex, lets, _ = FAMILIES[family]
     r = rigidsym.check_latex(latex, let=lets, repairs=False)
     assert r.verdict == "verified", (r.detail, r.model)
-    assert any("second semantics" in n and "agree" in n for n in r.model), r.model
+    assert any("numeric cross-check" in n and "agree" in n for n in r.model), r.model
 
 
 @pytest.mark.slow

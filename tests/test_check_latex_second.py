@@ -24,7 +24,7 @@ U = [r"\mathbf{u}: vector", r"n = |\mathbf{u}|", r"F(\mathbf{u}) = n^2 I_3"]
 
 
 def _second(r) -> str:
-    return next((n for n in r.model if n.startswith("second semantics")), "")
+    return next((n for n in r.model if n.startswith("numeric cross-check")), "")
 
 
 # ------------------------------------------------------------- the evaluator on its own
@@ -71,12 +71,12 @@ def test_its_shapes_are_types():
 def test_a_verdict_says_the_second_semantics_agreed(latex, verdict):
     r = rigidsym.check_latex(latex, let=U, repairs=False)
     assert r.verdict == verdict
-    assert "second semantics (mpmath" in _second(r), r.model
+    assert "numeric cross-check (mpmath" in _second(r), r.model
 
 
 # --------------------------------------------- mutations of the symbolic path: refused
 def _refused(latex, let):
-    with pytest.raises(BadInput, match="the two semantics disagree"):
+    with pytest.raises(BadInput, match="the numeric cross-check disagree"):
         rigidsym.check_latex(latex, let=let, repairs=False)
 
 
@@ -161,10 +161,10 @@ def test_every_docs_example_decides_as_before_and_is_checked_by_it(kw):
     try:
         r = rigidsym.check_latex(kw.pop("latex"), repairs=False, **kw)
     except ValueError as exc:  # the examples that show a refusal: never the second's
-        assert "two semantics disagree" not in str(exc)
+        assert "numeric cross-check disagree" not in str(exc)
         return
     if r.verdict in ("verified", "does-not-hold"):
-        assert "second semantics (mpmath" in _second(r), _second(r)
+        assert "numeric cross-check (mpmath" in _second(r), _second(r)
 
 
 @pytest.mark.slow
@@ -185,15 +185,15 @@ def test_the_corpus_decides_as_before_and_the_second_semantics_covers_it():
             r = rigidsym.check_latex(e["latex"], let=corpus.lets_of(e), repairs=False,
                                      notation=book if book in NOTATIONS else None)
         except ValueError as exc:
-            assert "two semantics disagree" not in str(exc), (e["id"], str(exc))
+            assert "numeric cross-check disagree" not in str(exc), (e["id"], str(exc))
             continue
         finally:
             registry.forget_module("rigidsym.latex.statement")
         if r.verdict in ("verified", "does-not-hold"):
             decided += 1
             note = _second(r)
-            covered += "second semantics (mpmath" in note
-            assert "second semantics (mpmath" in note, (e["id"], note)
+            covered += "numeric cross-check (mpmath" in note
+            assert "numeric cross-check (mpmath" in note, (e["id"], note)
             if r.verdict == "does-not-hold":  # at its own counterexample, or said why not
                 at_point += "counterexample too" in note
                 assert "counterexample too" in note or "random points only" in note, note
@@ -226,7 +226,7 @@ def test_a_disagreement_at_the_command_line_is_exit_2_and_no_verdict(monkeypatch
     monkeypatch.setattr(GlyphReader, "_rebind", lambda self, x, over, call: [])
     code, out, err = run_cli(capsys, "--latex", r"F(2\mathbf{u}) = F(\mathbf{u})",
                           *[a for x in U for a in ("--let", x)])
-    assert code == 2 and "two semantics disagree" in err and "Verdict" not in out, (out, err)
+    assert code == 2 and "numeric cross-check disagree" in err and "Verdict" not in out, (out, err)
     errors = [x for x in err.splitlines() if x.startswith("rigidsym: error")]
     assert "Traceback" not in err and len(errors) == 1, err
 
@@ -266,7 +266,7 @@ def test_the_two_semantics_agree_on_random_vector_identities():
             r = rigidsym.check_latex(latex, let=_lets(latex), repairs=False)
             assert r.verdict in ("verified", "does-not-hold"), (latex, r.detail)
             assert r.verdict == "verified" or not holds, (latex, r.detail)
-            assert "second semantics (mpmath" in _second(r)
+            assert "numeric cross-check (mpmath" in _second(r)
 
     check()
 
@@ -393,7 +393,7 @@ def test_a_notation_function_used_only_in_a_models_body_is_taken(monkeypatch):
 def test_a_book_check_is_cross_checked_on_the_tables_rows(latex, book, verdict):
     r = rigidsym.check_latex(latex, book=book, repairs=False)
     assert r.verdict == verdict
-    assert "second semantics (mpmath" in _second(r), _second(r)
+    assert "numeric cross-check (mpmath" in _second(r), _second(r)
     assert verdict == "verified" or "counterexample too" in _second(r), _second(r)
 
 
@@ -412,7 +412,7 @@ def test_a_book_row_the_reader_misreads_is_refused(monkeypatch):
         return real(self, text, what, *args, **kwargs)
 
     monkeypatch.setattr(GlyphReader, "parse", transposed)
-    with pytest.raises(BadInput, match="the two semantics disagree"):
+    with pytest.raises(BadInput, match="the numeric cross-check disagree"):
         rigidsym.check_latex(r"\mathbf{E}\mathbf{x} = \mathbf{e}\times\mathbf{x}", book="3.2",
                              repairs=False)
 
@@ -426,8 +426,8 @@ def test_a_modules_symbol_is_named_as_not_cross_checked(lent):
     r = rigidsym.check_latex(r"\mathbf{R}\boldsymbol{\omega} = \boldsymbol{\omega}",
                              modules=[lent], repairs=False)
     assert r.verdict == "verified"
-    note = next(n for n in r.model if n.startswith("second semantics"))
-    assert note.startswith("second semantics: not applied (\\mathbf{R}"), note
+    note = next(n for n in r.model if n.startswith("numeric cross-check"))
+    assert note.startswith("numeric cross-check: not applied (\\mathbf{R}"), note
 
 
 def test_the_rate_of_a_rate_is_the_second_derivative():

@@ -55,3 +55,12 @@ def test_glossary_command(capsys):
     assert "PARAMETRISATION" in capsys.readouterr().out
     assert main(["glossary"]) == 0
     assert capsys.readouterr().out.count("\n\n") >= len(glossary.entries()) - 1
+
+
+def test_the_words_of_a_does_not_hold_have_entries():
+    """`show`, `verify` and the reports say "Cause:" and "Origin:" (an erratum, a slip of
+    the text's conversion), `check --latex` "numeric cross-check": each has an entry."""
+    for word in ("cause", "origin", "numeric cross-check"):
+        assert word in glossary.entries(), word
+    assert "erratum" in glossary.entries()["origin"]
+    assert "slip" in glossary.entries()["origin"]

@@ -153,7 +153,8 @@ def _show_all(ids, modules=None) -> dict[str, str]:
     for eq_id in ids:
         st = REGISTRY[eq_id].build()
         out[eq_id] = explain(check(eq_id), {"printed": st.printed, "claim": st.claims,
-                                            "corrected": st.corrected or []}, "test", 100)
+                                            "corrected": st.corrected or []}, "test", 100,
+                             full=True)
     return out
 
 

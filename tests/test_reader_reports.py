@@ -24,7 +24,7 @@ def _forget():
 def _show(r) -> str:
     st = REGISTRY[r.id].build()
     return explain(r, {"printed": st.printed, "claim": st.claims,
-                       "corrected": st.corrected or []}, "test", 100)
+                       "corrected": st.corrected or []}, "test", 100, full=True)
 
 
 def test_show_prints_the_records_bound_the_report_prints():

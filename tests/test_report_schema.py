@@ -40,8 +40,8 @@ def test_only_the_wrong_brace_of_3_59_fails(results):
     failing = [m["label"] for m in rec["members"] if m["status"] == "fails"]
     assert failing == ["pdot_perp brace"] == [rec["failing_member"]]
     assert all(m["status"] == "holds" for m in rec["members"] if m["role"] == "corrected")
-    assert rec["cause_class"] == "cause not determined"
-    assert "unknown" not in rec["evidence"] and "what is known" in rec["evidence"]
+    assert rec["cause_class"] == "not a known slip of the text's conversion nor a known erratum"
+    assert "unknown" not in rec["evidence"] and "wrong sign" in rec["evidence"]
 
 
 def test_counterexample_residual_is_left_minus_right(results):

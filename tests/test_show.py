@@ -20,11 +20,13 @@ ROOT = Path(__file__).resolve().parents[1]
 
 @pytest.fixture(scope="module")
 def shown():
-    """`rigidsym show` of three does-not-hold ids, stdout a pipe (not a TTY), no COLUMNS."""
+    """`rigidsym show --full` of three does-not-hold ids, stdout a pipe (not a TTY), no
+    COLUMNS."""
     env = {k: v for k, v in os.environ.items() if k != "COLUMNS"}
     out = {}
     for i in ("3.96e", "3.59", "3.148"):
-        p = subprocess.run([sys.executable, "-m", "rigidsym", "show", i], capture_output=True,
+        p = subprocess.run([sys.executable, "-m", "rigidsym", "show", i, "--full"],
+                           capture_output=True,
                            text=True, env=env, cwd=ROOT, check=True)
         out[i] = p.stdout
     return out
@@ -52,7 +54,10 @@ def test_3_59_names_only_the_wrong_brace(shown):
     assert "Fails: member “braced ṗ⊥”" in t
     assert t.count("[fails]") == 1
     words = " ".join(t.split())  # the cause paragraph is wrapped to the width
-    assert "cause not determined" in words and "what is known" in words
+    # the cause says what is wrong; its origin is stated apart, never "not determined"
+    assert "Cause: the first term of the braced ṗ⊥ has the wrong sign" in words
+    assert "Origin: not a known slip of the text's conversion nor a known erratum" in words
+    assert "not determined" not in words
 
 
 def test_3_148_counterexample_sides(shown):
@@ -105,3 +110,55 @@ def test_latex_and_json(capsys):
     assert main(["show", "3.96e", "--json"]) == 0
     rec = json.loads(capsys.readouterr().out)
     assert rec["id"] == "3.96e" and rec["counterexample"]["residual"]
+
+
+def _show(*argv: str) -> str:
+    """``rigidsym show ARGV`` in this process, its stdout (the verdict from the cache)."""
+    import contextlib
+    import io
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        assert main(["show", *argv]) == 0
+    return out.getvalue()
+
+
+@pytest.mark.parametrize("eq_id", ["3.96e", "3.59", "3.148"])
+def test_short_by_default_full_on_demand(shown, eq_id):
+    """Without --full: at most 40 lines, and still the members, the verdict, the
+    counterexample, the cause with its origin and the corrected form; --full (the fixture)
+    is longer and adds how the point was chosen."""
+    short = _show(eq_id)
+    lines = short.splitlines()
+    assert len(lines) <= 40, len(lines)
+    for part in ("Members as printed:", "Verdict: does-not-hold", "Counterexample",
+                 "Cause:", "Origin:", "Corrected form", "--full"):
+        assert part in short, part
+    assert "How the point was chosen" not in short and "How the point was chosen" in \
+        shown[eq_id]
+    assert len(shown[eq_id].splitlines()) > len(lines)
+
+
+def _cause_is_stated(text: str) -> bool:
+    return "Cause:" in text or "cause_class" in text
+
+
+@pytest.mark.parametrize("eq_id", ["3.59", "3.148"])
+def test_not_determined_never_beside_a_cause(shown, eq_id):
+    """The cause says what is wrong and the origin is said apart: no output that states a
+    cause also says it is not determined (text, --full, --json)."""
+    for text in (_show(eq_id), shown.get(eq_id, ""), _show(eq_id, "--json")):
+        assert _cause_is_stated(text)
+        assert "not determined" not in text
+
+
+@pytest.mark.slow
+def test_every_id_shows_in_40_lines():
+    """Every id of the chapter, shown by default: at most 40 lines, no "not determined"
+    beside a cause (the verdicts from the cache that verify fills)."""
+    from rigidsym.registry.declarations import is_user_id, load_all
+
+    for eq_id in [i for i in load_all() if not is_user_id(i)]:
+        text = _show(eq_id)
+        assert len(text.splitlines()) <= 40, (eq_id, len(text.splitlines()))
+        assert "not determined" not in text, eq_id
+        assert "Verdict:" in text, eq_id

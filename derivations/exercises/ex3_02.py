@@ -32,46 +32,72 @@ VARIANTS = (
 
 def unit(v) -> sp.Matrix:
     """``v / ||v||`` with radicals simplified."""
-    return (v / sp.sqrt(v.dot(v))).applyfunc(sp.radsimp)
+    return (v / sp.sqrt(v.dot(v))).applyfunc(_simplified)
+
+
+def _simplified(e):
+    """An entry in the closed form of its number field: products of radicals expanded and
+    denominators rationalised (``a + b sqrt(157)``, not nested products)."""
+    return sp.radsimp(sp.expand(sp.radsimp(e)))
+
+
+def _what_the_data_are(P1, P2, P3, P4) -> tuple[str, str]:
+    """The title and the first assumption, named after the data: the book's figure, or the
+    tetrahedron (regular or not, or four points in one plane) that the data give."""
+    V = (P1, P2, P3, P4)
+    if all(sp.Matrix(v) == sp.Matrix(b) for v, b in zip(V, _BOOK, strict=True)):
+        return TITLE, ("Fig. 3.10 of the book, as placed here: a unit-edge regular tetrahedron "
+                       "placed with P1 at O, P2 on X, P3 in the X-Y plane, P4 above it. The "
+                       "answer is also given in barycentric coordinates, valid for any "
+                       "placement.")
+    bary = " The answer is also given in barycentric coordinates, valid for any placement."
+    if is_zero(sp.Matrix.hstack(P2 - P1, P3 - P1, P4 - P1).det()):
+        return ("Wrench on four points in one plane",
+                "The four points P1, P2, P3, P4 as given lie in one plane (no tetrahedron).")
+    edges = [_simplified(sp.sqrt((V[j] - V[i]).dot(V[j] - V[i])))
+             for i in range(4) for j in range(i + 1, 4)]
+    if all(is_zero(x - edges[0]) for x in edges):
+        return TITLE, (f"The tetrahedron P1 P2 P3 P4 as given: a regular one, every edge "
+                       f"{sp.sstr(edges[0])} m.{bary}")
+    return ("Wrench on a tetrahedron",
+            f"The tetrahedron P1 P2 P3 P4 as given (not regular: its edges P1P2, P1P3, P1P4, "
+            f"P2P3, P2P4, P3P4 measure {', '.join(sp.sstr(x) for x in edges)} m).{bary}")
 
 
 def solve(P_1=PARAMETERS[0].default, P_2=PARAMETERS[1].default, P_3=PARAMETERS[2].default,
           P_4=PARAMETERS[3].default) -> Solution:
     """Worked solution of Exercise 3.2 (vertex positions in metres)."""
     P1, P2, P3, P4 = (sp.Matrix(v) for v in (P_1, P_2, P_3, P_4))
-    s = Solution(
-        ID, TITLE, STATEMENT, CITATION,
-        given={"P1": P1, "P2": P2, "P3": P3, "P4": P4},
-        assumptions=["Fig. 3.10 of the book, as placed here: a unit-edge regular tetrahedron "
-                     "placed with P1 at O, P2 on X, P3 in the X-Y plane, P4 above it. The "
-                     "answer is also given in barycentric coordinates, valid for any "
-                     "placement."])
+    title, placed = _what_the_data_are(P1, P2, P3, P4)
+    s = Solution(ID, title, STATEMENT, CITATION,
+                 given={"P1": P1, "P2": P2, "P3": P3, "P4": P4}, assumptions=[placed])
     for a, b, name in ((P2, P3, "P_2 and P_3"), (P4, P1, "P_4 and P_1")):
         if is_zero(b - a):
             s.fail(f"The vertices {name} coincide, so the force along that edge has no "
                    f"direction.")
     f1, f2 = unit(P3 - P2), unit(P1 - P4)
-    f = s.step("resultant", f1 + f2, "f = f_1 + f_2 (unit forces along the edges).")
-    n0 = s.step("moment about O", (P2.cross(f1) + P4.cross(f2)).applyfunc(sp.radsimp),
+    f = s.step("resultant", (f1 + f2).applyfunc(_simplified),
+               "f = f_1 + f_2 (unit forces along the edges).")
+    n0 = s.step("moment about O", (P2.cross(f1) + P4.cross(f2)).applyfunc(_simplified),
                 "f_1 acts along line P2P3, f_2 along P4P1.")
     if is_zero(f):
         s.fail("The two forces are opposite (f = 0): they form a couple, whose moment is "
                "the same at every point, so no point is singled out.")
-    p0 = s.step("central axis point", (f.cross(n0) / f.dot(f)).applyfunc(sp.radsimp),
+    p0 = s.step("central axis point", (f.cross(n0) / f.dot(f)).applyfunc(_simplified),
                 "The moment is least (parallel to f) on the central axis {f x n_O / ||f||^2 "
                 "+ lambda f}.")
-    lam = sp.radsimp((P4 - p0).dot(f) / f.dot(f))
-    P = s.step("closest to P4", (p0 + lam * f).applyfunc(sp.radsimp),
+    lam = _simplified((P4 - p0).dot(f) / f.dot(f))
+    P = s.step("closest to P4", (p0 + lam * f).applyfunc(_simplified),
                "Foot of the perpendicular from P4 on the central axis.")
     Bh = sp.Matrix.vstack(sp.Matrix.hstack(P1, P2, P3, P4), sp.ones(1, 4))
-    nP = (n0 - P.cross(f)).applyfunc(sp.radsimp)
+    nP = (n0 - P.cross(f)).applyfunc(_simplified)
     s.answers = {"P": P}
     if not is_zero(Bh.det()):
-        bary = (Bh.inv() * sp.Matrix.vstack(P, sp.Matrix([1]))).applyfunc(sp.radsimp)
+        bary = (Bh.inv() * sp.Matrix.vstack(P, sp.Matrix([1]))).applyfunc(_simplified)
         s.step("barycentric coordinates", bary,
                "P = sum w_i P_i with sum w_i = 1 (placement-free).")
         s.answers["P_barycentric"] = bary
-    s.answers.update({"n_min": nP, "f": f, "n_min_magnitude": sp.radsimp(sp.sqrt(nP.dot(nP)))})
+    s.answers.update({"n_min": nP, "f": f, "n_min_magnitude": sp.sqrt(_simplified(nP.dot(nP)))})
     s.check(exact_check("unit forces along the edges: ||f_i|| = 1, f_1 x (P3 - P2) = 0, "
                         "f_2 x (P1 - P4) = 0",
                         [f1.dot(f1) - 1, f2.dot(f2) - 1, f1.cross(P3 - P2), f2.cross(P1 - P4)]))

@@ -111,8 +111,10 @@ def run(args) -> int:
         print(textwrap.fill(note, width, initial_indent="  ", subsequent_indent="    "))
     print()
     atoms = dataclasses.replace(r, model=[m for m in r.model if m not in reading.notes])
+    # everything, as show --full: a relation read from LaTeX has no id to show again
     print(explain(atoms, {"printed": st.printed, "claim": st.claims,
-                          "corrected": st.corrected or []}, "--latex (rigidsym check)", width))
+                          "corrected": st.corrected or []}, "--latex (rigidsym check)", width,
+                  full=True))
     return EXIT.get(r.verdict, 3)
 
 

@@ -15,6 +15,7 @@ __all__ = ["add_arguments", "run"]
 HELP = "explain one equation: verdict, counterexample, correction"
 EXAMPLES = """\
   rigidsym show 3.57                  why (3.57) does not hold, in the book's symbols
+  rigidsym show 3.83 --full           everything, the expression trees included
   rigidsym show 3.96                  every part of (3.96), one after the other
   rigidsym show rot:trace --module examples/rotation_identities.py   one of your ids
   rigidsym show 3.148 --json          the schema-2 record"""
@@ -31,6 +32,11 @@ def add_arguments(s) -> None:
                      help="print the members as LaTeX (default: book notation as text)")
     fmt.add_argument("--json", action="store_true",
                      help="print the schema-2 record (default: book notation as text)")
+    s.add_argument("--full", action="store_true",
+                   help="everything: the expression trees, where the equation is declared, "
+                        "the repairs, the model and the numeric backing (default: at most "
+                        "40 lines: the members, the verdict, the counterexample, the cause "
+                        "and the corrected form)")
     s.add_argument("--certificates", metavar="DIR",
                    help="also write each shown verdict's certificate into DIR and say whether "
                         "certcheck re-checks it (docs/certificates.md; default: none)")
@@ -55,15 +61,17 @@ def reader_path(path: str, cwd: str | None = None) -> str:
 
 def declared_where(eq) -> str:
     """Where a declaration lives, function and file first: ``trace_wrong in
-    notes/rot.py``; a book module's dotted name last (a user module's import name is an
-    internal one and is left out)."""
+    notes/rot.py``; a user module imported by its dotted name says it last (the package's
+    own module names and the import name of a module given by path are internal ones and
+    are left out)."""
     mod = sys.modules[eq.module]
     try:
         src = reader_path(inspect.getsourcefile(getattr(mod, eq.function.split(".")[0])))
     except (TypeError, ValueError, AttributeError):  # no source file (a notebook cell)
         src = eq.where
-    tail = "" if eq.module.startswith("_rigidsym_user_") or eq.module == "__main__" else \
-        f" (module {eq.module})"
+    internal = eq.module.startswith(("_rigidsym_user_", "rigidsym.")) or \
+        eq.module in ("__main__", "rigidsym")
+    tail = "" if internal else f" (module {eq.module})"
     return f"{eq.function} in {src}{tail}"
 
 
@@ -103,7 +111,7 @@ def run(args) -> int:
         if k:
             print("\n" + "-" * min(width, 40) + "\n")
         print(explain(r, {"printed": st.printed, "claim": st.claims,
-                          "corrected": st.corrected or []}, where, width))
+                          "corrected": st.corrected or []}, where, width, full=args.full))
     if args.certificates:
         _certificates(shown, args.certificates, args.json)
     return 0

@@ -213,9 +213,10 @@ def run(args) -> int:
         f" ({sum(bool(getattr(r, 'cached', False)) for r in results)} from the cache)"
     line = (f"{len(results)} checked in {wall:.1f} s{hits}: "
             + ", ".join(f"{k} {v}" for k, v in s.items()))
-    book = [r for r in results if not is_user_id(r.id)]   # causes are the book's words
+    book = [r for r in results if not is_user_id(r.id)]   # origins are the book's words
     if book and summary(book)["does-not-hold"]:
-        line += f" (the book's does-not-hold by cause: {cause_line(book)})"
+        line += (f"; of the book's equations, {summary(book)['does-not-hold']} do not hold "
+                 f"as printed: {cause_line(book)}")
     if fmt == "json":  # stdout is the document; the words go to stderr
         sys.stdout.write(_document(results, certified))
         print(line, file=sys.stderr)

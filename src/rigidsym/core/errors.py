@@ -18,6 +18,10 @@ class BadInput(ValueError):
     """
 
 
+# a user meets it as ``rigidsym.BadInput`` (the package exports it): a traceback says so
+BadInput.__module__ = "rigidsym"
+
+
 def did_you_mean(word: str, known: Iterable[str], n: int = 3) -> str:
     """The close matches of a mistyped ``word`` among ``known``, as a clause to append to an
     error message (``"; did you mean 'verify'?"``), or ``""`` when none is close.

@@ -166,7 +166,7 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     if book or modules:
         extra, lent = book_lets(rows or {}, lent)
     if lent:
-        return (f"second semantics: not applied ({', '.join(lent)}: a module's meaning, the "
+        return (f"numeric cross-check: not applied ({', '.join(lent)}: a module's meaning, the "
                 f"reader's)")
     try:
         lets = read_lets(let) + extra
@@ -177,17 +177,18 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
         found = residuals(tree(latex), decls_of(lets), POINTS)
     except NotCovered as exc:
         if REFUSE_UNCOVERED:
-            raise BadInput(f"--latex: the second semantics does not evaluate {exc}, and a "
+            raise BadInput(f"--latex: the numeric cross-check does not evaluate {exc}, and a "
                            f"verdict of the symbolic path alone is not given") from None
-        return f"second semantics: not covered ({exc}); the verdict rests on the symbolic path"
+        return (f"numeric cross-check: not covered ({exc}); the verdict rests on the exact "
+                f"check")
     except (LatexError, BadInput):
-        return "second semantics: not covered (a declaration it cannot read)"
+        return "numeric cross-check: not covered (a declaration it cannot read)"
     except Exception:  # noqa: BLE001 -- mpmath's own failure at a point (a singular matrix)
-        return "second semantics: not covered (its evaluation failed at a point)"
+        return "numeric cross-check: not covered (its evaluation failed at a point)"
     worst = max(found, key=lambda r: r.relative)
     if verdict == "verified" and worst.relative > VANISHES:
-        raise Disagreement(_words(worst, latex, "verified, but the second semantics (mpmath, "
-                                                 "50 digits) finds the sides differ")
+        raise Disagreement(_words(worst, latex, "verified, but the numeric cross-check (mpmath,"
+                                                 " 50 digits) finds the sides differ")
                            + _where_verified(worst, latex, lets, let, symbols, statement))
     if verdict == "does-not-hold" and worst.relative < FAILS:
         # a real that fails only beyond (-2, 2) (cos(θ/2) = √((1 + cos θ)/2) fails for
@@ -201,10 +202,10 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     for n in {r.reading for r in found}:  # each reading that type-checks fails somewhere
         mine = max((r for r in found if r.reading == n), key=lambda r: r.relative)
         if verdict == "does-not-hold" and mine.relative < FAILS:
-            raise Disagreement(_words(mine, latex, "does-not-hold, but the second semantics "
+            raise Disagreement(_words(mine, latex, "does-not-hold, but the numeric cross-check "
                                                     "(mpmath, 50 digits) finds the sides equal"
                                                     f" at {POINTS} random points"))
-    return (f"second semantics (mpmath, 50 digits, {POINTS} random points): "
+    return (f"numeric cross-check (mpmath, 50 digits, {POINTS} random points): "
             f"{'the sides agree' if verdict == 'verified' else 'the sides differ'} "
             f"(largest relative residual {float(worst.relative):.1e}){said}")
 
@@ -352,7 +353,7 @@ def _at_counterexample(latex: str, lets, at, lets_text=(), pt=None) -> str:
         if mine.relative <= AT_POINT:
             where = _where_they_differ(t, parsed_text(latex), decls, given, lets_text, pt)
             raise Disagreement(_words(mine, latex, "does-not-hold, but at its counterexample "
-                                                    "the second semantics (mpmath, 50 digits) "
+                                                    "the numeric cross-check (mpmath, 50 digits) "
                                                     "finds the sides equal") + where)
     worst = min(found, key=lambda r: r.relative)
     return (f"; it fails at the symbolic path's counterexample too (relative residual "
@@ -414,8 +415,8 @@ def _words(r, latex: str, what: str) -> str:
                       for k, v in list(r.point.items())[:6])
     return (f"--latex: the symbolic path says {what} (relation {r.relation}: {said}; "
             f"relative residual {float(r.relative):.1e}{'; at ' + point if point else ''}): "
-            f"the two semantics disagree, so no verdict; say the equation another way or "
-            f"report it")
+            f"the exact check and the numeric cross-check disagree, so no verdict; say the "
+            f"equation another way or report it")
 
 
 def _one_line(v, t=None) -> str:

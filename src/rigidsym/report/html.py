@@ -25,7 +25,14 @@ from rigidsym.report.glossary import html_entries
 from rigidsym.report.markdown import anchor, certificate_words, sections, undecided_reasons
 from rigidsym.report.mathtext import math_or_text
 from rigidsym.report.numeric import numeric_sentence
-from rigidsym.report.record import CITATION, TITLE, cause_line, result_record, summary
+from rigidsym.report.record import (
+    CITATION,
+    TITLE,
+    cause_line,
+    origin_shown,
+    result_record,
+    summary,
+)
 from rigidsym.report.repairs import errata_rows, repairs_view
 
 __all__ = ["to_html", "markdown_to_html", "math_or_text", "prose_html"]
@@ -88,6 +95,7 @@ def _prose_view(rec: dict) -> dict:
     return {"evidence_html": prose_html(rec["evidence"]), "ce_sides": sides_of(failing),
             "failing_member_shown": label_text(rec["failing_member"] or ""),
             "title_shown": label_text(rec["title"]),
+            "origin_shown": origin_shown(rec),
             "singular_shown": label_text(rec["singular"] or ""),
             "ce_member_shown": label_text(ce.get("member") or ""),
             "ce_whose": whose_symbols(rec["id"])}
@@ -140,7 +148,7 @@ def to_html(results: list[Outcome], *, title: str = TITLE, source: str | None = 
              for r in results]
     s = summary(results)
     return letter_subscripts(_env().get_template("chapter3.html.j2").render(
-        causes=cause_line(results) if s["does-not-hold"] else "",
+        causes=cause_line(results) if s["does-not-hold"] else "", n_bad=s["does-not-hold"],
         title=title, source=source, citation=CITATION.replace("*", ""),
         counts=list(s.items()), total=len(results),
         bad=[v for v in views if v["verdict"] == "does-not-hold"],

@@ -14,7 +14,14 @@ from rigidsym.latex.transcription import transcription_words
 from rigidsym.printing.labels import label_text, latex_spans
 from rigidsym.report.counterexample import markdown_lines, sides_of, whose_symbols
 from rigidsym.report.numeric import numeric_sentence
-from rigidsym.report.record import CITATION, TITLE, cause_line, result_record, summary
+from rigidsym.report.record import (
+    CITATION,
+    TITLE,
+    cause_line,
+    origin_shown,
+    result_record,
+    summary,
+)
 from rigidsym.report.repairs import markdown_errata, markdown_repairs
 
 __all__ = ["to_markdown", "anchor", "sections", "how_checked", "numeric_words",
@@ -138,8 +145,11 @@ def _entry(rec: dict, full: bool) -> list[str]:
     if rec["verdict"] == "does-not-hold":
         fm = rec["failing_member"]
         fails = f"member *{_cell(label_text(fm))}*" if fm else "the equation (one member)"
-        out += [f"Fails: {fails}. Cause: **{rec['cause_class']}**. "
-                f"{prose_markdown(rec['evidence'])}", ""]
+        why = prose_markdown(rec["evidence"]).rstrip()
+        stop = "" if why.endswith((".", "?", "!")) else "."
+        origin = origin_shown(rec)
+        out += [f"Fails: {fails}. Cause: {why}{stop}"
+                + (f" Origin: **{origin}**." if origin else ""), ""]
         if rec["counterexample"]:
             failing = next((m["text"] for m in rec["members"] if m["status"] == "fails"
                             and m["role"] != "corrected"), None)
@@ -194,14 +204,14 @@ def to_markdown(results: list[Outcome], full: bool = False, *, title: str = TITL
     out += [f"| {v} | {n} |" for v, n in s.items()]
     out += [f"| **total** | {len(results)} |", ""]
     if s["does-not-hold"]:
-        out += [f"The {s['does-not-hold']} does-not-hold by cause: {cause_line(results)}.", ""]
+        out += [f"{s['does-not-hold']} do not hold as printed: {cause_line(results)}.", ""]
     bad = [r for r in recs if r["verdict"] == "does-not-hold"]
     if bad:
         out += ["## Equations that do not hold as printed", "",
-                "| id | title | failing member | cause | what is known |", "|---|---|---|---|---|"]
+                "| id | title | failing member | cause | origin |", "|---|---|---|---|---|"]
         out += [f"| [({r['id']})](#{anchor(r['id'])}) | {_cell(label_text(r['title']))} | "
                 f"{_cell(label_text(r['failing_member']) or 'the equation')} | "
-                f"{r['cause_class']} | {_cell(prose_markdown(r['evidence']))} |" for r in bad]
+                f"{_cell(prose_markdown(r['evidence']))} | {origin_shown(r)} |" for r in bad]
         out.append("")
     out += markdown_errata(recs, anchor)
     off = [r for r in recs if r["verdict"] != r["expected"]]

@@ -19,7 +19,8 @@ from rigidsym.printing import notation
 from rigidsym.registry.declarations import USER_CAUSE_DEFAULT, VERDICTS, is_user_id
 from rigidsym.report.repairs import repair_fields
 
-__all__ = ["summary", "cause_counts", "result_record", "to_json", "cause_words",
+__all__ = ["summary", "cause_counts", "cause_line", "result_record", "to_json", "cause_words",
+           "cause_sentence", "origin_shown", "UNATTRIBUTED",
            "page_reading", "failure_bound", "CITATION", "TITLE", "SCHEMA", "RESIDUAL_FLOOR",
            "document_header"]
 
@@ -49,25 +50,32 @@ def summary(results: list[Outcome]) -> dict[str, int]:
     return {v: c.get(v, 0) for v in VERDICTS}
 
 
-#: the does-not-hold counted by cause: the book's errata, the conversion's slips,
-#: and those whose cause is not determined
+#: the does-not-hold counted by origin: the book's errata, the conversion's slips, and
+#: those the declarations attribute to neither (a printed copy of the book decides)
 CAUSE_KEYS = (("erratum", "errata of the book"),
               ("conversion", "slips of the text's conversion"),
-              ("not determined", "cause not determined"))
+              ("unattributed", "not attributed to the book or the conversion"))
+
+#: the origin of a does-not-hold the declaration attributes to neither class
+UNATTRIBUTED = "not a known slip of the text's conversion nor a known erratum"
 
 
 def cause_counts(results: list[Outcome]) -> dict[str, int]:
-    """The does-not-hold counted by cause: ``{"erratum": n, "conversion": n, "not
-    determined": n}`` (a user id's own cause counts as not determined)."""
-    c = Counter((r.cause if r.cause in ("erratum", "conversion") else "not determined")
+    """The does-not-hold counted by origin: ``{"erratum": n, "conversion": n,
+    "unattributed": n}`` (a user id's own cause counts as unattributed)."""
+    c = Counter((r.cause if r.cause in ("erratum", "conversion") else "unattributed")
                 for r in results if r.verdict == "does-not-hold")
     return {k: c.get(k, 0) for k, _ in CAUSE_KEYS}
 
 
 def cause_line(results: list[Outcome]) -> str:
-    """``4 errata of the book, 4 slips of the text's conversion, 3 cause not determined``."""
+    """``4 errata of the book, 4 slips of the text's conversion, 3 not attributed to the
+    book or the conversion`` (a zero count is left out, unless every count is zero)."""
     c = cause_counts(results)
-    return ", ".join(f"{c[k]} {words}" for k, words in CAUSE_KEYS)
+    one = {"erratum": "erratum of the book", "conversion": "slip of the text's conversion",
+           "unattributed": "not attributed to the book or the conversion"}
+    parts = [f"{c[k]} {one[k] if c[k] == 1 else words}" for k, words in CAUSE_KEYS if c[k]]
+    return ", ".join(parts or [f"0 {CAUSE_KEYS[0][1]}"])
 
 
 def _transcription(r: Outcome) -> dict | None:
@@ -98,13 +106,13 @@ def _bounded(x):
 
 
 def cause_words(r: Outcome) -> tuple[str, str]:
-    """The cause class of a does-not-hold and one sentence of what is known.
+    """The origin of a does-not-hold and its cause: what is wrong, as the declaration says.
 
     Returns:
-        ``(class, text)``: class is ``a slip in the text's conversion (...)``, ``an erratum
-        (...)`` or ``cause not determined``; text is the evidence, for an undetermined cause
-        prefixed ``"Not a known slip of the conversion nor a known erratum; what is known:
-        ..."``. ``("", "")`` for any other verdict.
+        ``(origin, cause)``: origin is ``a slip in the text's conversion (...)``, ``an
+        erratum (...)``, a user's own class, or :data:`UNATTRIBUTED`; cause is the
+        declared evidence (for a conversion slip followed by its page reading), else the
+        checker's decision. ``("", "")`` for any other verdict.
     """
     if r.verdict != "does-not-hold":
         return "", ""
@@ -114,11 +122,31 @@ def cause_words(r: Outcome) -> tuple[str, str]:
         if reading and not known.rstrip().endswith((".", "?", "!")):
             known = known.rstrip() + "."
         return _CAUSE_CLASS[r.cause], known + reading
-    if is_user_id(r.id):  # a user's own words for the cause, if any
+    if is_user_id(r.id):  # a user's own words for the class, if any
         own = r.cause not in (None, "", "unknown", USER_CAUSE_DEFAULT)
-        return (r.cause if own else "cause not determined"), known
-    return "cause not determined", (f"Not a known slip of the text's conversion nor a known "
-                                    f"erratum; what is known: {known}")
+        return (r.cause if own else UNATTRIBUTED), known
+    return UNATTRIBUTED, known
+
+
+def cause_sentence(r: Outcome) -> str:
+    """One line for a reader: ``Cause: <what is wrong>. Origin: <erratum, slip of the
+    conversion, or neither known>.`` (a user's equation: its own class, if it declares one);
+    ``""`` for any other verdict than does-not-hold."""
+    origin, why = cause_words(r)
+    if not origin:
+        return ""
+    why = why.rstrip()
+    said = f"Cause: {why}{'' if why.endswith(('.', '?', '!')) else '.'}"
+    if is_user_id(r.id) and origin == UNATTRIBUTED:  # the book's classes: not a user's
+        return said
+    return f"{said} Origin: {origin}."
+
+
+def origin_shown(rec: dict) -> str:
+    """The origin a page prints for a record: its ``cause_class``, but nothing for a user's
+    equation the book's classes do not fit (one that declares no class of its own)."""
+    cls = rec.get("cause_class") or ""
+    return "" if is_user_id(rec["id"]) and cls == UNATTRIBUTED else cls
 
 
 def page_reading(r: Outcome) -> str:

@@ -25,12 +25,20 @@ from rigidsym.report.counterexample import GLOSSARY_HINT, sides_of, text_lines, 
 from rigidsym.report.counterexample import wrap_at_spaces as _hard_wrap
 from rigidsym.report.markdown import undecided_reasons
 from rigidsym.report.numeric import numeric_sentence
-from rigidsym.report.record import cause_words, counterexample_record, result_record
+from rigidsym.report.record import cause_sentence, counterexample_record, result_record
 
-__all__ = ["explain", "output_width", "expr_lines", "repair_lines", "DEFAULT_WIDTH"]
+__all__ = ["explain", "output_width", "expr_lines", "repair_lines", "DEFAULT_WIDTH",
+           "SHORT_LINES"]
 
 #: width when stdout is not a terminal and ``COLUMNS`` is not set
 DEFAULT_WIDTH = 100
+#: the most lines of the short explanation (``show`` without ``--full``)
+SHORT_LINES = 40
+#: in the short explanation, a relation or a counterexample longer than this many lines is
+#: summarised in one line that points at ``--full``
+_SHORT_BLOCK = 3
+#: the most continuation lines of the counterexample's residual in the short explanation
+_SHORT_RESIDUAL = 5
 
 
 def output_width() -> int:
@@ -135,26 +143,33 @@ def _verdict_lines(r: Outcome, rec: dict, width: int) -> list[str]:
     return out
 
 
-def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> str:
+def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int,
+            full: bool = False) -> str:
     """The explanation printed by ``rigidsym show``.
 
     Args:
         r: the checker's result.
         rels: the statement's relations by role (``printed``, ``claim``, ``corrected``),
             in the order of ``r.members``.
-        where: where the declaration lives (module, function, file).
+        where: where the declaration lives (module, function, file); shown with ``full``.
         width: the line width to fit.
+        full: everything (the expression trees, the repairs, the model, the numeric
+            backing); else at most :data:`SHORT_LINES` lines: the members, the verdict,
+            the counterexample, the cause and the corrected form, a relation too long for
+            :data:`_SHORT_BLOCK` lines summarised in one.
 
     Returns:
         Text, no line wider than ``width`` unless a single unbreakable token is.
     """
     rec = result_record(r, timings=False)
     sec = f"Section {r.section}" if is_user_id(r.id) else f"Book: Sec. {r.section}"
-    out = [f"({r.id}) {label_text(r.title)}",
-           *_hard_wrap(f"{sec} · {r.kind} · declared in {where}", width, "")]
+    # where a user's own equation is declared is theirs to know; a book id's, with --full
+    head = f"{sec} · {r.kind}" + (f" · declared in {where}"
+                                  if full or is_user_id(r.id) else "")
+    out = [f"({r.id}) {label_text(r.title)}", *_hard_wrap(head, width, "")]
     out += _verdict_lines(r, rec, width)
     bound = rec["failure_bound"]
-    if rec.get("transcription"):  # the printed form checked against the LaTeX
+    if full and rec.get("transcription"):  # the printed form checked against the LaTeX
         out += _hard_wrap(transcription_words(rec["transcription"]), width, "")
     out += [""]
     pools = {k: list(v) for k, v in rels.items()}
@@ -164,26 +179,28 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
         head = f"  [{m['status']}] {label_text(m['label']) or m['role']}"
         if m["status"] in ("holds", "fails"):
             head += f" ({m['method']})"
-        blocks[m["role"]].append(head + ":")
         if rel is not None:
-            blocks[m["role"]] += _rel_lines(rel, width, "      ")
+            body = _rel_lines(rel, width, "      ")
         elif m.get("text"):  # a corrected member found by the repair search
-            blocks[m["role"]] += _hard_wrap(m["text"], width, "      ")
+            body = _hard_wrap(m["text"], width, "      ")
+        else:
+            body = []
+        if not full and len(body) > _SHORT_BLOCK:
+            body = [f"      ({len(body)} lines of expression: rigidsym show {r.id} --full)"]
+        blocks[m["role"]] += [head + ":"] + body
     titles = {"printed": "Members as printed:", "claim": "Claims it makes:",
               "corrected": "Corrected form (verified):"}
     for role in ("printed", "claim"):
         if blocks[role]:
             out += [titles[role]] + blocks[role] + [""]
     if r.verdict == "does-not-hold":
-        cls, why = cause_words(r)
         fm = r.failing_member
         fails = f"member “{label_text(fm)}”" if fm else "the equation (its only member)"
-        out += [f"Fails: {fails}",
-                *_hard_wrap(f"Cause: {cls}. {label_text(why)}", width, "  "), ""]
+        out += [f"Fails: {fails}", *_hard_wrap(label_text(cause_sentence(r)), width, "  "), ""]
         ce = counterexample_record(r.counterexample)
         if ce:
-            out += text_lines(ce, sides_of(_failing_text(r)), width,
-                              whose_symbols(r.id)) + [""]
+            lines = text_lines(ce, sides_of(_failing_text(r)), width, whose_symbols(r.id))
+            out += (lines if full else _short_counterexample(lines, r.id)) + [""]
     if blocks["corrected"]:
         title = titles["corrected"]
         if r.correction == "found by search":
@@ -191,16 +208,59 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int) -> s
         if bound is not None:
             title = title[:-1] + f" (failure probability <= {bound:.1e}):"
         out += [title] + blocks["corrected"] + [""]
-    out += repair_lines(r, width)
+    if full:
+        out += repair_lines(r, width)
     if r.singular:
         out += _hard_wrap(f"Singular set: {label_text(r.singular)}", width, "")
-    if r.model:
+    if full and r.model:
         out += _hard_wrap("Model: " + "; ".join(r.model), width, "")
     # the record's numeric field: the one bound of every view (floored as in the report)
-    if numeric_sentence(rec["numeric"]):
+    if full and numeric_sentence(rec["numeric"]):
         out += _hard_wrap(numeric_sentence(rec["numeric"]), width, "")
     out += _hard_wrap(GLOSSARY_HINT, width, "")
+    if not full:
+        out = _fit_short(out, r.id, width)
     return "\n".join(out)
+
+
+def _short_counterexample(lines: list[str], eq_id: str) -> list[str]:
+    """The counterexample's point and sides, each entry cut to its first line but the
+    residual (where the sides differ), whose exact rows are kept up to
+    :data:`_SHORT_RESIDUAL` more lines; without how the point was chosen (``--full``
+    keeps it)."""
+    entries: list[list[str]] = []
+    for line in lines:
+        if line.lstrip().startswith("How the point was chosen"):
+            break
+        if line.startswith("    ") and entries:  # a continuation of the entry above
+            entries[-1].append(line)
+        else:
+            entries.append([line])
+    out, cut = [], False
+    for head, *rest in entries:
+        if head.startswith("  residual"):  # its exact rows; the decimals beneath, --full
+            rest = rest[:next((k for k, x in enumerate(rest) if x.lstrip().startswith("≈")),
+                              len(rest))]
+        if not rest or (head.startswith("  residual") and len(rest) <= _SHORT_RESIDUAL):
+            out += [head, *rest]
+        else:
+            out.append(head + " …")
+            cut = True
+    if cut:
+        out.append(f"  (… : the entry goes on; rigidsym show {eq_id} --full)")
+    return out
+
+
+def _fit_short(out: list[str], eq_id: str, width: int) -> list[str]:
+    """At most :data:`SHORT_LINES` lines: the excess is cut at the end of the members and
+    counterexample blocks, keeping the cause, and a last line points at ``--full``."""
+    more = _hard_wrap(f"More (the expression trees, the repairs, the model): rigidsym show "
+                      f"{eq_id} --full", width, "")
+    if len(out) + len(more) <= SHORT_LINES:
+        return out + more
+    tail = _hard_wrap(f"{len(out) - SHORT_LINES + 1} more lines: rigidsym show {eq_id} "
+                      f"--full", width, "")
+    return out[:SHORT_LINES - len(tail)] + tail
 
 
 def repair_lines(r: Outcome, width: int) -> list[str]:

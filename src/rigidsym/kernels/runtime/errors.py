@@ -89,3 +89,10 @@ def raise_flagged(name: str, meta: dict, sing, nonfinite, arrays: list) -> None:
             f"{name}: non-finite output (overflow) from finite inputs"
             f"{at_batch_indices(w, f.sum() > 20)}; largest input there: {arg!r} "
             f"(max |{arg}| = {mags[k]:.3g})", arg, w)
+
+
+# the public module re-exports them: a traceback names them as a user imports them
+# (``rigidsym.kernels.SingularConfigurationError``), and pickles find them there
+for _cls in (BroadcastWarning, SingularConfigurationError, NonFiniteResultError):
+    _cls.__module__ = "rigidsym.kernels"
+del _cls
