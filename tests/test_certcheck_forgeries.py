@@ -17,6 +17,7 @@ import sys
 from pathlib import Path
 
 import _certforge as forge
+import _profile
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -134,8 +135,10 @@ def test_vacuous_verified_is_not_evidence(lhs, rhs):
 # ------------------------------------------------------------------ slow: the chapter
 @pytest.mark.slow
 def test_chapter_forgeries_rejected_and_none_vacuous(tmp_path):
-    """Every forgery of every id of the chapter is rejected naming the id, and no verified
-    id of the chapter rests on vacuous relations only (checked by certcheck itself)."""
+    """Every forgery of a seeded quarter of the chapter's ids (another quarter for another
+    RIGIDSYM_TEST_SEED: each forgery runs certcheck on the page, ~0.5 s, so all 181 ids cost
+    ~9 min) is rejected naming the id, and no verified id of the chapter rests on vacuous
+    relations only (checked by certcheck itself, on every id)."""
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
     from rigidsym.registry.declarations import REGISTRY, load_all
@@ -143,7 +146,8 @@ def test_chapter_forgeries_rejected_and_none_vacuous(tmp_path):
     load_all()
     certs = _certs([i for i in REGISTRY if ":" not in i])
     missed = []
-    for k, (i, name, t) in enumerate(_forgeries(certs)):
+    sample = _profile.kept(sorted(certs), 0.25)
+    for k, (i, name, t) in enumerate(_forgeries({i: certs[i] for i in sorted(sample)})):
         rc, out = _rejected(tmp_path / str(k), i, t)
         if rc == 0 or not _named(out, i):
             missed.append((i, name))
