@@ -80,3 +80,24 @@ def test_a_timeout_that_is_no_positive_number_is_refused_naming_it(bad):
 def test_the_hook_names_only_steps():
     with pytest.raises(ValueError, match="step"):
         limit.step("thinking")
+
+
+@pytest.mark.parametrize("text, seconds", [("", limit.DEFAULT_SECONDS), ("none", None),
+                                           ("NONE", None), ("2.5", 2.5)])
+def test_the_default_limit_is_60_s_or_the_environment_variables(monkeypatch, text, seconds):
+    monkeypatch.setenv(limit.ENV, text)
+    assert limit.default_seconds() == seconds
+
+
+@pytest.mark.parametrize("text", ["0", "-3", "soon", "nan"])
+def test_an_environment_limit_that_is_no_number_is_refused_naming_it(monkeypatch, text):
+    monkeypatch.setenv(limit.ENV, text)
+    with pytest.raises(ValueError, match=limit.ENV):
+        rigidsym.check_latex(*ROT)
+
+
+def test_the_default_limit_applies_where_none_is_given(monkeypatch):
+    monkeypatch.setenv(limit.ENV, "30")
+    monkeypatch.setenv(limit.HOOK, "deciding")
+    r = rigidsym.check_latex(*ROT, repairs=False)
+    assert r.verdict == "undecided" and "(30 s)" in r.cause, r.cause

@@ -90,8 +90,9 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
 
 #: the default time limit of check_latex's repair search, seconds
 REPAIR_SECONDS = 10.0
-#: the default time limit of one check_latex, seconds (rigidsym.latex.limit)
-TIMEOUT = 60.0
+#: the default time limit of one check_latex: 60 s, or the environment variable
+#: RIGIDSYM_LATEX_TIMEOUT (rigidsym.latex.limit.default_seconds)
+TIMEOUT = "default"
 
 
 def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = None, *,
@@ -99,7 +100,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
                 repairs: bool = True, repair_budget: int | None = None,
                 notation: str | None = None,
                 repair_seconds: float | None = REPAIR_SECONDS,
-                timeout: float | None = TIMEOUT) -> Result:
+                timeout: float | str | None = TIMEOUT) -> Result:
     """Decide a relation written in LaTeX (the Python side of ``rigidsym check --latex``).
 
     The LaTeX is read by the chapter's reader (:func:`rigidsym.latex.parse_latex`); each
@@ -127,8 +128,9 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         repair_seconds: a time limit of the repair search in seconds (default
             :data:`REPAIR_SECONDS`, 10; ``None``: none): past it the verdict is given with
             "search stopped after N s, K candidates tried".
-        timeout: a time limit of the whole check in seconds (default :data:`TIMEOUT`, 60;
-            ``None``: none): past it the verdict is ``undecided``, its ``cause`` naming
+        timeout: a time limit of the whole check in seconds (``None``: none; the default,
+            ``"default"``: 60 s, or the environment variable ``RIGIDSYM_LATEX_TIMEOUT``,
+            seconds or ``none``): past it the verdict is ``undecided``, its ``cause`` naming
             the step it was in (reading, the symbolic zero test, the other readings, the
             second semantics) and a hint; ``method`` is ``time-limit``
             (:mod:`rigidsym.latex.limit`).
@@ -180,7 +182,8 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     ``None`` where the time limit passed before the LaTeX was read)."""
     from rigidsym.latex import limit
 
-    seconds = limit.seconds_argument(timeout)
+    seconds = limit.default_seconds() if timeout == "default" else \
+        limit.seconds_argument(timeout)
     _repair_args(repairs, repair_budget)
     _seconds(repair_seconds)
     t0, seen = time.monotonic(), {}

@@ -61,10 +61,10 @@ def add_arguments(c) -> None:
     c.add_argument("--repair-seconds", type=float, metavar="S", default=10.0,
                    help="a time limit of the repair search, seconds; past it the verdict is "
                         "printed with what was tried (default: 10)")
-    c.add_argument("--timeout", type=float, metavar="S", default=60.0,
+    c.add_argument("--timeout", type=float, metavar="S", default=None,
                    help="a time limit of the whole check, seconds; past it the verdict is "
                         "undecided (exit 3), naming the step it was in and a hint "
-                        "(default: 60)")
+                        "(default: 60, or the environment variable RIGIDSYM_LATEX_TIMEOUT)")
 
 
 def run(args) -> int:
@@ -83,7 +83,8 @@ def run(args) -> int:
                 rep.phase("reading and checking the LaTeX") as ph:  # no silent second
             r, reading = check_latex_run(args.latex, args.let, args.book, args.module or (),
                                       opts["repairs"], opts["repair_budget"], args.notation,
-                                      args.repair_seconds, args.timeout)
+                                      args.repair_seconds,
+                                      "default" if args.timeout is None else args.timeout)
             ph.finish(f"{r.id} {r.verdict}")  # an ad-hoc check expects nothing
     except LatexError as exc:
         print(f"rigidsym: error: --latex: {exc}", file=sys.stderr)

@@ -24,11 +24,14 @@ import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-__all__ = ["DEFAULT_SECONDS", "STEPS", "HOOK", "TimeUp", "limited", "step", "reason",
-           "seconds_argument"]
+__all__ = ["DEFAULT_SECONDS", "ENV", "STEPS", "HOOK", "TimeUp", "limited", "step", "reason",
+           "seconds_argument", "default_seconds"]
 
 #: the default limit of one ``check --latex``, seconds
 DEFAULT_SECONDS = 60.0
+#: the environment variable that sets the default limit instead: seconds, or ``none`` (the
+#: test suite sets ``none``, so that no verdict of it depends on the machine's load)
+ENV = "RIGIDSYM_LATEX_TIMEOUT"
 #: the steps of a check, by name, each with the words that say it and a hint for a statement
 #: that the step could not finish in time
 STEPS = {
@@ -80,6 +83,24 @@ def seconds_argument(x, name: str = "timeout") -> float | None:
     if isinstance(x, bool) or not isinstance(x, int | float) or not x > 0 or x != x:
         raise ValueError(f"{name}: expected a positive number of seconds or None, got {x!r}")
     return float(x)
+
+
+def default_seconds() -> float | None:
+    """The default limit: :data:`ENV` where it is set, else :data:`DEFAULT_SECONDS`.
+
+    Raises:
+        ValueError: :data:`ENV` is neither a positive number nor ``none``, naming it.
+    """
+    text = os.environ.get(ENV, "").strip()
+    if not text:
+        return DEFAULT_SECONDS
+    if text.lower() == "none":
+        return None
+    try:
+        return seconds_argument(float(text), ENV)
+    except ValueError:
+        raise ValueError(f"{ENV}: expected a positive number of seconds or 'none', got "
+                         f"{text!r}") from None
 
 
 def step(name: str) -> None:
