@@ -186,9 +186,14 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
         limit.seconds_argument(timeout)
     _repair_args(repairs, repair_budget)
     _seconds(repair_seconds)
+    from rigidsym.latex import tangent
+    from rigidsym.numeval.values import tangent_order
+
+    let, order, said = tangent.split_setting(let, notation)
     t0, seen = time.monotonic(), {}
     try:
-        with limit.limited(seconds):
+        with limit.limited(seconds), tangent.using(order, said), \
+                tangent_order(order == tangent.TRANSLATION):
             return _check_latex_steps(latex, let, book, modules, repairs, repair_budget,
                                       notation, repair_seconds, seen)
     except limit.TimeUp as exc:

@@ -66,8 +66,11 @@ class Reading:
 def latex_id(latex: str, lets: list[Let], book: str | None, modules,
              notation: str | None = None) -> str:
     """The id of a LaTeX check: ``latex:`` and a short hash of the input."""
-    key = json.dumps([latex, [x.text for x in lets], book, [str(m) for m in modules or ()]]
-                     + ([notation] if notation else []))
+    from rigidsym.latex.tangent import declared
+
+    order = declared()  # a --let 'tangent order: ...' (taken out of lets) joins the id
+    key = json.dumps([latex, [x.text for x in lets] + ([order] if order else []), book,
+                      [str(m) for m in modules or ()]] + ([notation] if notation else []))
     return "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]
 
 

@@ -295,6 +295,8 @@ class Evaluator:
             return V.hat(v)
         if s == "\\vee":
             return V.vee(v)
+        if s == "\\curlywedge":  # Barfoot's xi^curlywedge: ad of a 6-vector
+            return V.small_adjoint(v)
         try:
             n = int(s)
         except ValueError:
