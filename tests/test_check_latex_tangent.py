@@ -107,9 +107,18 @@ USES = [(r"\boldsymbol\xi^\wedge\boldsymbol\xi^\wedge = (\boldsymbol\xi^\wedge)^
 def test_read_as_names_the_order_on_every_statement_that_uses_one(latex, let, order):
     r = _check(latex, [let] + ([order] if order else []))
     said = _order_said(r)
-    assert len(said) == 1, r.model
-    assert ("translation first" if order == TF else "angular first") in said[0]
+    assert ("translation first" if order == TF else "angular first") in said[0], r.model
     assert r.verdict == "verified"
+    if order is None:  # undeclared: read in both orders, said
+        assert len(said) == 2 and "not declared" in said[1] and "both verified" in said[1]
+    else:
+        assert len(said) == 1, r.model
+
+
+def test_an_undeclared_order_whose_two_readings_disagree_is_refused_naming_the_let():
+    # manif's Ad of SE(3), typed with no order: true translation first, false angular first
+    with pytest.raises(BadInput, match=r"two orders disagree .*--let 'tangent order: "):
+        _check(AD[TF], M)
 
 
 @pytest.mark.parametrize("latex, let", [

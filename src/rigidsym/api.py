@@ -190,12 +190,23 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     from rigidsym.numeval.values import tangent_order
 
     let, order, said = tangent.split_setting(let, notation)
+    fixed = said is not None or notation in tangent.NOTATION_ORDERS
     t0, seen = time.monotonic(), {}
     try:
-        with limit.limited(seconds), tangent.using(order, said), \
-                tangent_order(order == tangent.TRANSLATION):
-            return _check_latex_steps(latex, let, book, modules, repairs, repair_budget,
-                                      notation, repair_seconds, seen)
+        with limit.limited(seconds):
+            with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
+                r, reading = _check_latex_steps(latex, let, book, modules, repairs,
+                                                repair_budget, notation, repair_seconds, seen)
+            if fixed or r.verdict == "undecided" or not any(
+                    n.startswith("tangent order:") for n in reading.notes):
+                return r, reading
+            # the order matters and nothing declares it: read in the other order too
+            with tangent.using(tangent.TRANSLATION, tangent.OTHER), tangent_order(True):
+                other, _ = _check_latex_steps(latex, let, book, modules, False, repair_budget,
+                                              notation, repair_seconds, {})
+            tangent.both_orders(r.verdict, other.verdict, reading.notes)
+            r.model = list(r.model) + reading.notes[-1:]
+            return r, reading
     except limit.TimeUp as exc:
         return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
                         time.monotonic() - t0)

@@ -3,13 +3,15 @@ first: Modern Robotics, Murray-Li-Sastry, Featherstone, the chapter) or ``[v; ω
 (translation first: Barfoot's ``ξ = [ρ; φ]``, Solà's ``τ = [ρ; θ]``, manif, Sophus).
 
 It is said once, ``--let 'tangent order: translation first'`` (or ``angular first``; the
-books' spellings ``[\\rho; \\theta]``, ``[v; \\omega]``, ``[\\omega; v]`` too), or by a
-``--notation`` whose book fixes it (``barfoot``, ``sola``: translation first, the line
-``tangent order: translation first`` of its table). It rules the hat of a 6-vector, its
-vee, ``Ad`` and ``ad`` of both semantics (the symbolic path through
-:mod:`rigidsym.algebra.rigid_motions`' ``order``, the second through
+books' spellings ``[\\rho;\\theta]``, ``[v;\\omega]``, ``[\\omega;v]`` too), or by a
+``--notation`` whose book fixes it (:data:`NOTATION_ORDERS`: ``barfoot``, ``sola``
+translation first; ``lynch-park``, ``murray-li-sastry``, ``featherstone``, ``corke``
+angular first). A statement that uses an order nothing declares is read in both: one
+verdict where they agree, else bad input naming the ``--let`` (the order is never assumed).
+It rules the hat of a 6-vector, its vee, ``Ad`` and ``ad`` of both semantics (the symbolic
+path through :mod:`rigidsym.algebra.rigid_motions`' ``order``, the second through
 :mod:`rigidsym.numeval.values`' own definitions), and ``read as:`` names the order on every
-statement that uses one. Nothing declaring it, the order is angular first.
+statement that uses one.
 """
 
 from __future__ import annotations
@@ -21,8 +23,8 @@ from contextvars import ContextVar
 
 from rigidsym.core.errors import BadInput
 
-__all__ = ["ANGULAR", "TRANSLATION", "NAME", "ORDER_OF", "current", "declared", "using",
-           "rigid_order",
+__all__ = ["ANGULAR", "TRANSLATION", "NAME", "ORDER_OF", "OTHER", "current", "declared",
+           "using", "rigid_order", "both_orders",
            "said", "split_setting", "NOTATION_ORDERS"]
 
 ANGULAR, TRANSLATION = "angular first", "translation first"
@@ -34,8 +36,11 @@ ORDER_OF = {"angular first": ANGULAR, "rotation first": ANGULAR,
             "[\\omega;v]": ANGULAR, "[\\theta;\\rho]": ANGULAR, "[\\phi;\\rho]": ANGULAR,
             "[v;\\omega]": TRANSLATION, "[\\rho;\\theta]": TRANSLATION,
             "[\\rho;\\phi]": TRANSLATION}
+#: the declaration text of the other order's reading (it joins that reading's id)
+OTHER = "tangent order: translation first (the undeclared order's other reading)"
 #: the books whose notation fixes the order (their table's ``tangent order:`` line)
-NOTATION_ORDERS = {"barfoot": TRANSLATION, "sola": TRANSLATION}
+NOTATION_ORDERS = {"barfoot": TRANSLATION, "sola": TRANSLATION, "lynch-park": ANGULAR,
+                   "murray-li-sastry": ANGULAR, "featherstone": ANGULAR, "corke": ANGULAR}
 #: the order of the check running now and the text of its ``--let`` (``None``: none given)
 _ORDER: ContextVar[tuple[str, str | None]] = ContextVar("tangent_order",
                                                         default=(ANGULAR, None))
@@ -82,6 +87,25 @@ def said() -> str:
     return ("tangent order: angular first, a twist [ω; v] (Modern Robotics, Murray-Li-Sastry; "
             "--let 'tangent order: translation first' for [v; ω]): the hat of a 6-vector, its "
             "vee, Ad and ad so")
+
+
+def both_orders(first: str, other: str, notes: list[str]) -> None:
+    """A statement that uses an order nothing declares, read in both: ``first`` the verdict
+    angular first, ``other`` translation first. Where they agree, a note is appended to
+    ``notes`` (the reading's).
+
+    Raises:
+        BadInput: they differ: the order is the reader's to declare, never assumed.
+    """
+    if first == other:
+        notes.append(f"tangent order: not declared; the statement read in both orders, [ω; v] "
+                     f"and [v; ω]: both {first}")
+        return
+    raise BadInput(f"--latex: the statement uses the tangent order of SE(3) (a twist [ω; v] or "
+                   f"[v; ω]: the hat of a 6-vector, its vee, Ad, ad), nothing declares it, "
+                   f"and the two orders disagree ([ω; v]: {first}; [v; ω]: {other}): say "
+                   f"which, --let 'tangent order: angular first' or --let 'tangent order: "
+                   f"translation first' (or a --notation that fixes it: barfoot, sola)")
 
 
 def _words(text: str) -> str:
