@@ -180,20 +180,20 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                  repair_seconds=REPAIR_SECONDS, timeout=TIMEOUT):
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI;
     ``None`` where the time limit passed before the LaTeX was read)."""
-    from rigidsym.latex import limit
+    from rigidsym.latex import limit, quaternions, tangent
+    from rigidsym.numeval.values import quaternion_convention, tangent_order
 
     seconds = limit.default_seconds() if timeout == "default" else \
         limit.seconds_argument(timeout)
     _repair_args(repairs, repair_budget)
     _seconds(repair_seconds)
-    from rigidsym.latex import tangent
-    from rigidsym.numeval.values import tangent_order
-
     let, order, said = tangent.split_setting(let, notation)
+    let, product, product_said = quaternions.split_setting(let)
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
     t0, seen = time.monotonic(), {}
     try:
-        with limit.limited(seconds):
+        with limit.limited(seconds), quaternions.using(product, product_said), \
+                quaternion_convention(product == quaternions.JPL):
             with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
                 r, reading = _check_latex_steps(latex, let, book, modules, repairs,
                                                 repair_budget, notation, repair_seconds, seen)

@@ -14,7 +14,54 @@ import mpmath as mp
 __all__ = ["NotCovered", "Eye", "Zero", "shape", "add", "neg", "mul", "cross", "dot",
            "transpose", "inverse", "power", "hat", "vee", "trace", "det", "vect", "norm",
            "expm", "rodrigues", "logm", "adjoint", "small_adjoint", "spatial_cross", "sized",
-           "scalar", "assemble", "TRANSLATION_FIRST", "tangent_order"]
+           "scalar", "assemble", "TRANSLATION_FIRST", "tangent_order", "JPL_PRODUCT",
+           "quaternion_convention", "quaternion_product", "quaternion_conjugate"]
+
+#: the quaternion product of the check running now: ``False`` Hamilton's (scalar first,
+#: ij = k; the default), ``True`` JPL's (scalar last, ij = -k)
+JPL_PRODUCT: ContextVar[bool] = ContextVar("jpl_product", default=False)
+
+
+@contextmanager
+def quaternion_convention(jpl: bool) -> Iterator[None]:
+    """Within the block ``p \\otimes q`` and ``q^*`` of 4-vectors are JPL's (``jpl``) or
+    Hamilton's."""
+    token = JPL_PRODUCT.set(bool(jpl))
+    try:
+        yield
+    finally:
+        JPL_PRODUCT.reset(token)
+
+
+def _quaternion(q, what: str):
+    """``(w, x, y, z)`` of a 4-vector in the convention now (scalar first or last)."""
+    q = scalar(q)
+    if not is_matrix(q) or (q.rows, q.cols) != (4, 1):
+        raise NotCovered(f"{what} of a value that is no 4-vector")
+    return (q[3], q[0], q[1], q[2]) if JPL_PRODUCT.get() else (q[0], q[1], q[2], q[3])
+
+
+def _as_quaternion(w, x, y, z):
+    return mp.matrix([x, y, z, w]) if JPL_PRODUCT.get() else mp.matrix([w, x, y, z])
+
+
+def quaternion_product(p, q):
+    """``p ⊗ q`` from the units' table: Hamilton's ``ij = k, jk = i, ki = j`` (Hamilton 1843;
+    Solà (2017) (8)), JPL's the reverse, ``ij = -k`` (Trawny & Roumeliotis (2005) (2))."""
+    a1, b1, c1, d1 = _quaternion(p, "a quaternion product")
+    a2, b2, c2, d2 = _quaternion(q, "a quaternion product")
+    s = -1 if JPL_PRODUCT.get() else 1  # the sign of every product of two distinct units
+    w = a1 * a2 - b1 * b2 - c1 * c2 - d1 * d2
+    x = a1 * b2 + b1 * a2 + s * (c1 * d2 - d1 * c2)
+    y = a1 * c2 + c1 * a2 + s * (d1 * b2 - b1 * d2)
+    z = a1 * d2 + d1 * a2 + s * (b1 * c2 - c1 * b2)
+    return _as_quaternion(w, x, y, z)
+
+
+def quaternion_conjugate(q):
+    """``q^*``: the quaternion with its imaginary units negated."""
+    w, x, y, z = _quaternion(q, "a quaternion conjugate")
+    return _as_quaternion(w, -x, -y, -z)
 
 #: the twist order of the check running now: ``False`` ``[ω; v]`` (angular first, the
 #: default), ``True`` ``[v; ω]`` (translation first: Barfoot, Solà, manif)

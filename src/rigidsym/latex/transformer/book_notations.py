@@ -36,7 +36,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
-from rigidsym.latex import tangent
+from rigidsym.latex import quaternions, tangent
 from rigidsym.latex.kinematics import dot_key, explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
@@ -134,6 +134,10 @@ class BookNotationRules:
                                  "shapes")
             self._note(tangent.said())
             return rigid_motions.ad(x, tangent.rigid_order())
+        if sup == "*" and matrix_shape(x) == (4, 1):  # a quaternion's conjugate
+            self._note("q^*: the conjugate of a quaternion (its vector part negated); "
+                       + quaternions.said())
+            return sp.ImmutableMatrix(quaternions.conjugate(sp.Matrix(x)))
         if sup == "-T" and not self._spatial(x):
             return self._inverse_transpose(x)
         if sup in ("*", "-T"):
@@ -212,6 +216,19 @@ class BookNotationRules:
         op = "\\times^*" if dual else "\\times"
         raise LatexError(f"{op} as an operator of {shape_words(a)}: expected a 6-vector (or a "
                          f"3-vector for \\times)", "shapes")
+
+    def qprod(self, items):
+        """``p \\otimes q``, ``p \\odot q``: the quaternion product of two 4-vectors in the
+        declared convention (:mod:`rigidsym.latex.quaternions`)."""
+        a, op, b = items[0], str(items[1]).strip(), items[2]
+        a, b = self._val(a), self._val(b)
+        if matrix_shape(a) != (4, 1) or matrix_shape(b) != (4, 1):
+            raise LatexError(f"{op} between {shape_words(a)}{self._named(a)} and "
+                             f"{shape_words(b)}{self._named(b)}: the quaternion product "
+                             f"needs two 4-vectors (--let 'q: 4-vector', 'q: unit 4-vector')",
+                             "shapes")
+        self._note(quaternions.said())
+        return sp.ImmutableMatrix(quaternions.product(sp.Matrix(a), sp.Matrix(b)))
 
     def wedge(self, items):
         raise LatexError("a \\wedge b: the exterior product is not read; write a^\\wedge b "
