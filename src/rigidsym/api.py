@@ -133,7 +133,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             seconds or ``none``): past it the verdict is ``undecided``, its ``cause`` naming
             the step it was in (reading, the symbolic zero test, the other readings, the
             second semantics) and a hint; ``method`` is ``time-limit``
-            (:mod:`rigidsym.latex.limit`).
+            (``rigidsym.latex.limit``).
         notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
             ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
             ``"sola"``, ``"corke"``: ``rigidsym.latex.notations.NOTATIONS``): what its
