@@ -45,6 +45,7 @@ def pytest_configure(config):
         os.environ["RIGIDSYM_CACHE"] = tempfile.mkdtemp(prefix="rigidsym-tests-")
         _CREATED.append(os.environ["RIGIDSYM_CACHE"])   # xdist workers inherit it
     os.environ.pop("RIGIDSYM_OBJECT_CACHE", None)       # the tests' objects: in their cache
+    os.environ.setdefault("RIGIDSYM_LATEX_TIMEOUT", "none")  # no verdict rests on the load
     become_subreaper()
 
 

@@ -90,13 +90,17 @@ def check(eq_id: str, *, modules: Iterable[ModuleSpec] = (), repairs: bool = Tru
 
 #: the default time limit of check_latex's repair search, seconds
 REPAIR_SECONDS = 10.0
+#: the default time limit of one check_latex: 60 s, or the environment variable
+#: RIGIDSYM_LATEX_TIMEOUT (rigidsym.latex.limit.default_seconds)
+TIMEOUT = "default"
 
 
 def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = None, *,
                 book: str | None = None, modules: Iterable[ModuleSpec] = (),
                 repairs: bool = True, repair_budget: int | None = None,
                 notation: str | None = None,
-                repair_seconds: float | None = REPAIR_SECONDS) -> Result:
+                repair_seconds: float | None = REPAIR_SECONDS,
+                timeout: float | str | None = TIMEOUT) -> Result:
     """Decide a relation written in LaTeX (the Python side of ``rigidsym check --latex``).
 
     The LaTeX is read by the chapter's reader (:func:`rigidsym.latex.parse_latex`); each
@@ -124,6 +128,12 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         repair_seconds: a time limit of the repair search in seconds (default
             :data:`REPAIR_SECONDS`, 10; ``None``: none): past it the verdict is given with
             "search stopped after N s, K candidates tried".
+        timeout: a time limit of the whole check in seconds (``None``: none; the default,
+            ``"default"``: 60 s, or the environment variable ``RIGIDSYM_LATEX_TIMEOUT``,
+            seconds or ``none``): past it the verdict is ``undecided``, its ``cause`` naming
+            the step it was in (reading, the symbolic zero test, the other readings, the
+            second semantics) and a hint; ``method`` is ``time-limit``
+            (``rigidsym.latex.limit``).
         notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
             ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
             ``"sola"``, ``"corke"``: ``rigidsym.latex.notations.NOTATIONS``): what its
@@ -144,7 +154,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             ``let`` naming a symbol that occurs nowhere, an ambiguous glyph of ``book``, a
             module that cannot be loaded.
         ValueError: if ``repairs`` is not a bool, ``repair_budget`` not a non-negative
-            integer or ``repair_seconds`` not a positive number.
+            integer, ``repair_seconds`` or ``timeout`` not a positive number.
 
     Example:
         >>> r = check_latex(r"\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}",
@@ -153,7 +163,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         'verified'
     """
     return check_latex_run(latex, let, book, modules, repairs, repair_budget, notation,
-                        repair_seconds)[0]
+                           repair_seconds, timeout)[0]
 
 
 
@@ -167,13 +177,75 @@ def _seconds(x) -> float | None:
 
 
 def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None, notation=None,
-                 repair_seconds=REPAIR_SECONDS):
-    """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI)."""
+                 repair_seconds=REPAIR_SECONDS, timeout=TIMEOUT):
+    """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI;
+    ``None`` where the time limit passed before the LaTeX was read)."""
+    from rigidsym.latex import limit, quaternions, tangent
+    from rigidsym.numeval.values import quaternion_convention, tangent_order
+
+    seconds = limit.default_seconds() if timeout == "default" else \
+        limit.seconds_argument(timeout)
+    _repair_args(repairs, repair_budget)
+    _seconds(repair_seconds)
+    let, order, said = tangent.split_setting(let, notation)
+    let, product, product_said = quaternions.split_setting(let)
+    fixed = said is not None or notation in tangent.NOTATION_ORDERS
+    t0, seen = time.monotonic(), {}
+    try:
+        with limit.limited(seconds), quaternions.using(product, product_said), \
+                quaternion_convention(product == quaternions.JPL):
+            with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
+                r, reading = _check_latex_steps(latex, let, book, modules, repairs,
+                                                repair_budget, notation, repair_seconds, seen)
+            if fixed or r.verdict == "undecided" or not any(
+                    n.startswith("tangent order:") for n in reading.notes):
+                return r, reading
+            # the order matters and nothing declares it: read in the other order too
+            with tangent.using(tangent.TRANSLATION, tangent.OTHER), tangent_order(True):
+                other, _ = _check_latex_steps(latex, let, book, modules, False, repair_budget,
+                                              notation, repair_seconds, {})
+            tangent.both_orders(r.verdict, other.verdict, reading.notes)
+            r.model = list(r.model) + reading.notes[-1:]
+            return r, reading
+    except limit.TimeUp as exc:
+        return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
+                        time.monotonic() - t0)
+
+
+def _time_up(exc, latex, let, book, modules, notation, reading, seconds):
+    """The ``undecided`` of a check whose time limit passed: the step and a hint."""
+    import hashlib
+    import json
+
+    from rigidsym.latex import limit
+
+    why = limit.reason(exc)
+    if reading is not None and reading.eq is not None:
+        eq_id = reading.eq.id
+    else:
+        key = json.dumps([latex, let if isinstance(let, str | None) else
+                          sorted(let.items()) if isinstance(let, dict) else list(let),
+                          book, [str(m) for m in modules or ()], notation], default=str)
+        eq_id = "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]
+    r = Result(id=eq_id, title="LaTeX check", kind="identity", verdict="undecided",
+               expected="undecided", method="time-limit", printed_latex=latex, printed=None,
+               derived=None, corrected=None, counterexample=None, cause=why, numeric={},
+               seconds=seconds, detail=why)
+    if reading is not None:
+        r.model = list(reading.notes)
+    return r, reading
+
+
+def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                       repair_seconds, seen):
+    """:func:`check_latex_run`'s steps, each marked for the time limit
+    (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``."""
     from rigidsym.checking.checker import check as _check
+    from rigidsym.latex.limit import step
     from rigidsym.latex.respell import declared_e, declared_labels, tilde_expressions
     from rigidsym.latex.statement import declare_latex
 
-    _repair_args(repairs, repair_budget)
+    step("reading")
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
@@ -181,11 +253,16 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     for note in (labels, tilde, respelt):
         if note:
             reading.notes.insert(0, note)
+    seen["reading"] = reading
+    step("deciding")
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
                          repair_seconds=_seconds(repair_seconds)))
     if reading.others:  # several readings type-check: a verdict only when all agree
+        step("readings")
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
     from rigidsym.latex.crosscheck import cross_check, given_point
+
+    step("second semantics")
 
     # a verdict needs the second, independent semantics to agree (a does-not-hold
     # at the symbolic path's own counterexample, handed over as plain data)

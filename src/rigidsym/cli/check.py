@@ -24,7 +24,9 @@ EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
 --let NAME = LATEX a first-principles model in the same notation
 --notation NAME    a book's symbols: lynch-park, murray-li-sastry, siciliano, spong, craig,
                    featherstone, barfoot, sola, corke
-exit codes: 0 holds (verified or definition), 1 does not hold, 3 undecided, 2 bad input"""
+--timeout S        the limit of the whole check (default 60 s): past it undecided, exit 3
+exit codes: 0 holds (verified or definition), 1 does not hold, 3 undecided (also past
+            --timeout), 2 bad input"""
 
 #: exit code per verdict
 EXIT = {"verified": 0, "definition": 0, "does-not-hold": 1, "undecided": 3}
@@ -59,6 +61,10 @@ def add_arguments(c) -> None:
     c.add_argument("--repair-seconds", type=float, metavar="S", default=10.0,
                    help="a time limit of the repair search, seconds; past it the verdict is "
                         "printed with what was tried (default: 10)")
+    c.add_argument("--timeout", type=float, metavar="S", default=None,
+                   help="a time limit of the whole check, seconds; past it the verdict is "
+                        "undecided (exit 3), naming the step it was in and a hint "
+                        "(default: 60, or the environment variable RIGIDSYM_LATEX_TIMEOUT)")
 
 
 def run(args) -> int:
@@ -77,7 +83,8 @@ def run(args) -> int:
                 rep.phase("reading and checking the LaTeX") as ph:  # no silent second
             r, reading = check_latex_run(args.latex, args.let, args.book, args.module or (),
                                       opts["repairs"], opts["repair_budget"], args.notation,
-                                      args.repair_seconds)
+                                      args.repair_seconds,
+                                      "default" if args.timeout is None else args.timeout)
             ph.finish(f"{r.id} {r.verdict}")  # an ad-hoc check expects nothing
     except LatexError as exc:
         print(f"rigidsym: error: --latex: {exc}", file=sys.stderr)
@@ -96,9 +103,15 @@ def run(args) -> int:
     if args.json:
         from rigidsym.report.record import result_record
 
-        rec = {**result_record(r), "read_as": reading.text, "readings": reading.notes}
+        rec = {**result_record(r), "read_as": reading.text if reading else None,
+               "readings": reading.notes if reading else []}
         print(json.dumps(rec, indent=1, ensure_ascii=False))
         return EXIT.get(r.verdict, 3)
+    if r.method == "time-limit":  # the limit passed: what was read, the step, a hint
+        if reading is not None:
+            print(f"read as: {reading.text}")
+        print(f"undecided: {r.cause}")
+        return EXIT["undecided"]
     import dataclasses
     import textwrap
 

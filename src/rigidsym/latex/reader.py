@@ -64,10 +64,12 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             raise exc.orig_exc from None
         if isinstance(exc.orig_exc, BadInput):
             raise exc.orig_exc from None
-        # an internal error (sympy's, say) is named by the construct, never by its text
+        # an internal error (sympy's, say) is named by the construct, never by its text;
+        # two glyphs of one name and different shapes (\theta beside \boldsymbol\theta)
+        # are named too, the likely cause
         raise LatexError(f"cannot read {latex!r}: an internal error at the construct "
-                         f"{construct_text(exc.obj)!r} ({exc.rule}); say it another way or "
-                         f"report it", "internal") from None
+                         f"{construct_text(exc.obj)!r} ({exc.rule}){_same_name(build)}; say "
+                         f"it another way or report it", "internal") from None
     out = Parsed(readings=build.readings, glyphs=build.glyphs,
                  applied=build.applied, choice_points=build.choice_points)
     for st in stmts:
@@ -115,3 +117,21 @@ def _tree(latex: str):
     """lark's parse tree, or a :class:`LatexError` that says where and what was expected
     (:func:`rigidsym.latex.lexing.tree`: pylatexenc's boundaries of the macros)."""
     return tree(latex)
+
+
+def _same_name(build) -> str:
+    """The words naming glyphs that share one name with different shapes (the scalar
+    ``\\theta`` and the vector ``\\boldsymbol\\theta`` are both ``theta``), or ``""``."""
+    rows = {**getattr(build, "overrides", {}), **getattr(build, "glyphs", {})}
+    by_name: dict = {}
+    for key, g in rows.items():
+        by_name.setdefault(getattr(g, "name", None), {})[key] = getattr(g, "shape", None)
+    pairs = [sorted(keys) for name, keys in by_name.items()
+             if name and len({str(v) for v in keys.values()}) > 1]
+    if not pairs:
+        return ""
+    keys = pairs[0]
+    return (f" (the symbols {' and '.join(keys)} share the name "
+            f"{rows[keys[0]].name!r} with different shapes: rename one, in the LaTeX and "
+            f"its --let (the scalar \\vartheta for \\theta, say))")
+

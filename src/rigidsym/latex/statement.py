@@ -66,8 +66,12 @@ class Reading:
 def latex_id(latex: str, lets: list[Let], book: str | None, modules,
              notation: str | None = None) -> str:
     """The id of a LaTeX check: ``latex:`` and a short hash of the input."""
-    key = json.dumps([latex, [x.text for x in lets], book, [str(m) for m in modules or ()]]
-                     + ([notation] if notation else []))
+    from rigidsym.latex import quaternions, tangent
+
+    # a --let 'tangent order: ...' or '\otimes: JPL' (taken out of lets) joins the id
+    said = [x for x in (tangent.declared(), quaternions.declared()) if x]
+    key = json.dumps([latex, [x.text for x in lets] + said, book,
+                      [str(m) for m in modules or ()]] + ([notation] if notation else []))
     return "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]
 
 

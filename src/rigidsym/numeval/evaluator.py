@@ -231,6 +231,10 @@ class Evaluator:
         a, b = self._kids(t)
         return V.mul(V.spatial_cross(self.value(a), dual=True), self.value(b))
 
+    def r_qprod(self, t):
+        a, b = self._kids(t)
+        return V.quaternion_product(self.value(a), self.value(b))
+
     def r_cross_op(self, t):
         a = self.value(self._kids(t)[0])
         dual = "*" in str(t.children[-1]) or "ast" in str(t.children[-1])
@@ -286,6 +290,8 @@ class Evaluator:
             return V.transpose(v)
         if s in ("-T", "-\\top", "-\\mathsf{T}", "-\\mathrm{T}"):
             return V.transpose(V.inverse(v))
+        if s in ("*", "\\ast") and V.shape(V.scalar(v)) == (4, 1):  # a quaternion's q^*
+            return V.quaternion_conjugate(v)
         if s in ("*", "\\ast"):  # Featherstone's X^* = X^{-T} of a spatial transform
             if not V.is_matrix(v) or (v.rows, v.cols) != (6, 6):
                 raise NotCovered(f"the star of a value that is no 6x6 transform in "
@@ -295,6 +301,8 @@ class Evaluator:
             return V.hat(v)
         if s == "\\vee":
             return V.vee(v)
+        if s == "\\curlywedge":  # Barfoot's xi^curlywedge: ad of a 6-vector
+            return V.small_adjoint(v)
         try:
             n = int(s)
         except ValueError:

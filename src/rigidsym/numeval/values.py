@@ -5,12 +5,92 @@ Shapes are types: a sum or product whose shapes do not fit raises :class:`NotCov
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+
 import mpmath as mp
 
 __all__ = ["NotCovered", "Eye", "Zero", "shape", "add", "neg", "mul", "cross", "dot",
            "transpose", "inverse", "power", "hat", "vee", "trace", "det", "vect", "norm",
            "expm", "rodrigues", "logm", "adjoint", "small_adjoint", "spatial_cross", "sized",
-           "scalar", "assemble"]
+           "scalar", "assemble", "TRANSLATION_FIRST", "tangent_order", "JPL_PRODUCT",
+           "quaternion_convention", "quaternion_product", "quaternion_conjugate"]
+
+#: the quaternion product of the check running now: ``False`` Hamilton's (scalar first,
+#: ij = k; the default), ``True`` JPL's (scalar last, ij = -k)
+JPL_PRODUCT: ContextVar[bool] = ContextVar("jpl_product", default=False)
+
+
+@contextmanager
+def quaternion_convention(jpl: bool) -> Iterator[None]:
+    """Within the block ``p \\otimes q`` and ``q^*`` of 4-vectors are JPL's (``jpl``) or
+    Hamilton's."""
+    token = JPL_PRODUCT.set(bool(jpl))
+    try:
+        yield
+    finally:
+        JPL_PRODUCT.reset(token)
+
+
+def _quaternion(q, what: str):
+    """``(w, x, y, z)`` of a 4-vector in the convention now (scalar first or last)."""
+    q = scalar(q)
+    if not is_matrix(q) or (q.rows, q.cols) != (4, 1):
+        raise NotCovered(f"{what} of a value that is no 4-vector")
+    return (q[3], q[0], q[1], q[2]) if JPL_PRODUCT.get() else (q[0], q[1], q[2], q[3])
+
+
+def _as_quaternion(w, x, y, z):
+    return mp.matrix([x, y, z, w]) if JPL_PRODUCT.get() else mp.matrix([w, x, y, z])
+
+
+def quaternion_product(p, q):
+    """``p ⊗ q`` from the units' table: Hamilton's ``ij = k, jk = i, ki = j`` (Hamilton 1843;
+    Solà (2017) (8)), JPL's the reverse, ``ij = -k`` (Trawny & Roumeliotis (2005) (2))."""
+    a1, b1, c1, d1 = _quaternion(p, "a quaternion product")
+    a2, b2, c2, d2 = _quaternion(q, "a quaternion product")
+    s = -1 if JPL_PRODUCT.get() else 1  # the sign of every product of two distinct units
+    w = a1 * a2 - b1 * b2 - c1 * c2 - d1 * d2
+    x = a1 * b2 + b1 * a2 + s * (c1 * d2 - d1 * c2)
+    y = a1 * c2 + c1 * a2 + s * (d1 * b2 - b1 * d2)
+    z = a1 * d2 + d1 * a2 + s * (b1 * c2 - c1 * b2)
+    return _as_quaternion(w, x, y, z)
+
+
+def quaternion_conjugate(q):
+    """``q^*``: the quaternion with its imaginary units negated."""
+    w, x, y, z = _quaternion(q, "a quaternion conjugate")
+    return _as_quaternion(w, -x, -y, -z)
+
+#: the twist order of the check running now: ``False`` ``[ω; v]`` (angular first, the
+#: default), ``True`` ``[v; ω]`` (translation first: Barfoot, Solà, manif)
+TRANSLATION_FIRST: ContextVar[bool] = ContextVar("translation_first", default=False)
+
+
+@contextmanager
+def tangent_order(translation_first: bool) -> Iterator[None]:
+    """Within the block the hat of a 6-vector, its vee, Ad and ad take the twist order
+    ``[v; ω]`` (``translation_first``) or ``[ω; v]``."""
+    token = TRANSLATION_FIRST.set(bool(translation_first))
+    try:
+        yield
+    finally:
+        TRANSLATION_FIRST.reset(token)
+
+
+def _swap6(v):
+    """A 6-vector with its halves swapped ([ω; v] <-> [v; ω])."""
+    return mp.matrix([v[3], v[4], v[5], v[0], v[1], v[2]])
+
+
+def _swap_blocks(m):
+    """P M P of a 6 x 6, P the swap of the 3-blocks."""
+    out = mp.zeros(6, 6)
+    for i in range(6):
+        for j in range(6):
+            out[(i + 3) % 6, (j + 3) % 6] = m[i, j]
+    return out
 
 
 class NotCovered(ValueError):
@@ -183,11 +263,13 @@ def power(a, n: int):
 
 def hat(v):
     """The cross-product matrix of a 3-vector; the 4 x 4 se(3) matrix of a 6-vector
-    ``[ω; v]``."""
+    ``[ω; v]`` (``[v; ω]`` under :func:`tangent_order`)."""
     v = scalar(v)
     if is_matrix(v) and v.cols == 1 and v.rows == 3:
         return mp.matrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
     if is_matrix(v) and v.cols == 1 and v.rows == 6:
+        if TRANSLATION_FIRST.get():
+            v = _swap6(v)
         W = hat(mp.matrix([v[0], v[1], v[2]]))
         out = mp.zeros(4, 4)
         for i in range(3):
@@ -203,7 +285,8 @@ def vee(A):
     if is_matrix(A) and A.rows == A.cols == 3:
         return mp.matrix([A[2, 1], A[0, 2], A[1, 0]])
     if is_matrix(A) and A.rows == A.cols == 4:
-        return mp.matrix([A[2, 1], A[0, 2], A[1, 0], A[0, 3], A[1, 3], A[2, 3]])
+        out = mp.matrix([A[2, 1], A[0, 2], A[1, 0], A[0, 3], A[1, 3], A[2, 3]])
+        return _swap6(out) if TRANSLATION_FIRST.get() else out
     raise NotCovered("a vee of a value that is no 3x3 or 4x4 matrix")
 
 
@@ -270,9 +353,17 @@ def logm(a):
 
 def adjoint(T):
     """Ad of a 4 x 4 homogeneous transform ``[R p; 0 1]`` on twists ``[ω; v]``:
-    ``[R 0; [p]R R]`` (Modern Robotics (3.83))."""
+    ``[R 0; [p]R R]`` (Modern Robotics (3.83)); on ``[v; ω]`` (:func:`tangent_order`)
+    ``[R [p]R; 0 R]``. Of a 3 x 3 rotation, the rotation itself (SO(3): ``R [x] R^T = [R x]``)."""
+    if is_matrix(T) and (T.rows, T.cols) == (3, 3):
+        return T
     if not is_matrix(T) or (T.rows, T.cols) != (4, 4):
         raise NotCovered("Ad of a value that is no 4x4 transform")
+    out = _adjoint_angular_first(T)
+    return _swap_blocks(out) if TRANSLATION_FIRST.get() else out
+
+
+def _adjoint_angular_first(T):
     R = mp.matrix([[T[i, j] for j in range(3)] for i in range(3)])
     pR = hat(mp.matrix([T[0, 3], T[1, 3], T[2, 3]])) * R
     out = mp.zeros(6, 6)
@@ -284,10 +375,17 @@ def adjoint(T):
 
 
 def small_adjoint(V):
-    """ad of a twist ``[ω; v]``: ``[[ω] 0; [v] [ω]]`` (Modern Robotics (8.38))."""
+    """ad of a twist ``[ω; v]``: ``[[ω] 0; [v] [ω]]`` (Modern Robotics (8.38)); of ``[v; ω]``
+    (:func:`tangent_order`) ``[[ω] [v]; 0 [ω]]``."""
     V = scalar(V)
     if not is_matrix(V) or (V.rows, V.cols) != (6, 1):
         raise NotCovered("ad of a value that is no twist")
+    if TRANSLATION_FIRST.get():
+        return _swap_blocks(_small_adjoint_angular_first(_swap6(V)))
+    return _small_adjoint_angular_first(V)
+
+
+def _small_adjoint_angular_first(V):
     W, U = hat(mp.matrix([V[0], V[1], V[2]])), hat(mp.matrix([V[3], V[4], V[5]]))
     out = mp.zeros(6, 6)
     for i in range(3):
@@ -303,7 +401,7 @@ def spatial_cross(v, dual: bool = False):
     V = scalar(v)
     if not is_matrix(V) or (V.rows, V.cols) != (6, 1):
         raise NotCovered("a spatial cross product of a value that is no 6-vector")
-    M = small_adjoint(V)
+    M = _small_adjoint_angular_first(V)  # Featherstone's order, whatever the declaration
     return -M.T if dual else M
 
 
@@ -318,9 +416,10 @@ def assemble(rows, where: str):
     ncol = len(rows[0])
     if any(len(r) != ncol for r in rows):
         raise NotCovered(f"block rows of different lengths in {where!r}")
-    heights = [next((shape(e)[0] for e in r if shape(e)), None) for r in rows]
-    widths = [next((shape(r[j])[1] for r in rows if shape(r[j])), None)
-              for j in range(ncol)]
+    heights = [next((shape(e)[0] for e in r if shape(e)), 1 if any(map(_one, r)) else None)
+               for r in rows]
+    widths = [next((shape(r[j])[1] for r in rows if shape(r[j])),
+                   1 if any(_one(r[j]) for r in rows) else None) for j in range(ncol)]
     unsized = 3 if any(isinstance(e, Eye | Zero) for r in rows for e in r) else 1
     heights = [h if h is not None else unsized for h in heights]
     widths = [w if w is not None else unsized for w in widths]
@@ -336,6 +435,12 @@ def assemble(rows, where: str):
             c0 += widths[j]
         r0 += heights[i]
     return out
+
+
+def _one(e) -> bool:
+    r"""A nonzero scalar block: 1 x 1, its row's height and its column's width (a zero, an
+    identity or a ``\mathbf{0}`` takes its size from the others)."""
+    return not is_matrix(e) and not isinstance(e, Eye | Zero) and e != 0
 
 
 def _block(e, h, w, where: str):

@@ -26,12 +26,23 @@ def time_limit(deadline: float | None) -> Iterator[None]:
     ``deadline`` (``SIGALRM``, once), wherever the search is: between candidates the search
     checks the time itself, but one step (sympy's Gauss-Jordan inverse of a 6x6) can take a
     minute. Only in the main thread of a POSIX process whose ``SIGALRM`` has no handler
-    already (pytest-timeout's, a caller's); elsewhere the block runs unguarded."""
+    already (pytest-timeout's, a caller's), or whose handler is marked ``nestable`` (the
+    whole check's limit, :func:`rigidsym.latex.limit.limited`): then the nearer of the two
+    times stops the search, and the outer alarm is re-armed for its own time at the end;
+    elsewhere the block runs unguarded."""
+    outer = signal.getsignal(signal.SIGALRM) if hasattr(signal, "setitimer") else None
+    nested = getattr(outer, "nestable", False)
     if deadline is None or not hasattr(signal, "setitimer") \
             or threading.current_thread() is not threading.main_thread() \
-            or signal.getsignal(signal.SIGALRM) is not signal.SIG_DFL:
+            or (outer is not signal.SIG_DFL and not nested):
         yield
         return
+    outer_end = None
+    if nested:
+        left = signal.getitimer(signal.ITIMER_REAL)[0]
+        if left > 0:
+            outer_end = time.monotonic() + left
+            deadline = min(deadline, outer_end)
     on = [True]
 
     def _late(signum, frame):
@@ -47,3 +58,6 @@ def time_limit(deadline: float | None) -> Iterator[None]:
         on[0] = False
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, old)
+        if outer_end is not None and outer_end > time.monotonic():  # else the check's
+            # next step ends it (rigidsym.latex.limit.step), the verdict found kept so far
+            signal.setitimer(signal.ITIMER_REAL, outer_end - time.monotonic())

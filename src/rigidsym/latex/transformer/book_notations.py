@@ -36,6 +36,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
+from rigidsym.latex import quaternions, tangent
 from rigidsym.latex.kinematics import dot_key, explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
@@ -109,9 +110,11 @@ class BookNotationRules:
             if matrix_shape(x) not in ((3, 1), (6, 1)):
                 raise LatexError(f"^\\wedge of {shape_words(x)}: expected a 3-vector (its so(3) "
                                  f"matrix) or a 6-vector (its se(3) matrix)", "shapes")
-            self._note("x^\\wedge: the hat, so(3) of a 3-vector, se(3) of a 6-vector [w; v] "
+            self._note("x^\\wedge: the hat, so(3) of a 3-vector, se(3) of a 6-vector "
                        "(MLS (2.4), Barfoot (7.7))")
-            return rigid_motions.hat(x)
+            if matrix_shape(x) == (6, 1):
+                self._note(tangent.said())
+            return rigid_motions.hat(x, tangent.rigid_order())
         if sup == "times":  # Hughes' \epsilon^\times: the cross-product matrix
             if matrix_shape(x) != (3, 1):
                 raise LatexError(f"^\\times of {shape_words(x)}: expected a 3-vector (its "
@@ -122,12 +125,19 @@ class BookNotationRules:
             if matrix_shape(x) not in ((3, 3), (4, 4)):
                 raise LatexError(f"^\\vee of {shape_words(x)}: expected a 3x3 (so(3)) or 4x4 "
                                  f"(se(3)) matrix", "shapes")
-            return rigid_motions.vee(x)
+            if matrix_shape(x) == (4, 4):
+                self._note(tangent.said())
+            return rigid_motions.vee(x, tangent.rigid_order())
         if sup == "curlywedge":
             if matrix_shape(x) != (6, 1):
                 raise LatexError(f"^\\curlywedge of {shape_words(x)}: expected a 6-vector",
                                  "shapes")
-            return rigid_motions.ad(x)
+            self._note(tangent.said())
+            return rigid_motions.ad(x, tangent.rigid_order())
+        if sup == "*" and matrix_shape(x) == (4, 1):  # a quaternion's conjugate
+            self._note("q^*: the conjugate of a quaternion (its vector part negated); "
+                       + quaternions.said())
+            return sp.ImmutableMatrix(quaternions.conjugate(sp.Matrix(x)))
         if sup == "-T" and not self._spatial(x):
             return self._inverse_transpose(x)
         if sup in ("*", "-T"):
@@ -206,6 +216,19 @@ class BookNotationRules:
         op = "\\times^*" if dual else "\\times"
         raise LatexError(f"{op} as an operator of {shape_words(a)}: expected a 6-vector (or a "
                          f"3-vector for \\times)", "shapes")
+
+    def qprod(self, items):
+        """``p \\otimes q``, ``p \\odot q``: the quaternion product of two 4-vectors in the
+        declared convention (:mod:`rigidsym.latex.quaternions`)."""
+        a, op, b = items[0], str(items[1]).strip(), items[2]
+        a, b = self._val(a), self._val(b)
+        if matrix_shape(a) != (4, 1) or matrix_shape(b) != (4, 1):
+            raise LatexError(f"{op} between {shape_words(a)}{self._named(a)} and "
+                             f"{shape_words(b)}{self._named(b)}: the quaternion product "
+                             f"needs two 4-vectors (--let 'q: 4-vector', 'q: unit 4-vector')",
+                             "shapes")
+        self._note(quaternions.said())
+        return sp.ImmutableMatrix(quaternions.product(sp.Matrix(a), sp.Matrix(b)))
 
     def wedge(self, items):
         raise LatexError("a \\wedge b: the exterior product is not read; write a^\\wedge b "

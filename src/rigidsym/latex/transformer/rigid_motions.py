@@ -28,6 +28,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import rigid_motions
+from rigidsym.latex import tangent
 from rigidsym.latex.kinematics import expand_models
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
 from rigidsym.latex.transformer.meanings import alternatives, as_written
@@ -128,13 +129,26 @@ class RigidMotionRules:
     def adjoint(self, items):
         word, x = str(items[0]), self._operand(_content(items)[0])
         big = "Ad" in word
+        if big and self._rotation(x):  # SO(3): Ad_R = R (R [x]_x R^T = [R x]_x)
+            self._note(f"{word}_{{R}} of a 3x3 rotation: R itself (the adjoint of SO(3), "
+                       f"R [x]_x R^T = [R x]_x; Sola et al. (2018) Table)")
+            return x
         want = (4, 4) if big else (6, 1)
         if matrix_shape(x) != want:
             what = "a 4x4 transform" if big else "a twist (6-vector)"
             raise LatexError(f"{word}_{{...}} of {shape_words(x)}{self._named(x)}: expected "
                              f"{what} (declare it, e.g. --let 'T: transform' or "
                              f"--let '\\mathcal{{V}}: twist')", "shapes")
-        return rigid_motions.Ad(x) if big else rigid_motions.ad(x)
+        self._note(tangent.said())
+        order = tangent.rigid_order()
+        return rigid_motions.Ad(x, order) if big else rigid_motions.ad(x, order)
+
+    def _rotation(self, x) -> bool:
+        """Whether ``x`` is one glyph declared a rotation (a ``--let`` kind, a notation)."""
+        if not isinstance(x, sp.MatrixSymbol) or x.shape != (3, 3):
+            return False
+        return any(g.name == x.name and str(g.meaning).startswith("rotation")
+                   for g in self.glyphs.values())
 
     def hat_bracket(self, x):
         """``[x]``: the hat of one symbol or one product of shape 3 x 1 or 6 x 1, else
@@ -161,7 +175,10 @@ class RigidMotionRules:
         self._note("[x] of a 3-vector (6-vector) read as its so(3) (se(3)) matrix hat(x) "
                    "(MR (3.30), (3.85)); a bracket holding a sum, a scalar or a matrix "
                    "groups; write ( ) to group a vector, [x]_\\times for the hat")
-        return as_written(rigid_motions.hat(v))  # printed [x] as written (transformer.meanings)
+        if matrix_shape(v) == (6, 1):
+            self._note(tangent.said())
+        # printed [x] as written (transformer.meanings)
+        return as_written(rigid_motions.hat(v, tangent.rigid_order()))
 
     # ---- derivatives
     def deriv_op(self, items):

@@ -1,0 +1,127 @@
+"""The quaternion product of the estimation books, a declaration of the reader's: ``\\otimes``
+(Solà, Trawny-Roumeliotis) and ``\\odot`` (Kok-Hol-Schön) between two 4-vectors, in
+**Hamilton's** convention (scalar first, ``q = [w; x; y; z]``, ``ij = k``: Solà, Kok-Hol-Schön,
+the default) or **JPL's** (scalar last, ``q = [x; y; z; w]``, ``ij = -k``: Trawny-
+Roumeliotis, Breckenridge), said once: ``--let '\\otimes: JPL'`` (or ``Hamilton``; ``\\odot``
+likewise). ``q^*`` of a 4-vector is its conjugate (the vector part negated, where the
+convention puts it). ``read as:`` names the convention on every statement that uses one.
+
+The products are written out from the conventions' definitions (Solà (2017) (12), Trawny &
+Roumeliotis (2005) (8)); the second semantics has its own (:mod:`rigidsym.numeval.values`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+
+import sympy as sp
+
+from rigidsym.core.errors import BadInput
+
+__all__ = ["HAMILTON", "JPL", "NAMES", "current", "declared", "using", "split_setting",
+           "product", "conjugate", "said"]
+
+HAMILTON, JPL = "Hamilton", "JPL"
+#: the glyphs of the product, as a --let NAME
+NAMES = ("\\otimes", "\\odot")
+_CONVENTION: ContextVar[tuple[str, str | None]] = ContextVar("quaternion_convention",
+                                                             default=(HAMILTON, None))
+
+
+def current() -> str:
+    """The convention of the check running now (:data:`HAMILTON` unless one is declared)."""
+    return _CONVENTION.get()[0]
+
+
+def declared() -> str | None:
+    """The ``--let`` that declared the convention now (it joins the check's id), or ``None``."""
+    return _CONVENTION.get()[1]
+
+
+@contextmanager
+def using(convention: str, text: str | None = None) -> Iterator[None]:
+    """Within the block ``convention`` (:data:`HAMILTON` or :data:`JPL`) is the product's.
+
+    Raises:
+        ValueError: another convention.
+    """
+    if convention not in (HAMILTON, JPL):
+        raise ValueError(f"convention: expected {HAMILTON!r} or {JPL!r}, got {convention!r}")
+    token = _CONVENTION.set((convention, text))
+    try:
+        yield
+    finally:
+        _CONVENTION.reset(token)
+
+
+def split_setting(let) -> tuple[object, str, str | None]:
+    """``let`` without its ``\\otimes: ...`` declaration, the convention, and the text of the
+    declaration (``None``: none given, Hamilton's).
+
+    Raises:
+        BadInput: a convention other than Hamilton and JPL, or two declarations.
+    """
+    from rigidsym.latex.lets import split_lets
+
+    convention, text = HAMILTON, None
+    if let is None or isinstance(let, dict):
+        return let, convention, text
+    try:
+        strings = split_lets([let] if isinstance(let, str) else list(let))
+    except (TypeError, AttributeError):
+        return let, convention, text
+    kept = []
+    for s in strings:
+        name, _, value = s.partition(":")
+        if name.strip() in NAMES and value.strip():
+            if text is not None:
+                raise BadInput(f"--let: the quaternion product is declared twice ('{text}' "
+                               f"and '{s}')")
+            word = value.strip().lower()
+            if word not in ("hamilton", "jpl"):
+                raise BadInput(f"--let '{s}': expected '{name.strip()}: Hamilton' (scalar "
+                               f"first, ij = k) or '{name.strip()}: JPL' (scalar last, ij = -k)")
+            convention, text = (HAMILTON if word == "hamilton" else JPL), s
+        else:
+            kept.append(s)
+    return (let if text is None else kept), convention, text
+
+
+def said() -> str:
+    """The reading's note of the convention used."""
+    if current() == JPL:
+        return ("quaternion product: JPL's, scalar last q = [x; y; z; w], ij = -k "
+                "(Trawny & Roumeliotis (2005) (8))")
+    return ("quaternion product: Hamilton's, scalar first q = [w; x; y; z], ij = k (Solà "
+            "(2017) (12); --let '\\otimes: JPL' for JPL's)")
+
+
+def _parts(q) -> tuple[sp.Expr, sp.Matrix]:
+    """``(scalar, vector part)`` of a 4-vector in the convention now."""
+    e = [q[i, 0] for i in range(4)]
+    if current() == JPL:
+        return e[3], sp.Matrix(e[:3])
+    return e[0], sp.Matrix(e[1:])
+
+
+def _join(w, v) -> sp.Matrix:
+    if current() == JPL:
+        return sp.Matrix([v[0], v[1], v[2], w])
+    return sp.Matrix([w, v[0], v[1], v[2]])
+
+
+def product(p, q) -> sp.Matrix:
+    """``p ⊗ q`` of two 4-vectors: Hamilton's ``[pw qw - pv·qv; pw qv + qw pv + pv × qv]``,
+    JPL's ``[pw qv + qw pv - pv × qv; pw qw - pv·qv]`` (scalar last)."""
+    pw, pv = _parts(p)
+    qw, qv = _parts(q)
+    sign = -1 if current() == JPL else 1
+    return _join(pw * qw - pv.dot(qv), pw * qv + qw * pv + sign * pv.cross(qv))
+
+
+def conjugate(q) -> sp.Matrix:
+    """``q^*``: the vector part negated."""
+    w, v = _parts(q)
+    return _join(w, -v)

@@ -1,0 +1,98 @@
+"""The quaternion product as the estimation books print it: ``\\otimes`` (Solà, Trawny-
+Roumeliotis) and ``\\odot`` (Kok-Hol-Schön) between 4-vectors, Hamilton's by default and
+JPL's by declaration (``--let '\\otimes: JPL'``), ``q^*`` the conjugate; ``read as:`` names the
+convention. Each identity is decided in its convention and does not hold, with a
+counterexample, in the other."""
+
+from __future__ import annotations
+
+import mpmath as mp
+import pytest
+
+import rigidsym
+from rigidsym.core.errors import BadInput
+from rigidsym.numeval import values as V
+from rigidsym.registry import declarations as registry
+
+PQ = [r"\mathbf{p}: 4-vector", r"\mathbf{q}: 4-vector"]
+HAM, JPL = r"\otimes: Hamilton", r"\otimes: JPL"
+#: Solà's (2017) (18) left matrix of p, scalar first (Hamilton)
+SOLA_L = (r"\mathbf{P} = \begin{bmatrix} p_0 & -p_1 & -p_2 & -p_3 \\ p_1 & p_0 & -p_3 & p_2 "
+          r"\\ p_2 & p_3 & p_0 & -p_1 \\ p_3 & -p_2 & p_1 & p_0 \end{bmatrix}")
+#: Trawny & Roumeliotis' (2005) (9) left matrix of p, scalar last (JPL)
+TRAWNY_L = (r"\mathbf{P} = \begin{bmatrix} p_4 & p_3 & -p_2 & p_1 \\ -p_3 & p_4 & p_1 & p_2 "
+            r"\\ p_2 & -p_1 & p_4 & p_3 \\ -p_1 & -p_2 & -p_3 & p_4 \end{bmatrix}")
+LEFT = r"\mathbf{p}\otimes\mathbf{q} = \mathbf{P}\mathbf{q}"
+
+
+@pytest.fixture(autouse=True)
+def forget_latex_ids():
+    yield
+    registry.forget_module("rigidsym.latex.statement")
+
+
+def _check(latex, lets):
+    return rigidsym.check_latex(latex, let=lets, repairs=False)
+
+
+def _said(r) -> list[str]:
+    return [m for m in r.model if m.startswith("quaternion product:")]
+
+
+@pytest.mark.parametrize("matrix, own, other", [(SOLA_L, HAM, JPL), (TRAWNY_L, JPL, HAM)])
+def test_each_books_product_matrix_holds_in_its_convention_and_not_in_the_other(
+        matrix, own, other):
+    r = _check(LEFT, PQ + [matrix, own])
+    assert r.verdict == "verified" and own.split(": ")[1] in _said(r)[0]
+    r = _check(LEFT, PQ + [matrix, other])
+    assert r.verdict == "does-not-hold" and r.counterexample
+    assert other.split(": ")[1] in _said(r)[0]
+
+
+def test_hamilton_is_the_default_and_odot_is_the_same_product():
+    r = _check(LEFT.replace(r"\otimes", r"\odot"), PQ + [SOLA_L])
+    assert r.verdict == "verified" and "Hamilton" in _said(r)[0]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("convention", [HAM, JPL])
+@pytest.mark.parametrize("latex, verdict", [
+    (r"(\mathbf{p}\otimes\mathbf{q})^* = \mathbf{q}^*\otimes\mathbf{p}^*", "verified"),
+    (r"(\mathbf{p}\otimes\mathbf{q})^* = \mathbf{p}^*\otimes\mathbf{q}^*", "does-not-hold"),
+    (r"\mathbf{p}\otimes\mathbf{q} = \mathbf{q}\otimes\mathbf{p}", "does-not-hold"),
+    (r"(\mathbf{p}\otimes\mathbf{q})\otimes\mathbf{r} = \mathbf{p}\otimes(\mathbf{q}\otimes"
+     r"\mathbf{r})", "verified"),
+])
+def test_the_product_laws_and_their_slips_in_both_conventions(convention, latex, verdict):
+    lets = PQ + ([r"\mathbf{r}: 4-vector"] if r"\mathbf{r}" in latex else [])
+    r = _check(latex, lets + [convention])
+    assert r.verdict == verdict
+    if verdict == "does-not-hold":
+        assert r.counterexample
+
+
+@pytest.mark.parametrize("lets, match", [
+    ([r"\otimes: Shuster"], "Hamilton"),
+    ([HAM, JPL], "declared twice"),
+])
+def test_a_convention_no_word_names_or_two_are_refused(lets, match):
+    with pytest.raises(BadInput, match=match):
+        _check(LEFT, PQ + [SOLA_L] + lets)
+
+
+def test_a_product_of_other_shapes_is_refused_naming_them():
+    with pytest.raises(ValueError, match="two 4-vectors"):
+        _check(r"\mathbf{a}\otimes\mathbf{b} = \mathbf{a}", [r"\mathbf{a}: vector",
+                                                             r"\mathbf{b}: vector"])
+
+
+def test_the_second_semantics_multiplies_the_units_by_its_own_table():
+    # i j = k (Hamilton), i j = -k (JPL): the units written in each convention's layout
+    mp.mp.dps = 30
+    i_h, j_h, k_h = (mp.matrix([0, 1, 0, 0]), mp.matrix([0, 0, 1, 0]), mp.matrix([0, 0, 0, 1]))
+    assert V.quaternion_product(i_h, j_h) == k_h
+    i_j, j_j, k_j = (mp.matrix([1, 0, 0, 0]), mp.matrix([0, 1, 0, 0]), mp.matrix([0, 0, 1, 0]))
+    with V.quaternion_convention(True):
+        assert V.quaternion_product(i_j, j_j) == -k_j
+        assert V.quaternion_conjugate(mp.matrix([1, 2, 3, 4])) == mp.matrix([-1, -2, -3, 4])
+    assert V.quaternion_conjugate(mp.matrix([1, 2, 3, 4])) == mp.matrix([1, -2, -3, -4])
