@@ -325,7 +325,7 @@ def omega_matrix_squared() -> Statement:
 @equation("3.59", "Axial and normal components of the velocity of P", section="3.4.1",
           singular=_W, expected="does-not-hold", cause="unknown",
           evidence="the first term of the braced pdot_perp has the wrong sign: the minus "
-                   "sign sits outside the underbraced group, which reads "
+                   "sign sits outside the braced group, which reads "
                    "+Omega^2 adot/||omega||^2 + Omega(p - a)",
           latex=r"\dot{\mathbf{p}} = \underbrace{\frac{\boldsymbol{\omega} \boldsymbol{\omega}"
                 r"^T}{\|\boldsymbol{\omega}\|^2} \dot{\mathbf{a}}}_{\dot{\mathbf{p}}_{\parallel}}"

@@ -35,7 +35,7 @@ def forget_latex_ids():
     registry.forget_module("rigidsym.latex.statement")
 
 
-@pytest.mark.parametrize("step", ["reading", "deciding", "second semantics"])
+@pytest.mark.parametrize("step", ["reading", "deciding", "cross-check"])
 def test_past_the_limit_the_check_is_undecided_naming_its_step_and_a_hint(monkeypatch, step):
     monkeypatch.setenv(limit.HOOK, step)
     r = rigidsym.check_latex(*JR_INV, repairs=False, timeout=2)

@@ -132,7 +132,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             ``"default"``: 60 s, or the environment variable ``RIGIDSYM_LATEX_TIMEOUT``,
             seconds or ``none``): past it the verdict is ``undecided``, its ``cause`` naming
             the step it was in (reading, the symbolic zero test, the other readings, the
-            second semantics) and a hint; ``method`` is ``time-limit``
+            numeric cross-check) and a hint; ``method`` is ``time-limit``
             (``rigidsym.latex.limit``).
         notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
             ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
@@ -262,7 +262,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
     from rigidsym.latex.crosscheck import cross_check, given_point
 
-    step("second semantics")
+    step("cross-check")
 
     # a verdict needs the second, independent semantics to agree (a does-not-hold
     # at the symbolic path's own counterexample, handed over as plain data)

@@ -2,7 +2,7 @@
 the step it was in and a hint, never a run without end.
 
 A check passes through named steps (:data:`STEPS`): reading the LaTeX and the ``--let``s,
-the symbolic zero test (with the repair search), the other readings, the second semantics.
+the symbolic zero test (with the repair search), the other readings, the numeric cross-check.
 :func:`limited` arms an alarm (``SIGALRM``) for the whole check and :func:`step` marks each
 step as it begins; when the time passes, :class:`TimeUp` is raised in the step running then.
 Inside the repair search the search's own alarm nests (the nearer time stops the search,
@@ -44,8 +44,8 @@ STEPS = {
                  "longer --timeout"),
     "readings": ("deciding the other readings",
                  "settle the choice with the --let the reading names"),
-    "second semantics": ("the second, numeric semantics",
-                         "give a longer --timeout"),
+    "cross-check": ("the numeric cross-check of the verdict",
+                    "give a longer --timeout"),
 }
 #: the environment variable of the deterministic hook (see the module's docstring)
 HOOK = "RIGIDSYM_LATEX_LIMIT_AT"
