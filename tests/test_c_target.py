@@ -859,6 +859,39 @@ KERNELS = [Kernel(name="chord", summary="s", formula="c = 2 sqrt(r^2 - h^2)", id
     assert status & NONFINITE_RESULT and np.isnan(c[0])
 
 
+@needs_gcc
+def test_argument_names_near_the_templates_locals_compile(tmp_path):
+    """A kernel whose arguments are named t1 and t2 (and t0, k1: the names of the rescue's
+    exponents, old and new) generates C that compiles under -Werror, and the rescue of an
+    extreme input (a float argument at 1e-30, taken by power-of-two scaling, each argument
+    its own exponent) gives status 0 and the triple product."""
+    from rigidsym.cli import main
+
+    mod = tmp_path / "clash_mod.py"
+    mod.write_text(_HEAD + '''
+def triple(t0, t1, t2, k1):
+    return t0 * k1 * t1.cross(t2)
+KERNELS = [Kernel(name="triple", summary="s", formula="y = t0 k1 (t1 x t2)", ids=("x",),
+    sources=(triple,), args=(Arg("t0", (), "any", "a"), Arg("t1", (3,), "any", "b"),
+    Arg("t2", (3,), "any", "c"), Arg("k1", (), "any", "d")),
+    outputs=(Out("y", (3,), "y"),), build=lambda t0, t1, t2, k1: {"y": triple(t0, t1, t2, k1)})]
+''')
+    out = tmp_path / "c"
+    assert main(["generate", "--target", "c", "--module", str(mod), "--out", str(out),
+                 "--no-measure"]) == 0
+    so = tmp_path / "libtriple.so"
+    subprocess.run([GCC, *STRICT, "-O2", "-shared", "-fPIC", *map(str, sorted(out.glob("*.c"))),
+                    "-o", str(so), "-lm"], check=True)
+    lib_ = ctypes.CDLL(str(so))
+    b, c = np.array([1.0, 2.0, -0.5]), np.array([0.25, -1.0, 3.0])
+    for t0, scale in ((2.0, 1.0), (0.5, 1e-30)):
+        xs = [t0, (b * scale).astype(np.float32), c.astype(np.float32), 4.0]
+        status, (y,) = call(lib_, "rigidsym_c_triple_f32", *xs, ("out", 3), dtype=np.float32)
+        want = t0 * 4.0 * np.cross(xs[1].astype(np.float64), c)
+        assert status == OK, (scale, status)
+        assert np.allclose(y, want, rtol=4e-7, atol=0), (scale, y, want)
+
+
 def test_division_by_a_vanishing_argument_warns_and_records_the_set(tmp_path, capsys):
     import json
 

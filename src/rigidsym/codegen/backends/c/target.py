@@ -261,9 +261,11 @@ def _function(kc, ctype: str, rescale: list) -> dict:
 def _plan_code(plan: dict, slots: list[str]) -> dict:
     """``plan`` (:func:`.homogeneous.scaling_plans`) with the C integer expressions of each
     scaled argument's exponent (``scaled``: [(name, expr)]) and of each output slot's
-    exponent to undo (``back``: [(slot, expr)], the nonzero ones), in the ``rs_t<i>``."""
+    exponent to undo (``back``: [(slot, expr)], the nonzero ones), in the ``rs_k<i>_`` (the
+    trailing ``_`` keeps them apart from the scaled copies ``rs_<argument>``: no argument
+    name ends in ``_``, :func:`_check_names`, so an argument ``k1`` cannot meet them)."""
     def expr(coefs):
-        terms = [f"{c} * rs_t{i}" if c != 1 else f"rs_t{i}"
+        terms = [f"{c} * rs_k{i}_" if c != 1 else f"rs_k{i}_"
                  for i, c in enumerate(coefs) if c]
         return " + ".join(terms).replace("+ -", "- ") if terms else ""
 
