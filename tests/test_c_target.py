@@ -1048,6 +1048,29 @@ def test_every_float_function_of_the_example_states_its_bound():
     assert all(0 < b <= 8 for b in bounds.values()), bounds
 
 
+def test_every_double_function_of_a_book_kernel_states_its_bound():
+    """Each double function of the example that is a book kernel (or its twin) states a
+    bound, u = 2^-53, at least the package's measured float64 worst for that kernel and
+    within docs/accuracy.md's rule (8 u (kappa + 1)); the module's kernels state none."""
+    import json
+
+    meta = {k["name"]: k for k in
+            json.loads((REPO / "generated" / "kernels.json").read_text())["kernels"]}
+    heads = "".join(h.read_text(encoding="utf-8") for h in KERNELS_DIR.glob("rigidsym_c_*.h"))
+    blocks = re.split(r"^/\* (\w+):$", heads, flags=re.M)[1:]   # name, its comment, ...
+    stated = {}
+    for name, text in zip(blocks[::2], blocks[1::2], strict=True):
+        b = re.search(r"Accuracy \(double\): each output within ([\d.e+-]+) u \(kappa", text)
+        if b:
+            stated[name] = b.group(1)
+    names = set(blocks[::2])
+    book = {n for n in names if n in meta}
+    assert book and set(stated) == book, set(stated) ^ book
+    for n, b in stated.items():
+        assert meta[n]["accuracy"]["float64"]["bound"] <= float(b) <= 8, (n, b)
+    assert heads.count("Accuracy (double): no bound stated") == len(names - book)
+
+
 @pytest.mark.slow  # the harness on every kernel of the example: ~20-60 s on a loaded machine
 def test_stated_float_bounds_hold_on_fresh_points(lib):
     """The accuracy harness (benchmarks/accuracy.py: float32 regimes, arb reference,

@@ -194,11 +194,14 @@ def check_against_reference(kernel: str, rows: np.ndarray, made: dict, outs: np.
 
 
 def assert_same_everywhere(got: dict) -> None:
-    """Every build's status and outputs the same bits as the first's."""
+    """Every build's status and outputs the same bits as the first's (a NaN's sign and
+    payload aside: IEEE 754 gives them no meaning, and gcc and clang differ there)."""
     (k0, (s0, o0, _)), *rest = got.items()
+    nan0 = np.isnan(o0)
     for k, (s, o, _) in rest:
         assert np.array_equal(s, s0), (k, k0, np.flatnonzero(s != s0)[:5])
-        assert o.tobytes() == o0.tobytes(), (k, k0)
+        assert np.array_equal(np.isnan(o), nan0), (k, k0)
+        assert o[~nan0].tobytes() == o0[~nan0].tobytes(), (k, k0)
 
 
 def check_kernel(tmp: Path, kdir: Path, kernel: str, dtype, n: int, flags,
@@ -207,13 +210,14 @@ def check_kernel(tmp: Path, kdir: Path, kernel: str, dtype, n: int, flags,
     rows, made = ordinary(kernel, n, seed)
     special = []
     if kernel == "newton_euler_wrench":
-        tiny = rows[:3].copy()
-        tiny[:, 10:13] = np.array([1e-30, -2e-30, 3e-30]) if dtype == np.float32 else \
-            np.array([1e-170, -2e-170, 3e-170])
-        tiny[:, 13:] = 0.0          # torque-free: the underflowed n = omega x I omega is all
         huge = rows[:3].copy()
         huge[:, 10:13] = 1e25 if dtype == np.float32 else 1e200
-        special = [("underflow", tiny), ("overflow", huge)]
+        special = [("overflow", huge)]
+        if dtype == np.float32:     # (double: x86-64's long double rescue takes it, status 0)
+            tiny = rows[:3].copy()
+            tiny[:, 10:13] = np.array([1e-30, -2e-30, 3e-30])
+            tiny[:, 13:] = 0.0      # torque-free: the underflowed n = omega x I omega is all
+            special.append(("underflow", tiny))
     bad = rows[:4].copy()
     bad[0, 0], bad[1, 1], bad[2, -1], bad[3, 2] = np.nan, np.inf, -np.inf, np.nan
     special.append(("nonfinite", bad))

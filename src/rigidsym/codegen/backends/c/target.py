@@ -18,6 +18,7 @@ this folder's ``templates/``; nothing here changes what ``rigidsym generate`` wr
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import keyword
@@ -30,6 +31,7 @@ import jinja2
 import sympy as sp
 
 import rigidsym
+from rigidsym.codegen.accuracy.float_measure import stated
 from rigidsym.codegen.backends import RenderContext, Target
 from rigidsym.codegen.backends.c.homogeneous import scaling_plans
 from rigidsym.codegen.backends.c.prefix import DEFAULT_PREFIX, check_prefix, rename
@@ -37,9 +39,10 @@ from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter,
 from rigidsym.codegen.backends.extension.program import balanced, finite_check
 from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.codegen.spec import Kernel
+from rigidsym.core.config import generated_dir
 
-__all__ = ["generate_c", "float_bounds", "notice_lines", "TEMPLATES", "LIBRARY", "PREFIX",
-           "STATUS", "FLOAT_BOUNDS", "TARGET", "render", "declaration_hash"]
+__all__ = ["generate_c", "float_bounds", "double_bounds", "notice_lines", "TEMPLATES",
+           "LIBRARY", "PREFIX", "STATUS", "FLOAT_BOUNDS", "TARGET", "render", "declaration_hash"]
 
 TEMPLATES = Path(__file__).parent / "templates"
 #: the float functions' measured accuracy bounds of the book's kernels
@@ -295,14 +298,38 @@ def float_bounds(modules=()) -> dict:
     return out
 
 
+@functools.lru_cache(maxsize=1)
+def double_bounds() -> dict:
+    """The float64 bounds of the package's kernels, ``{name: {"hash", "measured", "bound",
+    "regime"}}``: from the package's ``kernels.json`` (the accuracy harness over each
+    kernel's regimes against arb, docs/accuracy.md: every output within ``measured u (kappa
+    + 1)``, ``u = 2^-53``), the bound stated as the float functions' is (:func:`.stated`:
+    twice the measured, rounded up); empty where the package's generated kernels are not found. A
+    double function of the C target is the package kernel's program without FMA, the same
+    bits (``tests/test_c_target.py``), so a bound holds for it where the hash is the same."""
+    try:
+        path = generated_dir() / "kernels.json"
+    except FileNotFoundError:
+        return {}
+    out = {}
+    for k in json.loads(path.read_text(encoding="utf-8"))["kernels"]:
+        acc = (k.get("accuracy") or {}).get("float64") or {}
+        if acc.get("bound") is not None:
+            out[k["name"]] = {"hash": k["hash"], "measured": acc["bound"],
+                              "bound": stated(acc["bound"]), "regime": acc.get("regime", "")}
+    return out
+
+
 def _kernel_entry(kc, bounds: dict) -> dict:
     k = kc.kernel
+    d = double_bounds().get(k.name)
     b = bounds.get(k.name)
     steps = scaling_plans(k, kc.variants[0].program) if len(kc.variants) == 1 else []
     return {"name": k.name, "summary": k.summary, "formula": k.formula, "ids": list(k.ids),
             "sources": list(k.sources), "singular": k.singular, "hash": kc.hash,
             "ops": kc.ops, "notes": k.notes,
             "float_bound": b if b is not None and b.get("hash") == kc.hash else None,
+            "double_bound": d if d is not None and d["hash"] == kc.hash else None,
             "homogeneity": _homogeneity(k, steps),
             "functions": [_function(kc, "double", steps), _function(kc, "float", steps)]}
 
