@@ -861,20 +861,22 @@ KERNELS = [Kernel(name="chord", summary="s", formula="c = 2 sqrt(r^2 - h^2)", id
 
 @needs_gcc
 def test_argument_names_near_the_templates_locals_compile(tmp_path):
-    """A kernel whose arguments are named t1 and t2 (and t0, k1: the names of the rescue's
-    exponents, old and new) generates C that compiles under -Werror, and the rescue of an
-    extreme input (a float argument at 1e-30, taken by power-of-two scaling, each argument
-    its own exponent) gives status 0 and the triple product."""
+    """A kernel whose arguments are named t1 and t2 (and t0, k1, in_t1: the names of the
+    rescue's exponents and of the long double rescue's parameters of before) generates C
+    that compiles under -Werror, and the rescue of an extreme input (a float argument at
+    1e-30, taken by power-of-two scaling, each argument its own exponent) gives status 0 and
+    the product."""
     from rigidsym.cli import main
 
     mod = tmp_path / "clash_mod.py"
     mod.write_text(_HEAD + '''
-def triple(t0, t1, t2, k1):
-    return t0 * k1 * t1.cross(t2)
-KERNELS = [Kernel(name="triple", summary="s", formula="y = t0 k1 (t1 x t2)", ids=("x",),
-    sources=(triple,), args=(Arg("t0", (), "any", "a"), Arg("t1", (3,), "any", "b"),
-    Arg("t2", (3,), "any", "c"), Arg("k1", (), "any", "d")),
-    outputs=(Out("y", (3,), "y"),), build=lambda t0, t1, t2, k1: {"y": triple(t0, t1, t2, k1)})]
+def triple(t0, t1, t2, k1, in_t1):
+    return t0 * k1 * in_t1 * t1.cross(t2)
+KERNELS = [Kernel(name="triple", summary="s", formula="y = t0 k1 in_t1 (t1 x t2)",
+    ids=("x",), sources=(triple,), args=(Arg("t0", (), "any", "a"),
+    Arg("t1", (3,), "any", "b"), Arg("t2", (3,), "any", "c"), Arg("k1", (), "any", "d"),
+    Arg("in_t1", (), "any", "e")), outputs=(Out("y", (3,), "y"),),
+    build=lambda t0, t1, t2, k1, in_t1: {"y": triple(t0, t1, t2, k1, in_t1)})]
 ''')
     out = tmp_path / "c"
     assert main(["generate", "--target", "c", "--module", str(mod), "--out", str(out),
@@ -885,11 +887,38 @@ KERNELS = [Kernel(name="triple", summary="s", formula="y = t0 k1 (t1 x t2)", ids
     lib_ = ctypes.CDLL(str(so))
     b, c = np.array([1.0, 2.0, -0.5]), np.array([0.25, -1.0, 3.0])
     for t0, scale in ((2.0, 1.0), (0.5, 1e-30)):
-        xs = [t0, (b * scale).astype(np.float32), c.astype(np.float32), 4.0]
+        xs = [t0, (b * scale).astype(np.float32), c.astype(np.float32), 4.0, 0.5]
         status, (y,) = call(lib_, "rigidsym_c_triple_f32", *xs, ("out", 3), dtype=np.float32)
-        want = t0 * 4.0 * np.cross(xs[1].astype(np.float64), c)
+        want = t0 * 4.0 * 0.5 * np.cross(xs[1].astype(np.float64), c)
         assert status == OK, (scale, status)
         assert np.allclose(y, want, rtol=4e-7, atol=0), (scale, y, want)
+    xs = [0.5, b * 1e-300, c, 4.0, 0.5]          # the double rescue (long double on x86-64)
+    status, (y,) = call(lib_, "rigidsym_c_triple", *xs, ("out", 3))
+    assert status == OK and np.allclose(y, np.cross(b, c) * 1e-300, rtol=1e-15, atol=0)
+
+
+@pytest.mark.parametrize("names", [("v", "v_0"), ("v", "status"), ("v", "k_")])
+def test_an_argument_name_a_local_would_meet_is_refused_in_one_line(tmp_path, capsys, names):
+    """An argument that the C would declare twice (v_0 beside an array v, whose component
+    the C reads into a local v_0; a fixed local; a name ending in _) is refused before
+    anything is written: exit 2, one line naming the argument."""
+    from rigidsym.cli import main
+
+    a, b = names
+    mod = tmp_path / "bad_names.py"
+    mod.write_text(_HEAD + f'''
+def f({a}, {b}):
+    return {a} * {b}
+KERNELS = [Kernel(name="scaled", summary="s", formula="y", ids=("x",), sources=(f,),
+    args=(Arg("{a}", (3,), "any", "a"), Arg("{b}", (), "any", "b")),
+    outputs=(Out("y", (3,), "y"),), build=lambda {a}, {b}: {{"y": f({a}, {b})}})]
+''')
+    out = tmp_path / "out"
+    assert main(["generate", "--target", "c", "--module", str(mod), "--out", str(out),
+                 "--no-measure"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and repr(b) in err, err
+    assert not out.exists()
 
 
 def test_division_by_a_vanishing_argument_warns_and_records_the_set(tmp_path, capsys):

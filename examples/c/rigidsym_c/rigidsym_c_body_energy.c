@@ -16,34 +16,34 @@
 /* rigidsym_c_body_energy in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_wide(
-    double in_m,
-    const double in_v[3],
-    const double in_inertia[9],
-    const double in_omega[3],
+    double m_in_,
+    const double v_in_[3],
+    const double inertia_in_[9],
+    const double omega_in_[3],
     double *T)
 {
-    const long double m = in_m;
-    const long double v_0 = in_v[0];
-    const long double v_1 = in_v[1];
-    const long double v_2 = in_v[2];
-    const long double inertia_00 = in_inertia[0];
-    const long double inertia_01 = in_inertia[1];
-    const long double inertia_02 = in_inertia[2];
-    const long double inertia_10 = in_inertia[3];
-    const long double inertia_11 = in_inertia[4];
-    const long double inertia_12 = in_inertia[5];
-    const long double inertia_20 = in_inertia[6];
-    const long double inertia_21 = in_inertia[7];
-    const long double inertia_22 = in_inertia[8];
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
+    const long double m = m_in_;
+    const long double v_0 = v_in_[0];
+    const long double v_1 = v_in_[1];
+    const long double v_2 = v_in_[2];
+    const long double inertia_00 = inertia_in_[0];
+    const long double inertia_01 = inertia_in_[1];
+    const long double inertia_02 = inertia_in_[2];
+    const long double inertia_10 = inertia_in_[3];
+    const long double inertia_11 = inertia_in_[4];
+    const long double inertia_12 = inertia_in_[5];
+    const long double inertia_20 = inertia_in_[6];
+    const long double inertia_21 = inertia_in_[7];
+    const long double inertia_22 = inertia_in_[8];
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_m;
-    (void)in_v;
-    (void)in_inertia;
-    (void)in_omega;
+    (void)m_in_;
+    (void)v_in_;
+    (void)inertia_in_;
+    (void)omega_in_;
     {
         T[0] = (double)((0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2));
     }
@@ -777,38 +777,38 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
 /* rigidsym_c_body_energy_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_with_jacobians_wide(
-    double in_m,
-    const double in_v[3],
-    const double in_inertia[9],
-    const double in_omega[3],
+    double m_in_,
+    const double v_in_[3],
+    const double inertia_in_[9],
+    const double omega_in_[3],
     double *T,
     double *T_D_m,
     double T_D_v[3],
     double T_D_inertia[9],
     double T_D_omega[3])
 {
-    const long double m = in_m;
-    const long double v_0 = in_v[0];
-    const long double v_1 = in_v[1];
-    const long double v_2 = in_v[2];
-    const long double inertia_00 = in_inertia[0];
-    const long double inertia_01 = in_inertia[1];
-    const long double inertia_02 = in_inertia[2];
-    const long double inertia_10 = in_inertia[3];
-    const long double inertia_11 = in_inertia[4];
-    const long double inertia_12 = in_inertia[5];
-    const long double inertia_20 = in_inertia[6];
-    const long double inertia_21 = in_inertia[7];
-    const long double inertia_22 = in_inertia[8];
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
+    const long double m = m_in_;
+    const long double v_0 = v_in_[0];
+    const long double v_1 = v_in_[1];
+    const long double v_2 = v_in_[2];
+    const long double inertia_00 = inertia_in_[0];
+    const long double inertia_01 = inertia_in_[1];
+    const long double inertia_02 = inertia_in_[2];
+    const long double inertia_10 = inertia_in_[3];
+    const long double inertia_11 = inertia_in_[4];
+    const long double inertia_12 = inertia_in_[5];
+    const long double inertia_20 = inertia_in_[6];
+    const long double inertia_21 = inertia_in_[7];
+    const long double inertia_22 = inertia_in_[8];
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_m;
-    (void)in_v;
-    (void)in_inertia;
-    (void)in_omega;
+    (void)m_in_;
+    (void)v_in_;
+    (void)inertia_in_;
+    (void)omega_in_;
     {
         const long double x0 = (v_0*v_0);
         const long double x1 = (v_1*v_1);

@@ -16,22 +16,22 @@
 /* rigidsym_c_natural_invariants_from_rotation in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_natural_invariants_from_rotation_wide(
-    const double in_Q[9],
+    const double Q_in_[9],
     double e[3],
     double *phi)
 {
-    const long double Q_00 = in_Q[0];
-    const long double Q_01 = in_Q[1];
-    const long double Q_02 = in_Q[2];
-    const long double Q_10 = in_Q[3];
-    const long double Q_11 = in_Q[4];
-    const long double Q_12 = in_Q[5];
-    const long double Q_20 = in_Q[6];
-    const long double Q_21 = in_Q[7];
-    const long double Q_22 = in_Q[8];
+    const long double Q_00 = Q_in_[0];
+    const long double Q_01 = Q_in_[1];
+    const long double Q_02 = Q_in_[2];
+    const long double Q_10 = Q_in_[3];
+    const long double Q_11 = Q_in_[4];
+    const long double Q_12 = Q_in_[5];
+    const long double Q_20 = Q_in_[6];
+    const long double Q_21 = Q_in_[7];
+    const long double Q_22 = Q_in_[8];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_Q;
+    (void)Q_in_;
     if (Q_00 >= Q_11 && Q_00 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
         const long double x0 = (0.5)*Q_00;
         const long double x1 = (0.5)*Q_11;

@@ -16,39 +16,39 @@
 /* rigidsym_c_newton_euler_wrench in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_newton_euler_wrench_wide(
-    const double in_I_C[9],
-    double in_m,
-    const double in_omega[3],
-    const double in_omega_dot[3],
-    const double in_c_ddot[3],
+    const double I_C_in_[9],
+    double m_in_,
+    const double omega_in_[3],
+    const double omega_dot_in_[3],
+    const double c_ddot_in_[3],
     double w[6])
 {
-    const long double I_C_00 = in_I_C[0];
-    const long double I_C_01 = in_I_C[1];
-    const long double I_C_02 = in_I_C[2];
-    const long double I_C_10 = in_I_C[3];
-    const long double I_C_11 = in_I_C[4];
-    const long double I_C_12 = in_I_C[5];
-    const long double I_C_20 = in_I_C[6];
-    const long double I_C_21 = in_I_C[7];
-    const long double I_C_22 = in_I_C[8];
-    const long double m = in_m;
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
-    const long double omega_dot_0 = in_omega_dot[0];
-    const long double omega_dot_1 = in_omega_dot[1];
-    const long double omega_dot_2 = in_omega_dot[2];
-    const long double c_ddot_0 = in_c_ddot[0];
-    const long double c_ddot_1 = in_c_ddot[1];
-    const long double c_ddot_2 = in_c_ddot[2];
+    const long double I_C_00 = I_C_in_[0];
+    const long double I_C_01 = I_C_in_[1];
+    const long double I_C_02 = I_C_in_[2];
+    const long double I_C_10 = I_C_in_[3];
+    const long double I_C_11 = I_C_in_[4];
+    const long double I_C_12 = I_C_in_[5];
+    const long double I_C_20 = I_C_in_[6];
+    const long double I_C_21 = I_C_in_[7];
+    const long double I_C_22 = I_C_in_[8];
+    const long double m = m_in_;
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
+    const long double omega_dot_0 = omega_dot_in_[0];
+    const long double omega_dot_1 = omega_dot_in_[1];
+    const long double omega_dot_2 = omega_dot_in_[2];
+    const long double c_ddot_0 = c_ddot_in_[0];
+    const long double c_ddot_1 = c_ddot_in_[1];
+    const long double c_ddot_2 = c_ddot_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_I_C;
-    (void)in_m;
-    (void)in_omega;
-    (void)in_omega_dot;
-    (void)in_c_ddot;
+    (void)I_C_in_;
+    (void)m_in_;
+    (void)omega_in_;
+    (void)omega_dot_in_;
+    (void)c_ddot_in_;
     {
         const long double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
         const long double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
@@ -877,11 +877,11 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
 /* rigidsym_c_newton_euler_wrench_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
-    const double in_I_C[9],
-    double in_m,
-    const double in_omega[3],
-    const double in_omega_dot[3],
-    const double in_c_ddot[3],
+    const double I_C_in_[9],
+    double m_in_,
+    const double omega_in_[3],
+    const double omega_dot_in_[3],
+    const double c_ddot_in_[3],
     double w[6],
     double w_D_I_C[54],
     double w_D_m[6],
@@ -889,32 +889,32 @@ static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
     double w_D_omega_dot[18],
     double w_D_c_ddot[18])
 {
-    const long double I_C_00 = in_I_C[0];
-    const long double I_C_01 = in_I_C[1];
-    const long double I_C_02 = in_I_C[2];
-    const long double I_C_10 = in_I_C[3];
-    const long double I_C_11 = in_I_C[4];
-    const long double I_C_12 = in_I_C[5];
-    const long double I_C_20 = in_I_C[6];
-    const long double I_C_21 = in_I_C[7];
-    const long double I_C_22 = in_I_C[8];
-    const long double m = in_m;
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
-    const long double omega_dot_0 = in_omega_dot[0];
-    const long double omega_dot_1 = in_omega_dot[1];
-    const long double omega_dot_2 = in_omega_dot[2];
-    const long double c_ddot_0 = in_c_ddot[0];
-    const long double c_ddot_1 = in_c_ddot[1];
-    const long double c_ddot_2 = in_c_ddot[2];
+    const long double I_C_00 = I_C_in_[0];
+    const long double I_C_01 = I_C_in_[1];
+    const long double I_C_02 = I_C_in_[2];
+    const long double I_C_10 = I_C_in_[3];
+    const long double I_C_11 = I_C_in_[4];
+    const long double I_C_12 = I_C_in_[5];
+    const long double I_C_20 = I_C_in_[6];
+    const long double I_C_21 = I_C_in_[7];
+    const long double I_C_22 = I_C_in_[8];
+    const long double m = m_in_;
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
+    const long double omega_dot_0 = omega_dot_in_[0];
+    const long double omega_dot_1 = omega_dot_in_[1];
+    const long double omega_dot_2 = omega_dot_in_[2];
+    const long double c_ddot_0 = c_ddot_in_[0];
+    const long double c_ddot_1 = c_ddot_in_[1];
+    const long double c_ddot_2 = c_ddot_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_I_C;
-    (void)in_m;
-    (void)in_omega;
-    (void)in_omega_dot;
-    (void)in_c_ddot;
+    (void)I_C_in_;
+    (void)m_in_;
+    (void)omega_in_;
+    (void)omega_dot_in_;
+    (void)c_ddot_in_;
     {
         const long double x0 = I_C_21*omega_1;
         const long double x1 = I_C_20*omega_0;

@@ -16,22 +16,22 @@
 /* rigidsym_c_planar_arm_tip in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_wide(
-    double in_q1,
-    double in_q2,
-    double in_l1,
-    double in_l2,
+    double q1_in_,
+    double q2_in_,
+    double l1_in_,
+    double l2_in_,
     double p[2])
 {
-    const long double q1 = in_q1;
-    const long double q2 = in_q2;
-    const long double l1 = in_l1;
-    const long double l2 = in_l2;
+    const long double q1 = q1_in_;
+    const long double q2 = q2_in_;
+    const long double l1 = l1_in_;
+    const long double l2 = l2_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q1;
-    (void)in_q2;
-    (void)in_l1;
-    (void)in_l2;
+    (void)q1_in_;
+    (void)q2_in_;
+    (void)l1_in_;
+    (void)l2_in_;
     {
         const long double x0 = q1 + q2;
         p[0] = (double)(l1*cosl(q1) + l2*cosl(x0));
@@ -629,26 +629,26 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
 /* rigidsym_c_planar_arm_tip_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
-    double in_q1,
-    double in_q2,
-    double in_l1,
-    double in_l2,
+    double q1_in_,
+    double q2_in_,
+    double l1_in_,
+    double l2_in_,
     double p[2],
     double p_D_q1[2],
     double p_D_q2[2],
     double p_D_l1[2],
     double p_D_l2[2])
 {
-    const long double q1 = in_q1;
-    const long double q2 = in_q2;
-    const long double l1 = in_l1;
-    const long double l2 = in_l2;
+    const long double q1 = q1_in_;
+    const long double q2 = q2_in_;
+    const long double l1 = l1_in_;
+    const long double l2 = l2_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q1;
-    (void)in_q2;
-    (void)in_l1;
-    (void)in_l2;
+    (void)q1_in_;
+    (void)q2_in_;
+    (void)l1_in_;
+    (void)l2_in_;
     {
         const long double x0 = cosl(q1);
         const long double x1 = q1 + q2;

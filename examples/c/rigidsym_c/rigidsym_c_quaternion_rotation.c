@@ -16,16 +16,16 @@
 /* rigidsym_c_quaternion_rotation in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_wide(
-    const double in_q[4],
+    const double q_in_[4],
     double Q[9])
 {
-    const long double q_0 = in_q[0];
-    const long double q_1 = in_q[1];
-    const long double q_2 = in_q[2];
-    const long double q_3 = in_q[3];
+    const long double q_0 = q_in_[0];
+    const long double q_1 = q_in_[1];
+    const long double q_2 = q_in_[2];
+    const long double q_3 = q_in_[3];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q;
+    (void)q_in_;
     {
         const long double x0 = 2.0*(q_2*q_2);
         const long double x1 = 2.0*(q_3*q_3) - 1.0;
@@ -523,17 +523,17 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
 /* rigidsym_c_quaternion_rotation_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
-    const double in_q[4],
+    const double q_in_[4],
     double Q[9],
     double Q_D_q[36])
 {
-    const long double q_0 = in_q[0];
-    const long double q_1 = in_q[1];
-    const long double q_2 = in_q[2];
-    const long double q_3 = in_q[3];
+    const long double q_0 = q_in_[0];
+    const long double q_1 = q_in_[1];
+    const long double q_2 = q_in_[2];
+    const long double q_3 = q_in_[3];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q;
+    (void)q_in_;
     {
         const long double x0 = 2.0*(q_2*q_2);
         const long double x1 = 2.0*(q_3*q_3) - 1.0;

@@ -16,18 +16,18 @@
 /* rigidsym_c_rotation_from_natural_invariants in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_wide(
-    const double in_e[3],
-    double in_phi,
+    const double e_in_[3],
+    double phi_in_,
     double Q[9])
 {
-    const long double e_0 = in_e[0];
-    const long double e_1 = in_e[1];
-    const long double e_2 = in_e[2];
-    const long double phi = in_phi;
+    const long double e_0 = e_in_[0];
+    const long double e_1 = e_in_[1];
+    const long double e_2 = e_in_[2];
+    const long double phi = phi_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_e;
-    (void)in_phi;
+    (void)e_in_;
+    (void)phi_in_;
     {
         const long double x0 = (e_0*e_0);
         const long double x1 = (0.5)*phi;
@@ -583,20 +583,20 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
-    const double in_e[3],
-    double in_phi,
+    const double e_in_[3],
+    double phi_in_,
     double Q[9],
     double Q_D_e[27],
     double Q_D_phi[9])
 {
-    const long double e_0 = in_e[0];
-    const long double e_1 = in_e[1];
-    const long double e_2 = in_e[2];
-    const long double phi = in_phi;
+    const long double e_0 = e_in_[0];
+    const long double e_1 = e_in_[1];
+    const long double e_2 = e_in_[2];
+    const long double phi = phi_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_e;
-    (void)in_phi;
+    (void)e_in_;
+    (void)phi_in_;
     {
         const long double x0 = (e_0*e_0);
         const long double x1 = 1.0 - x0;

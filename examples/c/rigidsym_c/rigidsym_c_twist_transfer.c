@@ -16,28 +16,28 @@
 /* rigidsym_c_twist_transfer in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_wide(
-    const double in_t_A[6],
-    const double in_a[3],
-    const double in_p[3],
+    const double t_A_in_[6],
+    const double a_in_[3],
+    const double p_in_[3],
     double t_P[6])
 {
-    const long double t_A_0 = in_t_A[0];
-    const long double t_A_1 = in_t_A[1];
-    const long double t_A_2 = in_t_A[2];
-    const long double t_A_3 = in_t_A[3];
-    const long double t_A_4 = in_t_A[4];
-    const long double t_A_5 = in_t_A[5];
-    const long double a_0 = in_a[0];
-    const long double a_1 = in_a[1];
-    const long double a_2 = in_a[2];
-    const long double p_0 = in_p[0];
-    const long double p_1 = in_p[1];
-    const long double p_2 = in_p[2];
+    const long double t_A_0 = t_A_in_[0];
+    const long double t_A_1 = t_A_in_[1];
+    const long double t_A_2 = t_A_in_[2];
+    const long double t_A_3 = t_A_in_[3];
+    const long double t_A_4 = t_A_in_[4];
+    const long double t_A_5 = t_A_in_[5];
+    const long double a_0 = a_in_[0];
+    const long double a_1 = a_in_[1];
+    const long double a_2 = a_in_[2];
+    const long double p_0 = p_in_[0];
+    const long double p_1 = p_in_[1];
+    const long double p_2 = p_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_t_A;
-    (void)in_a;
-    (void)in_p;
+    (void)t_A_in_;
+    (void)a_in_;
+    (void)p_in_;
     {
         const long double x0 = a_2 - p_2;
         const long double x1 = a_1 - p_1;
@@ -707,31 +707,31 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
 /* rigidsym_c_twist_transfer_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_with_jacobians_wide(
-    const double in_t_A[6],
-    const double in_a[3],
-    const double in_p[3],
+    const double t_A_in_[6],
+    const double a_in_[3],
+    const double p_in_[3],
     double t_P[6],
     double t_P_D_t_A[36],
     double t_P_D_a[18],
     double t_P_D_p[18])
 {
-    const long double t_A_0 = in_t_A[0];
-    const long double t_A_1 = in_t_A[1];
-    const long double t_A_2 = in_t_A[2];
-    const long double t_A_3 = in_t_A[3];
-    const long double t_A_4 = in_t_A[4];
-    const long double t_A_5 = in_t_A[5];
-    const long double a_0 = in_a[0];
-    const long double a_1 = in_a[1];
-    const long double a_2 = in_a[2];
-    const long double p_0 = in_p[0];
-    const long double p_1 = in_p[1];
-    const long double p_2 = in_p[2];
+    const long double t_A_0 = t_A_in_[0];
+    const long double t_A_1 = t_A_in_[1];
+    const long double t_A_2 = t_A_in_[2];
+    const long double t_A_3 = t_A_in_[3];
+    const long double t_A_4 = t_A_in_[4];
+    const long double t_A_5 = t_A_in_[5];
+    const long double a_0 = a_in_[0];
+    const long double a_1 = a_in_[1];
+    const long double a_2 = a_in_[2];
+    const long double p_0 = p_in_[0];
+    const long double p_1 = p_in_[1];
+    const long double p_2 = p_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_t_A;
-    (void)in_a;
-    (void)in_p;
+    (void)t_A_in_;
+    (void)a_in_;
+    (void)p_in_;
     {
         const long double x0 = a_2 - p_2;
         const long double x1 = -x0;

@@ -210,9 +210,19 @@ def _scan_groups(k: Kernel, ctype: str) -> list[dict]:
     return groups
 
 
-def _check_names(k: Kernel, temps: set[str]) -> None:
+def _check_names(k: Kernel, temps: set[str], inputs) -> None:
+    """Refuse an argument or output name that a local of the generated C would meet: a C or
+    C++ keyword, a CSE temporary, a fixed local, a name ending in ``_`` (every other local
+    ends so) or starting with ``rs_`` (the rescue's scaled copies), or the name of another
+    argument's component (``v_0`` beside an array ``v``: the C reads ``v[0]`` into a local
+    ``v_0``). ``inputs``: the kernel's [(argument, its symbols)]."""
     names = [a.name for a in k.args] + [o.name for o in k.outputs]
+    components = {str(c): a for a, syms in inputs for c in syms if str(c) != a}
     for n in names:
+        if n in components:
+            raise CTargetError(f"kernel {k.name}: argument or output {n!r} would collide "
+                               f"with the C local of a component of argument "
+                               f"{components[n]!r}; rename it in the declaration")
         bad = n in _C_KEYWORDS or keyword.iskeyword(n) or n in temps or \
             re.fullmatch(r"x\d+|status|singular|finite|odd|count|j|args|sizes|trig_\d+|"
                          r"rs_\w+|\w+_", n)
@@ -238,7 +248,7 @@ def _function(kc, ctype: str, rescale: list) -> dict:
         for e in [*(x for _, x in v.program.temps), *v.program.outputs, *v.program.dens,
                   *([v.cond] if v.cond is not None else [])]:
             used |= {str(s) for s in sp.sympify(e).free_symbols}
-    _check_names(k, temps)
+    _check_names(k, temps, kc.inputs)
     suffix = "_f32" if ctype == "float" else ""
     slots = [f"{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
     for v in variants:  # the package's finiteness check names the outputs out_<name>
