@@ -279,3 +279,56 @@ def test_float_example_matches_numpy_on_cortex_m4f(tmp_path):
     wrapper.write_text(f"#!/bin/sh\nexec {qemu} {exe}\n")
     wrapper.chmod(0o755)
     assert_matches(run_example(wrapper), expected(), tol=8 * 2.0**-24)
+
+
+_FLUSH_ARM = r"""#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+#include "rigidsym_c.h"
+/* subnormal float twists, with Arm's flush-to-zero mode (FZ) off and on: the cold path
+ * turns it off for its own run, so the rescue is exact (status 0) in both, and the mode is
+ * the caller's again after the call */
+static unsigned fz(int set)
+{
+#if defined(__aarch64__)
+    uint64_t r;
+    __asm__ volatile("mrs %0, fpcr" : "=r"(r));
+    if (set) {
+        r |= 1U << 24;
+        __asm__ volatile("msr fpcr, %0" : : "r"(r));
+    }
+#else
+    unsigned r;
+    __asm__ volatile("vmrs %0, fpscr" : "=r"(r));
+    if (set) {
+        r |= 1U << 24;
+        __asm__ volatile("vmsr fpscr, %0" : : "r"(r));
+    }
+#endif
+    return (unsigned)(r >> 24) & 1U;
+}
+int main(void)
+{
+    const float t[6] = {1e-40f, 2e-40f, -3e-40f, 4e-40f, 5e-40f, -6e-40f}, z[3] = {0, 0, 0};
+    float o[6];
+    int s, k;
+    for (k = 0; k < 2; ++k) {
+        (void)fz(k);
+        s = rigidsym_c_twist_transfer_f32(t, z, z, o);
+        printf("%d %d %u\n", s, memcmp(o, t, sizeof o) == 0, fz(0));
+    }
+    return 0;
+}
+"""
+
+
+def test_a_flush_to_zero_caller_on_arm_gets_the_values_of_an_ieee_caller(tmp_path, target):
+    """Arm's FZ (aarch64's FPCR, 32-bit Arm's FPSCR) set by the caller: the cold path turns
+    it off for its own run, so the subnormal twist is rescued exactly, status 0, as without
+    it, and the caller's FZ is set again after the call."""
+    name, cmd, qemu, _ = target
+    src = tmp_path / "flush.c"
+    src.write_text(_FLUSH_ARM)
+    exe = _build(cmd, [src, *sources()], tmp_path / f"flush_{name}")
+    out = subprocess.run([qemu, str(exe)], check=True, capture_output=True, text=True).stdout
+    assert out.split("\n")[:2] == ["0 1 0", "0 1 1"], out

@@ -16,34 +16,34 @@
 /* rigidsym_c_body_energy in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_wide(
-    double in_m,
-    const double in_v[3],
-    const double in_inertia[9],
-    const double in_omega[3],
+    double m_in_,
+    const double v_in_[3],
+    const double inertia_in_[9],
+    const double omega_in_[3],
     double *T)
 {
-    const long double m = in_m;
-    const long double v_0 = in_v[0];
-    const long double v_1 = in_v[1];
-    const long double v_2 = in_v[2];
-    const long double inertia_00 = in_inertia[0];
-    const long double inertia_01 = in_inertia[1];
-    const long double inertia_02 = in_inertia[2];
-    const long double inertia_10 = in_inertia[3];
-    const long double inertia_11 = in_inertia[4];
-    const long double inertia_12 = in_inertia[5];
-    const long double inertia_20 = in_inertia[6];
-    const long double inertia_21 = in_inertia[7];
-    const long double inertia_22 = in_inertia[8];
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
+    const long double m = m_in_;
+    const long double v_0 = v_in_[0];
+    const long double v_1 = v_in_[1];
+    const long double v_2 = v_in_[2];
+    const long double inertia_00 = inertia_in_[0];
+    const long double inertia_01 = inertia_in_[1];
+    const long double inertia_02 = inertia_in_[2];
+    const long double inertia_10 = inertia_in_[3];
+    const long double inertia_11 = inertia_in_[4];
+    const long double inertia_12 = inertia_in_[5];
+    const long double inertia_20 = inertia_in_[6];
+    const long double inertia_21 = inertia_in_[7];
+    const long double inertia_22 = inertia_in_[8];
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_m;
-    (void)in_v;
-    (void)in_inertia;
-    (void)in_omega;
+    (void)m_in_;
+    (void)v_in_;
+    (void)inertia_in_;
+    (void)omega_in_;
     {
         T[0] = (double)((0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2));
     }
@@ -85,34 +85,36 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     double rs_v[3];
     double rs_inertia[9];
     double rs_omega[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(v, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(inertia, 9))
-            return -1;
-        if (rigidsym_c_subnormal_d(omega, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(v, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(inertia, 9))
+        return -1;
+    if (rigidsym_c_subnormal_d(omega, 3))
+        return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(v, 3));
-    rs_t1 = -(rigidsym_c_exponent_d(inertia, 9));
-    rs_t2 = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_t1);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_d(v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -120,16 +122,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_d(omega, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_t1);
+    rs_k0_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -137,16 +139,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(omega, 3));
-    rs_t1 = -(rigidsym_c_exponent_d(&m, 1));
-    rs_t2 = -(rigidsym_c_exponent_d(v, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t1);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t2);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_d(v, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -154,16 +156,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_t1 = -(rigidsym_c_exponent_d(v, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -183,6 +185,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_plain(
     const double omega[3],
     double *T)
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double v_0 = v[0];
@@ -229,7 +232,8 @@ static int (*const volatile rigidsym_c_body_energy_plain_p)(
 /* rigidsym_c_body_energy where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
     double m,
@@ -240,7 +244,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
@@ -252,25 +259,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_body_energy_plain_p)(m, v, inertia, omega, T);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_plain_p)(m, v, inertia, omega, T);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_body_energy_plain(m, v, inertia, omega, T);
+    if (!done_)
+        status |= rigidsym_c_body_energy_plain(m, v, inertia, omega, T);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -425,34 +446,36 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     float rs_v[3];
     float rs_inertia[9];
     float rs_omega[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(v, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(inertia, 9))
-            return -1;
-        if (rigidsym_c_subnormal_f(omega, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(v, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(inertia, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(omega, 3))
+        return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(v, 3));
-    rs_t1 = -(rigidsym_c_exponent_f(inertia, 9));
-    rs_t2 = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_t1);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_f(v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -460,16 +483,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_f(omega, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_t1);
+    rs_k0_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -477,16 +500,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(omega, 3));
-    rs_t1 = -(rigidsym_c_exponent_f(&m, 1));
-    rs_t2 = -(rigidsym_c_exponent_f(v, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t1);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t2);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_f(v, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -494,16 +517,16 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_t1 = -(rigidsym_c_exponent_f(v, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
         finite = (T[0] - T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -523,6 +546,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_plain(
     const float omega[3],
     float *T)
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float v_0 = v[0];
@@ -569,7 +593,8 @@ static int (*const volatile rigidsym_c_body_energy_f32_plain_p)(
 /* rigidsym_c_body_energy_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
     float m,
@@ -580,7 +605,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
@@ -592,21 +620,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_body_energy_f32_plain_p)(m, v, inertia, omega, T);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_f32_plain_p)(m, v, inertia, omega, T);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_body_energy_f32_plain(m, v, inertia, omega, T);
+    if (!done_)
+        status |= rigidsym_c_body_energy_f32_plain(m, v, inertia, omega, T);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -737,38 +777,38 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
 /* rigidsym_c_body_energy_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_with_jacobians_wide(
-    double in_m,
-    const double in_v[3],
-    const double in_inertia[9],
-    const double in_omega[3],
+    double m_in_,
+    const double v_in_[3],
+    const double inertia_in_[9],
+    const double omega_in_[3],
     double *T,
     double *T_D_m,
     double T_D_v[3],
     double T_D_inertia[9],
     double T_D_omega[3])
 {
-    const long double m = in_m;
-    const long double v_0 = in_v[0];
-    const long double v_1 = in_v[1];
-    const long double v_2 = in_v[2];
-    const long double inertia_00 = in_inertia[0];
-    const long double inertia_01 = in_inertia[1];
-    const long double inertia_02 = in_inertia[2];
-    const long double inertia_10 = in_inertia[3];
-    const long double inertia_11 = in_inertia[4];
-    const long double inertia_12 = in_inertia[5];
-    const long double inertia_20 = in_inertia[6];
-    const long double inertia_21 = in_inertia[7];
-    const long double inertia_22 = in_inertia[8];
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
+    const long double m = m_in_;
+    const long double v_0 = v_in_[0];
+    const long double v_1 = v_in_[1];
+    const long double v_2 = v_in_[2];
+    const long double inertia_00 = inertia_in_[0];
+    const long double inertia_01 = inertia_in_[1];
+    const long double inertia_02 = inertia_in_[2];
+    const long double inertia_10 = inertia_in_[3];
+    const long double inertia_11 = inertia_in_[4];
+    const long double inertia_12 = inertia_in_[5];
+    const long double inertia_20 = inertia_in_[6];
+    const long double inertia_21 = inertia_in_[7];
+    const long double inertia_22 = inertia_in_[8];
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_m;
-    (void)in_v;
-    (void)in_inertia;
-    (void)in_omega;
+    (void)m_in_;
+    (void)v_in_;
+    (void)inertia_in_;
+    (void)omega_in_;
     {
         const long double x0 = (v_0*v_0);
         const long double x1 = (v_1*v_1);
@@ -864,50 +904,52 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     double rs_v[3];
     double rs_inertia[9];
     double rs_omega[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(v, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(inertia, 9))
-            return -1;
-        if (rigidsym_c_subnormal_d(omega, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(v, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(inertia, 9))
+        return -1;
+    if (rigidsym_c_subnormal_d(omega, 3))
+        return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(v, 3));
-    rs_t1 = -(rigidsym_c_exponent_d(inertia, 9));
-    rs_t2 = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_t1);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_d(v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_v[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[0], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[1], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[2], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_v[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[2], rs_k1_ + rs_k2_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -915,32 +957,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_d(omega, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_t1);
+    rs_k0_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[0], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[1], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[2], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_omega[0], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_omega[1], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_omega[2], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_omega[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_omega[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_omega[2], 2 * rs_k0_ + 2 * rs_k1_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -948,32 +990,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(omega, 3));
-    rs_t1 = -(rigidsym_c_exponent_d(&m, 1));
-    rs_t2 = -(rigidsym_c_exponent_d(v, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t1);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_t2);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_d(v, 3));
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[0], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[1], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_v[2], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&T_D_omega[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_v[2], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&T_D_omega[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -981,32 +1023,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_t1 = -(rigidsym_c_exponent_d(v, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_t0 + 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_m[0], 4 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_v[0], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_v[1], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_v[2], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[0], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[1], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_d(&T_D_omega[2], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_m[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_v[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_v[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_v[2], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&T_D_omega[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1030,6 +1072,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_plain(
     double T_D_inertia[9],
     double T_D_omega[3])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double v_0 = v[0];
@@ -1135,7 +1178,8 @@ static int (*const volatile rigidsym_c_body_energy_with_jacobians_plain_p)(
 /* rigidsym_c_body_energy_with_jacobians where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
     double m,
@@ -1150,7 +1194,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
@@ -1162,25 +1209,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_body_energy_with_jacobians_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_with_jacobians_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_body_energy_with_jacobians_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+    if (!done_)
+        status |= rigidsym_c_body_energy_with_jacobians_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -1403,50 +1464,52 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     float rs_v[3];
     float rs_inertia[9];
     float rs_omega[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(v, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(inertia, 9))
-            return -1;
-        if (rigidsym_c_subnormal_f(omega, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(v, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(inertia, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(omega, 3))
+        return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(v, 3));
-    rs_t1 = -(rigidsym_c_exponent_f(inertia, 9));
-    rs_t2 = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_t1);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_f(v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_v[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[0], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[1], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[2], rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_v[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[2], rs_k1_ + rs_k2_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1454,32 +1517,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_f(omega, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_t1);
+    rs_k0_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[0], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[1], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[2], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_omega[0], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_omega[1], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_omega[2], 2 * rs_t0 + 2 * rs_t1);
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_omega[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_omega[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_omega[2], 2 * rs_k0_ + 2 * rs_k1_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1487,32 +1550,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(omega, 3));
-    rs_t1 = -(rigidsym_c_exponent_f(&m, 1));
-    rs_t2 = -(rigidsym_c_exponent_f(v, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t1);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_t2);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_t0 + rs_t1 + 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_f(v, 3));
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[0], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[1], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_v[2], rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&T_D_omega[0], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[1], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[2], -1 * rs_t0 + rs_t1 + 2 * rs_t2);
+        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_v[2], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&T_D_omega[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1520,32 +1583,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_t1 = -(rigidsym_c_exponent_f(v, 3) / 2);
-    rs_t2 = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t0 + 2 * rs_t1 - 1 * rs_t2);
+    rs_k0_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_t0 + 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_m[0], 4 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_v[0], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_v[1], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_v[2], 2 * rs_t0 + 2 * rs_t1);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_t0 + 4 * rs_t1 - 2 * rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[0], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[1], rs_t0 + 2 * rs_t1 + rs_t2);
-        status |= rigidsym_c_back_f(&T_D_omega[2], rs_t0 + 2 * rs_t1 + rs_t2);
+        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_m[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_v[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_v[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_v[2], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&T_D_omega[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
         finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1569,6 +1632,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_plain(
     float T_D_inertia[9],
     float T_D_omega[3])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float v_0 = v[0];
@@ -1674,7 +1738,8 @@ static int (*const volatile rigidsym_c_body_energy_with_jacobians_f32_plain_p)(
 /* rigidsym_c_body_energy_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
     float m,
@@ -1689,7 +1754,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 3, 9, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = &m;
     args[1] = v;
     args[2] = inertia;
@@ -1701,21 +1769,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_body_energy_with_jacobians_f32_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_with_jacobians_f32_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_body_energy_with_jacobians_f32_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+    if (!done_)
+        status |= rigidsym_c_body_energy_with_jacobians_f32_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 

@@ -30,6 +30,8 @@ RIGIDSYM_C_BEGIN_DECLS
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Accuracy (double): no bound stated (a declaration that is not one of the package's
+ * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
  * Extreme inputs without a wider type (the float function; the double one where long
  * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in m, v, inertia, omega (the other arguments fixed),
@@ -110,6 +112,8 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Accuracy (double): no bound stated (a declaration that is not one of the package's
+ * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
  * Extreme inputs without a wider type (the float function; the double one where long
  * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in m, v, inertia, omega (the other arguments fixed),

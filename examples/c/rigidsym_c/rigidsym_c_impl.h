@@ -92,20 +92,29 @@ typedef char rigidsym_c_error_fsingle_precision_constant_add_fno_single_precisio
 #define RIGIDSYM_C_RESCALE_D 0
 #endif
 
-/* The last step for an extreme input that neither rescue takes (a kernel not homogeneous in
- * the argument: the wrench's omega, a rotation's angle): the evaluation as written, between
- * two reads of the hardware's floating-point exception flags. The range test's reason to
- * flag such an input is that a product may underflow or overflow; when no operation raised
- * underflow, overflow, invalid or divide-by-zero (nor, on Arm, input-denormal: a subnormal
- * flushed to zero), every operation was rounded as in the normal range, so the sample is
- * computed as well as an ordinary one and its status is 0 (an angular rate of 1e-12 rad/s in
- * float). A flag raised (or x86-64's DAZ set, which reads subnormal operands as zero without
- * a flag) keeps RIGIDSYM_C_EXTREME_INPUT. Only where the flags are the hardware's for the
- * type, read by GCC or clang's inline assembly (x86-64 SSE, aarch64, 32-bit Arm with a VFP
- * for the type; not soft-float, whose helpers raise no flag); the evaluation is called
- * through a volatile pointer, so that none of its operations moves across the reads. The
- * caller's flags are kept, with those the evaluation raised. -DRIGIDSYM_C_NO_FP_FLAGS turns
- * it off (the status stays RIGIDSYM_C_EXTREME_INPUT, as before). */
+/* The cold path's floating-point environment (<name>_odd, for a sample whose range test
+ * found an extreme or non-finite input): its status is what the evaluation did, read from
+ * the hardware's exception flags, in one environment whatever the caller's. On entry
+ * (rigidsym_c_fp_enter) the caller's flags and modes are saved, the flags cleared and the
+ * flush-to-zero modes turned off (x86-64's FTZ and DAZ, which gcc and clang link into every
+ * -Ofast program through crtfastmath.o; Arm's FZ): the rescues and the evaluation then run
+ * in IEEE arithmetic with gradual underflow, so that a subnormal input is read as itself and
+ * the outputs and status are the same bits under -O2 and -Ofast. On exit
+ * (rigidsym_c_fp_leave) the caller's modes come back, and its flags with those raised since.
+ * The last step for an extreme input that neither rescue takes (a kernel not homogeneous in
+ * the argument: the wrench's omega, a rotation's angle) is the evaluation as written, between
+ * rigidsym_c_fp_clear and rigidsym_c_fp_risky: when no operation raised underflow, overflow,
+ * invalid or divide-by-zero, every operation was rounded as in the normal range, so the
+ * sample is computed as well as an ordinary one and its status is 0 (an angular rate of
+ * 1e-12 rad/s in float); a flag raised keeps RIGIDSYM_C_EXTREME_INPUT. The evaluation is
+ * called through a volatile pointer, so that none of its operations moves across the reads,
+ * and (clang) compiled with strict floating-point exceptions, so that no operation of a
+ * branch not taken is evaluated ahead and raises a flag (clang 14 at -O2 did so: the float
+ * screw of a point 1 nm from the origin was flagged, by gcc not). Only where the flags and
+ * modes are the hardware's for the type, read by GCC or clang's inline assembly (x86-64 SSE,
+ * aarch64, 32-bit Arm with a VFP for the type; not soft-float, whose helpers raise no flag);
+ * elsewhere, and with -DRIGIDSYM_C_NO_FP_FLAGS, the status of such a sample stays
+ * RIGIDSYM_C_EXTREME_INPUT and the rescue keeps a subnormal input's flag in a flush mode. */
 #define RIGIDSYM_C_FLAGS_D 0
 #define RIGIDSYM_C_FLAGS_F 0
 #if !defined(RIGIDSYM_C_NO_FP_FLAGS) && !defined(RIGIDSYM_C_TRUSTED_INPUTS) && \
@@ -117,7 +126,6 @@ typedef char rigidsym_c_error_fsingle_precision_constant_add_fno_single_precisio
 #define RIGIDSYM_C_FLAGS_F 1
 #define RIGIDSYM_C_FP_ALL 0x3fU     /* MXCSR: IE DE ZE OE UE PE */
 #define RIGIDSYM_C_FP_RISKY 0x1dU   /* IE ZE OE UE */
-#define RIGIDSYM_C_FP_UNSURE 0x40U  /* DAZ */
 #define RIGIDSYM_C_FP_FLUSH 0x8040U /* FTZ DAZ */
 static inline unsigned rigidsym_c_fp_get(void)
 {
@@ -136,7 +144,7 @@ static inline void rigidsym_c_fp_put(unsigned m)
 #define RIGIDSYM_C_FLAGS_F 1
 #define RIGIDSYM_C_FP_ALL 0x9fU     /* FPSR: IOC DZC OFC UFC IXC IDC */
 #define RIGIDSYM_C_FP_RISKY 0x8fU   /* IOC DZC OFC UFC IDC */
-#define RIGIDSYM_C_FP_UNSURE 0U
+#define RIGIDSYM_C_FP_CTL_FLUSH (1U << 24) /* FPCR.FZ */
 static inline unsigned rigidsym_c_fp_get(void)
 {
     uint64_t r;
@@ -148,11 +156,16 @@ static inline void rigidsym_c_fp_put(unsigned m)
     const uint64_t r = m;
     __asm__ volatile("msr fpsr, %0" : : "r"(r) : "memory");
 }
-static inline int rigidsym_c_fp_flushing(void)
-{   /* FPCR.FZ */
+static inline unsigned rigidsym_c_fp_ctl_get(void)
+{
     uint64_t r;
     __asm__ volatile("mrs %0, fpcr" : "=r"(r) : : "memory");
-    return (r >> 24) & 1U;
+    return (unsigned)r;
+}
+static inline void rigidsym_c_fp_ctl_put(unsigned m)
+{
+    const uint64_t r = m;
+    __asm__ volatile("msr fpcr, %0" : : "r"(r) : "memory");
 }
 #elif defined(__arm__) && defined(__ARM_FP) && !defined(__SOFTFP__)
 #if __ARM_FP & 8
@@ -165,7 +178,6 @@ static inline int rigidsym_c_fp_flushing(void)
 #endif
 #define RIGIDSYM_C_FP_ALL 0x9fU     /* FPSCR: IOC DZC OFC UFC IXC IDC */
 #define RIGIDSYM_C_FP_RISKY 0x8fU
-#define RIGIDSYM_C_FP_UNSURE 0U
 #define RIGIDSYM_C_FP_FLUSH (1U << 24) /* FZ */
 static inline unsigned rigidsym_c_fp_get(void)
 {
@@ -179,28 +191,53 @@ static inline void rigidsym_c_fp_put(unsigned m)
 }
 #endif
 #endif
-#if (RIGIDSYM_C_FLAGS_D || RIGIDSYM_C_FLAGS_F) && defined(RIGIDSYM_C_FP_FLUSH)
-static inline int rigidsym_c_fp_flushing(void)
-{
-    return (rigidsym_c_fp_get() & RIGIDSYM_C_FP_FLUSH) != 0;
-}
-#endif
 #if RIGIDSYM_C_FLAGS_D || RIGIDSYM_C_FLAGS_F
-/* the flags cleared; returns the caller's, for rigidsym_c_fp_end */
-static inline unsigned rigidsym_c_fp_begin(void)
+/* the caller's flags and modes, returned for rigidsym_c_fp_leave; the flags cleared and the
+ * flush modes off */
+static inline uint64_t rigidsym_c_fp_enter(void)
 {
     const unsigned saved = rigidsym_c_fp_get();
+#if defined(RIGIDSYM_C_FP_CTL_FLUSH)
+    const unsigned ctl = rigidsym_c_fp_ctl_get();
+    if (ctl & RIGIDSYM_C_FP_CTL_FLUSH)
+        rigidsym_c_fp_ctl_put(ctl & ~RIGIDSYM_C_FP_CTL_FLUSH);
     rigidsym_c_fp_put(saved & ~RIGIDSYM_C_FP_ALL);
+    return ((uint64_t)ctl << 32) | saved;
+#else
+    rigidsym_c_fp_put(saved & ~(RIGIDSYM_C_FP_ALL | RIGIDSYM_C_FP_FLUSH));
     return saved;
+#endif
 }
-/* nonzero when what ran since rigidsym_c_fp_begin raised a risky flag, or ran where one can
- * be missed; the caller's flags put back, with those raised since */
-static inline int rigidsym_c_fp_end(unsigned saved)
+/* the caller's modes back, and its flags with those raised since rigidsym_c_fp_enter */
+static inline void rigidsym_c_fp_leave(uint64_t saved)
 {
     const unsigned now = rigidsym_c_fp_get();
-    rigidsym_c_fp_put(now | (saved & RIGIDSYM_C_FP_ALL));
-    return (now & RIGIDSYM_C_FP_RISKY) != 0 || (saved & RIGIDSYM_C_FP_UNSURE) != 0;
+#if defined(RIGIDSYM_C_FP_CTL_FLUSH)
+    const unsigned ctl = (unsigned)(saved >> 32);
+    if (ctl & RIGIDSYM_C_FP_CTL_FLUSH)
+        rigidsym_c_fp_ctl_put(ctl);
+#endif
+    rigidsym_c_fp_put((unsigned)saved | (now & RIGIDSYM_C_FP_ALL));
 }
+/* the flags cleared (within rigidsym_c_fp_enter and _leave) */
+static inline void rigidsym_c_fp_clear(void)
+{
+    rigidsym_c_fp_put(rigidsym_c_fp_get() & ~RIGIDSYM_C_FP_ALL);
+}
+/* nonzero when what ran since rigidsym_c_fp_clear raised underflow, overflow, invalid or
+ * divide-by-zero (Arm: or input-denormal) */
+static inline int rigidsym_c_fp_risky(void)
+{
+    return (rigidsym_c_fp_get() & RIGIDSYM_C_FP_RISKY) != 0;
+}
+#endif
+/* strict floating-point exceptions for the rest of a block (clang 12 and later; GCC keeps
+ * them by its default -ftrapping-math): the flags step's evaluation raises only the flags of
+ * the operations the source evaluates */
+#if defined(__clang__) && __clang_major__ >= 12
+#define RIGIDSYM_C_STRICT_FP _Pragma("clang fp exceptions(strict)")
+#else
+#define RIGIDSYM_C_STRICT_FP
 #endif
 
 #include "rigidsym_c_common.h"

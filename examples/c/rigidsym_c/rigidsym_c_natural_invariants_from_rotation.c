@@ -16,22 +16,22 @@
 /* rigidsym_c_natural_invariants_from_rotation in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_natural_invariants_from_rotation_wide(
-    const double in_Q[9],
+    const double Q_in_[9],
     double e[3],
     double *phi)
 {
-    const long double Q_00 = in_Q[0];
-    const long double Q_01 = in_Q[1];
-    const long double Q_02 = in_Q[2];
-    const long double Q_10 = in_Q[3];
-    const long double Q_11 = in_Q[4];
-    const long double Q_12 = in_Q[5];
-    const long double Q_20 = in_Q[6];
-    const long double Q_21 = in_Q[7];
-    const long double Q_22 = in_Q[8];
+    const long double Q_00 = Q_in_[0];
+    const long double Q_01 = Q_in_[1];
+    const long double Q_02 = Q_in_[2];
+    const long double Q_10 = Q_in_[3];
+    const long double Q_11 = Q_in_[4];
+    const long double Q_12 = Q_in_[5];
+    const long double Q_20 = Q_in_[6];
+    const long double Q_21 = Q_in_[7];
+    const long double Q_22 = Q_in_[8];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_Q;
+    (void)Q_in_;
     if (Q_00 >= Q_11 && Q_00 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
         const long double x0 = (0.5)*Q_00;
         const long double x1 = (0.5)*Q_11;
@@ -136,6 +136,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
     double e[3],
     double *phi)
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double Q_00 = Q[0];
@@ -257,7 +258,8 @@ static int (*const volatile rigidsym_c_natural_invariants_from_rotation_plain_p)
 /* rigidsym_c_natural_invariants_from_rotation where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_natural_invariants_from_rotation saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
     const double Q[9],
@@ -266,7 +268,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
 {
     const double *args[1];
     const int sizes[1] = {9};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = Q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
@@ -275,18 +280,30 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
     for (j = 0; j < 1; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_natural_invariants_from_rotation_wide(Q, e, phi);
-#endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_natural_invariants_from_rotation_plain_p)(Q, e, phi);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_natural_invariants_from_rotation_wide(Q, e, phi);
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_natural_invariants_from_rotation_plain(Q, e, phi);
+#if RIGIDSYM_C_FLAGS_D
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_natural_invariants_from_rotation_plain_p)(Q, e, phi);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
+    }
+#endif
+    if (!done_)
+        status |= rigidsym_c_natural_invariants_from_rotation_plain(Q, e, phi);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -475,6 +492,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
     float e[3],
     float *phi)
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float Q_00 = Q[0];
@@ -596,7 +614,8 @@ static int (*const volatile rigidsym_c_natural_invariants_from_rotation_f32_plai
 /* rigidsym_c_natural_invariants_from_rotation_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_natural_invariants_from_rotation_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
     const float Q[9],
@@ -605,7 +624,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
 {
     const float *args[1];
     const int sizes[1] = {9};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = Q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
@@ -615,13 +637,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_natural_invariants_from_rotation_f32_plain_p)(Q, e, phi);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_natural_invariants_from_rotation_f32_plain_p)(Q, e, phi);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_natural_invariants_from_rotation_f32_plain(Q, e, phi);
+    if (!done_)
+        status |= rigidsym_c_natural_invariants_from_rotation_f32_plain(Q, e, phi);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 

@@ -16,39 +16,39 @@
 /* rigidsym_c_newton_euler_wrench in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_newton_euler_wrench_wide(
-    const double in_I_C[9],
-    double in_m,
-    const double in_omega[3],
-    const double in_omega_dot[3],
-    const double in_c_ddot[3],
+    const double I_C_in_[9],
+    double m_in_,
+    const double omega_in_[3],
+    const double omega_dot_in_[3],
+    const double c_ddot_in_[3],
     double w[6])
 {
-    const long double I_C_00 = in_I_C[0];
-    const long double I_C_01 = in_I_C[1];
-    const long double I_C_02 = in_I_C[2];
-    const long double I_C_10 = in_I_C[3];
-    const long double I_C_11 = in_I_C[4];
-    const long double I_C_12 = in_I_C[5];
-    const long double I_C_20 = in_I_C[6];
-    const long double I_C_21 = in_I_C[7];
-    const long double I_C_22 = in_I_C[8];
-    const long double m = in_m;
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
-    const long double omega_dot_0 = in_omega_dot[0];
-    const long double omega_dot_1 = in_omega_dot[1];
-    const long double omega_dot_2 = in_omega_dot[2];
-    const long double c_ddot_0 = in_c_ddot[0];
-    const long double c_ddot_1 = in_c_ddot[1];
-    const long double c_ddot_2 = in_c_ddot[2];
+    const long double I_C_00 = I_C_in_[0];
+    const long double I_C_01 = I_C_in_[1];
+    const long double I_C_02 = I_C_in_[2];
+    const long double I_C_10 = I_C_in_[3];
+    const long double I_C_11 = I_C_in_[4];
+    const long double I_C_12 = I_C_in_[5];
+    const long double I_C_20 = I_C_in_[6];
+    const long double I_C_21 = I_C_in_[7];
+    const long double I_C_22 = I_C_in_[8];
+    const long double m = m_in_;
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
+    const long double omega_dot_0 = omega_dot_in_[0];
+    const long double omega_dot_1 = omega_dot_in_[1];
+    const long double omega_dot_2 = omega_dot_in_[2];
+    const long double c_ddot_0 = c_ddot_in_[0];
+    const long double c_ddot_1 = c_ddot_in_[1];
+    const long double c_ddot_2 = c_ddot_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_I_C;
-    (void)in_m;
-    (void)in_omega;
-    (void)in_omega_dot;
-    (void)in_c_ddot;
+    (void)I_C_in_;
+    (void)m_in_;
+    (void)omega_in_;
+    (void)omega_dot_in_;
+    (void)c_ddot_in_;
     {
         const long double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
         const long double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
@@ -105,43 +105,45 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
     double rs_omega[3];
     double rs_omega_dot[3];
     double rs_c_ddot[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(I_C, 9))
-            return -1;
-        if (rigidsym_c_subnormal_d(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(omega, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(omega_dot, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(c_ddot, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(I_C, 9))
+        return -1;
+    if (rigidsym_c_subnormal_d(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(omega, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(omega_dot, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(c_ddot, 3))
+        return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(I_C, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_t2 = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
-    rs_t3 = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
+    rs_k0_ = -(rigidsym_c_exponent_d(I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_d(&w[0], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w[1], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w[2], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w[3], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[4], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[5], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_d(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -149,23 +151,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(c_ddot, 3));
-    rs_t1 = -(rigidsym_c_exponent_d(I_C, 9));
-    rs_t2 = -(rigidsym_c_exponent_d(&m, 1));
-    rs_t3 = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_t1);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t2);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t3);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_d(&w[0], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[1], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[2], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[3], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w[4], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w[5], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_d(&w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w[5], rs_k0_ + rs_k2_);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -186,6 +188,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_plain(
     const double c_ddot[3],
     double w[6])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double I_C_00 = I_C[0];
@@ -254,7 +257,8 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_plain_p)(
 /* rigidsym_c_newton_euler_wrench where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
     const double I_C[9],
@@ -266,7 +270,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
 {
     const double *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
@@ -279,25 +286,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_newton_euler_wrench_rescue(I_C, m, omega, omega_dot, c_ddot, w);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_newton_euler_wrench_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_newton_euler_wrench_plain(I_C, m, omega, omega_dot, c_ddot, w);
+    if (!done_)
+        status |= rigidsym_c_newton_euler_wrench_plain(I_C, m, omega, omega_dot, c_ddot, w);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -487,43 +508,45 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
     float rs_omega[3];
     float rs_omega_dot[3];
     float rs_c_ddot[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(I_C, 9))
-            return -1;
-        if (rigidsym_c_subnormal_f(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(omega, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(omega_dot, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(c_ddot, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(I_C, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(omega, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(omega_dot, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(c_ddot, 3))
+        return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(I_C, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_t2 = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
-    rs_t3 = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
+    rs_k0_ = -(rigidsym_c_exponent_f(I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_f(&w[0], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w[1], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w[2], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w[3], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[4], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[5], 2 * rs_t1 + 2 * rs_t3);
+        status |= rigidsym_c_back_f(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -531,23 +554,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(c_ddot, 3));
-    rs_t1 = -(rigidsym_c_exponent_f(I_C, 9));
-    rs_t2 = -(rigidsym_c_exponent_f(&m, 1));
-    rs_t3 = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_t1);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t2);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t3);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_f(&w[0], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[1], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[2], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[3], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w[4], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w[5], rs_t0 + rs_t2);
+        status |= rigidsym_c_back_f(&w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w[5], rs_k0_ + rs_k2_);
         finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -568,6 +591,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_plain(
     const float c_ddot[3],
     float w[6])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float I_C_00 = I_C[0];
@@ -636,7 +660,8 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_f32_plain_p)(
 /* rigidsym_c_newton_euler_wrench_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
     const float I_C[9],
@@ -648,7 +673,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
 {
     const float *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
@@ -661,21 +689,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_newton_euler_wrench_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_newton_euler_wrench_f32_plain(I_C, m, omega, omega_dot, c_ddot, w);
+    if (!done_)
+        status |= rigidsym_c_newton_euler_wrench_f32_plain(I_C, m, omega, omega_dot, c_ddot, w);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -837,11 +877,11 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
 /* rigidsym_c_newton_euler_wrench_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
-    const double in_I_C[9],
-    double in_m,
-    const double in_omega[3],
-    const double in_omega_dot[3],
-    const double in_c_ddot[3],
+    const double I_C_in_[9],
+    double m_in_,
+    const double omega_in_[3],
+    const double omega_dot_in_[3],
+    const double c_ddot_in_[3],
     double w[6],
     double w_D_I_C[54],
     double w_D_m[6],
@@ -849,32 +889,32 @@ static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
     double w_D_omega_dot[18],
     double w_D_c_ddot[18])
 {
-    const long double I_C_00 = in_I_C[0];
-    const long double I_C_01 = in_I_C[1];
-    const long double I_C_02 = in_I_C[2];
-    const long double I_C_10 = in_I_C[3];
-    const long double I_C_11 = in_I_C[4];
-    const long double I_C_12 = in_I_C[5];
-    const long double I_C_20 = in_I_C[6];
-    const long double I_C_21 = in_I_C[7];
-    const long double I_C_22 = in_I_C[8];
-    const long double m = in_m;
-    const long double omega_0 = in_omega[0];
-    const long double omega_1 = in_omega[1];
-    const long double omega_2 = in_omega[2];
-    const long double omega_dot_0 = in_omega_dot[0];
-    const long double omega_dot_1 = in_omega_dot[1];
-    const long double omega_dot_2 = in_omega_dot[2];
-    const long double c_ddot_0 = in_c_ddot[0];
-    const long double c_ddot_1 = in_c_ddot[1];
-    const long double c_ddot_2 = in_c_ddot[2];
+    const long double I_C_00 = I_C_in_[0];
+    const long double I_C_01 = I_C_in_[1];
+    const long double I_C_02 = I_C_in_[2];
+    const long double I_C_10 = I_C_in_[3];
+    const long double I_C_11 = I_C_in_[4];
+    const long double I_C_12 = I_C_in_[5];
+    const long double I_C_20 = I_C_in_[6];
+    const long double I_C_21 = I_C_in_[7];
+    const long double I_C_22 = I_C_in_[8];
+    const long double m = m_in_;
+    const long double omega_0 = omega_in_[0];
+    const long double omega_1 = omega_in_[1];
+    const long double omega_2 = omega_in_[2];
+    const long double omega_dot_0 = omega_dot_in_[0];
+    const long double omega_dot_1 = omega_dot_in_[1];
+    const long double omega_dot_2 = omega_dot_in_[2];
+    const long double c_ddot_0 = c_ddot_in_[0];
+    const long double c_ddot_1 = c_ddot_in_[1];
+    const long double c_ddot_2 = c_ddot_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_I_C;
-    (void)in_m;
-    (void)in_omega;
-    (void)in_omega_dot;
-    (void)in_c_ddot;
+    (void)I_C_in_;
+    (void)m_in_;
+    (void)omega_in_;
+    (void)omega_dot_in_;
+    (void)c_ddot_in_;
     {
         const long double x0 = I_C_21*omega_1;
         const long double x1 = I_C_20*omega_0;
@@ -1185,94 +1225,96 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
     double rs_omega[3];
     double rs_omega_dot[3];
     double rs_c_ddot[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(I_C, 9))
-            return -1;
-        if (rigidsym_c_subnormal_d(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(omega, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(omega_dot, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(c_ddot, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(I_C, 9))
+        return -1;
+    if (rigidsym_c_subnormal_d(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(omega, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(omega_dot, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(c_ddot, 3))
+        return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(I_C, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_t2 = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
-    rs_t3 = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t2);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
+    rs_k0_ = -(rigidsym_c_exponent_d(I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_d(&w[0], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w[1], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w[2], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w[3], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[4], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[5], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_t2);
-        status |= rigidsym_c_back_d(&w_D_m[3], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_m[4], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_m[5], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[0], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[1], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[2], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[3], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[4], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[5], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[6], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[7], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega[8], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[0], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[1], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[2], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[3], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[4], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[5], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[6], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[7], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[8], 2 * rs_t0);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[9], 2 * rs_t1);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[13], 2 * rs_t1);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[17], 2 * rs_t1);
+        status |= rigidsym_c_back_d(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_m[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_m[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_m[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[0], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[1], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[2], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[3], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[4], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[5], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[6], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[7], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega[8], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[9], 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[13], 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[17], 2 * rs_k1_);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1280,74 +1322,74 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(c_ddot, 3));
-    rs_t1 = -(rigidsym_c_exponent_d(I_C, 9));
-    rs_t2 = -(rigidsym_c_exponent_d(&m, 1));
-    rs_t3 = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_t1);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_t2);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_t3);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_d(omega, 3));
+    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_d(&w[0], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[1], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[2], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w[3], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w[4], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w[5], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_t3);
-        status |= rigidsym_c_back_d(&w_D_m[3], rs_t0);
-        status |= rigidsym_c_back_d(&w_D_m[4], rs_t0);
-        status |= rigidsym_c_back_d(&w_D_m[5], rs_t0);
-        status |= rigidsym_c_back_d(&w_D_omega[0], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[1], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[2], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[3], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[4], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[5], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[6], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[7], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega[8], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[0], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[1], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[2], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[3], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[4], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[5], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[6], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[7], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[8], rs_t1);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[9], rs_t2);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[13], rs_t2);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[17], rs_t2);
+        status |= rigidsym_c_back_d(&w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w[5], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_m[3], rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_m[4], rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_m[5], rs_k0_);
+        status |= rigidsym_c_back_d(&w_D_omega[0], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[1], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[2], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[3], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[4], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[5], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[6], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[7], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega[8], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[0], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[1], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[2], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[3], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[4], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[5], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[6], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[7], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_omega_dot[8], rs_k1_);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[9], rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[13], rs_k2_);
+        status |= rigidsym_c_back_d(&w_D_c_ddot[17], rs_k2_);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1373,6 +1415,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_plain(
     double w_D_omega_dot[18],
     double w_D_c_ddot[18])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double I_C_00 = I_C[0];
@@ -1695,7 +1738,8 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_plain_
 /* rigidsym_c_newton_euler_wrench_with_jacobians where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
     const double I_C[9],
@@ -1712,7 +1756,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
 {
     const double *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
@@ -1725,25 +1772,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_newton_euler_wrench_with_jacobians_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+    if (!done_)
+        status |= rigidsym_c_newton_euler_wrench_with_jacobians_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -2197,94 +2258,96 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
     float rs_omega[3];
     float rs_omega_dot[3];
     float rs_c_ddot[3];
-    int rs_t0 = 0, rs_t1 = 0, rs_t2 = 0, rs_t3 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(I_C, 9))
-            return -1;
-        if (rigidsym_c_subnormal_f(&m, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(omega, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(omega_dot, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(c_ddot, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(I_C, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(&m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(omega, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(omega_dot, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(c_ddot, 3))
+        return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(I_C, 9) / 2);
-    rs_t1 = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_t2 = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
-    rs_t3 = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_t0);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_t1);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t2);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t2);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_t3);
+    rs_k0_ = -(rigidsym_c_exponent_f(I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_f(&w[0], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w[1], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w[2], 2 * rs_t0 + 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w[3], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[4], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[5], 2 * rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_t2);
-        status |= rigidsym_c_back_f(&w_D_m[3], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_m[4], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_m[5], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[0], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[1], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[2], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[3], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[4], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[5], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[6], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[7], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega[8], 2 * rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[0], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[1], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[2], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[3], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[4], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[5], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[6], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[7], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[8], 2 * rs_t0);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[9], 2 * rs_t1);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[13], 2 * rs_t1);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[17], 2 * rs_t1);
+        status |= rigidsym_c_back_f(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_m[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_m[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_m[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[0], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[1], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[2], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[3], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[4], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[5], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[6], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[7], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega[8], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[9], 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[13], 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[17], 2 * rs_k1_);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -2292,74 +2355,74 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(c_ddot, 3));
-    rs_t1 = -(rigidsym_c_exponent_f(I_C, 9));
-    rs_t2 = -(rigidsym_c_exponent_f(&m, 1));
-    rs_t3 = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_t1);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_t2);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_t3);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_t3);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_f(omega, 3));
+    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_f(&w[0], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[1], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[2], rs_t1 + 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w[3], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w[4], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w[5], rs_t0 + rs_t2);
-        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_t3);
-        status |= rigidsym_c_back_f(&w_D_m[3], rs_t0);
-        status |= rigidsym_c_back_f(&w_D_m[4], rs_t0);
-        status |= rigidsym_c_back_f(&w_D_m[5], rs_t0);
-        status |= rigidsym_c_back_f(&w_D_omega[0], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[1], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[2], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[3], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[4], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[5], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[6], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[7], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega[8], rs_t1 + rs_t3);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[0], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[1], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[2], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[3], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[4], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[5], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[6], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[7], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[8], rs_t1);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[9], rs_t2);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[13], rs_t2);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[17], rs_t2);
+        status |= rigidsym_c_back_f(&w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w[5], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_m[3], rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_m[4], rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_m[5], rs_k0_);
+        status |= rigidsym_c_back_f(&w_D_omega[0], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[1], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[2], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[3], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[4], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[5], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[6], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[7], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega[8], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[0], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[1], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[2], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[3], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[4], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[5], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[6], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[7], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_omega_dot[8], rs_k1_);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[9], rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[13], rs_k2_);
+        status |= rigidsym_c_back_f(&w_D_c_ddot[17], rs_k2_);
         finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -2385,6 +2448,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_pla
     float w_D_omega_dot[18],
     float w_D_c_ddot[18])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float I_C_00 = I_C[0];
@@ -2707,7 +2771,8 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_f32_pl
 /* rigidsym_c_newton_euler_wrench_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(
     const float I_C[9],
@@ -2724,7 +2789,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
 {
     const float *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = I_C;
     args[1] = &m;
     args[2] = omega;
@@ -2737,21 +2805,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
     for (j = 0; j < 5; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+    if (!done_)
+        status |= rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 

@@ -16,22 +16,22 @@
 /* rigidsym_c_planar_arm_tip in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_wide(
-    double in_q1,
-    double in_q2,
-    double in_l1,
-    double in_l2,
+    double q1_in_,
+    double q2_in_,
+    double l1_in_,
+    double l2_in_,
     double p[2])
 {
-    const long double q1 = in_q1;
-    const long double q2 = in_q2;
-    const long double l1 = in_l1;
-    const long double l2 = in_l2;
+    const long double q1 = q1_in_;
+    const long double q2 = q2_in_;
+    const long double l1 = l1_in_;
+    const long double l2 = l2_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q1;
-    (void)in_q2;
-    (void)in_l1;
-    (void)in_l2;
+    (void)q1_in_;
+    (void)q2_in_;
+    (void)l1_in_;
+    (void)l2_in_;
     {
         const long double x0 = q1 + q2;
         p[0] = (double)(l1*cosl(q1) + l2*cosl(x0));
@@ -74,33 +74,35 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
      * was flushed to zero is taken (else the flag stays) */
     double rs_l1;
     double rs_l2;
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(&q1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(&q2, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(&l1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(&l2, 1))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(&q1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(&q2, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(&l1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(&l2, 1))
+        return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(&l2, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(&l2, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_d(&p[0], rs_t0);
-        status |= rigidsym_c_back_d(&p[1], rs_t0);
+        status |= rigidsym_c_back_d(&p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p[1], rs_k0_);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -108,15 +110,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(&l1, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(&l1, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_d(&p[0], rs_t0);
-        status |= rigidsym_c_back_d(&p[1], rs_t0);
+        status |= rigidsym_c_back_d(&p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p[1], rs_k0_);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -136,6 +138,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_plain(
     double l2,
     double p[2])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     {
@@ -175,7 +178,8 @@ static int (*const volatile rigidsym_c_planar_arm_tip_plain_p)(
 /* rigidsym_c_planar_arm_tip where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
     double q1,
@@ -186,7 +190,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
@@ -198,25 +205,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_planar_arm_tip_plain_p)(q1, q2, l1, l2, p);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_plain_p)(q1, q2, l1, l2, p);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_planar_arm_tip_plain(q1, q2, l1, l2, p);
+    if (!done_)
+        status |= rigidsym_c_planar_arm_tip_plain(q1, q2, l1, l2, p);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -343,33 +364,35 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
      * was flushed to zero is taken (else the flag stays) */
     float rs_l1;
     float rs_l2;
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(&q1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(&q2, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(&l1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(&l2, 1))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(&q1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&q2, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&l1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&l2, 1))
+        return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(&l2, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(&l2, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_f(&p[0], rs_t0);
-        status |= rigidsym_c_back_f(&p[1], rs_t0);
+        status |= rigidsym_c_back_f(&p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p[1], rs_k0_);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -377,15 +400,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(&l1, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(&l1, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_f(&p[0], rs_t0);
-        status |= rigidsym_c_back_f(&p[1], rs_t0);
+        status |= rigidsym_c_back_f(&p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p[1], rs_k0_);
         finite = ((p[0] - p[0]) + (p[1] - p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -405,6 +428,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_plain(
     float l2,
     float p[2])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     {
@@ -444,7 +468,8 @@ static int (*const volatile rigidsym_c_planar_arm_tip_f32_plain_p)(
 /* rigidsym_c_planar_arm_tip_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
     float q1,
@@ -455,7 +480,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
@@ -467,21 +495,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_planar_arm_tip_f32_plain_p)(q1, q2, l1, l2, p);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_f32_plain_p)(q1, q2, l1, l2, p);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_planar_arm_tip_f32_plain(q1, q2, l1, l2, p);
+    if (!done_)
+        status |= rigidsym_c_planar_arm_tip_f32_plain(q1, q2, l1, l2, p);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -589,26 +629,26 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
 /* rigidsym_c_planar_arm_tip_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
-    double in_q1,
-    double in_q2,
-    double in_l1,
-    double in_l2,
+    double q1_in_,
+    double q2_in_,
+    double l1_in_,
+    double l2_in_,
     double p[2],
     double p_D_q1[2],
     double p_D_q2[2],
     double p_D_l1[2],
     double p_D_l2[2])
 {
-    const long double q1 = in_q1;
-    const long double q2 = in_q2;
-    const long double l1 = in_l1;
-    const long double l2 = in_l2;
+    const long double q1 = q1_in_;
+    const long double q2 = q2_in_;
+    const long double l1 = l1_in_;
+    const long double l2 = l2_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q1;
-    (void)in_q2;
-    (void)in_l1;
-    (void)in_l2;
+    (void)q1_in_;
+    (void)q2_in_;
+    (void)l1_in_;
+    (void)l2_in_;
     {
         const long double x0 = cosl(q1);
         const long double x1 = q1 + q2;
@@ -679,37 +719,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
      * was flushed to zero is taken (else the flag stays) */
     double rs_l1;
     double rs_l2;
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(&q1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(&q2, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(&l1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_d(&l2, 1))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(&q1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(&q2, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(&l1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_d(&l2, 1))
+        return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(&l2, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(&l2, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_d(&p[0], rs_t0);
-        status |= rigidsym_c_back_d(&p[1], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q1[0], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q1[1], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q2[0], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q2[1], rs_t0);
+        status |= rigidsym_c_back_d(&p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p[1], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q2[1], rs_k0_);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -717,19 +759,19 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(&l1, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(&l1, 1));
+    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_d(&q1, 1);
     still_ |= rigidsym_c_extreme_d(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_d(&p[0], rs_t0);
-        status |= rigidsym_c_back_d(&p[1], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q1[0], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q1[1], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q2[0], rs_t0);
-        status |= rigidsym_c_back_d(&p_D_q2[1], rs_t0);
+        status |= rigidsym_c_back_d(&p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p[1], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_d(&p_D_q2[1], rs_k0_);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -753,6 +795,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_plain(
     double p_D_l1[2],
     double p_D_l2[2])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     {
@@ -820,7 +863,8 @@ static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(
 /* rigidsym_c_planar_arm_tip_with_jacobians where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
     double q1,
@@ -835,7 +879,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
 {
     const double *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
@@ -847,25 +894,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_planar_arm_tip_with_jacobians_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+    if (!done_)
+        status |= rigidsym_c_planar_arm_tip_with_jacobians_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -1028,37 +1089,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
      * was flushed to zero is taken (else the flag stays) */
     float rs_l1;
     float rs_l2;
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(&q1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(&q2, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(&l1, 1))
-            return -1;
-        if (rigidsym_c_subnormal_f(&l2, 1))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(&q1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&q2, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&l1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&l2, 1))
+        return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(&l2, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(&l2, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_f(&p[0], rs_t0);
-        status |= rigidsym_c_back_f(&p[1], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q1[0], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q1[1], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q2[0], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q2[1], rs_t0);
+        status |= rigidsym_c_back_f(&p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p[1], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q2[1], rs_k0_);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1066,19 +1129,19 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(&l1, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_t0);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(&l1, 1));
+    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
     still_ |= rigidsym_c_extreme_f(&q1, 1);
     still_ |= rigidsym_c_extreme_f(&q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_f(&p[0], rs_t0);
-        status |= rigidsym_c_back_f(&p[1], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q1[0], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q1[1], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q2[0], rs_t0);
-        status |= rigidsym_c_back_f(&p_D_q2[1], rs_t0);
+        status |= rigidsym_c_back_f(&p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p[1], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_f(&p_D_q2[1], rs_k0_);
         finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1102,6 +1165,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(
     float p_D_l1[2],
     float p_D_l2[2])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     {
@@ -1169,7 +1233,8 @@ static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p
 /* rigidsym_c_planar_arm_tip_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
     float q1,
@@ -1184,7 +1249,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
 {
     const float *args[4];
     const int sizes[4] = {1, 1, 1, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = &q1;
     args[1] = &q2;
     args[2] = &l1;
@@ -1196,21 +1264,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
     for (j = 0; j < 4; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+    if (!done_)
+        status |= rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 

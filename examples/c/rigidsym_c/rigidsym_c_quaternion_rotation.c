@@ -16,16 +16,16 @@
 /* rigidsym_c_quaternion_rotation in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_wide(
-    const double in_q[4],
+    const double q_in_[4],
     double Q[9])
 {
-    const long double q_0 = in_q[0];
-    const long double q_1 = in_q[1];
-    const long double q_2 = in_q[2];
-    const long double q_3 = in_q[3];
+    const long double q_0 = q_in_[0];
+    const long double q_1 = q_in_[1];
+    const long double q_2 = q_in_[2];
+    const long double q_3 = q_in_[3];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q;
+    (void)q_in_;
     {
         const long double x0 = 2.0*(q_2*q_2);
         const long double x1 = 2.0*(q_3*q_3) - 1.0;
@@ -75,6 +75,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_plain(
     const double q[4],
     double Q[9])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double q_0 = q[0];
@@ -136,7 +137,8 @@ static int (*const volatile rigidsym_c_quaternion_rotation_plain_p)(
 /* rigidsym_c_quaternion_rotation where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
     const double q[4],
@@ -144,7 +146,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
 {
     const double *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
@@ -153,18 +158,30 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
     for (j = 0; j < 1; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_quaternion_rotation_wide(q, Q);
-#endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_quaternion_rotation_plain_p)(q, Q);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_quaternion_rotation_wide(q, Q);
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_quaternion_rotation_plain(q, Q);
+#if RIGIDSYM_C_FLAGS_D
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_quaternion_rotation_plain_p)(q, Q);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
+    }
+#endif
+    if (!done_)
+        status |= rigidsym_c_quaternion_rotation_plain(q, Q);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -286,6 +303,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_plain(
     const float q[4],
     float Q[9])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float q_0 = q[0];
@@ -347,7 +365,8 @@ static int (*const volatile rigidsym_c_quaternion_rotation_f32_plain_p)(
 /* rigidsym_c_quaternion_rotation_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
     const float q[4],
@@ -355,7 +374,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
 {
     const float *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
@@ -365,13 +387,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_quaternion_rotation_f32_plain_p)(q, Q);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_quaternion_rotation_f32_plain_p)(q, Q);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_quaternion_rotation_f32_plain(q, Q);
+    if (!done_)
+        status |= rigidsym_c_quaternion_rotation_f32_plain(q, Q);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -491,17 +523,17 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
 /* rigidsym_c_quaternion_rotation_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
-    const double in_q[4],
+    const double q_in_[4],
     double Q[9],
     double Q_D_q[36])
 {
-    const long double q_0 = in_q[0];
-    const long double q_1 = in_q[1];
-    const long double q_2 = in_q[2];
-    const long double q_3 = in_q[3];
+    const long double q_0 = q_in_[0];
+    const long double q_1 = q_in_[1];
+    const long double q_2 = q_in_[2];
+    const long double q_3 = q_in_[3];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_q;
+    (void)q_in_;
     {
         const long double x0 = 2.0*(q_2*q_2);
         const long double x1 = 2.0*(q_3*q_3) - 1.0;
@@ -630,6 +662,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_plain(
     double Q[9],
     double Q_D_q[36])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double q_0 = q[0];
@@ -770,7 +803,8 @@ static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_plain_
 /* rigidsym_c_quaternion_rotation_with_jacobians where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
     const double q[4],
@@ -779,7 +813,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
 {
     const double *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
@@ -788,18 +825,30 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
     for (j = 0; j < 1; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
-#endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_plain_p)(q, Q, Q_D_q);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_quaternion_rotation_with_jacobians_plain(q, Q, Q_D_q);
+#if RIGIDSYM_C_FLAGS_D
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_plain_p)(q, Q, Q_D_q);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
+    }
+#endif
+    if (!done_)
+        status |= rigidsym_c_quaternion_rotation_with_jacobians_plain(q, Q, Q_D_q);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -1002,6 +1051,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_pla
     float Q[9],
     float Q_D_q[36])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float q_0 = q[0];
@@ -1142,7 +1192,8 @@ static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_f32_pl
 /* rigidsym_c_quaternion_rotation_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(
     const float q[4],
@@ -1151,7 +1202,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
 {
     const float *args[1];
     const int sizes[1] = {4};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
@@ -1161,13 +1215,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_f32_plain_p)(q, Q, Q_D_q);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_f32_plain_p)(q, Q, Q_D_q);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(q, Q, Q_D_q);
+    if (!done_)
+        status |= rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(q, Q, Q_D_q);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 

@@ -27,6 +27,8 @@ RIGIDSYM_C_BEGIN_DECLS
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Accuracy (double): no bound stated (a declaration that is not one of the package's
+ * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
  * Extreme inputs without a wider type: no rescaling (the outputs are homogeneous in no
  * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
@@ -79,6 +81,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Accuracy (double): no bound stated (a declaration that is not one of the package's
+ * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
  * Extreme inputs without a wider type: no rescaling (the outputs are homogeneous in no
  * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */

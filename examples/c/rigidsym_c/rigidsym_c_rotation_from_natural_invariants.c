@@ -16,18 +16,18 @@
 /* rigidsym_c_rotation_from_natural_invariants in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_wide(
-    const double in_e[3],
-    double in_phi,
+    const double e_in_[3],
+    double phi_in_,
     double Q[9])
 {
-    const long double e_0 = in_e[0];
-    const long double e_1 = in_e[1];
-    const long double e_2 = in_e[2];
-    const long double phi = in_phi;
+    const long double e_0 = e_in_[0];
+    const long double e_1 = e_in_[1];
+    const long double e_2 = e_in_[2];
+    const long double phi = phi_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_e;
-    (void)in_phi;
+    (void)e_in_;
+    (void)phi_in_;
     {
         const long double x0 = (e_0*e_0);
         const long double x1 = (0.5)*phi;
@@ -86,6 +86,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_plain(
     double phi,
     double Q[9])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double e_0 = e[0];
@@ -155,7 +156,8 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_plain_p)
 /* rigidsym_c_rotation_from_natural_invariants where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
     const double e[3],
@@ -164,7 +166,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
 {
     const double *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = e;
     args[1] = &phi;
     for (j = 0; j < 2; ++j)
@@ -174,18 +179,30 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
     for (j = 0; j < 2; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
-#endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_plain_p)(e, phi, Q);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_rotation_from_natural_invariants_plain(e, phi, Q);
+#if RIGIDSYM_C_FLAGS_D
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_plain_p)(e, phi, Q);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
+    }
+#endif
+    if (!done_)
+        status |= rigidsym_c_rotation_from_natural_invariants_plain(e, phi, Q);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -322,6 +339,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_plain
     float phi,
     float Q[9])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float e_0 = e[0];
@@ -391,7 +409,8 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_f32_plai
 /* rigidsym_c_rotation_from_natural_invariants_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
     const float e[3],
@@ -400,7 +419,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
 {
     const float *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = e;
     args[1] = &phi;
     for (j = 0; j < 2; ++j)
@@ -411,13 +433,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_f32_plain_p)(e, phi, Q);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_f32_plain_p)(e, phi, Q);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_rotation_from_natural_invariants_f32_plain(e, phi, Q);
+    if (!done_)
+        status |= rigidsym_c_rotation_from_natural_invariants_f32_plain(e, phi, Q);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -551,20 +583,20 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
-    const double in_e[3],
-    double in_phi,
+    const double e_in_[3],
+    double phi_in_,
     double Q[9],
     double Q_D_e[27],
     double Q_D_phi[9])
 {
-    const long double e_0 = in_e[0];
-    const long double e_1 = in_e[1];
-    const long double e_2 = in_e[2];
-    const long double phi = in_phi;
+    const long double e_0 = e_in_[0];
+    const long double e_1 = e_in_[1];
+    const long double e_2 = e_in_[2];
+    const long double phi = phi_in_;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_e;
-    (void)in_phi;
+    (void)e_in_;
+    (void)phi_in_;
     {
         const long double x0 = (e_0*e_0);
         const long double x1 = 1.0 - x0;
@@ -709,6 +741,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
     double Q_D_e[27],
     double Q_D_phi[9])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double e_0 = e[0];
@@ -864,7 +897,8 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jac
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(
     const double e[3],
@@ -875,7 +909,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 {
     const double *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = e;
     args[1] = &phi;
     for (j = 0; j < 2; ++j)
@@ -885,18 +922,30 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
     for (j = 0; j < 2; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
-#if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
-#endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(e, phi, Q, Q_D_e, Q_D_phi);
+#if RIGIDSYM_C_FLAGS_D
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
+    }
+#endif
+    if (!done_)
+        status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(e, phi, Q, Q_D_e, Q_D_phi);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -1123,6 +1172,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
     float Q_D_e[27],
     float Q_D_phi[9])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float e_0 = e[0];
@@ -1278,7 +1328,8 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jac
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(
     const float e[3],
@@ -1289,7 +1340,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 {
     const float *args[2];
     const int sizes[2] = {3, 1};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = e;
     args[1] = &phi;
     for (j = 0; j < 2; ++j)
@@ -1300,13 +1354,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_FLAGS_F
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(e, phi, Q, Q_D_e, Q_D_phi);
+    if (!done_)
+        status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(e, phi, Q, Q_D_e, Q_D_phi);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 

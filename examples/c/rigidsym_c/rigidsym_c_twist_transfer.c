@@ -16,28 +16,28 @@
 /* rigidsym_c_twist_transfer in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_wide(
-    const double in_t_A[6],
-    const double in_a[3],
-    const double in_p[3],
+    const double t_A_in_[6],
+    const double a_in_[3],
+    const double p_in_[3],
     double t_P[6])
 {
-    const long double t_A_0 = in_t_A[0];
-    const long double t_A_1 = in_t_A[1];
-    const long double t_A_2 = in_t_A[2];
-    const long double t_A_3 = in_t_A[3];
-    const long double t_A_4 = in_t_A[4];
-    const long double t_A_5 = in_t_A[5];
-    const long double a_0 = in_a[0];
-    const long double a_1 = in_a[1];
-    const long double a_2 = in_a[2];
-    const long double p_0 = in_p[0];
-    const long double p_1 = in_p[1];
-    const long double p_2 = in_p[2];
+    const long double t_A_0 = t_A_in_[0];
+    const long double t_A_1 = t_A_in_[1];
+    const long double t_A_2 = t_A_in_[2];
+    const long double t_A_3 = t_A_in_[3];
+    const long double t_A_4 = t_A_in_[4];
+    const long double t_A_5 = t_A_in_[5];
+    const long double a_0 = a_in_[0];
+    const long double a_1 = a_in_[1];
+    const long double a_2 = a_in_[2];
+    const long double p_0 = p_in_[0];
+    const long double p_1 = p_in_[1];
+    const long double p_2 = p_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_t_A;
-    (void)in_a;
-    (void)in_p;
+    (void)t_A_in_;
+    (void)a_in_;
+    (void)p_in_;
     {
         const long double x0 = a_2 - p_2;
         const long double x1 = a_1 - p_1;
@@ -88,34 +88,36 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     double rs_t_A[6];
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(t_A, 6))
-            return -1;
-        if (rigidsym_c_subnormal_d(a, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(p, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(t_A, 6))
+        return -1;
+    if (rigidsym_c_subnormal_d(a, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(p, 3))
+        return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(t_A, 6));
-    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(t_A, 6));
+    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_k0_);
     still_ |= rigidsym_c_extreme_d(a, 3);
     still_ |= rigidsym_c_extreme_d(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer(rs_t_A, a, p, t_P);
-        status |= rigidsym_c_back_d(&t_P[0], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[1], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[2], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[3], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[4], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[5], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[0], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[1], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[2], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[3], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[4], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[5], rs_k0_);
         finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -134,6 +136,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_plain(
     const double p[3],
     double t_P[6])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double t_A_0 = t_A[0];
@@ -194,7 +197,8 @@ static int (*const volatile rigidsym_c_twist_transfer_plain_p)(
 /* rigidsym_c_twist_transfer where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
     const double t_A[6],
@@ -204,7 +208,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
 {
     const double *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
@@ -215,25 +222,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_twist_transfer_rescue(t_A, a, p, t_P);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_twist_transfer_plain_p)(t_A, a, p, t_P);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_plain_p)(t_A, a, p, t_P);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_twist_transfer_plain(t_A, a, p, t_P);
+    if (!done_)
+        status |= rigidsym_c_twist_transfer_plain(t_A, a, p, t_P);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -387,34 +408,36 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     float rs_t_A[6];
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(t_A, 6))
-            return -1;
-        if (rigidsym_c_subnormal_f(a, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(p, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(t_A, 6))
+        return -1;
+    if (rigidsym_c_subnormal_f(a, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(p, 3))
+        return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(t_A, 6));
-    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(t_A, 6));
+    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_k0_);
     still_ |= rigidsym_c_extreme_f(a, 3);
     still_ |= rigidsym_c_extreme_f(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer_f32(rs_t_A, a, p, t_P);
-        status |= rigidsym_c_back_f(&t_P[0], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[1], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[2], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[3], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[4], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[5], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[0], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[1], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[2], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[3], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[4], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[5], rs_k0_);
         finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -433,6 +456,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_plain(
     const float p[3],
     float t_P[6])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float t_A_0 = t_A[0];
@@ -493,7 +517,8 @@ static int (*const volatile rigidsym_c_twist_transfer_f32_plain_p)(
 /* rigidsym_c_twist_transfer_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
     const float t_A[6],
@@ -503,7 +528,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
 {
     const float *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
@@ -514,21 +542,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_twist_transfer_f32_rescue(t_A, a, p, t_P);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_twist_transfer_f32_plain_p)(t_A, a, p, t_P);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_f32_plain_p)(t_A, a, p, t_P);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_twist_transfer_f32_plain(t_A, a, p, t_P);
+    if (!done_)
+        status |= rigidsym_c_twist_transfer_f32_plain(t_A, a, p, t_P);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -667,31 +707,31 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
 /* rigidsym_c_twist_transfer_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_with_jacobians_wide(
-    const double in_t_A[6],
-    const double in_a[3],
-    const double in_p[3],
+    const double t_A_in_[6],
+    const double a_in_[3],
+    const double p_in_[3],
     double t_P[6],
     double t_P_D_t_A[36],
     double t_P_D_a[18],
     double t_P_D_p[18])
 {
-    const long double t_A_0 = in_t_A[0];
-    const long double t_A_1 = in_t_A[1];
-    const long double t_A_2 = in_t_A[2];
-    const long double t_A_3 = in_t_A[3];
-    const long double t_A_4 = in_t_A[4];
-    const long double t_A_5 = in_t_A[5];
-    const long double a_0 = in_a[0];
-    const long double a_1 = in_a[1];
-    const long double a_2 = in_a[2];
-    const long double p_0 = in_p[0];
-    const long double p_1 = in_p[1];
-    const long double p_2 = in_p[2];
+    const long double t_A_0 = t_A_in_[0];
+    const long double t_A_1 = t_A_in_[1];
+    const long double t_A_2 = t_A_in_[2];
+    const long double t_A_3 = t_A_in_[3];
+    const long double t_A_4 = t_A_in_[4];
+    const long double t_A_5 = t_A_in_[5];
+    const long double a_0 = a_in_[0];
+    const long double a_1 = a_in_[1];
+    const long double a_2 = a_in_[2];
+    const long double p_0 = p_in_[0];
+    const long double p_1 = p_in_[1];
+    const long double p_2 = p_in_[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)in_t_A;
-    (void)in_a;
-    (void)in_p;
+    (void)t_A_in_;
+    (void)a_in_;
+    (void)p_in_;
     {
         const long double x0 = a_2 - p_2;
         const long double x1 = -x0;
@@ -895,46 +935,48 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     double rs_t_A[6];
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_D
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_d(t_A, 6))
-            return -1;
-        if (rigidsym_c_subnormal_d(a, 3))
-            return -1;
-        if (rigidsym_c_subnormal_d(p, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_d(t_A, 6))
+        return -1;
+    if (rigidsym_c_subnormal_d(a, 3))
+        return -1;
+    if (rigidsym_c_subnormal_d(p, 3))
+        return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_d(t_A, 6));
-    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_d(t_A, 6));
+    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_k0_);
     still_ |= rigidsym_c_extreme_d(a, 3);
     still_ |= rigidsym_c_extreme_d(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer_with_jacobians(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        status |= rigidsym_c_back_d(&t_P[0], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[1], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[2], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[3], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[4], rs_t0);
-        status |= rigidsym_c_back_d(&t_P[5], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_a[10], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_a[11], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_a[12], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_a[14], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_a[15], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_a[16], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_p[10], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_p[11], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_p[12], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_p[14], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_p[15], rs_t0);
-        status |= rigidsym_c_back_d(&t_P_D_p[16], rs_t0);
+        status |= rigidsym_c_back_d(&t_P[0], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[1], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[2], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[3], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[4], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P[5], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_a[10], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_a[11], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_a[12], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_a[14], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_a[15], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_a[16], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_p[10], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_p[11], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_p[12], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_p[14], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_p[15], rs_k0_);
+        status |= rigidsym_c_back_d(&t_P_D_p[16], rs_k0_);
         finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -956,6 +998,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_plain(
     double t_P_D_a[18],
     double t_P_D_p[18])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     const double t_A_0 = t_A[0];
@@ -1169,7 +1212,8 @@ static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_plain_p)(
 /* rigidsym_c_twist_transfer_with_jacobians where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
     const double t_A[6],
@@ -1182,7 +1226,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
 {
     const double *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_D
+    uint64_t env_;
+#endif
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
@@ -1193,25 +1240,39 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_d(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_D
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_WIDE
-    if (status == RIGIDSYM_C_EXTREME_INPUT)
-        return rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        status = rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        done_ = 1;
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_D
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_twist_transfer_with_jacobians_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_with_jacobians_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_twist_transfer_with_jacobians_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+    if (!done_)
+        status |= rigidsym_c_twist_transfer_with_jacobians_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+#if RIGIDSYM_C_FLAGS_D
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 
@@ -1524,46 +1585,48 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
     float rs_t_A[6];
-    int rs_t0 = 0;
-#if RIGIDSYM_C_FLAGS_F
+    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
+     * argument name ends in _) */
+    int rs_k0_ = 0;
+#if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
-     * them) reads a subnormal input as zero: such a sample keeps its flag; normal ones are
-     * scaled (a power of two of a normal number is exact, a flushed one is caught below) */
-    if (rigidsym_c_fp_flushing()) {
-        if (rigidsym_c_subnormal_f(t_A, 6))
-            return -1;
-        if (rigidsym_c_subnormal_f(a, 3))
-            return -1;
-        if (rigidsym_c_subnormal_f(p, 3))
-            return -1;
-    }
+     * them) reads a subnormal input as zero; where the modes cannot be read or turned off
+     * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
+     * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
+     * one is caught below) */
+    if (rigidsym_c_subnormal_f(t_A, 6))
+        return -1;
+    if (rigidsym_c_subnormal_f(a, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(p, 3))
+        return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_t0 = -(rigidsym_c_exponent_f(t_A, 6));
-    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_t0);
+    rs_k0_ = -(rigidsym_c_exponent_f(t_A, 6));
+    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_k0_);
     still_ |= rigidsym_c_extreme_f(a, 3);
     still_ |= rigidsym_c_extreme_f(p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
         status = rigidsym_c_twist_transfer_with_jacobians_f32(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        status |= rigidsym_c_back_f(&t_P[0], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[1], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[2], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[3], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[4], rs_t0);
-        status |= rigidsym_c_back_f(&t_P[5], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_a[10], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_a[11], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_a[12], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_a[14], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_a[15], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_a[16], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_p[10], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_p[11], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_p[12], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_p[14], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_p[15], rs_t0);
-        status |= rigidsym_c_back_f(&t_P_D_p[16], rs_t0);
+        status |= rigidsym_c_back_f(&t_P[0], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[1], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[2], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[3], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[4], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P[5], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_a[10], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_a[11], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_a[12], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_a[14], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_a[15], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_a[16], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_p[10], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_p[11], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_p[12], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_p[14], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_p[15], rs_k0_);
+        status |= rigidsym_c_back_f(&t_P_D_p[16], rs_k0_);
         finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
@@ -1585,6 +1648,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_plain(
     float t_P_D_a[18],
     float t_P_D_p[18])
 {
+    RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     const float t_A_0 = t_A[0];
@@ -1798,7 +1862,8 @@ static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_f32_plain_p
 /* rigidsym_c_twist_transfer_with_jacobians_f32 where the range test found an odd input (extreme or not finite): the
  * input bits of the status, the rescue where there is one, else the ordinary evaluation
  * with its outputs' test (for an extreme input, read with the exception flags where the
- * target has them: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
+ * target has them), all in the cold path's floating-point environment (flags cleared,
+ * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
     const float t_A[6],
@@ -1811,7 +1876,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
 {
     const float *args[3];
     const int sizes[3] = {6, 3, 3};
-    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0;
+    int j, status = RIGIDSYM_C_EXTREME_INPUT, odd_ = 0, done_ = 0;
+#if RIGIDSYM_C_FLAGS_F
+    uint64_t env_;
+#endif
     args[0] = t_A;
     args[1] = a;
     args[2] = p;
@@ -1822,21 +1890,33 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
     for (j = 0; j < 3; ++j)
         if (rigidsym_c_classify_f(args[j], sizes[j]) == RIGIDSYM_C_NONFINITE_INPUT)
             status = RIGIDSYM_C_NONFINITE_INPUT;
+#if RIGIDSYM_C_FLAGS_F
+    env_ = rigidsym_c_fp_enter();
+#endif
 #if RIGIDSYM_C_RESCALE_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
         const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        if (r_ >= 0)
-            return r_;
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
     }
 #endif
 #if RIGIDSYM_C_FLAGS_F
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
-        const unsigned saved_ = rigidsym_c_fp_begin();
-        const int r_ = (*rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        return rigidsym_c_fp_end(saved_) ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+    if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
+        int r_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
+        done_ = 1;
     }
 #endif
-    return status | rigidsym_c_twist_transfer_with_jacobians_f32_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+    if (!done_)
+        status |= rigidsym_c_twist_transfer_with_jacobians_f32_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+#if RIGIDSYM_C_FLAGS_F
+    rigidsym_c_fp_leave(env_);
+#endif
+    return status;
 }
 #endif
 

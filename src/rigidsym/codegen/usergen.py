@@ -258,10 +258,13 @@ def cmd_generate_c(args) -> int:
             raise BadInput(str(exc)) from None
     codes = compile_many(kernels, plan32=False)
     bounds = float_bounds(args.module)
-    if args.module and not getattr(args, "no_measure", False):
-        bounds.update(measured_bounds(kernels, codes, origin, bounds))
-    files = generate_c(codes, origin, single_header=getattr(args, "single_header", False),
-                       bounds=bounds, notice=notice, prefix=prefix)
+    try:   # a name the C cannot take: one line, exit 2, nothing written
+        if args.module and not getattr(args, "no_measure", False):
+            bounds.update(measured_bounds(kernels, codes, origin, bounds))
+        files = generate_c(codes, origin, single_header=getattr(args, "single_header", False),
+                           bounds=bounds, notice=notice, prefix=prefix)
+    except CTargetError as exc:
+        raise BadInput(str(exc)) from None
     target = getattr(args, "target", "c")
     if target == "cpp":   # the C++ layer beside the C it calls
         from rigidsym.codegen.backends.cpp.target import generate_cpp

@@ -18,6 +18,7 @@ this folder's ``templates/``; nothing here changes what ``rigidsym generate`` wr
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import keyword
@@ -30,6 +31,7 @@ import jinja2
 import sympy as sp
 
 import rigidsym
+from rigidsym.codegen.accuracy.float_measure import stated
 from rigidsym.codegen.backends import RenderContext, Target
 from rigidsym.codegen.backends.c.homogeneous import scaling_plans
 from rigidsym.codegen.backends.c.prefix import DEFAULT_PREFIX, check_prefix, rename
@@ -37,9 +39,10 @@ from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter,
 from rigidsym.codegen.backends.extension.program import balanced, finite_check
 from rigidsym.codegen.backends.printing import program_lines
 from rigidsym.codegen.spec import Kernel
+from rigidsym.core.config import generated_dir
 
-__all__ = ["generate_c", "float_bounds", "notice_lines", "TEMPLATES", "LIBRARY", "PREFIX",
-           "STATUS", "FLOAT_BOUNDS", "TARGET", "render", "declaration_hash"]
+__all__ = ["generate_c", "float_bounds", "double_bounds", "notice_lines", "TEMPLATES",
+           "LIBRARY", "PREFIX", "STATUS", "FLOAT_BOUNDS", "TARGET", "render", "declaration_hash"]
 
 TEMPLATES = Path(__file__).parent / "templates"
 #: the float functions' measured accuracy bounds of the book's kernels
@@ -207,9 +210,19 @@ def _scan_groups(k: Kernel, ctype: str) -> list[dict]:
     return groups
 
 
-def _check_names(k: Kernel, temps: set[str]) -> None:
+def _check_names(k: Kernel, temps: set[str], inputs) -> None:
+    """Refuse an argument or output name that a local of the generated C would meet: a C or
+    C++ keyword, a CSE temporary, a fixed local, a name ending in ``_`` (every other local
+    ends so) or starting with ``rs_`` (the rescue's scaled copies), or the name of another
+    argument's component (``v_0`` beside an array ``v``: the C reads ``v[0]`` into a local
+    ``v_0``). ``inputs``: the kernel's [(argument, its symbols)]."""
     names = [a.name for a in k.args] + [o.name for o in k.outputs]
+    components = {str(c): a for a, syms in inputs for c in syms if str(c) != a}
     for n in names:
+        if n in components:
+            raise CTargetError(f"kernel {k.name}: argument or output {n!r} would collide "
+                               f"with the C local of a component of argument "
+                               f"{components[n]!r}; rename it in the declaration")
         bad = n in _C_KEYWORDS or keyword.iskeyword(n) or n in temps or \
             re.fullmatch(r"x\d+|status|singular|finite|odd|count|j|args|sizes|trig_\d+|"
                          r"rs_\w+|\w+_", n)
@@ -235,7 +248,7 @@ def _function(kc, ctype: str, rescale: list) -> dict:
         for e in [*(x for _, x in v.program.temps), *v.program.outputs, *v.program.dens,
                   *([v.cond] if v.cond is not None else [])]:
             used |= {str(s) for s in sp.sympify(e).free_symbols}
-    _check_names(k, temps)
+    _check_names(k, temps, kc.inputs)
     suffix = "_f32" if ctype == "float" else ""
     slots = [f"{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
     for v in variants:  # the package's finiteness check names the outputs out_<name>
@@ -261,9 +274,11 @@ def _function(kc, ctype: str, rescale: list) -> dict:
 def _plan_code(plan: dict, slots: list[str]) -> dict:
     """``plan`` (:func:`.homogeneous.scaling_plans`) with the C integer expressions of each
     scaled argument's exponent (``scaled``: [(name, expr)]) and of each output slot's
-    exponent to undo (``back``: [(slot, expr)], the nonzero ones), in the ``rs_t<i>``."""
+    exponent to undo (``back``: [(slot, expr)], the nonzero ones), in the ``rs_k<i>_`` (the
+    trailing ``_`` keeps them apart from the scaled copies ``rs_<argument>``: no argument
+    name ends in ``_``, :func:`_check_names`, so an argument ``k1`` cannot meet them)."""
     def expr(coefs):
-        terms = [f"{c} * rs_t{i}" if c != 1 else f"rs_t{i}"
+        terms = [f"{c} * rs_k{i}_" if c != 1 else f"rs_k{i}_"
                  for i, c in enumerate(coefs) if c]
         return " + ".join(terms).replace("+ -", "- ") if terms else ""
 
@@ -293,14 +308,38 @@ def float_bounds(modules=()) -> dict:
     return out
 
 
+@functools.lru_cache(maxsize=1)
+def double_bounds() -> dict:
+    """The float64 bounds of the package's kernels, ``{name: {"hash", "measured", "bound",
+    "regime"}}``: from the package's ``kernels.json`` (the accuracy harness over each
+    kernel's regimes against arb, docs/accuracy.md: every output within ``measured u (kappa
+    + 1)``, ``u = 2^-53``), the bound stated as the float functions' is (:func:`.stated`:
+    twice the measured, rounded up); empty where the package's generated kernels are not found. A
+    double function of the C target is the package kernel's program without FMA, the same
+    bits (``tests/test_c_target.py``), so a bound holds for it where the hash is the same."""
+    try:
+        path = generated_dir() / "kernels.json"
+    except FileNotFoundError:
+        return {}
+    out = {}
+    for k in json.loads(path.read_text(encoding="utf-8"))["kernels"]:
+        acc = (k.get("accuracy") or {}).get("float64") or {}
+        if acc.get("bound") is not None:
+            out[k["name"]] = {"hash": k["hash"], "measured": acc["bound"],
+                              "bound": stated(acc["bound"]), "regime": acc.get("regime", "")}
+    return out
+
+
 def _kernel_entry(kc, bounds: dict) -> dict:
     k = kc.kernel
+    d = double_bounds().get(k.name)
     b = bounds.get(k.name)
     steps = scaling_plans(k, kc.variants[0].program) if len(kc.variants) == 1 else []
     return {"name": k.name, "summary": k.summary, "formula": k.formula, "ids": list(k.ids),
             "sources": list(k.sources), "singular": k.singular, "hash": kc.hash,
             "ops": kc.ops, "notes": k.notes,
             "float_bound": b if b is not None and b.get("hash") == kc.hash else None,
+            "double_bound": d if d is not None and d["hash"] == kc.hash else None,
             "homogeneity": _homogeneity(k, steps),
             "functions": [_function(kc, "double", steps), _function(kc, "float", steps)]}
 
