@@ -23,6 +23,7 @@ from rigidsym.algebra import symbols as _sym
 from rigidsym.algebra.rigid_motions import Ad, hat, transform
 from rigidsym.core.errors import BadInput, did_you_mean
 from rigidsym.latex.kinematics import rate_target
+from rigidsym.latex.let_text import split_lets
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.book_notations import SETS
@@ -117,27 +118,6 @@ class Let:
     latex: str = ""
     params: tuple[str, ...] = ()
     param_keys: tuple[str, ...] = ()
-
-
-def split_lets(items) -> list[str]:
-    """The declarations of ``--let`` values: each value split at ``"; "`` outside braces.
-
-    Args:
-        items: the ``--let`` values (strings).
-
-    Returns:
-        The declarations, stripped, empty ones dropped.
-    """
-    out = []
-    for item in items or ():
-        depth, start = 0, 0
-        for i, ch in enumerate(item):
-            depth += {"{": 1, "}": -1}.get(ch, 0)
-            if ch == ";" and depth == 0 and item[i + 1:i + 2] in (" ", ""):
-                out.append(item[start:i])
-                start = i + 1
-        out.append(item[start:])
-    return [d.strip() for d in out if d.strip()]
 
 
 def _top_level(text: str, ch: str) -> int:

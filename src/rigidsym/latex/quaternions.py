@@ -19,6 +19,7 @@ from contextvars import ContextVar
 import sympy as sp
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.let_text import split_lets
 
 __all__ = ["HAMILTON", "JPL", "NAMES", "current", "declared", "using", "split_setting",
            "product", "conjugate", "said"]
@@ -63,7 +64,6 @@ def split_setting(let) -> tuple[object, str, str | None]:
     Raises:
         BadInput: a convention other than Hamilton and JPL, or two declarations.
     """
-    from rigidsym.latex.lets import split_lets
 
     convention, text = HAMILTON, None
     if let is None or isinstance(let, dict):

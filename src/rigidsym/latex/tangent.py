@@ -22,6 +22,7 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.let_text import split_lets
 
 __all__ = ["ANGULAR", "TRANSLATION", "NAME", "ORDER_OF", "OTHER", "current", "declared",
            "using", "rigid_order", "both_orders",
@@ -126,7 +127,6 @@ def split_setting(let, notation: str | None) -> tuple[object, str, str | None]:
     Raises:
         BadInput: an order no word of :data:`ORDER_OF` names, or two declarations.
     """
-    from rigidsym.latex.lets import split_lets
 
     order, text = NOTATION_ORDERS.get(notation or "", ANGULAR), None
     if let is None:

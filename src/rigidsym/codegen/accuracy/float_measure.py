@@ -19,7 +19,6 @@ package, which it uses. docs/c-api.md ("Each header states its float functions' 
 from __future__ import annotations
 
 import ctypes
-import math
 import os
 import shutil
 import subprocess
@@ -27,6 +26,8 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
+
+from rigidsym.codegen.backends.c.target import stated
 
 __all__ = ["STRICT", "SEEDS", "N_RANDOM", "compiler", "stated", "build_codes", "runner",
            "worst", "register", "measure_codes"]
@@ -45,17 +46,6 @@ def compiler() -> str | None:
         if name and shutil.which(name):
             return shutil.which(name)
     return None
-
-
-def stated(measured: float) -> float:
-    """The bound a header states for a measured worst ``measured`` (a ratio, >= 0): twice it,
-    rounded up to 1, 1.5, 2, 3 or 5 times a power of ten, at least 1."""
-    want = max(1.0, 2.0 * measured)
-    e = math.floor(math.log10(want))
-    for m in (1.0, 1.5, 2.0, 3.0, 5.0, 10.0):
-        if m * 10.0**e >= want * (1 - 1e-12):
-            return m * 10.0**e
-    raise AssertionError(want)
 
 
 def build_codes(codes, where, tmp: Path):

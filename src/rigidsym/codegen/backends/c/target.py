@@ -31,7 +31,6 @@ import jinja2
 import sympy as sp
 
 import rigidsym
-from rigidsym.codegen.accuracy.float_measure import stated
 from rigidsym.codegen.backends import RenderContext, Target
 from rigidsym.codegen.backends.c.homogeneous import scaling_plans
 from rigidsym.codegen.backends.c.prefix import DEFAULT_PREFIX, check_prefix, rename
@@ -87,6 +86,17 @@ template typename namespace operator private public protected virtual""".split()
 
 class CTargetError(ValueError):
     """A kernel the C-only target cannot print (a name that would collide in C)."""
+
+
+def stated(measured: float) -> float:
+    """The bound a header states for a measured worst ``measured`` (a ratio, >= 0): twice it,
+    rounded up to 1, 1.5, 2, 3 or 5 times a power of ten, at least 1."""
+    want = max(1.0, 2.0 * measured)
+    e = math.floor(math.log10(want))
+    for m in (1.0, 1.5, 2.0, 3.0, 5.0, 10.0):
+        if m * 10.0**e >= want * (1 - 1e-12):
+            return m * 10.0**e
+    raise AssertionError(want)
 
 
 def _env() -> jinja2.Environment:
