@@ -77,7 +77,11 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                          f"certificate proves {len(printed)}: a printed relation is missing "
                          "or one not printed is added")
     if len(pairs) > len(printed) == 1 and not held:  # the chain's member that fails:
-        pairs = [p for p in pairs if _agrees(cert, printed[0], p, lets, fast)][:1] or pairs
+        agree = [p for p in pairs if _agrees(cert, printed[0], p, lets, fast)][:1]
+        if not agree and not any(isinstance(m, NotRead) for p in pairs for m, _, _ in p):
+            raise CheckError(f"({cert.get('id')}) no member of the page's chain, each read, "
+                             "is the certificate's printed relation")
+        pairs = agree or pairs
     if len(pairs) != len(printed):
         counts.append((0, 2 * len(printed)))
         return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
