@@ -1,8 +1,8 @@
 """Shared fixtures: the registry, loaded once; the chapter text when it is present; the
 kernels' backend, switched for a test (NumPy, then C; fails if a compiler is present but the
-C backend does not build); a guard that fails a test whose child processes outlive it; and
-the two profiles of ``tests/_profile.py`` (Hypothesis's settings profiles, the seeded sample
-of a family marked ``sample``)."""
+C backend does not build), and restored after every test; a guard that fails a test whose
+child processes outlive it; and the two profiles of ``tests/_profile.py`` (Hypothesis's
+settings profiles, the seeded sample of a family marked ``sample``)."""
 
 from __future__ import annotations
 
@@ -98,6 +98,17 @@ def chapter_text():
     return CHAPTER.read_text(encoding="utf-8")
 
 
+@pytest.fixture(autouse=True)
+def _backend_kept():
+    """Every test ends on the backend it started on: a test that switches the global backend
+    and does not switch back would otherwise decide which backend later tests on the same
+    worker call (which kernels, which bits), so a result would depend on the test order."""
+    before = K.backend()
+    yield
+    if K.backend() != before:
+        K.use_backend(before)
+
+
 @pytest.fixture(params=["numpy", "c"])
 def backend(request):
     if K.use_backend(request.param) != request.param:
@@ -105,7 +116,6 @@ def backend(request):
             pytest.fail("a C compiler is present but the C backend did not build")
         pytest.skip("no C compiler")
     yield request.param
-    K.use_backend("numpy")
 
 
 @pytest.hookimpl(tryfirst=True)

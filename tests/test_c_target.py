@@ -1003,6 +1003,7 @@ def test_hard_book_kernels_equal_the_package_kernels(tmp_path):
     from rigidsym import kernels as K
     from rigidsym.cli import main
 
+    assert K.use_backend("c") == "c"  # the package's bits are the C backend's bits
     out = tmp_path / "k"
     args = [a for n in HARD_KERNELS for a in ("--kernel", n)]
     assert main(["generate", "--target", "c", *args, "--out", str(out)]) == 0
