@@ -2,10 +2,11 @@
 
 The default run compares generated/inputs.json (the digests of every input file of the
 generator and of every file it wrote) with the tree: seconds instead of a generation of 70 to
-360 s of CPU. The `slow` tests generate again in-process and compare byte for byte
-(the `--check` logic), regenerate in a fresh process under another PYTHONHASHSEED to prove the
-output does not depend on set iteration order, and check that every module that generation
-imported is among the recorded inputs (the digest rule misses nothing the generator reads).
+360 s of CPU. The `slow` tests generate again, twice: in-process through `rigidsym generate --check`
+(byte for byte, exit code 0), and in a fresh process under a fixed PYTHONHASHSEED, whose
+files must be generated/'s bytes (the output does not depend on set iteration order) and
+whose imported modules must all be among the recorded inputs (the digest rule misses nothing
+the generator reads).
 """
 
 from __future__ import annotations
@@ -16,28 +17,19 @@ import shutil
 import subprocess
 import sys
 from dataclasses import dataclass
-from functools import cache
 from pathlib import Path
 
 import pytest
 
 import rigidsym
 from rigidsym.codegen import inputs
-from rigidsym.codegen.generator import TEMPLATES, check, default_out_dir, generate, write
+from rigidsym.codegen.files import files_on_disk
+from rigidsym.codegen.generator import TEMPLATES, check, default_out_dir, write
 
 ROOT = Path(__file__).resolve().parents[1]
 
-# one worker generates once for the whole module (--dist loadgroup): a generation is 70 to
-# 100 s of CPU since the VJP/JVP programs and the removable-singularity pass joined it, and
-# each worker that ran one of these tests paid for its own
+# the module on one worker (--dist loadgroup): the group whose mark the first test checks
 pytestmark = pytest.mark.xdist_group("generated_fresh")
-
-
-@cache
-def _generated():
-    # one in-process generation shared by the tests below (it is deterministic; the
-    # subprocess test regenerates independently)
-    return generate()
 
 
 def test_loadgroup_keeps_this_module_on_one_worker(request):
@@ -99,13 +91,6 @@ def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
     assert not any("_ckernels" in lab for lab in labels), sorted(labels)
 
 
-@pytest.mark.slow  # a whole generation (70 to 360 s of CPU); the default run compares digests
-def test_generated_is_fresh():
-    res = _generated()
-    diff = check(res)
-    assert diff == "", "generated/ is stale; run `rigidsym generate`:\n" + diff[:4000]
-
-
 @dataclass
 class _Files:
     files: dict[str, str]
@@ -140,10 +125,20 @@ def test_no_timestamps_or_absolute_paths():
         assert "/home/" not in text and "/root/" not in text, rel
 
 
-@pytest.mark.slow  # a second, independent generation in a subprocess
+def same_tree(a: Path, b: Path) -> list[str]:
+    """The generator's files that differ between two generated folders (missing on one side,
+    or other bytes; the folders other commands own left out, as `generate --check` does)."""
+    fa, fb = files_on_disk(a), files_on_disk(b)
+    return sorted({*fa.keys() ^ fb.keys(),
+                   *(k for k in fa.keys() & fb.keys() if fa[k].read_bytes() != fb[k].read_bytes())})
+
+
+@pytest.mark.slow  # a whole generation (70 to 360 s of CPU); the default run compares digests
 def test_independent_of_hash_seed(tmp_path):
-    """The same files under another PYTHONHASHSEED, and every module the generation imported
-    is among the inputs whose digests generated/inputs.json records."""
+    """A generation in a fresh process under a fixed PYTHONHASHSEED writes generated/ byte for
+    byte (generated/ was written under another seed: the output does not depend on set
+    iteration order), and every module the generation imported is among the inputs whose
+    digests generated/inputs.json records."""
     # one process (RIGIDSYM_GENERATE_JOBS=1): the modules its workers import are its own
     env = dict(os.environ, PYTHONHASHSEED="4242", RIGIDSYM_GENERATE_JOBS="1")
     code = ("import sys, json; from rigidsym.codegen.generator import generate, write; "
@@ -152,7 +147,8 @@ def test_independent_of_hash_seed(tmp_path):
             "if n.startswith('rigidsym') and getattr(m, '__file__', None))))")
     p = subprocess.run([sys.executable, "-c", code, str(tmp_path / "out")], check=True,
                        env=env, cwd=tmp_path, capture_output=True, text=True)
-    assert check(_generated(), tmp_path / "out") == ""
+    differ = same_tree(tmp_path / "out", ROOT / "generated")
+    assert differ == [], f"generated/ is stale; run `rigidsym generate`: {differ[:40]}"
     assert default_out_dir() == ROOT / "generated"
     recorded = {p.resolve() for p in inputs.input_files()}
     generated = (ROOT / "generated").resolve()
@@ -162,10 +158,12 @@ def test_independent_of_hash_seed(tmp_path):
     assert missed == [], f"modules the generator imports but inputs.json does not hash: {missed}"
 
 
-@pytest.mark.slow  # the CLI generates again; test_generated_is_fresh checks the same tree
+@pytest.mark.slow  # the CLI generates in this process and compares byte for byte
 def test_cli_check_exit_code(capsys):
+    """`rigidsym generate --check` on this checkout: generated/ is what a generation writes
+    (exit 0; a stale tree prints its diff and exits 1)."""
     from rigidsym.cli import main
-    assert main(["generate", "--check"]) == 0
+    assert main(["generate", "--check"]) == 0, capsys.readouterr().out[-4000:]
 
 
 def test_cli_check_without_generated_folder(tmp_path, capsys):
