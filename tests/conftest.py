@@ -12,6 +12,7 @@ import tempfile
 from pathlib import Path
 
 import _profile
+import _shared_run
 import pytest
 from _procguard import _no_process_outlives_its_test, become_subreaper  # noqa: F401
 from hypothesis import HealthCheck, settings
@@ -96,6 +97,14 @@ def chapter_text():
         pytest.skip(f"the chapter is not beside the checkout ({CHAPTER}); the project never "
                     "ships it")
     return CHAPTER.read_text(encoding="utf-8")
+
+
+@pytest.fixture(scope="session")
+def chapter_certificates(tmp_path_factory, worker_id):
+    """Every chapter id's certificate of its recorded verdict, built once per run (about
+    90 s of CPU) and shared by the workers (``tests/_shared_run.py``)."""
+    return _shared_run.shared_json(_shared_run.run_folder(tmp_path_factory, worker_id),
+                                   "chapter_certificates", _shared_run.chapter_certificates)
 
 
 @pytest.fixture(autouse=True)

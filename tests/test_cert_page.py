@@ -281,15 +281,16 @@ def test_coq_file_names_are_module_names():
 
 # ------------------------------------------------------------------ slow: the chapter
 @pytest.fixture(scope="module")
-def chapter(tmp_path_factory):
+def chapter(tmp_path_factory, chapter_certificates):
     if not BOOK.exists():
         pytest.skip("the book is never shipped")
-    from rigidsym.registry.declarations import REGISTRY, load_all
+    from rigidsym.checking.certifying.certificates import certificate_file, write_manifest
 
-    load_all()
-    ids = [i for i in REGISTRY if ":" not in i]   # the chapter's ids, not other books'
     folder = tmp_path_factory.mktemp("chapter")
-    return folder, certs_for(folder, ids)
+    for i, c in chapter_certificates.items():
+        (folder / certificate_file(i)).write_text(json.dumps(c, indent=1) + "\n")
+    write_manifest(folder, [certificate_file(i) for i in chapter_certificates], str(BOOK))
+    return folder, {i: json.loads(json.dumps(c)) for i, c in chapter_certificates.items()}
 
 
 @pytest.mark.slow
