@@ -274,9 +274,12 @@ def test_wheel_ships_the_torch_and_jax_programs(wheel):
 
 
 def test_wheel_ships_the_latex_reader(wheel):
-    """the grammar, the glyph table and the per-id notes are package data."""
+    """the grammar, the glyph table, the per-id notes and every book's notation table
+    (``--notation NAME``) are package data."""
+    from rigidsym.latex.notations import NOTATIONS
+
     with zipfile.ZipFile(wheel) as z:
         names = set(z.namelist())
     for f in ("grammar.lark", "glyphs.csv", "notes.json", "transformer/chapter.py",
-              "transcription.py"):
+              "transcription.py", *(f"notations/{n}.txt" for n in NOTATIONS)):
         assert f"rigidsym/latex/{f}" in names, f
