@@ -78,9 +78,9 @@ class BuildKernels(build_ext):
         drv = _driver()
         cfg = drv.configure()
         if self.editable_mode or self.inplace:
-            # an editable install runs on this machine only: the paths its CPU runs (issue
-            # 54: the x86-64-v2 objects were 38 % of a newcomer's install); the wheel keeps
-            # every path
+            # an editable install runs on this machine only: the paths its CPU runs (the
+            # x86-64-v2 objects an AVX2 machine never runs are 38 % of all objects); the
+            # wheel keeps every path
             cfg = dataclasses.replace(cfg, paths=drv._paths.host_paths(cfg.paths))
         out = Path(self.get_ext_fullpath(ext.name))
         n = drv.object_count(GENERATED / "c", cfg)
