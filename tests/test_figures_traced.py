@@ -1,0 +1,203 @@
+"""Every measured figure the pages quote comes from a committed record.
+
+A figure in README.md or docs/*.md is followed by an invisible marker naming its source,
+``251.5 s<!-- fig: test_command-merged.json wall_s -->``: a JSON record under
+benchmarks/results/ that names its machine, and a path into it (docs/testing.md, "Where a
+figure comes from"). The figure must read as the record's value does, and a time figure
+with no marker fails unless it is listed below as no measurement.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+RESULTS = ROOT / "benchmarks" / "results"
+#: generated API reference, not prose
+NOT_PAGES = {"api.md", "_api_source.md"}
+
+MARKER = re.compile(r"<!--\s*fig:(?P<body>.*?)-->", re.S)
+#: FILE PATH [OP]...: PATH is dotted keys, [N] indices, ["quoted key"] and [*] (every item);
+#: OP is min, max or a format spec (no "|": a marker may sit in a table cell)
+STEP = re.compile(r'\.?(?:\[(\d+|\*|"[^"]*")\]|([^.\[\]"\s]+))')
+BODY = re.compile(r'\s*(?P<file>[\w.-]+\.json)\s+(?P<path>(?:\.?(?:\[(?:\d+|\*|"[^"]*")\]'
+                  r'|[^.\[\]"\s]+))+)(?P<ops>(?:\s+\S+)*)\s*$')
+#: the figure right before a marker: a number, optionally its unit
+FIGURE = re.compile(r"(-?\d+(?:\.\d+)?)(?:\s?(?:s|ms|us|µs|ns|min|%|x|×))?$")
+
+#: a time figure: a number (or range of two) and a unit of time
+TIME = re.compile(r"(?<![\w.^/-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.\d+)?)?"
+                  r"\s?(?:s|ms|us|µs|ns|min|minutes?|seconds?|hours?)\b(?!\.f\.|\^)")
+
+#: time figures that measure nothing: page, the text around the figure, and why
+NOT_MEASURED = [
+    ("docs/accuracy.md", "= 2 s (c E", "algebra: s is sin(phi/2)"),
+    ("docs/adding-a-kernel.md", "(SIGINT after 150 s)", "the interrupt's time-out, a setting"),
+    ("docs/testing.md", "alive 5 s after it ends", "the process guard's grace, a setting"),
+    ("docs/verify.md", "of 5 s stays as a safety net", "the CPU-time alarm, a setting"),
+]
+
+#: pages whose time figures are still to be traced or rewritten, and how many there are: a
+#: new untraced figure on them fails as on any page, and one traced lowers the count
+NOT_YET_SWEPT = {
+    "docs/accuracy.md": 9,
+    "docs/audit.md": 9,
+    "docs/c-api.md": 7,
+    "docs/certificates.md": 92,
+    "docs/check-latex.md": 16,
+    "docs/commands.md": 2,
+    "docs/differentiable-kernels.md": 3,
+    "docs/exams.md": 24,
+    "docs/exercise-data.md": 3,
+    "docs/kernels-speed.md": 7,
+    "docs/kernels.md": 4,
+    "docs/lie-groups.md": 6,
+    "docs/repairs.md": 14,
+    "docs/rigid-motions.md": 1,
+    "docs/where-it-stands.md": 21,
+}
+
+
+def pages() -> list[Path]:
+    return [ROOT / "README.md"] + sorted(p for p in (ROOT / "docs").glob("*.md")
+                                         if p.name not in NOT_PAGES)
+
+
+def _name(page: Path) -> str:
+    return page.relative_to(ROOT).as_posix()
+
+
+def _line(text: str, pos: int) -> int:
+    return text.count("\n", 0, pos) + 1
+
+
+def _follow(value, path: str):
+    pos = 0
+    steps = []
+    while pos < len(path):
+        m = STEP.match(path, pos)
+        if not m or m.end() == pos:
+            raise ValueError(f"bad path {path!r} at {path[pos:]!r}")
+        steps.append(m.group(1) if m.group(1) is not None else m.group(2))
+        pos = m.end()
+    values = [value]
+    for step in steps:
+        if step == "*":
+            values = [v for value in values for v in
+                      (value.values() if isinstance(value, dict) else value)]
+        elif step.isdigit() and isinstance(values[0], list):
+            values = [value[int(step)] for value in values]
+        else:
+            key = step[1:-1] if step.startswith('"') else step
+            values = [value[key] for value in values]
+    return values if "*" in steps else values[0]
+
+
+def _apply(value, ops: str) -> str:
+    for op in ops.split():
+        if op in ("min", "max"):
+            value = (min if op == "min" else max)(value)
+        else:
+            return format(value, op)
+    if isinstance(value, list):
+        raise ValueError("a [*] path needs min or max")
+    return str(value)
+
+
+def _names_its_machine(record) -> bool:
+    host = record.get("host") or record.get("machine") or {}
+    return bool(host.get("cpu") or host.get("cpu model")) and bool(host.get("cores"))
+
+
+def markers():
+    for page in pages():
+        text = page.read_text(encoding="utf-8")
+        for m in MARKER.finditer(text):
+            yield page, text, m
+
+
+def _check(page: Path, text: str, m: re.Match) -> str | None:
+    where = f"{_name(page)}:{_line(text, m.start())}"
+    body = BODY.match(m.group("body"))
+    if not body:
+        return f"{where}: unparsable marker {m.group(0)!r}"
+    source = RESULTS / body["file"]
+    if not source.is_file():
+        return f"{where}: no record benchmarks/results/{body['file']}"
+    record = json.loads(source.read_text(encoding="utf-8"))
+    if not _names_its_machine(record):
+        return f"{where}: {body['file']} names no machine (host or machine: cpu, cores)"
+    try:
+        want = _apply(_follow(record, body["path"]), body["ops"])
+    except (KeyError, IndexError, TypeError, ValueError) as e:
+        return f"{where}: {body['file']} {body['path']}{body['ops']}: {e!r}"
+    got = FIGURE.search(text[max(0, m.start() - 40):m.start()])
+    if not got or got.group(1) != want:
+        return (f"{where}: the page says {got.group(0) if got else 'no figure'!r} before the "
+                f"marker, {body['file']} {body['path']}{body['ops']} gives {want!r}")
+    return None
+
+
+def test_every_marked_figure_is_its_records_value():
+    wrong = [e for e in (_check(*found) for found in markers()) if e]
+    assert not wrong, "\n".join(wrong)
+
+
+def test_the_pages_trace_their_figures():
+    # so that deleting every marker cannot pass: at least those of the pages below
+    names = {_name(page) for page, _, _ in markers()}
+    assert len(list(markers())) >= 30
+    assert {"docs/adding-a-kernel.md", "docs/verify.md", "docs/testing.md"} <= names, names
+
+
+def test_no_time_figure_is_untraced():
+    untraced = []
+    for page in pages():
+        text = page.read_text(encoding="utf-8")
+        allowed = [(around, why) for p, around, why in NOT_MEASURED if p == _name(page)]
+        found = []
+        for m in TIME.finditer(text):
+            if text.startswith("<!--", m.end()) or MARKER.match(text, m.end()):
+                continue
+            if any(around in text[m.start() - 40:m.end() + 40] and m.group(0) in around
+                   for around, _ in allowed):
+                continue
+            line = text.splitlines()[_line(text, m.start()) - 1].strip()
+            found.append(f"{_name(page)}:{_line(text, m.start())}: {m.group(0)!r} in "
+                         f"{line[:100]!r}")
+        if len(found) != NOT_YET_SWEPT.get(_name(page), 0):
+            untraced.append(f"{_name(page)}: {len(found)} untraced, NOT_YET_SWEPT says "
+                            f"{NOT_YET_SWEPT.get(_name(page), 0)}")
+            untraced += found
+    assert not untraced, ("time figures with no record (a <!-- fig: --> marker), or list "
+                          "them in NOT_MEASURED with why:\n" + "\n".join(untraced))
+
+
+def test_every_allowance_still_applies():
+    stale = [(p, around) for p, around, _ in NOT_MEASURED
+             if around not in (ROOT / p).read_text(encoding="utf-8")]
+    assert not stale, stale
+
+
+@pytest.mark.parametrize(("text", "error"), [
+    ("1 s<!-- fig: nowhere.json wall_s -->", "no record"),
+    ("1 s<!-- fig: test_command-merged.json wall_ss -->", "KeyError"),
+    ("1 s<!-- fig: test_command-merged.json -->", "unparsable"),
+    ("1 s<!-- fig: test_command-merged.json wall_s -->", "gives '251.5'"),
+])
+def test_a_wrong_marker_fails_naming_page_and_line(text, error):
+    page = ROOT / "docs" / "x.md"
+    m = MARKER.search("\n" + text)
+    found = _check(page, "\n" + text, m)
+    assert found and found.startswith("docs/x.md:2: ") and error in found, found
+
+
+def test_a_right_marker_passes():
+    text = "all 251.5 s<!-- fig: test_command-merged.json wall_s --> and 92.6<!-- fig: " \
+           "test_command-merged.json parts[0].wall_s .1f -->"
+    assert [_check(ROOT / "README.md", text, m) for m in MARKER.finditer(text)] == [None, None]
+    assert not [m for m in TIME.finditer(text) if not MARKER.match(text, m.end())]
