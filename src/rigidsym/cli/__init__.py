@@ -74,7 +74,7 @@ NumPy and C kernels. Each command has its own help: rigidsym COMMAND --help."""
 EPILOG = """\
 examples, one per job:
   rigidsym show 3.57                  the chapter: why (3.57) does not hold as printed
-                                      (rigidsym verify checks all 181 ids, ~40 s)
+                                      (rigidsym verify checks all 181 ids)
   rigidsym verify --module my_eqs.py  your own equations (see examples/ in the source)
   rigidsym check --latex '\\mathbf{Q}^T\\mathbf{Q} = \\mathbf{1}' --let '\\mathbf{Q}: rotation'
                                       an equation in LaTeX, its symbols declared

@@ -14,7 +14,7 @@ __all__ = ["add_arguments", "run", "default_report_dir"]
 HELP = "write the report: HTML, Markdown, JSON, the exercises"
 EXAMPLES = """\
   rigidsym report                          into generated/report/ (a source tree) or
-                                           ./rigidsym-report/ (~1 min 15 s on 2 cores)
+                                           ./rigidsym-report/ (timed by benchmarks/verify.py)
   rigidsym report --module my_eqs.py --out notes/   your own equations' report
   rigidsym report --certificates certs     each entry says how its verdict is certified
                                            and whether certcheck re-checked it"""
@@ -35,8 +35,7 @@ def add_arguments(r) -> None:
     r.add_argument("--certificates", metavar="DIR", default=None,
                    help="write each verdict's certificate into DIR, re-check them with "
                         "certcheck, and say in the Markdown and HTML how each verdict is "
-                        "certified (docs/certificates.md; default: none, ~2 min more for the "
-                        "chapter)")
+                        "certified (docs/certificates.md; default: none)")
     r.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + ": report its ids into --out as <module>.{md,json,html} "
                                       "(default: none, the chapter)")

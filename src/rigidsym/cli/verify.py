@@ -22,7 +22,7 @@ __all__ = ["add_arguments", "run"]
 
 HELP = "decide the chapter's equations (or yours, with --module)"
 EXAMPLES = """\
-  rigidsym verify                         all 181 ids of the chapter (~40 s on 2 cores)
+  rigidsym verify                         all 181 ids of the chapter (timed by benchmarks/verify.py)
   rigidsym verify 3.96 --section 3.8      every part of (3.96), and section 3.8
   rigidsym verify --module my_eqs.py      your own equations
   rigidsym verify --format json > v.json  the schema-2 document on stdout
