@@ -49,16 +49,11 @@ NOT_YET_SWEPT = {
     "docs/c-api.md": 7,
     "docs/certificates.md": 92,
     "docs/check-latex.md": 16,
-    "docs/commands.md": 2,
-    "docs/differentiable-kernels.md": 3,
     "docs/exams.md": 24,
-    "docs/exercise-data.md": 3,
     "docs/kernels-speed.md": 7,
     "docs/kernels.md": 4,
     "docs/lie-groups.md": 6,
     "docs/repairs.md": 14,
-    "docs/rigid-motions.md": 1,
-    "docs/where-it-stands.md": 21,
 }
 
 
