@@ -51,7 +51,6 @@ NOT_YET_SWEPT = {
     "docs/check-latex.md": 16,
     "docs/exams.md": 24,
     "docs/kernels-speed.md": 7,
-    "docs/kernels.md": 4,
     "docs/lie-groups.md": 6,
     "docs/repairs.md": 14,
 }
