@@ -5,7 +5,7 @@ their scope; certcheck's comparison), each mutant judged by a fixed selection of
 files that exercise its group (:data:`GROUPS`).
 
     pip install -e ".[test,mutation]"
-    nice -n 15 python benchmarks/mutation_sample.py [--limit N] [--resume] [--all-marks]
+    nice -n 15 python benchmarks/mutation_sample.py [--limit N] [--group G] [--resume] [--all-marks]
         [--tests-from DIR] [--seed 2026] [--per-group 50] [--out FILE]
     nice -n 15 python benchmarks/mutation_sample.py --tests-from ../repriced --out AFTER.json
 
@@ -415,6 +415,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--per-group", type=int, default=PER_GROUP,
                    help=f"mutants drawn from each module group (default {PER_GROUP})")
     p.add_argument("--limit", type=int, default=None, help="judge the first N of the draw")
+    p.add_argument("--group", choices=sorted(GROUPS), default=None,
+                   help="judge only this group's mutants of the draw (the same mutants as in "
+                        "a run of every group), e.g. after its tests changed")
     p.add_argument("--resume", action="store_true",
                    help="keep the mutants already judged in --out, judge the rest")
     p.add_argument("--all-marks", action="store_true",
@@ -439,6 +442,8 @@ def main(argv: list[str] | None = None) -> int:
                 print(f"{g:14} {outcome:7} {secs:6.1f} s  {by}", flush=True)
         return 0
     order, sizes = draw(args.seed, args.per_group)
+    if args.group is not None:
+        order = [m for m in order if m["group"] == args.group]
     if args.limit is not None:
         order = order[:args.limit]
     if args.list:
@@ -462,7 +467,7 @@ def main(argv: list[str] | None = None) -> int:
                   "pytest_config": _pytest_config(judge),
                   "dirty": bool(_git(judge, "status", "--porcelain", "--", "tests",
                                      "pyproject.toml"))},
-        "seed": args.seed, "per_group": args.per_group,
+        "seed": args.seed, "per_group": args.per_group, "only_group": args.group,
         "marks": "quick and slow (-m '')" if marks else "default (quick run)",
         "command": " ".join(["python", *PYTEST, *(["-m", "''"] if marks else []),
                              "<the group's tests>"]),
@@ -476,7 +481,7 @@ def main(argv: list[str] | None = None) -> int:
     done: dict[str, dict] = {}
     if args.resume and args.out.exists():
         old = json.loads(args.out.read_text(encoding="utf-8"))
-        same = ("seed", "per_group", "marks")
+        same = ("seed", "per_group", "marks", "only_group")
         if any(old.get(k) != doc[k] for k in same) \
                 or old["source"]["sources_sha256"] != doc["source"]["sources_sha256"] \
                 or any(old["judge"].get(k) != doc["judge"][k]

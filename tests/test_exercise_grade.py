@@ -215,3 +215,104 @@ def test_a_unit_that_does_not_fit_is_refused_by_name(ex311, ex34):
     assert g.correct is False and "'kg' is not a unit of m^3" in g.detail
     q = _slip(ex34, "Q_1_2", "1,0,0;0,1,0;0,0,1 mm")
     assert q.correct is False and "no single unit" in q.detail
+
+
+# ---------------------------------------------------------------- what a grader must not miss
+def test_rows_of_a_matrix_exchanged_are_a_swap(ex34):
+    """Two rows of the rotation exchanged (a student's misplaced row) is named a swap of
+    rows, not a wrong answer: no single-entry edit gives it."""
+    Q = ex34.answers["Q_1_2"]
+    P = Q.copy()
+    P.row_swap(0, 2)
+    g = _slip(ex34, "Q_1_2", _floats(P))
+    assert g.correct is False and g.slip == "swap" and "rows 0 and 2" in g.detail
+
+
+@pytest.mark.parametrize("factor", [10**-6, 10**-4, 10**-3, 10**-2, 10**2, 10**3, 10**4,
+                                    10**6], ids=lambda f: f"{f:g}")
+def test_a_prefix_either_way_is_a_unit_slip(ex311, factor):
+    """The inertia per kg in m^2 written with mm^2 (10^6), cm^2 (10^4), and the conversion
+    done the wrong way round (10^-6, 10^-4), or a length's mm or cm (10^3, 10^2, and
+    inverted): each a unit slip."""
+    I_kg = ex311.answers["I_C_per_kg_m2"]
+    assert _slip(ex311, "I_C_per_kg_m2", _floats(I_kg * sp.Rational(factor))).slip == "unit"
+
+
+def test_a_slip_along_the_way_is_named_only_by_the_replay(ex319):
+    """n_2 computed with Q where the solution reads Q^T (a slip in a step, not an edit of
+    the final answer): named, as made along the way, when the grader replays the solution;
+    not a known slip without the replay; and among the values STACK's tree compares with."""
+    d, f, n, Q = (sp.Matrix(ex319.data[k]) for k in ("d", "f_S", "n_S", "Q"))
+    along = _floats(Q * (n - d.cross(f)))
+    g = _named(ex.grade(ex319, {"n_2": along}), "n_2")
+    assert g.correct is False and g.slip is not None and "along the way" in g.note
+    from rigidsym.course.grading import grade, slip_values
+
+    assert _named(grade(ex319, {"n_2": along}, replay=False), "n_2").slip is None
+
+    key = np.array(_floats(ex319.answers["n_2"]), dtype=float)
+    values = slip_values(ex319, "n_2", key.reshape(-1, 1) if key.ndim == 1 else key)
+    assert any(np.allclose(np.ravel(v), np.ravel(along), rtol=1e-12) for _, v in values)
+
+
+def test_significant_figures_of_a_rounded_answer():
+    """An answer rounded to N significant figures (N = 1, 2, 3) reads as rounded to N, the
+    fewest that reproduce it; the key itself or another value reads 0."""
+    from rigidsym.course.grading import rounded_figures
+
+    right = np.array([1.234567, -27.18281, 0.0031416])
+    for n in (1, 2, 3):
+        given = np.array([float(f"{x:.{n - 1}e}") for x in right])
+        assert rounded_figures(given, right) == n, (n, given)
+    assert rounded_figures(right * 1.01, right) == 0
+
+
+@pytest.mark.parametrize(("text", "read"), [("1,5", "1.5"), ("-0,25", "-0.25"),
+                                            ("1.234", "1.234"), ("1234567.5", "1234567.5")])
+def test_a_decimal_comma_reads_as_a_point(text, read):
+    from rigidsym.course.grading import read_decimal_comma
+
+    assert read_decimal_comma(text, (), "phi") == read
+
+
+@pytest.mark.parametrize("text", ["1,234", "-12,500"])
+def test_one_comma_and_three_digits_is_left_to_the_instructor(text):
+    """1,234 reads two ways (a decimal comma or a thousands separator): ambiguous, not
+    refused as thousands separators and not read as either number."""
+    from rigidsym.course.grading import AmbiguousNumber, read_decimal_comma
+
+    with pytest.raises(AmbiguousNumber, match="left to the instructor"):
+        read_decimal_comma(text, (), "phi")
+
+
+@pytest.mark.parametrize("text", ["1,234,567", "12 345.6", "1,234.5"])
+def test_thousands_separators_are_refused_by_name(text):
+    from rigidsym.course.grading import AmbiguousNumber, read_decimal_comma
+
+    with pytest.raises(ValueError, match="thousands separators") as info:
+        read_decimal_comma(text, (), "phi")
+    assert not isinstance(info.value, AmbiguousNumber)
+
+
+@pytest.fixture(scope="module")
+def ex310():
+    s = ex.solve("3.10")        # the angles symbolic: W and det W are expressions
+    assert s.status == "solved" and s.answers["det_W"].free_symbols
+    return s
+
+
+def test_an_expression_answer_is_graded_at_generic_values(ex310):
+    """The key's expressions, written as text by the student (a matrix as nested lists, or
+    as 9 entries in a row): right; a truth or an answer of another size: wrong and said
+    why, never an exception."""
+    W, det = ex310.answers["W"], ex310.answers["det_W"]
+    rows = [[str(x) for x in W.row(i)] for i in range(W.rows)]
+    assert _named(ex.grade(ex310, {"det_W": str(det)}), "det_W").correct is True
+    assert _named(ex.grade(ex310, {"W": rows}), "W").correct is True
+    assert _named(ex.grade(ex310, {"W": [x for r in rows for x in r]}), "W").correct is True
+    truth = _named(ex.grade(ex310, {"det_W": True}), "det_W")
+    assert truth.correct is False and "truth" in truth.detail
+    short = _named(ex.grade(ex310, {"W": rows[0]}), "W")
+    assert short.correct is False
+    columns = [list(c) for c in zip(*rows, strict=True)]
+    assert _named(ex.grade(ex310, {"W": columns}), "W").slip == "transpose"
