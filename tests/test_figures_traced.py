@@ -50,7 +50,6 @@ NOT_YET_SWEPT = {
     "docs/certificates.md": 92,
     "docs/check-latex.md": 16,
     "docs/exams.md": 24,
-    "docs/repairs.md": 14,
 }
 
 
