@@ -18,6 +18,7 @@ from _procguard import _no_process_outlives_its_test, become_subreaper  # noqa: 
 from hypothesis import HealthCheck, settings
 
 from rigidsym import kernels as K
+from rigidsym.kernels.runtime.state import STATE as KSTATE
 from rigidsym.registry.declarations import load_all
 
 _CREATED: list[str] = []
@@ -112,10 +113,11 @@ def _backend_kept():
     """Every test ends on the backend it started on: a test that switches the global backend
     and does not switch back would otherwise decide which backend later tests on the same
     worker call (which kernels, which bits), so a result would depend on the test order."""
-    before = K.backend()
+    # read, not selected: K.backend() would load (or build) the C backend for every test
+    before = KSTATE["backend"]
     yield
-    if K.backend() != before:
-        K.use_backend(before)
+    if KSTATE["backend"] != before:
+        K.use_backend(before or "c")    # none selected yet: the default, C
 
 
 @pytest.fixture(params=["numpy", "c"])
