@@ -96,3 +96,32 @@ def test_the_second_semantics_multiplies_the_units_by_its_own_table():
         assert V.quaternion_product(i_j, j_j) == -k_j
         assert V.quaternion_conjugate(mp.matrix([1, 2, 3, 4])) == mp.matrix([-1, -2, -3, 4])
     assert V.quaternion_conjugate(mp.matrix([1, 2, 3, 4])) == mp.matrix([1, -2, -3, -4])
+
+
+#: Trawny & Roumeliotis' (2005) (4) cross-product matrix, written out by hand
+FLOOR = (r"\lfloor\boldsymbol\omega\times\rfloor = \begin{bmatrix} 0 & -\omega_3 & \omega_2 "
+         r"\\ \omega_3 & 0 & -\omega_1 \\ -\omega_2 & \omega_1 & 0 \end{bmatrix}")
+OMEGA_V = [r"\boldsymbol\omega: vector", r"\mathbf{v}: vector"]
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    (FLOOR, OMEGA_V[:1], "verified"),
+    (FLOOR.replace(r"0 & -\omega_1", r"0 & \omega_1"), OMEGA_V[:1], "does-not-hold"),
+    (r"\lfloor\boldsymbol\omega\times\rfloor\mathbf{v} = \boldsymbol\omega\times\mathbf{v}",
+     OMEGA_V, "verified"),
+    (r"\left\lfloor\boldsymbol\omega\times\right\rfloor\mathbf{v} = \mathbf{v}\times"
+     r"\boldsymbol\omega", OMEGA_V, "does-not-hold"),
+])
+def test_trawnys_floor_brackets_are_the_cross_product_matrix(latex, lets, verdict):
+    r = _check(latex, lets)
+    assert r.verdict == verdict
+    assert any(m.startswith(r"\lfloor") and "cross-product matrix" in m for m in r.model)
+    if verdict == "does-not-hold":
+        assert r.counterexample
+
+
+def test_floor_brackets_without_a_cross_stay_unknown():
+    from rigidsym.latex import LatexError
+
+    with pytest.raises(LatexError, match="lfloor"):
+        _check(r"\lfloor\theta\rfloor = \theta", [r"\theta: angle"])
