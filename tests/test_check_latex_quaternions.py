@@ -125,3 +125,56 @@ def test_floor_brackets_without_a_cross_stay_unknown():
 
     with pytest.raises(LatexError, match="lfloor"):
         _check(r"\lfloor\theta\rfloor = \theta", [r"\theta: angle"])
+
+
+def _bm(rows: str) -> str:
+    return r"\begin{bmatrix} " + rows + r" \end{bmatrix}"
+
+
+#: Solà's (2017) (18), (19): [q]_L and [q]_R, scalar first, written out by hand
+SOLA_QL = _bm(r"q_0 & -q_1 & -q_2 & -q_3 \\ q_1 & q_0 & -q_3 & q_2 \\ q_2 & q_3 & q_0 & -q_1"
+              r" \\ q_3 & -q_2 & q_1 & q_0")
+SOLA_QR = _bm(r"q_0 & -q_1 & -q_2 & -q_3 \\ q_1 & q_0 & q_3 & -q_2 \\ q_2 & -q_3 & q_0 & q_1"
+              r" \\ q_3 & q_2 & -q_1 & q_0")
+#: Trawny & Roumeliotis' (2005) L(q) and R(p), scalar last, written out by hand
+TRAWNY_QL = _bm(r"q_4 & q_3 & -q_2 & q_1 \\ -q_3 & q_4 & q_1 & q_2 \\ q_2 & -q_1 & q_4 & q_3"
+                r" \\ -q_1 & -q_2 & -q_3 & q_4")
+TRAWNY_PR = _bm(r"p_4 & -p_3 & p_2 & p_1 \\ p_3 & p_4 & -p_1 & p_2 \\ -p_2 & p_1 & p_4 & p_3"
+                r" \\ -p_1 & -p_2 & -p_3 & p_4")
+
+
+@pytest.mark.parametrize("latex, model, convention, verdict", [
+    (r"[\mathbf{q}]_L\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"[\mathbf{q}]_L = " + SOLA_QL, HAM, "verified"),
+    (r"[\mathbf{q}]_L\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"[\mathbf{q}]_L = " + SOLA_QL, JPL, "does-not-hold"),
+    (r"[\mathbf q]_{L}\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",  # one sign slipped
+     r"[\mathbf{q}]_L = " + SOLA_QL.replace("q_0 & -q_3 & q_2", "q_0 & q_3 & q_2"), HAM,
+     "does-not-hold"),
+    (r"\mathbf{p}\otimes\mathbf{q} = [\mathbf{q}]_R\mathbf{p}",
+     r"[\mathbf{q}]_R = " + SOLA_QR, HAM, "verified"),
+    (r"\mathbf{p}\otimes\mathbf{q} = [\mathbf{q}]_R\mathbf{p}",
+     r"[\mathbf{q}]_R = " + SOLA_QR, JPL, "does-not-hold"),
+    (r"\mathbf{q}\otimes\mathbf{p} = [\mathbf{q}]_R\mathbf{p}",  # the sides' order slipped
+     r"[\mathbf{q}]_R = " + SOLA_QR, HAM, "does-not-hold"),
+    (r"\mathcal{L}(\mathbf{q})\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"\mathcal{L}(\mathbf{q}) = " + TRAWNY_QL, JPL, "verified"),
+    (r"\mathcal{L}(\mathbf{q})\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"\mathcal{L}(\mathbf{q}) = " + TRAWNY_QL, HAM, "does-not-hold"),
+    (r"\mathbf{q}\otimes\mathbf{p} = \mathcal{R}(\mathbf{p})\mathbf{q}",
+     r"\mathcal{R}(\mathbf{p}) = " + TRAWNY_PR, JPL, "verified"),
+    (r"\mathbf{q}\otimes\mathbf{p} = \mathcal{R}(\mathbf{p})\mathbf{q}",
+     r"\mathcal{R}(\mathbf{p}) = " + TRAWNY_PR, HAM, "does-not-hold"),
+])
+def test_the_product_matrices_declared_by_name_hold_in_their_books_convention(
+        latex, model, convention, verdict):
+    r = _check(latex, PQ + [model, convention])
+    assert r.verdict == verdict
+    assert convention.split(": ")[1] in _said(r)[0]
+    if verdict == "does-not-hold":
+        assert r.counterexample
+
+
+def test_a_bracket_name_no_let_declares_is_refused_naming_it():
+    with pytest.raises(BadInput, match=r"\[\\mathbf\{q\}\]_\{L\}.*no --let declares"):
+        _check(r"[\mathbf{q}]_L\mathbf{p} = \mathbf{q}\otimes\mathbf{p}", PQ)
