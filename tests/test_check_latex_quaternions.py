@@ -178,3 +178,62 @@ def test_the_product_matrices_declared_by_name_hold_in_their_books_convention(
 def test_a_bracket_name_no_let_declares_is_refused_naming_it():
     with pytest.raises(BadInput, match=r"\[\\mathbf\{q\}\]_\{L\}.*no --let declares"):
         _check(r"[\mathbf{q}]_L\mathbf{p} = \mathbf{q}\otimes\mathbf{p}", PQ)
+
+
+#: the inverse written out by hand, the conjugate over the squared norm: scalar first
+#: (Solà (2017) (24)) and scalar last (Trawny & Roumeliotis (2005) (13))
+INV_FIRST = (r"\mathbf{q}^{-1} = \frac{1}{q_0^2 + q_1^2 + q_2^2 + q_3^2}\begin{bmatrix} q_0 "
+             r"\\ -q_1 \\ -q_2 \\ -q_3 \end{bmatrix}")
+INV_LAST = (r"\mathbf{q}^{-1} = \frac{1}{q_1^2 + q_2^2 + q_3^2 + q_4^2}\begin{bmatrix} -q_1 "
+            r"\\ -q_2 \\ -q_3 \\ q_4 \end{bmatrix}")
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    (INV_FIRST, [HAM], "verified"),
+    (INV_FIRST, [JPL], "does-not-hold"),
+    (INV_LAST, [JPL], "verified"),
+    (INV_LAST, [HAM], "does-not-hold"),
+    (INV_LAST.replace("q_3^2 + q_4^2}", "q_3^2 + q_4}"), [JPL], "does-not-hold"),
+    (INV_LAST, [], "does-not-hold"),  # Hamilton's unless declared
+])
+def test_the_inverse_of_a_quaternion_in_each_convention(latex, lets, verdict):
+    r = _check(latex, [r"\mathbf{q}: 4-vector"] + lets)
+    assert r.verdict == verdict
+    assert any(m.startswith("q^{-1}: the inverse of a quaternion") for m in r.model)
+    if verdict == "does-not-hold":
+        assert r.counterexample
+
+
+@pytest.mark.parametrize("kind, verdict", [("unit 4-vector", "verified"),
+                                           ("4-vector", "does-not-hold")])
+def test_the_inverse_is_the_conjugate_of_a_unit_quaternion_only(kind, verdict):
+    r = _check(r"\mathbf{q}^{-1} = \mathbf{q}^*", [rf"\mathbf{{q}}: {kind}"])
+    assert r.verdict == verdict
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\mathbf{q}^{-1}\otimes\mathbf{q}\otimes\mathbf{p} = \mathbf{p}", "verified"),
+    (r"(\mathbf{p}\otimes\mathbf{q})^{-1} = \mathbf{q}^{-1}\otimes\mathbf{p}^{-1}", "verified"),
+    (r"(\mathbf{p}\otimes\mathbf{q})^{-1} = \mathbf{p}^{-1}\otimes\mathbf{q}^{-1}",
+     "does-not-hold"),
+])
+@pytest.mark.parametrize("convention", [HAM, JPL])
+def test_the_inverse_laws_in_both_conventions(latex, verdict, convention):
+    r = _check(latex, PQ + [convention])
+    assert r.verdict == verdict
+
+
+def _notation(latex, lets, notation):
+    return rigidsym.check_latex(latex, let=lets, notation=notation, repairs=False)
+
+
+def test_the_jpl_notation_declares_jpls_product():
+    # Trawny's L(q), written by hand, scalar last: JPL's under the notation, Hamilton's without
+    lets = PQ + [r"\mathbf{L} = " + TRAWNY_QL]
+    latex = r"\mathbf{L}\mathbf{p} = \mathbf{q}\otimes\mathbf{p}"
+    r = _notation(latex, lets, "jpl")
+    assert r.verdict == "verified" and "JPL" in _said(r)[0]
+    r = _notation(latex, lets, None)
+    assert r.verdict == "does-not-hold" and r.counterexample
+    r = _notation(latex, lets + [HAM], "jpl")  # a --let wins over the table
+    assert r.verdict == "does-not-hold" and "Hamilton" in _said(r)[0]

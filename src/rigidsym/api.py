@@ -136,7 +136,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             (``rigidsym.latex.limit``).
         notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
             ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
-            ``"sola"``, ``"corke"``: ``rigidsym.latex.notations.NOTATIONS``): what its
+            ``"sola"``, ``"corke"``, ``"jpl"``: ``rigidsym.latex.notations.NOTATIONS``): what its
             symbols are (``\\hat\\omega`` a unit vector in Lynch-Park, the skew matrix of
             ``\\omega`` in Murray-Li-Sastry; ``c_{12}`` a cosine in Siciliano), below
             ``let``.
@@ -188,7 +188,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     _repair_args(repairs, repair_budget)
     _seconds(repair_seconds)
     let, order, said = tangent.split_setting(let, notation)
-    let, product, product_said = quaternions.split_setting(let)
+    let, product, product_said = quaternions.split_setting(let, notation)
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
     t0, seen = time.monotonic(), {}
     try:
