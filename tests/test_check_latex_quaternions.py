@@ -96,3 +96,144 @@ def test_the_second_semantics_multiplies_the_units_by_its_own_table():
         assert V.quaternion_product(i_j, j_j) == -k_j
         assert V.quaternion_conjugate(mp.matrix([1, 2, 3, 4])) == mp.matrix([-1, -2, -3, 4])
     assert V.quaternion_conjugate(mp.matrix([1, 2, 3, 4])) == mp.matrix([1, -2, -3, -4])
+
+
+#: Trawny & Roumeliotis' (2005) (4) cross-product matrix, written out by hand
+FLOOR = (r"\lfloor\boldsymbol\omega\times\rfloor = \begin{bmatrix} 0 & -\omega_3 & \omega_2 "
+         r"\\ \omega_3 & 0 & -\omega_1 \\ -\omega_2 & \omega_1 & 0 \end{bmatrix}")
+OMEGA_V = [r"\boldsymbol\omega: vector", r"\mathbf{v}: vector"]
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    (FLOOR, OMEGA_V[:1], "verified"),
+    (FLOOR.replace(r"0 & -\omega_1", r"0 & \omega_1"), OMEGA_V[:1], "does-not-hold"),
+    (r"\lfloor\boldsymbol\omega\times\rfloor\mathbf{v} = \boldsymbol\omega\times\mathbf{v}",
+     OMEGA_V, "verified"),
+    (r"\left\lfloor\boldsymbol\omega\times\right\rfloor\mathbf{v} = \mathbf{v}\times"
+     r"\boldsymbol\omega", OMEGA_V, "does-not-hold"),
+])
+def test_trawnys_floor_brackets_are_the_cross_product_matrix(latex, lets, verdict):
+    r = _check(latex, lets)
+    assert r.verdict == verdict
+    assert any(m.startswith(r"\lfloor") and "cross-product matrix" in m for m in r.model)
+    if verdict == "does-not-hold":
+        assert r.counterexample
+
+
+def test_floor_brackets_without_a_cross_stay_unknown():
+    from rigidsym.latex import LatexError
+
+    with pytest.raises(LatexError, match="lfloor"):
+        _check(r"\lfloor\theta\rfloor = \theta", [r"\theta: angle"])
+
+
+def _bm(rows: str) -> str:
+    return r"\begin{bmatrix} " + rows + r" \end{bmatrix}"
+
+
+#: Solà's (2017) (18), (19): [q]_L and [q]_R, scalar first, written out by hand
+SOLA_QL = _bm(r"q_0 & -q_1 & -q_2 & -q_3 \\ q_1 & q_0 & -q_3 & q_2 \\ q_2 & q_3 & q_0 & -q_1"
+              r" \\ q_3 & -q_2 & q_1 & q_0")
+SOLA_QR = _bm(r"q_0 & -q_1 & -q_2 & -q_3 \\ q_1 & q_0 & q_3 & -q_2 \\ q_2 & -q_3 & q_0 & q_1"
+              r" \\ q_3 & q_2 & -q_1 & q_0")
+#: Trawny & Roumeliotis' (2005) L(q) and R(p), scalar last, written out by hand
+TRAWNY_QL = _bm(r"q_4 & q_3 & -q_2 & q_1 \\ -q_3 & q_4 & q_1 & q_2 \\ q_2 & -q_1 & q_4 & q_3"
+                r" \\ -q_1 & -q_2 & -q_3 & q_4")
+TRAWNY_PR = _bm(r"p_4 & -p_3 & p_2 & p_1 \\ p_3 & p_4 & -p_1 & p_2 \\ -p_2 & p_1 & p_4 & p_3"
+                r" \\ -p_1 & -p_2 & -p_3 & p_4")
+
+
+@pytest.mark.parametrize("latex, model, convention, verdict", [
+    (r"[\mathbf{q}]_L\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"[\mathbf{q}]_L = " + SOLA_QL, HAM, "verified"),
+    (r"[\mathbf{q}]_L\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"[\mathbf{q}]_L = " + SOLA_QL, JPL, "does-not-hold"),
+    (r"[\mathbf q]_{L}\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",  # one sign slipped
+     r"[\mathbf{q}]_L = " + SOLA_QL.replace("q_0 & -q_3 & q_2", "q_0 & q_3 & q_2"), HAM,
+     "does-not-hold"),
+    (r"\mathbf{p}\otimes\mathbf{q} = [\mathbf{q}]_R\mathbf{p}",
+     r"[\mathbf{q}]_R = " + SOLA_QR, HAM, "verified"),
+    (r"\mathbf{p}\otimes\mathbf{q} = [\mathbf{q}]_R\mathbf{p}",
+     r"[\mathbf{q}]_R = " + SOLA_QR, JPL, "does-not-hold"),
+    (r"\mathbf{q}\otimes\mathbf{p} = [\mathbf{q}]_R\mathbf{p}",  # the sides' order slipped
+     r"[\mathbf{q}]_R = " + SOLA_QR, HAM, "does-not-hold"),
+    (r"\mathcal{L}(\mathbf{q})\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"\mathcal{L}(\mathbf{q}) = " + TRAWNY_QL, JPL, "verified"),
+    (r"\mathcal{L}(\mathbf{q})\mathbf{p} = \mathbf{q}\otimes\mathbf{p}",
+     r"\mathcal{L}(\mathbf{q}) = " + TRAWNY_QL, HAM, "does-not-hold"),
+    (r"\mathbf{q}\otimes\mathbf{p} = \mathcal{R}(\mathbf{p})\mathbf{q}",
+     r"\mathcal{R}(\mathbf{p}) = " + TRAWNY_PR, JPL, "verified"),
+    (r"\mathbf{q}\otimes\mathbf{p} = \mathcal{R}(\mathbf{p})\mathbf{q}",
+     r"\mathcal{R}(\mathbf{p}) = " + TRAWNY_PR, HAM, "does-not-hold"),
+])
+def test_the_product_matrices_declared_by_name_hold_in_their_books_convention(
+        latex, model, convention, verdict):
+    r = _check(latex, PQ + [model, convention])
+    assert r.verdict == verdict
+    assert convention.split(": ")[1] in _said(r)[0]
+    if verdict == "does-not-hold":
+        assert r.counterexample
+
+
+def test_a_bracket_name_no_let_declares_is_refused_naming_it():
+    with pytest.raises(BadInput, match=r"\[\\mathbf\{q\}\]_\{L\}.*no --let declares"):
+        _check(r"[\mathbf{q}]_L\mathbf{p} = \mathbf{q}\otimes\mathbf{p}", PQ)
+
+
+#: the inverse written out by hand, the conjugate over the squared norm: scalar first
+#: (Solà (2017) (24)) and scalar last (Trawny & Roumeliotis (2005) (13))
+INV_FIRST = (r"\mathbf{q}^{-1} = \frac{1}{q_0^2 + q_1^2 + q_2^2 + q_3^2}\begin{bmatrix} q_0 "
+             r"\\ -q_1 \\ -q_2 \\ -q_3 \end{bmatrix}")
+INV_LAST = (r"\mathbf{q}^{-1} = \frac{1}{q_1^2 + q_2^2 + q_3^2 + q_4^2}\begin{bmatrix} -q_1 "
+            r"\\ -q_2 \\ -q_3 \\ q_4 \end{bmatrix}")
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    (INV_FIRST, [HAM], "verified"),
+    (INV_FIRST, [JPL], "does-not-hold"),
+    (INV_LAST, [JPL], "verified"),
+    (INV_LAST, [HAM], "does-not-hold"),
+    (INV_LAST.replace("q_3^2 + q_4^2}", "q_3^2 + q_4}"), [JPL], "does-not-hold"),
+    (INV_LAST, [], "does-not-hold"),  # Hamilton's unless declared
+])
+def test_the_inverse_of_a_quaternion_in_each_convention(latex, lets, verdict):
+    r = _check(latex, [r"\mathbf{q}: 4-vector"] + lets)
+    assert r.verdict == verdict
+    assert any(m.startswith("q^{-1}: the inverse of a quaternion") for m in r.model)
+    if verdict == "does-not-hold":
+        assert r.counterexample
+
+
+@pytest.mark.parametrize("kind, verdict", [("unit 4-vector", "verified"),
+                                           ("4-vector", "does-not-hold")])
+def test_the_inverse_is_the_conjugate_of_a_unit_quaternion_only(kind, verdict):
+    r = _check(r"\mathbf{q}^{-1} = \mathbf{q}^*", [rf"\mathbf{{q}}: {kind}"])
+    assert r.verdict == verdict
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\mathbf{q}^{-1}\otimes\mathbf{q}\otimes\mathbf{p} = \mathbf{p}", "verified"),
+    (r"(\mathbf{p}\otimes\mathbf{q})^{-1} = \mathbf{q}^{-1}\otimes\mathbf{p}^{-1}", "verified"),
+    (r"(\mathbf{p}\otimes\mathbf{q})^{-1} = \mathbf{p}^{-1}\otimes\mathbf{q}^{-1}",
+     "does-not-hold"),
+])
+@pytest.mark.parametrize("convention", [HAM, JPL])
+def test_the_inverse_laws_in_both_conventions(latex, verdict, convention):
+    r = _check(latex, PQ + [convention])
+    assert r.verdict == verdict
+
+
+def _notation(latex, lets, notation):
+    return rigidsym.check_latex(latex, let=lets, notation=notation, repairs=False)
+
+
+def test_the_jpl_notation_declares_jpls_product():
+    # Trawny's L(q), written by hand, scalar last: JPL's under the notation, Hamilton's without
+    lets = PQ + [r"\mathbf{L} = " + TRAWNY_QL]
+    latex = r"\mathbf{L}\mathbf{p} = \mathbf{q}\otimes\mathbf{p}"
+    r = _notation(latex, lets, "jpl")
+    assert r.verdict == "verified" and "JPL" in _said(r)[0]
+    r = _notation(latex, lets, None)
+    assert r.verdict == "does-not-hold" and r.counterexample
+    r = _notation(latex, lets + [HAM], "jpl")  # a --let wins over the table
+    assert r.verdict == "does-not-hold" and "Hamilton" in _said(r)[0]

@@ -136,7 +136,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             (``rigidsym.latex.limit``).
         notation: a book's symbol table (``"lynch-park"``, ``"murray-li-sastry"``,
             ``"siciliano"``, ``"spong"``, ``"craig"``, ``"featherstone"``, ``"barfoot"``,
-            ``"sola"``, ``"corke"``: ``rigidsym.latex.notations.NOTATIONS``): what its
+            ``"sola"``, ``"corke"``, ``"jpl"``: ``rigidsym.latex.notations.NOTATIONS``): what its
             symbols are (``\\hat\\omega`` a unit vector in Lynch-Park, the skew matrix of
             ``\\omega`` in Murray-Li-Sastry; ``c_{12}`` a cosine in Siciliano), below
             ``let``.
@@ -188,7 +188,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     _repair_args(repairs, repair_budget)
     _seconds(repair_seconds)
     let, order, said = tangent.split_setting(let, notation)
-    let, product, product_said = quaternions.split_setting(let)
+    let, product, product_said = quaternions.split_setting(let, notation)
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
     t0, seen = time.monotonic(), {}
     try:
@@ -242,15 +242,16 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``."""
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
-    from rigidsym.latex.respell import declared_e, declared_labels, tilde_expressions
+    from rigidsym.latex.respell import declared_e, declared_labels, floor_cross, tilde_expressions
     from rigidsym.latex.statement import declare_latex
 
     step("reading")
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
+    latex, let, floor = floor_cross(latex, let)  # Trawny's \lfloor a\times\rfloor: [a]_x
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (labels, tilde, respelt):
+    for note in (labels, tilde, floor, respelt):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading

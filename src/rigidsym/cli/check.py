@@ -23,7 +23,7 @@ EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
                    symmetric matrix, twist, wrench, transform, so(3), se(3)
 --let NAME = LATEX a first-principles model in the same notation
 --notation NAME    a book's symbols: lynch-park, murray-li-sastry, siciliano, spong, craig,
-                   featherstone, barfoot, sola, corke
+                   featherstone, barfoot, sola, corke, jpl
 --timeout S        the limit of the whole check (default 60 s): past it undecided, exit 3
 exit codes: 0 holds (verified or definition), 1 does not hold, 3 undecided (also past
             --timeout), 2 bad input"""
@@ -46,7 +46,7 @@ def add_arguments(c) -> None:
                         "section of the chapter (3.2, 3.4.2, ...)")
     c.add_argument("--notation", metavar="NAME",
                    help="a book's symbol table: lynch-park, murray-li-sastry, siciliano, "
-                        "spong, craig, featherstone, barfoot, sola, corke (what its symbols "
+                        "spong, craig, featherstone, barfoot, sola, corke, jpl (what its symbols "
                         "are; a --let wins over it; default: none)")
     c.add_argument("--module", action="append", metavar="PATH_OR_DOTTED",
                    help=MODULE_HELP + "; it lends its symbols and models, matched by name "

@@ -157,6 +157,24 @@ _CONSTRUCTS = [
 ]
 
 
+_BRACKET_NAME = re.compile(r"\[\s*(?:(\\(?:mathbf|boldsymbol|bm|bar|hat|tilde|breve|check)"
+                           r"(?![A-Za-z]))\s*)?\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\]"
+                           r"\s*_\s*\{?\s*([A-Za-z])\s*\}?")
+
+
+def bracket_key(token: str) -> str:
+    """The one spelling of a bracket name (the grammar's ``BRACKET_NAME``):
+    ``[\\mathbf q]_L``, ``[\\boldsymbol{q}]_{L}`` -> ``[\\mathbf{q}]_{L}``; ``[q]_R`` ->
+    ``[q]_{R}``."""
+    m = _BRACKET_NAME.fullmatch(token.strip())
+    if not m:
+        return "".join(token.split())
+    font, atom, sub = m.groups()
+    if font in ("\\mathbf", "\\boldsymbol", "\\bm"):  # as the glyph keys write bold
+        font = "\\boldsymbol" if atom.startswith("\\") else "\\mathbf"
+    return f"[{font}{{{atom}}}]_{{{sub}}}" if font else f"[{atom}]_{{{sub}}}"
+
+
 def braced(latex: str) -> str:
     """The LaTeX with TeX's unbraced macro arguments braced (``\\frac\\theta2`` ->
     ``\\frac{\\theta}{2}``, ``\\sqrt2`` -> ``\\sqrt{2}``; ``\\dfrac``, ``\\tfrac`` ->

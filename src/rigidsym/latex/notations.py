@@ -10,7 +10,9 @@ angles as Siciliano, Spong and Craig abbreviate) and ``{x}`` for a Greek letter
 (``c_{\\theta}``, Spong's ``R_{z,\\theta}`` from ``R_{z,{x}}``). A line ``NAME(params) =
 LATEX`` is a function (Craig's ``R_X(\\theta)``), lent where the LaTeX mentions NAME. A
 ``--let`` of the same symbol wins over the table; a line whose symbol the LaTeX does not use
-is ignored (unlike a ``--let``). Every line used is printed under ``read as:``.
+is ignored (unlike a ``--let``). Every line used is printed under ``read as:``. A line
+``\\otimes: JPL`` declares the quaternion product's convention (``jpl``), as the ``--let``
+does (:mod:`rigidsym.latex.quaternions`).
 """
 
 from __future__ import annotations
@@ -21,13 +23,14 @@ from functools import cache
 from importlib import resources
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex import quaternions
 from rigidsym.latex.lets import Let, read_lets
 
 __all__ = ["NOTATIONS", "Notation", "notation"]
 
 #: the notations shipped (``rigidsym/latex/notations/NAME.txt``)
 NOTATIONS = ("lynch-park", "murray-li-sastry", "siciliano", "spong", "craig", "featherstone",
-             "barfoot", "sola", "corke")
+             "barfoot", "sola", "corke", "jpl")
 
 _INDEX, _GREEK = r"(\d+)", r"(\\[A-Za-z]+)"
 _STAND_IN = r"\iota"  # the name's Greek letter of a pattern such as R_{z,{x}}
@@ -114,6 +117,13 @@ def notation(name: str) -> Notation:
             hat = True
             continue
         if not line:
+            continue
+        name, _, value = line.partition(":")
+        if name.strip() in quaternions.NAMES:  # \otimes: JPL, read by quaternions.split_setting
+            if quaternions.word(value) != quaternions.NOTATION_PRODUCTS.get(key,
+                                                                           quaternions.HAMILTON):
+                raise BadInput(f"notation {key}, line {n}: {line} disagrees with "
+                               f"rigidsym.latex.quaternions.NOTATION_PRODUCTS")
             continue
         # a Greek letter after a comma of a subscript (Spong's R_{z,{x}}): the name is read
         # with a stand-in letter, which the pattern then matches as any Greek letter

@@ -4,7 +4,10 @@
 the default) or **JPL's** (scalar last, ``q = [x; y; z; w]``, ``ij = -k``: Trawny-
 Roumeliotis, Breckenridge), said once: ``--let '\\otimes: JPL'`` (or ``Hamilton``; ``\\odot``
 likewise). ``q^*`` of a 4-vector is its conjugate (the vector part negated, where the
-convention puts it). ``read as:`` names the convention on every statement that uses one.
+convention puts it), ``q^{-1}`` its inverse, the conjugate over the squared norm (a unit
+quaternion's is its conjugate). ``--notation jpl`` declares JPL's as a table line
+``\\otimes: JPL`` (:data:`NOTATION_PRODUCTS`); a ``--let`` wins over it. ``read as:``
+names the convention on every statement that uses one.
 
 The products are written out from the conventions' definitions (Solà (2017) (12), Trawny &
 Roumeliotis (2005) (8)); the second semantics has its own (:mod:`rigidsym.numeval.values`).
@@ -22,11 +25,13 @@ from rigidsym.core.errors import BadInput
 from rigidsym.latex.let_text import split_lets
 
 __all__ = ["HAMILTON", "JPL", "NAMES", "current", "declared", "using", "split_setting",
-           "product", "conjugate", "said"]
+           "product", "conjugate", "inverse", "said", "NOTATION_PRODUCTS", "word"]
 
 HAMILTON, JPL = "Hamilton", "JPL"
 #: the glyphs of the product, as a --let NAME
 NAMES = ("\\otimes", "\\odot")
+#: the notations whose table declares the product (``\\otimes: JPL`` in ``jpl.txt``)
+NOTATION_PRODUCTS = {"jpl": JPL}
 _CONVENTION: ContextVar[tuple[str, str | None]] = ContextVar("quaternion_convention",
                                                              default=(HAMILTON, None))
 
@@ -57,15 +62,21 @@ def using(convention: str, text: str | None = None) -> Iterator[None]:
         _CONVENTION.reset(token)
 
 
-def split_setting(let) -> tuple[object, str, str | None]:
+def word(value: str) -> str | None:
+    """The convention a declaration's value names (``"JPL"``, ``" hamilton"``), or ``None``."""
+    return {"hamilton": HAMILTON, "jpl": JPL}.get(value.strip().lower())
+
+
+def split_setting(let, notation: str | None = None) -> tuple[object, str, str | None]:
     """``let`` without its ``\\otimes: ...`` declaration, the convention, and the text of the
-    declaration (``None``: none given, Hamilton's).
+    declaration (``None``: none given, the notation's (:data:`NOTATION_PRODUCTS`) or
+    Hamilton's).
 
     Raises:
         BadInput: a convention other than Hamilton and JPL, or two declarations.
     """
 
-    convention, text = HAMILTON, None
+    convention, text = NOTATION_PRODUCTS.get((notation or "").strip().lower(), HAMILTON), None
     if let is None or isinstance(let, dict):
         return let, convention, text
     try:
@@ -79,11 +90,11 @@ def split_setting(let) -> tuple[object, str, str | None]:
             if text is not None:
                 raise BadInput(f"--let: the quaternion product is declared twice ('{text}' "
                                f"and '{s}')")
-            word = value.strip().lower()
-            if word not in ("hamilton", "jpl"):
+            named = word(value)
+            if named is None:
                 raise BadInput(f"--let '{s}': expected '{name.strip()}: Hamilton' (scalar "
                                f"first, ij = k) or '{name.strip()}: JPL' (scalar last, ij = -k)")
-            convention, text = (HAMILTON if word == "hamilton" else JPL), s
+            convention, text = named, s
         else:
             kept.append(s)
     return (let if text is None else kept), convention, text
@@ -125,3 +136,10 @@ def conjugate(q) -> sp.Matrix:
     """``q^*``: the vector part negated."""
     w, v = _parts(q)
     return _join(w, -v)
+
+
+def inverse(q) -> sp.Matrix:
+    """``q^{-1}``: the conjugate over the squared norm, ``q^* / (q^T q)`` (Solà (2017) (24),
+    Trawny & Roumeliotis (2005) (13)); the same in both conventions' layouts."""
+    n2 = sum(q[i, 0] ** 2 for i in range(4))
+    return conjugate(q) / n2

@@ -18,6 +18,11 @@ A name with a lower-case superscript label, Groves' frames ``C_b^n``, ``\\Omega_
 declares that NAME it is the name: each occurrence (any bracing, ``\\dot{C}_b^n`` too) is
 respelt with the label parenthesised, ``C_{b}^{(n)}``, the grammar's label (before: "the
 name 'C_b^n' cannot be read").
+
+Trawny and Roumeliotis' floor brackets around a cross, ``\\lfloor\\boldsymbol\\omega\\times
+\\rfloor`` (``\\left\\lfloor ... \\right\\rfloor`` too), are the cross-product matrix of
+the vector inside: respelt ``[\\boldsymbol\\omega]_\\times``. Floor brackets without the
+cross stay unknown (the floor of a number is not read).
 """
 
 from __future__ import annotations
@@ -26,7 +31,7 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["declared_e", "declared_labels", "tilde_expressions"]
+__all__ = ["declared_e", "declared_labels", "floor_cross", "tilde_expressions"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -97,6 +102,46 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
         return latex, let, ""
     return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+_FLOOR = re.compile(r"(?:\\left\s*)?\\lfloor(?![A-Za-z])")
+_FLOOR_END = re.compile(r"\\times\s*(?:\\right\s*)?\\rfloor(?![A-Za-z])")
+
+
+def floor_cross(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\lfloor X\\times\\rfloor`` respelt ``[X]_\\times``
+    in the LaTeX and the declarations (``note`` says so); else all unchanged and ``note``
+    is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    hits: list[str] = []
+
+    def respell(text: str) -> str:
+        out, k = [], 0
+        for m in _FLOOR.finditer(text):
+            if m.start() < k:
+                continue
+            end = _FLOOR_END.search(text, m.end())
+            inner = text[m.end():end.start()].strip() if end else ""
+            if not inner or _FLOOR.search(inner) or "\\rfloor" in inner:
+                continue
+            out += [text[k:m.start()], f"[{inner}]_\\times"]
+            hits.append(inner)
+            k = end.end()
+        return "".join(out) + text[k:]
+
+    new = respell(latex)
+    if isinstance(let, dict):
+        out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
+    else:
+        decls = _decls(let)
+        out = let if decls is None else [respell(d) for d in decls]
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"\\lfloor {hits[0]}\\times\\rfloor: the cross-product matrix of the "
+                      f"vector {hits[0]} (Trawny & Roumeliotis (2005)), read as "
+                      f"[{hits[0]}]_\\times")
 
 
 _LABELLED = re.compile(

@@ -279,6 +279,13 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     values.update(rd.models)
     models.update({sym.name: v for sym, v in rd.models.items()})
     occurs |= set(parsed.glyphs) | rd.in_models
+    undeclared = sorted(k for k in occurs if k.startswith("[") and k not in {x.key for x in lets})
+    if undeclared:  # Sola's [q]_L: a matrix of its own, which nothing else defines
+        k = undeclared[0]
+        raise BadInput(f"--latex: {k} (a bracket with a letter subscript, Solà's [\\mathbf{{q}}]_L "
+                       f"and [\\mathbf{{q}}]_R) is a name of its own that no --let declares: "
+                       f"declare its model, e.g. --let '{k} = \\begin{{bmatrix}} ... "
+                       f"\\end{{bmatrix}}', or its kind, --let '{k}: 4x4 matrix'")
     for x in lets:  # an angle of which only \dot X occurs is used (Greenwood's psi)
         if x.key not in occurs and not (x.kind.split(" in ")[0] in ("angle", "scalar")
                                         and dot_key(x.key) in occurs):

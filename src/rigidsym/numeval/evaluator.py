@@ -307,6 +307,8 @@ class Evaluator:
             n = int(s)
         except ValueError:
             raise NotCovered(f"the power {s} in {text_of(t)!r}") from None
+        if n == -1 and V.shape(V.scalar(v)) == (4, 1):  # a quaternion's q^{-1}
+            return V.quaternion_inverse(v)
         if n == -1:
             return V.inverse(v)
         return V.power(v, n)

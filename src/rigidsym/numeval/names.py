@@ -86,6 +86,9 @@ def glyph_key(t) -> str:
     """A glyph's identity: its subtree's rules and tokens (``\\mathbf Q`` and ``\\mathbf{Q}``
     parse alike)."""
     t = canonical(t)  # \dot{\Omega}_1 is \dot{\Omega_1}
+    if isinstance(t, lark.Token) and t.type == "BRACKET_NAME":  # [\mathbf q]_L: one spelling
+        s = re.sub(r"[\s{}]", "", str(t))
+        return re.sub(r"\\(boldsymbol|bm)(?![A-Za-z])", r"\\mathbf", s)
     if isinstance(t, lark.Token):
         # bold by any macro is one glyph, as the books and the reader take it
         return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",

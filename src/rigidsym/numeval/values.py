@@ -15,7 +15,8 @@ __all__ = ["NotCovered", "Eye", "Zero", "shape", "add", "neg", "mul", "cross", "
            "transpose", "inverse", "power", "hat", "vee", "trace", "det", "vect", "norm",
            "expm", "rodrigues", "logm", "adjoint", "small_adjoint", "spatial_cross", "sized",
            "scalar", "assemble", "TRANSLATION_FIRST", "tangent_order", "JPL_PRODUCT",
-           "quaternion_convention", "quaternion_product", "quaternion_conjugate"]
+           "quaternion_convention", "quaternion_product", "quaternion_conjugate",
+           "quaternion_inverse"]
 
 #: the quaternion product of the check running now: ``False`` Hamilton's (scalar first,
 #: ij = k; the default), ``True`` JPL's (scalar last, ij = -k)
@@ -62,6 +63,13 @@ def quaternion_conjugate(q):
     """``q^*``: the quaternion with its imaginary units negated."""
     w, x, y, z = _quaternion(q, "a quaternion conjugate")
     return _as_quaternion(w, -x, -y, -z)
+
+def quaternion_inverse(q):
+    """``q^{-1}``: the quaternion whose product with ``q`` is 1, ``(w, -x, -y, -z) / (w^2 +
+    x^2 + y^2 + z^2)`` (the conjugate over the norm squared)."""
+    w, x, y, z = _quaternion(q, "a quaternion inverse")
+    n2 = w * w + x * x + y * y + z * z
+    return _as_quaternion(w / n2, -x / n2, -y / n2, -z / n2)
 
 #: the twist order of the check running now: ``False`` ``[ω; v]`` (angular first, the
 #: default), ``True`` ``[v; ω]`` (translation first: Barfoot, Solà, manif)

@@ -217,6 +217,12 @@ class BookNotationRules:
         raise LatexError(f"{op} as an operator of {shape_words(a)}: expected a 6-vector (or a "
                          f"3-vector for \\times)", "shapes")
 
+    def quaternion_inverse(self, x):
+        """``q^{-1}`` of a 4-vector: its conjugate over its squared norm."""
+        self._note("q^{-1}: the inverse of a quaternion, its conjugate over its squared norm "
+                   "q^*/(q^T q); " + quaternions.said())
+        return sp.ImmutableMatrix(quaternions.inverse(sp.Matrix(x)))
+
     def qprod(self, items):
         """``p \\otimes q``, ``p \\odot q``: the quaternion product of two 4-vectors in the
         declared convention (:mod:`rigidsym.latex.quaternions`)."""

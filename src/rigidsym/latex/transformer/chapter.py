@@ -187,6 +187,8 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
         n = int(sup)
         if matrix_shape(x) is None:
             return x ** n
+        if n == -1 and matrix_shape(x) == (4, 1):  # a quaternion's inverse
+            return self.quaternion_inverse(x)
         if n == -1:
             return x.inverse() if not isinstance(x, sp.MatrixBase) else x.inv()
         if matrix_shape(x) == (1, 1):

@@ -30,6 +30,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.latex import tangent
 from rigidsym.latex.kinematics import expand_models
+from rigidsym.latex.lexing import bracket_key
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
 from rigidsym.latex.transformer.meanings import alternatives, as_written
 from rigidsym.latex.transformer.tilde import own_tilde
@@ -211,6 +212,9 @@ class RigidMotionRules:
 
     def fontbase(self, items):  # \mathsf{R}: a plain letter's conventions, its own name
         return ("font", f"{items[0]}{{{items[1]}}}")
+
+    def bracketbase(self, items):  # Sola's [\mathbf{q}]_L: a name, in one spelling
+        return ("font", bracket_key(str(items[0])))
 
     def bare(self, items):
         return ("plain", str(items[0]))
