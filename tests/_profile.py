@@ -9,6 +9,9 @@
   :data:`THOROUGH_FACTOR` times its quick budget (``max_examples=examples(n)``), a ``slow``
   one at the budget it writes as a number.
 
+Both profiles draw the same Hypothesis examples every run; ``--hypothesis-profile=search``
+draws new ones (tests/conftest.py).
+
 The sample is the same in every process (xdist workers must collect the same items): a
 parameter is in it when the CRC-32 of its node id and the seed ``RIGIDSYM_TEST_SEED``
 (default 0) is among the smallest of its family. Another seed draws another sample.

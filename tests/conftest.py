@@ -24,11 +24,15 @@ from rigidsym.registry.declarations import load_all
 _CREATED: list[str] = []
 
 # no property depends on the machine's speed: no deadline, no health check on slow data;
-# the quick profile draws the same examples every run (a failure reproduces), the thorough
-# one new examples each run, at _profile.THOROUGH_FACTOR times the budget (_profile.examples)
+# both profiles draw the same examples every run (CI's verdict is not a coin it flips; a
+# failure reproduces), the thorough one at _profile.THOROUGH_FACTOR times the budget
+# (_profile.examples). A new search is a person's: `--hypothesis-profile=search` (new
+# examples each run, at the budget RIGIDSYM_TEST_PROFILE sets)
 settings.register_profile("quick", deadline=None, derandomize=True, print_blob=True,
                           suppress_health_check=[HealthCheck.too_slow])
-settings.register_profile("thorough", deadline=None, print_blob=True,
+settings.register_profile("thorough", deadline=None, derandomize=True, print_blob=True,
+                          suppress_health_check=[HealthCheck.too_slow])
+settings.register_profile("search", deadline=None, print_blob=True,
                           suppress_health_check=[HealthCheck.too_slow])
 settings.load_profile(_profile.PROFILE)
 

@@ -11,10 +11,8 @@ from __future__ import annotations
 import dataclasses
 import json
 import os
-import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -23,7 +21,7 @@ import sympy as sp
 from rigidsym.codegen import inputs as store
 from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
 from rigidsym.codegen.spec import Arg, Kernel, Out
-from rigidsym.core import cache
+from rigidsym.core import cache, interrupts
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "rotation_identities.py"
@@ -112,17 +110,18 @@ def test_an_entry_is_read_back_whole_and_a_corrupt_one_is_not(tmp_path, monkeypa
 # ----------------------------------------------------------------------------------------
 # generating for real
 
-def _env(cache_dir: Path, work: Path) -> dict:
+def _env(cache_dir: Path, work: Path, more: dict | None = None) -> dict:
     env = {**os.environ, "RIGIDSYM_CACHE": str(cache_dir), "RIGIDSYM_WORK_FILE": str(work),
-           "PYTHONPATH": str(ROOT / "src")}
+           "PYTHONPATH": str(ROOT / "src"), **(more or {})}
     env.pop("RIGIDSYM_GENERATE_JOBS", None)
     return env
 
 
-def _generate(out: Path, cache_dir: Path, work: Path, *extra: str) -> subprocess.Popen:
+def _generate(out: Path, cache_dir: Path, work: Path, *extra: str,
+              env: dict | None = None) -> subprocess.Popen:
     return subprocess.Popen(
         [sys.executable, "-m", "rigidsym", "generate", "--module", str(EXAMPLE), "--out",
-         str(out), "--no-build", *extra], env=_env(cache_dir, work), cwd=out.parent,
+         str(out), "--no-build", *extra], env=_env(cache_dir, work, env), cwd=out.parent,
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
@@ -137,24 +136,19 @@ def _files(folder: Path) -> dict[str, bytes]:
 
 @pytest.mark.slow
 def test_an_interrupted_generation_keeps_what_it_finished(tmp_path, monkeypatch):
-    """SIGINT once the first group is stored: exit 130, a line saying what was kept; the run
-    after it derives only what was not stored, and writes the files of a generation without
-    the store."""
+    """SIGINT as the second group of two kernels begins (the third ``derive`` checkpoint,
+    after the first group's entries are stored; rigidsym.core.interrupts): exit 130, a line
+    saying what was kept; the run after it derives only what was not stored, and writes the
+    files of a generation without the store."""
     ref, out, c = tmp_path / "ref", tmp_path / "out", tmp_path / "cache"
     monkeypatch.setenv("RIGIDSYM_CACHE", str(c))       # where store.load reads
     p = _generate(ref, tmp_path / "refcache", tmp_path / "ref.json", "--no-store")
-    first = _generate(out, c, tmp_path / "first.json")
+    first = _generate(out, c, tmp_path / "first.json", env={interrupts.AT: "derive:3"})
     entries = c / store.STORE
-    deadline = time.monotonic() + 300
-    while not any(entries.rglob("*.pkl.sha256")) and first.poll() is None:
-        assert time.monotonic() < deadline, "no kernel stored in 300 s"
-        time.sleep(0.05)
-    first.send_signal(signal.SIGINT)
-    _, err = first.communicate(timeout=120)
+    _, err = first.communicate(timeout=600)
     assert p.wait(timeout=600) == 0, p.stderr.read()
     all_kernels = set(_derived(tmp_path / "ref.json"))
     assert len(all_kernels) == 4
-    # the second group takes seconds: the signal comes while it is derived
     assert first.returncode == 130, err
     assert "rigidsym: interrupted: 2 of 4 kernels kept; run again to continue" in err, err
     kept = {k for k, n in _derived(tmp_path / "first.json").items() if n}
