@@ -92,16 +92,24 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
             k = j
         return "".join(out) + text[k:]
 
+    new, out = _respelt(respell, latex, let)
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
+                      f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+def _respelt(respell, latex: str, let: object) -> tuple[str, object]:
+    """``respell`` applied to the LaTeX and to every declaration of ``let`` (a dict's string
+    values, or the list :func:`_decls` reads; ``let`` unchanged where it reads none), the
+    LaTeX first."""
     new = respell(latex)
     if isinstance(let, dict):
         out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
     else:
         decls = _decls(let)
         out = let if decls is None else [respell(d) for d in decls]
-    if not hits:
-        return latex, let, ""
-    return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
-                      f"{hits[0]}, read as [{hits[0]}]_\\times")
+    return new, out
 
 
 _FLOOR = re.compile(r"(?:\\left\s*)?\\lfloor(?![A-Za-z])")
@@ -131,12 +139,7 @@ def floor_cross(latex: str, let: object) -> tuple[str, object, str]:
             k = end.end()
         return "".join(out) + text[k:]
 
-    new = respell(latex)
-    if isinstance(let, dict):
-        out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
-    else:
-        decls = _decls(let)
-        out = let if decls is None else [respell(d) for d in decls]
+    new, out = _respelt(respell, latex, let)
     if not hits:
         return latex, let, ""
     return new, out, (f"\\lfloor {hits[0]}\\times\\rfloor: the cross-product matrix of the "
