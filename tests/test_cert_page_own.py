@@ -1,5 +1,5 @@
-"""Glyphs sections 3.7 and 3.8 define on the id itself, read by certcheck's second reader
-(fourth session): ``Gamma``, ``w_A``, ``w_P``, ``V``, ``q_O``, ``c``, ``r``,
+"""Glyphs sections 3.7 and 3.8 define on the id itself, read by certcheck's second reader:
+``Gamma``, ``w_A``, ``w_P``, ``V``, ``q_O``, ``c``, ``r``,
 ``T``, ``M``, ``I_A``, ``M_A`` as symbol-table lines
 (``checking/certifying/wrench_inertia_symbols.py``), the centre of mass and a body point
 where the certificate's relation is free of the body's shape, the particles' ``r_i = Q

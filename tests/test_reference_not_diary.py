@@ -25,7 +25,8 @@ CITATIONS = ("box2d's GitHub issue 1086",)
 #: a reference to this project's tracker, or a round of work, also broken over two lines
 #: (of a comment or docstring: "issue" at the end of one, the number at the start of the next)
 _BREAK = r"(?: |-|\n[ \t]*(?:#:?|\*|//)?[ \t]*)"
-DIARY = re.compile(rf"\bissues?{_BREAK}#?\d+|\bwave{_BREAK}\d+\b", re.IGNORECASE)
+DIARY = re.compile(rf"\bissues?{_BREAK}#?\d+|\bwave{_BREAK}\d+\b|\b(?:first|second|third|"
+                   rf"fourth|fifth|sixth|previous|last){_BREAK}session\b", re.IGNORECASE)
 
 
 def _text_files():
@@ -62,8 +63,9 @@ def test_the_pattern_finds_tracker_references_and_waves_and_spares_citations():
                                        "before wave 11\nthe wave-6 merge\n"
                                        "box2d's GitHub issue 1086\na wave of 3 rows\n"
                                        "tissue 5\nbefore issue\n  # 21 in a comment\n"
-                                       "issue 3 and issue 4\n")]
-    assert found == [1, 2, 3, 4, 5, 9, 11]
+                                       "issue 3 and issue 4\n(third session)\n"
+                                       "the session's wheel fixture\n")]
+    assert found == [1, 2, 3, 4, 5, 9, 11, 12]
 
 
 def test_no_tracker_reference_or_round_of_work_in_src_tests_or_docs():
