@@ -1,10 +1,10 @@
-"""Chains and section 3.7's wrench ids read by certcheck's second reader. A chain
-``a \\equiv b = c`` is read as ``a = b`` and ``a = c``, its later ``a`` read as ``b`` (the
-page says ``a`` is ``b``); the certificate marks the claim that proves a member the
-definition does not state (``"page": k``), so the member is read against a proof, not only
-claimed. The wrench axis (``p_0''``, ``e''``, ``n''``, ``n_0``) and the wrench and twist arrays ``w = [n; f]``, ``t = [omega; v]`` are
-symbol-table lines as the models have them. Tamperings by mathematics on 3.109 and 3.115
-here, on the other ids this file covers in slow."""
+"""Chains and section 3.7's wrench ids read by certcheck's second reader. A chain ``a \\equiv b
+= c`` is read as ``a = b`` and ``a = c``, its later ``a`` read as ``b`` (the page says ``a``
+is ``b``); the certificate marks the claim that proves a member the definition does not
+state (``"page": k``), so the member is read against a proof, not only claimed. The wrench
+axis (``p_0''``, ``e''``, ``n''``, ``n_0``) and the wrench and twist arrays ``w = [n; f]``,
+``t = [omega; v]`` are symbol-table lines as the models have them. Tamperings by mathematics
+on 3.109 and 3.115 here, on the other ids this file covers in slow."""
 
 from __future__ import annotations
 
