@@ -21,7 +21,8 @@ __all__ = ["KERNEL_FLAGS", "COMMON_FLAGS", "MVEC_FLAGS", "OMP_FLAGS", "UNSAFE_FL
 #: multiply-add-subtract instructions (vfmaddsub, vfmsubadd) from alternating `a b - c` and `a
 #: b + c` lanes even under -ffp-contract=off (the bug class box2d's tracker records at
 #: github.com/erincatto/box2d/issues/1086, on RISC-V): 18 functions of the module have
-#: them, and 9 float64 kernels give other bits on C than on NumPy (moving_frame_acceleration at 18 % of random points,
+#: them, and 9 float64 kernels give other bits on C than on NumPy
+#: (moving_frame_acceleration at 18 % of random points,
 #: wrench_axis_with_jacobians 1024 ulps of a small component), and float32 lanes loops leave
 #: their measured plans. Without it: the
 #: same bits as the scalar program; measured at the geometric mean 0.99 of the time over
