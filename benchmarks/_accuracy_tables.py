@@ -1,5 +1,5 @@
 """The tables of the accuracy harness (``benchmarks/accuracy.py``): per kernel
-(docs/accuracy.md), per kernel, type and back-end under issue 37's rule (docs/accuracy.md,
+(docs/accuracy.md), per kernel, type and back-end under the accuracy rule (docs/accuracy.md,
 benchmarks/RESULTS.md), and every row."""
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ def kernel_table(data: dict, public_only: bool = False) -> str:
 
 
 def rule_table(data: dict, public_only: bool = False) -> str:
-    """The table of issue 37 (docs/accuracy.md, benchmarks/RESULTS.md): per kernel,
+    """The rule's table (docs/accuracy.md, benchmarks/RESULTS.md): per kernel,
     precision and back-end, the worst normwise error in u over every regime, the worst
     ratio to e_ref (where e_ref > 2 u) and the yardstick there, and the rule's verdict."""
     lines = ["| kernel | type | back-end | worst error (u) | worst err / e_ref | where, "
@@ -67,7 +67,7 @@ _BACKEND = {"c": "C", "numpy": "NumPy"}
 
 def summary_table(data: dict) -> str:
     """Per float type and back-end: how many kernels meet the rule, and the rows whose worst
-    err / e_ref is above 2 where e_ref > 2 u (issue 37's acceptance), worst first."""
+    err / e_ref is above 2 where e_ref > 2 u (the rule's acceptance), worst first."""
     lines = ["| type | back-end | kernels | within the rule | worst err / e_ref above 2 (where "
              "e_ref > 2 u) |", "|---|---|---|---|---|"]
     for dt in ("float64", "float32"):

@@ -15,7 +15,7 @@ package's (:mod:`rigidsym.codegen.accuracy.harness`), shared with the accuracy t
 Per output ``o`` of a sample: ``err = ||computed - ref|| / ||ref||`` and the condition
 number ``kappa = sum_i ||J_oi|| ||x_i|| / ||ref||`` (``J_oi``: the derivative along the
 tangent space of argument ``i``; a relative perturbation ``u`` of every argument moves the
-output by at most ``u kappa``). Verdict **accurate** by issue 37's rule
+output by at most ``u kappa``). Verdict **accurate** by the accuracy rule
 (:mod:`rigidsym.codegen.accuracy.rule`): ``err <= 8 u (kappa + 1)`` (the absolute floor judges
 outputs that are exactly zero) **and** ``err <= max(2 e_ref, 4 u)``, ``e_ref`` the smallest error of
 the textbook formula (the declaration, naively, in the same type) and of each peer that has

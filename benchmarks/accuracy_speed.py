@@ -118,8 +118,8 @@ def before_after(a) -> None:
 
 
 def float32_table(a) -> None:
-    """float64 time / float32 time of the package's kernels, side by side in one run (issue
-    37 item 6: >= 1.5 for instant_screw_axis), and the nodes each float32 plan keeps in
+    """float64 time / float32 time of the package's kernels, side by side in one run (the
+    target: >= 1.5 for instant_screw_axis), and the nodes each float32 plan keeps in
     double with the measured reason (the rule's ratio with that node alone in float)."""
     print("\n| kernel | float64 ms | float32 ms | float64/float32 |\n|---|---|---|---|")
     reasons = {}

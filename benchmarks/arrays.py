@@ -162,7 +162,7 @@ if __name__ == "__main__":
     args = ap.parse_args()
     import jax
     import torch
-    if args.grad:  # the table of issue 38 (benchmarks/arrays_grad.py)
+    if args.grad:  # the gradients' table (benchmarks/arrays_grad.py)
         from arrays_grad import main
         main(args.sizes)
         raise SystemExit(0)

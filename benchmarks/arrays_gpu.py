@@ -1,4 +1,4 @@
-"""PyTorch and JAX kernels on a GPU (issue 31's GPU table).
+"""PyTorch and JAX kernels on a GPU (the GPU table).
 
 ``python benchmarks/arrays_gpu.py [--sizes 1e4 1e6 1e7]`` on a machine with a CUDA GPU:
 median wall time of one call of the generated kernels (``check=False``, and ``check=True``

@@ -78,7 +78,7 @@ def main(argv=None) -> int:
     ap.add_argument("--fast", action="store_true",
                     help="the time only, at -O3 and -O3 -march=native, of the small kernels "
                          "(twist, wrench transfer, Newton-Euler wrench): --runs interleaved "
-                         "rounds of the best of 7, the least taken (issue 66's table; no "
+                         "rounds of the best of 7, the least taken (the small kernels' table; no "
                          "valgrind)")
     ap.add_argument("--runs", type=int, default=15, help="with --fast: runs (default 15)")
     ap.add_argument("--before", metavar="DIR", default=None,
@@ -152,7 +152,7 @@ def main(argv=None) -> int:
     return 0
 
 
-#: issue 66's small kernels: (kernel, what the issue calls it)
+#: the small kernels: (kernel, what the book calls it)
 SMALL = [("twist_transfer", "twist transfer = velocity transfer (3.82)"),
          ("wrench_transfer", "wrench transfer"),
          ("newton_euler_wrench", "Newton-Euler wrench"),

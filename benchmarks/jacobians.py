@@ -34,7 +34,7 @@ from rigidsym import kernels as K  # noqa: E402
 from rigidsym.codegen.derivatives.jacobians import jacobian_name, with_jacobians  # noqa: E402
 from rigidsym.kernels.runtime import state as _state
 
-#: the kernels issue 12 asks for (euler_rate_matrix: one of its 24 sequence/frame kernels)
+#: the Jacobian kernels measured (euler_rate_matrix: one of the 24 sequence/frame kernels)
 KERNELS = ["rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
            "screw_axis_point", "plucker_from_points", "plucker_transfer", "twist_transfer",
            "wrench_transfer", "point_acceleration", "inertia_at_point", "newton_euler_wrench",
@@ -98,7 +98,7 @@ def _ratio(a, b) -> str:
 
 
 def _targets(trig: bool, jac, val, floor, plain) -> str:
-    """Each target of issue 12 that applies, met or missed."""
+    """Each speed target that applies, met or missed."""
     if not isinstance(jac, float):
         return "n/a"
     if not trig:

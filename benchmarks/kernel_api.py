@@ -16,7 +16,7 @@ Usage::
     python benchmarks/kernel_api.py --ab /tmp/old/generated --ab-json ab.json   # C A/B
     python benchmarks/kernel_api.py --compare old.json new.json --ab-json ab.json   # RESULTS.md
 
-Issue 20 (``--fast``, one run, side by side): N = 1 per call (checked, ``check=False``,
+``--fast`` (one run, side by side): N = 1 per call (checked, ``check=False``,
 ``check=False`` with a reused ``out=``) of K1, K2, K3, ``instant_screw_axis``, K5 and
 ``newton_euler_wrench`` from Python lists and floats, beside ``np.asarray`` of a 3-list,
 ``np.vecdot`` of two and, when Pinocchio is installed, ``pin.exp3`` and ``SE3.act``; N = 1e3
@@ -126,10 +126,10 @@ def measure_ab(old_dir: Path, rounds: int, threads: int = 1) -> dict:
     return res
 
 
-#: the kernels of issue 20's N = 1 bounds (K1, K2, K3, instant_screw_axis, K5, wrench)
+#: the kernels with N = 1 bounds (K1, K2, K3, instant_screw_axis, K5, wrench)
 FAST = ["rotation_from_euler_rodrigues", "rotation_from_natural_invariants", "screw_axis_point",
         "instant_screw_axis", "N_matrix", "newton_euler_wrench"]
-#: memory-bound (float32 target 1.6x) and trigonometric (1.3x) kernels of issue 20
+#: memory-bound (float32 target 1.6x) and trigonometric (1.3x) kernels
 F32_TARGET = {"rotation_from_euler_rodrigues": 1.6, "instant_screw_axis": 1.6,
               "newton_euler_wrench": 1.6, "rotation_from_natural_invariants": 1.3,
               "screw_axis_point": 1.3, "N_matrix": 1.3}
@@ -313,7 +313,7 @@ def measure_n1(rounds: int, n1_old: Path | None) -> dict:
 
 
 def fast_section(d: dict, note: str, ab: dict | None) -> str:
-    """The RESULTS.md section of issue 20 from :func:`measure_fast` (and ``--ab``)."""
+    """The RESULTS.md section of the N = 1 bounds from :func:`measure_fast` (and ``--ab``)."""
     lines = [FAST_MARK[0], "## Kernels cheap at every size", "", note, "",
              *n1_lines(d), "",
              "### N = 1e3 (us per call, caller-provided out=, contiguous inputs)", "",
@@ -401,7 +401,7 @@ def main(argv=None) -> int:
     p.add_argument("--n1-label", default="the previous commit", help="what --n1-old is")
     p.add_argument("--n1-only", action="store_true",
                    help="only the N = 1 table (and its reference rows), replaced in "
-                        "the issue-20 section of RESULTS.md")
+                        "the section 'Kernels cheap at every size' of RESULTS.md")
     args = p.parse_args(argv)
     n1_old = Path(args.n1_old) if args.n1_old else None
     if args.n1_only:
@@ -444,8 +444,8 @@ def main(argv=None) -> int:
 
 
 def _replace_n1(path: Path, lines: list[str], note: str) -> None:
-    """Replace the N = 1 table of the issue-20 section of ``path`` (up to the next table
-    heading) by ``lines``, headed by ``note``; print it."""
+    """Replace the N = 1 table of the section 'Kernels cheap at every size' of ``path`` (up
+    to the next table heading) by ``lines``, headed by ``note``; print it."""
     from rigidsym.core.files import write_atomic
 
     body = path.read_text(encoding="utf-8")

@@ -12,7 +12,7 @@ from ``Result.seconds`` with and without the search; and (``corpus``) the wall
 time of ``rigidsym.check_latex`` with repairs on (the default ``--repair-seconds`` 10) on
 every entry of the book corpus (``tests/data/latex_corpus``), one process, an empty verdict
 cache, each entry with its book's table and ``--notation`` as the corpus test reads it: the
-slowest entries and the maximum (issue 52's target: none over 15 s).
+slowest entries and the maximum (the target: none over 15 s).
 
 Usage (from the repository root)::
 

@@ -1,4 +1,4 @@
-"""The cost of issue 37's range test on ordinary data: the C batch function of a kernel as
+"""The cost of the range test on ordinary data: the C batch function of a kernel as
 generated, against the same file with the block's range test over its inputs removed (the
 rescue's only work on a block that raised no floating-point exception flag), side by side.
 

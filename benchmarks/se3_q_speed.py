@@ -1,4 +1,4 @@
-"""Speed of the SE(3) kernels whose forms issue 48 rewrote (Barfoot's ``Q`` and ``J_l(w) v``
+"""Speed of the SE(3) kernels whose forms were rewritten (Barfoot's ``Q`` and ``J_l(w) v``
 without their cancellation): each kernel of a git revision (default: d987a31e, before) and
 of this checkout side by side in one run.
 

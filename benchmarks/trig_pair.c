@@ -1,4 +1,4 @@
-/* A sin/cos pair per sample, three ways, side by side (issue 37, the C back-end's trig):
+/* A sin/cos pair per sample, three ways, side by side (the C back-end's trig):
  * the generated header's rigidsym_sin/rigidsym_cos (OWN), glibc's libmvec (-DMVEC, with
  * -fopenmp-simd -fno-builtin-sin -fno-builtin-cos -lmvec) and libm's scalar sin/cos (neither).
  * Prints ns per pair (thread CPU time, best of 30 rounds over 4096 samples) and the largest

@@ -24,7 +24,7 @@ Usage (from the repository root)::
 
     python benchmarks/verify.py [--baseline REV] [--skip text,json,report,example,...]
 
-``REV`` defaults to ``HEAD~1`` (a commit after the layout of issue 18). Both trees are laid
+``REV`` defaults to ``HEAD~1`` (a commit with the ``src/rigidsym`` layout). Both trees are laid
 out as one byte-compiled ``rigidsym`` package in a temporary folder (``src/rigidsym`` with
 ``derivations/`` and ``generated/`` inside, as in a wheel) and imported from there; each
 run gets its own empty ``RIGIDSYM_CACHE``. The machine's load average is printed: on a
@@ -236,7 +236,7 @@ def main(argv: list[str] | None = None) -> int:
         work = Path(tmp)
         base = layout(args.baseline, work / "base")
         this = layout(None, work / "this")
-        # a baseline before issue 21 has no verdict cache: no warm runs
+        # a baseline without a verdict cache: no warm runs
         cached = (base / "rigidsym" / "checking" / "verdict_cache.py").exists()
         rows = {f"baseline ({args.baseline})": measure("base", base, cached, skip, work),
                 "this tree": measure("this", this, True, skip, work)}
