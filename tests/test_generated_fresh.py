@@ -2,11 +2,10 @@
 
 The default run compares generated/inputs.json (the digests of every input file of the
 generator and of every file it wrote) with the tree: seconds instead of a generation of 70 to
-360 s of CPU. The `slow` tests generate again, twice: in-process through `rigidsym generate --check`
-(byte for byte, exit code 0), and in a fresh process under a fixed PYTHONHASHSEED, whose
-files must be generated/'s bytes (the output does not depend on set iteration order) and
-whose imported modules must all be among the recorded inputs (the digest rule misses nothing
-the generator reads).
+360 s of CPU. The `slow` test generates again, once: `rigidsym generate --check` in a fresh
+process under a fixed PYTHONHASHSEED must exit 0 (generated/'s bytes: the output does not
+depend on set iteration order), and the modules it imported must all be among the recorded
+inputs (the digest rule misses nothing the generator reads).
 """
 
 from __future__ import annotations
@@ -23,7 +22,6 @@ import pytest
 
 import rigidsym
 from rigidsym.codegen import inputs
-from rigidsym.codegen.files import files_on_disk
 from rigidsym.codegen.generator import TEMPLATES, check, default_out_dir, write
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -125,30 +123,22 @@ def test_no_timestamps_or_absolute_paths():
         assert "/home/" not in text and "/root/" not in text, rel
 
 
-def same_tree(a: Path, b: Path) -> list[str]:
-    """The generator's files that differ between two generated folders (missing on one side,
-    or other bytes; the folders other commands own left out, as `generate --check` does)."""
-    fa, fb = files_on_disk(a), files_on_disk(b)
-    return sorted({*fa.keys() ^ fb.keys(),
-                   *(k for k in fa.keys() & fb.keys() if fa[k].read_bytes() != fb[k].read_bytes())})
-
-
 @pytest.mark.slow  # a whole generation (70 to 360 s of CPU); the default run compares digests
-def test_independent_of_hash_seed(tmp_path):
-    """A generation in a fresh process under a fixed PYTHONHASHSEED writes generated/ byte for
-    byte (generated/ was written under another seed: the output does not depend on set
-    iteration order), and every module the generation imported is among the inputs whose
-    digests generated/inputs.json records."""
+def test_check_in_a_fresh_process_under_another_hash_seed(tmp_path):
+    """`rigidsym generate --check` in a fresh process under a fixed PYTHONHASHSEED exits 0:
+    generated/ (written under another seed) is byte for byte what this generation writes, so
+    the output does not depend on set iteration order; and every module the generation
+    imported is among the inputs whose digests generated/inputs.json records. A stale tree
+    prints its diff and exits 1 (`test_check_reports_missing_orphan_and_changed`)."""
     # one process (RIGIDSYM_GENERATE_JOBS=1): the modules its workers import are its own
     env = dict(os.environ, PYTHONHASHSEED="4242", RIGIDSYM_GENERATE_JOBS="1")
-    code = ("import sys, json; from rigidsym.codegen.generator import generate, write; "
-            "write(generate(), sys.argv[1]); "
+    code = ("import sys, json; from rigidsym.cli import main; "
+            "rc = main(['generate', '--check']); "
             "print(json.dumps(sorted(m.__file__ for n, m in sys.modules.items() "
-            "if n.startswith('rigidsym') and getattr(m, '__file__', None))))")
-    p = subprocess.run([sys.executable, "-c", code, str(tmp_path / "out")], check=True,
-                       env=env, cwd=tmp_path, capture_output=True, text=True)
-    differ = same_tree(tmp_path / "out", ROOT / "generated")
-    assert differ == [], f"generated/ is stale; run `rigidsym generate`: {differ[:40]}"
+            "if n.startswith('rigidsym') and getattr(m, '__file__', None)))); sys.exit(rc)")
+    p = subprocess.run([sys.executable, "-c", code], env=env, cwd=ROOT, capture_output=True,
+                       text=True)
+    assert p.returncode == 0, (p.returncode, p.stdout[-4000:], p.stderr[-4000:])
     assert default_out_dir() == ROOT / "generated"
     recorded = {p.resolve() for p in inputs.input_files()}
     generated = (ROOT / "generated").resolve()
@@ -156,14 +146,6 @@ def test_independent_of_hash_seed(tmp_path):
     missed = sorted(str(f) for f in imported
                     if f not in recorded and not f.is_relative_to(generated))
     assert missed == [], f"modules the generator imports but inputs.json does not hash: {missed}"
-
-
-@pytest.mark.slow  # the CLI generates in this process and compares byte for byte
-def test_cli_check_exit_code(capsys):
-    """`rigidsym generate --check` on this checkout: generated/ is what a generation writes
-    (exit 0; a stale tree prints its diff and exits 1)."""
-    from rigidsym.cli import main
-    assert main(["generate", "--check"]) == 0, capsys.readouterr().out[-4000:]
 
 
 def test_cli_check_without_generated_folder(tmp_path, capsys):
