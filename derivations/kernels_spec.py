@@ -56,7 +56,7 @@ def _rot_ni(e, phi):
 
 
 def _rot_er(eta):
-    # normalised (issue 48), as jaxlie and pytransform3d: (2.3) divided by eta . eta, a
+    # normalised, as jaxlie and pytransform3d: (2.3) divided by eta . eta, a
     # rotation for every eta != 0; the book's form returned |eta|^2 Q, which the next
     # kernel's rotation check rejected at |eta| - 1 = 4e-9 (inside the unit tolerance)
     return {"Q": formula(_PR + "rotation_from_quaternion")(eta)}
@@ -404,5 +404,5 @@ KERNELS.append(Kernel(
           "natural_invariants_from_rotation's rule (largest-magnitude component positive)."))
 
 KERNELS += INTERNAL_KERNELS
-# issue 38: the Lie-group maps (derivations/kernels_spec_lie.py)
+# the Lie-group maps (derivations/kernels_spec_lie.py)
 KERNELS += LIE_KERNELS

@@ -1,4 +1,4 @@
-"""The kernels of the Lie-group maps (issue 38): each composes the formula functions of
+"""The kernels of the Lie-group maps: each composes the formula functions of
 :mod:`rigidsym.derivations.lie_maps` (verified by ``derivations/lie_groups.py``); their
 removable singularities at ``w = 0`` become certified series branches in the generator
 (:mod:`rigidsym.codegen.removable.singularities`). The logarithms reuse the natural invariants'
@@ -51,13 +51,13 @@ def _se3_exp(xi):
     # J_l(w) v as lie_maps.rotation_vector_left_jacobian_times writes it, its w x v and w . v
     # Grouped: distributed into monomials, the removable pass reads w0^2 as theta^2 - w1^2 -
     # w2^2 and folds sin(theta)/theta v back into v - (1 - sin(theta)/theta) v, which loses
-    # theta relative at large |w| (issue 48: float32 4.65 u median at |w| = 24.5)
+    # theta relative at large |w| (float32 4.65 u median at |w| = 24.5)
     return {"T": formula(_LM + "transform_from_exponential_coordinates")(xi, group=_mark)}
 
 
 def _se3_jl(xi):
     # the declared [[J_l, 0], [Q, J_l]] with lie_maps.se3_q_block's products of w and v
-    # Grouped (w . v, v w^T + w v^T, w w^T; issue 48): distributed, the removable pass folds
+    # Grouped (w . v, v w^T + w v^T, w w^T): distributed, the removable pass folds
     # its coefficients back into Barfoot's, whose terms of size |v| cancel to |v|/theta
     w, v = xi[:3, :], xi[3:, :]
     J = formula(_LM + "rotation_vector_left_jacobian")(w)
@@ -67,7 +67,7 @@ def _se3_jl(xi):
 
 def _se3_jl_inverse(xi):
     # the declared block inverse (lie_maps), its -J^-1 Q J^-1 kept as products of 3 x 3
-    # matrices (issue 48): each entry of J^-1 and Q and of Q J^-1 Grouped, so the
+    # matrices: each entry of J^-1 and Q and of Q J^-1 Grouped, so the
     # removable pass rewrites each alone and never distributes the product into monomials
     # of degree 9 in w (median 4-10 u at |w| in {3, pi, 4.5}, 24 of 60 samples outside the
     # rule's max(2 e_peer, 4 u) of pytransform3d's left_jacobian_SE3_inv, which multiplies);

@@ -1,4 +1,4 @@
-"""The Lie-group maps of SO(3) and SE(3) (issue 38), verified by the chapter's checker.
+"""The Lie-group maps of SO(3) and SE(3), verified by the chapter's checker.
 
 Not the book's equations: their ids say their source, ``sola:`` (Solà, Deray & Atchuthan,
 "A micro Lie theory for state estimation in robotics", arXiv:1812.01537, 2018, App. B for
@@ -176,7 +176,7 @@ def jl_inverse() -> Statement:
 @equation("sola:jl-times", "J_l(w) v = (sin θ/θ) v + ((1 − cos θ)/θ²) w × v + ((θ − sin θ)/θ³) "
           "(w·v) w (Solà App. B; Barfoot Sec. 7.1.3)", section="so3")
 def jl_times() -> Statement:
-    # the kernels' form of J_l v (no cancellation at large theta, issue 48)
+    # the kernels' form of J_l v (no cancellation at large theta)
     p = vec("J_l v")
     return Statement([Rel(p, Jl * v)],
                      {**SO3, v: _im(v_),
@@ -226,7 +226,7 @@ def se3_jl_inverse() -> Statement:
           "is Barfoot's printed Q (Barfoot Sec. 7.1.5; Solà App. D)", section="se3")
 def se3_q_block() -> Statement:
     # the kernels' Q, whose terms are each O(|v|/theta), against Barfoot's seven products,
-    # each O(|v|) at large theta (issue 48)
+    # each O(|v|) at large theta
     Qk, Qb = mat("Q(v, w)"), mat("Q_Barfoot(v, w)")
     return Statement([Rel(Qk, Qb)], {Qk: _im(L.se3_q_block(w_, v_)),
                                      Qb: _im(L.se3_q_block_barfoot(w_, v_))})

@@ -1,4 +1,4 @@
-"""The Lie-group maps of SO(3) and SE(3) from unconstrained vectors (issue 38): formula
+"""The Lie-group maps of SO(3) and SE(3) from unconstrained vectors: formula
 functions, each the closed form of its sources, composed by the kernels of
 ``derivations/kernels_spec_lie.py`` and verified by the declarations of
 ``derivations/lie_groups.py``.
@@ -18,7 +18,7 @@ a removable singularity at ``w = 0`` (the kernels replace it by its certified se
 
 Long: one subject, the closed forms of the maps of SO(3) and SE(3), each with its sources and
 the derivation of the rewritten forms the kernels use (Q of the SE(3) Jacobian and J_l(w) v
-without their cancellation at large |w|, issue 48) beside the printed form they are proved
+without their cancellation at large |w|) beside the printed form they are proved
 equal to; the kernels and the declarations name these functions by this module's path.
 """
 
@@ -106,7 +106,7 @@ def rotation_vector_left_jacobian_times(w, v, group=None) -> sp.Matrix:
     sin theta)/theta^3 = sin theta / theta``), written so that no two terms cancel at large
     ``theta``: as ``v + a [w] v + b [w]^2 v`` the part of ``v`` across ``w`` is ``v - (1 -
     sin theta/theta) v``, which loses ``theta`` relative when ``J_l v`` is ``|v|/theta``
-    (issue 48: 4.7 u median at ``|w| = 24.5`` in float32, the search's 1.16 times the rule).
+    (4.7 u median at ``|w| = 24.5`` in float32, the search's 1.16 times the rule).
 
     Source: Solà et al. 2018, App. B (``J_l``) and App. D (the translation of ``Exp`` of
     SE(3)); Barfoot Sec. 7.1.3 (``J v``); MR (3.88) (``G(theta) v``).
@@ -311,7 +311,7 @@ def se3_q_block(w, v, group=None) -> sp.Matrix:
     theta/theta - 2 A = D theta^2`` and ``-2 c theta^3 = G theta^3``; ``[w]^2 = w w^T -
     theta^2 1`` then gives ``H = 2 B + G theta^2``.
     Barfoot's terms are each ``O(|v|)`` at large ``theta`` and cancel to a ``Q`` of size
-    ``|v|/theta`` (issue 48: 66 .. 280 u in every program at ``|w| ~ 240``, condition 1.8);
+    ``|v|/theta`` (66 .. 280 u in every program at ``|w| ~ 240``, condition 1.8);
     these are each ``O(|v|/theta)``. Exactly Barfoot's matrix for every ``w != 0`` (the
     declaration ``barfoot:se3-q-block`` of ``derivations/lie_groups.py``); every coefficient
     is removable at ``w = 0`` (``A -> 1/2``, ``B -> 1/6``, ``D -> -1/12``, ``G -> -1/60``,

@@ -1,6 +1,7 @@
 """The code, the tests and the docs say what is, in the present tense: no reference to the
-project's tracker ("issue N") and no round of work ("wave N") in src/, tests/ or docs/. The
-history of the project is CHANGELOG.md's.
+project's tracker ("issue N") and no round of work ("wave N") in src/, tests/, docs/,
+derivations/, examples/ or benchmarks/. The history of the project is CHANGELOG.md's, and the
+dated runs of the benchmarks are benchmarks/RESULTS.md's and benchmarks/results/' records.
 
 Citations of other projects' trackers stay, each spelled as a citation of that project and
 listed in :data:`CITATIONS`. docs/api.md is generated from the docstrings of src/, which this
@@ -13,11 +14,13 @@ import re
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-TREES = ("src", "tests", "docs")
+TREES = ("src", "tests", "docs", "derivations", "examples", "benchmarks")
 
 #: files that keep history by design, or are generated from what this test reads
 EXCLUDED = {ROOT / "docs" / "CHANGELOG.md", ROOT / "CHANGELOG.md", ROOT / "docs" / "api.md",
-            Path(__file__).resolve()}
+            ROOT / "benchmarks" / "RESULTS.md", Path(__file__).resolve()}
+#: folders of dated records
+EXCLUDED_DIRS = {ROOT / "benchmarks" / "results"}
 
 #: citations of another project's tracker, exactly as written where they are cited
 CITATIONS = ("box2d's GitHub issue 1086",)
@@ -33,6 +36,7 @@ def _text_files():
     for tree in TREES:
         for path in sorted((ROOT / tree).rglob("*")):
             if (not path.is_file() or "__pycache__" in path.parts or path in EXCLUDED
+                    or any(d in path.parents for d in EXCLUDED_DIRS)
                     or path.suffix in (".pyc", ".so", ".o", ".png", ".gz", ".pdf")):
                 continue
             data = path.read_bytes()

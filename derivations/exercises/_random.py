@@ -1,4 +1,4 @@
-"""Readable exact draws for the exercises' random variants (an exam's draws, issue 32):
+"""Readable exact draws for the exercises' random variants (an exam's draws):
 rotations by Cayley's formula of small rationals, unit vectors from Pythagorean
 quadruples. Each takes a ``random.Random`` so that a spec and seed give the same exam."""
 

@@ -1,4 +1,4 @@
-"""Variants of the exercises that draw no random data of their own (issue 51 item 3).
+"""Variants of the exercises that draw no random data of their own.
 
 Exercise 3.6 gets numeric variants (the gripper point P drawn at random). The proofs
 (3.3, 3.8, 3.9, 3.13, 3.15-3.18, 3.20, 3.21) become "true or false, and why": three

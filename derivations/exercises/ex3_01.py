@@ -16,7 +16,7 @@ STATEMENT = ("\"Determine the matrix representing the rotation Q undergone by th
              "minimum magnitude. Find the intersections of L with the coordinate planes.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.1"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"phi": "rad"}
 #: what the answers are (the grader judges a student's answer by its class): the axis and
 #: angle of Q with the Plücker array of its axis, one sign for all three ((e, phi, [e; n])

@@ -13,7 +13,7 @@ STATEMENT = ("\"f_1 is directed from P_2 to P_3, whereas f_2 is directed from P_
              "of n a minimum.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.2"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"P": "m"}
 FIGURE_NAME = "tetrahedron"
 _r3, _r6 = sp.sqrt(3), sp.sqrt(6)

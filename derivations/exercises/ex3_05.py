@@ -21,7 +21,7 @@ STATEMENT = ("\"Show that the distance of the axis to the origin ... d = ||n||. 
              "position vector p* = e x n\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.5"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"d": "m", "p_star": "m"}
 FIGURE_NAME = "axis"
 #: the Plücker coordinates may be measurements (decimals, or floats): coordinates within

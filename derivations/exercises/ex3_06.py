@@ -16,7 +16,7 @@ STATEMENT = ("\"Compute the angle of rotation of the motion undergone by G ... a
              "G undergoing a displacement of minimum magnitude\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.6"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"phi": "rad", "axis_point_p0": "m"}
 #: what the answers are: the axis and angle of Q with the axis's Plücker array, one sign
 #: for all three, phi + 2 pi k; "a point p_0 of the axis": any point of it

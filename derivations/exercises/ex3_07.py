@@ -13,7 +13,7 @@ STATEMENT = ("\"the moment of this axis is measured with respect to two points, 
              "axis about the origin\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.7"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"p_star": "m", "p_star_2": "m"}
 FIGURE_NAME = "axis"
 #: the moments may be measurements (decimals, or floats): the line is then the nearest

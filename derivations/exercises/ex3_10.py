@@ -19,7 +19,7 @@ STATEMENT = ("\"find the matrix W such that omega = W eta_dot ... Find under whi
              "W becomes singular.\"")
 CITATION = "Angeles, Fundamentals of Robotic Mechanical Systems, Sec. 3.9, Exercise 3.10"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"eta_dot": "rad/s"}
 FIGURE_NAME = "condition"
 PROPER_EULER = ["ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY"]

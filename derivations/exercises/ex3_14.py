@@ -21,7 +21,7 @@ STATEMENT = ("\"The centroidal inertia matrix of a rigid body is measured by two
              "Show that the two measurements are acceptable.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.14"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"principal_moments": "kg m^2"}
 #: what the rotation box is: any rotation Q with Q [I]_A Q^T = [I]_B (four when the
 #: principal moments are distinct: a principal axis has no sense)

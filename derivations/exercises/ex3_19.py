@@ -24,7 +24,7 @@ STATEMENT = ("\"If points P and S lie a distance of 100 mm apart, find the wrenc
              "the readouts of the sensor are [n]_S = [1, 0, 1]^T Nm, [f]_S = [0, 1, 0]^T N\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.19"
 #: the documented unit of each answer with one (graded answers may be written in any
-#: compatible unit, issue 50); the others are pure numbers or mixed
+#: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"n_2": "N m", "f_2": "N"}
 FIGURE_NAME = "sensor"
 MEASURED = True

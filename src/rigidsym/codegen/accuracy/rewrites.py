@@ -14,7 +14,8 @@ expressions"; Herbie itself is a Racket tool, so the selection here is ours):
    the reference is the declared outputs at the exact point in mpmath (the points:
    :func:`rigidsym.codegen.accuracy.points.exact_points`; the error:
    :class:`rigidsym.codegen.accuracy.error.Meter`);
-3. the candidate is kept when its worst error is at least 4 times smaller, and only after
+3. the candidate is kept when its worst ratio to the rule is :data:`GAIN` times smaller (a
+   rule's own smaller ``gain`` only where it brings the output within the rule), and only after
    the zero test (:func:`rigidsym.zero.decide.decide_zero`, the constraints of the inputs'
    kinds imposed exactly) decides the replaced parts equal to the declared ones.
 
