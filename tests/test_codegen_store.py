@@ -17,6 +17,7 @@ from pathlib import Path
 
 import pytest
 import sympy as sp
+from test_interrupts import terminal_caller
 
 from rigidsym.codegen import inputs as store
 from rigidsym.codegen.derivatives.jacobians import jacobian_kernels
@@ -119,10 +120,11 @@ def _env(cache_dir: Path, work: Path, more: dict | None = None) -> dict:
 
 def _generate(out: Path, cache_dir: Path, work: Path, *extra: str,
               env: dict | None = None) -> subprocess.Popen:
-    return subprocess.Popen(
-        [sys.executable, "-m", "rigidsym", "generate", "--module", str(EXAMPLE), "--out",
-         str(out), "--no-build", *extra], env=_env(cache_dir, work, env), cwd=out.parent,
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    with terminal_caller():  # a SIGINT the child can receive, however pytest was started
+        return subprocess.Popen(
+            [sys.executable, "-m", "rigidsym", "generate", "--module", str(EXAMPLE), "--out",
+             str(out), "--no-build", *extra], env=_env(cache_dir, work, env), cwd=out.parent,
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
 
 def _derived(work: Path) -> dict:

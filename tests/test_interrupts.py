@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import json
 import os
-import random
 import re
 import signal
 import subprocess
@@ -80,7 +79,7 @@ def _env(cache: Path, work: Path, at: str | None = None, trace: Path | None = No
 
 
 @contextmanager
-def _terminal_caller() -> Iterator[None]:
+def terminal_caller() -> Iterator[None]:
     """Python's own SIGINT handler in this process while a child starts: a child inherits
     an ignored SIGINT (pytest started as a background job, ``cmd &``) and keeps ignoring it,
     by design (:func:`interrupts.install`); a terminal's caller does not ignore it."""
@@ -92,7 +91,7 @@ def _terminal_caller() -> Iterator[None]:
 
 
 def _start(args: list[str], env: dict, cwd: Path) -> subprocess.Popen:
-    with _terminal_caller():
+    with terminal_caller():
         return subprocess.Popen([sys.executable, "-m", "rigidsym", *args], env=env, cwd=cwd,
                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
@@ -126,6 +125,20 @@ def _points(args: list[str], cache: Path, work: Path, cwd: Path) -> tuple[list[s
 def _signal_at(k: int) -> str:
     """The signal of the ``k``-th checkpoint's interrupt: SIGTERM for every fourth."""
     return "SIGTERM" if k % 4 == 3 else "SIGINT"
+
+
+def each_kind_of_checkpoint(points: list[str]) -> list[int]:
+    """The checkpoints (counted from 1) a slow test interrupts: the first and the last
+    passing of every kind of checkpoint of ``points`` (a cache entry written, an id decided,
+    a phase begun, ...), and the third (a SIGTERM, :func:`_signal_at`): each kind of point
+    where the command can be cut short, at the start and the end of its work, rather than
+    every passing of each (a cold ``verify`` of three ids passes some twenty)."""
+    first: dict[str, int] = {}
+    last: dict[str, int] = {}
+    for k, name in enumerate(points, 1):
+        first.setdefault(name, k)
+        last[name] = k
+    return sorted({*first.values(), *last.values(), *([3] if len(points) >= 3 else [])})
 
 
 def _warm(mod: Path, cache: Path, tmp_path: Path) -> None:
@@ -194,22 +207,24 @@ def test_sigint_during_verify_keeps_the_decided_ids_and_the_next_run_reuses_them
 @pytest.mark.slow
 @pytest.mark.parametrize("jobs", [1, 2])
 def test_sigint_or_sigterm_at_each_checkpoint_of_verify(tmp_path, jobs):
-    """Every checkpoint of a cold ``verify`` (a cache entry written, an id decided, ...):
-    interrupted there, then run again, its results equal an uninterrupted run's."""
+    """Each kind of checkpoint of a cold ``verify`` (a cache entry written, an id decided,
+    ...) at its first and last passing: interrupted there, then run again, its results
+    equal an uninterrupted run's."""
     n = 3
     mod = _module(tmp_path, "intr", n)
     args = _verify_args(mod, jobs)
     points, ref = _points(args, tmp_path / "ref", tmp_path / "ref.json", tmp_path)
     assert points.count("decide") == (n if jobs == 1 else 0), points  # workers' uncounted
-    for k in range(1, len(points) + 1):
+    for k in each_kind_of_checkpoint(points):
         _, doc = _interrupt_and_resume(tmp_path, args, n, f"{k}@{_signal_at(k)}", str(k))
         assert _rows(doc) == _rows(ref), (k, points[k - 1])
 
 
 @pytest.mark.slow
 def test_sigint_at_each_checkpoint_of_report(tmp_path):
-    """``report --module``: interrupted at each checkpoint, then run again: the same files
-    as an uninterrupted run's, the kept ids not decided again."""
+    """``report --module``: interrupted at each kind of checkpoint (its first and last
+    passing), then run again: the same files as an uninterrupted run's, the kept ids not
+    decided again."""
     n = 3
     mod = _module(tmp_path, "rep", n)
 
@@ -217,7 +232,7 @@ def test_sigint_at_each_checkpoint_of_report(tmp_path):
         return ["report", "--module", str(mod), "--out", str(tmp_path / out), "--jobs", "2"]
 
     points, _ = _points(args("ref"), tmp_path / "refc", tmp_path / "ref.json", tmp_path)
-    for k in range(1, len(points) + 1):
+    for k in each_kind_of_checkpoint(points):
         cache, work, out = tmp_path / f"c{k}", tmp_path / f"w{k}.json", f"out{k}"
         rc, _, err = _run(args(out), _env(cache, work, at=f"{k}@{_signal_at(k)}"), tmp_path)
         kept = _assert_one_line(rc, err, n)
@@ -323,7 +338,7 @@ def handlers() -> Iterator[None]:
     """This process's SIGINT and SIGTERM handlers restored after the test (which installs
     the command's), Python's own SIGINT handler during it (as a terminal's caller has)."""
     saved = {sig: signal.getsignal(sig) for sig in (signal.SIGINT, signal.SIGTERM)}
-    with _terminal_caller():
+    with terminal_caller():
         yield
     for sig, handler in saved.items():
         signal.signal(sig, handler)
@@ -432,17 +447,13 @@ variants = 2
 """
 
 
-#: how many of ``generate``'s checkpoints (a file written, a kernel built: about forty) the
-#: slow set interrupts, the first and the last among them
-GENERATE_SAMPLE = 8
-
-
 @pytest.mark.slow
 @pytest.mark.parametrize("command", ["exam", "generate"])
 def test_sigint_or_sigterm_at_checkpoints_of_exam_and_generate(tmp_path, command):
-    """Interrupted at each checkpoint of ``exam`` (an exercise solved, a file written), at a
-    seeded sample of ``generate``'s, then run again: exit 130 and one line, then the files
-    of an uninterrupted run, byte for byte."""
+    """Interrupted at each kind of checkpoint of ``exam`` (an exercise solved, a file
+    written) and of ``generate`` (a file written, a kernel derived), at its first and last
+    passing, then run again: exit 130 and one line, then the files of an uninterrupted run,
+    byte for byte."""
     (tmp_path / "quiz.toml").write_text(SPEC, encoding="utf-8")
     example = ROOT / "examples" / "rotation_identities.py"
 
@@ -453,10 +464,7 @@ def test_sigint_or_sigterm_at_checkpoints_of_exam_and_generate(tmp_path, command
                  "--no-build"])
 
     points, _ = _points(args("ref"), tmp_path / "refc", tmp_path / "ref.json", tmp_path)
-    every = range(1, len(points) + 1)
-    chosen = sorted({1, len(points), *random.Random(command).sample(
-        every, min(GENERATE_SAMPLE, len(points)))}) if command == "generate" else every
-    for k in chosen:
+    for k in each_kind_of_checkpoint(points):
         env = _env(tmp_path / f"c{k}", tmp_path / f"w{k}.json", at=f"{k}@{_signal_at(k)}")
         rc, _, err = _run(args(f"out{k}"), env, tmp_path)
         _assert_one_line(rc, err, 0)
@@ -484,7 +492,7 @@ def test_an_error_caused_by_the_interrupt_is_reported_as_the_interrupt(monkeypat
 
     # a run started ignoring SIGINT (a background job, nohup) keeps ignoring it, by design
     # (interrupts.install); here the caller is a terminal's: Python's own handler
-    with _terminal_caller():
+    with terminal_caller():
         _interrupt_or_error(monkeypatch, capsys, cli, failing)
 
 
@@ -521,7 +529,7 @@ def test_an_interrupt_inside_an_evaluated_string_still_exits_130_under_python_m(
     ``generate`` interrupted inside sympy's lambdify); :func:`interrupts.quiet` clears it."""
     (tmp_path / "cut_short.py").write_text(PROGRAM, encoding="utf-8")
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(tmp_path), *sys.path]))
-    with _terminal_caller():  # its handler, which exec resets to the default
+    with terminal_caller():  # its handler, which exec resets to the default
         p = subprocess.run([sys.executable, "-m", "cut_short"], cwd=tmp_path, env=env,
                            capture_output=True, text=True, timeout=60)
     assert p.returncode == interrupts.EXIT, (p.returncode, p.stderr)
