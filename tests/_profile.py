@@ -31,7 +31,7 @@ if PROFILE not in ("quick", "thorough"):
 #: the seed of the sampled families' draw
 SEED = int(os.environ.get("RIGIDSYM_TEST_SEED", "0"))
 #: the thorough run's Hypothesis budget, in quick budgets
-THOROUGH_FACTOR = 5
+THOROUGH_FACTOR = 3
 #: the share of a sampled family the quick run keeps, when its mark names none
 DEFAULT_FRACTION = 0.25
 

@@ -136,8 +136,9 @@ def backend(request):
 @pytest.hookimpl(tryfirst=True)
 def pytest_collection_modifyitems(session, config, items):
     """Before the marker expression deselects: every Hypothesis property gets the ``budget``
-    mark (the thorough run runs it again at its larger budget), and the parameters of a
-    family marked ``sample`` outside the seeded sample get ``slow``."""
+    mark (the thorough run runs it again at its larger budget), the parameters of a
+    family marked ``sample`` outside the seeded sample get ``slow``, and the tests of the
+    chapter's certificates one ``xdist_group``."""
     families: dict[tuple, list] = {}
     for item in items:
         if getattr(getattr(item, "obj", None), "is_hypothesis_test", False):
@@ -155,3 +156,9 @@ def pytest_collection_modifyitems(session, config, items):
         for item in members:
             if _profile.plain(item.nodeid) not in keep:
                 item.add_marker("slow")
+    # the tests of the chapter's certificates on one worker (--dist loadgroup): the other
+    # worker runs other tests while the first builds them, instead of waiting on the lock
+    for item in items:
+        if ("chapter_certificates" in getattr(item, "fixturenames", ())
+                and item.get_closest_marker("xdist_group") is None):
+            item.add_marker(pytest.mark.xdist_group("chapter_certificates"))

@@ -78,15 +78,18 @@ def book_text() -> str:
 
 
 def rejection(cert: dict, book: str) -> str:
-    """The message of certcheck's rejection (page, cause, reader or mathematics)."""
+    """The message of certcheck's rejection (page, cause, reader or mathematics).
+
+    certcheck runs the three checks and rejects when any one fails; here the reading of the
+    page comes before the proof, so that a tampering the page refutes costs no proof."""
     from certcheck.compare import compare
 
     i = cert["id"]
     try:
         check_page(cert, book)
-        check_certificate(cert, fast=False)
         compare(cert, locate(book, i), fast=False,
                 defs=definitions_before(book, i) if i[0].isdigit() else {})
+        check_certificate(cert, fast=False)
     except (CheckError, BookError) as exc:
         return str(exc)
     raise AssertionError(f"({cert.get('id')}) accepted")

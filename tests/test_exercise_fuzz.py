@@ -125,10 +125,10 @@ def test_data_strings_never_crash(ex_id, short_budget):
 @pytest.mark.slow
 @pytest.mark.parametrize("ex_id", WITH_DATA)
 def test_data_strings_never_crash_exhaustive(ex_id, short_budget):
-    # the short budget here too; derandomized, as the default run: CI draws the same 50
+    # the short budget here too; derandomized, as the default run: CI draws the same 30
     # data sets every time (a new seed is a new search, for a person, not a coin CI flips);
-    # 50: five times the quick run's 10, the thorough profile's factor (tests/_profile.py)
-    @_property(50)
+    # 30: three times the quick run's 10, the thorough profile's factor (tests/_profile.py)
+    @_property(30)
     @given(exercise_data(ex_id))
     def prop(sets):
         _check(ex_id, sets)

@@ -321,9 +321,9 @@ def test_bad_input_module_functions(b):
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
 def test_subnormal_inputs_arrays(b, dtype):
     """A subnormal input (omega of N_tilde_dot) whose result is normal: NumPy's value (its
-    long-double rescue) to 2^-14. Found by the regimes' long profile: XLA on CPU flushes
-    subnormals to zero in comparisons too, so a float range test missed them and JAX
-    returned 0 for a result of 9.2e-38 (float32)."""
+    long-double rescue) to 2^-14. Found by the regimes' property with JAX on every kernel:
+    XLA on CPU flushes subnormals to zero in comparisons too, so a float range test missed
+    them and JAX returned 0 for a result of 9.2e-38 (float32)."""
     mod, to, back = backend(b)
     e = np.array([0.18881711, -0.19839032, 0.9617637])
     e = (e / np.linalg.norm(e)).astype(dtype)

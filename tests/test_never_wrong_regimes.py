@@ -6,16 +6,16 @@ PyTorch and JAX (the same NaN positions; elsewhere values within the tolerance b
 items 3-4 (a finite input whose NumPy result, its long-double rescue, is finite is finite
 on every back-end; check=False returns what check=True returns).
 
-The quick profile is derandomized and runs C against NumPy in the README's test command;
-PyTorch and JAX join where installed (marked ``extra``); the ``slow`` profile draws many
-more examples.
+Both profiles are derandomized; the quick one runs C against NumPy on a sample of the
+kernels in the README's test command; PyTorch and JAX join where installed (marked
+``extra``); the thorough profile runs every kernel and type at five times the examples.
 """
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
-from _profile import examples
+from _profile import PROFILE, examples
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from test_kernels_props import KERNELS, valid
@@ -189,23 +189,9 @@ def test_regimes_c_numpy(name, dtype, data):
 @settings(max_examples=examples(3), derandomize=True, **_SETTINGS)
 @given(data=st.data())
 def test_regimes_four_backends(name, dtype, data):
-    """C, NumPy, PyTorch (every kernel) and JAX (QUICK_JAX's; every kernel in the long
-    profile: its eager operations compile once per shape, ~1 s a kernel)."""
-    arrays = ("torch", "jax") if name in QUICK_JAX else ("torch",)
+    """C, NumPy, PyTorch (every kernel) and JAX (QUICK_JAX's in the quick profile, every
+    kernel in the thorough one: its eager operations compile once per shape, ~1 s a
+    kernel), every kernel and type at the thorough budget in the thorough profile."""
+    arrays = (("torch", "jax") if name in QUICK_JAX or PROFILE == "thorough"
+              else ("torch",))
     check_backends(name, data.draw(regime_batch(name, dtype)), dtype, arrays)
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("dtype", DTYPES)
-@pytest.mark.parametrize("name", sorted(KERNELS))
-@settings(max_examples=60, **_SETTINGS)
-@given(data=st.data())
-def test_regimes_long_profile(name, dtype, data):
-    arrays = [b for b in ("torch", "jax") if _installed(b)]
-    check_backends(name, data.draw(regime_batch(name, dtype)), dtype, arrays)
-
-
-def _installed(b: str) -> bool:
-    import importlib.util
-
-    return importlib.util.find_spec(b) is not None
