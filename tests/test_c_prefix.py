@@ -26,7 +26,7 @@ from _cmake import configure_and_build
 
 ROOT = Path(__file__).resolve().parents[1]
 USER_MODULE = ROOT / "examples" / "c" / "my_kernels.py"
-#: the issue's warning flags of the C++ application
+#: the warning flags of a strict C++ application
 WARNINGS = ["-Wall", "-Wextra", "-Wpedantic", "-Werror", "-Wconversion",
             "-Wdouble-promotion", "-Wshadow"]
 C_STRICT = ["-std=c99", "-Wall", "-Wextra", "-Wpedantic", "-Werror"]
@@ -348,7 +348,7 @@ def _fill(template: str) -> str:
 def test_book_and_user_folders_in_one_cmake_program(book_and_mybot, tmp_path, cc, cxx):
     """add_subdirectory of the book's folder and of a ``--prefix mybot`` user folder (both
     holding twist_transfer) into one CMake project: its C program (C99) and its C++ program
-    (both layers in one translation unit, the issue's warnings) build under -Werror, the C
+    (both layers in one translation unit, WARNINGS) build under -Werror, the C
     under a project's ``-Ofast -Werror``; both folders' twist transfer give the same bits
     and the NumPy kernel's value, the user kernel its formula's."""
     from rigidsym import kernels as K

@@ -3,7 +3,7 @@ within the kernel's bound for every finite input, whatever the exponent of each 
 
 Each argument of a kernel gets its own random binary exponent over the whole range of the
 type (normal and subnormal; a component now and then at an exponent of its own, or zero),
-so that one argument may be 2^100 while another is 2^-60 (the issue's case: the kinetic
+so that one argument may be 2^100 while another is 2^-60 (the case that motivates it: the kinetic
 energy in float with m = 1e30, v = 1e-18 gave status 0 and T = 0, the rescue having scaled
 v by m's power of two until it flushed). The verdict is against the declared formula
 evaluated in 60-digit mpmath (independent of the generated program): a call with status 0
@@ -41,7 +41,7 @@ from rigidsym.codegen.backends.c import M4F_SHIM
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 GCC = shutil.which("gcc")
 
-#: the default run's kernels: a sum of terms of different arguments (the issue's), a
+#: the default run's kernels: a sum of terms of different arguments (the kinetic energy), a
 #: product of many, and a division (pitch = omega . a_dot / omega . omega)
 DEFAULT_KERNELS = ["kinetic_energy", "point_acceleration", "instant_screw_point_pitch"]
 
@@ -364,8 +364,8 @@ def default_src(tmp_path_factory):
 @pytest.mark.parametrize("flags", [[], ["-DRIGIDSYM_C_NO_WIDE"], ["-DDRIVER_FTZ"]],
                          ids=["wide", "no_wide", "ftz"])
 def test_independent_exponents_never_a_silent_wrong(default_src, tmp_path, flags):
-    """x86-64: the default run's kernels, 20 draws each per type, and the issue's points,
-    which the rescue must now answer (status 0, T = m v^2 / 2)."""
+    """x86-64: the default run's kernels, 20 draws each per type, and the kinetic energy's
+    points of m = 1e30, v = 1e-18, which the rescue answers (status 0, T = m v^2 / 2)."""
     exe = build([GCC, *STRICT, "-O2", *flags], default_src, DEFAULT_KERNELS,
                 tmp_path / "drv")
     tally = check_build([], exe, DEFAULT_KERNELS, 20, seed=sum(map(ord, "".join(flags))))

@@ -5,7 +5,7 @@ against the data file's own NumPy truth (which never imports rigidsym). No verdi
 each case answers as recorded, as typed (``AFTER``) and after the one attempt its refusal names
 (``AFTER_ATTEMPT``); no message leaks exception text.
 
-And the rules the trial brought: a tilde over a 3-vector (its cross-product matrix or a
+And the rules these books need: a tilde over a 3-vector (its cross-product matrix or a
 vector of its own, both semantics), a unit vector's rate tangent, ``\\theta_0`` beside a
 declared vector refused naming both readings, and the two semantics' disagreement quoting
 its relation as written, each value on one line.

@@ -1,5 +1,5 @@
 """Functions as the books define them, declarations in any order, and no bracket read as
-the one it resembles: the three wrong verdicts of the issue and the
+the one it resembles: three verdicts a reader's typing once turned wrong and the
 ``S(\\mathbf{i})`` case, each with the wrong answer it guards against."""
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 ``rigidsym_c.hpp`` beside the C, a header-only namespace of functions on Eigen matrices of
 static shape (either storage order) and on nested ``std::array``.
 
-The slow tests build a C++ application with CMake (g++ and clang++, the issue's warning
+The slow tests build a C++ application with CMake (g++ and clang++, strict warning
 flags under ``-Werror``, the C compiled under a project's ``-Ofast -Werror``) that calls
 every kernel of a generated folder with column-major and row-major Eigen matrices and with
 ``std::array``, in double and float, and check that the three give the same bits and that
@@ -270,7 +270,7 @@ def test_every_kernel_same_in_every_layout_and_right(generated, tmp_path, cc, cx
     """Column-major and row-major Eigen matrices, strided views and expressions, and
     std::array give the same bits, and
     the answers are the NumPy kernels' (1e-12 double, 1e-5 float, relative to the output's
-    largest magnitude); built warning-free under the issue's flags, the C under a project's
+    largest magnitude); built warning-free under strict warning flags, the C under a project's
     ``-Ofast -Werror`` with no build type (clang's -Woverriding-t-option)."""
     if shutil.which("cmake") is None:
         pytest.skip("cmake is not installed")
@@ -409,7 +409,7 @@ EXAMPLE_KERNELS = ROOT / "examples" / "c" / "rigidsym_c"
 
 @pytest.mark.slow
 def test_example_builds_strict_and_matches_numpy(tmp_path):
-    """The example builds warning-free under the issue's flags and prints the NumPy
+    """The example builds warning-free under strict warning flags and prints the NumPy
     kernels' values; the transpose of Q gives the axis -e (the layer reads (i, j))."""
     from rigidsym import kernels as K
 

@@ -31,7 +31,7 @@ def _rel(got, ref):
     return float(np.abs(got - ref).max() / np.abs(ref).max())
 
 
-#: the issue's two cases: a large offset with a small difference, and nearly coincident
+#: two hard cases: a large offset with a small difference, and nearly coincident
 #: points near the unit sphere (|p2 - p1| = 2e-9)
 _rng = np.random.default_rng(37)
 _P = _rng.standard_normal(3)

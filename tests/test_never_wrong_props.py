@@ -25,7 +25,7 @@ U64 = 2.0**-53
 @st.composite
 def two_points(draw, max_exp: int = 150):
     """(p1, p2): a random direction at 10^k, and p2 = p1 + 10^(k - j) r (j = 0: points far
-    apart; j up to 12: nearly coincident, the regime of the issue)."""
+    apart; j up to 12: nearly coincident, the hard regime)."""
     k = draw(st.integers(-max_exp, max_exp))
     j = draw(st.integers(0, 12))
     f = st.floats(-1.0, 1.0, allow_nan=False).filter(lambda x: abs(x) > 1e-3)

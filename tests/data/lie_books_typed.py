@@ -1,5 +1,6 @@
 # ruff: noqa: E501 - the LaTeX of a book equation is one line, as typed
-"""An outside trial of the estimation and Lie-theory books: 42 statements from five sources.
+"""The estimation and Lie-theory books typed as their readers would: 42 statements from five
+sources.
 
 Sources (none typed in the LaTeX corpus): Barfoot, *State Estimation for Robotics* (2017),
 ch. 7 (SO(3), SE(3); ξ = [ρ; φ], translation first); Forster, Carlone, Dellaert & Scaramuzza,

@@ -1,9 +1,10 @@
-"""An outside trial of the estimation and Lie-theory books (``tests/data/trial_lie_books.py``):
-42 statements from Barfoot, Forster et al., Kok-Hol-Schön, Chirikjian and manif's
-documentation, typed as their readers would with the ``--let``s docs/check-latex.md teaches,
+"""The estimation and Lie-theory books (``tests/data/lie_books_typed.py``): 42 statements
+from Barfoot, Forster et al., Kok-Hol-Schön, Chirikjian and manif's documentation, typed as
+their readers would with the ``--let``s docs/check-latex.md teaches,
 judged by the data file's own NumPy truth (which never imports rigidsym). No verdict may be
 wrong, each case answers as recorded (as typed, and after the one attempt its message names),
-and no case the checker decided as typed before the trial's changes is undecided or refused.
+and no case the checker decided as typed when the cases were recorded (``BEFORE``) is undecided
+or refused.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import pytest
 import rigidsym
 
 DATA = Path(__file__).resolve().parent / "data"
-_spec = importlib.util.spec_from_file_location("trial_lie_books", DATA / "trial_lie_books.py")
+_spec = importlib.util.spec_from_file_location("lie_books_typed", DATA / "lie_books_typed.py")
 trial = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(trial)
 CASES = {c["id"]: c for c in trial.CASES}
