@@ -32,18 +32,24 @@ def _driver():
     return mod
 
 
+#: the longest the build stays silent between two progress lines, in seconds (a reader
+#: takes a longer silence for a hang)
+_SILENCE = 2.5
+
+
 def _tenths(t0: float):
-    """A progress callback printing a line at each tenth of the build (pip shows them with
-    ``-v``; without it pip is silent for the whole compile, minutes on 2 cores)."""
-    shown = [0]
+    """A progress callback printing a line at each tenth of the build, and between tenths
+    whenever :data:`_SILENCE` seconds passed without one (pip shows them with ``-v``;
+    without it pip is silent for the whole compile, minutes on 2 cores)."""
+    shown = [0, t0]
 
     def progress(done: int, total: int) -> None:
-        tenth = 10 * done // max(total, 1)
-        if tenth > shown[0]:
-            shown[0] = tenth
+        tenth, now = 10 * done // max(total, 1), time.perf_counter()
+        if tenth > shown[0] or now - shown[1] >= _SILENCE or done == total:
+            shown[:] = [tenth, now]
             print(f"rigidsym: {min(done, total - 1)}/{total - 1} objects"
-                  f"{' and the link' if done == total else ''} ({10 * tenth} %), "
-                  f"{time.perf_counter() - t0:.0f} s", flush=True)
+                  f"{' and the link' if done == total else ''} "
+                  f"({100 * done // max(total, 1)} %), {now - t0:.0f} s", flush=True)
     return progress
 
 
