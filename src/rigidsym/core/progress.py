@@ -26,7 +26,7 @@ from rigidsym.core.interrupts import checkpoint
 
 __all__ = ["Reporter", "Phase", "load_durations", "save_durations", "format_seconds"]
 
-#: refreshes per second of the live display (the issue's floor is one)
+#: refreshes per second of the live display (at least one)
 REFRESH = 4
 #: the share of a new estimate taken at once (the rest follows over the next updates)
 SMOOTHING = 1 / 3

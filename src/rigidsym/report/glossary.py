@@ -9,7 +9,7 @@ from importlib.resources import files
 
 __all__ = ["text", "entries", "lookup", "slug", "html_entries", "WORDS"]
 
-#: the words the issue asks every output to be able to explain (a test checks the file)
+#: the words every output must be able to explain (a test checks the file)
 WORDS = ("verdict", "member", "claim", "corrected form", "model", "parametrisation",
          "exact-cancel", "random-exact", "counterexample", "singular set", "repair",
          "found by search", "enclosure", "certified")

@@ -211,17 +211,20 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
             return sp.atan(x)
         if fn == "arccos":
             return sp.acos(x)
-        if fn == "det":  # of a scalar: undecided before, read as Det(R) of a scalar R
+        if fn == "det":  # of a scalar: never Det(R) of a scalar R
             if matrix_shape(x) is None or matrix_shape(x)[0] != matrix_shape(x)[1]:
-                raise LatexError(f"det of {shape_words(x)}: expected a square matrix", "shapes")
+                raise LatexError(f"det of {shape_words(x)}: expected a square matrix"
+                                 f"{_applied_hint(fn, x)}", "shapes")
             return Det(x)
         if fn == "tr":
             if matrix_shape(x) is None or matrix_shape(x)[0] != matrix_shape(x)[1]:
-                raise LatexError(f"tr of {shape_words(x)}: expected a square matrix", "shapes")
+                raise LatexError(f"tr of {shape_words(x)}: expected a square matrix"
+                                 f"{_applied_hint(fn, x)}", "shapes")
             return sp.Trace(x)
         if fn == "vect":
             if matrix_shape(x) != (3, 3):
-                raise LatexError(f"vect of {shape_words(x)}: expected a 3x3 matrix", "shapes")
+                raise LatexError(f"vect of {shape_words(x)}: expected a 3x3 matrix"
+                                 f"{_applied_hint(fn, x)}", "shapes")
             return Vect(x)
         raise LatexError(f"unknown operator {name}", f"unknown macro {name}")
 
@@ -287,6 +290,16 @@ class _Pending:
     a: object
     b: object
     op: str
+
+
+def _applied_hint(fn: str, x) -> str:
+    """Where an operator met a scalar: the reading that a reader most often meant (``\\det
+    J(x)`` reads as ``(\\det J)(x)``: the operator takes the glyph, the parentheses
+    multiply)."""
+    if matrix_shape(x) is not None:
+        return ""
+    return (f"; the value of a matrix function goes in parentheses, \\{fn}(F(x)), and an "
+            f"undeclared glyph is a scalar (--let 'NAME: KIND')")
 
 
 def value_of(x):
