@@ -61,9 +61,14 @@ __all__ = ["MANIFEST", "ENTRY_MODULES", "input_files", "manifest", "compare", "S
 
 #: the manifest's name under generated/
 MANIFEST = "inputs.json"
-#: where the generation starts: the generator, the Jacobian kernels, the book's kernel list
+#: where the generation starts: the generator, the Jacobian kernels, the book's kernel list,
+#: and the ``generate`` command, which writes the exercises' notebooks beside the kernels,
+#: with the CLI's helpers it runs through (its output stream)
 ENTRY_MODULES = ("rigidsym.codegen.generator", "rigidsym.codegen.derivatives.jacobians",
-                 KERNEL_SPEC)
+                 KERNEL_SPEC, "rigidsym.cli.generate", "rigidsym.cli.common")
+#: entry modules whose package is no input: the CLI package imports every command's module,
+#: and only ``generate``'s runs
+_NO_PARENTS = ("rigidsym.cli.generate", "rigidsym.cli.common")
 #: the output and the manifest's own module's outputs: never inputs
 _NOT_INPUTS = ("rigidsym.generated",)
 _DATA_SUFFIXES = (".j2", ".json", ".lark", ".csv", ".txt", ".c", ".h")
@@ -137,6 +142,9 @@ def input_files() -> tuple[Path, ...]:
     # ten that no import statement names)
     todo += [f"rigidsym.derivations.{p.stem}" for p in sorted(roots["rigidsym.derivations"]
                                                               .glob("*.py"))]
+    # the exercises, which the notebooks solve: their registry imports them by file name
+    todo += [f"rigidsym.derivations.exercises.{p.stem}" for p in
+             sorted((roots["rigidsym.derivations"] / "exercises").glob("*.py"))]
     seen: dict[str, Path] = {}
     while todo:
         name = todo.pop().removesuffix(".")
@@ -149,7 +157,8 @@ def input_files() -> tuple[Path, ...]:
             continue
         seen[name] = path
         parts = name.split(".")
-        todo += [".".join(parts[:i]) for i in range(1, len(parts))]   # parents run first
+        if name not in _NO_PARENTS:
+            todo += [".".join(parts[:i]) for i in range(1, len(parts))]   # parents run first
         todo += sorted(_imports(path, name))
     files = set(seen.values())
     for folder in {p.parent for p in seen.values()}:
