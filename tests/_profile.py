@@ -59,3 +59,12 @@ def kept(nodeids: list[str], fraction: float) -> set[str]:
         raise ValueError(f"fraction: expected a number in (0, 1], got {fraction!r}")
     k = max(1, math.ceil(fraction * len(nodeids)))
     return set(sorted(nodeids, key=rank)[:k])
+
+
+def fast_or_slow(ids, fast) -> list:
+    """A family's parameters: those in ``fast`` in the quick run, the others marked ``slow``
+    (a hand-picked quick share, where a seeded sample would miss the one case each book
+    needs)."""
+    import pytest
+
+    return [pytest.param(i, marks=() if i in fast else pytest.mark.slow) for i in ids]

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _profile import fast_or_slow
 
 import rigidsym
 
@@ -74,11 +75,7 @@ def test_the_numpy_truth_tells_each_slip_from_its_equation():
         assert _holds(c) is not c["slip"], c["id"]
 
 
-def _params(ids):
-    return [pytest.param(i, marks=() if i in FAST else pytest.mark.slow) for i in ids]
-
-
-@pytest.mark.parametrize("cid", _params(CASES))
+@pytest.mark.parametrize("cid", fast_or_slow(CASES, FAST))
 def test_a_trial_case_answers_as_recorded_and_never_wrongly(cid):
     case = CASES[cid]
     typed, _ = _answer(case, case["latex"], list(case["let"]), {})

@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _profile import fast_or_slow
 
 import rigidsym
 
@@ -59,11 +60,7 @@ def test_the_numpy_truth_tells_each_slip_from_its_equation():
         assert _holds(c) is not c["slip"], c["id"]
 
 
-def _params(ids):
-    return [pytest.param(i, marks=() if i in FAST else pytest.mark.slow) for i in ids]
-
-
-@pytest.mark.parametrize("cid", _params(CASES))
+@pytest.mark.parametrize("cid", fast_or_slow(CASES, FAST))
 def test_a_trial_case_is_never_wrong_and_answers_as_recorded(cid):
     case = CASES[cid]
     got = answer(case)

@@ -35,6 +35,9 @@ TIME = re.compile(r"(?<![\w.^/-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.\d+)?
 
 #: time figures that measure nothing: page, the text around the figure, and why
 NOT_MEASURED = [
+    ("README.md", "least one every 2.5 s", "the build's progress interval, a setting "
+     "(setup.py's _SILENCE)"),
+    ("docs/setup.md", "at least one every 2.5 s", "the build's progress interval, a setting"),
     ("docs/accuracy.md", "= 2 s (c E", "algebra: s is sin(phi/2)"),
     ("docs/accuracy.md", "(s cos s + 2 s - 3 sin s)", "algebra: s is |w|"),
     ("docs/adding-a-kernel.md", "(SIGINT after 150 s)", "the interrupt's time-out, a setting"),
