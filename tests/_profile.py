@@ -7,7 +7,13 @@
   selects ``-m "slow or extra or budget"``): the rest of every sampled family (through its
   ``slow`` mark), and every Hypothesis property again: a quick one at
   :data:`THOROUGH_FACTOR` times its quick budget (``max_examples=examples(n)``), a ``slow``
-  one at the budget it writes as a number.
+  one at the budget it writes as a number. The costliest slow families and loops run a
+  seeded share (:func:`share`, the ``thorough`` mark) drawn with
+  ``RIGIDSYM_THOROUGH_SEED``, which ``.ci/run`` sets from the commit: each commit runs
+  another share, so that every member runs over a few commits, and a failure reproduces
+  with the seed the run printed.
+- ``exhaustive`` (``RIGIDSYM_TEST_PROFILE=exhaustive``, same selection as ``thorough``):
+  every member of every share; a release's check.
 
 Both profiles draw the same Hypothesis examples every run; ``--hypothesis-profile=search``
 draws new ones (tests/conftest.py).
@@ -26,10 +32,13 @@ import zlib
 
 #: ``quick`` or ``thorough``
 PROFILE = os.environ.get("RIGIDSYM_TEST_PROFILE", "quick")
-if PROFILE not in ("quick", "thorough"):
-    raise ValueError(f"RIGIDSYM_TEST_PROFILE: expected 'quick' or 'thorough', got {PROFILE!r}")
+if PROFILE not in ("quick", "thorough", "exhaustive"):
+    raise ValueError("RIGIDSYM_TEST_PROFILE: expected 'quick', 'thorough' or 'exhaustive', "
+                     f"got {PROFILE!r}")
 #: the seed of the sampled families' draw
 SEED = int(os.environ.get("RIGIDSYM_TEST_SEED", "0"))
+#: the seed of the thorough run's shares (:func:`share`)
+THOROUGH_SEED = int(os.environ.get("RIGIDSYM_THOROUGH_SEED", "0"))
 #: the thorough run's Hypothesis budget, in quick budgets
 THOROUGH_FACTOR = 3
 #: the share of a sampled family the quick run keeps, when its mark names none
@@ -68,3 +77,21 @@ def fast_or_slow(ids, fast) -> list:
     import pytest
 
     return [pytest.param(i, marks=() if i in fast else pytest.mark.slow) for i in ids]
+
+
+def share(items, fraction: float, key=str) -> list:
+    """The thorough run's share of a costly slow family or loop: every item in the
+    ``exhaustive`` profile; else the ``ceil(fraction * n)`` items (at least one) of
+    smallest CRC-32 of :data:`THOROUGH_SEED` and ``key(item)``, in their given order.
+
+    Raises:
+        ValueError: ``fraction`` outside (0, 1]."""
+    items = list(items)
+    if not 0 < fraction <= 1:
+        raise ValueError(f"fraction: expected a number in (0, 1], got {fraction!r}")
+    if PROFILE == "exhaustive":
+        return items
+    k = max(1, math.ceil(fraction * len(items)))
+    order = sorted(range(len(items)),
+                   key=lambda i: zlib.crc32(f"{THOROUGH_SEED}:{key(items[i])}".encode()))
+    return [items[i] for i in sorted(order[:k])]

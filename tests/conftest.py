@@ -34,7 +34,7 @@ settings.register_profile("thorough", deadline=None, derandomize=True, print_blo
                           suppress_health_check=[HealthCheck.too_slow])
 settings.register_profile("search", deadline=None, print_blob=True,
                           suppress_health_check=[HealthCheck.too_slow])
-settings.load_profile(_profile.PROFILE)
+settings.load_profile("quick" if _profile.PROFILE == "quick" else "thorough")
 
 
 def pytest_configure(config):
@@ -74,7 +74,10 @@ def pytest_sessionstart(session):
         return
     workers = getattr(session.config.option, "numprocesses", None)
     where = f"on {workers} workers" if workers else "in this process"
-    _say(session.config, f"rigidsym tests: profile {_profile.PROFILE}, seed {_profile.SEED}; "
+    seeds = f"seed {_profile.SEED}"
+    if _profile.PROFILE == "thorough":
+        seeds += f", thorough share's seed {_profile.THOROUGH_SEED} (RIGIDSYM_THOROUGH_SEED)"
+    _say(session.config, f"rigidsym tests: profile {_profile.PROFILE}, {seeds}; "
                          f"collecting {where} (importing sympy and the kernels) ...")
 
 
@@ -156,9 +159,32 @@ def pytest_collection_modifyitems(session, config, items):
         for item in members:
             if _profile.plain(item.nodeid) not in keep:
                 item.add_marker("slow")
+    _thorough_shares(config, items)
     # the tests of the chapter's certificates on one worker (--dist loadgroup): the other
     # worker runs other tests while the first builds them, instead of waiting on the lock
     for item in items:
         if ("chapter_certificates" in getattr(item, "fixturenames", ())
                 and item.get_closest_marker("xdist_group") is None):
             item.add_marker(pytest.mark.xdist_group("chapter_certificates"))
+
+
+def _thorough_shares(config, items) -> None:
+    """Deselect the slow members of each family marked ``thorough(fraction)`` outside the
+    family's seeded share (the same in every xdist worker: the draw is of plain node ids)."""
+    families: dict[tuple, list] = {}
+    for item in items:
+        if item.get_closest_marker("thorough") is not None and item.get_closest_marker("slow"):
+            key = (item.path, item.cls, getattr(item, "originalname", item.name))
+            families.setdefault(key, []).append(item)
+    dropped = []
+    for members in families.values():
+        mark = members[0].get_closest_marker("thorough")
+        fraction = mark.kwargs.get("fraction", mark.args[0] if mark.args else None)
+        if fraction is None:
+            raise ValueError(f"{members[0].nodeid}: the thorough mark needs a fraction")
+        keep = set(_profile.share([_profile.plain(i.nodeid) for i in members], fraction))
+        dropped += [i for i in members if _profile.plain(i.nodeid) not in keep]
+    if dropped:
+        gone = {id(i) for i in dropped}
+        config.hook.pytest_deselected(items=dropped)
+        items[:] = [i for i in items if id(i) not in gone]

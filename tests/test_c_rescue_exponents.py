@@ -31,6 +31,7 @@ import zlib
 from functools import cache
 from pathlib import Path
 
+import _profile
 import mpmath
 import numpy as np
 import pytest
@@ -392,7 +393,7 @@ M4F = ["arm-none-eabi-gcc", "-mcpu=cortex-m4", "-mthumb", "-mfloat-abi=hard",
 def all_src(tmp_path_factory):
     if GCC is None:
         pytest.skip("gcc is not installed")
-    return generate(rescued_kernels(), tmp_path_factory.mktemp("c_rescue_all"))
+    return generate(sweep_kernels(), tmp_path_factory.mktemp("c_rescue_all"))
 
 
 #: the slow sweep's draws per kernel and type, the same on every target: a case's reference
@@ -404,7 +405,14 @@ def all_src(tmp_path_factory):
 SWEEP_DRAWS, SWEEP_SEED = 150, 2026
 
 
+def sweep_kernels() -> list[str]:
+    """The sweep's kernels: the thorough run's seeded half of :func:`rescued_kernels` (each
+    commit another half; all in the exhaustive profile)."""
+    return _profile.share(rescued_kernels(), 0.5)
+
+
 @pytest.mark.slow
+@pytest.mark.thorough(0.5)
 @pytest.mark.xdist_group("rescue_sweep")
 @pytest.mark.parametrize("target", [
     # the sweep's two findings (x86-64: the float64 SE(3) left Jacobian
@@ -414,9 +422,10 @@ SWEEP_DRAWS, SWEEP_SEED = 150, 2026
     # evaluation from the rounded theta fixes theta mod 2 pi (docs/accuracy.md's "not judged")
     "x86_64", "x86_64_no_wide", "x86_64_ftz", "armhf", "aarch64", "cortex_m4f"])
 def test_every_rescued_kernel_on_every_target(all_src, tmp_path, target):
-    """Every book kernel of "any" arguments, :data:`SWEEP_DRAWS` draws per type (the same
-    draws on each target), on each target."""
-    names = rescued_kernels()
+    """Every book kernel of "any" arguments (:func:`sweep_kernels`), :data:`SWEEP_DRAWS`
+    draws per type (the same draws on each target), on each target (the thorough run: a
+    seeded half of the targets)."""
+    names = sweep_kernels()
     extra: list[Path] = []
     if target.startswith("x86_64"):
         flags = {"x86_64": [], "x86_64_no_wide": ["-DRIGIDSYM_C_NO_WIDE"],
