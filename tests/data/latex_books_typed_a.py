@@ -623,7 +623,7 @@ AFTER_ATTEMPT = {'sh-axis-fixed': 'right',
 #: either sign, one notation per letter in and outside a function's body, a free bold
 #: capital a 3-vector where its conventional 3x3 does not fit; each decided where its
 #: readings agree, refused naming the choice where they differ
-AFTER_W11 = {'sh-axis-fixed': 'right',
+WITH_READINGS = {'sh-axis-fixed': 'right',
              'sh-trace': 'right',
              'sh-trace-slip': 'right',
              'sh-gibbs-compose': 'right',
