@@ -26,6 +26,7 @@ import pickle
 import shutil
 from functools import cache
 
+import _profile
 import mpmath
 import numpy as np
 import pytest
@@ -57,7 +58,31 @@ EULER_DEFAULT = ["euler_rate_matrix_zyx_fixed", "euler_rate_matrix_zxz_body"]
 #: the SE(3) log): slow, and not at 2000 points (200 take 216 s)
 BIG = [n for n in PUBLIC if BASES[n].jacobian_from == "program"]
 SMALL = [n for n in PUBLIC if n not in BIG]
-SLOW_BIG = [pytest.param(n, marks=pytest.mark.slow) for n in BIG]
+#: the kernels the slow families check in every run: a Lie log (a branched kernel, each
+#: branch's own derivative), a Jacobian differentiated over the program (BIG), the worst
+#: at random points (L_tilde_dot, 1.3e-14) and the default Euler-angle kernels
+ALWAYS = {"rotation_vector_from_rotation", "exponential_coordinates_left_jacobian_inverse",
+          "L_tilde_dot", *EULER_DEFAULT}
+#: the thorough run's seeded third of the kernels, by name and the same in the three slow
+#: families (a kernel's reference, the cost, is built once per process and serves both
+#: back-ends and every family), ALWAYS among them; every kernel in the ``exhaustive``
+#: profile, and the seed rotates per commit
+SHARED = ALWAYS | set(_profile.share(sorted(BASES), 1 / 3))
+#: the SE(3) log's reference (lambdify of its declared derivative) takes ~25 s: its tests
+#: run on one worker (--dist loadgroup), which builds it once
+ONE_WORKER = {"exponential_coordinates_from_transform": "jacobian_se3_log"}
+
+
+def _group(name: str) -> list:
+    return [pytest.mark.xdist_group(ONE_WORKER[name])] if name in ONE_WORKER else []
+
+
+def _slow(names) -> list:
+    """A slow family's parameters: the SHARED kernels, each ONE_WORKER kernel in its group."""
+    return [pytest.param(n, marks=_group(n)) for n in names if n in SHARED]
+
+
+SLOW_BIG = [pytest.param(n, marks=[pytest.mark.slow, *_group(n)]) for n in BIG if n in SHARED]
 REQUIRED = ["rotation_from_natural_invariants", "rotation_from_euler_rodrigues",
             "screw_axis_point", "plucker_from_points", "plucker_transfer", "twist_transfer",
             "wrench_transfer", "point_acceleration", "inertia_at_point", "newton_euler_wrench",
@@ -167,19 +192,23 @@ def _check(name, backend, n, seed, adversarial=False, tol=TOL):
 
 
 @pytest.mark.sample
-@pytest.mark.parametrize("name", SMALL + EULER_DEFAULT + SLOW_BIG)
+@pytest.mark.parametrize("name", [
+    n if n in ALWAYS else pytest.param(n, marks=pytest.mark.thorough(1 / 3))
+    for n in SMALL + EULER_DEFAULT] + SLOW_BIG)
 def test_jacobian_matches_symbolic_derivative(name, backend):
+    """The quick run's sample; the thorough run: ALWAYS, a seeded third of the rest of the
+    sample's family, and the SHARED BIG kernels."""
     _check(name, backend, N_RANDOM, 10)
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", SMALL + EULER_ALL)
+@pytest.mark.parametrize("name", _slow(SMALL + EULER_ALL))
 def test_jacobian_matches_symbolic_derivative_many(name, backend):
     _check(name, backend, 2000, 11)
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", PUBLIC + EULER_ALL)
+@pytest.mark.parametrize("name", _slow(PUBLIC + EULER_ALL))
 def test_jacobian_near_singular_sets(name, backend):
     _check(name, backend, 0, 12, adversarial=True)
 
