@@ -119,14 +119,18 @@ def _batches(name: str, seed: int) -> bytes:
 #: the default run's kernels: every construct of the vector text once at least (the 4 x 4,
 #: 3-wide and 1-wide transposes, a lane select, a square root, the compensated products of
 #: 3 and 4 pairs and the difference of products, singular masks, sin/cos columns), K2, K4, K6;
-#: the others of VEC_F64 in the slow run
+#: the others of VEC_F64 in the slow run. The quick run builds a seeded 0.3 of them; the
+#: thorough run builds the rest of them and a seeded third of the others (``thorough``, on
+#: the others alone), so every construct is built each run and every kernel over a few
+#: commits (all of them in the ``exhaustive`` profile)
 DEFAULT = ("newton_euler_residual", "instant_screw_point_pitch", "rotation_from_natural_invariants",
            "plucker_from_points", "screw_axis_point", "instant_screw_axis", "N_matrix")
 
 
 @pytest.mark.sample(fraction=0.3)
-@pytest.mark.parametrize("name", [n if n in DEFAULT else pytest.param(n, marks=pytest.mark.slow)
-                                  for n in sorted(VEC_F64)])
+@pytest.mark.parametrize("name", [
+    n if n in DEFAULT else pytest.param(n, marks=[pytest.mark.slow, pytest.mark.thorough(1 / 3)])
+    for n in sorted(VEC_F64)])
 def test_vector_lanes_give_the_scalar_samples_bits_and_flags(name, tmp_path):
     src = tmp_path / f"drv_{name}.c"
     src.write_text(_driver(name))
