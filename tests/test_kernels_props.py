@@ -133,8 +133,23 @@ def test_broadcast_equals_per_sample(name, data):
     _check_broadcast(name, data)
 
 
+#: the kernel the slow broadcast family checks in every run: L_tilde_dot, whose samples
+#: near phi = pi were 119 ulp from themselves alone while the C batch loops were not
+#: position-independent
+BROADCAST_ALWAYS = ("L_tilde_dot",)
+
+
+def _thorough_third(names, always=()) -> list:
+    """A slow family's kernels: those of ``always`` in every run, a seeded third of the
+    others in the thorough run (``thorough``; every one in the ``exhaustive`` profile, and
+    the seed rotates per commit). Each thorough run still checks every kernel at the
+    smaller budget of the sampled family beside it."""
+    return [n if n in always else pytest.param(n, marks=pytest.mark.thorough(1 / 3))
+            for n in names]
+
+
 @pytest.mark.slow
-@pytest.mark.parametrize("name", sorted(KERNELS))
+@pytest.mark.parametrize("name", _thorough_third(sorted(KERNELS), BROADCAST_ALWAYS))
 @settings(max_examples=150, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture,
                                  HealthCheck.too_slow])
@@ -266,7 +281,7 @@ def test_bad_input_table(name):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", sorted(KERNELS))
+@pytest.mark.parametrize("name", _thorough_third(sorted(KERNELS)))
 def test_bad_input_table_large(name):
     res = bad_input_table(name, 3000, seed=1234)
     assert res["escapes"] == [], res["escapes"][:10]
