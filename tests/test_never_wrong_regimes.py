@@ -185,13 +185,19 @@ def test_regimes_c_numpy(name, dtype, data):
 @pytest.mark.sample
 @pytest.mark.extra
 @pytest.mark.parametrize("dtype", DTYPES)
-@pytest.mark.parametrize("name", sorted(KERNELS))
+@pytest.mark.parametrize("name", [
+    # JAX's kernels: the thorough run takes a seeded one of their slow (kernel, type)
+    # members (0.1 of 7), beside those of the quick sample (every one in the ``exhaustive``
+    # profile; the seed rotates per commit)
+    pytest.param(n, marks=pytest.mark.thorough(0.1)) if n in QUICK_JAX else n
+    for n in sorted(KERNELS)])
 @settings(max_examples=examples(3), derandomize=True, **_SETTINGS)
 @given(data=st.data())
 def test_regimes_four_backends(name, dtype, data):
     """C, NumPy, PyTorch (every kernel) and JAX (QUICK_JAX's: its eager operations compile
     once per kernel, type and shape, 3-5 s each, 300-460 s of a CI worker for every kernel;
-    JAX on every kernel meets NaN, inf and bad inputs in tests/test_never_wrong_arrays.py,
-    subnormals in its ``test_subnormal_inputs_arrays``)."""
+    the thorough run: those of the quick sample and a seeded one of the others. JAX meets
+    NaN, inf and bad inputs in tests/test_never_wrong_arrays.py, on a seeded share of the
+    kernels in each thorough run, subnormals in its ``test_subnormal_inputs_arrays``)."""
     arrays = ("torch", "jax") if name in QUICK_JAX else ("torch",)
     check_backends(name, data.draw(regime_batch(name, dtype)), dtype, arrays)
