@@ -69,6 +69,11 @@ def test_euler_kernels_match_numpy(seq, frame):
            1e-13)
 
 
+#: the thorough run: a seeded third of the slow kernels (each commit another third; all in the
+#: exhaustive profile), each an XLA compile of its jacfwd and its jacrev; FEW's kernel runs in
+#: every run, and every kernel's values (test_values_match_the_numpy_kernel) and its generated
+#: Jacobian as the PyTorch gradient (tests/test_torch_kernels.py) are checked in every run
+@pytest.mark.thorough(0.33)
 @pytest.mark.parametrize("name", JAC)
 def test_jacfwd_and_jacrev_are_the_generated_jacobians(name):
     xs = sample(name, 3, seed=2)
