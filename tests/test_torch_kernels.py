@@ -303,7 +303,13 @@ def test_compiled_dynamic_shapes_with_grad():
     _compiled_matches("instant_screw_axis", "aot_eager", dynamic=True)
 
 
+#: the thorough run: a seeded third of the kernels (each commit another third; all in the
+#: exhaustive profile), each a compile; every run compiles twist_transfer
+#: (test_compiled_with_grad), instant_screw_axis with dynamic shapes, the benchmark kernels
+#: K1-K6 under inductor (test_inductor_with_grad), and another seeded share of the kernels
+#: under torch.compile (test_compiled_torch_nan_policy, tests/test_never_wrong_arrays.py)
 @pytest.mark.slow
+@pytest.mark.thorough(0.33)
 @pytest.mark.parametrize("name", ALL)
 def test_every_kernel_under_aot_eager(name):
     _compiled_matches(name, "aot_eager")
