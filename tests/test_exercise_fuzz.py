@@ -123,8 +123,15 @@ def test_data_strings_never_crash(ex_id, short_budget):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("ex_id", WITH_DATA)
+@pytest.mark.parametrize("ex_id", [
+    # in every run: 3.6, where this property found sympy factoring integers past a float's
+    # range (test_integers_past_sympys_reach_are_refused_not_a_defect)
+    pytest.param(i, marks=[] if i == "ex3.6" else [pytest.mark.thorough(0.33)])
+    for i in WITH_DATA])
 def test_data_strings_never_crash_exhaustive(ex_id, short_budget):
+    # the thorough run: a seeded third of the other exercises (each commit another third; all
+    # in the exhaustive profile); every exercise gets its draws of test_data_strings_never_crash
+    # in every run (its sample in the quick run, its slow rest in the thorough one);
     # the short budget here too; derandomized, as the default run: CI draws the same 30
     # data sets every time (a new seed is a new search, for a person, not a coin CI flips);
     # 30: three times the quick run's 10, the thorough profile's factor (tests/_profile.py)
