@@ -16,6 +16,7 @@ from fractions import Fraction
 from pathlib import Path
 
 import _certtamper as certtamper
+import _profile
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -312,7 +313,15 @@ def test_chapter_tamperings_rejected(chapter):
     _, certs = chapter
     book = book_text()
     ids = sorted(certs)
+    # every does-not-hold (the only ids a dropped cause, a point off the sphere, a dropped
+    # page reading or the corrected form claimed as printed applies to) and a seeded third
+    # of the others (all in the exhaustive profile); the run's cost is the chapter's
+    # certificates, shared with the other chapter tests, not this loop
+    failing = [i for i in ids if certs[i]["verdict"] == "does-not-hold"]
+    run = set(failing) | set(_profile.share([i for i in ids if i not in failing], 1 / 3))
     for k, i in enumerate(ids):
+        if i not in run:
+            continue
         c = certs[i]
         other = next(j for j in ids[k + 1:] + ids[:k]
                      if locate(book, j) != locate(book, i))
@@ -366,8 +375,14 @@ def test_coq_counterexample_lemmas(chapter, tmp_path):
     from rigidsym.checking.certifying.coq_export import write_coq_folder
 
     _, certs = chapter
-    bad = {i: c for i, c in certs.items() if c["verdict"] == "does-not-hold"}
-    done = write_coq_folder(bad, tmp_path)
+    bad = [i for i, c in certs.items() if c["verdict"] == "does-not-hold"]
+    # always 3.94 (the smallest file with a residual lemma: the one changed below) and 3.97c
+    # (no counterexample relation: no file, a line of NO-PROOF.txt); a seeded third of the
+    # others (all in the exhaustive profile): 3.59 and 3.148 cost ~40 s of coqc each
+    kept = ["3.94", "3.97c"]
+    assert set(kept) <= set(bad), bad
+    run = set(kept) | set(_profile.share([i for i in bad if i not in kept], 1 / 3))
+    done = write_coq_folder({i: certs[i] for i in bad if i in run}, tmp_path)
     assert done["written"], done["none"]
     for i, name in done["written"].items():
         p = subprocess.run(["coqc", "-q", name], cwd=tmp_path, capture_output=True,
