@@ -25,6 +25,7 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
+import _profile
 import pytest
 from _profile import examples
 from hypothesis import HealthCheck, given, settings
@@ -350,6 +351,14 @@ def test_the_verdict_is_unchanged_quick(prop, data, monkeypatch):
     _holds(i, prop, data, monkeypatch)
 
 
+#: the decided entries a property does not apply to (measured on every entry; why:
+#: docs/check-latex.md); a share of the entries does not count them against its floor
+_NO_LONE_SYMBOL = {"featherstone-01", "featherstone-04", "markley-10", "siciliano-05",
+                   "siciliano-06"}
+MEASURED_SKIPS = {"a-permutation": _NO_LONE_SYMBOL, "d-model": _NO_LONE_SYMBOL,
+                  "b-renaming": {"spong-20"}}
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("prop", sorted(PROPERTIES))
 @settings(max_examples=1, deadline=None, derandomize=True, database=None,
@@ -359,14 +368,21 @@ def test_the_verdict_is_unchanged_on_every_entry(prop, data, monkeypatch):
     """Every entry once per property (one Hypothesis example draws every entry's variant);
     the variants that apply are counted: a property measured on few entries is no
     property."""
+    # a seeded third of the entries, the same for each property (each entry's verdict is
+    # then read once per worker); every entry in the exhaustive profile
+    entries = _profile.share(sorted(ENTRIES), 1 / 3)
     ran = []
-    for i in sorted(ENTRIES):
+    for i in entries:
         if _holds(i, prop, data, monkeypatch):
             ran.append(i)
         monkeypatch.undo()
-    decided = [i for i in ENTRIES if base(i) in ("verified", "does-not-hold")]
+    decided = [i for i in entries if base(i) in ("verified", "does-not-hold")]
     # each property applies to at least 97 % of the decided entries, so at most 3 % of the
     # variants are skipped (at most 5 %); measured on 255: a 250, b 254, c 255,
     # d 250, e 255, 11 of 1,275 skipped (0.9 %; what and why: docs/check-latex.md)
     floor = 0.97
-    assert len(ran) >= floor * len(decided), (prop, len(ran), len(decided))
+    skipped = set(decided) - set(ran)
+    if len(entries) < len(ENTRIES):  # the skips measured above, among ~85: not counted
+        skipped -= MEASURED_SKIPS.get(prop, set())
+    assert len(decided) - len(skipped) >= floor * len(decided), (prop, sorted(skipped),
+                                                                 len(decided))
