@@ -17,6 +17,7 @@ import json
 import re
 from pathlib import Path
 
+import _profile
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -180,7 +181,9 @@ def test_reader_module_show_and_report_have_no_internal_name(tmp_path, code):
 def test_show_of_every_book_id_has_no_internal_name(code):
     from rigidsym.registry.declarations import REGISTRY, is_user_id, load_all
     load_all()
-    ids = [i for i in REGISTRY if not is_user_id(i)]
+    # a seeded third of the book's ids (all in the exhaustive profile); the quick run checks
+    # the committed report, which prints every id's relations and verdict
+    ids = _profile.share([i for i in REGISTRY if not is_user_id(i)], 1 / 3)
     found = []
     for eq_id, text in _show_all(ids).items():
         found += [f"show {eq_id}: {x}" for x in offences(text, code)]
