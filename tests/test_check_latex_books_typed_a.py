@@ -2,9 +2,9 @@
 equations from Shuster (1993), Markley & Crassidis (2014), Kuipers (1999), Murray, Li & Sastry
 (1994), Ma, Soatto, Košecká & Sastry (2004) and Diebel (2006), typed from memory with the
 declarations their readers write, judged against the data file's own NumPy truth (which never
-imports rigidsym). No verdict may be wrong; each case answers as recorded, as typed (``WITH_READINGS``,
-with the books' readings; ``AFTER`` without them) and after the one attempt its refusal named
-(``AFTER_ATTEMPT``).
+imports rigidsym). No verdict may be wrong; each case answers as recorded, as typed
+(``WITH_READINGS``, with the books' readings; ``AFTER`` without them) and after the one attempt
+its refusal named (``AFTER_ATTEMPT``).
 
 And the messages of every refusal and undecided verdict, over the LaTeX corpus
 (``tests/data/latex_corpus``) and this trial, leak no exception text: a sample in the
