@@ -174,13 +174,30 @@ def test_the_live_display_redraws_itself_while_a_phase_reports_nothing(monkeypat
 
 @pytest.mark.slow
 def test_report_in_a_pipe_states_every_phase(tmp_path):
-    """The whole report, piped: a start and an end line per phase, nothing else on stderr."""
+    """The whole report, piped: a start and an end line per phase and, between them, a line
+    at each tenth of a counted phase's items, nothing else on stderr."""
     p = subprocess.run(_command("report", "--out", str(tmp_path / "out")), cwd=ROOT,
                        env=_env(tmp_path), capture_output=True, text=True, check=True)
-    lines = p.stderr.splitlines()
     phases = ["loading the chapter's declarations", "checking 181 ids",
               "rendering and writing 3 files of the chapter report", "solving 21 exercises",
               "rendering and writing the exercises (Markdown, HTML, figures)"]
+    counts: dict[str, list[tuple[int, int]]] = {}
+    lines = []
+    for ln in p.stderr.splitlines():
+        m = re.fullmatch(r"rigidsym report: (.+): (\d+)/(\d+), \d+(\.\d)? s|"
+                         r"rigidsym report: (.+): (\d+)/(\d+), \d+ min \d\d s", ln)
+        if m and (m.group(1) or m.group(5)) in phases:
+            what = m.group(1) or m.group(5)
+            done, total = (int(m.group(2)), int(m.group(3))) if m.group(1) else \
+                (int(m.group(6)), int(m.group(7)))
+            counts.setdefault(what, []).append((done, total))
+            assert lines and lines[-1] == f"rigidsym report: {what} ...", (ln, lines)
+        else:
+            lines.append(ln)
+    for seen in counts.values():       # increasing, below the total, at most nine
+        assert [d for d, _ in seen] == sorted({d for d, _ in seen}), seen
+        assert all(0 < d < t for d, t in seen) and len(seen) <= 9, seen
+    assert len(counts.get("checking 181 ids", [])) == 9, counts
     assert len(lines) == 2 * len(phases), lines
     for k, what in enumerate(phases):
         assert lines[2 * k] == f"rigidsym report: {what} ..."
@@ -193,8 +210,12 @@ def test_report_in_a_pipe_states_every_phase(tmp_path):
 def test_exercise_all_in_a_pipe(tmp_path):
     p = subprocess.run(_command("exercise", "--all"), cwd=ROOT, env=_env(tmp_path),
                        capture_output=True, text=True)
-    assert p.stderr.splitlines()[0] == "rigidsym exercise --all: solving 21 exercises ..."
-    assert "21 / 21 solved and checked" in p.stderr.splitlines()[1]
+    err = p.stderr.splitlines()
+    assert err[0] == "rigidsym exercise --all: solving 21 exercises ..."
+    # a line at each tenth of the 21 exercises, then the phase's end
+    assert all(re.match(r"rigidsym exercise --all: solving 21 exercises: \d+/21, ", ln)
+               for ln in err[1:-1]) and len(err) - 2 <= 9, err
+    assert "21 / 21 solved and checked" in err[-1]
     # a line per exercise (its answers indented under it) and the summary
     out = p.stdout.splitlines()
     assert [ln.split()[0] for ln in out if not ln.startswith(" ")][:-1] == \
@@ -215,9 +236,32 @@ def test_piped_reporter_writes_one_line_per_phase_start_and_end():
             pass
     lines = out.getvalue().splitlines()
     assert lines[0] == "rigidsym test: doing a ..."
-    assert re.fullmatch(r"rigidsym test: doing a: done in \d+\.\d s: 3 items", lines[1])
-    assert lines[2] == "rigidsym test: doing b ..."
-    assert len(lines) == 4
+    # each of the first two items passes a tenth of three: a count line each, not the last
+    assert re.fullmatch(r"rigidsym test: doing a: 1/3, \d+\.\d s", lines[1])
+    assert re.fullmatch(r"rigidsym test: doing a: 2/3, \d+\.\d s", lines[2])
+    assert re.fullmatch(r"rigidsym test: doing a: done in \d+\.\d s: 3 items", lines[3])
+    assert lines[4] == "rigidsym test: doing b ..."
+    assert len(lines) == 6
+
+
+def test_a_piped_phase_says_each_tenth_of_its_items_once():
+    """A line when the count passes a tenth (by count, never by clock): 100 items one by one
+    give 9 lines (10, 20, ..., 90), 100 items ten at a time the same 9, an uncounted phase
+    none."""
+    for step in (1, 10):
+        out = io.StringIO()
+        with Reporter("rigidsym test", stream=out) as rep, \
+                rep.phase("doing", total=100) as ph:
+            for _ in range(100 // step):
+                ph.advance(step)
+        got = [int(m.group(1)) for m in
+               re.finditer(r"rigidsym test: doing: (\d+)/100, ", out.getvalue())]
+        assert got == list(range(10, 100, 10)), (step, got)
+    out = io.StringIO()
+    with Reporter("rigidsym test", stream=out) as rep, rep.phase("spinning") as ph:
+        for _ in range(50):
+            ph.advance()
+    assert len(out.getvalue().splitlines()) == 2
 
 
 def test_disabled_reporter_is_silent():

@@ -4,8 +4,11 @@ On a terminal, one ``rich`` live display refreshed four times a second: a spinne
 being done (``checking 3.77a``), a bar with a count when the amount of work is known, the
 elapsed time and an estimate of the time left; when a phase ends, one line stays
 (``✓ checked 181 ids in 40.1 s: ...``). When stderr is not a terminal (a pipe, a log, CI),
-one line at the start and one at the end of each phase, nothing in between, so that a log
-reads as the list of phases with their durations.
+one line at the start and one at the end of each phase, and between them, in a phase whose
+items are counted, one at each tenth of its items (``rigidsym verify: checking 181 ids:
+37/181, 2.1 s``): a log reads as the list of phases with their durations, and a phase of
+several seconds is never silent for more than a tenth of it (lines by count, not by clock,
+so that the same run writes the same lines).
 
 The estimate is the caller's (:meth:`Phase.estimate`): the parallel checker predicts each
 id's time from its previous runs (:func:`load_durations`), which moves far less than a
@@ -60,11 +63,17 @@ class Phase:
             self.reporter.bar.update(self._task, description=text)
 
     def advance(self, n: int = 1, label: str | None = None) -> None:
-        """``n`` more items done; ``label`` what was found (``3.57 does-not-hold``)."""
-        self.done += n
+        """``n`` more items done; ``label`` what was found (``3.57 does-not-hold``). In a
+        pipe, a line when the count passes a tenth of the phase's items (not the last)."""
+        before, self.done = self.done, self.done + n
         if self._task is not None:
             kw = {"description": label} if label else {}
             self.reporter.bar.update(self._task, advance=n, **kw)
+        elif self.reporter.enabled and self.total and self.done < self.total and \
+                10 * self.done // self.total > 10 * before // self.total:
+            print(f"{self.reporter.command}: {self.what}: {self.done}/{self.total}, "
+                  f"{format_seconds(time.perf_counter() - self.t0)}",
+                  file=self.reporter._stream(), flush=True)
         checkpoint("advance")
 
     def estimate(self, seconds_left: float | None) -> None:
