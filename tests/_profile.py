@@ -61,13 +61,20 @@ def rank(nodeid: str) -> int:
     return zlib.crc32(f"{SEED}:{nodeid}".encode())
 
 
+def _smallest(keys: list[str], fraction: float, seed: int) -> list[int]:
+    """The indices, in order, of the ``ceil(fraction * n)`` keys (at least one) of smallest
+    CRC-32 of ``seed`` and the key: the one draw of both profiles' shares."""
+    if not 0 < fraction <= 1:
+        raise ValueError(f"fraction: expected a number in (0, 1], got {fraction!r}")
+    k = max(1, math.ceil(fraction * len(keys)))
+    order = sorted(range(len(keys)), key=lambda i: zlib.crc32(f"{seed}:{keys[i]}".encode()))
+    return sorted(order[:k])
+
+
 def kept(nodeids: list[str], fraction: float) -> set[str]:
     """The quick run's share of a family: the ``ceil(fraction * n)`` node ids (at least one)
     of smallest :func:`rank`."""
-    if not 0 < fraction <= 1:
-        raise ValueError(f"fraction: expected a number in (0, 1], got {fraction!r}")
-    k = max(1, math.ceil(fraction * len(nodeids)))
-    return set(sorted(nodeids, key=rank)[:k])
+    return {nodeids[i] for i in _smallest(nodeids, fraction, SEED)}
 
 
 def fast_or_slow(ids, fast) -> list:
@@ -87,11 +94,5 @@ def share(items, fraction: float, key=str) -> list:
     Raises:
         ValueError: ``fraction`` outside (0, 1]."""
     items = list(items)
-    if not 0 < fraction <= 1:
-        raise ValueError(f"fraction: expected a number in (0, 1], got {fraction!r}")
-    if PROFILE == "exhaustive":
-        return items
-    k = max(1, math.ceil(fraction * len(items)))
-    order = sorted(range(len(items)),
-                   key=lambda i: zlib.crc32(f"{THOROUGH_SEED}:{key(items[i])}".encode()))
-    return [items[i] for i in sorted(order[:k])]
+    picked = _smallest([key(x) for x in items], fraction, THOROUGH_SEED)
+    return items if PROFILE == "exhaustive" else [items[i] for i in picked]
