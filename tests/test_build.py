@@ -179,55 +179,6 @@ def test_default_build_never_uses_march_native(monkeypatch):
                                                              "x86-64-v2"]
 
 
-_DISPATCH = """
-    import sys
-    sys.path.insert(0, {tests!r})
-    import numpy as np
-    import test_kernels as T
-    from rigidsym import kernels
-    kernels.use_backend("c")
-    xs = np.load({inputs!r})
-    got = {{}}
-    for name in T.PUBLIC + T.EULER:
-        arrays = [xs[f"{{name}}/{{i}}"] for i in range(len(T.AVAILABLE[name].args))]
-        got[name] = T.run(name, arrays, "c")[0]
-    np.savez({out!r}, **got)
-    print(kernels.build_info()["path"])
-"""
-
-
-@pytest.mark.slow  # a build of every path; the wheel test builds them all too
-@needs_cc
-def test_forced_baseline_agrees_with_the_dispatched_path(tmp_path):
-    """RIGIDSYM_DISPATCH=baseline runs the x86-64-v2 objects: every kernel agrees with the
-    dispatched path (normwise, as C and NumPy must) and with the 50-digit reference."""
-    sys.path.insert(0, str(REPO / "tests"))
-    import test_kernels as T
-
-    info = K.build_info()
-    if len(info["paths"]) < 2:
-        pytest.skip(f"one path compiled ({info['paths']})")
-    K.use_backend("c")
-    # the same inputs in both processes (the rotations among them come from a kernel, whose
-    # last bits depend on the path; near phi = pi that would move the outputs by 1e-4)
-    cases = {name: T.inputs(T.AVAILABLE[name], 64, seed=5) for name in T.PUBLIC + T.EULER}
-    np.savez(tmp_path / "in.npz", **{f"{n}/{i}": a for n, arrays in cases.items()
-                                     for i, a in enumerate(arrays)})
-    env = _env(tmp_path / "cache", RIGIDSYM_DISPATCH="baseline")
-    p = _python(_DISPATCH.format(tests=str(REPO / "tests"), inputs=str(tmp_path / "in.npz"),
-                                 out=str(tmp_path / "b.npz")), env, tmp_path)
-    out, err = p.communicate(timeout=900)
-    assert p.returncode == 0, err
-    assert out.split()[-1] == info["paths"][-1]          # the baseline ran there
-    base = np.load(tmp_path / "b.npz")
-    for name, arrays in cases.items():
-        disp = T.run(name, arrays, "c")[0]
-        assert T.rel_err(base[name], disp).max() <= 1e-14, name
-        if name in ("N_matrix", "rotation_from_natural_invariants", "screw_axis_point"):
-            ref = T.ref_eval(name, arrays)
-            assert T.rel_err(base[name], ref).max() <= T.TOL, name
-
-
 def test_dispatch_env_names_an_unknown_path(tmp_path):
     if not HAVE_CC and _ext.package_module() is None:
         pytest.skip("no compiled module")
@@ -448,9 +399,9 @@ def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
 
 
 @pytest.mark.parametrize("flags, want", [
-    # an AVX-512 machine: the trig-only x86-64-v4 path and x86-64-v3 behind it, no v2
+    # an AVX-512 machine: x86-64-v4 alone, every kernel compiled there (no alias to -v3)
     ("sse4_2 ssse3 popcnt cx16 avx avx2 fma bmi1 bmi2 f16c movbe abm avx512f avx512bw "
-     "avx512cd avx512dq avx512vl", ["v4", "v3"]),
+     "avx512cd avx512dq avx512vl", ["v4"]),
     # AVX2 without AVX-512 (many AMD desktops): x86-64-v3 alone
     ("sse4_2 ssse3 popcnt cx16 avx avx2 fma bmi1 bmi2 f16c movbe abm", ["v3"]),
     # AVX-512 flags without FMA cannot run x86-64-v4 either (the levels nest)
@@ -460,18 +411,23 @@ def test_the_avx512_path_compiles_only_the_kernels_calling_sin_or_cos(tmp_path):
     ("sse2", ["v4", "v3", "v2"]),
 ])
 def test_an_editable_install_compiles_the_paths_its_cpu_runs(flags, want, monkeypatch):
-    """an editable install (setup.py, ``editable_mode``) compiles only the paths
-    this CPU runs, down to one that compiles every kernel: what it imports is then the same
-    path a full build's dispatcher picks on this CPU."""
+    """an editable install (setup.py, ``editable_mode``) compiles only the best path
+    this CPU runs, every kernel there: the path a full build's dispatcher picks on this CPU
+    (its values bit for bit those of a full build: benchmarks/editable_paths.py)."""
     from rigidsym.kernels.cbuild import paths as _paths
 
     monkeypatch.delenv("RIGIDSYM_PATHS", raising=False)
     info = f"processor\t: 0\nflags\t\t: {flags}\n"
     got = [p.suffix for p in _paths.host_paths(_paths.X86_PATHS, cpuinfo=info)]
     assert got == want
-    # the full build's choice on this CPU is the first kept path (or none runs at all)
+    # the full build's choice on this CPU, alone (or every path where none runs at all)
     runs = [p.suffix for p in _paths.X86_PATHS if _paths._runs(p, set(flags.split()))]
-    assert got[0] == runs[0] if runs else got == [p.suffix for p in _paths.X86_PATHS]
+    assert got == runs[:1] if runs else got == [p.suffix for p in _paths.X86_PATHS]
+    if runs:       # a trig-only path alone compiles every kernel, aliasing none
+        srcs = [Path("plain.c"), Path("rigidsym_table.c")]
+        plan, aliases = _paths.partial_plan(_paths.host_paths(_paths.X86_PATHS, cpuinfo=info),
+                                            srcs, "rigidsym_table.c")
+        assert plan == {runs[0]: srcs} and aliases == []
     monkeypatch.setenv("RIGIDSYM_PATHS", "v3,v2")     # the user's choice wins
     assert _paths.host_paths(_paths.X86_PATHS, cpuinfo=info) == _paths.X86_PATHS
     # no flags line (not Linux's cpuinfo): unchanged

@@ -17,9 +17,9 @@ import sympy as sp
 
 REPO = Path(__file__).resolve().parents[1]
 #: one xdist worker builds the wheel and runs every test of it (``--dist loadgroup``).
-#: ``slow``: building the wheel recompiles the 444 objects wherever the object
-#: cache misses (281 s of the default run on a newcomer's cold machine); .ci/run's slow part
-#: builds it, and the editable install of the README's command already compiles the same C.
+#: ``slow``: building the wheel compiles the 444 objects of every path wherever the object
+#: cache misses (the editable install of the README's command compiles only this CPU's best
+#: path, so the others compile here); .ci/run's slow part builds it.
 pytestmark = [pytest.mark.xdist_group("wheel"), pytest.mark.slow]
 EXAMPLE = REPO / "examples" / "rotation_identities.py"
 
@@ -35,8 +35,9 @@ def _copy_sources(dest: Path) -> Path:
 @pytest.fixture(scope="session")
 def wheel(tmp_path_factory) -> Path:
     """The wheel, built once per session from a copy of the checkout (no network: setuptools
-    and wheel come from the test extra). Its objects come from the reader's object cache,
-    which the README's ``pip install -e`` filled (conftest.py): seconds, not a minute."""
+    and wheel come from the test extra). The objects of this CPU's best path come from the
+    reader's object cache, which the README's ``pip install -e`` filled (conftest.py); the
+    other paths compile here."""
     root = tmp_path_factory.mktemp("wheel")
     src = _copy_sources(root / "src")
     out = root / "dist"
@@ -283,3 +284,55 @@ def test_wheel_ships_the_latex_reader(wheel):
     for f in ("grammar.lark", "glyphs.csv", "notes.json", "transformer/chapter.py",
               "transcription.py", *(f"notations/{n}.txt" for n in NOTATIONS)):
         assert f"rigidsym/latex/{f}" in names, f
+
+
+_DISPATCH = """
+import json, sys
+sys.path.insert(0, {tests!r})
+import numpy as np
+import test_kernels as T
+from rigidsym import kernels
+kernels.use_backend("c")
+xs = np.load({inputs!r})
+got = {{}}
+for name in T.PUBLIC + T.EULER:
+    arrays = [xs[f"{{name}}/{{i}}"] for i in range(len(T.AVAILABLE[name].args))]
+    got[name] = T.run(name, arrays, "c")[0]
+np.savez({out!r}, **got)
+print(json.dumps([kernels.build_info()["path"], kernels.build_info()["paths"]]))
+"""
+
+
+def test_forced_baseline_agrees_with_the_dispatched_path(installed, tmp_path):
+    """The wheel holds every path (an editable install only this CPU's best):
+    RIGIDSYM_DISPATCH=baseline runs its x86-64-v2 objects, and every kernel agrees with the
+    dispatched path (normwise, as C and NumPy must) and with the 50-digit reference."""
+    sys.path.insert(0, str(REPO / "tests"))
+    import test_kernels as T
+
+    # the same inputs in both processes (the rotations among them come from a kernel, whose
+    # last bits depend on the path; near phi = pi that would move the outputs by 1e-4)
+    cases = {name: T.inputs(T.AVAILABLE[name], 64, seed=5) for name in T.PUBLIC + T.EULER}
+    np.savez(tmp_path / "in.npz", **{f"{n}/{i}": a for n, arrays in cases.items()
+                                     for i, a in enumerate(arrays)})
+    ran = {}
+    for forced in ("baseline", None):
+        env = {k: v for k, v in installed["env"].items() if k != "RIGIDSYM_DISPATCH"}
+        if forced:
+            env["RIGIDSYM_DISPATCH"] = forced
+        code = _DISPATCH.format(tests=str(REPO / "tests"), inputs=str(tmp_path / "in.npz"),
+                                out=str(tmp_path / f"{forced}.npz"))
+        p = subprocess.run([sys.executable, "-c", code], cwd=tmp_path, env=env,
+                           capture_output=True, text=True, timeout=900)
+        assert p.returncode == 0, p.stderr
+        ran[forced] = json.loads(p.stdout.splitlines()[-1])
+    (base_path, paths), (disp_path, _) = ran["baseline"], ran[None]
+    if len(paths) < 2:
+        pytest.skip(f"one path compiled ({paths})")
+    assert base_path == paths[-1] and disp_path == paths[0], ran   # each ran where asked
+    base, disp = np.load(tmp_path / "baseline.npz"), np.load(tmp_path / "None.npz")
+    for name, arrays in cases.items():
+        assert T.rel_err(base[name], disp[name]).max() <= 1e-14, name
+        if name in ("N_matrix", "rotation_from_natural_invariants", "screw_axis_point"):
+            ref = T.ref_eval(name, arrays)
+            assert T.rel_err(base[name], ref).max() <= T.TOL, name

@@ -99,10 +99,14 @@ def _runs(path: IsaPath, flags: set[str]) -> bool:
 
 
 def host_paths(paths: tuple[IsaPath, ...], cpuinfo: str | None = None) -> tuple[IsaPath, ...]:
-    """The paths of ``paths`` an editable install needs on this machine: those its CPU runs,
-    down to the first one that compiles every kernel (an editable install is this
-    checkout on this machine, and the x86-64-v2 objects it never runs were 159 of its 419
-    objects on an AVX-512 host). ``paths`` unchanged off x86-64 Linux, with
+    """The path of ``paths`` an editable install needs on this machine: the best one its CPU
+    runs, alone (an editable install is this checkout on this machine: the x86-64-v2 objects
+    it never runs were 159 of its 419 objects on an AVX-512 host). A ``trig_only`` path alone
+    compiles every kernel (:func:`partial_plan`): on an AVX-512 host the x86-64-v4 objects
+    of the kernels without sin/cos replace the x86-64-v3 objects a full build aliases them
+    to (the same values, bit for bit: ``benchmarks/results/editable_paths.json``), and the
+    x86-64-v3 objects of the kernels with sin/cos, which it never runs, are not compiled
+    (172 objects instead of 276). ``paths`` unchanged off x86-64 Linux, with
     ``RIGIDSYM_PATHS`` set, or when the CPU's flags cannot be read; the module's dispatcher
     still refuses, naming the path, a CPU that lacks the remaining baseline (a checkout
     shared with an older machine: reinstall there, or set ``RIGIDSYM_PATHS``).
@@ -121,13 +125,9 @@ def host_paths(paths: tuple[IsaPath, ...], cpuinfo: str | None = None) -> tuple[
     if line is None:
         return paths
     flags = set(line.partition(":")[2].split())
-    kept = []
-    for i, p in enumerate(paths):
-        if not _runs(p, flags):
-            continue
-        kept.append(p)
-        if not (p.trig_only and i + 1 < len(paths)):
-            return tuple(kept)
+    for p in paths:
+        if _runs(p, flags):
+            return (p,)
     return paths        # the CPU runs none of them: the dispatcher says so at import
 
 
