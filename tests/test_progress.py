@@ -25,7 +25,7 @@ import pytest
 
 from rigidsym.checking import runner
 from rigidsym.core import progress as _progress
-from rigidsym.core.progress import Reporter, format_seconds
+from rigidsym.core.progress import PER_ITEM, Reporter, format_seconds
 from rigidsym.course.worked import EXERCISE_IDS
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -194,10 +194,11 @@ def test_report_in_a_pipe_states_every_phase(tmp_path):
             assert lines and lines[-1] == f"rigidsym report: {what} ...", (ln, lines)
         else:
             lines.append(ln)
-    for seen in counts.values():       # increasing, below the total, at most nine
+    for seen in counts.values():       # increasing, below the total
         assert [d for d, _ in seen] == sorted({d for d, _ in seen}), seen
-        assert all(0 < d < t for d, t in seen) and len(seen) <= 9, seen
-    assert len(counts.get("checking 181 ids", [])) == 9, counts
+        assert all(0 < d < t for d, t in seen), seen
+    assert len(counts.get("checking 181 ids", [])) == 9, counts     # each tenth
+    assert [d for d, _ in counts["solving 21 exercises"]] == list(range(1, 21))  # each item
     assert len(lines) == 2 * len(phases), lines
     for k, what in enumerate(phases):
         assert lines[2 * k] == f"rigidsym report: {what} ..."
@@ -212,9 +213,9 @@ def test_exercise_all_in_a_pipe(tmp_path):
                        capture_output=True, text=True)
     err = p.stderr.splitlines()
     assert err[0] == "rigidsym exercise --all: solving 21 exercises ..."
-    # a line at each tenth of the 21 exercises, then the phase's end
-    assert all(re.match(r"rigidsym exercise --all: solving 21 exercises: \d+/21, ", ln)
-               for ln in err[1:-1]) and len(err) - 2 <= 9, err
+    # a line at each of the 21 exercises but the last, then the phase's end
+    assert [int(re.match(r"rigidsym exercise --all: solving 21 exercises: (\d+)/21, ",
+                         ln).group(1)) for ln in err[1:-1]] == list(range(1, 21)), err
     assert "21 / 21 solved and checked" in err[-1]
     # a line per exercise (its answers indented under it) and the summary
     out = p.stdout.splitlines()
@@ -247,7 +248,7 @@ def test_piped_reporter_writes_one_line_per_phase_start_and_end():
 def test_a_piped_phase_says_each_tenth_of_its_items_once():
     """A line when the count passes a tenth (by count, never by clock): 100 items one by one
     give 9 lines (10, 20, ..., 90), 100 items ten at a time the same 9, an uncounted phase
-    none."""
+    none; a phase of at most PER_ITEM items a line per item but the last."""
     for step in (1, 10):
         out = io.StringIO()
         with Reporter("rigidsym test", stream=out) as rep, \
@@ -257,6 +258,13 @@ def test_a_piped_phase_says_each_tenth_of_its_items_once():
         got = [int(m.group(1)) for m in
                re.finditer(r"rigidsym test: doing: (\d+)/100, ", out.getvalue())]
         assert got == list(range(10, 100, 10)), (step, got)
+    out = io.StringIO()
+    with Reporter("rigidsym test", stream=out) as rep, \
+            rep.phase("doing", total=PER_ITEM) as ph:
+        for _ in range(PER_ITEM):
+            ph.advance()
+    got = [int(m.group(1)) for m in re.finditer(rf"doing: (\d+)/{PER_ITEM}, ", out.getvalue())]
+    assert got == list(range(1, PER_ITEM))
     out = io.StringIO()
     with Reporter("rigidsym test", stream=out) as rep, rep.phase("spinning") as ph:
         for _ in range(50):

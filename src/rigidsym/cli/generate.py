@@ -101,7 +101,7 @@ def cmd_generate(args) -> int:
             rep.phase("deriving, optimising and printing the kernels") as ph:
         before = snapshot()
         res = generate(stored=not getattr(args, "no_store", False),
-                       only=getattr(args, "kernel", None))
+                       only=getattr(args, "kernel", None), progress=ph.counted)
         derived = len(since(before, "derive"))
         ph.finish(f"{len(res.kernels)} kernels ({derived} derived, "
                   f"{len(res.kernels) - derived} stored), {len(res.files)} files")

@@ -20,6 +20,7 @@ import json
 import os
 import pickle
 import textwrap
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
@@ -353,7 +354,8 @@ def _with_jacobian_kernels(todo: list[Kernel]) -> list[Kernel]:
 
 
 def generate(kernels=None, origin: str = BOOK_ORIGIN, *, stored: bool = False,
-             only: list[str] | None = None) -> GenerationResult:
+             only: list[str] | None = None,
+             progress: Callable[[int, int], None] | None = None) -> GenerationResult:
     """Render every kernel; returns the files (relative path -> text) and the compiled kernels.
 
     ``kernels`` defaults to the book's; a user module's kernels come with ``origin`` (the
@@ -362,6 +364,8 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN, *, stored: bool = False,
     (:mod:`rigidsym.codegen.inputs`) and keep each kernel derived there as it finishes (the
     same files as without). ``only`` (kernel names, with ``stored``): derive these kernels
     (and their ``_with_jacobians``) even when stored, and every other one from the store.
+    ``progress(done, total)``, when given, is called in this process as each group of
+    kernels to derive is done (``total``: the kernels derived, not those read back).
 
     Raises:
         BadInput: ``only`` names no kernel, or another kernel is not in the store.
@@ -371,9 +375,15 @@ def generate(kernels=None, origin: str = BOOK_ORIGIN, *, stored: bool = False,
         kernels = importlib.import_module(BOOK_ORIGIN).KERNELS
     todo = _with_jacobian_kernels(sorted(kernels, key=lambda k: k.name))
     if stored:
-        done, rendered = _derive_stored(todo, origin, only)
+        done, rendered = _derive_stored(todo, origin, only, progress)
     else:
-        done, rendered = _compile_all(todo, render=origin)
+        said = [0]
+
+        def finished(group: tuple, parts: dict, files: dict) -> None:
+            said[0] += len(group)
+            progress(said[0], len(todo))
+        done, rendered = _compile_all(todo, render=origin,
+                                      finished=None if progress is None else finished)
     return render(done, rendered, origin, kernels_are_book)
 
 
@@ -406,7 +416,8 @@ def render(done: list[KernelCode], rendered: dict, origin: str = BOOK_ORIGIN,
     return GenerationResult(dict(sorted(files.items())), done, rendered)
 
 
-def _derive_stored(todo: list[Kernel], origin: str, only: list[str] | None) -> tuple:
+def _derive_stored(todo: list[Kernel], origin: str, only: list[str] | None,
+                   progress: Callable[[int, int], None] | None = None) -> tuple:
     """``(kernels, files)`` as :func:`_compile_all` returns them with ``render=origin``: each
     group whose key the store holds loaded, the others derived and stored one by one as
     they finish (an interrupt keeps every stored one; :func:`rigidsym.core.interrupts.line`
@@ -447,6 +458,8 @@ def _derive_stored(todo: list[Kernel], origin: str, only: list[str] | None) -> t
             for i, n in zip(group, names, strict=True)])
         kept.update((n, (*parts[i], {tk: f for tk, f in files.items() if tk[1] == n}))
                     for i, n in zip(group, names, strict=True))
+        if progress is not None:
+            progress(sum(k.name in kept for k in derive), len(derive))
     if derive:
         _compile_all(derive, render=origin, finished=finished)
     done, rendered = [], {}

@@ -27,12 +27,15 @@ from contextlib import contextmanager
 
 from rigidsym.core.interrupts import checkpoint
 
-__all__ = ["Reporter", "Phase", "load_durations", "save_durations", "format_seconds"]
+__all__ = ["Reporter", "Phase", "PER_ITEM", "load_durations", "save_durations", "format_seconds"]
 
 #: refreshes per second of the live display (at least one)
 REFRESH = 4
 #: the share of a new estimate taken at once (the rest follows over the next updates)
 SMOOTHING = 1 / 3
+#: in a pipe, a counted phase of at most this many items says each item (a tenth of a few
+#: items, each taking seconds, would leave the reader seconds without a line)
+PER_ITEM = 30
 
 
 def format_seconds(s: float) -> str:
@@ -64,17 +67,31 @@ class Phase:
 
     def advance(self, n: int = 1, label: str | None = None) -> None:
         """``n`` more items done; ``label`` what was found (``3.57 does-not-hold``). In a
-        pipe, a line when the count passes a tenth of the phase's items (not the last)."""
+        pipe, a line when the count passes a tenth of the phase's items, or at each item of
+        a phase of at most :data:`PER_ITEM` items (their items take seconds each: 21
+        exercises), never at the last."""
         before, self.done = self.done, self.done + n
         if self._task is not None:
             kw = {"description": label} if label else {}
             self.reporter.bar.update(self._task, advance=n, **kw)
-        elif self.reporter.enabled and self.total and self.done < self.total and \
-                10 * self.done // self.total > 10 * before // self.total:
+        elif self.reporter.enabled and self.total and self.done < self.total and (
+                self.total <= PER_ITEM
+                or 10 * self.done // self.total > 10 * before // self.total):
             print(f"{self.reporter.command}: {self.what}: {self.done}/{self.total}, "
                   f"{format_seconds(time.perf_counter() - self.t0)}",
                   file=self.reporter._stream(), flush=True)
         checkpoint("advance")
+
+    def counted(self, done: int, total: int) -> None:
+        """The phase's count as its worker reports it: ``done`` of ``total`` items (a total
+        known only once the work starts, e.g. the kernels a generation derives), then as
+        :meth:`advance`."""
+        if total != self.total:
+            self.total = total
+            if self._task is not None:
+                self.reporter.bar.update(self._task, total=total)
+        if done > self.done:
+            self.advance(done - self.done)
 
     def estimate(self, seconds_left: float | None) -> None:
         """The caller's estimate of the time left (``None``: unknown), smoothed: the shown
