@@ -122,6 +122,12 @@ BOXES = {
                         "(3 x 3; a principal axis has no sense, so four rotations have "
                         "this property when the principal moments differ: give any one)",
                "residual": "least-squares residual (kg m^2)"},
+    "ex3.15": {"moment_along_d": "the principal moment about P along d = p - c, d = delta "
+                                 "e_1 (in I_1, I_2, I_3, m, delta: the centroidal principal "
+                                 "moments, the mass, the distance)",
+               "moments_normal_to_d": "the two principal moments about P normal to d (2, in "
+                                      "this order: along the principal axis of I_2, then "
+                                      "of I_3)"},
     "ex3.19": {"w_2": "wrench [w]_2 = [n_2; f_2] at P, in F_2 (6: N m, then N)",
                "n_2": "moment [n]_2 about P, in F_2 (3, N m)",
                "f_2": "force [f]_2, in F_2 (3, N)"},

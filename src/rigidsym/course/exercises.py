@@ -143,7 +143,8 @@ def grade(solution: Solution, answers: dict) -> list[Graded]:
     compared with small edits of the right one (as the repair search edits a printed
     equation) and the first that matches names the slip: ``"transpose"``, ``"sign"``
     (whole, one component, or one term of the exercise), ``"degrees"``, ``"unit"`` (a
-    power of ten: mm, cm, g, mm^2), ``"swap"`` (two entries, rows or columns) or
+    power of ten: mm, cm, g, mm^2), ``"factor 2"`` (doubled or halved), ``"swap"`` (two
+    entries, rows or columns) or
     ``"reference point"`` (the same quantity about another point of the body, where the
     exercise declares it: 3.11, 3.19); then the solution replayed with a slip along the
     way (``Q`` for ``Q^T``, a length in mm, a sign, frames swapped: ``"transpose"``,

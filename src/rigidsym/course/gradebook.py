@@ -73,7 +73,12 @@ def _answers(path: str | Path, key: dict) -> tuple[dict[int, dict], list[str]]:
     from rigidsym.course.matching import match_answers
 
     labelled, problems = read_class_answers(path)
-    matched, unmatched = match_answers(labelled, key["students"])
+    table = Path(path)
+    # a CSV's data rows as a spreadsheet numbers them (the header is row 1)
+    places = ([f"{label or 'a row with no name'} (row {k + 2} of {table.name})"
+               for k, (label, _) in enumerate(labelled)] if table.suffix.lower() == ".csv"
+              else None)
+    matched, unmatched = match_answers(labelled, key["students"], places)
     problems += unmatched
     boxes = {f"P{p['problem']}.{a}" for r in key["students"] for p in r["problems"]
              for a in p["asked"]}
@@ -127,7 +132,7 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
     for i, r in enumerate(key["students"]):
         if i not in given:
             problems.append(f"{r['student']}" + (f" (id {r['id']})" if r.get("id") else "")
-                            + ": not graded: no answer row or file matched this student "
+                            + ": not graded: no answer row or file matched this student alone "
                               "(their gradebook cells are left empty)")
     done = forked_map(lambda i: _student(key["students"][i], given.get(i), credit),
                       len(key["students"]))
@@ -204,7 +209,9 @@ def _student(r: dict, ans: dict | None, credit: tuple[float, float]) -> tuple:
 
 def _csv(rows: list) -> str:
     """The rows as CSV text with a UTF-8 byte-order mark, so that Excel reads the names'
-    accents right (Moodle's grade import and :func:`~.answers.read_table` skip it)."""
+    accents right (Moodle's grade import and :func:`~.answers.read_table` skip it), and
+    every cell quoted, so that an id such as ``00042`` is one text field to every CSV
+    reader (Python's :mod:`csv`, Moodle's import, LibreOffice's "quoted field as text")."""
     buf = io.StringIO()
-    csv.writer(buf, lineterminator="\n").writerows(rows)
+    csv.writer(buf, lineterminator="\n", quoting=csv.QUOTE_ALL).writerows(rows)
     return "\ufeff" + buf.getvalue()

@@ -5,9 +5,11 @@ is compared with small edits of the right one, and the first edit that explains 
 the slip: ``"transpose"`` (a matrix transposed), ``"sign"`` (the sign of the whole answer,
 of one component, or of one term where the exercise lists its terms), ``"degrees"`` (an
 angle in degrees for radians), ``"unit"`` (a factor that is a power of ten: mm, cm, g,
-mm^2 for m, m, kg, m^2), ``"swap"`` (two components, rows or columns exchanged) and
-``"reference point"`` (the same quantity about another point of the body, where the
-exercise declares one: its module's ``slips(solution)``). Else ``"not a known slip"``.
+mm^2 for m, m, kg, m^2), ``"factor 2"`` (the answer doubled or halved: a diameter for a
+radius, a half-angle formula's 2 dropped), ``"swap"`` (two components, rows or columns
+exchanged) and ``"reference point"`` (the same quantity about another point of the body,
+where the exercise declares one: its module's ``slips(solution)``). Else ``"not a known
+slip"``.
 
 Numbers are compared in floating point within a stated tolerance: a grade is a judgement
 on a student's decimals, not a proof; the expected values themselves are exact.
@@ -32,8 +34,8 @@ __all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "grad
 #: relative tolerance: an answer is right within 0.1 % of its largest entry
 RTOL = 1e-3
 #: the slip words, in the order they are tried
-SLIPS = ("transpose", "sign", "degrees", "unit", "swap", "order", "frame", "reference point",
-         "rounded")
+SLIPS = ("transpose", "sign", "degrees", "unit", "factor 2", "swap", "order", "frame",
+         "reference point", "rounded")
 _TRUTH = {"true": 1.0, "t": 1.0, "yes": 1.0, "y": 1.0, "holds": 1.0,
           "false": 0.0, "f": 0.0, "no": 0.0, "n": 0.0, "fails": 0.0}
 _UNIT_POWERS = (-15, -9, -6, -4, -3, -2, 2, 3, 4, 6, 9, 15)
@@ -205,6 +207,8 @@ def _candidates(e: np.ndarray, name: str, extra: list):
     for k in _UNIT_POWERS:
         yield "unit", f"{name} x 10^{k} (a unit prefix: mm, cm, g, mm^2 for m, m, kg, m^2)", \
             e * 10.0**k
+    yield "factor 2", f"{name} doubled", 2 * e
+    yield "factor 2", f"{name} halved", e / 2
     if e.ndim == 2 and min(e.shape) > 1:
         for i in range(e.shape[0]):
             for j in range(i + 1, e.shape[0]):

@@ -26,19 +26,35 @@ def fold(name: str) -> str:
     return re.sub(r"[\s_.\-]+", " ", bare.casefold()).strip()
 
 
-def match_answers(labelled: list[tuple[str, dict]], students: list[dict]
+def match_answers(labelled: list[tuple[str, dict]], students: list[dict],
+                  places: list[str] | None = None
                   ) -> tuple[dict[int, tuple[str, dict]], list[str]]:
     """Each answer set matched to one student of the roster.
+
+    Two answer sets that match one student (two CSV rows of one name without ids, one
+    file named by the name and one by the id) are both refused, with a line naming both:
+    which of them is the student's is not guessed, and the student is then not graded.
 
     Args:
         labelled: ``[(label, answers)]``: a file's stem or a CSV row's student; an
             ``"id"`` entry of ``answers`` is the student id it declares (taken out).
         students: the key's records (``student``, ``id``, ``handout``), in roster order.
+        places: where each answer set was read, naming it in a refusal of two sets
+            (``"María García (row 3 of answers.csv)"``), one per entry of ``labelled``;
+            default: the labels.
 
     Returns:
         ``({roster index: (label, answers)}, problems)``: a line per answer set not
-        graded (matched to no student, to two, or a second set for one student).
+        graded (matched to no student, or one of two sets for one student).
+
+    Raises:
+        ValueError: ``places`` not one per answer set.
     """
+    if places is None:
+        places = [label for label, _ in labelled]
+    if len(places) != len(labelled):
+        raise ValueError(f"places: expected one per answer set ({len(labelled)}), got "
+                         f"{len(places)}")
     by_id: dict[str, int] = {}
     by_name: dict[str, list[int]] = {}
     by_fold: dict[str, list[int]] = {}
@@ -52,18 +68,25 @@ def match_answers(labelled: list[tuple[str, dict]], students: list[dict]
         if stem:
             by_stem[stem] = i
     out: dict[int, tuple[str, dict]] = {}
+    claims: dict[int, list[int]] = {}
     problems = []
-    for label, answers in labelled:
+    for k, (label, answers) in enumerate(labelled):
         answers = dict(answers)
         declared = str(answers.pop("id", "") or "").strip()
         i, why = _one(label, declared, by_id, by_name, by_fold, by_stem, students)
         if i is None:
             problems.append(f"{label}: not graded: {why}")
-        elif i in out:
-            problems.append(f"{label}: not graded: a second answer set for "
-                            f"{students[i]['student']} (the first, {out[i][0]}, is graded)")
-        else:
-            out[i] = (label, answers)
+            continue
+        claims.setdefault(i, []).append(k)
+        out.setdefault(i, (label, answers))
+    for i, ks in claims.items():
+        if len(ks) > 1:
+            del out[i]
+            who = students[i]["student"] + (f" (id {students[i]['id']})"
+                                             if students[i].get("id") else "")
+            problems.append(f"{' and '.join(places[k] for k in ks)}: not graded: "
+                            f"{len(ks)} answer sets match {who} (give each row its student "
+                            f"id, or keep one): neither is guessed")
     return out, problems
 
 

@@ -250,7 +250,8 @@ def _key_section(head: str, sols: list) -> str:
 
 def _template(students: list, columns: list) -> str:
     buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
+    # every cell quoted: an id such as 00042 stays one text field to a CSV reader
+    w = csv.writer(buf, lineterminator="\n", quoting=csv.QUOTE_ALL)
     w.writerow(["student", "id", *columns])
     for st in students:
         w.writerow([st["name"], st.get("id") or ""] + [""] * len(columns))
