@@ -361,3 +361,24 @@ def test_a_whole_audit_of_any_member_under_any_convention_finds_nothing(kind, da
     op = OP if kind == "axis_angle" else "euler_rodrigues_from_rotation"
     rep = audit(_class_user(kind, gens, salt), op, seed=seed)
     assert rep.ok and all(f.kind == "batch" for f in rep.findings), report.text(rep)
+
+
+def test_no_member_counts_each_member_and_the_rest():
+    """Where no member matches at every input, the report says how many match under the
+    nearest, how many under each other member, and how the rest differ, with a count (the
+    accuracy judged under the nearest: the test above)."""
+    op = "rotation_vector_from_rotation"
+    pts, truth = _pts_truth(op)
+    found = C.find(X.log_passive_sometimes, target(op), pts, truth)
+    passive = [np.asarray(x["Q"])[0, 0] > np.asarray(x["Q"])[1, 1] for x in pts]
+    assert 0 < sum(passive) < len(pts), "the seed's inputs take both branches"
+    assert found.member is None
+    # the count under the nearest and the other member are the branch's own counts
+    counts = {m.generators: c for m, c in [(found.nearest, found.agree), *found.also]}
+    assert counts.get(("transpose_in",), 0) == sum(passive), counts
+    assert counts.get((), 0) == len(pts) - sum(passive), counts
+    assert found.differ == ""
+    found = C.find(X.log_unwrapped, target(op), pts, truth)
+    beyond = sum(np.linalg.norm(t) > 2.3 for t in truth[op])
+    assert found.agree == len(pts) - beyond and not found.also
+    assert found.differ == f"by 2 pi w/|w| (a whole turn) at {beyond}"

@@ -199,18 +199,31 @@ def _window(w) -> dict:
 
 
 def _judged_anyway(found: C.Found) -> bool:
-    """No member matches at every input, but the nearest at most of them: its accuracy is
-    searched and judged all the same (what it gets wrong may be the reason)."""
-    return found.member is None and found.nearest is not None and 2 * found.agree > found.n
+    """No member matches at every input, but the nearest returns the book's kind of output
+    (a finite residual): its accuracy is searched and judged all the same, reported beside
+    the convention (what it gets wrong may be the reason)."""
+    return found.member is None and found.nearest is not None and bool(
+        np.isfinite(found.residual))
+
+
+def _no_member(found: C.Found, tgt) -> str:
+    """Where no member matches at every input: how many match under the nearest, how many
+    under each other member, and how the rest differ."""
+    n = found.nearest.says(tgt)
+    if not found.agree and not found.also:
+        return f"no input matches under any; the nearest, {n}, differs {found.differ}"
+    parts = [f"{found.agree} of {found.n} inputs match the book's under the nearest, {n}"]
+    parts += [f"{c} more under {m.says(tgt)}" for m, c in found.also]
+    left = found.n - found.agree - sum(c for _, c in found.also)
+    if left:
+        parts.append(f"the other {left} differ {found.differ}")
+    return "; ".join(parts)
 
 
 def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str) -> list[Finding]:
     out = []
     if found.member is None:
-        n = found.nearest.says(tgt)
-        agree = (f"{found.agree} of {found.n} inputs match the book's under the nearest, "
-                 f"{n}; the others differ {found.differ}" if found.agree else
-                 f"no input matches under any; the nearest, {n}, differs {found.differ}")
+        agree = _no_member(found, tgt)
         out.append(Finding("error", "convention", f"no member of {found.tried} matches the "
                            f"book's {tgt.name} at every input: {agree} (residual "
                            f"{found.residual:.3g}, relative)" + (

@@ -251,7 +251,11 @@ class Found:
         matches: every matching member.
         n: the inputs tried.
         agree: at how many of them the member (the nearest where none matched) matches.
-        differ: how the nearest's outputs differ at the others (:func:`differ`), or "".
+        differ: how the nearest's outputs differ at the inputs no member matches
+            (:func:`differ`), or "".
+        also: where no member matches at every input, the other members that match at
+            some of the inputs the nearest does not: ``[(member, how many)]``, the most
+            first, each input counted once.
     """
 
     member: Member | None
@@ -264,6 +268,7 @@ class Found:
     n: int = 0
     agree: int = 0
     differ: str = ""
+    also: list = field(default_factory=list)
 
 
 def _members(tgt: Target, names: tuple[str, ...] | None) -> list[Member]:
@@ -307,9 +312,9 @@ def _residual(func, member, points, truth, tgt: Target) -> float:
 
 def differ(func, member: Member, points, truth, tgt: Target) -> str:
     """How the user's outputs under ``member`` differ from the book's at the inputs where
-    they do not match: ``"by sign"``, ``"by 2 pi w/|w|"`` (a rotation vector or an angle
-    off by a whole turn), ``"by a transpose"`` (a 3 x 3), ``"by a factor c"``, else by how
-    much (relative)."""
+    they do not match, each way with the number of inputs: ``"by sign at 2"``, ``"by 2 pi
+    w/|w| (a whole turn) at 4"`` (a rotation vector or an angle off by a whole turn), ``"by
+    a transpose"`` (a 3 x 3), ``"by a factor c"``, else by how much (relative)."""
     from rigidsym.auditing.equivalence import nearest
     from rigidsym.codegen.accuracy.harness.reference import kernel_of
 
@@ -358,7 +363,7 @@ def differ(func, member: Member, points, truth, tgt: Target) -> str:
     if not kinds:
         return ""
     uniq = sorted(set(kinds), key=kinds.index)
-    return ", ".join(uniq)
+    return ", ".join(f"{k} at {kinds.count(k)}" for k in uniq)
 
 
 def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
@@ -376,7 +381,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
         :class:`Found` (``member`` None where no member matches to :data:`TOL`).
     """
     members = _members(tgt, names)
-    best, best_key, errors, matches = None, None, {}, []
+    best, best_key, errors, matches, gaps_of = None, None, {}, [], {}
     best_r, best_agree = np.inf, 0
     for m in members:
         try:
@@ -385,6 +390,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
         except Exception as e:      # noqa: BLE001  (the user's function failed: say so)
             errors.setdefault(m.form.label, f"{type(e).__name__}: {e}")
             continue
+        gaps_of[m] = gaps
         r = max(gaps)
         agree = sum(g <= TOL for g in gaps)
         # the nearest: the most inputs matched, then the smallest residual on the others
@@ -399,7 +405,17 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
         match or best, errors, [], matches, len(points),
         len(points) if match is not None else (best_agree if best is not None else 0))
     if match is None and best is not None:
-        found.differ = differ(func, best, points, truth[best.kernel(tgt)], tgt)
+        rest = [i for i, g in enumerate(gaps_of[best]) if g > TOL]
+        while rest:     # the other members that match some of the rest, the most first
+            m2, hit = max(((m, [i for i in rest if g[i] <= TOL]) for m, g in gaps_of.items()
+                           if m != best), key=lambda t: len(t[1]), default=(None, []))
+            if not hit:
+                break
+            found.also.append((m2, len(hit)))
+            rest = [i for i in rest if i not in hit]
+        t = truth[best.kernel(tgt)]
+        found.differ = differ(func, best, [points[i] for i in rest], [t[i] for i in rest],
+                              tgt)
     if match is not None or best is not None:
         found.broken = invariants(func, tgt, match or best, points)
     return found
