@@ -178,3 +178,13 @@ def log_series_window(Q):
 def log_passive_sometimes(Q):
     Q = np.asarray(Q)
     return log_atan2(Q.T if Q[0, 0] > Q[1, 1] else Q)
+
+
+# spatialmath's trlog, its return kind re-created: the logarithm as the 3 x 3 cross-product
+# matrix by default, the rotation vector with twist=True (a flag of its own)
+def log_matrix_by_default(Q, check=True, twist=False):
+    Q = np.asarray(Q, dtype=np.float64)
+    if check and Q.shape != (3, 3):
+        raise ValueError("expected a 3 x 3 rotation")
+    w = log_atan2(Q)
+    return w if twist else cpm(w)

@@ -237,11 +237,24 @@ def test_a_signed_angle_passes_on_more_seeds(seed):
 
 
 def test_another_return_type_is_said_as_such():
-    """A logarithm that returns the 3 x 3 skew matrix: no member matches, and the report
-    says what it returns against the book's output (not that it raised)."""
-    rep = audit(lambda Q: X.cpm(X.log_atan2(Q)), "rotation_vector_from_rotation", search=False)
-    conv = [f.text for f in rep.findings if f.kind == "convention"]
-    assert conv and "returns a 3 x 3 array (9 values) where the book's output is 3" in conv[0]
+    """A logarithm that returns the 3 x 3 skew matrix: the output's kind is checked before
+    any convention, and the report says what it returns against the book's output and the
+    wrapper to write (not that it raised, nor a convention); one with a flag of its own
+    that returns the book's kind (spatialmath's trlog, twist=True) is audited with it, the
+    flag in the reproducer."""
+    op = "rotation_vector_from_rotation"
+    rep = audit(lambda Q: X.cpm(X.log_atan2(Q)), op, search=False)
+    assert [f.kind for f in rep.findings] == ["output"] and not rep.ok, report.text(rep)
+    said = rep.findings[0].text
+    assert said.startswith("returns a 3 x 3 matrix (9 values)") and "3 values (w[3])" in said
+    assert "skew-symmetric" in said and "axial vector" in said
+    rep = audit(lambda Q: X.cpm(X.log_atan2(Q)) + np.eye(3), op, search=False)
+    assert "skew" not in rep.findings[0].text and "wrapper" in rep.findings[0].text
+    rep = audit(X.log_matrix_by_default, op, search=False, spec="audit_examples:"
+                "log_matrix_by_default")
+    assert rep.ok and rep.keywords == {"twist": True}, report.text(rep)
+    assert "with twist=True it returns 3 values" in rep.findings[0].text
+    assert "twist=True)" in report.text(rep) and "twist=True)" in report.pytest_source(rep)
 
 
 # -- every member of each class, at the singular sets too, judged within the bound ---------

@@ -9,6 +9,7 @@ gets wrong is collected as findings (:class:`Finding`) in an :class:`AuditReport
 
 from __future__ import annotations
 
+import functools
 import time
 import warnings
 from collections.abc import Callable, Sequence
@@ -79,6 +80,7 @@ class AuditReport:
     versions: dict = field(default_factory=dict)   # the function's library and NumPy
     equivalent: str = ""       # the output's class of outputs of the same rotation, or ""
     windows: dict = field(default_factory=dict)    # dtype -> [window over the bound]
+    keywords: dict = field(default_factory=dict)   # the flags it is called with (twist=True)
 
     @property
     def ok(self) -> bool:
@@ -311,8 +313,18 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
     for d in dtypes:
         if d not in ("float64", "float32"):
             raise BadInput(f"dtypes: {d!r}: expected float64 or float32")
-    call = as_numpy_callable(func)
     fname = getattr(func, "__qualname__", getattr(func, "__name__", repr(func)))
+    # the output's kind first: a 3 x 3 where the book's is 3 values is said as such, with
+    # the flag of its own that gives the book's kind (then audited with it) or the wrapper
+    point = C.ordinary_points(R.kernel_of(tgt.kernel), 1, np.random.default_rng(seed + 5))
+    kind = C.output_kind(as_numpy_callable(func), tgt, point[0])
+    keywords = kind.keywords if kind is not None else {}
+    if kind is not None and not keywords:
+        return AuditReport(fname, tgt.name, tgt.book, 0, None, [], np.inf, None, [], {}, [],
+                           "", [Finding("error", "output", kind.says)],
+                           time.perf_counter() - t0, spec, "", versions(func, spec),
+                           tgt.equivalent)
+    call = as_numpy_callable(functools.partial(func, **keywords) if keywords else func)
     found = _find(call, tgt, tuple(names) if names else parameter_names(func), seed)
     beh, worst, batch, wins = {}, [], "", {}
     m = found.member
@@ -349,5 +361,7 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                       time.perf_counter() - t0, spec, m.form.label if m else "",
                       versions(func, spec), tgt.equivalent,
                       {d: [_window(w) for w in ws if w.worst_ratio > 1]
-                       for d, ws in wins.items()})
+                       for d, ws in wins.items()}, keywords)
+    if kind is not None:
+        rep.findings.insert(0, Finding("note", "output", kind.says))
     return rep

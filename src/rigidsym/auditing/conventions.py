@@ -25,7 +25,7 @@ import numpy as np
 from rigidsym.auditing.targets import Form, Target
 
 __all__ = ["Generator", "GENERATORS", "Member", "Found", "find", "call_member", "flat",
-           "ordinary_points", "differ", "describe", "TOL"]
+           "ordinary_points", "differ", "describe", "TOL", "OutputKind", "output_kind"]
 
 #: the relative residual under which a member matches at ordinary inputs
 TOL = 1e-8
@@ -214,6 +214,94 @@ def describe(v) -> str:
         return f"a {type(v).__name__} of {len(v)} ({', '.join(describe(o) for o in v)})"
     shape = np.shape(to_numpy(v)) if not np.isscalar(v) else ()
     return "a scalar" if shape == () else f"a {' x '.join(map(str, shape))} array"
+
+
+@dataclass
+class OutputKind:
+    """A function whose output is not the book's kind under any argument layout.
+
+    Attributes:
+        says: what it returns against the book's output, with the fix to try, in words.
+        keywords: keyword arguments with which it returns the book's kind (a flag of its
+            own signature flipped: ``{"twist": True}``), or {} where none does.
+    """
+
+    says: str
+    keywords: dict
+
+
+def _flags(func: Callable) -> dict:
+    """The keyword parameters of ``func`` with a bool default: ``{name: default}``."""
+    import inspect
+
+    try:
+        ps = inspect.signature(func).parameters.values()
+    except (TypeError, ValueError):
+        return {}
+    return {p.name: p.default for p in ps if isinstance(p.default, bool)}
+
+
+def _structure(v, want: int) -> str:
+    """What a 3 x 3 or 4 x 4 output is, where that tells the wrapper to write."""
+    M = to_numpy(v)
+    if M.shape == (3, 3) and want == 3 and np.allclose(M, -M.T, atol=1e-12):
+        return ("; it is skew-symmetric, a cross-product matrix: its axial vector [M[2, 1], "
+                "M[0, 2], M[1, 0]] is the 3-vector to audit")
+    if M.shape == (4, 4) and want == 6 and np.allclose(M[3], 0, atol=1e-12) and np.allclose(
+            M[:3, :3], -M[:3, :3].T, atol=1e-12):
+        return ("; it is the 4 x 4 matrix [[W, v], [0, 0]] of a twist: [axial vector of W; v] "
+                "is the 6-vector to audit")
+    return ""
+
+
+def output_kind(func: Callable, tgt: Target, point: dict) -> OutputKind | None:
+    """The function's output checked against the book's kind before any convention is
+    sought: where every argument layout that does not raise at ``point`` (the kernel's
+    arguments) returns another number of values than the book's output, what it returns
+    and the fix to try: a bool flag of its own signature that makes it return the book's
+    kind (tried here), else the wrapper its structure calls for (a cross-product matrix's
+    axial vector). None where some layout returns the book's kind, or every one raises.
+    """
+    from rigidsym.codegen.accuracy.harness.reference import kernel_of
+
+    kernel = kernel_of(tgt.kernel)
+    sl = tgt.user_slice(kernel)
+    want = sl.stop - sl.start
+    seen = None
+    for form in tgt.forms:
+        args = form.build(point)
+        try:
+            with np.errstate(all="ignore"):
+                out = func(*args)
+            size = flat(out).size
+        except Exception:  # noqa: BLE001  (raises under this layout: the finder says so)
+            continue
+        if size == want:
+            return None
+        seen = seen or (form, args, out, size)
+    if seen is None:
+        return None
+    form, args, out, size = seen
+    names = ", ".join(f"{o.name}[{o.size}]" for o in kernel.outputs
+                      if not tgt.outputs or o.name in tgt.outputs)
+    what = describe(out)
+    if np.ndim(to_numpy(out)) == 2 and not isinstance(out, (tuple, list)):
+        what = what.replace(" array", " matrix")
+    says = (f"returns {what} ({size} values) as {form.label}, where the book's "
+            f"output is {want} values ({names})")
+    raw = getattr(func, "__wrapped__", func)      # the user's own, which takes keywords
+    for name, default in _flags(raw).items():
+        try:
+            with np.errstate(all="ignore"):
+                alt = raw(*args, **{name: not default})
+            ok = flat(alt).size == want
+        except Exception:  # noqa: BLE001  (the flag does not give the book's kind)
+            ok = False
+        if ok:
+            return OutputKind(f"{says}; with {name}={not default} it returns {want} values: "
+                              f"audited so", {name: not default})
+    return OutputKind(says + (_structure(out, want) or "; a wrapper that returns the book's "
+                              "output is the function to audit"), {})
 
 
 def call_member(func: Callable, member: Member, x: dict, dtype=None) -> np.ndarray:
