@@ -170,3 +170,21 @@ def log_series_window(Q):
     if c > 0 and 1e-3 < ns < 2.3e-3:
         return (1 + ns**2 / 6) * s
     return log_atan2(Q)
+
+
+# a logarithm that takes Q^T (the passive convention) at some inputs only (where Q[0, 0] >
+# Q[1, 1], a test Q^T passes as Q does): no member matches at every input, the book's own at
+# some, the passive at the others
+def log_passive_sometimes(Q):
+    Q = np.asarray(Q)
+    return log_atan2(Q.T if Q[0, 0] > Q[1, 1] else Q)
+
+
+# spatialmath's trlog, its return kind re-created: the logarithm as the 3 x 3 cross-product
+# matrix by default, the rotation vector with twist=True (a flag of its own)
+def log_matrix_by_default(Q, check=True, twist=False):
+    Q = np.asarray(Q, dtype=np.float64)
+    if check and Q.shape != (3, 3):
+        raise ValueError("expected a 3 x 3 rotation")
+    w = log_atan2(Q)
+    return w if twist else cpm(w)

@@ -9,6 +9,7 @@ gets wrong is collected as findings (:class:`Finding`) in an :class:`AuditReport
 
 from __future__ import annotations
 
+import functools
 import time
 import warnings
 from collections.abc import Callable, Sequence
@@ -79,6 +80,7 @@ class AuditReport:
     versions: dict = field(default_factory=dict)   # the function's library and NumPy
     equivalent: str = ""       # the output's class of outputs of the same rotation, or ""
     windows: dict = field(default_factory=dict)    # dtype -> [window over the bound]
+    keywords: dict = field(default_factory=dict)   # the flags it is called with (twist=True)
 
     @property
     def ok(self) -> bool:
@@ -199,18 +201,31 @@ def _window(w) -> dict:
 
 
 def _judged_anyway(found: C.Found) -> bool:
-    """No member matches at every input, but the nearest at most of them: its accuracy is
-    searched and judged all the same (what it gets wrong may be the reason)."""
-    return found.member is None and found.nearest is not None and 2 * found.agree > found.n
+    """No member matches at every input, but the nearest returns the book's kind of output
+    (a finite residual): its accuracy is searched and judged all the same, reported beside
+    the convention (what it gets wrong may be the reason)."""
+    return found.member is None and found.nearest is not None and bool(
+        np.isfinite(found.residual))
+
+
+def _no_member(found: C.Found, tgt) -> str:
+    """Where no member matches at every input: how many match under the nearest, how many
+    under each other member, and how the rest differ."""
+    n = found.nearest.says(tgt)
+    if not found.agree and not found.also:
+        return f"no input matches under any; the nearest, {n}, differs {found.differ}"
+    parts = [f"{found.agree} of {found.n} inputs match the book's under the nearest, {n}"]
+    parts += [f"{c} more under {m.says(tgt)}" for m, c in found.also]
+    left = found.n - found.agree - sum(c for _, c in found.also)
+    if left:
+        parts.append(f"the other {left} differ {found.differ}")
+    return "; ".join(parts)
 
 
 def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str) -> list[Finding]:
     out = []
     if found.member is None:
-        n = found.nearest.says(tgt)
-        agree = (f"{found.agree} of {found.n} inputs match the book's under the nearest, "
-                 f"{n}; the others differ {found.differ}" if found.agree else
-                 f"no input matches under any; the nearest, {n}, differs {found.differ}")
+        agree = _no_member(found, tgt)
         out.append(Finding("error", "convention", f"no member of {found.tried} matches the "
                            f"book's {tgt.name} at every input: {agree} (residual "
                            f"{found.residual:.3g}, relative)" + (
@@ -298,8 +313,18 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
     for d in dtypes:
         if d not in ("float64", "float32"):
             raise BadInput(f"dtypes: {d!r}: expected float64 or float32")
-    call = as_numpy_callable(func)
     fname = getattr(func, "__qualname__", getattr(func, "__name__", repr(func)))
+    # the output's kind first: a 3 x 3 where the book's is 3 values is said as such, with
+    # the flag of its own that gives the book's kind (then audited with it) or the wrapper
+    point = C.ordinary_points(R.kernel_of(tgt.kernel), 1, np.random.default_rng(seed + 5))
+    kind = C.output_kind(as_numpy_callable(func), tgt, point[0])
+    keywords = kind.keywords if kind is not None else {}
+    if kind is not None and not keywords:
+        return AuditReport(fname, tgt.name, tgt.book, 0, None, [], np.inf, None, [], {}, [],
+                           "", [Finding("error", "output", kind.says)],
+                           time.perf_counter() - t0, spec, "", versions(func, spec),
+                           tgt.equivalent)
+    call = as_numpy_callable(functools.partial(func, **keywords) if keywords else func)
     found = _find(call, tgt, tuple(names) if names else parameter_names(func), seed)
     beh, worst, batch, wins = {}, [], "", {}
     m = found.member
@@ -336,5 +361,7 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                       time.perf_counter() - t0, spec, m.form.label if m else "",
                       versions(func, spec), tgt.equivalent,
                       {d: [_window(w) for w in ws if w.worst_ratio > 1]
-                       for d, ws in wins.items()})
+                       for d, ws in wins.items()}, keywords)
+    if kind is not None:
+        rep.findings.insert(0, Finding("note", "output", kind.says))
     return rep

@@ -25,7 +25,7 @@ import numpy as np
 from rigidsym.auditing.targets import Form, Target
 
 __all__ = ["Generator", "GENERATORS", "Member", "Found", "find", "call_member", "flat",
-           "ordinary_points", "differ", "describe", "TOL"]
+           "ordinary_points", "differ", "describe", "TOL", "OutputKind", "output_kind"]
 
 #: the relative residual under which a member matches at ordinary inputs
 TOL = 1e-8
@@ -216,6 +216,94 @@ def describe(v) -> str:
     return "a scalar" if shape == () else f"a {' x '.join(map(str, shape))} array"
 
 
+@dataclass
+class OutputKind:
+    """A function whose output is not the book's kind under any argument layout.
+
+    Attributes:
+        says: what it returns against the book's output, with the fix to try, in words.
+        keywords: keyword arguments with which it returns the book's kind (a flag of its
+            own signature flipped: ``{"twist": True}``), or {} where none does.
+    """
+
+    says: str
+    keywords: dict
+
+
+def _flags(func: Callable) -> dict:
+    """The keyword parameters of ``func`` with a bool default: ``{name: default}``."""
+    import inspect
+
+    try:
+        ps = inspect.signature(func).parameters.values()
+    except (TypeError, ValueError):
+        return {}
+    return {p.name: p.default for p in ps if isinstance(p.default, bool)}
+
+
+def _structure(v, want: int) -> str:
+    """What a 3 x 3 or 4 x 4 output is, where that tells the wrapper to write."""
+    M = to_numpy(v)
+    if M.shape == (3, 3) and want == 3 and np.allclose(M, -M.T, atol=1e-12):
+        return ("; it is skew-symmetric, a cross-product matrix: its axial vector [M[2, 1], "
+                "M[0, 2], M[1, 0]] is the 3-vector to audit")
+    if M.shape == (4, 4) and want == 6 and np.allclose(M[3], 0, atol=1e-12) and np.allclose(
+            M[:3, :3], -M[:3, :3].T, atol=1e-12):
+        return ("; it is the 4 x 4 matrix [[W, v], [0, 0]] of a twist: [axial vector of W; v] "
+                "is the 6-vector to audit")
+    return ""
+
+
+def output_kind(func: Callable, tgt: Target, point: dict) -> OutputKind | None:
+    """The function's output checked against the book's kind before any convention is
+    sought: where every argument layout that does not raise at ``point`` (the kernel's
+    arguments) returns another number of values than the book's output, what it returns
+    and the fix to try: a bool flag of its own signature that makes it return the book's
+    kind (tried here), else the wrapper its structure calls for (a cross-product matrix's
+    axial vector). None where some layout returns the book's kind, or every one raises.
+    """
+    from rigidsym.codegen.accuracy.harness.reference import kernel_of
+
+    kernel = kernel_of(tgt.kernel)
+    sl = tgt.user_slice(kernel)
+    want = sl.stop - sl.start
+    seen = None
+    for form in tgt.forms:
+        args = form.build(point)
+        try:
+            with np.errstate(all="ignore"):
+                out = func(*args)
+            size = flat(out).size
+        except Exception:  # noqa: BLE001  (raises under this layout: the finder says so)
+            continue
+        if size == want:
+            return None
+        seen = seen or (form, args, out, size)
+    if seen is None:
+        return None
+    form, args, out, size = seen
+    names = ", ".join(f"{o.name}[{o.size}]" for o in kernel.outputs
+                      if not tgt.outputs or o.name in tgt.outputs)
+    what = describe(out)
+    if np.ndim(to_numpy(out)) == 2 and not isinstance(out, (tuple, list)):
+        what = what.replace(" array", " matrix")
+    says = (f"returns {what} ({size} values) as {form.label}, where the book's "
+            f"output is {want} values ({names})")
+    raw = getattr(func, "__wrapped__", func)      # the user's own, which takes keywords
+    for name, default in _flags(raw).items():
+        try:
+            with np.errstate(all="ignore"):
+                alt = raw(*args, **{name: not default})
+            ok = flat(alt).size == want
+        except Exception:  # noqa: BLE001  (the flag does not give the book's kind)
+            ok = False
+        if ok:
+            return OutputKind(f"{says}; with {name}={not default} it returns {want} values: "
+                              f"audited so", {name: not default})
+    return OutputKind(says + (_structure(out, want) or "; a wrapper that returns the book's "
+                              "output is the function to audit"), {})
+
+
 def call_member(func: Callable, member: Member, x: dict, dtype=None) -> np.ndarray:
     """The user's function under ``member`` at the kernel's arguments ``x`` (its arguments
     cast to ``dtype`` where given): its flat output in the book's layout. Raises what the
@@ -251,7 +339,11 @@ class Found:
         matches: every matching member.
         n: the inputs tried.
         agree: at how many of them the member (the nearest where none matched) matches.
-        differ: how the nearest's outputs differ at the others (:func:`differ`), or "".
+        differ: how the nearest's outputs differ at the inputs no member matches
+            (:func:`differ`), or "".
+        also: where no member matches at every input, the other members that match at
+            some of the inputs the nearest does not: ``[(member, how many)]``, the most
+            first, each input counted once.
     """
 
     member: Member | None
@@ -264,6 +356,7 @@ class Found:
     n: int = 0
     agree: int = 0
     differ: str = ""
+    also: list = field(default_factory=list)
 
 
 def _members(tgt: Target, names: tuple[str, ...] | None) -> list[Member]:
@@ -307,9 +400,9 @@ def _residual(func, member, points, truth, tgt: Target) -> float:
 
 def differ(func, member: Member, points, truth, tgt: Target) -> str:
     """How the user's outputs under ``member`` differ from the book's at the inputs where
-    they do not match: ``"by sign"``, ``"by 2 pi w/|w|"`` (a rotation vector or an angle
-    off by a whole turn), ``"by a transpose"`` (a 3 x 3), ``"by a factor c"``, else by how
-    much (relative)."""
+    they do not match, each way with the number of inputs: ``"by sign at 2"``, ``"by 2 pi
+    w/|w| (a whole turn) at 4"`` (a rotation vector or an angle off by a whole turn), ``"by
+    a transpose"`` (a 3 x 3), ``"by a factor c"``, else by how much (relative)."""
     from rigidsym.auditing.equivalence import nearest
     from rigidsym.codegen.accuracy.harness.reference import kernel_of
 
@@ -358,7 +451,7 @@ def differ(func, member: Member, points, truth, tgt: Target) -> str:
     if not kinds:
         return ""
     uniq = sorted(set(kinds), key=kinds.index)
-    return ", ".join(uniq)
+    return ", ".join(f"{k} at {kinds.count(k)}" for k in uniq)
 
 
 def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
@@ -376,7 +469,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
         :class:`Found` (``member`` None where no member matches to :data:`TOL`).
     """
     members = _members(tgt, names)
-    best, best_key, errors, matches = None, None, {}, []
+    best, best_key, errors, matches, gaps_of = None, None, {}, [], {}
     best_r, best_agree = np.inf, 0
     for m in members:
         try:
@@ -385,6 +478,7 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
         except Exception as e:      # noqa: BLE001  (the user's function failed: say so)
             errors.setdefault(m.form.label, f"{type(e).__name__}: {e}")
             continue
+        gaps_of[m] = gaps
         r = max(gaps)
         agree = sum(g <= TOL for g in gaps)
         # the nearest: the most inputs matched, then the smallest residual on the others
@@ -399,7 +493,17 @@ def find(func: Callable, tgt: Target, points: list[dict], truth: dict,
         match or best, errors, [], matches, len(points),
         len(points) if match is not None else (best_agree if best is not None else 0))
     if match is None and best is not None:
-        found.differ = differ(func, best, points, truth[best.kernel(tgt)], tgt)
+        rest = [i for i, g in enumerate(gaps_of[best]) if g > TOL]
+        while rest:     # the other members that match some of the rest, the most first
+            m2, hit = max(((m, [i for i in rest if g[i] <= TOL]) for m, g in gaps_of.items()
+                           if m != best), key=lambda t: len(t[1]), default=(None, []))
+            if not hit:
+                break
+            found.also.append((m2, len(hit)))
+            rest = [i for i in rest if i not in hit]
+        t = truth[best.kernel(tgt)]
+        found.differ = differ(func, best, [points[i] for i in rest], [t[i] for i in rest],
+                              tgt)
     if match is not None or best is not None:
         found.broken = invariants(func, tgt, match or best, points)
     return found

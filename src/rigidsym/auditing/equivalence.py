@@ -15,7 +15,10 @@ The classes follow from the book's statements, not from a list of peers' habits:
 :func:`nearest` moves a user's output by one of these symmetries (exact operations: a
 negation, a shift by ``fl(2 pi)``, a whole turn as the user's float holds it, a rotation of
 the axis at the identity) to the member of its class nearest an anchor (the truth, or
-rigidsym's kernel there, a few ulps from it): what is left is the output's own error.
+rigidsym's kernel there, a few ulps from it): what is left is the output's own error. An
+angle of several turns, ``phi + 2 pi k`` in the user's float, holds ``phi`` to an absolute
+error of its own ulp (two turns keep 9 digits of ``phi = 1e-7``): that much of the gap,
+the representation's rounding, is not counted against the function; the rest is.
 The rotation vector's ``w`` and ``-w`` at a half turn, and the Euler angles' branches, are
 judged in :mod:`.worst`.
 """
@@ -30,6 +33,10 @@ __all__ = ["KINDS", "nearest", "axis_angle_rotation"]
 
 #: the output kinds with a class of equivalent outputs (a target's ``equivalent``)
 KINDS = ("axis_angle", "quaternion")
+
+#: the roundings of an angle of several turns the representation itself makes, in units of
+#: u of its magnitude: the sum phi + 2 pi k, a conversion to degrees and back, the shift
+_ROUNDINGS = 4
 
 #: a whole turn as a float holds it: an output of fl(2 pi) k is a whole turn k, exactly
 _TWO_PI = 6.283185307179586
@@ -48,7 +55,7 @@ def _shift(phi: float, k: int) -> float:
     return phi - k * _TWO_PI
 
 
-def _axis_angle(got: np.ndarray, anchor: np.ndarray) -> np.ndarray:
+def _axis_angle(got: np.ndarray, anchor: np.ndarray, u: float) -> np.ndarray:
     e, phi = got[:3], float(got[3])
     ae, aphi = anchor[:3], float(anchor[3])
     if aphi == 0.0:
@@ -61,7 +68,14 @@ def _axis_angle(got: np.ndarray, anchor: np.ndarray) -> np.ndarray:
     for s in (1.0, -1.0):
         p = s * phi
         k = round((p - aphi) / (2 * math.pi)) if math.isfinite(p) else 0
-        cand = np.concatenate([s * e, [_shift(p, k)]])
+        q = _shift(p, k)
+        if k:
+            # the user's float holds phi + 2 pi k to its own ulp (and a degrees' round trip
+            # to two more roundings): that much of the gap is the representation's, the
+            # rest the function's
+            q = aphi + math.copysign(max(0.0, abs(q - aphi) - _ROUNDINGS * u * abs(p)),
+                                     q - aphi)
+        cand = np.concatenate([s * e, [q]])
         d = float(np.linalg.norm(cand - anchor))
         if d < best_d:
             best, best_d = cand, d
@@ -72,10 +86,12 @@ def _quaternion(got: np.ndarray, anchor: np.ndarray) -> np.ndarray:
     return -got if np.linalg.norm(-got - anchor) < np.linalg.norm(got - anchor) else got
 
 
-def nearest(kind: str, got, anchor) -> np.ndarray:
+def nearest(kind: str, got, anchor, u: float = 2.0**-53) -> np.ndarray:
     """The member of ``got``'s class (outputs of the same rotation, :data:`KINDS`) nearest
     ``anchor``, both flat in the book's layout (``[e; phi]``, ``[r; r0]``); ``got`` itself
-    where it is not finite or ``kind`` is "".
+    where it is not finite or ``kind`` is "". ``u``: the unit roundoff of the user's float
+    type (an angle of several turns is held to its own ulp: that part of the gap is not
+    the function's).
 
     Raises:
         ValueError: ``kind`` not among :data:`KINDS` nor ""."""
@@ -88,4 +104,4 @@ def nearest(kind: str, got, anchor) -> np.ndarray:
     if got.shape != anchor.shape or not np.isfinite(got).all() \
             or not np.isfinite(anchor).all():
         return got
-    return _axis_angle(got, anchor) if kind == "axis_angle" else _quaternion(got, anchor)
+    return _axis_angle(got, anchor, u) if kind == "axis_angle" else _quaternion(got, anchor)

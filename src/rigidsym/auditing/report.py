@@ -28,9 +28,14 @@ def _array(a) -> str:
     return f"np.array([{vals}])" + (f".reshape({shape!r})" if len(shape) > 1 else "")
 
 
+def _keywords(rep: AuditReport) -> str:
+    """The flags the function is audited with, as a call's trailing arguments."""
+    return "".join(f", {k}={v!r}" for k, v in rep.keywords.items())
+
+
 def _call(rep: AuditReport, w: WorstInput) -> str:
     name = rep.spec.rpartition(":")[2] or rep.function
-    return f"{name}({', '.join(_array(a) for a in w.args)})"
+    return f"{name}({', '.join(_array(a) for a in w.args)}{_keywords(rep)})"
 
 
 def _worst_lines(rep: AuditReport) -> list[str]:
@@ -51,6 +56,8 @@ def text(rep: AuditReport) -> str:
              f" ({rep.seconds:.1f} s)", f"  the book: {rep.book}"]
     if rep.convention:
         lines.append(f"  convention: {rep.convention} (found among {rep.tried} members)")
+    elif not rep.tried:
+        lines.append("  convention: not sought (the output is not the book's kind)")
     else:
         lines.append(f"  convention: none of {rep.tried} members matches; nearest: "
                      f"{rep.nearest} (residual {rep.residual:.3g})")
@@ -112,7 +119,8 @@ def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
     lines.append("")
     for i, a in enumerate(w.args):
         lines.append(f"arg{i} = {_array(a)}")
-    call = f"{name or rep.function}({', '.join(f'arg{i}' for i in range(len(w.args)))})"
+    call = (f"{name or rep.function}({', '.join(f'arg{i}' for i in range(len(w.args)))}"
+            f"{_keywords(rep)})")
     lines += [f"out = {call}",
               "outs = out if isinstance(out, (tuple, list)) else [out]",
               "got = np.concatenate([np.ravel(np.asarray(o, dtype=np.float64)) "
@@ -185,7 +193,7 @@ def pytest_source(rep: AuditReport) -> str:
                  f"    # {w.regime}: error {w.err_u:.3g} u at audit time",
                  f"    args = [{args}]",
                  f"    truth = np.array([float.fromhex(h) for h in {hexes(w.truth)!r}])",
-                 f"    out = {name}(*args)",
+                 f"    out = {name}(*args{_keywords(rep)})",
                  "    outs = out if isinstance(out, (tuple, list)) else [out]",
                  "    got = np.concatenate([np.ravel(np.asarray(o, dtype=np.float64)) "
                  "for o in outs])",

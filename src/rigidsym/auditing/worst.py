@@ -72,7 +72,8 @@ class Runner:
             # an output of the same rotation is the same answer: moved to the member of its
             # class nearest rigidsym's kernel there (a few ulps from the truth)
             anchor = J.run_kernel(name, arrays, np.float64, "numpy")
-            rows = [r if r is None else nearest(self.equivalent, r, anchor[s])
+            u = float(np.finfo(dtype).eps) / 2
+            rows = [r if r is None else nearest(self.equivalent, r, anchor[s], u)
                     for s, r in enumerate(rows)]
         if self.tgt is not None:
             full = J.run_kernel(name, arrays, dtype, "numpy")
