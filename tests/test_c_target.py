@@ -1485,3 +1485,18 @@ def test_a_vanishing_divisor_of_the_arguments_is_recorded(formula, recorded):
         out = validate(k, "m")
     assert out.singular == recorded
     assert bool([w for w in got if issubclass(w.category, DivisionWarning)]) == bool(recorded)
+
+
+@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake is not installed")
+def test_cmake_without_a_build_type_configures_release_and_says_so(tmp_path):
+    """CMake's default build type is empty (the kernels at -O0): the generated project,
+    configured on its own with none named, takes Release and says so in one line; one
+    named is kept, without the line. (Configured only: no compile.)"""
+    said = "no CMAKE_BUILD_TYPE given, building Release"
+    for extra, want in (([], "Release"), (["-DCMAKE_BUILD_TYPE=Debug"], "Debug")):
+        build = tmp_path / f"b{want}"
+        p = subprocess.run(["cmake", "-S", str(KERNELS_DIR), "-B", str(build), *extra],
+                           check=True, capture_output=True, text=True)
+        cache = (build / "CMakeCache.txt").read_text()
+        assert f"CMAKE_BUILD_TYPE:STRING={want}\n" in cache, (want, p.stdout)
+        assert (said in p.stdout) == (not extra), p.stdout
