@@ -924,11 +924,12 @@ KERNELS = [Kernel(name="triple", summary="s", formula="y = t0 k1 in_t1 (t1 x t2)
     assert status == OK and np.allclose(y, np.cross(b, c) * 1e-300, rtol=1e-15, atol=0)
 
 
-@pytest.mark.parametrize("names", [("v", "v_0"), ("v", "status"), ("v", "k_")])
+@pytest.mark.parametrize("names", [("v", "v_0")])
 def test_an_argument_name_a_local_would_meet_is_refused_in_one_line(tmp_path, capsys, names):
-    """An argument that the C would declare twice (v_0 beside an array v, whose component
-    the C reads into a local v_0; a fixed local; a name ending in _) is refused before
-    anything is written: exit 2, one line naming the argument."""
+    """An argument named as another's component (v_0 beside an array v, whose components are
+    the program's symbols v_0, v_1, ...) is refused before anything is written: exit 2, one
+    line naming the argument. (A fixed local's name or one ending in _ compiles:
+    tests/test_c_names.py.)"""
     from rigidsym.cli import main
 
     a, b = names
@@ -1484,3 +1485,18 @@ def test_a_vanishing_divisor_of_the_arguments_is_recorded(formula, recorded):
         out = validate(k, "m")
     assert out.singular == recorded
     assert bool([w for w in got if issubclass(w.category, DivisionWarning)]) == bool(recorded)
+
+
+@pytest.mark.skipif(shutil.which("cmake") is None, reason="cmake is not installed")
+def test_cmake_without_a_build_type_configures_release_and_says_so(tmp_path):
+    """CMake's default build type is empty (the kernels at -O0): the generated project,
+    configured on its own with none named, takes Release and says so in one line; one
+    named is kept, without the line. (Configured only: no compile.)"""
+    said = "no CMAKE_BUILD_TYPE given, building Release"
+    for extra, want in (([], "Release"), (["-DCMAKE_BUILD_TYPE=Debug"], "Debug")):
+        build = tmp_path / f"b{want}"
+        p = subprocess.run(["cmake", "-S", str(KERNELS_DIR), "-B", str(build), *extra],
+                           check=True, capture_output=True, text=True)
+        cache = (build / "CMakeCache.txt").read_text()
+        assert f"CMAKE_BUILD_TYPE:STRING={want}\n" in cache, (want, p.stdout)
+        assert (said in p.stdout) == (not extra), p.stdout

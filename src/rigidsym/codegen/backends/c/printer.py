@@ -16,17 +16,29 @@ from sympy.codegen.ast import float32, float80, real
 
 from rigidsym.codegen.backends.extension.printer import KernelCPrinter
 
-__all__ = ["DoublePrinter", "FloatOnlyPrinter", "WidePrinter"]
+__all__ = ["DoublePrinter", "FloatOnlyPrinter", "WidePrinter", "SpelledSymbols"]
 
 
-class DoublePrinter(KernelCPrinter):
+class SpelledSymbols:
+    """Prints a symbol by its C spelling in ``names`` (``{symbol name: C identifier}``, set
+    by the target: the arguments', outputs' and components' names in their own namespace,
+    :func:`rigidsym.codegen.backends.c.target.spelling`); a symbol not there (a CSE
+    temporary) as the C printer does."""
+
+    names: dict = {}
+
+    def _print_Symbol(self, expr):
+        return self.names.get(expr.name) or super()._print_Symbol(expr)
+
+
+class DoublePrinter(SpelledSymbols, KernelCPrinter):
     """The package's double printer, with the target's compensated-product helpers."""
 
     _diffprod = "rigidsym_c_diffprod"
     _sumprod = "rigidsym_c_sumprod{n}"
 
 
-class FloatOnlyPrinter(KernelCPrinter):
+class FloatOnlyPrinter(SpelledSymbols, KernelCPrinter):
     """C99 printer of float-only programs (every literal, function and helper in float)."""
 
     _one = "1.0f"
@@ -59,7 +71,7 @@ class FloatOnlyPrinter(KernelCPrinter):
         return self._literal(float(sp.pi))
 
 
-class WidePrinter(KernelCPrinter):
+class WidePrinter(SpelledSymbols, KernelCPrinter):
     """C99 printer of the long double rescue of the double functions (``sinl``, ``sqrtl``,
     ``L`` literals; doubles' exact literals stay as they are: they widen exactly)."""
 

@@ -21,9 +21,7 @@ from __future__ import annotations
 import functools
 import hashlib
 import json
-import keyword
 import math
-import re
 import textwrap
 from pathlib import Path
 
@@ -78,10 +76,6 @@ STATUS = (
                            "natural_invariants_from_rotation at Q = 1, where phi = 0 "
                            "exactly); every other output is right, as with status 0"),
 )
-_C_KEYWORDS = set("""auto break case char const continue default do double else enum extern
-float for goto if inline int long register restrict return short signed sizeof static struct
-switch typedef union unsigned void volatile while bool true false class new delete this
-template typename namespace operator private public protected virtual""".split())
 
 
 class CTargetError(ValueError):
@@ -213,33 +207,49 @@ def _scan_groups(k: Kernel, ctype: str) -> list[dict]:
         g = comps[i:i + lanes]
         if len(g) == lanes and g[0][2] and all(n == g[0][0] and j == g[0][1] + d
                                                for d, (n, j, _) in enumerate(g)):
-            groups.append({"load": f"{g[0][0]} + {g[0][1]}" if g[0][1] else g[0][0]})
+            groups.append({"load": f"in_{g[0][0]} + {g[0][1]}" if g[0][1] else
+                           f"in_{g[0][0]}"})
         else:
-            groups.append({"elems": [f"&{n}[{j}]" if sh else f"&{n}" for n, j, sh in g],
+            groups.append({"elems": [f"&in_{n}[{j}]" if sh else f"&in_{n}" for n, j, sh in g],
                            "pad": lanes - len(g)})
     return groups
 
 
+def spelling(k: Kernel, inputs) -> dict[str, str]:
+    """The C identifiers of ``k``'s names, in a namespace of their own: ``{name: C name}``
+    for each argument (``in_<name>``), output (``out_<name>``) and component symbol of an
+    array argument (``c<j>_<name>``, j its row-major index), keyed by the name (of the
+    symbol, for a component). Every other identifier of the generated C (the fixed locals,
+    the CSE temporaries ``x<N>``, ``trig_<N>``, the helpers, the macros, the C library)
+    starts with none of ``in_``, ``out_``, ``c<digits>_``, ``w_``, ``sc_`` (the long double
+    rescue's parameters ``w_<name>`` and the scaled copies ``sc_<name>``), so no argument
+    name, a C keyword or a local's name included, can meet one. ``inputs``: the kernel's
+    [(argument, its symbols)]."""
+    out = {a.name: f"in_{a.name}" for a in k.args}
+    out.update({o.name: f"out_{o.name}" for o in k.outputs})
+    for a, syms in inputs:
+        if len(syms) > 1 or str(syms[0]) != a:
+            out.update({str(c): f"c{j}_{a}" for j, c in enumerate(syms)})
+    return out
+
+
 def _check_names(k: Kernel, temps: set[str], inputs) -> None:
-    """Refuse an argument or output name that a local of the generated C would meet: a C or
-    C++ keyword, a CSE temporary, a fixed local, a name ending in ``_`` (every other local
-    ends so) or starting with ``rs_`` (the rescue's scaled copies), or the name of another
-    argument's component (``v_0`` beside an array ``v``: the C reads ``v[0]`` into a local
-    ``v_0``). ``inputs``: the kernel's [(argument, its symbols)]."""
+    """Refuse what would make two of ``k``'s quantities one symbol of its program: an
+    argument or output named as another argument's component (``v_0`` beside an array ``v``,
+    whose components are the symbols ``v_0``, ``v_1``, ...), an argument named as a CSE
+    temporary, or two that share a name. Any other name is allowed: the C spells each in a
+    namespace of its own (:func:`spelling`). ``inputs``: the kernel's [(argument, its symbols)]."""
     names = [a.name for a in k.args] + [o.name for o in k.outputs]
     components = {str(c): a for a, syms in inputs for c in syms if str(c) != a}
     for n in names:
         if n in components:
-            raise CTargetError(f"kernel {k.name}: argument or output {n!r} would collide "
-                               f"with the C local of a component of argument "
-                               f"{components[n]!r}; rename it in the declaration")
-        bad = n in _C_KEYWORDS or keyword.iskeyword(n) or n in temps or \
-            re.fullmatch(r"x\d+|status|singular|finite|odd|count|j|args|sizes|trig_\d+|"
-                         r"rs_\w+|\w+_", n)
-        if bad:
-            raise CTargetError(f"kernel {k.name}: argument or output {n!r} would collide "
-                               f"with a C keyword or a local of the generated function; "
-                               f"rename it in the declaration")
+            raise CTargetError(f"kernel {k.name}: argument or output {n!r} is the name of "
+                               f"a component of argument {components[n]!r} in the "
+                               f"kernel's program; rename it in the declaration")
+        if n in temps and n in {a.name for a in k.args}:
+            raise CTargetError(f"kernel {k.name}: argument {n!r} is the name of a "
+                               f"temporary of the kernel's program; rename it in the "
+                               f"declaration")
     if len(set(names)) != len(names):
         raise CTargetError(f"kernel {k.name}: two arguments or outputs share a name")
 
@@ -249,8 +259,6 @@ def _function(kc, ctype: str, rescale: list) -> dict:
     power-of-two rescaling plans (:func:`.homogeneous.scaling_plans`), with the C
     expressions of their exponents (:func:`_plan_code`)."""
     k = kc.kernel
-    printer = DoublePrinter() if ctype == "double" else FloatOnlyPrinter()
-    variants = _program(kc, printer, ctype)
     used: set[str] = set()
     temps: set[str] = set()
     for v in kc.variants:
@@ -259,24 +267,36 @@ def _function(kc, ctype: str, rescale: list) -> dict:
                   *([v.cond] if v.cond is not None else [])]:
             used |= {str(s) for s in sp.sympify(e).free_symbols}
     _check_names(k, temps, kc.inputs)
+    names = spelling(k, kc.inputs)
+    printer = DoublePrinter() if ctype == "double" else FloatOnlyPrinter()
+    printer.names = names
+    variants = _program(kc, printer, ctype)
     suffix = "_f32" if ctype == "float" else ""
-    slots = [f"{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
-    for v in variants:  # the package's finiteness check names the outputs out_<name>
-        for o in k.outputs:
-            v["finite"] = v["finite"].replace(f"out_{o.name}[", f"{o.name}[")
+    slots = [f"out_{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
+    # the components read into locals (the used ones): (local, source); the long double
+    # rescue's from its parameters w_<argument>, a scalar argument into a local in_<name>
+    loads, wide_loads = [], []
+    for a, syms in kc.inputs:
+        for j, c in enumerate(syms):
+            if str(c) in used and str(c) != a:
+                loads.append((names[str(c)], f"in_{a}[{j}]"))
+                wide_loads.append((names[str(c)], f"w_{a}[{j}]"))
+            elif str(c) in used:
+                wide_loads.append((names[a], f"w_{a}"))
     return {"name": f"{PREFIX}{k.name}{suffix}", "ctype": ctype, "variants": variants,
-            "used": used, "inputs": kc.inputs,
-            "args": [{"name": a.name, "size": a.size, "shape": list(a.shape), "doc": a.doc,
-                      "kind": a.kind, "layout": _layout(a.shape)} for a in k.args],
-            "outs": [{"name": o.name, "size": o.size, "shape": list(o.shape), "doc": o.doc,
-                      "layout": _layout(o.shape)} for o in k.outputs],
-            "scan": [f"{a.name}[{j}]" if a.shape else a.name
-                     for a in k.args for j in range(a.size)],
+            "loads": loads, "wide_loads": wide_loads,
+            "args": [{"name": a.name, "c": names[a.name], "w": f"w_{a.name}",
+                      "s": f"sc_{a.name}", "size": a.size, "shape": list(a.shape),
+                      "doc": a.doc, "kind": a.kind, "layout": _layout(a.shape)}
+                     for a in k.args],
+            "outs": [{"name": o.name, "c": names[o.name], "size": o.size,
+                      "shape": list(o.shape), "doc": o.doc, "layout": _layout(o.shape)}
+                     for o in k.outputs],
             "groups": _scan_groups(k, ctype),
             "slots": slots, "out_check": balanced([f"({s} - {s})" for s in slots]),
             "out_sum": balanced(slots),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
-            "wide": _wide(kc, k) if ctype == "double" else None,
+            "wide": _wide(kc, names) if ctype == "double" else None,
             "rescale": [_plan_code(p, slots) for p in rescale],
             "rescaled": {n for p in rescale for n in p["scale"]}}
 
@@ -284,9 +304,8 @@ def _function(kc, ctype: str, rescale: list) -> dict:
 def _plan_code(plan: dict, slots: list[str]) -> dict:
     """``plan`` (:func:`.homogeneous.scaling_plans`) with the C integer expressions of each
     scaled argument's exponent (``scaled``: [(name, expr)]) and of each output slot's
-    exponent to undo (``back``: [(slot, expr)], the nonzero ones), in the ``rs_k<i>_`` (the
-    trailing ``_`` keeps them apart from the scaled copies ``rs_<argument>``: no argument
-    name ends in ``_``, :func:`_check_names`, so an argument ``k1`` cannot meet them)."""
+    exponent to undo (``back``: [(slot, expr)], the nonzero ones), in the ``rs_k<i>_`` (no
+    argument is spelled so in the C: :func:`spelling`)."""
     def expr(coefs):
         terms = [f"{c} * rs_k{i}_" if c != 1 else f"rs_k{i}_"
                  for i, c in enumerate(coefs) if c]
@@ -296,13 +315,14 @@ def _plan_code(plan: dict, slots: list[str]) -> dict:
             "back": [(s, expr(c)) for s, c in zip(slots, plan["out"], strict=True) if any(c)]}
 
 
-def _wide(kc, k: Kernel) -> list[dict]:
-    """The variants of ``kc`` printed in long double (the rescue of extreme inputs)."""
-    variants = _program(kc, WidePrinter(), "long double")
+def _wide(kc, names: dict[str, str]) -> list[dict]:
+    """The variants of ``kc`` printed in long double (the rescue of extreme inputs), its
+    symbols spelled by ``names`` (:func:`spelling`)."""
+    printer = WidePrinter()
+    printer.names = names
+    variants = _program(kc, printer, "long double")
     for v in variants:
         v["zero"] = "0.0L"
-        for o in k.outputs:
-            v["finite"] = v["finite"].replace(f"out_{o.name}[", f"{o.name}[")
     return variants
 
 

@@ -102,7 +102,8 @@ def _value(name: str, shape: tuple, doc: str, fold: tuple | None) -> dict:
     """What the template needs of one argument or output."""
     shape = tuple(int(d) for d in shape)
     kind = "scalar" if not shape else "vector" if len(shape) == 1 else "matrix"
-    entry = {"name": name, "shape": list(shape), "size": math.prod(shape), "doc": doc,
+    entry = {"name": name, "p": f"in_{name}", "b": f"buf_{name}", "t": f"cp_{name}",
+             "shape": list(shape), "size": math.prod(shape), "doc": doc,
              "kind": kind, "array": _nested(shape, "rs_S"),
              "shape_text": " x ".join(map(str, shape)) or "scalar"}
     if shape:
@@ -118,12 +119,21 @@ def _value(name: str, shape: tuple, doc: str, fold: tuple | None) -> dict:
 
 
 def _check_names(k) -> None:
-    names = [a.name for a in k.args] + [o.name for o in k.outputs]
-    for n in [*names, k.name]:
-        if n in _CPP_KEYWORDS or keyword.iskeyword(n) or n.startswith("rs_") or "__" in n \
-                or n.endswith("_"):   # the layer's locals: rs_<name>, rs_<name>_
+    """Refuse a name the layer cannot spell: an output (a member of the result struct) or the
+    kernel named as a C++ keyword or ``status``, a name reserved in C++ (``__`` in it, a
+    leading ``_``), a kernel named as what the layer defines. An argument may take any
+    other name: the layer spells it and its locals ``in_<name>``, ``buf_<name>``,
+    ``cp_<name>`` (:func:`_value`), which none of its own identifiers (``rs_...``,
+    ``detail``, Eigen's, the standard library's) starts with."""
+    for n in [*(a.name for a in k.args), *(o.name for o in k.outputs), k.name]:
+        if "__" in n or n.startswith("_"):
+            raise CppTargetError(f"kernel {k.name}: the name {n!r} is reserved in C++ "
+                                 f"(a leading _ or a __); rename it in the declaration")
+    for n in [*(o.name for o in k.outputs), k.name]:
+        if n in _CPP_KEYWORDS or keyword.iskeyword(n) or n == "status":
             raise CppTargetError(f"kernel {k.name}: the name {n!r} is a C++ keyword or "
-                                 f"reserved in the C++ layer; rename it in the declaration")
+                                 f"the result's status member; rename it in the "
+                                 f"declaration")
     if k.name in _RESERVED or k.name.endswith("_result"):
         raise CppTargetError(f"kernel {k.name}: its name is one the C++ layer defines "
                              f"({', '.join(sorted(_RESERVED))}, *_result); rename it")
