@@ -254,16 +254,16 @@ template <class rs_S> struct body_energy_result {
 
 template <class rs_S>
 inline body_energy_result<rs_S> body_energy(
-    rs_S m,
-    const std::array<rs_S, 3> &v,
-    const std::array<std::array<rs_S, 3>, 3> &inertia,
-    const std::array<rs_S, 3> &omega) {
+    rs_S in_m,
+    const std::array<rs_S, 3> &in_v,
+    const std::array<std::array<rs_S, 3>, 3> &in_inertia,
+    const std::array<rs_S, 3> &in_omega) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::body_energy: the scalar type must be float or double");
-    rs_S rs_inertia[9];
-    ::rigidsym::detail::put(inertia, rs_inertia);
+    rs_S buf_inertia[9];
+    ::rigidsym::detail::put(in_inertia, buf_inertia);
     body_energy_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy(m, v.data(), rs_inertia, omega.data(), &rs_result.T));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy(in_m, in_v.data(), buf_inertia, in_omega.data(), &rs_result.T));
     return rs_result;
 }
 
@@ -287,18 +287,18 @@ template <class rs_S> struct body_energy_with_jacobians_result {
 
 template <class rs_S>
 inline body_energy_with_jacobians_result<rs_S> body_energy_with_jacobians(
-    rs_S m,
-    const std::array<rs_S, 3> &v,
-    const std::array<std::array<rs_S, 3>, 3> &inertia,
-    const std::array<rs_S, 3> &omega) {
+    rs_S in_m,
+    const std::array<rs_S, 3> &in_v,
+    const std::array<std::array<rs_S, 3>, 3> &in_inertia,
+    const std::array<rs_S, 3> &in_omega) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::body_energy_with_jacobians: the scalar type must be float or double");
-    rs_S rs_inertia[9];
-    ::rigidsym::detail::put(inertia, rs_inertia);
-    rs_S rs_T_D_inertia[9];
+    rs_S buf_inertia[9];
+    ::rigidsym::detail::put(in_inertia, buf_inertia);
+    rs_S buf_T_D_inertia[9];
     body_energy_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy_with_jacobians(m, v.data(), rs_inertia, omega.data(), &rs_result.T, &rs_result.T_D_m, rs_result.T_D_v.data(), rs_T_D_inertia, rs_result.T_D_omega.data()));
-    ::rigidsym::detail::take(rs_result.T_D_inertia, static_cast<const rs_S *>(rs_T_D_inertia));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy_with_jacobians(in_m, in_v.data(), buf_inertia, in_omega.data(), &rs_result.T, &rs_result.T_D_m, rs_result.T_D_v.data(), buf_T_D_inertia, rs_result.T_D_omega.data()));
+    ::rigidsym::detail::take(rs_result.T_D_inertia, static_cast<const rs_S *>(buf_T_D_inertia));
     return rs_result;
 }
 
@@ -316,13 +316,13 @@ template <class rs_S> struct natural_invariants_from_rotation_result {
 
 template <class rs_S>
 inline natural_invariants_from_rotation_result<rs_S> natural_invariants_from_rotation(
-    const std::array<std::array<rs_S, 3>, 3> &Q) {
+    const std::array<std::array<rs_S, 3>, 3> &in_Q) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::natural_invariants_from_rotation: the scalar type must be float or double");
-    rs_S rs_Q[9];
-    ::rigidsym::detail::put(Q, rs_Q);
+    rs_S buf_Q[9];
+    ::rigidsym::detail::put(in_Q, buf_Q);
     natural_invariants_from_rotation_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(rs_Q, rs_result.e.data(), &rs_result.phi));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(buf_Q, rs_result.e.data(), &rs_result.phi));
     return rs_result;
 }
 
@@ -343,17 +343,17 @@ template <class rs_S> struct newton_euler_wrench_result {
 
 template <class rs_S>
 inline newton_euler_wrench_result<rs_S> newton_euler_wrench(
-    const std::array<std::array<rs_S, 3>, 3> &I_C,
-    ::rigidsym::detail::same_t<rs_S> m,
-    const std::array<rs_S, 3> &omega,
-    const std::array<rs_S, 3> &omega_dot,
-    const std::array<rs_S, 3> &c_ddot) {
+    const std::array<std::array<rs_S, 3>, 3> &in_I_C,
+    ::rigidsym::detail::same_t<rs_S> in_m,
+    const std::array<rs_S, 3> &in_omega,
+    const std::array<rs_S, 3> &in_omega_dot,
+    const std::array<rs_S, 3> &in_c_ddot) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::newton_euler_wrench: the scalar type must be float or double");
-    rs_S rs_I_C[9];
-    ::rigidsym::detail::put(I_C, rs_I_C);
+    rs_S buf_I_C[9];
+    ::rigidsym::detail::put(in_I_C, buf_I_C);
     newton_euler_wrench_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench(rs_I_C, m, omega.data(), omega_dot.data(), c_ddot.data(), rs_result.w.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench(buf_I_C, in_m, in_omega.data(), in_omega_dot.data(), in_c_ddot.data(), rs_result.w.data()));
     return rs_result;
 }
 
@@ -379,25 +379,25 @@ template <class rs_S> struct newton_euler_wrench_with_jacobians_result {
 
 template <class rs_S>
 inline newton_euler_wrench_with_jacobians_result<rs_S> newton_euler_wrench_with_jacobians(
-    const std::array<std::array<rs_S, 3>, 3> &I_C,
-    ::rigidsym::detail::same_t<rs_S> m,
-    const std::array<rs_S, 3> &omega,
-    const std::array<rs_S, 3> &omega_dot,
-    const std::array<rs_S, 3> &c_ddot) {
+    const std::array<std::array<rs_S, 3>, 3> &in_I_C,
+    ::rigidsym::detail::same_t<rs_S> in_m,
+    const std::array<rs_S, 3> &in_omega,
+    const std::array<rs_S, 3> &in_omega_dot,
+    const std::array<rs_S, 3> &in_c_ddot) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::newton_euler_wrench_with_jacobians: the scalar type must be float or double");
-    rs_S rs_I_C[9];
-    ::rigidsym::detail::put(I_C, rs_I_C);
-    rs_S rs_w_D_I_C[54];
-    rs_S rs_w_D_omega[18];
-    rs_S rs_w_D_omega_dot[18];
-    rs_S rs_w_D_c_ddot[18];
+    rs_S buf_I_C[9];
+    ::rigidsym::detail::put(in_I_C, buf_I_C);
+    rs_S buf_w_D_I_C[54];
+    rs_S buf_w_D_omega[18];
+    rs_S buf_w_D_omega_dot[18];
+    rs_S buf_w_D_c_ddot[18];
     newton_euler_wrench_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench_with_jacobians(rs_I_C, m, omega.data(), omega_dot.data(), c_ddot.data(), rs_result.w.data(), rs_w_D_I_C, rs_result.w_D_m.data(), rs_w_D_omega, rs_w_D_omega_dot, rs_w_D_c_ddot));
-    ::rigidsym::detail::take(rs_result.w_D_I_C, static_cast<const rs_S *>(rs_w_D_I_C));
-    ::rigidsym::detail::take(rs_result.w_D_omega, static_cast<const rs_S *>(rs_w_D_omega));
-    ::rigidsym::detail::take(rs_result.w_D_omega_dot, static_cast<const rs_S *>(rs_w_D_omega_dot));
-    ::rigidsym::detail::take(rs_result.w_D_c_ddot, static_cast<const rs_S *>(rs_w_D_c_ddot));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench_with_jacobians(buf_I_C, in_m, in_omega.data(), in_omega_dot.data(), in_c_ddot.data(), rs_result.w.data(), buf_w_D_I_C, rs_result.w_D_m.data(), buf_w_D_omega, buf_w_D_omega_dot, buf_w_D_c_ddot));
+    ::rigidsym::detail::take(rs_result.w_D_I_C, static_cast<const rs_S *>(buf_w_D_I_C));
+    ::rigidsym::detail::take(rs_result.w_D_omega, static_cast<const rs_S *>(buf_w_D_omega));
+    ::rigidsym::detail::take(rs_result.w_D_omega_dot, static_cast<const rs_S *>(buf_w_D_omega_dot));
+    ::rigidsym::detail::take(rs_result.w_D_c_ddot, static_cast<const rs_S *>(buf_w_D_c_ddot));
     return rs_result;
 }
 
@@ -417,14 +417,14 @@ template <class rs_S> struct planar_arm_tip_result {
 
 template <class rs_S>
 inline planar_arm_tip_result<rs_S> planar_arm_tip(
-    rs_S q1,
-    ::rigidsym::detail::same_t<rs_S> q2,
-    ::rigidsym::detail::same_t<rs_S> l1,
-    ::rigidsym::detail::same_t<rs_S> l2) {
+    rs_S in_q1,
+    ::rigidsym::detail::same_t<rs_S> in_q2,
+    ::rigidsym::detail::same_t<rs_S> in_l1,
+    ::rigidsym::detail::same_t<rs_S> in_l2) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::planar_arm_tip: the scalar type must be float or double");
     planar_arm_tip_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip(q1, q2, l1, l2, rs_result.p.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip(in_q1, in_q2, in_l1, in_l2, rs_result.p.data()));
     return rs_result;
 }
 
@@ -448,14 +448,14 @@ template <class rs_S> struct planar_arm_tip_with_jacobians_result {
 
 template <class rs_S>
 inline planar_arm_tip_with_jacobians_result<rs_S> planar_arm_tip_with_jacobians(
-    rs_S q1,
-    ::rigidsym::detail::same_t<rs_S> q2,
-    ::rigidsym::detail::same_t<rs_S> l1,
-    ::rigidsym::detail::same_t<rs_S> l2) {
+    rs_S in_q1,
+    ::rigidsym::detail::same_t<rs_S> in_q2,
+    ::rigidsym::detail::same_t<rs_S> in_l1,
+    ::rigidsym::detail::same_t<rs_S> in_l2) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::planar_arm_tip_with_jacobians: the scalar type must be float or double");
     planar_arm_tip_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip_with_jacobians(q1, q2, l1, l2, rs_result.p.data(), rs_result.p_D_q1.data(), rs_result.p_D_q2.data(), rs_result.p_D_l1.data(), rs_result.p_D_l2.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip_with_jacobians(in_q1, in_q2, in_l1, in_l2, rs_result.p.data(), rs_result.p_D_q1.data(), rs_result.p_D_q2.data(), rs_result.p_D_l1.data(), rs_result.p_D_l2.data()));
     return rs_result;
 }
 
@@ -472,13 +472,13 @@ template <class rs_S> struct quaternion_rotation_result {
 
 template <class rs_S>
 inline quaternion_rotation_result<rs_S> quaternion_rotation(
-    const std::array<rs_S, 4> &q) {
+    const std::array<rs_S, 4> &in_q) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::quaternion_rotation: the scalar type must be float or double");
-    rs_S rs_Q[9];
+    rs_S buf_Q[9];
     quaternion_rotation_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation(q.data(), rs_Q));
-    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(rs_Q));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation(in_q.data(), buf_Q));
+    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(buf_Q));
     return rs_result;
 }
 
@@ -496,15 +496,15 @@ template <class rs_S> struct quaternion_rotation_with_jacobians_result {
 
 template <class rs_S>
 inline quaternion_rotation_with_jacobians_result<rs_S> quaternion_rotation_with_jacobians(
-    const std::array<rs_S, 4> &q) {
+    const std::array<rs_S, 4> &in_q) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::quaternion_rotation_with_jacobians: the scalar type must be float or double");
-    rs_S rs_Q[9];
-    rs_S rs_Q_D_q[36];
+    rs_S buf_Q[9];
+    rs_S buf_Q_D_q[36];
     quaternion_rotation_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation_with_jacobians(q.data(), rs_Q, rs_Q_D_q));
-    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(rs_Q));
-    ::rigidsym::detail::take(rs_result.Q_D_q, static_cast<const rs_S *>(rs_Q_D_q));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation_with_jacobians(in_q.data(), buf_Q, buf_Q_D_q));
+    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(buf_Q));
+    ::rigidsym::detail::take(rs_result.Q_D_q, static_cast<const rs_S *>(buf_Q_D_q));
     return rs_result;
 }
 
@@ -522,14 +522,14 @@ template <class rs_S> struct rotation_from_natural_invariants_result {
 
 template <class rs_S>
 inline rotation_from_natural_invariants_result<rs_S> rotation_from_natural_invariants(
-    const std::array<rs_S, 3> &e,
-    ::rigidsym::detail::same_t<rs_S> phi) {
+    const std::array<rs_S, 3> &in_e,
+    ::rigidsym::detail::same_t<rs_S> in_phi) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::rotation_from_natural_invariants: the scalar type must be float or double");
-    rs_S rs_Q[9];
+    rs_S buf_Q[9];
     rotation_from_natural_invariants_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(e.data(), phi, rs_Q));
-    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(rs_Q));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(in_e.data(), in_phi, buf_Q));
+    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(buf_Q));
     return rs_result;
 }
 
@@ -550,18 +550,18 @@ template <class rs_S> struct rotation_from_natural_invariants_with_jacobians_res
 
 template <class rs_S>
 inline rotation_from_natural_invariants_with_jacobians_result<rs_S> rotation_from_natural_invariants_with_jacobians(
-    const std::array<rs_S, 3> &e,
-    ::rigidsym::detail::same_t<rs_S> phi) {
+    const std::array<rs_S, 3> &in_e,
+    ::rigidsym::detail::same_t<rs_S> in_phi) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::rotation_from_natural_invariants_with_jacobians: the scalar type must be float or double");
-    rs_S rs_Q[9];
-    rs_S rs_Q_D_e[27];
-    rs_S rs_Q_D_phi[9];
+    rs_S buf_Q[9];
+    rs_S buf_Q_D_e[27];
+    rs_S buf_Q_D_phi[9];
     rotation_from_natural_invariants_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(e.data(), phi, rs_Q, rs_Q_D_e, rs_Q_D_phi));
-    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(rs_Q));
-    ::rigidsym::detail::take(rs_result.Q_D_e, static_cast<const rs_S *>(rs_Q_D_e));
-    ::rigidsym::detail::take(rs_result.Q_D_phi, static_cast<const rs_S *>(rs_Q_D_phi));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(in_e.data(), in_phi, buf_Q, buf_Q_D_e, buf_Q_D_phi));
+    ::rigidsym::detail::take(rs_result.Q, static_cast<const rs_S *>(buf_Q));
+    ::rigidsym::detail::take(rs_result.Q_D_e, static_cast<const rs_S *>(buf_Q_D_e));
+    ::rigidsym::detail::take(rs_result.Q_D_phi, static_cast<const rs_S *>(buf_Q_D_phi));
     return rs_result;
 }
 
@@ -580,13 +580,13 @@ template <class rs_S> struct twist_transfer_result {
 
 template <class rs_S>
 inline twist_transfer_result<rs_S> twist_transfer(
-    const std::array<rs_S, 6> &t_A,
-    const std::array<rs_S, 3> &a,
-    const std::array<rs_S, 3> &p) {
+    const std::array<rs_S, 6> &in_t_A,
+    const std::array<rs_S, 3> &in_a,
+    const std::array<rs_S, 3> &in_p) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::twist_transfer: the scalar type must be float or double");
     twist_transfer_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(t_A.data(), a.data(), p.data(), rs_result.t_P.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(in_t_A.data(), in_a.data(), in_p.data(), rs_result.t_P.data()));
     return rs_result;
 }
 
@@ -608,19 +608,19 @@ template <class rs_S> struct twist_transfer_with_jacobians_result {
 
 template <class rs_S>
 inline twist_transfer_with_jacobians_result<rs_S> twist_transfer_with_jacobians(
-    const std::array<rs_S, 6> &t_A,
-    const std::array<rs_S, 3> &a,
-    const std::array<rs_S, 3> &p) {
+    const std::array<rs_S, 6> &in_t_A,
+    const std::array<rs_S, 3> &in_a,
+    const std::array<rs_S, 3> &in_p) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::twist_transfer_with_jacobians: the scalar type must be float or double");
-    rs_S rs_t_P_D_t_A[36];
-    rs_S rs_t_P_D_a[18];
-    rs_S rs_t_P_D_p[18];
+    rs_S buf_t_P_D_t_A[36];
+    rs_S buf_t_P_D_a[18];
+    rs_S buf_t_P_D_p[18];
     twist_transfer_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(t_A.data(), a.data(), p.data(), rs_result.t_P.data(), rs_t_P_D_t_A, rs_t_P_D_a, rs_t_P_D_p));
-    ::rigidsym::detail::take(rs_result.t_P_D_t_A, static_cast<const rs_S *>(rs_t_P_D_t_A));
-    ::rigidsym::detail::take(rs_result.t_P_D_a, static_cast<const rs_S *>(rs_t_P_D_a));
-    ::rigidsym::detail::take(rs_result.t_P_D_p, static_cast<const rs_S *>(rs_t_P_D_p));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(in_t_A.data(), in_a.data(), in_p.data(), rs_result.t_P.data(), buf_t_P_D_t_A, buf_t_P_D_a, buf_t_P_D_p));
+    ::rigidsym::detail::take(rs_result.t_P_D_t_A, static_cast<const rs_S *>(buf_t_P_D_t_A));
+    ::rigidsym::detail::take(rs_result.t_P_D_a, static_cast<const rs_S *>(buf_t_P_D_a));
+    ::rigidsym::detail::take(rs_result.t_P_D_p, static_cast<const rs_S *>(buf_t_P_D_p));
     return rs_result;
 }
 
@@ -639,13 +639,13 @@ template <class rs_S> struct wrench_transfer_result {
 
 template <class rs_S>
 inline wrench_transfer_result<rs_S> wrench_transfer(
-    const std::array<rs_S, 6> &w_A,
-    const std::array<rs_S, 3> &a,
-    const std::array<rs_S, 3> &p) {
+    const std::array<rs_S, 6> &in_w_A,
+    const std::array<rs_S, 3> &in_a,
+    const std::array<rs_S, 3> &in_p) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::wrench_transfer: the scalar type must be float or double");
     wrench_transfer_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer(w_A.data(), a.data(), p.data(), rs_result.w_P.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer(in_w_A.data(), in_a.data(), in_p.data(), rs_result.w_P.data()));
     return rs_result;
 }
 
@@ -667,19 +667,19 @@ template <class rs_S> struct wrench_transfer_with_jacobians_result {
 
 template <class rs_S>
 inline wrench_transfer_with_jacobians_result<rs_S> wrench_transfer_with_jacobians(
-    const std::array<rs_S, 6> &w_A,
-    const std::array<rs_S, 3> &a,
-    const std::array<rs_S, 3> &p) {
+    const std::array<rs_S, 6> &in_w_A,
+    const std::array<rs_S, 3> &in_a,
+    const std::array<rs_S, 3> &in_p) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::arrays::wrench_transfer_with_jacobians: the scalar type must be float or double");
-    rs_S rs_w_P_D_w_A[36];
-    rs_S rs_w_P_D_a[18];
-    rs_S rs_w_P_D_p[18];
+    rs_S buf_w_P_D_w_A[36];
+    rs_S buf_w_P_D_a[18];
+    rs_S buf_w_P_D_p[18];
     wrench_transfer_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer_with_jacobians(w_A.data(), a.data(), p.data(), rs_result.w_P.data(), rs_w_P_D_w_A, rs_w_P_D_a, rs_w_P_D_p));
-    ::rigidsym::detail::take(rs_result.w_P_D_w_A, static_cast<const rs_S *>(rs_w_P_D_w_A));
-    ::rigidsym::detail::take(rs_result.w_P_D_a, static_cast<const rs_S *>(rs_w_P_D_a));
-    ::rigidsym::detail::take(rs_result.w_P_D_p, static_cast<const rs_S *>(rs_w_P_D_p));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer_with_jacobians(in_w_A.data(), in_a.data(), in_p.data(), rs_result.w_P.data(), buf_w_P_D_w_A, buf_w_P_D_a, buf_w_P_D_p));
+    ::rigidsym::detail::take(rs_result.w_P_D_w_A, static_cast<const rs_S *>(buf_w_P_D_w_A));
+    ::rigidsym::detail::take(rs_result.w_P_D_a, static_cast<const rs_S *>(buf_w_P_D_a));
+    ::rigidsym::detail::take(rs_result.w_P_D_p, static_cast<const rs_S *>(buf_w_P_D_p));
     return rs_result;
 }
 
@@ -700,32 +700,32 @@ template <class rs_S> struct body_energy_result {
 
 template <class rs_S, class rs_D1, class rs_D2, class rs_D3>
 inline body_energy_result<rs_S> body_energy(
-    rs_S m,
-    const Eigen::MatrixBase<rs_D1> &v,
-    const Eigen::MatrixBase<rs_D2> &inertia,
-    const Eigen::MatrixBase<rs_D3> &omega) {
+    rs_S in_m,
+    const Eigen::MatrixBase<rs_D1> &in_v,
+    const Eigen::MatrixBase<rs_D2> &in_inertia,
+    const Eigen::MatrixBase<rs_D3> &in_omega) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::body_energy: the scalar type must be float or double");
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy: v must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::body_energy: v must be an Eigen vector of size 3");
-    rs_S rs_v_[3];
-    const rs_S *const rs_v = ::rigidsym::detail::eigen_in(v, rs_v_);
+    rs_S cp_v[3];
+    const rs_S *const buf_v = ::rigidsym::detail::eigen_in(in_v, cp_v);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy: inertia must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D2, 3, 3>::value,
                   "rigidsym::eigen::body_energy: inertia must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S rs_inertia_[9];
-    const rs_S *const rs_inertia = ::rigidsym::detail::eigen_in(inertia, rs_inertia_);
+    rs_S cp_inertia[9];
+    const rs_S *const buf_inertia = ::rigidsym::detail::eigen_in(in_inertia, cp_inertia);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::body_energy: omega must be an Eigen vector of size 3");
-    rs_S rs_omega_[3];
-    const rs_S *const rs_omega = ::rigidsym::detail::eigen_in(omega, rs_omega_);
+    rs_S cp_omega[3];
+    const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     body_energy_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy(m, rs_v, rs_inertia, rs_omega, &rs_result.T));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy(in_m, buf_v, buf_inertia, buf_omega, &rs_result.T));
     return rs_result;
 }
 
@@ -742,32 +742,32 @@ template <class rs_S> struct body_energy_with_jacobians_result {
 
 template <class rs_S, class rs_D1, class rs_D2, class rs_D3>
 inline body_energy_with_jacobians_result<rs_S> body_energy_with_jacobians(
-    rs_S m,
-    const Eigen::MatrixBase<rs_D1> &v,
-    const Eigen::MatrixBase<rs_D2> &inertia,
-    const Eigen::MatrixBase<rs_D3> &omega) {
+    rs_S in_m,
+    const Eigen::MatrixBase<rs_D1> &in_v,
+    const Eigen::MatrixBase<rs_D2> &in_inertia,
+    const Eigen::MatrixBase<rs_D3> &in_omega) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: the scalar type must be float or double");
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: v must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: v must be an Eigen vector of size 3");
-    rs_S rs_v_[3];
-    const rs_S *const rs_v = ::rigidsym::detail::eigen_in(v, rs_v_);
+    rs_S cp_v[3];
+    const rs_S *const buf_v = ::rigidsym::detail::eigen_in(in_v, cp_v);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: inertia must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D2, 3, 3>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: inertia must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S rs_inertia_[9];
-    const rs_S *const rs_inertia = ::rigidsym::detail::eigen_in(inertia, rs_inertia_);
+    rs_S cp_inertia[9];
+    const rs_S *const buf_inertia = ::rigidsym::detail::eigen_in(in_inertia, cp_inertia);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: omega must be an Eigen vector of size 3");
-    rs_S rs_omega_[3];
-    const rs_S *const rs_omega = ::rigidsym::detail::eigen_in(omega, rs_omega_);
+    rs_S cp_omega[3];
+    const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     body_energy_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy_with_jacobians(m, rs_v, rs_inertia, rs_omega, &rs_result.T, &rs_result.T_D_m, rs_result.T_D_v.data(), rs_result.T_D_inertia.data(), rs_result.T_D_omega.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy_with_jacobians(in_m, buf_v, buf_inertia, buf_omega, &rs_result.T, &rs_result.T_D_m, rs_result.T_D_v.data(), rs_result.T_D_inertia.data(), rs_result.T_D_omega.data()));
     return rs_result;
 }
 
@@ -781,7 +781,7 @@ template <class rs_S> struct natural_invariants_from_rotation_result {
 
 template <class rs_D0>
 inline natural_invariants_from_rotation_result<typename rs_D0::Scalar> natural_invariants_from_rotation(
-    const Eigen::MatrixBase<rs_D0> &Q) {
+    const Eigen::MatrixBase<rs_D0> &in_Q) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::natural_invariants_from_rotation: the scalar type must be float or double");
@@ -789,10 +789,10 @@ inline natural_invariants_from_rotation_result<typename rs_D0::Scalar> natural_i
                   "rigidsym::eigen::natural_invariants_from_rotation: Q must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D0, 3, 3>::value,
                   "rigidsym::eigen::natural_invariants_from_rotation: Q must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S rs_Q_[9];
-    const rs_S *const rs_Q = ::rigidsym::detail::eigen_in(Q, rs_Q_);
+    rs_S cp_Q[9];
+    const rs_S *const buf_Q = ::rigidsym::detail::eigen_in(in_Q, cp_Q);
     natural_invariants_from_rotation_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(rs_Q, rs_result.e.data(), &rs_result.phi));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(buf_Q, rs_result.e.data(), &rs_result.phi));
     return rs_result;
 }
 
@@ -805,11 +805,11 @@ template <class rs_S> struct newton_euler_wrench_result {
 
 template <class rs_D0, class rs_D2, class rs_D3, class rs_D4>
 inline newton_euler_wrench_result<typename rs_D0::Scalar> newton_euler_wrench(
-    const Eigen::MatrixBase<rs_D0> &I_C,
-    typename rs_D0::Scalar m,
-    const Eigen::MatrixBase<rs_D2> &omega,
-    const Eigen::MatrixBase<rs_D3> &omega_dot,
-    const Eigen::MatrixBase<rs_D4> &c_ddot) {
+    const Eigen::MatrixBase<rs_D0> &in_I_C,
+    typename rs_D0::Scalar in_m,
+    const Eigen::MatrixBase<rs_D2> &in_omega,
+    const Eigen::MatrixBase<rs_D3> &in_omega_dot,
+    const Eigen::MatrixBase<rs_D4> &in_c_ddot) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench: the scalar type must be float or double");
@@ -817,28 +817,28 @@ inline newton_euler_wrench_result<typename rs_D0::Scalar> newton_euler_wrench(
                   "rigidsym::eigen::newton_euler_wrench: I_C must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D0, 3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: I_C must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S rs_I_C_[9];
-    const rs_S *const rs_I_C = ::rigidsym::detail::eigen_in(I_C, rs_I_C_);
+    rs_S cp_I_C[9];
+    const rs_S *const buf_I_C = ::rigidsym::detail::eigen_in(in_I_C, cp_I_C);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega must be an Eigen vector of size 3");
-    rs_S rs_omega_[3];
-    const rs_S *const rs_omega = ::rigidsym::detail::eigen_in(omega, rs_omega_);
+    rs_S cp_omega[3];
+    const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega_dot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega_dot must be an Eigen vector of size 3");
-    rs_S rs_omega_dot_[3];
-    const rs_S *const rs_omega_dot = ::rigidsym::detail::eigen_in(omega_dot, rs_omega_dot_);
+    rs_S cp_omega_dot[3];
+    const rs_S *const buf_omega_dot = ::rigidsym::detail::eigen_in(in_omega_dot, cp_omega_dot);
     static_assert(std::is_same<typename rs_D4::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench: c_ddot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D4, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: c_ddot must be an Eigen vector of size 3");
-    rs_S rs_c_ddot_[3];
-    const rs_S *const rs_c_ddot = ::rigidsym::detail::eigen_in(c_ddot, rs_c_ddot_);
+    rs_S cp_c_ddot[3];
+    const rs_S *const buf_c_ddot = ::rigidsym::detail::eigen_in(in_c_ddot, cp_c_ddot);
     newton_euler_wrench_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench(rs_I_C, m, rs_omega, rs_omega_dot, rs_c_ddot, rs_result.w.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench(buf_I_C, in_m, buf_omega, buf_omega_dot, buf_c_ddot, rs_result.w.data()));
     return rs_result;
 }
 
@@ -856,11 +856,11 @@ template <class rs_S> struct newton_euler_wrench_with_jacobians_result {
 
 template <class rs_D0, class rs_D2, class rs_D3, class rs_D4>
 inline newton_euler_wrench_with_jacobians_result<typename rs_D0::Scalar> newton_euler_wrench_with_jacobians(
-    const Eigen::MatrixBase<rs_D0> &I_C,
-    typename rs_D0::Scalar m,
-    const Eigen::MatrixBase<rs_D2> &omega,
-    const Eigen::MatrixBase<rs_D3> &omega_dot,
-    const Eigen::MatrixBase<rs_D4> &c_ddot) {
+    const Eigen::MatrixBase<rs_D0> &in_I_C,
+    typename rs_D0::Scalar in_m,
+    const Eigen::MatrixBase<rs_D2> &in_omega,
+    const Eigen::MatrixBase<rs_D3> &in_omega_dot,
+    const Eigen::MatrixBase<rs_D4> &in_c_ddot) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: the scalar type must be float or double");
@@ -868,28 +868,28 @@ inline newton_euler_wrench_with_jacobians_result<typename rs_D0::Scalar> newton_
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: I_C must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D0, 3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: I_C must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S rs_I_C_[9];
-    const rs_S *const rs_I_C = ::rigidsym::detail::eigen_in(I_C, rs_I_C_);
+    rs_S cp_I_C[9];
+    const rs_S *const buf_I_C = ::rigidsym::detail::eigen_in(in_I_C, cp_I_C);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega must be an Eigen vector of size 3");
-    rs_S rs_omega_[3];
-    const rs_S *const rs_omega = ::rigidsym::detail::eigen_in(omega, rs_omega_);
+    rs_S cp_omega[3];
+    const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega_dot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega_dot must be an Eigen vector of size 3");
-    rs_S rs_omega_dot_[3];
-    const rs_S *const rs_omega_dot = ::rigidsym::detail::eigen_in(omega_dot, rs_omega_dot_);
+    rs_S cp_omega_dot[3];
+    const rs_S *const buf_omega_dot = ::rigidsym::detail::eigen_in(in_omega_dot, cp_omega_dot);
     static_assert(std::is_same<typename rs_D4::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: c_ddot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D4, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: c_ddot must be an Eigen vector of size 3");
-    rs_S rs_c_ddot_[3];
-    const rs_S *const rs_c_ddot = ::rigidsym::detail::eigen_in(c_ddot, rs_c_ddot_);
+    rs_S cp_c_ddot[3];
+    const rs_S *const buf_c_ddot = ::rigidsym::detail::eigen_in(in_c_ddot, cp_c_ddot);
     newton_euler_wrench_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench_with_jacobians(rs_I_C, m, rs_omega, rs_omega_dot, rs_c_ddot, rs_result.w.data(), rs_result.w_D_I_C.data(), rs_result.w_D_m.data(), rs_result.w_D_omega.data(), rs_result.w_D_omega_dot.data(), rs_result.w_D_c_ddot.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench_with_jacobians(buf_I_C, in_m, buf_omega, buf_omega_dot, buf_c_ddot, rs_result.w.data(), rs_result.w_D_I_C.data(), rs_result.w_D_m.data(), rs_result.w_D_omega.data(), rs_result.w_D_omega_dot.data(), rs_result.w_D_c_ddot.data()));
     return rs_result;
 }
 
@@ -902,14 +902,14 @@ template <class rs_S> struct planar_arm_tip_result {
 
 template <class rs_S>
 inline planar_arm_tip_result<rs_S> planar_arm_tip(
-    rs_S q1,
-    ::rigidsym::detail::same_t<rs_S> q2,
-    ::rigidsym::detail::same_t<rs_S> l1,
-    ::rigidsym::detail::same_t<rs_S> l2) {
+    rs_S in_q1,
+    ::rigidsym::detail::same_t<rs_S> in_q2,
+    ::rigidsym::detail::same_t<rs_S> in_l1,
+    ::rigidsym::detail::same_t<rs_S> in_l2) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::planar_arm_tip: the scalar type must be float or double");
     planar_arm_tip_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip(q1, q2, l1, l2, rs_result.p.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip(in_q1, in_q2, in_l1, in_l2, rs_result.p.data()));
     return rs_result;
 }
 
@@ -926,14 +926,14 @@ template <class rs_S> struct planar_arm_tip_with_jacobians_result {
 
 template <class rs_S>
 inline planar_arm_tip_with_jacobians_result<rs_S> planar_arm_tip_with_jacobians(
-    rs_S q1,
-    ::rigidsym::detail::same_t<rs_S> q2,
-    ::rigidsym::detail::same_t<rs_S> l1,
-    ::rigidsym::detail::same_t<rs_S> l2) {
+    rs_S in_q1,
+    ::rigidsym::detail::same_t<rs_S> in_q2,
+    ::rigidsym::detail::same_t<rs_S> in_l1,
+    ::rigidsym::detail::same_t<rs_S> in_l2) {
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::planar_arm_tip_with_jacobians: the scalar type must be float or double");
     planar_arm_tip_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip_with_jacobians(q1, q2, l1, l2, rs_result.p.data(), rs_result.p_D_q1.data(), rs_result.p_D_q2.data(), rs_result.p_D_l1.data(), rs_result.p_D_l2.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_planar_arm_tip_with_jacobians(in_q1, in_q2, in_l1, in_l2, rs_result.p.data(), rs_result.p_D_q1.data(), rs_result.p_D_q2.data(), rs_result.p_D_l1.data(), rs_result.p_D_l2.data()));
     return rs_result;
 }
 
@@ -946,7 +946,7 @@ template <class rs_S> struct quaternion_rotation_result {
 
 template <class rs_D0>
 inline quaternion_rotation_result<typename rs_D0::Scalar> quaternion_rotation(
-    const Eigen::MatrixBase<rs_D0> &q) {
+    const Eigen::MatrixBase<rs_D0> &in_q) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::quaternion_rotation: the scalar type must be float or double");
@@ -954,10 +954,10 @@ inline quaternion_rotation_result<typename rs_D0::Scalar> quaternion_rotation(
                   "rigidsym::eigen::quaternion_rotation: q must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 4>::value,
                   "rigidsym::eigen::quaternion_rotation: q must be an Eigen vector of size 4");
-    rs_S rs_q_[4];
-    const rs_S *const rs_q = ::rigidsym::detail::eigen_in(q, rs_q_);
+    rs_S cp_q[4];
+    const rs_S *const buf_q = ::rigidsym::detail::eigen_in(in_q, cp_q);
     quaternion_rotation_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation(rs_q, rs_result.Q.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation(buf_q, rs_result.Q.data()));
     return rs_result;
 }
 
@@ -971,7 +971,7 @@ template <class rs_S> struct quaternion_rotation_with_jacobians_result {
 
 template <class rs_D0>
 inline quaternion_rotation_with_jacobians_result<typename rs_D0::Scalar> quaternion_rotation_with_jacobians(
-    const Eigen::MatrixBase<rs_D0> &q) {
+    const Eigen::MatrixBase<rs_D0> &in_q) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::quaternion_rotation_with_jacobians: the scalar type must be float or double");
@@ -979,10 +979,10 @@ inline quaternion_rotation_with_jacobians_result<typename rs_D0::Scalar> quatern
                   "rigidsym::eigen::quaternion_rotation_with_jacobians: q must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 4>::value,
                   "rigidsym::eigen::quaternion_rotation_with_jacobians: q must be an Eigen vector of size 4");
-    rs_S rs_q_[4];
-    const rs_S *const rs_q = ::rigidsym::detail::eigen_in(q, rs_q_);
+    rs_S cp_q[4];
+    const rs_S *const buf_q = ::rigidsym::detail::eigen_in(in_q, cp_q);
     quaternion_rotation_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation_with_jacobians(rs_q, rs_result.Q.data(), rs_result.Q_D_q.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation_with_jacobians(buf_q, rs_result.Q.data(), rs_result.Q_D_q.data()));
     return rs_result;
 }
 
@@ -995,8 +995,8 @@ template <class rs_S> struct rotation_from_natural_invariants_result {
 
 template <class rs_D0>
 inline rotation_from_natural_invariants_result<typename rs_D0::Scalar> rotation_from_natural_invariants(
-    const Eigen::MatrixBase<rs_D0> &e,
-    typename rs_D0::Scalar phi) {
+    const Eigen::MatrixBase<rs_D0> &in_e,
+    typename rs_D0::Scalar in_phi) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants: the scalar type must be float or double");
@@ -1004,10 +1004,10 @@ inline rotation_from_natural_invariants_result<typename rs_D0::Scalar> rotation_
                   "rigidsym::eigen::rotation_from_natural_invariants: e must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 3>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants: e must be an Eigen vector of size 3");
-    rs_S rs_e_[3];
-    const rs_S *const rs_e = ::rigidsym::detail::eigen_in(e, rs_e_);
+    rs_S cp_e[3];
+    const rs_S *const buf_e = ::rigidsym::detail::eigen_in(in_e, cp_e);
     rotation_from_natural_invariants_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(rs_e, phi, rs_result.Q.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(buf_e, in_phi, rs_result.Q.data()));
     return rs_result;
 }
 
@@ -1022,8 +1022,8 @@ template <class rs_S> struct rotation_from_natural_invariants_with_jacobians_res
 
 template <class rs_D0>
 inline rotation_from_natural_invariants_with_jacobians_result<typename rs_D0::Scalar> rotation_from_natural_invariants_with_jacobians(
-    const Eigen::MatrixBase<rs_D0> &e,
-    typename rs_D0::Scalar phi) {
+    const Eigen::MatrixBase<rs_D0> &in_e,
+    typename rs_D0::Scalar in_phi) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants_with_jacobians: the scalar type must be float or double");
@@ -1031,10 +1031,10 @@ inline rotation_from_natural_invariants_with_jacobians_result<typename rs_D0::Sc
                   "rigidsym::eigen::rotation_from_natural_invariants_with_jacobians: e must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 3>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants_with_jacobians: e must be an Eigen vector of size 3");
-    rs_S rs_e_[3];
-    const rs_S *const rs_e = ::rigidsym::detail::eigen_in(e, rs_e_);
+    rs_S cp_e[3];
+    const rs_S *const buf_e = ::rigidsym::detail::eigen_in(in_e, cp_e);
     rotation_from_natural_invariants_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(rs_e, phi, rs_result.Q.data(), rs_result.Q_D_e.data(), rs_result.Q_D_phi.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(buf_e, in_phi, rs_result.Q.data(), rs_result.Q_D_e.data(), rs_result.Q_D_phi.data()));
     return rs_result;
 }
 
@@ -1047,9 +1047,9 @@ template <class rs_S> struct twist_transfer_result {
 
 template <class rs_D0, class rs_D1, class rs_D2>
 inline twist_transfer_result<typename rs_D0::Scalar> twist_transfer(
-    const Eigen::MatrixBase<rs_D0> &t_A,
-    const Eigen::MatrixBase<rs_D1> &a,
-    const Eigen::MatrixBase<rs_D2> &p) {
+    const Eigen::MatrixBase<rs_D0> &in_t_A,
+    const Eigen::MatrixBase<rs_D1> &in_a,
+    const Eigen::MatrixBase<rs_D2> &in_p) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::twist_transfer: the scalar type must be float or double");
@@ -1057,22 +1057,22 @@ inline twist_transfer_result<typename rs_D0::Scalar> twist_transfer(
                   "rigidsym::eigen::twist_transfer: t_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::twist_transfer: t_A must be an Eigen vector of size 6");
-    rs_S rs_t_A_[6];
-    const rs_S *const rs_t_A = ::rigidsym::detail::eigen_in(t_A, rs_t_A_);
+    rs_S cp_t_A[6];
+    const rs_S *const buf_t_A = ::rigidsym::detail::eigen_in(in_t_A, cp_t_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::twist_transfer: a must be an Eigen vector of size 3");
-    rs_S rs_a_[3];
-    const rs_S *const rs_a = ::rigidsym::detail::eigen_in(a, rs_a_);
+    rs_S cp_a[3];
+    const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::twist_transfer: p must be an Eigen vector of size 3");
-    rs_S rs_p_[3];
-    const rs_S *const rs_p = ::rigidsym::detail::eigen_in(p, rs_p_);
+    rs_S cp_p[3];
+    const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     twist_transfer_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(rs_t_A, rs_a, rs_p, rs_result.t_P.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(buf_t_A, buf_a, buf_p, rs_result.t_P.data()));
     return rs_result;
 }
 
@@ -1088,9 +1088,9 @@ template <class rs_S> struct twist_transfer_with_jacobians_result {
 
 template <class rs_D0, class rs_D1, class rs_D2>
 inline twist_transfer_with_jacobians_result<typename rs_D0::Scalar> twist_transfer_with_jacobians(
-    const Eigen::MatrixBase<rs_D0> &t_A,
-    const Eigen::MatrixBase<rs_D1> &a,
-    const Eigen::MatrixBase<rs_D2> &p) {
+    const Eigen::MatrixBase<rs_D0> &in_t_A,
+    const Eigen::MatrixBase<rs_D1> &in_a,
+    const Eigen::MatrixBase<rs_D2> &in_p) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: the scalar type must be float or double");
@@ -1098,22 +1098,22 @@ inline twist_transfer_with_jacobians_result<typename rs_D0::Scalar> twist_transf
                   "rigidsym::eigen::twist_transfer_with_jacobians: t_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: t_A must be an Eigen vector of size 6");
-    rs_S rs_t_A_[6];
-    const rs_S *const rs_t_A = ::rigidsym::detail::eigen_in(t_A, rs_t_A_);
+    rs_S cp_t_A[6];
+    const rs_S *const buf_t_A = ::rigidsym::detail::eigen_in(in_t_A, cp_t_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: a must be an Eigen vector of size 3");
-    rs_S rs_a_[3];
-    const rs_S *const rs_a = ::rigidsym::detail::eigen_in(a, rs_a_);
+    rs_S cp_a[3];
+    const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: p must be an Eigen vector of size 3");
-    rs_S rs_p_[3];
-    const rs_S *const rs_p = ::rigidsym::detail::eigen_in(p, rs_p_);
+    rs_S cp_p[3];
+    const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     twist_transfer_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(rs_t_A, rs_a, rs_p, rs_result.t_P.data(), rs_result.t_P_D_t_A.data(), rs_result.t_P_D_a.data(), rs_result.t_P_D_p.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(buf_t_A, buf_a, buf_p, rs_result.t_P.data(), rs_result.t_P_D_t_A.data(), rs_result.t_P_D_a.data(), rs_result.t_P_D_p.data()));
     return rs_result;
 }
 
@@ -1126,9 +1126,9 @@ template <class rs_S> struct wrench_transfer_result {
 
 template <class rs_D0, class rs_D1, class rs_D2>
 inline wrench_transfer_result<typename rs_D0::Scalar> wrench_transfer(
-    const Eigen::MatrixBase<rs_D0> &w_A,
-    const Eigen::MatrixBase<rs_D1> &a,
-    const Eigen::MatrixBase<rs_D2> &p) {
+    const Eigen::MatrixBase<rs_D0> &in_w_A,
+    const Eigen::MatrixBase<rs_D1> &in_a,
+    const Eigen::MatrixBase<rs_D2> &in_p) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::wrench_transfer: the scalar type must be float or double");
@@ -1136,22 +1136,22 @@ inline wrench_transfer_result<typename rs_D0::Scalar> wrench_transfer(
                   "rigidsym::eigen::wrench_transfer: w_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::wrench_transfer: w_A must be an Eigen vector of size 6");
-    rs_S rs_w_A_[6];
-    const rs_S *const rs_w_A = ::rigidsym::detail::eigen_in(w_A, rs_w_A_);
+    rs_S cp_w_A[6];
+    const rs_S *const buf_w_A = ::rigidsym::detail::eigen_in(in_w_A, cp_w_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::wrench_transfer: a must be an Eigen vector of size 3");
-    rs_S rs_a_[3];
-    const rs_S *const rs_a = ::rigidsym::detail::eigen_in(a, rs_a_);
+    rs_S cp_a[3];
+    const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::wrench_transfer: p must be an Eigen vector of size 3");
-    rs_S rs_p_[3];
-    const rs_S *const rs_p = ::rigidsym::detail::eigen_in(p, rs_p_);
+    rs_S cp_p[3];
+    const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     wrench_transfer_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer(rs_w_A, rs_a, rs_p, rs_result.w_P.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer(buf_w_A, buf_a, buf_p, rs_result.w_P.data()));
     return rs_result;
 }
 
@@ -1167,9 +1167,9 @@ template <class rs_S> struct wrench_transfer_with_jacobians_result {
 
 template <class rs_D0, class rs_D1, class rs_D2>
 inline wrench_transfer_with_jacobians_result<typename rs_D0::Scalar> wrench_transfer_with_jacobians(
-    const Eigen::MatrixBase<rs_D0> &w_A,
-    const Eigen::MatrixBase<rs_D1> &a,
-    const Eigen::MatrixBase<rs_D2> &p) {
+    const Eigen::MatrixBase<rs_D0> &in_w_A,
+    const Eigen::MatrixBase<rs_D1> &in_a,
+    const Eigen::MatrixBase<rs_D2> &in_p) {
     using rs_S = typename rs_D0::Scalar;
     static_assert(::rigidsym::detail::is_real<rs_S>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: the scalar type must be float or double");
@@ -1177,22 +1177,22 @@ inline wrench_transfer_with_jacobians_result<typename rs_D0::Scalar> wrench_tran
                   "rigidsym::eigen::wrench_transfer_with_jacobians: w_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: w_A must be an Eigen vector of size 6");
-    rs_S rs_w_A_[6];
-    const rs_S *const rs_w_A = ::rigidsym::detail::eigen_in(w_A, rs_w_A_);
+    rs_S cp_w_A[6];
+    const rs_S *const buf_w_A = ::rigidsym::detail::eigen_in(in_w_A, cp_w_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: a must be an Eigen vector of size 3");
-    rs_S rs_a_[3];
-    const rs_S *const rs_a = ::rigidsym::detail::eigen_in(a, rs_a_);
+    rs_S cp_a[3];
+    const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: p must be an Eigen vector of size 3");
-    rs_S rs_p_[3];
-    const rs_S *const rs_p = ::rigidsym::detail::eigen_in(p, rs_p_);
+    rs_S cp_p[3];
+    const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     wrench_transfer_with_jacobians_result<rs_S> rs_result;
-    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer_with_jacobians(rs_w_A, rs_a, rs_p, rs_result.w_P.data(), rs_result.w_P_D_w_A.data(), rs_result.w_P_D_a.data(), rs_result.w_P_D_p.data()));
+    rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer_with_jacobians(buf_w_A, buf_a, buf_p, rs_result.w_P.data(), rs_result.w_P_D_w_A.data(), rs_result.w_P_D_a.data(), rs_result.w_P_D_p.data()));
     return rs_result;
 }
 

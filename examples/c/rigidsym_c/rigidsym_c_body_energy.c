@@ -16,43 +16,43 @@
 /* rigidsym_c_body_energy in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_wide(
-    double m_in_,
-    const double v_in_[3],
-    const double inertia_in_[9],
-    const double omega_in_[3],
-    double *T)
+    double w_m,
+    const double w_v[3],
+    const double w_inertia[9],
+    const double w_omega[3],
+    double *out_T)
 {
-    const long double m = m_in_;
-    const long double v_0 = v_in_[0];
-    const long double v_1 = v_in_[1];
-    const long double v_2 = v_in_[2];
-    const long double inertia_00 = inertia_in_[0];
-    const long double inertia_01 = inertia_in_[1];
-    const long double inertia_02 = inertia_in_[2];
-    const long double inertia_10 = inertia_in_[3];
-    const long double inertia_11 = inertia_in_[4];
-    const long double inertia_12 = inertia_in_[5];
-    const long double inertia_20 = inertia_in_[6];
-    const long double inertia_21 = inertia_in_[7];
-    const long double inertia_22 = inertia_in_[8];
-    const long double omega_0 = omega_in_[0];
-    const long double omega_1 = omega_in_[1];
-    const long double omega_2 = omega_in_[2];
+    const long double in_m = w_m;
+    const long double c0_v = w_v[0];
+    const long double c1_v = w_v[1];
+    const long double c2_v = w_v[2];
+    const long double c0_inertia = w_inertia[0];
+    const long double c1_inertia = w_inertia[1];
+    const long double c2_inertia = w_inertia[2];
+    const long double c3_inertia = w_inertia[3];
+    const long double c4_inertia = w_inertia[4];
+    const long double c5_inertia = w_inertia[5];
+    const long double c6_inertia = w_inertia[6];
+    const long double c7_inertia = w_inertia[7];
+    const long double c8_inertia = w_inertia[8];
+    const long double c0_omega = w_omega[0];
+    const long double c1_omega = w_omega[1];
+    const long double c2_omega = w_omega[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)m_in_;
-    (void)v_in_;
-    (void)inertia_in_;
-    (void)omega_in_;
+    (void)w_m;
+    (void)w_v;
+    (void)w_inertia;
+    (void)w_omega;
     {
-        T[0] = (double)((0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2));
+        out_T[0] = (double)((0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega));
     }
-    finite += (long double)((T[0] - T[0]));
+    finite += (long double)((out_T[0] - out_T[0]));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = (double)NAN;
+        out_T[0] = (double)NAN;
     }
     return status;
 }
@@ -67,11 +67,11 @@ static int rigidsym_c_body_energy_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T)
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T)
 {
     int status, still_;
     double finite;
@@ -81,12 +81,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_m;
-    double rs_v[3];
-    double rs_inertia[9];
-    double rs_omega[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_m;
+    double sc_v[3];
+    double sc_inertia[9];
+    double sc_omega[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -94,79 +93,79 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(&m, 1))
+    if (rigidsym_c_subnormal_d(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(v, 3))
+    if (rigidsym_c_subnormal_d(in_v, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(inertia, 9))
+    if (rigidsym_c_subnormal_d(in_inertia, 9))
         return -1;
-    if (rigidsym_c_subnormal_d(omega, 3))
+    if (rigidsym_c_subnormal_d(in_omega, 3))
         return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(v, 3));
-    rs_k1_ = -(rigidsym_c_exponent_d(inertia, 9));
-    rs_k2_ = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(in_inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(in_omega, 3));
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_d(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_d(omega, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_k1_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(in_omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(&in_m, 1) / 2);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_d(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(omega, 3));
-    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1));
-    rs_k2_ = -(rigidsym_c_exponent_d(v, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k1_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(&in_m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_d(in_v, 3));
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_d(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_d(v, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_d(&in_m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(in_v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(in_inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_d(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -179,41 +178,41 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_body_energy evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_plain(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T)
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T)
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double v_0 = v[0];
-    const double v_1 = v[1];
-    const double v_2 = v[2];
-    const double inertia_00 = inertia[0];
-    const double inertia_01 = inertia[1];
-    const double inertia_02 = inertia[2];
-    const double inertia_10 = inertia[3];
-    const double inertia_11 = inertia[4];
-    const double inertia_12 = inertia[5];
-    const double inertia_20 = inertia[6];
-    const double inertia_21 = inertia[7];
-    const double inertia_22 = inertia[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
+    const double c0_v = in_v[0];
+    const double c1_v = in_v[1];
+    const double c2_v = in_v[2];
+    const double c0_inertia = in_inertia[0];
+    const double c1_inertia = in_inertia[1];
+    const double c2_inertia = in_inertia[2];
+    const double c3_inertia = in_inertia[3];
+    const double c4_inertia = in_inertia[4];
+    const double c5_inertia = in_inertia[5];
+    const double c6_inertia = in_inertia[6];
+    const double c7_inertia = in_inertia[7];
+    const double c8_inertia = in_inertia[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
     {
-        T[0] = (0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
+        out_T[0] = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
     }
     /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
      * compiler from folding it) */
-    finite += (T[0] - T[0]);
+    finite += (out_T[0] - out_T[0]);
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = (double)NAN;
+        out_T[0] = (double)NAN;
     }
     return status;
 }
@@ -221,11 +220,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_body_energy_plain_p)(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T)
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T)
 = rigidsym_c_body_energy_plain;
 #endif
 
@@ -236,11 +235,11 @@ static int (*const volatile rigidsym_c_body_energy_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T)
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T)
 {
     const double *args[4];
     const int sizes[4] = {1, 3, 9, 3};
@@ -248,10 +247,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
+    args[0] = &in_m;
+    args[1] = in_v;
+    args[2] = in_inertia;
+    args[3] = in_omega;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -264,13 +263,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_body_energy_wide(m, v, inertia, omega, T);
+        status = rigidsym_c_body_energy_wide(in_m, in_v, in_inertia, in_omega, out_T);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_rescue(m, v, inertia, omega, T);
+        const int r_ = rigidsym_c_body_energy_rescue(in_m, in_v, in_inertia, in_omega, out_T);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -281,13 +280,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_body_energy_plain_p)(m, v, inertia, omega, T);
+        r_ = (*rigidsym_c_body_energy_plain_p)(in_m, in_v, in_inertia, in_omega, out_T);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_body_energy_plain(m, v, inertia, omega, T);
+        status |= rigidsym_c_body_energy_plain(in_m, in_v, in_inertia, in_omega, out_T);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -296,11 +295,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_body_energy(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T)
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T)
 
 {
     int status = 0, singular = 0;
@@ -309,75 +308,75 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 2), _mm_load_sd(inertia + 2 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 4), _mm_load_sd(inertia + 4 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 6), _mm_load_sd(inertia + 6 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega + 1), _mm_load_sd(omega + 1 + 1)))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_m, *&in_v[0])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_v + 1), _mm_load_sd(in_v + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia), _mm_load_sd(in_inertia + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia + 2), _mm_load_sd(in_inertia + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia + 4), _mm_load_sd(in_inertia + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia + 6), _mm_load_sd(in_inertia + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_inertia[8], *&in_omega[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_omega + 1), _mm_load_sd(in_omega + 1 + 1)))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
+            return rigidsym_c_body_energy_odd(in_m, in_v, in_inertia, in_omega, out_T);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&m), rigidsym_c_bits_d(&v[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_m), rigidsym_c_bits_d(&in_v[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(v + 1));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 2));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 4));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 6));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_v + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia + 6));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&inertia[8]), rigidsym_c_bits_d(&omega[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_inertia[8]), rigidsym_c_bits_d(&in_omega[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_omega + 1));
         odd = oddv_[0] | oddv_[1];
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_D(odd, m);
+        RIGIDSYM_C_ODDNZ_D(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_v[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_inertia[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_omega[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
+            return rigidsym_c_body_energy_odd(in_m, in_v, in_inertia, in_omega, out_T);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_body_energy_odd(m, v, inertia, omega, T);
+        return rigidsym_c_body_energy_odd(in_m, in_v, in_inertia, in_omega, out_T);
 #endif
-    const double v_0 = v[0];
-    const double v_1 = v[1];
-    const double v_2 = v[2];
-    const double inertia_00 = inertia[0];
-    const double inertia_01 = inertia[1];
-    const double inertia_02 = inertia[2];
-    const double inertia_10 = inertia[3];
-    const double inertia_11 = inertia[4];
-    const double inertia_12 = inertia[5];
-    const double inertia_20 = inertia[6];
-    const double inertia_21 = inertia[7];
-    const double inertia_22 = inertia[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
+    const double c0_v = in_v[0];
+    const double c1_v = in_v[1];
+    const double c2_v = in_v[2];
+    const double c0_inertia = in_inertia[0];
+    const double c1_inertia = in_inertia[1];
+    const double c2_inertia = in_inertia[2];
+    const double c3_inertia = in_inertia[3];
+    const double c4_inertia = in_inertia[4];
+    const double c5_inertia = in_inertia[5];
+    const double c6_inertia = in_inertia[6];
+    const double c7_inertia = in_inertia[7];
+    const double c8_inertia = in_inertia[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
     {
-        T[0] = (0.5)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
+        out_T[0] = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -385,13 +384,13 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
      * compiler from folding it) */
-    finite += (T[0] - T[0]);
+    finite += (out_T[0] - out_T[0]);
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = (double)NAN;
+        out_T[0] = (double)NAN;
     }
     return status;
 }
@@ -399,22 +398,22 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
     size_t count,
-    const double *m,
-    const double *v,
-    const double *inertia,
-    const double *omega,
-    double *T,
+    const double *in_m,
+    const double *in_v,
+    const double *in_inertia,
+    const double *in_omega,
+    double *out_T,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_body_energy(
-            m[i_],
-            v + 3 * i_,
-            inertia + 9 * i_,
-            omega + 3 * i_,
-            T + 1 * i_);
+            in_m[i_],
+            in_v + 3 * i_,
+            in_inertia + 9 * i_,
+            in_omega + 3 * i_,
+            out_T + 1 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -428,11 +427,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T)
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T)
 {
     int status, still_;
     float finite;
@@ -442,12 +441,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_m;
-    float rs_v[3];
-    float rs_inertia[9];
-    float rs_omega[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_m;
+    float sc_v[3];
+    float sc_inertia[9];
+    float sc_omega[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -455,79 +453,79 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(&m, 1))
+    if (rigidsym_c_subnormal_f(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(v, 3))
+    if (rigidsym_c_subnormal_f(in_v, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(inertia, 9))
+    if (rigidsym_c_subnormal_f(in_inertia, 9))
         return -1;
-    if (rigidsym_c_subnormal_f(omega, 3))
+    if (rigidsym_c_subnormal_f(in_omega, 3))
         return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(v, 3));
-    rs_k1_ = -(rigidsym_c_exponent_f(inertia, 9));
-    rs_k2_ = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(in_inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(in_omega, 3));
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_f(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_f(omega, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_k1_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(in_omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(&in_m, 1) / 2);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_f(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(omega, 3));
-    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1));
-    rs_k2_ = -(rigidsym_c_exponent_f(v, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k1_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(&in_m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_f(in_v, 3));
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_f(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_f(v, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_f(&in_m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(in_v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(in_inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_f32(rs_m, rs_v, rs_inertia, rs_omega, T);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        finite = (T[0] - T[0]);
+        status = rigidsym_c_body_energy_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T);
+        status |= rigidsym_c_back_f(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        finite = (out_T[0] - out_T[0]);
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -540,41 +538,41 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_body_energy_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_plain(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T)
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T)
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float v_0 = v[0];
-    const float v_1 = v[1];
-    const float v_2 = v[2];
-    const float inertia_00 = inertia[0];
-    const float inertia_01 = inertia[1];
-    const float inertia_02 = inertia[2];
-    const float inertia_10 = inertia[3];
-    const float inertia_11 = inertia[4];
-    const float inertia_12 = inertia[5];
-    const float inertia_20 = inertia[6];
-    const float inertia_21 = inertia[7];
-    const float inertia_22 = inertia[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
+    const float c0_v = in_v[0];
+    const float c1_v = in_v[1];
+    const float c2_v = in_v[2];
+    const float c0_inertia = in_inertia[0];
+    const float c1_inertia = in_inertia[1];
+    const float c2_inertia = in_inertia[2];
+    const float c3_inertia = in_inertia[3];
+    const float c4_inertia = in_inertia[4];
+    const float c5_inertia = in_inertia[5];
+    const float c6_inertia = in_inertia[6];
+    const float c7_inertia = in_inertia[7];
+    const float c8_inertia = in_inertia[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
     {
-        T[0] = (0.5f)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5f)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5f)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5f)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
+        out_T[0] = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
     }
     /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
      * compiler from folding it) */
-    finite += (T[0] - T[0]);
+    finite += (out_T[0] - out_T[0]);
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
+        out_T[0] = NAN;
     }
     return status;
 }
@@ -582,11 +580,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_body_energy_f32_plain_p)(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T)
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T)
 = rigidsym_c_body_energy_f32_plain;
 #endif
 
@@ -597,11 +595,11 @@ static int (*const volatile rigidsym_c_body_energy_f32_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T)
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T)
 {
     const float *args[4];
     const int sizes[4] = {1, 3, 9, 3};
@@ -609,10 +607,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
+    args[0] = &in_m;
+    args[1] = in_v;
+    args[2] = in_inertia;
+    args[3] = in_omega;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -625,7 +623,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_f32_rescue(m, v, inertia, omega, T);
+        const int r_ = rigidsym_c_body_energy_f32_rescue(in_m, in_v, in_inertia, in_omega, out_T);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -636,13 +634,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_body_energy_f32_plain_p)(m, v, inertia, omega, T);
+        r_ = (*rigidsym_c_body_energy_f32_plain_p)(in_m, in_v, in_inertia, in_omega, out_T);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_body_energy_f32_plain(m, v, inertia, omega, T);
+        status |= rigidsym_c_body_energy_f32_plain(in_m, in_v, in_inertia, in_omega, out_T);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -651,11 +649,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T)
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T)
 
 {
     int status = 0, singular = 0;
@@ -664,24 +662,24 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2]))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_m, *&in_v[0], *&in_v[1], *&in_v[2])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_inertia), *(in_inertia + 1), *(in_inertia + 2), *(in_inertia + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_inertia + 4), *(in_inertia + 4 + 1), *(in_inertia + 4 + 2), *(in_inertia + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_inertia[8], *&in_omega[0], *&in_omega[1], *&in_omega[2]))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
+            return rigidsym_c_body_energy_f32_odd(in_m, in_v, in_inertia, in_omega, out_T);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&v[0]), rigidsym_c_bits_f(&v[1]), rigidsym_c_bits_f(&v[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_m), rigidsym_c_bits_f(&in_v[0]), rigidsym_c_bits_f(&in_v[1]), rigidsym_c_bits_f(&in_v[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia));
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia + 4));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_inertia));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_inertia + 4));
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&inertia[8]), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1]), rigidsym_c_bits_f(&omega[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_inertia[8]), rigidsym_c_bits_f(&in_omega[0]), rigidsym_c_bits_f(&in_omega[1]), rigidsym_c_bits_f(&in_omega[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -690,41 +688,41 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_F(odd, m);
+        RIGIDSYM_C_ODDNZ_F(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_v[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_inertia[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_omega[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
+            return rigidsym_c_body_energy_f32_odd(in_m, in_v, in_inertia, in_omega, out_T);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_body_energy_f32_odd(m, v, inertia, omega, T);
+        return rigidsym_c_body_energy_f32_odd(in_m, in_v, in_inertia, in_omega, out_T);
 #endif
-    const float v_0 = v[0];
-    const float v_1 = v[1];
-    const float v_2 = v[2];
-    const float inertia_00 = inertia[0];
-    const float inertia_01 = inertia[1];
-    const float inertia_02 = inertia[2];
-    const float inertia_10 = inertia[3];
-    const float inertia_11 = inertia[4];
-    const float inertia_12 = inertia[5];
-    const float inertia_20 = inertia[6];
-    const float inertia_21 = inertia[7];
-    const float inertia_22 = inertia[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
+    const float c0_v = in_v[0];
+    const float c1_v = in_v[1];
+    const float c2_v = in_v[2];
+    const float c0_inertia = in_inertia[0];
+    const float c1_inertia = in_inertia[1];
+    const float c2_inertia = in_inertia[2];
+    const float c3_inertia = in_inertia[3];
+    const float c4_inertia = in_inertia[4];
+    const float c5_inertia = in_inertia[5];
+    const float c6_inertia = in_inertia[6];
+    const float c7_inertia = in_inertia[7];
+    const float c8_inertia = in_inertia[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
     {
-        T[0] = (0.5f)*m*((v_0*v_0) + (v_1*v_1) + (v_2*v_2)) + (0.5f)*omega_0*(inertia_00*omega_0 + inertia_10*omega_1 + inertia_20*omega_2) + (0.5f)*omega_1*(inertia_01*omega_0 + inertia_11*omega_1 + inertia_21*omega_2) + (0.5f)*omega_2*(inertia_02*omega_0 + inertia_12*omega_1 + inertia_22*omega_2);
+        out_T[0] = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -732,13 +730,13 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
 #if defined(RIGIDSYM_C_TRUSTED_INPUTS)
     /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
      * compiler from folding it) */
-    finite += (T[0] - T[0]);
+    finite += (out_T[0] - out_T[0]);
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
+        out_T[0] = NAN;
     }
     return status;
 }
@@ -746,22 +744,22 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
     size_t count,
-    const float *m,
-    const float *v,
-    const float *inertia,
-    const float *omega,
-    float *T,
+    const float *in_m,
+    const float *in_v,
+    const float *in_inertia,
+    const float *in_omega,
+    float *out_T,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_body_energy_f32(
-            m[i_],
-            v + 3 * i_,
-            inertia + 9 * i_,
-            omega + 3 * i_,
-            T + 1 * i_);
+            in_m[i_],
+            in_v + 3 * i_,
+            in_inertia + 9 * i_,
+            in_omega + 3 * i_,
+            out_T + 1 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -777,97 +775,97 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
 /* rigidsym_c_body_energy_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_body_energy_with_jacobians_wide(
-    double m_in_,
-    const double v_in_[3],
-    const double inertia_in_[9],
-    const double omega_in_[3],
-    double *T,
-    double *T_D_m,
-    double T_D_v[3],
-    double T_D_inertia[9],
-    double T_D_omega[3])
+    double w_m,
+    const double w_v[3],
+    const double w_inertia[9],
+    const double w_omega[3],
+    double *out_T,
+    double *out_T_D_m,
+    double out_T_D_v[3],
+    double out_T_D_inertia[9],
+    double out_T_D_omega[3])
 {
-    const long double m = m_in_;
-    const long double v_0 = v_in_[0];
-    const long double v_1 = v_in_[1];
-    const long double v_2 = v_in_[2];
-    const long double inertia_00 = inertia_in_[0];
-    const long double inertia_01 = inertia_in_[1];
-    const long double inertia_02 = inertia_in_[2];
-    const long double inertia_10 = inertia_in_[3];
-    const long double inertia_11 = inertia_in_[4];
-    const long double inertia_12 = inertia_in_[5];
-    const long double inertia_20 = inertia_in_[6];
-    const long double inertia_21 = inertia_in_[7];
-    const long double inertia_22 = inertia_in_[8];
-    const long double omega_0 = omega_in_[0];
-    const long double omega_1 = omega_in_[1];
-    const long double omega_2 = omega_in_[2];
+    const long double in_m = w_m;
+    const long double c0_v = w_v[0];
+    const long double c1_v = w_v[1];
+    const long double c2_v = w_v[2];
+    const long double c0_inertia = w_inertia[0];
+    const long double c1_inertia = w_inertia[1];
+    const long double c2_inertia = w_inertia[2];
+    const long double c3_inertia = w_inertia[3];
+    const long double c4_inertia = w_inertia[4];
+    const long double c5_inertia = w_inertia[5];
+    const long double c6_inertia = w_inertia[6];
+    const long double c7_inertia = w_inertia[7];
+    const long double c8_inertia = w_inertia[8];
+    const long double c0_omega = w_omega[0];
+    const long double c1_omega = w_omega[1];
+    const long double c2_omega = w_omega[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)m_in_;
-    (void)v_in_;
-    (void)inertia_in_;
-    (void)omega_in_;
+    (void)w_m;
+    (void)w_v;
+    (void)w_inertia;
+    (void)w_omega;
     {
-        const long double x0 = (v_0*v_0);
-        const long double x1 = (v_1*v_1);
-        const long double x2 = (v_2*v_2);
-        const long double x3 = inertia_00*omega_0;
-        const long double x4 = inertia_10*omega_1;
-        const long double x5 = inertia_20*omega_2;
-        const long double x6 = (0.5)*omega_0;
-        const long double x7 = inertia_01*omega_0;
-        const long double x8 = inertia_11*omega_1;
-        const long double x9 = inertia_21*omega_2;
-        const long double x10 = (0.5)*omega_1;
-        const long double x11 = inertia_02*omega_0;
-        const long double x12 = inertia_12*omega_1;
-        const long double x13 = inertia_22*omega_2;
-        const long double x14 = (0.5)*omega_2;
-        const long double x15 = omega_1*x6;
-        const long double x16 = omega_2*x6;
-        const long double x17 = omega_2*x10;
-        T[0] = (double)((0.5)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5));
-        T_D_m[0] = (double)((0.5)*x0 + (0.5)*x1 + (0.5)*x2);
-        T_D_v[0] = (double)(m*v_0);
-        T_D_v[1] = (double)(m*v_1);
-        T_D_v[2] = (double)(m*v_2);
-        T_D_inertia[0] = (double)((0.5)*(omega_0*omega_0));
-        T_D_inertia[1] = (double)(x15);
-        T_D_inertia[2] = (double)(x16);
-        T_D_inertia[3] = (double)(x15);
-        T_D_inertia[4] = (double)((0.5)*(omega_1*omega_1));
-        T_D_inertia[5] = (double)(x17);
-        T_D_inertia[6] = (double)(x16);
-        T_D_inertia[7] = (double)(x17);
-        T_D_inertia[8] = (double)((0.5)*(omega_2*omega_2));
-        T_D_omega[0] = (double)(inertia_01*x10 + inertia_02*x14 + x3 + (0.5)*x4 + (0.5)*x5);
-        T_D_omega[1] = (double)(inertia_10*x6 + inertia_12*x14 + (0.5)*x7 + x8 + (0.5)*x9);
-        T_D_omega[2] = (double)(inertia_20*x6 + inertia_21*x10 + (0.5)*x11 + (0.5)*x12 + x13);
+        const long double x0 = (c0_v*c0_v);
+        const long double x1 = (c1_v*c1_v);
+        const long double x2 = (c2_v*c2_v);
+        const long double x3 = c0_inertia*c0_omega;
+        const long double x4 = c3_inertia*c1_omega;
+        const long double x5 = c6_inertia*c2_omega;
+        const long double x6 = (0.5)*c0_omega;
+        const long double x7 = c1_inertia*c0_omega;
+        const long double x8 = c4_inertia*c1_omega;
+        const long double x9 = c7_inertia*c2_omega;
+        const long double x10 = (0.5)*c1_omega;
+        const long double x11 = c2_inertia*c0_omega;
+        const long double x12 = c5_inertia*c1_omega;
+        const long double x13 = c8_inertia*c2_omega;
+        const long double x14 = (0.5)*c2_omega;
+        const long double x15 = c1_omega*x6;
+        const long double x16 = c2_omega*x6;
+        const long double x17 = c2_omega*x10;
+        out_T[0] = (double)((0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5));
+        out_T_D_m[0] = (double)((0.5)*x0 + (0.5)*x1 + (0.5)*x2);
+        out_T_D_v[0] = (double)(in_m*c0_v);
+        out_T_D_v[1] = (double)(in_m*c1_v);
+        out_T_D_v[2] = (double)(in_m*c2_v);
+        out_T_D_inertia[0] = (double)((0.5)*(c0_omega*c0_omega));
+        out_T_D_inertia[1] = (double)(x15);
+        out_T_D_inertia[2] = (double)(x16);
+        out_T_D_inertia[3] = (double)(x15);
+        out_T_D_inertia[4] = (double)((0.5)*(c1_omega*c1_omega));
+        out_T_D_inertia[5] = (double)(x17);
+        out_T_D_inertia[6] = (double)(x16);
+        out_T_D_inertia[7] = (double)(x17);
+        out_T_D_inertia[8] = (double)((0.5)*(c2_omega*c2_omega));
+        out_T_D_omega[0] = (double)(c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5);
+        out_T_D_omega[1] = (double)(c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9);
+        out_T_D_omega[2] = (double)(c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13);
     }
-    finite += (long double)((((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2])))))));
+    finite += (long double)((((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2])))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = (double)NAN;
-        T_D_m[0] = (double)NAN;
-        T_D_v[0] = (double)NAN;
-        T_D_v[1] = (double)NAN;
-        T_D_v[2] = (double)NAN;
-        T_D_inertia[0] = (double)NAN;
-        T_D_inertia[1] = (double)NAN;
-        T_D_inertia[2] = (double)NAN;
-        T_D_inertia[3] = (double)NAN;
-        T_D_inertia[4] = (double)NAN;
-        T_D_inertia[5] = (double)NAN;
-        T_D_inertia[6] = (double)NAN;
-        T_D_inertia[7] = (double)NAN;
-        T_D_inertia[8] = (double)NAN;
-        T_D_omega[0] = (double)NAN;
-        T_D_omega[1] = (double)NAN;
-        T_D_omega[2] = (double)NAN;
+        out_T[0] = (double)NAN;
+        out_T_D_m[0] = (double)NAN;
+        out_T_D_v[0] = (double)NAN;
+        out_T_D_v[1] = (double)NAN;
+        out_T_D_v[2] = (double)NAN;
+        out_T_D_inertia[0] = (double)NAN;
+        out_T_D_inertia[1] = (double)NAN;
+        out_T_D_inertia[2] = (double)NAN;
+        out_T_D_inertia[3] = (double)NAN;
+        out_T_D_inertia[4] = (double)NAN;
+        out_T_D_inertia[5] = (double)NAN;
+        out_T_D_inertia[6] = (double)NAN;
+        out_T_D_inertia[7] = (double)NAN;
+        out_T_D_inertia[8] = (double)NAN;
+        out_T_D_omega[0] = (double)NAN;
+        out_T_D_omega[1] = (double)NAN;
+        out_T_D_omega[2] = (double)NAN;
     }
     return status;
 }
@@ -882,15 +880,15 @@ static int rigidsym_c_body_energy_with_jacobians_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T,
-    double *T_D_m,
-    double T_D_v[3],
-    double T_D_inertia[9],
-    double T_D_omega[3])
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T,
+    double *out_T_D_m,
+    double out_T_D_v[3],
+    double out_T_D_inertia[9],
+    double out_T_D_omega[3])
 {
     int status, still_;
     double finite;
@@ -900,12 +898,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_m;
-    double rs_v[3];
-    double rs_inertia[9];
-    double rs_omega[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_m;
+    double sc_v[3];
+    double sc_inertia[9];
+    double sc_omega[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -913,143 +910,143 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(&m, 1))
+    if (rigidsym_c_subnormal_d(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(v, 3))
+    if (rigidsym_c_subnormal_d(in_v, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(inertia, 9))
+    if (rigidsym_c_subnormal_d(in_inertia, 9))
         return -1;
-    if (rigidsym_c_subnormal_d(omega, 3))
+    if (rigidsym_c_subnormal_d(in_omega, 3))
         return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(v, 3));
-    rs_k1_ = -(rigidsym_c_exponent_d(inertia, 9));
-    rs_k2_ = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(in_inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(in_omega, 3));
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_v[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[0], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[1], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[2], rs_k1_ + rs_k2_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_d(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_m[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_v[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[2], rs_k1_ + rs_k2_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_d(omega, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, 2 * rs_k1_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(in_omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(&in_m, 1) / 2);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_omega[0], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_omega[1], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_omega[2], 2 * rs_k0_ + 2 * rs_k1_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_d(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_m[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[1], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[2], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[3], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[4], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[5], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[6], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[7], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[8], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[2], 2 * rs_k0_ + 2 * rs_k1_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(omega, 3));
-    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1));
-    rs_k2_ = -(rigidsym_c_exponent_d(v, 3));
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k1_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(&in_m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_d(in_v, 3));
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_m[0], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[0], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[1], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_v[2], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&T_D_omega[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_d(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_m[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_v[2], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_d(v, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_d(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_d(v, rs_v, 3, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_d(inertia, rs_inertia, 9, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_d(&in_m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(in_v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(in_inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(in_v, sc_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_inertia, sc_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_d(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_m[0], 4 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_v[0], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_v[1], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_v[2], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_d(&T_D_inertia[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[1], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[2], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[3], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[4], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[5], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[6], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[7], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_inertia[8], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_d(&T_D_omega[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_d(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_m[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_v[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_v[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_v[2], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[1], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[2], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[3], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[4], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[5], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[6], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[7], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_inertia[8], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_T_D_omega[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -1062,100 +1059,100 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_body_energy_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_plain(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T,
-    double *T_D_m,
-    double T_D_v[3],
-    double T_D_inertia[9],
-    double T_D_omega[3])
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T,
+    double *out_T_D_m,
+    double out_T_D_v[3],
+    double out_T_D_inertia[9],
+    double out_T_D_omega[3])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double v_0 = v[0];
-    const double v_1 = v[1];
-    const double v_2 = v[2];
-    const double inertia_00 = inertia[0];
-    const double inertia_01 = inertia[1];
-    const double inertia_02 = inertia[2];
-    const double inertia_10 = inertia[3];
-    const double inertia_11 = inertia[4];
-    const double inertia_12 = inertia[5];
-    const double inertia_20 = inertia[6];
-    const double inertia_21 = inertia[7];
-    const double inertia_22 = inertia[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
+    const double c0_v = in_v[0];
+    const double c1_v = in_v[1];
+    const double c2_v = in_v[2];
+    const double c0_inertia = in_inertia[0];
+    const double c1_inertia = in_inertia[1];
+    const double c2_inertia = in_inertia[2];
+    const double c3_inertia = in_inertia[3];
+    const double c4_inertia = in_inertia[4];
+    const double c5_inertia = in_inertia[5];
+    const double c6_inertia = in_inertia[6];
+    const double c7_inertia = in_inertia[7];
+    const double c8_inertia = in_inertia[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
     {
-        const double x0 = (v_0*v_0);
-        const double x1 = (v_1*v_1);
-        const double x2 = (v_2*v_2);
-        const double x3 = inertia_00*omega_0;
-        const double x4 = inertia_10*omega_1;
-        const double x5 = inertia_20*omega_2;
-        const double x6 = (0.5)*omega_0;
-        const double x7 = inertia_01*omega_0;
-        const double x8 = inertia_11*omega_1;
-        const double x9 = inertia_21*omega_2;
-        const double x10 = (0.5)*omega_1;
-        const double x11 = inertia_02*omega_0;
-        const double x12 = inertia_12*omega_1;
-        const double x13 = inertia_22*omega_2;
-        const double x14 = (0.5)*omega_2;
-        const double x15 = omega_1*x6;
-        const double x16 = omega_2*x6;
-        const double x17 = omega_2*x10;
-        T[0] = (0.5)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
-        T_D_v[0] = m*v_0;
-        T_D_v[1] = m*v_1;
-        T_D_v[2] = m*v_2;
-        T_D_inertia[0] = (0.5)*(omega_0*omega_0);
-        T_D_inertia[1] = x15;
-        T_D_inertia[2] = x16;
-        T_D_inertia[3] = x15;
-        T_D_inertia[4] = (0.5)*(omega_1*omega_1);
-        T_D_inertia[5] = x17;
-        T_D_inertia[6] = x16;
-        T_D_inertia[7] = x17;
-        T_D_inertia[8] = (0.5)*(omega_2*omega_2);
-        T_D_omega[0] = inertia_01*x10 + inertia_02*x14 + x3 + (0.5)*x4 + (0.5)*x5;
-        T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5)*x7 + x8 + (0.5)*x9;
-        T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        const double x0 = (c0_v*c0_v);
+        const double x1 = (c1_v*c1_v);
+        const double x2 = (c2_v*c2_v);
+        const double x3 = c0_inertia*c0_omega;
+        const double x4 = c3_inertia*c1_omega;
+        const double x5 = c6_inertia*c2_omega;
+        const double x6 = (0.5)*c0_omega;
+        const double x7 = c1_inertia*c0_omega;
+        const double x8 = c4_inertia*c1_omega;
+        const double x9 = c7_inertia*c2_omega;
+        const double x10 = (0.5)*c1_omega;
+        const double x11 = c2_inertia*c0_omega;
+        const double x12 = c5_inertia*c1_omega;
+        const double x13 = c8_inertia*c2_omega;
+        const double x14 = (0.5)*c2_omega;
+        const double x15 = c1_omega*x6;
+        const double x16 = c2_omega*x6;
+        const double x17 = c2_omega*x10;
+        out_T[0] = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
+        out_T_D_v[0] = in_m*c0_v;
+        out_T_D_v[1] = in_m*c1_v;
+        out_T_D_v[2] = in_m*c2_v;
+        out_T_D_inertia[0] = (0.5)*(c0_omega*c0_omega);
+        out_T_D_inertia[1] = x15;
+        out_T_D_inertia[2] = x16;
+        out_T_D_inertia[3] = x15;
+        out_T_D_inertia[4] = (0.5)*(c1_omega*c1_omega);
+        out_T_D_inertia[5] = x17;
+        out_T_D_inertia[6] = x16;
+        out_T_D_inertia[7] = x17;
+        out_T_D_inertia[8] = (0.5)*(c2_omega*c2_omega);
+        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
+        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
+        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        const double s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));
         if (!(s_ - s_ == 0.0))
-            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+            finite += (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = (double)NAN;
-        T_D_m[0] = (double)NAN;
-        T_D_v[0] = (double)NAN;
-        T_D_v[1] = (double)NAN;
-        T_D_v[2] = (double)NAN;
-        T_D_inertia[0] = (double)NAN;
-        T_D_inertia[1] = (double)NAN;
-        T_D_inertia[2] = (double)NAN;
-        T_D_inertia[3] = (double)NAN;
-        T_D_inertia[4] = (double)NAN;
-        T_D_inertia[5] = (double)NAN;
-        T_D_inertia[6] = (double)NAN;
-        T_D_inertia[7] = (double)NAN;
-        T_D_inertia[8] = (double)NAN;
-        T_D_omega[0] = (double)NAN;
-        T_D_omega[1] = (double)NAN;
-        T_D_omega[2] = (double)NAN;
+        out_T[0] = (double)NAN;
+        out_T_D_m[0] = (double)NAN;
+        out_T_D_v[0] = (double)NAN;
+        out_T_D_v[1] = (double)NAN;
+        out_T_D_v[2] = (double)NAN;
+        out_T_D_inertia[0] = (double)NAN;
+        out_T_D_inertia[1] = (double)NAN;
+        out_T_D_inertia[2] = (double)NAN;
+        out_T_D_inertia[3] = (double)NAN;
+        out_T_D_inertia[4] = (double)NAN;
+        out_T_D_inertia[5] = (double)NAN;
+        out_T_D_inertia[6] = (double)NAN;
+        out_T_D_inertia[7] = (double)NAN;
+        out_T_D_inertia[8] = (double)NAN;
+        out_T_D_omega[0] = (double)NAN;
+        out_T_D_omega[1] = (double)NAN;
+        out_T_D_omega[2] = (double)NAN;
     }
     return status;
 }
@@ -1163,15 +1160,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_body_energy_with_jacobians_plain_p)(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T,
-    double *T_D_m,
-    double T_D_v[3],
-    double T_D_inertia[9],
-    double T_D_omega[3])
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T,
+    double *out_T_D_m,
+    double out_T_D_v[3],
+    double out_T_D_inertia[9],
+    double out_T_D_omega[3])
 = rigidsym_c_body_energy_with_jacobians_plain;
 #endif
 
@@ -1182,15 +1179,15 @@ static int (*const volatile rigidsym_c_body_energy_with_jacobians_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T,
-    double *T_D_m,
-    double T_D_v[3],
-    double T_D_inertia[9],
-    double T_D_omega[3])
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T,
+    double *out_T_D_m,
+    double out_T_D_v[3],
+    double out_T_D_inertia[9],
+    double out_T_D_omega[3])
 {
     const double *args[4];
     const int sizes[4] = {1, 3, 9, 3};
@@ -1198,10 +1195,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
+    args[0] = &in_m;
+    args[1] = in_v;
+    args[2] = in_inertia;
+    args[3] = in_omega;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1214,13 +1211,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_body_energy_with_jacobians_wide(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        status = rigidsym_c_body_energy_with_jacobians_wide(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        const int r_ = rigidsym_c_body_energy_with_jacobians_rescue(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -1231,13 +1228,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_body_energy_with_jacobians_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        r_ = (*rigidsym_c_body_energy_with_jacobians_plain_p)(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_body_energy_with_jacobians_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        status |= rigidsym_c_body_energy_with_jacobians_plain(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1246,13 +1243,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T,
-    double *T_D_m,
-    double T_D_v[3],    double T_D_inertia[9],    double T_D_omega[3])
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T,
+    double *out_T_D_m,
+    double out_T_D_v[3],    double out_T_D_inertia[9],    double out_T_D_omega[3])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -1260,109 +1257,109 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&m, *&v[0])));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(v + 1), _mm_load_sd(v + 1 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia), _mm_load_sd(inertia + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 2), _mm_load_sd(inertia + 2 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 4), _mm_load_sd(inertia + 4 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(inertia + 6), _mm_load_sd(inertia + 6 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&inertia[8], *&omega[0]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega + 1), _mm_load_sd(omega + 1 + 1)))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_m, *&in_v[0])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_v + 1), _mm_load_sd(in_v + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia), _mm_load_sd(in_inertia + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia + 2), _mm_load_sd(in_inertia + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia + 4), _mm_load_sd(in_inertia + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_inertia + 6), _mm_load_sd(in_inertia + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_inertia[8], *&in_omega[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_omega + 1), _mm_load_sd(in_omega + 1 + 1)))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            return rigidsym_c_body_energy_with_jacobians_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&m), rigidsym_c_bits_d(&v[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_m), rigidsym_c_bits_d(&in_v[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(v + 1));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 2));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 4));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(inertia + 6));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_v + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_inertia + 6));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&inertia[8]), rigidsym_c_bits_d(&omega[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_inertia[8]), rigidsym_c_bits_d(&in_omega[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_omega + 1));
         odd = oddv_[0] | oddv_[1];
     }
 #else
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_D(odd, m);
+        RIGIDSYM_C_ODDNZ_D(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_v[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_inertia[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_omega[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            return rigidsym_c_body_energy_with_jacobians_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_body_energy_with_jacobians_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        return rigidsym_c_body_energy_with_jacobians_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
 #endif
-    const double v_0 = v[0];
-    const double v_1 = v[1];
-    const double v_2 = v[2];
-    const double inertia_00 = inertia[0];
-    const double inertia_01 = inertia[1];
-    const double inertia_02 = inertia[2];
-    const double inertia_10 = inertia[3];
-    const double inertia_11 = inertia[4];
-    const double inertia_12 = inertia[5];
-    const double inertia_20 = inertia[6];
-    const double inertia_21 = inertia[7];
-    const double inertia_22 = inertia[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
+    const double c0_v = in_v[0];
+    const double c1_v = in_v[1];
+    const double c2_v = in_v[2];
+    const double c0_inertia = in_inertia[0];
+    const double c1_inertia = in_inertia[1];
+    const double c2_inertia = in_inertia[2];
+    const double c3_inertia = in_inertia[3];
+    const double c4_inertia = in_inertia[4];
+    const double c5_inertia = in_inertia[5];
+    const double c6_inertia = in_inertia[6];
+    const double c7_inertia = in_inertia[7];
+    const double c8_inertia = in_inertia[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
     {
-        const double x0 = (v_0*v_0);
-        const double x1 = (v_1*v_1);
-        const double x2 = (v_2*v_2);
-        const double x3 = inertia_00*omega_0;
-        const double x4 = inertia_10*omega_1;
-        const double x5 = inertia_20*omega_2;
-        const double x6 = (0.5)*omega_0;
-        const double x7 = inertia_01*omega_0;
-        const double x8 = inertia_11*omega_1;
-        const double x9 = inertia_21*omega_2;
-        const double x10 = (0.5)*omega_1;
-        const double x11 = inertia_02*omega_0;
-        const double x12 = inertia_12*omega_1;
-        const double x13 = inertia_22*omega_2;
-        const double x14 = (0.5)*omega_2;
-        const double x15 = omega_1*x6;
-        const double x16 = omega_2*x6;
-        const double x17 = omega_2*x10;
-        T[0] = (0.5)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
-        T_D_v[0] = m*v_0;
-        T_D_v[1] = m*v_1;
-        T_D_v[2] = m*v_2;
-        T_D_inertia[0] = (0.5)*(omega_0*omega_0);
-        T_D_inertia[1] = x15;
-        T_D_inertia[2] = x16;
-        T_D_inertia[3] = x15;
-        T_D_inertia[4] = (0.5)*(omega_1*omega_1);
-        T_D_inertia[5] = x17;
-        T_D_inertia[6] = x16;
-        T_D_inertia[7] = x17;
-        T_D_inertia[8] = (0.5)*(omega_2*omega_2);
-        T_D_omega[0] = inertia_01*x10 + inertia_02*x14 + x3 + (0.5)*x4 + (0.5)*x5;
-        T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5)*x7 + x8 + (0.5)*x9;
-        T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        const double x0 = (c0_v*c0_v);
+        const double x1 = (c1_v*c1_v);
+        const double x2 = (c2_v*c2_v);
+        const double x3 = c0_inertia*c0_omega;
+        const double x4 = c3_inertia*c1_omega;
+        const double x5 = c6_inertia*c2_omega;
+        const double x6 = (0.5)*c0_omega;
+        const double x7 = c1_inertia*c0_omega;
+        const double x8 = c4_inertia*c1_omega;
+        const double x9 = c7_inertia*c2_omega;
+        const double x10 = (0.5)*c1_omega;
+        const double x11 = c2_inertia*c0_omega;
+        const double x12 = c5_inertia*c1_omega;
+        const double x13 = c8_inertia*c2_omega;
+        const double x14 = (0.5)*c2_omega;
+        const double x15 = c1_omega*x6;
+        const double x16 = c2_omega*x6;
+        const double x17 = c2_omega*x10;
+        out_T[0] = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
+        out_T_D_v[0] = in_m*c0_v;
+        out_T_D_v[1] = in_m*c1_v;
+        out_T_D_v[2] = in_m*c2_v;
+        out_T_D_inertia[0] = (0.5)*(c0_omega*c0_omega);
+        out_T_D_inertia[1] = x15;
+        out_T_D_inertia[2] = x16;
+        out_T_D_inertia[3] = x15;
+        out_T_D_inertia[4] = (0.5)*(c1_omega*c1_omega);
+        out_T_D_inertia[5] = x17;
+        out_T_D_inertia[6] = x16;
+        out_T_D_inertia[7] = x17;
+        out_T_D_inertia[8] = (0.5)*(c2_omega*c2_omega);
+        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
+        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
+        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -1372,32 +1369,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        const double s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));
         if (!(s_ - s_ == 0.0))
-            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+            finite += (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = (double)NAN;
-        T_D_m[0] = (double)NAN;
-        T_D_v[0] = (double)NAN;
-        T_D_v[1] = (double)NAN;
-        T_D_v[2] = (double)NAN;
-        T_D_inertia[0] = (double)NAN;
-        T_D_inertia[1] = (double)NAN;
-        T_D_inertia[2] = (double)NAN;
-        T_D_inertia[3] = (double)NAN;
-        T_D_inertia[4] = (double)NAN;
-        T_D_inertia[5] = (double)NAN;
-        T_D_inertia[6] = (double)NAN;
-        T_D_inertia[7] = (double)NAN;
-        T_D_inertia[8] = (double)NAN;
-        T_D_omega[0] = (double)NAN;
-        T_D_omega[1] = (double)NAN;
-        T_D_omega[2] = (double)NAN;
+        out_T[0] = (double)NAN;
+        out_T_D_m[0] = (double)NAN;
+        out_T_D_v[0] = (double)NAN;
+        out_T_D_v[1] = (double)NAN;
+        out_T_D_v[2] = (double)NAN;
+        out_T_D_inertia[0] = (double)NAN;
+        out_T_D_inertia[1] = (double)NAN;
+        out_T_D_inertia[2] = (double)NAN;
+        out_T_D_inertia[3] = (double)NAN;
+        out_T_D_inertia[4] = (double)NAN;
+        out_T_D_inertia[5] = (double)NAN;
+        out_T_D_inertia[6] = (double)NAN;
+        out_T_D_inertia[7] = (double)NAN;
+        out_T_D_inertia[8] = (double)NAN;
+        out_T_D_omega[0] = (double)NAN;
+        out_T_D_omega[1] = (double)NAN;
+        out_T_D_omega[2] = (double)NAN;
     }
     return status;
 }
@@ -1405,30 +1402,30 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
     size_t count,
-    const double *m,
-    const double *v,
-    const double *inertia,
-    const double *omega,
-    double *T,
-    double *T_D_m,
-    double *T_D_v,
-    double *T_D_inertia,
-    double *T_D_omega,
+    const double *in_m,
+    const double *in_v,
+    const double *in_inertia,
+    const double *in_omega,
+    double *out_T,
+    double *out_T_D_m,
+    double *out_T_D_v,
+    double *out_T_D_inertia,
+    double *out_T_D_omega,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_body_energy_with_jacobians(
-            m[i_],
-            v + 3 * i_,
-            inertia + 9 * i_,
-            omega + 3 * i_,
-            T + 1 * i_,
-            T_D_m + 1 * i_,
-            T_D_v + 3 * i_,
-            T_D_inertia + 9 * i_,
-            T_D_omega + 3 * i_);
+            in_m[i_],
+            in_v + 3 * i_,
+            in_inertia + 9 * i_,
+            in_omega + 3 * i_,
+            out_T + 1 * i_,
+            out_T_D_m + 1 * i_,
+            out_T_D_v + 3 * i_,
+            out_T_D_inertia + 9 * i_,
+            out_T_D_omega + 3 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -1442,15 +1439,15 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T,
-    float *T_D_m,
-    float T_D_v[3],
-    float T_D_inertia[9],
-    float T_D_omega[3])
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T,
+    float *out_T_D_m,
+    float out_T_D_v[3],
+    float out_T_D_inertia[9],
+    float out_T_D_omega[3])
 {
     int status, still_;
     float finite;
@@ -1460,12 +1457,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_m;
-    float rs_v[3];
-    float rs_inertia[9];
-    float rs_omega[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_m;
+    float sc_v[3];
+    float sc_inertia[9];
+    float sc_omega[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -1473,143 +1469,143 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(&m, 1))
+    if (rigidsym_c_subnormal_f(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(v, 3))
+    if (rigidsym_c_subnormal_f(in_v, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(inertia, 9))
+    if (rigidsym_c_subnormal_f(in_inertia, 9))
         return -1;
-    if (rigidsym_c_subnormal_f(omega, 3))
+    if (rigidsym_c_subnormal_f(in_omega, 3))
         return -1;
 #endif
     /* plan 0: free v, inertia, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(v, 3));
-    rs_k1_ = -(rigidsym_c_exponent_f(inertia, 9));
-    rs_k2_ = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_v, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(in_inertia, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(in_omega, 3));
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, rs_k0_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_v[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[0], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[1], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[2], rs_k1_ + rs_k2_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_f(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_m[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_v[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[2], rs_k1_ + rs_k2_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free inertia, omega, m */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_f(omega, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, 2 * rs_k1_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_inertia, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(in_omega, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(&in_m, 1) / 2);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, 2 * rs_k1_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_omega[0], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_omega[1], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_omega[2], 2 * rs_k0_ + 2 * rs_k1_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_f(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_m[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[1], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[2], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[3], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[4], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[5], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[6], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[7], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[8], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[2], 2 * rs_k0_ + 2 * rs_k1_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 2: free omega, m, v */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(omega, 3));
-    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1));
-    rs_k2_ = -(rigidsym_c_exponent_f(v, 3));
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k1_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_omega, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(&in_m, 1));
+    rs_k2_ = -(rigidsym_c_exponent_f(in_v, 3));
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, -2 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_m[0], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[0], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[1], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_v[2], rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&T_D_omega[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_f(&out_T[0], rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_m[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[0], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[1], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_v[2], rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[0], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[1], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[2], -1 * rs_k0_ + rs_k1_ + 2 * rs_k2_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 3: free m, v, inertia */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_f(v, 3) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_f(inertia, 9) / 2);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_f(v, rs_v, 3, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_f(inertia, rs_inertia, 9, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
+    rs_k0_ = -(rigidsym_c_exponent_f(&in_m, 1) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(in_v, 3) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(in_inertia, 9) / 2);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(in_v, sc_v, 3, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_inertia, sc_inertia, 9, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k0_ + 2 * rs_k1_ - 1 * rs_k2_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_body_energy_with_jacobians_f32(rs_m, rs_v, rs_inertia, rs_omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
-        status |= rigidsym_c_back_f(&T[0], 2 * rs_k0_ + 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_m[0], 4 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_v[0], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_v[1], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_v[2], 2 * rs_k0_ + 2 * rs_k1_);
-        status |= rigidsym_c_back_f(&T_D_inertia[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[1], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[2], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[3], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[4], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[5], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[6], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[7], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_inertia[8], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        status |= rigidsym_c_back_f(&T_D_omega[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
-        finite = (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+        status = rigidsym_c_body_energy_with_jacobians_f32(sc_m, sc_v, sc_inertia, sc_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        status |= rigidsym_c_back_f(&out_T[0], 2 * rs_k0_ + 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_m[0], 4 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_v[0], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_v[1], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_v[2], 2 * rs_k0_ + 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[0], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[1], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[2], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[3], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[4], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[5], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[6], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[7], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_inertia[8], 2 * rs_k0_ + 4 * rs_k1_ - 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[0], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[1], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_T_D_omega[2], rs_k0_ + 2 * rs_k1_ + rs_k2_);
+        finite = (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -1622,100 +1618,100 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_body_energy_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_plain(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T,
-    float *T_D_m,
-    float T_D_v[3],
-    float T_D_inertia[9],
-    float T_D_omega[3])
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T,
+    float *out_T_D_m,
+    float out_T_D_v[3],
+    float out_T_D_inertia[9],
+    float out_T_D_omega[3])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float v_0 = v[0];
-    const float v_1 = v[1];
-    const float v_2 = v[2];
-    const float inertia_00 = inertia[0];
-    const float inertia_01 = inertia[1];
-    const float inertia_02 = inertia[2];
-    const float inertia_10 = inertia[3];
-    const float inertia_11 = inertia[4];
-    const float inertia_12 = inertia[5];
-    const float inertia_20 = inertia[6];
-    const float inertia_21 = inertia[7];
-    const float inertia_22 = inertia[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
+    const float c0_v = in_v[0];
+    const float c1_v = in_v[1];
+    const float c2_v = in_v[2];
+    const float c0_inertia = in_inertia[0];
+    const float c1_inertia = in_inertia[1];
+    const float c2_inertia = in_inertia[2];
+    const float c3_inertia = in_inertia[3];
+    const float c4_inertia = in_inertia[4];
+    const float c5_inertia = in_inertia[5];
+    const float c6_inertia = in_inertia[6];
+    const float c7_inertia = in_inertia[7];
+    const float c8_inertia = in_inertia[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
     {
-        const float x0 = (v_0*v_0);
-        const float x1 = (v_1*v_1);
-        const float x2 = (v_2*v_2);
-        const float x3 = inertia_00*omega_0;
-        const float x4 = inertia_10*omega_1;
-        const float x5 = inertia_20*omega_2;
-        const float x6 = (0.5f)*omega_0;
-        const float x7 = inertia_01*omega_0;
-        const float x8 = inertia_11*omega_1;
-        const float x9 = inertia_21*omega_2;
-        const float x10 = (0.5f)*omega_1;
-        const float x11 = inertia_02*omega_0;
-        const float x12 = inertia_12*omega_1;
-        const float x13 = inertia_22*omega_2;
-        const float x14 = (0.5f)*omega_2;
-        const float x15 = omega_1*x6;
-        const float x16 = omega_2*x6;
-        const float x17 = omega_2*x10;
-        T[0] = (0.5f)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
-        T_D_v[0] = m*v_0;
-        T_D_v[1] = m*v_1;
-        T_D_v[2] = m*v_2;
-        T_D_inertia[0] = (0.5f)*(omega_0*omega_0);
-        T_D_inertia[1] = x15;
-        T_D_inertia[2] = x16;
-        T_D_inertia[3] = x15;
-        T_D_inertia[4] = (0.5f)*(omega_1*omega_1);
-        T_D_inertia[5] = x17;
-        T_D_inertia[6] = x16;
-        T_D_inertia[7] = x17;
-        T_D_inertia[8] = (0.5f)*(omega_2*omega_2);
-        T_D_omega[0] = inertia_01*x10 + inertia_02*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
-        T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
-        T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        const float x0 = (c0_v*c0_v);
+        const float x1 = (c1_v*c1_v);
+        const float x2 = (c2_v*c2_v);
+        const float x3 = c0_inertia*c0_omega;
+        const float x4 = c3_inertia*c1_omega;
+        const float x5 = c6_inertia*c2_omega;
+        const float x6 = (0.5f)*c0_omega;
+        const float x7 = c1_inertia*c0_omega;
+        const float x8 = c4_inertia*c1_omega;
+        const float x9 = c7_inertia*c2_omega;
+        const float x10 = (0.5f)*c1_omega;
+        const float x11 = c2_inertia*c0_omega;
+        const float x12 = c5_inertia*c1_omega;
+        const float x13 = c8_inertia*c2_omega;
+        const float x14 = (0.5f)*c2_omega;
+        const float x15 = c1_omega*x6;
+        const float x16 = c2_omega*x6;
+        const float x17 = c2_omega*x10;
+        out_T[0] = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
+        out_T_D_v[0] = in_m*c0_v;
+        out_T_D_v[1] = in_m*c1_v;
+        out_T_D_v[2] = in_m*c2_v;
+        out_T_D_inertia[0] = (0.5f)*(c0_omega*c0_omega);
+        out_T_D_inertia[1] = x15;
+        out_T_D_inertia[2] = x16;
+        out_T_D_inertia[3] = x15;
+        out_T_D_inertia[4] = (0.5f)*(c1_omega*c1_omega);
+        out_T_D_inertia[5] = x17;
+        out_T_D_inertia[6] = x16;
+        out_T_D_inertia[7] = x17;
+        out_T_D_inertia[8] = (0.5f)*(c2_omega*c2_omega);
+        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
+        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
+        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        const float s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));
         if (!(s_ - s_ == 0.0f))
-            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+            finite += (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
-        T_D_m[0] = NAN;
-        T_D_v[0] = NAN;
-        T_D_v[1] = NAN;
-        T_D_v[2] = NAN;
-        T_D_inertia[0] = NAN;
-        T_D_inertia[1] = NAN;
-        T_D_inertia[2] = NAN;
-        T_D_inertia[3] = NAN;
-        T_D_inertia[4] = NAN;
-        T_D_inertia[5] = NAN;
-        T_D_inertia[6] = NAN;
-        T_D_inertia[7] = NAN;
-        T_D_inertia[8] = NAN;
-        T_D_omega[0] = NAN;
-        T_D_omega[1] = NAN;
-        T_D_omega[2] = NAN;
+        out_T[0] = NAN;
+        out_T_D_m[0] = NAN;
+        out_T_D_v[0] = NAN;
+        out_T_D_v[1] = NAN;
+        out_T_D_v[2] = NAN;
+        out_T_D_inertia[0] = NAN;
+        out_T_D_inertia[1] = NAN;
+        out_T_D_inertia[2] = NAN;
+        out_T_D_inertia[3] = NAN;
+        out_T_D_inertia[4] = NAN;
+        out_T_D_inertia[5] = NAN;
+        out_T_D_inertia[6] = NAN;
+        out_T_D_inertia[7] = NAN;
+        out_T_D_inertia[8] = NAN;
+        out_T_D_omega[0] = NAN;
+        out_T_D_omega[1] = NAN;
+        out_T_D_omega[2] = NAN;
     }
     return status;
 }
@@ -1723,15 +1719,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_body_energy_with_jacobians_f32_plain_p)(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T,
-    float *T_D_m,
-    float T_D_v[3],
-    float T_D_inertia[9],
-    float T_D_omega[3])
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T,
+    float *out_T_D_m,
+    float out_T_D_v[3],
+    float out_T_D_inertia[9],
+    float out_T_D_omega[3])
 = rigidsym_c_body_energy_with_jacobians_f32_plain;
 #endif
 
@@ -1742,15 +1738,15 @@ static int (*const volatile rigidsym_c_body_energy_with_jacobians_f32_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_body_energy_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T,
-    float *T_D_m,
-    float T_D_v[3],
-    float T_D_inertia[9],
-    float T_D_omega[3])
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T,
+    float *out_T_D_m,
+    float out_T_D_v[3],
+    float out_T_D_inertia[9],
+    float out_T_D_omega[3])
 {
     const float *args[4];
     const int sizes[4] = {1, 3, 9, 3};
@@ -1758,10 +1754,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = &m;
-    args[1] = v;
-    args[2] = inertia;
-    args[3] = omega;
+    args[0] = &in_m;
+    args[1] = in_v;
+    args[2] = in_inertia;
+    args[3] = in_omega;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1774,7 +1770,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        const int r_ = rigidsym_c_body_energy_with_jacobians_f32_rescue(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -1785,13 +1781,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_body_energy_with_jacobians_f32_plain_p)(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        r_ = (*rigidsym_c_body_energy_with_jacobians_f32_plain_p)(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_body_energy_with_jacobians_f32_plain(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        status |= rigidsym_c_body_energy_with_jacobians_f32_plain(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1800,13 +1796,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T,
-    float *T_D_m,
-    float T_D_v[3],    float T_D_inertia[9],    float T_D_omega[3])
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T,
+    float *out_T_D_m,
+    float out_T_D_v[3],    float out_T_D_inertia[9],    float out_T_D_omega[3])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -1814,24 +1810,24 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&m, *&v[0], *&v[1], *&v[2])));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia), *(inertia + 1), *(inertia + 2), *(inertia + 3)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(inertia + 4), *(inertia + 4 + 1), *(inertia + 4 + 2), *(inertia + 4 + 3)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&inertia[8], *&omega[0], *&omega[1], *&omega[2]))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_m, *&in_v[0], *&in_v[1], *&in_v[2])));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_inertia), *(in_inertia + 1), *(in_inertia + 2), *(in_inertia + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_inertia + 4), *(in_inertia + 4 + 1), *(in_inertia + 4 + 2), *(in_inertia + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_inertia[8], *&in_omega[0], *&in_omega[1], *&in_omega[2]))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            return rigidsym_c_body_energy_with_jacobians_f32_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&v[0]), rigidsym_c_bits_f(&v[1]), rigidsym_c_bits_f(&v[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_m), rigidsym_c_bits_f(&in_v[0]), rigidsym_c_bits_f(&in_v[1]), rigidsym_c_bits_f(&in_v[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia));
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(inertia + 4));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_inertia));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_inertia + 4));
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&inertia[8]), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1]), rigidsym_c_bits_f(&omega[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_inertia[8]), rigidsym_c_bits_f(&in_omega[0]), rigidsym_c_bits_f(&in_omega[1]), rigidsym_c_bits_f(&in_omega[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -1840,75 +1836,75 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_F(odd, m);
+        RIGIDSYM_C_ODDNZ_F(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, v[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_v[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, inertia[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_inertia[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_omega[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+            return rigidsym_c_body_energy_with_jacobians_f32_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_body_energy_with_jacobians_f32_odd(m, v, inertia, omega, T, T_D_m, T_D_v, T_D_inertia, T_D_omega);
+        return rigidsym_c_body_energy_with_jacobians_f32_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
 #endif
-    const float v_0 = v[0];
-    const float v_1 = v[1];
-    const float v_2 = v[2];
-    const float inertia_00 = inertia[0];
-    const float inertia_01 = inertia[1];
-    const float inertia_02 = inertia[2];
-    const float inertia_10 = inertia[3];
-    const float inertia_11 = inertia[4];
-    const float inertia_12 = inertia[5];
-    const float inertia_20 = inertia[6];
-    const float inertia_21 = inertia[7];
-    const float inertia_22 = inertia[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
+    const float c0_v = in_v[0];
+    const float c1_v = in_v[1];
+    const float c2_v = in_v[2];
+    const float c0_inertia = in_inertia[0];
+    const float c1_inertia = in_inertia[1];
+    const float c2_inertia = in_inertia[2];
+    const float c3_inertia = in_inertia[3];
+    const float c4_inertia = in_inertia[4];
+    const float c5_inertia = in_inertia[5];
+    const float c6_inertia = in_inertia[6];
+    const float c7_inertia = in_inertia[7];
+    const float c8_inertia = in_inertia[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
     {
-        const float x0 = (v_0*v_0);
-        const float x1 = (v_1*v_1);
-        const float x2 = (v_2*v_2);
-        const float x3 = inertia_00*omega_0;
-        const float x4 = inertia_10*omega_1;
-        const float x5 = inertia_20*omega_2;
-        const float x6 = (0.5f)*omega_0;
-        const float x7 = inertia_01*omega_0;
-        const float x8 = inertia_11*omega_1;
-        const float x9 = inertia_21*omega_2;
-        const float x10 = (0.5f)*omega_1;
-        const float x11 = inertia_02*omega_0;
-        const float x12 = inertia_12*omega_1;
-        const float x13 = inertia_22*omega_2;
-        const float x14 = (0.5f)*omega_2;
-        const float x15 = omega_1*x6;
-        const float x16 = omega_2*x6;
-        const float x17 = omega_2*x10;
-        T[0] = (0.5f)*m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
-        T_D_v[0] = m*v_0;
-        T_D_v[1] = m*v_1;
-        T_D_v[2] = m*v_2;
-        T_D_inertia[0] = (0.5f)*(omega_0*omega_0);
-        T_D_inertia[1] = x15;
-        T_D_inertia[2] = x16;
-        T_D_inertia[3] = x15;
-        T_D_inertia[4] = (0.5f)*(omega_1*omega_1);
-        T_D_inertia[5] = x17;
-        T_D_inertia[6] = x16;
-        T_D_inertia[7] = x17;
-        T_D_inertia[8] = (0.5f)*(omega_2*omega_2);
-        T_D_omega[0] = inertia_01*x10 + inertia_02*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
-        T_D_omega[1] = inertia_10*x6 + inertia_12*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
-        T_D_omega[2] = inertia_20*x6 + inertia_21*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        const float x0 = (c0_v*c0_v);
+        const float x1 = (c1_v*c1_v);
+        const float x2 = (c2_v*c2_v);
+        const float x3 = c0_inertia*c0_omega;
+        const float x4 = c3_inertia*c1_omega;
+        const float x5 = c6_inertia*c2_omega;
+        const float x6 = (0.5f)*c0_omega;
+        const float x7 = c1_inertia*c0_omega;
+        const float x8 = c4_inertia*c1_omega;
+        const float x9 = c7_inertia*c2_omega;
+        const float x10 = (0.5f)*c1_omega;
+        const float x11 = c2_inertia*c0_omega;
+        const float x12 = c5_inertia*c1_omega;
+        const float x13 = c8_inertia*c2_omega;
+        const float x14 = (0.5f)*c2_omega;
+        const float x15 = c1_omega*x6;
+        const float x16 = c2_omega*x6;
+        const float x17 = c2_omega*x10;
+        out_T[0] = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
+        out_T_D_v[0] = in_m*c0_v;
+        out_T_D_v[1] = in_m*c1_v;
+        out_T_D_v[2] = in_m*c2_v;
+        out_T_D_inertia[0] = (0.5f)*(c0_omega*c0_omega);
+        out_T_D_inertia[1] = x15;
+        out_T_D_inertia[2] = x16;
+        out_T_D_inertia[3] = x15;
+        out_T_D_inertia[4] = (0.5f)*(c1_omega*c1_omega);
+        out_T_D_inertia[5] = x17;
+        out_T_D_inertia[6] = x16;
+        out_T_D_inertia[7] = x17;
+        out_T_D_inertia[8] = (0.5f)*(c2_omega*c2_omega);
+        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
+        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
+        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -1918,32 +1914,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((((T[0] + T_D_m[0]) + (T_D_v[0] + T_D_v[1])) + ((T_D_v[2] + T_D_inertia[0]) + (T_D_inertia[1] + T_D_inertia[2]))) + (((T_D_inertia[3] + T_D_inertia[4]) + (T_D_inertia[5] + T_D_inertia[6])) + ((T_D_inertia[7] + T_D_inertia[8]) + (T_D_omega[0] + (T_D_omega[1] + T_D_omega[2])))));
+        const float s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));
         if (!(s_ - s_ == 0.0f))
-            finite += (((((T[0] - T[0]) + (T_D_m[0] - T_D_m[0])) + ((T_D_v[0] - T_D_v[0]) + (T_D_v[1] - T_D_v[1]))) + (((T_D_v[2] - T_D_v[2]) + (T_D_inertia[0] - T_D_inertia[0])) + ((T_D_inertia[1] - T_D_inertia[1]) + (T_D_inertia[2] - T_D_inertia[2])))) + ((((T_D_inertia[3] - T_D_inertia[3]) + (T_D_inertia[4] - T_D_inertia[4])) + ((T_D_inertia[5] - T_D_inertia[5]) + (T_D_inertia[6] - T_D_inertia[6]))) + (((T_D_inertia[7] - T_D_inertia[7]) + (T_D_inertia[8] - T_D_inertia[8])) + ((T_D_omega[0] - T_D_omega[0]) + ((T_D_omega[1] - T_D_omega[1]) + (T_D_omega[2] - T_D_omega[2]))))));
+            finite += (((((out_T[0] - out_T[0]) + (out_T_D_m[0] - out_T_D_m[0])) + ((out_T_D_v[0] - out_T_D_v[0]) + (out_T_D_v[1] - out_T_D_v[1]))) + (((out_T_D_v[2] - out_T_D_v[2]) + (out_T_D_inertia[0] - out_T_D_inertia[0])) + ((out_T_D_inertia[1] - out_T_D_inertia[1]) + (out_T_D_inertia[2] - out_T_D_inertia[2])))) + ((((out_T_D_inertia[3] - out_T_D_inertia[3]) + (out_T_D_inertia[4] - out_T_D_inertia[4])) + ((out_T_D_inertia[5] - out_T_D_inertia[5]) + (out_T_D_inertia[6] - out_T_D_inertia[6]))) + (((out_T_D_inertia[7] - out_T_D_inertia[7]) + (out_T_D_inertia[8] - out_T_D_inertia[8])) + ((out_T_D_omega[0] - out_T_D_omega[0]) + ((out_T_D_omega[1] - out_T_D_omega[1]) + (out_T_D_omega[2] - out_T_D_omega[2]))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        T[0] = NAN;
-        T_D_m[0] = NAN;
-        T_D_v[0] = NAN;
-        T_D_v[1] = NAN;
-        T_D_v[2] = NAN;
-        T_D_inertia[0] = NAN;
-        T_D_inertia[1] = NAN;
-        T_D_inertia[2] = NAN;
-        T_D_inertia[3] = NAN;
-        T_D_inertia[4] = NAN;
-        T_D_inertia[5] = NAN;
-        T_D_inertia[6] = NAN;
-        T_D_inertia[7] = NAN;
-        T_D_inertia[8] = NAN;
-        T_D_omega[0] = NAN;
-        T_D_omega[1] = NAN;
-        T_D_omega[2] = NAN;
+        out_T[0] = NAN;
+        out_T_D_m[0] = NAN;
+        out_T_D_v[0] = NAN;
+        out_T_D_v[1] = NAN;
+        out_T_D_v[2] = NAN;
+        out_T_D_inertia[0] = NAN;
+        out_T_D_inertia[1] = NAN;
+        out_T_D_inertia[2] = NAN;
+        out_T_D_inertia[3] = NAN;
+        out_T_D_inertia[4] = NAN;
+        out_T_D_inertia[5] = NAN;
+        out_T_D_inertia[6] = NAN;
+        out_T_D_inertia[7] = NAN;
+        out_T_D_inertia[8] = NAN;
+        out_T_D_omega[0] = NAN;
+        out_T_D_omega[1] = NAN;
+        out_T_D_omega[2] = NAN;
     }
     return status;
 }
@@ -1951,30 +1947,30 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
 
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32_batch(
     size_t count,
-    const float *m,
-    const float *v,
-    const float *inertia,
-    const float *omega,
-    float *T,
-    float *T_D_m,
-    float *T_D_v,
-    float *T_D_inertia,
-    float *T_D_omega,
+    const float *in_m,
+    const float *in_v,
+    const float *in_inertia,
+    const float *in_omega,
+    float *out_T,
+    float *out_T_D_m,
+    float *out_T_D_v,
+    float *out_T_D_inertia,
+    float *out_T_D_omega,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_body_energy_with_jacobians_f32(
-            m[i_],
-            v + 3 * i_,
-            inertia + 9 * i_,
-            omega + 3 * i_,
-            T + 1 * i_,
-            T_D_m + 1 * i_,
-            T_D_v + 3 * i_,
-            T_D_inertia + 9 * i_,
-            T_D_omega + 3 * i_);
+            in_m[i_],
+            in_v + 3 * i_,
+            in_inertia + 9 * i_,
+            in_omega + 3 * i_,
+            out_T + 1 * i_,
+            out_T_D_m + 1 * i_,
+            out_T_D_v + 3 * i_,
+            out_T_D_inertia + 9 * i_,
+            out_T_D_omega + 3 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;

@@ -44,11 +44,11 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_body_energy(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T);
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T);
 
 
 /* body_energy in float arithmetic only (float literals, sinf/cosf/sqrtf: no
@@ -58,11 +58,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
  * rigidsym.codegen.accuracy.float_measure: worst 0.812 over 96 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T);
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T);
 
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
@@ -71,19 +71,19 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
     size_t count,
-    const double *m,
-    const double *v,
-    const double *inertia,
-    const double *omega,
-    double *T,
+    const double *in_m,
+    const double *in_v,
+    const double *in_inertia,
+    const double *in_omega,
+    double *out_T,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
     size_t count,
-    const float *m,
-    const float *v,
-    const float *inertia,
-    const float *omega,
-    float *T,
+    const float *in_m,
+    const float *in_v,
+    const float *in_inertia,
+    const float *in_omega,
+    float *out_T,
     int *status);
 
 /* body_energy_with_jacobians:
@@ -130,13 +130,13 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
-    double m,
-    const double v[3],
-    const double inertia[9],
-    const double omega[3],
-    double *T,
-    double *T_D_m,
-    double T_D_v[3],    double T_D_inertia[9],    double T_D_omega[3]);
+    double in_m,
+    const double in_v[3],
+    const double in_inertia[9],
+    const double in_omega[3],
+    double *out_T,
+    double *out_T_D_m,
+    double out_T_D_v[3],    double out_T_D_inertia[9],    double out_T_D_omega[3]);
 
 /* body_energy_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -145,13 +145,13 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
  * rigidsym.codegen.accuracy.float_measure: worst 0.812 over 96 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
-    float m,
-    const float v[3],
-    const float inertia[9],
-    const float omega[3],
-    float *T,
-    float *T_D_m,
-    float T_D_v[3],    float T_D_inertia[9],    float T_D_omega[3]);
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T,
+    float *out_T_D_m,
+    float out_T_D_v[3],    float out_T_D_inertia[9],    float out_T_D_omega[3]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -159,27 +159,27 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
     size_t count,
-    const double *m,
-    const double *v,
-    const double *inertia,
-    const double *omega,
-    double *T,
-    double *T_D_m,
-    double *T_D_v,
-    double *T_D_inertia,
-    double *T_D_omega,
+    const double *in_m,
+    const double *in_v,
+    const double *in_inertia,
+    const double *in_omega,
+    double *out_T,
+    double *out_T_D_m,
+    double *out_T_D_v,
+    double *out_T_D_inertia,
+    double *out_T_D_omega,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32_batch(
     size_t count,
-    const float *m,
-    const float *v,
-    const float *inertia,
-    const float *omega,
-    float *T,
-    float *T_D_m,
-    float *T_D_v,
-    float *T_D_inertia,
-    float *T_D_omega,
+    const float *in_m,
+    const float *in_v,
+    const float *in_inertia,
+    const float *in_omega,
+    float *out_T,
+    float *out_T_D_m,
+    float *out_T_D_v,
+    float *out_T_D_inertia,
+    float *out_T_D_omega,
     int *status);
 
 RIGIDSYM_C_END_DECLS

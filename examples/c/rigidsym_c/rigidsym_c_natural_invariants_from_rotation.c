@@ -16,109 +16,109 @@
 /* rigidsym_c_natural_invariants_from_rotation in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_natural_invariants_from_rotation_wide(
-    const double Q_in_[9],
-    double e[3],
-    double *phi)
+    const double w_Q[9],
+    double out_e[3],
+    double *out_phi)
 {
-    const long double Q_00 = Q_in_[0];
-    const long double Q_01 = Q_in_[1];
-    const long double Q_02 = Q_in_[2];
-    const long double Q_10 = Q_in_[3];
-    const long double Q_11 = Q_in_[4];
-    const long double Q_12 = Q_in_[5];
-    const long double Q_20 = Q_in_[6];
-    const long double Q_21 = Q_in_[7];
-    const long double Q_22 = Q_in_[8];
+    const long double c0_Q = w_Q[0];
+    const long double c1_Q = w_Q[1];
+    const long double c2_Q = w_Q[2];
+    const long double c3_Q = w_Q[3];
+    const long double c4_Q = w_Q[4];
+    const long double c5_Q = w_Q[5];
+    const long double c6_Q = w_Q[6];
+    const long double c7_Q = w_Q[7];
+    const long double c8_Q = w_Q[8];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)Q_in_;
-    if (Q_00 >= Q_11 && Q_00 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const long double x0 = (0.5)*Q_00;
-        const long double x1 = (0.5)*Q_11;
-        const long double x2 = (0.5)*Q_22;
+    (void)w_Q;
+    if (c0_Q >= c4_Q && c0_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const long double x0 = (0.5)*c0_Q;
+        const long double x1 = (0.5)*c4_Q;
+        const long double x2 = (0.5)*c8_Q;
         const long double x3 = x0 - x1 - x2 + 0.5;
-        const long double x4 = (0.5)*Q_01;
-        const long double x5 = (0.5)*Q_10 + x4;
-        const long double x6 = (0.5)*Q_02;
-        const long double x7 = (0.5)*Q_20;
+        const long double x4 = (0.5)*c1_Q;
+        const long double x5 = (0.5)*c3_Q + x4;
+        const long double x6 = (0.5)*c2_Q;
+        const long double x7 = (0.5)*c6_Q;
         const long double x8 = x6 + x7;
         const long double x9 = (x3*x3) + (x5*x5) + (x8*x8);
-        const long double x10 = (0.5)*Q_10 - x4;
+        const long double x10 = (0.5)*c3_Q - x4;
         const long double x11 = x6 - x7;
-        const long double x12 = -0.5*Q_12 + (0.5)*Q_21;
+        const long double x12 = -0.5*c5_Q + (0.5)*c7_Q;
         const long double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))/sqrtl(x9);
-        e[0] = (double)(x13*x3);
-        e[1] = (double)(x13*x5);
-        e[2] = (double)(x13*x8);
-        phi[0] = (double)(atan2l(sqrtl((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5));
+        out_e[0] = (double)(x13*x3);
+        out_e[1] = (double)(x13*x5);
+        out_e[2] = (double)(x13*x8);
+        out_phi[0] = (double)(atan2l(sqrtl((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5));
         singular |= (x9) == 0.0L;
-        finite = (((x13 - x13) + (phi[0] - phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
-    } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const long double x0 = (0.5)*Q_01;
-        const long double x1 = (0.5)*Q_10 + x0;
-        const long double x2 = (0.5)*Q_12;
-        const long double x3 = (0.5)*Q_21 + x2;
-        const long double x4 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5;
-        const long double x5 = (0.5)*Q_11 - x4;
+        finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+    } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const long double x0 = (0.5)*c1_Q;
+        const long double x1 = (0.5)*c3_Q + x0;
+        const long double x2 = (0.5)*c5_Q;
+        const long double x3 = (0.5)*c7_Q + x2;
+        const long double x4 = (0.5)*c0_Q + (0.5)*c8_Q - 0.5;
+        const long double x5 = (0.5)*c4_Q - x4;
         const long double x6 = (x1*x1) + (x3*x3) + (x5*x5);
-        const long double x7 = (0.5)*Q_10 - x0;
-        const long double x8 = (0.5)*Q_21 - x2;
-        const long double x9 = (0.5)*Q_02 - 0.5*Q_20;
+        const long double x7 = (0.5)*c3_Q - x0;
+        const long double x8 = (0.5)*c7_Q - x2;
+        const long double x9 = (0.5)*c2_Q - 0.5*c6_Q;
         const long double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))/sqrtl(x6);
-        e[0] = (double)(x1*x10);
-        e[1] = (double)(x10*x5);
-        e[2] = (double)(x10*x3);
-        phi[0] = (double)(atan2l(sqrtl((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4));
+        out_e[0] = (double)(x1*x10);
+        out_e[1] = (double)(x10*x5);
+        out_e[2] = (double)(x10*x3);
+        out_phi[0] = (double)(atan2l(sqrtl((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*c4_Q + x4));
         singular |= (x6) == 0.0L;
-        finite = (((x10 - x10) + (phi[0] - phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
-    } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const long double x0 = (0.5)*Q_02;
-        const long double x1 = (0.5)*Q_20;
+        finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+    } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const long double x0 = (0.5)*c2_Q;
+        const long double x1 = (0.5)*c6_Q;
         const long double x2 = x0 + x1;
-        const long double x3 = (0.5)*Q_12;
-        const long double x4 = (0.5)*Q_21 + x3;
-        const long double x5 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5;
-        const long double x6 = (0.5)*Q_22 - x5;
+        const long double x3 = (0.5)*c5_Q;
+        const long double x4 = (0.5)*c7_Q + x3;
+        const long double x5 = (0.5)*c0_Q + (0.5)*c4_Q - 0.5;
+        const long double x6 = (0.5)*c8_Q - x5;
         const long double x7 = (x2*x2) + (x4*x4) + (x6*x6);
         const long double x8 = x0 - x1;
-        const long double x9 = (0.5)*Q_21 - x3;
-        const long double x10 = -0.5*Q_01 + (0.5)*Q_10;
+        const long double x9 = (0.5)*c7_Q - x3;
+        const long double x10 = -0.5*c1_Q + (0.5)*c3_Q;
         const long double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))/sqrtl(x7);
-        e[0] = (double)(x11*x2);
-        e[1] = (double)(x11*x4);
-        e[2] = (double)(x11*x6);
-        phi[0] = (double)(atan2l(sqrtl((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5));
+        out_e[0] = (double)(x11*x2);
+        out_e[1] = (double)(x11*x4);
+        out_e[2] = (double)(x11*x6);
+        out_phi[0] = (double)(atan2l(sqrtl((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*c8_Q + x5));
         singular |= (x7) == 0.0L;
-        finite = (((x11 - x11) + (phi[0] - phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
-    } else if (Q_02 >= Q_20 && Q_10 >= Q_01 && Q_21 >= Q_12 && Q_02 <= Q_20 && Q_10 <= Q_01 && Q_21 <= Q_12 && Q_00 + Q_11 + Q_22 > 1.0) {
-        e[0] = (double)(1.0);
-        e[1] = (double)(0.0);
-        e[2] = (double)(0.0);
-        phi[0] = (double)(0.0);
+        finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+    } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0) {
+        out_e[0] = (double)(1.0);
+        out_e[1] = (double)(0.0);
+        out_e[2] = (double)(0.0);
+        out_phi[0] = (double)(0.0);
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
-        const long double x0 = -0.5*Q_12 + (0.5)*Q_21;
-        const long double x1 = -0.5*Q_01 + (0.5)*Q_10;
-        const long double x2 = (0.5)*Q_02 - 0.5*Q_20;
+        const long double x0 = -0.5*c5_Q + (0.5)*c7_Q;
+        const long double x1 = -0.5*c1_Q + (0.5)*c3_Q;
+        const long double x2 = (0.5)*c2_Q - 0.5*c6_Q;
         const long double x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const long double x4 = sqrtl(x3);
         const long double x5 = 1.0/x4;
-        e[0] = (double)(x0*x5);
-        e[1] = (double)(x2*x5);
-        e[2] = (double)(x1*x5);
-        phi[0] = (double)(atan2l(x4, (0.5)*Q_00 + (0.5)*Q_11 + (0.5)*Q_22 - 0.5));
+        out_e[0] = (double)(x0*x5);
+        out_e[1] = (double)(x2*x5);
+        out_e[2] = (double)(x1*x5);
+        out_phi[0] = (double)(atan2l(x4, (0.5)*c0_Q + (0.5)*c4_Q + (0.5)*c8_Q - 0.5));
         singular |= (x3) == 0.0L;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
-    finite += (long double)((((e[0] - e[0]) + (e[1] - e[1])) + ((e[2] - e[2]) + (phi[0] - phi[0]))));
+    finite += (long double)((((out_e[0] - out_e[0]) + (out_e[1] - out_e[1])) + ((out_e[2] - out_e[2]) + (out_phi[0] - out_phi[0]))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        e[0] = (double)NAN;
-        e[1] = (double)NAN;
-        e[2] = (double)NAN;
-        phi[0] = (double)NAN;
+        out_e[0] = (double)NAN;
+        out_e[1] = (double)NAN;
+        out_e[2] = (double)NAN;
+        out_phi[0] = (double)NAN;
     }
     return status;
 }
@@ -132,97 +132,97 @@ static int rigidsym_c_natural_invariants_from_rotation_wide(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_natural_invariants_from_rotation evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
-    const double Q[9],
-    double e[3],
-    double *phi)
+    const double in_Q[9],
+    double out_e[3],
+    double *out_phi)
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double Q_00 = Q[0];
-    const double Q_01 = Q[1];
-    const double Q_02 = Q[2];
-    const double Q_10 = Q[3];
-    const double Q_11 = Q[4];
-    const double Q_12 = Q[5];
-    const double Q_20 = Q[6];
-    const double Q_21 = Q[7];
-    const double Q_22 = Q[8];
-    if (Q_00 >= Q_11 && Q_00 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const double x0 = (0.5)*Q_00;
-        const double x1 = (0.5)*Q_11;
-        const double x2 = (0.5)*Q_22;
+    const double c0_Q = in_Q[0];
+    const double c1_Q = in_Q[1];
+    const double c2_Q = in_Q[2];
+    const double c3_Q = in_Q[3];
+    const double c4_Q = in_Q[4];
+    const double c5_Q = in_Q[5];
+    const double c6_Q = in_Q[6];
+    const double c7_Q = in_Q[7];
+    const double c8_Q = in_Q[8];
+    if (c0_Q >= c4_Q && c0_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const double x0 = (0.5)*c0_Q;
+        const double x1 = (0.5)*c4_Q;
+        const double x2 = (0.5)*c8_Q;
         const double x3 = x0 - x1 - x2 + 0.5;
-        const double x4 = (0.5)*Q_01;
-        const double x5 = (0.5)*Q_10 + x4;
-        const double x6 = (0.5)*Q_02;
-        const double x7 = (0.5)*Q_20;
+        const double x4 = (0.5)*c1_Q;
+        const double x5 = (0.5)*c3_Q + x4;
+        const double x6 = (0.5)*c2_Q;
+        const double x7 = (0.5)*c6_Q;
         const double x8 = x6 + x7;
         const double x9 = (x3*x3) + (x5*x5) + (x8*x8);
-        const double x10 = (0.5)*Q_10 - x4;
+        const double x10 = (0.5)*c3_Q - x4;
         const double x11 = x6 - x7;
-        const double x12 = -0.5*Q_12 + (0.5)*Q_21;
+        const double x12 = -0.5*c5_Q + (0.5)*c7_Q;
         const double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(x9);
-        e[0] = x13*x3;
-        e[1] = x13*x5;
-        e[2] = x13*x8;
-        phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
+        out_e[0] = x13*x3;
+        out_e[1] = x13*x5;
+        out_e[2] = x13*x8;
+        out_phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
         singular |= (x9) == 0.0;
-        finite = (((x13 - x13) + (phi[0] - phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
-    } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const double x0 = (0.5)*Q_01;
-        const double x1 = (0.5)*Q_10 + x0;
-        const double x2 = (0.5)*Q_12;
-        const double x3 = (0.5)*Q_21 + x2;
-        const double x4 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5;
-        const double x5 = (0.5)*Q_11 - x4;
+        finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+    } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const double x0 = (0.5)*c1_Q;
+        const double x1 = (0.5)*c3_Q + x0;
+        const double x2 = (0.5)*c5_Q;
+        const double x3 = (0.5)*c7_Q + x2;
+        const double x4 = (0.5)*c0_Q + (0.5)*c8_Q - 0.5;
+        const double x5 = (0.5)*c4_Q - x4;
         const double x6 = (x1*x1) + (x3*x3) + (x5*x5);
-        const double x7 = (0.5)*Q_10 - x0;
-        const double x8 = (0.5)*Q_21 - x2;
-        const double x9 = (0.5)*Q_02 - 0.5*Q_20;
+        const double x7 = (0.5)*c3_Q - x0;
+        const double x8 = (0.5)*c7_Q - x2;
+        const double x9 = (0.5)*c2_Q - 0.5*c6_Q;
         const double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x6);
-        e[0] = x1*x10;
-        e[1] = x10*x5;
-        e[2] = x10*x3;
-        phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4);
+        out_e[0] = x1*x10;
+        out_e[1] = x10*x5;
+        out_e[2] = x10*x3;
+        out_phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*c4_Q + x4);
         singular |= (x6) == 0.0;
-        finite = (((x10 - x10) + (phi[0] - phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
-    } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const double x0 = (0.5)*Q_02;
-        const double x1 = (0.5)*Q_20;
+        finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+    } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const double x0 = (0.5)*c2_Q;
+        const double x1 = (0.5)*c6_Q;
         const double x2 = x0 + x1;
-        const double x3 = (0.5)*Q_12;
-        const double x4 = (0.5)*Q_21 + x3;
-        const double x5 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5;
-        const double x6 = (0.5)*Q_22 - x5;
+        const double x3 = (0.5)*c5_Q;
+        const double x4 = (0.5)*c7_Q + x3;
+        const double x5 = (0.5)*c0_Q + (0.5)*c4_Q - 0.5;
+        const double x6 = (0.5)*c8_Q - x5;
         const double x7 = (x2*x2) + (x4*x4) + (x6*x6);
         const double x8 = x0 - x1;
-        const double x9 = (0.5)*Q_21 - x3;
-        const double x10 = -0.5*Q_01 + (0.5)*Q_10;
+        const double x9 = (0.5)*c7_Q - x3;
+        const double x10 = -0.5*c1_Q + (0.5)*c3_Q;
         const double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))/sqrt(x7);
-        e[0] = x11*x2;
-        e[1] = x11*x4;
-        e[2] = x11*x6;
-        phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5);
+        out_e[0] = x11*x2;
+        out_e[1] = x11*x4;
+        out_e[2] = x11*x6;
+        out_phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*c8_Q + x5);
         singular |= (x7) == 0.0;
-        finite = (((x11 - x11) + (phi[0] - phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
-    } else if (Q_02 >= Q_20 && Q_10 >= Q_01 && Q_21 >= Q_12 && Q_02 <= Q_20 && Q_10 <= Q_01 && Q_21 <= Q_12 && Q_00 + Q_11 + Q_22 > 1.0) {
-        e[0] = 1.0;
-        e[1] = 0.0;
-        e[2] = 0.0;
-        phi[0] = 0.0;
+        finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+    } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0) {
+        out_e[0] = 1.0;
+        out_e[1] = 0.0;
+        out_e[2] = 0.0;
+        out_phi[0] = 0.0;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
-        const double x0 = -0.5*Q_12 + (0.5)*Q_21;
-        const double x1 = -0.5*Q_01 + (0.5)*Q_10;
-        const double x2 = (0.5)*Q_02 - 0.5*Q_20;
+        const double x0 = -0.5*c5_Q + (0.5)*c7_Q;
+        const double x1 = -0.5*c1_Q + (0.5)*c3_Q;
+        const double x2 = (0.5)*c2_Q - 0.5*c6_Q;
         const double x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const double x4 = sqrt(x3);
         const double x5 = 1.0/x4;
-        e[0] = x0*x5;
-        e[1] = x2*x5;
-        e[2] = x1*x5;
-        phi[0] = atan2(x4, (0.5)*Q_00 + (0.5)*Q_11 + (0.5)*Q_22 - 0.5);
+        out_e[0] = x0*x5;
+        out_e[1] = x2*x5;
+        out_e[2] = x1*x5;
+        out_phi[0] = atan2(x4, (0.5)*c0_Q + (0.5)*c4_Q + (0.5)*c8_Q - 0.5);
         singular |= (x3) == 0.0;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
@@ -230,18 +230,18 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((e[0] + e[1]) + (e[2] + phi[0]));
+        const double s_ = ((out_e[0] + out_e[1]) + (out_e[2] + out_phi[0]));
         if (!(s_ - s_ == 0.0))
-            finite += (((e[0] - e[0]) + (e[1] - e[1])) + ((e[2] - e[2]) + (phi[0] - phi[0])));
+            finite += (((out_e[0] - out_e[0]) + (out_e[1] - out_e[1])) + ((out_e[2] - out_e[2]) + (out_phi[0] - out_phi[0])));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        e[0] = (double)NAN;
-        e[1] = (double)NAN;
-        e[2] = (double)NAN;
-        phi[0] = (double)NAN;
+        out_e[0] = (double)NAN;
+        out_e[1] = (double)NAN;
+        out_e[2] = (double)NAN;
+        out_phi[0] = (double)NAN;
     }
     return status;
 }
@@ -249,9 +249,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_natural_invariants_from_rotation_plain_p)(
-    const double Q[9],
-    double e[3],
-    double *phi)
+    const double in_Q[9],
+    double out_e[3],
+    double *out_phi)
 = rigidsym_c_natural_invariants_from_rotation_plain;
 #endif
 
@@ -262,9 +262,9 @@ static int (*const volatile rigidsym_c_natural_invariants_from_rotation_plain_p)
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_natural_invariants_from_rotation saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
-    const double Q[9],
-    double e[3],
-    double *phi)
+    const double in_Q[9],
+    double out_e[3],
+    double *out_phi)
 {
     const double *args[1];
     const int sizes[1] = {9};
@@ -272,7 +272,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = Q;
+    args[0] = in_Q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -285,7 +285,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_natural_invariants_from_rotation_wide(Q, e, phi);
+        status = rigidsym_c_natural_invariants_from_rotation_wide(in_Q, out_e, out_phi);
         done_ = 1;
     }
 #endif
@@ -293,13 +293,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_natural_invariants_from_rotation_plain_p)(Q, e, phi);
+        r_ = (*rigidsym_c_natural_invariants_from_rotation_plain_p)(in_Q, out_e, out_phi);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_natural_invariants_from_rotation_plain(Q, e, phi);
+        status |= rigidsym_c_natural_invariants_from_rotation_plain(in_Q, out_e, out_phi);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -308,8 +308,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
-    const double Q[9],
-    double e[3],    double *phi)
+    const double in_Q[9],
+    double out_e[3],    double *out_phi)
 
 {
     int status = 0, singular = 0;
@@ -318,23 +318,23 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q), _mm_load_sd(Q + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 2), _mm_load_sd(Q + 2 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 4), _mm_load_sd(Q + 4 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(Q + 6), _mm_load_sd(Q + 6 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&Q[8], 0.0))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_Q), _mm_load_sd(in_Q + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_Q + 2), _mm_load_sd(in_Q + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_Q + 4), _mm_load_sd(in_Q + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_Q + 6), _mm_load_sd(in_Q + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_Q[8], 0.0))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_natural_invariants_from_rotation_odd(Q, e, phi);
+            return rigidsym_c_natural_invariants_from_rotation_odd(in_Q, out_e, out_phi);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(Q));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(Q + 2));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(Q + 4));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(Q + 6));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_Q));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_Q + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_Q + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_Q + 6));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&Q[8]), 0};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_Q[8]), 0};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         odd = oddv_[0] | oddv_[1];
@@ -345,99 +345,99 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, Q[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_Q[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_natural_invariants_from_rotation_odd(Q, e, phi);
+            return rigidsym_c_natural_invariants_from_rotation_odd(in_Q, out_e, out_phi);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_natural_invariants_from_rotation_odd(Q, e, phi);
+        return rigidsym_c_natural_invariants_from_rotation_odd(in_Q, out_e, out_phi);
 #endif
-    const double Q_00 = Q[0];
-    const double Q_01 = Q[1];
-    const double Q_02 = Q[2];
-    const double Q_10 = Q[3];
-    const double Q_11 = Q[4];
-    const double Q_12 = Q[5];
-    const double Q_20 = Q[6];
-    const double Q_21 = Q[7];
-    const double Q_22 = Q[8];
-    if (Q_00 >= Q_11 && Q_00 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const double x0 = (0.5)*Q_00;
-        const double x1 = (0.5)*Q_11;
-        const double x2 = (0.5)*Q_22;
+    const double c0_Q = in_Q[0];
+    const double c1_Q = in_Q[1];
+    const double c2_Q = in_Q[2];
+    const double c3_Q = in_Q[3];
+    const double c4_Q = in_Q[4];
+    const double c5_Q = in_Q[5];
+    const double c6_Q = in_Q[6];
+    const double c7_Q = in_Q[7];
+    const double c8_Q = in_Q[8];
+    if (c0_Q >= c4_Q && c0_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const double x0 = (0.5)*c0_Q;
+        const double x1 = (0.5)*c4_Q;
+        const double x2 = (0.5)*c8_Q;
         const double x3 = x0 - x1 - x2 + 0.5;
-        const double x4 = (0.5)*Q_01;
-        const double x5 = (0.5)*Q_10 + x4;
-        const double x6 = (0.5)*Q_02;
-        const double x7 = (0.5)*Q_20;
+        const double x4 = (0.5)*c1_Q;
+        const double x5 = (0.5)*c3_Q + x4;
+        const double x6 = (0.5)*c2_Q;
+        const double x7 = (0.5)*c6_Q;
         const double x8 = x6 + x7;
         const double x9 = (x3*x3) + (x5*x5) + (x8*x8);
-        const double x10 = (0.5)*Q_10 - x4;
+        const double x10 = (0.5)*c3_Q - x4;
         const double x11 = x6 - x7;
-        const double x12 = -0.5*Q_12 + (0.5)*Q_21;
+        const double x12 = -0.5*c5_Q + (0.5)*c7_Q;
         const double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(x9);
-        e[0] = x13*x3;
-        e[1] = x13*x5;
-        e[2] = x13*x8;
-        phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
+        out_e[0] = x13*x3;
+        out_e[1] = x13*x5;
+        out_e[2] = x13*x8;
+        out_phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
         singular |= (x9) == 0.0;
-        finite = (((x13 - x13) + (phi[0] - phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
-    } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const double x0 = (0.5)*Q_01;
-        const double x1 = (0.5)*Q_10 + x0;
-        const double x2 = (0.5)*Q_12;
-        const double x3 = (0.5)*Q_21 + x2;
-        const double x4 = (0.5)*Q_00 + (0.5)*Q_22 - 0.5;
-        const double x5 = (0.5)*Q_11 - x4;
+        finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+    } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const double x0 = (0.5)*c1_Q;
+        const double x1 = (0.5)*c3_Q + x0;
+        const double x2 = (0.5)*c5_Q;
+        const double x3 = (0.5)*c7_Q + x2;
+        const double x4 = (0.5)*c0_Q + (0.5)*c8_Q - 0.5;
+        const double x5 = (0.5)*c4_Q - x4;
         const double x6 = (x1*x1) + (x3*x3) + (x5*x5);
-        const double x7 = (0.5)*Q_10 - x0;
-        const double x8 = (0.5)*Q_21 - x2;
-        const double x9 = (0.5)*Q_02 - 0.5*Q_20;
+        const double x7 = (0.5)*c3_Q - x0;
+        const double x8 = (0.5)*c7_Q - x2;
+        const double x9 = (0.5)*c2_Q - 0.5*c6_Q;
         const double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x6);
-        e[0] = x1*x10;
-        e[1] = x10*x5;
-        e[2] = x10*x3;
-        phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*Q_11 + x4);
+        out_e[0] = x1*x10;
+        out_e[1] = x10*x5;
+        out_e[2] = x10*x3;
+        out_phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*c4_Q + x4);
         singular |= (x6) == 0.0;
-        finite = (((x10 - x10) + (phi[0] - phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
-    } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0) {
-        const double x0 = (0.5)*Q_02;
-        const double x1 = (0.5)*Q_20;
+        finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+    } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0) {
+        const double x0 = (0.5)*c2_Q;
+        const double x1 = (0.5)*c6_Q;
         const double x2 = x0 + x1;
-        const double x3 = (0.5)*Q_12;
-        const double x4 = (0.5)*Q_21 + x3;
-        const double x5 = (0.5)*Q_00 + (0.5)*Q_11 - 0.5;
-        const double x6 = (0.5)*Q_22 - x5;
+        const double x3 = (0.5)*c5_Q;
+        const double x4 = (0.5)*c7_Q + x3;
+        const double x5 = (0.5)*c0_Q + (0.5)*c4_Q - 0.5;
+        const double x6 = (0.5)*c8_Q - x5;
         const double x7 = (x2*x2) + (x4*x4) + (x6*x6);
         const double x8 = x0 - x1;
-        const double x9 = (0.5)*Q_21 - x3;
-        const double x10 = -0.5*Q_01 + (0.5)*Q_10;
+        const double x9 = (0.5)*c7_Q - x3;
+        const double x10 = -0.5*c1_Q + (0.5)*c3_Q;
         const double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))/sqrt(x7);
-        e[0] = x11*x2;
-        e[1] = x11*x4;
-        e[2] = x11*x6;
-        phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*Q_22 + x5);
+        out_e[0] = x11*x2;
+        out_e[1] = x11*x4;
+        out_e[2] = x11*x6;
+        out_phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*c8_Q + x5);
         singular |= (x7) == 0.0;
-        finite = (((x11 - x11) + (phi[0] - phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
-    } else if (Q_02 >= Q_20 && Q_10 >= Q_01 && Q_21 >= Q_12 && Q_02 <= Q_20 && Q_10 <= Q_01 && Q_21 <= Q_12 && Q_00 + Q_11 + Q_22 > 1.0) {
-        e[0] = 1.0;
-        e[1] = 0.0;
-        e[2] = 0.0;
-        phi[0] = 0.0;
+        finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+    } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0) {
+        out_e[0] = 1.0;
+        out_e[1] = 0.0;
+        out_e[2] = 0.0;
+        out_phi[0] = 0.0;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
-        const double x0 = -0.5*Q_12 + (0.5)*Q_21;
-        const double x1 = -0.5*Q_01 + (0.5)*Q_10;
-        const double x2 = (0.5)*Q_02 - 0.5*Q_20;
+        const double x0 = -0.5*c5_Q + (0.5)*c7_Q;
+        const double x1 = -0.5*c1_Q + (0.5)*c3_Q;
+        const double x2 = (0.5)*c2_Q - 0.5*c6_Q;
         const double x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const double x4 = sqrt(x3);
         const double x5 = 1.0/x4;
-        e[0] = x0*x5;
-        e[1] = x2*x5;
-        e[2] = x1*x5;
-        phi[0] = atan2(x4, (0.5)*Q_00 + (0.5)*Q_11 + (0.5)*Q_22 - 0.5);
+        out_e[0] = x0*x5;
+        out_e[1] = x2*x5;
+        out_e[2] = x1*x5;
+        out_phi[0] = atan2(x4, (0.5)*c0_Q + (0.5)*c4_Q + (0.5)*c8_Q - 0.5);
         singular |= (x3) == 0.0;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
@@ -445,18 +445,18 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((e[0] + e[1]) + (e[2] + phi[0]));
+        const double s_ = ((out_e[0] + out_e[1]) + (out_e[2] + out_phi[0]));
         if (!(s_ - s_ == 0.0))
-            finite += (((e[0] - e[0]) + (e[1] - e[1])) + ((e[2] - e[2]) + (phi[0] - phi[0])));
+            finite += (((out_e[0] - out_e[0]) + (out_e[1] - out_e[1])) + ((out_e[2] - out_e[2]) + (out_phi[0] - out_phi[0])));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        e[0] = (double)NAN;
-        e[1] = (double)NAN;
-        e[2] = (double)NAN;
-        phi[0] = (double)NAN;
+        out_e[0] = (double)NAN;
+        out_e[1] = (double)NAN;
+        out_e[2] = (double)NAN;
+        out_phi[0] = (double)NAN;
     }
     return status;
 }
@@ -464,18 +464,18 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
 
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_batch(
     size_t count,
-    const double *Q,
-    double *e,
-    double *phi,
+    const double *in_Q,
+    double *out_e,
+    double *out_phi,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_natural_invariants_from_rotation(
-            Q + 9 * i_,
-            e + 3 * i_,
-            phi + 1 * i_);
+            in_Q + 9 * i_,
+            out_e + 3 * i_,
+            out_phi + 1 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -488,97 +488,97 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_batch(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_natural_invariants_from_rotation_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain(
-    const float Q[9],
-    float e[3],
-    float *phi)
+    const float in_Q[9],
+    float out_e[3],
+    float *out_phi)
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float Q_00 = Q[0];
-    const float Q_01 = Q[1];
-    const float Q_02 = Q[2];
-    const float Q_10 = Q[3];
-    const float Q_11 = Q[4];
-    const float Q_12 = Q[5];
-    const float Q_20 = Q[6];
-    const float Q_21 = Q[7];
-    const float Q_22 = Q[8];
-    if (Q_00 >= Q_11 && Q_00 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0f) {
-        const float x0 = (0.5f)*Q_00;
-        const float x1 = (0.5f)*Q_11;
-        const float x2 = (0.5f)*Q_22;
+    const float c0_Q = in_Q[0];
+    const float c1_Q = in_Q[1];
+    const float c2_Q = in_Q[2];
+    const float c3_Q = in_Q[3];
+    const float c4_Q = in_Q[4];
+    const float c5_Q = in_Q[5];
+    const float c6_Q = in_Q[6];
+    const float c7_Q = in_Q[7];
+    const float c8_Q = in_Q[8];
+    if (c0_Q >= c4_Q && c0_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
+        const float x0 = (0.5f)*c0_Q;
+        const float x1 = (0.5f)*c4_Q;
+        const float x2 = (0.5f)*c8_Q;
         const float x3 = x0 - x1 - x2 + 0.5f;
-        const float x4 = (0.5f)*Q_01;
-        const float x5 = (0.5f)*Q_10 + x4;
-        const float x6 = (0.5f)*Q_02;
-        const float x7 = (0.5f)*Q_20;
+        const float x4 = (0.5f)*c1_Q;
+        const float x5 = (0.5f)*c3_Q + x4;
+        const float x6 = (0.5f)*c2_Q;
+        const float x7 = (0.5f)*c6_Q;
         const float x8 = x6 + x7;
         const float x9 = (x3*x3) + (x5*x5) + (x8*x8);
-        const float x10 = (0.5f)*Q_10 - x4;
+        const float x10 = (0.5f)*c3_Q - x4;
         const float x11 = x6 - x7;
-        const float x12 = -0.5f*Q_12 + (0.5f)*Q_21;
+        const float x12 = -0.5f*c5_Q + (0.5f)*c7_Q;
         const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
-        e[0] = x13*x3;
-        e[1] = x13*x5;
-        e[2] = x13*x8;
-        phi[0] = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
+        out_e[0] = x13*x3;
+        out_e[1] = x13*x5;
+        out_e[2] = x13*x8;
+        out_phi[0] = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
         singular |= (x9) == 0.0f;
-        finite = (((x13 - x13) + (phi[0] - phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
-    } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0f) {
-        const float x0 = (0.5f)*Q_01;
-        const float x1 = (0.5f)*Q_10 + x0;
-        const float x2 = (0.5f)*Q_12;
-        const float x3 = (0.5f)*Q_21 + x2;
-        const float x4 = (0.5f)*Q_00 + (0.5f)*Q_22 - 0.5f;
-        const float x5 = (0.5f)*Q_11 - x4;
+        finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+    } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
+        const float x0 = (0.5f)*c1_Q;
+        const float x1 = (0.5f)*c3_Q + x0;
+        const float x2 = (0.5f)*c5_Q;
+        const float x3 = (0.5f)*c7_Q + x2;
+        const float x4 = (0.5f)*c0_Q + (0.5f)*c8_Q - 0.5f;
+        const float x5 = (0.5f)*c4_Q - x4;
         const float x6 = (x1*x1) + (x3*x3) + (x5*x5);
-        const float x7 = (0.5f)*Q_10 - x0;
-        const float x8 = (0.5f)*Q_21 - x2;
-        const float x9 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x7 = (0.5f)*c3_Q - x0;
+        const float x8 = (0.5f)*c7_Q - x2;
+        const float x9 = (0.5f)*c2_Q - 0.5f*c6_Q;
         const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x6);
-        e[0] = x1*x10;
-        e[1] = x10*x5;
-        e[2] = x10*x3;
-        phi[0] = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*Q_11 + x4);
+        out_e[0] = x1*x10;
+        out_e[1] = x10*x5;
+        out_e[2] = x10*x3;
+        out_phi[0] = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*c4_Q + x4);
         singular |= (x6) == 0.0f;
-        finite = (((x10 - x10) + (phi[0] - phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
-    } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0f) {
-        const float x0 = (0.5f)*Q_02;
-        const float x1 = (0.5f)*Q_20;
+        finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+    } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
+        const float x0 = (0.5f)*c2_Q;
+        const float x1 = (0.5f)*c6_Q;
         const float x2 = x0 + x1;
-        const float x3 = (0.5f)*Q_12;
-        const float x4 = (0.5f)*Q_21 + x3;
-        const float x5 = (0.5f)*Q_00 + (0.5f)*Q_11 - 0.5f;
-        const float x6 = (0.5f)*Q_22 - x5;
+        const float x3 = (0.5f)*c5_Q;
+        const float x4 = (0.5f)*c7_Q + x3;
+        const float x5 = (0.5f)*c0_Q + (0.5f)*c4_Q - 0.5f;
+        const float x6 = (0.5f)*c8_Q - x5;
         const float x7 = (x2*x2) + (x4*x4) + (x6*x6);
         const float x8 = x0 - x1;
-        const float x9 = (0.5f)*Q_21 - x3;
-        const float x10 = -0.5f*Q_01 + (0.5f)*Q_10;
+        const float x9 = (0.5f)*c7_Q - x3;
+        const float x10 = -0.5f*c1_Q + (0.5f)*c3_Q;
         const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
-        e[0] = x11*x2;
-        e[1] = x11*x4;
-        e[2] = x11*x6;
-        phi[0] = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*Q_22 + x5);
+        out_e[0] = x11*x2;
+        out_e[1] = x11*x4;
+        out_e[2] = x11*x6;
+        out_phi[0] = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*c8_Q + x5);
         singular |= (x7) == 0.0f;
-        finite = (((x11 - x11) + (phi[0] - phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
-    } else if (Q_02 >= Q_20 && Q_10 >= Q_01 && Q_21 >= Q_12 && Q_02 <= Q_20 && Q_10 <= Q_01 && Q_21 <= Q_12 && Q_00 + Q_11 + Q_22 > 1.0f) {
-        e[0] = 1.0f;
-        e[1] = 0.0f;
-        e[2] = 0.0f;
-        phi[0] = 0.0f;
+        finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+    } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0f) {
+        out_e[0] = 1.0f;
+        out_e[1] = 0.0f;
+        out_e[2] = 0.0f;
+        out_phi[0] = 0.0f;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
-        const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const float x1 = -0.5f*Q_01 + (0.5f)*Q_10;
-        const float x2 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x0 = -0.5f*c5_Q + (0.5f)*c7_Q;
+        const float x1 = -0.5f*c1_Q + (0.5f)*c3_Q;
+        const float x2 = (0.5f)*c2_Q - 0.5f*c6_Q;
         const float x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const float x4 = sqrtf(x3);
         const float x5 = 1.0f/x4;
-        e[0] = x0*x5;
-        e[1] = x2*x5;
-        e[2] = x1*x5;
-        phi[0] = atan2f(x4, (0.5f)*Q_00 + (0.5f)*Q_11 + (0.5f)*Q_22 - 0.5f);
+        out_e[0] = x0*x5;
+        out_e[1] = x2*x5;
+        out_e[2] = x1*x5;
+        out_phi[0] = atan2f(x4, (0.5f)*c0_Q + (0.5f)*c4_Q + (0.5f)*c8_Q - 0.5f);
         singular |= (x3) == 0.0f;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
@@ -586,18 +586,18 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((e[0] + e[1]) + (e[2] + phi[0]));
+        const float s_ = ((out_e[0] + out_e[1]) + (out_e[2] + out_phi[0]));
         if (!(s_ - s_ == 0.0f))
-            finite += (((e[0] - e[0]) + (e[1] - e[1])) + ((e[2] - e[2]) + (phi[0] - phi[0])));
+            finite += (((out_e[0] - out_e[0]) + (out_e[1] - out_e[1])) + ((out_e[2] - out_e[2]) + (out_phi[0] - out_phi[0])));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        e[0] = NAN;
-        e[1] = NAN;
-        e[2] = NAN;
-        phi[0] = NAN;
+        out_e[0] = NAN;
+        out_e[1] = NAN;
+        out_e[2] = NAN;
+        out_phi[0] = NAN;
     }
     return status;
 }
@@ -605,9 +605,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_natural_invariants_from_rotation_f32_plain_p)(
-    const float Q[9],
-    float e[3],
-    float *phi)
+    const float in_Q[9],
+    float out_e[3],
+    float *out_phi)
 = rigidsym_c_natural_invariants_from_rotation_f32_plain;
 #endif
 
@@ -618,9 +618,9 @@ static int (*const volatile rigidsym_c_natural_invariants_from_rotation_f32_plai
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_natural_invariants_from_rotation_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
-    const float Q[9],
-    float e[3],
-    float *phi)
+    const float in_Q[9],
+    float out_e[3],
+    float *out_phi)
 {
     const float *args[1];
     const int sizes[1] = {9};
@@ -628,7 +628,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = Q;
+    args[0] = in_Q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -643,13 +643,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_natural_invariants_from_rotation_f32_plain_p)(Q, e, phi);
+        r_ = (*rigidsym_c_natural_invariants_from_rotation_f32_plain_p)(in_Q, out_e, out_phi);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_natural_invariants_from_rotation_f32_plain(Q, e, phi);
+        status |= rigidsym_c_natural_invariants_from_rotation_f32_plain(in_Q, out_e, out_phi);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -658,8 +658,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
-    const float Q[9],
-    float e[3],    float *phi)
+    const float in_Q[9],
+    float out_e[3],    float *out_phi)
 
 {
     int status = 0, singular = 0;
@@ -668,19 +668,19 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q), *(Q + 1), *(Q + 2), *(Q + 3))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(Q + 4), *(Q + 4 + 1), *(Q + 4 + 2), *(Q + 4 + 3)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&Q[8], 0.0f, 0.0f, 0.0f))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_Q), *(in_Q + 1), *(in_Q + 2), *(in_Q + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_Q + 4), *(in_Q + 4 + 1), *(in_Q + 4 + 2), *(in_Q + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_Q[8], 0.0f, 0.0f, 0.0f))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_natural_invariants_from_rotation_f32_odd(Q, e, phi);
+            return rigidsym_c_natural_invariants_from_rotation_f32_odd(in_Q, out_e, out_phi);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(Q));
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(Q + 4));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_Q));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_Q + 4));
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&Q[8]), 0, 0, 0};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_Q[8]), 0, 0, 0};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -691,99 +691,99 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, Q[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_Q[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_natural_invariants_from_rotation_f32_odd(Q, e, phi);
+            return rigidsym_c_natural_invariants_from_rotation_f32_odd(in_Q, out_e, out_phi);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_natural_invariants_from_rotation_f32_odd(Q, e, phi);
+        return rigidsym_c_natural_invariants_from_rotation_f32_odd(in_Q, out_e, out_phi);
 #endif
-    const float Q_00 = Q[0];
-    const float Q_01 = Q[1];
-    const float Q_02 = Q[2];
-    const float Q_10 = Q[3];
-    const float Q_11 = Q[4];
-    const float Q_12 = Q[5];
-    const float Q_20 = Q[6];
-    const float Q_21 = Q[7];
-    const float Q_22 = Q[8];
-    if (Q_00 >= Q_11 && Q_00 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0f) {
-        const float x0 = (0.5f)*Q_00;
-        const float x1 = (0.5f)*Q_11;
-        const float x2 = (0.5f)*Q_22;
+    const float c0_Q = in_Q[0];
+    const float c1_Q = in_Q[1];
+    const float c2_Q = in_Q[2];
+    const float c3_Q = in_Q[3];
+    const float c4_Q = in_Q[4];
+    const float c5_Q = in_Q[5];
+    const float c6_Q = in_Q[6];
+    const float c7_Q = in_Q[7];
+    const float c8_Q = in_Q[8];
+    if (c0_Q >= c4_Q && c0_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
+        const float x0 = (0.5f)*c0_Q;
+        const float x1 = (0.5f)*c4_Q;
+        const float x2 = (0.5f)*c8_Q;
         const float x3 = x0 - x1 - x2 + 0.5f;
-        const float x4 = (0.5f)*Q_01;
-        const float x5 = (0.5f)*Q_10 + x4;
-        const float x6 = (0.5f)*Q_02;
-        const float x7 = (0.5f)*Q_20;
+        const float x4 = (0.5f)*c1_Q;
+        const float x5 = (0.5f)*c3_Q + x4;
+        const float x6 = (0.5f)*c2_Q;
+        const float x7 = (0.5f)*c6_Q;
         const float x8 = x6 + x7;
         const float x9 = (x3*x3) + (x5*x5) + (x8*x8);
-        const float x10 = (0.5f)*Q_10 - x4;
+        const float x10 = (0.5f)*c3_Q - x4;
         const float x11 = x6 - x7;
-        const float x12 = -0.5f*Q_12 + (0.5f)*Q_21;
+        const float x12 = -0.5f*c5_Q + (0.5f)*c7_Q;
         const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
-        e[0] = x13*x3;
-        e[1] = x13*x5;
-        e[2] = x13*x8;
-        phi[0] = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
+        out_e[0] = x13*x3;
+        out_e[1] = x13*x5;
+        out_e[2] = x13*x8;
+        out_phi[0] = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
         singular |= (x9) == 0.0f;
-        finite = (((x13 - x13) + (phi[0] - phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
-    } else if (Q_11 >= Q_00 && Q_11 >= Q_22 && Q_00 + Q_11 + Q_22 < 0.0f) {
-        const float x0 = (0.5f)*Q_01;
-        const float x1 = (0.5f)*Q_10 + x0;
-        const float x2 = (0.5f)*Q_12;
-        const float x3 = (0.5f)*Q_21 + x2;
-        const float x4 = (0.5f)*Q_00 + (0.5f)*Q_22 - 0.5f;
-        const float x5 = (0.5f)*Q_11 - x4;
+        finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
+    } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
+        const float x0 = (0.5f)*c1_Q;
+        const float x1 = (0.5f)*c3_Q + x0;
+        const float x2 = (0.5f)*c5_Q;
+        const float x3 = (0.5f)*c7_Q + x2;
+        const float x4 = (0.5f)*c0_Q + (0.5f)*c8_Q - 0.5f;
+        const float x5 = (0.5f)*c4_Q - x4;
         const float x6 = (x1*x1) + (x3*x3) + (x5*x5);
-        const float x7 = (0.5f)*Q_10 - x0;
-        const float x8 = (0.5f)*Q_21 - x2;
-        const float x9 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x7 = (0.5f)*c3_Q - x0;
+        const float x8 = (0.5f)*c7_Q - x2;
+        const float x9 = (0.5f)*c2_Q - 0.5f*c6_Q;
         const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x6);
-        e[0] = x1*x10;
-        e[1] = x10*x5;
-        e[2] = x10*x3;
-        phi[0] = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*Q_11 + x4);
+        out_e[0] = x1*x10;
+        out_e[1] = x10*x5;
+        out_e[2] = x10*x3;
+        out_phi[0] = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*c4_Q + x4);
         singular |= (x6) == 0.0f;
-        finite = (((x10 - x10) + (phi[0] - phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
-    } else if (Q_22 >= Q_00 && Q_22 >= Q_11 && Q_00 + Q_11 + Q_22 < 0.0f) {
-        const float x0 = (0.5f)*Q_02;
-        const float x1 = (0.5f)*Q_20;
+        finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
+    } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
+        const float x0 = (0.5f)*c2_Q;
+        const float x1 = (0.5f)*c6_Q;
         const float x2 = x0 + x1;
-        const float x3 = (0.5f)*Q_12;
-        const float x4 = (0.5f)*Q_21 + x3;
-        const float x5 = (0.5f)*Q_00 + (0.5f)*Q_11 - 0.5f;
-        const float x6 = (0.5f)*Q_22 - x5;
+        const float x3 = (0.5f)*c5_Q;
+        const float x4 = (0.5f)*c7_Q + x3;
+        const float x5 = (0.5f)*c0_Q + (0.5f)*c4_Q - 0.5f;
+        const float x6 = (0.5f)*c8_Q - x5;
         const float x7 = (x2*x2) + (x4*x4) + (x6*x6);
         const float x8 = x0 - x1;
-        const float x9 = (0.5f)*Q_21 - x3;
-        const float x10 = -0.5f*Q_01 + (0.5f)*Q_10;
+        const float x9 = (0.5f)*c7_Q - x3;
+        const float x10 = -0.5f*c1_Q + (0.5f)*c3_Q;
         const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
-        e[0] = x11*x2;
-        e[1] = x11*x4;
-        e[2] = x11*x6;
-        phi[0] = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*Q_22 + x5);
+        out_e[0] = x11*x2;
+        out_e[1] = x11*x4;
+        out_e[2] = x11*x6;
+        out_phi[0] = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*c8_Q + x5);
         singular |= (x7) == 0.0f;
-        finite = (((x11 - x11) + (phi[0] - phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
-    } else if (Q_02 >= Q_20 && Q_10 >= Q_01 && Q_21 >= Q_12 && Q_02 <= Q_20 && Q_10 <= Q_01 && Q_21 <= Q_12 && Q_00 + Q_11 + Q_22 > 1.0f) {
-        e[0] = 1.0f;
-        e[1] = 0.0f;
-        e[2] = 0.0f;
-        phi[0] = 0.0f;
+        finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
+    } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0f) {
+        out_e[0] = 1.0f;
+        out_e[1] = 0.0f;
+        out_e[2] = 0.0f;
+        out_phi[0] = 0.0f;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
-        const float x0 = -0.5f*Q_12 + (0.5f)*Q_21;
-        const float x1 = -0.5f*Q_01 + (0.5f)*Q_10;
-        const float x2 = (0.5f)*Q_02 - 0.5f*Q_20;
+        const float x0 = -0.5f*c5_Q + (0.5f)*c7_Q;
+        const float x1 = -0.5f*c1_Q + (0.5f)*c3_Q;
+        const float x2 = (0.5f)*c2_Q - 0.5f*c6_Q;
         const float x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const float x4 = sqrtf(x3);
         const float x5 = 1.0f/x4;
-        e[0] = x0*x5;
-        e[1] = x2*x5;
-        e[2] = x1*x5;
-        phi[0] = atan2f(x4, (0.5f)*Q_00 + (0.5f)*Q_11 + (0.5f)*Q_22 - 0.5f);
+        out_e[0] = x0*x5;
+        out_e[1] = x2*x5;
+        out_e[2] = x1*x5;
+        out_phi[0] = atan2f(x4, (0.5f)*c0_Q + (0.5f)*c4_Q + (0.5f)*c8_Q - 0.5f);
         singular |= (x3) == 0.0f;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
@@ -791,18 +791,18 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((e[0] + e[1]) + (e[2] + phi[0]));
+        const float s_ = ((out_e[0] + out_e[1]) + (out_e[2] + out_phi[0]));
         if (!(s_ - s_ == 0.0f))
-            finite += (((e[0] - e[0]) + (e[1] - e[1])) + ((e[2] - e[2]) + (phi[0] - phi[0])));
+            finite += (((out_e[0] - out_e[0]) + (out_e[1] - out_e[1])) + ((out_e[2] - out_e[2]) + (out_phi[0] - out_phi[0])));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        e[0] = NAN;
-        e[1] = NAN;
-        e[2] = NAN;
-        phi[0] = NAN;
+        out_e[0] = NAN;
+        out_e[1] = NAN;
+        out_e[2] = NAN;
+        out_phi[0] = NAN;
     }
     return status;
 }
@@ -810,18 +810,18 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
 
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32_batch(
     size_t count,
-    const float *Q,
-    float *e,
-    float *phi,
+    const float *in_Q,
+    float *out_e,
+    float *out_phi,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_natural_invariants_from_rotation_f32(
-            Q + 9 * i_,
-            e + 3 * i_,
-            phi + 1 * i_);
+            in_Q + 9 * i_,
+            out_e + 3 * i_,
+            out_phi + 1 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;

@@ -44,8 +44,8 @@ RIGIDSYM_C_BEGIN_DECLS
  * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
-    const double Q[9],
-    double e[3],    double *phi);
+    const double in_Q[9],
+    double out_e[3],    double *out_phi);
 
 
 /* natural_invariants_from_rotation in float arithmetic only (float literals, sinf/cosf/sqrtf: no
@@ -55,8 +55,8 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
  * rigidsym.codegen.accuracy.float_measure: worst 1.28 over 116 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
-    const float Q[9],
-    float e[3],    float *phi);
+    const float in_Q[9],
+    float out_e[3],    float *out_phi);
 
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
@@ -65,15 +65,15 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_batch(
     size_t count,
-    const double *Q,
-    double *e,
-    double *phi,
+    const double *in_Q,
+    double *out_e,
+    double *out_phi,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32_batch(
     size_t count,
-    const float *Q,
-    float *e,
-    float *phi,
+    const float *in_Q,
+    float *out_e,
+    float *out_phi,
     int *status);
 
 RIGIDSYM_C_END_DECLS

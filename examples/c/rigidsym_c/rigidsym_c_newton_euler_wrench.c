@@ -16,61 +16,61 @@
 /* rigidsym_c_newton_euler_wrench in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_newton_euler_wrench_wide(
-    const double I_C_in_[9],
-    double m_in_,
-    const double omega_in_[3],
-    const double omega_dot_in_[3],
-    const double c_ddot_in_[3],
-    double w[6])
+    const double w_I_C[9],
+    double w_m,
+    const double w_omega[3],
+    const double w_omega_dot[3],
+    const double w_c_ddot[3],
+    double out_w[6])
 {
-    const long double I_C_00 = I_C_in_[0];
-    const long double I_C_01 = I_C_in_[1];
-    const long double I_C_02 = I_C_in_[2];
-    const long double I_C_10 = I_C_in_[3];
-    const long double I_C_11 = I_C_in_[4];
-    const long double I_C_12 = I_C_in_[5];
-    const long double I_C_20 = I_C_in_[6];
-    const long double I_C_21 = I_C_in_[7];
-    const long double I_C_22 = I_C_in_[8];
-    const long double m = m_in_;
-    const long double omega_0 = omega_in_[0];
-    const long double omega_1 = omega_in_[1];
-    const long double omega_2 = omega_in_[2];
-    const long double omega_dot_0 = omega_dot_in_[0];
-    const long double omega_dot_1 = omega_dot_in_[1];
-    const long double omega_dot_2 = omega_dot_in_[2];
-    const long double c_ddot_0 = c_ddot_in_[0];
-    const long double c_ddot_1 = c_ddot_in_[1];
-    const long double c_ddot_2 = c_ddot_in_[2];
+    const long double c0_I_C = w_I_C[0];
+    const long double c1_I_C = w_I_C[1];
+    const long double c2_I_C = w_I_C[2];
+    const long double c3_I_C = w_I_C[3];
+    const long double c4_I_C = w_I_C[4];
+    const long double c5_I_C = w_I_C[5];
+    const long double c6_I_C = w_I_C[6];
+    const long double c7_I_C = w_I_C[7];
+    const long double c8_I_C = w_I_C[8];
+    const long double in_m = w_m;
+    const long double c0_omega = w_omega[0];
+    const long double c1_omega = w_omega[1];
+    const long double c2_omega = w_omega[2];
+    const long double c0_omega_dot = w_omega_dot[0];
+    const long double c1_omega_dot = w_omega_dot[1];
+    const long double c2_omega_dot = w_omega_dot[2];
+    const long double c0_c_ddot = w_c_ddot[0];
+    const long double c1_c_ddot = w_c_ddot[1];
+    const long double c2_c_ddot = w_c_ddot[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)I_C_in_;
-    (void)m_in_;
-    (void)omega_in_;
-    (void)omega_dot_in_;
-    (void)c_ddot_in_;
+    (void)w_I_C;
+    (void)w_m;
+    (void)w_omega;
+    (void)w_omega_dot;
+    (void)w_c_ddot;
     {
-        const long double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
-        const long double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
-        const long double x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
-        w[0] = (double)(I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1);
-        w[1] = (double)(I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2);
-        w[2] = (double)(I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2);
-        w[3] = (double)(c_ddot_0*m);
-        w[4] = (double)(c_ddot_1*m);
-        w[5] = (double)(c_ddot_2*m);
+        const long double x0 = c6_I_C*c0_omega + c7_I_C*c1_omega + c8_I_C*c2_omega;
+        const long double x1 = c3_I_C*c0_omega + c4_I_C*c1_omega + c5_I_C*c2_omega;
+        const long double x2 = c0_I_C*c0_omega + c1_I_C*c1_omega + c2_I_C*c2_omega;
+        out_w[0] = (double)(c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x0 - c2_omega*x1);
+        out_w[1] = (double)(c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x0 + c2_omega*x2);
+        out_w[2] = (double)(c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x1 - c1_omega*x2);
+        out_w[3] = (double)(c0_c_ddot*in_m);
+        out_w[4] = (double)(c1_c_ddot*in_m);
+        out_w[5] = (double)(c2_c_ddot*in_m);
     }
-    finite += (long double)((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5])))));
+    finite += (long double)((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5])))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = (double)NAN;
-        w[1] = (double)NAN;
-        w[2] = (double)NAN;
-        w[3] = (double)NAN;
-        w[4] = (double)NAN;
-        w[5] = (double)NAN;
+        out_w[0] = (double)NAN;
+        out_w[1] = (double)NAN;
+        out_w[2] = (double)NAN;
+        out_w[3] = (double)NAN;
+        out_w[4] = (double)NAN;
+        out_w[5] = (double)NAN;
     }
     return status;
 }
@@ -85,12 +85,12 @@ static int rigidsym_c_newton_euler_wrench_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6])
 {
     int status, still_;
     double finite;
@@ -100,13 +100,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_I_C[9];
-    double rs_m;
-    double rs_omega[3];
-    double rs_omega_dot[3];
-    double rs_c_ddot[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_I_C[9];
+    double sc_m;
+    double sc_omega[3];
+    double sc_omega_dot[3];
+    double sc_c_ddot[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -114,61 +113,61 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(I_C, 9))
+    if (rigidsym_c_subnormal_d(in_I_C, 9))
         return -1;
-    if (rigidsym_c_subnormal_d(&m, 1))
+    if (rigidsym_c_subnormal_d(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(omega, 3))
+    if (rigidsym_c_subnormal_d(in_omega, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(omega_dot, 3))
+    if (rigidsym_c_subnormal_d(in_omega_dot, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(c_ddot, 3))
+    if (rigidsym_c_subnormal_d(in_c_ddot, 3))
         return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(I_C, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
-    rs_k3_ = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(&in_m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(in_omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_d(in_c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_d(in_I_C, sc_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega_dot, sc_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_c_ddot, sc_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_d(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
-        finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+        status = rigidsym_c_newton_euler_wrench(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w);
+        status |= rigidsym_c_back_d(&out_w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[5], 2 * rs_k1_ + 2 * rs_k3_);
+        finite = (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(c_ddot, 3));
-    rs_k1_ = -(rigidsym_c_exponent_d(I_C, 9));
-    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1));
-    rs_k3_ = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k3_);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(in_I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(&in_m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_d(in_omega, 3));
+    still_ |= rigidsym_c_scale_d(in_I_C, sc_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_d(in_omega_dot, sc_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_d(in_c_ddot, sc_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_d(&w[0], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[1], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[2], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[3], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w[4], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w[5], rs_k0_ + rs_k2_);
-        finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+        status = rigidsym_c_newton_euler_wrench(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w);
+        status |= rigidsym_c_back_d(&out_w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[5], rs_k0_ + rs_k2_);
+        finite = (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -181,63 +180,63 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_newton_euler_wrench evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_plain(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double I_C_00 = I_C[0];
-    const double I_C_01 = I_C[1];
-    const double I_C_02 = I_C[2];
-    const double I_C_10 = I_C[3];
-    const double I_C_11 = I_C[4];
-    const double I_C_12 = I_C[5];
-    const double I_C_20 = I_C[6];
-    const double I_C_21 = I_C[7];
-    const double I_C_22 = I_C[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
-    const double omega_dot_0 = omega_dot[0];
-    const double omega_dot_1 = omega_dot[1];
-    const double omega_dot_2 = omega_dot[2];
-    const double c_ddot_0 = c_ddot[0];
-    const double c_ddot_1 = c_ddot[1];
-    const double c_ddot_2 = c_ddot[2];
+    const double c0_I_C = in_I_C[0];
+    const double c1_I_C = in_I_C[1];
+    const double c2_I_C = in_I_C[2];
+    const double c3_I_C = in_I_C[3];
+    const double c4_I_C = in_I_C[4];
+    const double c5_I_C = in_I_C[5];
+    const double c6_I_C = in_I_C[6];
+    const double c7_I_C = in_I_C[7];
+    const double c8_I_C = in_I_C[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
+    const double c0_omega_dot = in_omega_dot[0];
+    const double c1_omega_dot = in_omega_dot[1];
+    const double c2_omega_dot = in_omega_dot[2];
+    const double c0_c_ddot = in_c_ddot[0];
+    const double c1_c_ddot = in_c_ddot[1];
+    const double c2_c_ddot = in_c_ddot[2];
     {
-        const double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
-        const double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
-        const double x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
+        const double x0 = c6_I_C*c0_omega + c7_I_C*c1_omega + c8_I_C*c2_omega;
+        const double x1 = c3_I_C*c0_omega + c4_I_C*c1_omega + c5_I_C*c2_omega;
+        const double x2 = c0_I_C*c0_omega + c1_I_C*c1_omega + c2_I_C*c2_omega;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x0 - c2_omega*x1;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x0 + c2_omega*x2;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x1 - c1_omega*x2;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        const double s_ = ((out_w[0] + (out_w[1] + out_w[2])) + (out_w[3] + (out_w[4] + out_w[5])));
         if (!(s_ - s_ == 0.0))
-            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+            finite += (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = (double)NAN;
-        w[1] = (double)NAN;
-        w[2] = (double)NAN;
-        w[3] = (double)NAN;
-        w[4] = (double)NAN;
-        w[5] = (double)NAN;
+        out_w[0] = (double)NAN;
+        out_w[1] = (double)NAN;
+        out_w[2] = (double)NAN;
+        out_w[3] = (double)NAN;
+        out_w[4] = (double)NAN;
+        out_w[5] = (double)NAN;
     }
     return status;
 }
@@ -245,12 +244,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_newton_euler_wrench_plain_p)(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6])
 = rigidsym_c_newton_euler_wrench_plain;
 #endif
 
@@ -261,12 +260,12 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6])
 {
     const double *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
@@ -274,11 +273,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
+    args[0] = in_I_C;
+    args[1] = &in_m;
+    args[2] = in_omega;
+    args[3] = in_omega_dot;
+    args[4] = in_c_ddot;
     for (j = 0; j < 5; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -291,13 +290,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_newton_euler_wrench_wide(I_C, m, omega, omega_dot, c_ddot, w);
+        status = rigidsym_c_newton_euler_wrench_wide(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+        const int r_ = rigidsym_c_newton_euler_wrench_rescue(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -308,13 +307,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_newton_euler_wrench_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
+        r_ = (*rigidsym_c_newton_euler_wrench_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_newton_euler_wrench_plain(I_C, m, omega, omega_dot, c_ddot, w);
+        status |= rigidsym_c_newton_euler_wrench_plain(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -323,12 +322,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -336,39 +335,39 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 6), _mm_load_sd(I_C + 6 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega), _mm_load_sd(omega + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega_dot + 1), _mm_load_sd(omega_dot + 1 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(c_ddot), _mm_load_sd(c_ddot + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C), _mm_load_sd(in_I_C + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C + 2), _mm_load_sd(in_I_C + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C + 4), _mm_load_sd(in_I_C + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C + 6), _mm_load_sd(in_I_C + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_I_C[8], *&in_m))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_omega), _mm_load_sd(in_omega + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_omega[2], *&in_omega_dot[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_omega_dot + 1), _mm_load_sd(in_omega_dot + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_c_ddot), _mm_load_sd(in_c_ddot + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_c_ddot[2], 0.0))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
+            return rigidsym_c_newton_euler_wrench_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 2));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 4));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 6));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C + 6));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&I_C[8]), rigidsym_c_bits_d(&m)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_I_C[8]), rigidsym_c_bits_d(&in_m)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_omega));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&omega[2]), rigidsym_c_bits_d(&omega_dot[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_omega[2]), rigidsym_c_bits_d(&in_omega_dot[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega_dot + 1));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(c_ddot));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_omega_dot + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_c_ddot));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&c_ddot[2]), 0};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_c_ddot[2]), 0};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         odd = oddv_[0] | oddv_[1];
@@ -379,53 +378,53 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, I_C[j_]);
-        RIGIDSYM_C_ODDNZ_D(odd, m);
+            RIGIDSYM_C_ODDNZ_D(odd, in_I_C[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_omega[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_omega_dot[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_c_ddot[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
+            return rigidsym_c_newton_euler_wrench_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_newton_euler_wrench_odd(I_C, m, omega, omega_dot, c_ddot, w);
+        return rigidsym_c_newton_euler_wrench_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
 #endif
-    const double I_C_00 = I_C[0];
-    const double I_C_01 = I_C[1];
-    const double I_C_02 = I_C[2];
-    const double I_C_10 = I_C[3];
-    const double I_C_11 = I_C[4];
-    const double I_C_12 = I_C[5];
-    const double I_C_20 = I_C[6];
-    const double I_C_21 = I_C[7];
-    const double I_C_22 = I_C[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
-    const double omega_dot_0 = omega_dot[0];
-    const double omega_dot_1 = omega_dot[1];
-    const double omega_dot_2 = omega_dot[2];
-    const double c_ddot_0 = c_ddot[0];
-    const double c_ddot_1 = c_ddot[1];
-    const double c_ddot_2 = c_ddot[2];
+    const double c0_I_C = in_I_C[0];
+    const double c1_I_C = in_I_C[1];
+    const double c2_I_C = in_I_C[2];
+    const double c3_I_C = in_I_C[3];
+    const double c4_I_C = in_I_C[4];
+    const double c5_I_C = in_I_C[5];
+    const double c6_I_C = in_I_C[6];
+    const double c7_I_C = in_I_C[7];
+    const double c8_I_C = in_I_C[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
+    const double c0_omega_dot = in_omega_dot[0];
+    const double c1_omega_dot = in_omega_dot[1];
+    const double c2_omega_dot = in_omega_dot[2];
+    const double c0_c_ddot = in_c_ddot[0];
+    const double c1_c_ddot = in_c_ddot[1];
+    const double c2_c_ddot = in_c_ddot[2];
     {
-        const double x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
-        const double x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
-        const double x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
+        const double x0 = c6_I_C*c0_omega + c7_I_C*c1_omega + c8_I_C*c2_omega;
+        const double x1 = c3_I_C*c0_omega + c4_I_C*c1_omega + c5_I_C*c2_omega;
+        const double x2 = c0_I_C*c0_omega + c1_I_C*c1_omega + c2_I_C*c2_omega;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x0 - c2_omega*x1;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x0 + c2_omega*x2;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x1 - c1_omega*x2;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
     }
     /* no division or root, and every output bounded by 2^307 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -435,21 +434,21 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        const double s_ = ((out_w[0] + (out_w[1] + out_w[2])) + (out_w[3] + (out_w[4] + out_w[5])));
         if (!(s_ - s_ == 0.0))
-            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+            finite += (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = (double)NAN;
-        w[1] = (double)NAN;
-        w[2] = (double)NAN;
-        w[3] = (double)NAN;
-        w[4] = (double)NAN;
-        w[5] = (double)NAN;
+        out_w[0] = (double)NAN;
+        out_w[1] = (double)NAN;
+        out_w[2] = (double)NAN;
+        out_w[3] = (double)NAN;
+        out_w[4] = (double)NAN;
+        out_w[5] = (double)NAN;
     }
     return status;
 }
@@ -457,24 +456,24 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
     size_t count,
-    const double *I_C,
-    const double *m,
-    const double *omega,
-    const double *omega_dot,
-    const double *c_ddot,
-    double *w,
+    const double *in_I_C,
+    const double *in_m,
+    const double *in_omega,
+    const double *in_omega_dot,
+    const double *in_c_ddot,
+    double *out_w,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_newton_euler_wrench(
-            I_C + 9 * i_,
-            m[i_],
-            omega + 3 * i_,
-            omega_dot + 3 * i_,
-            c_ddot + 3 * i_,
-            w + 6 * i_);
+            in_I_C + 9 * i_,
+            in_m[i_],
+            in_omega + 3 * i_,
+            in_omega_dot + 3 * i_,
+            in_c_ddot + 3 * i_,
+            out_w + 6 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -488,12 +487,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6])
 {
     int status, still_;
     float finite;
@@ -503,13 +502,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_I_C[9];
-    float rs_m;
-    float rs_omega[3];
-    float rs_omega_dot[3];
-    float rs_c_ddot[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_I_C[9];
+    float sc_m;
+    float sc_omega[3];
+    float sc_omega_dot[3];
+    float sc_c_ddot[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -517,61 +515,61 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(I_C, 9))
+    if (rigidsym_c_subnormal_f(in_I_C, 9))
         return -1;
-    if (rigidsym_c_subnormal_f(&m, 1))
+    if (rigidsym_c_subnormal_f(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(omega, 3))
+    if (rigidsym_c_subnormal_f(in_omega, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(omega_dot, 3))
+    if (rigidsym_c_subnormal_f(in_omega_dot, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(c_ddot, 3))
+    if (rigidsym_c_subnormal_f(in_c_ddot, 3))
         return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(I_C, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
-    rs_k3_ = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(&in_m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(in_omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_f(in_c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_f(in_I_C, sc_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega_dot, sc_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_c_ddot, sc_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_f(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
-        finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+        status = rigidsym_c_newton_euler_wrench_f32(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w);
+        status |= rigidsym_c_back_f(&out_w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[5], 2 * rs_k1_ + 2 * rs_k3_);
+        finite = (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(c_ddot, 3));
-    rs_k1_ = -(rigidsym_c_exponent_f(I_C, 9));
-    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1));
-    rs_k3_ = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k3_);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(in_I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(&in_m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_f(in_omega, 3));
+    still_ |= rigidsym_c_scale_f(in_I_C, sc_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_f(in_omega_dot, sc_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_f(in_c_ddot, sc_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w);
-        status |= rigidsym_c_back_f(&w[0], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[1], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[2], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[3], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w[4], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w[5], rs_k0_ + rs_k2_);
-        finite = (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+        status = rigidsym_c_newton_euler_wrench_f32(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w);
+        status |= rigidsym_c_back_f(&out_w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[5], rs_k0_ + rs_k2_);
+        finite = (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -584,63 +582,63 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_newton_euler_wrench_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_plain(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float I_C_00 = I_C[0];
-    const float I_C_01 = I_C[1];
-    const float I_C_02 = I_C[2];
-    const float I_C_10 = I_C[3];
-    const float I_C_11 = I_C[4];
-    const float I_C_12 = I_C[5];
-    const float I_C_20 = I_C[6];
-    const float I_C_21 = I_C[7];
-    const float I_C_22 = I_C[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
-    const float omega_dot_0 = omega_dot[0];
-    const float omega_dot_1 = omega_dot[1];
-    const float omega_dot_2 = omega_dot[2];
-    const float c_ddot_0 = c_ddot[0];
-    const float c_ddot_1 = c_ddot[1];
-    const float c_ddot_2 = c_ddot[2];
+    const float c0_I_C = in_I_C[0];
+    const float c1_I_C = in_I_C[1];
+    const float c2_I_C = in_I_C[2];
+    const float c3_I_C = in_I_C[3];
+    const float c4_I_C = in_I_C[4];
+    const float c5_I_C = in_I_C[5];
+    const float c6_I_C = in_I_C[6];
+    const float c7_I_C = in_I_C[7];
+    const float c8_I_C = in_I_C[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
+    const float c0_omega_dot = in_omega_dot[0];
+    const float c1_omega_dot = in_omega_dot[1];
+    const float c2_omega_dot = in_omega_dot[2];
+    const float c0_c_ddot = in_c_ddot[0];
+    const float c1_c_ddot = in_c_ddot[1];
+    const float c2_c_ddot = in_c_ddot[2];
     {
-        const float x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
-        const float x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
-        const float x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
+        const float x0 = c6_I_C*c0_omega + c7_I_C*c1_omega + c8_I_C*c2_omega;
+        const float x1 = c3_I_C*c0_omega + c4_I_C*c1_omega + c5_I_C*c2_omega;
+        const float x2 = c0_I_C*c0_omega + c1_I_C*c1_omega + c2_I_C*c2_omega;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x0 - c2_omega*x1;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x0 + c2_omega*x2;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x1 - c1_omega*x2;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        const float s_ = ((out_w[0] + (out_w[1] + out_w[2])) + (out_w[3] + (out_w[4] + out_w[5])));
         if (!(s_ - s_ == 0.0f))
-            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+            finite += (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = NAN;
-        w[1] = NAN;
-        w[2] = NAN;
-        w[3] = NAN;
-        w[4] = NAN;
-        w[5] = NAN;
+        out_w[0] = NAN;
+        out_w[1] = NAN;
+        out_w[2] = NAN;
+        out_w[3] = NAN;
+        out_w[4] = NAN;
+        out_w[5] = NAN;
     }
     return status;
 }
@@ -648,12 +646,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_newton_euler_wrench_f32_plain_p)(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6])
 = rigidsym_c_newton_euler_wrench_f32_plain;
 #endif
 
@@ -664,12 +662,12 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_f32_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6])
 {
     const float *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
@@ -677,11 +675,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
+    args[0] = in_I_C;
+    args[1] = &in_m;
+    args[2] = in_omega;
+    args[3] = in_omega_dot;
+    args[4] = in_c_ddot;
     for (j = 0; j < 5; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -694,7 +692,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w);
+        const int r_ = rigidsym_c_newton_euler_wrench_f32_rescue(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -705,13 +703,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_newton_euler_wrench_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w);
+        r_ = (*rigidsym_c_newton_euler_wrench_f32_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_newton_euler_wrench_f32_plain(I_C, m, omega, omega_dot, c_ddot, w);
+        status |= rigidsym_c_newton_euler_wrench_f32_plain(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -720,12 +718,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -733,29 +731,29 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_I_C), *(in_I_C + 1), *(in_I_C + 2), *(in_I_C + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_I_C + 4), *(in_I_C + 4 + 1), *(in_I_C + 4 + 2), *(in_I_C + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_I_C[8], *&in_m, *&in_omega[0], *&in_omega[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_omega[2], *&in_omega_dot[0], *&in_omega_dot[1], *&in_omega_dot[2]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_c_ddot[0], *&in_c_ddot[1], *&in_c_ddot[2], 0.0f))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
+            return rigidsym_c_newton_euler_wrench_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C + 4));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_I_C));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_I_C + 4));
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&I_C[8]), rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_I_C[8]), rigidsym_c_bits_f(&in_m), rigidsym_c_bits_f(&in_omega[0]), rigidsym_c_bits_f(&in_omega[1])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&omega[2]), rigidsym_c_bits_f(&omega_dot[0]), rigidsym_c_bits_f(&omega_dot[1]), rigidsym_c_bits_f(&omega_dot[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_omega[2]), rigidsym_c_bits_f(&in_omega_dot[0]), rigidsym_c_bits_f(&in_omega_dot[1]), rigidsym_c_bits_f(&in_omega_dot[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&c_ddot[0]), rigidsym_c_bits_f(&c_ddot[1]), rigidsym_c_bits_f(&c_ddot[2]), 0};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_c_ddot[0]), rigidsym_c_bits_f(&in_c_ddot[1]), rigidsym_c_bits_f(&in_c_ddot[2]), 0};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -766,53 +764,53 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, I_C[j_]);
-        RIGIDSYM_C_ODDNZ_F(odd, m);
+            RIGIDSYM_C_ODDNZ_F(odd, in_I_C[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_omega[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_omega_dot[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_c_ddot[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
+            return rigidsym_c_newton_euler_wrench_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_newton_euler_wrench_f32_odd(I_C, m, omega, omega_dot, c_ddot, w);
+        return rigidsym_c_newton_euler_wrench_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
 #endif
-    const float I_C_00 = I_C[0];
-    const float I_C_01 = I_C[1];
-    const float I_C_02 = I_C[2];
-    const float I_C_10 = I_C[3];
-    const float I_C_11 = I_C[4];
-    const float I_C_12 = I_C[5];
-    const float I_C_20 = I_C[6];
-    const float I_C_21 = I_C[7];
-    const float I_C_22 = I_C[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
-    const float omega_dot_0 = omega_dot[0];
-    const float omega_dot_1 = omega_dot[1];
-    const float omega_dot_2 = omega_dot[2];
-    const float c_ddot_0 = c_ddot[0];
-    const float c_ddot_1 = c_ddot[1];
-    const float c_ddot_2 = c_ddot[2];
+    const float c0_I_C = in_I_C[0];
+    const float c1_I_C = in_I_C[1];
+    const float c2_I_C = in_I_C[2];
+    const float c3_I_C = in_I_C[3];
+    const float c4_I_C = in_I_C[4];
+    const float c5_I_C = in_I_C[5];
+    const float c6_I_C = in_I_C[6];
+    const float c7_I_C = in_I_C[7];
+    const float c8_I_C = in_I_C[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
+    const float c0_omega_dot = in_omega_dot[0];
+    const float c1_omega_dot = in_omega_dot[1];
+    const float c2_omega_dot = in_omega_dot[2];
+    const float c0_c_ddot = in_c_ddot[0];
+    const float c1_c_ddot = in_c_ddot[1];
+    const float c2_c_ddot = in_c_ddot[2];
     {
-        const float x0 = I_C_20*omega_0 + I_C_21*omega_1 + I_C_22*omega_2;
-        const float x1 = I_C_10*omega_0 + I_C_11*omega_1 + I_C_12*omega_2;
-        const float x2 = I_C_00*omega_0 + I_C_01*omega_1 + I_C_02*omega_2;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x0 - omega_2*x1;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x0 + omega_2*x2;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x1 - omega_1*x2;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
+        const float x0 = c6_I_C*c0_omega + c7_I_C*c1_omega + c8_I_C*c2_omega;
+        const float x1 = c3_I_C*c0_omega + c4_I_C*c1_omega + c5_I_C*c2_omega;
+        const float x2 = c0_I_C*c0_omega + c1_I_C*c1_omega + c2_I_C*c2_omega;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x0 - c2_omega*x1;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x0 + c2_omega*x2;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x1 - c1_omega*x2;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
     }
     /* no division or root, and every output bounded by 2^97 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -822,21 +820,21 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((w[0] + (w[1] + w[2])) + (w[3] + (w[4] + w[5])));
+        const float s_ = ((out_w[0] + (out_w[1] + out_w[2])) + (out_w[3] + (out_w[4] + out_w[5])));
         if (!(s_ - s_ == 0.0f))
-            finite += (((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + ((w[3] - w[3]) + ((w[4] - w[4]) + (w[5] - w[5]))));
+            finite += (((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + ((out_w[3] - out_w[3]) + ((out_w[4] - out_w[4]) + (out_w[5] - out_w[5]))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = NAN;
-        w[1] = NAN;
-        w[2] = NAN;
-        w[3] = NAN;
-        w[4] = NAN;
-        w[5] = NAN;
+        out_w[0] = NAN;
+        out_w[1] = NAN;
+        out_w[2] = NAN;
+        out_w[3] = NAN;
+        out_w[4] = NAN;
+        out_w[5] = NAN;
     }
     return status;
 }
@@ -844,24 +842,24 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
     size_t count,
-    const float *I_C,
-    const float *m,
-    const float *omega,
-    const float *omega_dot,
-    const float *c_ddot,
-    float *w,
+    const float *in_I_C,
+    const float *in_m,
+    const float *in_omega,
+    const float *in_omega_dot,
+    const float *in_c_ddot,
+    float *out_w,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_newton_euler_wrench_f32(
-            I_C + 9 * i_,
-            m[i_],
-            omega + 3 * i_,
-            omega_dot + 3 * i_,
-            c_ddot + 3 * i_,
-            w + 6 * i_);
+            in_I_C + 9 * i_,
+            in_m[i_],
+            in_omega + 3 * i_,
+            in_omega_dot + 3 * i_,
+            in_c_ddot + 3 * i_,
+            out_w + 6 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -877,315 +875,315 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
 /* rigidsym_c_newton_euler_wrench_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
-    const double I_C_in_[9],
-    double m_in_,
-    const double omega_in_[3],
-    const double omega_dot_in_[3],
-    const double c_ddot_in_[3],
-    double w[6],
-    double w_D_I_C[54],
-    double w_D_m[6],
-    double w_D_omega[18],
-    double w_D_omega_dot[18],
-    double w_D_c_ddot[18])
+    const double w_I_C[9],
+    double w_m,
+    const double w_omega[3],
+    const double w_omega_dot[3],
+    const double w_c_ddot[3],
+    double out_w[6],
+    double out_w_D_I_C[54],
+    double out_w_D_m[6],
+    double out_w_D_omega[18],
+    double out_w_D_omega_dot[18],
+    double out_w_D_c_ddot[18])
 {
-    const long double I_C_00 = I_C_in_[0];
-    const long double I_C_01 = I_C_in_[1];
-    const long double I_C_02 = I_C_in_[2];
-    const long double I_C_10 = I_C_in_[3];
-    const long double I_C_11 = I_C_in_[4];
-    const long double I_C_12 = I_C_in_[5];
-    const long double I_C_20 = I_C_in_[6];
-    const long double I_C_21 = I_C_in_[7];
-    const long double I_C_22 = I_C_in_[8];
-    const long double m = m_in_;
-    const long double omega_0 = omega_in_[0];
-    const long double omega_1 = omega_in_[1];
-    const long double omega_2 = omega_in_[2];
-    const long double omega_dot_0 = omega_dot_in_[0];
-    const long double omega_dot_1 = omega_dot_in_[1];
-    const long double omega_dot_2 = omega_dot_in_[2];
-    const long double c_ddot_0 = c_ddot_in_[0];
-    const long double c_ddot_1 = c_ddot_in_[1];
-    const long double c_ddot_2 = c_ddot_in_[2];
+    const long double c0_I_C = w_I_C[0];
+    const long double c1_I_C = w_I_C[1];
+    const long double c2_I_C = w_I_C[2];
+    const long double c3_I_C = w_I_C[3];
+    const long double c4_I_C = w_I_C[4];
+    const long double c5_I_C = w_I_C[5];
+    const long double c6_I_C = w_I_C[6];
+    const long double c7_I_C = w_I_C[7];
+    const long double c8_I_C = w_I_C[8];
+    const long double in_m = w_m;
+    const long double c0_omega = w_omega[0];
+    const long double c1_omega = w_omega[1];
+    const long double c2_omega = w_omega[2];
+    const long double c0_omega_dot = w_omega_dot[0];
+    const long double c1_omega_dot = w_omega_dot[1];
+    const long double c2_omega_dot = w_omega_dot[2];
+    const long double c0_c_ddot = w_c_ddot[0];
+    const long double c1_c_ddot = w_c_ddot[1];
+    const long double c2_c_ddot = w_c_ddot[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)I_C_in_;
-    (void)m_in_;
-    (void)omega_in_;
-    (void)omega_dot_in_;
-    (void)c_ddot_in_;
+    (void)w_I_C;
+    (void)w_m;
+    (void)w_omega;
+    (void)w_omega_dot;
+    (void)w_c_ddot;
     {
-        const long double x0 = I_C_21*omega_1;
-        const long double x1 = I_C_20*omega_0;
-        const long double x2 = I_C_22*omega_2;
+        const long double x0 = c7_I_C*c1_omega;
+        const long double x1 = c6_I_C*c0_omega;
+        const long double x2 = c8_I_C*c2_omega;
         const long double x3 = x1 + x2;
         const long double x4 = x0 + x3;
-        const long double x5 = I_C_12*omega_2;
-        const long double x6 = I_C_10*omega_0;
-        const long double x7 = I_C_11*omega_1;
+        const long double x5 = c5_I_C*c2_omega;
+        const long double x6 = c3_I_C*c0_omega;
+        const long double x7 = c4_I_C*c1_omega;
         const long double x8 = x6 + x7;
         const long double x9 = x5 + x8;
-        const long double x10 = I_C_02*omega_2;
-        const long double x11 = I_C_00*omega_0;
-        const long double x12 = I_C_01*omega_1;
+        const long double x10 = c2_I_C*c2_omega;
+        const long double x11 = c0_I_C*c0_omega;
+        const long double x12 = c1_I_C*c1_omega;
         const long double x13 = x11 + x12;
         const long double x14 = x10 + x13;
-        const long double x15 = omega_0*omega_2;
+        const long double x15 = c0_omega*c2_omega;
         const long double x16 = -x15;
-        const long double x17 = omega_1*omega_2;
+        const long double x17 = c1_omega*c2_omega;
         const long double x18 = -x17;
-        const long double x19 = (omega_2*omega_2);
-        const long double x20 = omega_0*omega_1;
-        const long double x21 = (omega_1*omega_1);
-        const long double x22 = (omega_0*omega_0);
+        const long double x19 = (c2_omega*c2_omega);
+        const long double x20 = c0_omega*c1_omega;
+        const long double x21 = (c1_omega*c1_omega);
+        const long double x22 = (c0_omega*c0_omega);
         const long double x23 = -x20;
-        w[0] = (double)(I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9);
-        w[1] = (double)(I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14);
-        w[2] = (double)(I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14);
-        w[3] = (double)(c_ddot_0*m);
-        w[4] = (double)(c_ddot_1*m);
-        w[5] = (double)(c_ddot_2*m);
-        w_D_I_C[0] = (double)(omega_dot_0);
-        w_D_I_C[1] = (double)(omega_dot_1);
-        w_D_I_C[2] = (double)(omega_dot_2);
-        w_D_I_C[3] = (double)(x16);
-        w_D_I_C[4] = (double)(x18);
-        w_D_I_C[5] = (double)(-x19);
-        w_D_I_C[6] = (double)(x20);
-        w_D_I_C[7] = (double)(x21);
-        w_D_I_C[8] = (double)(x17);
-        w_D_I_C[9] = (double)(x15);
-        w_D_I_C[10] = (double)(x17);
-        w_D_I_C[11] = (double)(x19);
-        w_D_I_C[12] = (double)(omega_dot_0);
-        w_D_I_C[13] = (double)(omega_dot_1);
-        w_D_I_C[14] = (double)(omega_dot_2);
-        w_D_I_C[15] = (double)(-x22);
-        w_D_I_C[16] = (double)(x23);
-        w_D_I_C[17] = (double)(x16);
-        w_D_I_C[18] = (double)(x23);
-        w_D_I_C[19] = (double)(-x21);
-        w_D_I_C[20] = (double)(x18);
-        w_D_I_C[21] = (double)(x22);
-        w_D_I_C[22] = (double)(x20);
-        w_D_I_C[23] = (double)(x15);
-        w_D_I_C[24] = (double)(omega_dot_0);
-        w_D_I_C[25] = (double)(omega_dot_1);
-        w_D_I_C[26] = (double)(omega_dot_2);
-        w_D_I_C[27] = (double)(0.0);
-        w_D_I_C[28] = (double)(0.0);
-        w_D_I_C[29] = (double)(0.0);
-        w_D_I_C[30] = (double)(0.0);
-        w_D_I_C[31] = (double)(0.0);
-        w_D_I_C[32] = (double)(0.0);
-        w_D_I_C[33] = (double)(0.0);
-        w_D_I_C[34] = (double)(0.0);
-        w_D_I_C[35] = (double)(0.0);
-        w_D_I_C[36] = (double)(0.0);
-        w_D_I_C[37] = (double)(0.0);
-        w_D_I_C[38] = (double)(0.0);
-        w_D_I_C[39] = (double)(0.0);
-        w_D_I_C[40] = (double)(0.0);
-        w_D_I_C[41] = (double)(0.0);
-        w_D_I_C[42] = (double)(0.0);
-        w_D_I_C[43] = (double)(0.0);
-        w_D_I_C[44] = (double)(0.0);
-        w_D_I_C[45] = (double)(0.0);
-        w_D_I_C[46] = (double)(0.0);
-        w_D_I_C[47] = (double)(0.0);
-        w_D_I_C[48] = (double)(0.0);
-        w_D_I_C[49] = (double)(0.0);
-        w_D_I_C[50] = (double)(0.0);
-        w_D_I_C[51] = (double)(0.0);
-        w_D_I_C[52] = (double)(0.0);
-        w_D_I_C[53] = (double)(0.0);
-        w_D_m[0] = (double)(0.0);
-        w_D_m[1] = (double)(0.0);
-        w_D_m[2] = (double)(0.0);
-        w_D_m[3] = (double)(c_ddot_0);
-        w_D_m[4] = (double)(c_ddot_1);
-        w_D_m[5] = (double)(c_ddot_2);
-        w_D_omega[0] = (double)(-I_C_10*omega_2 + I_C_20*omega_1);
-        w_D_omega[1] = (double)(-I_C_11*omega_2 + 2.0*x0 + x3);
-        w_D_omega[2] = (double)(I_C_22*omega_1 - 2.0*x5 - x8);
-        w_D_omega[3] = (double)(I_C_00*omega_2 - x0 - 2.0*x1 - x2);
-        w_D_omega[4] = (double)(I_C_01*omega_2 - I_C_21*omega_0);
-        w_D_omega[5] = (double)(-I_C_22*omega_0 + 2.0*x10 + x13);
-        w_D_omega[6] = (double)(-I_C_00*omega_1 + x5 + 2.0*x6 + x7);
-        w_D_omega[7] = (double)(I_C_11*omega_0 - x10 - x11 - 2.0*x12);
-        w_D_omega[8] = (double)(-I_C_02*omega_1 + I_C_12*omega_0);
-        w_D_omega[9] = (double)(0.0);
-        w_D_omega[10] = (double)(0.0);
-        w_D_omega[11] = (double)(0.0);
-        w_D_omega[12] = (double)(0.0);
-        w_D_omega[13] = (double)(0.0);
-        w_D_omega[14] = (double)(0.0);
-        w_D_omega[15] = (double)(0.0);
-        w_D_omega[16] = (double)(0.0);
-        w_D_omega[17] = (double)(0.0);
-        w_D_omega_dot[0] = (double)(I_C_00);
-        w_D_omega_dot[1] = (double)(I_C_01);
-        w_D_omega_dot[2] = (double)(I_C_02);
-        w_D_omega_dot[3] = (double)(I_C_10);
-        w_D_omega_dot[4] = (double)(I_C_11);
-        w_D_omega_dot[5] = (double)(I_C_12);
-        w_D_omega_dot[6] = (double)(I_C_20);
-        w_D_omega_dot[7] = (double)(I_C_21);
-        w_D_omega_dot[8] = (double)(I_C_22);
-        w_D_omega_dot[9] = (double)(0.0);
-        w_D_omega_dot[10] = (double)(0.0);
-        w_D_omega_dot[11] = (double)(0.0);
-        w_D_omega_dot[12] = (double)(0.0);
-        w_D_omega_dot[13] = (double)(0.0);
-        w_D_omega_dot[14] = (double)(0.0);
-        w_D_omega_dot[15] = (double)(0.0);
-        w_D_omega_dot[16] = (double)(0.0);
-        w_D_omega_dot[17] = (double)(0.0);
-        w_D_c_ddot[0] = (double)(0.0);
-        w_D_c_ddot[1] = (double)(0.0);
-        w_D_c_ddot[2] = (double)(0.0);
-        w_D_c_ddot[3] = (double)(0.0);
-        w_D_c_ddot[4] = (double)(0.0);
-        w_D_c_ddot[5] = (double)(0.0);
-        w_D_c_ddot[6] = (double)(0.0);
-        w_D_c_ddot[7] = (double)(0.0);
-        w_D_c_ddot[8] = (double)(0.0);
-        w_D_c_ddot[9] = (double)(m);
-        w_D_c_ddot[10] = (double)(0.0);
-        w_D_c_ddot[11] = (double)(0.0);
-        w_D_c_ddot[12] = (double)(0.0);
-        w_D_c_ddot[13] = (double)(m);
-        w_D_c_ddot[14] = (double)(0.0);
-        w_D_c_ddot[15] = (double)(0.0);
-        w_D_c_ddot[16] = (double)(0.0);
-        w_D_c_ddot[17] = (double)(m);
+        out_w[0] = (double)(c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x4 - c2_omega*x9);
+        out_w[1] = (double)(c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x4 + c2_omega*x14);
+        out_w[2] = (double)(c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x9 - c1_omega*x14);
+        out_w[3] = (double)(c0_c_ddot*in_m);
+        out_w[4] = (double)(c1_c_ddot*in_m);
+        out_w[5] = (double)(c2_c_ddot*in_m);
+        out_w_D_I_C[0] = (double)(c0_omega_dot);
+        out_w_D_I_C[1] = (double)(c1_omega_dot);
+        out_w_D_I_C[2] = (double)(c2_omega_dot);
+        out_w_D_I_C[3] = (double)(x16);
+        out_w_D_I_C[4] = (double)(x18);
+        out_w_D_I_C[5] = (double)(-x19);
+        out_w_D_I_C[6] = (double)(x20);
+        out_w_D_I_C[7] = (double)(x21);
+        out_w_D_I_C[8] = (double)(x17);
+        out_w_D_I_C[9] = (double)(x15);
+        out_w_D_I_C[10] = (double)(x17);
+        out_w_D_I_C[11] = (double)(x19);
+        out_w_D_I_C[12] = (double)(c0_omega_dot);
+        out_w_D_I_C[13] = (double)(c1_omega_dot);
+        out_w_D_I_C[14] = (double)(c2_omega_dot);
+        out_w_D_I_C[15] = (double)(-x22);
+        out_w_D_I_C[16] = (double)(x23);
+        out_w_D_I_C[17] = (double)(x16);
+        out_w_D_I_C[18] = (double)(x23);
+        out_w_D_I_C[19] = (double)(-x21);
+        out_w_D_I_C[20] = (double)(x18);
+        out_w_D_I_C[21] = (double)(x22);
+        out_w_D_I_C[22] = (double)(x20);
+        out_w_D_I_C[23] = (double)(x15);
+        out_w_D_I_C[24] = (double)(c0_omega_dot);
+        out_w_D_I_C[25] = (double)(c1_omega_dot);
+        out_w_D_I_C[26] = (double)(c2_omega_dot);
+        out_w_D_I_C[27] = (double)(0.0);
+        out_w_D_I_C[28] = (double)(0.0);
+        out_w_D_I_C[29] = (double)(0.0);
+        out_w_D_I_C[30] = (double)(0.0);
+        out_w_D_I_C[31] = (double)(0.0);
+        out_w_D_I_C[32] = (double)(0.0);
+        out_w_D_I_C[33] = (double)(0.0);
+        out_w_D_I_C[34] = (double)(0.0);
+        out_w_D_I_C[35] = (double)(0.0);
+        out_w_D_I_C[36] = (double)(0.0);
+        out_w_D_I_C[37] = (double)(0.0);
+        out_w_D_I_C[38] = (double)(0.0);
+        out_w_D_I_C[39] = (double)(0.0);
+        out_w_D_I_C[40] = (double)(0.0);
+        out_w_D_I_C[41] = (double)(0.0);
+        out_w_D_I_C[42] = (double)(0.0);
+        out_w_D_I_C[43] = (double)(0.0);
+        out_w_D_I_C[44] = (double)(0.0);
+        out_w_D_I_C[45] = (double)(0.0);
+        out_w_D_I_C[46] = (double)(0.0);
+        out_w_D_I_C[47] = (double)(0.0);
+        out_w_D_I_C[48] = (double)(0.0);
+        out_w_D_I_C[49] = (double)(0.0);
+        out_w_D_I_C[50] = (double)(0.0);
+        out_w_D_I_C[51] = (double)(0.0);
+        out_w_D_I_C[52] = (double)(0.0);
+        out_w_D_I_C[53] = (double)(0.0);
+        out_w_D_m[0] = (double)(0.0);
+        out_w_D_m[1] = (double)(0.0);
+        out_w_D_m[2] = (double)(0.0);
+        out_w_D_m[3] = (double)(c0_c_ddot);
+        out_w_D_m[4] = (double)(c1_c_ddot);
+        out_w_D_m[5] = (double)(c2_c_ddot);
+        out_w_D_omega[0] = (double)(-c3_I_C*c2_omega + c6_I_C*c1_omega);
+        out_w_D_omega[1] = (double)(-c4_I_C*c2_omega + 2.0*x0 + x3);
+        out_w_D_omega[2] = (double)(c8_I_C*c1_omega - 2.0*x5 - x8);
+        out_w_D_omega[3] = (double)(c0_I_C*c2_omega - x0 - 2.0*x1 - x2);
+        out_w_D_omega[4] = (double)(c1_I_C*c2_omega - c7_I_C*c0_omega);
+        out_w_D_omega[5] = (double)(-c8_I_C*c0_omega + 2.0*x10 + x13);
+        out_w_D_omega[6] = (double)(-c0_I_C*c1_omega + x5 + 2.0*x6 + x7);
+        out_w_D_omega[7] = (double)(c4_I_C*c0_omega - x10 - x11 - 2.0*x12);
+        out_w_D_omega[8] = (double)(-c2_I_C*c1_omega + c5_I_C*c0_omega);
+        out_w_D_omega[9] = (double)(0.0);
+        out_w_D_omega[10] = (double)(0.0);
+        out_w_D_omega[11] = (double)(0.0);
+        out_w_D_omega[12] = (double)(0.0);
+        out_w_D_omega[13] = (double)(0.0);
+        out_w_D_omega[14] = (double)(0.0);
+        out_w_D_omega[15] = (double)(0.0);
+        out_w_D_omega[16] = (double)(0.0);
+        out_w_D_omega[17] = (double)(0.0);
+        out_w_D_omega_dot[0] = (double)(c0_I_C);
+        out_w_D_omega_dot[1] = (double)(c1_I_C);
+        out_w_D_omega_dot[2] = (double)(c2_I_C);
+        out_w_D_omega_dot[3] = (double)(c3_I_C);
+        out_w_D_omega_dot[4] = (double)(c4_I_C);
+        out_w_D_omega_dot[5] = (double)(c5_I_C);
+        out_w_D_omega_dot[6] = (double)(c6_I_C);
+        out_w_D_omega_dot[7] = (double)(c7_I_C);
+        out_w_D_omega_dot[8] = (double)(c8_I_C);
+        out_w_D_omega_dot[9] = (double)(0.0);
+        out_w_D_omega_dot[10] = (double)(0.0);
+        out_w_D_omega_dot[11] = (double)(0.0);
+        out_w_D_omega_dot[12] = (double)(0.0);
+        out_w_D_omega_dot[13] = (double)(0.0);
+        out_w_D_omega_dot[14] = (double)(0.0);
+        out_w_D_omega_dot[15] = (double)(0.0);
+        out_w_D_omega_dot[16] = (double)(0.0);
+        out_w_D_omega_dot[17] = (double)(0.0);
+        out_w_D_c_ddot[0] = (double)(0.0);
+        out_w_D_c_ddot[1] = (double)(0.0);
+        out_w_D_c_ddot[2] = (double)(0.0);
+        out_w_D_c_ddot[3] = (double)(0.0);
+        out_w_D_c_ddot[4] = (double)(0.0);
+        out_w_D_c_ddot[5] = (double)(0.0);
+        out_w_D_c_ddot[6] = (double)(0.0);
+        out_w_D_c_ddot[7] = (double)(0.0);
+        out_w_D_c_ddot[8] = (double)(0.0);
+        out_w_D_c_ddot[9] = (double)(in_m);
+        out_w_D_c_ddot[10] = (double)(0.0);
+        out_w_D_c_ddot[11] = (double)(0.0);
+        out_w_D_c_ddot[12] = (double)(0.0);
+        out_w_D_c_ddot[13] = (double)(in_m);
+        out_w_D_c_ddot[14] = (double)(0.0);
+        out_w_D_c_ddot[15] = (double)(0.0);
+        out_w_D_c_ddot[16] = (double)(0.0);
+        out_w_D_c_ddot[17] = (double)(in_m);
     }
-    finite += (long double)((((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17])))))))));
+    finite += (long double)((((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17])))))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = (double)NAN;
-        w[1] = (double)NAN;
-        w[2] = (double)NAN;
-        w[3] = (double)NAN;
-        w[4] = (double)NAN;
-        w[5] = (double)NAN;
-        w_D_I_C[0] = (double)NAN;
-        w_D_I_C[1] = (double)NAN;
-        w_D_I_C[2] = (double)NAN;
-        w_D_I_C[3] = (double)NAN;
-        w_D_I_C[4] = (double)NAN;
-        w_D_I_C[5] = (double)NAN;
-        w_D_I_C[6] = (double)NAN;
-        w_D_I_C[7] = (double)NAN;
-        w_D_I_C[8] = (double)NAN;
-        w_D_I_C[9] = (double)NAN;
-        w_D_I_C[10] = (double)NAN;
-        w_D_I_C[11] = (double)NAN;
-        w_D_I_C[12] = (double)NAN;
-        w_D_I_C[13] = (double)NAN;
-        w_D_I_C[14] = (double)NAN;
-        w_D_I_C[15] = (double)NAN;
-        w_D_I_C[16] = (double)NAN;
-        w_D_I_C[17] = (double)NAN;
-        w_D_I_C[18] = (double)NAN;
-        w_D_I_C[19] = (double)NAN;
-        w_D_I_C[20] = (double)NAN;
-        w_D_I_C[21] = (double)NAN;
-        w_D_I_C[22] = (double)NAN;
-        w_D_I_C[23] = (double)NAN;
-        w_D_I_C[24] = (double)NAN;
-        w_D_I_C[25] = (double)NAN;
-        w_D_I_C[26] = (double)NAN;
-        w_D_I_C[27] = (double)NAN;
-        w_D_I_C[28] = (double)NAN;
-        w_D_I_C[29] = (double)NAN;
-        w_D_I_C[30] = (double)NAN;
-        w_D_I_C[31] = (double)NAN;
-        w_D_I_C[32] = (double)NAN;
-        w_D_I_C[33] = (double)NAN;
-        w_D_I_C[34] = (double)NAN;
-        w_D_I_C[35] = (double)NAN;
-        w_D_I_C[36] = (double)NAN;
-        w_D_I_C[37] = (double)NAN;
-        w_D_I_C[38] = (double)NAN;
-        w_D_I_C[39] = (double)NAN;
-        w_D_I_C[40] = (double)NAN;
-        w_D_I_C[41] = (double)NAN;
-        w_D_I_C[42] = (double)NAN;
-        w_D_I_C[43] = (double)NAN;
-        w_D_I_C[44] = (double)NAN;
-        w_D_I_C[45] = (double)NAN;
-        w_D_I_C[46] = (double)NAN;
-        w_D_I_C[47] = (double)NAN;
-        w_D_I_C[48] = (double)NAN;
-        w_D_I_C[49] = (double)NAN;
-        w_D_I_C[50] = (double)NAN;
-        w_D_I_C[51] = (double)NAN;
-        w_D_I_C[52] = (double)NAN;
-        w_D_I_C[53] = (double)NAN;
-        w_D_m[0] = (double)NAN;
-        w_D_m[1] = (double)NAN;
-        w_D_m[2] = (double)NAN;
-        w_D_m[3] = (double)NAN;
-        w_D_m[4] = (double)NAN;
-        w_D_m[5] = (double)NAN;
-        w_D_omega[0] = (double)NAN;
-        w_D_omega[1] = (double)NAN;
-        w_D_omega[2] = (double)NAN;
-        w_D_omega[3] = (double)NAN;
-        w_D_omega[4] = (double)NAN;
-        w_D_omega[5] = (double)NAN;
-        w_D_omega[6] = (double)NAN;
-        w_D_omega[7] = (double)NAN;
-        w_D_omega[8] = (double)NAN;
-        w_D_omega[9] = (double)NAN;
-        w_D_omega[10] = (double)NAN;
-        w_D_omega[11] = (double)NAN;
-        w_D_omega[12] = (double)NAN;
-        w_D_omega[13] = (double)NAN;
-        w_D_omega[14] = (double)NAN;
-        w_D_omega[15] = (double)NAN;
-        w_D_omega[16] = (double)NAN;
-        w_D_omega[17] = (double)NAN;
-        w_D_omega_dot[0] = (double)NAN;
-        w_D_omega_dot[1] = (double)NAN;
-        w_D_omega_dot[2] = (double)NAN;
-        w_D_omega_dot[3] = (double)NAN;
-        w_D_omega_dot[4] = (double)NAN;
-        w_D_omega_dot[5] = (double)NAN;
-        w_D_omega_dot[6] = (double)NAN;
-        w_D_omega_dot[7] = (double)NAN;
-        w_D_omega_dot[8] = (double)NAN;
-        w_D_omega_dot[9] = (double)NAN;
-        w_D_omega_dot[10] = (double)NAN;
-        w_D_omega_dot[11] = (double)NAN;
-        w_D_omega_dot[12] = (double)NAN;
-        w_D_omega_dot[13] = (double)NAN;
-        w_D_omega_dot[14] = (double)NAN;
-        w_D_omega_dot[15] = (double)NAN;
-        w_D_omega_dot[16] = (double)NAN;
-        w_D_omega_dot[17] = (double)NAN;
-        w_D_c_ddot[0] = (double)NAN;
-        w_D_c_ddot[1] = (double)NAN;
-        w_D_c_ddot[2] = (double)NAN;
-        w_D_c_ddot[3] = (double)NAN;
-        w_D_c_ddot[4] = (double)NAN;
-        w_D_c_ddot[5] = (double)NAN;
-        w_D_c_ddot[6] = (double)NAN;
-        w_D_c_ddot[7] = (double)NAN;
-        w_D_c_ddot[8] = (double)NAN;
-        w_D_c_ddot[9] = (double)NAN;
-        w_D_c_ddot[10] = (double)NAN;
-        w_D_c_ddot[11] = (double)NAN;
-        w_D_c_ddot[12] = (double)NAN;
-        w_D_c_ddot[13] = (double)NAN;
-        w_D_c_ddot[14] = (double)NAN;
-        w_D_c_ddot[15] = (double)NAN;
-        w_D_c_ddot[16] = (double)NAN;
-        w_D_c_ddot[17] = (double)NAN;
+        out_w[0] = (double)NAN;
+        out_w[1] = (double)NAN;
+        out_w[2] = (double)NAN;
+        out_w[3] = (double)NAN;
+        out_w[4] = (double)NAN;
+        out_w[5] = (double)NAN;
+        out_w_D_I_C[0] = (double)NAN;
+        out_w_D_I_C[1] = (double)NAN;
+        out_w_D_I_C[2] = (double)NAN;
+        out_w_D_I_C[3] = (double)NAN;
+        out_w_D_I_C[4] = (double)NAN;
+        out_w_D_I_C[5] = (double)NAN;
+        out_w_D_I_C[6] = (double)NAN;
+        out_w_D_I_C[7] = (double)NAN;
+        out_w_D_I_C[8] = (double)NAN;
+        out_w_D_I_C[9] = (double)NAN;
+        out_w_D_I_C[10] = (double)NAN;
+        out_w_D_I_C[11] = (double)NAN;
+        out_w_D_I_C[12] = (double)NAN;
+        out_w_D_I_C[13] = (double)NAN;
+        out_w_D_I_C[14] = (double)NAN;
+        out_w_D_I_C[15] = (double)NAN;
+        out_w_D_I_C[16] = (double)NAN;
+        out_w_D_I_C[17] = (double)NAN;
+        out_w_D_I_C[18] = (double)NAN;
+        out_w_D_I_C[19] = (double)NAN;
+        out_w_D_I_C[20] = (double)NAN;
+        out_w_D_I_C[21] = (double)NAN;
+        out_w_D_I_C[22] = (double)NAN;
+        out_w_D_I_C[23] = (double)NAN;
+        out_w_D_I_C[24] = (double)NAN;
+        out_w_D_I_C[25] = (double)NAN;
+        out_w_D_I_C[26] = (double)NAN;
+        out_w_D_I_C[27] = (double)NAN;
+        out_w_D_I_C[28] = (double)NAN;
+        out_w_D_I_C[29] = (double)NAN;
+        out_w_D_I_C[30] = (double)NAN;
+        out_w_D_I_C[31] = (double)NAN;
+        out_w_D_I_C[32] = (double)NAN;
+        out_w_D_I_C[33] = (double)NAN;
+        out_w_D_I_C[34] = (double)NAN;
+        out_w_D_I_C[35] = (double)NAN;
+        out_w_D_I_C[36] = (double)NAN;
+        out_w_D_I_C[37] = (double)NAN;
+        out_w_D_I_C[38] = (double)NAN;
+        out_w_D_I_C[39] = (double)NAN;
+        out_w_D_I_C[40] = (double)NAN;
+        out_w_D_I_C[41] = (double)NAN;
+        out_w_D_I_C[42] = (double)NAN;
+        out_w_D_I_C[43] = (double)NAN;
+        out_w_D_I_C[44] = (double)NAN;
+        out_w_D_I_C[45] = (double)NAN;
+        out_w_D_I_C[46] = (double)NAN;
+        out_w_D_I_C[47] = (double)NAN;
+        out_w_D_I_C[48] = (double)NAN;
+        out_w_D_I_C[49] = (double)NAN;
+        out_w_D_I_C[50] = (double)NAN;
+        out_w_D_I_C[51] = (double)NAN;
+        out_w_D_I_C[52] = (double)NAN;
+        out_w_D_I_C[53] = (double)NAN;
+        out_w_D_m[0] = (double)NAN;
+        out_w_D_m[1] = (double)NAN;
+        out_w_D_m[2] = (double)NAN;
+        out_w_D_m[3] = (double)NAN;
+        out_w_D_m[4] = (double)NAN;
+        out_w_D_m[5] = (double)NAN;
+        out_w_D_omega[0] = (double)NAN;
+        out_w_D_omega[1] = (double)NAN;
+        out_w_D_omega[2] = (double)NAN;
+        out_w_D_omega[3] = (double)NAN;
+        out_w_D_omega[4] = (double)NAN;
+        out_w_D_omega[5] = (double)NAN;
+        out_w_D_omega[6] = (double)NAN;
+        out_w_D_omega[7] = (double)NAN;
+        out_w_D_omega[8] = (double)NAN;
+        out_w_D_omega[9] = (double)NAN;
+        out_w_D_omega[10] = (double)NAN;
+        out_w_D_omega[11] = (double)NAN;
+        out_w_D_omega[12] = (double)NAN;
+        out_w_D_omega[13] = (double)NAN;
+        out_w_D_omega[14] = (double)NAN;
+        out_w_D_omega[15] = (double)NAN;
+        out_w_D_omega[16] = (double)NAN;
+        out_w_D_omega[17] = (double)NAN;
+        out_w_D_omega_dot[0] = (double)NAN;
+        out_w_D_omega_dot[1] = (double)NAN;
+        out_w_D_omega_dot[2] = (double)NAN;
+        out_w_D_omega_dot[3] = (double)NAN;
+        out_w_D_omega_dot[4] = (double)NAN;
+        out_w_D_omega_dot[5] = (double)NAN;
+        out_w_D_omega_dot[6] = (double)NAN;
+        out_w_D_omega_dot[7] = (double)NAN;
+        out_w_D_omega_dot[8] = (double)NAN;
+        out_w_D_omega_dot[9] = (double)NAN;
+        out_w_D_omega_dot[10] = (double)NAN;
+        out_w_D_omega_dot[11] = (double)NAN;
+        out_w_D_omega_dot[12] = (double)NAN;
+        out_w_D_omega_dot[13] = (double)NAN;
+        out_w_D_omega_dot[14] = (double)NAN;
+        out_w_D_omega_dot[15] = (double)NAN;
+        out_w_D_omega_dot[16] = (double)NAN;
+        out_w_D_omega_dot[17] = (double)NAN;
+        out_w_D_c_ddot[0] = (double)NAN;
+        out_w_D_c_ddot[1] = (double)NAN;
+        out_w_D_c_ddot[2] = (double)NAN;
+        out_w_D_c_ddot[3] = (double)NAN;
+        out_w_D_c_ddot[4] = (double)NAN;
+        out_w_D_c_ddot[5] = (double)NAN;
+        out_w_D_c_ddot[6] = (double)NAN;
+        out_w_D_c_ddot[7] = (double)NAN;
+        out_w_D_c_ddot[8] = (double)NAN;
+        out_w_D_c_ddot[9] = (double)NAN;
+        out_w_D_c_ddot[10] = (double)NAN;
+        out_w_D_c_ddot[11] = (double)NAN;
+        out_w_D_c_ddot[12] = (double)NAN;
+        out_w_D_c_ddot[13] = (double)NAN;
+        out_w_D_c_ddot[14] = (double)NAN;
+        out_w_D_c_ddot[15] = (double)NAN;
+        out_w_D_c_ddot[16] = (double)NAN;
+        out_w_D_c_ddot[17] = (double)NAN;
     }
     return status;
 }
@@ -1200,17 +1198,17 @@ static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6],
-    double w_D_I_C[54],
-    double w_D_m[6],
-    double w_D_omega[18],
-    double w_D_omega_dot[18],
-    double w_D_c_ddot[18])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6],
+    double out_w_D_I_C[54],
+    double out_w_D_m[6],
+    double out_w_D_omega[18],
+    double out_w_D_omega_dot[18],
+    double out_w_D_c_ddot[18])
 {
     int status, still_;
     double finite;
@@ -1220,13 +1218,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_I_C[9];
-    double rs_m;
-    double rs_omega[3];
-    double rs_omega_dot[3];
-    double rs_c_ddot[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_I_C[9];
+    double sc_m;
+    double sc_omega[3];
+    double sc_omega_dot[3];
+    double sc_c_ddot[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -1234,163 +1231,163 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(I_C, 9))
+    if (rigidsym_c_subnormal_d(in_I_C, 9))
         return -1;
-    if (rigidsym_c_subnormal_d(&m, 1))
+    if (rigidsym_c_subnormal_d(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(omega, 3))
+    if (rigidsym_c_subnormal_d(in_omega, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(omega_dot, 3))
+    if (rigidsym_c_subnormal_d(in_omega_dot, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(c_ddot, 3))
+    if (rigidsym_c_subnormal_d(in_c_ddot, 3))
         return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(I_C, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_d(&m, 1) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_d(omega_dot, 3) / 2);
-    rs_k3_ = -(rigidsym_c_exponent_d(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_d(&in_m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_d(in_omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_d(in_c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_d(in_I_C, sc_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega_dot, sc_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_c_ddot, sc_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench_with_jacobians(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_d(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_m[3], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_m[4], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_m[5], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[0], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[1], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[2], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[3], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[4], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[5], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[6], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[7], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega[8], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[0], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[1], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[2], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[3], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[4], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[5], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[6], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[7], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[8], 2 * rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[9], 2 * rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[13], 2 * rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[17], 2 * rs_k1_);
-        finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+        status = rigidsym_c_newton_euler_wrench_with_jacobians(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
+        status |= rigidsym_c_back_d(&out_w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[5], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[9], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[10], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[11], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[12], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[13], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[14], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[15], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[16], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[17], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[18], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[19], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[20], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[21], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[22], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[23], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[24], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[25], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[26], 2 * rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_m[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_m[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_m[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[0], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[1], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[2], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[3], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[4], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[5], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[6], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[7], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[8], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_c_ddot[9], 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_c_ddot[13], 2 * rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_c_ddot[17], 2 * rs_k1_);
+        finite = (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(c_ddot, 3));
-    rs_k1_ = -(rigidsym_c_exponent_d(I_C, 9));
-    rs_k2_ = -(rigidsym_c_exponent_d(&m, 1));
-    rs_k3_ = -(rigidsym_c_exponent_d(omega, 3));
-    still_ |= rigidsym_c_scale_d(I_C, rs_I_C, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_d(&m, &rs_m, 1, rs_k2_);
-    still_ |= rigidsym_c_scale_d(omega, rs_omega, 3, rs_k3_);
-    still_ |= rigidsym_c_scale_d(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
-    still_ |= rigidsym_c_scale_d(c_ddot, rs_c_ddot, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_d(in_I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_d(&in_m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_d(in_omega, 3));
+    still_ |= rigidsym_c_scale_d(in_I_C, sc_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_d(&in_m, &sc_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_d(in_omega, sc_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_d(in_omega_dot, sc_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_d(in_c_ddot, sc_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench_with_jacobians(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_d(&w[0], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[1], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[2], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w[3], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w[4], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w[5], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_I_C[0], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[1], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[2], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[3], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[4], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[5], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[6], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[7], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[8], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[9], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[10], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[11], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[12], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[13], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[14], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[15], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[16], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[17], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[18], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[19], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[20], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[21], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[22], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[23], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[24], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[25], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_I_C[26], 2 * rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_m[3], rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_m[4], rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_m[5], rs_k0_);
-        status |= rigidsym_c_back_d(&w_D_omega[0], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[1], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[2], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[3], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[4], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[5], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[6], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[7], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega[8], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[0], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[1], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[2], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[3], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[4], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[5], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[6], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[7], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_omega_dot[8], rs_k1_);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[9], rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[13], rs_k2_);
-        status |= rigidsym_c_back_d(&w_D_c_ddot[17], rs_k2_);
-        finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+        status = rigidsym_c_newton_euler_wrench_with_jacobians(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
+        status |= rigidsym_c_back_d(&out_w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w[5], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[0], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[1], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[2], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[6], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[7], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[8], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[9], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[10], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[11], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[12], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[13], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[14], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[15], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[16], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[17], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[18], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[19], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[20], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[21], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[22], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[23], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[24], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[25], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_I_C[26], 2 * rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_m[3], rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_m[4], rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_m[5], rs_k0_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[0], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[1], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[2], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[3], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[4], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[5], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[6], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[7], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega[8], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[0], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[1], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[2], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[3], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[4], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[5], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[6], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[7], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_omega_dot[8], rs_k1_);
+        status |= rigidsym_c_back_d(&out_w_D_c_ddot[9], rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_c_ddot[13], rs_k2_);
+        status |= rigidsym_c_back_d(&out_w_D_c_ddot[17], rs_k2_);
+        finite = (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -1403,317 +1400,317 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_newton_euler_wrench_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_plain(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6],
-    double w_D_I_C[54],
-    double w_D_m[6],
-    double w_D_omega[18],
-    double w_D_omega_dot[18],
-    double w_D_c_ddot[18])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6],
+    double out_w_D_I_C[54],
+    double out_w_D_m[6],
+    double out_w_D_omega[18],
+    double out_w_D_omega_dot[18],
+    double out_w_D_c_ddot[18])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double I_C_00 = I_C[0];
-    const double I_C_01 = I_C[1];
-    const double I_C_02 = I_C[2];
-    const double I_C_10 = I_C[3];
-    const double I_C_11 = I_C[4];
-    const double I_C_12 = I_C[5];
-    const double I_C_20 = I_C[6];
-    const double I_C_21 = I_C[7];
-    const double I_C_22 = I_C[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
-    const double omega_dot_0 = omega_dot[0];
-    const double omega_dot_1 = omega_dot[1];
-    const double omega_dot_2 = omega_dot[2];
-    const double c_ddot_0 = c_ddot[0];
-    const double c_ddot_1 = c_ddot[1];
-    const double c_ddot_2 = c_ddot[2];
+    const double c0_I_C = in_I_C[0];
+    const double c1_I_C = in_I_C[1];
+    const double c2_I_C = in_I_C[2];
+    const double c3_I_C = in_I_C[3];
+    const double c4_I_C = in_I_C[4];
+    const double c5_I_C = in_I_C[5];
+    const double c6_I_C = in_I_C[6];
+    const double c7_I_C = in_I_C[7];
+    const double c8_I_C = in_I_C[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
+    const double c0_omega_dot = in_omega_dot[0];
+    const double c1_omega_dot = in_omega_dot[1];
+    const double c2_omega_dot = in_omega_dot[2];
+    const double c0_c_ddot = in_c_ddot[0];
+    const double c1_c_ddot = in_c_ddot[1];
+    const double c2_c_ddot = in_c_ddot[2];
     {
-        const double x0 = I_C_21*omega_1;
-        const double x1 = I_C_20*omega_0;
-        const double x2 = I_C_22*omega_2;
+        const double x0 = c7_I_C*c1_omega;
+        const double x1 = c6_I_C*c0_omega;
+        const double x2 = c8_I_C*c2_omega;
         const double x3 = x1 + x2;
         const double x4 = x0 + x3;
-        const double x5 = I_C_12*omega_2;
-        const double x6 = I_C_10*omega_0;
-        const double x7 = I_C_11*omega_1;
+        const double x5 = c5_I_C*c2_omega;
+        const double x6 = c3_I_C*c0_omega;
+        const double x7 = c4_I_C*c1_omega;
         const double x8 = x6 + x7;
         const double x9 = x5 + x8;
-        const double x10 = I_C_02*omega_2;
-        const double x11 = I_C_00*omega_0;
-        const double x12 = I_C_01*omega_1;
+        const double x10 = c2_I_C*c2_omega;
+        const double x11 = c0_I_C*c0_omega;
+        const double x12 = c1_I_C*c1_omega;
         const double x13 = x11 + x12;
         const double x14 = x10 + x13;
-        const double x15 = omega_0*omega_2;
+        const double x15 = c0_omega*c2_omega;
         const double x16 = -x15;
-        const double x17 = omega_1*omega_2;
+        const double x17 = c1_omega*c2_omega;
         const double x18 = -x17;
-        const double x19 = (omega_2*omega_2);
-        const double x20 = omega_0*omega_1;
-        const double x21 = (omega_1*omega_1);
-        const double x22 = (omega_0*omega_0);
+        const double x19 = (c2_omega*c2_omega);
+        const double x20 = c0_omega*c1_omega;
+        const double x21 = (c1_omega*c1_omega);
+        const double x22 = (c0_omega*c0_omega);
         const double x23 = -x20;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
-        w_D_I_C[0] = omega_dot_0;
-        w_D_I_C[1] = omega_dot_1;
-        w_D_I_C[2] = omega_dot_2;
-        w_D_I_C[3] = x16;
-        w_D_I_C[4] = x18;
-        w_D_I_C[5] = -x19;
-        w_D_I_C[6] = x20;
-        w_D_I_C[7] = x21;
-        w_D_I_C[8] = x17;
-        w_D_I_C[9] = x15;
-        w_D_I_C[10] = x17;
-        w_D_I_C[11] = x19;
-        w_D_I_C[12] = omega_dot_0;
-        w_D_I_C[13] = omega_dot_1;
-        w_D_I_C[14] = omega_dot_2;
-        w_D_I_C[15] = -x22;
-        w_D_I_C[16] = x23;
-        w_D_I_C[17] = x16;
-        w_D_I_C[18] = x23;
-        w_D_I_C[19] = -x21;
-        w_D_I_C[20] = x18;
-        w_D_I_C[21] = x22;
-        w_D_I_C[22] = x20;
-        w_D_I_C[23] = x15;
-        w_D_I_C[24] = omega_dot_0;
-        w_D_I_C[25] = omega_dot_1;
-        w_D_I_C[26] = omega_dot_2;
-        w_D_I_C[27] = 0.0;
-        w_D_I_C[28] = 0.0;
-        w_D_I_C[29] = 0.0;
-        w_D_I_C[30] = 0.0;
-        w_D_I_C[31] = 0.0;
-        w_D_I_C[32] = 0.0;
-        w_D_I_C[33] = 0.0;
-        w_D_I_C[34] = 0.0;
-        w_D_I_C[35] = 0.0;
-        w_D_I_C[36] = 0.0;
-        w_D_I_C[37] = 0.0;
-        w_D_I_C[38] = 0.0;
-        w_D_I_C[39] = 0.0;
-        w_D_I_C[40] = 0.0;
-        w_D_I_C[41] = 0.0;
-        w_D_I_C[42] = 0.0;
-        w_D_I_C[43] = 0.0;
-        w_D_I_C[44] = 0.0;
-        w_D_I_C[45] = 0.0;
-        w_D_I_C[46] = 0.0;
-        w_D_I_C[47] = 0.0;
-        w_D_I_C[48] = 0.0;
-        w_D_I_C[49] = 0.0;
-        w_D_I_C[50] = 0.0;
-        w_D_I_C[51] = 0.0;
-        w_D_I_C[52] = 0.0;
-        w_D_I_C[53] = 0.0;
-        w_D_m[0] = 0.0;
-        w_D_m[1] = 0.0;
-        w_D_m[2] = 0.0;
-        w_D_m[3] = c_ddot_0;
-        w_D_m[4] = c_ddot_1;
-        w_D_m[5] = c_ddot_2;
-        w_D_omega[0] = -I_C_10*omega_2 + I_C_20*omega_1;
-        w_D_omega[1] = -I_C_11*omega_2 + 2.0*x0 + x3;
-        w_D_omega[2] = I_C_22*omega_1 - 2.0*x5 - x8;
-        w_D_omega[3] = I_C_00*omega_2 - x0 - 2.0*x1 - x2;
-        w_D_omega[4] = I_C_01*omega_2 - I_C_21*omega_0;
-        w_D_omega[5] = -I_C_22*omega_0 + 2.0*x10 + x13;
-        w_D_omega[6] = -I_C_00*omega_1 + x5 + 2.0*x6 + x7;
-        w_D_omega[7] = I_C_11*omega_0 - x10 - x11 - 2.0*x12;
-        w_D_omega[8] = -I_C_02*omega_1 + I_C_12*omega_0;
-        w_D_omega[9] = 0.0;
-        w_D_omega[10] = 0.0;
-        w_D_omega[11] = 0.0;
-        w_D_omega[12] = 0.0;
-        w_D_omega[13] = 0.0;
-        w_D_omega[14] = 0.0;
-        w_D_omega[15] = 0.0;
-        w_D_omega[16] = 0.0;
-        w_D_omega[17] = 0.0;
-        w_D_omega_dot[0] = I_C_00;
-        w_D_omega_dot[1] = I_C_01;
-        w_D_omega_dot[2] = I_C_02;
-        w_D_omega_dot[3] = I_C_10;
-        w_D_omega_dot[4] = I_C_11;
-        w_D_omega_dot[5] = I_C_12;
-        w_D_omega_dot[6] = I_C_20;
-        w_D_omega_dot[7] = I_C_21;
-        w_D_omega_dot[8] = I_C_22;
-        w_D_omega_dot[9] = 0.0;
-        w_D_omega_dot[10] = 0.0;
-        w_D_omega_dot[11] = 0.0;
-        w_D_omega_dot[12] = 0.0;
-        w_D_omega_dot[13] = 0.0;
-        w_D_omega_dot[14] = 0.0;
-        w_D_omega_dot[15] = 0.0;
-        w_D_omega_dot[16] = 0.0;
-        w_D_omega_dot[17] = 0.0;
-        w_D_c_ddot[0] = 0.0;
-        w_D_c_ddot[1] = 0.0;
-        w_D_c_ddot[2] = 0.0;
-        w_D_c_ddot[3] = 0.0;
-        w_D_c_ddot[4] = 0.0;
-        w_D_c_ddot[5] = 0.0;
-        w_D_c_ddot[6] = 0.0;
-        w_D_c_ddot[7] = 0.0;
-        w_D_c_ddot[8] = 0.0;
-        w_D_c_ddot[9] = m;
-        w_D_c_ddot[10] = 0.0;
-        w_D_c_ddot[11] = 0.0;
-        w_D_c_ddot[12] = 0.0;
-        w_D_c_ddot[13] = m;
-        w_D_c_ddot[14] = 0.0;
-        w_D_c_ddot[15] = 0.0;
-        w_D_c_ddot[16] = 0.0;
-        w_D_c_ddot[17] = m;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x4 - c2_omega*x9;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x4 + c2_omega*x14;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x9 - c1_omega*x14;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        out_w_D_I_C[0] = c0_omega_dot;
+        out_w_D_I_C[1] = c1_omega_dot;
+        out_w_D_I_C[2] = c2_omega_dot;
+        out_w_D_I_C[3] = x16;
+        out_w_D_I_C[4] = x18;
+        out_w_D_I_C[5] = -x19;
+        out_w_D_I_C[6] = x20;
+        out_w_D_I_C[7] = x21;
+        out_w_D_I_C[8] = x17;
+        out_w_D_I_C[9] = x15;
+        out_w_D_I_C[10] = x17;
+        out_w_D_I_C[11] = x19;
+        out_w_D_I_C[12] = c0_omega_dot;
+        out_w_D_I_C[13] = c1_omega_dot;
+        out_w_D_I_C[14] = c2_omega_dot;
+        out_w_D_I_C[15] = -x22;
+        out_w_D_I_C[16] = x23;
+        out_w_D_I_C[17] = x16;
+        out_w_D_I_C[18] = x23;
+        out_w_D_I_C[19] = -x21;
+        out_w_D_I_C[20] = x18;
+        out_w_D_I_C[21] = x22;
+        out_w_D_I_C[22] = x20;
+        out_w_D_I_C[23] = x15;
+        out_w_D_I_C[24] = c0_omega_dot;
+        out_w_D_I_C[25] = c1_omega_dot;
+        out_w_D_I_C[26] = c2_omega_dot;
+        out_w_D_I_C[27] = 0.0;
+        out_w_D_I_C[28] = 0.0;
+        out_w_D_I_C[29] = 0.0;
+        out_w_D_I_C[30] = 0.0;
+        out_w_D_I_C[31] = 0.0;
+        out_w_D_I_C[32] = 0.0;
+        out_w_D_I_C[33] = 0.0;
+        out_w_D_I_C[34] = 0.0;
+        out_w_D_I_C[35] = 0.0;
+        out_w_D_I_C[36] = 0.0;
+        out_w_D_I_C[37] = 0.0;
+        out_w_D_I_C[38] = 0.0;
+        out_w_D_I_C[39] = 0.0;
+        out_w_D_I_C[40] = 0.0;
+        out_w_D_I_C[41] = 0.0;
+        out_w_D_I_C[42] = 0.0;
+        out_w_D_I_C[43] = 0.0;
+        out_w_D_I_C[44] = 0.0;
+        out_w_D_I_C[45] = 0.0;
+        out_w_D_I_C[46] = 0.0;
+        out_w_D_I_C[47] = 0.0;
+        out_w_D_I_C[48] = 0.0;
+        out_w_D_I_C[49] = 0.0;
+        out_w_D_I_C[50] = 0.0;
+        out_w_D_I_C[51] = 0.0;
+        out_w_D_I_C[52] = 0.0;
+        out_w_D_I_C[53] = 0.0;
+        out_w_D_m[0] = 0.0;
+        out_w_D_m[1] = 0.0;
+        out_w_D_m[2] = 0.0;
+        out_w_D_m[3] = c0_c_ddot;
+        out_w_D_m[4] = c1_c_ddot;
+        out_w_D_m[5] = c2_c_ddot;
+        out_w_D_omega[0] = -c3_I_C*c2_omega + c6_I_C*c1_omega;
+        out_w_D_omega[1] = -c4_I_C*c2_omega + 2.0*x0 + x3;
+        out_w_D_omega[2] = c8_I_C*c1_omega - 2.0*x5 - x8;
+        out_w_D_omega[3] = c0_I_C*c2_omega - x0 - 2.0*x1 - x2;
+        out_w_D_omega[4] = c1_I_C*c2_omega - c7_I_C*c0_omega;
+        out_w_D_omega[5] = -c8_I_C*c0_omega + 2.0*x10 + x13;
+        out_w_D_omega[6] = -c0_I_C*c1_omega + x5 + 2.0*x6 + x7;
+        out_w_D_omega[7] = c4_I_C*c0_omega - x10 - x11 - 2.0*x12;
+        out_w_D_omega[8] = -c2_I_C*c1_omega + c5_I_C*c0_omega;
+        out_w_D_omega[9] = 0.0;
+        out_w_D_omega[10] = 0.0;
+        out_w_D_omega[11] = 0.0;
+        out_w_D_omega[12] = 0.0;
+        out_w_D_omega[13] = 0.0;
+        out_w_D_omega[14] = 0.0;
+        out_w_D_omega[15] = 0.0;
+        out_w_D_omega[16] = 0.0;
+        out_w_D_omega[17] = 0.0;
+        out_w_D_omega_dot[0] = c0_I_C;
+        out_w_D_omega_dot[1] = c1_I_C;
+        out_w_D_omega_dot[2] = c2_I_C;
+        out_w_D_omega_dot[3] = c3_I_C;
+        out_w_D_omega_dot[4] = c4_I_C;
+        out_w_D_omega_dot[5] = c5_I_C;
+        out_w_D_omega_dot[6] = c6_I_C;
+        out_w_D_omega_dot[7] = c7_I_C;
+        out_w_D_omega_dot[8] = c8_I_C;
+        out_w_D_omega_dot[9] = 0.0;
+        out_w_D_omega_dot[10] = 0.0;
+        out_w_D_omega_dot[11] = 0.0;
+        out_w_D_omega_dot[12] = 0.0;
+        out_w_D_omega_dot[13] = 0.0;
+        out_w_D_omega_dot[14] = 0.0;
+        out_w_D_omega_dot[15] = 0.0;
+        out_w_D_omega_dot[16] = 0.0;
+        out_w_D_omega_dot[17] = 0.0;
+        out_w_D_c_ddot[0] = 0.0;
+        out_w_D_c_ddot[1] = 0.0;
+        out_w_D_c_ddot[2] = 0.0;
+        out_w_D_c_ddot[3] = 0.0;
+        out_w_D_c_ddot[4] = 0.0;
+        out_w_D_c_ddot[5] = 0.0;
+        out_w_D_c_ddot[6] = 0.0;
+        out_w_D_c_ddot[7] = 0.0;
+        out_w_D_c_ddot[8] = 0.0;
+        out_w_D_c_ddot[9] = in_m;
+        out_w_D_c_ddot[10] = 0.0;
+        out_w_D_c_ddot[11] = 0.0;
+        out_w_D_c_ddot[12] = 0.0;
+        out_w_D_c_ddot[13] = in_m;
+        out_w_D_c_ddot[14] = 0.0;
+        out_w_D_c_ddot[15] = 0.0;
+        out_w_D_c_ddot[16] = 0.0;
+        out_w_D_c_ddot[17] = in_m;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        const double s_ = ((((((out_w[0] + (out_w[1] + out_w[2])) + ((out_w[3] + out_w[4]) + (out_w[5] + out_w_D_I_C[0]))) + (((out_w_D_I_C[1] + out_w_D_I_C[2]) + (out_w_D_I_C[3] + out_w_D_I_C[4])) + ((out_w_D_I_C[5] + out_w_D_I_C[6]) + (out_w_D_I_C[7] + out_w_D_I_C[8])))) + (((out_w_D_I_C[9] + (out_w_D_I_C[10] + out_w_D_I_C[11])) + ((out_w_D_I_C[12] + out_w_D_I_C[13]) + (out_w_D_I_C[14] + out_w_D_I_C[15]))) + (((out_w_D_I_C[16] + out_w_D_I_C[17]) + (out_w_D_I_C[18] + out_w_D_I_C[19])) + ((out_w_D_I_C[20] + out_w_D_I_C[21]) + (out_w_D_I_C[22] + out_w_D_I_C[23]))))) + ((((out_w_D_I_C[24] + (out_w_D_I_C[25] + out_w_D_I_C[26])) + ((out_w_D_I_C[27] + out_w_D_I_C[28]) + (out_w_D_I_C[29] + out_w_D_I_C[30]))) + (((out_w_D_I_C[31] + out_w_D_I_C[32]) + (out_w_D_I_C[33] + out_w_D_I_C[34])) + ((out_w_D_I_C[35] + out_w_D_I_C[36]) + (out_w_D_I_C[37] + out_w_D_I_C[38])))) + (((out_w_D_I_C[39] + (out_w_D_I_C[40] + out_w_D_I_C[41])) + ((out_w_D_I_C[42] + out_w_D_I_C[43]) + (out_w_D_I_C[44] + out_w_D_I_C[45]))) + (((out_w_D_I_C[46] + out_w_D_I_C[47]) + (out_w_D_I_C[48] + out_w_D_I_C[49])) + ((out_w_D_I_C[50] + out_w_D_I_C[51]) + (out_w_D_I_C[52] + out_w_D_I_C[53])))))) + (((((out_w_D_m[0] + (out_w_D_m[1] + out_w_D_m[2])) + ((out_w_D_m[3] + out_w_D_m[4]) + (out_w_D_m[5] + out_w_D_omega[0]))) + (((out_w_D_omega[1] + out_w_D_omega[2]) + (out_w_D_omega[3] + out_w_D_omega[4])) + ((out_w_D_omega[5] + out_w_D_omega[6]) + (out_w_D_omega[7] + out_w_D_omega[8])))) + (((out_w_D_omega[9] + (out_w_D_omega[10] + out_w_D_omega[11])) + ((out_w_D_omega[12] + out_w_D_omega[13]) + (out_w_D_omega[14] + out_w_D_omega[15]))) + (((out_w_D_omega[16] + out_w_D_omega[17]) + (out_w_D_omega_dot[0] + out_w_D_omega_dot[1])) + ((out_w_D_omega_dot[2] + out_w_D_omega_dot[3]) + (out_w_D_omega_dot[4] + out_w_D_omega_dot[5]))))) + ((((out_w_D_omega_dot[6] + (out_w_D_omega_dot[7] + out_w_D_omega_dot[8])) + ((out_w_D_omega_dot[9] + out_w_D_omega_dot[10]) + (out_w_D_omega_dot[11] + out_w_D_omega_dot[12]))) + (((out_w_D_omega_dot[13] + out_w_D_omega_dot[14]) + (out_w_D_omega_dot[15] + out_w_D_omega_dot[16])) + ((out_w_D_omega_dot[17] + out_w_D_c_ddot[0]) + (out_w_D_c_ddot[1] + out_w_D_c_ddot[2])))) + (((out_w_D_c_ddot[3] + (out_w_D_c_ddot[4] + out_w_D_c_ddot[5])) + ((out_w_D_c_ddot[6] + out_w_D_c_ddot[7]) + (out_w_D_c_ddot[8] + out_w_D_c_ddot[9]))) + (((out_w_D_c_ddot[10] + out_w_D_c_ddot[11]) + (out_w_D_c_ddot[12] + out_w_D_c_ddot[13])) + ((out_w_D_c_ddot[14] + out_w_D_c_ddot[15]) + (out_w_D_c_ddot[16] + out_w_D_c_ddot[17])))))));
         if (!(s_ - s_ == 0.0))
-            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+            finite += (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = (double)NAN;
-        w[1] = (double)NAN;
-        w[2] = (double)NAN;
-        w[3] = (double)NAN;
-        w[4] = (double)NAN;
-        w[5] = (double)NAN;
-        w_D_I_C[0] = (double)NAN;
-        w_D_I_C[1] = (double)NAN;
-        w_D_I_C[2] = (double)NAN;
-        w_D_I_C[3] = (double)NAN;
-        w_D_I_C[4] = (double)NAN;
-        w_D_I_C[5] = (double)NAN;
-        w_D_I_C[6] = (double)NAN;
-        w_D_I_C[7] = (double)NAN;
-        w_D_I_C[8] = (double)NAN;
-        w_D_I_C[9] = (double)NAN;
-        w_D_I_C[10] = (double)NAN;
-        w_D_I_C[11] = (double)NAN;
-        w_D_I_C[12] = (double)NAN;
-        w_D_I_C[13] = (double)NAN;
-        w_D_I_C[14] = (double)NAN;
-        w_D_I_C[15] = (double)NAN;
-        w_D_I_C[16] = (double)NAN;
-        w_D_I_C[17] = (double)NAN;
-        w_D_I_C[18] = (double)NAN;
-        w_D_I_C[19] = (double)NAN;
-        w_D_I_C[20] = (double)NAN;
-        w_D_I_C[21] = (double)NAN;
-        w_D_I_C[22] = (double)NAN;
-        w_D_I_C[23] = (double)NAN;
-        w_D_I_C[24] = (double)NAN;
-        w_D_I_C[25] = (double)NAN;
-        w_D_I_C[26] = (double)NAN;
-        w_D_I_C[27] = (double)NAN;
-        w_D_I_C[28] = (double)NAN;
-        w_D_I_C[29] = (double)NAN;
-        w_D_I_C[30] = (double)NAN;
-        w_D_I_C[31] = (double)NAN;
-        w_D_I_C[32] = (double)NAN;
-        w_D_I_C[33] = (double)NAN;
-        w_D_I_C[34] = (double)NAN;
-        w_D_I_C[35] = (double)NAN;
-        w_D_I_C[36] = (double)NAN;
-        w_D_I_C[37] = (double)NAN;
-        w_D_I_C[38] = (double)NAN;
-        w_D_I_C[39] = (double)NAN;
-        w_D_I_C[40] = (double)NAN;
-        w_D_I_C[41] = (double)NAN;
-        w_D_I_C[42] = (double)NAN;
-        w_D_I_C[43] = (double)NAN;
-        w_D_I_C[44] = (double)NAN;
-        w_D_I_C[45] = (double)NAN;
-        w_D_I_C[46] = (double)NAN;
-        w_D_I_C[47] = (double)NAN;
-        w_D_I_C[48] = (double)NAN;
-        w_D_I_C[49] = (double)NAN;
-        w_D_I_C[50] = (double)NAN;
-        w_D_I_C[51] = (double)NAN;
-        w_D_I_C[52] = (double)NAN;
-        w_D_I_C[53] = (double)NAN;
-        w_D_m[0] = (double)NAN;
-        w_D_m[1] = (double)NAN;
-        w_D_m[2] = (double)NAN;
-        w_D_m[3] = (double)NAN;
-        w_D_m[4] = (double)NAN;
-        w_D_m[5] = (double)NAN;
-        w_D_omega[0] = (double)NAN;
-        w_D_omega[1] = (double)NAN;
-        w_D_omega[2] = (double)NAN;
-        w_D_omega[3] = (double)NAN;
-        w_D_omega[4] = (double)NAN;
-        w_D_omega[5] = (double)NAN;
-        w_D_omega[6] = (double)NAN;
-        w_D_omega[7] = (double)NAN;
-        w_D_omega[8] = (double)NAN;
-        w_D_omega[9] = (double)NAN;
-        w_D_omega[10] = (double)NAN;
-        w_D_omega[11] = (double)NAN;
-        w_D_omega[12] = (double)NAN;
-        w_D_omega[13] = (double)NAN;
-        w_D_omega[14] = (double)NAN;
-        w_D_omega[15] = (double)NAN;
-        w_D_omega[16] = (double)NAN;
-        w_D_omega[17] = (double)NAN;
-        w_D_omega_dot[0] = (double)NAN;
-        w_D_omega_dot[1] = (double)NAN;
-        w_D_omega_dot[2] = (double)NAN;
-        w_D_omega_dot[3] = (double)NAN;
-        w_D_omega_dot[4] = (double)NAN;
-        w_D_omega_dot[5] = (double)NAN;
-        w_D_omega_dot[6] = (double)NAN;
-        w_D_omega_dot[7] = (double)NAN;
-        w_D_omega_dot[8] = (double)NAN;
-        w_D_omega_dot[9] = (double)NAN;
-        w_D_omega_dot[10] = (double)NAN;
-        w_D_omega_dot[11] = (double)NAN;
-        w_D_omega_dot[12] = (double)NAN;
-        w_D_omega_dot[13] = (double)NAN;
-        w_D_omega_dot[14] = (double)NAN;
-        w_D_omega_dot[15] = (double)NAN;
-        w_D_omega_dot[16] = (double)NAN;
-        w_D_omega_dot[17] = (double)NAN;
-        w_D_c_ddot[0] = (double)NAN;
-        w_D_c_ddot[1] = (double)NAN;
-        w_D_c_ddot[2] = (double)NAN;
-        w_D_c_ddot[3] = (double)NAN;
-        w_D_c_ddot[4] = (double)NAN;
-        w_D_c_ddot[5] = (double)NAN;
-        w_D_c_ddot[6] = (double)NAN;
-        w_D_c_ddot[7] = (double)NAN;
-        w_D_c_ddot[8] = (double)NAN;
-        w_D_c_ddot[9] = (double)NAN;
-        w_D_c_ddot[10] = (double)NAN;
-        w_D_c_ddot[11] = (double)NAN;
-        w_D_c_ddot[12] = (double)NAN;
-        w_D_c_ddot[13] = (double)NAN;
-        w_D_c_ddot[14] = (double)NAN;
-        w_D_c_ddot[15] = (double)NAN;
-        w_D_c_ddot[16] = (double)NAN;
-        w_D_c_ddot[17] = (double)NAN;
+        out_w[0] = (double)NAN;
+        out_w[1] = (double)NAN;
+        out_w[2] = (double)NAN;
+        out_w[3] = (double)NAN;
+        out_w[4] = (double)NAN;
+        out_w[5] = (double)NAN;
+        out_w_D_I_C[0] = (double)NAN;
+        out_w_D_I_C[1] = (double)NAN;
+        out_w_D_I_C[2] = (double)NAN;
+        out_w_D_I_C[3] = (double)NAN;
+        out_w_D_I_C[4] = (double)NAN;
+        out_w_D_I_C[5] = (double)NAN;
+        out_w_D_I_C[6] = (double)NAN;
+        out_w_D_I_C[7] = (double)NAN;
+        out_w_D_I_C[8] = (double)NAN;
+        out_w_D_I_C[9] = (double)NAN;
+        out_w_D_I_C[10] = (double)NAN;
+        out_w_D_I_C[11] = (double)NAN;
+        out_w_D_I_C[12] = (double)NAN;
+        out_w_D_I_C[13] = (double)NAN;
+        out_w_D_I_C[14] = (double)NAN;
+        out_w_D_I_C[15] = (double)NAN;
+        out_w_D_I_C[16] = (double)NAN;
+        out_w_D_I_C[17] = (double)NAN;
+        out_w_D_I_C[18] = (double)NAN;
+        out_w_D_I_C[19] = (double)NAN;
+        out_w_D_I_C[20] = (double)NAN;
+        out_w_D_I_C[21] = (double)NAN;
+        out_w_D_I_C[22] = (double)NAN;
+        out_w_D_I_C[23] = (double)NAN;
+        out_w_D_I_C[24] = (double)NAN;
+        out_w_D_I_C[25] = (double)NAN;
+        out_w_D_I_C[26] = (double)NAN;
+        out_w_D_I_C[27] = (double)NAN;
+        out_w_D_I_C[28] = (double)NAN;
+        out_w_D_I_C[29] = (double)NAN;
+        out_w_D_I_C[30] = (double)NAN;
+        out_w_D_I_C[31] = (double)NAN;
+        out_w_D_I_C[32] = (double)NAN;
+        out_w_D_I_C[33] = (double)NAN;
+        out_w_D_I_C[34] = (double)NAN;
+        out_w_D_I_C[35] = (double)NAN;
+        out_w_D_I_C[36] = (double)NAN;
+        out_w_D_I_C[37] = (double)NAN;
+        out_w_D_I_C[38] = (double)NAN;
+        out_w_D_I_C[39] = (double)NAN;
+        out_w_D_I_C[40] = (double)NAN;
+        out_w_D_I_C[41] = (double)NAN;
+        out_w_D_I_C[42] = (double)NAN;
+        out_w_D_I_C[43] = (double)NAN;
+        out_w_D_I_C[44] = (double)NAN;
+        out_w_D_I_C[45] = (double)NAN;
+        out_w_D_I_C[46] = (double)NAN;
+        out_w_D_I_C[47] = (double)NAN;
+        out_w_D_I_C[48] = (double)NAN;
+        out_w_D_I_C[49] = (double)NAN;
+        out_w_D_I_C[50] = (double)NAN;
+        out_w_D_I_C[51] = (double)NAN;
+        out_w_D_I_C[52] = (double)NAN;
+        out_w_D_I_C[53] = (double)NAN;
+        out_w_D_m[0] = (double)NAN;
+        out_w_D_m[1] = (double)NAN;
+        out_w_D_m[2] = (double)NAN;
+        out_w_D_m[3] = (double)NAN;
+        out_w_D_m[4] = (double)NAN;
+        out_w_D_m[5] = (double)NAN;
+        out_w_D_omega[0] = (double)NAN;
+        out_w_D_omega[1] = (double)NAN;
+        out_w_D_omega[2] = (double)NAN;
+        out_w_D_omega[3] = (double)NAN;
+        out_w_D_omega[4] = (double)NAN;
+        out_w_D_omega[5] = (double)NAN;
+        out_w_D_omega[6] = (double)NAN;
+        out_w_D_omega[7] = (double)NAN;
+        out_w_D_omega[8] = (double)NAN;
+        out_w_D_omega[9] = (double)NAN;
+        out_w_D_omega[10] = (double)NAN;
+        out_w_D_omega[11] = (double)NAN;
+        out_w_D_omega[12] = (double)NAN;
+        out_w_D_omega[13] = (double)NAN;
+        out_w_D_omega[14] = (double)NAN;
+        out_w_D_omega[15] = (double)NAN;
+        out_w_D_omega[16] = (double)NAN;
+        out_w_D_omega[17] = (double)NAN;
+        out_w_D_omega_dot[0] = (double)NAN;
+        out_w_D_omega_dot[1] = (double)NAN;
+        out_w_D_omega_dot[2] = (double)NAN;
+        out_w_D_omega_dot[3] = (double)NAN;
+        out_w_D_omega_dot[4] = (double)NAN;
+        out_w_D_omega_dot[5] = (double)NAN;
+        out_w_D_omega_dot[6] = (double)NAN;
+        out_w_D_omega_dot[7] = (double)NAN;
+        out_w_D_omega_dot[8] = (double)NAN;
+        out_w_D_omega_dot[9] = (double)NAN;
+        out_w_D_omega_dot[10] = (double)NAN;
+        out_w_D_omega_dot[11] = (double)NAN;
+        out_w_D_omega_dot[12] = (double)NAN;
+        out_w_D_omega_dot[13] = (double)NAN;
+        out_w_D_omega_dot[14] = (double)NAN;
+        out_w_D_omega_dot[15] = (double)NAN;
+        out_w_D_omega_dot[16] = (double)NAN;
+        out_w_D_omega_dot[17] = (double)NAN;
+        out_w_D_c_ddot[0] = (double)NAN;
+        out_w_D_c_ddot[1] = (double)NAN;
+        out_w_D_c_ddot[2] = (double)NAN;
+        out_w_D_c_ddot[3] = (double)NAN;
+        out_w_D_c_ddot[4] = (double)NAN;
+        out_w_D_c_ddot[5] = (double)NAN;
+        out_w_D_c_ddot[6] = (double)NAN;
+        out_w_D_c_ddot[7] = (double)NAN;
+        out_w_D_c_ddot[8] = (double)NAN;
+        out_w_D_c_ddot[9] = (double)NAN;
+        out_w_D_c_ddot[10] = (double)NAN;
+        out_w_D_c_ddot[11] = (double)NAN;
+        out_w_D_c_ddot[12] = (double)NAN;
+        out_w_D_c_ddot[13] = (double)NAN;
+        out_w_D_c_ddot[14] = (double)NAN;
+        out_w_D_c_ddot[15] = (double)NAN;
+        out_w_D_c_ddot[16] = (double)NAN;
+        out_w_D_c_ddot[17] = (double)NAN;
     }
     return status;
 }
@@ -1721,17 +1718,17 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6],
-    double w_D_I_C[54],
-    double w_D_m[6],
-    double w_D_omega[18],
-    double w_D_omega_dot[18],
-    double w_D_c_ddot[18])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6],
+    double out_w_D_I_C[54],
+    double out_w_D_m[6],
+    double out_w_D_omega[18],
+    double out_w_D_omega_dot[18],
+    double out_w_D_c_ddot[18])
 = rigidsym_c_newton_euler_wrench_with_jacobians_plain;
 #endif
 
@@ -1742,17 +1739,17 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_plain_
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6],
-    double w_D_I_C[54],
-    double w_D_m[6],
-    double w_D_omega[18],
-    double w_D_omega_dot[18],
-    double w_D_c_ddot[18])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6],
+    double out_w_D_I_C[54],
+    double out_w_D_m[6],
+    double out_w_D_omega[18],
+    double out_w_D_omega_dot[18],
+    double out_w_D_c_ddot[18])
 {
     const double *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
@@ -1760,11 +1757,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
+    args[0] = in_I_C;
+    args[1] = &in_m;
+    args[2] = in_omega;
+    args[3] = in_omega_dot;
+    args[4] = in_c_ddot;
     for (j = 0; j < 5; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1777,13 +1774,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_newton_euler_wrench_with_jacobians_wide(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        status = rigidsym_c_newton_euler_wrench_with_jacobians_wide(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_rescue(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -1794,13 +1791,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_newton_euler_wrench_with_jacobians_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        status |= rigidsym_c_newton_euler_wrench_with_jacobians_plain(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1809,12 +1806,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6],    double w_D_I_C[54],    double w_D_m[6],    double w_D_omega[18],    double w_D_omega_dot[18],    double w_D_c_ddot[18])
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6],    double out_w_D_I_C[54],    double out_w_D_m[6],    double out_w_D_omega[18],    double out_w_D_omega_dot[18],    double out_w_D_c_ddot[18])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -1822,39 +1819,39 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C), _mm_load_sd(I_C + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 2), _mm_load_sd(I_C + 2 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 4), _mm_load_sd(I_C + 4 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(I_C + 6), _mm_load_sd(I_C + 6 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&I_C[8], *&m))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega), _mm_load_sd(omega + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&omega[2], *&omega_dot[0]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(omega_dot + 1), _mm_load_sd(omega_dot + 1 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(c_ddot), _mm_load_sd(c_ddot + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&c_ddot[2], 0.0))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C), _mm_load_sd(in_I_C + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C + 2), _mm_load_sd(in_I_C + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C + 4), _mm_load_sd(in_I_C + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C + 6), _mm_load_sd(in_I_C + 6 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_I_C[8], *&in_m))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_omega), _mm_load_sd(in_omega + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_omega[2], *&in_omega_dot[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_omega_dot + 1), _mm_load_sd(in_omega_dot + 1 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_c_ddot), _mm_load_sd(in_c_ddot + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_c_ddot[2], 0.0))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+            return rigidsym_c_newton_euler_wrench_with_jacobians_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 2));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 4));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(I_C + 6));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_I_C + 6));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&I_C[8]), rigidsym_c_bits_d(&m)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_I_C[8]), rigidsym_c_bits_d(&in_m)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_omega));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&omega[2]), rigidsym_c_bits_d(&omega_dot[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_omega[2]), rigidsym_c_bits_d(&in_omega_dot[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(omega_dot + 1));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(c_ddot));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_omega_dot + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_c_ddot));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&c_ddot[2]), 0};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_c_ddot[2]), 0};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         odd = oddv_[0] | oddv_[1];
@@ -1865,188 +1862,188 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, I_C[j_]);
-        RIGIDSYM_C_ODDNZ_D(odd, m);
+            RIGIDSYM_C_ODDNZ_D(odd, in_I_C[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_omega[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_omega_dot[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_c_ddot[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+            return rigidsym_c_newton_euler_wrench_with_jacobians_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_newton_euler_wrench_with_jacobians_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        return rigidsym_c_newton_euler_wrench_with_jacobians_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
 #endif
-    const double I_C_00 = I_C[0];
-    const double I_C_01 = I_C[1];
-    const double I_C_02 = I_C[2];
-    const double I_C_10 = I_C[3];
-    const double I_C_11 = I_C[4];
-    const double I_C_12 = I_C[5];
-    const double I_C_20 = I_C[6];
-    const double I_C_21 = I_C[7];
-    const double I_C_22 = I_C[8];
-    const double omega_0 = omega[0];
-    const double omega_1 = omega[1];
-    const double omega_2 = omega[2];
-    const double omega_dot_0 = omega_dot[0];
-    const double omega_dot_1 = omega_dot[1];
-    const double omega_dot_2 = omega_dot[2];
-    const double c_ddot_0 = c_ddot[0];
-    const double c_ddot_1 = c_ddot[1];
-    const double c_ddot_2 = c_ddot[2];
+    const double c0_I_C = in_I_C[0];
+    const double c1_I_C = in_I_C[1];
+    const double c2_I_C = in_I_C[2];
+    const double c3_I_C = in_I_C[3];
+    const double c4_I_C = in_I_C[4];
+    const double c5_I_C = in_I_C[5];
+    const double c6_I_C = in_I_C[6];
+    const double c7_I_C = in_I_C[7];
+    const double c8_I_C = in_I_C[8];
+    const double c0_omega = in_omega[0];
+    const double c1_omega = in_omega[1];
+    const double c2_omega = in_omega[2];
+    const double c0_omega_dot = in_omega_dot[0];
+    const double c1_omega_dot = in_omega_dot[1];
+    const double c2_omega_dot = in_omega_dot[2];
+    const double c0_c_ddot = in_c_ddot[0];
+    const double c1_c_ddot = in_c_ddot[1];
+    const double c2_c_ddot = in_c_ddot[2];
     {
-        const double x0 = I_C_21*omega_1;
-        const double x1 = I_C_20*omega_0;
-        const double x2 = I_C_22*omega_2;
+        const double x0 = c7_I_C*c1_omega;
+        const double x1 = c6_I_C*c0_omega;
+        const double x2 = c8_I_C*c2_omega;
         const double x3 = x1 + x2;
         const double x4 = x0 + x3;
-        const double x5 = I_C_12*omega_2;
-        const double x6 = I_C_10*omega_0;
-        const double x7 = I_C_11*omega_1;
+        const double x5 = c5_I_C*c2_omega;
+        const double x6 = c3_I_C*c0_omega;
+        const double x7 = c4_I_C*c1_omega;
         const double x8 = x6 + x7;
         const double x9 = x5 + x8;
-        const double x10 = I_C_02*omega_2;
-        const double x11 = I_C_00*omega_0;
-        const double x12 = I_C_01*omega_1;
+        const double x10 = c2_I_C*c2_omega;
+        const double x11 = c0_I_C*c0_omega;
+        const double x12 = c1_I_C*c1_omega;
         const double x13 = x11 + x12;
         const double x14 = x10 + x13;
-        const double x15 = omega_0*omega_2;
+        const double x15 = c0_omega*c2_omega;
         const double x16 = -x15;
-        const double x17 = omega_1*omega_2;
+        const double x17 = c1_omega*c2_omega;
         const double x18 = -x17;
-        const double x19 = (omega_2*omega_2);
-        const double x20 = omega_0*omega_1;
-        const double x21 = (omega_1*omega_1);
-        const double x22 = (omega_0*omega_0);
+        const double x19 = (c2_omega*c2_omega);
+        const double x20 = c0_omega*c1_omega;
+        const double x21 = (c1_omega*c1_omega);
+        const double x22 = (c0_omega*c0_omega);
         const double x23 = -x20;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
-        w_D_I_C[0] = omega_dot_0;
-        w_D_I_C[1] = omega_dot_1;
-        w_D_I_C[2] = omega_dot_2;
-        w_D_I_C[3] = x16;
-        w_D_I_C[4] = x18;
-        w_D_I_C[5] = -x19;
-        w_D_I_C[6] = x20;
-        w_D_I_C[7] = x21;
-        w_D_I_C[8] = x17;
-        w_D_I_C[9] = x15;
-        w_D_I_C[10] = x17;
-        w_D_I_C[11] = x19;
-        w_D_I_C[12] = omega_dot_0;
-        w_D_I_C[13] = omega_dot_1;
-        w_D_I_C[14] = omega_dot_2;
-        w_D_I_C[15] = -x22;
-        w_D_I_C[16] = x23;
-        w_D_I_C[17] = x16;
-        w_D_I_C[18] = x23;
-        w_D_I_C[19] = -x21;
-        w_D_I_C[20] = x18;
-        w_D_I_C[21] = x22;
-        w_D_I_C[22] = x20;
-        w_D_I_C[23] = x15;
-        w_D_I_C[24] = omega_dot_0;
-        w_D_I_C[25] = omega_dot_1;
-        w_D_I_C[26] = omega_dot_2;
-        w_D_I_C[27] = 0.0;
-        w_D_I_C[28] = 0.0;
-        w_D_I_C[29] = 0.0;
-        w_D_I_C[30] = 0.0;
-        w_D_I_C[31] = 0.0;
-        w_D_I_C[32] = 0.0;
-        w_D_I_C[33] = 0.0;
-        w_D_I_C[34] = 0.0;
-        w_D_I_C[35] = 0.0;
-        w_D_I_C[36] = 0.0;
-        w_D_I_C[37] = 0.0;
-        w_D_I_C[38] = 0.0;
-        w_D_I_C[39] = 0.0;
-        w_D_I_C[40] = 0.0;
-        w_D_I_C[41] = 0.0;
-        w_D_I_C[42] = 0.0;
-        w_D_I_C[43] = 0.0;
-        w_D_I_C[44] = 0.0;
-        w_D_I_C[45] = 0.0;
-        w_D_I_C[46] = 0.0;
-        w_D_I_C[47] = 0.0;
-        w_D_I_C[48] = 0.0;
-        w_D_I_C[49] = 0.0;
-        w_D_I_C[50] = 0.0;
-        w_D_I_C[51] = 0.0;
-        w_D_I_C[52] = 0.0;
-        w_D_I_C[53] = 0.0;
-        w_D_m[0] = 0.0;
-        w_D_m[1] = 0.0;
-        w_D_m[2] = 0.0;
-        w_D_m[3] = c_ddot_0;
-        w_D_m[4] = c_ddot_1;
-        w_D_m[5] = c_ddot_2;
-        w_D_omega[0] = -I_C_10*omega_2 + I_C_20*omega_1;
-        w_D_omega[1] = -I_C_11*omega_2 + 2.0*x0 + x3;
-        w_D_omega[2] = I_C_22*omega_1 - 2.0*x5 - x8;
-        w_D_omega[3] = I_C_00*omega_2 - x0 - 2.0*x1 - x2;
-        w_D_omega[4] = I_C_01*omega_2 - I_C_21*omega_0;
-        w_D_omega[5] = -I_C_22*omega_0 + 2.0*x10 + x13;
-        w_D_omega[6] = -I_C_00*omega_1 + x5 + 2.0*x6 + x7;
-        w_D_omega[7] = I_C_11*omega_0 - x10 - x11 - 2.0*x12;
-        w_D_omega[8] = -I_C_02*omega_1 + I_C_12*omega_0;
-        w_D_omega[9] = 0.0;
-        w_D_omega[10] = 0.0;
-        w_D_omega[11] = 0.0;
-        w_D_omega[12] = 0.0;
-        w_D_omega[13] = 0.0;
-        w_D_omega[14] = 0.0;
-        w_D_omega[15] = 0.0;
-        w_D_omega[16] = 0.0;
-        w_D_omega[17] = 0.0;
-        w_D_omega_dot[0] = I_C_00;
-        w_D_omega_dot[1] = I_C_01;
-        w_D_omega_dot[2] = I_C_02;
-        w_D_omega_dot[3] = I_C_10;
-        w_D_omega_dot[4] = I_C_11;
-        w_D_omega_dot[5] = I_C_12;
-        w_D_omega_dot[6] = I_C_20;
-        w_D_omega_dot[7] = I_C_21;
-        w_D_omega_dot[8] = I_C_22;
-        w_D_omega_dot[9] = 0.0;
-        w_D_omega_dot[10] = 0.0;
-        w_D_omega_dot[11] = 0.0;
-        w_D_omega_dot[12] = 0.0;
-        w_D_omega_dot[13] = 0.0;
-        w_D_omega_dot[14] = 0.0;
-        w_D_omega_dot[15] = 0.0;
-        w_D_omega_dot[16] = 0.0;
-        w_D_omega_dot[17] = 0.0;
-        w_D_c_ddot[0] = 0.0;
-        w_D_c_ddot[1] = 0.0;
-        w_D_c_ddot[2] = 0.0;
-        w_D_c_ddot[3] = 0.0;
-        w_D_c_ddot[4] = 0.0;
-        w_D_c_ddot[5] = 0.0;
-        w_D_c_ddot[6] = 0.0;
-        w_D_c_ddot[7] = 0.0;
-        w_D_c_ddot[8] = 0.0;
-        w_D_c_ddot[9] = m;
-        w_D_c_ddot[10] = 0.0;
-        w_D_c_ddot[11] = 0.0;
-        w_D_c_ddot[12] = 0.0;
-        w_D_c_ddot[13] = m;
-        w_D_c_ddot[14] = 0.0;
-        w_D_c_ddot[15] = 0.0;
-        w_D_c_ddot[16] = 0.0;
-        w_D_c_ddot[17] = m;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x4 - c2_omega*x9;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x4 + c2_omega*x14;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x9 - c1_omega*x14;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        out_w_D_I_C[0] = c0_omega_dot;
+        out_w_D_I_C[1] = c1_omega_dot;
+        out_w_D_I_C[2] = c2_omega_dot;
+        out_w_D_I_C[3] = x16;
+        out_w_D_I_C[4] = x18;
+        out_w_D_I_C[5] = -x19;
+        out_w_D_I_C[6] = x20;
+        out_w_D_I_C[7] = x21;
+        out_w_D_I_C[8] = x17;
+        out_w_D_I_C[9] = x15;
+        out_w_D_I_C[10] = x17;
+        out_w_D_I_C[11] = x19;
+        out_w_D_I_C[12] = c0_omega_dot;
+        out_w_D_I_C[13] = c1_omega_dot;
+        out_w_D_I_C[14] = c2_omega_dot;
+        out_w_D_I_C[15] = -x22;
+        out_w_D_I_C[16] = x23;
+        out_w_D_I_C[17] = x16;
+        out_w_D_I_C[18] = x23;
+        out_w_D_I_C[19] = -x21;
+        out_w_D_I_C[20] = x18;
+        out_w_D_I_C[21] = x22;
+        out_w_D_I_C[22] = x20;
+        out_w_D_I_C[23] = x15;
+        out_w_D_I_C[24] = c0_omega_dot;
+        out_w_D_I_C[25] = c1_omega_dot;
+        out_w_D_I_C[26] = c2_omega_dot;
+        out_w_D_I_C[27] = 0.0;
+        out_w_D_I_C[28] = 0.0;
+        out_w_D_I_C[29] = 0.0;
+        out_w_D_I_C[30] = 0.0;
+        out_w_D_I_C[31] = 0.0;
+        out_w_D_I_C[32] = 0.0;
+        out_w_D_I_C[33] = 0.0;
+        out_w_D_I_C[34] = 0.0;
+        out_w_D_I_C[35] = 0.0;
+        out_w_D_I_C[36] = 0.0;
+        out_w_D_I_C[37] = 0.0;
+        out_w_D_I_C[38] = 0.0;
+        out_w_D_I_C[39] = 0.0;
+        out_w_D_I_C[40] = 0.0;
+        out_w_D_I_C[41] = 0.0;
+        out_w_D_I_C[42] = 0.0;
+        out_w_D_I_C[43] = 0.0;
+        out_w_D_I_C[44] = 0.0;
+        out_w_D_I_C[45] = 0.0;
+        out_w_D_I_C[46] = 0.0;
+        out_w_D_I_C[47] = 0.0;
+        out_w_D_I_C[48] = 0.0;
+        out_w_D_I_C[49] = 0.0;
+        out_w_D_I_C[50] = 0.0;
+        out_w_D_I_C[51] = 0.0;
+        out_w_D_I_C[52] = 0.0;
+        out_w_D_I_C[53] = 0.0;
+        out_w_D_m[0] = 0.0;
+        out_w_D_m[1] = 0.0;
+        out_w_D_m[2] = 0.0;
+        out_w_D_m[3] = c0_c_ddot;
+        out_w_D_m[4] = c1_c_ddot;
+        out_w_D_m[5] = c2_c_ddot;
+        out_w_D_omega[0] = -c3_I_C*c2_omega + c6_I_C*c1_omega;
+        out_w_D_omega[1] = -c4_I_C*c2_omega + 2.0*x0 + x3;
+        out_w_D_omega[2] = c8_I_C*c1_omega - 2.0*x5 - x8;
+        out_w_D_omega[3] = c0_I_C*c2_omega - x0 - 2.0*x1 - x2;
+        out_w_D_omega[4] = c1_I_C*c2_omega - c7_I_C*c0_omega;
+        out_w_D_omega[5] = -c8_I_C*c0_omega + 2.0*x10 + x13;
+        out_w_D_omega[6] = -c0_I_C*c1_omega + x5 + 2.0*x6 + x7;
+        out_w_D_omega[7] = c4_I_C*c0_omega - x10 - x11 - 2.0*x12;
+        out_w_D_omega[8] = -c2_I_C*c1_omega + c5_I_C*c0_omega;
+        out_w_D_omega[9] = 0.0;
+        out_w_D_omega[10] = 0.0;
+        out_w_D_omega[11] = 0.0;
+        out_w_D_omega[12] = 0.0;
+        out_w_D_omega[13] = 0.0;
+        out_w_D_omega[14] = 0.0;
+        out_w_D_omega[15] = 0.0;
+        out_w_D_omega[16] = 0.0;
+        out_w_D_omega[17] = 0.0;
+        out_w_D_omega_dot[0] = c0_I_C;
+        out_w_D_omega_dot[1] = c1_I_C;
+        out_w_D_omega_dot[2] = c2_I_C;
+        out_w_D_omega_dot[3] = c3_I_C;
+        out_w_D_omega_dot[4] = c4_I_C;
+        out_w_D_omega_dot[5] = c5_I_C;
+        out_w_D_omega_dot[6] = c6_I_C;
+        out_w_D_omega_dot[7] = c7_I_C;
+        out_w_D_omega_dot[8] = c8_I_C;
+        out_w_D_omega_dot[9] = 0.0;
+        out_w_D_omega_dot[10] = 0.0;
+        out_w_D_omega_dot[11] = 0.0;
+        out_w_D_omega_dot[12] = 0.0;
+        out_w_D_omega_dot[13] = 0.0;
+        out_w_D_omega_dot[14] = 0.0;
+        out_w_D_omega_dot[15] = 0.0;
+        out_w_D_omega_dot[16] = 0.0;
+        out_w_D_omega_dot[17] = 0.0;
+        out_w_D_c_ddot[0] = 0.0;
+        out_w_D_c_ddot[1] = 0.0;
+        out_w_D_c_ddot[2] = 0.0;
+        out_w_D_c_ddot[3] = 0.0;
+        out_w_D_c_ddot[4] = 0.0;
+        out_w_D_c_ddot[5] = 0.0;
+        out_w_D_c_ddot[6] = 0.0;
+        out_w_D_c_ddot[7] = 0.0;
+        out_w_D_c_ddot[8] = 0.0;
+        out_w_D_c_ddot[9] = in_m;
+        out_w_D_c_ddot[10] = 0.0;
+        out_w_D_c_ddot[11] = 0.0;
+        out_w_D_c_ddot[12] = 0.0;
+        out_w_D_c_ddot[13] = in_m;
+        out_w_D_c_ddot[14] = 0.0;
+        out_w_D_c_ddot[15] = 0.0;
+        out_w_D_c_ddot[16] = 0.0;
+        out_w_D_c_ddot[17] = in_m;
     }
     /* no division or root, and every output bounded by 2^308 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -2056,135 +2053,135 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        const double s_ = ((((((out_w[0] + (out_w[1] + out_w[2])) + ((out_w[3] + out_w[4]) + (out_w[5] + out_w_D_I_C[0]))) + (((out_w_D_I_C[1] + out_w_D_I_C[2]) + (out_w_D_I_C[3] + out_w_D_I_C[4])) + ((out_w_D_I_C[5] + out_w_D_I_C[6]) + (out_w_D_I_C[7] + out_w_D_I_C[8])))) + (((out_w_D_I_C[9] + (out_w_D_I_C[10] + out_w_D_I_C[11])) + ((out_w_D_I_C[12] + out_w_D_I_C[13]) + (out_w_D_I_C[14] + out_w_D_I_C[15]))) + (((out_w_D_I_C[16] + out_w_D_I_C[17]) + (out_w_D_I_C[18] + out_w_D_I_C[19])) + ((out_w_D_I_C[20] + out_w_D_I_C[21]) + (out_w_D_I_C[22] + out_w_D_I_C[23]))))) + ((((out_w_D_I_C[24] + (out_w_D_I_C[25] + out_w_D_I_C[26])) + ((out_w_D_I_C[27] + out_w_D_I_C[28]) + (out_w_D_I_C[29] + out_w_D_I_C[30]))) + (((out_w_D_I_C[31] + out_w_D_I_C[32]) + (out_w_D_I_C[33] + out_w_D_I_C[34])) + ((out_w_D_I_C[35] + out_w_D_I_C[36]) + (out_w_D_I_C[37] + out_w_D_I_C[38])))) + (((out_w_D_I_C[39] + (out_w_D_I_C[40] + out_w_D_I_C[41])) + ((out_w_D_I_C[42] + out_w_D_I_C[43]) + (out_w_D_I_C[44] + out_w_D_I_C[45]))) + (((out_w_D_I_C[46] + out_w_D_I_C[47]) + (out_w_D_I_C[48] + out_w_D_I_C[49])) + ((out_w_D_I_C[50] + out_w_D_I_C[51]) + (out_w_D_I_C[52] + out_w_D_I_C[53])))))) + (((((out_w_D_m[0] + (out_w_D_m[1] + out_w_D_m[2])) + ((out_w_D_m[3] + out_w_D_m[4]) + (out_w_D_m[5] + out_w_D_omega[0]))) + (((out_w_D_omega[1] + out_w_D_omega[2]) + (out_w_D_omega[3] + out_w_D_omega[4])) + ((out_w_D_omega[5] + out_w_D_omega[6]) + (out_w_D_omega[7] + out_w_D_omega[8])))) + (((out_w_D_omega[9] + (out_w_D_omega[10] + out_w_D_omega[11])) + ((out_w_D_omega[12] + out_w_D_omega[13]) + (out_w_D_omega[14] + out_w_D_omega[15]))) + (((out_w_D_omega[16] + out_w_D_omega[17]) + (out_w_D_omega_dot[0] + out_w_D_omega_dot[1])) + ((out_w_D_omega_dot[2] + out_w_D_omega_dot[3]) + (out_w_D_omega_dot[4] + out_w_D_omega_dot[5]))))) + ((((out_w_D_omega_dot[6] + (out_w_D_omega_dot[7] + out_w_D_omega_dot[8])) + ((out_w_D_omega_dot[9] + out_w_D_omega_dot[10]) + (out_w_D_omega_dot[11] + out_w_D_omega_dot[12]))) + (((out_w_D_omega_dot[13] + out_w_D_omega_dot[14]) + (out_w_D_omega_dot[15] + out_w_D_omega_dot[16])) + ((out_w_D_omega_dot[17] + out_w_D_c_ddot[0]) + (out_w_D_c_ddot[1] + out_w_D_c_ddot[2])))) + (((out_w_D_c_ddot[3] + (out_w_D_c_ddot[4] + out_w_D_c_ddot[5])) + ((out_w_D_c_ddot[6] + out_w_D_c_ddot[7]) + (out_w_D_c_ddot[8] + out_w_D_c_ddot[9]))) + (((out_w_D_c_ddot[10] + out_w_D_c_ddot[11]) + (out_w_D_c_ddot[12] + out_w_D_c_ddot[13])) + ((out_w_D_c_ddot[14] + out_w_D_c_ddot[15]) + (out_w_D_c_ddot[16] + out_w_D_c_ddot[17])))))));
         if (!(s_ - s_ == 0.0))
-            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+            finite += (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = (double)NAN;
-        w[1] = (double)NAN;
-        w[2] = (double)NAN;
-        w[3] = (double)NAN;
-        w[4] = (double)NAN;
-        w[5] = (double)NAN;
-        w_D_I_C[0] = (double)NAN;
-        w_D_I_C[1] = (double)NAN;
-        w_D_I_C[2] = (double)NAN;
-        w_D_I_C[3] = (double)NAN;
-        w_D_I_C[4] = (double)NAN;
-        w_D_I_C[5] = (double)NAN;
-        w_D_I_C[6] = (double)NAN;
-        w_D_I_C[7] = (double)NAN;
-        w_D_I_C[8] = (double)NAN;
-        w_D_I_C[9] = (double)NAN;
-        w_D_I_C[10] = (double)NAN;
-        w_D_I_C[11] = (double)NAN;
-        w_D_I_C[12] = (double)NAN;
-        w_D_I_C[13] = (double)NAN;
-        w_D_I_C[14] = (double)NAN;
-        w_D_I_C[15] = (double)NAN;
-        w_D_I_C[16] = (double)NAN;
-        w_D_I_C[17] = (double)NAN;
-        w_D_I_C[18] = (double)NAN;
-        w_D_I_C[19] = (double)NAN;
-        w_D_I_C[20] = (double)NAN;
-        w_D_I_C[21] = (double)NAN;
-        w_D_I_C[22] = (double)NAN;
-        w_D_I_C[23] = (double)NAN;
-        w_D_I_C[24] = (double)NAN;
-        w_D_I_C[25] = (double)NAN;
-        w_D_I_C[26] = (double)NAN;
-        w_D_I_C[27] = (double)NAN;
-        w_D_I_C[28] = (double)NAN;
-        w_D_I_C[29] = (double)NAN;
-        w_D_I_C[30] = (double)NAN;
-        w_D_I_C[31] = (double)NAN;
-        w_D_I_C[32] = (double)NAN;
-        w_D_I_C[33] = (double)NAN;
-        w_D_I_C[34] = (double)NAN;
-        w_D_I_C[35] = (double)NAN;
-        w_D_I_C[36] = (double)NAN;
-        w_D_I_C[37] = (double)NAN;
-        w_D_I_C[38] = (double)NAN;
-        w_D_I_C[39] = (double)NAN;
-        w_D_I_C[40] = (double)NAN;
-        w_D_I_C[41] = (double)NAN;
-        w_D_I_C[42] = (double)NAN;
-        w_D_I_C[43] = (double)NAN;
-        w_D_I_C[44] = (double)NAN;
-        w_D_I_C[45] = (double)NAN;
-        w_D_I_C[46] = (double)NAN;
-        w_D_I_C[47] = (double)NAN;
-        w_D_I_C[48] = (double)NAN;
-        w_D_I_C[49] = (double)NAN;
-        w_D_I_C[50] = (double)NAN;
-        w_D_I_C[51] = (double)NAN;
-        w_D_I_C[52] = (double)NAN;
-        w_D_I_C[53] = (double)NAN;
-        w_D_m[0] = (double)NAN;
-        w_D_m[1] = (double)NAN;
-        w_D_m[2] = (double)NAN;
-        w_D_m[3] = (double)NAN;
-        w_D_m[4] = (double)NAN;
-        w_D_m[5] = (double)NAN;
-        w_D_omega[0] = (double)NAN;
-        w_D_omega[1] = (double)NAN;
-        w_D_omega[2] = (double)NAN;
-        w_D_omega[3] = (double)NAN;
-        w_D_omega[4] = (double)NAN;
-        w_D_omega[5] = (double)NAN;
-        w_D_omega[6] = (double)NAN;
-        w_D_omega[7] = (double)NAN;
-        w_D_omega[8] = (double)NAN;
-        w_D_omega[9] = (double)NAN;
-        w_D_omega[10] = (double)NAN;
-        w_D_omega[11] = (double)NAN;
-        w_D_omega[12] = (double)NAN;
-        w_D_omega[13] = (double)NAN;
-        w_D_omega[14] = (double)NAN;
-        w_D_omega[15] = (double)NAN;
-        w_D_omega[16] = (double)NAN;
-        w_D_omega[17] = (double)NAN;
-        w_D_omega_dot[0] = (double)NAN;
-        w_D_omega_dot[1] = (double)NAN;
-        w_D_omega_dot[2] = (double)NAN;
-        w_D_omega_dot[3] = (double)NAN;
-        w_D_omega_dot[4] = (double)NAN;
-        w_D_omega_dot[5] = (double)NAN;
-        w_D_omega_dot[6] = (double)NAN;
-        w_D_omega_dot[7] = (double)NAN;
-        w_D_omega_dot[8] = (double)NAN;
-        w_D_omega_dot[9] = (double)NAN;
-        w_D_omega_dot[10] = (double)NAN;
-        w_D_omega_dot[11] = (double)NAN;
-        w_D_omega_dot[12] = (double)NAN;
-        w_D_omega_dot[13] = (double)NAN;
-        w_D_omega_dot[14] = (double)NAN;
-        w_D_omega_dot[15] = (double)NAN;
-        w_D_omega_dot[16] = (double)NAN;
-        w_D_omega_dot[17] = (double)NAN;
-        w_D_c_ddot[0] = (double)NAN;
-        w_D_c_ddot[1] = (double)NAN;
-        w_D_c_ddot[2] = (double)NAN;
-        w_D_c_ddot[3] = (double)NAN;
-        w_D_c_ddot[4] = (double)NAN;
-        w_D_c_ddot[5] = (double)NAN;
-        w_D_c_ddot[6] = (double)NAN;
-        w_D_c_ddot[7] = (double)NAN;
-        w_D_c_ddot[8] = (double)NAN;
-        w_D_c_ddot[9] = (double)NAN;
-        w_D_c_ddot[10] = (double)NAN;
-        w_D_c_ddot[11] = (double)NAN;
-        w_D_c_ddot[12] = (double)NAN;
-        w_D_c_ddot[13] = (double)NAN;
-        w_D_c_ddot[14] = (double)NAN;
-        w_D_c_ddot[15] = (double)NAN;
-        w_D_c_ddot[16] = (double)NAN;
-        w_D_c_ddot[17] = (double)NAN;
+        out_w[0] = (double)NAN;
+        out_w[1] = (double)NAN;
+        out_w[2] = (double)NAN;
+        out_w[3] = (double)NAN;
+        out_w[4] = (double)NAN;
+        out_w[5] = (double)NAN;
+        out_w_D_I_C[0] = (double)NAN;
+        out_w_D_I_C[1] = (double)NAN;
+        out_w_D_I_C[2] = (double)NAN;
+        out_w_D_I_C[3] = (double)NAN;
+        out_w_D_I_C[4] = (double)NAN;
+        out_w_D_I_C[5] = (double)NAN;
+        out_w_D_I_C[6] = (double)NAN;
+        out_w_D_I_C[7] = (double)NAN;
+        out_w_D_I_C[8] = (double)NAN;
+        out_w_D_I_C[9] = (double)NAN;
+        out_w_D_I_C[10] = (double)NAN;
+        out_w_D_I_C[11] = (double)NAN;
+        out_w_D_I_C[12] = (double)NAN;
+        out_w_D_I_C[13] = (double)NAN;
+        out_w_D_I_C[14] = (double)NAN;
+        out_w_D_I_C[15] = (double)NAN;
+        out_w_D_I_C[16] = (double)NAN;
+        out_w_D_I_C[17] = (double)NAN;
+        out_w_D_I_C[18] = (double)NAN;
+        out_w_D_I_C[19] = (double)NAN;
+        out_w_D_I_C[20] = (double)NAN;
+        out_w_D_I_C[21] = (double)NAN;
+        out_w_D_I_C[22] = (double)NAN;
+        out_w_D_I_C[23] = (double)NAN;
+        out_w_D_I_C[24] = (double)NAN;
+        out_w_D_I_C[25] = (double)NAN;
+        out_w_D_I_C[26] = (double)NAN;
+        out_w_D_I_C[27] = (double)NAN;
+        out_w_D_I_C[28] = (double)NAN;
+        out_w_D_I_C[29] = (double)NAN;
+        out_w_D_I_C[30] = (double)NAN;
+        out_w_D_I_C[31] = (double)NAN;
+        out_w_D_I_C[32] = (double)NAN;
+        out_w_D_I_C[33] = (double)NAN;
+        out_w_D_I_C[34] = (double)NAN;
+        out_w_D_I_C[35] = (double)NAN;
+        out_w_D_I_C[36] = (double)NAN;
+        out_w_D_I_C[37] = (double)NAN;
+        out_w_D_I_C[38] = (double)NAN;
+        out_w_D_I_C[39] = (double)NAN;
+        out_w_D_I_C[40] = (double)NAN;
+        out_w_D_I_C[41] = (double)NAN;
+        out_w_D_I_C[42] = (double)NAN;
+        out_w_D_I_C[43] = (double)NAN;
+        out_w_D_I_C[44] = (double)NAN;
+        out_w_D_I_C[45] = (double)NAN;
+        out_w_D_I_C[46] = (double)NAN;
+        out_w_D_I_C[47] = (double)NAN;
+        out_w_D_I_C[48] = (double)NAN;
+        out_w_D_I_C[49] = (double)NAN;
+        out_w_D_I_C[50] = (double)NAN;
+        out_w_D_I_C[51] = (double)NAN;
+        out_w_D_I_C[52] = (double)NAN;
+        out_w_D_I_C[53] = (double)NAN;
+        out_w_D_m[0] = (double)NAN;
+        out_w_D_m[1] = (double)NAN;
+        out_w_D_m[2] = (double)NAN;
+        out_w_D_m[3] = (double)NAN;
+        out_w_D_m[4] = (double)NAN;
+        out_w_D_m[5] = (double)NAN;
+        out_w_D_omega[0] = (double)NAN;
+        out_w_D_omega[1] = (double)NAN;
+        out_w_D_omega[2] = (double)NAN;
+        out_w_D_omega[3] = (double)NAN;
+        out_w_D_omega[4] = (double)NAN;
+        out_w_D_omega[5] = (double)NAN;
+        out_w_D_omega[6] = (double)NAN;
+        out_w_D_omega[7] = (double)NAN;
+        out_w_D_omega[8] = (double)NAN;
+        out_w_D_omega[9] = (double)NAN;
+        out_w_D_omega[10] = (double)NAN;
+        out_w_D_omega[11] = (double)NAN;
+        out_w_D_omega[12] = (double)NAN;
+        out_w_D_omega[13] = (double)NAN;
+        out_w_D_omega[14] = (double)NAN;
+        out_w_D_omega[15] = (double)NAN;
+        out_w_D_omega[16] = (double)NAN;
+        out_w_D_omega[17] = (double)NAN;
+        out_w_D_omega_dot[0] = (double)NAN;
+        out_w_D_omega_dot[1] = (double)NAN;
+        out_w_D_omega_dot[2] = (double)NAN;
+        out_w_D_omega_dot[3] = (double)NAN;
+        out_w_D_omega_dot[4] = (double)NAN;
+        out_w_D_omega_dot[5] = (double)NAN;
+        out_w_D_omega_dot[6] = (double)NAN;
+        out_w_D_omega_dot[7] = (double)NAN;
+        out_w_D_omega_dot[8] = (double)NAN;
+        out_w_D_omega_dot[9] = (double)NAN;
+        out_w_D_omega_dot[10] = (double)NAN;
+        out_w_D_omega_dot[11] = (double)NAN;
+        out_w_D_omega_dot[12] = (double)NAN;
+        out_w_D_omega_dot[13] = (double)NAN;
+        out_w_D_omega_dot[14] = (double)NAN;
+        out_w_D_omega_dot[15] = (double)NAN;
+        out_w_D_omega_dot[16] = (double)NAN;
+        out_w_D_omega_dot[17] = (double)NAN;
+        out_w_D_c_ddot[0] = (double)NAN;
+        out_w_D_c_ddot[1] = (double)NAN;
+        out_w_D_c_ddot[2] = (double)NAN;
+        out_w_D_c_ddot[3] = (double)NAN;
+        out_w_D_c_ddot[4] = (double)NAN;
+        out_w_D_c_ddot[5] = (double)NAN;
+        out_w_D_c_ddot[6] = (double)NAN;
+        out_w_D_c_ddot[7] = (double)NAN;
+        out_w_D_c_ddot[8] = (double)NAN;
+        out_w_D_c_ddot[9] = (double)NAN;
+        out_w_D_c_ddot[10] = (double)NAN;
+        out_w_D_c_ddot[11] = (double)NAN;
+        out_w_D_c_ddot[12] = (double)NAN;
+        out_w_D_c_ddot[13] = (double)NAN;
+        out_w_D_c_ddot[14] = (double)NAN;
+        out_w_D_c_ddot[15] = (double)NAN;
+        out_w_D_c_ddot[16] = (double)NAN;
+        out_w_D_c_ddot[17] = (double)NAN;
     }
     return status;
 }
@@ -2192,34 +2189,34 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
     size_t count,
-    const double *I_C,
-    const double *m,
-    const double *omega,
-    const double *omega_dot,
-    const double *c_ddot,
-    double *w,
-    double *w_D_I_C,
-    double *w_D_m,
-    double *w_D_omega,
-    double *w_D_omega_dot,
-    double *w_D_c_ddot,
+    const double *in_I_C,
+    const double *in_m,
+    const double *in_omega,
+    const double *in_omega_dot,
+    const double *in_c_ddot,
+    double *out_w,
+    double *out_w_D_I_C,
+    double *out_w_D_m,
+    double *out_w_D_omega,
+    double *out_w_D_omega_dot,
+    double *out_w_D_c_ddot,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_newton_euler_wrench_with_jacobians(
-            I_C + 9 * i_,
-            m[i_],
-            omega + 3 * i_,
-            omega_dot + 3 * i_,
-            c_ddot + 3 * i_,
-            w + 6 * i_,
-            w_D_I_C + 54 * i_,
-            w_D_m + 6 * i_,
-            w_D_omega + 18 * i_,
-            w_D_omega_dot + 18 * i_,
-            w_D_c_ddot + 18 * i_);
+            in_I_C + 9 * i_,
+            in_m[i_],
+            in_omega + 3 * i_,
+            in_omega_dot + 3 * i_,
+            in_c_ddot + 3 * i_,
+            out_w + 6 * i_,
+            out_w_D_I_C + 54 * i_,
+            out_w_D_m + 6 * i_,
+            out_w_D_omega + 18 * i_,
+            out_w_D_omega_dot + 18 * i_,
+            out_w_D_c_ddot + 18 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -2233,17 +2230,17 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6],
-    float w_D_I_C[54],
-    float w_D_m[6],
-    float w_D_omega[18],
-    float w_D_omega_dot[18],
-    float w_D_c_ddot[18])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6],
+    float out_w_D_I_C[54],
+    float out_w_D_m[6],
+    float out_w_D_omega[18],
+    float out_w_D_omega_dot[18],
+    float out_w_D_c_ddot[18])
 {
     int status, still_;
     float finite;
@@ -2253,13 +2250,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_I_C[9];
-    float rs_m;
-    float rs_omega[3];
-    float rs_omega_dot[3];
-    float rs_c_ddot[3];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_I_C[9];
+    float sc_m;
+    float sc_omega[3];
+    float sc_omega_dot[3];
+    float sc_c_ddot[3];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0, rs_k1_ = 0, rs_k2_ = 0, rs_k3_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -2267,163 +2263,163 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(I_C, 9))
+    if (rigidsym_c_subnormal_f(in_I_C, 9))
         return -1;
-    if (rigidsym_c_subnormal_f(&m, 1))
+    if (rigidsym_c_subnormal_f(&in_m, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(omega, 3))
+    if (rigidsym_c_subnormal_f(in_omega, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(omega_dot, 3))
+    if (rigidsym_c_subnormal_f(in_omega_dot, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(c_ddot, 3))
+    if (rigidsym_c_subnormal_f(in_c_ddot, 3))
         return -1;
 #endif
     /* plan 0: free I_C, m, omega_dot, c_ddot */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(I_C, 9) / 2);
-    rs_k1_ = -(rigidsym_c_exponent_f(&m, 1) / 2);
-    rs_k2_ = -(rigidsym_c_exponent_f(omega_dot, 3) / 2);
-    rs_k3_ = -(rigidsym_c_exponent_f(c_ddot, 3) / 2);
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, 2 * rs_k0_);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, 2 * rs_k1_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k2_);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, 2 * rs_k3_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_I_C, 9) / 2);
+    rs_k1_ = -(rigidsym_c_exponent_f(&in_m, 1) / 2);
+    rs_k2_ = -(rigidsym_c_exponent_f(in_omega_dot, 3) / 2);
+    rs_k3_ = -(rigidsym_c_exponent_f(in_c_ddot, 3) / 2);
+    still_ |= rigidsym_c_scale_f(in_I_C, sc_I_C, 9, 2 * rs_k0_);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, 2 * rs_k1_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega_dot, sc_omega_dot, 3, 2 * rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_c_ddot, sc_c_ddot, 3, 2 * rs_k3_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_f(&w[0], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w[1], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w[2], 2 * rs_k0_ + 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w[3], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[4], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[5], 2 * rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_m[3], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_m[4], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_m[5], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[0], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[1], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[2], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[3], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[4], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[5], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[6], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[7], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega[8], 2 * rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[0], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[1], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[2], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[3], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[4], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[5], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[6], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[7], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[8], 2 * rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[9], 2 * rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[13], 2 * rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[17], 2 * rs_k1_);
-        finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+        status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
+        status |= rigidsym_c_back_f(&out_w[0], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[1], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[2], 2 * rs_k0_ + 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[3], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[4], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[5], 2 * rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[0], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[1], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[2], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[3], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[4], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[5], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[6], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[7], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[8], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[9], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[10], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[11], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[12], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[13], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[14], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[15], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[16], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[17], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[18], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[19], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[20], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[21], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[22], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[23], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[24], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[25], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[26], 2 * rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_m[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_m[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_m[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[0], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[1], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[2], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[3], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[4], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[5], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[6], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[7], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[8], 2 * rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[0], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[1], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[2], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[3], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[4], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[5], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[6], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[7], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[8], 2 * rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_c_ddot[9], 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_c_ddot[13], 2 * rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_c_ddot[17], 2 * rs_k1_);
+        finite = (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free c_ddot, I_C, m, omega */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(c_ddot, 3));
-    rs_k1_ = -(rigidsym_c_exponent_f(I_C, 9));
-    rs_k2_ = -(rigidsym_c_exponent_f(&m, 1));
-    rs_k3_ = -(rigidsym_c_exponent_f(omega, 3));
-    still_ |= rigidsym_c_scale_f(I_C, rs_I_C, 9, rs_k1_);
-    still_ |= rigidsym_c_scale_f(&m, &rs_m, 1, rs_k2_);
-    still_ |= rigidsym_c_scale_f(omega, rs_omega, 3, rs_k3_);
-    still_ |= rigidsym_c_scale_f(omega_dot, rs_omega_dot, 3, 2 * rs_k3_);
-    still_ |= rigidsym_c_scale_f(c_ddot, rs_c_ddot, 3, rs_k0_);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_c_ddot, 3));
+    rs_k1_ = -(rigidsym_c_exponent_f(in_I_C, 9));
+    rs_k2_ = -(rigidsym_c_exponent_f(&in_m, 1));
+    rs_k3_ = -(rigidsym_c_exponent_f(in_omega, 3));
+    still_ |= rigidsym_c_scale_f(in_I_C, sc_I_C, 9, rs_k1_);
+    still_ |= rigidsym_c_scale_f(&in_m, &sc_m, 1, rs_k2_);
+    still_ |= rigidsym_c_scale_f(in_omega, sc_omega, 3, rs_k3_);
+    still_ |= rigidsym_c_scale_f(in_omega_dot, sc_omega_dot, 3, 2 * rs_k3_);
+    still_ |= rigidsym_c_scale_f(in_c_ddot, sc_c_ddot, 3, rs_k0_);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(rs_I_C, rs_m, rs_omega, rs_omega_dot, rs_c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
-        status |= rigidsym_c_back_f(&w[0], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[1], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[2], rs_k1_ + 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w[3], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w[4], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w[5], rs_k0_ + rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_I_C[0], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[1], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[2], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[3], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[4], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[5], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[6], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[7], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[8], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[9], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[10], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[11], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[12], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[13], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[14], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[15], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[16], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[17], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[18], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[19], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[20], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[21], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[22], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[23], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[24], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[25], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_I_C[26], 2 * rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_m[3], rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_m[4], rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_m[5], rs_k0_);
-        status |= rigidsym_c_back_f(&w_D_omega[0], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[1], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[2], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[3], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[4], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[5], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[6], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[7], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega[8], rs_k1_ + rs_k3_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[0], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[1], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[2], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[3], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[4], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[5], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[6], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[7], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_omega_dot[8], rs_k1_);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[9], rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[13], rs_k2_);
-        status |= rigidsym_c_back_f(&w_D_c_ddot[17], rs_k2_);
-        finite = (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+        status = rigidsym_c_newton_euler_wrench_with_jacobians_f32(sc_I_C, sc_m, sc_omega, sc_omega_dot, sc_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
+        status |= rigidsym_c_back_f(&out_w[0], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[1], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[2], rs_k1_ + 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w[3], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[4], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w[5], rs_k0_ + rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[0], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[1], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[2], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[3], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[4], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[5], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[6], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[7], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[8], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[9], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[10], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[11], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[12], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[13], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[14], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[15], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[16], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[17], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[18], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[19], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[20], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[21], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[22], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[23], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[24], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[25], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_I_C[26], 2 * rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_m[3], rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_m[4], rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_m[5], rs_k0_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[0], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[1], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[2], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[3], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[4], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[5], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[6], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[7], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega[8], rs_k1_ + rs_k3_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[0], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[1], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[2], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[3], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[4], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[5], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[6], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[7], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_omega_dot[8], rs_k1_);
+        status |= rigidsym_c_back_f(&out_w_D_c_ddot[9], rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_c_ddot[13], rs_k2_);
+        status |= rigidsym_c_back_f(&out_w_D_c_ddot[17], rs_k2_);
+        finite = (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -2436,317 +2432,317 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_res
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_newton_euler_wrench_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6],
-    float w_D_I_C[54],
-    float w_D_m[6],
-    float w_D_omega[18],
-    float w_D_omega_dot[18],
-    float w_D_c_ddot[18])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6],
+    float out_w_D_I_C[54],
+    float out_w_D_m[6],
+    float out_w_D_omega[18],
+    float out_w_D_omega_dot[18],
+    float out_w_D_c_ddot[18])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float I_C_00 = I_C[0];
-    const float I_C_01 = I_C[1];
-    const float I_C_02 = I_C[2];
-    const float I_C_10 = I_C[3];
-    const float I_C_11 = I_C[4];
-    const float I_C_12 = I_C[5];
-    const float I_C_20 = I_C[6];
-    const float I_C_21 = I_C[7];
-    const float I_C_22 = I_C[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
-    const float omega_dot_0 = omega_dot[0];
-    const float omega_dot_1 = omega_dot[1];
-    const float omega_dot_2 = omega_dot[2];
-    const float c_ddot_0 = c_ddot[0];
-    const float c_ddot_1 = c_ddot[1];
-    const float c_ddot_2 = c_ddot[2];
+    const float c0_I_C = in_I_C[0];
+    const float c1_I_C = in_I_C[1];
+    const float c2_I_C = in_I_C[2];
+    const float c3_I_C = in_I_C[3];
+    const float c4_I_C = in_I_C[4];
+    const float c5_I_C = in_I_C[5];
+    const float c6_I_C = in_I_C[6];
+    const float c7_I_C = in_I_C[7];
+    const float c8_I_C = in_I_C[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
+    const float c0_omega_dot = in_omega_dot[0];
+    const float c1_omega_dot = in_omega_dot[1];
+    const float c2_omega_dot = in_omega_dot[2];
+    const float c0_c_ddot = in_c_ddot[0];
+    const float c1_c_ddot = in_c_ddot[1];
+    const float c2_c_ddot = in_c_ddot[2];
     {
-        const float x0 = I_C_21*omega_1;
-        const float x1 = I_C_20*omega_0;
-        const float x2 = I_C_22*omega_2;
+        const float x0 = c7_I_C*c1_omega;
+        const float x1 = c6_I_C*c0_omega;
+        const float x2 = c8_I_C*c2_omega;
         const float x3 = x1 + x2;
         const float x4 = x0 + x3;
-        const float x5 = I_C_12*omega_2;
-        const float x6 = I_C_10*omega_0;
-        const float x7 = I_C_11*omega_1;
+        const float x5 = c5_I_C*c2_omega;
+        const float x6 = c3_I_C*c0_omega;
+        const float x7 = c4_I_C*c1_omega;
         const float x8 = x6 + x7;
         const float x9 = x5 + x8;
-        const float x10 = I_C_02*omega_2;
-        const float x11 = I_C_00*omega_0;
-        const float x12 = I_C_01*omega_1;
+        const float x10 = c2_I_C*c2_omega;
+        const float x11 = c0_I_C*c0_omega;
+        const float x12 = c1_I_C*c1_omega;
         const float x13 = x11 + x12;
         const float x14 = x10 + x13;
-        const float x15 = omega_0*omega_2;
+        const float x15 = c0_omega*c2_omega;
         const float x16 = -x15;
-        const float x17 = omega_1*omega_2;
+        const float x17 = c1_omega*c2_omega;
         const float x18 = -x17;
-        const float x19 = (omega_2*omega_2);
-        const float x20 = omega_0*omega_1;
-        const float x21 = (omega_1*omega_1);
-        const float x22 = (omega_0*omega_0);
+        const float x19 = (c2_omega*c2_omega);
+        const float x20 = c0_omega*c1_omega;
+        const float x21 = (c1_omega*c1_omega);
+        const float x22 = (c0_omega*c0_omega);
         const float x23 = -x20;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
-        w_D_I_C[0] = omega_dot_0;
-        w_D_I_C[1] = omega_dot_1;
-        w_D_I_C[2] = omega_dot_2;
-        w_D_I_C[3] = x16;
-        w_D_I_C[4] = x18;
-        w_D_I_C[5] = -x19;
-        w_D_I_C[6] = x20;
-        w_D_I_C[7] = x21;
-        w_D_I_C[8] = x17;
-        w_D_I_C[9] = x15;
-        w_D_I_C[10] = x17;
-        w_D_I_C[11] = x19;
-        w_D_I_C[12] = omega_dot_0;
-        w_D_I_C[13] = omega_dot_1;
-        w_D_I_C[14] = omega_dot_2;
-        w_D_I_C[15] = -x22;
-        w_D_I_C[16] = x23;
-        w_D_I_C[17] = x16;
-        w_D_I_C[18] = x23;
-        w_D_I_C[19] = -x21;
-        w_D_I_C[20] = x18;
-        w_D_I_C[21] = x22;
-        w_D_I_C[22] = x20;
-        w_D_I_C[23] = x15;
-        w_D_I_C[24] = omega_dot_0;
-        w_D_I_C[25] = omega_dot_1;
-        w_D_I_C[26] = omega_dot_2;
-        w_D_I_C[27] = 0.0f;
-        w_D_I_C[28] = 0.0f;
-        w_D_I_C[29] = 0.0f;
-        w_D_I_C[30] = 0.0f;
-        w_D_I_C[31] = 0.0f;
-        w_D_I_C[32] = 0.0f;
-        w_D_I_C[33] = 0.0f;
-        w_D_I_C[34] = 0.0f;
-        w_D_I_C[35] = 0.0f;
-        w_D_I_C[36] = 0.0f;
-        w_D_I_C[37] = 0.0f;
-        w_D_I_C[38] = 0.0f;
-        w_D_I_C[39] = 0.0f;
-        w_D_I_C[40] = 0.0f;
-        w_D_I_C[41] = 0.0f;
-        w_D_I_C[42] = 0.0f;
-        w_D_I_C[43] = 0.0f;
-        w_D_I_C[44] = 0.0f;
-        w_D_I_C[45] = 0.0f;
-        w_D_I_C[46] = 0.0f;
-        w_D_I_C[47] = 0.0f;
-        w_D_I_C[48] = 0.0f;
-        w_D_I_C[49] = 0.0f;
-        w_D_I_C[50] = 0.0f;
-        w_D_I_C[51] = 0.0f;
-        w_D_I_C[52] = 0.0f;
-        w_D_I_C[53] = 0.0f;
-        w_D_m[0] = 0.0f;
-        w_D_m[1] = 0.0f;
-        w_D_m[2] = 0.0f;
-        w_D_m[3] = c_ddot_0;
-        w_D_m[4] = c_ddot_1;
-        w_D_m[5] = c_ddot_2;
-        w_D_omega[0] = -I_C_10*omega_2 + I_C_20*omega_1;
-        w_D_omega[1] = -I_C_11*omega_2 + 2.0f*x0 + x3;
-        w_D_omega[2] = I_C_22*omega_1 - 2.0f*x5 - x8;
-        w_D_omega[3] = I_C_00*omega_2 - x0 - 2.0f*x1 - x2;
-        w_D_omega[4] = I_C_01*omega_2 - I_C_21*omega_0;
-        w_D_omega[5] = -I_C_22*omega_0 + 2.0f*x10 + x13;
-        w_D_omega[6] = -I_C_00*omega_1 + x5 + 2.0f*x6 + x7;
-        w_D_omega[7] = I_C_11*omega_0 - x10 - x11 - 2.0f*x12;
-        w_D_omega[8] = -I_C_02*omega_1 + I_C_12*omega_0;
-        w_D_omega[9] = 0.0f;
-        w_D_omega[10] = 0.0f;
-        w_D_omega[11] = 0.0f;
-        w_D_omega[12] = 0.0f;
-        w_D_omega[13] = 0.0f;
-        w_D_omega[14] = 0.0f;
-        w_D_omega[15] = 0.0f;
-        w_D_omega[16] = 0.0f;
-        w_D_omega[17] = 0.0f;
-        w_D_omega_dot[0] = I_C_00;
-        w_D_omega_dot[1] = I_C_01;
-        w_D_omega_dot[2] = I_C_02;
-        w_D_omega_dot[3] = I_C_10;
-        w_D_omega_dot[4] = I_C_11;
-        w_D_omega_dot[5] = I_C_12;
-        w_D_omega_dot[6] = I_C_20;
-        w_D_omega_dot[7] = I_C_21;
-        w_D_omega_dot[8] = I_C_22;
-        w_D_omega_dot[9] = 0.0f;
-        w_D_omega_dot[10] = 0.0f;
-        w_D_omega_dot[11] = 0.0f;
-        w_D_omega_dot[12] = 0.0f;
-        w_D_omega_dot[13] = 0.0f;
-        w_D_omega_dot[14] = 0.0f;
-        w_D_omega_dot[15] = 0.0f;
-        w_D_omega_dot[16] = 0.0f;
-        w_D_omega_dot[17] = 0.0f;
-        w_D_c_ddot[0] = 0.0f;
-        w_D_c_ddot[1] = 0.0f;
-        w_D_c_ddot[2] = 0.0f;
-        w_D_c_ddot[3] = 0.0f;
-        w_D_c_ddot[4] = 0.0f;
-        w_D_c_ddot[5] = 0.0f;
-        w_D_c_ddot[6] = 0.0f;
-        w_D_c_ddot[7] = 0.0f;
-        w_D_c_ddot[8] = 0.0f;
-        w_D_c_ddot[9] = m;
-        w_D_c_ddot[10] = 0.0f;
-        w_D_c_ddot[11] = 0.0f;
-        w_D_c_ddot[12] = 0.0f;
-        w_D_c_ddot[13] = m;
-        w_D_c_ddot[14] = 0.0f;
-        w_D_c_ddot[15] = 0.0f;
-        w_D_c_ddot[16] = 0.0f;
-        w_D_c_ddot[17] = m;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x4 - c2_omega*x9;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x4 + c2_omega*x14;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x9 - c1_omega*x14;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        out_w_D_I_C[0] = c0_omega_dot;
+        out_w_D_I_C[1] = c1_omega_dot;
+        out_w_D_I_C[2] = c2_omega_dot;
+        out_w_D_I_C[3] = x16;
+        out_w_D_I_C[4] = x18;
+        out_w_D_I_C[5] = -x19;
+        out_w_D_I_C[6] = x20;
+        out_w_D_I_C[7] = x21;
+        out_w_D_I_C[8] = x17;
+        out_w_D_I_C[9] = x15;
+        out_w_D_I_C[10] = x17;
+        out_w_D_I_C[11] = x19;
+        out_w_D_I_C[12] = c0_omega_dot;
+        out_w_D_I_C[13] = c1_omega_dot;
+        out_w_D_I_C[14] = c2_omega_dot;
+        out_w_D_I_C[15] = -x22;
+        out_w_D_I_C[16] = x23;
+        out_w_D_I_C[17] = x16;
+        out_w_D_I_C[18] = x23;
+        out_w_D_I_C[19] = -x21;
+        out_w_D_I_C[20] = x18;
+        out_w_D_I_C[21] = x22;
+        out_w_D_I_C[22] = x20;
+        out_w_D_I_C[23] = x15;
+        out_w_D_I_C[24] = c0_omega_dot;
+        out_w_D_I_C[25] = c1_omega_dot;
+        out_w_D_I_C[26] = c2_omega_dot;
+        out_w_D_I_C[27] = 0.0f;
+        out_w_D_I_C[28] = 0.0f;
+        out_w_D_I_C[29] = 0.0f;
+        out_w_D_I_C[30] = 0.0f;
+        out_w_D_I_C[31] = 0.0f;
+        out_w_D_I_C[32] = 0.0f;
+        out_w_D_I_C[33] = 0.0f;
+        out_w_D_I_C[34] = 0.0f;
+        out_w_D_I_C[35] = 0.0f;
+        out_w_D_I_C[36] = 0.0f;
+        out_w_D_I_C[37] = 0.0f;
+        out_w_D_I_C[38] = 0.0f;
+        out_w_D_I_C[39] = 0.0f;
+        out_w_D_I_C[40] = 0.0f;
+        out_w_D_I_C[41] = 0.0f;
+        out_w_D_I_C[42] = 0.0f;
+        out_w_D_I_C[43] = 0.0f;
+        out_w_D_I_C[44] = 0.0f;
+        out_w_D_I_C[45] = 0.0f;
+        out_w_D_I_C[46] = 0.0f;
+        out_w_D_I_C[47] = 0.0f;
+        out_w_D_I_C[48] = 0.0f;
+        out_w_D_I_C[49] = 0.0f;
+        out_w_D_I_C[50] = 0.0f;
+        out_w_D_I_C[51] = 0.0f;
+        out_w_D_I_C[52] = 0.0f;
+        out_w_D_I_C[53] = 0.0f;
+        out_w_D_m[0] = 0.0f;
+        out_w_D_m[1] = 0.0f;
+        out_w_D_m[2] = 0.0f;
+        out_w_D_m[3] = c0_c_ddot;
+        out_w_D_m[4] = c1_c_ddot;
+        out_w_D_m[5] = c2_c_ddot;
+        out_w_D_omega[0] = -c3_I_C*c2_omega + c6_I_C*c1_omega;
+        out_w_D_omega[1] = -c4_I_C*c2_omega + 2.0f*x0 + x3;
+        out_w_D_omega[2] = c8_I_C*c1_omega - 2.0f*x5 - x8;
+        out_w_D_omega[3] = c0_I_C*c2_omega - x0 - 2.0f*x1 - x2;
+        out_w_D_omega[4] = c1_I_C*c2_omega - c7_I_C*c0_omega;
+        out_w_D_omega[5] = -c8_I_C*c0_omega + 2.0f*x10 + x13;
+        out_w_D_omega[6] = -c0_I_C*c1_omega + x5 + 2.0f*x6 + x7;
+        out_w_D_omega[7] = c4_I_C*c0_omega - x10 - x11 - 2.0f*x12;
+        out_w_D_omega[8] = -c2_I_C*c1_omega + c5_I_C*c0_omega;
+        out_w_D_omega[9] = 0.0f;
+        out_w_D_omega[10] = 0.0f;
+        out_w_D_omega[11] = 0.0f;
+        out_w_D_omega[12] = 0.0f;
+        out_w_D_omega[13] = 0.0f;
+        out_w_D_omega[14] = 0.0f;
+        out_w_D_omega[15] = 0.0f;
+        out_w_D_omega[16] = 0.0f;
+        out_w_D_omega[17] = 0.0f;
+        out_w_D_omega_dot[0] = c0_I_C;
+        out_w_D_omega_dot[1] = c1_I_C;
+        out_w_D_omega_dot[2] = c2_I_C;
+        out_w_D_omega_dot[3] = c3_I_C;
+        out_w_D_omega_dot[4] = c4_I_C;
+        out_w_D_omega_dot[5] = c5_I_C;
+        out_w_D_omega_dot[6] = c6_I_C;
+        out_w_D_omega_dot[7] = c7_I_C;
+        out_w_D_omega_dot[8] = c8_I_C;
+        out_w_D_omega_dot[9] = 0.0f;
+        out_w_D_omega_dot[10] = 0.0f;
+        out_w_D_omega_dot[11] = 0.0f;
+        out_w_D_omega_dot[12] = 0.0f;
+        out_w_D_omega_dot[13] = 0.0f;
+        out_w_D_omega_dot[14] = 0.0f;
+        out_w_D_omega_dot[15] = 0.0f;
+        out_w_D_omega_dot[16] = 0.0f;
+        out_w_D_omega_dot[17] = 0.0f;
+        out_w_D_c_ddot[0] = 0.0f;
+        out_w_D_c_ddot[1] = 0.0f;
+        out_w_D_c_ddot[2] = 0.0f;
+        out_w_D_c_ddot[3] = 0.0f;
+        out_w_D_c_ddot[4] = 0.0f;
+        out_w_D_c_ddot[5] = 0.0f;
+        out_w_D_c_ddot[6] = 0.0f;
+        out_w_D_c_ddot[7] = 0.0f;
+        out_w_D_c_ddot[8] = 0.0f;
+        out_w_D_c_ddot[9] = in_m;
+        out_w_D_c_ddot[10] = 0.0f;
+        out_w_D_c_ddot[11] = 0.0f;
+        out_w_D_c_ddot[12] = 0.0f;
+        out_w_D_c_ddot[13] = in_m;
+        out_w_D_c_ddot[14] = 0.0f;
+        out_w_D_c_ddot[15] = 0.0f;
+        out_w_D_c_ddot[16] = 0.0f;
+        out_w_D_c_ddot[17] = in_m;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        const float s_ = ((((((out_w[0] + (out_w[1] + out_w[2])) + ((out_w[3] + out_w[4]) + (out_w[5] + out_w_D_I_C[0]))) + (((out_w_D_I_C[1] + out_w_D_I_C[2]) + (out_w_D_I_C[3] + out_w_D_I_C[4])) + ((out_w_D_I_C[5] + out_w_D_I_C[6]) + (out_w_D_I_C[7] + out_w_D_I_C[8])))) + (((out_w_D_I_C[9] + (out_w_D_I_C[10] + out_w_D_I_C[11])) + ((out_w_D_I_C[12] + out_w_D_I_C[13]) + (out_w_D_I_C[14] + out_w_D_I_C[15]))) + (((out_w_D_I_C[16] + out_w_D_I_C[17]) + (out_w_D_I_C[18] + out_w_D_I_C[19])) + ((out_w_D_I_C[20] + out_w_D_I_C[21]) + (out_w_D_I_C[22] + out_w_D_I_C[23]))))) + ((((out_w_D_I_C[24] + (out_w_D_I_C[25] + out_w_D_I_C[26])) + ((out_w_D_I_C[27] + out_w_D_I_C[28]) + (out_w_D_I_C[29] + out_w_D_I_C[30]))) + (((out_w_D_I_C[31] + out_w_D_I_C[32]) + (out_w_D_I_C[33] + out_w_D_I_C[34])) + ((out_w_D_I_C[35] + out_w_D_I_C[36]) + (out_w_D_I_C[37] + out_w_D_I_C[38])))) + (((out_w_D_I_C[39] + (out_w_D_I_C[40] + out_w_D_I_C[41])) + ((out_w_D_I_C[42] + out_w_D_I_C[43]) + (out_w_D_I_C[44] + out_w_D_I_C[45]))) + (((out_w_D_I_C[46] + out_w_D_I_C[47]) + (out_w_D_I_C[48] + out_w_D_I_C[49])) + ((out_w_D_I_C[50] + out_w_D_I_C[51]) + (out_w_D_I_C[52] + out_w_D_I_C[53])))))) + (((((out_w_D_m[0] + (out_w_D_m[1] + out_w_D_m[2])) + ((out_w_D_m[3] + out_w_D_m[4]) + (out_w_D_m[5] + out_w_D_omega[0]))) + (((out_w_D_omega[1] + out_w_D_omega[2]) + (out_w_D_omega[3] + out_w_D_omega[4])) + ((out_w_D_omega[5] + out_w_D_omega[6]) + (out_w_D_omega[7] + out_w_D_omega[8])))) + (((out_w_D_omega[9] + (out_w_D_omega[10] + out_w_D_omega[11])) + ((out_w_D_omega[12] + out_w_D_omega[13]) + (out_w_D_omega[14] + out_w_D_omega[15]))) + (((out_w_D_omega[16] + out_w_D_omega[17]) + (out_w_D_omega_dot[0] + out_w_D_omega_dot[1])) + ((out_w_D_omega_dot[2] + out_w_D_omega_dot[3]) + (out_w_D_omega_dot[4] + out_w_D_omega_dot[5]))))) + ((((out_w_D_omega_dot[6] + (out_w_D_omega_dot[7] + out_w_D_omega_dot[8])) + ((out_w_D_omega_dot[9] + out_w_D_omega_dot[10]) + (out_w_D_omega_dot[11] + out_w_D_omega_dot[12]))) + (((out_w_D_omega_dot[13] + out_w_D_omega_dot[14]) + (out_w_D_omega_dot[15] + out_w_D_omega_dot[16])) + ((out_w_D_omega_dot[17] + out_w_D_c_ddot[0]) + (out_w_D_c_ddot[1] + out_w_D_c_ddot[2])))) + (((out_w_D_c_ddot[3] + (out_w_D_c_ddot[4] + out_w_D_c_ddot[5])) + ((out_w_D_c_ddot[6] + out_w_D_c_ddot[7]) + (out_w_D_c_ddot[8] + out_w_D_c_ddot[9]))) + (((out_w_D_c_ddot[10] + out_w_D_c_ddot[11]) + (out_w_D_c_ddot[12] + out_w_D_c_ddot[13])) + ((out_w_D_c_ddot[14] + out_w_D_c_ddot[15]) + (out_w_D_c_ddot[16] + out_w_D_c_ddot[17])))))));
         if (!(s_ - s_ == 0.0f))
-            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+            finite += (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = NAN;
-        w[1] = NAN;
-        w[2] = NAN;
-        w[3] = NAN;
-        w[4] = NAN;
-        w[5] = NAN;
-        w_D_I_C[0] = NAN;
-        w_D_I_C[1] = NAN;
-        w_D_I_C[2] = NAN;
-        w_D_I_C[3] = NAN;
-        w_D_I_C[4] = NAN;
-        w_D_I_C[5] = NAN;
-        w_D_I_C[6] = NAN;
-        w_D_I_C[7] = NAN;
-        w_D_I_C[8] = NAN;
-        w_D_I_C[9] = NAN;
-        w_D_I_C[10] = NAN;
-        w_D_I_C[11] = NAN;
-        w_D_I_C[12] = NAN;
-        w_D_I_C[13] = NAN;
-        w_D_I_C[14] = NAN;
-        w_D_I_C[15] = NAN;
-        w_D_I_C[16] = NAN;
-        w_D_I_C[17] = NAN;
-        w_D_I_C[18] = NAN;
-        w_D_I_C[19] = NAN;
-        w_D_I_C[20] = NAN;
-        w_D_I_C[21] = NAN;
-        w_D_I_C[22] = NAN;
-        w_D_I_C[23] = NAN;
-        w_D_I_C[24] = NAN;
-        w_D_I_C[25] = NAN;
-        w_D_I_C[26] = NAN;
-        w_D_I_C[27] = NAN;
-        w_D_I_C[28] = NAN;
-        w_D_I_C[29] = NAN;
-        w_D_I_C[30] = NAN;
-        w_D_I_C[31] = NAN;
-        w_D_I_C[32] = NAN;
-        w_D_I_C[33] = NAN;
-        w_D_I_C[34] = NAN;
-        w_D_I_C[35] = NAN;
-        w_D_I_C[36] = NAN;
-        w_D_I_C[37] = NAN;
-        w_D_I_C[38] = NAN;
-        w_D_I_C[39] = NAN;
-        w_D_I_C[40] = NAN;
-        w_D_I_C[41] = NAN;
-        w_D_I_C[42] = NAN;
-        w_D_I_C[43] = NAN;
-        w_D_I_C[44] = NAN;
-        w_D_I_C[45] = NAN;
-        w_D_I_C[46] = NAN;
-        w_D_I_C[47] = NAN;
-        w_D_I_C[48] = NAN;
-        w_D_I_C[49] = NAN;
-        w_D_I_C[50] = NAN;
-        w_D_I_C[51] = NAN;
-        w_D_I_C[52] = NAN;
-        w_D_I_C[53] = NAN;
-        w_D_m[0] = NAN;
-        w_D_m[1] = NAN;
-        w_D_m[2] = NAN;
-        w_D_m[3] = NAN;
-        w_D_m[4] = NAN;
-        w_D_m[5] = NAN;
-        w_D_omega[0] = NAN;
-        w_D_omega[1] = NAN;
-        w_D_omega[2] = NAN;
-        w_D_omega[3] = NAN;
-        w_D_omega[4] = NAN;
-        w_D_omega[5] = NAN;
-        w_D_omega[6] = NAN;
-        w_D_omega[7] = NAN;
-        w_D_omega[8] = NAN;
-        w_D_omega[9] = NAN;
-        w_D_omega[10] = NAN;
-        w_D_omega[11] = NAN;
-        w_D_omega[12] = NAN;
-        w_D_omega[13] = NAN;
-        w_D_omega[14] = NAN;
-        w_D_omega[15] = NAN;
-        w_D_omega[16] = NAN;
-        w_D_omega[17] = NAN;
-        w_D_omega_dot[0] = NAN;
-        w_D_omega_dot[1] = NAN;
-        w_D_omega_dot[2] = NAN;
-        w_D_omega_dot[3] = NAN;
-        w_D_omega_dot[4] = NAN;
-        w_D_omega_dot[5] = NAN;
-        w_D_omega_dot[6] = NAN;
-        w_D_omega_dot[7] = NAN;
-        w_D_omega_dot[8] = NAN;
-        w_D_omega_dot[9] = NAN;
-        w_D_omega_dot[10] = NAN;
-        w_D_omega_dot[11] = NAN;
-        w_D_omega_dot[12] = NAN;
-        w_D_omega_dot[13] = NAN;
-        w_D_omega_dot[14] = NAN;
-        w_D_omega_dot[15] = NAN;
-        w_D_omega_dot[16] = NAN;
-        w_D_omega_dot[17] = NAN;
-        w_D_c_ddot[0] = NAN;
-        w_D_c_ddot[1] = NAN;
-        w_D_c_ddot[2] = NAN;
-        w_D_c_ddot[3] = NAN;
-        w_D_c_ddot[4] = NAN;
-        w_D_c_ddot[5] = NAN;
-        w_D_c_ddot[6] = NAN;
-        w_D_c_ddot[7] = NAN;
-        w_D_c_ddot[8] = NAN;
-        w_D_c_ddot[9] = NAN;
-        w_D_c_ddot[10] = NAN;
-        w_D_c_ddot[11] = NAN;
-        w_D_c_ddot[12] = NAN;
-        w_D_c_ddot[13] = NAN;
-        w_D_c_ddot[14] = NAN;
-        w_D_c_ddot[15] = NAN;
-        w_D_c_ddot[16] = NAN;
-        w_D_c_ddot[17] = NAN;
+        out_w[0] = NAN;
+        out_w[1] = NAN;
+        out_w[2] = NAN;
+        out_w[3] = NAN;
+        out_w[4] = NAN;
+        out_w[5] = NAN;
+        out_w_D_I_C[0] = NAN;
+        out_w_D_I_C[1] = NAN;
+        out_w_D_I_C[2] = NAN;
+        out_w_D_I_C[3] = NAN;
+        out_w_D_I_C[4] = NAN;
+        out_w_D_I_C[5] = NAN;
+        out_w_D_I_C[6] = NAN;
+        out_w_D_I_C[7] = NAN;
+        out_w_D_I_C[8] = NAN;
+        out_w_D_I_C[9] = NAN;
+        out_w_D_I_C[10] = NAN;
+        out_w_D_I_C[11] = NAN;
+        out_w_D_I_C[12] = NAN;
+        out_w_D_I_C[13] = NAN;
+        out_w_D_I_C[14] = NAN;
+        out_w_D_I_C[15] = NAN;
+        out_w_D_I_C[16] = NAN;
+        out_w_D_I_C[17] = NAN;
+        out_w_D_I_C[18] = NAN;
+        out_w_D_I_C[19] = NAN;
+        out_w_D_I_C[20] = NAN;
+        out_w_D_I_C[21] = NAN;
+        out_w_D_I_C[22] = NAN;
+        out_w_D_I_C[23] = NAN;
+        out_w_D_I_C[24] = NAN;
+        out_w_D_I_C[25] = NAN;
+        out_w_D_I_C[26] = NAN;
+        out_w_D_I_C[27] = NAN;
+        out_w_D_I_C[28] = NAN;
+        out_w_D_I_C[29] = NAN;
+        out_w_D_I_C[30] = NAN;
+        out_w_D_I_C[31] = NAN;
+        out_w_D_I_C[32] = NAN;
+        out_w_D_I_C[33] = NAN;
+        out_w_D_I_C[34] = NAN;
+        out_w_D_I_C[35] = NAN;
+        out_w_D_I_C[36] = NAN;
+        out_w_D_I_C[37] = NAN;
+        out_w_D_I_C[38] = NAN;
+        out_w_D_I_C[39] = NAN;
+        out_w_D_I_C[40] = NAN;
+        out_w_D_I_C[41] = NAN;
+        out_w_D_I_C[42] = NAN;
+        out_w_D_I_C[43] = NAN;
+        out_w_D_I_C[44] = NAN;
+        out_w_D_I_C[45] = NAN;
+        out_w_D_I_C[46] = NAN;
+        out_w_D_I_C[47] = NAN;
+        out_w_D_I_C[48] = NAN;
+        out_w_D_I_C[49] = NAN;
+        out_w_D_I_C[50] = NAN;
+        out_w_D_I_C[51] = NAN;
+        out_w_D_I_C[52] = NAN;
+        out_w_D_I_C[53] = NAN;
+        out_w_D_m[0] = NAN;
+        out_w_D_m[1] = NAN;
+        out_w_D_m[2] = NAN;
+        out_w_D_m[3] = NAN;
+        out_w_D_m[4] = NAN;
+        out_w_D_m[5] = NAN;
+        out_w_D_omega[0] = NAN;
+        out_w_D_omega[1] = NAN;
+        out_w_D_omega[2] = NAN;
+        out_w_D_omega[3] = NAN;
+        out_w_D_omega[4] = NAN;
+        out_w_D_omega[5] = NAN;
+        out_w_D_omega[6] = NAN;
+        out_w_D_omega[7] = NAN;
+        out_w_D_omega[8] = NAN;
+        out_w_D_omega[9] = NAN;
+        out_w_D_omega[10] = NAN;
+        out_w_D_omega[11] = NAN;
+        out_w_D_omega[12] = NAN;
+        out_w_D_omega[13] = NAN;
+        out_w_D_omega[14] = NAN;
+        out_w_D_omega[15] = NAN;
+        out_w_D_omega[16] = NAN;
+        out_w_D_omega[17] = NAN;
+        out_w_D_omega_dot[0] = NAN;
+        out_w_D_omega_dot[1] = NAN;
+        out_w_D_omega_dot[2] = NAN;
+        out_w_D_omega_dot[3] = NAN;
+        out_w_D_omega_dot[4] = NAN;
+        out_w_D_omega_dot[5] = NAN;
+        out_w_D_omega_dot[6] = NAN;
+        out_w_D_omega_dot[7] = NAN;
+        out_w_D_omega_dot[8] = NAN;
+        out_w_D_omega_dot[9] = NAN;
+        out_w_D_omega_dot[10] = NAN;
+        out_w_D_omega_dot[11] = NAN;
+        out_w_D_omega_dot[12] = NAN;
+        out_w_D_omega_dot[13] = NAN;
+        out_w_D_omega_dot[14] = NAN;
+        out_w_D_omega_dot[15] = NAN;
+        out_w_D_omega_dot[16] = NAN;
+        out_w_D_omega_dot[17] = NAN;
+        out_w_D_c_ddot[0] = NAN;
+        out_w_D_c_ddot[1] = NAN;
+        out_w_D_c_ddot[2] = NAN;
+        out_w_D_c_ddot[3] = NAN;
+        out_w_D_c_ddot[4] = NAN;
+        out_w_D_c_ddot[5] = NAN;
+        out_w_D_c_ddot[6] = NAN;
+        out_w_D_c_ddot[7] = NAN;
+        out_w_D_c_ddot[8] = NAN;
+        out_w_D_c_ddot[9] = NAN;
+        out_w_D_c_ddot[10] = NAN;
+        out_w_D_c_ddot[11] = NAN;
+        out_w_D_c_ddot[12] = NAN;
+        out_w_D_c_ddot[13] = NAN;
+        out_w_D_c_ddot[14] = NAN;
+        out_w_D_c_ddot[15] = NAN;
+        out_w_D_c_ddot[16] = NAN;
+        out_w_D_c_ddot[17] = NAN;
     }
     return status;
 }
@@ -2754,17 +2750,17 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_pla
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6],
-    float w_D_I_C[54],
-    float w_D_m[6],
-    float w_D_omega[18],
-    float w_D_omega_dot[18],
-    float w_D_c_ddot[18])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6],
+    float out_w_D_I_C[54],
+    float out_w_D_m[6],
+    float out_w_D_omega[18],
+    float out_w_D_omega_dot[18],
+    float out_w_D_c_ddot[18])
 = rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain;
 #endif
 
@@ -2775,17 +2771,17 @@ static int (*const volatile rigidsym_c_newton_euler_wrench_with_jacobians_f32_pl
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_newton_euler_wrench_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6],
-    float w_D_I_C[54],
-    float w_D_m[6],
-    float w_D_omega[18],
-    float w_D_omega_dot[18],
-    float w_D_c_ddot[18])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6],
+    float out_w_D_I_C[54],
+    float out_w_D_m[6],
+    float out_w_D_omega[18],
+    float out_w_D_omega_dot[18],
+    float out_w_D_c_ddot[18])
 {
     const float *args[5];
     const int sizes[5] = {9, 1, 3, 3, 3};
@@ -2793,11 +2789,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = I_C;
-    args[1] = &m;
-    args[2] = omega;
-    args[3] = omega_dot;
-    args[4] = c_ddot;
+    args[0] = in_I_C;
+    args[1] = &in_m;
+    args[2] = in_omega;
+    args[3] = in_omega_dot;
+    args[4] = in_c_ddot;
     for (j = 0; j < 5; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -2810,7 +2806,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_rescue(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -2821,13 +2817,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        status |= rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -2836,12 +2832,12 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6],    float w_D_I_C[54],    float w_D_m[6],    float w_D_omega[18],    float w_D_omega_dot[18],    float w_D_c_ddot[18])
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6],    float out_w_D_I_C[54],    float out_w_D_m[6],    float out_w_D_omega[18],    float out_w_D_omega_dot[18],    float out_w_D_c_ddot[18])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -2849,29 +2845,29 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C), *(I_C + 1), *(I_C + 2), *(I_C + 3))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(I_C + 4), *(I_C + 4 + 1), *(I_C + 4 + 2), *(I_C + 4 + 3)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&I_C[8], *&m, *&omega[0], *&omega[1]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&omega[2], *&omega_dot[0], *&omega_dot[1], *&omega_dot[2]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&c_ddot[0], *&c_ddot[1], *&c_ddot[2], 0.0f))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_I_C), *(in_I_C + 1), *(in_I_C + 2), *(in_I_C + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_I_C + 4), *(in_I_C + 4 + 1), *(in_I_C + 4 + 2), *(in_I_C + 4 + 3)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_I_C[8], *&in_m, *&in_omega[0], *&in_omega[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_omega[2], *&in_omega_dot[0], *&in_omega_dot[1], *&in_omega_dot[2]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_c_ddot[0], *&in_c_ddot[1], *&in_c_ddot[2], 0.0f))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+            return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C));
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(I_C + 4));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_I_C));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_I_C + 4));
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&I_C[8]), rigidsym_c_bits_f(&m), rigidsym_c_bits_f(&omega[0]), rigidsym_c_bits_f(&omega[1])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_I_C[8]), rigidsym_c_bits_f(&in_m), rigidsym_c_bits_f(&in_omega[0]), rigidsym_c_bits_f(&in_omega[1])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&omega[2]), rigidsym_c_bits_f(&omega_dot[0]), rigidsym_c_bits_f(&omega_dot[1]), rigidsym_c_bits_f(&omega_dot[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_omega[2]), rigidsym_c_bits_f(&in_omega_dot[0]), rigidsym_c_bits_f(&in_omega_dot[1]), rigidsym_c_bits_f(&in_omega_dot[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&c_ddot[0]), rigidsym_c_bits_f(&c_ddot[1]), rigidsym_c_bits_f(&c_ddot[2]), 0};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_c_ddot[0]), rigidsym_c_bits_f(&in_c_ddot[1]), rigidsym_c_bits_f(&in_c_ddot[2]), 0};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -2882,188 +2878,188 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 9; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, I_C[j_]);
-        RIGIDSYM_C_ODDNZ_F(odd, m);
+            RIGIDSYM_C_ODDNZ_F(odd, in_I_C[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, in_m);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, omega[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_omega[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, omega_dot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_omega_dot[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, c_ddot[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_c_ddot[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+            return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(I_C, m, omega, omega_dot, c_ddot, w, w_D_I_C, w_D_m, w_D_omega, w_D_omega_dot, w_D_c_ddot);
+        return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
 #endif
-    const float I_C_00 = I_C[0];
-    const float I_C_01 = I_C[1];
-    const float I_C_02 = I_C[2];
-    const float I_C_10 = I_C[3];
-    const float I_C_11 = I_C[4];
-    const float I_C_12 = I_C[5];
-    const float I_C_20 = I_C[6];
-    const float I_C_21 = I_C[7];
-    const float I_C_22 = I_C[8];
-    const float omega_0 = omega[0];
-    const float omega_1 = omega[1];
-    const float omega_2 = omega[2];
-    const float omega_dot_0 = omega_dot[0];
-    const float omega_dot_1 = omega_dot[1];
-    const float omega_dot_2 = omega_dot[2];
-    const float c_ddot_0 = c_ddot[0];
-    const float c_ddot_1 = c_ddot[1];
-    const float c_ddot_2 = c_ddot[2];
+    const float c0_I_C = in_I_C[0];
+    const float c1_I_C = in_I_C[1];
+    const float c2_I_C = in_I_C[2];
+    const float c3_I_C = in_I_C[3];
+    const float c4_I_C = in_I_C[4];
+    const float c5_I_C = in_I_C[5];
+    const float c6_I_C = in_I_C[6];
+    const float c7_I_C = in_I_C[7];
+    const float c8_I_C = in_I_C[8];
+    const float c0_omega = in_omega[0];
+    const float c1_omega = in_omega[1];
+    const float c2_omega = in_omega[2];
+    const float c0_omega_dot = in_omega_dot[0];
+    const float c1_omega_dot = in_omega_dot[1];
+    const float c2_omega_dot = in_omega_dot[2];
+    const float c0_c_ddot = in_c_ddot[0];
+    const float c1_c_ddot = in_c_ddot[1];
+    const float c2_c_ddot = in_c_ddot[2];
     {
-        const float x0 = I_C_21*omega_1;
-        const float x1 = I_C_20*omega_0;
-        const float x2 = I_C_22*omega_2;
+        const float x0 = c7_I_C*c1_omega;
+        const float x1 = c6_I_C*c0_omega;
+        const float x2 = c8_I_C*c2_omega;
         const float x3 = x1 + x2;
         const float x4 = x0 + x3;
-        const float x5 = I_C_12*omega_2;
-        const float x6 = I_C_10*omega_0;
-        const float x7 = I_C_11*omega_1;
+        const float x5 = c5_I_C*c2_omega;
+        const float x6 = c3_I_C*c0_omega;
+        const float x7 = c4_I_C*c1_omega;
         const float x8 = x6 + x7;
         const float x9 = x5 + x8;
-        const float x10 = I_C_02*omega_2;
-        const float x11 = I_C_00*omega_0;
-        const float x12 = I_C_01*omega_1;
+        const float x10 = c2_I_C*c2_omega;
+        const float x11 = c0_I_C*c0_omega;
+        const float x12 = c1_I_C*c1_omega;
         const float x13 = x11 + x12;
         const float x14 = x10 + x13;
-        const float x15 = omega_0*omega_2;
+        const float x15 = c0_omega*c2_omega;
         const float x16 = -x15;
-        const float x17 = omega_1*omega_2;
+        const float x17 = c1_omega*c2_omega;
         const float x18 = -x17;
-        const float x19 = (omega_2*omega_2);
-        const float x20 = omega_0*omega_1;
-        const float x21 = (omega_1*omega_1);
-        const float x22 = (omega_0*omega_0);
+        const float x19 = (c2_omega*c2_omega);
+        const float x20 = c0_omega*c1_omega;
+        const float x21 = (c1_omega*c1_omega);
+        const float x22 = (c0_omega*c0_omega);
         const float x23 = -x20;
-        w[0] = I_C_00*omega_dot_0 + I_C_01*omega_dot_1 + I_C_02*omega_dot_2 + omega_1*x4 - omega_2*x9;
-        w[1] = I_C_10*omega_dot_0 + I_C_11*omega_dot_1 + I_C_12*omega_dot_2 - omega_0*x4 + omega_2*x14;
-        w[2] = I_C_20*omega_dot_0 + I_C_21*omega_dot_1 + I_C_22*omega_dot_2 + omega_0*x9 - omega_1*x14;
-        w[3] = c_ddot_0*m;
-        w[4] = c_ddot_1*m;
-        w[5] = c_ddot_2*m;
-        w_D_I_C[0] = omega_dot_0;
-        w_D_I_C[1] = omega_dot_1;
-        w_D_I_C[2] = omega_dot_2;
-        w_D_I_C[3] = x16;
-        w_D_I_C[4] = x18;
-        w_D_I_C[5] = -x19;
-        w_D_I_C[6] = x20;
-        w_D_I_C[7] = x21;
-        w_D_I_C[8] = x17;
-        w_D_I_C[9] = x15;
-        w_D_I_C[10] = x17;
-        w_D_I_C[11] = x19;
-        w_D_I_C[12] = omega_dot_0;
-        w_D_I_C[13] = omega_dot_1;
-        w_D_I_C[14] = omega_dot_2;
-        w_D_I_C[15] = -x22;
-        w_D_I_C[16] = x23;
-        w_D_I_C[17] = x16;
-        w_D_I_C[18] = x23;
-        w_D_I_C[19] = -x21;
-        w_D_I_C[20] = x18;
-        w_D_I_C[21] = x22;
-        w_D_I_C[22] = x20;
-        w_D_I_C[23] = x15;
-        w_D_I_C[24] = omega_dot_0;
-        w_D_I_C[25] = omega_dot_1;
-        w_D_I_C[26] = omega_dot_2;
-        w_D_I_C[27] = 0.0f;
-        w_D_I_C[28] = 0.0f;
-        w_D_I_C[29] = 0.0f;
-        w_D_I_C[30] = 0.0f;
-        w_D_I_C[31] = 0.0f;
-        w_D_I_C[32] = 0.0f;
-        w_D_I_C[33] = 0.0f;
-        w_D_I_C[34] = 0.0f;
-        w_D_I_C[35] = 0.0f;
-        w_D_I_C[36] = 0.0f;
-        w_D_I_C[37] = 0.0f;
-        w_D_I_C[38] = 0.0f;
-        w_D_I_C[39] = 0.0f;
-        w_D_I_C[40] = 0.0f;
-        w_D_I_C[41] = 0.0f;
-        w_D_I_C[42] = 0.0f;
-        w_D_I_C[43] = 0.0f;
-        w_D_I_C[44] = 0.0f;
-        w_D_I_C[45] = 0.0f;
-        w_D_I_C[46] = 0.0f;
-        w_D_I_C[47] = 0.0f;
-        w_D_I_C[48] = 0.0f;
-        w_D_I_C[49] = 0.0f;
-        w_D_I_C[50] = 0.0f;
-        w_D_I_C[51] = 0.0f;
-        w_D_I_C[52] = 0.0f;
-        w_D_I_C[53] = 0.0f;
-        w_D_m[0] = 0.0f;
-        w_D_m[1] = 0.0f;
-        w_D_m[2] = 0.0f;
-        w_D_m[3] = c_ddot_0;
-        w_D_m[4] = c_ddot_1;
-        w_D_m[5] = c_ddot_2;
-        w_D_omega[0] = -I_C_10*omega_2 + I_C_20*omega_1;
-        w_D_omega[1] = -I_C_11*omega_2 + 2.0f*x0 + x3;
-        w_D_omega[2] = I_C_22*omega_1 - 2.0f*x5 - x8;
-        w_D_omega[3] = I_C_00*omega_2 - x0 - 2.0f*x1 - x2;
-        w_D_omega[4] = I_C_01*omega_2 - I_C_21*omega_0;
-        w_D_omega[5] = -I_C_22*omega_0 + 2.0f*x10 + x13;
-        w_D_omega[6] = -I_C_00*omega_1 + x5 + 2.0f*x6 + x7;
-        w_D_omega[7] = I_C_11*omega_0 - x10 - x11 - 2.0f*x12;
-        w_D_omega[8] = -I_C_02*omega_1 + I_C_12*omega_0;
-        w_D_omega[9] = 0.0f;
-        w_D_omega[10] = 0.0f;
-        w_D_omega[11] = 0.0f;
-        w_D_omega[12] = 0.0f;
-        w_D_omega[13] = 0.0f;
-        w_D_omega[14] = 0.0f;
-        w_D_omega[15] = 0.0f;
-        w_D_omega[16] = 0.0f;
-        w_D_omega[17] = 0.0f;
-        w_D_omega_dot[0] = I_C_00;
-        w_D_omega_dot[1] = I_C_01;
-        w_D_omega_dot[2] = I_C_02;
-        w_D_omega_dot[3] = I_C_10;
-        w_D_omega_dot[4] = I_C_11;
-        w_D_omega_dot[5] = I_C_12;
-        w_D_omega_dot[6] = I_C_20;
-        w_D_omega_dot[7] = I_C_21;
-        w_D_omega_dot[8] = I_C_22;
-        w_D_omega_dot[9] = 0.0f;
-        w_D_omega_dot[10] = 0.0f;
-        w_D_omega_dot[11] = 0.0f;
-        w_D_omega_dot[12] = 0.0f;
-        w_D_omega_dot[13] = 0.0f;
-        w_D_omega_dot[14] = 0.0f;
-        w_D_omega_dot[15] = 0.0f;
-        w_D_omega_dot[16] = 0.0f;
-        w_D_omega_dot[17] = 0.0f;
-        w_D_c_ddot[0] = 0.0f;
-        w_D_c_ddot[1] = 0.0f;
-        w_D_c_ddot[2] = 0.0f;
-        w_D_c_ddot[3] = 0.0f;
-        w_D_c_ddot[4] = 0.0f;
-        w_D_c_ddot[5] = 0.0f;
-        w_D_c_ddot[6] = 0.0f;
-        w_D_c_ddot[7] = 0.0f;
-        w_D_c_ddot[8] = 0.0f;
-        w_D_c_ddot[9] = m;
-        w_D_c_ddot[10] = 0.0f;
-        w_D_c_ddot[11] = 0.0f;
-        w_D_c_ddot[12] = 0.0f;
-        w_D_c_ddot[13] = m;
-        w_D_c_ddot[14] = 0.0f;
-        w_D_c_ddot[15] = 0.0f;
-        w_D_c_ddot[16] = 0.0f;
-        w_D_c_ddot[17] = m;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x4 - c2_omega*x9;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x4 + c2_omega*x14;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x9 - c1_omega*x14;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        out_w_D_I_C[0] = c0_omega_dot;
+        out_w_D_I_C[1] = c1_omega_dot;
+        out_w_D_I_C[2] = c2_omega_dot;
+        out_w_D_I_C[3] = x16;
+        out_w_D_I_C[4] = x18;
+        out_w_D_I_C[5] = -x19;
+        out_w_D_I_C[6] = x20;
+        out_w_D_I_C[7] = x21;
+        out_w_D_I_C[8] = x17;
+        out_w_D_I_C[9] = x15;
+        out_w_D_I_C[10] = x17;
+        out_w_D_I_C[11] = x19;
+        out_w_D_I_C[12] = c0_omega_dot;
+        out_w_D_I_C[13] = c1_omega_dot;
+        out_w_D_I_C[14] = c2_omega_dot;
+        out_w_D_I_C[15] = -x22;
+        out_w_D_I_C[16] = x23;
+        out_w_D_I_C[17] = x16;
+        out_w_D_I_C[18] = x23;
+        out_w_D_I_C[19] = -x21;
+        out_w_D_I_C[20] = x18;
+        out_w_D_I_C[21] = x22;
+        out_w_D_I_C[22] = x20;
+        out_w_D_I_C[23] = x15;
+        out_w_D_I_C[24] = c0_omega_dot;
+        out_w_D_I_C[25] = c1_omega_dot;
+        out_w_D_I_C[26] = c2_omega_dot;
+        out_w_D_I_C[27] = 0.0f;
+        out_w_D_I_C[28] = 0.0f;
+        out_w_D_I_C[29] = 0.0f;
+        out_w_D_I_C[30] = 0.0f;
+        out_w_D_I_C[31] = 0.0f;
+        out_w_D_I_C[32] = 0.0f;
+        out_w_D_I_C[33] = 0.0f;
+        out_w_D_I_C[34] = 0.0f;
+        out_w_D_I_C[35] = 0.0f;
+        out_w_D_I_C[36] = 0.0f;
+        out_w_D_I_C[37] = 0.0f;
+        out_w_D_I_C[38] = 0.0f;
+        out_w_D_I_C[39] = 0.0f;
+        out_w_D_I_C[40] = 0.0f;
+        out_w_D_I_C[41] = 0.0f;
+        out_w_D_I_C[42] = 0.0f;
+        out_w_D_I_C[43] = 0.0f;
+        out_w_D_I_C[44] = 0.0f;
+        out_w_D_I_C[45] = 0.0f;
+        out_w_D_I_C[46] = 0.0f;
+        out_w_D_I_C[47] = 0.0f;
+        out_w_D_I_C[48] = 0.0f;
+        out_w_D_I_C[49] = 0.0f;
+        out_w_D_I_C[50] = 0.0f;
+        out_w_D_I_C[51] = 0.0f;
+        out_w_D_I_C[52] = 0.0f;
+        out_w_D_I_C[53] = 0.0f;
+        out_w_D_m[0] = 0.0f;
+        out_w_D_m[1] = 0.0f;
+        out_w_D_m[2] = 0.0f;
+        out_w_D_m[3] = c0_c_ddot;
+        out_w_D_m[4] = c1_c_ddot;
+        out_w_D_m[5] = c2_c_ddot;
+        out_w_D_omega[0] = -c3_I_C*c2_omega + c6_I_C*c1_omega;
+        out_w_D_omega[1] = -c4_I_C*c2_omega + 2.0f*x0 + x3;
+        out_w_D_omega[2] = c8_I_C*c1_omega - 2.0f*x5 - x8;
+        out_w_D_omega[3] = c0_I_C*c2_omega - x0 - 2.0f*x1 - x2;
+        out_w_D_omega[4] = c1_I_C*c2_omega - c7_I_C*c0_omega;
+        out_w_D_omega[5] = -c8_I_C*c0_omega + 2.0f*x10 + x13;
+        out_w_D_omega[6] = -c0_I_C*c1_omega + x5 + 2.0f*x6 + x7;
+        out_w_D_omega[7] = c4_I_C*c0_omega - x10 - x11 - 2.0f*x12;
+        out_w_D_omega[8] = -c2_I_C*c1_omega + c5_I_C*c0_omega;
+        out_w_D_omega[9] = 0.0f;
+        out_w_D_omega[10] = 0.0f;
+        out_w_D_omega[11] = 0.0f;
+        out_w_D_omega[12] = 0.0f;
+        out_w_D_omega[13] = 0.0f;
+        out_w_D_omega[14] = 0.0f;
+        out_w_D_omega[15] = 0.0f;
+        out_w_D_omega[16] = 0.0f;
+        out_w_D_omega[17] = 0.0f;
+        out_w_D_omega_dot[0] = c0_I_C;
+        out_w_D_omega_dot[1] = c1_I_C;
+        out_w_D_omega_dot[2] = c2_I_C;
+        out_w_D_omega_dot[3] = c3_I_C;
+        out_w_D_omega_dot[4] = c4_I_C;
+        out_w_D_omega_dot[5] = c5_I_C;
+        out_w_D_omega_dot[6] = c6_I_C;
+        out_w_D_omega_dot[7] = c7_I_C;
+        out_w_D_omega_dot[8] = c8_I_C;
+        out_w_D_omega_dot[9] = 0.0f;
+        out_w_D_omega_dot[10] = 0.0f;
+        out_w_D_omega_dot[11] = 0.0f;
+        out_w_D_omega_dot[12] = 0.0f;
+        out_w_D_omega_dot[13] = 0.0f;
+        out_w_D_omega_dot[14] = 0.0f;
+        out_w_D_omega_dot[15] = 0.0f;
+        out_w_D_omega_dot[16] = 0.0f;
+        out_w_D_omega_dot[17] = 0.0f;
+        out_w_D_c_ddot[0] = 0.0f;
+        out_w_D_c_ddot[1] = 0.0f;
+        out_w_D_c_ddot[2] = 0.0f;
+        out_w_D_c_ddot[3] = 0.0f;
+        out_w_D_c_ddot[4] = 0.0f;
+        out_w_D_c_ddot[5] = 0.0f;
+        out_w_D_c_ddot[6] = 0.0f;
+        out_w_D_c_ddot[7] = 0.0f;
+        out_w_D_c_ddot[8] = 0.0f;
+        out_w_D_c_ddot[9] = in_m;
+        out_w_D_c_ddot[10] = 0.0f;
+        out_w_D_c_ddot[11] = 0.0f;
+        out_w_D_c_ddot[12] = 0.0f;
+        out_w_D_c_ddot[13] = in_m;
+        out_w_D_c_ddot[14] = 0.0f;
+        out_w_D_c_ddot[15] = 0.0f;
+        out_w_D_c_ddot[16] = 0.0f;
+        out_w_D_c_ddot[17] = in_m;
     }
     /* no division or root, and every output bounded by 2^98 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -3073,135 +3069,135 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((((((w[0] + (w[1] + w[2])) + ((w[3] + w[4]) + (w[5] + w_D_I_C[0]))) + (((w_D_I_C[1] + w_D_I_C[2]) + (w_D_I_C[3] + w_D_I_C[4])) + ((w_D_I_C[5] + w_D_I_C[6]) + (w_D_I_C[7] + w_D_I_C[8])))) + (((w_D_I_C[9] + (w_D_I_C[10] + w_D_I_C[11])) + ((w_D_I_C[12] + w_D_I_C[13]) + (w_D_I_C[14] + w_D_I_C[15]))) + (((w_D_I_C[16] + w_D_I_C[17]) + (w_D_I_C[18] + w_D_I_C[19])) + ((w_D_I_C[20] + w_D_I_C[21]) + (w_D_I_C[22] + w_D_I_C[23]))))) + ((((w_D_I_C[24] + (w_D_I_C[25] + w_D_I_C[26])) + ((w_D_I_C[27] + w_D_I_C[28]) + (w_D_I_C[29] + w_D_I_C[30]))) + (((w_D_I_C[31] + w_D_I_C[32]) + (w_D_I_C[33] + w_D_I_C[34])) + ((w_D_I_C[35] + w_D_I_C[36]) + (w_D_I_C[37] + w_D_I_C[38])))) + (((w_D_I_C[39] + (w_D_I_C[40] + w_D_I_C[41])) + ((w_D_I_C[42] + w_D_I_C[43]) + (w_D_I_C[44] + w_D_I_C[45]))) + (((w_D_I_C[46] + w_D_I_C[47]) + (w_D_I_C[48] + w_D_I_C[49])) + ((w_D_I_C[50] + w_D_I_C[51]) + (w_D_I_C[52] + w_D_I_C[53])))))) + (((((w_D_m[0] + (w_D_m[1] + w_D_m[2])) + ((w_D_m[3] + w_D_m[4]) + (w_D_m[5] + w_D_omega[0]))) + (((w_D_omega[1] + w_D_omega[2]) + (w_D_omega[3] + w_D_omega[4])) + ((w_D_omega[5] + w_D_omega[6]) + (w_D_omega[7] + w_D_omega[8])))) + (((w_D_omega[9] + (w_D_omega[10] + w_D_omega[11])) + ((w_D_omega[12] + w_D_omega[13]) + (w_D_omega[14] + w_D_omega[15]))) + (((w_D_omega[16] + w_D_omega[17]) + (w_D_omega_dot[0] + w_D_omega_dot[1])) + ((w_D_omega_dot[2] + w_D_omega_dot[3]) + (w_D_omega_dot[4] + w_D_omega_dot[5]))))) + ((((w_D_omega_dot[6] + (w_D_omega_dot[7] + w_D_omega_dot[8])) + ((w_D_omega_dot[9] + w_D_omega_dot[10]) + (w_D_omega_dot[11] + w_D_omega_dot[12]))) + (((w_D_omega_dot[13] + w_D_omega_dot[14]) + (w_D_omega_dot[15] + w_D_omega_dot[16])) + ((w_D_omega_dot[17] + w_D_c_ddot[0]) + (w_D_c_ddot[1] + w_D_c_ddot[2])))) + (((w_D_c_ddot[3] + (w_D_c_ddot[4] + w_D_c_ddot[5])) + ((w_D_c_ddot[6] + w_D_c_ddot[7]) + (w_D_c_ddot[8] + w_D_c_ddot[9]))) + (((w_D_c_ddot[10] + w_D_c_ddot[11]) + (w_D_c_ddot[12] + w_D_c_ddot[13])) + ((w_D_c_ddot[14] + w_D_c_ddot[15]) + (w_D_c_ddot[16] + w_D_c_ddot[17])))))));
+        const float s_ = ((((((out_w[0] + (out_w[1] + out_w[2])) + ((out_w[3] + out_w[4]) + (out_w[5] + out_w_D_I_C[0]))) + (((out_w_D_I_C[1] + out_w_D_I_C[2]) + (out_w_D_I_C[3] + out_w_D_I_C[4])) + ((out_w_D_I_C[5] + out_w_D_I_C[6]) + (out_w_D_I_C[7] + out_w_D_I_C[8])))) + (((out_w_D_I_C[9] + (out_w_D_I_C[10] + out_w_D_I_C[11])) + ((out_w_D_I_C[12] + out_w_D_I_C[13]) + (out_w_D_I_C[14] + out_w_D_I_C[15]))) + (((out_w_D_I_C[16] + out_w_D_I_C[17]) + (out_w_D_I_C[18] + out_w_D_I_C[19])) + ((out_w_D_I_C[20] + out_w_D_I_C[21]) + (out_w_D_I_C[22] + out_w_D_I_C[23]))))) + ((((out_w_D_I_C[24] + (out_w_D_I_C[25] + out_w_D_I_C[26])) + ((out_w_D_I_C[27] + out_w_D_I_C[28]) + (out_w_D_I_C[29] + out_w_D_I_C[30]))) + (((out_w_D_I_C[31] + out_w_D_I_C[32]) + (out_w_D_I_C[33] + out_w_D_I_C[34])) + ((out_w_D_I_C[35] + out_w_D_I_C[36]) + (out_w_D_I_C[37] + out_w_D_I_C[38])))) + (((out_w_D_I_C[39] + (out_w_D_I_C[40] + out_w_D_I_C[41])) + ((out_w_D_I_C[42] + out_w_D_I_C[43]) + (out_w_D_I_C[44] + out_w_D_I_C[45]))) + (((out_w_D_I_C[46] + out_w_D_I_C[47]) + (out_w_D_I_C[48] + out_w_D_I_C[49])) + ((out_w_D_I_C[50] + out_w_D_I_C[51]) + (out_w_D_I_C[52] + out_w_D_I_C[53])))))) + (((((out_w_D_m[0] + (out_w_D_m[1] + out_w_D_m[2])) + ((out_w_D_m[3] + out_w_D_m[4]) + (out_w_D_m[5] + out_w_D_omega[0]))) + (((out_w_D_omega[1] + out_w_D_omega[2]) + (out_w_D_omega[3] + out_w_D_omega[4])) + ((out_w_D_omega[5] + out_w_D_omega[6]) + (out_w_D_omega[7] + out_w_D_omega[8])))) + (((out_w_D_omega[9] + (out_w_D_omega[10] + out_w_D_omega[11])) + ((out_w_D_omega[12] + out_w_D_omega[13]) + (out_w_D_omega[14] + out_w_D_omega[15]))) + (((out_w_D_omega[16] + out_w_D_omega[17]) + (out_w_D_omega_dot[0] + out_w_D_omega_dot[1])) + ((out_w_D_omega_dot[2] + out_w_D_omega_dot[3]) + (out_w_D_omega_dot[4] + out_w_D_omega_dot[5]))))) + ((((out_w_D_omega_dot[6] + (out_w_D_omega_dot[7] + out_w_D_omega_dot[8])) + ((out_w_D_omega_dot[9] + out_w_D_omega_dot[10]) + (out_w_D_omega_dot[11] + out_w_D_omega_dot[12]))) + (((out_w_D_omega_dot[13] + out_w_D_omega_dot[14]) + (out_w_D_omega_dot[15] + out_w_D_omega_dot[16])) + ((out_w_D_omega_dot[17] + out_w_D_c_ddot[0]) + (out_w_D_c_ddot[1] + out_w_D_c_ddot[2])))) + (((out_w_D_c_ddot[3] + (out_w_D_c_ddot[4] + out_w_D_c_ddot[5])) + ((out_w_D_c_ddot[6] + out_w_D_c_ddot[7]) + (out_w_D_c_ddot[8] + out_w_D_c_ddot[9]))) + (((out_w_D_c_ddot[10] + out_w_D_c_ddot[11]) + (out_w_D_c_ddot[12] + out_w_D_c_ddot[13])) + ((out_w_D_c_ddot[14] + out_w_D_c_ddot[15]) + (out_w_D_c_ddot[16] + out_w_D_c_ddot[17])))))));
         if (!(s_ - s_ == 0.0f))
-            finite += (((((((w[0] - w[0]) + ((w[1] - w[1]) + (w[2] - w[2]))) + (((w[3] - w[3]) + (w[4] - w[4])) + ((w[5] - w[5]) + (w_D_I_C[0] - w_D_I_C[0])))) + ((((w_D_I_C[1] - w_D_I_C[1]) + (w_D_I_C[2] - w_D_I_C[2])) + ((w_D_I_C[3] - w_D_I_C[3]) + (w_D_I_C[4] - w_D_I_C[4]))) + (((w_D_I_C[5] - w_D_I_C[5]) + (w_D_I_C[6] - w_D_I_C[6])) + ((w_D_I_C[7] - w_D_I_C[7]) + (w_D_I_C[8] - w_D_I_C[8]))))) + ((((w_D_I_C[9] - w_D_I_C[9]) + ((w_D_I_C[10] - w_D_I_C[10]) + (w_D_I_C[11] - w_D_I_C[11]))) + (((w_D_I_C[12] - w_D_I_C[12]) + (w_D_I_C[13] - w_D_I_C[13])) + ((w_D_I_C[14] - w_D_I_C[14]) + (w_D_I_C[15] - w_D_I_C[15])))) + ((((w_D_I_C[16] - w_D_I_C[16]) + (w_D_I_C[17] - w_D_I_C[17])) + ((w_D_I_C[18] - w_D_I_C[18]) + (w_D_I_C[19] - w_D_I_C[19]))) + (((w_D_I_C[20] - w_D_I_C[20]) + (w_D_I_C[21] - w_D_I_C[21])) + ((w_D_I_C[22] - w_D_I_C[22]) + (w_D_I_C[23] - w_D_I_C[23])))))) + (((((w_D_I_C[24] - w_D_I_C[24]) + ((w_D_I_C[25] - w_D_I_C[25]) + (w_D_I_C[26] - w_D_I_C[26]))) + (((w_D_I_C[27] - w_D_I_C[27]) + (w_D_I_C[28] - w_D_I_C[28])) + ((w_D_I_C[29] - w_D_I_C[29]) + (w_D_I_C[30] - w_D_I_C[30])))) + ((((w_D_I_C[31] - w_D_I_C[31]) + (w_D_I_C[32] - w_D_I_C[32])) + ((w_D_I_C[33] - w_D_I_C[33]) + (w_D_I_C[34] - w_D_I_C[34]))) + (((w_D_I_C[35] - w_D_I_C[35]) + (w_D_I_C[36] - w_D_I_C[36])) + ((w_D_I_C[37] - w_D_I_C[37]) + (w_D_I_C[38] - w_D_I_C[38]))))) + ((((w_D_I_C[39] - w_D_I_C[39]) + ((w_D_I_C[40] - w_D_I_C[40]) + (w_D_I_C[41] - w_D_I_C[41]))) + (((w_D_I_C[42] - w_D_I_C[42]) + (w_D_I_C[43] - w_D_I_C[43])) + ((w_D_I_C[44] - w_D_I_C[44]) + (w_D_I_C[45] - w_D_I_C[45])))) + ((((w_D_I_C[46] - w_D_I_C[46]) + (w_D_I_C[47] - w_D_I_C[47])) + ((w_D_I_C[48] - w_D_I_C[48]) + (w_D_I_C[49] - w_D_I_C[49]))) + (((w_D_I_C[50] - w_D_I_C[50]) + (w_D_I_C[51] - w_D_I_C[51])) + ((w_D_I_C[52] - w_D_I_C[52]) + (w_D_I_C[53] - w_D_I_C[53]))))))) + ((((((w_D_m[0] - w_D_m[0]) + ((w_D_m[1] - w_D_m[1]) + (w_D_m[2] - w_D_m[2]))) + (((w_D_m[3] - w_D_m[3]) + (w_D_m[4] - w_D_m[4])) + ((w_D_m[5] - w_D_m[5]) + (w_D_omega[0] - w_D_omega[0])))) + ((((w_D_omega[1] - w_D_omega[1]) + (w_D_omega[2] - w_D_omega[2])) + ((w_D_omega[3] - w_D_omega[3]) + (w_D_omega[4] - w_D_omega[4]))) + (((w_D_omega[5] - w_D_omega[5]) + (w_D_omega[6] - w_D_omega[6])) + ((w_D_omega[7] - w_D_omega[7]) + (w_D_omega[8] - w_D_omega[8]))))) + ((((w_D_omega[9] - w_D_omega[9]) + ((w_D_omega[10] - w_D_omega[10]) + (w_D_omega[11] - w_D_omega[11]))) + (((w_D_omega[12] - w_D_omega[12]) + (w_D_omega[13] - w_D_omega[13])) + ((w_D_omega[14] - w_D_omega[14]) + (w_D_omega[15] - w_D_omega[15])))) + ((((w_D_omega[16] - w_D_omega[16]) + (w_D_omega[17] - w_D_omega[17])) + ((w_D_omega_dot[0] - w_D_omega_dot[0]) + (w_D_omega_dot[1] - w_D_omega_dot[1]))) + (((w_D_omega_dot[2] - w_D_omega_dot[2]) + (w_D_omega_dot[3] - w_D_omega_dot[3])) + ((w_D_omega_dot[4] - w_D_omega_dot[4]) + (w_D_omega_dot[5] - w_D_omega_dot[5])))))) + (((((w_D_omega_dot[6] - w_D_omega_dot[6]) + ((w_D_omega_dot[7] - w_D_omega_dot[7]) + (w_D_omega_dot[8] - w_D_omega_dot[8]))) + (((w_D_omega_dot[9] - w_D_omega_dot[9]) + (w_D_omega_dot[10] - w_D_omega_dot[10])) + ((w_D_omega_dot[11] - w_D_omega_dot[11]) + (w_D_omega_dot[12] - w_D_omega_dot[12])))) + ((((w_D_omega_dot[13] - w_D_omega_dot[13]) + (w_D_omega_dot[14] - w_D_omega_dot[14])) + ((w_D_omega_dot[15] - w_D_omega_dot[15]) + (w_D_omega_dot[16] - w_D_omega_dot[16]))) + (((w_D_omega_dot[17] - w_D_omega_dot[17]) + (w_D_c_ddot[0] - w_D_c_ddot[0])) + ((w_D_c_ddot[1] - w_D_c_ddot[1]) + (w_D_c_ddot[2] - w_D_c_ddot[2]))))) + ((((w_D_c_ddot[3] - w_D_c_ddot[3]) + ((w_D_c_ddot[4] - w_D_c_ddot[4]) + (w_D_c_ddot[5] - w_D_c_ddot[5]))) + (((w_D_c_ddot[6] - w_D_c_ddot[6]) + (w_D_c_ddot[7] - w_D_c_ddot[7])) + ((w_D_c_ddot[8] - w_D_c_ddot[8]) + (w_D_c_ddot[9] - w_D_c_ddot[9])))) + ((((w_D_c_ddot[10] - w_D_c_ddot[10]) + (w_D_c_ddot[11] - w_D_c_ddot[11])) + ((w_D_c_ddot[12] - w_D_c_ddot[12]) + (w_D_c_ddot[13] - w_D_c_ddot[13]))) + (((w_D_c_ddot[14] - w_D_c_ddot[14]) + (w_D_c_ddot[15] - w_D_c_ddot[15])) + ((w_D_c_ddot[16] - w_D_c_ddot[16]) + (w_D_c_ddot[17] - w_D_c_ddot[17]))))))));
+            finite += (((((((out_w[0] - out_w[0]) + ((out_w[1] - out_w[1]) + (out_w[2] - out_w[2]))) + (((out_w[3] - out_w[3]) + (out_w[4] - out_w[4])) + ((out_w[5] - out_w[5]) + (out_w_D_I_C[0] - out_w_D_I_C[0])))) + ((((out_w_D_I_C[1] - out_w_D_I_C[1]) + (out_w_D_I_C[2] - out_w_D_I_C[2])) + ((out_w_D_I_C[3] - out_w_D_I_C[3]) + (out_w_D_I_C[4] - out_w_D_I_C[4]))) + (((out_w_D_I_C[5] - out_w_D_I_C[5]) + (out_w_D_I_C[6] - out_w_D_I_C[6])) + ((out_w_D_I_C[7] - out_w_D_I_C[7]) + (out_w_D_I_C[8] - out_w_D_I_C[8]))))) + ((((out_w_D_I_C[9] - out_w_D_I_C[9]) + ((out_w_D_I_C[10] - out_w_D_I_C[10]) + (out_w_D_I_C[11] - out_w_D_I_C[11]))) + (((out_w_D_I_C[12] - out_w_D_I_C[12]) + (out_w_D_I_C[13] - out_w_D_I_C[13])) + ((out_w_D_I_C[14] - out_w_D_I_C[14]) + (out_w_D_I_C[15] - out_w_D_I_C[15])))) + ((((out_w_D_I_C[16] - out_w_D_I_C[16]) + (out_w_D_I_C[17] - out_w_D_I_C[17])) + ((out_w_D_I_C[18] - out_w_D_I_C[18]) + (out_w_D_I_C[19] - out_w_D_I_C[19]))) + (((out_w_D_I_C[20] - out_w_D_I_C[20]) + (out_w_D_I_C[21] - out_w_D_I_C[21])) + ((out_w_D_I_C[22] - out_w_D_I_C[22]) + (out_w_D_I_C[23] - out_w_D_I_C[23])))))) + (((((out_w_D_I_C[24] - out_w_D_I_C[24]) + ((out_w_D_I_C[25] - out_w_D_I_C[25]) + (out_w_D_I_C[26] - out_w_D_I_C[26]))) + (((out_w_D_I_C[27] - out_w_D_I_C[27]) + (out_w_D_I_C[28] - out_w_D_I_C[28])) + ((out_w_D_I_C[29] - out_w_D_I_C[29]) + (out_w_D_I_C[30] - out_w_D_I_C[30])))) + ((((out_w_D_I_C[31] - out_w_D_I_C[31]) + (out_w_D_I_C[32] - out_w_D_I_C[32])) + ((out_w_D_I_C[33] - out_w_D_I_C[33]) + (out_w_D_I_C[34] - out_w_D_I_C[34]))) + (((out_w_D_I_C[35] - out_w_D_I_C[35]) + (out_w_D_I_C[36] - out_w_D_I_C[36])) + ((out_w_D_I_C[37] - out_w_D_I_C[37]) + (out_w_D_I_C[38] - out_w_D_I_C[38]))))) + ((((out_w_D_I_C[39] - out_w_D_I_C[39]) + ((out_w_D_I_C[40] - out_w_D_I_C[40]) + (out_w_D_I_C[41] - out_w_D_I_C[41]))) + (((out_w_D_I_C[42] - out_w_D_I_C[42]) + (out_w_D_I_C[43] - out_w_D_I_C[43])) + ((out_w_D_I_C[44] - out_w_D_I_C[44]) + (out_w_D_I_C[45] - out_w_D_I_C[45])))) + ((((out_w_D_I_C[46] - out_w_D_I_C[46]) + (out_w_D_I_C[47] - out_w_D_I_C[47])) + ((out_w_D_I_C[48] - out_w_D_I_C[48]) + (out_w_D_I_C[49] - out_w_D_I_C[49]))) + (((out_w_D_I_C[50] - out_w_D_I_C[50]) + (out_w_D_I_C[51] - out_w_D_I_C[51])) + ((out_w_D_I_C[52] - out_w_D_I_C[52]) + (out_w_D_I_C[53] - out_w_D_I_C[53]))))))) + ((((((out_w_D_m[0] - out_w_D_m[0]) + ((out_w_D_m[1] - out_w_D_m[1]) + (out_w_D_m[2] - out_w_D_m[2]))) + (((out_w_D_m[3] - out_w_D_m[3]) + (out_w_D_m[4] - out_w_D_m[4])) + ((out_w_D_m[5] - out_w_D_m[5]) + (out_w_D_omega[0] - out_w_D_omega[0])))) + ((((out_w_D_omega[1] - out_w_D_omega[1]) + (out_w_D_omega[2] - out_w_D_omega[2])) + ((out_w_D_omega[3] - out_w_D_omega[3]) + (out_w_D_omega[4] - out_w_D_omega[4]))) + (((out_w_D_omega[5] - out_w_D_omega[5]) + (out_w_D_omega[6] - out_w_D_omega[6])) + ((out_w_D_omega[7] - out_w_D_omega[7]) + (out_w_D_omega[8] - out_w_D_omega[8]))))) + ((((out_w_D_omega[9] - out_w_D_omega[9]) + ((out_w_D_omega[10] - out_w_D_omega[10]) + (out_w_D_omega[11] - out_w_D_omega[11]))) + (((out_w_D_omega[12] - out_w_D_omega[12]) + (out_w_D_omega[13] - out_w_D_omega[13])) + ((out_w_D_omega[14] - out_w_D_omega[14]) + (out_w_D_omega[15] - out_w_D_omega[15])))) + ((((out_w_D_omega[16] - out_w_D_omega[16]) + (out_w_D_omega[17] - out_w_D_omega[17])) + ((out_w_D_omega_dot[0] - out_w_D_omega_dot[0]) + (out_w_D_omega_dot[1] - out_w_D_omega_dot[1]))) + (((out_w_D_omega_dot[2] - out_w_D_omega_dot[2]) + (out_w_D_omega_dot[3] - out_w_D_omega_dot[3])) + ((out_w_D_omega_dot[4] - out_w_D_omega_dot[4]) + (out_w_D_omega_dot[5] - out_w_D_omega_dot[5])))))) + (((((out_w_D_omega_dot[6] - out_w_D_omega_dot[6]) + ((out_w_D_omega_dot[7] - out_w_D_omega_dot[7]) + (out_w_D_omega_dot[8] - out_w_D_omega_dot[8]))) + (((out_w_D_omega_dot[9] - out_w_D_omega_dot[9]) + (out_w_D_omega_dot[10] - out_w_D_omega_dot[10])) + ((out_w_D_omega_dot[11] - out_w_D_omega_dot[11]) + (out_w_D_omega_dot[12] - out_w_D_omega_dot[12])))) + ((((out_w_D_omega_dot[13] - out_w_D_omega_dot[13]) + (out_w_D_omega_dot[14] - out_w_D_omega_dot[14])) + ((out_w_D_omega_dot[15] - out_w_D_omega_dot[15]) + (out_w_D_omega_dot[16] - out_w_D_omega_dot[16]))) + (((out_w_D_omega_dot[17] - out_w_D_omega_dot[17]) + (out_w_D_c_ddot[0] - out_w_D_c_ddot[0])) + ((out_w_D_c_ddot[1] - out_w_D_c_ddot[1]) + (out_w_D_c_ddot[2] - out_w_D_c_ddot[2]))))) + ((((out_w_D_c_ddot[3] - out_w_D_c_ddot[3]) + ((out_w_D_c_ddot[4] - out_w_D_c_ddot[4]) + (out_w_D_c_ddot[5] - out_w_D_c_ddot[5]))) + (((out_w_D_c_ddot[6] - out_w_D_c_ddot[6]) + (out_w_D_c_ddot[7] - out_w_D_c_ddot[7])) + ((out_w_D_c_ddot[8] - out_w_D_c_ddot[8]) + (out_w_D_c_ddot[9] - out_w_D_c_ddot[9])))) + ((((out_w_D_c_ddot[10] - out_w_D_c_ddot[10]) + (out_w_D_c_ddot[11] - out_w_D_c_ddot[11])) + ((out_w_D_c_ddot[12] - out_w_D_c_ddot[12]) + (out_w_D_c_ddot[13] - out_w_D_c_ddot[13]))) + (((out_w_D_c_ddot[14] - out_w_D_c_ddot[14]) + (out_w_D_c_ddot[15] - out_w_D_c_ddot[15])) + ((out_w_D_c_ddot[16] - out_w_D_c_ddot[16]) + (out_w_D_c_ddot[17] - out_w_D_c_ddot[17]))))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        w[0] = NAN;
-        w[1] = NAN;
-        w[2] = NAN;
-        w[3] = NAN;
-        w[4] = NAN;
-        w[5] = NAN;
-        w_D_I_C[0] = NAN;
-        w_D_I_C[1] = NAN;
-        w_D_I_C[2] = NAN;
-        w_D_I_C[3] = NAN;
-        w_D_I_C[4] = NAN;
-        w_D_I_C[5] = NAN;
-        w_D_I_C[6] = NAN;
-        w_D_I_C[7] = NAN;
-        w_D_I_C[8] = NAN;
-        w_D_I_C[9] = NAN;
-        w_D_I_C[10] = NAN;
-        w_D_I_C[11] = NAN;
-        w_D_I_C[12] = NAN;
-        w_D_I_C[13] = NAN;
-        w_D_I_C[14] = NAN;
-        w_D_I_C[15] = NAN;
-        w_D_I_C[16] = NAN;
-        w_D_I_C[17] = NAN;
-        w_D_I_C[18] = NAN;
-        w_D_I_C[19] = NAN;
-        w_D_I_C[20] = NAN;
-        w_D_I_C[21] = NAN;
-        w_D_I_C[22] = NAN;
-        w_D_I_C[23] = NAN;
-        w_D_I_C[24] = NAN;
-        w_D_I_C[25] = NAN;
-        w_D_I_C[26] = NAN;
-        w_D_I_C[27] = NAN;
-        w_D_I_C[28] = NAN;
-        w_D_I_C[29] = NAN;
-        w_D_I_C[30] = NAN;
-        w_D_I_C[31] = NAN;
-        w_D_I_C[32] = NAN;
-        w_D_I_C[33] = NAN;
-        w_D_I_C[34] = NAN;
-        w_D_I_C[35] = NAN;
-        w_D_I_C[36] = NAN;
-        w_D_I_C[37] = NAN;
-        w_D_I_C[38] = NAN;
-        w_D_I_C[39] = NAN;
-        w_D_I_C[40] = NAN;
-        w_D_I_C[41] = NAN;
-        w_D_I_C[42] = NAN;
-        w_D_I_C[43] = NAN;
-        w_D_I_C[44] = NAN;
-        w_D_I_C[45] = NAN;
-        w_D_I_C[46] = NAN;
-        w_D_I_C[47] = NAN;
-        w_D_I_C[48] = NAN;
-        w_D_I_C[49] = NAN;
-        w_D_I_C[50] = NAN;
-        w_D_I_C[51] = NAN;
-        w_D_I_C[52] = NAN;
-        w_D_I_C[53] = NAN;
-        w_D_m[0] = NAN;
-        w_D_m[1] = NAN;
-        w_D_m[2] = NAN;
-        w_D_m[3] = NAN;
-        w_D_m[4] = NAN;
-        w_D_m[5] = NAN;
-        w_D_omega[0] = NAN;
-        w_D_omega[1] = NAN;
-        w_D_omega[2] = NAN;
-        w_D_omega[3] = NAN;
-        w_D_omega[4] = NAN;
-        w_D_omega[5] = NAN;
-        w_D_omega[6] = NAN;
-        w_D_omega[7] = NAN;
-        w_D_omega[8] = NAN;
-        w_D_omega[9] = NAN;
-        w_D_omega[10] = NAN;
-        w_D_omega[11] = NAN;
-        w_D_omega[12] = NAN;
-        w_D_omega[13] = NAN;
-        w_D_omega[14] = NAN;
-        w_D_omega[15] = NAN;
-        w_D_omega[16] = NAN;
-        w_D_omega[17] = NAN;
-        w_D_omega_dot[0] = NAN;
-        w_D_omega_dot[1] = NAN;
-        w_D_omega_dot[2] = NAN;
-        w_D_omega_dot[3] = NAN;
-        w_D_omega_dot[4] = NAN;
-        w_D_omega_dot[5] = NAN;
-        w_D_omega_dot[6] = NAN;
-        w_D_omega_dot[7] = NAN;
-        w_D_omega_dot[8] = NAN;
-        w_D_omega_dot[9] = NAN;
-        w_D_omega_dot[10] = NAN;
-        w_D_omega_dot[11] = NAN;
-        w_D_omega_dot[12] = NAN;
-        w_D_omega_dot[13] = NAN;
-        w_D_omega_dot[14] = NAN;
-        w_D_omega_dot[15] = NAN;
-        w_D_omega_dot[16] = NAN;
-        w_D_omega_dot[17] = NAN;
-        w_D_c_ddot[0] = NAN;
-        w_D_c_ddot[1] = NAN;
-        w_D_c_ddot[2] = NAN;
-        w_D_c_ddot[3] = NAN;
-        w_D_c_ddot[4] = NAN;
-        w_D_c_ddot[5] = NAN;
-        w_D_c_ddot[6] = NAN;
-        w_D_c_ddot[7] = NAN;
-        w_D_c_ddot[8] = NAN;
-        w_D_c_ddot[9] = NAN;
-        w_D_c_ddot[10] = NAN;
-        w_D_c_ddot[11] = NAN;
-        w_D_c_ddot[12] = NAN;
-        w_D_c_ddot[13] = NAN;
-        w_D_c_ddot[14] = NAN;
-        w_D_c_ddot[15] = NAN;
-        w_D_c_ddot[16] = NAN;
-        w_D_c_ddot[17] = NAN;
+        out_w[0] = NAN;
+        out_w[1] = NAN;
+        out_w[2] = NAN;
+        out_w[3] = NAN;
+        out_w[4] = NAN;
+        out_w[5] = NAN;
+        out_w_D_I_C[0] = NAN;
+        out_w_D_I_C[1] = NAN;
+        out_w_D_I_C[2] = NAN;
+        out_w_D_I_C[3] = NAN;
+        out_w_D_I_C[4] = NAN;
+        out_w_D_I_C[5] = NAN;
+        out_w_D_I_C[6] = NAN;
+        out_w_D_I_C[7] = NAN;
+        out_w_D_I_C[8] = NAN;
+        out_w_D_I_C[9] = NAN;
+        out_w_D_I_C[10] = NAN;
+        out_w_D_I_C[11] = NAN;
+        out_w_D_I_C[12] = NAN;
+        out_w_D_I_C[13] = NAN;
+        out_w_D_I_C[14] = NAN;
+        out_w_D_I_C[15] = NAN;
+        out_w_D_I_C[16] = NAN;
+        out_w_D_I_C[17] = NAN;
+        out_w_D_I_C[18] = NAN;
+        out_w_D_I_C[19] = NAN;
+        out_w_D_I_C[20] = NAN;
+        out_w_D_I_C[21] = NAN;
+        out_w_D_I_C[22] = NAN;
+        out_w_D_I_C[23] = NAN;
+        out_w_D_I_C[24] = NAN;
+        out_w_D_I_C[25] = NAN;
+        out_w_D_I_C[26] = NAN;
+        out_w_D_I_C[27] = NAN;
+        out_w_D_I_C[28] = NAN;
+        out_w_D_I_C[29] = NAN;
+        out_w_D_I_C[30] = NAN;
+        out_w_D_I_C[31] = NAN;
+        out_w_D_I_C[32] = NAN;
+        out_w_D_I_C[33] = NAN;
+        out_w_D_I_C[34] = NAN;
+        out_w_D_I_C[35] = NAN;
+        out_w_D_I_C[36] = NAN;
+        out_w_D_I_C[37] = NAN;
+        out_w_D_I_C[38] = NAN;
+        out_w_D_I_C[39] = NAN;
+        out_w_D_I_C[40] = NAN;
+        out_w_D_I_C[41] = NAN;
+        out_w_D_I_C[42] = NAN;
+        out_w_D_I_C[43] = NAN;
+        out_w_D_I_C[44] = NAN;
+        out_w_D_I_C[45] = NAN;
+        out_w_D_I_C[46] = NAN;
+        out_w_D_I_C[47] = NAN;
+        out_w_D_I_C[48] = NAN;
+        out_w_D_I_C[49] = NAN;
+        out_w_D_I_C[50] = NAN;
+        out_w_D_I_C[51] = NAN;
+        out_w_D_I_C[52] = NAN;
+        out_w_D_I_C[53] = NAN;
+        out_w_D_m[0] = NAN;
+        out_w_D_m[1] = NAN;
+        out_w_D_m[2] = NAN;
+        out_w_D_m[3] = NAN;
+        out_w_D_m[4] = NAN;
+        out_w_D_m[5] = NAN;
+        out_w_D_omega[0] = NAN;
+        out_w_D_omega[1] = NAN;
+        out_w_D_omega[2] = NAN;
+        out_w_D_omega[3] = NAN;
+        out_w_D_omega[4] = NAN;
+        out_w_D_omega[5] = NAN;
+        out_w_D_omega[6] = NAN;
+        out_w_D_omega[7] = NAN;
+        out_w_D_omega[8] = NAN;
+        out_w_D_omega[9] = NAN;
+        out_w_D_omega[10] = NAN;
+        out_w_D_omega[11] = NAN;
+        out_w_D_omega[12] = NAN;
+        out_w_D_omega[13] = NAN;
+        out_w_D_omega[14] = NAN;
+        out_w_D_omega[15] = NAN;
+        out_w_D_omega[16] = NAN;
+        out_w_D_omega[17] = NAN;
+        out_w_D_omega_dot[0] = NAN;
+        out_w_D_omega_dot[1] = NAN;
+        out_w_D_omega_dot[2] = NAN;
+        out_w_D_omega_dot[3] = NAN;
+        out_w_D_omega_dot[4] = NAN;
+        out_w_D_omega_dot[5] = NAN;
+        out_w_D_omega_dot[6] = NAN;
+        out_w_D_omega_dot[7] = NAN;
+        out_w_D_omega_dot[8] = NAN;
+        out_w_D_omega_dot[9] = NAN;
+        out_w_D_omega_dot[10] = NAN;
+        out_w_D_omega_dot[11] = NAN;
+        out_w_D_omega_dot[12] = NAN;
+        out_w_D_omega_dot[13] = NAN;
+        out_w_D_omega_dot[14] = NAN;
+        out_w_D_omega_dot[15] = NAN;
+        out_w_D_omega_dot[16] = NAN;
+        out_w_D_omega_dot[17] = NAN;
+        out_w_D_c_ddot[0] = NAN;
+        out_w_D_c_ddot[1] = NAN;
+        out_w_D_c_ddot[2] = NAN;
+        out_w_D_c_ddot[3] = NAN;
+        out_w_D_c_ddot[4] = NAN;
+        out_w_D_c_ddot[5] = NAN;
+        out_w_D_c_ddot[6] = NAN;
+        out_w_D_c_ddot[7] = NAN;
+        out_w_D_c_ddot[8] = NAN;
+        out_w_D_c_ddot[9] = NAN;
+        out_w_D_c_ddot[10] = NAN;
+        out_w_D_c_ddot[11] = NAN;
+        out_w_D_c_ddot[12] = NAN;
+        out_w_D_c_ddot[13] = NAN;
+        out_w_D_c_ddot[14] = NAN;
+        out_w_D_c_ddot[15] = NAN;
+        out_w_D_c_ddot[16] = NAN;
+        out_w_D_c_ddot[17] = NAN;
     }
     return status;
 }
@@ -3209,34 +3205,34 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
 
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32_batch(
     size_t count,
-    const float *I_C,
-    const float *m,
-    const float *omega,
-    const float *omega_dot,
-    const float *c_ddot,
-    float *w,
-    float *w_D_I_C,
-    float *w_D_m,
-    float *w_D_omega,
-    float *w_D_omega_dot,
-    float *w_D_c_ddot,
+    const float *in_I_C,
+    const float *in_m,
+    const float *in_omega,
+    const float *in_omega_dot,
+    const float *in_c_ddot,
+    float *out_w,
+    float *out_w_D_I_C,
+    float *out_w_D_m,
+    float *out_w_D_omega,
+    float *out_w_D_omega_dot,
+    float *out_w_D_c_ddot,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32(
-            I_C + 9 * i_,
-            m[i_],
-            omega + 3 * i_,
-            omega_dot + 3 * i_,
-            c_ddot + 3 * i_,
-            w + 6 * i_,
-            w_D_I_C + 54 * i_,
-            w_D_m + 6 * i_,
-            w_D_omega + 18 * i_,
-            w_D_omega_dot + 18 * i_,
-            w_D_c_ddot + 18 * i_);
+            in_I_C + 9 * i_,
+            in_m[i_],
+            in_omega + 3 * i_,
+            in_omega_dot + 3 * i_,
+            in_c_ddot + 3 * i_,
+            out_w + 6 * i_,
+            out_w_D_I_C + 54 * i_,
+            out_w_D_m + 6 * i_,
+            out_w_D_omega + 18 * i_,
+            out_w_D_omega_dot + 18 * i_,
+            out_w_D_c_ddot + 18 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;

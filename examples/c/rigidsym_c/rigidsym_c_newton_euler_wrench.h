@@ -47,12 +47,12 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6]);
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6]);
 
 /* newton_euler_wrench in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -61,12 +61,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
  * rigidsym.codegen.accuracy.float_measure: worst 0.384 over 106 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6]);
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -74,21 +74,21 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
     size_t count,
-    const double *I_C,
-    const double *m,
-    const double *omega,
-    const double *omega_dot,
-    const double *c_ddot,
-    double *w,
+    const double *in_I_C,
+    const double *in_m,
+    const double *in_omega,
+    const double *in_omega_dot,
+    const double *in_c_ddot,
+    double *out_w,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
     size_t count,
-    const float *I_C,
-    const float *m,
-    const float *omega,
-    const float *omega_dot,
-    const float *c_ddot,
-    float *w,
+    const float *in_I_C,
+    const float *in_m,
+    const float *in_omega,
+    const float *in_omega_dot,
+    const float *in_c_ddot,
+    float *out_w,
     int *status);
 
 /* newton_euler_wrench_with_jacobians:
@@ -140,12 +140,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32_batch(
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
-    const double I_C[9],
-    double m,
-    const double omega[3],
-    const double omega_dot[3],
-    const double c_ddot[3],
-    double w[6],    double w_D_I_C[54],    double w_D_m[6],    double w_D_omega[18],    double w_D_omega_dot[18],    double w_D_c_ddot[18]);
+    const double in_I_C[9],
+    double in_m,
+    const double in_omega[3],
+    const double in_omega_dot[3],
+    const double in_c_ddot[3],
+    double out_w[6],    double out_w_D_I_C[54],    double out_w_D_m[6],    double out_w_D_omega[18],    double out_w_D_omega_dot[18],    double out_w_D_c_ddot[18]);
 
 /* newton_euler_wrench_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -154,12 +154,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
  * rigidsym.codegen.accuracy.float_measure: worst 0.568 over 106 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
-    const float I_C[9],
-    float m,
-    const float omega[3],
-    const float omega_dot[3],
-    const float c_ddot[3],
-    float w[6],    float w_D_I_C[54],    float w_D_m[6],    float w_D_omega[18],    float w_D_omega_dot[18],    float w_D_c_ddot[18]);
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6],    float out_w_D_I_C[54],    float out_w_D_m[6],    float out_w_D_omega[18],    float out_w_D_omega_dot[18],    float out_w_D_c_ddot[18]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -167,31 +167,31 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
     size_t count,
-    const double *I_C,
-    const double *m,
-    const double *omega,
-    const double *omega_dot,
-    const double *c_ddot,
-    double *w,
-    double *w_D_I_C,
-    double *w_D_m,
-    double *w_D_omega,
-    double *w_D_omega_dot,
-    double *w_D_c_ddot,
+    const double *in_I_C,
+    const double *in_m,
+    const double *in_omega,
+    const double *in_omega_dot,
+    const double *in_c_ddot,
+    double *out_w,
+    double *out_w_D_I_C,
+    double *out_w_D_m,
+    double *out_w_D_omega,
+    double *out_w_D_omega_dot,
+    double *out_w_D_c_ddot,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32_batch(
     size_t count,
-    const float *I_C,
-    const float *m,
-    const float *omega,
-    const float *omega_dot,
-    const float *c_ddot,
-    float *w,
-    float *w_D_I_C,
-    float *w_D_m,
-    float *w_D_omega,
-    float *w_D_omega_dot,
-    float *w_D_c_ddot,
+    const float *in_I_C,
+    const float *in_m,
+    const float *in_omega,
+    const float *in_omega_dot,
+    const float *in_c_ddot,
+    float *out_w,
+    float *out_w_D_I_C,
+    float *out_w_D_m,
+    float *out_w_D_omega,
+    float *out_w_D_omega_dot,
+    float *out_w_D_c_ddot,
     int *status);
 
 RIGIDSYM_C_END_DECLS

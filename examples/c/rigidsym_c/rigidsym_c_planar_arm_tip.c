@@ -16,34 +16,34 @@
 /* rigidsym_c_planar_arm_tip in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_wide(
-    double q1_in_,
-    double q2_in_,
-    double l1_in_,
-    double l2_in_,
-    double p[2])
+    double w_q1,
+    double w_q2,
+    double w_l1,
+    double w_l2,
+    double out_p[2])
 {
-    const long double q1 = q1_in_;
-    const long double q2 = q2_in_;
-    const long double l1 = l1_in_;
-    const long double l2 = l2_in_;
+    const long double in_q1 = w_q1;
+    const long double in_q2 = w_q2;
+    const long double in_l1 = w_l1;
+    const long double in_l2 = w_l2;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)q1_in_;
-    (void)q2_in_;
-    (void)l1_in_;
-    (void)l2_in_;
+    (void)w_q1;
+    (void)w_q2;
+    (void)w_l1;
+    (void)w_l2;
     {
-        const long double x0 = q1 + q2;
-        p[0] = (double)(l1*cosl(q1) + l2*cosl(x0));
-        p[1] = (double)(l1*sinl(q1) + l2*sinl(x0));
+        const long double x0 = in_q1 + in_q2;
+        out_p[0] = (double)(in_l1*cosl(in_q1) + in_l2*cosl(x0));
+        out_p[1] = (double)(in_l1*sinl(in_q1) + in_l2*sinl(x0));
     }
-    finite += (long double)(((p[0] - p[0]) + (p[1] - p[1])));
+    finite += (long double)(((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = (double)NAN;
-        p[1] = (double)NAN;
+        out_p[0] = (double)NAN;
+        out_p[1] = (double)NAN;
     }
     return status;
 }
@@ -58,11 +58,11 @@ static int rigidsym_c_planar_arm_tip_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2])
 {
     int status, still_;
     double finite;
@@ -72,10 +72,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_l1;
-    double rs_l2;
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_l1;
+    double sc_l2;
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -83,43 +82,43 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(&q1, 1))
+    if (rigidsym_c_subnormal_d(&in_q1, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(&q2, 1))
+    if (rigidsym_c_subnormal_d(&in_q2, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(&l1, 1))
+    if (rigidsym_c_subnormal_d(&in_l1, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(&l2, 1))
+    if (rigidsym_c_subnormal_d(&in_l2, 1))
         return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(&l2, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_d(&q1, 1);
-    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_d(&in_l2, 1));
+    still_ |= rigidsym_c_scale_d(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_d(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_d(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_d(&p[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p[1], rs_k0_);
-        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        status = rigidsym_c_planar_arm_tip(in_q1, in_q2, sc_l1, sc_l2, out_p);
+        status |= rigidsym_c_back_d(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p[1], rs_k0_);
+        finite = ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(&l1, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_d(&q1, 1);
-    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_d(&in_l1, 1));
+    still_ |= rigidsym_c_scale_d(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_d(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_d(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_d(&p[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p[1], rs_k0_);
-        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        status = rigidsym_c_planar_arm_tip(in_q1, in_q2, sc_l1, sc_l2, out_p);
+        status |= rigidsym_c_back_d(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p[1], rs_k0_);
+        finite = ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -132,34 +131,34 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_planar_arm_tip evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_plain(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     {
-        const double x0 = q1 + q2;
-        p[0] = l1*cos(q1) + l2*cos(x0);
-        p[1] = l1*sin(q1) + l2*sin(x0);
+        const double x0 = in_q1 + in_q2;
+        out_p[0] = in_l1*cos(in_q1) + in_l2*cos(x0);
+        out_p[1] = in_l1*sin(in_q1) + in_l2*sin(x0);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (p[0] + p[1]);
+        const double s_ = (out_p[0] + out_p[1]);
         if (!(s_ - s_ == 0.0))
-            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+            finite += ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = (double)NAN;
-        p[1] = (double)NAN;
+        out_p[0] = (double)NAN;
+        out_p[1] = (double)NAN;
     }
     return status;
 }
@@ -167,11 +166,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_planar_arm_tip_plain_p)(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2])
 = rigidsym_c_planar_arm_tip_plain;
 #endif
 
@@ -182,11 +181,11 @@ static int (*const volatile rigidsym_c_planar_arm_tip_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2])
 {
     const double *args[4];
     const int sizes[4] = {1, 1, 1, 1};
@@ -194,10 +193,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = &q1;
-    args[1] = &q2;
-    args[2] = &l1;
-    args[3] = &l2;
+    args[0] = &in_q1;
+    args[1] = &in_q2;
+    args[2] = &in_l1;
+    args[3] = &in_l2;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -210,13 +209,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_planar_arm_tip_wide(q1, q2, l1, l2, p);
+        status = rigidsym_c_planar_arm_tip_wide(in_q1, in_q2, in_l1, in_l2, out_p);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_planar_arm_tip_rescue(q1, q2, l1, l2, p);
+        const int r_ = rigidsym_c_planar_arm_tip_rescue(in_q1, in_q2, in_l1, in_l2, out_p);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -227,13 +226,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_planar_arm_tip_plain_p)(q1, q2, l1, l2, p);
+        r_ = (*rigidsym_c_planar_arm_tip_plain_p)(in_q1, in_q2, in_l1, in_l2, out_p);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_planar_arm_tip_plain(q1, q2, l1, l2, p);
+        status |= rigidsym_c_planar_arm_tip_plain(in_q1, in_q2, in_l1, in_l2, out_p);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -242,11 +241,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -254,20 +253,20 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_q1, *&in_q2)));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_l1, *&in_l2))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
+            return rigidsym_c_planar_arm_tip_odd(in_q1, in_q2, in_l1, in_l2, out_p);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&q1), rigidsym_c_bits_d(&q2)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_q1), rigidsym_c_bits_d(&in_q2)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&l1), rigidsym_c_bits_d(&l2)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_l1), rigidsym_c_bits_d(&in_l2)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         odd = oddv_[0] | oddv_[1];
@@ -276,22 +275,22 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_D(odd, q1);
-        RIGIDSYM_C_ODDNZ_D(odd, q2);
-        RIGIDSYM_C_ODDNZ_D(odd, l1);
-        RIGIDSYM_C_ODDNZ_D(odd, l2);
+        RIGIDSYM_C_ODDNZ_D(odd, in_q1);
+        RIGIDSYM_C_ODDNZ_D(odd, in_q2);
+        RIGIDSYM_C_ODDNZ_D(odd, in_l1);
+        RIGIDSYM_C_ODDNZ_D(odd, in_l2);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
+            return rigidsym_c_planar_arm_tip_odd(in_q1, in_q2, in_l1, in_l2, out_p);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_planar_arm_tip_odd(q1, q2, l1, l2, p);
+        return rigidsym_c_planar_arm_tip_odd(in_q1, in_q2, in_l1, in_l2, out_p);
 #endif
     {
-        const double x0 = q1 + q2;
-        p[0] = l1*cos(q1) + l2*cos(x0);
-        p[1] = l1*sin(q1) + l2*sin(x0);
+        const double x0 = in_q1 + in_q2;
+        out_p[0] = in_l1*cos(in_q1) + in_l2*cos(x0);
+        out_p[1] = in_l1*sin(in_q1) + in_l2*sin(x0);
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -301,17 +300,17 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (p[0] + p[1]);
+        const double s_ = (out_p[0] + out_p[1]);
         if (!(s_ - s_ == 0.0))
-            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+            finite += ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = (double)NAN;
-        p[1] = (double)NAN;
+        out_p[0] = (double)NAN;
+        out_p[1] = (double)NAN;
     }
     return status;
 }
@@ -319,22 +318,22 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
     size_t count,
-    const double *q1,
-    const double *q2,
-    const double *l1,
-    const double *l2,
-    double *p,
+    const double *in_q1,
+    const double *in_q2,
+    const double *in_l1,
+    const double *in_l2,
+    double *out_p,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_planar_arm_tip(
-            q1[i_],
-            q2[i_],
-            l1[i_],
-            l2[i_],
-            p + 2 * i_);
+            in_q1[i_],
+            in_q2[i_],
+            in_l1[i_],
+            in_l2[i_],
+            out_p + 2 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -348,11 +347,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2])
 {
     int status, still_;
     float finite;
@@ -362,10 +361,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_l1;
-    float rs_l2;
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_l1;
+    float sc_l2;
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -373,43 +371,43 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(&q1, 1))
+    if (rigidsym_c_subnormal_f(&in_q1, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(&q2, 1))
+    if (rigidsym_c_subnormal_f(&in_q2, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(&l1, 1))
+    if (rigidsym_c_subnormal_f(&in_l1, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(&l2, 1))
+    if (rigidsym_c_subnormal_f(&in_l2, 1))
         return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(&l2, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_f(&q1, 1);
-    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_f(&in_l2, 1));
+    still_ |= rigidsym_c_scale_f(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_f(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_f(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_f(&p[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p[1], rs_k0_);
-        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        status = rigidsym_c_planar_arm_tip_f32(in_q1, in_q2, sc_l1, sc_l2, out_p);
+        status |= rigidsym_c_back_f(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p[1], rs_k0_);
+        finite = ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(&l1, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_f(&q1, 1);
-    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_f(&in_l1, 1));
+    still_ |= rigidsym_c_scale_f(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_f(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_f(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip_f32(q1, q2, rs_l1, rs_l2, p);
-        status |= rigidsym_c_back_f(&p[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p[1], rs_k0_);
-        finite = ((p[0] - p[0]) + (p[1] - p[1]));
+        status = rigidsym_c_planar_arm_tip_f32(in_q1, in_q2, sc_l1, sc_l2, out_p);
+        status |= rigidsym_c_back_f(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p[1], rs_k0_);
+        finite = ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -422,34 +420,34 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_planar_arm_tip_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_plain(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     {
-        const float x0 = q1 + q2;
-        p[0] = l1*cosf(q1) + l2*cosf(x0);
-        p[1] = l1*sinf(q1) + l2*sinf(x0);
+        const float x0 = in_q1 + in_q2;
+        out_p[0] = in_l1*cosf(in_q1) + in_l2*cosf(x0);
+        out_p[1] = in_l1*sinf(in_q1) + in_l2*sinf(x0);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (p[0] + p[1]);
+        const float s_ = (out_p[0] + out_p[1]);
         if (!(s_ - s_ == 0.0f))
-            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+            finite += ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
+        out_p[0] = NAN;
+        out_p[1] = NAN;
     }
     return status;
 }
@@ -457,11 +455,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_planar_arm_tip_f32_plain_p)(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2])
 = rigidsym_c_planar_arm_tip_f32_plain;
 #endif
 
@@ -472,11 +470,11 @@ static int (*const volatile rigidsym_c_planar_arm_tip_f32_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2])
 {
     const float *args[4];
     const int sizes[4] = {1, 1, 1, 1};
@@ -484,10 +482,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = &q1;
-    args[1] = &q2;
-    args[2] = &l1;
-    args[3] = &l2;
+    args[0] = &in_q1;
+    args[1] = &in_q2;
+    args[2] = &in_l1;
+    args[3] = &in_l2;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -500,7 +498,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(q1, q2, l1, l2, p);
+        const int r_ = rigidsym_c_planar_arm_tip_f32_rescue(in_q1, in_q2, in_l1, in_l2, out_p);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -511,13 +509,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_planar_arm_tip_f32_plain_p)(q1, q2, l1, l2, p);
+        r_ = (*rigidsym_c_planar_arm_tip_f32_plain_p)(in_q1, in_q2, in_l1, in_l2, out_p);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_planar_arm_tip_f32_plain(q1, q2, l1, l2, p);
+        status |= rigidsym_c_planar_arm_tip_f32_plain(in_q1, in_q2, in_l1, in_l2, out_p);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -526,11 +524,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -538,15 +536,15 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_q1, *&in_q2, *&in_l1, *&in_l2)));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
+            return rigidsym_c_planar_arm_tip_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&q1), rigidsym_c_bits_f(&q2), rigidsym_c_bits_f(&l1), rigidsym_c_bits_f(&l2)};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_q1), rigidsym_c_bits_f(&in_q2), rigidsym_c_bits_f(&in_l1), rigidsym_c_bits_f(&in_l2)};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -555,22 +553,22 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_F(odd, q1);
-        RIGIDSYM_C_ODDNZ_F(odd, q2);
-        RIGIDSYM_C_ODDNZ_F(odd, l1);
-        RIGIDSYM_C_ODDNZ_F(odd, l2);
+        RIGIDSYM_C_ODDNZ_F(odd, in_q1);
+        RIGIDSYM_C_ODDNZ_F(odd, in_q2);
+        RIGIDSYM_C_ODDNZ_F(odd, in_l1);
+        RIGIDSYM_C_ODDNZ_F(odd, in_l2);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
+            return rigidsym_c_planar_arm_tip_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_planar_arm_tip_f32_odd(q1, q2, l1, l2, p);
+        return rigidsym_c_planar_arm_tip_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p);
 #endif
     {
-        const float x0 = q1 + q2;
-        p[0] = l1*cosf(q1) + l2*cosf(x0);
-        p[1] = l1*sinf(q1) + l2*sinf(x0);
+        const float x0 = in_q1 + in_q2;
+        out_p[0] = in_l1*cosf(in_q1) + in_l2*cosf(x0);
+        out_p[1] = in_l1*sinf(in_q1) + in_l2*sinf(x0);
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -580,17 +578,17 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (p[0] + p[1]);
+        const float s_ = (out_p[0] + out_p[1]);
         if (!(s_ - s_ == 0.0f))
-            finite += ((p[0] - p[0]) + (p[1] - p[1]));
+            finite += ((out_p[0] - out_p[0]) + (out_p[1] - out_p[1]));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
+        out_p[0] = NAN;
+        out_p[1] = NAN;
     }
     return status;
 }
@@ -598,22 +596,22 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
     size_t count,
-    const float *q1,
-    const float *q2,
-    const float *l1,
-    const float *l2,
-    float *p,
+    const float *in_q1,
+    const float *in_q2,
+    const float *in_l1,
+    const float *in_l2,
+    float *out_p,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_planar_arm_tip_f32(
-            q1[i_],
-            q2[i_],
-            l1[i_],
-            l2[i_],
-            p + 2 * i_);
+            in_q1[i_],
+            in_q2[i_],
+            in_l1[i_],
+            in_l2[i_],
+            out_p + 2 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -629,62 +627,62 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
 /* rigidsym_c_planar_arm_tip_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
-    double q1_in_,
-    double q2_in_,
-    double l1_in_,
-    double l2_in_,
-    double p[2],
-    double p_D_q1[2],
-    double p_D_q2[2],
-    double p_D_l1[2],
-    double p_D_l2[2])
+    double w_q1,
+    double w_q2,
+    double w_l1,
+    double w_l2,
+    double out_p[2],
+    double out_p_D_q1[2],
+    double out_p_D_q2[2],
+    double out_p_D_l1[2],
+    double out_p_D_l2[2])
 {
-    const long double q1 = q1_in_;
-    const long double q2 = q2_in_;
-    const long double l1 = l1_in_;
-    const long double l2 = l2_in_;
+    const long double in_q1 = w_q1;
+    const long double in_q2 = w_q2;
+    const long double in_l1 = w_l1;
+    const long double in_l2 = w_l2;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)q1_in_;
-    (void)q2_in_;
-    (void)l1_in_;
-    (void)l2_in_;
+    (void)w_q1;
+    (void)w_q2;
+    (void)w_l1;
+    (void)w_l2;
     {
-        const long double x0 = cosl(q1);
-        const long double x1 = q1 + q2;
+        const long double x0 = cosl(in_q1);
+        const long double x1 = in_q1 + in_q2;
         const long double x2 = cosl(x1);
-        const long double x3 = l2*x2;
-        const long double x4 = l1*x0 + x3;
-        const long double x5 = sinl(q1);
+        const long double x3 = in_l2*x2;
+        const long double x4 = in_l1*x0 + x3;
+        const long double x5 = sinl(in_q1);
         const long double x6 = sinl(x1);
-        const long double x7 = l2*x6;
-        const long double x8 = l1*x5 + x7;
-        p[0] = (double)(x4);
-        p[1] = (double)(x8);
-        p_D_q1[0] = (double)(-x8);
-        p_D_q1[1] = (double)(x4);
-        p_D_q2[0] = (double)(-x7);
-        p_D_q2[1] = (double)(x3);
-        p_D_l1[0] = (double)(x0);
-        p_D_l1[1] = (double)(x5);
-        p_D_l2[0] = (double)(x2);
-        p_D_l2[1] = (double)(x6);
+        const long double x7 = in_l2*x6;
+        const long double x8 = in_l1*x5 + x7;
+        out_p[0] = (double)(x4);
+        out_p[1] = (double)(x8);
+        out_p_D_q1[0] = (double)(-x8);
+        out_p_D_q1[1] = (double)(x4);
+        out_p_D_q2[0] = (double)(-x7);
+        out_p_D_q2[1] = (double)(x3);
+        out_p_D_l1[0] = (double)(x0);
+        out_p_D_l1[1] = (double)(x5);
+        out_p_D_l2[0] = (double)(x2);
+        out_p_D_l2[1] = (double)(x6);
     }
-    finite += (long double)(((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1]))))));
+    finite += (long double)(((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1]))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = (double)NAN;
-        p[1] = (double)NAN;
-        p_D_q1[0] = (double)NAN;
-        p_D_q1[1] = (double)NAN;
-        p_D_q2[0] = (double)NAN;
-        p_D_q2[1] = (double)NAN;
-        p_D_l1[0] = (double)NAN;
-        p_D_l1[1] = (double)NAN;
-        p_D_l2[0] = (double)NAN;
-        p_D_l2[1] = (double)NAN;
+        out_p[0] = (double)NAN;
+        out_p[1] = (double)NAN;
+        out_p_D_q1[0] = (double)NAN;
+        out_p_D_q1[1] = (double)NAN;
+        out_p_D_q2[0] = (double)NAN;
+        out_p_D_q2[1] = (double)NAN;
+        out_p_D_l1[0] = (double)NAN;
+        out_p_D_l1[1] = (double)NAN;
+        out_p_D_l2[0] = (double)NAN;
+        out_p_D_l2[1] = (double)NAN;
     }
     return status;
 }
@@ -699,15 +697,15 @@ static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2],
-    double p_D_q1[2],
-    double p_D_q2[2],
-    double p_D_l1[2],
-    double p_D_l2[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2],
+    double out_p_D_q1[2],
+    double out_p_D_q2[2],
+    double out_p_D_l1[2],
+    double out_p_D_l2[2])
 {
     int status, still_;
     double finite;
@@ -717,10 +715,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_l1;
-    double rs_l2;
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_l1;
+    double sc_l2;
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -728,51 +725,51 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(&q1, 1))
+    if (rigidsym_c_subnormal_d(&in_q1, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(&q2, 1))
+    if (rigidsym_c_subnormal_d(&in_q2, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(&l1, 1))
+    if (rigidsym_c_subnormal_d(&in_l1, 1))
         return -1;
-    if (rigidsym_c_subnormal_d(&l2, 1))
+    if (rigidsym_c_subnormal_d(&in_l2, 1))
         return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(&l2, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_d(&q1, 1);
-    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_d(&in_l2, 1));
+    still_ |= rigidsym_c_scale_d(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_d(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_d(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_d(&p[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p[1], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q1[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q1[1], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q2[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q2[1], rs_k0_);
-        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        status = rigidsym_c_planar_arm_tip_with_jacobians(in_q1, in_q2, sc_l1, sc_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
+        status |= rigidsym_c_back_d(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p[1], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q2[1], rs_k0_);
+        finite = ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(&l1, 1));
-    still_ |= rigidsym_c_scale_d(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_d(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_d(&q1, 1);
-    still_ |= rigidsym_c_extreme_d(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_d(&in_l1, 1));
+    still_ |= rigidsym_c_scale_d(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_d(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_d(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_d(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip_with_jacobians(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_d(&p[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p[1], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q1[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q1[1], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q2[0], rs_k0_);
-        status |= rigidsym_c_back_d(&p_D_q2[1], rs_k0_);
-        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        status = rigidsym_c_planar_arm_tip_with_jacobians(in_q1, in_q2, sc_l1, sc_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
+        status |= rigidsym_c_back_d(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p[1], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_p_D_q2[1], rs_k0_);
+        finite = ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -785,62 +782,62 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_planar_arm_tip_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_plain(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2],
-    double p_D_q1[2],
-    double p_D_q2[2],
-    double p_D_l1[2],
-    double p_D_l2[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2],
+    double out_p_D_q1[2],
+    double out_p_D_q2[2],
+    double out_p_D_l1[2],
+    double out_p_D_l2[2])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
     {
-        const double x0 = cos(q1);
-        const double x1 = q1 + q2;
+        const double x0 = cos(in_q1);
+        const double x1 = in_q1 + in_q2;
         const double x2 = cos(x1);
-        const double x3 = l2*x2;
-        const double x4 = l1*x0 + x3;
-        const double x5 = sin(q1);
+        const double x3 = in_l2*x2;
+        const double x4 = in_l1*x0 + x3;
+        const double x5 = sin(in_q1);
         const double x6 = sin(x1);
-        const double x7 = l2*x6;
-        const double x8 = l1*x5 + x7;
-        p[0] = x4;
-        p[1] = x8;
-        p_D_q1[0] = -x8;
-        p_D_q1[1] = x4;
-        p_D_q2[0] = -x7;
-        p_D_q2[1] = x3;
-        p_D_l1[0] = x0;
-        p_D_l1[1] = x5;
-        p_D_l2[0] = x2;
-        p_D_l2[1] = x6;
+        const double x7 = in_l2*x6;
+        const double x8 = in_l1*x5 + x7;
+        out_p[0] = x4;
+        out_p[1] = x8;
+        out_p_D_q1[0] = -x8;
+        out_p_D_q1[1] = x4;
+        out_p_D_q2[0] = -x7;
+        out_p_D_q2[1] = x3;
+        out_p_D_l1[0] = x0;
+        out_p_D_l1[1] = x5;
+        out_p_D_l2[0] = x2;
+        out_p_D_l2[1] = x6;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        const double s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+            finite += ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = (double)NAN;
-        p[1] = (double)NAN;
-        p_D_q1[0] = (double)NAN;
-        p_D_q1[1] = (double)NAN;
-        p_D_q2[0] = (double)NAN;
-        p_D_q2[1] = (double)NAN;
-        p_D_l1[0] = (double)NAN;
-        p_D_l1[1] = (double)NAN;
-        p_D_l2[0] = (double)NAN;
-        p_D_l2[1] = (double)NAN;
+        out_p[0] = (double)NAN;
+        out_p[1] = (double)NAN;
+        out_p_D_q1[0] = (double)NAN;
+        out_p_D_q1[1] = (double)NAN;
+        out_p_D_q2[0] = (double)NAN;
+        out_p_D_q2[1] = (double)NAN;
+        out_p_D_l1[0] = (double)NAN;
+        out_p_D_l1[1] = (double)NAN;
+        out_p_D_l2[0] = (double)NAN;
+        out_p_D_l2[1] = (double)NAN;
     }
     return status;
 }
@@ -848,15 +845,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2],
-    double p_D_q1[2],
-    double p_D_q2[2],
-    double p_D_l1[2],
-    double p_D_l2[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2],
+    double out_p_D_q1[2],
+    double out_p_D_q2[2],
+    double out_p_D_l1[2],
+    double out_p_D_l2[2])
 = rigidsym_c_planar_arm_tip_with_jacobians_plain;
 #endif
 
@@ -867,15 +864,15 @@ static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2],
-    double p_D_q1[2],
-    double p_D_q2[2],
-    double p_D_l1[2],
-    double p_D_l2[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2],
+    double out_p_D_q1[2],
+    double out_p_D_q2[2],
+    double out_p_D_l1[2],
+    double out_p_D_l2[2])
 {
     const double *args[4];
     const int sizes[4] = {1, 1, 1, 1};
@@ -883,10 +880,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = &q1;
-    args[1] = &q2;
-    args[2] = &l1;
-    args[3] = &l2;
+    args[0] = &in_q1;
+    args[1] = &in_q2;
+    args[2] = &in_l1;
+    args[3] = &in_l2;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -899,13 +896,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_planar_arm_tip_with_jacobians_wide(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        status = rigidsym_c_planar_arm_tip_with_jacobians_wide(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_rescue(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -916,13 +913,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_planar_arm_tip_with_jacobians_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        status |= rigidsym_c_planar_arm_tip_with_jacobians_plain(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -931,11 +928,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2],    double p_D_q1[2],    double p_D_q2[2],    double p_D_l1[2],    double p_D_l2[2])
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2],    double out_p_D_q1[2],    double out_p_D_q2[2],    double out_p_D_l1[2],    double out_p_D_l2[2])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -943,20 +940,20 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&q1, *&q2)));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&l1, *&l2))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_q1, *&in_q2)));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_l1, *&in_l2))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            return rigidsym_c_planar_arm_tip_with_jacobians_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&q1), rigidsym_c_bits_d(&q2)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_q1), rigidsym_c_bits_d(&in_q2)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&l1), rigidsym_c_bits_d(&l2)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_l1), rigidsym_c_bits_d(&in_l2)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         odd = oddv_[0] | oddv_[1];
@@ -965,38 +962,38 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_D(odd, q1);
-        RIGIDSYM_C_ODDNZ_D(odd, q2);
-        RIGIDSYM_C_ODDNZ_D(odd, l1);
-        RIGIDSYM_C_ODDNZ_D(odd, l2);
+        RIGIDSYM_C_ODDNZ_D(odd, in_q1);
+        RIGIDSYM_C_ODDNZ_D(odd, in_q2);
+        RIGIDSYM_C_ODDNZ_D(odd, in_l1);
+        RIGIDSYM_C_ODDNZ_D(odd, in_l2);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            return rigidsym_c_planar_arm_tip_with_jacobians_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_planar_arm_tip_with_jacobians_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        return rigidsym_c_planar_arm_tip_with_jacobians_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
 #endif
     {
-        const double x0 = cos(q1);
-        const double x1 = q1 + q2;
+        const double x0 = cos(in_q1);
+        const double x1 = in_q1 + in_q2;
         const double x2 = cos(x1);
-        const double x3 = l2*x2;
-        const double x4 = l1*x0 + x3;
-        const double x5 = sin(q1);
+        const double x3 = in_l2*x2;
+        const double x4 = in_l1*x0 + x3;
+        const double x5 = sin(in_q1);
         const double x6 = sin(x1);
-        const double x7 = l2*x6;
-        const double x8 = l1*x5 + x7;
-        p[0] = x4;
-        p[1] = x8;
-        p_D_q1[0] = -x8;
-        p_D_q1[1] = x4;
-        p_D_q2[0] = -x7;
-        p_D_q2[1] = x3;
-        p_D_l1[0] = x0;
-        p_D_l1[1] = x5;
-        p_D_l2[0] = x2;
-        p_D_l2[1] = x6;
+        const double x7 = in_l2*x6;
+        const double x8 = in_l1*x5 + x7;
+        out_p[0] = x4;
+        out_p[1] = x8;
+        out_p_D_q1[0] = -x8;
+        out_p_D_q1[1] = x4;
+        out_p_D_q2[0] = -x7;
+        out_p_D_q2[1] = x3;
+        out_p_D_l1[0] = x0;
+        out_p_D_l1[1] = x5;
+        out_p_D_l2[0] = x2;
+        out_p_D_l2[1] = x6;
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -1006,25 +1003,25 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        const double s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+            finite += ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = (double)NAN;
-        p[1] = (double)NAN;
-        p_D_q1[0] = (double)NAN;
-        p_D_q1[1] = (double)NAN;
-        p_D_q2[0] = (double)NAN;
-        p_D_q2[1] = (double)NAN;
-        p_D_l1[0] = (double)NAN;
-        p_D_l1[1] = (double)NAN;
-        p_D_l2[0] = (double)NAN;
-        p_D_l2[1] = (double)NAN;
+        out_p[0] = (double)NAN;
+        out_p[1] = (double)NAN;
+        out_p_D_q1[0] = (double)NAN;
+        out_p_D_q1[1] = (double)NAN;
+        out_p_D_q2[0] = (double)NAN;
+        out_p_D_q2[1] = (double)NAN;
+        out_p_D_l1[0] = (double)NAN;
+        out_p_D_l1[1] = (double)NAN;
+        out_p_D_l2[0] = (double)NAN;
+        out_p_D_l2[1] = (double)NAN;
     }
     return status;
 }
@@ -1032,30 +1029,30 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
     size_t count,
-    const double *q1,
-    const double *q2,
-    const double *l1,
-    const double *l2,
-    double *p,
-    double *p_D_q1,
-    double *p_D_q2,
-    double *p_D_l1,
-    double *p_D_l2,
+    const double *in_q1,
+    const double *in_q2,
+    const double *in_l1,
+    const double *in_l2,
+    double *out_p,
+    double *out_p_D_q1,
+    double *out_p_D_q2,
+    double *out_p_D_l1,
+    double *out_p_D_l2,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_planar_arm_tip_with_jacobians(
-            q1[i_],
-            q2[i_],
-            l1[i_],
-            l2[i_],
-            p + 2 * i_,
-            p_D_q1 + 2 * i_,
-            p_D_q2 + 2 * i_,
-            p_D_l1 + 2 * i_,
-            p_D_l2 + 2 * i_);
+            in_q1[i_],
+            in_q2[i_],
+            in_l1[i_],
+            in_l2[i_],
+            out_p + 2 * i_,
+            out_p_D_q1 + 2 * i_,
+            out_p_D_q2 + 2 * i_,
+            out_p_D_l1 + 2 * i_,
+            out_p_D_l2 + 2 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -1069,15 +1066,15 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2],
-    float p_D_q1[2],
-    float p_D_q2[2],
-    float p_D_l1[2],
-    float p_D_l2[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2],
+    float out_p_D_q1[2],
+    float out_p_D_q2[2],
+    float out_p_D_l1[2],
+    float out_p_D_l2[2])
 {
     int status, still_;
     float finite;
@@ -1087,10 +1084,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_l1;
-    float rs_l2;
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_l1;
+    float sc_l2;
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -1098,51 +1094,51 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(&q1, 1))
+    if (rigidsym_c_subnormal_f(&in_q1, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(&q2, 1))
+    if (rigidsym_c_subnormal_f(&in_q2, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(&l1, 1))
+    if (rigidsym_c_subnormal_f(&in_l1, 1))
         return -1;
-    if (rigidsym_c_subnormal_f(&l2, 1))
+    if (rigidsym_c_subnormal_f(&in_l2, 1))
         return -1;
 #endif
     /* plan 0: free l2 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(&l2, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_f(&q1, 1);
-    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_f(&in_l2, 1));
+    still_ |= rigidsym_c_scale_f(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_f(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_f(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_f(&p[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p[1], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q1[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q1[1], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q2[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q2[1], rs_k0_);
-        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        status = rigidsym_c_planar_arm_tip_with_jacobians_f32(in_q1, in_q2, sc_l1, sc_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
+        status |= rigidsym_c_back_f(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p[1], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q2[1], rs_k0_);
+        finite = ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
     }
     /* plan 1: free l1 */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(&l1, 1));
-    still_ |= rigidsym_c_scale_f(&l1, &rs_l1, 1, rs_k0_);
-    still_ |= rigidsym_c_scale_f(&l2, &rs_l2, 1, rs_k0_);
-    still_ |= rigidsym_c_extreme_f(&q1, 1);
-    still_ |= rigidsym_c_extreme_f(&q2, 1);
+    rs_k0_ = -(rigidsym_c_exponent_f(&in_l1, 1));
+    still_ |= rigidsym_c_scale_f(&in_l1, &sc_l1, 1, rs_k0_);
+    still_ |= rigidsym_c_scale_f(&in_l2, &sc_l2, 1, rs_k0_);
+    still_ |= rigidsym_c_extreme_f(&in_q1, 1);
+    still_ |= rigidsym_c_extreme_f(&in_q2, 1);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_planar_arm_tip_with_jacobians_f32(q1, q2, rs_l1, rs_l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
-        status |= rigidsym_c_back_f(&p[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p[1], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q1[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q1[1], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q2[0], rs_k0_);
-        status |= rigidsym_c_back_f(&p_D_q2[1], rs_k0_);
-        finite = ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+        status = rigidsym_c_planar_arm_tip_with_jacobians_f32(in_q1, in_q2, sc_l1, sc_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
+        status |= rigidsym_c_back_f(&out_p[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p[1], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q1[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q1[1], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q2[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_p_D_q2[1], rs_k0_);
+        finite = ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -1155,62 +1151,62 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_planar_arm_tip_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2],
-    float p_D_q1[2],
-    float p_D_q2[2],
-    float p_D_l1[2],
-    float p_D_l2[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2],
+    float out_p_D_q1[2],
+    float out_p_D_q2[2],
+    float out_p_D_l1[2],
+    float out_p_D_l2[2])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
     {
-        const float x0 = cosf(q1);
-        const float x1 = q1 + q2;
+        const float x0 = cosf(in_q1);
+        const float x1 = in_q1 + in_q2;
         const float x2 = cosf(x1);
-        const float x3 = l2*x2;
-        const float x4 = l1*x0 + x3;
-        const float x5 = sinf(q1);
+        const float x3 = in_l2*x2;
+        const float x4 = in_l1*x0 + x3;
+        const float x5 = sinf(in_q1);
         const float x6 = sinf(x1);
-        const float x7 = l2*x6;
-        const float x8 = l1*x5 + x7;
-        p[0] = x4;
-        p[1] = x8;
-        p_D_q1[0] = -x8;
-        p_D_q1[1] = x4;
-        p_D_q2[0] = -x7;
-        p_D_q2[1] = x3;
-        p_D_l1[0] = x0;
-        p_D_l1[1] = x5;
-        p_D_l2[0] = x2;
-        p_D_l2[1] = x6;
+        const float x7 = in_l2*x6;
+        const float x8 = in_l1*x5 + x7;
+        out_p[0] = x4;
+        out_p[1] = x8;
+        out_p_D_q1[0] = -x8;
+        out_p_D_q1[1] = x4;
+        out_p_D_q2[0] = -x7;
+        out_p_D_q2[1] = x3;
+        out_p_D_l1[0] = x0;
+        out_p_D_l1[1] = x5;
+        out_p_D_l2[0] = x2;
+        out_p_D_l2[1] = x6;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        const float s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+            finite += ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
-        p_D_q1[0] = NAN;
-        p_D_q1[1] = NAN;
-        p_D_q2[0] = NAN;
-        p_D_q2[1] = NAN;
-        p_D_l1[0] = NAN;
-        p_D_l1[1] = NAN;
-        p_D_l2[0] = NAN;
-        p_D_l2[1] = NAN;
+        out_p[0] = NAN;
+        out_p[1] = NAN;
+        out_p_D_q1[0] = NAN;
+        out_p_D_q1[1] = NAN;
+        out_p_D_q2[0] = NAN;
+        out_p_D_q2[1] = NAN;
+        out_p_D_l1[0] = NAN;
+        out_p_D_l1[1] = NAN;
+        out_p_D_l2[0] = NAN;
+        out_p_D_l2[1] = NAN;
     }
     return status;
 }
@@ -1218,15 +1214,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2],
-    float p_D_q1[2],
-    float p_D_q2[2],
-    float p_D_l1[2],
-    float p_D_l2[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2],
+    float out_p_D_q1[2],
+    float out_p_D_q2[2],
+    float out_p_D_l1[2],
+    float out_p_D_l2[2])
 = rigidsym_c_planar_arm_tip_with_jacobians_f32_plain;
 #endif
 
@@ -1237,15 +1233,15 @@ static int (*const volatile rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_planar_arm_tip_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2],
-    float p_D_q1[2],
-    float p_D_q2[2],
-    float p_D_l1[2],
-    float p_D_l2[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2],
+    float out_p_D_q1[2],
+    float out_p_D_q2[2],
+    float out_p_D_l1[2],
+    float out_p_D_l2[2])
 {
     const float *args[4];
     const int sizes[4] = {1, 1, 1, 1};
@@ -1253,10 +1249,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = &q1;
-    args[1] = &q2;
-    args[2] = &l1;
-    args[3] = &l2;
+    args[0] = &in_q1;
+    args[1] = &in_q2;
+    args[2] = &in_l1;
+    args[3] = &in_l2;
     for (j = 0; j < 4; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1269,7 +1265,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_rescue(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -1280,13 +1276,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        status |= rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1295,11 +1291,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2],    float p_D_q1[2],    float p_D_q2[2],    float p_D_l1[2],    float p_D_l2[2])
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2],    float out_p_D_q1[2],    float out_p_D_q2[2],    float out_p_D_l1[2],    float out_p_D_l2[2])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -1307,15 +1303,15 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&q1, *&q2, *&l1, *&l2)));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_q1, *&in_q2, *&in_l1, *&in_l2)));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&q1), rigidsym_c_bits_f(&q2), rigidsym_c_bits_f(&l1), rigidsym_c_bits_f(&l2)};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_q1), rigidsym_c_bits_f(&in_q2), rigidsym_c_bits_f(&in_l1), rigidsym_c_bits_f(&in_l2)};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -1324,38 +1320,38 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     {   /* the range test of every input component, one at a time (an argument's
          * components by a loop, unrolled where the compiler takes RIGIDSYM_C_UNROLL) */
         int j_;
-        RIGIDSYM_C_ODDNZ_F(odd, q1);
-        RIGIDSYM_C_ODDNZ_F(odd, q2);
-        RIGIDSYM_C_ODDNZ_F(odd, l1);
-        RIGIDSYM_C_ODDNZ_F(odd, l2);
+        RIGIDSYM_C_ODDNZ_F(odd, in_q1);
+        RIGIDSYM_C_ODDNZ_F(odd, in_q2);
+        RIGIDSYM_C_ODDNZ_F(odd, in_l1);
+        RIGIDSYM_C_ODDNZ_F(odd, in_l2);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+            return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(q1, q2, l1, l2, p, p_D_q1, p_D_q2, p_D_l1, p_D_l2);
+        return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
 #endif
     {
-        const float x0 = cosf(q1);
-        const float x1 = q1 + q2;
+        const float x0 = cosf(in_q1);
+        const float x1 = in_q1 + in_q2;
         const float x2 = cosf(x1);
-        const float x3 = l2*x2;
-        const float x4 = l1*x0 + x3;
-        const float x5 = sinf(q1);
+        const float x3 = in_l2*x2;
+        const float x4 = in_l1*x0 + x3;
+        const float x5 = sinf(in_q1);
         const float x6 = sinf(x1);
-        const float x7 = l2*x6;
-        const float x8 = l1*x5 + x7;
-        p[0] = x4;
-        p[1] = x8;
-        p_D_q1[0] = -x8;
-        p_D_q1[1] = x4;
-        p_D_q2[0] = -x7;
-        p_D_q2[1] = x3;
-        p_D_l1[0] = x0;
-        p_D_l1[1] = x5;
-        p_D_l2[0] = x2;
-        p_D_l2[1] = x6;
+        const float x7 = in_l2*x6;
+        const float x8 = in_l1*x5 + x7;
+        out_p[0] = x4;
+        out_p[1] = x8;
+        out_p_D_q1[0] = -x8;
+        out_p_D_q1[1] = x4;
+        out_p_D_q2[0] = -x7;
+        out_p_D_q2[1] = x3;
+        out_p_D_l1[0] = x0;
+        out_p_D_l1[1] = x5;
+        out_p_D_l2[0] = x2;
+        out_p_D_l2[1] = x6;
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -1365,25 +1361,25 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((p[0] + p[1]) + (p_D_q1[0] + (p_D_q1[1] + p_D_q2[0]))) + ((p_D_q2[1] + p_D_l1[0]) + (p_D_l1[1] + (p_D_l2[0] + p_D_l2[1]))));
+        const float s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((p[0] - p[0]) + (p[1] - p[1])) + ((p_D_q1[0] - p_D_q1[0]) + ((p_D_q1[1] - p_D_q1[1]) + (p_D_q2[0] - p_D_q2[0])))) + (((p_D_q2[1] - p_D_q2[1]) + (p_D_l1[0] - p_D_l1[0])) + ((p_D_l1[1] - p_D_l1[1]) + ((p_D_l2[0] - p_D_l2[0]) + (p_D_l2[1] - p_D_l2[1])))));
+            finite += ((((out_p[0] - out_p[0]) + (out_p[1] - out_p[1])) + ((out_p_D_q1[0] - out_p_D_q1[0]) + ((out_p_D_q1[1] - out_p_D_q1[1]) + (out_p_D_q2[0] - out_p_D_q2[0])))) + (((out_p_D_q2[1] - out_p_D_q2[1]) + (out_p_D_l1[0] - out_p_D_l1[0])) + ((out_p_D_l1[1] - out_p_D_l1[1]) + ((out_p_D_l2[0] - out_p_D_l2[0]) + (out_p_D_l2[1] - out_p_D_l2[1])))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        p[0] = NAN;
-        p[1] = NAN;
-        p_D_q1[0] = NAN;
-        p_D_q1[1] = NAN;
-        p_D_q2[0] = NAN;
-        p_D_q2[1] = NAN;
-        p_D_l1[0] = NAN;
-        p_D_l1[1] = NAN;
-        p_D_l2[0] = NAN;
-        p_D_l2[1] = NAN;
+        out_p[0] = NAN;
+        out_p[1] = NAN;
+        out_p_D_q1[0] = NAN;
+        out_p_D_q1[1] = NAN;
+        out_p_D_q2[0] = NAN;
+        out_p_D_q2[1] = NAN;
+        out_p_D_l1[0] = NAN;
+        out_p_D_l1[1] = NAN;
+        out_p_D_l2[0] = NAN;
+        out_p_D_l2[1] = NAN;
     }
     return status;
 }
@@ -1391,30 +1387,30 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
 
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
     size_t count,
-    const float *q1,
-    const float *q2,
-    const float *l1,
-    const float *l2,
-    float *p,
-    float *p_D_q1,
-    float *p_D_q2,
-    float *p_D_l1,
-    float *p_D_l2,
+    const float *in_q1,
+    const float *in_q2,
+    const float *in_l1,
+    const float *in_l2,
+    float *out_p,
+    float *out_p_D_q1,
+    float *out_p_D_q2,
+    float *out_p_D_l1,
+    float *out_p_D_l2,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_planar_arm_tip_with_jacobians_f32(
-            q1[i_],
-            q2[i_],
-            l1[i_],
-            l2[i_],
-            p + 2 * i_,
-            p_D_q1 + 2 * i_,
-            p_D_q2 + 2 * i_,
-            p_D_l1 + 2 * i_,
-            p_D_l2 + 2 * i_);
+            in_q1[i_],
+            in_q2[i_],
+            in_l1[i_],
+            in_l2[i_],
+            out_p + 2 * i_,
+            out_p_D_q1 + 2 * i_,
+            out_p_D_q2 + 2 * i_,
+            out_p_D_l1 + 2 * i_,
+            out_p_D_l2 + 2 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;

@@ -46,11 +46,11 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2]);
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2]);
 
 /* planar_arm_tip in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -59,11 +59,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
  * rigidsym.codegen.accuracy.float_measure: worst 0.647 over 66 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2]);
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -71,19 +71,19 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
     size_t count,
-    const double *q1,
-    const double *q2,
-    const double *l1,
-    const double *l2,
-    double *p,
+    const double *in_q1,
+    const double *in_q2,
+    const double *in_l1,
+    const double *in_l2,
+    double *out_p,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
     size_t count,
-    const float *q1,
-    const float *q2,
-    const float *l1,
-    const float *l2,
-    float *p,
+    const float *in_q1,
+    const float *in_q2,
+    const float *in_l1,
+    const float *in_l2,
+    float *out_p,
     int *status);
 
 /* planar_arm_tip_with_jacobians:
@@ -132,11 +132,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
-    double q1,
-    double q2,
-    double l1,
-    double l2,
-    double p[2],    double p_D_q1[2],    double p_D_q2[2],    double p_D_l1[2],    double p_D_l2[2]);
+    double in_q1,
+    double in_q2,
+    double in_l1,
+    double in_l2,
+    double out_p[2],    double out_p_D_q1[2],    double out_p_D_q2[2],    double out_p_D_l1[2],    double out_p_D_l2[2]);
 
 /* planar_arm_tip_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -145,11 +145,11 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
  * rigidsym.codegen.accuracy.float_measure: worst 0.675 over 66 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
-    float q1,
-    float q2,
-    float l1,
-    float l2,
-    float p[2],    float p_D_q1[2],    float p_D_q2[2],    float p_D_l1[2],    float p_D_l2[2]);
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2],    float out_p_D_q1[2],    float out_p_D_q2[2],    float out_p_D_l1[2],    float out_p_D_l2[2]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -157,27 +157,27 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
     size_t count,
-    const double *q1,
-    const double *q2,
-    const double *l1,
-    const double *l2,
-    double *p,
-    double *p_D_q1,
-    double *p_D_q2,
-    double *p_D_l1,
-    double *p_D_l2,
+    const double *in_q1,
+    const double *in_q2,
+    const double *in_l1,
+    const double *in_l2,
+    double *out_p,
+    double *out_p_D_q1,
+    double *out_p_D_q2,
+    double *out_p_D_l1,
+    double *out_p_D_l2,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32_batch(
     size_t count,
-    const float *q1,
-    const float *q2,
-    const float *l1,
-    const float *l2,
-    float *p,
-    float *p_D_q1,
-    float *p_D_q2,
-    float *p_D_l1,
-    float *p_D_l2,
+    const float *in_q1,
+    const float *in_q2,
+    const float *in_l1,
+    const float *in_l2,
+    float *out_p,
+    float *out_p_D_q1,
+    float *out_p_D_q2,
+    float *out_p_D_l1,
+    float *out_p_D_l2,
     int *status);
 
 RIGIDSYM_C_END_DECLS

@@ -16,49 +16,49 @@
 /* rigidsym_c_quaternion_rotation in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_wide(
-    const double q_in_[4],
-    double Q[9])
+    const double w_q[4],
+    double out_Q[9])
 {
-    const long double q_0 = q_in_[0];
-    const long double q_1 = q_in_[1];
-    const long double q_2 = q_in_[2];
-    const long double q_3 = q_in_[3];
+    const long double c0_q = w_q[0];
+    const long double c1_q = w_q[1];
+    const long double c2_q = w_q[2];
+    const long double c3_q = w_q[3];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)q_in_;
+    (void)w_q;
     {
-        const long double x0 = 2.0*(q_2*q_2);
-        const long double x1 = 2.0*(q_3*q_3) - 1.0;
-        const long double x2 = 2.0*q_0;
-        const long double x3 = q_3*x2;
-        const long double x4 = q_2*x2;
-        const long double x5 = 2.0*q_1;
-        const long double x6 = 2.0*(q_1*q_1);
-        const long double x7 = q_1*x2;
-        Q[0] = (double)(-x0 - x1);
-        Q[1] = (double)(2.0*q_1*q_2 - x3);
-        Q[2] = (double)(q_3*x5 + x4);
-        Q[3] = (double)(q_2*x5 + x3);
-        Q[4] = (double)(-x1 - x6);
-        Q[5] = (double)(2.0*q_2*q_3 - x7);
-        Q[6] = (double)(2.0*q_1*q_3 - x4);
-        Q[7] = (double)(2.0*q_2*q_3 + x7);
-        Q[8] = (double)(-x0 - x6 + 1.0);
+        const long double x0 = 2.0*(c2_q*c2_q);
+        const long double x1 = 2.0*(c3_q*c3_q) - 1.0;
+        const long double x2 = 2.0*c0_q;
+        const long double x3 = c3_q*x2;
+        const long double x4 = c2_q*x2;
+        const long double x5 = 2.0*c1_q;
+        const long double x6 = 2.0*(c1_q*c1_q);
+        const long double x7 = c1_q*x2;
+        out_Q[0] = (double)(-x0 - x1);
+        out_Q[1] = (double)(2.0*c1_q*c2_q - x3);
+        out_Q[2] = (double)(c3_q*x5 + x4);
+        out_Q[3] = (double)(c2_q*x5 + x3);
+        out_Q[4] = (double)(-x1 - x6);
+        out_Q[5] = (double)(2.0*c2_q*c3_q - x7);
+        out_Q[6] = (double)(2.0*c1_q*c3_q - x4);
+        out_Q[7] = (double)(2.0*c2_q*c3_q + x7);
+        out_Q[8] = (double)(-x0 - x6 + 1.0);
     }
-    finite += (long double)(((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8]))))));
+    finite += (long double)(((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8]))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
     }
     return status;
 }
@@ -72,56 +72,56 @@ static int rigidsym_c_quaternion_rotation_wide(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_plain(
-    const double q[4],
-    double Q[9])
+    const double in_q[4],
+    double out_Q[9])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double q_0 = q[0];
-    const double q_1 = q[1];
-    const double q_2 = q[2];
-    const double q_3 = q[3];
+    const double c0_q = in_q[0];
+    const double c1_q = in_q[1];
+    const double c2_q = in_q[2];
+    const double c3_q = in_q[3];
     {
-        const double x0 = 2.0*(q_2*q_2);
-        const double x1 = 2.0*(q_3*q_3) - 1.0;
-        const double x2 = 2.0*q_0;
-        const double x3 = q_3*x2;
-        const double x4 = q_2*x2;
-        const double x5 = 2.0*q_1;
-        const double x6 = 2.0*(q_1*q_1);
-        const double x7 = q_1*x2;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0*q_1*q_2 - x3;
-        Q[2] = q_3*x5 + x4;
-        Q[3] = q_2*x5 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0*q_2*q_3 - x7;
-        Q[6] = 2.0*q_1*q_3 - x4;
-        Q[7] = 2.0*q_2*q_3 + x7;
-        Q[8] = -x0 - x6 + 1.0;
+        const double x0 = 2.0*(c2_q*c2_q);
+        const double x1 = 2.0*(c3_q*c3_q) - 1.0;
+        const double x2 = 2.0*c0_q;
+        const double x3 = c3_q*x2;
+        const double x4 = c2_q*x2;
+        const double x5 = 2.0*c1_q;
+        const double x6 = 2.0*(c1_q*c1_q);
+        const double x7 = c1_q*x2;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0*c1_q*c2_q - x3;
+        out_Q[2] = c3_q*x5 + x4;
+        out_Q[3] = c2_q*x5 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0*c2_q*c3_q - x7;
+        out_Q[6] = 2.0*c1_q*c3_q - x4;
+        out_Q[7] = 2.0*c2_q*c3_q + x7;
+        out_Q[8] = -x0 - x6 + 1.0;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const double s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
     }
     return status;
 }
@@ -129,8 +129,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_quaternion_rotation_plain_p)(
-    const double q[4],
-    double Q[9])
+    const double in_q[4],
+    double out_Q[9])
 = rigidsym_c_quaternion_rotation_plain;
 #endif
 
@@ -141,8 +141,8 @@ static int (*const volatile rigidsym_c_quaternion_rotation_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
-    const double q[4],
-    double Q[9])
+    const double in_q[4],
+    double out_Q[9])
 {
     const double *args[1];
     const int sizes[1] = {4};
@@ -150,7 +150,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = q;
+    args[0] = in_q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -163,7 +163,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_quaternion_rotation_wide(q, Q);
+        status = rigidsym_c_quaternion_rotation_wide(in_q, out_Q);
         done_ = 1;
     }
 #endif
@@ -171,13 +171,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_quaternion_rotation_plain_p)(q, Q);
+        r_ = (*rigidsym_c_quaternion_rotation_plain_p)(in_q, out_Q);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_quaternion_rotation_plain(q, Q);
+        status |= rigidsym_c_quaternion_rotation_plain(in_q, out_Q);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -186,8 +186,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
-    const double q[4],
-    double Q[9])
+    const double in_q[4],
+    double out_Q[9])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -195,16 +195,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1)))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_q), _mm_load_sd(in_q + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_q + 2), _mm_load_sd(in_q + 2 + 1)))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_quaternion_rotation_odd(q, Q);
+            return rigidsym_c_quaternion_rotation_odd(in_q, out_Q);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_q));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_q + 2));
         odd = oddv_[0] | oddv_[1];
     }
 #else
@@ -213,37 +213,37 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_q[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_quaternion_rotation_odd(q, Q);
+            return rigidsym_c_quaternion_rotation_odd(in_q, out_Q);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_quaternion_rotation_odd(q, Q);
+        return rigidsym_c_quaternion_rotation_odd(in_q, out_Q);
 #endif
-    const double q_0 = q[0];
-    const double q_1 = q[1];
-    const double q_2 = q[2];
-    const double q_3 = q[3];
+    const double c0_q = in_q[0];
+    const double c1_q = in_q[1];
+    const double c2_q = in_q[2];
+    const double c3_q = in_q[3];
     {
-        const double x0 = 2.0*(q_2*q_2);
-        const double x1 = 2.0*(q_3*q_3) - 1.0;
-        const double x2 = 2.0*q_0;
-        const double x3 = q_3*x2;
-        const double x4 = q_2*x2;
-        const double x5 = 2.0*q_1;
-        const double x6 = 2.0*(q_1*q_1);
-        const double x7 = q_1*x2;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0*q_1*q_2 - x3;
-        Q[2] = q_3*x5 + x4;
-        Q[3] = q_2*x5 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0*q_2*q_3 - x7;
-        Q[6] = 2.0*q_1*q_3 - x4;
-        Q[7] = 2.0*q_2*q_3 + x7;
-        Q[8] = -x0 - x6 + 1.0;
+        const double x0 = 2.0*(c2_q*c2_q);
+        const double x1 = 2.0*(c3_q*c3_q) - 1.0;
+        const double x2 = 2.0*c0_q;
+        const double x3 = c3_q*x2;
+        const double x4 = c2_q*x2;
+        const double x5 = 2.0*c1_q;
+        const double x6 = 2.0*(c1_q*c1_q);
+        const double x7 = c1_q*x2;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0*c1_q*c2_q - x3;
+        out_Q[2] = c3_q*x5 + x4;
+        out_Q[3] = c2_q*x5 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0*c2_q*c3_q - x7;
+        out_Q[6] = 2.0*c1_q*c3_q - x4;
+        out_Q[7] = 2.0*c2_q*c3_q + x7;
+        out_Q[8] = -x0 - x6 + 1.0;
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -253,24 +253,24 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const double s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
     }
     return status;
 }
@@ -278,16 +278,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
     size_t count,
-    const double *q,
-    double *Q,
+    const double *in_q,
+    double *out_Q,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_quaternion_rotation(
-            q + 4 * i_,
-            Q + 9 * i_);
+            in_q + 4 * i_,
+            out_Q + 9 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -300,56 +300,56 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_plain(
-    const float q[4],
-    float Q[9])
+    const float in_q[4],
+    float out_Q[9])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float q_0 = q[0];
-    const float q_1 = q[1];
-    const float q_2 = q[2];
-    const float q_3 = q[3];
+    const float c0_q = in_q[0];
+    const float c1_q = in_q[1];
+    const float c2_q = in_q[2];
+    const float c3_q = in_q[3];
     {
-        const float x0 = 2.0f*(q_2*q_2);
-        const float x1 = 2.0f*(q_3*q_3) - 1.0f;
-        const float x2 = 2.0f*q_0;
-        const float x3 = q_3*x2;
-        const float x4 = q_2*x2;
-        const float x5 = 2.0f*q_1;
-        const float x6 = 2.0f*(q_1*q_1);
-        const float x7 = q_1*x2;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0f*q_1*q_2 - x3;
-        Q[2] = q_3*x5 + x4;
-        Q[3] = q_2*x5 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0f*q_2*q_3 - x7;
-        Q[6] = 2.0f*q_1*q_3 - x4;
-        Q[7] = 2.0f*q_2*q_3 + x7;
-        Q[8] = -x0 - x6 + 1.0f;
+        const float x0 = 2.0f*(c2_q*c2_q);
+        const float x1 = 2.0f*(c3_q*c3_q) - 1.0f;
+        const float x2 = 2.0f*c0_q;
+        const float x3 = c3_q*x2;
+        const float x4 = c2_q*x2;
+        const float x5 = 2.0f*c1_q;
+        const float x6 = 2.0f*(c1_q*c1_q);
+        const float x7 = c1_q*x2;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0f*c1_q*c2_q - x3;
+        out_Q[2] = c3_q*x5 + x4;
+        out_Q[3] = c2_q*x5 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0f*c2_q*c3_q - x7;
+        out_Q[6] = 2.0f*c1_q*c3_q - x4;
+        out_Q[7] = 2.0f*c2_q*c3_q + x7;
+        out_Q[8] = -x0 - x6 + 1.0f;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const float s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
     }
     return status;
 }
@@ -357,8 +357,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_quaternion_rotation_f32_plain_p)(
-    const float q[4],
-    float Q[9])
+    const float in_q[4],
+    float out_Q[9])
 = rigidsym_c_quaternion_rotation_f32_plain;
 #endif
 
@@ -369,8 +369,8 @@ static int (*const volatile rigidsym_c_quaternion_rotation_f32_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
-    const float q[4],
-    float Q[9])
+    const float in_q[4],
+    float out_Q[9])
 {
     const float *args[1];
     const int sizes[1] = {4};
@@ -378,7 +378,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = q;
+    args[0] = in_q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -393,13 +393,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_quaternion_rotation_f32_plain_p)(q, Q);
+        r_ = (*rigidsym_c_quaternion_rotation_f32_plain_p)(in_q, out_Q);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_quaternion_rotation_f32_plain(q, Q);
+        status |= rigidsym_c_quaternion_rotation_f32_plain(in_q, out_Q);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -408,8 +408,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
-    const float q[4],
-    float Q[9])
+    const float in_q[4],
+    float out_Q[9])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -417,14 +417,14 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_q), *(in_q + 1), *(in_q + 2), *(in_q + 3))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
+            return rigidsym_c_quaternion_rotation_f32_odd(in_q, out_Q);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_q));
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
@@ -433,37 +433,37 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_q[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
+            return rigidsym_c_quaternion_rotation_f32_odd(in_q, out_Q);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_quaternion_rotation_f32_odd(q, Q);
+        return rigidsym_c_quaternion_rotation_f32_odd(in_q, out_Q);
 #endif
-    const float q_0 = q[0];
-    const float q_1 = q[1];
-    const float q_2 = q[2];
-    const float q_3 = q[3];
+    const float c0_q = in_q[0];
+    const float c1_q = in_q[1];
+    const float c2_q = in_q[2];
+    const float c3_q = in_q[3];
     {
-        const float x0 = 2.0f*(q_2*q_2);
-        const float x1 = 2.0f*(q_3*q_3) - 1.0f;
-        const float x2 = 2.0f*q_0;
-        const float x3 = q_3*x2;
-        const float x4 = q_2*x2;
-        const float x5 = 2.0f*q_1;
-        const float x6 = 2.0f*(q_1*q_1);
-        const float x7 = q_1*x2;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0f*q_1*q_2 - x3;
-        Q[2] = q_3*x5 + x4;
-        Q[3] = q_2*x5 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0f*q_2*q_3 - x7;
-        Q[6] = 2.0f*q_1*q_3 - x4;
-        Q[7] = 2.0f*q_2*q_3 + x7;
-        Q[8] = -x0 - x6 + 1.0f;
+        const float x0 = 2.0f*(c2_q*c2_q);
+        const float x1 = 2.0f*(c3_q*c3_q) - 1.0f;
+        const float x2 = 2.0f*c0_q;
+        const float x3 = c3_q*x2;
+        const float x4 = c2_q*x2;
+        const float x5 = 2.0f*c1_q;
+        const float x6 = 2.0f*(c1_q*c1_q);
+        const float x7 = c1_q*x2;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0f*c1_q*c2_q - x3;
+        out_Q[2] = c3_q*x5 + x4;
+        out_Q[3] = c2_q*x5 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0f*c2_q*c3_q - x7;
+        out_Q[6] = 2.0f*c1_q*c3_q - x4;
+        out_Q[7] = 2.0f*c2_q*c3_q + x7;
+        out_Q[8] = -x0 - x6 + 1.0f;
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -473,24 +473,24 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const float s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
     }
     return status;
 }
@@ -498,16 +498,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
     size_t count,
-    const float *q,
-    float *Q,
+    const float *in_q,
+    float *out_Q,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_quaternion_rotation_f32(
-            q + 4 * i_,
-            Q + 9 * i_);
+            in_q + 4 * i_,
+            out_Q + 9 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -523,128 +523,128 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
 /* rigidsym_c_quaternion_rotation_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
-    const double q_in_[4],
-    double Q[9],
-    double Q_D_q[36])
+    const double w_q[4],
+    double out_Q[9],
+    double out_Q_D_q[36])
 {
-    const long double q_0 = q_in_[0];
-    const long double q_1 = q_in_[1];
-    const long double q_2 = q_in_[2];
-    const long double q_3 = q_in_[3];
+    const long double c0_q = w_q[0];
+    const long double c1_q = w_q[1];
+    const long double c2_q = w_q[2];
+    const long double c3_q = w_q[3];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)q_in_;
+    (void)w_q;
     {
-        const long double x0 = 2.0*(q_2*q_2);
-        const long double x1 = 2.0*(q_3*q_3) - 1.0;
-        const long double x2 = 2.0*q_3;
-        const long double x3 = q_0*x2;
-        const long double x4 = 2.0*q_2;
-        const long double x5 = q_0*x4;
-        const long double x6 = 2.0*(q_1*q_1);
-        const long double x7 = 2.0*q_1;
-        const long double x8 = q_0*x7;
-        const long double x9 = -4.0*q_2;
-        const long double x10 = -4.0*q_3;
-        const long double x11 = 2.0*q_0;
+        const long double x0 = 2.0*(c2_q*c2_q);
+        const long double x1 = 2.0*(c3_q*c3_q) - 1.0;
+        const long double x2 = 2.0*c3_q;
+        const long double x3 = c0_q*x2;
+        const long double x4 = 2.0*c2_q;
+        const long double x5 = c0_q*x4;
+        const long double x6 = 2.0*(c1_q*c1_q);
+        const long double x7 = 2.0*c1_q;
+        const long double x8 = c0_q*x7;
+        const long double x9 = -4.0*c2_q;
+        const long double x10 = -4.0*c3_q;
+        const long double x11 = 2.0*c0_q;
         const long double x12 = -x11;
-        const long double x13 = -4.0*q_1;
-        Q[0] = (double)(-x0 - x1);
-        Q[1] = (double)(2.0*q_1*q_2 - x3);
-        Q[2] = (double)(q_1*x2 + x5);
-        Q[3] = (double)(q_1*x4 + x3);
-        Q[4] = (double)(-x1 - x6);
-        Q[5] = (double)(2.0*q_2*q_3 - x8);
-        Q[6] = (double)(2.0*q_1*q_3 - x5);
-        Q[7] = (double)(q_2*x2 + x8);
-        Q[8] = (double)(-x0 - x6 + 1.0);
-        Q_D_q[0] = (double)(0.0);
-        Q_D_q[1] = (double)(0.0);
-        Q_D_q[2] = (double)(x9);
-        Q_D_q[3] = (double)(x10);
-        Q_D_q[4] = (double)(-x2);
-        Q_D_q[5] = (double)(x4);
-        Q_D_q[6] = (double)(x7);
-        Q_D_q[7] = (double)(x12);
-        Q_D_q[8] = (double)(x4);
-        Q_D_q[9] = (double)(x2);
-        Q_D_q[10] = (double)(x11);
-        Q_D_q[11] = (double)(x7);
-        Q_D_q[12] = (double)(x2);
-        Q_D_q[13] = (double)(x4);
-        Q_D_q[14] = (double)(x7);
-        Q_D_q[15] = (double)(x11);
-        Q_D_q[16] = (double)(0.0);
-        Q_D_q[17] = (double)(x13);
-        Q_D_q[18] = (double)(0.0);
-        Q_D_q[19] = (double)(x10);
-        Q_D_q[20] = (double)(-x7);
-        Q_D_q[21] = (double)(x12);
-        Q_D_q[22] = (double)(x2);
-        Q_D_q[23] = (double)(x4);
-        Q_D_q[24] = (double)(-x4);
-        Q_D_q[25] = (double)(x2);
-        Q_D_q[26] = (double)(x12);
-        Q_D_q[27] = (double)(x7);
-        Q_D_q[28] = (double)(x7);
-        Q_D_q[29] = (double)(x11);
-        Q_D_q[30] = (double)(x2);
-        Q_D_q[31] = (double)(x4);
-        Q_D_q[32] = (double)(0.0);
-        Q_D_q[33] = (double)(x13);
-        Q_D_q[34] = (double)(x9);
-        Q_D_q[35] = (double)(0.0);
+        const long double x13 = -4.0*c1_q;
+        out_Q[0] = (double)(-x0 - x1);
+        out_Q[1] = (double)(2.0*c1_q*c2_q - x3);
+        out_Q[2] = (double)(c1_q*x2 + x5);
+        out_Q[3] = (double)(c1_q*x4 + x3);
+        out_Q[4] = (double)(-x1 - x6);
+        out_Q[5] = (double)(2.0*c2_q*c3_q - x8);
+        out_Q[6] = (double)(2.0*c1_q*c3_q - x5);
+        out_Q[7] = (double)(c2_q*x2 + x8);
+        out_Q[8] = (double)(-x0 - x6 + 1.0);
+        out_Q_D_q[0] = (double)(0.0);
+        out_Q_D_q[1] = (double)(0.0);
+        out_Q_D_q[2] = (double)(x9);
+        out_Q_D_q[3] = (double)(x10);
+        out_Q_D_q[4] = (double)(-x2);
+        out_Q_D_q[5] = (double)(x4);
+        out_Q_D_q[6] = (double)(x7);
+        out_Q_D_q[7] = (double)(x12);
+        out_Q_D_q[8] = (double)(x4);
+        out_Q_D_q[9] = (double)(x2);
+        out_Q_D_q[10] = (double)(x11);
+        out_Q_D_q[11] = (double)(x7);
+        out_Q_D_q[12] = (double)(x2);
+        out_Q_D_q[13] = (double)(x4);
+        out_Q_D_q[14] = (double)(x7);
+        out_Q_D_q[15] = (double)(x11);
+        out_Q_D_q[16] = (double)(0.0);
+        out_Q_D_q[17] = (double)(x13);
+        out_Q_D_q[18] = (double)(0.0);
+        out_Q_D_q[19] = (double)(x10);
+        out_Q_D_q[20] = (double)(-x7);
+        out_Q_D_q[21] = (double)(x12);
+        out_Q_D_q[22] = (double)(x2);
+        out_Q_D_q[23] = (double)(x4);
+        out_Q_D_q[24] = (double)(-x4);
+        out_Q_D_q[25] = (double)(x2);
+        out_Q_D_q[26] = (double)(x12);
+        out_Q_D_q[27] = (double)(x7);
+        out_Q_D_q[28] = (double)(x7);
+        out_Q_D_q[29] = (double)(x11);
+        out_Q_D_q[30] = (double)(x2);
+        out_Q_D_q[31] = (double)(x4);
+        out_Q_D_q[32] = (double)(0.0);
+        out_Q_D_q[33] = (double)(x13);
+        out_Q_D_q[34] = (double)(x9);
+        out_Q_D_q[35] = (double)(0.0);
     }
-    finite += (long double)(((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35]))))))));
+    finite += (long double)(((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_q[0] - out_Q_D_q[0]) + (out_Q_D_q[1] - out_Q_D_q[1]))))) + ((((out_Q_D_q[2] - out_Q_D_q[2]) + (out_Q_D_q[3] - out_Q_D_q[3])) + ((out_Q_D_q[4] - out_Q_D_q[4]) + ((out_Q_D_q[5] - out_Q_D_q[5]) + (out_Q_D_q[6] - out_Q_D_q[6])))) + (((out_Q_D_q[7] - out_Q_D_q[7]) + ((out_Q_D_q[8] - out_Q_D_q[8]) + (out_Q_D_q[9] - out_Q_D_q[9]))) + ((out_Q_D_q[10] - out_Q_D_q[10]) + ((out_Q_D_q[11] - out_Q_D_q[11]) + (out_Q_D_q[12] - out_Q_D_q[12])))))) + (((((out_Q_D_q[13] - out_Q_D_q[13]) + (out_Q_D_q[14] - out_Q_D_q[14])) + ((out_Q_D_q[15] - out_Q_D_q[15]) + ((out_Q_D_q[16] - out_Q_D_q[16]) + (out_Q_D_q[17] - out_Q_D_q[17])))) + (((out_Q_D_q[18] - out_Q_D_q[18]) + ((out_Q_D_q[19] - out_Q_D_q[19]) + (out_Q_D_q[20] - out_Q_D_q[20]))) + ((out_Q_D_q[21] - out_Q_D_q[21]) + ((out_Q_D_q[22] - out_Q_D_q[22]) + (out_Q_D_q[23] - out_Q_D_q[23]))))) + ((((out_Q_D_q[24] - out_Q_D_q[24]) + ((out_Q_D_q[25] - out_Q_D_q[25]) + (out_Q_D_q[26] - out_Q_D_q[26]))) + ((out_Q_D_q[27] - out_Q_D_q[27]) + ((out_Q_D_q[28] - out_Q_D_q[28]) + (out_Q_D_q[29] - out_Q_D_q[29])))) + (((out_Q_D_q[30] - out_Q_D_q[30]) + ((out_Q_D_q[31] - out_Q_D_q[31]) + (out_Q_D_q[32] - out_Q_D_q[32]))) + ((out_Q_D_q[33] - out_Q_D_q[33]) + ((out_Q_D_q[34] - out_Q_D_q[34]) + (out_Q_D_q[35] - out_Q_D_q[35]))))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
-        Q_D_q[0] = (double)NAN;
-        Q_D_q[1] = (double)NAN;
-        Q_D_q[2] = (double)NAN;
-        Q_D_q[3] = (double)NAN;
-        Q_D_q[4] = (double)NAN;
-        Q_D_q[5] = (double)NAN;
-        Q_D_q[6] = (double)NAN;
-        Q_D_q[7] = (double)NAN;
-        Q_D_q[8] = (double)NAN;
-        Q_D_q[9] = (double)NAN;
-        Q_D_q[10] = (double)NAN;
-        Q_D_q[11] = (double)NAN;
-        Q_D_q[12] = (double)NAN;
-        Q_D_q[13] = (double)NAN;
-        Q_D_q[14] = (double)NAN;
-        Q_D_q[15] = (double)NAN;
-        Q_D_q[16] = (double)NAN;
-        Q_D_q[17] = (double)NAN;
-        Q_D_q[18] = (double)NAN;
-        Q_D_q[19] = (double)NAN;
-        Q_D_q[20] = (double)NAN;
-        Q_D_q[21] = (double)NAN;
-        Q_D_q[22] = (double)NAN;
-        Q_D_q[23] = (double)NAN;
-        Q_D_q[24] = (double)NAN;
-        Q_D_q[25] = (double)NAN;
-        Q_D_q[26] = (double)NAN;
-        Q_D_q[27] = (double)NAN;
-        Q_D_q[28] = (double)NAN;
-        Q_D_q[29] = (double)NAN;
-        Q_D_q[30] = (double)NAN;
-        Q_D_q[31] = (double)NAN;
-        Q_D_q[32] = (double)NAN;
-        Q_D_q[33] = (double)NAN;
-        Q_D_q[34] = (double)NAN;
-        Q_D_q[35] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
+        out_Q_D_q[0] = (double)NAN;
+        out_Q_D_q[1] = (double)NAN;
+        out_Q_D_q[2] = (double)NAN;
+        out_Q_D_q[3] = (double)NAN;
+        out_Q_D_q[4] = (double)NAN;
+        out_Q_D_q[5] = (double)NAN;
+        out_Q_D_q[6] = (double)NAN;
+        out_Q_D_q[7] = (double)NAN;
+        out_Q_D_q[8] = (double)NAN;
+        out_Q_D_q[9] = (double)NAN;
+        out_Q_D_q[10] = (double)NAN;
+        out_Q_D_q[11] = (double)NAN;
+        out_Q_D_q[12] = (double)NAN;
+        out_Q_D_q[13] = (double)NAN;
+        out_Q_D_q[14] = (double)NAN;
+        out_Q_D_q[15] = (double)NAN;
+        out_Q_D_q[16] = (double)NAN;
+        out_Q_D_q[17] = (double)NAN;
+        out_Q_D_q[18] = (double)NAN;
+        out_Q_D_q[19] = (double)NAN;
+        out_Q_D_q[20] = (double)NAN;
+        out_Q_D_q[21] = (double)NAN;
+        out_Q_D_q[22] = (double)NAN;
+        out_Q_D_q[23] = (double)NAN;
+        out_Q_D_q[24] = (double)NAN;
+        out_Q_D_q[25] = (double)NAN;
+        out_Q_D_q[26] = (double)NAN;
+        out_Q_D_q[27] = (double)NAN;
+        out_Q_D_q[28] = (double)NAN;
+        out_Q_D_q[29] = (double)NAN;
+        out_Q_D_q[30] = (double)NAN;
+        out_Q_D_q[31] = (double)NAN;
+        out_Q_D_q[32] = (double)NAN;
+        out_Q_D_q[33] = (double)NAN;
+        out_Q_D_q[34] = (double)NAN;
+        out_Q_D_q[35] = (double)NAN;
     }
     return status;
 }
@@ -658,135 +658,135 @@ static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_plain(
-    const double q[4],
-    double Q[9],
-    double Q_D_q[36])
+    const double in_q[4],
+    double out_Q[9],
+    double out_Q_D_q[36])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double q_0 = q[0];
-    const double q_1 = q[1];
-    const double q_2 = q[2];
-    const double q_3 = q[3];
+    const double c0_q = in_q[0];
+    const double c1_q = in_q[1];
+    const double c2_q = in_q[2];
+    const double c3_q = in_q[3];
     {
-        const double x0 = 2.0*(q_2*q_2);
-        const double x1 = 2.0*(q_3*q_3) - 1.0;
-        const double x2 = 2.0*q_3;
-        const double x3 = q_0*x2;
-        const double x4 = 2.0*q_2;
-        const double x5 = q_0*x4;
-        const double x6 = 2.0*(q_1*q_1);
-        const double x7 = 2.0*q_1;
-        const double x8 = q_0*x7;
-        const double x9 = -4.0*q_2;
-        const double x10 = -4.0*q_3;
-        const double x11 = 2.0*q_0;
+        const double x0 = 2.0*(c2_q*c2_q);
+        const double x1 = 2.0*(c3_q*c3_q) - 1.0;
+        const double x2 = 2.0*c3_q;
+        const double x3 = c0_q*x2;
+        const double x4 = 2.0*c2_q;
+        const double x5 = c0_q*x4;
+        const double x6 = 2.0*(c1_q*c1_q);
+        const double x7 = 2.0*c1_q;
+        const double x8 = c0_q*x7;
+        const double x9 = -4.0*c2_q;
+        const double x10 = -4.0*c3_q;
+        const double x11 = 2.0*c0_q;
         const double x12 = -x11;
-        const double x13 = -4.0*q_1;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0*q_1*q_2 - x3;
-        Q[2] = q_1*x2 + x5;
-        Q[3] = q_1*x4 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0*q_2*q_3 - x8;
-        Q[6] = 2.0*q_1*q_3 - x5;
-        Q[7] = q_2*x2 + x8;
-        Q[8] = -x0 - x6 + 1.0;
-        Q_D_q[0] = 0.0;
-        Q_D_q[1] = 0.0;
-        Q_D_q[2] = x9;
-        Q_D_q[3] = x10;
-        Q_D_q[4] = -x2;
-        Q_D_q[5] = x4;
-        Q_D_q[6] = x7;
-        Q_D_q[7] = x12;
-        Q_D_q[8] = x4;
-        Q_D_q[9] = x2;
-        Q_D_q[10] = x11;
-        Q_D_q[11] = x7;
-        Q_D_q[12] = x2;
-        Q_D_q[13] = x4;
-        Q_D_q[14] = x7;
-        Q_D_q[15] = x11;
-        Q_D_q[16] = 0.0;
-        Q_D_q[17] = x13;
-        Q_D_q[18] = 0.0;
-        Q_D_q[19] = x10;
-        Q_D_q[20] = -x7;
-        Q_D_q[21] = x12;
-        Q_D_q[22] = x2;
-        Q_D_q[23] = x4;
-        Q_D_q[24] = -x4;
-        Q_D_q[25] = x2;
-        Q_D_q[26] = x12;
-        Q_D_q[27] = x7;
-        Q_D_q[28] = x7;
-        Q_D_q[29] = x11;
-        Q_D_q[30] = x2;
-        Q_D_q[31] = x4;
-        Q_D_q[32] = 0.0;
-        Q_D_q[33] = x13;
-        Q_D_q[34] = x9;
-        Q_D_q[35] = 0.0;
+        const double x13 = -4.0*c1_q;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0*c1_q*c2_q - x3;
+        out_Q[2] = c1_q*x2 + x5;
+        out_Q[3] = c1_q*x4 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0*c2_q*c3_q - x8;
+        out_Q[6] = 2.0*c1_q*c3_q - x5;
+        out_Q[7] = c2_q*x2 + x8;
+        out_Q[8] = -x0 - x6 + 1.0;
+        out_Q_D_q[0] = 0.0;
+        out_Q_D_q[1] = 0.0;
+        out_Q_D_q[2] = x9;
+        out_Q_D_q[3] = x10;
+        out_Q_D_q[4] = -x2;
+        out_Q_D_q[5] = x4;
+        out_Q_D_q[6] = x7;
+        out_Q_D_q[7] = x12;
+        out_Q_D_q[8] = x4;
+        out_Q_D_q[9] = x2;
+        out_Q_D_q[10] = x11;
+        out_Q_D_q[11] = x7;
+        out_Q_D_q[12] = x2;
+        out_Q_D_q[13] = x4;
+        out_Q_D_q[14] = x7;
+        out_Q_D_q[15] = x11;
+        out_Q_D_q[16] = 0.0;
+        out_Q_D_q[17] = x13;
+        out_Q_D_q[18] = 0.0;
+        out_Q_D_q[19] = x10;
+        out_Q_D_q[20] = -x7;
+        out_Q_D_q[21] = x12;
+        out_Q_D_q[22] = x2;
+        out_Q_D_q[23] = x4;
+        out_Q_D_q[24] = -x4;
+        out_Q_D_q[25] = x2;
+        out_Q_D_q[26] = x12;
+        out_Q_D_q[27] = x7;
+        out_Q_D_q[28] = x7;
+        out_Q_D_q[29] = x11;
+        out_Q_D_q[30] = x2;
+        out_Q_D_q[31] = x4;
+        out_Q_D_q[32] = 0.0;
+        out_Q_D_q[33] = x13;
+        out_Q_D_q[34] = x9;
+        out_Q_D_q[35] = 0.0;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        const double s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_q[0] + out_Q_D_q[1])))) + (((out_Q_D_q[2] + out_Q_D_q[3]) + (out_Q_D_q[4] + (out_Q_D_q[5] + out_Q_D_q[6]))) + ((out_Q_D_q[7] + (out_Q_D_q[8] + out_Q_D_q[9])) + (out_Q_D_q[10] + (out_Q_D_q[11] + out_Q_D_q[12]))))) + ((((out_Q_D_q[13] + out_Q_D_q[14]) + (out_Q_D_q[15] + (out_Q_D_q[16] + out_Q_D_q[17]))) + ((out_Q_D_q[18] + (out_Q_D_q[19] + out_Q_D_q[20])) + (out_Q_D_q[21] + (out_Q_D_q[22] + out_Q_D_q[23])))) + (((out_Q_D_q[24] + (out_Q_D_q[25] + out_Q_D_q[26])) + (out_Q_D_q[27] + (out_Q_D_q[28] + out_Q_D_q[29]))) + ((out_Q_D_q[30] + (out_Q_D_q[31] + out_Q_D_q[32])) + (out_Q_D_q[33] + (out_Q_D_q[34] + out_Q_D_q[35]))))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_q[0] - out_Q_D_q[0]) + (out_Q_D_q[1] - out_Q_D_q[1]))))) + ((((out_Q_D_q[2] - out_Q_D_q[2]) + (out_Q_D_q[3] - out_Q_D_q[3])) + ((out_Q_D_q[4] - out_Q_D_q[4]) + ((out_Q_D_q[5] - out_Q_D_q[5]) + (out_Q_D_q[6] - out_Q_D_q[6])))) + (((out_Q_D_q[7] - out_Q_D_q[7]) + ((out_Q_D_q[8] - out_Q_D_q[8]) + (out_Q_D_q[9] - out_Q_D_q[9]))) + ((out_Q_D_q[10] - out_Q_D_q[10]) + ((out_Q_D_q[11] - out_Q_D_q[11]) + (out_Q_D_q[12] - out_Q_D_q[12])))))) + (((((out_Q_D_q[13] - out_Q_D_q[13]) + (out_Q_D_q[14] - out_Q_D_q[14])) + ((out_Q_D_q[15] - out_Q_D_q[15]) + ((out_Q_D_q[16] - out_Q_D_q[16]) + (out_Q_D_q[17] - out_Q_D_q[17])))) + (((out_Q_D_q[18] - out_Q_D_q[18]) + ((out_Q_D_q[19] - out_Q_D_q[19]) + (out_Q_D_q[20] - out_Q_D_q[20]))) + ((out_Q_D_q[21] - out_Q_D_q[21]) + ((out_Q_D_q[22] - out_Q_D_q[22]) + (out_Q_D_q[23] - out_Q_D_q[23]))))) + ((((out_Q_D_q[24] - out_Q_D_q[24]) + ((out_Q_D_q[25] - out_Q_D_q[25]) + (out_Q_D_q[26] - out_Q_D_q[26]))) + ((out_Q_D_q[27] - out_Q_D_q[27]) + ((out_Q_D_q[28] - out_Q_D_q[28]) + (out_Q_D_q[29] - out_Q_D_q[29])))) + (((out_Q_D_q[30] - out_Q_D_q[30]) + ((out_Q_D_q[31] - out_Q_D_q[31]) + (out_Q_D_q[32] - out_Q_D_q[32]))) + ((out_Q_D_q[33] - out_Q_D_q[33]) + ((out_Q_D_q[34] - out_Q_D_q[34]) + (out_Q_D_q[35] - out_Q_D_q[35])))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
-        Q_D_q[0] = (double)NAN;
-        Q_D_q[1] = (double)NAN;
-        Q_D_q[2] = (double)NAN;
-        Q_D_q[3] = (double)NAN;
-        Q_D_q[4] = (double)NAN;
-        Q_D_q[5] = (double)NAN;
-        Q_D_q[6] = (double)NAN;
-        Q_D_q[7] = (double)NAN;
-        Q_D_q[8] = (double)NAN;
-        Q_D_q[9] = (double)NAN;
-        Q_D_q[10] = (double)NAN;
-        Q_D_q[11] = (double)NAN;
-        Q_D_q[12] = (double)NAN;
-        Q_D_q[13] = (double)NAN;
-        Q_D_q[14] = (double)NAN;
-        Q_D_q[15] = (double)NAN;
-        Q_D_q[16] = (double)NAN;
-        Q_D_q[17] = (double)NAN;
-        Q_D_q[18] = (double)NAN;
-        Q_D_q[19] = (double)NAN;
-        Q_D_q[20] = (double)NAN;
-        Q_D_q[21] = (double)NAN;
-        Q_D_q[22] = (double)NAN;
-        Q_D_q[23] = (double)NAN;
-        Q_D_q[24] = (double)NAN;
-        Q_D_q[25] = (double)NAN;
-        Q_D_q[26] = (double)NAN;
-        Q_D_q[27] = (double)NAN;
-        Q_D_q[28] = (double)NAN;
-        Q_D_q[29] = (double)NAN;
-        Q_D_q[30] = (double)NAN;
-        Q_D_q[31] = (double)NAN;
-        Q_D_q[32] = (double)NAN;
-        Q_D_q[33] = (double)NAN;
-        Q_D_q[34] = (double)NAN;
-        Q_D_q[35] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
+        out_Q_D_q[0] = (double)NAN;
+        out_Q_D_q[1] = (double)NAN;
+        out_Q_D_q[2] = (double)NAN;
+        out_Q_D_q[3] = (double)NAN;
+        out_Q_D_q[4] = (double)NAN;
+        out_Q_D_q[5] = (double)NAN;
+        out_Q_D_q[6] = (double)NAN;
+        out_Q_D_q[7] = (double)NAN;
+        out_Q_D_q[8] = (double)NAN;
+        out_Q_D_q[9] = (double)NAN;
+        out_Q_D_q[10] = (double)NAN;
+        out_Q_D_q[11] = (double)NAN;
+        out_Q_D_q[12] = (double)NAN;
+        out_Q_D_q[13] = (double)NAN;
+        out_Q_D_q[14] = (double)NAN;
+        out_Q_D_q[15] = (double)NAN;
+        out_Q_D_q[16] = (double)NAN;
+        out_Q_D_q[17] = (double)NAN;
+        out_Q_D_q[18] = (double)NAN;
+        out_Q_D_q[19] = (double)NAN;
+        out_Q_D_q[20] = (double)NAN;
+        out_Q_D_q[21] = (double)NAN;
+        out_Q_D_q[22] = (double)NAN;
+        out_Q_D_q[23] = (double)NAN;
+        out_Q_D_q[24] = (double)NAN;
+        out_Q_D_q[25] = (double)NAN;
+        out_Q_D_q[26] = (double)NAN;
+        out_Q_D_q[27] = (double)NAN;
+        out_Q_D_q[28] = (double)NAN;
+        out_Q_D_q[29] = (double)NAN;
+        out_Q_D_q[30] = (double)NAN;
+        out_Q_D_q[31] = (double)NAN;
+        out_Q_D_q[32] = (double)NAN;
+        out_Q_D_q[33] = (double)NAN;
+        out_Q_D_q[34] = (double)NAN;
+        out_Q_D_q[35] = (double)NAN;
     }
     return status;
 }
@@ -794,9 +794,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_plain_p)(
-    const double q[4],
-    double Q[9],
-    double Q_D_q[36])
+    const double in_q[4],
+    double out_Q[9],
+    double out_Q_D_q[36])
 = rigidsym_c_quaternion_rotation_with_jacobians_plain;
 #endif
 
@@ -807,9 +807,9 @@ static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_plain_
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
-    const double q[4],
-    double Q[9],
-    double Q_D_q[36])
+    const double in_q[4],
+    double out_Q[9],
+    double out_Q_D_q[36])
 {
     const double *args[1];
     const int sizes[1] = {4};
@@ -817,7 +817,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = q;
+    args[0] = in_q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -830,7 +830,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_quaternion_rotation_with_jacobians_wide(q, Q, Q_D_q);
+        status = rigidsym_c_quaternion_rotation_with_jacobians_wide(in_q, out_Q, out_Q_D_q);
         done_ = 1;
     }
 #endif
@@ -838,13 +838,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_plain_p)(q, Q, Q_D_q);
+        r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_plain_p)(in_q, out_Q, out_Q_D_q);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_quaternion_rotation_with_jacobians_plain(q, Q, Q_D_q);
+        status |= rigidsym_c_quaternion_rotation_with_jacobians_plain(in_q, out_Q, out_Q_D_q);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -853,8 +853,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
-    const double q[4],
-    double Q[9],    double Q_D_q[36])
+    const double in_q[4],
+    double out_Q[9],    double out_Q_D_q[36])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -862,16 +862,16 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q), _mm_load_sd(q + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(q + 2), _mm_load_sd(q + 2 + 1)))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_q), _mm_load_sd(in_q + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_q + 2), _mm_load_sd(in_q + 2 + 1)))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
+            return rigidsym_c_quaternion_rotation_with_jacobians_odd(in_q, out_Q, out_Q_D_q);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(q + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_q));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_q + 2));
         odd = oddv_[0] | oddv_[1];
     }
 #else
@@ -880,79 +880,79 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_q[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
+            return rigidsym_c_quaternion_rotation_with_jacobians_odd(in_q, out_Q, out_Q_D_q);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_quaternion_rotation_with_jacobians_odd(q, Q, Q_D_q);
+        return rigidsym_c_quaternion_rotation_with_jacobians_odd(in_q, out_Q, out_Q_D_q);
 #endif
-    const double q_0 = q[0];
-    const double q_1 = q[1];
-    const double q_2 = q[2];
-    const double q_3 = q[3];
+    const double c0_q = in_q[0];
+    const double c1_q = in_q[1];
+    const double c2_q = in_q[2];
+    const double c3_q = in_q[3];
     {
-        const double x0 = 2.0*(q_2*q_2);
-        const double x1 = 2.0*(q_3*q_3) - 1.0;
-        const double x2 = 2.0*q_3;
-        const double x3 = q_0*x2;
-        const double x4 = 2.0*q_2;
-        const double x5 = q_0*x4;
-        const double x6 = 2.0*(q_1*q_1);
-        const double x7 = 2.0*q_1;
-        const double x8 = q_0*x7;
-        const double x9 = -4.0*q_2;
-        const double x10 = -4.0*q_3;
-        const double x11 = 2.0*q_0;
+        const double x0 = 2.0*(c2_q*c2_q);
+        const double x1 = 2.0*(c3_q*c3_q) - 1.0;
+        const double x2 = 2.0*c3_q;
+        const double x3 = c0_q*x2;
+        const double x4 = 2.0*c2_q;
+        const double x5 = c0_q*x4;
+        const double x6 = 2.0*(c1_q*c1_q);
+        const double x7 = 2.0*c1_q;
+        const double x8 = c0_q*x7;
+        const double x9 = -4.0*c2_q;
+        const double x10 = -4.0*c3_q;
+        const double x11 = 2.0*c0_q;
         const double x12 = -x11;
-        const double x13 = -4.0*q_1;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0*q_1*q_2 - x3;
-        Q[2] = q_1*x2 + x5;
-        Q[3] = q_1*x4 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0*q_2*q_3 - x8;
-        Q[6] = 2.0*q_1*q_3 - x5;
-        Q[7] = q_2*x2 + x8;
-        Q[8] = -x0 - x6 + 1.0;
-        Q_D_q[0] = 0.0;
-        Q_D_q[1] = 0.0;
-        Q_D_q[2] = x9;
-        Q_D_q[3] = x10;
-        Q_D_q[4] = -x2;
-        Q_D_q[5] = x4;
-        Q_D_q[6] = x7;
-        Q_D_q[7] = x12;
-        Q_D_q[8] = x4;
-        Q_D_q[9] = x2;
-        Q_D_q[10] = x11;
-        Q_D_q[11] = x7;
-        Q_D_q[12] = x2;
-        Q_D_q[13] = x4;
-        Q_D_q[14] = x7;
-        Q_D_q[15] = x11;
-        Q_D_q[16] = 0.0;
-        Q_D_q[17] = x13;
-        Q_D_q[18] = 0.0;
-        Q_D_q[19] = x10;
-        Q_D_q[20] = -x7;
-        Q_D_q[21] = x12;
-        Q_D_q[22] = x2;
-        Q_D_q[23] = x4;
-        Q_D_q[24] = -x4;
-        Q_D_q[25] = x2;
-        Q_D_q[26] = x12;
-        Q_D_q[27] = x7;
-        Q_D_q[28] = x7;
-        Q_D_q[29] = x11;
-        Q_D_q[30] = x2;
-        Q_D_q[31] = x4;
-        Q_D_q[32] = 0.0;
-        Q_D_q[33] = x13;
-        Q_D_q[34] = x9;
-        Q_D_q[35] = 0.0;
+        const double x13 = -4.0*c1_q;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0*c1_q*c2_q - x3;
+        out_Q[2] = c1_q*x2 + x5;
+        out_Q[3] = c1_q*x4 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0*c2_q*c3_q - x8;
+        out_Q[6] = 2.0*c1_q*c3_q - x5;
+        out_Q[7] = c2_q*x2 + x8;
+        out_Q[8] = -x0 - x6 + 1.0;
+        out_Q_D_q[0] = 0.0;
+        out_Q_D_q[1] = 0.0;
+        out_Q_D_q[2] = x9;
+        out_Q_D_q[3] = x10;
+        out_Q_D_q[4] = -x2;
+        out_Q_D_q[5] = x4;
+        out_Q_D_q[6] = x7;
+        out_Q_D_q[7] = x12;
+        out_Q_D_q[8] = x4;
+        out_Q_D_q[9] = x2;
+        out_Q_D_q[10] = x11;
+        out_Q_D_q[11] = x7;
+        out_Q_D_q[12] = x2;
+        out_Q_D_q[13] = x4;
+        out_Q_D_q[14] = x7;
+        out_Q_D_q[15] = x11;
+        out_Q_D_q[16] = 0.0;
+        out_Q_D_q[17] = x13;
+        out_Q_D_q[18] = 0.0;
+        out_Q_D_q[19] = x10;
+        out_Q_D_q[20] = -x7;
+        out_Q_D_q[21] = x12;
+        out_Q_D_q[22] = x2;
+        out_Q_D_q[23] = x4;
+        out_Q_D_q[24] = -x4;
+        out_Q_D_q[25] = x2;
+        out_Q_D_q[26] = x12;
+        out_Q_D_q[27] = x7;
+        out_Q_D_q[28] = x7;
+        out_Q_D_q[29] = x11;
+        out_Q_D_q[30] = x2;
+        out_Q_D_q[31] = x4;
+        out_Q_D_q[32] = 0.0;
+        out_Q_D_q[33] = x13;
+        out_Q_D_q[34] = x9;
+        out_Q_D_q[35] = 0.0;
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -962,60 +962,60 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        const double s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_q[0] + out_Q_D_q[1])))) + (((out_Q_D_q[2] + out_Q_D_q[3]) + (out_Q_D_q[4] + (out_Q_D_q[5] + out_Q_D_q[6]))) + ((out_Q_D_q[7] + (out_Q_D_q[8] + out_Q_D_q[9])) + (out_Q_D_q[10] + (out_Q_D_q[11] + out_Q_D_q[12]))))) + ((((out_Q_D_q[13] + out_Q_D_q[14]) + (out_Q_D_q[15] + (out_Q_D_q[16] + out_Q_D_q[17]))) + ((out_Q_D_q[18] + (out_Q_D_q[19] + out_Q_D_q[20])) + (out_Q_D_q[21] + (out_Q_D_q[22] + out_Q_D_q[23])))) + (((out_Q_D_q[24] + (out_Q_D_q[25] + out_Q_D_q[26])) + (out_Q_D_q[27] + (out_Q_D_q[28] + out_Q_D_q[29]))) + ((out_Q_D_q[30] + (out_Q_D_q[31] + out_Q_D_q[32])) + (out_Q_D_q[33] + (out_Q_D_q[34] + out_Q_D_q[35]))))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_q[0] - out_Q_D_q[0]) + (out_Q_D_q[1] - out_Q_D_q[1]))))) + ((((out_Q_D_q[2] - out_Q_D_q[2]) + (out_Q_D_q[3] - out_Q_D_q[3])) + ((out_Q_D_q[4] - out_Q_D_q[4]) + ((out_Q_D_q[5] - out_Q_D_q[5]) + (out_Q_D_q[6] - out_Q_D_q[6])))) + (((out_Q_D_q[7] - out_Q_D_q[7]) + ((out_Q_D_q[8] - out_Q_D_q[8]) + (out_Q_D_q[9] - out_Q_D_q[9]))) + ((out_Q_D_q[10] - out_Q_D_q[10]) + ((out_Q_D_q[11] - out_Q_D_q[11]) + (out_Q_D_q[12] - out_Q_D_q[12])))))) + (((((out_Q_D_q[13] - out_Q_D_q[13]) + (out_Q_D_q[14] - out_Q_D_q[14])) + ((out_Q_D_q[15] - out_Q_D_q[15]) + ((out_Q_D_q[16] - out_Q_D_q[16]) + (out_Q_D_q[17] - out_Q_D_q[17])))) + (((out_Q_D_q[18] - out_Q_D_q[18]) + ((out_Q_D_q[19] - out_Q_D_q[19]) + (out_Q_D_q[20] - out_Q_D_q[20]))) + ((out_Q_D_q[21] - out_Q_D_q[21]) + ((out_Q_D_q[22] - out_Q_D_q[22]) + (out_Q_D_q[23] - out_Q_D_q[23]))))) + ((((out_Q_D_q[24] - out_Q_D_q[24]) + ((out_Q_D_q[25] - out_Q_D_q[25]) + (out_Q_D_q[26] - out_Q_D_q[26]))) + ((out_Q_D_q[27] - out_Q_D_q[27]) + ((out_Q_D_q[28] - out_Q_D_q[28]) + (out_Q_D_q[29] - out_Q_D_q[29])))) + (((out_Q_D_q[30] - out_Q_D_q[30]) + ((out_Q_D_q[31] - out_Q_D_q[31]) + (out_Q_D_q[32] - out_Q_D_q[32]))) + ((out_Q_D_q[33] - out_Q_D_q[33]) + ((out_Q_D_q[34] - out_Q_D_q[34]) + (out_Q_D_q[35] - out_Q_D_q[35])))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
-        Q_D_q[0] = (double)NAN;
-        Q_D_q[1] = (double)NAN;
-        Q_D_q[2] = (double)NAN;
-        Q_D_q[3] = (double)NAN;
-        Q_D_q[4] = (double)NAN;
-        Q_D_q[5] = (double)NAN;
-        Q_D_q[6] = (double)NAN;
-        Q_D_q[7] = (double)NAN;
-        Q_D_q[8] = (double)NAN;
-        Q_D_q[9] = (double)NAN;
-        Q_D_q[10] = (double)NAN;
-        Q_D_q[11] = (double)NAN;
-        Q_D_q[12] = (double)NAN;
-        Q_D_q[13] = (double)NAN;
-        Q_D_q[14] = (double)NAN;
-        Q_D_q[15] = (double)NAN;
-        Q_D_q[16] = (double)NAN;
-        Q_D_q[17] = (double)NAN;
-        Q_D_q[18] = (double)NAN;
-        Q_D_q[19] = (double)NAN;
-        Q_D_q[20] = (double)NAN;
-        Q_D_q[21] = (double)NAN;
-        Q_D_q[22] = (double)NAN;
-        Q_D_q[23] = (double)NAN;
-        Q_D_q[24] = (double)NAN;
-        Q_D_q[25] = (double)NAN;
-        Q_D_q[26] = (double)NAN;
-        Q_D_q[27] = (double)NAN;
-        Q_D_q[28] = (double)NAN;
-        Q_D_q[29] = (double)NAN;
-        Q_D_q[30] = (double)NAN;
-        Q_D_q[31] = (double)NAN;
-        Q_D_q[32] = (double)NAN;
-        Q_D_q[33] = (double)NAN;
-        Q_D_q[34] = (double)NAN;
-        Q_D_q[35] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
+        out_Q_D_q[0] = (double)NAN;
+        out_Q_D_q[1] = (double)NAN;
+        out_Q_D_q[2] = (double)NAN;
+        out_Q_D_q[3] = (double)NAN;
+        out_Q_D_q[4] = (double)NAN;
+        out_Q_D_q[5] = (double)NAN;
+        out_Q_D_q[6] = (double)NAN;
+        out_Q_D_q[7] = (double)NAN;
+        out_Q_D_q[8] = (double)NAN;
+        out_Q_D_q[9] = (double)NAN;
+        out_Q_D_q[10] = (double)NAN;
+        out_Q_D_q[11] = (double)NAN;
+        out_Q_D_q[12] = (double)NAN;
+        out_Q_D_q[13] = (double)NAN;
+        out_Q_D_q[14] = (double)NAN;
+        out_Q_D_q[15] = (double)NAN;
+        out_Q_D_q[16] = (double)NAN;
+        out_Q_D_q[17] = (double)NAN;
+        out_Q_D_q[18] = (double)NAN;
+        out_Q_D_q[19] = (double)NAN;
+        out_Q_D_q[20] = (double)NAN;
+        out_Q_D_q[21] = (double)NAN;
+        out_Q_D_q[22] = (double)NAN;
+        out_Q_D_q[23] = (double)NAN;
+        out_Q_D_q[24] = (double)NAN;
+        out_Q_D_q[25] = (double)NAN;
+        out_Q_D_q[26] = (double)NAN;
+        out_Q_D_q[27] = (double)NAN;
+        out_Q_D_q[28] = (double)NAN;
+        out_Q_D_q[29] = (double)NAN;
+        out_Q_D_q[30] = (double)NAN;
+        out_Q_D_q[31] = (double)NAN;
+        out_Q_D_q[32] = (double)NAN;
+        out_Q_D_q[33] = (double)NAN;
+        out_Q_D_q[34] = (double)NAN;
+        out_Q_D_q[35] = (double)NAN;
     }
     return status;
 }
@@ -1023,18 +1023,18 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
     size_t count,
-    const double *q,
-    double *Q,
-    double *Q_D_q,
+    const double *in_q,
+    double *out_Q,
+    double *out_Q_D_q,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_quaternion_rotation_with_jacobians(
-            q + 4 * i_,
-            Q + 9 * i_,
-            Q_D_q + 36 * i_);
+            in_q + 4 * i_,
+            out_Q + 9 * i_,
+            out_Q_D_q + 36 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -1047,135 +1047,135 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(
-    const float q[4],
-    float Q[9],
-    float Q_D_q[36])
+    const float in_q[4],
+    float out_Q[9],
+    float out_Q_D_q[36])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float q_0 = q[0];
-    const float q_1 = q[1];
-    const float q_2 = q[2];
-    const float q_3 = q[3];
+    const float c0_q = in_q[0];
+    const float c1_q = in_q[1];
+    const float c2_q = in_q[2];
+    const float c3_q = in_q[3];
     {
-        const float x0 = 2.0f*(q_2*q_2);
-        const float x1 = 2.0f*(q_3*q_3) - 1.0f;
-        const float x2 = 2.0f*q_3;
-        const float x3 = q_0*x2;
-        const float x4 = 2.0f*q_2;
-        const float x5 = q_0*x4;
-        const float x6 = 2.0f*(q_1*q_1);
-        const float x7 = 2.0f*q_1;
-        const float x8 = q_0*x7;
-        const float x9 = -4.0f*q_2;
-        const float x10 = -4.0f*q_3;
-        const float x11 = 2.0f*q_0;
+        const float x0 = 2.0f*(c2_q*c2_q);
+        const float x1 = 2.0f*(c3_q*c3_q) - 1.0f;
+        const float x2 = 2.0f*c3_q;
+        const float x3 = c0_q*x2;
+        const float x4 = 2.0f*c2_q;
+        const float x5 = c0_q*x4;
+        const float x6 = 2.0f*(c1_q*c1_q);
+        const float x7 = 2.0f*c1_q;
+        const float x8 = c0_q*x7;
+        const float x9 = -4.0f*c2_q;
+        const float x10 = -4.0f*c3_q;
+        const float x11 = 2.0f*c0_q;
         const float x12 = -x11;
-        const float x13 = -4.0f*q_1;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0f*q_1*q_2 - x3;
-        Q[2] = q_1*x2 + x5;
-        Q[3] = q_1*x4 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0f*q_2*q_3 - x8;
-        Q[6] = 2.0f*q_1*q_3 - x5;
-        Q[7] = q_2*x2 + x8;
-        Q[8] = -x0 - x6 + 1.0f;
-        Q_D_q[0] = 0.0f;
-        Q_D_q[1] = 0.0f;
-        Q_D_q[2] = x9;
-        Q_D_q[3] = x10;
-        Q_D_q[4] = -x2;
-        Q_D_q[5] = x4;
-        Q_D_q[6] = x7;
-        Q_D_q[7] = x12;
-        Q_D_q[8] = x4;
-        Q_D_q[9] = x2;
-        Q_D_q[10] = x11;
-        Q_D_q[11] = x7;
-        Q_D_q[12] = x2;
-        Q_D_q[13] = x4;
-        Q_D_q[14] = x7;
-        Q_D_q[15] = x11;
-        Q_D_q[16] = 0.0f;
-        Q_D_q[17] = x13;
-        Q_D_q[18] = 0.0f;
-        Q_D_q[19] = x10;
-        Q_D_q[20] = -x7;
-        Q_D_q[21] = x12;
-        Q_D_q[22] = x2;
-        Q_D_q[23] = x4;
-        Q_D_q[24] = -x4;
-        Q_D_q[25] = x2;
-        Q_D_q[26] = x12;
-        Q_D_q[27] = x7;
-        Q_D_q[28] = x7;
-        Q_D_q[29] = x11;
-        Q_D_q[30] = x2;
-        Q_D_q[31] = x4;
-        Q_D_q[32] = 0.0f;
-        Q_D_q[33] = x13;
-        Q_D_q[34] = x9;
-        Q_D_q[35] = 0.0f;
+        const float x13 = -4.0f*c1_q;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0f*c1_q*c2_q - x3;
+        out_Q[2] = c1_q*x2 + x5;
+        out_Q[3] = c1_q*x4 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0f*c2_q*c3_q - x8;
+        out_Q[6] = 2.0f*c1_q*c3_q - x5;
+        out_Q[7] = c2_q*x2 + x8;
+        out_Q[8] = -x0 - x6 + 1.0f;
+        out_Q_D_q[0] = 0.0f;
+        out_Q_D_q[1] = 0.0f;
+        out_Q_D_q[2] = x9;
+        out_Q_D_q[3] = x10;
+        out_Q_D_q[4] = -x2;
+        out_Q_D_q[5] = x4;
+        out_Q_D_q[6] = x7;
+        out_Q_D_q[7] = x12;
+        out_Q_D_q[8] = x4;
+        out_Q_D_q[9] = x2;
+        out_Q_D_q[10] = x11;
+        out_Q_D_q[11] = x7;
+        out_Q_D_q[12] = x2;
+        out_Q_D_q[13] = x4;
+        out_Q_D_q[14] = x7;
+        out_Q_D_q[15] = x11;
+        out_Q_D_q[16] = 0.0f;
+        out_Q_D_q[17] = x13;
+        out_Q_D_q[18] = 0.0f;
+        out_Q_D_q[19] = x10;
+        out_Q_D_q[20] = -x7;
+        out_Q_D_q[21] = x12;
+        out_Q_D_q[22] = x2;
+        out_Q_D_q[23] = x4;
+        out_Q_D_q[24] = -x4;
+        out_Q_D_q[25] = x2;
+        out_Q_D_q[26] = x12;
+        out_Q_D_q[27] = x7;
+        out_Q_D_q[28] = x7;
+        out_Q_D_q[29] = x11;
+        out_Q_D_q[30] = x2;
+        out_Q_D_q[31] = x4;
+        out_Q_D_q[32] = 0.0f;
+        out_Q_D_q[33] = x13;
+        out_Q_D_q[34] = x9;
+        out_Q_D_q[35] = 0.0f;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        const float s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_q[0] + out_Q_D_q[1])))) + (((out_Q_D_q[2] + out_Q_D_q[3]) + (out_Q_D_q[4] + (out_Q_D_q[5] + out_Q_D_q[6]))) + ((out_Q_D_q[7] + (out_Q_D_q[8] + out_Q_D_q[9])) + (out_Q_D_q[10] + (out_Q_D_q[11] + out_Q_D_q[12]))))) + ((((out_Q_D_q[13] + out_Q_D_q[14]) + (out_Q_D_q[15] + (out_Q_D_q[16] + out_Q_D_q[17]))) + ((out_Q_D_q[18] + (out_Q_D_q[19] + out_Q_D_q[20])) + (out_Q_D_q[21] + (out_Q_D_q[22] + out_Q_D_q[23])))) + (((out_Q_D_q[24] + (out_Q_D_q[25] + out_Q_D_q[26])) + (out_Q_D_q[27] + (out_Q_D_q[28] + out_Q_D_q[29]))) + ((out_Q_D_q[30] + (out_Q_D_q[31] + out_Q_D_q[32])) + (out_Q_D_q[33] + (out_Q_D_q[34] + out_Q_D_q[35]))))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_q[0] - out_Q_D_q[0]) + (out_Q_D_q[1] - out_Q_D_q[1]))))) + ((((out_Q_D_q[2] - out_Q_D_q[2]) + (out_Q_D_q[3] - out_Q_D_q[3])) + ((out_Q_D_q[4] - out_Q_D_q[4]) + ((out_Q_D_q[5] - out_Q_D_q[5]) + (out_Q_D_q[6] - out_Q_D_q[6])))) + (((out_Q_D_q[7] - out_Q_D_q[7]) + ((out_Q_D_q[8] - out_Q_D_q[8]) + (out_Q_D_q[9] - out_Q_D_q[9]))) + ((out_Q_D_q[10] - out_Q_D_q[10]) + ((out_Q_D_q[11] - out_Q_D_q[11]) + (out_Q_D_q[12] - out_Q_D_q[12])))))) + (((((out_Q_D_q[13] - out_Q_D_q[13]) + (out_Q_D_q[14] - out_Q_D_q[14])) + ((out_Q_D_q[15] - out_Q_D_q[15]) + ((out_Q_D_q[16] - out_Q_D_q[16]) + (out_Q_D_q[17] - out_Q_D_q[17])))) + (((out_Q_D_q[18] - out_Q_D_q[18]) + ((out_Q_D_q[19] - out_Q_D_q[19]) + (out_Q_D_q[20] - out_Q_D_q[20]))) + ((out_Q_D_q[21] - out_Q_D_q[21]) + ((out_Q_D_q[22] - out_Q_D_q[22]) + (out_Q_D_q[23] - out_Q_D_q[23]))))) + ((((out_Q_D_q[24] - out_Q_D_q[24]) + ((out_Q_D_q[25] - out_Q_D_q[25]) + (out_Q_D_q[26] - out_Q_D_q[26]))) + ((out_Q_D_q[27] - out_Q_D_q[27]) + ((out_Q_D_q[28] - out_Q_D_q[28]) + (out_Q_D_q[29] - out_Q_D_q[29])))) + (((out_Q_D_q[30] - out_Q_D_q[30]) + ((out_Q_D_q[31] - out_Q_D_q[31]) + (out_Q_D_q[32] - out_Q_D_q[32]))) + ((out_Q_D_q[33] - out_Q_D_q[33]) + ((out_Q_D_q[34] - out_Q_D_q[34]) + (out_Q_D_q[35] - out_Q_D_q[35])))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_q[0] = NAN;
-        Q_D_q[1] = NAN;
-        Q_D_q[2] = NAN;
-        Q_D_q[3] = NAN;
-        Q_D_q[4] = NAN;
-        Q_D_q[5] = NAN;
-        Q_D_q[6] = NAN;
-        Q_D_q[7] = NAN;
-        Q_D_q[8] = NAN;
-        Q_D_q[9] = NAN;
-        Q_D_q[10] = NAN;
-        Q_D_q[11] = NAN;
-        Q_D_q[12] = NAN;
-        Q_D_q[13] = NAN;
-        Q_D_q[14] = NAN;
-        Q_D_q[15] = NAN;
-        Q_D_q[16] = NAN;
-        Q_D_q[17] = NAN;
-        Q_D_q[18] = NAN;
-        Q_D_q[19] = NAN;
-        Q_D_q[20] = NAN;
-        Q_D_q[21] = NAN;
-        Q_D_q[22] = NAN;
-        Q_D_q[23] = NAN;
-        Q_D_q[24] = NAN;
-        Q_D_q[25] = NAN;
-        Q_D_q[26] = NAN;
-        Q_D_q[27] = NAN;
-        Q_D_q[28] = NAN;
-        Q_D_q[29] = NAN;
-        Q_D_q[30] = NAN;
-        Q_D_q[31] = NAN;
-        Q_D_q[32] = NAN;
-        Q_D_q[33] = NAN;
-        Q_D_q[34] = NAN;
-        Q_D_q[35] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
+        out_Q_D_q[0] = NAN;
+        out_Q_D_q[1] = NAN;
+        out_Q_D_q[2] = NAN;
+        out_Q_D_q[3] = NAN;
+        out_Q_D_q[4] = NAN;
+        out_Q_D_q[5] = NAN;
+        out_Q_D_q[6] = NAN;
+        out_Q_D_q[7] = NAN;
+        out_Q_D_q[8] = NAN;
+        out_Q_D_q[9] = NAN;
+        out_Q_D_q[10] = NAN;
+        out_Q_D_q[11] = NAN;
+        out_Q_D_q[12] = NAN;
+        out_Q_D_q[13] = NAN;
+        out_Q_D_q[14] = NAN;
+        out_Q_D_q[15] = NAN;
+        out_Q_D_q[16] = NAN;
+        out_Q_D_q[17] = NAN;
+        out_Q_D_q[18] = NAN;
+        out_Q_D_q[19] = NAN;
+        out_Q_D_q[20] = NAN;
+        out_Q_D_q[21] = NAN;
+        out_Q_D_q[22] = NAN;
+        out_Q_D_q[23] = NAN;
+        out_Q_D_q[24] = NAN;
+        out_Q_D_q[25] = NAN;
+        out_Q_D_q[26] = NAN;
+        out_Q_D_q[27] = NAN;
+        out_Q_D_q[28] = NAN;
+        out_Q_D_q[29] = NAN;
+        out_Q_D_q[30] = NAN;
+        out_Q_D_q[31] = NAN;
+        out_Q_D_q[32] = NAN;
+        out_Q_D_q[33] = NAN;
+        out_Q_D_q[34] = NAN;
+        out_Q_D_q[35] = NAN;
     }
     return status;
 }
@@ -1183,9 +1183,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_pla
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_f32_plain_p)(
-    const float q[4],
-    float Q[9],
-    float Q_D_q[36])
+    const float in_q[4],
+    float out_Q[9],
+    float out_Q_D_q[36])
 = rigidsym_c_quaternion_rotation_with_jacobians_f32_plain;
 #endif
 
@@ -1196,9 +1196,9 @@ static int (*const volatile rigidsym_c_quaternion_rotation_with_jacobians_f32_pl
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_quaternion_rotation_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(
-    const float q[4],
-    float Q[9],
-    float Q_D_q[36])
+    const float in_q[4],
+    float out_Q[9],
+    float out_Q_D_q[36])
 {
     const float *args[1];
     const int sizes[1] = {4};
@@ -1206,7 +1206,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = q;
+    args[0] = in_q;
     for (j = 0; j < 1; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1221,13 +1221,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_f32_plain_p)(q, Q, Q_D_q);
+        r_ = (*rigidsym_c_quaternion_rotation_with_jacobians_f32_plain_p)(in_q, out_Q, out_Q_D_q);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(q, Q, Q_D_q);
+        status |= rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(in_q, out_Q, out_Q_D_q);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1236,8 +1236,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
-    const float q[4],
-    float Q[9],    float Q_D_q[36])
+    const float in_q[4],
+    float out_Q[9],    float out_Q_D_q[36])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -1245,14 +1245,14 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(q), *(q + 1), *(q + 2), *(q + 3))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_q), *(in_q + 1), *(in_q + 2), *(in_q + 3))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
+            return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(in_q, out_Q, out_Q_D_q);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(q));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_q));
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
     }
 #else
@@ -1261,79 +1261,79 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 4; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, q[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_q[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
+            return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(in_q, out_Q, out_Q_D_q);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(q, Q, Q_D_q);
+        return rigidsym_c_quaternion_rotation_with_jacobians_f32_odd(in_q, out_Q, out_Q_D_q);
 #endif
-    const float q_0 = q[0];
-    const float q_1 = q[1];
-    const float q_2 = q[2];
-    const float q_3 = q[3];
+    const float c0_q = in_q[0];
+    const float c1_q = in_q[1];
+    const float c2_q = in_q[2];
+    const float c3_q = in_q[3];
     {
-        const float x0 = 2.0f*(q_2*q_2);
-        const float x1 = 2.0f*(q_3*q_3) - 1.0f;
-        const float x2 = 2.0f*q_3;
-        const float x3 = q_0*x2;
-        const float x4 = 2.0f*q_2;
-        const float x5 = q_0*x4;
-        const float x6 = 2.0f*(q_1*q_1);
-        const float x7 = 2.0f*q_1;
-        const float x8 = q_0*x7;
-        const float x9 = -4.0f*q_2;
-        const float x10 = -4.0f*q_3;
-        const float x11 = 2.0f*q_0;
+        const float x0 = 2.0f*(c2_q*c2_q);
+        const float x1 = 2.0f*(c3_q*c3_q) - 1.0f;
+        const float x2 = 2.0f*c3_q;
+        const float x3 = c0_q*x2;
+        const float x4 = 2.0f*c2_q;
+        const float x5 = c0_q*x4;
+        const float x6 = 2.0f*(c1_q*c1_q);
+        const float x7 = 2.0f*c1_q;
+        const float x8 = c0_q*x7;
+        const float x9 = -4.0f*c2_q;
+        const float x10 = -4.0f*c3_q;
+        const float x11 = 2.0f*c0_q;
         const float x12 = -x11;
-        const float x13 = -4.0f*q_1;
-        Q[0] = -x0 - x1;
-        Q[1] = 2.0f*q_1*q_2 - x3;
-        Q[2] = q_1*x2 + x5;
-        Q[3] = q_1*x4 + x3;
-        Q[4] = -x1 - x6;
-        Q[5] = 2.0f*q_2*q_3 - x8;
-        Q[6] = 2.0f*q_1*q_3 - x5;
-        Q[7] = q_2*x2 + x8;
-        Q[8] = -x0 - x6 + 1.0f;
-        Q_D_q[0] = 0.0f;
-        Q_D_q[1] = 0.0f;
-        Q_D_q[2] = x9;
-        Q_D_q[3] = x10;
-        Q_D_q[4] = -x2;
-        Q_D_q[5] = x4;
-        Q_D_q[6] = x7;
-        Q_D_q[7] = x12;
-        Q_D_q[8] = x4;
-        Q_D_q[9] = x2;
-        Q_D_q[10] = x11;
-        Q_D_q[11] = x7;
-        Q_D_q[12] = x2;
-        Q_D_q[13] = x4;
-        Q_D_q[14] = x7;
-        Q_D_q[15] = x11;
-        Q_D_q[16] = 0.0f;
-        Q_D_q[17] = x13;
-        Q_D_q[18] = 0.0f;
-        Q_D_q[19] = x10;
-        Q_D_q[20] = -x7;
-        Q_D_q[21] = x12;
-        Q_D_q[22] = x2;
-        Q_D_q[23] = x4;
-        Q_D_q[24] = -x4;
-        Q_D_q[25] = x2;
-        Q_D_q[26] = x12;
-        Q_D_q[27] = x7;
-        Q_D_q[28] = x7;
-        Q_D_q[29] = x11;
-        Q_D_q[30] = x2;
-        Q_D_q[31] = x4;
-        Q_D_q[32] = 0.0f;
-        Q_D_q[33] = x13;
-        Q_D_q[34] = x9;
-        Q_D_q[35] = 0.0f;
+        const float x13 = -4.0f*c1_q;
+        out_Q[0] = -x0 - x1;
+        out_Q[1] = 2.0f*c1_q*c2_q - x3;
+        out_Q[2] = c1_q*x2 + x5;
+        out_Q[3] = c1_q*x4 + x3;
+        out_Q[4] = -x1 - x6;
+        out_Q[5] = 2.0f*c2_q*c3_q - x8;
+        out_Q[6] = 2.0f*c1_q*c3_q - x5;
+        out_Q[7] = c2_q*x2 + x8;
+        out_Q[8] = -x0 - x6 + 1.0f;
+        out_Q_D_q[0] = 0.0f;
+        out_Q_D_q[1] = 0.0f;
+        out_Q_D_q[2] = x9;
+        out_Q_D_q[3] = x10;
+        out_Q_D_q[4] = -x2;
+        out_Q_D_q[5] = x4;
+        out_Q_D_q[6] = x7;
+        out_Q_D_q[7] = x12;
+        out_Q_D_q[8] = x4;
+        out_Q_D_q[9] = x2;
+        out_Q_D_q[10] = x11;
+        out_Q_D_q[11] = x7;
+        out_Q_D_q[12] = x2;
+        out_Q_D_q[13] = x4;
+        out_Q_D_q[14] = x7;
+        out_Q_D_q[15] = x11;
+        out_Q_D_q[16] = 0.0f;
+        out_Q_D_q[17] = x13;
+        out_Q_D_q[18] = 0.0f;
+        out_Q_D_q[19] = x10;
+        out_Q_D_q[20] = -x7;
+        out_Q_D_q[21] = x12;
+        out_Q_D_q[22] = x2;
+        out_Q_D_q[23] = x4;
+        out_Q_D_q[24] = -x4;
+        out_Q_D_q[25] = x2;
+        out_Q_D_q[26] = x12;
+        out_Q_D_q[27] = x7;
+        out_Q_D_q[28] = x7;
+        out_Q_D_q[29] = x11;
+        out_Q_D_q[30] = x2;
+        out_Q_D_q[31] = x4;
+        out_Q_D_q[32] = 0.0f;
+        out_Q_D_q[33] = x13;
+        out_Q_D_q[34] = x9;
+        out_Q_D_q[35] = 0.0f;
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -1343,60 +1343,60 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_q[0] + Q_D_q[1])))) + (((Q_D_q[2] + Q_D_q[3]) + (Q_D_q[4] + (Q_D_q[5] + Q_D_q[6]))) + ((Q_D_q[7] + (Q_D_q[8] + Q_D_q[9])) + (Q_D_q[10] + (Q_D_q[11] + Q_D_q[12]))))) + ((((Q_D_q[13] + Q_D_q[14]) + (Q_D_q[15] + (Q_D_q[16] + Q_D_q[17]))) + ((Q_D_q[18] + (Q_D_q[19] + Q_D_q[20])) + (Q_D_q[21] + (Q_D_q[22] + Q_D_q[23])))) + (((Q_D_q[24] + (Q_D_q[25] + Q_D_q[26])) + (Q_D_q[27] + (Q_D_q[28] + Q_D_q[29]))) + ((Q_D_q[30] + (Q_D_q[31] + Q_D_q[32])) + (Q_D_q[33] + (Q_D_q[34] + Q_D_q[35]))))));
+        const float s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_q[0] + out_Q_D_q[1])))) + (((out_Q_D_q[2] + out_Q_D_q[3]) + (out_Q_D_q[4] + (out_Q_D_q[5] + out_Q_D_q[6]))) + ((out_Q_D_q[7] + (out_Q_D_q[8] + out_Q_D_q[9])) + (out_Q_D_q[10] + (out_Q_D_q[11] + out_Q_D_q[12]))))) + ((((out_Q_D_q[13] + out_Q_D_q[14]) + (out_Q_D_q[15] + (out_Q_D_q[16] + out_Q_D_q[17]))) + ((out_Q_D_q[18] + (out_Q_D_q[19] + out_Q_D_q[20])) + (out_Q_D_q[21] + (out_Q_D_q[22] + out_Q_D_q[23])))) + (((out_Q_D_q[24] + (out_Q_D_q[25] + out_Q_D_q[26])) + (out_Q_D_q[27] + (out_Q_D_q[28] + out_Q_D_q[29]))) + ((out_Q_D_q[30] + (out_Q_D_q[31] + out_Q_D_q[32])) + (out_Q_D_q[33] + (out_Q_D_q[34] + out_Q_D_q[35]))))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_q[0] - Q_D_q[0]) + (Q_D_q[1] - Q_D_q[1]))))) + ((((Q_D_q[2] - Q_D_q[2]) + (Q_D_q[3] - Q_D_q[3])) + ((Q_D_q[4] - Q_D_q[4]) + ((Q_D_q[5] - Q_D_q[5]) + (Q_D_q[6] - Q_D_q[6])))) + (((Q_D_q[7] - Q_D_q[7]) + ((Q_D_q[8] - Q_D_q[8]) + (Q_D_q[9] - Q_D_q[9]))) + ((Q_D_q[10] - Q_D_q[10]) + ((Q_D_q[11] - Q_D_q[11]) + (Q_D_q[12] - Q_D_q[12])))))) + (((((Q_D_q[13] - Q_D_q[13]) + (Q_D_q[14] - Q_D_q[14])) + ((Q_D_q[15] - Q_D_q[15]) + ((Q_D_q[16] - Q_D_q[16]) + (Q_D_q[17] - Q_D_q[17])))) + (((Q_D_q[18] - Q_D_q[18]) + ((Q_D_q[19] - Q_D_q[19]) + (Q_D_q[20] - Q_D_q[20]))) + ((Q_D_q[21] - Q_D_q[21]) + ((Q_D_q[22] - Q_D_q[22]) + (Q_D_q[23] - Q_D_q[23]))))) + ((((Q_D_q[24] - Q_D_q[24]) + ((Q_D_q[25] - Q_D_q[25]) + (Q_D_q[26] - Q_D_q[26]))) + ((Q_D_q[27] - Q_D_q[27]) + ((Q_D_q[28] - Q_D_q[28]) + (Q_D_q[29] - Q_D_q[29])))) + (((Q_D_q[30] - Q_D_q[30]) + ((Q_D_q[31] - Q_D_q[31]) + (Q_D_q[32] - Q_D_q[32]))) + ((Q_D_q[33] - Q_D_q[33]) + ((Q_D_q[34] - Q_D_q[34]) + (Q_D_q[35] - Q_D_q[35])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_q[0] - out_Q_D_q[0]) + (out_Q_D_q[1] - out_Q_D_q[1]))))) + ((((out_Q_D_q[2] - out_Q_D_q[2]) + (out_Q_D_q[3] - out_Q_D_q[3])) + ((out_Q_D_q[4] - out_Q_D_q[4]) + ((out_Q_D_q[5] - out_Q_D_q[5]) + (out_Q_D_q[6] - out_Q_D_q[6])))) + (((out_Q_D_q[7] - out_Q_D_q[7]) + ((out_Q_D_q[8] - out_Q_D_q[8]) + (out_Q_D_q[9] - out_Q_D_q[9]))) + ((out_Q_D_q[10] - out_Q_D_q[10]) + ((out_Q_D_q[11] - out_Q_D_q[11]) + (out_Q_D_q[12] - out_Q_D_q[12])))))) + (((((out_Q_D_q[13] - out_Q_D_q[13]) + (out_Q_D_q[14] - out_Q_D_q[14])) + ((out_Q_D_q[15] - out_Q_D_q[15]) + ((out_Q_D_q[16] - out_Q_D_q[16]) + (out_Q_D_q[17] - out_Q_D_q[17])))) + (((out_Q_D_q[18] - out_Q_D_q[18]) + ((out_Q_D_q[19] - out_Q_D_q[19]) + (out_Q_D_q[20] - out_Q_D_q[20]))) + ((out_Q_D_q[21] - out_Q_D_q[21]) + ((out_Q_D_q[22] - out_Q_D_q[22]) + (out_Q_D_q[23] - out_Q_D_q[23]))))) + ((((out_Q_D_q[24] - out_Q_D_q[24]) + ((out_Q_D_q[25] - out_Q_D_q[25]) + (out_Q_D_q[26] - out_Q_D_q[26]))) + ((out_Q_D_q[27] - out_Q_D_q[27]) + ((out_Q_D_q[28] - out_Q_D_q[28]) + (out_Q_D_q[29] - out_Q_D_q[29])))) + (((out_Q_D_q[30] - out_Q_D_q[30]) + ((out_Q_D_q[31] - out_Q_D_q[31]) + (out_Q_D_q[32] - out_Q_D_q[32]))) + ((out_Q_D_q[33] - out_Q_D_q[33]) + ((out_Q_D_q[34] - out_Q_D_q[34]) + (out_Q_D_q[35] - out_Q_D_q[35])))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_q[0] = NAN;
-        Q_D_q[1] = NAN;
-        Q_D_q[2] = NAN;
-        Q_D_q[3] = NAN;
-        Q_D_q[4] = NAN;
-        Q_D_q[5] = NAN;
-        Q_D_q[6] = NAN;
-        Q_D_q[7] = NAN;
-        Q_D_q[8] = NAN;
-        Q_D_q[9] = NAN;
-        Q_D_q[10] = NAN;
-        Q_D_q[11] = NAN;
-        Q_D_q[12] = NAN;
-        Q_D_q[13] = NAN;
-        Q_D_q[14] = NAN;
-        Q_D_q[15] = NAN;
-        Q_D_q[16] = NAN;
-        Q_D_q[17] = NAN;
-        Q_D_q[18] = NAN;
-        Q_D_q[19] = NAN;
-        Q_D_q[20] = NAN;
-        Q_D_q[21] = NAN;
-        Q_D_q[22] = NAN;
-        Q_D_q[23] = NAN;
-        Q_D_q[24] = NAN;
-        Q_D_q[25] = NAN;
-        Q_D_q[26] = NAN;
-        Q_D_q[27] = NAN;
-        Q_D_q[28] = NAN;
-        Q_D_q[29] = NAN;
-        Q_D_q[30] = NAN;
-        Q_D_q[31] = NAN;
-        Q_D_q[32] = NAN;
-        Q_D_q[33] = NAN;
-        Q_D_q[34] = NAN;
-        Q_D_q[35] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
+        out_Q_D_q[0] = NAN;
+        out_Q_D_q[1] = NAN;
+        out_Q_D_q[2] = NAN;
+        out_Q_D_q[3] = NAN;
+        out_Q_D_q[4] = NAN;
+        out_Q_D_q[5] = NAN;
+        out_Q_D_q[6] = NAN;
+        out_Q_D_q[7] = NAN;
+        out_Q_D_q[8] = NAN;
+        out_Q_D_q[9] = NAN;
+        out_Q_D_q[10] = NAN;
+        out_Q_D_q[11] = NAN;
+        out_Q_D_q[12] = NAN;
+        out_Q_D_q[13] = NAN;
+        out_Q_D_q[14] = NAN;
+        out_Q_D_q[15] = NAN;
+        out_Q_D_q[16] = NAN;
+        out_Q_D_q[17] = NAN;
+        out_Q_D_q[18] = NAN;
+        out_Q_D_q[19] = NAN;
+        out_Q_D_q[20] = NAN;
+        out_Q_D_q[21] = NAN;
+        out_Q_D_q[22] = NAN;
+        out_Q_D_q[23] = NAN;
+        out_Q_D_q[24] = NAN;
+        out_Q_D_q[25] = NAN;
+        out_Q_D_q[26] = NAN;
+        out_Q_D_q[27] = NAN;
+        out_Q_D_q[28] = NAN;
+        out_Q_D_q[29] = NAN;
+        out_Q_D_q[30] = NAN;
+        out_Q_D_q[31] = NAN;
+        out_Q_D_q[32] = NAN;
+        out_Q_D_q[33] = NAN;
+        out_Q_D_q[34] = NAN;
+        out_Q_D_q[35] = NAN;
     }
     return status;
 }
@@ -1404,18 +1404,18 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
 
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32_batch(
     size_t count,
-    const float *q,
-    float *Q,
-    float *Q_D_q,
+    const float *in_q,
+    float *out_Q,
+    float *out_Q_D_q,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_quaternion_rotation_with_jacobians_f32(
-            q + 4 * i_,
-            Q + 9 * i_,
-            Q_D_q + 36 * i_);
+            in_q + 4 * i_,
+            out_Q + 9 * i_,
+            out_Q_D_q + 36 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;

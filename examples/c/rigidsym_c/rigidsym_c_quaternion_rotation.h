@@ -33,8 +33,8 @@ RIGIDSYM_C_BEGIN_DECLS
  * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
-    const double q[4],
-    double Q[9]);
+    const double in_q[4],
+    double out_Q[9]);
 
 /* quaternion_rotation in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -43,8 +43,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation(
  * rigidsym.codegen.accuracy.float_measure: worst 0.863 over 20 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
-    const float q[4],
-    float Q[9]);
+    const float in_q[4],
+    float out_Q[9]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -52,13 +52,13 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
     size_t count,
-    const double *q,
-    double *Q,
+    const double *in_q,
+    double *out_Q,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
     size_t count,
-    const float *q,
-    float *Q,
+    const float *in_q,
+    float *out_Q,
     int *status);
 
 /* quaternion_rotation_with_jacobians:
@@ -87,8 +87,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
  * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
-    const double q[4],
-    double Q[9],    double Q_D_q[36]);
+    const double in_q[4],
+    double out_Q[9],    double out_Q_D_q[36]);
 
 /* quaternion_rotation_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -97,8 +97,8 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians(
  * rigidsym.codegen.accuracy.float_measure: worst 0.863 over 20 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
-    const float q[4],
-    float Q[9],    float Q_D_q[36]);
+    const float in_q[4],
+    float out_Q[9],    float out_Q_D_q[36]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -106,15 +106,15 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
     size_t count,
-    const double *q,
-    double *Q,
-    double *Q_D_q,
+    const double *in_q,
+    double *out_Q,
+    double *out_Q_D_q,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_f32_batch(
     size_t count,
-    const float *q,
-    float *Q,
-    float *Q_D_q,
+    const float *in_q,
+    float *out_Q,
+    float *out_Q_D_q,
     int *status);
 
 RIGIDSYM_C_END_DECLS

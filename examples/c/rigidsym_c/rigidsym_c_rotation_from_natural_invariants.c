@@ -16,59 +16,59 @@
 /* rigidsym_c_rotation_from_natural_invariants in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_wide(
-    const double e_in_[3],
-    double phi_in_,
-    double Q[9])
+    const double w_e[3],
+    double w_phi,
+    double out_Q[9])
 {
-    const long double e_0 = e_in_[0];
-    const long double e_1 = e_in_[1];
-    const long double e_2 = e_in_[2];
-    const long double phi = phi_in_;
+    const long double c0_e = w_e[0];
+    const long double c1_e = w_e[1];
+    const long double c2_e = w_e[2];
+    const long double in_phi = w_phi;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)e_in_;
-    (void)phi_in_;
+    (void)w_e;
+    (void)w_phi;
     {
-        const long double x0 = (e_0*e_0);
-        const long double x1 = (0.5)*phi;
+        const long double x0 = (c0_e*c0_e);
+        const long double x1 = (0.5)*in_phi;
         const long double x2 = sinl(x1);
         const long double x3 = (x2*x2);
         const long double x4 = 2.0*x3;
         const long double x5 = cosl(x1);
         const long double x6 = ((x3 < 0.5) ? (1.0 - x4) : (2.0*(x5*x5) - 1.0));
-        const long double x7 = e_0*x4;
-        const long double x8 = e_1*x7;
+        const long double x7 = c0_e*x4;
+        const long double x8 = c1_e*x7;
         const long double x9 = 2.0*x2*x5;
-        const long double x10 = e_2*x9;
-        const long double x11 = e_2*x7;
-        const long double x12 = e_1*x9;
-        const long double x13 = (e_1*e_1);
-        const long double x14 = e_0*x9;
-        const long double x15 = (e_2*e_2);
-        Q[0] = (double)(x0 + x6*(1.0 - x0));
-        Q[1] = (double)(-x10 + x8);
-        Q[2] = (double)(x11 + x12);
-        Q[3] = (double)(x10 + x8);
-        Q[4] = (double)(x13 + x6*(1.0 - x13));
-        Q[5] = (double)(2.0*e_1*e_2*x3 - x14);
-        Q[6] = (double)(x11 - x12);
-        Q[7] = (double)(e_1*e_2*x4 + x14);
-        Q[8] = (double)(x15 + x6*(1.0 - x15));
+        const long double x10 = c2_e*x9;
+        const long double x11 = c2_e*x7;
+        const long double x12 = c1_e*x9;
+        const long double x13 = (c1_e*c1_e);
+        const long double x14 = c0_e*x9;
+        const long double x15 = (c2_e*c2_e);
+        out_Q[0] = (double)(x0 + x6*(1.0 - x0));
+        out_Q[1] = (double)(-x10 + x8);
+        out_Q[2] = (double)(x11 + x12);
+        out_Q[3] = (double)(x10 + x8);
+        out_Q[4] = (double)(x13 + x6*(1.0 - x13));
+        out_Q[5] = (double)(2.0*c1_e*c2_e*x3 - x14);
+        out_Q[6] = (double)(x11 - x12);
+        out_Q[7] = (double)(c1_e*c2_e*x4 + x14);
+        out_Q[8] = (double)(x15 + x6*(1.0 - x15));
     }
-    finite += (long double)(((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8]))))));
+    finite += (long double)(((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8]))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
     }
     return status;
 }
@@ -82,64 +82,64 @@ static int rigidsym_c_rotation_from_natural_invariants_wide(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_plain(
-    const double e[3],
-    double phi,
-    double Q[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double e_0 = e[0];
-    const double e_1 = e[1];
-    const double e_2 = e[2];
+    const double c0_e = in_e[0];
+    const double c1_e = in_e[1];
+    const double c2_e = in_e[2];
     {
-        const double x0 = (e_0*e_0);
-        const double x1 = (0.5)*phi;
+        const double x0 = (c0_e*c0_e);
+        const double x1 = (0.5)*in_phi;
         const double x2 = sin(x1);
         const double x3 = (x2*x2);
         const double x4 = 2.0*x3;
         const double x5 = cos(x1);
         const double x6 = ((x3 < 0.5) ? (1.0 - x4) : (2.0*(x5*x5) - 1.0));
-        const double x7 = e_0*x4;
-        const double x8 = e_1*x7;
+        const double x7 = c0_e*x4;
+        const double x8 = c1_e*x7;
         const double x9 = 2.0*x2*x5;
-        const double x10 = e_2*x9;
-        const double x11 = e_2*x7;
-        const double x12 = e_1*x9;
-        const double x13 = (e_1*e_1);
-        const double x14 = e_0*x9;
-        const double x15 = (e_2*e_2);
-        Q[0] = x0 + x6*(1.0 - x0);
-        Q[1] = -x10 + x8;
-        Q[2] = x11 + x12;
-        Q[3] = x10 + x8;
-        Q[4] = x13 + x6*(1.0 - x13);
-        Q[5] = 2.0*e_1*e_2*x3 - x14;
-        Q[6] = x11 - x12;
-        Q[7] = e_1*e_2*x4 + x14;
-        Q[8] = x15 + x6*(1.0 - x15);
+        const double x10 = c2_e*x9;
+        const double x11 = c2_e*x7;
+        const double x12 = c1_e*x9;
+        const double x13 = (c1_e*c1_e);
+        const double x14 = c0_e*x9;
+        const double x15 = (c2_e*c2_e);
+        out_Q[0] = x0 + x6*(1.0 - x0);
+        out_Q[1] = -x10 + x8;
+        out_Q[2] = x11 + x12;
+        out_Q[3] = x10 + x8;
+        out_Q[4] = x13 + x6*(1.0 - x13);
+        out_Q[5] = 2.0*c1_e*c2_e*x3 - x14;
+        out_Q[6] = x11 - x12;
+        out_Q[7] = c1_e*c2_e*x4 + x14;
+        out_Q[8] = x15 + x6*(1.0 - x15);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const double s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
     }
     return status;
 }
@@ -147,9 +147,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_rotation_from_natural_invariants_plain_p)(
-    const double e[3],
-    double phi,
-    double Q[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9])
 = rigidsym_c_rotation_from_natural_invariants_plain;
 #endif
 
@@ -160,9 +160,9 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_plain_p)
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
-    const double e[3],
-    double phi,
-    double Q[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9])
 {
     const double *args[2];
     const int sizes[2] = {3, 1};
@@ -170,8 +170,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = e;
-    args[1] = &phi;
+    args[0] = in_e;
+    args[1] = &in_phi;
     for (j = 0; j < 2; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -184,7 +184,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_rotation_from_natural_invariants_wide(e, phi, Q);
+        status = rigidsym_c_rotation_from_natural_invariants_wide(in_e, in_phi, out_Q);
         done_ = 1;
     }
 #endif
@@ -192,13 +192,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_rotation_from_natural_invariants_plain_p)(e, phi, Q);
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_plain_p)(in_e, in_phi, out_Q);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_rotation_from_natural_invariants_plain(e, phi, Q);
+        status |= rigidsym_c_rotation_from_natural_invariants_plain(in_e, in_phi, out_Q);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -207,9 +207,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
-    const double e[3],
-    double phi,
-    double Q[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -217,17 +217,17 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_e), _mm_load_sd(in_e + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_e[2], *&in_phi))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
+            return rigidsym_c_rotation_from_natural_invariants_odd(in_e, in_phi, out_Q);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_e));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&e[2]), rigidsym_c_bits_d(&phi)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_e[2]), rigidsym_c_bits_d(&in_phi)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         odd = oddv_[0] | oddv_[1];
@@ -238,45 +238,45 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, e[j_]);
-        RIGIDSYM_C_ODDNZ_D(odd, phi);
+            RIGIDSYM_C_ODDNZ_D(odd, in_e[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, in_phi);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
+            return rigidsym_c_rotation_from_natural_invariants_odd(in_e, in_phi, out_Q);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_rotation_from_natural_invariants_odd(e, phi, Q);
+        return rigidsym_c_rotation_from_natural_invariants_odd(in_e, in_phi, out_Q);
 #endif
-    const double e_0 = e[0];
-    const double e_1 = e[1];
-    const double e_2 = e[2];
+    const double c0_e = in_e[0];
+    const double c1_e = in_e[1];
+    const double c2_e = in_e[2];
     {
-        const double x0 = (e_0*e_0);
-        const double x1 = (0.5)*phi;
+        const double x0 = (c0_e*c0_e);
+        const double x1 = (0.5)*in_phi;
         const double x2 = sin(x1);
         const double x3 = (x2*x2);
         const double x4 = 2.0*x3;
         const double x5 = cos(x1);
         const double x6 = ((x3 < 0.5) ? (1.0 - x4) : (2.0*(x5*x5) - 1.0));
-        const double x7 = e_0*x4;
-        const double x8 = e_1*x7;
+        const double x7 = c0_e*x4;
+        const double x8 = c1_e*x7;
         const double x9 = 2.0*x2*x5;
-        const double x10 = e_2*x9;
-        const double x11 = e_2*x7;
-        const double x12 = e_1*x9;
-        const double x13 = (e_1*e_1);
-        const double x14 = e_0*x9;
-        const double x15 = (e_2*e_2);
-        Q[0] = x0 + x6*(1.0 - x0);
-        Q[1] = -x10 + x8;
-        Q[2] = x11 + x12;
-        Q[3] = x10 + x8;
-        Q[4] = x13 + x6*(1.0 - x13);
-        Q[5] = 2.0*e_1*e_2*x3 - x14;
-        Q[6] = x11 - x12;
-        Q[7] = e_1*e_2*x4 + x14;
-        Q[8] = x15 + x6*(1.0 - x15);
+        const double x10 = c2_e*x9;
+        const double x11 = c2_e*x7;
+        const double x12 = c1_e*x9;
+        const double x13 = (c1_e*c1_e);
+        const double x14 = c0_e*x9;
+        const double x15 = (c2_e*c2_e);
+        out_Q[0] = x0 + x6*(1.0 - x0);
+        out_Q[1] = -x10 + x8;
+        out_Q[2] = x11 + x12;
+        out_Q[3] = x10 + x8;
+        out_Q[4] = x13 + x6*(1.0 - x13);
+        out_Q[5] = 2.0*c1_e*c2_e*x3 - x14;
+        out_Q[6] = x11 - x12;
+        out_Q[7] = c1_e*c2_e*x4 + x14;
+        out_Q[8] = x15 + x6*(1.0 - x15);
     }
     /* no division or root, and every output bounded by 2^206 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -286,24 +286,24 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const double s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
     }
     return status;
 }
@@ -311,18 +311,18 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
     size_t count,
-    const double *e,
-    const double *phi,
-    double *Q,
+    const double *in_e,
+    const double *in_phi,
+    double *out_Q,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_rotation_from_natural_invariants(
-            e + 3 * i_,
-            phi[i_],
-            Q + 9 * i_);
+            in_e + 3 * i_,
+            in_phi[i_],
+            out_Q + 9 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -335,64 +335,64 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_plain(
-    const float e[3],
-    float phi,
-    float Q[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float e_0 = e[0];
-    const float e_1 = e[1];
-    const float e_2 = e[2];
+    const float c0_e = in_e[0];
+    const float c1_e = in_e[1];
+    const float c2_e = in_e[2];
     {
-        const float x0 = (e_0*e_0);
-        const float x1 = (0.5f)*phi;
+        const float x0 = (c0_e*c0_e);
+        const float x1 = (0.5f)*in_phi;
         const float x2 = sinf(x1);
         const float x3 = (x2*x2);
         const float x4 = 2.0f*x3;
         const float x5 = cosf(x1);
         const float x6 = ((x3 < 0.5f) ? (1.0f - x4) : (2.0f*(x5*x5) - 1.0f));
-        const float x7 = e_0*x4;
-        const float x8 = e_1*x7;
+        const float x7 = c0_e*x4;
+        const float x8 = c1_e*x7;
         const float x9 = 2.0f*x2*x5;
-        const float x10 = e_2*x9;
-        const float x11 = e_2*x7;
-        const float x12 = e_1*x9;
-        const float x13 = (e_1*e_1);
-        const float x14 = e_0*x9;
-        const float x15 = (e_2*e_2);
-        Q[0] = x0 + x6*(1.0f - x0);
-        Q[1] = -x10 + x8;
-        Q[2] = x11 + x12;
-        Q[3] = x10 + x8;
-        Q[4] = x13 + x6*(1.0f - x13);
-        Q[5] = 2.0f*e_1*e_2*x3 - x14;
-        Q[6] = x11 - x12;
-        Q[7] = e_1*e_2*x4 + x14;
-        Q[8] = x15 + x6*(1.0f - x15);
+        const float x10 = c2_e*x9;
+        const float x11 = c2_e*x7;
+        const float x12 = c1_e*x9;
+        const float x13 = (c1_e*c1_e);
+        const float x14 = c0_e*x9;
+        const float x15 = (c2_e*c2_e);
+        out_Q[0] = x0 + x6*(1.0f - x0);
+        out_Q[1] = -x10 + x8;
+        out_Q[2] = x11 + x12;
+        out_Q[3] = x10 + x8;
+        out_Q[4] = x13 + x6*(1.0f - x13);
+        out_Q[5] = 2.0f*c1_e*c2_e*x3 - x14;
+        out_Q[6] = x11 - x12;
+        out_Q[7] = c1_e*c2_e*x4 + x14;
+        out_Q[8] = x15 + x6*(1.0f - x15);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const float s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
     }
     return status;
 }
@@ -400,9 +400,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_plain
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_rotation_from_natural_invariants_f32_plain_p)(
-    const float e[3],
-    float phi,
-    float Q[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9])
 = rigidsym_c_rotation_from_natural_invariants_f32_plain;
 #endif
 
@@ -413,9 +413,9 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_f32_plai
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
-    const float e[3],
-    float phi,
-    float Q[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9])
 {
     const float *args[2];
     const int sizes[2] = {3, 1};
@@ -423,8 +423,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = e;
-    args[1] = &phi;
+    args[0] = in_e;
+    args[1] = &in_phi;
     for (j = 0; j < 2; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -439,13 +439,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_rotation_from_natural_invariants_f32_plain_p)(e, phi, Q);
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_f32_plain_p)(in_e, in_phi, out_Q);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_rotation_from_natural_invariants_f32_plain(e, phi, Q);
+        status |= rigidsym_c_rotation_from_natural_invariants_f32_plain(in_e, in_phi, out_Q);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -454,9 +454,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
-    const float e[3],
-    float phi,
-    float Q[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -464,15 +464,15 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_e[0], *&in_e[1], *&in_e[2], *&in_phi)));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
+            return rigidsym_c_rotation_from_natural_invariants_f32_odd(in_e, in_phi, out_Q);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&e[0]), rigidsym_c_bits_f(&e[1]), rigidsym_c_bits_f(&e[2]), rigidsym_c_bits_f(&phi)};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_e[0]), rigidsym_c_bits_f(&in_e[1]), rigidsym_c_bits_f(&in_e[2]), rigidsym_c_bits_f(&in_phi)};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -483,45 +483,45 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, e[j_]);
-        RIGIDSYM_C_ODDNZ_F(odd, phi);
+            RIGIDSYM_C_ODDNZ_F(odd, in_e[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, in_phi);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
+            return rigidsym_c_rotation_from_natural_invariants_f32_odd(in_e, in_phi, out_Q);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_rotation_from_natural_invariants_f32_odd(e, phi, Q);
+        return rigidsym_c_rotation_from_natural_invariants_f32_odd(in_e, in_phi, out_Q);
 #endif
-    const float e_0 = e[0];
-    const float e_1 = e[1];
-    const float e_2 = e[2];
+    const float c0_e = in_e[0];
+    const float c1_e = in_e[1];
+    const float c2_e = in_e[2];
     {
-        const float x0 = (e_0*e_0);
-        const float x1 = (0.5f)*phi;
+        const float x0 = (c0_e*c0_e);
+        const float x1 = (0.5f)*in_phi;
         const float x2 = sinf(x1);
         const float x3 = (x2*x2);
         const float x4 = 2.0f*x3;
         const float x5 = cosf(x1);
         const float x6 = ((x3 < 0.5f) ? (1.0f - x4) : (2.0f*(x5*x5) - 1.0f));
-        const float x7 = e_0*x4;
-        const float x8 = e_1*x7;
+        const float x7 = c0_e*x4;
+        const float x8 = c1_e*x7;
         const float x9 = 2.0f*x2*x5;
-        const float x10 = e_2*x9;
-        const float x11 = e_2*x7;
-        const float x12 = e_1*x9;
-        const float x13 = (e_1*e_1);
-        const float x14 = e_0*x9;
-        const float x15 = (e_2*e_2);
-        Q[0] = x0 + x6*(1.0f - x0);
-        Q[1] = -x10 + x8;
-        Q[2] = x11 + x12;
-        Q[3] = x10 + x8;
-        Q[4] = x13 + x6*(1.0f - x13);
-        Q[5] = 2.0f*e_1*e_2*x3 - x14;
-        Q[6] = x11 - x12;
-        Q[7] = e_1*e_2*x4 + x14;
-        Q[8] = x15 + x6*(1.0f - x15);
+        const float x10 = c2_e*x9;
+        const float x11 = c2_e*x7;
+        const float x12 = c1_e*x9;
+        const float x13 = (c1_e*c1_e);
+        const float x14 = c0_e*x9;
+        const float x15 = (c2_e*c2_e);
+        out_Q[0] = x0 + x6*(1.0f - x0);
+        out_Q[1] = -x10 + x8;
+        out_Q[2] = x11 + x12;
+        out_Q[3] = x10 + x8;
+        out_Q[4] = x13 + x6*(1.0f - x13);
+        out_Q[5] = 2.0f*c1_e*c2_e*x3 - x14;
+        out_Q[6] = x11 - x12;
+        out_Q[7] = c1_e*c2_e*x4 + x14;
+        out_Q[8] = x15 + x6*(1.0f - x15);
     }
     /* no division or root, and every output bounded by 2^66 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -531,24 +531,24 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((Q[0] + Q[1]) + (Q[2] + Q[3])) + ((Q[4] + Q[5]) + (Q[6] + (Q[7] + Q[8]))));
+        const float s_ = (((out_Q[0] + out_Q[1]) + (out_Q[2] + out_Q[3])) + ((out_Q[4] + out_Q[5]) + (out_Q[6] + (out_Q[7] + out_Q[8]))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + (Q[3] - Q[3]))) + (((Q[4] - Q[4]) + (Q[5] - Q[5])) + ((Q[6] - Q[6]) + ((Q[7] - Q[7]) + (Q[8] - Q[8])))));
+            finite += ((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + (out_Q[3] - out_Q[3]))) + (((out_Q[4] - out_Q[4]) + (out_Q[5] - out_Q[5])) + ((out_Q[6] - out_Q[6]) + ((out_Q[7] - out_Q[7]) + (out_Q[8] - out_Q[8])))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
     }
     return status;
 }
@@ -556,18 +556,18 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
     size_t count,
-    const float *e,
-    const float *phi,
-    float *Q,
+    const float *in_e,
+    const float *in_phi,
+    float *out_Q,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_rotation_from_natural_invariants_f32(
-            e + 3 * i_,
-            phi[i_],
-            Q + 9 * i_);
+            in_e + 3 * i_,
+            in_phi[i_],
+            out_Q + 9 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -583,145 +583,145 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
-    const double e_in_[3],
-    double phi_in_,
-    double Q[9],
-    double Q_D_e[27],
-    double Q_D_phi[9])
+    const double w_e[3],
+    double w_phi,
+    double out_Q[9],
+    double out_Q_D_e[27],
+    double out_Q_D_phi[9])
 {
-    const long double e_0 = e_in_[0];
-    const long double e_1 = e_in_[1];
-    const long double e_2 = e_in_[2];
-    const long double phi = phi_in_;
+    const long double c0_e = w_e[0];
+    const long double c1_e = w_e[1];
+    const long double c2_e = w_e[2];
+    const long double in_phi = w_phi;
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)e_in_;
-    (void)phi_in_;
+    (void)w_e;
+    (void)w_phi;
     {
-        const long double x0 = (e_0*e_0);
+        const long double x0 = (c0_e*c0_e);
         const long double x1 = 1.0 - x0;
-        const long double x2 = (0.5)*phi;
+        const long double x2 = (0.5)*in_phi;
         const long double x3 = sinl(x2);
         const long double x4 = (x3*x3);
         const long double x5 = 2.0*x4;
         const long double x6 = 1.0 - x5;
-        const long double x7 = e_1*x5;
-        const long double x8 = e_0*x7;
+        const long double x7 = c1_e*x5;
+        const long double x8 = c0_e*x7;
         const long double x9 = cosl(x2);
         const long double x10 = 2.0*x3*x9;
-        const long double x11 = e_2*x10;
-        const long double x12 = e_0*x5;
-        const long double x13 = e_2*x12;
-        const long double x14 = e_1*x10;
-        const long double x15 = (e_1*e_1);
+        const long double x11 = c2_e*x10;
+        const long double x12 = c0_e*x5;
+        const long double x13 = c2_e*x12;
+        const long double x14 = c1_e*x10;
+        const long double x15 = (c1_e*c1_e);
         const long double x16 = 1.0 - x15;
-        const long double x17 = e_0*x10;
-        const long double x18 = (e_2*e_2);
+        const long double x17 = c0_e*x10;
+        const long double x18 = (c2_e*c2_e);
         const long double x19 = 1.0 - x18;
         const long double x20 = 4.0*x4;
         const long double x21 = -x10;
-        const long double x22 = e_2*x5;
-        const long double x23 = e_0*x14;
-        const long double x24 = e_2*x6;
-        const long double x25 = e_1*x6;
-        const long double x26 = e_0*x11;
-        const long double x27 = e_0*x6;
-        Q[0] = (double)(x0 + x1*x6);
-        Q[1] = (double)(-x11 + x8);
-        Q[2] = (double)(x13 + x14);
-        Q[3] = (double)(x11 + x8);
-        Q[4] = (double)(x15 + x16*x6);
-        Q[5] = (double)(2.0*e_1*e_2*x4 - x17);
-        Q[6] = (double)(x13 - x14);
-        Q[7] = (double)(e_2*x7 + x17);
-        Q[8] = (double)(x18 + x19*x6);
-        Q_D_e[0] = (double)(e_0*x20);
-        Q_D_e[1] = (double)(0.0);
-        Q_D_e[2] = (double)(0.0);
-        Q_D_e[3] = (double)(x7);
-        Q_D_e[4] = (double)(x12);
-        Q_D_e[5] = (double)(x21);
-        Q_D_e[6] = (double)(x22);
-        Q_D_e[7] = (double)(x10);
-        Q_D_e[8] = (double)(x12);
-        Q_D_e[9] = (double)(x7);
-        Q_D_e[10] = (double)(x12);
-        Q_D_e[11] = (double)(x10);
-        Q_D_e[12] = (double)(0.0);
-        Q_D_e[13] = (double)(e_1*x20);
-        Q_D_e[14] = (double)(0.0);
-        Q_D_e[15] = (double)(x21);
-        Q_D_e[16] = (double)(x22);
-        Q_D_e[17] = (double)(x7);
-        Q_D_e[18] = (double)(x22);
-        Q_D_e[19] = (double)(x21);
-        Q_D_e[20] = (double)(x12);
-        Q_D_e[21] = (double)(x10);
-        Q_D_e[22] = (double)(x22);
-        Q_D_e[23] = (double)(x7);
-        Q_D_e[24] = (double)(0.0);
-        Q_D_e[25] = (double)(0.0);
-        Q_D_e[26] = (double)(e_2*x20);
-        Q_D_phi[0] = (double)(-x1*x10);
-        Q_D_phi[1] = (double)(x23 - x24);
-        Q_D_phi[2] = (double)(x25 + x26);
-        Q_D_phi[3] = (double)(x23 + x24);
-        Q_D_phi[4] = (double)(-x10*x16);
-        Q_D_phi[5] = (double)(2.0*e_1*e_2*x3*x9 - x27);
-        Q_D_phi[6] = (double)(-x25 + x26);
-        Q_D_phi[7] = (double)(e_1*x11 + x27);
-        Q_D_phi[8] = (double)(-x10*x19);
+        const long double x22 = c2_e*x5;
+        const long double x23 = c0_e*x14;
+        const long double x24 = c2_e*x6;
+        const long double x25 = c1_e*x6;
+        const long double x26 = c0_e*x11;
+        const long double x27 = c0_e*x6;
+        out_Q[0] = (double)(x0 + x1*x6);
+        out_Q[1] = (double)(-x11 + x8);
+        out_Q[2] = (double)(x13 + x14);
+        out_Q[3] = (double)(x11 + x8);
+        out_Q[4] = (double)(x15 + x16*x6);
+        out_Q[5] = (double)(2.0*c1_e*c2_e*x4 - x17);
+        out_Q[6] = (double)(x13 - x14);
+        out_Q[7] = (double)(c2_e*x7 + x17);
+        out_Q[8] = (double)(x18 + x19*x6);
+        out_Q_D_e[0] = (double)(c0_e*x20);
+        out_Q_D_e[1] = (double)(0.0);
+        out_Q_D_e[2] = (double)(0.0);
+        out_Q_D_e[3] = (double)(x7);
+        out_Q_D_e[4] = (double)(x12);
+        out_Q_D_e[5] = (double)(x21);
+        out_Q_D_e[6] = (double)(x22);
+        out_Q_D_e[7] = (double)(x10);
+        out_Q_D_e[8] = (double)(x12);
+        out_Q_D_e[9] = (double)(x7);
+        out_Q_D_e[10] = (double)(x12);
+        out_Q_D_e[11] = (double)(x10);
+        out_Q_D_e[12] = (double)(0.0);
+        out_Q_D_e[13] = (double)(c1_e*x20);
+        out_Q_D_e[14] = (double)(0.0);
+        out_Q_D_e[15] = (double)(x21);
+        out_Q_D_e[16] = (double)(x22);
+        out_Q_D_e[17] = (double)(x7);
+        out_Q_D_e[18] = (double)(x22);
+        out_Q_D_e[19] = (double)(x21);
+        out_Q_D_e[20] = (double)(x12);
+        out_Q_D_e[21] = (double)(x10);
+        out_Q_D_e[22] = (double)(x22);
+        out_Q_D_e[23] = (double)(x7);
+        out_Q_D_e[24] = (double)(0.0);
+        out_Q_D_e[25] = (double)(0.0);
+        out_Q_D_e[26] = (double)(c2_e*x20);
+        out_Q_D_phi[0] = (double)(-x1*x10);
+        out_Q_D_phi[1] = (double)(x23 - x24);
+        out_Q_D_phi[2] = (double)(x25 + x26);
+        out_Q_D_phi[3] = (double)(x23 + x24);
+        out_Q_D_phi[4] = (double)(-x10*x16);
+        out_Q_D_phi[5] = (double)(2.0*c1_e*c2_e*x3*x9 - x27);
+        out_Q_D_phi[6] = (double)(-x25 + x26);
+        out_Q_D_phi[7] = (double)(c1_e*x11 + x27);
+        out_Q_D_phi[8] = (double)(-x10*x19);
     }
-    finite += (long double)(((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8]))))))));
+    finite += (long double)(((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_e[0] - out_Q_D_e[0]) + (out_Q_D_e[1] - out_Q_D_e[1]))))) + ((((out_Q_D_e[2] - out_Q_D_e[2]) + (out_Q_D_e[3] - out_Q_D_e[3])) + ((out_Q_D_e[4] - out_Q_D_e[4]) + ((out_Q_D_e[5] - out_Q_D_e[5]) + (out_Q_D_e[6] - out_Q_D_e[6])))) + (((out_Q_D_e[7] - out_Q_D_e[7]) + ((out_Q_D_e[8] - out_Q_D_e[8]) + (out_Q_D_e[9] - out_Q_D_e[9]))) + ((out_Q_D_e[10] - out_Q_D_e[10]) + ((out_Q_D_e[11] - out_Q_D_e[11]) + (out_Q_D_e[12] - out_Q_D_e[12])))))) + (((((out_Q_D_e[13] - out_Q_D_e[13]) + (out_Q_D_e[14] - out_Q_D_e[14])) + ((out_Q_D_e[15] - out_Q_D_e[15]) + ((out_Q_D_e[16] - out_Q_D_e[16]) + (out_Q_D_e[17] - out_Q_D_e[17])))) + (((out_Q_D_e[18] - out_Q_D_e[18]) + ((out_Q_D_e[19] - out_Q_D_e[19]) + (out_Q_D_e[20] - out_Q_D_e[20]))) + ((out_Q_D_e[21] - out_Q_D_e[21]) + ((out_Q_D_e[22] - out_Q_D_e[22]) + (out_Q_D_e[23] - out_Q_D_e[23]))))) + ((((out_Q_D_e[24] - out_Q_D_e[24]) + ((out_Q_D_e[25] - out_Q_D_e[25]) + (out_Q_D_e[26] - out_Q_D_e[26]))) + ((out_Q_D_phi[0] - out_Q_D_phi[0]) + ((out_Q_D_phi[1] - out_Q_D_phi[1]) + (out_Q_D_phi[2] - out_Q_D_phi[2])))) + (((out_Q_D_phi[3] - out_Q_D_phi[3]) + ((out_Q_D_phi[4] - out_Q_D_phi[4]) + (out_Q_D_phi[5] - out_Q_D_phi[5]))) + ((out_Q_D_phi[6] - out_Q_D_phi[6]) + ((out_Q_D_phi[7] - out_Q_D_phi[7]) + (out_Q_D_phi[8] - out_Q_D_phi[8]))))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
-        Q_D_e[0] = (double)NAN;
-        Q_D_e[1] = (double)NAN;
-        Q_D_e[2] = (double)NAN;
-        Q_D_e[3] = (double)NAN;
-        Q_D_e[4] = (double)NAN;
-        Q_D_e[5] = (double)NAN;
-        Q_D_e[6] = (double)NAN;
-        Q_D_e[7] = (double)NAN;
-        Q_D_e[8] = (double)NAN;
-        Q_D_e[9] = (double)NAN;
-        Q_D_e[10] = (double)NAN;
-        Q_D_e[11] = (double)NAN;
-        Q_D_e[12] = (double)NAN;
-        Q_D_e[13] = (double)NAN;
-        Q_D_e[14] = (double)NAN;
-        Q_D_e[15] = (double)NAN;
-        Q_D_e[16] = (double)NAN;
-        Q_D_e[17] = (double)NAN;
-        Q_D_e[18] = (double)NAN;
-        Q_D_e[19] = (double)NAN;
-        Q_D_e[20] = (double)NAN;
-        Q_D_e[21] = (double)NAN;
-        Q_D_e[22] = (double)NAN;
-        Q_D_e[23] = (double)NAN;
-        Q_D_e[24] = (double)NAN;
-        Q_D_e[25] = (double)NAN;
-        Q_D_e[26] = (double)NAN;
-        Q_D_phi[0] = (double)NAN;
-        Q_D_phi[1] = (double)NAN;
-        Q_D_phi[2] = (double)NAN;
-        Q_D_phi[3] = (double)NAN;
-        Q_D_phi[4] = (double)NAN;
-        Q_D_phi[5] = (double)NAN;
-        Q_D_phi[6] = (double)NAN;
-        Q_D_phi[7] = (double)NAN;
-        Q_D_phi[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
+        out_Q_D_e[0] = (double)NAN;
+        out_Q_D_e[1] = (double)NAN;
+        out_Q_D_e[2] = (double)NAN;
+        out_Q_D_e[3] = (double)NAN;
+        out_Q_D_e[4] = (double)NAN;
+        out_Q_D_e[5] = (double)NAN;
+        out_Q_D_e[6] = (double)NAN;
+        out_Q_D_e[7] = (double)NAN;
+        out_Q_D_e[8] = (double)NAN;
+        out_Q_D_e[9] = (double)NAN;
+        out_Q_D_e[10] = (double)NAN;
+        out_Q_D_e[11] = (double)NAN;
+        out_Q_D_e[12] = (double)NAN;
+        out_Q_D_e[13] = (double)NAN;
+        out_Q_D_e[14] = (double)NAN;
+        out_Q_D_e[15] = (double)NAN;
+        out_Q_D_e[16] = (double)NAN;
+        out_Q_D_e[17] = (double)NAN;
+        out_Q_D_e[18] = (double)NAN;
+        out_Q_D_e[19] = (double)NAN;
+        out_Q_D_e[20] = (double)NAN;
+        out_Q_D_e[21] = (double)NAN;
+        out_Q_D_e[22] = (double)NAN;
+        out_Q_D_e[23] = (double)NAN;
+        out_Q_D_e[24] = (double)NAN;
+        out_Q_D_e[25] = (double)NAN;
+        out_Q_D_e[26] = (double)NAN;
+        out_Q_D_phi[0] = (double)NAN;
+        out_Q_D_phi[1] = (double)NAN;
+        out_Q_D_phi[2] = (double)NAN;
+        out_Q_D_phi[3] = (double)NAN;
+        out_Q_D_phi[4] = (double)NAN;
+        out_Q_D_phi[5] = (double)NAN;
+        out_Q_D_phi[6] = (double)NAN;
+        out_Q_D_phi[7] = (double)NAN;
+        out_Q_D_phi[8] = (double)NAN;
     }
     return status;
 }
@@ -735,150 +735,150 @@ static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(
-    const double e[3],
-    double phi,
-    double Q[9],
-    double Q_D_e[27],
-    double Q_D_phi[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9],
+    double out_Q_D_e[27],
+    double out_Q_D_phi[9])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double e_0 = e[0];
-    const double e_1 = e[1];
-    const double e_2 = e[2];
+    const double c0_e = in_e[0];
+    const double c1_e = in_e[1];
+    const double c2_e = in_e[2];
     {
-        const double x0 = (e_0*e_0);
+        const double x0 = (c0_e*c0_e);
         const double x1 = 1.0 - x0;
-        const double x2 = (0.5)*phi;
+        const double x2 = (0.5)*in_phi;
         const double x3 = sin(x2);
         const double x4 = (x3*x3);
         const double x5 = 2.0*x4;
         const double x6 = 1.0 - x5;
-        const double x7 = e_1*x5;
-        const double x8 = e_0*x7;
+        const double x7 = c1_e*x5;
+        const double x8 = c0_e*x7;
         const double x9 = cos(x2);
         const double x10 = 2.0*x3*x9;
-        const double x11 = e_2*x10;
-        const double x12 = e_0*x5;
-        const double x13 = e_2*x12;
-        const double x14 = e_1*x10;
-        const double x15 = (e_1*e_1);
+        const double x11 = c2_e*x10;
+        const double x12 = c0_e*x5;
+        const double x13 = c2_e*x12;
+        const double x14 = c1_e*x10;
+        const double x15 = (c1_e*c1_e);
         const double x16 = 1.0 - x15;
-        const double x17 = e_0*x10;
-        const double x18 = (e_2*e_2);
+        const double x17 = c0_e*x10;
+        const double x18 = (c2_e*c2_e);
         const double x19 = 1.0 - x18;
         const double x20 = 4.0*x4;
         const double x21 = -x10;
-        const double x22 = e_2*x5;
-        const double x23 = e_0*x14;
-        const double x24 = e_2*x6;
-        const double x25 = e_1*x6;
-        const double x26 = e_0*x11;
-        const double x27 = e_0*x6;
-        Q[0] = x0 + x1*x6;
-        Q[1] = -x11 + x8;
-        Q[2] = x13 + x14;
-        Q[3] = x11 + x8;
-        Q[4] = x15 + x16*x6;
-        Q[5] = 2.0*e_1*e_2*x4 - x17;
-        Q[6] = x13 - x14;
-        Q[7] = e_2*x7 + x17;
-        Q[8] = x18 + x19*x6;
-        Q_D_e[0] = e_0*x20;
-        Q_D_e[1] = 0.0;
-        Q_D_e[2] = 0.0;
-        Q_D_e[3] = x7;
-        Q_D_e[4] = x12;
-        Q_D_e[5] = x21;
-        Q_D_e[6] = x22;
-        Q_D_e[7] = x10;
-        Q_D_e[8] = x12;
-        Q_D_e[9] = x7;
-        Q_D_e[10] = x12;
-        Q_D_e[11] = x10;
-        Q_D_e[12] = 0.0;
-        Q_D_e[13] = e_1*x20;
-        Q_D_e[14] = 0.0;
-        Q_D_e[15] = x21;
-        Q_D_e[16] = x22;
-        Q_D_e[17] = x7;
-        Q_D_e[18] = x22;
-        Q_D_e[19] = x21;
-        Q_D_e[20] = x12;
-        Q_D_e[21] = x10;
-        Q_D_e[22] = x22;
-        Q_D_e[23] = x7;
-        Q_D_e[24] = 0.0;
-        Q_D_e[25] = 0.0;
-        Q_D_e[26] = e_2*x20;
-        Q_D_phi[0] = -x1*x10;
-        Q_D_phi[1] = x23 - x24;
-        Q_D_phi[2] = x25 + x26;
-        Q_D_phi[3] = x23 + x24;
-        Q_D_phi[4] = -x10*x16;
-        Q_D_phi[5] = 2.0*e_1*e_2*x3*x9 - x27;
-        Q_D_phi[6] = -x25 + x26;
-        Q_D_phi[7] = e_1*x11 + x27;
-        Q_D_phi[8] = -x10*x19;
+        const double x22 = c2_e*x5;
+        const double x23 = c0_e*x14;
+        const double x24 = c2_e*x6;
+        const double x25 = c1_e*x6;
+        const double x26 = c0_e*x11;
+        const double x27 = c0_e*x6;
+        out_Q[0] = x0 + x1*x6;
+        out_Q[1] = -x11 + x8;
+        out_Q[2] = x13 + x14;
+        out_Q[3] = x11 + x8;
+        out_Q[4] = x15 + x16*x6;
+        out_Q[5] = 2.0*c1_e*c2_e*x4 - x17;
+        out_Q[6] = x13 - x14;
+        out_Q[7] = c2_e*x7 + x17;
+        out_Q[8] = x18 + x19*x6;
+        out_Q_D_e[0] = c0_e*x20;
+        out_Q_D_e[1] = 0.0;
+        out_Q_D_e[2] = 0.0;
+        out_Q_D_e[3] = x7;
+        out_Q_D_e[4] = x12;
+        out_Q_D_e[5] = x21;
+        out_Q_D_e[6] = x22;
+        out_Q_D_e[7] = x10;
+        out_Q_D_e[8] = x12;
+        out_Q_D_e[9] = x7;
+        out_Q_D_e[10] = x12;
+        out_Q_D_e[11] = x10;
+        out_Q_D_e[12] = 0.0;
+        out_Q_D_e[13] = c1_e*x20;
+        out_Q_D_e[14] = 0.0;
+        out_Q_D_e[15] = x21;
+        out_Q_D_e[16] = x22;
+        out_Q_D_e[17] = x7;
+        out_Q_D_e[18] = x22;
+        out_Q_D_e[19] = x21;
+        out_Q_D_e[20] = x12;
+        out_Q_D_e[21] = x10;
+        out_Q_D_e[22] = x22;
+        out_Q_D_e[23] = x7;
+        out_Q_D_e[24] = 0.0;
+        out_Q_D_e[25] = 0.0;
+        out_Q_D_e[26] = c2_e*x20;
+        out_Q_D_phi[0] = -x1*x10;
+        out_Q_D_phi[1] = x23 - x24;
+        out_Q_D_phi[2] = x25 + x26;
+        out_Q_D_phi[3] = x23 + x24;
+        out_Q_D_phi[4] = -x10*x16;
+        out_Q_D_phi[5] = 2.0*c1_e*c2_e*x3*x9 - x27;
+        out_Q_D_phi[6] = -x25 + x26;
+        out_Q_D_phi[7] = c1_e*x11 + x27;
+        out_Q_D_phi[8] = -x10*x19;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        const double s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_e[0] + out_Q_D_e[1])))) + (((out_Q_D_e[2] + out_Q_D_e[3]) + (out_Q_D_e[4] + (out_Q_D_e[5] + out_Q_D_e[6]))) + ((out_Q_D_e[7] + (out_Q_D_e[8] + out_Q_D_e[9])) + (out_Q_D_e[10] + (out_Q_D_e[11] + out_Q_D_e[12]))))) + ((((out_Q_D_e[13] + out_Q_D_e[14]) + (out_Q_D_e[15] + (out_Q_D_e[16] + out_Q_D_e[17]))) + ((out_Q_D_e[18] + (out_Q_D_e[19] + out_Q_D_e[20])) + (out_Q_D_e[21] + (out_Q_D_e[22] + out_Q_D_e[23])))) + (((out_Q_D_e[24] + (out_Q_D_e[25] + out_Q_D_e[26])) + (out_Q_D_phi[0] + (out_Q_D_phi[1] + out_Q_D_phi[2]))) + ((out_Q_D_phi[3] + (out_Q_D_phi[4] + out_Q_D_phi[5])) + (out_Q_D_phi[6] + (out_Q_D_phi[7] + out_Q_D_phi[8]))))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_e[0] - out_Q_D_e[0]) + (out_Q_D_e[1] - out_Q_D_e[1]))))) + ((((out_Q_D_e[2] - out_Q_D_e[2]) + (out_Q_D_e[3] - out_Q_D_e[3])) + ((out_Q_D_e[4] - out_Q_D_e[4]) + ((out_Q_D_e[5] - out_Q_D_e[5]) + (out_Q_D_e[6] - out_Q_D_e[6])))) + (((out_Q_D_e[7] - out_Q_D_e[7]) + ((out_Q_D_e[8] - out_Q_D_e[8]) + (out_Q_D_e[9] - out_Q_D_e[9]))) + ((out_Q_D_e[10] - out_Q_D_e[10]) + ((out_Q_D_e[11] - out_Q_D_e[11]) + (out_Q_D_e[12] - out_Q_D_e[12])))))) + (((((out_Q_D_e[13] - out_Q_D_e[13]) + (out_Q_D_e[14] - out_Q_D_e[14])) + ((out_Q_D_e[15] - out_Q_D_e[15]) + ((out_Q_D_e[16] - out_Q_D_e[16]) + (out_Q_D_e[17] - out_Q_D_e[17])))) + (((out_Q_D_e[18] - out_Q_D_e[18]) + ((out_Q_D_e[19] - out_Q_D_e[19]) + (out_Q_D_e[20] - out_Q_D_e[20]))) + ((out_Q_D_e[21] - out_Q_D_e[21]) + ((out_Q_D_e[22] - out_Q_D_e[22]) + (out_Q_D_e[23] - out_Q_D_e[23]))))) + ((((out_Q_D_e[24] - out_Q_D_e[24]) + ((out_Q_D_e[25] - out_Q_D_e[25]) + (out_Q_D_e[26] - out_Q_D_e[26]))) + ((out_Q_D_phi[0] - out_Q_D_phi[0]) + ((out_Q_D_phi[1] - out_Q_D_phi[1]) + (out_Q_D_phi[2] - out_Q_D_phi[2])))) + (((out_Q_D_phi[3] - out_Q_D_phi[3]) + ((out_Q_D_phi[4] - out_Q_D_phi[4]) + (out_Q_D_phi[5] - out_Q_D_phi[5]))) + ((out_Q_D_phi[6] - out_Q_D_phi[6]) + ((out_Q_D_phi[7] - out_Q_D_phi[7]) + (out_Q_D_phi[8] - out_Q_D_phi[8])))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
-        Q_D_e[0] = (double)NAN;
-        Q_D_e[1] = (double)NAN;
-        Q_D_e[2] = (double)NAN;
-        Q_D_e[3] = (double)NAN;
-        Q_D_e[4] = (double)NAN;
-        Q_D_e[5] = (double)NAN;
-        Q_D_e[6] = (double)NAN;
-        Q_D_e[7] = (double)NAN;
-        Q_D_e[8] = (double)NAN;
-        Q_D_e[9] = (double)NAN;
-        Q_D_e[10] = (double)NAN;
-        Q_D_e[11] = (double)NAN;
-        Q_D_e[12] = (double)NAN;
-        Q_D_e[13] = (double)NAN;
-        Q_D_e[14] = (double)NAN;
-        Q_D_e[15] = (double)NAN;
-        Q_D_e[16] = (double)NAN;
-        Q_D_e[17] = (double)NAN;
-        Q_D_e[18] = (double)NAN;
-        Q_D_e[19] = (double)NAN;
-        Q_D_e[20] = (double)NAN;
-        Q_D_e[21] = (double)NAN;
-        Q_D_e[22] = (double)NAN;
-        Q_D_e[23] = (double)NAN;
-        Q_D_e[24] = (double)NAN;
-        Q_D_e[25] = (double)NAN;
-        Q_D_e[26] = (double)NAN;
-        Q_D_phi[0] = (double)NAN;
-        Q_D_phi[1] = (double)NAN;
-        Q_D_phi[2] = (double)NAN;
-        Q_D_phi[3] = (double)NAN;
-        Q_D_phi[4] = (double)NAN;
-        Q_D_phi[5] = (double)NAN;
-        Q_D_phi[6] = (double)NAN;
-        Q_D_phi[7] = (double)NAN;
-        Q_D_phi[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
+        out_Q_D_e[0] = (double)NAN;
+        out_Q_D_e[1] = (double)NAN;
+        out_Q_D_e[2] = (double)NAN;
+        out_Q_D_e[3] = (double)NAN;
+        out_Q_D_e[4] = (double)NAN;
+        out_Q_D_e[5] = (double)NAN;
+        out_Q_D_e[6] = (double)NAN;
+        out_Q_D_e[7] = (double)NAN;
+        out_Q_D_e[8] = (double)NAN;
+        out_Q_D_e[9] = (double)NAN;
+        out_Q_D_e[10] = (double)NAN;
+        out_Q_D_e[11] = (double)NAN;
+        out_Q_D_e[12] = (double)NAN;
+        out_Q_D_e[13] = (double)NAN;
+        out_Q_D_e[14] = (double)NAN;
+        out_Q_D_e[15] = (double)NAN;
+        out_Q_D_e[16] = (double)NAN;
+        out_Q_D_e[17] = (double)NAN;
+        out_Q_D_e[18] = (double)NAN;
+        out_Q_D_e[19] = (double)NAN;
+        out_Q_D_e[20] = (double)NAN;
+        out_Q_D_e[21] = (double)NAN;
+        out_Q_D_e[22] = (double)NAN;
+        out_Q_D_e[23] = (double)NAN;
+        out_Q_D_e[24] = (double)NAN;
+        out_Q_D_e[25] = (double)NAN;
+        out_Q_D_e[26] = (double)NAN;
+        out_Q_D_phi[0] = (double)NAN;
+        out_Q_D_phi[1] = (double)NAN;
+        out_Q_D_phi[2] = (double)NAN;
+        out_Q_D_phi[3] = (double)NAN;
+        out_Q_D_phi[4] = (double)NAN;
+        out_Q_D_phi[5] = (double)NAN;
+        out_Q_D_phi[6] = (double)NAN;
+        out_Q_D_phi[7] = (double)NAN;
+        out_Q_D_phi[8] = (double)NAN;
     }
     return status;
 }
@@ -886,11 +886,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain_p)(
-    const double e[3],
-    double phi,
-    double Q[9],
-    double Q_D_e[27],
-    double Q_D_phi[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9],
+    double out_Q_D_e[27],
+    double out_Q_D_phi[9])
 = rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain;
 #endif
 
@@ -901,11 +901,11 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jac
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(
-    const double e[3],
-    double phi,
-    double Q[9],
-    double Q_D_e[27],
-    double Q_D_phi[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9],
+    double out_Q_D_e[27],
+    double out_Q_D_phi[9])
 {
     const double *args[2];
     const int sizes[2] = {3, 1};
@@ -913,8 +913,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = e;
-    args[1] = &phi;
+    args[0] = in_e;
+    args[1] = &in_phi;
     for (j = 0; j < 2; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -927,7 +927,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(e, phi, Q, Q_D_e, Q_D_phi);
+        status = rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
         done_ = 1;
     }
 #endif
@@ -935,13 +935,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain_p)(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(e, phi, Q, Q_D_e, Q_D_phi);
+        status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -950,9 +950,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
-    const double e[3],
-    double phi,
-    double Q[9],    double Q_D_e[27],    double Q_D_phi[9])
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9],    double out_Q_D_e[27],    double out_Q_D_phi[9])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -960,17 +960,17 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(e), _mm_load_sd(e + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&e[2], *&phi))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_e), _mm_load_sd(in_e + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_e[2], *&in_phi))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(e));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_e));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&e[2]), rigidsym_c_bits_d(&phi)};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_e[2]), rigidsym_c_bits_d(&in_phi)};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
         odd = oddv_[0] | oddv_[1];
@@ -981,93 +981,93 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, e[j_]);
-        RIGIDSYM_C_ODDNZ_D(odd, phi);
+            RIGIDSYM_C_ODDNZ_D(odd, in_e[j_]);
+        RIGIDSYM_C_ODDNZ_D(odd, in_phi);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(e, phi, Q, Q_D_e, Q_D_phi);
+        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_odd(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
 #endif
-    const double e_0 = e[0];
-    const double e_1 = e[1];
-    const double e_2 = e[2];
+    const double c0_e = in_e[0];
+    const double c1_e = in_e[1];
+    const double c2_e = in_e[2];
     {
-        const double x0 = (e_0*e_0);
+        const double x0 = (c0_e*c0_e);
         const double x1 = 1.0 - x0;
-        const double x2 = (0.5)*phi;
+        const double x2 = (0.5)*in_phi;
         const double x3 = sin(x2);
         const double x4 = (x3*x3);
         const double x5 = 2.0*x4;
         const double x6 = 1.0 - x5;
-        const double x7 = e_1*x5;
-        const double x8 = e_0*x7;
+        const double x7 = c1_e*x5;
+        const double x8 = c0_e*x7;
         const double x9 = cos(x2);
         const double x10 = 2.0*x3*x9;
-        const double x11 = e_2*x10;
-        const double x12 = e_0*x5;
-        const double x13 = e_2*x12;
-        const double x14 = e_1*x10;
-        const double x15 = (e_1*e_1);
+        const double x11 = c2_e*x10;
+        const double x12 = c0_e*x5;
+        const double x13 = c2_e*x12;
+        const double x14 = c1_e*x10;
+        const double x15 = (c1_e*c1_e);
         const double x16 = 1.0 - x15;
-        const double x17 = e_0*x10;
-        const double x18 = (e_2*e_2);
+        const double x17 = c0_e*x10;
+        const double x18 = (c2_e*c2_e);
         const double x19 = 1.0 - x18;
         const double x20 = 4.0*x4;
         const double x21 = -x10;
-        const double x22 = e_2*x5;
-        const double x23 = e_0*x14;
-        const double x24 = e_2*x6;
-        const double x25 = e_1*x6;
-        const double x26 = e_0*x11;
-        const double x27 = e_0*x6;
-        Q[0] = x0 + x1*x6;
-        Q[1] = -x11 + x8;
-        Q[2] = x13 + x14;
-        Q[3] = x11 + x8;
-        Q[4] = x15 + x16*x6;
-        Q[5] = 2.0*e_1*e_2*x4 - x17;
-        Q[6] = x13 - x14;
-        Q[7] = e_2*x7 + x17;
-        Q[8] = x18 + x19*x6;
-        Q_D_e[0] = e_0*x20;
-        Q_D_e[1] = 0.0;
-        Q_D_e[2] = 0.0;
-        Q_D_e[3] = x7;
-        Q_D_e[4] = x12;
-        Q_D_e[5] = x21;
-        Q_D_e[6] = x22;
-        Q_D_e[7] = x10;
-        Q_D_e[8] = x12;
-        Q_D_e[9] = x7;
-        Q_D_e[10] = x12;
-        Q_D_e[11] = x10;
-        Q_D_e[12] = 0.0;
-        Q_D_e[13] = e_1*x20;
-        Q_D_e[14] = 0.0;
-        Q_D_e[15] = x21;
-        Q_D_e[16] = x22;
-        Q_D_e[17] = x7;
-        Q_D_e[18] = x22;
-        Q_D_e[19] = x21;
-        Q_D_e[20] = x12;
-        Q_D_e[21] = x10;
-        Q_D_e[22] = x22;
-        Q_D_e[23] = x7;
-        Q_D_e[24] = 0.0;
-        Q_D_e[25] = 0.0;
-        Q_D_e[26] = e_2*x20;
-        Q_D_phi[0] = -x1*x10;
-        Q_D_phi[1] = x23 - x24;
-        Q_D_phi[2] = x25 + x26;
-        Q_D_phi[3] = x23 + x24;
-        Q_D_phi[4] = -x10*x16;
-        Q_D_phi[5] = 2.0*e_1*e_2*x3*x9 - x27;
-        Q_D_phi[6] = -x25 + x26;
-        Q_D_phi[7] = e_1*x11 + x27;
-        Q_D_phi[8] = -x10*x19;
+        const double x22 = c2_e*x5;
+        const double x23 = c0_e*x14;
+        const double x24 = c2_e*x6;
+        const double x25 = c1_e*x6;
+        const double x26 = c0_e*x11;
+        const double x27 = c0_e*x6;
+        out_Q[0] = x0 + x1*x6;
+        out_Q[1] = -x11 + x8;
+        out_Q[2] = x13 + x14;
+        out_Q[3] = x11 + x8;
+        out_Q[4] = x15 + x16*x6;
+        out_Q[5] = 2.0*c1_e*c2_e*x4 - x17;
+        out_Q[6] = x13 - x14;
+        out_Q[7] = c2_e*x7 + x17;
+        out_Q[8] = x18 + x19*x6;
+        out_Q_D_e[0] = c0_e*x20;
+        out_Q_D_e[1] = 0.0;
+        out_Q_D_e[2] = 0.0;
+        out_Q_D_e[3] = x7;
+        out_Q_D_e[4] = x12;
+        out_Q_D_e[5] = x21;
+        out_Q_D_e[6] = x22;
+        out_Q_D_e[7] = x10;
+        out_Q_D_e[8] = x12;
+        out_Q_D_e[9] = x7;
+        out_Q_D_e[10] = x12;
+        out_Q_D_e[11] = x10;
+        out_Q_D_e[12] = 0.0;
+        out_Q_D_e[13] = c1_e*x20;
+        out_Q_D_e[14] = 0.0;
+        out_Q_D_e[15] = x21;
+        out_Q_D_e[16] = x22;
+        out_Q_D_e[17] = x7;
+        out_Q_D_e[18] = x22;
+        out_Q_D_e[19] = x21;
+        out_Q_D_e[20] = x12;
+        out_Q_D_e[21] = x10;
+        out_Q_D_e[22] = x22;
+        out_Q_D_e[23] = x7;
+        out_Q_D_e[24] = 0.0;
+        out_Q_D_e[25] = 0.0;
+        out_Q_D_e[26] = c2_e*x20;
+        out_Q_D_phi[0] = -x1*x10;
+        out_Q_D_phi[1] = x23 - x24;
+        out_Q_D_phi[2] = x25 + x26;
+        out_Q_D_phi[3] = x23 + x24;
+        out_Q_D_phi[4] = -x10*x16;
+        out_Q_D_phi[5] = 2.0*c1_e*c2_e*x3*x9 - x27;
+        out_Q_D_phi[6] = -x25 + x26;
+        out_Q_D_phi[7] = c1_e*x11 + x27;
+        out_Q_D_phi[8] = -x10*x19;
     }
     /* no division or root, and every output bounded by 2^206 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -1077,60 +1077,60 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        const double s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_e[0] + out_Q_D_e[1])))) + (((out_Q_D_e[2] + out_Q_D_e[3]) + (out_Q_D_e[4] + (out_Q_D_e[5] + out_Q_D_e[6]))) + ((out_Q_D_e[7] + (out_Q_D_e[8] + out_Q_D_e[9])) + (out_Q_D_e[10] + (out_Q_D_e[11] + out_Q_D_e[12]))))) + ((((out_Q_D_e[13] + out_Q_D_e[14]) + (out_Q_D_e[15] + (out_Q_D_e[16] + out_Q_D_e[17]))) + ((out_Q_D_e[18] + (out_Q_D_e[19] + out_Q_D_e[20])) + (out_Q_D_e[21] + (out_Q_D_e[22] + out_Q_D_e[23])))) + (((out_Q_D_e[24] + (out_Q_D_e[25] + out_Q_D_e[26])) + (out_Q_D_phi[0] + (out_Q_D_phi[1] + out_Q_D_phi[2]))) + ((out_Q_D_phi[3] + (out_Q_D_phi[4] + out_Q_D_phi[5])) + (out_Q_D_phi[6] + (out_Q_D_phi[7] + out_Q_D_phi[8]))))));
         if (!(s_ - s_ == 0.0))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_e[0] - out_Q_D_e[0]) + (out_Q_D_e[1] - out_Q_D_e[1]))))) + ((((out_Q_D_e[2] - out_Q_D_e[2]) + (out_Q_D_e[3] - out_Q_D_e[3])) + ((out_Q_D_e[4] - out_Q_D_e[4]) + ((out_Q_D_e[5] - out_Q_D_e[5]) + (out_Q_D_e[6] - out_Q_D_e[6])))) + (((out_Q_D_e[7] - out_Q_D_e[7]) + ((out_Q_D_e[8] - out_Q_D_e[8]) + (out_Q_D_e[9] - out_Q_D_e[9]))) + ((out_Q_D_e[10] - out_Q_D_e[10]) + ((out_Q_D_e[11] - out_Q_D_e[11]) + (out_Q_D_e[12] - out_Q_D_e[12])))))) + (((((out_Q_D_e[13] - out_Q_D_e[13]) + (out_Q_D_e[14] - out_Q_D_e[14])) + ((out_Q_D_e[15] - out_Q_D_e[15]) + ((out_Q_D_e[16] - out_Q_D_e[16]) + (out_Q_D_e[17] - out_Q_D_e[17])))) + (((out_Q_D_e[18] - out_Q_D_e[18]) + ((out_Q_D_e[19] - out_Q_D_e[19]) + (out_Q_D_e[20] - out_Q_D_e[20]))) + ((out_Q_D_e[21] - out_Q_D_e[21]) + ((out_Q_D_e[22] - out_Q_D_e[22]) + (out_Q_D_e[23] - out_Q_D_e[23]))))) + ((((out_Q_D_e[24] - out_Q_D_e[24]) + ((out_Q_D_e[25] - out_Q_D_e[25]) + (out_Q_D_e[26] - out_Q_D_e[26]))) + ((out_Q_D_phi[0] - out_Q_D_phi[0]) + ((out_Q_D_phi[1] - out_Q_D_phi[1]) + (out_Q_D_phi[2] - out_Q_D_phi[2])))) + (((out_Q_D_phi[3] - out_Q_D_phi[3]) + ((out_Q_D_phi[4] - out_Q_D_phi[4]) + (out_Q_D_phi[5] - out_Q_D_phi[5]))) + ((out_Q_D_phi[6] - out_Q_D_phi[6]) + ((out_Q_D_phi[7] - out_Q_D_phi[7]) + (out_Q_D_phi[8] - out_Q_D_phi[8])))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = (double)NAN;
-        Q[1] = (double)NAN;
-        Q[2] = (double)NAN;
-        Q[3] = (double)NAN;
-        Q[4] = (double)NAN;
-        Q[5] = (double)NAN;
-        Q[6] = (double)NAN;
-        Q[7] = (double)NAN;
-        Q[8] = (double)NAN;
-        Q_D_e[0] = (double)NAN;
-        Q_D_e[1] = (double)NAN;
-        Q_D_e[2] = (double)NAN;
-        Q_D_e[3] = (double)NAN;
-        Q_D_e[4] = (double)NAN;
-        Q_D_e[5] = (double)NAN;
-        Q_D_e[6] = (double)NAN;
-        Q_D_e[7] = (double)NAN;
-        Q_D_e[8] = (double)NAN;
-        Q_D_e[9] = (double)NAN;
-        Q_D_e[10] = (double)NAN;
-        Q_D_e[11] = (double)NAN;
-        Q_D_e[12] = (double)NAN;
-        Q_D_e[13] = (double)NAN;
-        Q_D_e[14] = (double)NAN;
-        Q_D_e[15] = (double)NAN;
-        Q_D_e[16] = (double)NAN;
-        Q_D_e[17] = (double)NAN;
-        Q_D_e[18] = (double)NAN;
-        Q_D_e[19] = (double)NAN;
-        Q_D_e[20] = (double)NAN;
-        Q_D_e[21] = (double)NAN;
-        Q_D_e[22] = (double)NAN;
-        Q_D_e[23] = (double)NAN;
-        Q_D_e[24] = (double)NAN;
-        Q_D_e[25] = (double)NAN;
-        Q_D_e[26] = (double)NAN;
-        Q_D_phi[0] = (double)NAN;
-        Q_D_phi[1] = (double)NAN;
-        Q_D_phi[2] = (double)NAN;
-        Q_D_phi[3] = (double)NAN;
-        Q_D_phi[4] = (double)NAN;
-        Q_D_phi[5] = (double)NAN;
-        Q_D_phi[6] = (double)NAN;
-        Q_D_phi[7] = (double)NAN;
-        Q_D_phi[8] = (double)NAN;
+        out_Q[0] = (double)NAN;
+        out_Q[1] = (double)NAN;
+        out_Q[2] = (double)NAN;
+        out_Q[3] = (double)NAN;
+        out_Q[4] = (double)NAN;
+        out_Q[5] = (double)NAN;
+        out_Q[6] = (double)NAN;
+        out_Q[7] = (double)NAN;
+        out_Q[8] = (double)NAN;
+        out_Q_D_e[0] = (double)NAN;
+        out_Q_D_e[1] = (double)NAN;
+        out_Q_D_e[2] = (double)NAN;
+        out_Q_D_e[3] = (double)NAN;
+        out_Q_D_e[4] = (double)NAN;
+        out_Q_D_e[5] = (double)NAN;
+        out_Q_D_e[6] = (double)NAN;
+        out_Q_D_e[7] = (double)NAN;
+        out_Q_D_e[8] = (double)NAN;
+        out_Q_D_e[9] = (double)NAN;
+        out_Q_D_e[10] = (double)NAN;
+        out_Q_D_e[11] = (double)NAN;
+        out_Q_D_e[12] = (double)NAN;
+        out_Q_D_e[13] = (double)NAN;
+        out_Q_D_e[14] = (double)NAN;
+        out_Q_D_e[15] = (double)NAN;
+        out_Q_D_e[16] = (double)NAN;
+        out_Q_D_e[17] = (double)NAN;
+        out_Q_D_e[18] = (double)NAN;
+        out_Q_D_e[19] = (double)NAN;
+        out_Q_D_e[20] = (double)NAN;
+        out_Q_D_e[21] = (double)NAN;
+        out_Q_D_e[22] = (double)NAN;
+        out_Q_D_e[23] = (double)NAN;
+        out_Q_D_e[24] = (double)NAN;
+        out_Q_D_e[25] = (double)NAN;
+        out_Q_D_e[26] = (double)NAN;
+        out_Q_D_phi[0] = (double)NAN;
+        out_Q_D_phi[1] = (double)NAN;
+        out_Q_D_phi[2] = (double)NAN;
+        out_Q_D_phi[3] = (double)NAN;
+        out_Q_D_phi[4] = (double)NAN;
+        out_Q_D_phi[5] = (double)NAN;
+        out_Q_D_phi[6] = (double)NAN;
+        out_Q_D_phi[7] = (double)NAN;
+        out_Q_D_phi[8] = (double)NAN;
     }
     return status;
 }
@@ -1138,22 +1138,22 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_batch(
     size_t count,
-    const double *e,
-    const double *phi,
-    double *Q,
-    double *Q_D_e,
-    double *Q_D_phi,
+    const double *in_e,
+    const double *in_phi,
+    double *out_Q,
+    double *out_Q_D_e,
+    double *out_Q_D_phi,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_rotation_from_natural_invariants_with_jacobians(
-            e + 3 * i_,
-            phi[i_],
-            Q + 9 * i_,
-            Q_D_e + 27 * i_,
-            Q_D_phi + 9 * i_);
+            in_e + 3 * i_,
+            in_phi[i_],
+            out_Q + 9 * i_,
+            out_Q_D_e + 27 * i_,
+            out_Q_D_phi + 9 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -1166,150 +1166,150 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_ba
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(
-    const float e[3],
-    float phi,
-    float Q[9],
-    float Q_D_e[27],
-    float Q_D_phi[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9],
+    float out_Q_D_e[27],
+    float out_Q_D_phi[9])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float e_0 = e[0];
-    const float e_1 = e[1];
-    const float e_2 = e[2];
+    const float c0_e = in_e[0];
+    const float c1_e = in_e[1];
+    const float c2_e = in_e[2];
     {
-        const float x0 = (e_0*e_0);
+        const float x0 = (c0_e*c0_e);
         const float x1 = 1.0f - x0;
-        const float x2 = (0.5f)*phi;
+        const float x2 = (0.5f)*in_phi;
         const float x3 = sinf(x2);
         const float x4 = (x3*x3);
         const float x5 = 2.0f*x4;
         const float x6 = 1.0f - x5;
-        const float x7 = e_1*x5;
-        const float x8 = e_0*x7;
+        const float x7 = c1_e*x5;
+        const float x8 = c0_e*x7;
         const float x9 = cosf(x2);
         const float x10 = 2.0f*x3*x9;
-        const float x11 = e_2*x10;
-        const float x12 = e_0*x5;
-        const float x13 = e_2*x12;
-        const float x14 = e_1*x10;
-        const float x15 = (e_1*e_1);
+        const float x11 = c2_e*x10;
+        const float x12 = c0_e*x5;
+        const float x13 = c2_e*x12;
+        const float x14 = c1_e*x10;
+        const float x15 = (c1_e*c1_e);
         const float x16 = 1.0f - x15;
-        const float x17 = e_0*x10;
-        const float x18 = (e_2*e_2);
+        const float x17 = c0_e*x10;
+        const float x18 = (c2_e*c2_e);
         const float x19 = 1.0f - x18;
         const float x20 = 4.0f*x4;
         const float x21 = -x10;
-        const float x22 = e_2*x5;
-        const float x23 = e_0*x14;
-        const float x24 = e_2*x6;
-        const float x25 = e_1*x6;
-        const float x26 = e_0*x11;
-        const float x27 = e_0*x6;
-        Q[0] = x0 + x1*x6;
-        Q[1] = -x11 + x8;
-        Q[2] = x13 + x14;
-        Q[3] = x11 + x8;
-        Q[4] = x15 + x16*x6;
-        Q[5] = 2.0f*e_1*e_2*x4 - x17;
-        Q[6] = x13 - x14;
-        Q[7] = e_2*x7 + x17;
-        Q[8] = x18 + x19*x6;
-        Q_D_e[0] = e_0*x20;
-        Q_D_e[1] = 0.0f;
-        Q_D_e[2] = 0.0f;
-        Q_D_e[3] = x7;
-        Q_D_e[4] = x12;
-        Q_D_e[5] = x21;
-        Q_D_e[6] = x22;
-        Q_D_e[7] = x10;
-        Q_D_e[8] = x12;
-        Q_D_e[9] = x7;
-        Q_D_e[10] = x12;
-        Q_D_e[11] = x10;
-        Q_D_e[12] = 0.0f;
-        Q_D_e[13] = e_1*x20;
-        Q_D_e[14] = 0.0f;
-        Q_D_e[15] = x21;
-        Q_D_e[16] = x22;
-        Q_D_e[17] = x7;
-        Q_D_e[18] = x22;
-        Q_D_e[19] = x21;
-        Q_D_e[20] = x12;
-        Q_D_e[21] = x10;
-        Q_D_e[22] = x22;
-        Q_D_e[23] = x7;
-        Q_D_e[24] = 0.0f;
-        Q_D_e[25] = 0.0f;
-        Q_D_e[26] = e_2*x20;
-        Q_D_phi[0] = -x1*x10;
-        Q_D_phi[1] = x23 - x24;
-        Q_D_phi[2] = x25 + x26;
-        Q_D_phi[3] = x23 + x24;
-        Q_D_phi[4] = -x10*x16;
-        Q_D_phi[5] = 2.0f*e_1*e_2*x3*x9 - x27;
-        Q_D_phi[6] = -x25 + x26;
-        Q_D_phi[7] = e_1*x11 + x27;
-        Q_D_phi[8] = -x10*x19;
+        const float x22 = c2_e*x5;
+        const float x23 = c0_e*x14;
+        const float x24 = c2_e*x6;
+        const float x25 = c1_e*x6;
+        const float x26 = c0_e*x11;
+        const float x27 = c0_e*x6;
+        out_Q[0] = x0 + x1*x6;
+        out_Q[1] = -x11 + x8;
+        out_Q[2] = x13 + x14;
+        out_Q[3] = x11 + x8;
+        out_Q[4] = x15 + x16*x6;
+        out_Q[5] = 2.0f*c1_e*c2_e*x4 - x17;
+        out_Q[6] = x13 - x14;
+        out_Q[7] = c2_e*x7 + x17;
+        out_Q[8] = x18 + x19*x6;
+        out_Q_D_e[0] = c0_e*x20;
+        out_Q_D_e[1] = 0.0f;
+        out_Q_D_e[2] = 0.0f;
+        out_Q_D_e[3] = x7;
+        out_Q_D_e[4] = x12;
+        out_Q_D_e[5] = x21;
+        out_Q_D_e[6] = x22;
+        out_Q_D_e[7] = x10;
+        out_Q_D_e[8] = x12;
+        out_Q_D_e[9] = x7;
+        out_Q_D_e[10] = x12;
+        out_Q_D_e[11] = x10;
+        out_Q_D_e[12] = 0.0f;
+        out_Q_D_e[13] = c1_e*x20;
+        out_Q_D_e[14] = 0.0f;
+        out_Q_D_e[15] = x21;
+        out_Q_D_e[16] = x22;
+        out_Q_D_e[17] = x7;
+        out_Q_D_e[18] = x22;
+        out_Q_D_e[19] = x21;
+        out_Q_D_e[20] = x12;
+        out_Q_D_e[21] = x10;
+        out_Q_D_e[22] = x22;
+        out_Q_D_e[23] = x7;
+        out_Q_D_e[24] = 0.0f;
+        out_Q_D_e[25] = 0.0f;
+        out_Q_D_e[26] = c2_e*x20;
+        out_Q_D_phi[0] = -x1*x10;
+        out_Q_D_phi[1] = x23 - x24;
+        out_Q_D_phi[2] = x25 + x26;
+        out_Q_D_phi[3] = x23 + x24;
+        out_Q_D_phi[4] = -x10*x16;
+        out_Q_D_phi[5] = 2.0f*c1_e*c2_e*x3*x9 - x27;
+        out_Q_D_phi[6] = -x25 + x26;
+        out_Q_D_phi[7] = c1_e*x11 + x27;
+        out_Q_D_phi[8] = -x10*x19;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        const float s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_e[0] + out_Q_D_e[1])))) + (((out_Q_D_e[2] + out_Q_D_e[3]) + (out_Q_D_e[4] + (out_Q_D_e[5] + out_Q_D_e[6]))) + ((out_Q_D_e[7] + (out_Q_D_e[8] + out_Q_D_e[9])) + (out_Q_D_e[10] + (out_Q_D_e[11] + out_Q_D_e[12]))))) + ((((out_Q_D_e[13] + out_Q_D_e[14]) + (out_Q_D_e[15] + (out_Q_D_e[16] + out_Q_D_e[17]))) + ((out_Q_D_e[18] + (out_Q_D_e[19] + out_Q_D_e[20])) + (out_Q_D_e[21] + (out_Q_D_e[22] + out_Q_D_e[23])))) + (((out_Q_D_e[24] + (out_Q_D_e[25] + out_Q_D_e[26])) + (out_Q_D_phi[0] + (out_Q_D_phi[1] + out_Q_D_phi[2]))) + ((out_Q_D_phi[3] + (out_Q_D_phi[4] + out_Q_D_phi[5])) + (out_Q_D_phi[6] + (out_Q_D_phi[7] + out_Q_D_phi[8]))))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_e[0] - out_Q_D_e[0]) + (out_Q_D_e[1] - out_Q_D_e[1]))))) + ((((out_Q_D_e[2] - out_Q_D_e[2]) + (out_Q_D_e[3] - out_Q_D_e[3])) + ((out_Q_D_e[4] - out_Q_D_e[4]) + ((out_Q_D_e[5] - out_Q_D_e[5]) + (out_Q_D_e[6] - out_Q_D_e[6])))) + (((out_Q_D_e[7] - out_Q_D_e[7]) + ((out_Q_D_e[8] - out_Q_D_e[8]) + (out_Q_D_e[9] - out_Q_D_e[9]))) + ((out_Q_D_e[10] - out_Q_D_e[10]) + ((out_Q_D_e[11] - out_Q_D_e[11]) + (out_Q_D_e[12] - out_Q_D_e[12])))))) + (((((out_Q_D_e[13] - out_Q_D_e[13]) + (out_Q_D_e[14] - out_Q_D_e[14])) + ((out_Q_D_e[15] - out_Q_D_e[15]) + ((out_Q_D_e[16] - out_Q_D_e[16]) + (out_Q_D_e[17] - out_Q_D_e[17])))) + (((out_Q_D_e[18] - out_Q_D_e[18]) + ((out_Q_D_e[19] - out_Q_D_e[19]) + (out_Q_D_e[20] - out_Q_D_e[20]))) + ((out_Q_D_e[21] - out_Q_D_e[21]) + ((out_Q_D_e[22] - out_Q_D_e[22]) + (out_Q_D_e[23] - out_Q_D_e[23]))))) + ((((out_Q_D_e[24] - out_Q_D_e[24]) + ((out_Q_D_e[25] - out_Q_D_e[25]) + (out_Q_D_e[26] - out_Q_D_e[26]))) + ((out_Q_D_phi[0] - out_Q_D_phi[0]) + ((out_Q_D_phi[1] - out_Q_D_phi[1]) + (out_Q_D_phi[2] - out_Q_D_phi[2])))) + (((out_Q_D_phi[3] - out_Q_D_phi[3]) + ((out_Q_D_phi[4] - out_Q_D_phi[4]) + (out_Q_D_phi[5] - out_Q_D_phi[5]))) + ((out_Q_D_phi[6] - out_Q_D_phi[6]) + ((out_Q_D_phi[7] - out_Q_D_phi[7]) + (out_Q_D_phi[8] - out_Q_D_phi[8])))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_e[0] = NAN;
-        Q_D_e[1] = NAN;
-        Q_D_e[2] = NAN;
-        Q_D_e[3] = NAN;
-        Q_D_e[4] = NAN;
-        Q_D_e[5] = NAN;
-        Q_D_e[6] = NAN;
-        Q_D_e[7] = NAN;
-        Q_D_e[8] = NAN;
-        Q_D_e[9] = NAN;
-        Q_D_e[10] = NAN;
-        Q_D_e[11] = NAN;
-        Q_D_e[12] = NAN;
-        Q_D_e[13] = NAN;
-        Q_D_e[14] = NAN;
-        Q_D_e[15] = NAN;
-        Q_D_e[16] = NAN;
-        Q_D_e[17] = NAN;
-        Q_D_e[18] = NAN;
-        Q_D_e[19] = NAN;
-        Q_D_e[20] = NAN;
-        Q_D_e[21] = NAN;
-        Q_D_e[22] = NAN;
-        Q_D_e[23] = NAN;
-        Q_D_e[24] = NAN;
-        Q_D_e[25] = NAN;
-        Q_D_e[26] = NAN;
-        Q_D_phi[0] = NAN;
-        Q_D_phi[1] = NAN;
-        Q_D_phi[2] = NAN;
-        Q_D_phi[3] = NAN;
-        Q_D_phi[4] = NAN;
-        Q_D_phi[5] = NAN;
-        Q_D_phi[6] = NAN;
-        Q_D_phi[7] = NAN;
-        Q_D_phi[8] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
+        out_Q_D_e[0] = NAN;
+        out_Q_D_e[1] = NAN;
+        out_Q_D_e[2] = NAN;
+        out_Q_D_e[3] = NAN;
+        out_Q_D_e[4] = NAN;
+        out_Q_D_e[5] = NAN;
+        out_Q_D_e[6] = NAN;
+        out_Q_D_e[7] = NAN;
+        out_Q_D_e[8] = NAN;
+        out_Q_D_e[9] = NAN;
+        out_Q_D_e[10] = NAN;
+        out_Q_D_e[11] = NAN;
+        out_Q_D_e[12] = NAN;
+        out_Q_D_e[13] = NAN;
+        out_Q_D_e[14] = NAN;
+        out_Q_D_e[15] = NAN;
+        out_Q_D_e[16] = NAN;
+        out_Q_D_e[17] = NAN;
+        out_Q_D_e[18] = NAN;
+        out_Q_D_e[19] = NAN;
+        out_Q_D_e[20] = NAN;
+        out_Q_D_e[21] = NAN;
+        out_Q_D_e[22] = NAN;
+        out_Q_D_e[23] = NAN;
+        out_Q_D_e[24] = NAN;
+        out_Q_D_e[25] = NAN;
+        out_Q_D_e[26] = NAN;
+        out_Q_D_phi[0] = NAN;
+        out_Q_D_phi[1] = NAN;
+        out_Q_D_phi[2] = NAN;
+        out_Q_D_phi[3] = NAN;
+        out_Q_D_phi[4] = NAN;
+        out_Q_D_phi[5] = NAN;
+        out_Q_D_phi[6] = NAN;
+        out_Q_D_phi[7] = NAN;
+        out_Q_D_phi[8] = NAN;
     }
     return status;
 }
@@ -1317,11 +1317,11 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain_p)(
-    const float e[3],
-    float phi,
-    float Q[9],
-    float Q_D_e[27],
-    float Q_D_phi[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9],
+    float out_Q_D_e[27],
+    float out_Q_D_phi[9])
 = rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain;
 #endif
 
@@ -1332,11 +1332,11 @@ static int (*const volatile rigidsym_c_rotation_from_natural_invariants_with_jac
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(
-    const float e[3],
-    float phi,
-    float Q[9],
-    float Q_D_e[27],
-    float Q_D_phi[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9],
+    float out_Q_D_e[27],
+    float out_Q_D_phi[9])
 {
     const float *args[2];
     const int sizes[2] = {3, 1};
@@ -1344,8 +1344,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = e;
-    args[1] = &phi;
+    args[0] = in_e;
+    args[1] = &in_phi;
     for (j = 0; j < 2; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1360,13 +1360,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain_p)(e, phi, Q, Q_D_e, Q_D_phi);
+        r_ = (*rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain_p)(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(e, phi, Q, Q_D_e, Q_D_phi);
+        status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1375,9 +1375,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
-    const float e[3],
-    float phi,
-    float Q[9],    float Q_D_e[27],    float Q_D_phi[9])
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9],    float out_Q_D_e[27],    float out_Q_D_phi[9])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -1385,15 +1385,15 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&e[0], *&e[1], *&e[2], *&phi)));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_e[0], *&in_e[1], *&in_e[2], *&in_phi)));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&e[0]), rigidsym_c_bits_f(&e[1]), rigidsym_c_bits_f(&e[2]), rigidsym_c_bits_f(&phi)};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_e[0]), rigidsym_c_bits_f(&in_e[1]), rigidsym_c_bits_f(&in_e[2]), rigidsym_c_bits_f(&in_phi)};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -1404,93 +1404,93 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, e[j_]);
-        RIGIDSYM_C_ODDNZ_F(odd, phi);
+            RIGIDSYM_C_ODDNZ_F(odd, in_e[j_]);
+        RIGIDSYM_C_ODDNZ_F(odd, in_phi);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
+            return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(e, phi, Q, Q_D_e, Q_D_phi);
+        return rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_odd(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
 #endif
-    const float e_0 = e[0];
-    const float e_1 = e[1];
-    const float e_2 = e[2];
+    const float c0_e = in_e[0];
+    const float c1_e = in_e[1];
+    const float c2_e = in_e[2];
     {
-        const float x0 = (e_0*e_0);
+        const float x0 = (c0_e*c0_e);
         const float x1 = 1.0f - x0;
-        const float x2 = (0.5f)*phi;
+        const float x2 = (0.5f)*in_phi;
         const float x3 = sinf(x2);
         const float x4 = (x3*x3);
         const float x5 = 2.0f*x4;
         const float x6 = 1.0f - x5;
-        const float x7 = e_1*x5;
-        const float x8 = e_0*x7;
+        const float x7 = c1_e*x5;
+        const float x8 = c0_e*x7;
         const float x9 = cosf(x2);
         const float x10 = 2.0f*x3*x9;
-        const float x11 = e_2*x10;
-        const float x12 = e_0*x5;
-        const float x13 = e_2*x12;
-        const float x14 = e_1*x10;
-        const float x15 = (e_1*e_1);
+        const float x11 = c2_e*x10;
+        const float x12 = c0_e*x5;
+        const float x13 = c2_e*x12;
+        const float x14 = c1_e*x10;
+        const float x15 = (c1_e*c1_e);
         const float x16 = 1.0f - x15;
-        const float x17 = e_0*x10;
-        const float x18 = (e_2*e_2);
+        const float x17 = c0_e*x10;
+        const float x18 = (c2_e*c2_e);
         const float x19 = 1.0f - x18;
         const float x20 = 4.0f*x4;
         const float x21 = -x10;
-        const float x22 = e_2*x5;
-        const float x23 = e_0*x14;
-        const float x24 = e_2*x6;
-        const float x25 = e_1*x6;
-        const float x26 = e_0*x11;
-        const float x27 = e_0*x6;
-        Q[0] = x0 + x1*x6;
-        Q[1] = -x11 + x8;
-        Q[2] = x13 + x14;
-        Q[3] = x11 + x8;
-        Q[4] = x15 + x16*x6;
-        Q[5] = 2.0f*e_1*e_2*x4 - x17;
-        Q[6] = x13 - x14;
-        Q[7] = e_2*x7 + x17;
-        Q[8] = x18 + x19*x6;
-        Q_D_e[0] = e_0*x20;
-        Q_D_e[1] = 0.0f;
-        Q_D_e[2] = 0.0f;
-        Q_D_e[3] = x7;
-        Q_D_e[4] = x12;
-        Q_D_e[5] = x21;
-        Q_D_e[6] = x22;
-        Q_D_e[7] = x10;
-        Q_D_e[8] = x12;
-        Q_D_e[9] = x7;
-        Q_D_e[10] = x12;
-        Q_D_e[11] = x10;
-        Q_D_e[12] = 0.0f;
-        Q_D_e[13] = e_1*x20;
-        Q_D_e[14] = 0.0f;
-        Q_D_e[15] = x21;
-        Q_D_e[16] = x22;
-        Q_D_e[17] = x7;
-        Q_D_e[18] = x22;
-        Q_D_e[19] = x21;
-        Q_D_e[20] = x12;
-        Q_D_e[21] = x10;
-        Q_D_e[22] = x22;
-        Q_D_e[23] = x7;
-        Q_D_e[24] = 0.0f;
-        Q_D_e[25] = 0.0f;
-        Q_D_e[26] = e_2*x20;
-        Q_D_phi[0] = -x1*x10;
-        Q_D_phi[1] = x23 - x24;
-        Q_D_phi[2] = x25 + x26;
-        Q_D_phi[3] = x23 + x24;
-        Q_D_phi[4] = -x10*x16;
-        Q_D_phi[5] = 2.0f*e_1*e_2*x3*x9 - x27;
-        Q_D_phi[6] = -x25 + x26;
-        Q_D_phi[7] = e_1*x11 + x27;
-        Q_D_phi[8] = -x10*x19;
+        const float x22 = c2_e*x5;
+        const float x23 = c0_e*x14;
+        const float x24 = c2_e*x6;
+        const float x25 = c1_e*x6;
+        const float x26 = c0_e*x11;
+        const float x27 = c0_e*x6;
+        out_Q[0] = x0 + x1*x6;
+        out_Q[1] = -x11 + x8;
+        out_Q[2] = x13 + x14;
+        out_Q[3] = x11 + x8;
+        out_Q[4] = x15 + x16*x6;
+        out_Q[5] = 2.0f*c1_e*c2_e*x4 - x17;
+        out_Q[6] = x13 - x14;
+        out_Q[7] = c2_e*x7 + x17;
+        out_Q[8] = x18 + x19*x6;
+        out_Q_D_e[0] = c0_e*x20;
+        out_Q_D_e[1] = 0.0f;
+        out_Q_D_e[2] = 0.0f;
+        out_Q_D_e[3] = x7;
+        out_Q_D_e[4] = x12;
+        out_Q_D_e[5] = x21;
+        out_Q_D_e[6] = x22;
+        out_Q_D_e[7] = x10;
+        out_Q_D_e[8] = x12;
+        out_Q_D_e[9] = x7;
+        out_Q_D_e[10] = x12;
+        out_Q_D_e[11] = x10;
+        out_Q_D_e[12] = 0.0f;
+        out_Q_D_e[13] = c1_e*x20;
+        out_Q_D_e[14] = 0.0f;
+        out_Q_D_e[15] = x21;
+        out_Q_D_e[16] = x22;
+        out_Q_D_e[17] = x7;
+        out_Q_D_e[18] = x22;
+        out_Q_D_e[19] = x21;
+        out_Q_D_e[20] = x12;
+        out_Q_D_e[21] = x10;
+        out_Q_D_e[22] = x22;
+        out_Q_D_e[23] = x7;
+        out_Q_D_e[24] = 0.0f;
+        out_Q_D_e[25] = 0.0f;
+        out_Q_D_e[26] = c2_e*x20;
+        out_Q_D_phi[0] = -x1*x10;
+        out_Q_D_phi[1] = x23 - x24;
+        out_Q_D_phi[2] = x25 + x26;
+        out_Q_D_phi[3] = x23 + x24;
+        out_Q_D_phi[4] = -x10*x16;
+        out_Q_D_phi[5] = 2.0f*c1_e*c2_e*x3*x9 - x27;
+        out_Q_D_phi[6] = -x25 + x26;
+        out_Q_D_phi[7] = c1_e*x11 + x27;
+        out_Q_D_phi[8] = -x10*x19;
     }
     /* no division or root, and every output bounded by 2^66 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -1500,60 +1500,60 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = (((((Q[0] + Q[1]) + (Q[2] + (Q[3] + Q[4]))) + ((Q[5] + (Q[6] + Q[7])) + (Q[8] + (Q_D_e[0] + Q_D_e[1])))) + (((Q_D_e[2] + Q_D_e[3]) + (Q_D_e[4] + (Q_D_e[5] + Q_D_e[6]))) + ((Q_D_e[7] + (Q_D_e[8] + Q_D_e[9])) + (Q_D_e[10] + (Q_D_e[11] + Q_D_e[12]))))) + ((((Q_D_e[13] + Q_D_e[14]) + (Q_D_e[15] + (Q_D_e[16] + Q_D_e[17]))) + ((Q_D_e[18] + (Q_D_e[19] + Q_D_e[20])) + (Q_D_e[21] + (Q_D_e[22] + Q_D_e[23])))) + (((Q_D_e[24] + (Q_D_e[25] + Q_D_e[26])) + (Q_D_phi[0] + (Q_D_phi[1] + Q_D_phi[2]))) + ((Q_D_phi[3] + (Q_D_phi[4] + Q_D_phi[5])) + (Q_D_phi[6] + (Q_D_phi[7] + Q_D_phi[8]))))));
+        const float s_ = (((((out_Q[0] + out_Q[1]) + (out_Q[2] + (out_Q[3] + out_Q[4]))) + ((out_Q[5] + (out_Q[6] + out_Q[7])) + (out_Q[8] + (out_Q_D_e[0] + out_Q_D_e[1])))) + (((out_Q_D_e[2] + out_Q_D_e[3]) + (out_Q_D_e[4] + (out_Q_D_e[5] + out_Q_D_e[6]))) + ((out_Q_D_e[7] + (out_Q_D_e[8] + out_Q_D_e[9])) + (out_Q_D_e[10] + (out_Q_D_e[11] + out_Q_D_e[12]))))) + ((((out_Q_D_e[13] + out_Q_D_e[14]) + (out_Q_D_e[15] + (out_Q_D_e[16] + out_Q_D_e[17]))) + ((out_Q_D_e[18] + (out_Q_D_e[19] + out_Q_D_e[20])) + (out_Q_D_e[21] + (out_Q_D_e[22] + out_Q_D_e[23])))) + (((out_Q_D_e[24] + (out_Q_D_e[25] + out_Q_D_e[26])) + (out_Q_D_phi[0] + (out_Q_D_phi[1] + out_Q_D_phi[2]))) + ((out_Q_D_phi[3] + (out_Q_D_phi[4] + out_Q_D_phi[5])) + (out_Q_D_phi[6] + (out_Q_D_phi[7] + out_Q_D_phi[8]))))));
         if (!(s_ - s_ == 0.0f))
-            finite += ((((((Q[0] - Q[0]) + (Q[1] - Q[1])) + ((Q[2] - Q[2]) + ((Q[3] - Q[3]) + (Q[4] - Q[4])))) + (((Q[5] - Q[5]) + ((Q[6] - Q[6]) + (Q[7] - Q[7]))) + ((Q[8] - Q[8]) + ((Q_D_e[0] - Q_D_e[0]) + (Q_D_e[1] - Q_D_e[1]))))) + ((((Q_D_e[2] - Q_D_e[2]) + (Q_D_e[3] - Q_D_e[3])) + ((Q_D_e[4] - Q_D_e[4]) + ((Q_D_e[5] - Q_D_e[5]) + (Q_D_e[6] - Q_D_e[6])))) + (((Q_D_e[7] - Q_D_e[7]) + ((Q_D_e[8] - Q_D_e[8]) + (Q_D_e[9] - Q_D_e[9]))) + ((Q_D_e[10] - Q_D_e[10]) + ((Q_D_e[11] - Q_D_e[11]) + (Q_D_e[12] - Q_D_e[12])))))) + (((((Q_D_e[13] - Q_D_e[13]) + (Q_D_e[14] - Q_D_e[14])) + ((Q_D_e[15] - Q_D_e[15]) + ((Q_D_e[16] - Q_D_e[16]) + (Q_D_e[17] - Q_D_e[17])))) + (((Q_D_e[18] - Q_D_e[18]) + ((Q_D_e[19] - Q_D_e[19]) + (Q_D_e[20] - Q_D_e[20]))) + ((Q_D_e[21] - Q_D_e[21]) + ((Q_D_e[22] - Q_D_e[22]) + (Q_D_e[23] - Q_D_e[23]))))) + ((((Q_D_e[24] - Q_D_e[24]) + ((Q_D_e[25] - Q_D_e[25]) + (Q_D_e[26] - Q_D_e[26]))) + ((Q_D_phi[0] - Q_D_phi[0]) + ((Q_D_phi[1] - Q_D_phi[1]) + (Q_D_phi[2] - Q_D_phi[2])))) + (((Q_D_phi[3] - Q_D_phi[3]) + ((Q_D_phi[4] - Q_D_phi[4]) + (Q_D_phi[5] - Q_D_phi[5]))) + ((Q_D_phi[6] - Q_D_phi[6]) + ((Q_D_phi[7] - Q_D_phi[7]) + (Q_D_phi[8] - Q_D_phi[8])))))));
+            finite += ((((((out_Q[0] - out_Q[0]) + (out_Q[1] - out_Q[1])) + ((out_Q[2] - out_Q[2]) + ((out_Q[3] - out_Q[3]) + (out_Q[4] - out_Q[4])))) + (((out_Q[5] - out_Q[5]) + ((out_Q[6] - out_Q[6]) + (out_Q[7] - out_Q[7]))) + ((out_Q[8] - out_Q[8]) + ((out_Q_D_e[0] - out_Q_D_e[0]) + (out_Q_D_e[1] - out_Q_D_e[1]))))) + ((((out_Q_D_e[2] - out_Q_D_e[2]) + (out_Q_D_e[3] - out_Q_D_e[3])) + ((out_Q_D_e[4] - out_Q_D_e[4]) + ((out_Q_D_e[5] - out_Q_D_e[5]) + (out_Q_D_e[6] - out_Q_D_e[6])))) + (((out_Q_D_e[7] - out_Q_D_e[7]) + ((out_Q_D_e[8] - out_Q_D_e[8]) + (out_Q_D_e[9] - out_Q_D_e[9]))) + ((out_Q_D_e[10] - out_Q_D_e[10]) + ((out_Q_D_e[11] - out_Q_D_e[11]) + (out_Q_D_e[12] - out_Q_D_e[12])))))) + (((((out_Q_D_e[13] - out_Q_D_e[13]) + (out_Q_D_e[14] - out_Q_D_e[14])) + ((out_Q_D_e[15] - out_Q_D_e[15]) + ((out_Q_D_e[16] - out_Q_D_e[16]) + (out_Q_D_e[17] - out_Q_D_e[17])))) + (((out_Q_D_e[18] - out_Q_D_e[18]) + ((out_Q_D_e[19] - out_Q_D_e[19]) + (out_Q_D_e[20] - out_Q_D_e[20]))) + ((out_Q_D_e[21] - out_Q_D_e[21]) + ((out_Q_D_e[22] - out_Q_D_e[22]) + (out_Q_D_e[23] - out_Q_D_e[23]))))) + ((((out_Q_D_e[24] - out_Q_D_e[24]) + ((out_Q_D_e[25] - out_Q_D_e[25]) + (out_Q_D_e[26] - out_Q_D_e[26]))) + ((out_Q_D_phi[0] - out_Q_D_phi[0]) + ((out_Q_D_phi[1] - out_Q_D_phi[1]) + (out_Q_D_phi[2] - out_Q_D_phi[2])))) + (((out_Q_D_phi[3] - out_Q_D_phi[3]) + ((out_Q_D_phi[4] - out_Q_D_phi[4]) + (out_Q_D_phi[5] - out_Q_D_phi[5]))) + ((out_Q_D_phi[6] - out_Q_D_phi[6]) + ((out_Q_D_phi[7] - out_Q_D_phi[7]) + (out_Q_D_phi[8] - out_Q_D_phi[8])))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        Q[0] = NAN;
-        Q[1] = NAN;
-        Q[2] = NAN;
-        Q[3] = NAN;
-        Q[4] = NAN;
-        Q[5] = NAN;
-        Q[6] = NAN;
-        Q[7] = NAN;
-        Q[8] = NAN;
-        Q_D_e[0] = NAN;
-        Q_D_e[1] = NAN;
-        Q_D_e[2] = NAN;
-        Q_D_e[3] = NAN;
-        Q_D_e[4] = NAN;
-        Q_D_e[5] = NAN;
-        Q_D_e[6] = NAN;
-        Q_D_e[7] = NAN;
-        Q_D_e[8] = NAN;
-        Q_D_e[9] = NAN;
-        Q_D_e[10] = NAN;
-        Q_D_e[11] = NAN;
-        Q_D_e[12] = NAN;
-        Q_D_e[13] = NAN;
-        Q_D_e[14] = NAN;
-        Q_D_e[15] = NAN;
-        Q_D_e[16] = NAN;
-        Q_D_e[17] = NAN;
-        Q_D_e[18] = NAN;
-        Q_D_e[19] = NAN;
-        Q_D_e[20] = NAN;
-        Q_D_e[21] = NAN;
-        Q_D_e[22] = NAN;
-        Q_D_e[23] = NAN;
-        Q_D_e[24] = NAN;
-        Q_D_e[25] = NAN;
-        Q_D_e[26] = NAN;
-        Q_D_phi[0] = NAN;
-        Q_D_phi[1] = NAN;
-        Q_D_phi[2] = NAN;
-        Q_D_phi[3] = NAN;
-        Q_D_phi[4] = NAN;
-        Q_D_phi[5] = NAN;
-        Q_D_phi[6] = NAN;
-        Q_D_phi[7] = NAN;
-        Q_D_phi[8] = NAN;
+        out_Q[0] = NAN;
+        out_Q[1] = NAN;
+        out_Q[2] = NAN;
+        out_Q[3] = NAN;
+        out_Q[4] = NAN;
+        out_Q[5] = NAN;
+        out_Q[6] = NAN;
+        out_Q[7] = NAN;
+        out_Q[8] = NAN;
+        out_Q_D_e[0] = NAN;
+        out_Q_D_e[1] = NAN;
+        out_Q_D_e[2] = NAN;
+        out_Q_D_e[3] = NAN;
+        out_Q_D_e[4] = NAN;
+        out_Q_D_e[5] = NAN;
+        out_Q_D_e[6] = NAN;
+        out_Q_D_e[7] = NAN;
+        out_Q_D_e[8] = NAN;
+        out_Q_D_e[9] = NAN;
+        out_Q_D_e[10] = NAN;
+        out_Q_D_e[11] = NAN;
+        out_Q_D_e[12] = NAN;
+        out_Q_D_e[13] = NAN;
+        out_Q_D_e[14] = NAN;
+        out_Q_D_e[15] = NAN;
+        out_Q_D_e[16] = NAN;
+        out_Q_D_e[17] = NAN;
+        out_Q_D_e[18] = NAN;
+        out_Q_D_e[19] = NAN;
+        out_Q_D_e[20] = NAN;
+        out_Q_D_e[21] = NAN;
+        out_Q_D_e[22] = NAN;
+        out_Q_D_e[23] = NAN;
+        out_Q_D_e[24] = NAN;
+        out_Q_D_e[25] = NAN;
+        out_Q_D_e[26] = NAN;
+        out_Q_D_phi[0] = NAN;
+        out_Q_D_phi[1] = NAN;
+        out_Q_D_phi[2] = NAN;
+        out_Q_D_phi[3] = NAN;
+        out_Q_D_phi[4] = NAN;
+        out_Q_D_phi[5] = NAN;
+        out_Q_D_phi[6] = NAN;
+        out_Q_D_phi[7] = NAN;
+        out_Q_D_phi[8] = NAN;
     }
     return status;
 }
@@ -1561,22 +1561,22 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
 
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_batch(
     size_t count,
-    const float *e,
-    const float *phi,
-    float *Q,
-    float *Q_D_e,
-    float *Q_D_phi,
+    const float *in_e,
+    const float *in_phi,
+    float *out_Q,
+    float *out_Q_D_e,
+    float *out_Q_D_phi,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
-            e + 3 * i_,
-            phi[i_],
-            Q + 9 * i_,
-            Q_D_e + 27 * i_,
-            Q_D_phi + 9 * i_);
+            in_e + 3 * i_,
+            in_phi[i_],
+            out_Q + 9 * i_,
+            out_Q_D_e + 27 * i_,
+            out_Q_D_phi + 9 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;

@@ -36,9 +36,9 @@ RIGIDSYM_C_BEGIN_DECLS
  * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
-    const double e[3],
-    double phi,
-    double Q[9]);
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9]);
 
 /* rotation_from_natural_invariants in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -47,9 +47,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants(
  * rigidsym.codegen.accuracy.float_measure: worst 1.06 over 152 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
-    const float e[3],
-    float phi,
-    float Q[9]);
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -57,15 +57,15 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
     size_t count,
-    const double *e,
-    const double *phi,
-    double *Q,
+    const double *in_e,
+    const double *in_phi,
+    double *out_Q,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
     size_t count,
-    const float *e,
-    const float *phi,
-    float *Q,
+    const float *in_e,
+    const float *in_phi,
+    float *out_Q,
     int *status);
 
 /* rotation_from_natural_invariants_with_jacobians:
@@ -99,9 +99,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
  * argument that may be scaled), so they give RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
-    const double e[3],
-    double phi,
-    double Q[9],    double Q_D_e[27],    double Q_D_phi[9]);
+    const double in_e[3],
+    double in_phi,
+    double out_Q[9],    double out_Q_D_e[27],    double out_Q_D_phi[9]);
 
 /* rotation_from_natural_invariants_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -110,9 +110,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians(
  * rigidsym.codegen.accuracy.float_measure: worst 1.06 over 152 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32(
-    const float e[3],
-    float phi,
-    float Q[9],    float Q_D_e[27],    float Q_D_phi[9]);
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9],    float out_Q_D_e[27],    float out_Q_D_phi[9]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -120,19 +120,19 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f3
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_batch(
     size_t count,
-    const double *e,
-    const double *phi,
-    double *Q,
-    double *Q_D_e,
-    double *Q_D_phi,
+    const double *in_e,
+    const double *in_phi,
+    double *out_Q,
+    double *out_Q_D_e,
+    double *out_Q_D_phi,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_batch(
     size_t count,
-    const float *e,
-    const float *phi,
-    float *Q,
-    float *Q_D_e,
-    float *Q_D_phi,
+    const float *in_e,
+    const float *in_phi,
+    float *out_Q,
+    float *out_Q_D_e,
+    float *out_Q_D_phi,
     int *status);
 
 RIGIDSYM_C_END_DECLS

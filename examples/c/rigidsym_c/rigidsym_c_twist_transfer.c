@@ -16,50 +16,50 @@
 /* rigidsym_c_twist_transfer in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_wide(
-    const double t_A_in_[6],
-    const double a_in_[3],
-    const double p_in_[3],
-    double t_P[6])
+    const double w_t_A[6],
+    const double w_a[3],
+    const double w_p[3],
+    double out_t_P[6])
 {
-    const long double t_A_0 = t_A_in_[0];
-    const long double t_A_1 = t_A_in_[1];
-    const long double t_A_2 = t_A_in_[2];
-    const long double t_A_3 = t_A_in_[3];
-    const long double t_A_4 = t_A_in_[4];
-    const long double t_A_5 = t_A_in_[5];
-    const long double a_0 = a_in_[0];
-    const long double a_1 = a_in_[1];
-    const long double a_2 = a_in_[2];
-    const long double p_0 = p_in_[0];
-    const long double p_1 = p_in_[1];
-    const long double p_2 = p_in_[2];
+    const long double c0_t_A = w_t_A[0];
+    const long double c1_t_A = w_t_A[1];
+    const long double c2_t_A = w_t_A[2];
+    const long double c3_t_A = w_t_A[3];
+    const long double c4_t_A = w_t_A[4];
+    const long double c5_t_A = w_t_A[5];
+    const long double c0_a = w_a[0];
+    const long double c1_a = w_a[1];
+    const long double c2_a = w_a[2];
+    const long double c0_p = w_p[0];
+    const long double c1_p = w_p[1];
+    const long double c2_p = w_p[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)t_A_in_;
-    (void)a_in_;
-    (void)p_in_;
+    (void)w_t_A;
+    (void)w_a;
+    (void)w_p;
     {
-        const long double x0 = a_2 - p_2;
-        const long double x1 = a_1 - p_1;
-        const long double x2 = a_0 - p_0;
-        t_P[0] = (double)(t_A_0);
-        t_P[1] = (double)(t_A_1);
-        t_P[2] = (double)(t_A_2);
-        t_P[3] = (double)(-t_A_1*x0 + t_A_2*x1 + t_A_3);
-        t_P[4] = (double)(t_A_0*x0 - t_A_2*x2 + t_A_4);
-        t_P[5] = (double)(-t_A_0*x1 + t_A_1*x2 + t_A_5);
+        const long double x0 = c2_a - c2_p;
+        const long double x1 = c1_a - c1_p;
+        const long double x2 = c0_a - c0_p;
+        out_t_P[0] = (double)(c0_t_A);
+        out_t_P[1] = (double)(c1_t_A);
+        out_t_P[2] = (double)(c2_t_A);
+        out_t_P[3] = (double)(-c1_t_A*x0 + c2_t_A*x1 + c3_t_A);
+        out_t_P[4] = (double)(c0_t_A*x0 - c2_t_A*x2 + c4_t_A);
+        out_t_P[5] = (double)(-c0_t_A*x1 + c1_t_A*x2 + c5_t_A);
     }
-    finite += (long double)((((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])))));
+    finite += (long double)((((out_t_P[0] - out_t_P[0]) + ((out_t_P[1] - out_t_P[1]) + (out_t_P[2] - out_t_P[2]))) + ((out_t_P[3] - out_t_P[3]) + ((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = (double)NAN;
-        t_P[1] = (double)NAN;
-        t_P[2] = (double)NAN;
-        t_P[3] = (double)NAN;
-        t_P[4] = (double)NAN;
-        t_P[5] = (double)NAN;
+        out_t_P[0] = (double)NAN;
+        out_t_P[1] = (double)NAN;
+        out_t_P[2] = (double)NAN;
+        out_t_P[3] = (double)NAN;
+        out_t_P[4] = (double)NAN;
+        out_t_P[5] = (double)NAN;
     }
     return status;
 }
@@ -74,10 +74,10 @@ static int rigidsym_c_twist_transfer_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6])
 {
     int status, still_;
     double finite;
@@ -87,9 +87,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_t_A[6];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_t_A[6];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -97,28 +96,28 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(t_A, 6))
+    if (rigidsym_c_subnormal_d(in_t_A, 6))
         return -1;
-    if (rigidsym_c_subnormal_d(a, 3))
+    if (rigidsym_c_subnormal_d(in_a, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(p, 3))
+    if (rigidsym_c_subnormal_d(in_p, 3))
         return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(t_A, 6));
-    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_k0_);
-    still_ |= rigidsym_c_extreme_d(a, 3);
-    still_ |= rigidsym_c_extreme_d(p, 3);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_t_A, 6));
+    still_ |= rigidsym_c_scale_d(in_t_A, sc_t_A, 6, rs_k0_);
+    still_ |= rigidsym_c_extreme_d(in_a, 3);
+    still_ |= rigidsym_c_extreme_d(in_p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_twist_transfer(rs_t_A, a, p, t_P);
-        status |= rigidsym_c_back_d(&t_P[0], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[1], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[2], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[3], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[4], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[5], rs_k0_);
-        finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+        status = rigidsym_c_twist_transfer(sc_t_A, in_a, in_p, out_t_P);
+        status |= rigidsym_c_back_d(&out_t_P[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[1], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[2], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[3], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[4], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[5], rs_k0_);
+        finite = (((out_t_P[0] - out_t_P[0]) + ((out_t_P[1] - out_t_P[1]) + (out_t_P[2] - out_t_P[2]))) + ((out_t_P[3] - out_t_P[3]) + ((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -131,55 +130,55 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_twist_transfer evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_plain(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double t_A_0 = t_A[0];
-    const double t_A_1 = t_A[1];
-    const double t_A_2 = t_A[2];
-    const double t_A_3 = t_A[3];
-    const double t_A_4 = t_A[4];
-    const double t_A_5 = t_A[5];
-    const double a_0 = a[0];
-    const double a_1 = a[1];
-    const double a_2 = a[2];
-    const double p_0 = p[0];
-    const double p_1 = p[1];
-    const double p_2 = p[2];
+    const double c0_t_A = in_t_A[0];
+    const double c1_t_A = in_t_A[1];
+    const double c2_t_A = in_t_A[2];
+    const double c3_t_A = in_t_A[3];
+    const double c4_t_A = in_t_A[4];
+    const double c5_t_A = in_t_A[5];
+    const double c0_a = in_a[0];
+    const double c1_a = in_a[1];
+    const double c2_a = in_a[2];
+    const double c0_p = in_p[0];
+    const double c1_p = in_p[1];
+    const double c2_p = in_p[2];
     {
-        const double x0 = a_2 - p_2;
-        const double x1 = a_1 - p_1;
-        const double x2 = a_0 - p_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = -t_A_1*x0 + t_A_2*x1 + t_A_3;
-        t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
-        t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
+        const double x0 = c2_a - c2_p;
+        const double x1 = c1_a - c1_p;
+        const double x2 = c0_a - c0_p;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = -c1_t_A*x0 + c2_t_A*x1 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 - c2_t_A*x2 + c4_t_A;
+        out_t_P[5] = -c0_t_A*x1 + c1_t_A*x2 + c5_t_A;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        const double s_ = ((out_t_P[0] + (out_t_P[1] + out_t_P[2])) + (out_t_P[3] + (out_t_P[4] + out_t_P[5])));
         if (!(s_ - s_ == 0.0))
-            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+            finite += (((out_t_P[0] - out_t_P[0]) + ((out_t_P[1] - out_t_P[1]) + (out_t_P[2] - out_t_P[2]))) + ((out_t_P[3] - out_t_P[3]) + ((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5]))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = (double)NAN;
-        t_P[1] = (double)NAN;
-        t_P[2] = (double)NAN;
-        t_P[3] = (double)NAN;
-        t_P[4] = (double)NAN;
-        t_P[5] = (double)NAN;
+        out_t_P[0] = (double)NAN;
+        out_t_P[1] = (double)NAN;
+        out_t_P[2] = (double)NAN;
+        out_t_P[3] = (double)NAN;
+        out_t_P[4] = (double)NAN;
+        out_t_P[5] = (double)NAN;
     }
     return status;
 }
@@ -187,10 +186,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_twist_transfer_plain_p)(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6])
 = rigidsym_c_twist_transfer_plain;
 #endif
 
@@ -201,10 +200,10 @@ static int (*const volatile rigidsym_c_twist_transfer_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6])
 {
     const double *args[3];
     const int sizes[3] = {6, 3, 3};
@@ -212,9 +211,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
+    args[0] = in_t_A;
+    args[1] = in_a;
+    args[2] = in_p;
     for (j = 0; j < 3; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -227,13 +226,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_twist_transfer_wide(t_A, a, p, t_P);
+        status = rigidsym_c_twist_transfer_wide(in_t_A, in_a, in_p, out_t_P);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_rescue(t_A, a, p, t_P);
+        const int r_ = rigidsym_c_twist_transfer_rescue(in_t_A, in_a, in_p, out_t_P);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -244,13 +243,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_twist_transfer_plain_p)(t_A, a, p, t_P);
+        r_ = (*rigidsym_c_twist_transfer_plain_p)(in_t_A, in_a, in_p, out_t_P);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_twist_transfer_plain(t_A, a, p, t_P);
+        status |= rigidsym_c_twist_transfer_plain(in_t_A, in_a, in_p, out_t_P);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -259,10 +258,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -270,27 +269,27 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A), _mm_load_sd(t_A + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 2), _mm_load_sd(t_A + 2 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 4), _mm_load_sd(t_A + 4 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(a), _mm_load_sd(a + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(p + 1), _mm_load_sd(p + 1 + 1)))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A), _mm_load_sd(in_t_A + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A + 2), _mm_load_sd(in_t_A + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A + 4), _mm_load_sd(in_t_A + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_a), _mm_load_sd(in_a + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_a[2], *&in_p[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_p + 1), _mm_load_sd(in_p + 1 + 1)))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
+            return rigidsym_c_twist_transfer_odd(in_t_A, in_a, in_p, out_t_P);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 2));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 4));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(a));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_t_A));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_t_A + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_t_A + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_a));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&a[2]), rigidsym_c_bits_d(&p[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_a[2]), rigidsym_c_bits_d(&in_p[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(p + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_p + 1));
         odd = oddv_[0] | oddv_[1];
     }
 #else
@@ -299,43 +298,43 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_t_A[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_a[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_p[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
+            return rigidsym_c_twist_transfer_odd(in_t_A, in_a, in_p, out_t_P);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_twist_transfer_odd(t_A, a, p, t_P);
+        return rigidsym_c_twist_transfer_odd(in_t_A, in_a, in_p, out_t_P);
 #endif
-    const double t_A_0 = t_A[0];
-    const double t_A_1 = t_A[1];
-    const double t_A_2 = t_A[2];
-    const double t_A_3 = t_A[3];
-    const double t_A_4 = t_A[4];
-    const double t_A_5 = t_A[5];
-    const double a_0 = a[0];
-    const double a_1 = a[1];
-    const double a_2 = a[2];
-    const double p_0 = p[0];
-    const double p_1 = p[1];
-    const double p_2 = p[2];
+    const double c0_t_A = in_t_A[0];
+    const double c1_t_A = in_t_A[1];
+    const double c2_t_A = in_t_A[2];
+    const double c3_t_A = in_t_A[3];
+    const double c4_t_A = in_t_A[4];
+    const double c5_t_A = in_t_A[5];
+    const double c0_a = in_a[0];
+    const double c1_a = in_a[1];
+    const double c2_a = in_a[2];
+    const double c0_p = in_p[0];
+    const double c1_p = in_p[1];
+    const double c2_p = in_p[2];
     {
-        const double x0 = a_2 - p_2;
-        const double x1 = a_1 - p_1;
-        const double x2 = a_0 - p_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = -t_A_1*x0 + t_A_2*x1 + t_A_3;
-        t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
-        t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
+        const double x0 = c2_a - c2_p;
+        const double x1 = c1_a - c1_p;
+        const double x2 = c0_a - c0_p;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = -c1_t_A*x0 + c2_t_A*x1 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 - c2_t_A*x2 + c4_t_A;
+        out_t_P[5] = -c0_t_A*x1 + c1_t_A*x2 + c5_t_A;
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -345,21 +344,21 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        const double s_ = ((out_t_P[0] + (out_t_P[1] + out_t_P[2])) + (out_t_P[3] + (out_t_P[4] + out_t_P[5])));
         if (!(s_ - s_ == 0.0))
-            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+            finite += (((out_t_P[0] - out_t_P[0]) + ((out_t_P[1] - out_t_P[1]) + (out_t_P[2] - out_t_P[2]))) + ((out_t_P[3] - out_t_P[3]) + ((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5]))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = (double)NAN;
-        t_P[1] = (double)NAN;
-        t_P[2] = (double)NAN;
-        t_P[3] = (double)NAN;
-        t_P[4] = (double)NAN;
-        t_P[5] = (double)NAN;
+        out_t_P[0] = (double)NAN;
+        out_t_P[1] = (double)NAN;
+        out_t_P[2] = (double)NAN;
+        out_t_P[3] = (double)NAN;
+        out_t_P[4] = (double)NAN;
+        out_t_P[5] = (double)NAN;
     }
     return status;
 }
@@ -367,20 +366,20 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
     size_t count,
-    const double *t_A,
-    const double *a,
-    const double *p,
-    double *t_P,
+    const double *in_t_A,
+    const double *in_a,
+    const double *in_p,
+    double *out_t_P,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_twist_transfer(
-            t_A + 6 * i_,
-            a + 3 * i_,
-            p + 3 * i_,
-            t_P + 6 * i_);
+            in_t_A + 6 * i_,
+            in_a + 3 * i_,
+            in_p + 3 * i_,
+            out_t_P + 6 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -394,10 +393,10 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6])
 {
     int status, still_;
     float finite;
@@ -407,9 +406,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_t_A[6];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_t_A[6];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -417,28 +415,28 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(t_A, 6))
+    if (rigidsym_c_subnormal_f(in_t_A, 6))
         return -1;
-    if (rigidsym_c_subnormal_f(a, 3))
+    if (rigidsym_c_subnormal_f(in_a, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(p, 3))
+    if (rigidsym_c_subnormal_f(in_p, 3))
         return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(t_A, 6));
-    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_k0_);
-    still_ |= rigidsym_c_extreme_f(a, 3);
-    still_ |= rigidsym_c_extreme_f(p, 3);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_t_A, 6));
+    still_ |= rigidsym_c_scale_f(in_t_A, sc_t_A, 6, rs_k0_);
+    still_ |= rigidsym_c_extreme_f(in_a, 3);
+    still_ |= rigidsym_c_extreme_f(in_p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_twist_transfer_f32(rs_t_A, a, p, t_P);
-        status |= rigidsym_c_back_f(&t_P[0], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[1], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[2], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[3], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[4], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[5], rs_k0_);
-        finite = (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+        status = rigidsym_c_twist_transfer_f32(sc_t_A, in_a, in_p, out_t_P);
+        status |= rigidsym_c_back_f(&out_t_P[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[1], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[2], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[3], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[4], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[5], rs_k0_);
+        finite = (((out_t_P[0] - out_t_P[0]) + ((out_t_P[1] - out_t_P[1]) + (out_t_P[2] - out_t_P[2]))) + ((out_t_P[3] - out_t_P[3]) + ((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5]))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -451,55 +449,55 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_twist_transfer_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_plain(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float t_A_0 = t_A[0];
-    const float t_A_1 = t_A[1];
-    const float t_A_2 = t_A[2];
-    const float t_A_3 = t_A[3];
-    const float t_A_4 = t_A[4];
-    const float t_A_5 = t_A[5];
-    const float a_0 = a[0];
-    const float a_1 = a[1];
-    const float a_2 = a[2];
-    const float p_0 = p[0];
-    const float p_1 = p[1];
-    const float p_2 = p[2];
+    const float c0_t_A = in_t_A[0];
+    const float c1_t_A = in_t_A[1];
+    const float c2_t_A = in_t_A[2];
+    const float c3_t_A = in_t_A[3];
+    const float c4_t_A = in_t_A[4];
+    const float c5_t_A = in_t_A[5];
+    const float c0_a = in_a[0];
+    const float c1_a = in_a[1];
+    const float c2_a = in_a[2];
+    const float c0_p = in_p[0];
+    const float c1_p = in_p[1];
+    const float c2_p = in_p[2];
     {
-        const float x0 = a_2 - p_2;
-        const float x1 = a_1 - p_1;
-        const float x2 = a_0 - p_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = -t_A_1*x0 + t_A_2*x1 + t_A_3;
-        t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
-        t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
+        const float x0 = c2_a - c2_p;
+        const float x1 = c1_a - c1_p;
+        const float x2 = c0_a - c0_p;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = -c1_t_A*x0 + c2_t_A*x1 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 - c2_t_A*x2 + c4_t_A;
+        out_t_P[5] = -c0_t_A*x1 + c1_t_A*x2 + c5_t_A;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        const float s_ = ((out_t_P[0] + (out_t_P[1] + out_t_P[2])) + (out_t_P[3] + (out_t_P[4] + out_t_P[5])));
         if (!(s_ - s_ == 0.0f))
-            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+            finite += (((out_t_P[0] - out_t_P[0]) + ((out_t_P[1] - out_t_P[1]) + (out_t_P[2] - out_t_P[2]))) + ((out_t_P[3] - out_t_P[3]) + ((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5]))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
+        out_t_P[0] = NAN;
+        out_t_P[1] = NAN;
+        out_t_P[2] = NAN;
+        out_t_P[3] = NAN;
+        out_t_P[4] = NAN;
+        out_t_P[5] = NAN;
     }
     return status;
 }
@@ -507,10 +505,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_twist_transfer_f32_plain_p)(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6])
 = rigidsym_c_twist_transfer_f32_plain;
 #endif
 
@@ -521,10 +519,10 @@ static int (*const volatile rigidsym_c_twist_transfer_f32_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6])
 {
     const float *args[3];
     const int sizes[3] = {6, 3, 3};
@@ -532,9 +530,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
+    args[0] = in_t_A;
+    args[1] = in_a;
+    args[2] = in_p;
     for (j = 0; j < 3; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -547,7 +545,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_f32_rescue(t_A, a, p, t_P);
+        const int r_ = rigidsym_c_twist_transfer_f32_rescue(in_t_A, in_a, in_p, out_t_P);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -558,13 +556,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_twist_transfer_f32_plain_p)(t_A, a, p, t_P);
+        r_ = (*rigidsym_c_twist_transfer_f32_plain_p)(in_t_A, in_a, in_p, out_t_P);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_twist_transfer_f32_plain(t_A, a, p, t_P);
+        status |= rigidsym_c_twist_transfer_f32_plain(in_t_A, in_a, in_p, out_t_P);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -573,10 +571,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -584,22 +582,22 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(t_A), *(t_A + 1), *(t_A + 2), *(t_A + 3))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2]))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_t_A), *(in_t_A + 1), *(in_t_A + 2), *(in_t_A + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_t_A[4], *&in_t_A[5], *&in_a[0], *&in_a[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_a[2], *&in_p[0], *&in_p[1], *&in_p[2]))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_twist_transfer_f32_odd(t_A, a, p, t_P);
+            return rigidsym_c_twist_transfer_f32_odd(in_t_A, in_a, in_p, out_t_P);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_t_A));
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&t_A[4]), rigidsym_c_bits_f(&t_A[5]), rigidsym_c_bits_f(&a[0]), rigidsym_c_bits_f(&a[1])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_t_A[4]), rigidsym_c_bits_f(&in_t_A[5]), rigidsym_c_bits_f(&in_a[0]), rigidsym_c_bits_f(&in_a[1])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&a[2]), rigidsym_c_bits_f(&p[0]), rigidsym_c_bits_f(&p[1]), rigidsym_c_bits_f(&p[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_a[2]), rigidsym_c_bits_f(&in_p[0]), rigidsym_c_bits_f(&in_p[1]), rigidsym_c_bits_f(&in_p[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -610,43 +608,43 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_t_A[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_a[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_p[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_twist_transfer_f32_odd(t_A, a, p, t_P);
+            return rigidsym_c_twist_transfer_f32_odd(in_t_A, in_a, in_p, out_t_P);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_twist_transfer_f32_odd(t_A, a, p, t_P);
+        return rigidsym_c_twist_transfer_f32_odd(in_t_A, in_a, in_p, out_t_P);
 #endif
-    const float t_A_0 = t_A[0];
-    const float t_A_1 = t_A[1];
-    const float t_A_2 = t_A[2];
-    const float t_A_3 = t_A[3];
-    const float t_A_4 = t_A[4];
-    const float t_A_5 = t_A[5];
-    const float a_0 = a[0];
-    const float a_1 = a[1];
-    const float a_2 = a[2];
-    const float p_0 = p[0];
-    const float p_1 = p[1];
-    const float p_2 = p[2];
+    const float c0_t_A = in_t_A[0];
+    const float c1_t_A = in_t_A[1];
+    const float c2_t_A = in_t_A[2];
+    const float c3_t_A = in_t_A[3];
+    const float c4_t_A = in_t_A[4];
+    const float c5_t_A = in_t_A[5];
+    const float c0_a = in_a[0];
+    const float c1_a = in_a[1];
+    const float c2_a = in_a[2];
+    const float c0_p = in_p[0];
+    const float c1_p = in_p[1];
+    const float c2_p = in_p[2];
     {
-        const float x0 = a_2 - p_2;
-        const float x1 = a_1 - p_1;
-        const float x2 = a_0 - p_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = -t_A_1*x0 + t_A_2*x1 + t_A_3;
-        t_P[4] = t_A_0*x0 - t_A_2*x2 + t_A_4;
-        t_P[5] = -t_A_0*x1 + t_A_1*x2 + t_A_5;
+        const float x0 = c2_a - c2_p;
+        const float x1 = c1_a - c1_p;
+        const float x2 = c0_a - c0_p;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = -c1_t_A*x0 + c2_t_A*x1 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 - c2_t_A*x2 + c4_t_A;
+        out_t_P[5] = -c0_t_A*x1 + c1_t_A*x2 + c5_t_A;
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -656,21 +654,21 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((t_P[0] + (t_P[1] + t_P[2])) + (t_P[3] + (t_P[4] + t_P[5])));
+        const float s_ = ((out_t_P[0] + (out_t_P[1] + out_t_P[2])) + (out_t_P[3] + (out_t_P[4] + out_t_P[5])));
         if (!(s_ - s_ == 0.0f))
-            finite += (((t_P[0] - t_P[0]) + ((t_P[1] - t_P[1]) + (t_P[2] - t_P[2]))) + ((t_P[3] - t_P[3]) + ((t_P[4] - t_P[4]) + (t_P[5] - t_P[5]))));
+            finite += (((out_t_P[0] - out_t_P[0]) + ((out_t_P[1] - out_t_P[1]) + (out_t_P[2] - out_t_P[2]))) + ((out_t_P[3] - out_t_P[3]) + ((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5]))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
+        out_t_P[0] = NAN;
+        out_t_P[1] = NAN;
+        out_t_P[2] = NAN;
+        out_t_P[3] = NAN;
+        out_t_P[4] = NAN;
+        out_t_P[5] = NAN;
     }
     return status;
 }
@@ -678,20 +676,20 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
     size_t count,
-    const float *t_A,
-    const float *a,
-    const float *p,
-    float *t_P,
+    const float *in_t_A,
+    const float *in_a,
+    const float *in_p,
+    float *out_t_P,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_twist_transfer_f32(
-            t_A + 6 * i_,
-            a + 3 * i_,
-            p + 3 * i_,
-            t_P + 6 * i_);
+            in_t_A + 6 * i_,
+            in_a + 3 * i_,
+            in_p + 3 * i_,
+            out_t_P + 6 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -707,203 +705,203 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
 /* rigidsym_c_twist_transfer_with_jacobians in long double, rounded once to double: the rescue of a sample with an
  * extreme input (RIGIDSYM_C_WIDE, rigidsym_c_impl.h) */
 static int rigidsym_c_twist_transfer_with_jacobians_wide(
-    const double t_A_in_[6],
-    const double a_in_[3],
-    const double p_in_[3],
-    double t_P[6],
-    double t_P_D_t_A[36],
-    double t_P_D_a[18],
-    double t_P_D_p[18])
+    const double w_t_A[6],
+    const double w_a[3],
+    const double w_p[3],
+    double out_t_P[6],
+    double out_t_P_D_t_A[36],
+    double out_t_P_D_a[18],
+    double out_t_P_D_p[18])
 {
-    const long double t_A_0 = t_A_in_[0];
-    const long double t_A_1 = t_A_in_[1];
-    const long double t_A_2 = t_A_in_[2];
-    const long double t_A_3 = t_A_in_[3];
-    const long double t_A_4 = t_A_in_[4];
-    const long double t_A_5 = t_A_in_[5];
-    const long double a_0 = a_in_[0];
-    const long double a_1 = a_in_[1];
-    const long double a_2 = a_in_[2];
-    const long double p_0 = p_in_[0];
-    const long double p_1 = p_in_[1];
-    const long double p_2 = p_in_[2];
+    const long double c0_t_A = w_t_A[0];
+    const long double c1_t_A = w_t_A[1];
+    const long double c2_t_A = w_t_A[2];
+    const long double c3_t_A = w_t_A[3];
+    const long double c4_t_A = w_t_A[4];
+    const long double c5_t_A = w_t_A[5];
+    const long double c0_a = w_a[0];
+    const long double c1_a = w_a[1];
+    const long double c2_a = w_a[2];
+    const long double c0_p = w_p[0];
+    const long double c1_p = w_p[1];
+    const long double c2_p = w_p[2];
     int status = 0, singular = 0;
     long double finite = 0.0L;
-    (void)t_A_in_;
-    (void)a_in_;
-    (void)p_in_;
+    (void)w_t_A;
+    (void)w_a;
+    (void)w_p;
     {
-        const long double x0 = a_2 - p_2;
+        const long double x0 = c2_a - c2_p;
         const long double x1 = -x0;
-        const long double x2 = a_1 - p_1;
-        const long double x3 = a_0 - p_0;
+        const long double x2 = c1_a - c1_p;
+        const long double x3 = c0_a - c0_p;
         const long double x4 = -x3;
         const long double x5 = -x2;
-        const long double x6 = -t_A_1;
-        const long double x7 = -t_A_2;
-        const long double x8 = -t_A_0;
-        t_P[0] = (double)(t_A_0);
-        t_P[1] = (double)(t_A_1);
-        t_P[2] = (double)(t_A_2);
-        t_P[3] = (double)(t_A_1*x1 + t_A_2*x2 + t_A_3);
-        t_P[4] = (double)(t_A_0*x0 + t_A_2*x4 + t_A_4);
-        t_P[5] = (double)(t_A_0*x5 + t_A_1*x3 + t_A_5);
-        t_P_D_t_A[0] = (double)(1.0);
-        t_P_D_t_A[1] = (double)(0.0);
-        t_P_D_t_A[2] = (double)(0.0);
-        t_P_D_t_A[3] = (double)(0.0);
-        t_P_D_t_A[4] = (double)(0.0);
-        t_P_D_t_A[5] = (double)(0.0);
-        t_P_D_t_A[6] = (double)(0.0);
-        t_P_D_t_A[7] = (double)(1.0);
-        t_P_D_t_A[8] = (double)(0.0);
-        t_P_D_t_A[9] = (double)(0.0);
-        t_P_D_t_A[10] = (double)(0.0);
-        t_P_D_t_A[11] = (double)(0.0);
-        t_P_D_t_A[12] = (double)(0.0);
-        t_P_D_t_A[13] = (double)(0.0);
-        t_P_D_t_A[14] = (double)(1.0);
-        t_P_D_t_A[15] = (double)(0.0);
-        t_P_D_t_A[16] = (double)(0.0);
-        t_P_D_t_A[17] = (double)(0.0);
-        t_P_D_t_A[18] = (double)(0.0);
-        t_P_D_t_A[19] = (double)(x1);
-        t_P_D_t_A[20] = (double)(x2);
-        t_P_D_t_A[21] = (double)(1.0);
-        t_P_D_t_A[22] = (double)(0.0);
-        t_P_D_t_A[23] = (double)(0.0);
-        t_P_D_t_A[24] = (double)(x0);
-        t_P_D_t_A[25] = (double)(0.0);
-        t_P_D_t_A[26] = (double)(x4);
-        t_P_D_t_A[27] = (double)(0.0);
-        t_P_D_t_A[28] = (double)(1.0);
-        t_P_D_t_A[29] = (double)(0.0);
-        t_P_D_t_A[30] = (double)(x5);
-        t_P_D_t_A[31] = (double)(x3);
-        t_P_D_t_A[32] = (double)(0.0);
-        t_P_D_t_A[33] = (double)(0.0);
-        t_P_D_t_A[34] = (double)(0.0);
-        t_P_D_t_A[35] = (double)(1.0);
-        t_P_D_a[0] = (double)(0.0);
-        t_P_D_a[1] = (double)(0.0);
-        t_P_D_a[2] = (double)(0.0);
-        t_P_D_a[3] = (double)(0.0);
-        t_P_D_a[4] = (double)(0.0);
-        t_P_D_a[5] = (double)(0.0);
-        t_P_D_a[6] = (double)(0.0);
-        t_P_D_a[7] = (double)(0.0);
-        t_P_D_a[8] = (double)(0.0);
-        t_P_D_a[9] = (double)(0.0);
-        t_P_D_a[10] = (double)(t_A_2);
-        t_P_D_a[11] = (double)(x6);
-        t_P_D_a[12] = (double)(x7);
-        t_P_D_a[13] = (double)(0.0);
-        t_P_D_a[14] = (double)(t_A_0);
-        t_P_D_a[15] = (double)(t_A_1);
-        t_P_D_a[16] = (double)(x8);
-        t_P_D_a[17] = (double)(0.0);
-        t_P_D_p[0] = (double)(0.0);
-        t_P_D_p[1] = (double)(0.0);
-        t_P_D_p[2] = (double)(0.0);
-        t_P_D_p[3] = (double)(0.0);
-        t_P_D_p[4] = (double)(0.0);
-        t_P_D_p[5] = (double)(0.0);
-        t_P_D_p[6] = (double)(0.0);
-        t_P_D_p[7] = (double)(0.0);
-        t_P_D_p[8] = (double)(0.0);
-        t_P_D_p[9] = (double)(0.0);
-        t_P_D_p[10] = (double)(x7);
-        t_P_D_p[11] = (double)(t_A_1);
-        t_P_D_p[12] = (double)(t_A_2);
-        t_P_D_p[13] = (double)(0.0);
-        t_P_D_p[14] = (double)(x8);
-        t_P_D_p[15] = (double)(x6);
-        t_P_D_p[16] = (double)(t_A_0);
-        t_P_D_p[17] = (double)(0.0);
+        const long double x6 = -c1_t_A;
+        const long double x7 = -c2_t_A;
+        const long double x8 = -c0_t_A;
+        out_t_P[0] = (double)(c0_t_A);
+        out_t_P[1] = (double)(c1_t_A);
+        out_t_P[2] = (double)(c2_t_A);
+        out_t_P[3] = (double)(c1_t_A*x1 + c2_t_A*x2 + c3_t_A);
+        out_t_P[4] = (double)(c0_t_A*x0 + c2_t_A*x4 + c4_t_A);
+        out_t_P[5] = (double)(c0_t_A*x5 + c1_t_A*x3 + c5_t_A);
+        out_t_P_D_t_A[0] = (double)(1.0);
+        out_t_P_D_t_A[1] = (double)(0.0);
+        out_t_P_D_t_A[2] = (double)(0.0);
+        out_t_P_D_t_A[3] = (double)(0.0);
+        out_t_P_D_t_A[4] = (double)(0.0);
+        out_t_P_D_t_A[5] = (double)(0.0);
+        out_t_P_D_t_A[6] = (double)(0.0);
+        out_t_P_D_t_A[7] = (double)(1.0);
+        out_t_P_D_t_A[8] = (double)(0.0);
+        out_t_P_D_t_A[9] = (double)(0.0);
+        out_t_P_D_t_A[10] = (double)(0.0);
+        out_t_P_D_t_A[11] = (double)(0.0);
+        out_t_P_D_t_A[12] = (double)(0.0);
+        out_t_P_D_t_A[13] = (double)(0.0);
+        out_t_P_D_t_A[14] = (double)(1.0);
+        out_t_P_D_t_A[15] = (double)(0.0);
+        out_t_P_D_t_A[16] = (double)(0.0);
+        out_t_P_D_t_A[17] = (double)(0.0);
+        out_t_P_D_t_A[18] = (double)(0.0);
+        out_t_P_D_t_A[19] = (double)(x1);
+        out_t_P_D_t_A[20] = (double)(x2);
+        out_t_P_D_t_A[21] = (double)(1.0);
+        out_t_P_D_t_A[22] = (double)(0.0);
+        out_t_P_D_t_A[23] = (double)(0.0);
+        out_t_P_D_t_A[24] = (double)(x0);
+        out_t_P_D_t_A[25] = (double)(0.0);
+        out_t_P_D_t_A[26] = (double)(x4);
+        out_t_P_D_t_A[27] = (double)(0.0);
+        out_t_P_D_t_A[28] = (double)(1.0);
+        out_t_P_D_t_A[29] = (double)(0.0);
+        out_t_P_D_t_A[30] = (double)(x5);
+        out_t_P_D_t_A[31] = (double)(x3);
+        out_t_P_D_t_A[32] = (double)(0.0);
+        out_t_P_D_t_A[33] = (double)(0.0);
+        out_t_P_D_t_A[34] = (double)(0.0);
+        out_t_P_D_t_A[35] = (double)(1.0);
+        out_t_P_D_a[0] = (double)(0.0);
+        out_t_P_D_a[1] = (double)(0.0);
+        out_t_P_D_a[2] = (double)(0.0);
+        out_t_P_D_a[3] = (double)(0.0);
+        out_t_P_D_a[4] = (double)(0.0);
+        out_t_P_D_a[5] = (double)(0.0);
+        out_t_P_D_a[6] = (double)(0.0);
+        out_t_P_D_a[7] = (double)(0.0);
+        out_t_P_D_a[8] = (double)(0.0);
+        out_t_P_D_a[9] = (double)(0.0);
+        out_t_P_D_a[10] = (double)(c2_t_A);
+        out_t_P_D_a[11] = (double)(x6);
+        out_t_P_D_a[12] = (double)(x7);
+        out_t_P_D_a[13] = (double)(0.0);
+        out_t_P_D_a[14] = (double)(c0_t_A);
+        out_t_P_D_a[15] = (double)(c1_t_A);
+        out_t_P_D_a[16] = (double)(x8);
+        out_t_P_D_a[17] = (double)(0.0);
+        out_t_P_D_p[0] = (double)(0.0);
+        out_t_P_D_p[1] = (double)(0.0);
+        out_t_P_D_p[2] = (double)(0.0);
+        out_t_P_D_p[3] = (double)(0.0);
+        out_t_P_D_p[4] = (double)(0.0);
+        out_t_P_D_p[5] = (double)(0.0);
+        out_t_P_D_p[6] = (double)(0.0);
+        out_t_P_D_p[7] = (double)(0.0);
+        out_t_P_D_p[8] = (double)(0.0);
+        out_t_P_D_p[9] = (double)(0.0);
+        out_t_P_D_p[10] = (double)(x7);
+        out_t_P_D_p[11] = (double)(c1_t_A);
+        out_t_P_D_p[12] = (double)(c2_t_A);
+        out_t_P_D_p[13] = (double)(0.0);
+        out_t_P_D_p[14] = (double)(x8);
+        out_t_P_D_p[15] = (double)(x6);
+        out_t_P_D_p[16] = (double)(c0_t_A);
+        out_t_P_D_p[17] = (double)(0.0);
     }
-    finite += (long double)((((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17])))))))));
+    finite += (long double)((((((((out_t_P[0] - out_t_P[0]) + (out_t_P[1] - out_t_P[1])) + ((out_t_P[2] - out_t_P[2]) + (out_t_P[3] - out_t_P[3]))) + (((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])) + ((out_t_P_D_t_A[0] - out_t_P_D_t_A[0]) + ((out_t_P_D_t_A[1] - out_t_P_D_t_A[1]) + (out_t_P_D_t_A[2] - out_t_P_D_t_A[2]))))) + ((((out_t_P_D_t_A[3] - out_t_P_D_t_A[3]) + (out_t_P_D_t_A[4] - out_t_P_D_t_A[4])) + ((out_t_P_D_t_A[5] - out_t_P_D_t_A[5]) + ((out_t_P_D_t_A[6] - out_t_P_D_t_A[6]) + (out_t_P_D_t_A[7] - out_t_P_D_t_A[7])))) + (((out_t_P_D_t_A[8] - out_t_P_D_t_A[8]) + (out_t_P_D_t_A[9] - out_t_P_D_t_A[9])) + ((out_t_P_D_t_A[10] - out_t_P_D_t_A[10]) + ((out_t_P_D_t_A[11] - out_t_P_D_t_A[11]) + (out_t_P_D_t_A[12] - out_t_P_D_t_A[12])))))) + (((((out_t_P_D_t_A[13] - out_t_P_D_t_A[13]) + (out_t_P_D_t_A[14] - out_t_P_D_t_A[14])) + ((out_t_P_D_t_A[15] - out_t_P_D_t_A[15]) + ((out_t_P_D_t_A[16] - out_t_P_D_t_A[16]) + (out_t_P_D_t_A[17] - out_t_P_D_t_A[17])))) + (((out_t_P_D_t_A[18] - out_t_P_D_t_A[18]) + (out_t_P_D_t_A[19] - out_t_P_D_t_A[19])) + ((out_t_P_D_t_A[20] - out_t_P_D_t_A[20]) + ((out_t_P_D_t_A[21] - out_t_P_D_t_A[21]) + (out_t_P_D_t_A[22] - out_t_P_D_t_A[22]))))) + ((((out_t_P_D_t_A[23] - out_t_P_D_t_A[23]) + (out_t_P_D_t_A[24] - out_t_P_D_t_A[24])) + ((out_t_P_D_t_A[25] - out_t_P_D_t_A[25]) + ((out_t_P_D_t_A[26] - out_t_P_D_t_A[26]) + (out_t_P_D_t_A[27] - out_t_P_D_t_A[27])))) + (((out_t_P_D_t_A[28] - out_t_P_D_t_A[28]) + (out_t_P_D_t_A[29] - out_t_P_D_t_A[29])) + ((out_t_P_D_t_A[30] - out_t_P_D_t_A[30]) + ((out_t_P_D_t_A[31] - out_t_P_D_t_A[31]) + (out_t_P_D_t_A[32] - out_t_P_D_t_A[32]))))))) + ((((((out_t_P_D_t_A[33] - out_t_P_D_t_A[33]) + (out_t_P_D_t_A[34] - out_t_P_D_t_A[34])) + ((out_t_P_D_t_A[35] - out_t_P_D_t_A[35]) + (out_t_P_D_a[0] - out_t_P_D_a[0]))) + (((out_t_P_D_a[1] - out_t_P_D_a[1]) + (out_t_P_D_a[2] - out_t_P_D_a[2])) + ((out_t_P_D_a[3] - out_t_P_D_a[3]) + ((out_t_P_D_a[4] - out_t_P_D_a[4]) + (out_t_P_D_a[5] - out_t_P_D_a[5]))))) + ((((out_t_P_D_a[6] - out_t_P_D_a[6]) + (out_t_P_D_a[7] - out_t_P_D_a[7])) + ((out_t_P_D_a[8] - out_t_P_D_a[8]) + ((out_t_P_D_a[9] - out_t_P_D_a[9]) + (out_t_P_D_a[10] - out_t_P_D_a[10])))) + (((out_t_P_D_a[11] - out_t_P_D_a[11]) + (out_t_P_D_a[12] - out_t_P_D_a[12])) + ((out_t_P_D_a[13] - out_t_P_D_a[13]) + ((out_t_P_D_a[14] - out_t_P_D_a[14]) + (out_t_P_D_a[15] - out_t_P_D_a[15])))))) + (((((out_t_P_D_a[16] - out_t_P_D_a[16]) + (out_t_P_D_a[17] - out_t_P_D_a[17])) + ((out_t_P_D_p[0] - out_t_P_D_p[0]) + ((out_t_P_D_p[1] - out_t_P_D_p[1]) + (out_t_P_D_p[2] - out_t_P_D_p[2])))) + (((out_t_P_D_p[3] - out_t_P_D_p[3]) + (out_t_P_D_p[4] - out_t_P_D_p[4])) + ((out_t_P_D_p[5] - out_t_P_D_p[5]) + ((out_t_P_D_p[6] - out_t_P_D_p[6]) + (out_t_P_D_p[7] - out_t_P_D_p[7]))))) + ((((out_t_P_D_p[8] - out_t_P_D_p[8]) + (out_t_P_D_p[9] - out_t_P_D_p[9])) + ((out_t_P_D_p[10] - out_t_P_D_p[10]) + ((out_t_P_D_p[11] - out_t_P_D_p[11]) + (out_t_P_D_p[12] - out_t_P_D_p[12])))) + (((out_t_P_D_p[13] - out_t_P_D_p[13]) + (out_t_P_D_p[14] - out_t_P_D_p[14])) + ((out_t_P_D_p[15] - out_t_P_D_p[15]) + ((out_t_P_D_p[16] - out_t_P_D_p[16]) + (out_t_P_D_p[17] - out_t_P_D_p[17])))))))));
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = (double)NAN;
-        t_P[1] = (double)NAN;
-        t_P[2] = (double)NAN;
-        t_P[3] = (double)NAN;
-        t_P[4] = (double)NAN;
-        t_P[5] = (double)NAN;
-        t_P_D_t_A[0] = (double)NAN;
-        t_P_D_t_A[1] = (double)NAN;
-        t_P_D_t_A[2] = (double)NAN;
-        t_P_D_t_A[3] = (double)NAN;
-        t_P_D_t_A[4] = (double)NAN;
-        t_P_D_t_A[5] = (double)NAN;
-        t_P_D_t_A[6] = (double)NAN;
-        t_P_D_t_A[7] = (double)NAN;
-        t_P_D_t_A[8] = (double)NAN;
-        t_P_D_t_A[9] = (double)NAN;
-        t_P_D_t_A[10] = (double)NAN;
-        t_P_D_t_A[11] = (double)NAN;
-        t_P_D_t_A[12] = (double)NAN;
-        t_P_D_t_A[13] = (double)NAN;
-        t_P_D_t_A[14] = (double)NAN;
-        t_P_D_t_A[15] = (double)NAN;
-        t_P_D_t_A[16] = (double)NAN;
-        t_P_D_t_A[17] = (double)NAN;
-        t_P_D_t_A[18] = (double)NAN;
-        t_P_D_t_A[19] = (double)NAN;
-        t_P_D_t_A[20] = (double)NAN;
-        t_P_D_t_A[21] = (double)NAN;
-        t_P_D_t_A[22] = (double)NAN;
-        t_P_D_t_A[23] = (double)NAN;
-        t_P_D_t_A[24] = (double)NAN;
-        t_P_D_t_A[25] = (double)NAN;
-        t_P_D_t_A[26] = (double)NAN;
-        t_P_D_t_A[27] = (double)NAN;
-        t_P_D_t_A[28] = (double)NAN;
-        t_P_D_t_A[29] = (double)NAN;
-        t_P_D_t_A[30] = (double)NAN;
-        t_P_D_t_A[31] = (double)NAN;
-        t_P_D_t_A[32] = (double)NAN;
-        t_P_D_t_A[33] = (double)NAN;
-        t_P_D_t_A[34] = (double)NAN;
-        t_P_D_t_A[35] = (double)NAN;
-        t_P_D_a[0] = (double)NAN;
-        t_P_D_a[1] = (double)NAN;
-        t_P_D_a[2] = (double)NAN;
-        t_P_D_a[3] = (double)NAN;
-        t_P_D_a[4] = (double)NAN;
-        t_P_D_a[5] = (double)NAN;
-        t_P_D_a[6] = (double)NAN;
-        t_P_D_a[7] = (double)NAN;
-        t_P_D_a[8] = (double)NAN;
-        t_P_D_a[9] = (double)NAN;
-        t_P_D_a[10] = (double)NAN;
-        t_P_D_a[11] = (double)NAN;
-        t_P_D_a[12] = (double)NAN;
-        t_P_D_a[13] = (double)NAN;
-        t_P_D_a[14] = (double)NAN;
-        t_P_D_a[15] = (double)NAN;
-        t_P_D_a[16] = (double)NAN;
-        t_P_D_a[17] = (double)NAN;
-        t_P_D_p[0] = (double)NAN;
-        t_P_D_p[1] = (double)NAN;
-        t_P_D_p[2] = (double)NAN;
-        t_P_D_p[3] = (double)NAN;
-        t_P_D_p[4] = (double)NAN;
-        t_P_D_p[5] = (double)NAN;
-        t_P_D_p[6] = (double)NAN;
-        t_P_D_p[7] = (double)NAN;
-        t_P_D_p[8] = (double)NAN;
-        t_P_D_p[9] = (double)NAN;
-        t_P_D_p[10] = (double)NAN;
-        t_P_D_p[11] = (double)NAN;
-        t_P_D_p[12] = (double)NAN;
-        t_P_D_p[13] = (double)NAN;
-        t_P_D_p[14] = (double)NAN;
-        t_P_D_p[15] = (double)NAN;
-        t_P_D_p[16] = (double)NAN;
-        t_P_D_p[17] = (double)NAN;
+        out_t_P[0] = (double)NAN;
+        out_t_P[1] = (double)NAN;
+        out_t_P[2] = (double)NAN;
+        out_t_P[3] = (double)NAN;
+        out_t_P[4] = (double)NAN;
+        out_t_P[5] = (double)NAN;
+        out_t_P_D_t_A[0] = (double)NAN;
+        out_t_P_D_t_A[1] = (double)NAN;
+        out_t_P_D_t_A[2] = (double)NAN;
+        out_t_P_D_t_A[3] = (double)NAN;
+        out_t_P_D_t_A[4] = (double)NAN;
+        out_t_P_D_t_A[5] = (double)NAN;
+        out_t_P_D_t_A[6] = (double)NAN;
+        out_t_P_D_t_A[7] = (double)NAN;
+        out_t_P_D_t_A[8] = (double)NAN;
+        out_t_P_D_t_A[9] = (double)NAN;
+        out_t_P_D_t_A[10] = (double)NAN;
+        out_t_P_D_t_A[11] = (double)NAN;
+        out_t_P_D_t_A[12] = (double)NAN;
+        out_t_P_D_t_A[13] = (double)NAN;
+        out_t_P_D_t_A[14] = (double)NAN;
+        out_t_P_D_t_A[15] = (double)NAN;
+        out_t_P_D_t_A[16] = (double)NAN;
+        out_t_P_D_t_A[17] = (double)NAN;
+        out_t_P_D_t_A[18] = (double)NAN;
+        out_t_P_D_t_A[19] = (double)NAN;
+        out_t_P_D_t_A[20] = (double)NAN;
+        out_t_P_D_t_A[21] = (double)NAN;
+        out_t_P_D_t_A[22] = (double)NAN;
+        out_t_P_D_t_A[23] = (double)NAN;
+        out_t_P_D_t_A[24] = (double)NAN;
+        out_t_P_D_t_A[25] = (double)NAN;
+        out_t_P_D_t_A[26] = (double)NAN;
+        out_t_P_D_t_A[27] = (double)NAN;
+        out_t_P_D_t_A[28] = (double)NAN;
+        out_t_P_D_t_A[29] = (double)NAN;
+        out_t_P_D_t_A[30] = (double)NAN;
+        out_t_P_D_t_A[31] = (double)NAN;
+        out_t_P_D_t_A[32] = (double)NAN;
+        out_t_P_D_t_A[33] = (double)NAN;
+        out_t_P_D_t_A[34] = (double)NAN;
+        out_t_P_D_t_A[35] = (double)NAN;
+        out_t_P_D_a[0] = (double)NAN;
+        out_t_P_D_a[1] = (double)NAN;
+        out_t_P_D_a[2] = (double)NAN;
+        out_t_P_D_a[3] = (double)NAN;
+        out_t_P_D_a[4] = (double)NAN;
+        out_t_P_D_a[5] = (double)NAN;
+        out_t_P_D_a[6] = (double)NAN;
+        out_t_P_D_a[7] = (double)NAN;
+        out_t_P_D_a[8] = (double)NAN;
+        out_t_P_D_a[9] = (double)NAN;
+        out_t_P_D_a[10] = (double)NAN;
+        out_t_P_D_a[11] = (double)NAN;
+        out_t_P_D_a[12] = (double)NAN;
+        out_t_P_D_a[13] = (double)NAN;
+        out_t_P_D_a[14] = (double)NAN;
+        out_t_P_D_a[15] = (double)NAN;
+        out_t_P_D_a[16] = (double)NAN;
+        out_t_P_D_a[17] = (double)NAN;
+        out_t_P_D_p[0] = (double)NAN;
+        out_t_P_D_p[1] = (double)NAN;
+        out_t_P_D_p[2] = (double)NAN;
+        out_t_P_D_p[3] = (double)NAN;
+        out_t_P_D_p[4] = (double)NAN;
+        out_t_P_D_p[5] = (double)NAN;
+        out_t_P_D_p[6] = (double)NAN;
+        out_t_P_D_p[7] = (double)NAN;
+        out_t_P_D_p[8] = (double)NAN;
+        out_t_P_D_p[9] = (double)NAN;
+        out_t_P_D_p[10] = (double)NAN;
+        out_t_P_D_p[11] = (double)NAN;
+        out_t_P_D_p[12] = (double)NAN;
+        out_t_P_D_p[13] = (double)NAN;
+        out_t_P_D_p[14] = (double)NAN;
+        out_t_P_D_p[15] = (double)NAN;
+        out_t_P_D_p[16] = (double)NAN;
+        out_t_P_D_p[17] = (double)NAN;
     }
     return status;
 }
@@ -918,13 +916,13 @@ static int rigidsym_c_twist_transfer_with_jacobians_wide(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6],
-    double t_P_D_t_A[36],
-    double t_P_D_a[18],
-    double t_P_D_p[18])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6],
+    double out_t_P_D_t_A[36],
+    double out_t_P_D_a[18],
+    double out_t_P_D_p[18])
 {
     int status, still_;
     double finite;
@@ -934,9 +932,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    double rs_t_A[6];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    double sc_t_A[6];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_D
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -944,40 +941,40 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_d(t_A, 6))
+    if (rigidsym_c_subnormal_d(in_t_A, 6))
         return -1;
-    if (rigidsym_c_subnormal_d(a, 3))
+    if (rigidsym_c_subnormal_d(in_a, 3))
         return -1;
-    if (rigidsym_c_subnormal_d(p, 3))
+    if (rigidsym_c_subnormal_d(in_p, 3))
         return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_d(t_A, 6));
-    still_ |= rigidsym_c_scale_d(t_A, rs_t_A, 6, rs_k0_);
-    still_ |= rigidsym_c_extreme_d(a, 3);
-    still_ |= rigidsym_c_extreme_d(p, 3);
+    rs_k0_ = -(rigidsym_c_exponent_d(in_t_A, 6));
+    still_ |= rigidsym_c_scale_d(in_t_A, sc_t_A, 6, rs_k0_);
+    still_ |= rigidsym_c_extreme_d(in_a, 3);
+    still_ |= rigidsym_c_extreme_d(in_p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_twist_transfer_with_jacobians(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        status |= rigidsym_c_back_d(&t_P[0], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[1], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[2], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[3], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[4], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P[5], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_a[10], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_a[11], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_a[12], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_a[14], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_a[15], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_a[16], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_p[10], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_p[11], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_p[12], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_p[14], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_p[15], rs_k0_);
-        status |= rigidsym_c_back_d(&t_P_D_p[16], rs_k0_);
-        finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+        status = rigidsym_c_twist_transfer_with_jacobians(sc_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
+        status |= rigidsym_c_back_d(&out_t_P[0], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[1], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[2], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[3], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[4], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P[5], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_a[10], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_a[11], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_a[12], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_a[14], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_a[15], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_a[16], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_p[10], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_p[11], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_p[12], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_p[14], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_p[15], rs_k0_);
+        status |= rigidsym_c_back_d(&out_t_P_D_p[16], rs_k0_);
+        finite = (((((((out_t_P[0] - out_t_P[0]) + (out_t_P[1] - out_t_P[1])) + ((out_t_P[2] - out_t_P[2]) + (out_t_P[3] - out_t_P[3]))) + (((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])) + ((out_t_P_D_t_A[0] - out_t_P_D_t_A[0]) + ((out_t_P_D_t_A[1] - out_t_P_D_t_A[1]) + (out_t_P_D_t_A[2] - out_t_P_D_t_A[2]))))) + ((((out_t_P_D_t_A[3] - out_t_P_D_t_A[3]) + (out_t_P_D_t_A[4] - out_t_P_D_t_A[4])) + ((out_t_P_D_t_A[5] - out_t_P_D_t_A[5]) + ((out_t_P_D_t_A[6] - out_t_P_D_t_A[6]) + (out_t_P_D_t_A[7] - out_t_P_D_t_A[7])))) + (((out_t_P_D_t_A[8] - out_t_P_D_t_A[8]) + (out_t_P_D_t_A[9] - out_t_P_D_t_A[9])) + ((out_t_P_D_t_A[10] - out_t_P_D_t_A[10]) + ((out_t_P_D_t_A[11] - out_t_P_D_t_A[11]) + (out_t_P_D_t_A[12] - out_t_P_D_t_A[12])))))) + (((((out_t_P_D_t_A[13] - out_t_P_D_t_A[13]) + (out_t_P_D_t_A[14] - out_t_P_D_t_A[14])) + ((out_t_P_D_t_A[15] - out_t_P_D_t_A[15]) + ((out_t_P_D_t_A[16] - out_t_P_D_t_A[16]) + (out_t_P_D_t_A[17] - out_t_P_D_t_A[17])))) + (((out_t_P_D_t_A[18] - out_t_P_D_t_A[18]) + (out_t_P_D_t_A[19] - out_t_P_D_t_A[19])) + ((out_t_P_D_t_A[20] - out_t_P_D_t_A[20]) + ((out_t_P_D_t_A[21] - out_t_P_D_t_A[21]) + (out_t_P_D_t_A[22] - out_t_P_D_t_A[22]))))) + ((((out_t_P_D_t_A[23] - out_t_P_D_t_A[23]) + (out_t_P_D_t_A[24] - out_t_P_D_t_A[24])) + ((out_t_P_D_t_A[25] - out_t_P_D_t_A[25]) + ((out_t_P_D_t_A[26] - out_t_P_D_t_A[26]) + (out_t_P_D_t_A[27] - out_t_P_D_t_A[27])))) + (((out_t_P_D_t_A[28] - out_t_P_D_t_A[28]) + (out_t_P_D_t_A[29] - out_t_P_D_t_A[29])) + ((out_t_P_D_t_A[30] - out_t_P_D_t_A[30]) + ((out_t_P_D_t_A[31] - out_t_P_D_t_A[31]) + (out_t_P_D_t_A[32] - out_t_P_D_t_A[32]))))))) + ((((((out_t_P_D_t_A[33] - out_t_P_D_t_A[33]) + (out_t_P_D_t_A[34] - out_t_P_D_t_A[34])) + ((out_t_P_D_t_A[35] - out_t_P_D_t_A[35]) + (out_t_P_D_a[0] - out_t_P_D_a[0]))) + (((out_t_P_D_a[1] - out_t_P_D_a[1]) + (out_t_P_D_a[2] - out_t_P_D_a[2])) + ((out_t_P_D_a[3] - out_t_P_D_a[3]) + ((out_t_P_D_a[4] - out_t_P_D_a[4]) + (out_t_P_D_a[5] - out_t_P_D_a[5]))))) + ((((out_t_P_D_a[6] - out_t_P_D_a[6]) + (out_t_P_D_a[7] - out_t_P_D_a[7])) + ((out_t_P_D_a[8] - out_t_P_D_a[8]) + ((out_t_P_D_a[9] - out_t_P_D_a[9]) + (out_t_P_D_a[10] - out_t_P_D_a[10])))) + (((out_t_P_D_a[11] - out_t_P_D_a[11]) + (out_t_P_D_a[12] - out_t_P_D_a[12])) + ((out_t_P_D_a[13] - out_t_P_D_a[13]) + ((out_t_P_D_a[14] - out_t_P_D_a[14]) + (out_t_P_D_a[15] - out_t_P_D_a[15])))))) + (((((out_t_P_D_a[16] - out_t_P_D_a[16]) + (out_t_P_D_a[17] - out_t_P_D_a[17])) + ((out_t_P_D_p[0] - out_t_P_D_p[0]) + ((out_t_P_D_p[1] - out_t_P_D_p[1]) + (out_t_P_D_p[2] - out_t_P_D_p[2])))) + (((out_t_P_D_p[3] - out_t_P_D_p[3]) + (out_t_P_D_p[4] - out_t_P_D_p[4])) + ((out_t_P_D_p[5] - out_t_P_D_p[5]) + ((out_t_P_D_p[6] - out_t_P_D_p[6]) + (out_t_P_D_p[7] - out_t_P_D_p[7]))))) + ((((out_t_P_D_p[8] - out_t_P_D_p[8]) + (out_t_P_D_p[9] - out_t_P_D_p[9])) + ((out_t_P_D_p[10] - out_t_P_D_p[10]) + ((out_t_P_D_p[11] - out_t_P_D_p[11]) + (out_t_P_D_p[12] - out_t_P_D_p[12])))) + (((out_t_P_D_p[13] - out_t_P_D_p[13]) + (out_t_P_D_p[14] - out_t_P_D_p[14])) + ((out_t_P_D_p[15] - out_t_P_D_p[15]) + ((out_t_P_D_p[16] - out_t_P_D_p[16]) + (out_t_P_D_p[17] - out_t_P_D_p[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -990,208 +987,208 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_twist_transfer_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_plain(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6],
-    double t_P_D_t_A[36],
-    double t_P_D_a[18],
-    double t_P_D_p[18])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6],
+    double out_t_P_D_t_A[36],
+    double out_t_P_D_a[18],
+    double out_t_P_D_p[18])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     double finite = 0.0;
-    const double t_A_0 = t_A[0];
-    const double t_A_1 = t_A[1];
-    const double t_A_2 = t_A[2];
-    const double t_A_3 = t_A[3];
-    const double t_A_4 = t_A[4];
-    const double t_A_5 = t_A[5];
-    const double a_0 = a[0];
-    const double a_1 = a[1];
-    const double a_2 = a[2];
-    const double p_0 = p[0];
-    const double p_1 = p[1];
-    const double p_2 = p[2];
+    const double c0_t_A = in_t_A[0];
+    const double c1_t_A = in_t_A[1];
+    const double c2_t_A = in_t_A[2];
+    const double c3_t_A = in_t_A[3];
+    const double c4_t_A = in_t_A[4];
+    const double c5_t_A = in_t_A[5];
+    const double c0_a = in_a[0];
+    const double c1_a = in_a[1];
+    const double c2_a = in_a[2];
+    const double c0_p = in_p[0];
+    const double c1_p = in_p[1];
+    const double c2_p = in_p[2];
     {
-        const double x0 = a_2 - p_2;
+        const double x0 = c2_a - c2_p;
         const double x1 = -x0;
-        const double x2 = a_1 - p_1;
-        const double x3 = a_0 - p_0;
+        const double x2 = c1_a - c1_p;
+        const double x3 = c0_a - c0_p;
         const double x4 = -x3;
         const double x5 = -x2;
-        const double x6 = -t_A_1;
-        const double x7 = -t_A_2;
-        const double x8 = -t_A_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = t_A_1*x1 + t_A_2*x2 + t_A_3;
-        t_P[4] = t_A_0*x0 + t_A_2*x4 + t_A_4;
-        t_P[5] = t_A_0*x5 + t_A_1*x3 + t_A_5;
-        t_P_D_t_A[0] = 1.0;
-        t_P_D_t_A[1] = 0.0;
-        t_P_D_t_A[2] = 0.0;
-        t_P_D_t_A[3] = 0.0;
-        t_P_D_t_A[4] = 0.0;
-        t_P_D_t_A[5] = 0.0;
-        t_P_D_t_A[6] = 0.0;
-        t_P_D_t_A[7] = 1.0;
-        t_P_D_t_A[8] = 0.0;
-        t_P_D_t_A[9] = 0.0;
-        t_P_D_t_A[10] = 0.0;
-        t_P_D_t_A[11] = 0.0;
-        t_P_D_t_A[12] = 0.0;
-        t_P_D_t_A[13] = 0.0;
-        t_P_D_t_A[14] = 1.0;
-        t_P_D_t_A[15] = 0.0;
-        t_P_D_t_A[16] = 0.0;
-        t_P_D_t_A[17] = 0.0;
-        t_P_D_t_A[18] = 0.0;
-        t_P_D_t_A[19] = x1;
-        t_P_D_t_A[20] = x2;
-        t_P_D_t_A[21] = 1.0;
-        t_P_D_t_A[22] = 0.0;
-        t_P_D_t_A[23] = 0.0;
-        t_P_D_t_A[24] = x0;
-        t_P_D_t_A[25] = 0.0;
-        t_P_D_t_A[26] = x4;
-        t_P_D_t_A[27] = 0.0;
-        t_P_D_t_A[28] = 1.0;
-        t_P_D_t_A[29] = 0.0;
-        t_P_D_t_A[30] = x5;
-        t_P_D_t_A[31] = x3;
-        t_P_D_t_A[32] = 0.0;
-        t_P_D_t_A[33] = 0.0;
-        t_P_D_t_A[34] = 0.0;
-        t_P_D_t_A[35] = 1.0;
-        t_P_D_a[0] = 0.0;
-        t_P_D_a[1] = 0.0;
-        t_P_D_a[2] = 0.0;
-        t_P_D_a[3] = 0.0;
-        t_P_D_a[4] = 0.0;
-        t_P_D_a[5] = 0.0;
-        t_P_D_a[6] = 0.0;
-        t_P_D_a[7] = 0.0;
-        t_P_D_a[8] = 0.0;
-        t_P_D_a[9] = 0.0;
-        t_P_D_a[10] = t_A_2;
-        t_P_D_a[11] = x6;
-        t_P_D_a[12] = x7;
-        t_P_D_a[13] = 0.0;
-        t_P_D_a[14] = t_A_0;
-        t_P_D_a[15] = t_A_1;
-        t_P_D_a[16] = x8;
-        t_P_D_a[17] = 0.0;
-        t_P_D_p[0] = 0.0;
-        t_P_D_p[1] = 0.0;
-        t_P_D_p[2] = 0.0;
-        t_P_D_p[3] = 0.0;
-        t_P_D_p[4] = 0.0;
-        t_P_D_p[5] = 0.0;
-        t_P_D_p[6] = 0.0;
-        t_P_D_p[7] = 0.0;
-        t_P_D_p[8] = 0.0;
-        t_P_D_p[9] = 0.0;
-        t_P_D_p[10] = x7;
-        t_P_D_p[11] = t_A_1;
-        t_P_D_p[12] = t_A_2;
-        t_P_D_p[13] = 0.0;
-        t_P_D_p[14] = x8;
-        t_P_D_p[15] = x6;
-        t_P_D_p[16] = t_A_0;
-        t_P_D_p[17] = 0.0;
+        const double x6 = -c1_t_A;
+        const double x7 = -c2_t_A;
+        const double x8 = -c0_t_A;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = c1_t_A*x1 + c2_t_A*x2 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 + c2_t_A*x4 + c4_t_A;
+        out_t_P[5] = c0_t_A*x5 + c1_t_A*x3 + c5_t_A;
+        out_t_P_D_t_A[0] = 1.0;
+        out_t_P_D_t_A[1] = 0.0;
+        out_t_P_D_t_A[2] = 0.0;
+        out_t_P_D_t_A[3] = 0.0;
+        out_t_P_D_t_A[4] = 0.0;
+        out_t_P_D_t_A[5] = 0.0;
+        out_t_P_D_t_A[6] = 0.0;
+        out_t_P_D_t_A[7] = 1.0;
+        out_t_P_D_t_A[8] = 0.0;
+        out_t_P_D_t_A[9] = 0.0;
+        out_t_P_D_t_A[10] = 0.0;
+        out_t_P_D_t_A[11] = 0.0;
+        out_t_P_D_t_A[12] = 0.0;
+        out_t_P_D_t_A[13] = 0.0;
+        out_t_P_D_t_A[14] = 1.0;
+        out_t_P_D_t_A[15] = 0.0;
+        out_t_P_D_t_A[16] = 0.0;
+        out_t_P_D_t_A[17] = 0.0;
+        out_t_P_D_t_A[18] = 0.0;
+        out_t_P_D_t_A[19] = x1;
+        out_t_P_D_t_A[20] = x2;
+        out_t_P_D_t_A[21] = 1.0;
+        out_t_P_D_t_A[22] = 0.0;
+        out_t_P_D_t_A[23] = 0.0;
+        out_t_P_D_t_A[24] = x0;
+        out_t_P_D_t_A[25] = 0.0;
+        out_t_P_D_t_A[26] = x4;
+        out_t_P_D_t_A[27] = 0.0;
+        out_t_P_D_t_A[28] = 1.0;
+        out_t_P_D_t_A[29] = 0.0;
+        out_t_P_D_t_A[30] = x5;
+        out_t_P_D_t_A[31] = x3;
+        out_t_P_D_t_A[32] = 0.0;
+        out_t_P_D_t_A[33] = 0.0;
+        out_t_P_D_t_A[34] = 0.0;
+        out_t_P_D_t_A[35] = 1.0;
+        out_t_P_D_a[0] = 0.0;
+        out_t_P_D_a[1] = 0.0;
+        out_t_P_D_a[2] = 0.0;
+        out_t_P_D_a[3] = 0.0;
+        out_t_P_D_a[4] = 0.0;
+        out_t_P_D_a[5] = 0.0;
+        out_t_P_D_a[6] = 0.0;
+        out_t_P_D_a[7] = 0.0;
+        out_t_P_D_a[8] = 0.0;
+        out_t_P_D_a[9] = 0.0;
+        out_t_P_D_a[10] = c2_t_A;
+        out_t_P_D_a[11] = x6;
+        out_t_P_D_a[12] = x7;
+        out_t_P_D_a[13] = 0.0;
+        out_t_P_D_a[14] = c0_t_A;
+        out_t_P_D_a[15] = c1_t_A;
+        out_t_P_D_a[16] = x8;
+        out_t_P_D_a[17] = 0.0;
+        out_t_P_D_p[0] = 0.0;
+        out_t_P_D_p[1] = 0.0;
+        out_t_P_D_p[2] = 0.0;
+        out_t_P_D_p[3] = 0.0;
+        out_t_P_D_p[4] = 0.0;
+        out_t_P_D_p[5] = 0.0;
+        out_t_P_D_p[6] = 0.0;
+        out_t_P_D_p[7] = 0.0;
+        out_t_P_D_p[8] = 0.0;
+        out_t_P_D_p[9] = 0.0;
+        out_t_P_D_p[10] = x7;
+        out_t_P_D_p[11] = c1_t_A;
+        out_t_P_D_p[12] = c2_t_A;
+        out_t_P_D_p[13] = 0.0;
+        out_t_P_D_p[14] = x8;
+        out_t_P_D_p[15] = x6;
+        out_t_P_D_p[16] = c0_t_A;
+        out_t_P_D_p[17] = 0.0;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        const double s_ = ((((((out_t_P[0] + out_t_P[1]) + (out_t_P[2] + out_t_P[3])) + ((out_t_P[4] + out_t_P[5]) + (out_t_P_D_t_A[0] + (out_t_P_D_t_A[1] + out_t_P_D_t_A[2])))) + (((out_t_P_D_t_A[3] + out_t_P_D_t_A[4]) + (out_t_P_D_t_A[5] + (out_t_P_D_t_A[6] + out_t_P_D_t_A[7]))) + ((out_t_P_D_t_A[8] + out_t_P_D_t_A[9]) + (out_t_P_D_t_A[10] + (out_t_P_D_t_A[11] + out_t_P_D_t_A[12]))))) + ((((out_t_P_D_t_A[13] + out_t_P_D_t_A[14]) + (out_t_P_D_t_A[15] + (out_t_P_D_t_A[16] + out_t_P_D_t_A[17]))) + ((out_t_P_D_t_A[18] + out_t_P_D_t_A[19]) + (out_t_P_D_t_A[20] + (out_t_P_D_t_A[21] + out_t_P_D_t_A[22])))) + (((out_t_P_D_t_A[23] + out_t_P_D_t_A[24]) + (out_t_P_D_t_A[25] + (out_t_P_D_t_A[26] + out_t_P_D_t_A[27]))) + ((out_t_P_D_t_A[28] + out_t_P_D_t_A[29]) + (out_t_P_D_t_A[30] + (out_t_P_D_t_A[31] + out_t_P_D_t_A[32])))))) + (((((out_t_P_D_t_A[33] + out_t_P_D_t_A[34]) + (out_t_P_D_t_A[35] + out_t_P_D_a[0])) + ((out_t_P_D_a[1] + out_t_P_D_a[2]) + (out_t_P_D_a[3] + (out_t_P_D_a[4] + out_t_P_D_a[5])))) + (((out_t_P_D_a[6] + out_t_P_D_a[7]) + (out_t_P_D_a[8] + (out_t_P_D_a[9] + out_t_P_D_a[10]))) + ((out_t_P_D_a[11] + out_t_P_D_a[12]) + (out_t_P_D_a[13] + (out_t_P_D_a[14] + out_t_P_D_a[15]))))) + ((((out_t_P_D_a[16] + out_t_P_D_a[17]) + (out_t_P_D_p[0] + (out_t_P_D_p[1] + out_t_P_D_p[2]))) + ((out_t_P_D_p[3] + out_t_P_D_p[4]) + (out_t_P_D_p[5] + (out_t_P_D_p[6] + out_t_P_D_p[7])))) + (((out_t_P_D_p[8] + out_t_P_D_p[9]) + (out_t_P_D_p[10] + (out_t_P_D_p[11] + out_t_P_D_p[12]))) + ((out_t_P_D_p[13] + out_t_P_D_p[14]) + (out_t_P_D_p[15] + (out_t_P_D_p[16] + out_t_P_D_p[17])))))));
         if (!(s_ - s_ == 0.0))
-            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+            finite += (((((((out_t_P[0] - out_t_P[0]) + (out_t_P[1] - out_t_P[1])) + ((out_t_P[2] - out_t_P[2]) + (out_t_P[3] - out_t_P[3]))) + (((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])) + ((out_t_P_D_t_A[0] - out_t_P_D_t_A[0]) + ((out_t_P_D_t_A[1] - out_t_P_D_t_A[1]) + (out_t_P_D_t_A[2] - out_t_P_D_t_A[2]))))) + ((((out_t_P_D_t_A[3] - out_t_P_D_t_A[3]) + (out_t_P_D_t_A[4] - out_t_P_D_t_A[4])) + ((out_t_P_D_t_A[5] - out_t_P_D_t_A[5]) + ((out_t_P_D_t_A[6] - out_t_P_D_t_A[6]) + (out_t_P_D_t_A[7] - out_t_P_D_t_A[7])))) + (((out_t_P_D_t_A[8] - out_t_P_D_t_A[8]) + (out_t_P_D_t_A[9] - out_t_P_D_t_A[9])) + ((out_t_P_D_t_A[10] - out_t_P_D_t_A[10]) + ((out_t_P_D_t_A[11] - out_t_P_D_t_A[11]) + (out_t_P_D_t_A[12] - out_t_P_D_t_A[12])))))) + (((((out_t_P_D_t_A[13] - out_t_P_D_t_A[13]) + (out_t_P_D_t_A[14] - out_t_P_D_t_A[14])) + ((out_t_P_D_t_A[15] - out_t_P_D_t_A[15]) + ((out_t_P_D_t_A[16] - out_t_P_D_t_A[16]) + (out_t_P_D_t_A[17] - out_t_P_D_t_A[17])))) + (((out_t_P_D_t_A[18] - out_t_P_D_t_A[18]) + (out_t_P_D_t_A[19] - out_t_P_D_t_A[19])) + ((out_t_P_D_t_A[20] - out_t_P_D_t_A[20]) + ((out_t_P_D_t_A[21] - out_t_P_D_t_A[21]) + (out_t_P_D_t_A[22] - out_t_P_D_t_A[22]))))) + ((((out_t_P_D_t_A[23] - out_t_P_D_t_A[23]) + (out_t_P_D_t_A[24] - out_t_P_D_t_A[24])) + ((out_t_P_D_t_A[25] - out_t_P_D_t_A[25]) + ((out_t_P_D_t_A[26] - out_t_P_D_t_A[26]) + (out_t_P_D_t_A[27] - out_t_P_D_t_A[27])))) + (((out_t_P_D_t_A[28] - out_t_P_D_t_A[28]) + (out_t_P_D_t_A[29] - out_t_P_D_t_A[29])) + ((out_t_P_D_t_A[30] - out_t_P_D_t_A[30]) + ((out_t_P_D_t_A[31] - out_t_P_D_t_A[31]) + (out_t_P_D_t_A[32] - out_t_P_D_t_A[32]))))))) + ((((((out_t_P_D_t_A[33] - out_t_P_D_t_A[33]) + (out_t_P_D_t_A[34] - out_t_P_D_t_A[34])) + ((out_t_P_D_t_A[35] - out_t_P_D_t_A[35]) + (out_t_P_D_a[0] - out_t_P_D_a[0]))) + (((out_t_P_D_a[1] - out_t_P_D_a[1]) + (out_t_P_D_a[2] - out_t_P_D_a[2])) + ((out_t_P_D_a[3] - out_t_P_D_a[3]) + ((out_t_P_D_a[4] - out_t_P_D_a[4]) + (out_t_P_D_a[5] - out_t_P_D_a[5]))))) + ((((out_t_P_D_a[6] - out_t_P_D_a[6]) + (out_t_P_D_a[7] - out_t_P_D_a[7])) + ((out_t_P_D_a[8] - out_t_P_D_a[8]) + ((out_t_P_D_a[9] - out_t_P_D_a[9]) + (out_t_P_D_a[10] - out_t_P_D_a[10])))) + (((out_t_P_D_a[11] - out_t_P_D_a[11]) + (out_t_P_D_a[12] - out_t_P_D_a[12])) + ((out_t_P_D_a[13] - out_t_P_D_a[13]) + ((out_t_P_D_a[14] - out_t_P_D_a[14]) + (out_t_P_D_a[15] - out_t_P_D_a[15])))))) + (((((out_t_P_D_a[16] - out_t_P_D_a[16]) + (out_t_P_D_a[17] - out_t_P_D_a[17])) + ((out_t_P_D_p[0] - out_t_P_D_p[0]) + ((out_t_P_D_p[1] - out_t_P_D_p[1]) + (out_t_P_D_p[2] - out_t_P_D_p[2])))) + (((out_t_P_D_p[3] - out_t_P_D_p[3]) + (out_t_P_D_p[4] - out_t_P_D_p[4])) + ((out_t_P_D_p[5] - out_t_P_D_p[5]) + ((out_t_P_D_p[6] - out_t_P_D_p[6]) + (out_t_P_D_p[7] - out_t_P_D_p[7]))))) + ((((out_t_P_D_p[8] - out_t_P_D_p[8]) + (out_t_P_D_p[9] - out_t_P_D_p[9])) + ((out_t_P_D_p[10] - out_t_P_D_p[10]) + ((out_t_P_D_p[11] - out_t_P_D_p[11]) + (out_t_P_D_p[12] - out_t_P_D_p[12])))) + (((out_t_P_D_p[13] - out_t_P_D_p[13]) + (out_t_P_D_p[14] - out_t_P_D_p[14])) + ((out_t_P_D_p[15] - out_t_P_D_p[15]) + ((out_t_P_D_p[16] - out_t_P_D_p[16]) + (out_t_P_D_p[17] - out_t_P_D_p[17]))))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = (double)NAN;
-        t_P[1] = (double)NAN;
-        t_P[2] = (double)NAN;
-        t_P[3] = (double)NAN;
-        t_P[4] = (double)NAN;
-        t_P[5] = (double)NAN;
-        t_P_D_t_A[0] = (double)NAN;
-        t_P_D_t_A[1] = (double)NAN;
-        t_P_D_t_A[2] = (double)NAN;
-        t_P_D_t_A[3] = (double)NAN;
-        t_P_D_t_A[4] = (double)NAN;
-        t_P_D_t_A[5] = (double)NAN;
-        t_P_D_t_A[6] = (double)NAN;
-        t_P_D_t_A[7] = (double)NAN;
-        t_P_D_t_A[8] = (double)NAN;
-        t_P_D_t_A[9] = (double)NAN;
-        t_P_D_t_A[10] = (double)NAN;
-        t_P_D_t_A[11] = (double)NAN;
-        t_P_D_t_A[12] = (double)NAN;
-        t_P_D_t_A[13] = (double)NAN;
-        t_P_D_t_A[14] = (double)NAN;
-        t_P_D_t_A[15] = (double)NAN;
-        t_P_D_t_A[16] = (double)NAN;
-        t_P_D_t_A[17] = (double)NAN;
-        t_P_D_t_A[18] = (double)NAN;
-        t_P_D_t_A[19] = (double)NAN;
-        t_P_D_t_A[20] = (double)NAN;
-        t_P_D_t_A[21] = (double)NAN;
-        t_P_D_t_A[22] = (double)NAN;
-        t_P_D_t_A[23] = (double)NAN;
-        t_P_D_t_A[24] = (double)NAN;
-        t_P_D_t_A[25] = (double)NAN;
-        t_P_D_t_A[26] = (double)NAN;
-        t_P_D_t_A[27] = (double)NAN;
-        t_P_D_t_A[28] = (double)NAN;
-        t_P_D_t_A[29] = (double)NAN;
-        t_P_D_t_A[30] = (double)NAN;
-        t_P_D_t_A[31] = (double)NAN;
-        t_P_D_t_A[32] = (double)NAN;
-        t_P_D_t_A[33] = (double)NAN;
-        t_P_D_t_A[34] = (double)NAN;
-        t_P_D_t_A[35] = (double)NAN;
-        t_P_D_a[0] = (double)NAN;
-        t_P_D_a[1] = (double)NAN;
-        t_P_D_a[2] = (double)NAN;
-        t_P_D_a[3] = (double)NAN;
-        t_P_D_a[4] = (double)NAN;
-        t_P_D_a[5] = (double)NAN;
-        t_P_D_a[6] = (double)NAN;
-        t_P_D_a[7] = (double)NAN;
-        t_P_D_a[8] = (double)NAN;
-        t_P_D_a[9] = (double)NAN;
-        t_P_D_a[10] = (double)NAN;
-        t_P_D_a[11] = (double)NAN;
-        t_P_D_a[12] = (double)NAN;
-        t_P_D_a[13] = (double)NAN;
-        t_P_D_a[14] = (double)NAN;
-        t_P_D_a[15] = (double)NAN;
-        t_P_D_a[16] = (double)NAN;
-        t_P_D_a[17] = (double)NAN;
-        t_P_D_p[0] = (double)NAN;
-        t_P_D_p[1] = (double)NAN;
-        t_P_D_p[2] = (double)NAN;
-        t_P_D_p[3] = (double)NAN;
-        t_P_D_p[4] = (double)NAN;
-        t_P_D_p[5] = (double)NAN;
-        t_P_D_p[6] = (double)NAN;
-        t_P_D_p[7] = (double)NAN;
-        t_P_D_p[8] = (double)NAN;
-        t_P_D_p[9] = (double)NAN;
-        t_P_D_p[10] = (double)NAN;
-        t_P_D_p[11] = (double)NAN;
-        t_P_D_p[12] = (double)NAN;
-        t_P_D_p[13] = (double)NAN;
-        t_P_D_p[14] = (double)NAN;
-        t_P_D_p[15] = (double)NAN;
-        t_P_D_p[16] = (double)NAN;
-        t_P_D_p[17] = (double)NAN;
+        out_t_P[0] = (double)NAN;
+        out_t_P[1] = (double)NAN;
+        out_t_P[2] = (double)NAN;
+        out_t_P[3] = (double)NAN;
+        out_t_P[4] = (double)NAN;
+        out_t_P[5] = (double)NAN;
+        out_t_P_D_t_A[0] = (double)NAN;
+        out_t_P_D_t_A[1] = (double)NAN;
+        out_t_P_D_t_A[2] = (double)NAN;
+        out_t_P_D_t_A[3] = (double)NAN;
+        out_t_P_D_t_A[4] = (double)NAN;
+        out_t_P_D_t_A[5] = (double)NAN;
+        out_t_P_D_t_A[6] = (double)NAN;
+        out_t_P_D_t_A[7] = (double)NAN;
+        out_t_P_D_t_A[8] = (double)NAN;
+        out_t_P_D_t_A[9] = (double)NAN;
+        out_t_P_D_t_A[10] = (double)NAN;
+        out_t_P_D_t_A[11] = (double)NAN;
+        out_t_P_D_t_A[12] = (double)NAN;
+        out_t_P_D_t_A[13] = (double)NAN;
+        out_t_P_D_t_A[14] = (double)NAN;
+        out_t_P_D_t_A[15] = (double)NAN;
+        out_t_P_D_t_A[16] = (double)NAN;
+        out_t_P_D_t_A[17] = (double)NAN;
+        out_t_P_D_t_A[18] = (double)NAN;
+        out_t_P_D_t_A[19] = (double)NAN;
+        out_t_P_D_t_A[20] = (double)NAN;
+        out_t_P_D_t_A[21] = (double)NAN;
+        out_t_P_D_t_A[22] = (double)NAN;
+        out_t_P_D_t_A[23] = (double)NAN;
+        out_t_P_D_t_A[24] = (double)NAN;
+        out_t_P_D_t_A[25] = (double)NAN;
+        out_t_P_D_t_A[26] = (double)NAN;
+        out_t_P_D_t_A[27] = (double)NAN;
+        out_t_P_D_t_A[28] = (double)NAN;
+        out_t_P_D_t_A[29] = (double)NAN;
+        out_t_P_D_t_A[30] = (double)NAN;
+        out_t_P_D_t_A[31] = (double)NAN;
+        out_t_P_D_t_A[32] = (double)NAN;
+        out_t_P_D_t_A[33] = (double)NAN;
+        out_t_P_D_t_A[34] = (double)NAN;
+        out_t_P_D_t_A[35] = (double)NAN;
+        out_t_P_D_a[0] = (double)NAN;
+        out_t_P_D_a[1] = (double)NAN;
+        out_t_P_D_a[2] = (double)NAN;
+        out_t_P_D_a[3] = (double)NAN;
+        out_t_P_D_a[4] = (double)NAN;
+        out_t_P_D_a[5] = (double)NAN;
+        out_t_P_D_a[6] = (double)NAN;
+        out_t_P_D_a[7] = (double)NAN;
+        out_t_P_D_a[8] = (double)NAN;
+        out_t_P_D_a[9] = (double)NAN;
+        out_t_P_D_a[10] = (double)NAN;
+        out_t_P_D_a[11] = (double)NAN;
+        out_t_P_D_a[12] = (double)NAN;
+        out_t_P_D_a[13] = (double)NAN;
+        out_t_P_D_a[14] = (double)NAN;
+        out_t_P_D_a[15] = (double)NAN;
+        out_t_P_D_a[16] = (double)NAN;
+        out_t_P_D_a[17] = (double)NAN;
+        out_t_P_D_p[0] = (double)NAN;
+        out_t_P_D_p[1] = (double)NAN;
+        out_t_P_D_p[2] = (double)NAN;
+        out_t_P_D_p[3] = (double)NAN;
+        out_t_P_D_p[4] = (double)NAN;
+        out_t_P_D_p[5] = (double)NAN;
+        out_t_P_D_p[6] = (double)NAN;
+        out_t_P_D_p[7] = (double)NAN;
+        out_t_P_D_p[8] = (double)NAN;
+        out_t_P_D_p[9] = (double)NAN;
+        out_t_P_D_p[10] = (double)NAN;
+        out_t_P_D_p[11] = (double)NAN;
+        out_t_P_D_p[12] = (double)NAN;
+        out_t_P_D_p[13] = (double)NAN;
+        out_t_P_D_p[14] = (double)NAN;
+        out_t_P_D_p[15] = (double)NAN;
+        out_t_P_D_p[16] = (double)NAN;
+        out_t_P_D_p[17] = (double)NAN;
     }
     return status;
 }
@@ -1199,13 +1196,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_plain_p)(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6],
-    double t_P_D_t_A[36],
-    double t_P_D_a[18],
-    double t_P_D_p[18])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6],
+    double out_t_P_D_t_A[36],
+    double out_t_P_D_a[18],
+    double out_t_P_D_p[18])
 = rigidsym_c_twist_transfer_with_jacobians_plain;
 #endif
 
@@ -1216,13 +1213,13 @@ static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_plain_p)(
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer_with_jacobians saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6],
-    double t_P_D_t_A[36],
-    double t_P_D_a[18],
-    double t_P_D_p[18])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6],
+    double out_t_P_D_t_A[36],
+    double out_t_P_D_a[18],
+    double out_t_P_D_p[18])
 {
     const double *args[3];
     const int sizes[3] = {6, 3, 3};
@@ -1230,9 +1227,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
 #if RIGIDSYM_C_FLAGS_D
     uint64_t env_;
 #endif
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
+    args[0] = in_t_A;
+    args[1] = in_a;
+    args[2] = in_p;
     for (j = 0; j < 3; ++j)
         odd_ |= rigidsym_c_extreme_d(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1245,13 +1242,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        status = rigidsym_c_twist_transfer_with_jacobians_wide(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        status = rigidsym_c_twist_transfer_with_jacobians_wide(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
         done_ = 1;
     }
 #endif
 #if RIGIDSYM_C_RESCALE_D
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        const int r_ = rigidsym_c_twist_transfer_with_jacobians_rescue(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -1262,13 +1259,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_twist_transfer_with_jacobians_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        r_ = (*rigidsym_c_twist_transfer_with_jacobians_plain_p)(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_twist_transfer_with_jacobians_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        status |= rigidsym_c_twist_transfer_with_jacobians_plain(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1277,10 +1274,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6],    double t_P_D_t_A[36],    double t_P_D_a[18],    double t_P_D_p[18])
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6],    double out_t_P_D_t_A[36],    double out_t_P_D_a[18],    double out_t_P_D_p[18])
 {
     int status = 0, singular = 0;
     double finite = 0.0;
@@ -1288,27 +1285,27 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     uint64_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A), _mm_load_sd(t_A + 1))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 2), _mm_load_sd(t_A + 2 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(t_A + 4), _mm_load_sd(t_A + 4 + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(a), _mm_load_sd(a + 1)))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&a[2], *&p[0]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(p + 1), _mm_load_sd(p + 1 + 1)))));
+        __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A), _mm_load_sd(in_t_A + 1))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A + 2), _mm_load_sd(in_t_A + 2 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A + 4), _mm_load_sd(in_t_A + 4 + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_a), _mm_load_sd(in_a + 1)))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_a[2], *&in_p[0]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_p + 1), _mm_load_sd(in_p + 1 + 1)))));
         if (RIGIDSYM_C_Q_ODD_D(q_))
-            return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+            return rigidsym_c_twist_transfer_with_jacobians_odd(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 2 per vector register */
         rigidsym_c_vd oddv_ = {0, 0};
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 2));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(t_A + 4));
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(a));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_t_A));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_t_A + 2));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_t_A + 4));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_a));
         {
-            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&a[2]), rigidsym_c_bits_d(&p[0])};
+            const rigidsym_c_vd v_ = {rigidsym_c_bits_d(&in_a[2]), rigidsym_c_bits_d(&in_p[0])};
             oddv_ |= rigidsym_c_odd_vd(v_);
         }
-        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(p + 1));
+        oddv_ |= rigidsym_c_odd_vd(rigidsym_c_load_vd(in_p + 1));
         odd = oddv_[0] | oddv_[1];
     }
 #else
@@ -1317,121 +1314,121 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_t_A[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_a[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_D(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_D(odd, in_p[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+            return rigidsym_c_twist_transfer_with_jacobians_odd(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
     }
 #endif
     if (odd >> 63)
-        return rigidsym_c_twist_transfer_with_jacobians_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        return rigidsym_c_twist_transfer_with_jacobians_odd(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
 #endif
-    const double t_A_0 = t_A[0];
-    const double t_A_1 = t_A[1];
-    const double t_A_2 = t_A[2];
-    const double t_A_3 = t_A[3];
-    const double t_A_4 = t_A[4];
-    const double t_A_5 = t_A[5];
-    const double a_0 = a[0];
-    const double a_1 = a[1];
-    const double a_2 = a[2];
-    const double p_0 = p[0];
-    const double p_1 = p[1];
-    const double p_2 = p[2];
+    const double c0_t_A = in_t_A[0];
+    const double c1_t_A = in_t_A[1];
+    const double c2_t_A = in_t_A[2];
+    const double c3_t_A = in_t_A[3];
+    const double c4_t_A = in_t_A[4];
+    const double c5_t_A = in_t_A[5];
+    const double c0_a = in_a[0];
+    const double c1_a = in_a[1];
+    const double c2_a = in_a[2];
+    const double c0_p = in_p[0];
+    const double c1_p = in_p[1];
+    const double c2_p = in_p[2];
     {
-        const double x0 = a_2 - p_2;
+        const double x0 = c2_a - c2_p;
         const double x1 = -x0;
-        const double x2 = a_1 - p_1;
-        const double x3 = a_0 - p_0;
+        const double x2 = c1_a - c1_p;
+        const double x3 = c0_a - c0_p;
         const double x4 = -x3;
         const double x5 = -x2;
-        const double x6 = -t_A_1;
-        const double x7 = -t_A_2;
-        const double x8 = -t_A_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = t_A_1*x1 + t_A_2*x2 + t_A_3;
-        t_P[4] = t_A_0*x0 + t_A_2*x4 + t_A_4;
-        t_P[5] = t_A_0*x5 + t_A_1*x3 + t_A_5;
-        t_P_D_t_A[0] = 1.0;
-        t_P_D_t_A[1] = 0.0;
-        t_P_D_t_A[2] = 0.0;
-        t_P_D_t_A[3] = 0.0;
-        t_P_D_t_A[4] = 0.0;
-        t_P_D_t_A[5] = 0.0;
-        t_P_D_t_A[6] = 0.0;
-        t_P_D_t_A[7] = 1.0;
-        t_P_D_t_A[8] = 0.0;
-        t_P_D_t_A[9] = 0.0;
-        t_P_D_t_A[10] = 0.0;
-        t_P_D_t_A[11] = 0.0;
-        t_P_D_t_A[12] = 0.0;
-        t_P_D_t_A[13] = 0.0;
-        t_P_D_t_A[14] = 1.0;
-        t_P_D_t_A[15] = 0.0;
-        t_P_D_t_A[16] = 0.0;
-        t_P_D_t_A[17] = 0.0;
-        t_P_D_t_A[18] = 0.0;
-        t_P_D_t_A[19] = x1;
-        t_P_D_t_A[20] = x2;
-        t_P_D_t_A[21] = 1.0;
-        t_P_D_t_A[22] = 0.0;
-        t_P_D_t_A[23] = 0.0;
-        t_P_D_t_A[24] = x0;
-        t_P_D_t_A[25] = 0.0;
-        t_P_D_t_A[26] = x4;
-        t_P_D_t_A[27] = 0.0;
-        t_P_D_t_A[28] = 1.0;
-        t_P_D_t_A[29] = 0.0;
-        t_P_D_t_A[30] = x5;
-        t_P_D_t_A[31] = x3;
-        t_P_D_t_A[32] = 0.0;
-        t_P_D_t_A[33] = 0.0;
-        t_P_D_t_A[34] = 0.0;
-        t_P_D_t_A[35] = 1.0;
-        t_P_D_a[0] = 0.0;
-        t_P_D_a[1] = 0.0;
-        t_P_D_a[2] = 0.0;
-        t_P_D_a[3] = 0.0;
-        t_P_D_a[4] = 0.0;
-        t_P_D_a[5] = 0.0;
-        t_P_D_a[6] = 0.0;
-        t_P_D_a[7] = 0.0;
-        t_P_D_a[8] = 0.0;
-        t_P_D_a[9] = 0.0;
-        t_P_D_a[10] = t_A_2;
-        t_P_D_a[11] = x6;
-        t_P_D_a[12] = x7;
-        t_P_D_a[13] = 0.0;
-        t_P_D_a[14] = t_A_0;
-        t_P_D_a[15] = t_A_1;
-        t_P_D_a[16] = x8;
-        t_P_D_a[17] = 0.0;
-        t_P_D_p[0] = 0.0;
-        t_P_D_p[1] = 0.0;
-        t_P_D_p[2] = 0.0;
-        t_P_D_p[3] = 0.0;
-        t_P_D_p[4] = 0.0;
-        t_P_D_p[5] = 0.0;
-        t_P_D_p[6] = 0.0;
-        t_P_D_p[7] = 0.0;
-        t_P_D_p[8] = 0.0;
-        t_P_D_p[9] = 0.0;
-        t_P_D_p[10] = x7;
-        t_P_D_p[11] = t_A_1;
-        t_P_D_p[12] = t_A_2;
-        t_P_D_p[13] = 0.0;
-        t_P_D_p[14] = x8;
-        t_P_D_p[15] = x6;
-        t_P_D_p[16] = t_A_0;
-        t_P_D_p[17] = 0.0;
+        const double x6 = -c1_t_A;
+        const double x7 = -c2_t_A;
+        const double x8 = -c0_t_A;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = c1_t_A*x1 + c2_t_A*x2 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 + c2_t_A*x4 + c4_t_A;
+        out_t_P[5] = c0_t_A*x5 + c1_t_A*x3 + c5_t_A;
+        out_t_P_D_t_A[0] = 1.0;
+        out_t_P_D_t_A[1] = 0.0;
+        out_t_P_D_t_A[2] = 0.0;
+        out_t_P_D_t_A[3] = 0.0;
+        out_t_P_D_t_A[4] = 0.0;
+        out_t_P_D_t_A[5] = 0.0;
+        out_t_P_D_t_A[6] = 0.0;
+        out_t_P_D_t_A[7] = 1.0;
+        out_t_P_D_t_A[8] = 0.0;
+        out_t_P_D_t_A[9] = 0.0;
+        out_t_P_D_t_A[10] = 0.0;
+        out_t_P_D_t_A[11] = 0.0;
+        out_t_P_D_t_A[12] = 0.0;
+        out_t_P_D_t_A[13] = 0.0;
+        out_t_P_D_t_A[14] = 1.0;
+        out_t_P_D_t_A[15] = 0.0;
+        out_t_P_D_t_A[16] = 0.0;
+        out_t_P_D_t_A[17] = 0.0;
+        out_t_P_D_t_A[18] = 0.0;
+        out_t_P_D_t_A[19] = x1;
+        out_t_P_D_t_A[20] = x2;
+        out_t_P_D_t_A[21] = 1.0;
+        out_t_P_D_t_A[22] = 0.0;
+        out_t_P_D_t_A[23] = 0.0;
+        out_t_P_D_t_A[24] = x0;
+        out_t_P_D_t_A[25] = 0.0;
+        out_t_P_D_t_A[26] = x4;
+        out_t_P_D_t_A[27] = 0.0;
+        out_t_P_D_t_A[28] = 1.0;
+        out_t_P_D_t_A[29] = 0.0;
+        out_t_P_D_t_A[30] = x5;
+        out_t_P_D_t_A[31] = x3;
+        out_t_P_D_t_A[32] = 0.0;
+        out_t_P_D_t_A[33] = 0.0;
+        out_t_P_D_t_A[34] = 0.0;
+        out_t_P_D_t_A[35] = 1.0;
+        out_t_P_D_a[0] = 0.0;
+        out_t_P_D_a[1] = 0.0;
+        out_t_P_D_a[2] = 0.0;
+        out_t_P_D_a[3] = 0.0;
+        out_t_P_D_a[4] = 0.0;
+        out_t_P_D_a[5] = 0.0;
+        out_t_P_D_a[6] = 0.0;
+        out_t_P_D_a[7] = 0.0;
+        out_t_P_D_a[8] = 0.0;
+        out_t_P_D_a[9] = 0.0;
+        out_t_P_D_a[10] = c2_t_A;
+        out_t_P_D_a[11] = x6;
+        out_t_P_D_a[12] = x7;
+        out_t_P_D_a[13] = 0.0;
+        out_t_P_D_a[14] = c0_t_A;
+        out_t_P_D_a[15] = c1_t_A;
+        out_t_P_D_a[16] = x8;
+        out_t_P_D_a[17] = 0.0;
+        out_t_P_D_p[0] = 0.0;
+        out_t_P_D_p[1] = 0.0;
+        out_t_P_D_p[2] = 0.0;
+        out_t_P_D_p[3] = 0.0;
+        out_t_P_D_p[4] = 0.0;
+        out_t_P_D_p[5] = 0.0;
+        out_t_P_D_p[6] = 0.0;
+        out_t_P_D_p[7] = 0.0;
+        out_t_P_D_p[8] = 0.0;
+        out_t_P_D_p[9] = 0.0;
+        out_t_P_D_p[10] = x7;
+        out_t_P_D_p[11] = c1_t_A;
+        out_t_P_D_p[12] = c2_t_A;
+        out_t_P_D_p[13] = 0.0;
+        out_t_P_D_p[14] = x8;
+        out_t_P_D_p[15] = x6;
+        out_t_P_D_p[16] = c0_t_A;
+        out_t_P_D_p[17] = 0.0;
     }
     /* no division or root, and every output bounded by 2^205 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -1441,93 +1438,93 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const double s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        const double s_ = ((((((out_t_P[0] + out_t_P[1]) + (out_t_P[2] + out_t_P[3])) + ((out_t_P[4] + out_t_P[5]) + (out_t_P_D_t_A[0] + (out_t_P_D_t_A[1] + out_t_P_D_t_A[2])))) + (((out_t_P_D_t_A[3] + out_t_P_D_t_A[4]) + (out_t_P_D_t_A[5] + (out_t_P_D_t_A[6] + out_t_P_D_t_A[7]))) + ((out_t_P_D_t_A[8] + out_t_P_D_t_A[9]) + (out_t_P_D_t_A[10] + (out_t_P_D_t_A[11] + out_t_P_D_t_A[12]))))) + ((((out_t_P_D_t_A[13] + out_t_P_D_t_A[14]) + (out_t_P_D_t_A[15] + (out_t_P_D_t_A[16] + out_t_P_D_t_A[17]))) + ((out_t_P_D_t_A[18] + out_t_P_D_t_A[19]) + (out_t_P_D_t_A[20] + (out_t_P_D_t_A[21] + out_t_P_D_t_A[22])))) + (((out_t_P_D_t_A[23] + out_t_P_D_t_A[24]) + (out_t_P_D_t_A[25] + (out_t_P_D_t_A[26] + out_t_P_D_t_A[27]))) + ((out_t_P_D_t_A[28] + out_t_P_D_t_A[29]) + (out_t_P_D_t_A[30] + (out_t_P_D_t_A[31] + out_t_P_D_t_A[32])))))) + (((((out_t_P_D_t_A[33] + out_t_P_D_t_A[34]) + (out_t_P_D_t_A[35] + out_t_P_D_a[0])) + ((out_t_P_D_a[1] + out_t_P_D_a[2]) + (out_t_P_D_a[3] + (out_t_P_D_a[4] + out_t_P_D_a[5])))) + (((out_t_P_D_a[6] + out_t_P_D_a[7]) + (out_t_P_D_a[8] + (out_t_P_D_a[9] + out_t_P_D_a[10]))) + ((out_t_P_D_a[11] + out_t_P_D_a[12]) + (out_t_P_D_a[13] + (out_t_P_D_a[14] + out_t_P_D_a[15]))))) + ((((out_t_P_D_a[16] + out_t_P_D_a[17]) + (out_t_P_D_p[0] + (out_t_P_D_p[1] + out_t_P_D_p[2]))) + ((out_t_P_D_p[3] + out_t_P_D_p[4]) + (out_t_P_D_p[5] + (out_t_P_D_p[6] + out_t_P_D_p[7])))) + (((out_t_P_D_p[8] + out_t_P_D_p[9]) + (out_t_P_D_p[10] + (out_t_P_D_p[11] + out_t_P_D_p[12]))) + ((out_t_P_D_p[13] + out_t_P_D_p[14]) + (out_t_P_D_p[15] + (out_t_P_D_p[16] + out_t_P_D_p[17])))))));
         if (!(s_ - s_ == 0.0))
-            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+            finite += (((((((out_t_P[0] - out_t_P[0]) + (out_t_P[1] - out_t_P[1])) + ((out_t_P[2] - out_t_P[2]) + (out_t_P[3] - out_t_P[3]))) + (((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])) + ((out_t_P_D_t_A[0] - out_t_P_D_t_A[0]) + ((out_t_P_D_t_A[1] - out_t_P_D_t_A[1]) + (out_t_P_D_t_A[2] - out_t_P_D_t_A[2]))))) + ((((out_t_P_D_t_A[3] - out_t_P_D_t_A[3]) + (out_t_P_D_t_A[4] - out_t_P_D_t_A[4])) + ((out_t_P_D_t_A[5] - out_t_P_D_t_A[5]) + ((out_t_P_D_t_A[6] - out_t_P_D_t_A[6]) + (out_t_P_D_t_A[7] - out_t_P_D_t_A[7])))) + (((out_t_P_D_t_A[8] - out_t_P_D_t_A[8]) + (out_t_P_D_t_A[9] - out_t_P_D_t_A[9])) + ((out_t_P_D_t_A[10] - out_t_P_D_t_A[10]) + ((out_t_P_D_t_A[11] - out_t_P_D_t_A[11]) + (out_t_P_D_t_A[12] - out_t_P_D_t_A[12])))))) + (((((out_t_P_D_t_A[13] - out_t_P_D_t_A[13]) + (out_t_P_D_t_A[14] - out_t_P_D_t_A[14])) + ((out_t_P_D_t_A[15] - out_t_P_D_t_A[15]) + ((out_t_P_D_t_A[16] - out_t_P_D_t_A[16]) + (out_t_P_D_t_A[17] - out_t_P_D_t_A[17])))) + (((out_t_P_D_t_A[18] - out_t_P_D_t_A[18]) + (out_t_P_D_t_A[19] - out_t_P_D_t_A[19])) + ((out_t_P_D_t_A[20] - out_t_P_D_t_A[20]) + ((out_t_P_D_t_A[21] - out_t_P_D_t_A[21]) + (out_t_P_D_t_A[22] - out_t_P_D_t_A[22]))))) + ((((out_t_P_D_t_A[23] - out_t_P_D_t_A[23]) + (out_t_P_D_t_A[24] - out_t_P_D_t_A[24])) + ((out_t_P_D_t_A[25] - out_t_P_D_t_A[25]) + ((out_t_P_D_t_A[26] - out_t_P_D_t_A[26]) + (out_t_P_D_t_A[27] - out_t_P_D_t_A[27])))) + (((out_t_P_D_t_A[28] - out_t_P_D_t_A[28]) + (out_t_P_D_t_A[29] - out_t_P_D_t_A[29])) + ((out_t_P_D_t_A[30] - out_t_P_D_t_A[30]) + ((out_t_P_D_t_A[31] - out_t_P_D_t_A[31]) + (out_t_P_D_t_A[32] - out_t_P_D_t_A[32]))))))) + ((((((out_t_P_D_t_A[33] - out_t_P_D_t_A[33]) + (out_t_P_D_t_A[34] - out_t_P_D_t_A[34])) + ((out_t_P_D_t_A[35] - out_t_P_D_t_A[35]) + (out_t_P_D_a[0] - out_t_P_D_a[0]))) + (((out_t_P_D_a[1] - out_t_P_D_a[1]) + (out_t_P_D_a[2] - out_t_P_D_a[2])) + ((out_t_P_D_a[3] - out_t_P_D_a[3]) + ((out_t_P_D_a[4] - out_t_P_D_a[4]) + (out_t_P_D_a[5] - out_t_P_D_a[5]))))) + ((((out_t_P_D_a[6] - out_t_P_D_a[6]) + (out_t_P_D_a[7] - out_t_P_D_a[7])) + ((out_t_P_D_a[8] - out_t_P_D_a[8]) + ((out_t_P_D_a[9] - out_t_P_D_a[9]) + (out_t_P_D_a[10] - out_t_P_D_a[10])))) + (((out_t_P_D_a[11] - out_t_P_D_a[11]) + (out_t_P_D_a[12] - out_t_P_D_a[12])) + ((out_t_P_D_a[13] - out_t_P_D_a[13]) + ((out_t_P_D_a[14] - out_t_P_D_a[14]) + (out_t_P_D_a[15] - out_t_P_D_a[15])))))) + (((((out_t_P_D_a[16] - out_t_P_D_a[16]) + (out_t_P_D_a[17] - out_t_P_D_a[17])) + ((out_t_P_D_p[0] - out_t_P_D_p[0]) + ((out_t_P_D_p[1] - out_t_P_D_p[1]) + (out_t_P_D_p[2] - out_t_P_D_p[2])))) + (((out_t_P_D_p[3] - out_t_P_D_p[3]) + (out_t_P_D_p[4] - out_t_P_D_p[4])) + ((out_t_P_D_p[5] - out_t_P_D_p[5]) + ((out_t_P_D_p[6] - out_t_P_D_p[6]) + (out_t_P_D_p[7] - out_t_P_D_p[7]))))) + ((((out_t_P_D_p[8] - out_t_P_D_p[8]) + (out_t_P_D_p[9] - out_t_P_D_p[9])) + ((out_t_P_D_p[10] - out_t_P_D_p[10]) + ((out_t_P_D_p[11] - out_t_P_D_p[11]) + (out_t_P_D_p[12] - out_t_P_D_p[12])))) + (((out_t_P_D_p[13] - out_t_P_D_p[13]) + (out_t_P_D_p[14] - out_t_P_D_p[14])) + ((out_t_P_D_p[15] - out_t_P_D_p[15]) + ((out_t_P_D_p[16] - out_t_P_D_p[16]) + (out_t_P_D_p[17] - out_t_P_D_p[17]))))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = (double)NAN;
-        t_P[1] = (double)NAN;
-        t_P[2] = (double)NAN;
-        t_P[3] = (double)NAN;
-        t_P[4] = (double)NAN;
-        t_P[5] = (double)NAN;
-        t_P_D_t_A[0] = (double)NAN;
-        t_P_D_t_A[1] = (double)NAN;
-        t_P_D_t_A[2] = (double)NAN;
-        t_P_D_t_A[3] = (double)NAN;
-        t_P_D_t_A[4] = (double)NAN;
-        t_P_D_t_A[5] = (double)NAN;
-        t_P_D_t_A[6] = (double)NAN;
-        t_P_D_t_A[7] = (double)NAN;
-        t_P_D_t_A[8] = (double)NAN;
-        t_P_D_t_A[9] = (double)NAN;
-        t_P_D_t_A[10] = (double)NAN;
-        t_P_D_t_A[11] = (double)NAN;
-        t_P_D_t_A[12] = (double)NAN;
-        t_P_D_t_A[13] = (double)NAN;
-        t_P_D_t_A[14] = (double)NAN;
-        t_P_D_t_A[15] = (double)NAN;
-        t_P_D_t_A[16] = (double)NAN;
-        t_P_D_t_A[17] = (double)NAN;
-        t_P_D_t_A[18] = (double)NAN;
-        t_P_D_t_A[19] = (double)NAN;
-        t_P_D_t_A[20] = (double)NAN;
-        t_P_D_t_A[21] = (double)NAN;
-        t_P_D_t_A[22] = (double)NAN;
-        t_P_D_t_A[23] = (double)NAN;
-        t_P_D_t_A[24] = (double)NAN;
-        t_P_D_t_A[25] = (double)NAN;
-        t_P_D_t_A[26] = (double)NAN;
-        t_P_D_t_A[27] = (double)NAN;
-        t_P_D_t_A[28] = (double)NAN;
-        t_P_D_t_A[29] = (double)NAN;
-        t_P_D_t_A[30] = (double)NAN;
-        t_P_D_t_A[31] = (double)NAN;
-        t_P_D_t_A[32] = (double)NAN;
-        t_P_D_t_A[33] = (double)NAN;
-        t_P_D_t_A[34] = (double)NAN;
-        t_P_D_t_A[35] = (double)NAN;
-        t_P_D_a[0] = (double)NAN;
-        t_P_D_a[1] = (double)NAN;
-        t_P_D_a[2] = (double)NAN;
-        t_P_D_a[3] = (double)NAN;
-        t_P_D_a[4] = (double)NAN;
-        t_P_D_a[5] = (double)NAN;
-        t_P_D_a[6] = (double)NAN;
-        t_P_D_a[7] = (double)NAN;
-        t_P_D_a[8] = (double)NAN;
-        t_P_D_a[9] = (double)NAN;
-        t_P_D_a[10] = (double)NAN;
-        t_P_D_a[11] = (double)NAN;
-        t_P_D_a[12] = (double)NAN;
-        t_P_D_a[13] = (double)NAN;
-        t_P_D_a[14] = (double)NAN;
-        t_P_D_a[15] = (double)NAN;
-        t_P_D_a[16] = (double)NAN;
-        t_P_D_a[17] = (double)NAN;
-        t_P_D_p[0] = (double)NAN;
-        t_P_D_p[1] = (double)NAN;
-        t_P_D_p[2] = (double)NAN;
-        t_P_D_p[3] = (double)NAN;
-        t_P_D_p[4] = (double)NAN;
-        t_P_D_p[5] = (double)NAN;
-        t_P_D_p[6] = (double)NAN;
-        t_P_D_p[7] = (double)NAN;
-        t_P_D_p[8] = (double)NAN;
-        t_P_D_p[9] = (double)NAN;
-        t_P_D_p[10] = (double)NAN;
-        t_P_D_p[11] = (double)NAN;
-        t_P_D_p[12] = (double)NAN;
-        t_P_D_p[13] = (double)NAN;
-        t_P_D_p[14] = (double)NAN;
-        t_P_D_p[15] = (double)NAN;
-        t_P_D_p[16] = (double)NAN;
-        t_P_D_p[17] = (double)NAN;
+        out_t_P[0] = (double)NAN;
+        out_t_P[1] = (double)NAN;
+        out_t_P[2] = (double)NAN;
+        out_t_P[3] = (double)NAN;
+        out_t_P[4] = (double)NAN;
+        out_t_P[5] = (double)NAN;
+        out_t_P_D_t_A[0] = (double)NAN;
+        out_t_P_D_t_A[1] = (double)NAN;
+        out_t_P_D_t_A[2] = (double)NAN;
+        out_t_P_D_t_A[3] = (double)NAN;
+        out_t_P_D_t_A[4] = (double)NAN;
+        out_t_P_D_t_A[5] = (double)NAN;
+        out_t_P_D_t_A[6] = (double)NAN;
+        out_t_P_D_t_A[7] = (double)NAN;
+        out_t_P_D_t_A[8] = (double)NAN;
+        out_t_P_D_t_A[9] = (double)NAN;
+        out_t_P_D_t_A[10] = (double)NAN;
+        out_t_P_D_t_A[11] = (double)NAN;
+        out_t_P_D_t_A[12] = (double)NAN;
+        out_t_P_D_t_A[13] = (double)NAN;
+        out_t_P_D_t_A[14] = (double)NAN;
+        out_t_P_D_t_A[15] = (double)NAN;
+        out_t_P_D_t_A[16] = (double)NAN;
+        out_t_P_D_t_A[17] = (double)NAN;
+        out_t_P_D_t_A[18] = (double)NAN;
+        out_t_P_D_t_A[19] = (double)NAN;
+        out_t_P_D_t_A[20] = (double)NAN;
+        out_t_P_D_t_A[21] = (double)NAN;
+        out_t_P_D_t_A[22] = (double)NAN;
+        out_t_P_D_t_A[23] = (double)NAN;
+        out_t_P_D_t_A[24] = (double)NAN;
+        out_t_P_D_t_A[25] = (double)NAN;
+        out_t_P_D_t_A[26] = (double)NAN;
+        out_t_P_D_t_A[27] = (double)NAN;
+        out_t_P_D_t_A[28] = (double)NAN;
+        out_t_P_D_t_A[29] = (double)NAN;
+        out_t_P_D_t_A[30] = (double)NAN;
+        out_t_P_D_t_A[31] = (double)NAN;
+        out_t_P_D_t_A[32] = (double)NAN;
+        out_t_P_D_t_A[33] = (double)NAN;
+        out_t_P_D_t_A[34] = (double)NAN;
+        out_t_P_D_t_A[35] = (double)NAN;
+        out_t_P_D_a[0] = (double)NAN;
+        out_t_P_D_a[1] = (double)NAN;
+        out_t_P_D_a[2] = (double)NAN;
+        out_t_P_D_a[3] = (double)NAN;
+        out_t_P_D_a[4] = (double)NAN;
+        out_t_P_D_a[5] = (double)NAN;
+        out_t_P_D_a[6] = (double)NAN;
+        out_t_P_D_a[7] = (double)NAN;
+        out_t_P_D_a[8] = (double)NAN;
+        out_t_P_D_a[9] = (double)NAN;
+        out_t_P_D_a[10] = (double)NAN;
+        out_t_P_D_a[11] = (double)NAN;
+        out_t_P_D_a[12] = (double)NAN;
+        out_t_P_D_a[13] = (double)NAN;
+        out_t_P_D_a[14] = (double)NAN;
+        out_t_P_D_a[15] = (double)NAN;
+        out_t_P_D_a[16] = (double)NAN;
+        out_t_P_D_a[17] = (double)NAN;
+        out_t_P_D_p[0] = (double)NAN;
+        out_t_P_D_p[1] = (double)NAN;
+        out_t_P_D_p[2] = (double)NAN;
+        out_t_P_D_p[3] = (double)NAN;
+        out_t_P_D_p[4] = (double)NAN;
+        out_t_P_D_p[5] = (double)NAN;
+        out_t_P_D_p[6] = (double)NAN;
+        out_t_P_D_p[7] = (double)NAN;
+        out_t_P_D_p[8] = (double)NAN;
+        out_t_P_D_p[9] = (double)NAN;
+        out_t_P_D_p[10] = (double)NAN;
+        out_t_P_D_p[11] = (double)NAN;
+        out_t_P_D_p[12] = (double)NAN;
+        out_t_P_D_p[13] = (double)NAN;
+        out_t_P_D_p[14] = (double)NAN;
+        out_t_P_D_p[15] = (double)NAN;
+        out_t_P_D_p[16] = (double)NAN;
+        out_t_P_D_p[17] = (double)NAN;
     }
     return status;
 }
@@ -1535,26 +1532,26 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
     size_t count,
-    const double *t_A,
-    const double *a,
-    const double *p,
-    double *t_P,
-    double *t_P_D_t_A,
-    double *t_P_D_a,
-    double *t_P_D_p,
+    const double *in_t_A,
+    const double *in_a,
+    const double *in_p,
+    double *out_t_P,
+    double *out_t_P_D_t_A,
+    double *out_t_P_D_a,
+    double *out_t_P_D_p,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_twist_transfer_with_jacobians(
-            t_A + 6 * i_,
-            a + 3 * i_,
-            p + 3 * i_,
-            t_P + 6 * i_,
-            t_P_D_t_A + 36 * i_,
-            t_P_D_a + 18 * i_,
-            t_P_D_p + 18 * i_);
+            in_t_A + 6 * i_,
+            in_a + 3 * i_,
+            in_p + 3 * i_,
+            out_t_P + 6 * i_,
+            out_t_P_D_t_A + 36 * i_,
+            out_t_P_D_a + 18 * i_,
+            out_t_P_D_p + 18 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;
@@ -1568,13 +1565,13 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
  * on as without it). Kept out of the scalar function, so that its fast path stays a leaf. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6],
-    float t_P_D_t_A[36],
-    float t_P_D_a[18],
-    float t_P_D_p[18])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6],
+    float out_t_P_D_t_A[36],
+    float out_t_P_D_a[18],
+    float out_t_P_D_p[18])
 {
     int status, still_;
     float finite;
@@ -1584,9 +1581,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
      * constraints tie them to (exact), evaluates, and scales the outputs back; the first
      * plan under which every argument is of ordinary magnitude and no nonzero component
      * was flushed to zero is taken (else the flag stays) */
-    float rs_t_A[6];
-    /* the plans' exponents: rs_k<i>_, apart from the scaled copies rs_<argument> (no
-     * argument name ends in _) */
+    float sc_t_A[6];
+    /* the plans' exponents: rs_k<i>_ (the scaled copies of the arguments: sc_<argument>) */
     int rs_k0_ = 0;
 #if !RIGIDSYM_C_FLAGS_F
     /* a flush-to-zero mode (DAZ, FTZ, Arm's FZ: an application linked with -Ofast sets
@@ -1594,40 +1590,40 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
      * for the cold path (rigidsym_c_fp_enter), a sample with a subnormal input keeps its
      * flag; normal ones are scaled (a power of two of a normal number is exact, a flushed
      * one is caught below) */
-    if (rigidsym_c_subnormal_f(t_A, 6))
+    if (rigidsym_c_subnormal_f(in_t_A, 6))
         return -1;
-    if (rigidsym_c_subnormal_f(a, 3))
+    if (rigidsym_c_subnormal_f(in_a, 3))
         return -1;
-    if (rigidsym_c_subnormal_f(p, 3))
+    if (rigidsym_c_subnormal_f(in_p, 3))
         return -1;
 #endif
     /* plan 0: free t_A */
     still_ = 0;
-    rs_k0_ = -(rigidsym_c_exponent_f(t_A, 6));
-    still_ |= rigidsym_c_scale_f(t_A, rs_t_A, 6, rs_k0_);
-    still_ |= rigidsym_c_extreme_f(a, 3);
-    still_ |= rigidsym_c_extreme_f(p, 3);
+    rs_k0_ = -(rigidsym_c_exponent_f(in_t_A, 6));
+    still_ |= rigidsym_c_scale_f(in_t_A, sc_t_A, 6, rs_k0_);
+    still_ |= rigidsym_c_extreme_f(in_a, 3);
+    still_ |= rigidsym_c_extreme_f(in_p, 3);
     if (!still_) {  /* every input now ordinary: the function itself, scaled back */
-        status = rigidsym_c_twist_transfer_with_jacobians_f32(rs_t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
-        status |= rigidsym_c_back_f(&t_P[0], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[1], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[2], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[3], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[4], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P[5], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_a[10], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_a[11], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_a[12], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_a[14], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_a[15], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_a[16], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_p[10], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_p[11], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_p[12], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_p[14], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_p[15], rs_k0_);
-        status |= rigidsym_c_back_f(&t_P_D_p[16], rs_k0_);
-        finite = (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+        status = rigidsym_c_twist_transfer_with_jacobians_f32(sc_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
+        status |= rigidsym_c_back_f(&out_t_P[0], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[1], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[2], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[3], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[4], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P[5], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_a[10], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_a[11], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_a[12], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_a[14], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_a[15], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_a[16], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_p[10], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_p[11], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_p[12], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_p[14], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_p[15], rs_k0_);
+        status |= rigidsym_c_back_f(&out_t_P_D_p[16], rs_k0_);
+        finite = (((((((out_t_P[0] - out_t_P[0]) + (out_t_P[1] - out_t_P[1])) + ((out_t_P[2] - out_t_P[2]) + (out_t_P[3] - out_t_P[3]))) + (((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])) + ((out_t_P_D_t_A[0] - out_t_P_D_t_A[0]) + ((out_t_P_D_t_A[1] - out_t_P_D_t_A[1]) + (out_t_P_D_t_A[2] - out_t_P_D_t_A[2]))))) + ((((out_t_P_D_t_A[3] - out_t_P_D_t_A[3]) + (out_t_P_D_t_A[4] - out_t_P_D_t_A[4])) + ((out_t_P_D_t_A[5] - out_t_P_D_t_A[5]) + ((out_t_P_D_t_A[6] - out_t_P_D_t_A[6]) + (out_t_P_D_t_A[7] - out_t_P_D_t_A[7])))) + (((out_t_P_D_t_A[8] - out_t_P_D_t_A[8]) + (out_t_P_D_t_A[9] - out_t_P_D_t_A[9])) + ((out_t_P_D_t_A[10] - out_t_P_D_t_A[10]) + ((out_t_P_D_t_A[11] - out_t_P_D_t_A[11]) + (out_t_P_D_t_A[12] - out_t_P_D_t_A[12])))))) + (((((out_t_P_D_t_A[13] - out_t_P_D_t_A[13]) + (out_t_P_D_t_A[14] - out_t_P_D_t_A[14])) + ((out_t_P_D_t_A[15] - out_t_P_D_t_A[15]) + ((out_t_P_D_t_A[16] - out_t_P_D_t_A[16]) + (out_t_P_D_t_A[17] - out_t_P_D_t_A[17])))) + (((out_t_P_D_t_A[18] - out_t_P_D_t_A[18]) + (out_t_P_D_t_A[19] - out_t_P_D_t_A[19])) + ((out_t_P_D_t_A[20] - out_t_P_D_t_A[20]) + ((out_t_P_D_t_A[21] - out_t_P_D_t_A[21]) + (out_t_P_D_t_A[22] - out_t_P_D_t_A[22]))))) + ((((out_t_P_D_t_A[23] - out_t_P_D_t_A[23]) + (out_t_P_D_t_A[24] - out_t_P_D_t_A[24])) + ((out_t_P_D_t_A[25] - out_t_P_D_t_A[25]) + ((out_t_P_D_t_A[26] - out_t_P_D_t_A[26]) + (out_t_P_D_t_A[27] - out_t_P_D_t_A[27])))) + (((out_t_P_D_t_A[28] - out_t_P_D_t_A[28]) + (out_t_P_D_t_A[29] - out_t_P_D_t_A[29])) + ((out_t_P_D_t_A[30] - out_t_P_D_t_A[30]) + ((out_t_P_D_t_A[31] - out_t_P_D_t_A[31]) + (out_t_P_D_t_A[32] - out_t_P_D_t_A[32]))))))) + ((((((out_t_P_D_t_A[33] - out_t_P_D_t_A[33]) + (out_t_P_D_t_A[34] - out_t_P_D_t_A[34])) + ((out_t_P_D_t_A[35] - out_t_P_D_t_A[35]) + (out_t_P_D_a[0] - out_t_P_D_a[0]))) + (((out_t_P_D_a[1] - out_t_P_D_a[1]) + (out_t_P_D_a[2] - out_t_P_D_a[2])) + ((out_t_P_D_a[3] - out_t_P_D_a[3]) + ((out_t_P_D_a[4] - out_t_P_D_a[4]) + (out_t_P_D_a[5] - out_t_P_D_a[5]))))) + ((((out_t_P_D_a[6] - out_t_P_D_a[6]) + (out_t_P_D_a[7] - out_t_P_D_a[7])) + ((out_t_P_D_a[8] - out_t_P_D_a[8]) + ((out_t_P_D_a[9] - out_t_P_D_a[9]) + (out_t_P_D_a[10] - out_t_P_D_a[10])))) + (((out_t_P_D_a[11] - out_t_P_D_a[11]) + (out_t_P_D_a[12] - out_t_P_D_a[12])) + ((out_t_P_D_a[13] - out_t_P_D_a[13]) + ((out_t_P_D_a[14] - out_t_P_D_a[14]) + (out_t_P_D_a[15] - out_t_P_D_a[15])))))) + (((((out_t_P_D_a[16] - out_t_P_D_a[16]) + (out_t_P_D_a[17] - out_t_P_D_a[17])) + ((out_t_P_D_p[0] - out_t_P_D_p[0]) + ((out_t_P_D_p[1] - out_t_P_D_p[1]) + (out_t_P_D_p[2] - out_t_P_D_p[2])))) + (((out_t_P_D_p[3] - out_t_P_D_p[3]) + (out_t_P_D_p[4] - out_t_P_D_p[4])) + ((out_t_P_D_p[5] - out_t_P_D_p[5]) + ((out_t_P_D_p[6] - out_t_P_D_p[6]) + (out_t_P_D_p[7] - out_t_P_D_p[7]))))) + ((((out_t_P_D_p[8] - out_t_P_D_p[8]) + (out_t_P_D_p[9] - out_t_P_D_p[9])) + ((out_t_P_D_p[10] - out_t_P_D_p[10]) + ((out_t_P_D_p[11] - out_t_P_D_p[11]) + (out_t_P_D_p[12] - out_t_P_D_p[12])))) + (((out_t_P_D_p[13] - out_t_P_D_p[13]) + (out_t_P_D_p[14] - out_t_P_D_p[14])) + ((out_t_P_D_p[15] - out_t_P_D_p[15]) + ((out_t_P_D_p[16] - out_t_P_D_p[16]) + (out_t_P_D_p[17] - out_t_P_D_p[17]))))))));
         if (finite != finite && !(status & RIGIDSYM_C_SINGULAR))
             status |= RIGIDSYM_C_NONFINITE_RESULT;
         return status;
@@ -1640,208 +1636,208 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_rescue(
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_twist_transfer_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_plain(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6],
-    float t_P_D_t_A[36],
-    float t_P_D_a[18],
-    float t_P_D_p[18])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6],
+    float out_t_P_D_t_A[36],
+    float out_t_P_D_a[18],
+    float out_t_P_D_p[18])
 {
     RIGIDSYM_C_STRICT_FP
     int status = 0, singular = 0;
     float finite = 0.0f;
-    const float t_A_0 = t_A[0];
-    const float t_A_1 = t_A[1];
-    const float t_A_2 = t_A[2];
-    const float t_A_3 = t_A[3];
-    const float t_A_4 = t_A[4];
-    const float t_A_5 = t_A[5];
-    const float a_0 = a[0];
-    const float a_1 = a[1];
-    const float a_2 = a[2];
-    const float p_0 = p[0];
-    const float p_1 = p[1];
-    const float p_2 = p[2];
+    const float c0_t_A = in_t_A[0];
+    const float c1_t_A = in_t_A[1];
+    const float c2_t_A = in_t_A[2];
+    const float c3_t_A = in_t_A[3];
+    const float c4_t_A = in_t_A[4];
+    const float c5_t_A = in_t_A[5];
+    const float c0_a = in_a[0];
+    const float c1_a = in_a[1];
+    const float c2_a = in_a[2];
+    const float c0_p = in_p[0];
+    const float c1_p = in_p[1];
+    const float c2_p = in_p[2];
     {
-        const float x0 = a_2 - p_2;
+        const float x0 = c2_a - c2_p;
         const float x1 = -x0;
-        const float x2 = a_1 - p_1;
-        const float x3 = a_0 - p_0;
+        const float x2 = c1_a - c1_p;
+        const float x3 = c0_a - c0_p;
         const float x4 = -x3;
         const float x5 = -x2;
-        const float x6 = -t_A_1;
-        const float x7 = -t_A_2;
-        const float x8 = -t_A_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = t_A_1*x1 + t_A_2*x2 + t_A_3;
-        t_P[4] = t_A_0*x0 + t_A_2*x4 + t_A_4;
-        t_P[5] = t_A_0*x5 + t_A_1*x3 + t_A_5;
-        t_P_D_t_A[0] = 1.0f;
-        t_P_D_t_A[1] = 0.0f;
-        t_P_D_t_A[2] = 0.0f;
-        t_P_D_t_A[3] = 0.0f;
-        t_P_D_t_A[4] = 0.0f;
-        t_P_D_t_A[5] = 0.0f;
-        t_P_D_t_A[6] = 0.0f;
-        t_P_D_t_A[7] = 1.0f;
-        t_P_D_t_A[8] = 0.0f;
-        t_P_D_t_A[9] = 0.0f;
-        t_P_D_t_A[10] = 0.0f;
-        t_P_D_t_A[11] = 0.0f;
-        t_P_D_t_A[12] = 0.0f;
-        t_P_D_t_A[13] = 0.0f;
-        t_P_D_t_A[14] = 1.0f;
-        t_P_D_t_A[15] = 0.0f;
-        t_P_D_t_A[16] = 0.0f;
-        t_P_D_t_A[17] = 0.0f;
-        t_P_D_t_A[18] = 0.0f;
-        t_P_D_t_A[19] = x1;
-        t_P_D_t_A[20] = x2;
-        t_P_D_t_A[21] = 1.0f;
-        t_P_D_t_A[22] = 0.0f;
-        t_P_D_t_A[23] = 0.0f;
-        t_P_D_t_A[24] = x0;
-        t_P_D_t_A[25] = 0.0f;
-        t_P_D_t_A[26] = x4;
-        t_P_D_t_A[27] = 0.0f;
-        t_P_D_t_A[28] = 1.0f;
-        t_P_D_t_A[29] = 0.0f;
-        t_P_D_t_A[30] = x5;
-        t_P_D_t_A[31] = x3;
-        t_P_D_t_A[32] = 0.0f;
-        t_P_D_t_A[33] = 0.0f;
-        t_P_D_t_A[34] = 0.0f;
-        t_P_D_t_A[35] = 1.0f;
-        t_P_D_a[0] = 0.0f;
-        t_P_D_a[1] = 0.0f;
-        t_P_D_a[2] = 0.0f;
-        t_P_D_a[3] = 0.0f;
-        t_P_D_a[4] = 0.0f;
-        t_P_D_a[5] = 0.0f;
-        t_P_D_a[6] = 0.0f;
-        t_P_D_a[7] = 0.0f;
-        t_P_D_a[8] = 0.0f;
-        t_P_D_a[9] = 0.0f;
-        t_P_D_a[10] = t_A_2;
-        t_P_D_a[11] = x6;
-        t_P_D_a[12] = x7;
-        t_P_D_a[13] = 0.0f;
-        t_P_D_a[14] = t_A_0;
-        t_P_D_a[15] = t_A_1;
-        t_P_D_a[16] = x8;
-        t_P_D_a[17] = 0.0f;
-        t_P_D_p[0] = 0.0f;
-        t_P_D_p[1] = 0.0f;
-        t_P_D_p[2] = 0.0f;
-        t_P_D_p[3] = 0.0f;
-        t_P_D_p[4] = 0.0f;
-        t_P_D_p[5] = 0.0f;
-        t_P_D_p[6] = 0.0f;
-        t_P_D_p[7] = 0.0f;
-        t_P_D_p[8] = 0.0f;
-        t_P_D_p[9] = 0.0f;
-        t_P_D_p[10] = x7;
-        t_P_D_p[11] = t_A_1;
-        t_P_D_p[12] = t_A_2;
-        t_P_D_p[13] = 0.0f;
-        t_P_D_p[14] = x8;
-        t_P_D_p[15] = x6;
-        t_P_D_p[16] = t_A_0;
-        t_P_D_p[17] = 0.0f;
+        const float x6 = -c1_t_A;
+        const float x7 = -c2_t_A;
+        const float x8 = -c0_t_A;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = c1_t_A*x1 + c2_t_A*x2 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 + c2_t_A*x4 + c4_t_A;
+        out_t_P[5] = c0_t_A*x5 + c1_t_A*x3 + c5_t_A;
+        out_t_P_D_t_A[0] = 1.0f;
+        out_t_P_D_t_A[1] = 0.0f;
+        out_t_P_D_t_A[2] = 0.0f;
+        out_t_P_D_t_A[3] = 0.0f;
+        out_t_P_D_t_A[4] = 0.0f;
+        out_t_P_D_t_A[5] = 0.0f;
+        out_t_P_D_t_A[6] = 0.0f;
+        out_t_P_D_t_A[7] = 1.0f;
+        out_t_P_D_t_A[8] = 0.0f;
+        out_t_P_D_t_A[9] = 0.0f;
+        out_t_P_D_t_A[10] = 0.0f;
+        out_t_P_D_t_A[11] = 0.0f;
+        out_t_P_D_t_A[12] = 0.0f;
+        out_t_P_D_t_A[13] = 0.0f;
+        out_t_P_D_t_A[14] = 1.0f;
+        out_t_P_D_t_A[15] = 0.0f;
+        out_t_P_D_t_A[16] = 0.0f;
+        out_t_P_D_t_A[17] = 0.0f;
+        out_t_P_D_t_A[18] = 0.0f;
+        out_t_P_D_t_A[19] = x1;
+        out_t_P_D_t_A[20] = x2;
+        out_t_P_D_t_A[21] = 1.0f;
+        out_t_P_D_t_A[22] = 0.0f;
+        out_t_P_D_t_A[23] = 0.0f;
+        out_t_P_D_t_A[24] = x0;
+        out_t_P_D_t_A[25] = 0.0f;
+        out_t_P_D_t_A[26] = x4;
+        out_t_P_D_t_A[27] = 0.0f;
+        out_t_P_D_t_A[28] = 1.0f;
+        out_t_P_D_t_A[29] = 0.0f;
+        out_t_P_D_t_A[30] = x5;
+        out_t_P_D_t_A[31] = x3;
+        out_t_P_D_t_A[32] = 0.0f;
+        out_t_P_D_t_A[33] = 0.0f;
+        out_t_P_D_t_A[34] = 0.0f;
+        out_t_P_D_t_A[35] = 1.0f;
+        out_t_P_D_a[0] = 0.0f;
+        out_t_P_D_a[1] = 0.0f;
+        out_t_P_D_a[2] = 0.0f;
+        out_t_P_D_a[3] = 0.0f;
+        out_t_P_D_a[4] = 0.0f;
+        out_t_P_D_a[5] = 0.0f;
+        out_t_P_D_a[6] = 0.0f;
+        out_t_P_D_a[7] = 0.0f;
+        out_t_P_D_a[8] = 0.0f;
+        out_t_P_D_a[9] = 0.0f;
+        out_t_P_D_a[10] = c2_t_A;
+        out_t_P_D_a[11] = x6;
+        out_t_P_D_a[12] = x7;
+        out_t_P_D_a[13] = 0.0f;
+        out_t_P_D_a[14] = c0_t_A;
+        out_t_P_D_a[15] = c1_t_A;
+        out_t_P_D_a[16] = x8;
+        out_t_P_D_a[17] = 0.0f;
+        out_t_P_D_p[0] = 0.0f;
+        out_t_P_D_p[1] = 0.0f;
+        out_t_P_D_p[2] = 0.0f;
+        out_t_P_D_p[3] = 0.0f;
+        out_t_P_D_p[4] = 0.0f;
+        out_t_P_D_p[5] = 0.0f;
+        out_t_P_D_p[6] = 0.0f;
+        out_t_P_D_p[7] = 0.0f;
+        out_t_P_D_p[8] = 0.0f;
+        out_t_P_D_p[9] = 0.0f;
+        out_t_P_D_p[10] = x7;
+        out_t_P_D_p[11] = c1_t_A;
+        out_t_P_D_p[12] = c2_t_A;
+        out_t_P_D_p[13] = 0.0f;
+        out_t_P_D_p[14] = x8;
+        out_t_P_D_p[15] = x6;
+        out_t_P_D_p[16] = c0_t_A;
+        out_t_P_D_p[17] = 0.0f;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        const float s_ = ((((((out_t_P[0] + out_t_P[1]) + (out_t_P[2] + out_t_P[3])) + ((out_t_P[4] + out_t_P[5]) + (out_t_P_D_t_A[0] + (out_t_P_D_t_A[1] + out_t_P_D_t_A[2])))) + (((out_t_P_D_t_A[3] + out_t_P_D_t_A[4]) + (out_t_P_D_t_A[5] + (out_t_P_D_t_A[6] + out_t_P_D_t_A[7]))) + ((out_t_P_D_t_A[8] + out_t_P_D_t_A[9]) + (out_t_P_D_t_A[10] + (out_t_P_D_t_A[11] + out_t_P_D_t_A[12]))))) + ((((out_t_P_D_t_A[13] + out_t_P_D_t_A[14]) + (out_t_P_D_t_A[15] + (out_t_P_D_t_A[16] + out_t_P_D_t_A[17]))) + ((out_t_P_D_t_A[18] + out_t_P_D_t_A[19]) + (out_t_P_D_t_A[20] + (out_t_P_D_t_A[21] + out_t_P_D_t_A[22])))) + (((out_t_P_D_t_A[23] + out_t_P_D_t_A[24]) + (out_t_P_D_t_A[25] + (out_t_P_D_t_A[26] + out_t_P_D_t_A[27]))) + ((out_t_P_D_t_A[28] + out_t_P_D_t_A[29]) + (out_t_P_D_t_A[30] + (out_t_P_D_t_A[31] + out_t_P_D_t_A[32])))))) + (((((out_t_P_D_t_A[33] + out_t_P_D_t_A[34]) + (out_t_P_D_t_A[35] + out_t_P_D_a[0])) + ((out_t_P_D_a[1] + out_t_P_D_a[2]) + (out_t_P_D_a[3] + (out_t_P_D_a[4] + out_t_P_D_a[5])))) + (((out_t_P_D_a[6] + out_t_P_D_a[7]) + (out_t_P_D_a[8] + (out_t_P_D_a[9] + out_t_P_D_a[10]))) + ((out_t_P_D_a[11] + out_t_P_D_a[12]) + (out_t_P_D_a[13] + (out_t_P_D_a[14] + out_t_P_D_a[15]))))) + ((((out_t_P_D_a[16] + out_t_P_D_a[17]) + (out_t_P_D_p[0] + (out_t_P_D_p[1] + out_t_P_D_p[2]))) + ((out_t_P_D_p[3] + out_t_P_D_p[4]) + (out_t_P_D_p[5] + (out_t_P_D_p[6] + out_t_P_D_p[7])))) + (((out_t_P_D_p[8] + out_t_P_D_p[9]) + (out_t_P_D_p[10] + (out_t_P_D_p[11] + out_t_P_D_p[12]))) + ((out_t_P_D_p[13] + out_t_P_D_p[14]) + (out_t_P_D_p[15] + (out_t_P_D_p[16] + out_t_P_D_p[17])))))));
         if (!(s_ - s_ == 0.0f))
-            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+            finite += (((((((out_t_P[0] - out_t_P[0]) + (out_t_P[1] - out_t_P[1])) + ((out_t_P[2] - out_t_P[2]) + (out_t_P[3] - out_t_P[3]))) + (((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])) + ((out_t_P_D_t_A[0] - out_t_P_D_t_A[0]) + ((out_t_P_D_t_A[1] - out_t_P_D_t_A[1]) + (out_t_P_D_t_A[2] - out_t_P_D_t_A[2]))))) + ((((out_t_P_D_t_A[3] - out_t_P_D_t_A[3]) + (out_t_P_D_t_A[4] - out_t_P_D_t_A[4])) + ((out_t_P_D_t_A[5] - out_t_P_D_t_A[5]) + ((out_t_P_D_t_A[6] - out_t_P_D_t_A[6]) + (out_t_P_D_t_A[7] - out_t_P_D_t_A[7])))) + (((out_t_P_D_t_A[8] - out_t_P_D_t_A[8]) + (out_t_P_D_t_A[9] - out_t_P_D_t_A[9])) + ((out_t_P_D_t_A[10] - out_t_P_D_t_A[10]) + ((out_t_P_D_t_A[11] - out_t_P_D_t_A[11]) + (out_t_P_D_t_A[12] - out_t_P_D_t_A[12])))))) + (((((out_t_P_D_t_A[13] - out_t_P_D_t_A[13]) + (out_t_P_D_t_A[14] - out_t_P_D_t_A[14])) + ((out_t_P_D_t_A[15] - out_t_P_D_t_A[15]) + ((out_t_P_D_t_A[16] - out_t_P_D_t_A[16]) + (out_t_P_D_t_A[17] - out_t_P_D_t_A[17])))) + (((out_t_P_D_t_A[18] - out_t_P_D_t_A[18]) + (out_t_P_D_t_A[19] - out_t_P_D_t_A[19])) + ((out_t_P_D_t_A[20] - out_t_P_D_t_A[20]) + ((out_t_P_D_t_A[21] - out_t_P_D_t_A[21]) + (out_t_P_D_t_A[22] - out_t_P_D_t_A[22]))))) + ((((out_t_P_D_t_A[23] - out_t_P_D_t_A[23]) + (out_t_P_D_t_A[24] - out_t_P_D_t_A[24])) + ((out_t_P_D_t_A[25] - out_t_P_D_t_A[25]) + ((out_t_P_D_t_A[26] - out_t_P_D_t_A[26]) + (out_t_P_D_t_A[27] - out_t_P_D_t_A[27])))) + (((out_t_P_D_t_A[28] - out_t_P_D_t_A[28]) + (out_t_P_D_t_A[29] - out_t_P_D_t_A[29])) + ((out_t_P_D_t_A[30] - out_t_P_D_t_A[30]) + ((out_t_P_D_t_A[31] - out_t_P_D_t_A[31]) + (out_t_P_D_t_A[32] - out_t_P_D_t_A[32]))))))) + ((((((out_t_P_D_t_A[33] - out_t_P_D_t_A[33]) + (out_t_P_D_t_A[34] - out_t_P_D_t_A[34])) + ((out_t_P_D_t_A[35] - out_t_P_D_t_A[35]) + (out_t_P_D_a[0] - out_t_P_D_a[0]))) + (((out_t_P_D_a[1] - out_t_P_D_a[1]) + (out_t_P_D_a[2] - out_t_P_D_a[2])) + ((out_t_P_D_a[3] - out_t_P_D_a[3]) + ((out_t_P_D_a[4] - out_t_P_D_a[4]) + (out_t_P_D_a[5] - out_t_P_D_a[5]))))) + ((((out_t_P_D_a[6] - out_t_P_D_a[6]) + (out_t_P_D_a[7] - out_t_P_D_a[7])) + ((out_t_P_D_a[8] - out_t_P_D_a[8]) + ((out_t_P_D_a[9] - out_t_P_D_a[9]) + (out_t_P_D_a[10] - out_t_P_D_a[10])))) + (((out_t_P_D_a[11] - out_t_P_D_a[11]) + (out_t_P_D_a[12] - out_t_P_D_a[12])) + ((out_t_P_D_a[13] - out_t_P_D_a[13]) + ((out_t_P_D_a[14] - out_t_P_D_a[14]) + (out_t_P_D_a[15] - out_t_P_D_a[15])))))) + (((((out_t_P_D_a[16] - out_t_P_D_a[16]) + (out_t_P_D_a[17] - out_t_P_D_a[17])) + ((out_t_P_D_p[0] - out_t_P_D_p[0]) + ((out_t_P_D_p[1] - out_t_P_D_p[1]) + (out_t_P_D_p[2] - out_t_P_D_p[2])))) + (((out_t_P_D_p[3] - out_t_P_D_p[3]) + (out_t_P_D_p[4] - out_t_P_D_p[4])) + ((out_t_P_D_p[5] - out_t_P_D_p[5]) + ((out_t_P_D_p[6] - out_t_P_D_p[6]) + (out_t_P_D_p[7] - out_t_P_D_p[7]))))) + ((((out_t_P_D_p[8] - out_t_P_D_p[8]) + (out_t_P_D_p[9] - out_t_P_D_p[9])) + ((out_t_P_D_p[10] - out_t_P_D_p[10]) + ((out_t_P_D_p[11] - out_t_P_D_p[11]) + (out_t_P_D_p[12] - out_t_P_D_p[12])))) + (((out_t_P_D_p[13] - out_t_P_D_p[13]) + (out_t_P_D_p[14] - out_t_P_D_p[14])) + ((out_t_P_D_p[15] - out_t_P_D_p[15]) + ((out_t_P_D_p[16] - out_t_P_D_p[16]) + (out_t_P_D_p[17] - out_t_P_D_p[17]))))))));
     }
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
-        t_P_D_t_A[0] = NAN;
-        t_P_D_t_A[1] = NAN;
-        t_P_D_t_A[2] = NAN;
-        t_P_D_t_A[3] = NAN;
-        t_P_D_t_A[4] = NAN;
-        t_P_D_t_A[5] = NAN;
-        t_P_D_t_A[6] = NAN;
-        t_P_D_t_A[7] = NAN;
-        t_P_D_t_A[8] = NAN;
-        t_P_D_t_A[9] = NAN;
-        t_P_D_t_A[10] = NAN;
-        t_P_D_t_A[11] = NAN;
-        t_P_D_t_A[12] = NAN;
-        t_P_D_t_A[13] = NAN;
-        t_P_D_t_A[14] = NAN;
-        t_P_D_t_A[15] = NAN;
-        t_P_D_t_A[16] = NAN;
-        t_P_D_t_A[17] = NAN;
-        t_P_D_t_A[18] = NAN;
-        t_P_D_t_A[19] = NAN;
-        t_P_D_t_A[20] = NAN;
-        t_P_D_t_A[21] = NAN;
-        t_P_D_t_A[22] = NAN;
-        t_P_D_t_A[23] = NAN;
-        t_P_D_t_A[24] = NAN;
-        t_P_D_t_A[25] = NAN;
-        t_P_D_t_A[26] = NAN;
-        t_P_D_t_A[27] = NAN;
-        t_P_D_t_A[28] = NAN;
-        t_P_D_t_A[29] = NAN;
-        t_P_D_t_A[30] = NAN;
-        t_P_D_t_A[31] = NAN;
-        t_P_D_t_A[32] = NAN;
-        t_P_D_t_A[33] = NAN;
-        t_P_D_t_A[34] = NAN;
-        t_P_D_t_A[35] = NAN;
-        t_P_D_a[0] = NAN;
-        t_P_D_a[1] = NAN;
-        t_P_D_a[2] = NAN;
-        t_P_D_a[3] = NAN;
-        t_P_D_a[4] = NAN;
-        t_P_D_a[5] = NAN;
-        t_P_D_a[6] = NAN;
-        t_P_D_a[7] = NAN;
-        t_P_D_a[8] = NAN;
-        t_P_D_a[9] = NAN;
-        t_P_D_a[10] = NAN;
-        t_P_D_a[11] = NAN;
-        t_P_D_a[12] = NAN;
-        t_P_D_a[13] = NAN;
-        t_P_D_a[14] = NAN;
-        t_P_D_a[15] = NAN;
-        t_P_D_a[16] = NAN;
-        t_P_D_a[17] = NAN;
-        t_P_D_p[0] = NAN;
-        t_P_D_p[1] = NAN;
-        t_P_D_p[2] = NAN;
-        t_P_D_p[3] = NAN;
-        t_P_D_p[4] = NAN;
-        t_P_D_p[5] = NAN;
-        t_P_D_p[6] = NAN;
-        t_P_D_p[7] = NAN;
-        t_P_D_p[8] = NAN;
-        t_P_D_p[9] = NAN;
-        t_P_D_p[10] = NAN;
-        t_P_D_p[11] = NAN;
-        t_P_D_p[12] = NAN;
-        t_P_D_p[13] = NAN;
-        t_P_D_p[14] = NAN;
-        t_P_D_p[15] = NAN;
-        t_P_D_p[16] = NAN;
-        t_P_D_p[17] = NAN;
+        out_t_P[0] = NAN;
+        out_t_P[1] = NAN;
+        out_t_P[2] = NAN;
+        out_t_P[3] = NAN;
+        out_t_P[4] = NAN;
+        out_t_P[5] = NAN;
+        out_t_P_D_t_A[0] = NAN;
+        out_t_P_D_t_A[1] = NAN;
+        out_t_P_D_t_A[2] = NAN;
+        out_t_P_D_t_A[3] = NAN;
+        out_t_P_D_t_A[4] = NAN;
+        out_t_P_D_t_A[5] = NAN;
+        out_t_P_D_t_A[6] = NAN;
+        out_t_P_D_t_A[7] = NAN;
+        out_t_P_D_t_A[8] = NAN;
+        out_t_P_D_t_A[9] = NAN;
+        out_t_P_D_t_A[10] = NAN;
+        out_t_P_D_t_A[11] = NAN;
+        out_t_P_D_t_A[12] = NAN;
+        out_t_P_D_t_A[13] = NAN;
+        out_t_P_D_t_A[14] = NAN;
+        out_t_P_D_t_A[15] = NAN;
+        out_t_P_D_t_A[16] = NAN;
+        out_t_P_D_t_A[17] = NAN;
+        out_t_P_D_t_A[18] = NAN;
+        out_t_P_D_t_A[19] = NAN;
+        out_t_P_D_t_A[20] = NAN;
+        out_t_P_D_t_A[21] = NAN;
+        out_t_P_D_t_A[22] = NAN;
+        out_t_P_D_t_A[23] = NAN;
+        out_t_P_D_t_A[24] = NAN;
+        out_t_P_D_t_A[25] = NAN;
+        out_t_P_D_t_A[26] = NAN;
+        out_t_P_D_t_A[27] = NAN;
+        out_t_P_D_t_A[28] = NAN;
+        out_t_P_D_t_A[29] = NAN;
+        out_t_P_D_t_A[30] = NAN;
+        out_t_P_D_t_A[31] = NAN;
+        out_t_P_D_t_A[32] = NAN;
+        out_t_P_D_t_A[33] = NAN;
+        out_t_P_D_t_A[34] = NAN;
+        out_t_P_D_t_A[35] = NAN;
+        out_t_P_D_a[0] = NAN;
+        out_t_P_D_a[1] = NAN;
+        out_t_P_D_a[2] = NAN;
+        out_t_P_D_a[3] = NAN;
+        out_t_P_D_a[4] = NAN;
+        out_t_P_D_a[5] = NAN;
+        out_t_P_D_a[6] = NAN;
+        out_t_P_D_a[7] = NAN;
+        out_t_P_D_a[8] = NAN;
+        out_t_P_D_a[9] = NAN;
+        out_t_P_D_a[10] = NAN;
+        out_t_P_D_a[11] = NAN;
+        out_t_P_D_a[12] = NAN;
+        out_t_P_D_a[13] = NAN;
+        out_t_P_D_a[14] = NAN;
+        out_t_P_D_a[15] = NAN;
+        out_t_P_D_a[16] = NAN;
+        out_t_P_D_a[17] = NAN;
+        out_t_P_D_p[0] = NAN;
+        out_t_P_D_p[1] = NAN;
+        out_t_P_D_p[2] = NAN;
+        out_t_P_D_p[3] = NAN;
+        out_t_P_D_p[4] = NAN;
+        out_t_P_D_p[5] = NAN;
+        out_t_P_D_p[6] = NAN;
+        out_t_P_D_p[7] = NAN;
+        out_t_P_D_p[8] = NAN;
+        out_t_P_D_p[9] = NAN;
+        out_t_P_D_p[10] = NAN;
+        out_t_P_D_p[11] = NAN;
+        out_t_P_D_p[12] = NAN;
+        out_t_P_D_p[13] = NAN;
+        out_t_P_D_p[14] = NAN;
+        out_t_P_D_p[15] = NAN;
+        out_t_P_D_p[16] = NAN;
+        out_t_P_D_p[17] = NAN;
     }
     return status;
 }
@@ -1849,13 +1845,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_plain(
 /* called through a volatile pointer: an opaque call, so that none of the evaluation's
  * operations moves across the reads of the exception flags around it */
 static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6],
-    float t_P_D_t_A[36],
-    float t_P_D_a[18],
-    float t_P_D_p[18])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6],
+    float out_t_P_D_t_A[36],
+    float out_t_P_D_a[18],
+    float out_t_P_D_p[18])
 = rigidsym_c_twist_transfer_with_jacobians_f32_plain;
 #endif
 
@@ -1866,13 +1862,13 @@ static int (*const volatile rigidsym_c_twist_transfer_with_jacobians_f32_plain_p
  * flush-to-zero off: rigidsym_c_impl.h). Cold and out of line, reached by a tail call, so
  * that the fast path of rigidsym_c_twist_transfer_with_jacobians_f32 saves no register and makes no call. */
 static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6],
-    float t_P_D_t_A[36],
-    float t_P_D_a[18],
-    float t_P_D_p[18])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6],
+    float out_t_P_D_t_A[36],
+    float out_t_P_D_a[18],
+    float out_t_P_D_p[18])
 {
     const float *args[3];
     const int sizes[3] = {6, 3, 3};
@@ -1880,9 +1876,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     uint64_t env_;
 #endif
-    args[0] = t_A;
-    args[1] = a;
-    args[2] = p;
+    args[0] = in_t_A;
+    args[1] = in_a;
+    args[2] = in_p;
     for (j = 0; j < 3; ++j)
         odd_ |= rigidsym_c_extreme_f(args[j], sizes[j]);
     if (!odd_)  /* the SSE2 test's margin: every component ordinary after all */
@@ -1895,7 +1891,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
-        const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_rescue(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
         if (r_ >= 0) {
             status = r_;
             done_ = 1;
@@ -1906,13 +1902,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
         rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        r_ = (*rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
         status = rigidsym_c_fp_risky() ? (r_ | RIGIDSYM_C_EXTREME_INPUT) : r_;
         done_ = 1;
     }
 #endif
     if (!done_)
-        status |= rigidsym_c_twist_transfer_with_jacobians_f32_plain(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        status |= rigidsym_c_twist_transfer_with_jacobians_f32_plain(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1921,10 +1917,10 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
 #endif
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6],    float t_P_D_t_A[36],    float t_P_D_a[18],    float t_P_D_p[18])
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6],    float out_t_P_D_t_A[36],    float out_t_P_D_a[18],    float out_t_P_D_p[18])
 {
     int status = 0, singular = 0;
     float finite = 0.0f;
@@ -1932,22 +1928,22 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     uint32_t odd = 0;
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
-        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(t_A), *(t_A + 1), *(t_A + 2), *(t_A + 3))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&t_A[4], *&t_A[5], *&a[0], *&a[1]))));
-        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&a[2], *&p[0], *&p[1], *&p[2]))));
+        __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_t_A), *(in_t_A + 1), *(in_t_A + 2), *(in_t_A + 3))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_t_A[4], *&in_t_A[5], *&in_a[0], *&in_a[1]))));
+        q_ = _mm_max_epu8(q_, rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_a[2], *&in_p[0], *&in_p[1], *&in_p[2]))));
         if (RIGIDSYM_C_Q_ODD_F(q_))
-            return rigidsym_c_twist_transfer_with_jacobians_f32_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+            return rigidsym_c_twist_transfer_with_jacobians_f32_odd(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
     }
 #elif RIGIDSYM_C_VECTOR
     {   /* the range test of every input component, 4 per vector register */
         rigidsym_c_vf oddv_ = {0, 0, 0, 0};
-        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(t_A));
+        oddv_ |= rigidsym_c_odd_vf(rigidsym_c_load_vf(in_t_A));
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&t_A[4]), rigidsym_c_bits_f(&t_A[5]), rigidsym_c_bits_f(&a[0]), rigidsym_c_bits_f(&a[1])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_t_A[4]), rigidsym_c_bits_f(&in_t_A[5]), rigidsym_c_bits_f(&in_a[0]), rigidsym_c_bits_f(&in_a[1])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         {
-            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&a[2]), rigidsym_c_bits_f(&p[0]), rigidsym_c_bits_f(&p[1]), rigidsym_c_bits_f(&p[2])};
+            const rigidsym_c_vf v_ = {rigidsym_c_bits_f(&in_a[2]), rigidsym_c_bits_f(&in_p[0]), rigidsym_c_bits_f(&in_p[1]), rigidsym_c_bits_f(&in_p[2])};
             oddv_ |= rigidsym_c_odd_vf(v_);
         }
         odd = oddv_[0] | oddv_[1] | oddv_[2] | oddv_[3];
@@ -1958,121 +1954,121 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
         int j_;
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 6; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, t_A[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_t_A[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, a[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_a[j_]);
         RIGIDSYM_C_UNROLL
         for (j_ = 0; j_ < 3; ++j_)
-            RIGIDSYM_C_ODDNZ_F(odd, p[j_]);
+            RIGIDSYM_C_ODDNZ_F(odd, in_p[j_]);
         (void)j_;
         if (odd)   /* nonzero, not its sign bit, flags an odd component here */
-            return rigidsym_c_twist_transfer_with_jacobians_f32_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+            return rigidsym_c_twist_transfer_with_jacobians_f32_odd(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
     }
 #endif
     if (odd >> 31)
-        return rigidsym_c_twist_transfer_with_jacobians_f32_odd(t_A, a, p, t_P, t_P_D_t_A, t_P_D_a, t_P_D_p);
+        return rigidsym_c_twist_transfer_with_jacobians_f32_odd(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
 #endif
-    const float t_A_0 = t_A[0];
-    const float t_A_1 = t_A[1];
-    const float t_A_2 = t_A[2];
-    const float t_A_3 = t_A[3];
-    const float t_A_4 = t_A[4];
-    const float t_A_5 = t_A[5];
-    const float a_0 = a[0];
-    const float a_1 = a[1];
-    const float a_2 = a[2];
-    const float p_0 = p[0];
-    const float p_1 = p[1];
-    const float p_2 = p[2];
+    const float c0_t_A = in_t_A[0];
+    const float c1_t_A = in_t_A[1];
+    const float c2_t_A = in_t_A[2];
+    const float c3_t_A = in_t_A[3];
+    const float c4_t_A = in_t_A[4];
+    const float c5_t_A = in_t_A[5];
+    const float c0_a = in_a[0];
+    const float c1_a = in_a[1];
+    const float c2_a = in_a[2];
+    const float c0_p = in_p[0];
+    const float c1_p = in_p[1];
+    const float c2_p = in_p[2];
     {
-        const float x0 = a_2 - p_2;
+        const float x0 = c2_a - c2_p;
         const float x1 = -x0;
-        const float x2 = a_1 - p_1;
-        const float x3 = a_0 - p_0;
+        const float x2 = c1_a - c1_p;
+        const float x3 = c0_a - c0_p;
         const float x4 = -x3;
         const float x5 = -x2;
-        const float x6 = -t_A_1;
-        const float x7 = -t_A_2;
-        const float x8 = -t_A_0;
-        t_P[0] = t_A_0;
-        t_P[1] = t_A_1;
-        t_P[2] = t_A_2;
-        t_P[3] = t_A_1*x1 + t_A_2*x2 + t_A_3;
-        t_P[4] = t_A_0*x0 + t_A_2*x4 + t_A_4;
-        t_P[5] = t_A_0*x5 + t_A_1*x3 + t_A_5;
-        t_P_D_t_A[0] = 1.0f;
-        t_P_D_t_A[1] = 0.0f;
-        t_P_D_t_A[2] = 0.0f;
-        t_P_D_t_A[3] = 0.0f;
-        t_P_D_t_A[4] = 0.0f;
-        t_P_D_t_A[5] = 0.0f;
-        t_P_D_t_A[6] = 0.0f;
-        t_P_D_t_A[7] = 1.0f;
-        t_P_D_t_A[8] = 0.0f;
-        t_P_D_t_A[9] = 0.0f;
-        t_P_D_t_A[10] = 0.0f;
-        t_P_D_t_A[11] = 0.0f;
-        t_P_D_t_A[12] = 0.0f;
-        t_P_D_t_A[13] = 0.0f;
-        t_P_D_t_A[14] = 1.0f;
-        t_P_D_t_A[15] = 0.0f;
-        t_P_D_t_A[16] = 0.0f;
-        t_P_D_t_A[17] = 0.0f;
-        t_P_D_t_A[18] = 0.0f;
-        t_P_D_t_A[19] = x1;
-        t_P_D_t_A[20] = x2;
-        t_P_D_t_A[21] = 1.0f;
-        t_P_D_t_A[22] = 0.0f;
-        t_P_D_t_A[23] = 0.0f;
-        t_P_D_t_A[24] = x0;
-        t_P_D_t_A[25] = 0.0f;
-        t_P_D_t_A[26] = x4;
-        t_P_D_t_A[27] = 0.0f;
-        t_P_D_t_A[28] = 1.0f;
-        t_P_D_t_A[29] = 0.0f;
-        t_P_D_t_A[30] = x5;
-        t_P_D_t_A[31] = x3;
-        t_P_D_t_A[32] = 0.0f;
-        t_P_D_t_A[33] = 0.0f;
-        t_P_D_t_A[34] = 0.0f;
-        t_P_D_t_A[35] = 1.0f;
-        t_P_D_a[0] = 0.0f;
-        t_P_D_a[1] = 0.0f;
-        t_P_D_a[2] = 0.0f;
-        t_P_D_a[3] = 0.0f;
-        t_P_D_a[4] = 0.0f;
-        t_P_D_a[5] = 0.0f;
-        t_P_D_a[6] = 0.0f;
-        t_P_D_a[7] = 0.0f;
-        t_P_D_a[8] = 0.0f;
-        t_P_D_a[9] = 0.0f;
-        t_P_D_a[10] = t_A_2;
-        t_P_D_a[11] = x6;
-        t_P_D_a[12] = x7;
-        t_P_D_a[13] = 0.0f;
-        t_P_D_a[14] = t_A_0;
-        t_P_D_a[15] = t_A_1;
-        t_P_D_a[16] = x8;
-        t_P_D_a[17] = 0.0f;
-        t_P_D_p[0] = 0.0f;
-        t_P_D_p[1] = 0.0f;
-        t_P_D_p[2] = 0.0f;
-        t_P_D_p[3] = 0.0f;
-        t_P_D_p[4] = 0.0f;
-        t_P_D_p[5] = 0.0f;
-        t_P_D_p[6] = 0.0f;
-        t_P_D_p[7] = 0.0f;
-        t_P_D_p[8] = 0.0f;
-        t_P_D_p[9] = 0.0f;
-        t_P_D_p[10] = x7;
-        t_P_D_p[11] = t_A_1;
-        t_P_D_p[12] = t_A_2;
-        t_P_D_p[13] = 0.0f;
-        t_P_D_p[14] = x8;
-        t_P_D_p[15] = x6;
-        t_P_D_p[16] = t_A_0;
-        t_P_D_p[17] = 0.0f;
+        const float x6 = -c1_t_A;
+        const float x7 = -c2_t_A;
+        const float x8 = -c0_t_A;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = c1_t_A*x1 + c2_t_A*x2 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 + c2_t_A*x4 + c4_t_A;
+        out_t_P[5] = c0_t_A*x5 + c1_t_A*x3 + c5_t_A;
+        out_t_P_D_t_A[0] = 1.0f;
+        out_t_P_D_t_A[1] = 0.0f;
+        out_t_P_D_t_A[2] = 0.0f;
+        out_t_P_D_t_A[3] = 0.0f;
+        out_t_P_D_t_A[4] = 0.0f;
+        out_t_P_D_t_A[5] = 0.0f;
+        out_t_P_D_t_A[6] = 0.0f;
+        out_t_P_D_t_A[7] = 1.0f;
+        out_t_P_D_t_A[8] = 0.0f;
+        out_t_P_D_t_A[9] = 0.0f;
+        out_t_P_D_t_A[10] = 0.0f;
+        out_t_P_D_t_A[11] = 0.0f;
+        out_t_P_D_t_A[12] = 0.0f;
+        out_t_P_D_t_A[13] = 0.0f;
+        out_t_P_D_t_A[14] = 1.0f;
+        out_t_P_D_t_A[15] = 0.0f;
+        out_t_P_D_t_A[16] = 0.0f;
+        out_t_P_D_t_A[17] = 0.0f;
+        out_t_P_D_t_A[18] = 0.0f;
+        out_t_P_D_t_A[19] = x1;
+        out_t_P_D_t_A[20] = x2;
+        out_t_P_D_t_A[21] = 1.0f;
+        out_t_P_D_t_A[22] = 0.0f;
+        out_t_P_D_t_A[23] = 0.0f;
+        out_t_P_D_t_A[24] = x0;
+        out_t_P_D_t_A[25] = 0.0f;
+        out_t_P_D_t_A[26] = x4;
+        out_t_P_D_t_A[27] = 0.0f;
+        out_t_P_D_t_A[28] = 1.0f;
+        out_t_P_D_t_A[29] = 0.0f;
+        out_t_P_D_t_A[30] = x5;
+        out_t_P_D_t_A[31] = x3;
+        out_t_P_D_t_A[32] = 0.0f;
+        out_t_P_D_t_A[33] = 0.0f;
+        out_t_P_D_t_A[34] = 0.0f;
+        out_t_P_D_t_A[35] = 1.0f;
+        out_t_P_D_a[0] = 0.0f;
+        out_t_P_D_a[1] = 0.0f;
+        out_t_P_D_a[2] = 0.0f;
+        out_t_P_D_a[3] = 0.0f;
+        out_t_P_D_a[4] = 0.0f;
+        out_t_P_D_a[5] = 0.0f;
+        out_t_P_D_a[6] = 0.0f;
+        out_t_P_D_a[7] = 0.0f;
+        out_t_P_D_a[8] = 0.0f;
+        out_t_P_D_a[9] = 0.0f;
+        out_t_P_D_a[10] = c2_t_A;
+        out_t_P_D_a[11] = x6;
+        out_t_P_D_a[12] = x7;
+        out_t_P_D_a[13] = 0.0f;
+        out_t_P_D_a[14] = c0_t_A;
+        out_t_P_D_a[15] = c1_t_A;
+        out_t_P_D_a[16] = x8;
+        out_t_P_D_a[17] = 0.0f;
+        out_t_P_D_p[0] = 0.0f;
+        out_t_P_D_p[1] = 0.0f;
+        out_t_P_D_p[2] = 0.0f;
+        out_t_P_D_p[3] = 0.0f;
+        out_t_P_D_p[4] = 0.0f;
+        out_t_P_D_p[5] = 0.0f;
+        out_t_P_D_p[6] = 0.0f;
+        out_t_P_D_p[7] = 0.0f;
+        out_t_P_D_p[8] = 0.0f;
+        out_t_P_D_p[9] = 0.0f;
+        out_t_P_D_p[10] = x7;
+        out_t_P_D_p[11] = c1_t_A;
+        out_t_P_D_p[12] = c2_t_A;
+        out_t_P_D_p[13] = 0.0f;
+        out_t_P_D_p[14] = x8;
+        out_t_P_D_p[15] = x6;
+        out_t_P_D_p[16] = c0_t_A;
+        out_t_P_D_p[17] = 0.0f;
     }
     /* no division or root, and every output bounded by 2^65 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -2082,93 +2078,93 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
          * compiler from folding it) runs only where the sum is not: a non-finite output,
          * or finite ones whose sum overflows */
-        const float s_ = ((((((t_P[0] + t_P[1]) + (t_P[2] + t_P[3])) + ((t_P[4] + t_P[5]) + (t_P_D_t_A[0] + (t_P_D_t_A[1] + t_P_D_t_A[2])))) + (((t_P_D_t_A[3] + t_P_D_t_A[4]) + (t_P_D_t_A[5] + (t_P_D_t_A[6] + t_P_D_t_A[7]))) + ((t_P_D_t_A[8] + t_P_D_t_A[9]) + (t_P_D_t_A[10] + (t_P_D_t_A[11] + t_P_D_t_A[12]))))) + ((((t_P_D_t_A[13] + t_P_D_t_A[14]) + (t_P_D_t_A[15] + (t_P_D_t_A[16] + t_P_D_t_A[17]))) + ((t_P_D_t_A[18] + t_P_D_t_A[19]) + (t_P_D_t_A[20] + (t_P_D_t_A[21] + t_P_D_t_A[22])))) + (((t_P_D_t_A[23] + t_P_D_t_A[24]) + (t_P_D_t_A[25] + (t_P_D_t_A[26] + t_P_D_t_A[27]))) + ((t_P_D_t_A[28] + t_P_D_t_A[29]) + (t_P_D_t_A[30] + (t_P_D_t_A[31] + t_P_D_t_A[32])))))) + (((((t_P_D_t_A[33] + t_P_D_t_A[34]) + (t_P_D_t_A[35] + t_P_D_a[0])) + ((t_P_D_a[1] + t_P_D_a[2]) + (t_P_D_a[3] + (t_P_D_a[4] + t_P_D_a[5])))) + (((t_P_D_a[6] + t_P_D_a[7]) + (t_P_D_a[8] + (t_P_D_a[9] + t_P_D_a[10]))) + ((t_P_D_a[11] + t_P_D_a[12]) + (t_P_D_a[13] + (t_P_D_a[14] + t_P_D_a[15]))))) + ((((t_P_D_a[16] + t_P_D_a[17]) + (t_P_D_p[0] + (t_P_D_p[1] + t_P_D_p[2]))) + ((t_P_D_p[3] + t_P_D_p[4]) + (t_P_D_p[5] + (t_P_D_p[6] + t_P_D_p[7])))) + (((t_P_D_p[8] + t_P_D_p[9]) + (t_P_D_p[10] + (t_P_D_p[11] + t_P_D_p[12]))) + ((t_P_D_p[13] + t_P_D_p[14]) + (t_P_D_p[15] + (t_P_D_p[16] + t_P_D_p[17])))))));
+        const float s_ = ((((((out_t_P[0] + out_t_P[1]) + (out_t_P[2] + out_t_P[3])) + ((out_t_P[4] + out_t_P[5]) + (out_t_P_D_t_A[0] + (out_t_P_D_t_A[1] + out_t_P_D_t_A[2])))) + (((out_t_P_D_t_A[3] + out_t_P_D_t_A[4]) + (out_t_P_D_t_A[5] + (out_t_P_D_t_A[6] + out_t_P_D_t_A[7]))) + ((out_t_P_D_t_A[8] + out_t_P_D_t_A[9]) + (out_t_P_D_t_A[10] + (out_t_P_D_t_A[11] + out_t_P_D_t_A[12]))))) + ((((out_t_P_D_t_A[13] + out_t_P_D_t_A[14]) + (out_t_P_D_t_A[15] + (out_t_P_D_t_A[16] + out_t_P_D_t_A[17]))) + ((out_t_P_D_t_A[18] + out_t_P_D_t_A[19]) + (out_t_P_D_t_A[20] + (out_t_P_D_t_A[21] + out_t_P_D_t_A[22])))) + (((out_t_P_D_t_A[23] + out_t_P_D_t_A[24]) + (out_t_P_D_t_A[25] + (out_t_P_D_t_A[26] + out_t_P_D_t_A[27]))) + ((out_t_P_D_t_A[28] + out_t_P_D_t_A[29]) + (out_t_P_D_t_A[30] + (out_t_P_D_t_A[31] + out_t_P_D_t_A[32])))))) + (((((out_t_P_D_t_A[33] + out_t_P_D_t_A[34]) + (out_t_P_D_t_A[35] + out_t_P_D_a[0])) + ((out_t_P_D_a[1] + out_t_P_D_a[2]) + (out_t_P_D_a[3] + (out_t_P_D_a[4] + out_t_P_D_a[5])))) + (((out_t_P_D_a[6] + out_t_P_D_a[7]) + (out_t_P_D_a[8] + (out_t_P_D_a[9] + out_t_P_D_a[10]))) + ((out_t_P_D_a[11] + out_t_P_D_a[12]) + (out_t_P_D_a[13] + (out_t_P_D_a[14] + out_t_P_D_a[15]))))) + ((((out_t_P_D_a[16] + out_t_P_D_a[17]) + (out_t_P_D_p[0] + (out_t_P_D_p[1] + out_t_P_D_p[2]))) + ((out_t_P_D_p[3] + out_t_P_D_p[4]) + (out_t_P_D_p[5] + (out_t_P_D_p[6] + out_t_P_D_p[7])))) + (((out_t_P_D_p[8] + out_t_P_D_p[9]) + (out_t_P_D_p[10] + (out_t_P_D_p[11] + out_t_P_D_p[12]))) + ((out_t_P_D_p[13] + out_t_P_D_p[14]) + (out_t_P_D_p[15] + (out_t_P_D_p[16] + out_t_P_D_p[17])))))));
         if (!(s_ - s_ == 0.0f))
-            finite += (((((((t_P[0] - t_P[0]) + (t_P[1] - t_P[1])) + ((t_P[2] - t_P[2]) + (t_P[3] - t_P[3]))) + (((t_P[4] - t_P[4]) + (t_P[5] - t_P[5])) + ((t_P_D_t_A[0] - t_P_D_t_A[0]) + ((t_P_D_t_A[1] - t_P_D_t_A[1]) + (t_P_D_t_A[2] - t_P_D_t_A[2]))))) + ((((t_P_D_t_A[3] - t_P_D_t_A[3]) + (t_P_D_t_A[4] - t_P_D_t_A[4])) + ((t_P_D_t_A[5] - t_P_D_t_A[5]) + ((t_P_D_t_A[6] - t_P_D_t_A[6]) + (t_P_D_t_A[7] - t_P_D_t_A[7])))) + (((t_P_D_t_A[8] - t_P_D_t_A[8]) + (t_P_D_t_A[9] - t_P_D_t_A[9])) + ((t_P_D_t_A[10] - t_P_D_t_A[10]) + ((t_P_D_t_A[11] - t_P_D_t_A[11]) + (t_P_D_t_A[12] - t_P_D_t_A[12])))))) + (((((t_P_D_t_A[13] - t_P_D_t_A[13]) + (t_P_D_t_A[14] - t_P_D_t_A[14])) + ((t_P_D_t_A[15] - t_P_D_t_A[15]) + ((t_P_D_t_A[16] - t_P_D_t_A[16]) + (t_P_D_t_A[17] - t_P_D_t_A[17])))) + (((t_P_D_t_A[18] - t_P_D_t_A[18]) + (t_P_D_t_A[19] - t_P_D_t_A[19])) + ((t_P_D_t_A[20] - t_P_D_t_A[20]) + ((t_P_D_t_A[21] - t_P_D_t_A[21]) + (t_P_D_t_A[22] - t_P_D_t_A[22]))))) + ((((t_P_D_t_A[23] - t_P_D_t_A[23]) + (t_P_D_t_A[24] - t_P_D_t_A[24])) + ((t_P_D_t_A[25] - t_P_D_t_A[25]) + ((t_P_D_t_A[26] - t_P_D_t_A[26]) + (t_P_D_t_A[27] - t_P_D_t_A[27])))) + (((t_P_D_t_A[28] - t_P_D_t_A[28]) + (t_P_D_t_A[29] - t_P_D_t_A[29])) + ((t_P_D_t_A[30] - t_P_D_t_A[30]) + ((t_P_D_t_A[31] - t_P_D_t_A[31]) + (t_P_D_t_A[32] - t_P_D_t_A[32]))))))) + ((((((t_P_D_t_A[33] - t_P_D_t_A[33]) + (t_P_D_t_A[34] - t_P_D_t_A[34])) + ((t_P_D_t_A[35] - t_P_D_t_A[35]) + (t_P_D_a[0] - t_P_D_a[0]))) + (((t_P_D_a[1] - t_P_D_a[1]) + (t_P_D_a[2] - t_P_D_a[2])) + ((t_P_D_a[3] - t_P_D_a[3]) + ((t_P_D_a[4] - t_P_D_a[4]) + (t_P_D_a[5] - t_P_D_a[5]))))) + ((((t_P_D_a[6] - t_P_D_a[6]) + (t_P_D_a[7] - t_P_D_a[7])) + ((t_P_D_a[8] - t_P_D_a[8]) + ((t_P_D_a[9] - t_P_D_a[9]) + (t_P_D_a[10] - t_P_D_a[10])))) + (((t_P_D_a[11] - t_P_D_a[11]) + (t_P_D_a[12] - t_P_D_a[12])) + ((t_P_D_a[13] - t_P_D_a[13]) + ((t_P_D_a[14] - t_P_D_a[14]) + (t_P_D_a[15] - t_P_D_a[15])))))) + (((((t_P_D_a[16] - t_P_D_a[16]) + (t_P_D_a[17] - t_P_D_a[17])) + ((t_P_D_p[0] - t_P_D_p[0]) + ((t_P_D_p[1] - t_P_D_p[1]) + (t_P_D_p[2] - t_P_D_p[2])))) + (((t_P_D_p[3] - t_P_D_p[3]) + (t_P_D_p[4] - t_P_D_p[4])) + ((t_P_D_p[5] - t_P_D_p[5]) + ((t_P_D_p[6] - t_P_D_p[6]) + (t_P_D_p[7] - t_P_D_p[7]))))) + ((((t_P_D_p[8] - t_P_D_p[8]) + (t_P_D_p[9] - t_P_D_p[9])) + ((t_P_D_p[10] - t_P_D_p[10]) + ((t_P_D_p[11] - t_P_D_p[11]) + (t_P_D_p[12] - t_P_D_p[12])))) + (((t_P_D_p[13] - t_P_D_p[13]) + (t_P_D_p[14] - t_P_D_p[14])) + ((t_P_D_p[15] - t_P_D_p[15]) + ((t_P_D_p[16] - t_P_D_p[16]) + (t_P_D_p[17] - t_P_D_p[17]))))))));
+            finite += (((((((out_t_P[0] - out_t_P[0]) + (out_t_P[1] - out_t_P[1])) + ((out_t_P[2] - out_t_P[2]) + (out_t_P[3] - out_t_P[3]))) + (((out_t_P[4] - out_t_P[4]) + (out_t_P[5] - out_t_P[5])) + ((out_t_P_D_t_A[0] - out_t_P_D_t_A[0]) + ((out_t_P_D_t_A[1] - out_t_P_D_t_A[1]) + (out_t_P_D_t_A[2] - out_t_P_D_t_A[2]))))) + ((((out_t_P_D_t_A[3] - out_t_P_D_t_A[3]) + (out_t_P_D_t_A[4] - out_t_P_D_t_A[4])) + ((out_t_P_D_t_A[5] - out_t_P_D_t_A[5]) + ((out_t_P_D_t_A[6] - out_t_P_D_t_A[6]) + (out_t_P_D_t_A[7] - out_t_P_D_t_A[7])))) + (((out_t_P_D_t_A[8] - out_t_P_D_t_A[8]) + (out_t_P_D_t_A[9] - out_t_P_D_t_A[9])) + ((out_t_P_D_t_A[10] - out_t_P_D_t_A[10]) + ((out_t_P_D_t_A[11] - out_t_P_D_t_A[11]) + (out_t_P_D_t_A[12] - out_t_P_D_t_A[12])))))) + (((((out_t_P_D_t_A[13] - out_t_P_D_t_A[13]) + (out_t_P_D_t_A[14] - out_t_P_D_t_A[14])) + ((out_t_P_D_t_A[15] - out_t_P_D_t_A[15]) + ((out_t_P_D_t_A[16] - out_t_P_D_t_A[16]) + (out_t_P_D_t_A[17] - out_t_P_D_t_A[17])))) + (((out_t_P_D_t_A[18] - out_t_P_D_t_A[18]) + (out_t_P_D_t_A[19] - out_t_P_D_t_A[19])) + ((out_t_P_D_t_A[20] - out_t_P_D_t_A[20]) + ((out_t_P_D_t_A[21] - out_t_P_D_t_A[21]) + (out_t_P_D_t_A[22] - out_t_P_D_t_A[22]))))) + ((((out_t_P_D_t_A[23] - out_t_P_D_t_A[23]) + (out_t_P_D_t_A[24] - out_t_P_D_t_A[24])) + ((out_t_P_D_t_A[25] - out_t_P_D_t_A[25]) + ((out_t_P_D_t_A[26] - out_t_P_D_t_A[26]) + (out_t_P_D_t_A[27] - out_t_P_D_t_A[27])))) + (((out_t_P_D_t_A[28] - out_t_P_D_t_A[28]) + (out_t_P_D_t_A[29] - out_t_P_D_t_A[29])) + ((out_t_P_D_t_A[30] - out_t_P_D_t_A[30]) + ((out_t_P_D_t_A[31] - out_t_P_D_t_A[31]) + (out_t_P_D_t_A[32] - out_t_P_D_t_A[32]))))))) + ((((((out_t_P_D_t_A[33] - out_t_P_D_t_A[33]) + (out_t_P_D_t_A[34] - out_t_P_D_t_A[34])) + ((out_t_P_D_t_A[35] - out_t_P_D_t_A[35]) + (out_t_P_D_a[0] - out_t_P_D_a[0]))) + (((out_t_P_D_a[1] - out_t_P_D_a[1]) + (out_t_P_D_a[2] - out_t_P_D_a[2])) + ((out_t_P_D_a[3] - out_t_P_D_a[3]) + ((out_t_P_D_a[4] - out_t_P_D_a[4]) + (out_t_P_D_a[5] - out_t_P_D_a[5]))))) + ((((out_t_P_D_a[6] - out_t_P_D_a[6]) + (out_t_P_D_a[7] - out_t_P_D_a[7])) + ((out_t_P_D_a[8] - out_t_P_D_a[8]) + ((out_t_P_D_a[9] - out_t_P_D_a[9]) + (out_t_P_D_a[10] - out_t_P_D_a[10])))) + (((out_t_P_D_a[11] - out_t_P_D_a[11]) + (out_t_P_D_a[12] - out_t_P_D_a[12])) + ((out_t_P_D_a[13] - out_t_P_D_a[13]) + ((out_t_P_D_a[14] - out_t_P_D_a[14]) + (out_t_P_D_a[15] - out_t_P_D_a[15])))))) + (((((out_t_P_D_a[16] - out_t_P_D_a[16]) + (out_t_P_D_a[17] - out_t_P_D_a[17])) + ((out_t_P_D_p[0] - out_t_P_D_p[0]) + ((out_t_P_D_p[1] - out_t_P_D_p[1]) + (out_t_P_D_p[2] - out_t_P_D_p[2])))) + (((out_t_P_D_p[3] - out_t_P_D_p[3]) + (out_t_P_D_p[4] - out_t_P_D_p[4])) + ((out_t_P_D_p[5] - out_t_P_D_p[5]) + ((out_t_P_D_p[6] - out_t_P_D_p[6]) + (out_t_P_D_p[7] - out_t_P_D_p[7]))))) + ((((out_t_P_D_p[8] - out_t_P_D_p[8]) + (out_t_P_D_p[9] - out_t_P_D_p[9])) + ((out_t_P_D_p[10] - out_t_P_D_p[10]) + ((out_t_P_D_p[11] - out_t_P_D_p[11]) + (out_t_P_D_p[12] - out_t_P_D_p[12])))) + (((out_t_P_D_p[13] - out_t_P_D_p[13]) + (out_t_P_D_p[14] - out_t_P_D_p[14])) + ((out_t_P_D_p[15] - out_t_P_D_p[15]) + ((out_t_P_D_p[16] - out_t_P_D_p[16]) + (out_t_P_D_p[17] - out_t_P_D_p[17]))))))));
     }
 #endif
     if (finite != finite)
         status |= RIGIDSYM_C_NONFINITE_RESULT;
     if (singular) {
         status |= RIGIDSYM_C_SINGULAR;
-        t_P[0] = NAN;
-        t_P[1] = NAN;
-        t_P[2] = NAN;
-        t_P[3] = NAN;
-        t_P[4] = NAN;
-        t_P[5] = NAN;
-        t_P_D_t_A[0] = NAN;
-        t_P_D_t_A[1] = NAN;
-        t_P_D_t_A[2] = NAN;
-        t_P_D_t_A[3] = NAN;
-        t_P_D_t_A[4] = NAN;
-        t_P_D_t_A[5] = NAN;
-        t_P_D_t_A[6] = NAN;
-        t_P_D_t_A[7] = NAN;
-        t_P_D_t_A[8] = NAN;
-        t_P_D_t_A[9] = NAN;
-        t_P_D_t_A[10] = NAN;
-        t_P_D_t_A[11] = NAN;
-        t_P_D_t_A[12] = NAN;
-        t_P_D_t_A[13] = NAN;
-        t_P_D_t_A[14] = NAN;
-        t_P_D_t_A[15] = NAN;
-        t_P_D_t_A[16] = NAN;
-        t_P_D_t_A[17] = NAN;
-        t_P_D_t_A[18] = NAN;
-        t_P_D_t_A[19] = NAN;
-        t_P_D_t_A[20] = NAN;
-        t_P_D_t_A[21] = NAN;
-        t_P_D_t_A[22] = NAN;
-        t_P_D_t_A[23] = NAN;
-        t_P_D_t_A[24] = NAN;
-        t_P_D_t_A[25] = NAN;
-        t_P_D_t_A[26] = NAN;
-        t_P_D_t_A[27] = NAN;
-        t_P_D_t_A[28] = NAN;
-        t_P_D_t_A[29] = NAN;
-        t_P_D_t_A[30] = NAN;
-        t_P_D_t_A[31] = NAN;
-        t_P_D_t_A[32] = NAN;
-        t_P_D_t_A[33] = NAN;
-        t_P_D_t_A[34] = NAN;
-        t_P_D_t_A[35] = NAN;
-        t_P_D_a[0] = NAN;
-        t_P_D_a[1] = NAN;
-        t_P_D_a[2] = NAN;
-        t_P_D_a[3] = NAN;
-        t_P_D_a[4] = NAN;
-        t_P_D_a[5] = NAN;
-        t_P_D_a[6] = NAN;
-        t_P_D_a[7] = NAN;
-        t_P_D_a[8] = NAN;
-        t_P_D_a[9] = NAN;
-        t_P_D_a[10] = NAN;
-        t_P_D_a[11] = NAN;
-        t_P_D_a[12] = NAN;
-        t_P_D_a[13] = NAN;
-        t_P_D_a[14] = NAN;
-        t_P_D_a[15] = NAN;
-        t_P_D_a[16] = NAN;
-        t_P_D_a[17] = NAN;
-        t_P_D_p[0] = NAN;
-        t_P_D_p[1] = NAN;
-        t_P_D_p[2] = NAN;
-        t_P_D_p[3] = NAN;
-        t_P_D_p[4] = NAN;
-        t_P_D_p[5] = NAN;
-        t_P_D_p[6] = NAN;
-        t_P_D_p[7] = NAN;
-        t_P_D_p[8] = NAN;
-        t_P_D_p[9] = NAN;
-        t_P_D_p[10] = NAN;
-        t_P_D_p[11] = NAN;
-        t_P_D_p[12] = NAN;
-        t_P_D_p[13] = NAN;
-        t_P_D_p[14] = NAN;
-        t_P_D_p[15] = NAN;
-        t_P_D_p[16] = NAN;
-        t_P_D_p[17] = NAN;
+        out_t_P[0] = NAN;
+        out_t_P[1] = NAN;
+        out_t_P[2] = NAN;
+        out_t_P[3] = NAN;
+        out_t_P[4] = NAN;
+        out_t_P[5] = NAN;
+        out_t_P_D_t_A[0] = NAN;
+        out_t_P_D_t_A[1] = NAN;
+        out_t_P_D_t_A[2] = NAN;
+        out_t_P_D_t_A[3] = NAN;
+        out_t_P_D_t_A[4] = NAN;
+        out_t_P_D_t_A[5] = NAN;
+        out_t_P_D_t_A[6] = NAN;
+        out_t_P_D_t_A[7] = NAN;
+        out_t_P_D_t_A[8] = NAN;
+        out_t_P_D_t_A[9] = NAN;
+        out_t_P_D_t_A[10] = NAN;
+        out_t_P_D_t_A[11] = NAN;
+        out_t_P_D_t_A[12] = NAN;
+        out_t_P_D_t_A[13] = NAN;
+        out_t_P_D_t_A[14] = NAN;
+        out_t_P_D_t_A[15] = NAN;
+        out_t_P_D_t_A[16] = NAN;
+        out_t_P_D_t_A[17] = NAN;
+        out_t_P_D_t_A[18] = NAN;
+        out_t_P_D_t_A[19] = NAN;
+        out_t_P_D_t_A[20] = NAN;
+        out_t_P_D_t_A[21] = NAN;
+        out_t_P_D_t_A[22] = NAN;
+        out_t_P_D_t_A[23] = NAN;
+        out_t_P_D_t_A[24] = NAN;
+        out_t_P_D_t_A[25] = NAN;
+        out_t_P_D_t_A[26] = NAN;
+        out_t_P_D_t_A[27] = NAN;
+        out_t_P_D_t_A[28] = NAN;
+        out_t_P_D_t_A[29] = NAN;
+        out_t_P_D_t_A[30] = NAN;
+        out_t_P_D_t_A[31] = NAN;
+        out_t_P_D_t_A[32] = NAN;
+        out_t_P_D_t_A[33] = NAN;
+        out_t_P_D_t_A[34] = NAN;
+        out_t_P_D_t_A[35] = NAN;
+        out_t_P_D_a[0] = NAN;
+        out_t_P_D_a[1] = NAN;
+        out_t_P_D_a[2] = NAN;
+        out_t_P_D_a[3] = NAN;
+        out_t_P_D_a[4] = NAN;
+        out_t_P_D_a[5] = NAN;
+        out_t_P_D_a[6] = NAN;
+        out_t_P_D_a[7] = NAN;
+        out_t_P_D_a[8] = NAN;
+        out_t_P_D_a[9] = NAN;
+        out_t_P_D_a[10] = NAN;
+        out_t_P_D_a[11] = NAN;
+        out_t_P_D_a[12] = NAN;
+        out_t_P_D_a[13] = NAN;
+        out_t_P_D_a[14] = NAN;
+        out_t_P_D_a[15] = NAN;
+        out_t_P_D_a[16] = NAN;
+        out_t_P_D_a[17] = NAN;
+        out_t_P_D_p[0] = NAN;
+        out_t_P_D_p[1] = NAN;
+        out_t_P_D_p[2] = NAN;
+        out_t_P_D_p[3] = NAN;
+        out_t_P_D_p[4] = NAN;
+        out_t_P_D_p[5] = NAN;
+        out_t_P_D_p[6] = NAN;
+        out_t_P_D_p[7] = NAN;
+        out_t_P_D_p[8] = NAN;
+        out_t_P_D_p[9] = NAN;
+        out_t_P_D_p[10] = NAN;
+        out_t_P_D_p[11] = NAN;
+        out_t_P_D_p[12] = NAN;
+        out_t_P_D_p[13] = NAN;
+        out_t_P_D_p[14] = NAN;
+        out_t_P_D_p[15] = NAN;
+        out_t_P_D_p[16] = NAN;
+        out_t_P_D_p[17] = NAN;
     }
     return status;
 }
@@ -2176,26 +2172,26 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
 
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32_batch(
     size_t count,
-    const float *t_A,
-    const float *a,
-    const float *p,
-    float *t_P,
-    float *t_P_D_t_A,
-    float *t_P_D_a,
-    float *t_P_D_p,
+    const float *in_t_A,
+    const float *in_a,
+    const float *in_p,
+    float *out_t_P,
+    float *out_t_P_D_t_A,
+    float *out_t_P_D_a,
+    float *out_t_P_D_p,
     int *status)
 {
     int all_ = 0;
     size_t i_;
     for (i_ = 0; i_ < count; ++i_) {
         const int s_ = rigidsym_c_twist_transfer_with_jacobians_f32(
-            t_A + 6 * i_,
-            a + 3 * i_,
-            p + 3 * i_,
-            t_P + 6 * i_,
-            t_P_D_t_A + 36 * i_,
-            t_P_D_a + 18 * i_,
-            t_P_D_p + 18 * i_);
+            in_t_A + 6 * i_,
+            in_a + 3 * i_,
+            in_p + 3 * i_,
+            out_t_P + 6 * i_,
+            out_t_P_D_t_A + 36 * i_,
+            out_t_P_D_a + 18 * i_,
+            out_t_P_D_p + 18 * i_);
         if (status)
             status[i_] = s_;
         all_ |= s_;

@@ -46,10 +46,10 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6]);
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6]);
 
 /* twist_transfer in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -58,10 +58,10 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
  * rigidsym.codegen.accuracy.float_measure: worst 0.704 over 104 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6]);
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -69,17 +69,17 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
     size_t count,
-    const double *t_A,
-    const double *a,
-    const double *p,
-    double *t_P,
+    const double *in_t_A,
+    const double *in_a,
+    const double *in_p,
+    double *out_t_P,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
     size_t count,
-    const float *t_A,
-    const float *a,
-    const float *p,
-    float *t_P,
+    const float *in_t_A,
+    const float *in_a,
+    const float *in_p,
+    float *out_t_P,
     int *status);
 
 /* twist_transfer_with_jacobians:
@@ -126,10 +126,10 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
-    const double t_A[6],
-    const double a[3],
-    const double p[3],
-    double t_P[6],    double t_P_D_t_A[36],    double t_P_D_a[18],    double t_P_D_p[18]);
+    const double in_t_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_t_P[6],    double out_t_P_D_t_A[36],    double out_t_P_D_a[18],    double out_t_P_D_p[18]);
 
 /* twist_transfer_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -138,10 +138,10 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
  * rigidsym.codegen.accuracy.float_measure: worst 0.704 over 104 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
-    const float t_A[6],
-    const float a[3],
-    const float p[3],
-    float t_P[6],    float t_P_D_t_A[36],    float t_P_D_a[18],    float t_P_D_p[18]);
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6],    float out_t_P_D_t_A[36],    float out_t_P_D_a[18],    float out_t_P_D_p[18]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -149,23 +149,23 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
     size_t count,
-    const double *t_A,
-    const double *a,
-    const double *p,
-    double *t_P,
-    double *t_P_D_t_A,
-    double *t_P_D_a,
-    double *t_P_D_p,
+    const double *in_t_A,
+    const double *in_a,
+    const double *in_p,
+    double *out_t_P,
+    double *out_t_P_D_t_A,
+    double *out_t_P_D_a,
+    double *out_t_P_D_p,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32_batch(
     size_t count,
-    const float *t_A,
-    const float *a,
-    const float *p,
-    float *t_P,
-    float *t_P_D_t_A,
-    float *t_P_D_a,
-    float *t_P_D_p,
+    const float *in_t_A,
+    const float *in_a,
+    const float *in_p,
+    float *out_t_P,
+    float *out_t_P_D_t_A,
+    float *out_t_P_D_a,
+    float *out_t_P_D_p,
     int *status);
 
 RIGIDSYM_C_END_DECLS

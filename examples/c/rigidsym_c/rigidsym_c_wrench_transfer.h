@@ -46,10 +46,10 @@ RIGIDSYM_C_BEGIN_DECLS
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer(
-    const double w_A[6],
-    const double a[3],
-    const double p[3],
-    double w_P[6]);
+    const double in_w_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_w_P[6]);
 
 /* wrench_transfer in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -58,10 +58,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer(
  * rigidsym.codegen.accuracy.float_measure: worst 0.578 over 104 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32(
-    const float w_A[6],
-    const float a[3],
-    const float p[3],
-    float w_P[6]);
+    const float in_w_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_w_P[6]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -69,17 +69,17 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer_batch(
     size_t count,
-    const double *w_A,
-    const double *a,
-    const double *p,
-    double *w_P,
+    const double *in_w_A,
+    const double *in_a,
+    const double *in_p,
+    double *out_w_P,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32_batch(
     size_t count,
-    const float *w_A,
-    const float *a,
-    const float *p,
-    float *w_P,
+    const float *in_w_A,
+    const float *in_a,
+    const float *in_p,
+    float *out_w_P,
     int *status);
 
 /* wrench_transfer_with_jacobians:
@@ -125,10 +125,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32_batch(
  * RIGIDSYM_C_EXTREME_INPUT.
  */
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians(
-    const double w_A[6],
-    const double a[3],
-    const double p[3],
-    double w_P[6],    double w_P_D_w_A[36],    double w_P_D_a[18],    double w_P_D_p[18]);
+    const double in_w_A[6],
+    const double in_a[3],
+    const double in_p[3],
+    double out_w_P[6],    double out_w_P_D_w_A[36],    double out_w_P_D_a[18],    double out_w_P_D_p[18]);
 
 /* wrench_transfer_with_jacobians in float arithmetic only (float literals, sinf/cosf/sqrtf: no
  * double operation, for FPUs without double); arguments, outputs, status as above.
@@ -137,10 +137,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians(
  * rigidsym.codegen.accuracy.float_measure: worst 0.578 over 104 points of the
  * accuracy harness's float32 regimes, against arb at the exact point). */
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_f32(
-    const float w_A[6],
-    const float a[3],
-    const float p[3],
-    float w_P[6],    float w_P_D_w_A[36],    float w_P_D_a[18],    float w_P_D_p[18]);
+    const float in_w_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_w_P[6],    float out_w_P_D_w_A[36],    float out_w_P_D_a[18],    float out_w_P_D_p[18]);
 
 /* The same over count samples, one after the other (no heap, no stack beyond one
  * call's): each argument and output holds count rows of its per-sample size, row-major
@@ -148,23 +148,23 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_f32(
  * status[i] (status may be NULL) receives sample i's status; returns their OR. */
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_batch(
     size_t count,
-    const double *w_A,
-    const double *a,
-    const double *p,
-    double *w_P,
-    double *w_P_D_w_A,
-    double *w_P_D_a,
-    double *w_P_D_p,
+    const double *in_w_A,
+    const double *in_a,
+    const double *in_p,
+    double *out_w_P,
+    double *out_w_P_D_w_A,
+    double *out_w_P_D_a,
+    double *out_w_P_D_p,
     int *status);
 RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_f32_batch(
     size_t count,
-    const float *w_A,
-    const float *a,
-    const float *p,
-    float *w_P,
-    float *w_P_D_w_A,
-    float *w_P_D_a,
-    float *w_P_D_p,
+    const float *in_w_A,
+    const float *in_a,
+    const float *in_p,
+    float *out_w_P,
+    float *out_w_P_D_w_A,
+    float *out_w_P_D_a,
+    float *out_w_P_D_p,
     int *status);
 
 RIGIDSYM_C_END_DECLS
