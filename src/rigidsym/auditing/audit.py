@@ -192,7 +192,9 @@ def _window_cause(regime: str, wins: list) -> str:
     if not over:
         return " - cause not determined"
     w = over[0]
-    also = "".join(f"; also {v.where()} ({v.worst_ratio:.3g} x the bound)" for v in over[1:])
+    also = "".join(f"; also {v.where()} ({v.worst_ratio:.3g} x the bound)" for v in over[1:4])
+    if len(over) > 4:
+        also += f"; and {len(over) - 4} more windows (the JSON report lists them)"
     return f" - {w.where()}; {w.cause()}{also}"
 
 

@@ -296,20 +296,44 @@ def scan_all(ap: Approach, judge: Callable[[list, str], object], seed: int,
         out = []
         for a, b in runs[:MAX_WINDOWS]:
             i = a + int(np.argmax(rs[a:b + 1]))
+            if any(w.lo <= xs[i] <= w.hi for w in out):
+                continue            # inside a worse window (as that one's draw gives it)
             wx, wr = _golden(xs, i, lambda x, i=i: judged(x, i))
             w = Window(ap, wx, wr, seen[(wx, i)])
-            _ends(w, xs, rs, a, b, judged)
+            _ends(w, xs, rs, a, b, i, judged)
             out.append(w)
         for a, b in runs[MAX_WINDOWS:]:
+            if any(w.lo <= xs[a] and xs[b] <= w.hi for w in out):
+                continue
             # past the refined ones: the window as its samples give it, unrefined
             i = a + int(np.argmax(rs[a:b + 1]))
             w = Window(ap, xs[i], rs[i], seen[(xs[i], i)], lo=xs[a], hi=xs[b],
                        lo_open=a == 0, hi_open=b + 1 == len(xs))
             out.append(w)
-        out.sort(key=lambda w: -w.worst_ratio)
+        out = _merged(sorted(out, key=lambda w: -w.worst_ratio))
     for w in out:
         w.evaluations = len(seen)
     out[0].judged = sorted(((x, j) for (x, _), j in seen.items()), key=lambda t: t[0])
+    return out
+
+
+def _merged(ws: list[Window]) -> list[Window]:
+    """Windows that overlap (each as its own worst's draw gives it) joined into one, the
+    worst first: its worst the worse, its ends the outer ones, a jump kept only where it
+    lies at one of them."""
+    out: list[Window] = []
+    for w in ws:
+        m = next((m for m in out if w.lo <= m.hi and m.lo <= w.hi), None)
+        if m is None:
+            out.append(w)
+            continue
+        if w.lo < m.lo:
+            m.lo, m.lo_open = w.lo, w.lo_open
+        if w.hi > m.hi:
+            m.hi, m.hi_open = w.hi, w.hi_open
+        at_end = [j for j in (m.jump, w.jump) if j is not None and (
+            j[0] <= m.lo * END_FACTOR ** 2 or j[0] >= m.hi / END_FACTOR ** 2)]
+        m.jump = max(at_end, key=lambda j: j[1] / max(j[2], 1e-300), default=None)
     return out
 
 
@@ -335,16 +359,27 @@ def _golden(xs, i, r) -> tuple[float, float]:
     return wx, r(wx)
 
 
-def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, judged) -> None:
+def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged) -> None:
     """The ends of the window of lattice samples ``lo_i..hi_i`` (over the bound at both),
-    each bisected to within :data:`END_FACTOR` on the draw of the sample inside it; a jump
-    of the error across an end, and the slope of the error over the window's samples."""
+    on the draw of its worst sample ``i``: the lattice re-judged on that draw out from
+    each end, :data:`COARSE` samples a step, while over the bound (a defect of some draws
+    only, the axis, is a window on each of them), then bisected to within
+    :data:`END_FACTOR`; a jump of the error across an end, and the slope of the error over
+    the window's samples."""
+    def r(x):
+        return judged(x, i)
+
+    def walk(k: int, step: int) -> int:
+        """The last lattice index over the bound on draw ``i`` stepping from ``k``."""
+        while 0 <= k + step < len(xs) and r(xs[k + step]) > 1:
+            k += step
+        return k
+
+    lo_i = walk(walk(lo_i, -COARSE), -1)
+    hi_i = walk(walk(hi_i, COARSE), 1)
+
     def bisect(k_in: int, k_out: int) -> tuple[float, float, Callable]:
-        def r(x, k=k_in):
-            return judged(x, k)
         inside, outside = xs[k_in], xs[k_out]
-        if r(outside) > 1:          # over the bound there on this draw: the end is past it
-            return outside, outside, r
         while max(inside, outside) / min(inside, outside) > END_FACTOR:
             m = math.sqrt(inside * outside)
             if r(m) > 1:
@@ -378,7 +413,7 @@ def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, judged) -> None:
             if w.jump is None or min(a) / max(b) > w.jump[1] / max(w.jump[2], 1e-300):
                 w.jump = (math.sqrt(ins * out), min(a), max(b))
     inside = [(x, rr) for x, rr in zip(xs[lo_i:hi_i + 1], rs[lo_i:hi_i + 1], strict=True)
-              if math.isfinite(rr) and rr > 0]
+              if math.isfinite(rr) and rr > 1]
     if len(inside) >= 4:
         lx = np.log([x for x, _ in inside])
         ly = np.log([rr for _, rr in inside])
