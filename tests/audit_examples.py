@@ -172,6 +172,18 @@ def log_series_window(Q):
     return log_atan2(Q)
 
 
+# a window between decades such as the audit of Pinocchio 4.1.0's log3 met (a few hundred
+# times the bound on 1e-3 < phi < 2.3e-3, missed by a search that stepped by decades): here
+# the angle from arccos((tr Q - 1) / 2) on that window only (its rounding lost as 1/phi, up
+# to ~1e2 times the bound 8 u (kappa + 1)), atan2 elsewhere
+def log_arccos_window(Q):
+    s, c = vee(Q), (np.trace(Q) - 1) / 2
+    ns = np.linalg.norm(s)
+    if c > 0 and 1e-3 < ns < 2.3e-3:
+        return np.arccos(c) / ns * s
+    return log_atan2(Q)
+
+
 # a logarithm that takes Q^T (the passive convention) at some inputs only (where Q[0, 0] >
 # Q[1, 1], a test Q^T passes as Q does): no member matches at every input, the book's own at
 # some, the passive at the others

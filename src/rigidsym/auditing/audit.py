@@ -184,13 +184,18 @@ def _flag_cause(regime: str, rows: dict, wins: list) -> str:
 
 
 def _window_cause(regime: str, wins: list) -> str:
-    """The worst window over the bound on ``regime``'s approaches: where it is, and its
-    cause as measured (:meth:`.windows.Window.cause`)."""
-    over = [w for w in wins if w.approach.regime == regime and w.worst_ratio > 1]
+    """Every window over the bound on ``regime``'s approaches, the worst first: where it is
+    (its ends and its worst), and the worst's cause as measured
+    (:meth:`.windows.Window.cause`)."""
+    over = sorted((w for w in wins if w.approach.regime == regime and w.worst_ratio > 1),
+                  key=lambda w: -w.worst_ratio)
     if not over:
         return " - cause not determined"
-    w = max(over, key=lambda w: w.worst_ratio)
-    return f" - {w.where()}; {w.cause()}"
+    w = over[0]
+    also = "".join(f"; also {v.where()} ({v.worst_ratio:.3g} x the bound)" for v in over[1:4])
+    if len(over) > 4:
+        also += f"; and {len(over) - 4} more windows (the JSON report lists them)"
+    return f" - {w.where()}; {w.cause()}{also}"
 
 
 def _window(w) -> dict:

@@ -6,11 +6,15 @@ rotation toward the identity, ``pi - phi`` toward a half turn, ``|w|`` toward 0,
 distance to a derived zero of a norm), everything else (the axis, the other arguments)
 drawn anew for each sample. It is sampled on a lattice in ``log10 x``, :data:`PER_DECADE`
 points a decade from 1e-16 to 1 shifted by a random offset (seeded), so that every
-interval of ``x`` wider than a factor ``10 ** (1 / PER_DECADE)`` (1.78 at 4 a decade) holds
-a sample.
-Around the worst sample a golden-section search on ``log x`` refines the worst input; the
-window (the run of samples over the bound around it) has its ends located by bisection to
-within a factor :data:`END_FACTOR` of ``x``.
+interval of ``x`` wider than a factor ``10 ** (1 / PER_DECADE)`` (1.075 at 32 a decade)
+holds a sample. The whole lattice is first screened at once against rigidsym's kernel (the
+user's function called once per input, the kernel once for all); an input is judged
+against the truth where the two differ by more than ``4 u`` (or either flags), and at
+every :data:`COARSE`-th sample.
+Every run of samples over the bound (samples within it between two over it joined when at
+most :data:`GAP`) is a window: a golden-section search on ``log x`` around its worst
+sample refines its worst input, and its two ends are located by bisection to within a
+factor :data:`END_FACTOR` of ``x``. Every window is reported, its ends and its worst.
 
 A cause is stated only from what was measured: an error that jumps by :data:`JUMP` or more
 across an end located to within 1 % (three points on each side agreeing) is "a threshold
@@ -30,17 +34,32 @@ from flint import fmpq
 
 from rigidsym.codegen.accuracy import regimes as P
 
-__all__ = ["Approach", "Window", "approaches", "scan", "PER_DECADE", "DECADES",
-           "END_FACTOR", "JUMP"]
+__all__ = ["Approach", "Window", "approaches", "scan", "scan_all", "PER_DECADE", "DECADES",
+           "END_FACTOR", "JUMP", "GAP", "SCREEN", "COARSE", "MAX_WINDOWS", "GOLDEN",
+           "SCATTER"]
 
 #: samples per decade of the approach's parameter
-PER_DECADE = 4
+PER_DECADE = 32
 #: the decades sampled: x from 10**-DECADES to 1
 DECADES = 16
 #: the window's ends are located to within this factor of x
 END_FACTOR = 1.01
 #: an error that changes by this factor across an end located to within 1 % is a jump
 JUMP = 10.0
+#: samples within the bound that may lie between two over it in one window (noise: an
+#: error of the rounding's luck can be small at one input of a window)
+GAP = 2
+#: a sample whose screen (the distance to rigidsym's kernel over 8 u) exceeds this is judged
+SCREEN = 0.5
+#: every COARSE-th sample is judged whatever its screen (4 a decade at 32 a decade)
+COARSE = 8
+#: the windows refined on one approach (the worst first); the others as their samples give
+MAX_WINDOWS = 8
+#: golden-section steps around each window's worst sample
+GOLDEN = 8
+#: a slope is measured where the rms of ``log err`` off its fitted line is below this (the
+#: error within a factor 1.28 of a power law of ``x``)
+SCATTER = 0.25
 
 
 @dataclass(frozen=True)
@@ -67,8 +86,8 @@ class Window:
             where the worst is within the bound.
         lo_open, hi_open: the window reaches the smallest (largest) ``x`` sampled.
         jump: ``(x, ratio inside, ratio outside)`` at an end where the error jumps, or None.
-        slope: the slope of ``log err`` against ``log x`` over the window (None: fewer than
-            4 samples in it, or a flag).
+        slope: the slope of ``log err`` against ``log x`` over the window's samples (None:
+            fewer than 4 in it, a flag, or samples off a line by more than :data:`SCATTER`).
         evaluations: how many inputs were judged.
         judged: every judgement made, ``(x, judgement)``.
     """
@@ -212,11 +231,44 @@ def _samples(rng) -> list[float]:
     return [10.0 ** (-DECADES + off + k / PER_DECADE) for k in range(DECADES * PER_DECADE)]
 
 
-def scan(ap: Approach, judge: Callable[[list, str], object], seed: int) -> Window:
-    """Search ``ap`` (see the module): ``judge(point, regime)`` returns a judgement with
-    ``ratio`` (err over the bound; inf for a spurious flag) and ``flag``. Each
-    sample is a new draw of the approach (a new axis, new other arguments); the search
-    around the worst and the bisection of the window's ends keep the worst's draw."""
+def _runs(over: list[bool]) -> list[tuple[int, int]]:
+    """The runs ``(first, last)`` of lattice samples over the bound, two runs joined where
+    at most :data:`GAP` samples within it lie between them."""
+    out: list[list[int]] = []
+    for k, o in enumerate(over):
+        if not o:
+            continue
+        if out and k - out[-1][1] <= GAP + 1:
+            out[-1][1] = k
+        else:
+            out.append([k, k])
+    return [(a, b) for a, b in out]
+
+
+def scan(ap: Approach, judge: Callable[[list, str], object], seed: int,
+         screen: Callable[[list, str], np.ndarray] | None = None) -> Window:
+    """The worst window of :func:`scan_all` (its first): the one over the bound with the
+    largest error, else the worst input of an approach within the bound."""
+    return scan_all(ap, judge, seed, screen)[0]
+
+
+def scan_all(ap: Approach, judge: Callable[[list, str], object], seed: int,
+             screen: Callable[[list, str], np.ndarray] | None = None) -> list[Window]:
+    """Every window over the bound on ``ap`` (see the module), the worst first; where there
+    is none, one :class:`Window` with the approach's worst input and no ends.
+
+    ``judge(point, regime)`` returns a judgement with ``ratio`` (err over the bound; inf for
+    a spurious flag) and ``flag``. ``screen(points, regime)``, where given, returns for the
+    whole lattice at once (one call of the user's function per input, as its convention
+    allows) the user's distance to rigidsym's kernel over ``8 u`` (inf where the user's
+    output is not finite and the kernel's is, NaN where the kernel's is not finite): a
+    sample is judged where that exceeds :data:`SCREEN` or is NaN, and at every
+    :data:`COARSE`-th sample; elsewhere it is within the bound (its error is at most
+    ``8 u`` past the kernel's, which meets the bound). Without ``screen`` every sample is
+    judged. Each sample is a new draw of the approach (a new axis, new other arguments);
+    the search around each window's worst sample keeps that sample's draw, the bisection
+    of each end the draw of the sample inside it. The first window carries every
+    judgement made (:attr:`Window.judged`); every window the count of them."""
     rng = np.random.default_rng(seed + 101)
     seen: dict[tuple[float, int], object] = {}
 
@@ -227,18 +279,74 @@ def scan(ap: Approach, judge: Callable[[list, str], object], seed: int) -> Windo
         return j.ratio if j.flag != "expected" else 0.0
 
     xs = _samples(rng)
-    rs = [judged(x, k) for k, x in enumerate(xs)]
-    i = int(np.argmax(rs))
+    if screen is None:
+        rs = [judged(x, k) for k, x in enumerate(xs)]
+    else:
+        pts = [ap.point(x, k) for k, x in enumerate(xs)]
+        d = np.asarray(screen(pts, ap.regime), dtype=np.float64)
+        rs = [judged(x, k) if (k % COARSE == 0 or not d[k] <= SCREEN) else 0.0
+              for k, x in enumerate(xs)]
+    runs = _runs([r > 1 for r in rs])
+    runs.sort(key=lambda ab: -max(rs[ab[0]:ab[1] + 1]))
+    if not runs:
+        i = int(np.argmax(rs))
+        wx, wr = _golden(xs, i, lambda x, i=i: judged(x, i))
+        out = [Window(ap, wx, wr, seen[(wx, i)])]
+    else:
+        out = []
+        for a, b in runs[:MAX_WINDOWS]:
+            i = a + int(np.argmax(rs[a:b + 1]))
+            if any(w.lo <= xs[i] <= w.hi for w in out):
+                continue            # inside a worse window (as that one's draw gives it)
+            wx, wr = _golden(xs, i, lambda x, i=i: judged(x, i))
+            w = Window(ap, wx, wr, seen[(wx, i)])
+            _ends(w, xs, rs, a, b, i, judged)
+            out.append(w)
+        for a, b in runs[MAX_WINDOWS:]:
+            if any(w.lo <= xs[a] and xs[b] <= w.hi for w in out):
+                continue
+            # past the refined ones: the window as its samples give it, unrefined
+            i = a + int(np.argmax(rs[a:b + 1]))
+            w = Window(ap, xs[i], rs[i], seen[(xs[i], i)], lo=xs[a], hi=xs[b],
+                       lo_open=a == 0, hi_open=b + 1 == len(xs))
+            out.append(w)
+        out = _merged(sorted(out, key=lambda w: -w.worst_ratio))
+    for w in out:
+        w.evaluations = len(seen)
+    out[0].judged = sorted(((x, j) for (x, _), j in seen.items()), key=lambda t: t[0])
+    return out
 
-    def r(x: float) -> float:
-        return judged(x, i)
 
-    # golden section on log x between the worst sample's neighbours, on the worst's draw
+def _merged(ws: list[Window]) -> list[Window]:
+    """Windows that overlap (each as its own worst's draw gives it) joined into one, the
+    worst first: its worst the worse, its ends the outer ones, a jump kept only where it
+    lies at one of them."""
+    out: list[Window] = []
+    for w in ws:
+        m = next((m for m in out if w.lo <= m.hi and m.lo <= w.hi), None)
+        if m is None:
+            out.append(w)
+            continue
+        if w.lo < m.lo:
+            m.lo, m.lo_open = w.lo, w.lo_open
+        if w.hi > m.hi:
+            m.hi, m.hi_open = w.hi, w.hi_open
+        at_end = [j for j in (m.jump, w.jump) if j is not None and (
+            j[0] <= m.lo * END_FACTOR ** 2 or j[0] >= m.hi / END_FACTOR ** 2)]
+        m.jump = max(at_end, key=lambda j: j[1] / max(j[2], 1e-300), default=None)
+    return out
+
+
+def _golden(xs, i, r) -> tuple[float, float]:
+    """``(x, ratio)`` of the largest error found by a golden-section search on ``log x``
+    between sample ``i``'s neighbours, ``r`` the error on sample ``i``'s draw."""
     a = math.log(xs[i - 1] if i > 0 else xs[i] / 2)
     b = math.log(xs[i + 1] if i + 1 < len(xs) else min(1.0, xs[i] * 2))
     g = (math.sqrt(5) - 1) / 2
     c, d = b - g * (b - a), a + g * (b - a)
-    for _ in range(8):
+    tried = [xs[i]]
+    for _ in range(GOLDEN):
+        tried += [math.exp(c), math.exp(d)]
         if not math.isfinite(r(math.exp(c))) and not math.isfinite(r(math.exp(d))):
             break
         if r(math.exp(c)) >= r(math.exp(d)):
@@ -247,51 +355,56 @@ def scan(ap: Approach, judge: Callable[[list, str], object], seed: int) -> Windo
         else:
             a, c = c, d
             d = a + g * (b - a)
-    own = [x for (x, k) in seen if k == i]
-    wx = max(own, key=lambda x: (r(x), -abs(math.log(x / xs[i]))))
-    w = Window(ap, wx, r(wx), seen[(wx, i)])
-    if w.worst_ratio > 1:
-        # the window on the worst's draw: the samples out from the worst re-judged there
-        # until one is within the bound on each side
-        _ends(w, xs, i, r)
-    w.evaluations = len(seen)
-    w.judged = sorted(((x, j) for (x, _), j in seen.items()), key=lambda t: t[0])
-    return w
+    wx = max(tried, key=lambda x: (r(x), -abs(math.log(x / xs[i]))))
+    return wx, r(wx)
 
 
-def _ends(w: Window, xs, i, r) -> None:
-    lo_i, hi_i = i, i
-    while lo_i > 0 and r(xs[lo_i - 1]) > 1:
-        lo_i -= 1
-    while hi_i + 1 < len(xs) and r(xs[hi_i + 1]) > 1:
-        hi_i += 1
+def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged) -> None:
+    """The ends of the window of lattice samples ``lo_i..hi_i`` (over the bound at both),
+    on the draw of its worst sample ``i``: the lattice re-judged on that draw out from
+    each end, :data:`COARSE` samples a step, while over the bound (a defect of some draws
+    only, the axis, is a window on each of them), then bisected to within
+    :data:`END_FACTOR`; a jump of the error across an end, and the slope of the error over
+    the window's samples."""
+    def r(x):
+        return judged(x, i)
 
-    def bisect(inside: float, outside: float) -> tuple[float, float]:
+    def walk(k: int, step: int) -> int:
+        """The last lattice index over the bound on draw ``i`` stepping from ``k``."""
+        while 0 <= k + step < len(xs) and r(xs[k + step]) > 1:
+            k += step
+        return k
+
+    lo_i = walk(walk(lo_i, -COARSE), -1)
+    hi_i = walk(walk(hi_i, COARSE), 1)
+
+    def bisect(k_in: int, k_out: int) -> tuple[float, float, Callable]:
+        inside, outside = xs[k_in], xs[k_out]
         while max(inside, outside) / min(inside, outside) > END_FACTOR:
             m = math.sqrt(inside * outside)
             if r(m) > 1:
                 inside = m
             else:
                 outside = m
-        return inside, outside
+        return inside, outside, r
 
-    ends = []
-    w.lo = xs[lo_i] if lo_i == 0 else None
-    w.hi = xs[hi_i] if hi_i + 1 == len(xs) else None
     w.lo_open, w.hi_open = lo_i == 0, hi_i + 1 == len(xs)
+    ends = []
     if w.lo_open:
-        w.lo = min(w.lo, w.worst_x)
+        w.lo = min(xs[0], w.worst_x)
+    else:
+        ins, out, r = bisect(lo_i, lo_i - 1)
+        w.lo = min(ins, w.worst_x)
+        ends.append((ins, out, r))
     if w.hi_open:
-        w.hi = max(w.hi, w.worst_x)
-    if lo_i > 0:
-        ins, out = bisect(xs[lo_i], xs[lo_i - 1])
-        w.lo = ins
-        ends.append((ins, out))
-    if hi_i + 1 < len(xs):
-        ins, out = bisect(xs[hi_i], xs[hi_i + 1])
-        w.hi = ins
-        ends.append((ins, out))
-    for ins, out in ends:
+        w.hi = max(xs[-1], w.worst_x)
+    else:
+        ins, out, r = bisect(hi_i, hi_i + 1)
+        w.hi = max(ins, w.worst_x)
+        ends.append((ins, out, r))
+    for ins, out, r in ends:
+        if ins == out:
+            continue
         step = ins / out                       # toward the inside
         a = [r(ins * step ** k) for k in range(3)]
         b = [r(out / step ** k) for k in range(3)]
@@ -299,9 +412,13 @@ def _ends(w: Window, xs, i, r) -> None:
                 and min(a) > 1:
             if w.jump is None or min(a) / max(b) > w.jump[1] / max(w.jump[2], 1e-300):
                 w.jump = (math.sqrt(ins * out), min(a), max(b))
-    inside = [(x, r(x)) for x in xs[lo_i:hi_i + 1]
-              if math.isfinite(r(x)) and r(x) > 0]
+    inside = [(x, rr) for x, rr in zip(xs[lo_i:hi_i + 1], rs[lo_i:hi_i + 1], strict=True)
+              if math.isfinite(rr) and rr > 1]
     if len(inside) >= 4:
         lx = np.log([x for x, _ in inside])
         ly = np.log([rr for _, rr in inside])
-        w.slope = float(np.polyfit(lx, ly, 1)[0])
+        fit = np.polyfit(lx, ly, 1)
+        # a slope only where the samples lie on a line in log-log (within 1.3x rms):
+        # an error of the rounding's luck scatters, and its fitted slope says nothing
+        if float(np.sqrt(np.mean((np.polyval(fit, lx) - ly) ** 2))) < SCATTER:
+            w.slope = float(fit[0])

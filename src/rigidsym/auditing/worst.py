@@ -31,7 +31,7 @@ from rigidsym.codegen.accuracy.harness import reference as R
 from rigidsym.codegen.accuracy.harness import search as S
 
 __all__ = ["extreme", "Runner", "Judged", "Behaviour", "audit_regimes", "judge_point",
-           "sweep", "batch_dependence"]
+           "sweep", "batch_dependence", "screen_points"]
 
 
 def extreme(regime: str) -> bool:
@@ -280,6 +280,30 @@ def _at_undefined(name, point, dtype, runner, before) -> tuple[str, float]:
     return "", d / (8 * u)
 
 
+def screen_points(name: str, points, dtype, runner: Runner) -> np.ndarray:
+    """The user's distance to rigidsym's kernel at exact ``points`` (rounded to ``dtype``),
+    over ``8 u`` of ``dtype``: the user's function called once per point through
+    ``runner`` (its convention), the kernel once for all, in float64. Shape ``(n,)``; inf
+    where the user's output is not finite and the kernel's is, NaN where the kernel's is
+    not finite. A screen for :func:`.windows.scan_all`: where it is at most 1/2 the user's
+    error is within ``4 u`` of the kernel's, which meets the bound ``8 u (kappa + 1)``."""
+    k = R.kernel_of(name)
+    arrays = J.round_points(points, dtype, k)
+    before = len(runner.raised)
+    mine = runner(name, arrays, dtype, "user")
+    del runner.raised[before:]          # a flag here is judged (and recorded) at the input
+    kern = J.run_kernel(name, [a.astype(np.float64) for a in arrays], np.float64, "numpy")
+    u = float(np.finfo(dtype).eps) / 2
+    out = np.full(len(points), np.nan)
+    fin_k, fin_m = np.isfinite(kern).all(axis=1), np.isfinite(mine).all(axis=1)
+    with np.errstate(all="ignore"):
+        d = np.linalg.norm(mine - kern, axis=1) / np.maximum(
+            np.linalg.norm(kern, axis=1), 1e-300) / (8 * u)
+    out[fin_k & fin_m] = d[fin_k & fin_m]
+    out[fin_k & ~fin_m] = np.inf
+    return out
+
+
 def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
           n_start: int = 12, steps: int = 40, search: bool = True):
     """``(behaviours by regime, worst Judged, runner, windows)`` over the regimes, the
@@ -303,12 +327,15 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
         return judge_point(name, regime, pt, dtype, runner, tgt.antipodal)
 
     judged = [(regime, judge(pt, regime)) for regime, pts in regs.items() for pt in pts]
+    def screen(pts, regime):
+        return screen_points(name, pts, dtype, runner)
+
     windows = []
     if search:
         for ap in V.approaches(k, seed):
-            w = V.scan(ap, judge, seed)
-            windows.append(w)
-            judged += [(ap.regime, j) for _, j in w.judged]
+            ws = V.scan_all(ap, judge, seed, screen)
+            windows += ws
+            judged += [(ap.regime, j) for _, j in ws[0].judged]
     for regime, j in judged:
         b = beh.setdefault(regime, Behaviour(regime))
         b.n += 1
