@@ -67,9 +67,11 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
         # an internal error (sympy's, say) is named by the construct, never by its text;
         # two glyphs of one name and different shapes (\theta beside \boldsymbol\theta)
         # are named too, the likely cause
-        raise LatexError(f"cannot read {latex!r}: an internal error at the construct "
+        err = LatexError(f"cannot read {latex!r}: an internal error at the construct "
                          f"{construct_text(exc.obj)!r} ({exc.rule}){_same_name(build)}; say "
-                         f"it another way or report it", "internal") from None
+                         f"it another way or report it", "internal")
+        err.glyphs = dict(build.glyphs)  # those read before it: the --lets involved
+        raise err from None
     out = Parsed(readings=build.readings, glyphs=build.glyphs,
                  applied=build.applied, choice_points=build.choice_points)
     for st in stmts:
