@@ -237,3 +237,16 @@ def test_the_jpl_notation_declares_jpls_product():
     assert r.verdict == "does-not-hold" and r.counterexample
     r = _notation(latex, lets + [HAM], "jpl")  # a --let wins over the table
     assert r.verdict == "does-not-hold" and "Hamilton" in _said(r)[0]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    # Trawny & Roumeliotis (2005): the cross-product matrix of a rotated vector, and its slip
+    (r"\lfloor\mathbf{C}\mathbf{x}\times\rfloor = \mathbf{C}\lfloor\mathbf{x}\times\rfloor"
+     r"\mathbf{C}^T", "verified"),
+    (r"\lfloor\mathbf{C}\mathbf{x}\times\rfloor = \mathbf{C}^T\lfloor\mathbf{x}\times\rfloor"
+     r"\mathbf{C}", "does-not-hold"),
+])
+def test_floor_brackets_of_a_bold_vector_and_a_product(latex, verdict):
+    r = _check(latex, [r"\mathbf{C}: rotation", r"\mathbf{x}: vector"])
+    assert r.verdict == verdict
+    assert any(m.startswith(r"\lfloor") and "cross-product matrix" in m for m in r.model)
