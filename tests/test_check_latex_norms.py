@@ -86,3 +86,14 @@ def test_renamed_the_rate_of_the_norm_is_derived_and_verified():
     # a free vector's norm under sin/cos: no exact counterexample, so never verified
     assert slip.verdict in ("does-not-hold", "undecided") and (slip.counterexample or
                                                                slip.detail)
+
+
+def test_a_free_scalar_beside_a_free_vector_of_its_letter_is_a_scalar_of_its_own():
+    # θ and 𝛉 with no --let: two quantities, the counterexample gives each its own value
+    r = rigidsym.check_latex(r"\boldsymbol\theta^T\boldsymbol\theta = \theta^2", repairs=False)
+    assert r.verdict == "does-not-hold"
+    pt = {k: Fraction(v) for k, v in r.counterexample["point"].items()}
+    scalar = [k for k in pt if not k.startswith("theta_") or k == "theta_"]
+    assert len(scalar) == 1 and len(pt) == 4, pt
+    vector = sum(pt[f"theta_{i}"] ** 2 for i in (1, 2, 3))
+    assert Fraction(r.counterexample["residual"]) == vector - pt[scalar[0]] ** 2

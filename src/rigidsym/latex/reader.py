@@ -17,7 +17,7 @@ __all__ = ["parse_latex", "construct_text"]
 def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
                 block_rows: bool = False, reader: bool = False,
                 functions: dict | None = None, choices: dict | None = None,
-                models: dict | None = None) -> Parsed:
+                models: dict | None = None, renamed: frozenset[str] = frozenset()) -> Parsed:
     """Parse a LaTeX statement into relations of book symbols.
 
     Args:
@@ -39,6 +39,10 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             with ``X`` a model and ``y`` no scalar, a product unless told.
         models: the models read so far, their values by symbol name: ``d/dt`` of a model
             of a function of time differentiates its value.
+        renamed: the keys of plain glyphs that no row or override names and that stand
+            beside a bold glyph of the same letter (``\\theta`` beside
+            ``\\boldsymbol\\theta``): named with a trailing ``_`` (printed the same), so that
+            the scalar and the vector stay two symbols.
 
     Returns:
         A :class:`Parsed`.
@@ -55,6 +59,7 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     build.functions = functions or {}
     build.choices = choices or {}
     build.model_rhs = models or {}
+    build.renamed = renamed
     try:
         stmts = build.transform(tree)
     except lark.exceptions.VisitError as exc:

@@ -51,6 +51,8 @@ class GlyphReader:
         self.mentioned = mentioned  # the glyph keys of the LaTeX and the models (for names)
         self.over: dict[str, Glyph] = {}
         self.declared: dict[str, Let] = {x.key: x for x in lets}
+        # the plain glyphs beside a bold one of the same letter, named apart (:meth:`_name`)
+        self.renamed = frozenset(k for k in mentioned if self._beside_bold(k))
         self.notes: list[str] = []
         self.used: set[str] = set()
         self.glyphs: dict[str, Glyph] = {}
@@ -89,11 +91,15 @@ class GlyphReader:
             g = lookup(key, self.book)
             if g is not None:
                 return g.name
+        return name_from_key(key) + ("_" if self._beside_bold(key) else "")
+
+    def _beside_bold(self, key: str) -> bool:
+        """Whether the plain glyph ``key`` has the plain name of a bold glyph that a
+        ``--let`` declares or the LaTeX or a model mentions (``\\theta``,
+        ``\\boldsymbol\\theta``: both ``theta``)."""
         name = name_from_key(key)
-        if not _BOLD.search(key) and any(_BOLD.search(k) and name_from_key(k) == name
-                                         for k in {*self.declared, *self.mentioned}):
-            return name + "_"
-        return name
+        return not _BOLD.search(key) and any(_BOLD.search(k) and name_from_key(k) == name
+                                             for k in {*self.declared, *self.mentioned})
 
     def _extra(self, glyphs: dict) -> dict[str, Glyph]:
         """Rows the first reading could not know: a book row of a sub-section, a module's
@@ -166,7 +172,7 @@ class GlyphReader:
             try:
                 p = parse_latex(text, self.book, {**self.over, **(over or {})}, reader=True,
                                 functions=self.expanders, choices=self.choices,
-                                models=self.model_rhs)
+                                models=self.model_rhs, renamed=self.renamed)
             except LatexError as exc:
                 self.choice_points.update(getattr(exc, "choice_points", {}))
                 # a glyph whose meaning a later row gives (a shape, or a --notation model that

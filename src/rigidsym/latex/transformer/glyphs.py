@@ -7,7 +7,7 @@ and identities, ``t`` as time, and ranges of entries (``\\mathbf{q}_{1:3}``).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import lark
 import sympy as sp
@@ -271,6 +271,8 @@ class GlyphRules:
             g = lookup(key, self.section)
         if g is None:
             g = default_glyph(key, base)
+            if key in getattr(self, "renamed", ()):  # \theta beside \boldsymbol\theta
+                g = replace(g, name=g.name + "_")
         self.glyphs[key] = g
         if g.shape == ():
             return sp.Symbol(g.name, real=True)
