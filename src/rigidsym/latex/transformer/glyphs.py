@@ -99,6 +99,12 @@ class GlyphRules:
         accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        if not inner.accent and not inner.rest and len(items) == 3 \
+                and isinstance(items[2], tuple) and ":" in items[2][1]:
+            # \bar{q}_{1:3}: a range of entries of the accented vector \bar{q}, not of q
+            self._unuse(inner.key)
+            key = self._key(inner.base, [items[2]], accent, "")
+            return self._slice(key, inner.base, [items[2]], accent, "")
         if not inner.accent and not inner.key.startswith("{}") and all(
                 isinstance(r, tuple) for r in [*inner.rest, *items[2:]]) \
                 and bool(inner.rest) != bool(items[2:]):
