@@ -101,3 +101,20 @@ def test_the_default_limit_applies_where_none_is_given(monkeypatch):
     monkeypatch.setenv(limit.HOOK, "deciding")
     r = rigidsym.check_latex(*ROT, repairs=False)
     assert r.verdict == "undecided" and "(30 s)" in r.cause, r.cause
+
+
+#: micro Lie's J_r^{-1} in closed form against the inverse of J_r itself: the symbolic inverse
+#: of a 3 x 3 in sin and cos of a norm, far past a few seconds on any machine
+JR_INVERSE = (r"\mathbf{J}_r^{-1} = \mathbf{I} + \frac{1}{2}[\boldsymbol\theta]_\times + "
+              r"\left(\frac{1}{\theta^2} - \frac{1 + \cos\theta}{2\theta\sin\theta}\right)"
+              r"[\boldsymbol\theta]_\times^2", JR_INV[1][:3])
+
+
+def test_a_2_s_limit_on_a_slow_statement_ends_undecided_with_its_reason_by_the_clock(monkeypatch):
+    # no hook: the alarm itself ends the check, in whichever step it runs then
+    monkeypatch.delenv(limit.HOOK, raising=False)
+    r = rigidsym.check_latex(*JR_INVERSE, repairs=False, timeout=2)
+    assert r.verdict == "undecided" and r.method == "time-limit", (r.verdict, r.cause)
+    step = next(s for s in limit.STEPS if f"step '{s}'" in r.cause)
+    assert limit.STEPS[step][1] in r.cause and "(2 s)" in r.cause, r.cause
+    assert signal.getsignal(signal.SIGALRM) is signal.SIG_DFL

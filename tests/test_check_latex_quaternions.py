@@ -6,6 +6,8 @@ counterexample, in the other."""
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import mpmath as mp
 import pytest
 
@@ -237,3 +239,42 @@ def test_the_jpl_notation_declares_jpls_product():
     assert r.verdict == "does-not-hold" and r.counterexample
     r = _notation(latex, lets + [HAM], "jpl")  # a --let wins over the table
     assert r.verdict == "does-not-hold" and "Hamilton" in _said(r)[0]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    # Trawny & Roumeliotis (2005): the cross-product matrix of a rotated vector, and its slip
+    (r"\lfloor\mathbf{C}\mathbf{x}\times\rfloor = \mathbf{C}\lfloor\mathbf{x}\times\rfloor"
+     r"\mathbf{C}^T", "verified"),
+    (r"\lfloor\mathbf{C}\mathbf{x}\times\rfloor = \mathbf{C}^T\lfloor\mathbf{x}\times\rfloor"
+     r"\mathbf{C}", "does-not-hold"),
+])
+def test_floor_brackets_of_a_bold_vector_and_a_product(latex, verdict):
+    r = _check(latex, [r"\mathbf{C}: rotation", r"\mathbf{x}: vector"])
+    assert r.verdict == verdict
+    assert any(m.startswith(r"\lfloor") and "cross-product matrix" in m for m in r.model)
+
+
+#: Trawny & Roumeliotis (2005) (1): a unit quaternion's vector part and scalar part
+QBAR = [r"\bar{q}: unit 4-vector"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\bar{q}_{1:3}^T\bar{q}_{1:3} + \bar{q}_{4:4}^2 = 1", "verified"),
+    (r"\bar{q}_{1:3}^T\bar{q}_{1:3} = 1", "does-not-hold"),
+    (r"\bar{q}_{1:3}\times\bar{q}_{1:3} = \mathbf{0}", "verified"),
+])
+def test_a_range_of_an_accented_vector_is_its_entries_in_both_semantics(latex, verdict):
+    r = _check(latex, QBAR)
+    assert r.verdict == verdict
+    assert any(m.startswith(r"\bar{q}_{1:3}: entries 1 to 3 of \bar{q}") for m in r.model)
+    if verdict == "does-not-hold":
+        q = [Fraction(r.counterexample["point"][f"qbar_{i}"]) for i in (1, 2, 3, 4)]
+        assert sum(x * x for x in q) == 1 and q[3] != 0  # a unit 4-vector, its scalar part
+        # left side, computed here: the squared norm of the vector part, 1 - q4^2
+        assert Fraction(r.counterexample["lhs"]) == 1 - q[3] ** 2
+
+
+def test_a_range_of_an_undeclared_accented_glyph_asks_for_that_glyph():
+    with pytest.raises(ValueError, match=r"entries of \\bar\{q\}, which is no vector .*"
+                                         r"--let '\\bar\{q\}: 4-vector'"):
+        _check(r"\bar{q}_{1:3}^T\bar{q}_{1:3} = 1", [])

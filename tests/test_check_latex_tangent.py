@@ -174,3 +174,28 @@ def test_the_second_semantics_orders_its_own_definitions():
     with V.tangent_order(True):
         featherstone = V.spatial_cross(x)
     assert featherstone == V.small_adjoint(x)
+
+
+ROTATIONS = [r"\mathbf{R}: rotation", r"\mathbf{R}_1: rotation", r"\mathbf{R}_2: rotation"]
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    # micro Lie (Solà et al. 2018): Ad of SO(3) is R, so Ad_{R^-1} = R^T and Ad is a
+    # homomorphism; each with its slip
+    (r"\mathbf{Ad}_{\mathbf{R}^{-1}} = \mathbf{R}^T", ROTATIONS[:1], "verified"),
+    (r"\mathbf{Ad}_{\mathbf{R}^{-1}} = \mathbf{R}", ROTATIONS[:1], "does-not-hold"),
+    (r"\mathbf{Ad}_{\mathbf{R}_1\mathbf{R}_2} = \mathbf{Ad}_{\mathbf{R}_1}"
+     r"\mathbf{Ad}_{\mathbf{R}_2}", ROTATIONS[1:], "verified"),
+    (r"\mathbf{Ad}_{\mathbf{R}_1\mathbf{R}_2} = \mathbf{Ad}_{\mathbf{R}_2}"
+     r"\mathbf{Ad}_{\mathbf{R}_1}", ROTATIONS[1:], "does-not-hold"),
+])
+def test_ad_of_a_rotation_built_of_rotations_is_that_rotation(latex, lets, verdict):
+    r = _check(latex, lets)
+    assert r.verdict == verdict
+    assert verdict == "verified" or r.counterexample
+
+
+def test_ad_of_a_3x3_that_is_no_rotation_by_construction_is_refused_naming_rotations():
+    with pytest.raises(ValueError, match=r"4x4 transform or a rotation .*--let "
+                                         r"'\\mathbf\{R\}: rotation'"):
+        _check(r"\mathbf{Ad}_{2\mathbf{R}} = 2\mathbf{R}", ROTATIONS[:1])

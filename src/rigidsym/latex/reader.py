@@ -17,7 +17,7 @@ __all__ = ["parse_latex", "construct_text"]
 def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
                 block_rows: bool = False, reader: bool = False,
                 functions: dict | None = None, choices: dict | None = None,
-                models: dict | None = None) -> Parsed:
+                models: dict | None = None, renamed: frozenset[str] = frozenset()) -> Parsed:
     """Parse a LaTeX statement into relations of book symbols.
 
     Args:
@@ -39,6 +39,10 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
             with ``X`` a model and ``y`` no scalar, a product unless told.
         models: the models read so far, their values by symbol name: ``d/dt`` of a model
             of a function of time differentiates its value.
+        renamed: the keys of plain glyphs that no row or override names and that stand
+            beside a bold glyph of the same letter (``\\theta`` beside
+            ``\\boldsymbol\\theta``): named with a trailing ``_`` (printed the same), so that
+            the scalar and the vector stay two symbols.
 
     Returns:
         A :class:`Parsed`.
@@ -55,6 +59,7 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     build.functions = functions or {}
     build.choices = choices or {}
     build.model_rhs = models or {}
+    build.renamed = renamed
     try:
         stmts = build.transform(tree)
     except lark.exceptions.VisitError as exc:
@@ -67,9 +72,11 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
         # an internal error (sympy's, say) is named by the construct, never by its text;
         # two glyphs of one name and different shapes (\theta beside \boldsymbol\theta)
         # are named too, the likely cause
-        raise LatexError(f"cannot read {latex!r}: an internal error at the construct "
+        err = LatexError(f"cannot read {latex!r}: an internal error at the construct "
                          f"{construct_text(exc.obj)!r} ({exc.rule}){_same_name(build)}; say "
-                         f"it another way or report it", "internal") from None
+                         f"it another way or report it", "internal")
+        err.glyphs = dict(build.glyphs)  # those read before it: the --lets involved
+        raise err from None
     out = Parsed(readings=build.readings, glyphs=build.glyphs,
                  applied=build.applied, choice_points=build.choice_points)
     for st in stmts:

@@ -11,6 +11,7 @@ import sympy as sp
 from sympy.matrices.expressions.matexpr import MatrixElement
 
 from rigidsym.core.errors import BadInput
+from rigidsym.latex.declgraph import glyph_keys
 from rigidsym.latex.entries import DECLARED_PARAM
 from rigidsym.latex.hats import CAPITAL_READINGS, capital_point, hat_reading, is_capital
 from rigidsym.latex.kinematics import rate_target
@@ -25,6 +26,8 @@ __all__: list[str] = []
 #: the shape errors a vector where a 3 x 3 stands would mend: a sum, a juxtaposition, a
 #: cross-product matrix (not ``|\mathbf{A}|``, refused as a determinant written so)
 _VECTOR_USES = ("shapes do not fit", "no product fits", "expected a 3-vector")
+#: a bold font in a glyph key (a vector or matrix by the books' convention)
+_BOLD = re.compile(r"\\(?:mathbf|boldsymbol|bm)\b")
 
 
 def _in(section: str, book: str) -> bool:
@@ -42,10 +45,14 @@ def _book_rows(key: str, book: str) -> list[Glyph]:
 class GlyphReader:
     """Parses the LaTeX and the models with one set of glyph overrides."""
 
-    def __init__(self, lets: list[Let], book: str | None, lend: dict, notation=None):
+    def __init__(self, lets: list[Let], book: str | None, lend: dict, notation=None,
+                 mentioned: frozenset[str] = frozenset()):
         self.book, self.lend, self.notation = book, lend, notation
+        self.mentioned = mentioned  # the glyph keys of the LaTeX and the models (for names)
         self.over: dict[str, Glyph] = {}
         self.declared: dict[str, Let] = {x.key: x for x in lets}
+        # the plain glyphs beside a bold one of the same letter, named apart (:meth:`_name`)
+        self.renamed = frozenset(k for k in mentioned if self._beside_bold(k))
         self.notes: list[str] = []
         self.used: set[str] = set()
         self.glyphs: dict[str, Glyph] = {}
@@ -73,11 +80,26 @@ class GlyphReader:
                     self.by_notation.add(x.key)
 
     def _name(self, key: str) -> str:
+        """The symbol name of a declared glyph: its ``--book`` row's, else the plain name of
+        its key. A plain glyph beside a bold one of the same letter that a ``--let``
+        declares or the LaTeX or a model mentions (``\\theta = \\|\\boldsymbol\\theta\\|``
+        beside ``\\boldsymbol\\theta(t)``, the rotation vector's angle) is named with a
+        trailing ``_``, printed as the same glyph (:func:`rigidsym.printing.names.book_text`),
+        so that the two stay two symbols wherever symbols are keyed by name (the models of
+        functions of time, their rates)."""
         if self.book:
             g = lookup(key, self.book)
             if g is not None:
                 return g.name
-        return name_from_key(key)
+        return name_from_key(key) + ("_" if self._beside_bold(key) else "")
+
+    def _beside_bold(self, key: str) -> bool:
+        """Whether the plain glyph ``key`` has the plain name of a bold glyph that a
+        ``--let`` declares or the LaTeX or a model mentions (``\\theta``,
+        ``\\boldsymbol\\theta``: both ``theta``)."""
+        name = name_from_key(key)
+        return not _BOLD.search(key) and any(_BOLD.search(k) and name_from_key(k) == name
+                                             for k in {*self.declared, *self.mentioned})
 
     def _extra(self, glyphs: dict) -> dict[str, Glyph]:
         """Rows the first reading could not know: a book row of a sub-section, a module's
@@ -150,7 +172,7 @@ class GlyphReader:
             try:
                 p = parse_latex(text, self.book, {**self.over, **(over or {})}, reader=True,
                                 functions=self.expanders, choices=self.choices,
-                                models=self.model_rhs)
+                                models=self.model_rhs, renamed=self.renamed)
             except LatexError as exc:
                 self.choice_points.update(getattr(exc, "choice_points", {}))
                 # a glyph whose meaning a later row gives (a shape, or a --notation model that
@@ -328,9 +350,32 @@ class GlyphReader:
             msg += (f"; {hats[0]} is a unit vector in Lynch-Park and Corke, the skew matrix of "
                     f"{hats[0][5:-1]} in Murray-Li-Sastry: say which, --notation "
                     f"murray-li-sastry or --let '{hats[0]} = [{hats[0][5:-1]}]_\\times'")
+        if exc.construct == "internal":
+            msg = msg.replace("; say it another way", self._lets_involved(exc.glyphs, what)
+                              + "; say it another way")
         out = LatexError(msg, exc.construct)
         out.glyphs = exc.glyphs
         return out
+
+    def _lets_involved(self, glyphs: dict, what: str) -> str:
+        """The words naming the ``--let`` declarations behind the glyphs read up to an
+        internal error, through the models they mention (``\\dot{\\mathbf{R}}`` of a model R
+        written in θ: R's --let and θ's), or ``""``; the ``--let`` being read (``what``) is
+        named already."""
+        todo, seen = [k for k in glyphs if k in self.declared], set()
+        while todo:
+            key = todo.pop()
+            if key in seen:
+                continue
+            seen.add(key)
+            x = self.declared[key]
+            try:
+                todo += [k for k in glyph_keys(x.latex) if k in self.declared] if x.latex else []
+            except LatexError:
+                pass
+        texts = [f"--let '{self.declared[k].text}'" for k in sorted(seen)
+                 if f"--let '{self.declared[k].text}'" != what]
+        return f" (the --let declarations involved: {', '.join(texts)})" if texts else ""
 
 
 def _replace_all(v, rebound: list):

@@ -234,7 +234,7 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
     lets += rated_lets(lets)  # --let '\\dot{X} = ...' alone: X a function of time
     functions = _notation_functions(latex, lets, table)
     lets += functions
-    rd = GlyphReader(lets, book, lend, table)
+    rd = GlyphReader(lets, book, lend, table, _mentioned(latex, lets))
     rd.by_notation |= {x.key for x in functions}
     rd.choices = dict(choices or {})
     try:
@@ -242,6 +242,18 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
     except (LatexError, BadInput) as exc:
         exc.choice_points = {k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points}
         raise
+
+
+def _mentioned(latex: str, lets: list[Let]) -> frozenset[str]:
+    """The glyph keys the LaTeX and the ``--let`` models mention (one that does not parse
+    mentions none here: the parse proper says why)."""
+    out: set[str] = set()
+    for text in [latex] + [x.latex for x in lets if x.latex]:
+        try:
+            out |= glyph_keys(text)
+        except LatexError:
+            pass
+    return frozenset(out)
 
 
 def _notation_functions(latex: str, lets: list[Let], table) -> list[Let]:

@@ -13,7 +13,7 @@ import mpmath as mp
 
 from rigidsym.numeval import values as V
 
-__all__ = ["entry_of_declared", "entries_of"]
+__all__ = ["entry_of_declared", "entries_of", "range_under_accent"]
 
 
 def entry_of_declared(ev, t, k: int, letter: str, decls: dict, base_letter, text_of):
@@ -80,3 +80,23 @@ def entries_of(ev, t, base_letter, text_of):
     if lo == hi:
         return v[lo - 1]
     return mp.matrix([v[i] for i in range(lo - 1, hi)])
+
+
+def range_under_accent(t) -> tuple | None:
+    r"""``\bar{q}_{1:3}`` (an accented tree whose glyph ends in a range subscript, as
+    :func:`rigidsym.numeval.names.canonical` moves it under the accent): ``(whole, lo,
+    hi)``, ``whole`` the accented glyph without the range (``\bar{q}``, whose entries
+    ``lo`` to ``hi`` are meant, 1-based, inclusive); ``None`` for any other tree."""
+    if not isinstance(t, lark.Tree) or t.data != "accented" or len(t.children) != 2:
+        return None
+    accent, inner = t.children
+    if not isinstance(inner, lark.Tree) or inner.data != "glyph" or len(inner.children) != 2:
+        return None
+    sub = inner.children[1]
+    if not isinstance(sub, lark.Tree) or sub.data != "subscript" or len(sub.children) != 1:
+        return None
+    tok = sub.children[0]
+    if not (isinstance(tok, lark.Token) and tok.type == "SUBRANGE"):
+        return None
+    lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
+    return lark.Tree("accented", [accent, lark.Tree("glyph", [inner.children[0]])]), lo, hi

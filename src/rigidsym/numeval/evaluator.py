@@ -353,6 +353,13 @@ class Evaluator:
         key = glyph_key(t)
         if key in self.env.decls or key in self.env.binds:
             return self.env.lookup(key, t)
+        ranged = entries.range_under_accent(t)
+        if ranged is not None:  # \bar{q}_{1:3}: entries of the declared \bar{q}
+            whole, lo, hi = ranged
+            v = self._declared_only(whole)
+            if not V.is_matrix(v) or v.cols != 1 or not 1 <= lo <= hi <= v.rows:
+                raise NotCovered(f"the entries {text_of(t)}")
+            return v[lo - 1] if lo == hi else mp.matrix([v[i] for i in range(lo - 1, hi)])
         accent = str(t.children[0])
         if accent in ("\\dot", "\\ddot") and len(t.children) == 2:
             inner = t.children[1]

@@ -7,7 +7,7 @@ and identities, ``t`` as time, and ranges of entries (``\\mathbf{q}_{1:3}``).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import lark
 import sympy as sp
@@ -99,6 +99,12 @@ class GlyphRules:
         accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        if not inner.accent and not inner.rest and len(items) == 3 \
+                and isinstance(items[2], tuple) and ":" in items[2][1]:
+            # \bar{q}_{1:3}: a range of entries of the accented vector \bar{q}, not of q
+            self._unuse(inner.key)
+            key = self._key(inner.base, [items[2]], accent, "")
+            return self._slice(key, inner.base, [items[2]], accent, "")
         if not inner.accent and not inner.key.startswith("{}") and all(
                 isinstance(r, tuple) for r in [*inner.rest, *items[2:]]) \
                 and bool(inner.rest) != bool(items[2:]):
@@ -271,6 +277,8 @@ class GlyphRules:
             g = lookup(key, self.section)
         if g is None:
             g = default_glyph(key, base)
+            if key in getattr(self, "renamed", ()):  # \theta beside \boldsymbol\theta
+                g = replace(g, name=g.name + "_")
         self.glyphs[key] = g
         if g.shape == ():
             return sp.Symbol(g.name, real=True)

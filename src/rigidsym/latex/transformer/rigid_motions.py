@@ -137,6 +137,9 @@ class RigidMotionRules:
         want = (4, 4) if big else (6, 1)
         if matrix_shape(x) != want:
             what = "a 4x4 transform" if big else "a twist (6-vector)"
+            if big and matrix_shape(x) == (3, 3):  # SO(3)'s Ad needs the rotation declared
+                what += (" or a rotation built of glyphs declared rotations (--let "
+                         "'\\mathbf{R}: rotation': Ad of SO(3) is R itself)")
             raise LatexError(f"{word}_{{...}} of {shape_words(x)}{self._named(x)}: expected "
                              f"{what} (declare it, e.g. --let 'T: transform' or "
                              f"--let '\\mathcal{{V}}: twist')", "shapes")
@@ -145,7 +148,15 @@ class RigidMotionRules:
         return rigid_motions.Ad(x, order) if big else rigid_motions.ad(x, order)
 
     def _rotation(self, x) -> bool:
-        """Whether ``x`` is one glyph declared a rotation (a ``--let`` kind, a notation)."""
+        """Whether ``x`` is a rotation by its construction: a glyph declared a rotation (a
+        ``--let`` kind, a notation), or a product, transpose, inverse or integer power of
+        such (micro Lie's ``Ad_{R^{-1}}``, ``Ad_{R_1 R_2}``: SO(3) is a group)."""
+        if isinstance(x, sp.Transpose | sp.Inverse):
+            return self._rotation(x.arg)
+        if isinstance(x, sp.MatPow):
+            return x.exp.is_integer is True and self._rotation(x.base)
+        if isinstance(x, sp.MatMul):
+            return all(self._rotation(a) for a in x.args)  # a scalar factor: no rotation
         if not isinstance(x, sp.MatrixSymbol) or x.shape != (3, 3):
             return False
         return any(g.name == x.name and str(g.meaning).startswith("rotation")
