@@ -112,6 +112,46 @@ def test_summary_counts_the_per_id_lines_and_exit_says_unread(quick, tmp_path):
     assert _run(tmp_path, "--quiet", "--lenient")[0] == 0
 
 
+#: the referee's tamperings that the page refutes: each a FAILED line of its id (exit 1),
+#: never NOT READ (exit 3, which the unmodified chapter gives too)
+REFUTED = [("3.13", "zero_is_one_minus_one"), ("3.13", "zero_zero_definition"),
+           ("3.13", "entry_alone"), ("3.13", "forged_does_not_hold"),
+           ("3.57", "corrected_as_printed"), ("3.97b", "corrected_as_printed"),
+           ("3.141", "true_as_shape_mismatch"), ("3.141", "forged_does_not_hold"),
+           ("3.18", "dropped_relation")]
+
+
+def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
+    """On ids read on every side, or where the read side or a bold 1, O or 0 decides: a
+    side containing a bare 1 (3.97b's rate of L) is read at its shape, a bold 0 is an array
+    sized by its other side (3.141: no shape mismatch, no scalar), so each is a rejection."""
+    certs = {**quick, **_certs(["3.57", "3.141"])}
+    for k, (i, name) in enumerate(REFUTED):
+        t = forge.FORGERIES[name](certs[i])
+        assert t is not None, (i, name)
+        rc, out = _rejected(tmp_path / str(k), i, t)
+        failed = [x for x in out.splitlines() if x.startswith("FAILED") and f"({i})" in x]
+        assert rc == 1 and failed, (i, name, out[-600:])
+    c = json.loads(json.dumps(certs["3.13"]))  # a citation of (3.11) that (3.11) does not print
+    q = next(s for s in c["symbols"] if s.get("printed_as"))
+    q["printed_as"] = "(3.11)"
+    rc, out = _rejected(tmp_path / "cite", "3.13", c)
+    assert rc == 1 and "does not print" in out and "(3.11)" in out, out[-600:]
+
+
+def test_a_bare_one_inside_a_side_leaves_its_shape_firm():
+    """Only a side whose shape rests on the size given to a bare 1, O or 0 is loose."""
+    from certcheck.reader import read_relations
+    table = [{"glyph": "\\mathbf{e}", "kind": "unit", "atoms": ["e_1", "e_2", "e_3"]}]
+    page = ("\\mathbf{1} - \\mathbf{e}\\mathbf{e}^T = \\mathbf{O}\\mathbf{e}\\mathbf{e}^T = "
+            "\\mathbf{0} = \\mathbf{e}^T\\mathbf{O} = \\mathbf{e}^T\\mathbf{0} = \\begin{bmatrix} "
+            "\\mathbf{O} & \\mathbf{e} \\\\ \\mathbf{e}^T & 0 \\end{bmatrix}")
+    (*sides,), = read_relations(page, table)
+    assert [(v.shape, loose) for v, loose, _ in sides] == [
+        ((3, 3), False), ((3, 3), False), ((3, 1), True), ((1, 3), False), ((1, 1), True),
+        ((4, 4), False)]
+
+
 def _vacuous(lhs: str, rhs: str, eq_id: str = "3.0") -> dict:
     return {"format": "rigidsym-certificate", "version": 1, "id": eq_id,
             "verdict": "verified",
