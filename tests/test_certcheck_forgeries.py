@@ -161,7 +161,8 @@ def _vacuous(lhs: str, rhs: str, eq_id: str = "3.0") -> dict:
                            "evidence": {"type": "identity"}}]}
 
 
-@pytest.mark.parametrize("lhs, rhs", [("1*1*1*1*1*1", "1"), ("e_1", "e_1"), ("2 - 1", "1")])
+@pytest.mark.parametrize("lhs, rhs", [("1*1*1*1*1*1", "1"), ("e_1", "e_1"), ("2 - 1", "1"),
+                                      ("1*(1*1 - 0*e_1) - 0*(e_2 + e_3)", "1")])
 def test_vacuous_verified_is_not_evidence(lhs, rhs):
     """Identical sides, or constants only, prove nothing: a verified id made of them fails,
     and beside a real relation it is marked VACUOUS."""
@@ -170,6 +171,17 @@ def test_vacuous_verified_is_not_evidence(lhs, rhs):
     c = _vacuous("e_1^2 + e_2^2 + e_3^2", "1")
     c["relations"].append({**c["relations"][0], "lhs": [[lhs]], "rhs": [[rhs]]})
     assert any("VACUOUS" in x for x in check_certificate(c)[1])
+
+
+def test_a_restatement_is_proved_but_not_verified():
+    """Constants only, an atom only in a product with 0 (3.30's expanded determinant), is
+    a restatement; atoms that cancel by computation are a verified relation."""
+    c = _vacuous("1*(1*1 - 0*e_1) - 0*(e_2 + e_3)", "1")
+    assert check_certificate({**c, "verdict": "restatement"})[0] == "restatement"
+    with pytest.raises(CheckError, match="not zero"):  # a restatement is still proved
+        check_certificate({**c, "verdict": "restatement", "relations": [
+            {**c["relations"][0], "rhs": [["2"]]}]})
+    assert check_certificate(_vacuous("(e_1 - e_2) + (e_2 - e_1)", "0"))[0] == "verified"
 
 
 # ------------------------------------------------------------------ slow: the chapter
@@ -211,3 +223,53 @@ def _constant_or_same(cert: dict, rel: dict) -> bool:
     words = set(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", json.dumps([rel["lhs"], rel["rhs"]])))
     return rel["lhs"] == rel["rhs"] or not words & names and not any(
         w.startswith("let") or w in ("cos", "sin") for w in words)
+
+
+def _atom_free(text: str, lets: dict, memo: dict) -> bool:
+    """The test's own reading of the grammar (Python's ast): free of atoms once each product
+    with a literal 0 factor is dropped (lets read in)."""
+    import ast
+
+    def walk(n) -> tuple[bool, bool]:  # (literally zero, free of atoms)
+        if isinstance(n, ast.Constant):
+            return n.value == 0, True
+        if isinstance(n, ast.Name):
+            if n.id not in lets:
+                return False, False
+            if n.id not in memo:
+                memo[n.id] = walk(ast.parse(lets[n.id].replace("^", "**"), mode="eval").body)
+            return memo[n.id]
+        if isinstance(n, ast.UnaryOp):
+            return walk(n.operand)
+        if isinstance(n, ast.BinOp):
+            (za, fa), (zb, fb) = walk(n.left), walk(n.right)
+            if isinstance(n.op, ast.Mult):
+                return za or zb, za or zb or fa and fb
+            if isinstance(n.op, ast.Div):
+                return za, za or fa and fb
+            if isinstance(n.op, ast.Pow):
+                return za, fa
+            return za and zb, fa and fb
+        return False, False  # cos, sin, sqrt, a jet's prime
+    try:
+        return walk(ast.parse(text.replace("^", "**"), mode="eval").body)[1]
+    except SyntaxError:  # a jet (x'): an atom
+        return False
+
+
+@pytest.mark.slow
+def test_no_vacuous_verified_in_the_chapter(chapter_certificates):
+    """Every certificate of the chapter: a verified id has a printed relation that is not
+    vacuous (identical sides, or constants only by the test's own reading), a restatement
+    has none (3.30's det U = 1 expanded as 1 1 1 1 1 1), and certcheck agrees with each."""
+    kinds = {}
+    for i, c in chapter_certificates.items():
+        lets, memo = dict(c["let"]), {}
+        printed = [r for r in c["relations"] if r["role"] == "printed"]
+        vac = [r["lhs"] == r["rhs"] or all(_atom_free(x, lets, memo) for s in ("lhs", "rhs")
+                                            for row in r[s] for x in row) for r in printed]
+        if c["verdict"] in ("verified", "restatement"):
+            kinds[i] = c["verdict"]
+            assert (c["verdict"] == "restatement") == (bool(printed) and all(vac)), i
+            assert check_certificate(c)[0] == c["verdict"], i
+    assert sorted(i for i, v in kinds.items() if v == "restatement") == ["3.30"]
