@@ -273,3 +273,24 @@ def test_no_vacuous_verified_in_the_chapter(chapter_certificates):
             assert (c["verdict"] == "restatement") == (bool(printed) and all(vac)), i
             assert check_certificate(c)[0] == c["verdict"], i
     assert sorted(i for i, v in kinds.items() if v == "restatement") == ["3.30"]
+
+
+def test_explain_follows_an_id_from_the_page_to_the_proof(quick, tmp_path):
+    """``certcheck explain ID``: the printed line, the table's lines its glyphs use with the
+    page's definitions (3.13's A by (3.11), Q as printed in (2.49)), the evidence and the
+    Coq file; exit 0 only where the id passes read on every side."""
+    forge.write_run(tmp_path / "run", {f"{i}.json": c for i, c in quick.items()}, BOOK)
+    rc, out = _run("explain", "3.13", tmp_path / "run", "--book", BOOK)
+    lines = out.splitlines()
+    assert rc == 0 and lines[0].startswith("(3.13) printed as: \\mathbf{A}^T \\mathbf{A} =")
+    assert any(x.strip().startswith("\\mathbf{A} \\equiv") and "(3.11)" in x for x in lines)
+    assert any(x.strip().startswith("\\mathbf{Q}: printed as (2.49)") for x in lines)
+    assert any("identity by cofactors" in x for x in lines) and "eq3_13.v" in lines[-1]
+    assert _run("explain", "3.18", tmp_path / "run", "--book", BOOK)[0] == 1  # NOT READ
+    forge.write_run(tmp_path / "bad", {"3.13.json": forge.entry_alone(quick["3.13"])}, BOOK)
+    rc, out = _run("explain", "3.13", tmp_path / "bad", "--book", BOOK)
+    assert rc == 1 and "FAILED" in out, out[-400:]
+    assert _run("explain", "3.16", tmp_path / "run", "--book", BOOK)[0] == 2  # no such file
+    (tmp_path / "run" / "3.13.json").write_text(json.dumps(forge.entry_alone(quick["3.13"])))
+    rc, out = _run("explain", "3.13", tmp_path / "run", "--book", BOOK)  # not the run's
+    assert rc == 1 and "MANIFEST" in out, out[-400:]
