@@ -112,6 +112,46 @@ def test_summary_counts_the_per_id_lines_and_exit_says_unread(quick, tmp_path):
     assert _run(tmp_path, "--quiet", "--lenient")[0] == 0
 
 
+#: the referee's tamperings that the page refutes: each a FAILED line of its id (exit 1),
+#: never NOT READ (exit 3, which the unmodified chapter gives too)
+REFUTED = [("3.13", "zero_is_one_minus_one"), ("3.13", "zero_zero_definition"),
+           ("3.13", "entry_alone"), ("3.13", "forged_does_not_hold"),
+           ("3.57", "corrected_as_printed"), ("3.97b", "corrected_as_printed"),
+           ("3.141", "true_as_shape_mismatch"), ("3.141", "forged_does_not_hold"),
+           ("3.18", "dropped_relation")]
+
+
+def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
+    """On ids read on every side, or where the read side or a bold 1, O or 0 decides: a
+    side containing a bare 1 (3.97b's rate of L) is read at its shape, a bold 0 is an array
+    sized by its other side (3.141: no shape mismatch, no scalar), so each is a rejection."""
+    certs = {**quick, **_certs(["3.57", "3.141"])}
+    for k, (i, name) in enumerate(REFUTED):
+        t = forge.FORGERIES[name](certs[i])
+        assert t is not None, (i, name)
+        rc, out = _rejected(tmp_path / str(k), i, t)
+        failed = [x for x in out.splitlines() if x.startswith("FAILED") and f"({i})" in x]
+        assert rc == 1 and failed, (i, name, out[-600:])
+    c = json.loads(json.dumps(certs["3.13"]))  # a citation of (3.11) that (3.11) does not print
+    q = next(s for s in c["symbols"] if s.get("printed_as"))
+    q["printed_as"] = "(3.11)"
+    rc, out = _rejected(tmp_path / "cite", "3.13", c)
+    assert rc == 1 and "does not print" in out and "(3.11)" in out, out[-600:]
+
+
+def test_a_bare_one_inside_a_side_leaves_its_shape_firm():
+    """Only a side whose shape rests on the size given to a bare 1, O or 0 is loose."""
+    from certcheck.reader import read_relations
+    table = [{"glyph": "\\mathbf{e}", "kind": "unit", "atoms": ["e_1", "e_2", "e_3"]}]
+    page = ("\\mathbf{1} - \\mathbf{e}\\mathbf{e}^T = \\mathbf{O}\\mathbf{e}\\mathbf{e}^T = "
+            "\\mathbf{0} = \\mathbf{e}^T\\mathbf{O} = \\mathbf{e}^T\\mathbf{0} = \\begin{bmatrix} "
+            "\\mathbf{O} & \\mathbf{e} \\\\ \\mathbf{e}^T & 0 \\end{bmatrix}")
+    (*sides,), = read_relations(page, table)
+    assert [(v.shape, loose) for v, loose, _ in sides] == [
+        ((3, 3), False), ((3, 3), False), ((3, 1), True), ((1, 3), False), ((1, 1), True),
+        ((4, 4), False)]
+
+
 def _vacuous(lhs: str, rhs: str, eq_id: str = "3.0") -> dict:
     return {"format": "rigidsym-certificate", "version": 1, "id": eq_id,
             "verdict": "verified",
@@ -121,7 +161,8 @@ def _vacuous(lhs: str, rhs: str, eq_id: str = "3.0") -> dict:
                            "evidence": {"type": "identity"}}]}
 
 
-@pytest.mark.parametrize("lhs, rhs", [("1*1*1*1*1*1", "1"), ("e_1", "e_1"), ("2 - 1", "1")])
+@pytest.mark.parametrize("lhs, rhs", [("1*1*1*1*1*1", "1"), ("e_1", "e_1"), ("2 - 1", "1"),
+                                      ("1*(1*1 - 0*e_1) - 0*(e_2 + e_3)", "1")])
 def test_vacuous_verified_is_not_evidence(lhs, rhs):
     """Identical sides, or constants only, prove nothing: a verified id made of them fails,
     and beside a real relation it is marked VACUOUS."""
@@ -130,6 +171,17 @@ def test_vacuous_verified_is_not_evidence(lhs, rhs):
     c = _vacuous("e_1^2 + e_2^2 + e_3^2", "1")
     c["relations"].append({**c["relations"][0], "lhs": [[lhs]], "rhs": [[rhs]]})
     assert any("VACUOUS" in x for x in check_certificate(c)[1])
+
+
+def test_a_restatement_is_proved_but_not_verified():
+    """Constants only, an atom only in a product with 0 (3.30's expanded determinant), is
+    a restatement; atoms that cancel by computation are a verified relation."""
+    c = _vacuous("1*(1*1 - 0*e_1) - 0*(e_2 + e_3)", "1")
+    assert check_certificate({**c, "verdict": "restatement"})[0] == "restatement"
+    with pytest.raises(CheckError, match="not zero"):  # a restatement is still proved
+        check_certificate({**c, "verdict": "restatement", "relations": [
+            {**c["relations"][0], "rhs": [["2"]]}]})
+    assert check_certificate(_vacuous("(e_1 - e_2) + (e_2 - e_1)", "0"))[0] == "verified"
 
 
 # ------------------------------------------------------------------ slow: the chapter
@@ -171,3 +223,74 @@ def _constant_or_same(cert: dict, rel: dict) -> bool:
     words = set(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", json.dumps([rel["lhs"], rel["rhs"]])))
     return rel["lhs"] == rel["rhs"] or not words & names and not any(
         w.startswith("let") or w in ("cos", "sin") for w in words)
+
+
+def _atom_free(text: str, lets: dict, memo: dict) -> bool:
+    """The test's own reading of the grammar (Python's ast): free of atoms once each product
+    with a literal 0 factor is dropped (lets read in)."""
+    import ast
+
+    def walk(n) -> tuple[bool, bool]:  # (literally zero, free of atoms)
+        if isinstance(n, ast.Constant):
+            return n.value == 0, True
+        if isinstance(n, ast.Name):
+            if n.id not in lets:
+                return False, False
+            if n.id not in memo:
+                memo[n.id] = walk(ast.parse(lets[n.id].replace("^", "**"), mode="eval").body)
+            return memo[n.id]
+        if isinstance(n, ast.UnaryOp):
+            return walk(n.operand)
+        if isinstance(n, ast.BinOp):
+            (za, fa), (zb, fb) = walk(n.left), walk(n.right)
+            if isinstance(n.op, ast.Mult):
+                return za or zb, za or zb or fa and fb
+            if isinstance(n.op, ast.Div):
+                return za, za or fa and fb
+            if isinstance(n.op, ast.Pow):
+                return za, fa
+            return za and zb, fa and fb
+        return False, False  # cos, sin, sqrt, a jet's prime
+    try:
+        return walk(ast.parse(text.replace("^", "**"), mode="eval").body)[1]
+    except SyntaxError:  # a jet (x'): an atom
+        return False
+
+
+@pytest.mark.slow
+def test_no_vacuous_verified_in_the_chapter(chapter_certificates):
+    """Every certificate of the chapter: a verified id has a printed relation that is not
+    vacuous (identical sides, or constants only by the test's own reading), a restatement
+    has none (3.30's det U = 1 expanded as 1 1 1 1 1 1), and certcheck agrees with each."""
+    kinds = {}
+    for i, c in chapter_certificates.items():
+        lets, memo = dict(c["let"]), {}
+        printed = [r for r in c["relations"] if r["role"] == "printed"]
+        vac = [r["lhs"] == r["rhs"] or all(_atom_free(x, lets, memo) for s in ("lhs", "rhs")
+                                            for row in r[s] for x in row) for r in printed]
+        if c["verdict"] in ("verified", "restatement"):
+            kinds[i] = c["verdict"]
+            assert (c["verdict"] == "restatement") == (bool(printed) and all(vac)), i
+            assert check_certificate(c)[0] == c["verdict"], i
+    assert sorted(i for i, v in kinds.items() if v == "restatement") == ["3.30"]
+
+
+def test_explain_follows_an_id_from_the_page_to_the_proof(quick, tmp_path):
+    """``certcheck explain ID``: the printed line, the table's lines its glyphs use with the
+    page's definitions (3.13's A by (3.11), Q as printed in (2.49)), the evidence and the
+    Coq file; exit 0 only where the id passes read on every side."""
+    forge.write_run(tmp_path / "run", {f"{i}.json": c for i, c in quick.items()}, BOOK)
+    rc, out = _run("explain", "3.13", tmp_path / "run", "--book", BOOK)
+    lines = out.splitlines()
+    assert rc == 0 and lines[0].startswith("(3.13) printed as: \\mathbf{A}^T \\mathbf{A} =")
+    assert any(x.strip().startswith("\\mathbf{A} \\equiv") and "(3.11)" in x for x in lines)
+    assert any(x.strip().startswith("\\mathbf{Q}: printed as (2.49)") for x in lines)
+    assert any("identity by cofactors" in x for x in lines) and "eq3_13.v" in lines[-1]
+    assert _run("explain", "3.18", tmp_path / "run", "--book", BOOK)[0] == 1  # NOT READ
+    forge.write_run(tmp_path / "bad", {"3.13.json": forge.entry_alone(quick["3.13"])}, BOOK)
+    rc, out = _run("explain", "3.13", tmp_path / "bad", "--book", BOOK)
+    assert rc == 1 and "FAILED" in out, out[-400:]
+    assert _run("explain", "3.16", tmp_path / "run", "--book", BOOK)[0] == 2  # no such file
+    (tmp_path / "run" / "3.13.json").write_text(json.dumps(forge.entry_alone(quick["3.13"])))
+    rc, out = _run("explain", "3.13", tmp_path / "run", "--book", BOOK)  # not the run's
+    assert rc == 1 and "MANIFEST" in out, out[-400:]

@@ -127,7 +127,7 @@ def test_whole_chapter_certified_and_tampering_rejected(chapter_certificates):
                 continue
             with pytest.raises(CheckError):
                 check_certificate(t)
-    assert counts == {"verified": 110, "does-not-hold": 11, "definition": 60}
+    assert counts == {"verified": 109, "restatement": 1, "does-not-hold": 11, "definition": 60}
 
 
 #: identities Coq checks: A^T A, its inverse and the inverse's coefficients
@@ -345,3 +345,18 @@ def test_linear_ansatz_finds_combinations_and_nothing_else(terms, off):
     assert mus is not None and f == sum((m * g for m, g in zip(mus, gens, strict=True)),
                                         R.zero)
     assert ansatz.linear_combination(f + off, gens, 1, 4000) is None
+
+
+def test_constants_only_drops_products_with_zero_and_nothing_else():
+    """The writer's restatement test: an atom only in a product with a literal 0 leaves a
+    constant (3.30's expanded determinant); atoms cancelling by computation do not."""
+    import sympy as sp
+
+    from rigidsym.checking.certifying.certificates import constants_only
+
+    a, b = sp.symbols("a b")
+    with sp.evaluate(False):
+        zeroed = sp.Matrix([[1 * (1 * 1 - 0 * a) - 0 * (a + b)], [sp.Integer(2) ** 3]])
+        cancelled = (a - b) + (b - a)
+    assert constants_only(zeroed) and constants_only(sp.Integer(1))
+    assert not constants_only(cancelled) and not constants_only(sp.Matrix([[1, a]]))

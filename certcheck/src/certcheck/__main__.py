@@ -58,6 +58,10 @@ def _manifests(paths, files, book_bytes) -> tuple[int, list[str]]:
 
 
 def main(argv: list[str] | None = None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["explain"]:
+        from certcheck.explain import run
+        return run(argv[1:])
     ap = argparse.ArgumentParser(prog="certcheck", description=__doc__.split("\n\n")[0])
     ap.add_argument("paths", nargs="+", help="certificate files or folders of them")
     ap.add_argument("--book", metavar="FILE",

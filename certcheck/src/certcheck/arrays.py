@@ -14,17 +14,19 @@ class NotRead(Exception):
 
 
 class M:
-    """A matrix of grammar texts (rows of strings)."""
+    """A matrix of grammar texts (rows of strings); ``loose``: its shape rests on the size 3
+    the reader gave a bare 1, O or 0, no operand confirming it (``1 - e e^T`` is firm)."""
 
-    def __init__(self, rows):
+    def __init__(self, rows, loose: bool = False):
         self.rows = [list(r) for r in rows]
+        self.loose = loose
 
     @property
     def shape(self):
         return len(self.rows), len(self.rows[0])
 
     def t(self):
-        return M(list(zip(*self.rows, strict=True)))
+        return M(list(zip(*self.rows, strict=True)), self.loose)
 
 
 def scalar(x: str) -> M:
@@ -35,19 +37,21 @@ def add(a: M, b: M, sign: str) -> M:
     if a.shape != b.shape:
         raise NotRead(f"a sum of shapes {a.shape} and {b.shape}")
     return M([[f"({x}) {sign} ({y})" for x, y in zip(ra, rb, strict=True)]
-              for ra, rb in zip(a.rows, b.rows, strict=True)])
+              for ra, rb in zip(a.rows, b.rows, strict=True)], a.loose and b.loose)
 
 
 def mul(a: M, b: M) -> M:
     if a.shape == (1, 1):
-        return M([[f"({a.rows[0][0]})*({y})" for y in r] for r in b.rows])
+        return M([[f"({a.rows[0][0]})*({y})" for y in r] for r in b.rows], b.loose)
     if b.shape == (1, 1):
-        return M([[f"({x})*({b.rows[0][0]})" for x in r] for r in a.rows])
+        return M([[f"({x})*({b.rows[0][0]})" for x in r] for r in a.rows], a.loose)
     if a.shape[1] != b.shape[0]:
         raise NotRead(f"a product of shapes {a.shape} and {b.shape}")
-    cols = b.t().rows
+    cols = b.t().rows  # rows from a, columns from b: a loose square factor takes the other's
+    rows_firm = not a.loose or a.shape[0] == a.shape[1] and not b.loose
+    cols_firm = not b.loose or b.shape[0] == b.shape[1] and not a.loose
     return M([[" + ".join(f"({x})*({y})" for x, y in zip(r, c, strict=True)) for c in cols]
-              for r in a.rows])
+              for r in a.rows], not (rows_firm and cols_firm))
 
 
 def vec3(v: M) -> list[str]:
@@ -81,5 +85,5 @@ def inverse(v: M) -> M:
         return (f"(({a[r[0]][c[0]]})*({a[r[1]][c[1]]}) - ({a[r[0]][c[1]]})*"
                 f"({a[r[1]][c[0]]}))*({(-1) ** (i + j)})")
     det = " + ".join(f"({a[0][j]})*{cof(0, j)}" for j in range(3))
-    return M([[f"({cof(j, i)})/({det})" for j in range(3)] for i in range(3)])
+    return M([[f"({cof(j, i)})/({det})" for j in range(3)] for i in range(3)], v.loose)
 

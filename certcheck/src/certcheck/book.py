@@ -19,7 +19,7 @@ import os
 import re
 
 __all__ = ["BookError", "locate", "check_page", "check_manifest", "sha256", "CAUSES",
-           "definitions_before"]
+           "definitions_before", "symbol_words"]
 
 #: the causes of a does-not-hold a certificate may give
 CAUSES = ("book erratum", "conversion slip", "undetermined")
@@ -127,8 +127,8 @@ def check_page(cert: dict, book: str) -> list[str]:
         raise BookError(f"({eq_id}): the page's words give {g} {_members(book, g)} "
                         f"members, the certificate proves {len(fam)}")
     lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
-    lines += [f"symbol: {_symbol_words(s)}" for s in cert.get("symbols") or []]
-    lines += [f"symbol of {r.get('label')}: {_symbol_words(s)}" for r in cert.get("relations")
+    lines += [f"symbol: {symbol_words(s)}" for s in cert.get("symbols") or []]
+    lines += [f"symbol of {r.get('label')}: {symbol_words(s)}" for r in cert.get("relations")
               or [] if isinstance(r, dict) for s in r.get("symbols") or []]
     return lines + cause_lines(cert)
 
@@ -149,9 +149,13 @@ def _prints(display: str, s: dict) -> bool:
         squash(display)
 
 
-def _symbol_words(s) -> str:
+def symbol_words(s) -> str:
+    """A symbol-table line in words (glyph: what it stands for)."""
     if not isinstance(s, dict):
         return repr(s)
+    if "particles" in s:  # section 3.8's body: its model and each particle's glyphs
+        return f"{s.get('glyph')}: {s.get('model')}; particles " + "; ".join(
+            ", ".join(f"{g} = {x}" for g, x in p.items()) for p in s["particles"])
     if "cpm_of" in s:
         return f"{s.get('glyph')}: the cross-product matrix of {s['cpm_of']}"
     if "latex" in s and "model" in s:

@@ -118,9 +118,16 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                            f"shape is not this model's); the certificate's word")
                 continue
             o = pairs[k][side == "lhs"]  # a bare 0 or 1: the size of the page's other side
+            if assumed and rel.get("evidence", {}).get("type") == "shape":
+                raise CheckError(f"({cert.get('id')}) printed {side} of relation {k + 1}: a "
+                                 "shape mismatch claimed, but the page's side is a bare 1, O "
+                                 "or 0 (or sized by one), which takes its other side's size")
             if assumed and None is not _unit_of(mine.rows) == _unit_of(theirs) and not o[1] \
                     and getattr(o[0], "shape", 0) == (len(theirs), len(theirs[0])):
                 mine = M(theirs)
+            if assumed and _unit_of(mine.rows) and (len(theirs), len(theirs[0])) == (1, 1):
+                raise CheckError(f"({cert.get('id')}) printed {side} of relation {k + 1}: a "
+                                 "bold 1, O or 0 (an array), the certificate's a scalar")
             if assumed and isinstance(o[0], NotRead) and mine.shape != (len(theirs), len(
                     theirs[0])):  # a bare 0 or 1 whose size the other side would give
                 out.append(f"NOT READ: relation {k + 1}'s {side} (a bare 0 or 1 of a size "

@@ -51,11 +51,10 @@ class _Reader:
                  seen: dict | None = None):
         self.t, self.i, self.table = tokens, 0, table
         self.lets = [] if lets is None else lets  # [name, text]: a glyph's entries, once
-        self.seen = {} if seen is None else seen  # key -> (named value, assumed, used)
+        self.seen = {} if seen is None else seen  # key -> (named value, loose, used, cites)
         self.used: set = set()  # the glyphs looked up (through definitions too)
         self.defs = defs or {}  # glyph -> (its printed definition, the id): read in turn
         self.cited = [] if cited is None else cited
-        self.assumed = False  # a 1, O or 0 whose size the reader assumed (3)
         self.frame = None  # inside [...]_{K}: glyphs are looked up as [G]_{K}
         self.norm = 0  # inside \\|...\\|: a \\| closes the norm
 
@@ -121,7 +120,7 @@ class _Reader:
                 d = self.factor()
                 if d.shape != (1, 1):
                     raise NotRead("a division by a matrix")
-                v = M([[f"({x})/({d.rows[0][0]})" for x in r] for r in v.rows])
+                v = M([[f"({x})/({d.rows[0][0]})" for x in r] for r in v.rows], v.loose)
             else:
                 v = mul(v, self.factor())
         return v
@@ -195,7 +194,7 @@ class _Reader:
             a, b = (self.sub_expr() for _ in range(2))
             if b.shape != (1, 1):
                 raise NotRead("a fraction over a matrix")
-            return M([[f"({x})/({b.rows[0][0]})" for x in r] for r in a.rows])
+            return M([[f"({x})/({b.rows[0][0]})" for x in r] for r in a.rows], a.loose)
         if tok in ("\\cos", "\\sin"):
             self.take()
             arg = self.factor() if self.peek() in ("(", "{") else self.primary()
@@ -250,7 +249,6 @@ class _Reader:
             inner = _Reader(body, table, self.defs, self.cited, self.lets, dict(common))
             v = inner.chain()[0]
             common.update({k: w for k, w in inner.seen.items() if not w[2] & bound})
-            self.assumed = self.assumed or inner.assumed
             self.used |= inner.used - bound
             total = v if total is None else add(total, v, "+")
         for k, w in common.items():
@@ -304,10 +302,11 @@ class _Reader:
         hs = [next((b.shape[0] for b in r if isinstance(b, M)), None) for r in rows]
         ws = [next((r[k].shape[1] for r in rows if k < len(r) and isinstance(r[k], M)), None)
               for k in range(max(map(len, rows)))]
+        loose = any(isinstance(b, M) and b.loose for r in rows for b in r)
         for r, h in zip(rows, hs, strict=True):  # a bare block's size: its row's, column's
             for k, b in enumerate(r):
                 if isinstance(b, str):
-                    self.assumed = self.assumed or h is None or ws[k] is None
+                    loose = loose or h is None or ws[k] is None
                     r[k] = M([[("1" if i == j and b == "1" else "0") for j in range(ws[k] or 3)]
                               for i in range(h or 3)])
         out = []
@@ -318,7 +317,7 @@ class _Reader:
             out += [sum((b.rows[k] for b in blocks), []) for k in range(h)]
         if len({len(r) for r in out}) != 1:
             raise NotRead("rows of a block matrix differ in width")
-        return M(out)
+        return M(out, loose)
 
     def glyph(self) -> M:
         start = self.i
@@ -340,10 +339,9 @@ class _Reader:
             self.i += 3
         return self.lookup(name)
 
-    def named(self, key: str, v: M, assumed: bool, used: set) -> M:
+    def named(self, key: str, v: M, used: set) -> M:
         """``v`` with each compound entry written once as a let (``page1``, ...), so that
         a glyph read through a definition is a name in every product it enters."""
-        self.assumed = self.assumed or assumed
         if key not in self.seen:
             rows = []
             for r in v.rows:
@@ -353,27 +351,26 @@ class _Reader:
                         self.lets.append([f"page{len(self.lets) + 1}", x])
                         x = self.lets[-1][0]
                     rows[-1].append(x)
-            self.seen[key] = (M(rows), assumed, used, [])
+            self.seen[key] = (M(rows, v.loose), v.loose, used, [])
         return self.seen[key][0]
 
     def again(self, key: str) -> M | None:
         """A glyph read before on this page (under the same particle), or ``None``."""
         if key not in self.seen:
             return None
-        v, assumed, used, cites = self.seen[key]
-        self.assumed, self.used = self.assumed or assumed, self.used | used
+        v, _, used, cites = self.seen[key]
+        self.used = self.used | used
         self.cited.extend(cites)  # what it was read through, cited again
         return v
 
     def lookup(self, name: str) -> M:
         key = name.replace(" ", "")
         self.used.add(key)
-        self.assumed = self.assumed or key in ("\\mathbf{1}", "\\mathbf{O}", "\\mathbf{0}")
-        if key in ("\\mathbf{1}", "\\mathbf{O}"):
+        if key in ("\\mathbf{1}", "\\mathbf{O}"):  # sized 3 x 3 by the reader: loose
             return M([[("1" if i == j and key[-2] == "1" else "0") for j in range(3)]
-                      for i in range(3)])
+                      for i in range(3)], True)
         if key == "\\mathbf{0}":
-            return M([["0"] for _ in range(3)])
+            return M([["0"] for _ in range(3)], True)
         if m := re.fullmatch(r"\\mathbf\{1\}_\{(\d)\\times\1\}", key):  # 1_{6 x 6}
             return M([[str(int(i == j)) for j in range(int(m[1]))] for i in range(int(m[1]))])
         if m := re.fullmatch(r"\\delta_\{(\d)(\d)\}", key):  # Kronecker's delta
@@ -393,7 +390,7 @@ class _Reader:
             rest, n = {k: v for k, v in self.defs.items() if k != key}, len(self.cited)
             inner = _Reader(tokens(text), self.table, rest, self.cited, self.lets,
                             self.seen)
-            value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
+            value = self.named(key, inner.chain()[0], inner.used | {key})
             self.used |= inner.used
             self.cited.append(f"{name} by ({where})" + (", an equation" if sign == "=" else ""))
             self.seen[key] = (*self.seen[key][:3], self.cited[n:])
@@ -410,7 +407,7 @@ class _Reader:
             inner = _Reader(tokens(str(entry["latex"])), self.table,
                             {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
-            value = self.named(key, inner.chain()[0], inner.assumed, inner.used | {key})
+            value = self.named(key, inner.chain()[0], inner.used | {key})
             self.used |= inner.used
             self.cited.append(f"{key} as the model's {entry['model']}" if "model" in entry
                               else f"{key} as printed in {entry.get('printed_as', '?')}")
@@ -469,7 +466,7 @@ def read_relations(page: str, symbols: list, defs: dict | None = None,
             re.sub(r"[^ijk]", "", words)[:2]  # (the page's family in words: 3.39's q_ij)
         out.append([])
         for toks in chain:
-            read, cited, assumed = [], [], False
+            read, cited = [], []
             for vals in itertools.product("123", repeat=len(idx)):  # a family: each member
                 r = _Reader(_bind(toks, dict(zip(idx, vals, strict=True))), table, defs,
                             cited, lets, seen)
@@ -478,9 +475,8 @@ def read_relations(page: str, symbols: list, defs: dict | None = None,
                 except (NotRead, IndexError) as exc:
                     read = [exc if isinstance(exc, NotRead) else NotRead("unbalanced text")]
                     break
-                assumed = assumed or r.assumed
             v = read[0] if len(read) == 1 else _family(read, len(idx))
-            out[-1].append((v, assumed, list(dict.fromkeys(cited))))
+            out[-1].append((v, getattr(v, "loose", False), list(dict.fromkeys(cited))))
     return out
 
 

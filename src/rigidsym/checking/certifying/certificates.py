@@ -14,7 +14,9 @@ verdict:
 - does-not-hold: the first failing member with a ``shape`` mismatch or an exact
   ``counterexample`` point (atoms, jets, ``tan(phi / 2M)``), and the corrected form, when
   there is one, as identities;
-- definition: the printed form as a ``statement``, the claims as identities.
+- definition: the printed form as a ``statement``, the claims as identities;
+- restatement: a verified id whose printed relations derive nothing (:func:`constants_only`
+  on both sides of each: 3.30's ``det U = 1`` expanded), its evidence a verified one's.
 
 An id whose entries leave the grammar (``acos``, ``atan2``, square roots, floats) gets no
 certificate; :func:`write_certificates` says which and why.
@@ -220,6 +222,9 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             rels[-1]["symbols"] = own  # F = N, L or H: this member's F (the page's words)
         if role == "claim" and getattr(r, "page", 0):  # a chain's member the page prints
             rels[-1]["page"] = r.page
+    printed = [(lhs, rhs) for _, role, lhs, rhs, _ in sides if role == "printed"]
+    if verdict == "verified" and printed and all(map(constants_only, sum(printed, ()))):
+        verdict = "restatement"  # 1 1 1 = 1: nothing derived (certcheck calls it vacuous)
     # the groups in a fixed order (their first naming follows sympy's traversal, which
     # differs across PYTHONHASHSEED): the same statement gives the same bytes
     atoms = sorted(pr.groups.values(), key=lambda g: g["group"])
@@ -232,6 +237,25 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     if verdict == "does-not-hold":
         out["cause"] = cause_record(eq)
     return out
+
+
+def constants_only(side) -> bool:
+    """Whether every entry of ``side`` (a sympy scalar or matrix, as written) is free of
+    atoms once each product with a literal 0 factor is dropped: ``1*1*1``, a determinant of
+    a unit triangular block matrix expanded by its entries (3.30). A verified relation of
+    two such sides derives nothing: the certificate calls its id a ``restatement``."""
+    def walk(e) -> tuple[bool, bool]:  # (literally zero, free of atoms)
+        if e.is_Number:
+            return e == 0, True
+        if e.is_Mul or e.is_Add:
+            parts = [walk(a) for a in e.args]
+            zero = any(z for z, _ in parts) if e.is_Mul else all(z for z, _ in parts)
+            return zero, zero or all(f for _, f in parts)
+        if e.is_Pow and e.exp.is_Integer:
+            z, f = walk(e.base)
+            return z and e.exp > 0, f
+        return False, False
+    return all(walk(sp.sympify(x))[1] for x in entries_of(side))
 
 
 def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
