@@ -108,9 +108,10 @@ def _compile_c(out: Path, tmp: Path, names: tuple) -> Path:
 @needs_gcc
 def test_keywords_and_the_generated_codes_own_names_as_arguments_compile(tmp_path):
     """One kernel whose arguments are `int`, `status`, `t1` (beside `rs_t1`'s former
-    spelling) and `sqrt`, and whose outputs are `odd` and `count`: the C compiles under
-    -Werror and gives the declared values (ordinary double, rescued float)."""
-    names = ("int", "status", "t1", "sqrt", "odd", "count")
+    spelling) and `sqrt`, and whose outputs are `x0` (the first CSE temporary's name) and
+    `count`: the C compiles under -Werror and gives the declared values (ordinary double,
+    rescued float)."""
+    names = ("int", "status", "t1", "sqrt", "x0", "count")
     out = _generate(tmp_path, names, "c")
     _values(_compile_c(out, tmp_path, names), names)
 

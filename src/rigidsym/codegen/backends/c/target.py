@@ -233,6 +233,15 @@ def spelling(k: Kernel, inputs) -> dict[str, str]:
     return out
 
 
+def symbol_spelling(k: Kernel, names: dict[str, str]) -> dict[str, str]:
+    """The spellings of :func:`spelling` that the printer applies to the program's symbols:
+    the arguments' and components', not the outputs' (the template writes an output's slots
+    by its spelling; the program never holds a symbol of an output's name, so a CSE
+    temporary ``x0`` beside an output named ``x0`` stays the temporary)."""
+    outs = {o.name for o in k.outputs}
+    return {n: c for n, c in names.items() if n not in outs}
+
+
 def _check_names(k: Kernel, temps: set[str], inputs) -> None:
     """Refuse what would make two of ``k``'s quantities one symbol of its program: an
     argument or output named as another argument's component (``v_0`` beside an array ``v``,
@@ -269,7 +278,7 @@ def _function(kc, ctype: str, rescale: list) -> dict:
     _check_names(k, temps, kc.inputs)
     names = spelling(k, kc.inputs)
     printer = DoublePrinter() if ctype == "double" else FloatOnlyPrinter()
-    printer.names = names
+    printer.names = symbol_spelling(k, names)
     variants = _program(kc, printer, ctype)
     suffix = "_f32" if ctype == "float" else ""
     slots = [f"out_{o.name}[{j}]" for o in k.outputs for j in range(o.size)]
@@ -296,7 +305,7 @@ def _function(kc, ctype: str, rescale: list) -> dict:
             "slots": slots, "out_check": balanced([f"({s} - {s})" for s in slots]),
             "out_sum": balanced(slots),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
-            "wide": _wide(kc, names) if ctype == "double" else None,
+            "wide": _wide(kc, symbol_spelling(k, names)) if ctype == "double" else None,
             "rescale": [_plan_code(p, slots) for p in rescale],
             "rescaled": {n for p in rescale for n in p["scale"]}}
 
