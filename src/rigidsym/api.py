@@ -242,7 +242,13 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``."""
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
-    from rigidsym.latex.respell import declared_e, declared_labels, floor_cross, tilde_expressions
+    from rigidsym.latex.respell import (
+        declared_e,
+        declared_labels,
+        floor_cross,
+        rate_entries,
+        tilde_expressions,
+    )
     from rigidsym.latex.statement import declare_latex
 
     step("reading")
@@ -250,8 +256,9 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     latex, let, floor = floor_cross(latex, let)  # Trawny's \lfloor a\times\rfloor: [a]_x
+    latex, let, rates = rate_entries(latex, let)  # Greenwood's \dot\epsilon_k: entries
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (labels, tilde, floor, respelt):
+    for note in (labels, tilde, floor, rates, respelt):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading

@@ -350,6 +350,9 @@ class GlyphReader:
             msg += (f"; {hats[0]} is a unit vector in Lynch-Park and Corke, the skew matrix of "
                     f"{hats[0][5:-1]} in Murray-Li-Sastry: say which, --notation "
                     f"murray-li-sastry or --let '{hats[0]} = [{hats[0][5:-1]}]_\\times'")
+        fn = self.functions.get(getattr(exc, "function", None))
+        if fn is not None:  # \det J_r(x): the function's own parameters in the advice
+            msg = msg.replace(f"{fn.key}(...)", f"{fn.key}({', '.join(fn.params)})")
         if exc.construct == "internal":
             msg = msg.replace("; say it another way", self._lets_involved(exc.glyphs, what)
                               + "; say it another way")

@@ -23,6 +23,13 @@ Trawny and Roumeliotis' floor brackets around a cross, ``\\lfloor\\boldsymbol\\o
 \\rfloor`` (``\\left\\lfloor ... \\right\\rfloor`` too), are the cross-product matrix of
 the vector inside: respelt ``[\\boldsymbol\\omega]_\\times``. Floor brackets without the
 cross stay unknown (the floor of a number is not read).
+
+The rates of a vector's entries, Greenwood's ``\\dot\\epsilon_1 ... \\dot\\epsilon_4`` beside
+a ``--let`` of the vector's rate ``\\dot{\\boldsymbol\\epsilon}``, are that rate's entries: each
+is respelt ``\\dot{\\boldsymbol{\\epsilon}}_{k:k}`` (counted from 1; from 0 where the LaTeX
+writes an ``\\epsilon_0``), so both semantics take the entry of the declared rate (before:
+a free glyph of its own that the numeric cross-check does not evaluate). A ``--let`` of the
+entry's rate itself (``\\dot\\epsilon_1: scalar``) keeps it a symbol of its own.
 """
 
 from __future__ import annotations
@@ -31,7 +38,7 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["declared_e", "declared_labels", "floor_cross", "tilde_expressions"]
+__all__ = ["declared_e", "declared_labels", "floor_cross", "rate_entries", "tilde_expressions"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -145,6 +152,61 @@ def floor_cross(latex: str, let: object) -> tuple[str, object, str]:
     return new, out, (f"\\lfloor {hits[0]}\\times\\rfloor: the cross-product matrix of the "
                       f"vector {hits[0]} (Trawny & Roumeliotis (2005)), read as "
                       f"[{hits[0]}]_\\times")
+
+
+_RATE_DECL = re.compile(
+    r"\\dot\s*\{?\s*\\(?P<font>mathbf|boldsymbol|bm)\s*\{?\s*(?P<letter>\\[A-Za-z]+|[A-Za-z])"
+    r"\s*\}?\s*\}?\s*(?:\(t\))?\s*[:=]")
+
+
+def _entry_rate(letter: str) -> re.Pattern:
+    """``\\dot\\epsilon_k`` (any bracing) of the plain ``letter``, the subscript a digit."""
+    tail = r"(?![A-Za-z])" if letter.startswith("\\") else ""
+    return re.compile(r"\\dot\s*(?:\{\s*" + re.escape(letter) + r"\s*\}|" + re.escape(letter)
+                      + tail + r")\s*_\s*(?:\{\s*(?P<k>\d)\s*\}|(?P<k1>\d))")
+
+
+def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\dot\\epsilon_k`` beside a ``--let`` of the rate
+    ``\\dot{\\boldsymbol\\epsilon}`` (a model or a kind) respelt as that rate's entry
+    ``\\dot{\\boldsymbol{\\epsilon}}_{k:k}`` in the LaTeX and the other declarations (``note``
+    says so); else all unchanged and ``note`` is ``""``.
+
+    Counted from 1, as Greenwood's ``\\epsilon_1 ... \\epsilon_4``; from 0 where the LaTeX or a
+    declaration writes the letter's subscript 0 (Kuipers' ``q_0``).
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    decls = _decls(let)
+    if not decls:
+        return latex, let, ""
+    rates = {}
+    for i, d in enumerate(decls):
+        m = _RATE_DECL.match(d.strip())
+        if m:
+            rates[m["letter"]] = (m["font"], i)
+    hits: list[str] = []
+    for letter, (font, i) in rates.items():
+        pat = _entry_rate(letter)
+        own = [d for d in decls if pat.match(d.strip())]  # --let '\dot\epsilon_1: ...'
+        if own:
+            continue
+        zero = re.compile(re.escape(letter) + (r"(?![A-Za-z])" if letter.startswith("\\")
+                                                else "") + r"\s*_\s*\{?\s*0(?!\d)")
+        base = 1 if any(zero.search(t) for t in [latex, *decls]) else 0
+        vec = f"\\dot{{\\{font}{{{letter}}}}}"
+
+        def one(m, vec=vec, base=base):
+            k = int(m["k"] or m["k1"]) + base
+            hits.append(f"{m.group(0)}: entry {k} of {vec}")
+            return f"{vec}_{{{k}:{k}}}"
+
+        latex = pat.sub(one, latex)
+        decls = [d if j == i else pat.sub(one, d) for j, d in enumerate(decls)]
+    if not hits:
+        return latex, let, ""
+    return latex, decls, (f"{'; '.join(dict.fromkeys(hits))} (the rates of a vector's "
+                          f"entries are the entries of its rate, which a --let declares)")
 
 
 _LABELLED = re.compile(

@@ -119,6 +119,10 @@ def shaped_product(a, b):
         return a * b
     if sa[1] == sb[0]:
         r = a * b
+        if type(r) in (sp.Identity, sp.ZeroMatrix) and not (loose(a) or loose(b)):
+            # M M^{-1} of a sized M is the identity of M's size: never resized by the other
+            # side (M M^{-1} = I_4 of a 3x3 M is a shape mismatch, not 4x4 = 4x4)
+            return SizedIdentity(r.rows) if type(r) is sp.Identity else SizedZero(*r.shape)
         return r
     if sa == (1, 1):
         return as_scalar(a) * b

@@ -678,7 +678,8 @@ def _difference(a, b, where: str):
         m = a2 if V.is_matrix(a2) else b2
         return _size(m), max(_size(m), mp.mpf(1))
     if V.is_matrix(a2) and (a2.rows, a2.cols) != (b2.rows, b2.cols):
-        raise NotCovered(f"{where}: sides of {a2.rows}x{a2.cols} and {b2.rows}x{b2.cols}")
+        raise NotCovered(f"{where}: the two sides differ in shape ({a2.rows}x{a2.cols} and "
+                         f"{b2.rows}x{b2.cols})")
     return _size(a2 - b2), max(_size(a2), _size(b2), mp.mpf(1))
 
 

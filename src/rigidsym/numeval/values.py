@@ -115,7 +115,11 @@ class Eye:
 
 
 class Zero:
-    """A zero whose shape the other operand gives (``\\mathbf{0}``)."""
+    """A zero whose shape the other operand gives (``\\mathbf{0}``); ``row``: a transposed
+    one, ``\\mathbf{0}^T``, a row, so a block row of it alone is one row high."""
+
+    def __init__(self, row: bool = False):
+        self.row = row
 
 
 def is_matrix(v) -> bool:
@@ -233,6 +237,8 @@ def dot(a, b):
 
 
 def transpose(a):
+    if isinstance(a, Zero):
+        return Zero(not a.row)
     if is_matrix(a):
         return scalar(a.T) if a.rows == a.cols == 1 else a.T
     return a
@@ -424,8 +430,8 @@ def assemble(rows, where: str):
     ncol = len(rows[0])
     if any(len(r) != ncol for r in rows):
         raise NotCovered(f"block rows of different lengths in {where!r}")
-    heights = [next((shape(e)[0] for e in r if shape(e)), 1 if any(map(_one, r)) else None)
-               for r in rows]
+    heights = [next((shape(e)[0] for e in r if shape(e)), 1 if any(map(_one, r)) or any(
+        isinstance(e, Zero) and e.row for e in r) else None) for r in rows]  # [A; 0^T]
     widths = [next((shape(r[j])[1] for r in rows if shape(r[j])),
                    1 if any(_one(r[j]) for r in rows) else None) for j in range(ncol)]
     unsized = 3 if any(isinstance(e, Eye | Zero) for r in rows for e in r) else 1

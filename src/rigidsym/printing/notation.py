@@ -25,7 +25,8 @@ from rigidsym.printing.names import (
     has_subscript,
 )
 
-__all__ = ["is_negative_term", "book_group", "book_text", "book_latex", "text", "latex",
+__all__ = ["is_negative_term", "bare_operand", "book_group", "book_text", "book_latex", "text",
+           "latex",
            "latex_relation",
            "BookStrPrinter", "BookLatexPrinter"]
 
@@ -58,6 +59,15 @@ def _is_cross(x) -> bool:
     """``x`` is the derivations' cross product (× binds like a product, and is no atom)."""
     return type(x).__name__ == "Cross" and isinstance(x, sp.MatrixExpr)
 
+
+
+def bare_operand(x):
+    """What ``x`` prints as, for its parentheses: the argument of a 1 x 1 trace that is no
+    dot product (the printers write the reader's 1 x 1 product or sum as the scalar it is,
+    without ``tr``), so ``(θ̇·θ + θ·θ̇)/(2 √(θ·θ))`` keeps the sum's parentheses; else ``x``."""
+    if isinstance(x, sp.Trace) and tuple(x.arg.shape) == (1, 1) and not _dot_operands(x):
+        return x.arg
+    return x
 
 
 def _one_group(text: str) -> bool:
@@ -129,6 +139,9 @@ def _block_index(x) -> str | None:
 
 class BookStrPrinter(_BookNotation, StrPrinter):
     """Plain-text printer in book notation (one line; products by juxtaposition)."""
+
+    def parenthesize(self, item, level, strict=False):
+        return super().parenthesize(bare_operand(item), level, strict)
 
     def _print_Symbol(self, expr):
         return book_text(expr.name)
@@ -283,6 +296,12 @@ class BookStrPrinter(_BookNotation, StrPrinter):
 class BookLatexPrinter(_BookNotation, LatexPrinter):
     """LaTeX printer in book notation: bold vectors and matrices, ``\\cdot`` for a dot
     product, ``\\|ω\\|`` for a norm, ``\\mathbf{1}``/``\\mathbf{O}``."""
+
+    def parenthesize(self, item, level, is_neg=False, strict=False):
+        return super().parenthesize(bare_operand(item), level, is_neg, strict)
+
+    def _needs_mul_brackets(self, expr, first=False, last=False) -> bool:
+        return super()._needs_mul_brackets(bare_operand(expr), first, last)
 
     def _print_Symbol(self, expr, style="plain"):
         return book_latex(expr.name, bold=False)

@@ -200,6 +200,7 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
 
     def func(self, items):
         name, x = str(items[0]), value_of(items[1])
+        _operator_of_function(name, items[1], getattr(self, "functions", {}))
         x = as_scalar(x) if "det" not in name else x
         fn = name.split("{")[-1].rstrip("}").lstrip("\\")
         fn = "tr" if fn in ("Tr", "trace") else fn
@@ -290,6 +291,28 @@ class _Pending:
     a: object
     b: object
     op: str
+
+
+def _operator_of_function(name: str, node, functions: dict) -> None:
+    """An operator written before a ``--let`` function's application with no parentheses of
+    its own (``\\det J_r(\\mathbf{x})``): the operator's argument is one primary, so it
+    would take the glyph ``J_r`` alone and the parentheses would multiply; refused with the
+    spelling that applies it to the function's value, ``\\det(J_r(\\mathbf{x}))``.
+
+    Raises:
+        LatexError: construct ``function``, its ``function`` attribute the glyph's key (the
+            reader writes the function's parameters into the advice)."""
+    key = getattr(node, "key", None)
+    op = name.split("{")[-1].rstrip("}").lstrip("\\")
+    if key is None or key not in functions or op not in ("det", "tr", "Tr", "trace", "vect"):
+        return  # (a sine takes a scalar glyph as it is)
+    exc = LatexError(
+        f"{name} {key}(...) reads as {name} of the glyph {key} alone, times the "
+        f"parentheses, and {key} is a --let function, not a matrix: an operator takes one "
+        f"primary, so a function's value goes inside the operator's parentheses: write "
+        f"{name}({key}(...))", "function")
+    exc.function = key
+    raise exc
 
 
 def _applied_hint(fn: str, x) -> str:
