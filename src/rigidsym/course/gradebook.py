@@ -19,6 +19,13 @@ slip, 0 when wrong otherwise or missing (blank or absent); a problem's points ar
 ``weight`` times the mean score of its boxes (partial credit). A student of the roster
 whose answers no row or file matched is not graded: a line of the report, status ``not
 graded`` in grades.csv and empty cells in gradebook.csv, never a zero.
+
+Each student's grading is kept in the user cache, keyed by the student's key record, their
+answers and the credits (and the digest of every source file): grading the class again
+after one answer is fixed grades that student alone, and a grading interrupted goes on
+from the students already graded. The replays of the slips along the way, the costly part
+of a wrong answer's judging, are kept too (:func:`rigidsym.course.slips.replayed_values`):
+those the class's STACK export solved are read back.
 """
 
 from __future__ import annotations
