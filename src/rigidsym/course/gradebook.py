@@ -19,6 +19,13 @@ slip, 0 when wrong otherwise or missing (blank or absent); a problem's points ar
 ``weight`` times the mean score of its boxes (partial credit). A student of the roster
 whose answers no row or file matched is not graded: a line of the report, status ``not
 graded`` in grades.csv and empty cells in gradebook.csv, never a zero.
+
+Each student's grading is kept in the user cache, keyed by the student's key record, their
+answers and the credits (and the digest of every source file): grading the class again
+after one answer is fixed grades that student alone, and a grading interrupted goes on
+from the students already graded. The replays of the slips along the way, the costly part
+of a wrong answer's judging, are kept too (:func:`rigidsym.course.slips.replayed_values`):
+those the class's STACK export solved are read back.
 """
 
 from __future__ import annotations
@@ -134,7 +141,7 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
             problems.append(f"{r['student']}" + (f" (id {r['id']})" if r.get("id") else "")
                             + ": not graded: no answer row or file matched this student alone "
                               "(their gradebook cells are left empty)")
-    done = forked_map(lambda i: _student(key["students"][i], given.get(i), credit),
+    done = forked_map(lambda i: _student_kept(key["students"][i], given.get(i), credit),
                       len(key["students"]))
     rows = [row for d in done for row in d[0]]
     book = [d[1] for d in done]
@@ -160,6 +167,36 @@ def _items(rows: list) -> str:
     return _csv([["exercise", "answer", "note", "count"],
                  *[[*k, n] for k, n in sorted(counts.items(), key=lambda kv: (
                      [int(x) for x in kv[0][0].split(".")], kv[0][1], -kv[1]))]])
+
+
+def _student_kept(r: dict, ans: dict | None, credit: tuple[float, float]) -> tuple:
+    """:func:`_student`, kept in the user cache by the student's key record, answers and
+    credits (and every source file's digest): grading the class again after one answer
+    is fixed, or after an interrupt, grades only the students whose answers changed or
+    who were not graded yet."""
+    import hashlib
+    import pickle
+
+    from rigidsym.core import cache as _cache
+    from rigidsym.core import sources as _sources
+
+    h = hashlib.sha256()
+    for part in ("graded 1", _sources.package_digest(), _sources.environment(),
+                 json.dumps([r, ans, list(credit)], sort_keys=True, default=repr)):
+        h.update(part.encode() + b"\0")
+    key = h.hexdigest()
+    where = _cache.folder("verdicts") / key[:2] / f"graded-{key}.pickle"
+    blob = _cache.get(where)
+    if blob is not None:
+        try:
+            kept = pickle.loads(blob)
+        except Exception:  # noqa: BLE001 -- an entry of another version: graded again
+            kept = None
+        if isinstance(kept, tuple) and len(kept) == 4:
+            return kept
+    out = _student(r, ans, credit)
+    _cache.put(where, pickle.dumps(out))
+    return out
 
 
 def _student(r: dict, ans: dict | None, credit: tuple[float, float]) -> tuple:

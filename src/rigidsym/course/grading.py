@@ -123,6 +123,8 @@ _FLOATS: dict[int, tuple] = {}
 
 
 def _expected(v) -> np.ndarray:
+    if isinstance(v, np.ndarray):         # a replay's value, already as compared
+        return v.astype(float)
     hit = _FLOATS.get(id(v))
     if hit is not None and hit[0] is v:
         return hit[1].copy()
@@ -153,8 +155,8 @@ def slip_values(solution, name: str, target: np.ndarray, replay: bool = True,
     (:func:`grade` names the first that matches): the edits of ``target`` (the key, or
     the member of its class the grader compares with), the exercise's own slips (its
     module's ``slips(solution)``), then the solution replayed with a slip along the way
-    (``replay``; ``replayed``: :func:`rigidsym.course.slips.replays` of the solution, as a
-    list, when the caller asks for many boxes). Rounding (:func:`rounded_figures`) is
+    (``replay``; ``replayed``: :func:`rigidsym.course.slips.replayed_values` of the
+    solution, when the caller asks for many boxes). Rounding (:func:`rounded_figures`) is
     tried after all of them.
 
     Returns:
@@ -492,8 +494,8 @@ class _Replays:
 
     def __iter__(self):
         if self.done is None:
-            from rigidsym.course.slips import replays
-            self.done = list(replays(self.solution))
+            from rigidsym.course.slips import replayed_values
+            self.done = replayed_values(self.solution)
         return iter(self.done)
 
 

@@ -48,7 +48,7 @@ import numpy as np
 
 from rigidsym.course.answer_classes import column_signs, declared, names_of, rotations_onto
 from rigidsym.course.grading import RTOL, key_array, slip_values
-from rigidsym.course.slips import replays
+from rigidsym.course.slips import replayed_values
 from rigidsym.course.worked import exercise_module
 
 __all__ = ["stack_xml", "STACK_KINDS"]
@@ -145,7 +145,7 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float]) 
         parts.append(f"<input><name>{inputs[a]}</name><type>{kind}</type>"
                      f"<tans>ta_{inputs[a]}</tans><forbidfloat>0</forbidfloat>"
                      f"<options>allowempty</options></input>")
-    replayed = list(replays(sol))      # once per question: each is a read and a solve
+    replayed = replayed_values(sol)    # once per question, kept: the grader reads them too
     for a in boxes:
         if a not in skipped:
             feedback = _truth_feedback(inputs[a], sol.answers[a]) if a in truths else \
