@@ -168,3 +168,22 @@ def test_every_invariant_rate_id_read_and_each_line_doubled_rejected(book,
         lines = read_lines(certs[i], book)
         assert any(x.startswith("read from the page: relation 1's lhs") for x in lines), i
         assert f"({i})" in rejection(relabelled(certs[i], "verified"), book), i
+
+
+def test_a_glyph_defined_by_an_erratum_read_as_the_page_uses_it(book):
+    """3.96e (B ≡ ..., a book erratum) and 3.97d (V ≡ ..., a book erratum): the defined
+    glyph read as (3.96a), (3.97b) use it (B: 4(1 - cos phi) times N-dot's upper block; V:
+    D times the block of the rate of L-tilde), the printed right side through the rates of
+    (3.95b) and U as the cross-product matrix of u (the page under (3.97e)); so the
+    counterexample is the printed relation's, both sides read. The line of B or V doubled,
+    or an entry of the certificate's left side doubled: rejected naming the id."""
+    for i, c in certificates(["3.96e", "3.97d"]).items():
+        lines = read_lines(c, book)
+        assert len(lines) == 1 and lines[0].startswith("read from the page: relation 1's lhs")
+        assert " and rhs" in lines[0] and "NOT READ" not in lines[0], lines
+        glyph = "\\mathbf{B}" if i == "3.96e" else "\\mathbf{V}"
+        assert f"{glyph} as the model's" in lines[0], lines
+        t = copy.deepcopy(c)
+        t["relations"][0]["lhs"][0][1] = f"2*({t['relations'][0]['lhs'][0][1]})"
+        for bad in (line_doubled(c, glyph), t):
+            assert f"({i})" in rejection(bad, book), i
