@@ -78,7 +78,7 @@ def test_import_graph_is_standard_library_only(quick_certs):
 
 def test_checker_size():
     """A referee reads it in an afternoon: at most 1550 lines of mathematics and the
-    command (its accounting of what is read), 820 of the second reader of the printed
+    command (its accounting of what is read), 850 of the second reader of the printed
     LaTeX (its notation, arrays and comparison), 250 of the binding to the page (the
     locator, the manifest, the citations, the causes) and 130 of a referee's path through
     one id (``certcheck explain``)."""
@@ -86,7 +86,7 @@ def test_checker_size():
     lines = {f.name: len(f.read_text().splitlines()) for f in (SRC / "certcheck").glob("*.py")}
     n = sum(k for name, k in lines.items() if name not in reader + page)
     m = sum(lines[name] for name in reader)
-    assert n <= 1550 and m <= 820 and lines["book.py"] <= 250, (n, m, lines["book.py"])
+    assert n <= 1550 and m <= 850 and lines["book.py"] <= 250, (n, m, lines["book.py"])
     assert lines["explain.py"] <= 130
 
 

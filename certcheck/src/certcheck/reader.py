@@ -24,6 +24,7 @@ Each read side becomes a matrix of texts in the certificate's grammar
 
 from __future__ import annotations
 
+import functools
 import itertools
 import re
 
@@ -171,7 +172,12 @@ class _Reader:
             self.take()
             outer, frame = self.frame, self.frame_after() if tok == "[" else None
             self.frame, start = frame or outer, self.i
-            v = self.expr()
+            try:
+                v = self.expr()
+            except NotRead as exc:  # [A + c B v]: a block row [A + c B, v] (its & lost)
+                if tok != "[" or frame or not str(exc).startswith("a sum of shapes"):
+                    raise
+                v = self.block_row(start)
             if tok == "[" and not frame and self.i - start == 4 and self.t[start] in (
                     "\\mathbf", "\\boldsymbol"):
                 raise NotRead("[G] without a frame: G's components in a frame the page "
@@ -255,6 +261,25 @@ class _Reader:
             self.seen.setdefault(k, w)
         self.cited.append(f"{key} as the model's {entry['model']}")
         return total
+
+    def block_row(self, start: int) -> M:
+        """``[A + c B v]`` whose column separator the conversion lost (3.97a, 3.97c), read
+        only where the sum is of an n x n and an n x 1 array: the block row ``[A + c B,
+        v]``, the sign before v its own; cited."""
+        self.i, terms = start, []
+        while not terms or self.peek() in ("+", "-"):
+            terms.append([self.take() if self.peek() in ("+", "-") else "+"])
+            while self.peek() not in (*self._STOP, "\\times", "\\cdot", "/"):
+                terms[-1].append(self.factor())
+        v = terms[-1].pop()
+        a = M([["0"] * (n := v.shape[0])] * n)
+        for sign, *f in (t for t in terms if len(t) > 1):
+            a = add(a, functools.reduce(mul, f), sign)
+        if v.shape != (n, 1) or self.peek() != "]":
+            raise NotRead("a sum of arrays of different shapes in [...]")
+        self.cited.append("[...] read as a block row [A, v] (its column separator lost)")
+        return M([r + [f"-({x})" if terms[-1][0] == "-" else x] for r, (x,) in zip(
+            a.rows, v.rows, strict=True)], a.loose)
 
     def frame_after(self) -> str | None:
         """The frame K of ``[...]_{K}`` opened just before (``None``: a plain bracket)."""

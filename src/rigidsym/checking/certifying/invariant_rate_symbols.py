@@ -37,9 +37,13 @@ representation chosen" (after (3.79)), ``F-tilde`` one of ``N-tilde``, ... (afte
 :func:`member_symbols` gives those lines per certificate relation (labelled ``F = N``,
 ``F~ = N~``, ...), so each member is read under its own representation.
 
-Not given, on purpose: ``B`` (3.96e) and ``V`` (3.97d), which the page defines by errata
-(the model's are the characterisations of (3.96a), (3.97b): lines of those would restate
-the certificate's side), ``U``, ``U-dot`` of section 3.5 and ``u-dot``.
+``B`` and ``V``, only on the page that defines them by an erratum ((3.96e), (3.97d)), as
+(3.96a) and (3.97b) use them: ``B`` is 4(1 - cos phi) times the upper block of ``N-dot``,
+``V`` is ``D`` times the 3 x 3 block of the rate of ``L-tilde`` (the page's ``L-dot`` of
+(3.97b) for the tilde's); ``u-dot``, ``u_0-dot`` the rates of (3.95b), and in section 3.5
+``U``, ``U-dot`` the cross-product matrices of ``u``, ``u-dot`` ("with U denoting, now, the
+cross-product matrix of u", under (3.97e)). Not given: ``V`` in (3.97b), which prints
+``[V/D u-dot]``, a product that reads 3 x 1 where the conversion lost a column separator.
 """
 
 from __future__ import annotations
@@ -158,6 +162,9 @@ _SEC35 = (
      r"\dot{\mathbf{e}}", "rate of r (3.95b)"),
     (r"\dot{r}_0", r"-(1/2)\dot{\phi}\sin(\phi/2)", "rate of r_0 (3.95b)"),
     (r"D", r"1 + u_0", "D as printed in (3.97e)"),
+    (r"\dot{\mathbf{u}}", r"\dot{\phi}\cos\phi\mathbf{e} + \sin\phi\dot{\mathbf{e}}",
+     "rate of u (3.95b)"),
+    (r"\dot{u}_0", r"-\dot{\phi}\sin\phi", "rate of u_0 (3.95b)"),
     (r"\mathbf{v}", r"\dot{\mathbf{a}}", "the velocity of the twist's point A, the landmark "
      "of the pose (3.34)"),
     (r"\dot{\mathbf{v}}", r"\ddot{\mathbf{a}}", "the acceleration of that point A"),
@@ -177,6 +184,16 @@ _SEC35 = (
      r"\dot{\phi}\cos\phi\dot{\mathbf{E}} + \sin\phi\ddot{\mathbf{E}}",
      "the second time derivative of (2.49), term by term"),
 )
+#: B and V, only on the page that defines them (3.96e, 3.97d): what (3.96a), (3.97b) make them
+_DEFINED = (
+    (r"\mathbf{B}", r"4(1 - \cos\phi)(" + _COT_DOT + r" (\mathbf{1} - \mathbf{e}\mathbf{e}^T) - "
+     r"[\sin\phi/(2(1 - \cos\phi))](\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T)"
+     r" - (1/2)\dot{\mathbf{E}})", "B as (3.96a) makes it: 4(1 - cos phi) times the upper "
+     "3 x 3 block of N-dot, the rate of N (3.76b) term by term"),
+    (r"\mathbf{V}", rf"D({_TAN_DOT} \mathbf{{E}} + {_TAN}\dot{{\mathbf{{E}}}})", "V as (3.97b) "
+     "makes it: D times the 3 x 3 block of the rate of L-tilde (3.77c) term by term (the page's "
+     "L-dot of (3.97b) for the tilde's)"),
+)
 #: the jets of a motion given by its angular velocity (``omega_model``: e, phi, omega atoms)
 _JETS = (
     (r"\dot{\mathbf{e}}", r"[\sin \phi / (2(1 - \cos \phi))] (\mathbf{1} - \mathbf{e}"
@@ -190,7 +207,7 @@ _JETS = (
 _AT_A = (r"\mathbf{v}", r"\dot{\mathbf{v}}", r"\mathbf{t}", r"\dot{\mathbf{t}}",
          r"\dot{\boldsymbol{\omega}}", r"\ddot{\mathbf{Q}}")
 #: the glyphs of every line above (cross-product matrices and the slip apart)
-INVARIANT_RATE_GLYPHS = tuple(g for g, _, _ in _COMMON + _SEC342 + _SEC35 + _JETS)
+INVARIANT_RATE_GLYPHS = tuple(g for g, _, _ in _COMMON + _SEC342 + _SEC35 + _JETS + _DEFINED)
 
 #: per representation: (F, F-tilde, the invariants' array, the page's words)
 _REPS = {"N": (r"\boldsymbol{\nu}", "natural invariants"),
@@ -246,6 +263,7 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
     if section not in ("3.4.2", "3.5"):
         return []
     lines = _COMMON + (_SEC342 if section == "3.4.2" else _SEC35)
+    lines += tuple(x for x in _DEFINED if re.search(re.escape(x[0]) + r"\s*&?\\equiv", latex))
     if {r"\boldsymbol{\omega}", r"\mathbf{e}"} <= have and r"\dot{\phi}" not in have:
         lines += _JETS  # e and phi move with the angular velocity omega (an atom)
     text = latex + (" ".join(x for r in "NLH" for _, x, _ in _members(r))
@@ -268,6 +286,9 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
         out.append({"glyph": r"\dot{\mathbf{E}}", "cpm_of": r"\dot{\mathbf{e}}"})
     if r"\ddot{\mathbf{Q}}" in text and r"\ddot{\mathbf{E}}" not in given:
         out.append({"glyph": r"\ddot{\mathbf{E}}", "cpm_of": r"\ddot{\mathbf{e}}"})
+    for g, v in ((r"\mathbf{U}", r"\mathbf{u}"), (r"\dot{\mathbf{U}}", r"\dot{\mathbf{u}}")):
+        if section == "3.5" and g in text and g not in given:  # "U denoting, now, the
+            out.append({"glyph": g, "cpm_of": v})  # cross-product matrix of u" (3.97e)
     if r"\dot{\mathbf{R}}" in text and r"\dot{\mathbf{R}}" not in given:
         out.append({"glyph": r"\dot{\mathbf{R}}", "cpm_of": r"\dot{\mathbf{r}}"})
     if r"\mathbf{1tr}" in text:  # the conversion ran 1 and tr together (3.96b)
