@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 import rigidsym.course.worked as worked
-from rigidsym.course.grading import grade, key_array
-from rigidsym.course.slips import replayed_values, replays
+from rigidsym.course.grading import grade, key_array, replayed_values
+from rigidsym.course.slips import replays
 from rigidsym.course.worked import solve
 
 

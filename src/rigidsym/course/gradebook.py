@@ -24,7 +24,7 @@ Each student's grading is kept in the user cache, keyed by the student's key rec
 answers and the credits (and the digest of every source file): grading the class again
 after one answer is fixed grades that student alone, and a grading interrupted goes on
 from the students already graded. The replays of the slips along the way, the costly part
-of a wrong answer's judging, are kept too (:func:`rigidsym.course.slips.replayed_values`):
+of a wrong answer's judging, are kept too (:func:`rigidsym.course.grading.replayed_values`):
 those the class's STACK export solved are read back.
 """
 

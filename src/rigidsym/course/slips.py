@@ -22,7 +22,7 @@ import re
 
 import sympy as sp
 
-__all__ = ["data_slips", "replays", "replayed_values", "slip_list"]
+__all__ = ["data_slips", "replays", "slip_list"]
 
 _LENGTH = ("m",)
 _FRAME = re.compile(r"^(.*)_(1|2|A|B|S)$")
@@ -101,80 +101,6 @@ def replays(solution):
             continue                      # data a slip put out of reach: no replay
         if s.status == "solved":
             yield word, detail, s.answers
-
-
-def replayed_values(solution) -> list[tuple[str, str, dict]]:
-    """:func:`replays` of ``solution`` with each answer as the grader compares it: the
-    exact value as a float array (:func:`rigidsym.course.grading.key_array`: 17 digits,
-    the key's shape), ``None`` for a value that is no number (an expression in symbols,
-    a set), text kept as text.
-
-    The list is kept in the user cache (``verdicts/``, beside the solutions on the book's
-    data; keyed by the exercise, the solution's exact data and tolerance, every source
-    file of the package and the book, and the libraries' versions), so that the class's
-    STACK export and its grading, each of which compares every student's boxes with the
-    replays, solve each slipped datum once between them.
-
-    Returns:
-        ``[(word, detail, {answer name: float array | str | None}), ...]``, in the order
-        of :func:`replays`.
-    """
-    import pickle
-
-    from rigidsym.core import cache as _cache
-
-    where = _kept_at(solution)
-    blob = _cache.get(where) if where is not None else None
-    if blob is not None:
-        try:
-            kept = pickle.loads(blob)
-        except Exception:  # noqa: BLE001 -- an entry of another version: replayed again
-            kept = None
-        if isinstance(kept, list):
-            return kept
-    out = [(word, detail, {n: _as_compared(v) for n, v in answers.items()})
-           for word, detail, answers in replays(solution)]
-    if where is not None:
-        _cache.put(where, pickle.dumps(out))
-    return out
-
-
-def _kept_at(solution):
-    """Where :func:`replayed_values` of ``solution`` is kept, or None (no data, or data
-    that do not read). The key holds the digest of every source file of the package and
-    the book (:func:`rigidsym.core.sources.package_digest`), not the modules imported so
-    far: a class's exam and its grading, in other processes, find the same entry."""
-    import hashlib
-
-    from rigidsym.core import cache as _cache
-    from rigidsym.core import sources as _sources
-    from rigidsym.course.worked import parameters, read_data
-
-    if not solution.data:
-        return None
-    try:
-        d = read_data(parameters(solution.id), solution.data, solution.tol)
-    except (ValueError, TypeError):
-        return None
-    h = hashlib.sha256()
-    for part in ("replays 1", _sources.package_digest(), _sources.environment(),
-                 solution.id, repr(d.key())):
-        h.update(part.encode() + b"\0")
-    key = h.hexdigest()
-    return _cache.folder("verdicts") / key[:2] / f"replays-{key}.pickle"
-
-
-def _as_compared(v):
-    """An answer as the grader compares it: text kept, a number as its float array, a
-    value that is no number (symbols, a set) None."""
-    from rigidsym.course.grading import key_array
-
-    if isinstance(v, str):
-        return v
-    try:
-        return key_array(v)
-    except TypeError:
-        return None
 
 
 def slip_list(ex_id: str) -> str:

@@ -47,8 +47,7 @@ import math
 import numpy as np
 
 from rigidsym.course.answer_classes import column_signs, declared, names_of, rotations_onto
-from rigidsym.course.grading import RTOL, key_array, slip_values
-from rigidsym.course.slips import replayed_values
+from rigidsym.course.grading import RTOL, key_array, replayed_values, slip_values
 from rigidsym.course.worked import exercise_module
 
 __all__ = ["stack_xml", "STACK_KINDS"]
