@@ -57,21 +57,14 @@ variants = 1
 
 
 def host() -> dict:
-    """The CPU model, the cores this process may use, all cores, Python's version."""
-    model = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
+    """The host as benchmarks/test_command.py names it, and the cores this process may use."""
+    from test_command import host as machine
+
     try:
         usable = len(os.sched_getaffinity(0))
     except AttributeError:
         usable = os.cpu_count()
-    return {"cpu": model, "cores_usable": usable, "cores": os.cpu_count(),
-            "python": sys.version.split()[0]}
+    return {**machine(), "cores_usable": usable}
 
 
 def timed(cmd: list[str], cache: Path, cwd: Path) -> dict:
