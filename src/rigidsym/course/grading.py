@@ -155,9 +155,8 @@ def slip_values(solution, name: str, target: np.ndarray, replay: bool = True,
     (:func:`grade` names the first that matches): the edits of ``target`` (the key, or
     the member of its class the grader compares with), the exercise's own slips (its
     module's ``slips(solution)``), then the solution replayed with a slip along the way
-    (``replay``; ``replayed``: :func:`replayed_values` of the
-    solution, when the caller asks for many boxes). Rounding (:func:`rounded_figures`) is
-    tried after all of them.
+    (``replay``; ``replayed``: :func:`replayed_values` of the solution, when the caller asks
+    for many boxes). Rounding (:func:`rounded_figures`) is tried after all of them.
 
     Returns:
         ``[(slip word, value as a float array), ...]``; a replay whose answer has another
@@ -607,8 +606,8 @@ def read_decimal_comma(given, shape: tuple, where: str):
 def replayed_values(solution) -> list[tuple[str, str, dict]]:
     """:func:`rigidsym.course.slips.replays` of ``solution`` with each answer as the grader
     compares it: the exact value as a float array (:func:`key_array`: 17 digits, the key's
-    shape), ``None`` for a value that is no number (an expression in symbols,
-    a set), text kept as text.
+    shape), ``None`` for a value that is no number (an expression in symbols, a set), text
+    kept as text.
 
     The list is kept in the user cache (``verdicts/``, beside the solutions on the book's
     data; keyed by the exercise, the solution's exact data and tolerance, every source
