@@ -3,8 +3,7 @@ from Barfoot, Forster et al., Kok-Hol-Schön, Chirikjian and manif's documentati
 their readers would with the ``--let``s docs/check-latex.md teaches,
 judged by the data file's own NumPy truth (which never imports rigidsym). No verdict may be
 wrong, each case answers as recorded (as typed, and after the one attempt its message names),
-and no case the checker decided as typed when the cases were recorded (``BEFORE``) is undecided
-or refused.
+and no case the baseline checker decided as typed (``BASELINE``) is undecided or refused.
 """
 
 from __future__ import annotations
@@ -52,7 +51,7 @@ def test_the_trial_is_at_least_thirty_cases_from_at_least_four_books_with_slips(
     books = {c["book"] for c in trial.CASES}
     assert len(trial.CASES) >= 30 and len(books) >= 4, (len(trial.CASES), books)
     assert sum(c["slip"] for c in trial.CASES) >= 10
-    assert set(trial.BEFORE) == set(CASES)
+    assert set(trial.BASELINE) == set(CASES)
 
 
 def test_the_numpy_truth_tells_each_slip_from_its_equation():
@@ -64,18 +63,18 @@ def test_the_numpy_truth_tells_each_slip_from_its_equation():
 def test_a_trial_case_is_never_wrong_and_answers_as_recorded(cid):
     case = CASES[cid]
     got = answer(case)
-    assert got != "WRONG" and got == trial.AFTER[cid], (cid, got)
-    if trial.BEFORE[cid] == "right":
+    assert got != "WRONG" and got == trial.AS_TYPED[cid], (cid, got)
+    if trial.BASELINE[cid] == "right":
         assert got == "right", (cid, got)
     if cid in trial.ATTEMPT:
         got = answer(case, *trial.attempted(case))
-        assert got != "WRONG" and got == trial.AFTER_ATTEMPT[cid], (cid, got)
+        assert got != "WRONG" and got == trial.AS_ATTEMPTED[cid], (cid, got)
 
 
 def test_the_record_meets_the_floor_no_wrong_verdict_and_90_percent_decided():
-    final = {c: trial.AFTER_ATTEMPT.get(c, trial.AFTER[c]) for c in CASES}
-    assert "WRONG" not in trial.BEFORE.values() and "WRONG" not in final.values()
+    final = {c: trial.AS_ATTEMPTED.get(c, trial.AS_TYPED[c]) for c in CASES}
+    assert "WRONG" not in trial.BASELINE.values() and "WRONG" not in final.values()
     decided = sum(v == "right" for v in final.values())
     assert decided >= 0.9 * len(CASES), decided
-    assert sum(v == "right" for v in trial.AFTER.values()) >= \
-        sum(v == "right" for v in trial.BEFORE.values())
+    assert sum(v == "right" for v in trial.AS_TYPED.values()) >= \
+        sum(v == "right" for v in trial.BASELINE.values())

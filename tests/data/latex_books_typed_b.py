@@ -13,9 +13,9 @@ Each case: an id, its book, the LaTeX and the `--let`s as a reader of that book 
 equation), and a truth: a NumPy function of a random generator returning the residual
 |lhs - rhs| at one random point of the declarations (for a kinematic equation, the time
 derivative by central differences along the declared rates). The truth never imports
-rigidsym: it is the independent judge. The verdicts without the books' readings are
-:data:`BEFORE`; as typed after them :data:`AFTER`; after the one attempt a reader makes
-after the message (:data:`ATTEMPT`) :data:`AFTER_ATTEMPT`.
+rigidsym: it is the independent judge. The verdicts as typed, the checker without the books'
+readings, are :data:`BASELINE`; as typed, with them, :data:`AS_TYPED`; after the one attempt a
+reader makes after the message (:data:`ATTEMPT`) :data:`AS_ATTEMPTED`.
 """
 
 from __future__ import annotations
@@ -552,8 +552,8 @@ def attempted(case: dict) -> tuple[str, list, dict]:
         latex, lets = latex.replace(old, new), [x.replace(old, new) for x in lets]
     return latex, lets, {}
 
-#: the verdicts as typed, without the books' readings (right / refused / undecided / WRONG)
-BEFORE = {
+#: the baseline: the verdicts as typed, the checker without the books' readings (right / refused / undecided / WRONG)
+BASELINE = {
     'wie-c-orth': 'right',
     'wie-trace': 'right',
     'wie-trace-slip': 'right',
@@ -597,7 +597,7 @@ BEFORE = {
 }
 
 #: the verdicts as typed, with the books' readings
-AFTER = {
+AS_TYPED = {
     'wie-c-orth': 'right',
     'wie-trace': 'right',
     'wie-trace-slip': 'right',
@@ -641,7 +641,7 @@ AFTER = {
 }
 
 #: after the reader's one attempt (:data:`ATTEMPT`), with the books' readings
-AFTER_ATTEMPT = {
+AS_ATTEMPTED = {
     'wie-c-orth': 'right',
     'wie-trace': 'right',
     'wie-trace-slip': 'right',
