@@ -3,8 +3,11 @@
 A figure in README.md or docs/*.md is followed by an invisible marker naming its source,
 ``251.5 s<!-- fig: test_command-merged.json wall_s -->``: a JSON record under
 benchmarks/results/ that names its machine, and a path into it (docs/testing.md, "Where a
-figure comes from"). The figure must read as the record's value does, and a time figure
-with no marker fails unless it is listed below as no measurement.
+figure comes from"). The figure must read as the record's value does, and a time figure, a
+ratio ("1.07x", "0.73-0.84x the hand-written code", "4.5e4 x the bound") or a percentage
+with no marker fails unless it is listed below as no measurement (a setting, a target, a
+test's tolerance, algebra). A measured figure no record holds is not quoted: the page names
+the command that measures it.
 """
 
 from __future__ import annotations
@@ -33,7 +36,15 @@ FIGURE = re.compile(r"(-?\d+(?:\.\d+)?)(?:\s?(?:s|ms|us|µs|ns|min|%|x|×))?$")
 TIME = re.compile(r"(?<![\w.^/-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.\d+)?)?"
                   r"\s?(?:s|ms|us|µs|ns|min|minutes?|seconds?|hours?)\b(?!\.f\.|\^)")
 
-#: time figures that measure nothing: page, the text around the figure, and why
+#: a ratio: a number (or range of two, or a power of ten) then "x" or "×" meaning "times" (not a
+#: shape, "3 x 3", "6×6"; not a name's digit, "p1 x p2")
+RATIO = re.compile(r"(?<![\w.^/%-])\d+(?:\.\d+)?(?:e[+-]?\d+)?"
+                   r"(?:\s?(?:–|-|to)\s?\d+(?:\.\d+)?(?:e[+-]?\d+)?)?\s?(?:x|×)(?!\w|\s?\d)")
+#: a percentage (not Moodle's "%50%" weight syntax)
+PERCENT = re.compile(r"(?<![\w.^/%~-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.\d+)?)?\s?%")
+
+#: time figures, ratios and percentages that measure nothing: page, the text around the
+#: figure, and why
 NOT_MEASURED = [
     ("README.md", "least one every 2.5 s", "the build's progress interval, a setting "
      "(setup.py's _SILENCE)"),
@@ -51,7 +62,37 @@ NOT_MEASURED = [
     ("docs/lie-groups.md", "g(s) = (2s − asin s", "algebra: 2s is 2 times s"),
     ("docs/testing.md", "alive 5 s after it ends", "the process guard's grace, a setting"),
     ("docs/verify.md", "of 5 s stays as a safety net", "the CPU-time alarm, a setting"),
-]
+    # ratios
+    ("docs/accuracy.md", "abs(phi) < 1e-300 x norm(input)",
+     "algebra: a threshold times the input's norm (the declared singular set)"),
+    ("docs/audit.md", "(`log_arccos_window`, 10 to 150 x the bound)",
+     "the planted defect's error by its construction, u / (8 u phi) on its window"),
+    ("docs/audit.md", "width of\n2x or more", "the planted window's width, a test's setting"),
+    ("docs/c-api.md", "The target of 1.1x in instructions", "a target"),
+    ("docs/c-api.md", "per component is 1.4x",
+     "arithmetic: (30 + 12) / 30, the instructions by hand and the components beside it"),
+    ("docs/differentiable-kernels.md", "at most 5x the forward program's",
+     "the bound tests/test_codegen_vjp.py asserts"),
+    ("docs/repairs.md", "its 1.5× time budget", "a target"),
+    ("docs/soundness.md", "the gradient `2x ≠ 0`", "algebra: 2 times x"),
+    ("docs/where-it-stands.md", "target ≥ 1.7× on K2, K5", "a target"),
+    ("docs/where-it-stands.md", "target ≥ 1.6× on K1, K4, K6", "a target"),
+    ("docs/where-it-stands.md", "the target of 1.6×", "a target"),
+    ("docs/where-it-stands.md", "target 1.10× its time", "a target"),
+    # percentages
+    ("docs/audit.md", "to within 1 %", "the bisection's tolerance on a window's end, a setting"),
+    ("docs/audit.md", "at 2.3e-3 within 1 %", "tests/test_audit_windows.py's tolerance"),
+    ("docs/audit.md", "its ends within 5 % of the", "tests/test_audit_windows.py's tolerance"),
+    ("docs/check-latex.md", "at least 97 % of the decided", "the metamorphic test's floor"),
+    ("docs/check-latex.md", "at most 3 % of the variants", "the same floor, its complement"),
+    ("docs/check-latex.md", "(under a floor of 5 %)", "the test's floor"),
+    ("docs/exams.md", "the 0.1 % tolerance", "the grading tolerance, a setting"),
+    ("docs/exams.md", "within 0.1 % of", "the grading tolerance, a setting"),
+    ("docs/exams.md", "(`=value:tol` 100 %", "Moodle's full credit, a definition"),
+] + [("docs/kernels.md", around, "measured against the page by "
+       "tests/test_one_answer_measured.py (to 2 points; float64 exactly)")
+      for around in ("`twist_transfer` 81.2 %", "`kinetic_energy` 16.9 %",
+                     "`rotation_from_euler_rodrigues` 99.7 %", "float64: 0 %")]
 
 
 def pages() -> list[Path]:
@@ -147,13 +188,15 @@ def test_the_pages_trace_their_figures():
             "docs/where-it-stands.md"} <= names, names
 
 
-def test_no_time_figure_is_untraced():
+def _untraced(figure: re.Pattern) -> list[str]:
+    """Each figure matching ``figure`` on the pages with no marker right after it and no
+    allowance in NOT_MEASURED: 'page:line: figure in line'."""
     untraced = []
     for page in pages():
         text = page.read_text(encoding="utf-8")
         allowed = [(around, why) for p, around, why in NOT_MEASURED if p == _name(page)]
         found = []
-        for m in TIME.finditer(text):
+        for m in figure.finditer(text):
             if text.startswith("<!--", m.end()) or MARKER.match(text, m.end()):
                 continue
             if any(around in text[m.start() - 40:m.end() + 40] and m.group(0) in around
@@ -163,8 +206,37 @@ def test_no_time_figure_is_untraced():
             found.append(f"{_name(page)}:{_line(text, m.start())}: {m.group(0)!r} in "
                          f"{line[:100]!r}")
         untraced += found
+    return untraced
+
+
+def test_no_time_figure_is_untraced():
+    untraced = _untraced(TIME)
     assert not untraced, ("time figures with no record (a <!-- fig: --> marker), or list "
                           "them in NOT_MEASURED with why:\n" + "\n".join(untraced))
+
+
+def test_no_ratio_or_percentage_is_untraced():
+    untraced = _untraced(RATIO) + _untraced(PERCENT)
+    assert not untraced, ("ratios and percentages with no record (a <!-- fig: --> marker): "
+                          "name the command that measures them instead, or list them in "
+                          "NOT_MEASURED with why:\n" + "\n".join(untraced))
+
+
+@pytest.mark.parametrize(("text", "figures"), [
+    ("the rotation 1.17x, the wrench 1.03-1.15x and 4.5e4 x the bound", 3),
+    ("within 1.2× in both; 0.73–0.84× SymForce's", 2),
+    ("a 3 x 3 matrix, 6×6 blocks, `p1 x p2`, `e1 x e2`, log10 x", 0),
+])
+def test_a_ratio_is_a_number_times_not_a_shape_or_a_product(text, figures):
+    assert len(RATIO.findall(text)) == figures, RATIO.findall(text)
+
+
+@pytest.mark.parametrize(("text", "figures"), [
+    ("81.2 %, 16.9%, 5-6 %", 3),
+    ("`~%50%-1.414:0.00141`, `%100%`", 0),
+])
+def test_a_percentage_is_a_number_then_percent(text, figures):
+    assert len(PERCENT.findall(text)) == figures, PERCENT.findall(text)
 
 
 def test_every_allowance_still_applies():
