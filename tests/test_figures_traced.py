@@ -49,6 +49,8 @@ NOT_MEASURED = [
     ("README.md", "least one every 2.5 s", "the build's progress interval, a setting "
      "(setup.py's _SILENCE)"),
     ("docs/setup.md", "at least one every 2.5 s", "the build's progress interval, a setting"),
+    ("docs/commands.md", "with no line for 2.5 s says", "a piped phase's longest quiet, a "
+     "setting (progress.SILENCE)"),
     ("docs/accuracy.md", "= 2 s (c E", "algebra: s is sin(phi/2)"),
     ("docs/accuracy.md", "(s cos s + 2 s - 3 sin s)", "algebra: s is |w|"),
     ("docs/adding-a-kernel.md", "(SIGINT after 150 s)", "the interrupt's time-out, a setting"),

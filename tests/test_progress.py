@@ -184,6 +184,8 @@ def test_report_in_a_pipe_states_every_phase(tmp_path):
     counts: dict[str, list[tuple[int, int]]] = {}
     lines = []
     for ln in p.stderr.splitlines():
+        if re.fullmatch(r"rigidsym report: .+: still .+, \d.*", ln):
+            continue  # a quiet phase saying what it is still doing
         m = re.fullmatch(r"rigidsym report: (.+): (\d+)/(\d+), \d+(\.\d)? s|"
                          r"rigidsym report: (.+): (\d+)/(\d+), \d+ min \d\d s", ln)
         if m and (m.group(1) or m.group(5)) in phases:
@@ -212,6 +214,11 @@ def test_exercise_all_in_a_pipe(tmp_path):
     p = subprocess.run(_command("exercise", "--all"), cwd=ROOT, env=_env(tmp_path),
                        capture_output=True, text=True)
     err = p.stderr.splitlines()
+    # a slow exercise says it is still being solved, never a line that says nothing
+    still = [ln for ln in err if ": still " in ln]
+    assert all(re.fullmatch(r"rigidsym exercise --all: solving 21 exercises: still solving "
+                            r"exercise 3\.\d+, .+ s", ln) for ln in still), still
+    err = [ln for ln in err if ln not in still]
     assert err[0] == "rigidsym exercise --all: solving 21 exercises ..."
     # a line at each of the 21 exercises but the last, then the phase's end
     assert [int(re.match(r"rigidsym exercise --all: solving 21 exercises: (\d+)/21, ",
@@ -270,6 +277,45 @@ def test_a_piped_phase_says_each_tenth_of_its_items_once():
         for _ in range(50):
             ph.advance()
     assert len(out.getvalue().splitlines()) == 2
+
+
+def test_a_piped_phase_quiet_for_a_while_says_what_it_is_still_doing(monkeypatch):
+    """One slow item (a solution taking seconds) between two count lines: the phase says
+    what it is on after SILENCE seconds without a line, and again after as many more; a
+    phase that ends before then says nothing more. Lines are waited for, not timed: the
+    loop's limit only guards against a watch that never speaks."""
+    monkeypatch.setattr(_progress, "SILENCE", 0.05)
+    monkeypatch.setattr(_progress, "TICK", 0.01)
+    out = io.StringIO()
+    with Reporter("rigidsym test", stream=out) as rep, \
+            rep.phase("solving 3 items", total=3) as ph:
+        ph.label("solving item 1")
+        hang = time.monotonic() + 60
+        while out.getvalue().count("still") < 2 and time.monotonic() < hang:
+            time.sleep(0.01)
+        ph.advance()
+        ph.label("solving item 2")
+    lines = out.getvalue().splitlines()
+    still = [ln for ln in lines if ": still " in ln]
+    assert len(still) >= 2 and all(
+        re.fullmatch(r"rigidsym test: solving 3 items: still solving item 1, \d+\.\d s", ln)
+        for ln in still[:2]), lines
+    assert lines[0] == "rigidsym test: solving 3 items ..." and \
+        lines[-1].startswith("rigidsym test: solving 3 items: done in ")
+    # no watch outlives its phase: nothing more once the command has ended
+    time.sleep(0.2)
+    assert out.getvalue().splitlines() == lines
+    # unlabelled, it is still working; disabled, silent
+    out = io.StringIO()
+    with Reporter("rigidsym test", stream=out) as rep, rep.phase("loading"):
+        hang = time.monotonic() + 60
+        while "still" not in out.getvalue() and time.monotonic() < hang:
+            time.sleep(0.01)
+    assert "rigidsym test: loading: still working, " in out.getvalue()
+    out = io.StringIO()
+    with Reporter("x", enabled=False, stream=out) as rep, rep.phase("y"):
+        time.sleep(0.2)
+    assert out.getvalue() == ""
 
 
 def test_disabled_reporter_is_silent():

@@ -6,9 +6,11 @@ elapsed time and an estimate of the time left; when a phase ends, one line stays
 (``✓ checked 181 ids in 40.1 s: ...``). When stderr is not a terminal (a pipe, a log, CI),
 one line at the start and one at the end of each phase, and between them, in a phase whose
 items are counted, one at each tenth of its items (``rigidsym verify: checking 181 ids:
-37/181, 2.1 s``): a log reads as the list of phases with their durations, and a phase of
-several seconds is never silent for more than a tenth of it (lines by count, not by clock,
-so that the same run writes the same lines).
+37/181, 2.1 s``): a log reads as the list of phases with their durations (lines by count,
+so that the same run writes the same lines). A phase quiet for :data:`SILENCE` seconds
+all the same (one slow item: an exercise whose solution takes seconds) says what it is
+still doing (``rigidsym exercise --all: solving 21 exercises: still solving exercise 3.3,
+5.0 s``), as the build's progress does: no pipe waits more than that for a line.
 
 The estimate is the caller's (:meth:`Phase.estimate`): the parallel checker predicts each
 id's time from its previous runs (:func:`load_durations`), which moves far less than a
@@ -22,12 +24,14 @@ from __future__ import annotations
 import json
 import os
 import sys
+import threading
 import time
 from contextlib import contextmanager
 
 from rigidsym.core.interrupts import checkpoint
 
-__all__ = ["Reporter", "Phase", "PER_ITEM", "load_durations", "save_durations", "format_seconds"]
+__all__ = ["Reporter", "Phase", "PER_ITEM", "SILENCE", "load_durations", "save_durations",
+           "format_seconds"]
 
 #: refreshes per second of the live display (at least one)
 REFRESH = 4
@@ -36,6 +40,11 @@ SMOOTHING = 1 / 3
 #: in a pipe, a counted phase of at most this many items says each item (a tenth of a few
 #: items, each taking seconds, would leave the reader seconds without a line)
 PER_ITEM = 30
+#: in a pipe, the most seconds a phase stays without a line before it says what it is still
+#: doing (under the 3 s a reader waits; setup.py's build lines keep the same interval)
+SILENCE = 2.5
+#: how often the watch of a piped phase looks at the time since the last line, seconds
+TICK = 0.25
 
 
 def format_seconds(s: float) -> str:
@@ -59,9 +68,13 @@ class Phase:
         self._eta: float | None = None
         self._eta_at = self.t0
         self._task = None
+        #: what is being done now, said in a pipe when the phase stays quiet
+        self.doing: str | None = None
 
     def label(self, text: str) -> None:
-        """What is being done now (``checking 3.77a``), shown on a terminal."""
+        """What is being done now (``checking 3.77a``), shown on a terminal; in a pipe, said
+        if the phase stays quiet for :data:`SILENCE` seconds."""
+        self.doing = text
         if self._task is not None:
             self.reporter.bar.update(self._task, description=text)
 
@@ -77,9 +90,8 @@ class Phase:
         elif self.reporter.enabled and self.total and self.done < self.total and (
                 self.total <= PER_ITEM
                 or 10 * self.done // self.total > 10 * before // self.total):
-            print(f"{self.reporter.command}: {self.what}: {self.done}/{self.total}, "
-                  f"{format_seconds(time.perf_counter() - self.t0)}",
-                  file=self.reporter._stream(), flush=True)
+            self.reporter._line(f"{self.reporter.command}: {self.what}: {self.done}/{self.total}, "
+                                f"{format_seconds(time.perf_counter() - self.t0)}")
         checkpoint("advance")
 
     def counted(self, done: int, total: int) -> None:
@@ -127,9 +139,25 @@ class Reporter:
         self.stream = stream
         self.bar = None
         self.live = False
+        self._lock = threading.Lock()
+        self._said = time.perf_counter()
 
     def _stream(self):
         return self.stream if self.stream is not None else sys.stderr
+
+    def _line(self, text: str) -> None:
+        """One line in a pipe (from the command or from a phase's watch, never interleaved)."""
+        with self._lock:
+            print(text, file=self._stream(), flush=True)
+            self._said = time.perf_counter()
+
+    def _watch(self, ph: Phase, stop: threading.Event) -> None:
+        """In a pipe, while ``ph`` runs: a line saying what it is still doing whenever
+        :data:`SILENCE` seconds pass without one."""
+        while not stop.wait(TICK):
+            if time.perf_counter() - self._said >= SILENCE and not stop.is_set():
+                self._line(f"{self.command}: {ph.what}: still {ph.doing or 'working'}, "
+                           f"{format_seconds(time.perf_counter() - ph.t0)}")
 
     def __enter__(self) -> Reporter:
         s = self._stream()
@@ -167,7 +195,7 @@ class Reporter:
         if self.bar is not None:
             self.bar.console.print(text, highlight=False, markup=False)
         else:
-            print(text, file=self._stream(), flush=True)
+            self._line(text)
 
     @contextmanager
     def phase(self, what: str, total: int | None = None, doing: str | None = None):
@@ -178,10 +206,14 @@ class Reporter:
             The :class:`Phase`, to advance, label and estimate.
         """
         ph = Phase(self, what, total)
+        ph.doing = doing
+        stop = threading.Event()
         if self.bar is not None:
             ph._task = self.bar.add_task(doing or what, total=total, eta="")
         elif self.enabled:
-            print(f"{self.command}: {what} ...", file=self._stream(), flush=True)
+            self._line(f"{self.command}: {what} ...")
+            threading.Thread(target=self._watch, args=(ph, stop), daemon=True,
+                             name="rigidsym-progress").start()
         failed, stopped = True, False
         try:
             checkpoint("phase")
@@ -191,6 +223,7 @@ class Reporter:
             stopped = True
             raise
         finally:
+            stop.set()
             took = format_seconds(time.perf_counter() - ph.t0)
             if self.bar is not None:
                 self.bar.remove_task(ph._task)
@@ -203,8 +236,7 @@ class Reporter:
                              f"{'stopped after ' if failed else ''}{took}{tail}")
             elif self.enabled:
                 ended = "stopped after" if failed else "done in"
-                print(f"{self.command}: {what}: {ended} {took}{tail}", file=self._stream(),
-                      flush=True)
+                self._line(f"{self.command}: {what}: {ended} {took}{tail}")
 
 
 def _count_column():
