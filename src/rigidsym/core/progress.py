@@ -208,12 +208,14 @@ class Reporter:
         ph = Phase(self, what, total)
         ph.doing = doing
         stop = threading.Event()
+        watch = None
         if self.bar is not None:
             ph._task = self.bar.add_task(doing or what, total=total, eta="")
         elif self.enabled:
             self._line(f"{self.command}: {what} ...")
-            threading.Thread(target=self._watch, args=(ph, stop), daemon=True,
-                             name="rigidsym-progress").start()
+            watch = threading.Thread(target=self._watch, args=(ph, stop), daemon=True,
+                                     name="rigidsym-progress")
+            watch.start()
         failed, stopped = True, False
         try:
             checkpoint("phase")
@@ -224,6 +226,8 @@ class Reporter:
             raise
         finally:
             stop.set()
+            if watch is not None:
+                watch.join()  # its last line, if any, before the phase's end line
             took = format_seconds(time.perf_counter() - ph.t0)
             if self.bar is not None:
                 self.bar.remove_task(ph._task)
