@@ -16,7 +16,7 @@ from __future__ import annotations
 import argparse
 import importlib.util
 import json
-import platform
+import os
 import resource
 import subprocess
 import time
@@ -87,6 +87,9 @@ def main() -> None:
     ap.add_argument("--only", nargs="*", default=None, help="case ids (default: all)")
     ap.add_argument("--out", type=Path, default=OUT)
     args = ap.parse_args()
+    from test_command import host  # the host as the other records name it
+
+    machine, load = host(), [round(x, 2) for x in os.getloadavg()]
     trial = load_trial()
     cases = [c for c in trial.CASES if args.only is None or c["id"] in args.only]
     rows = []
@@ -107,7 +110,7 @@ def main() -> None:
     total["decided_percent"] = round(100 * total["right"] / max(total["statements"], 1), 1)
     out = {"what": "tests/data/estimation_books_typed.py through rigidsym.check_latex as typed "
                    "(repairs off), judged by its NumPy truth",
-           "commit": _commit(), "host": platform.node(), "python": platform.python_version(),
+           "commit": _commit(), "host": machine, "load_before": load,
            "timeout_s": args.timeout,
            "max_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
            "total": total, "books": books, "cases": rows}
