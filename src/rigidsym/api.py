@@ -243,22 +243,30 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
+        conjugate_c,
+        cross_subscripts,
+        declared_deltas,
         declared_e,
         declared_labels,
         floor_cross,
+        hat_expressions,
         rate_entries,
         tilde_expressions,
     )
     from rigidsym.latex.statement import declare_latex
 
     step("reading")
+    latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     latex, let, floor = floor_cross(latex, let)  # Trawny's \lfloor a\times\rfloor: [a]_x
     latex, let, rates = rate_entries(latex, let)  # Greenwood's \dot\epsilon_k: entries
+    latex, let, subx = cross_subscripts(latex, let)  # Eade's \omega_\times: [\omega]_x
+    latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
+    latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (labels, tilde, floor, rates, respelt):
+    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading

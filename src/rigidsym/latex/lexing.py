@@ -12,7 +12,8 @@ import lark
 
 from rigidsym.latex.rewrites import mixed_products, multiple_angles, subscripts_first
 
-__all__ = ["Relation", "Parsed", "parser", "tree", "braced", "quoted"]
+__all__ = ["Relation", "Parsed", "parser", "tree", "braced", "quoted", "bracket_key",
+           "named_map_key"]
 
 
 @dataclass(frozen=True)
@@ -173,6 +174,21 @@ def bracket_key(token: str) -> str:
     if font in ("\\mathbf", "\\boldsymbol", "\\bm"):  # as the glyph keys write bold
         font = "\\boldsymbol" if atom.startswith("\\") else "\\mathbf"
     return f"[{font}{{{atom}}}]_{{{sub}}}" if font else f"[{atom}]_{{{sub}}}"
+
+
+_NAMED_MAP = re.compile(r"\\(?:mathrm|operatorname)\s*\{\s*(Exp|Log)\s*\}"
+                        r"|\\(exp|log)\s*_\s*\{?\s*(\\?[A-Za-z]+)\s*\}?")
+
+
+def named_map_key(token: str) -> str:
+    """The one spelling of a named map (the grammar's ``NAMED_MAP``): ``\\operatorname{Exp}``,
+    ``\\mathrm{ Exp }`` -> ``\\mathrm{Exp}``; ``\\exp_q``, ``\\exp_{q}`` -> ``\\exp_{q}``."""
+    m = _NAMED_MAP.fullmatch(token.strip())
+    if not m:
+        return "".join(token.split())
+    if m.group(1):
+        return f"\\mathrm{{{m.group(1)}}}"
+    return f"\\{m.group(2)}_{{{m.group(3)}}}"
 
 
 def braced(latex: str) -> str:

@@ -19,6 +19,19 @@ declares that NAME it is the name: each occurrence (any bracing, ``\\dot{C}_b^n`
 respelt with the label parenthesised, ``C_{b}^{(n)}``, the grammar's label (before: "the
 name 'C_b^n' cannot be read").
 
+Eade's cross-product matrix as a subscript, ``\\boldsymbol\\omega_\\times`` and
+``(\\mathbf{R}\\boldsymbol\\omega)_\\times``, is respelt ``[\\boldsymbol\\omega]_\\times``
+(before: "unexpected \\times"). A hat over more than one glyph, Chirikjian's
+``\\widehat{R\\boldsymbol\\omega}``, is the hat of that vector, respelt
+``[R\\boldsymbol\\omega]_\\times`` (a hat over one glyph stays a name of its own: a unit
+vector in Modern Robotics).
+
+Forster et al.'s preintegrated quantities ``\\Delta\\mathbf{R}_{ij}``, ``\\Delta t_{ij}``
+are one name each where a ``--let`` declares that NAME: respelt ``\\mathbf{R}_{\\Delta ij}``
+(the grammar's glyph with the Δ in its subscript; without the declaration ``\\Delta x`` stays
+Δ times x). Kok, Hol & Schön's conjugate ``\\mathbf{q}^c`` is ``\\mathbf{q}^*`` where the
+statement or a declaration uses the quaternion product (``\\odot``, ``\\otimes``).
+
 Trawny and Roumeliotis' floor brackets around a cross, ``\\lfloor\\boldsymbol\\omega\\times
 \\rfloor`` (``\\left\\lfloor ... \\right\\rfloor`` too), are the cross-product matrix of
 the vector inside: respelt ``[\\boldsymbol\\omega]_\\times``. Floor brackets without the
@@ -38,7 +51,9 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["declared_e", "declared_labels", "floor_cross", "rate_entries", "tilde_expressions"]
+__all__ = ["conjugate_c", "cross_subscripts", "declared_deltas", "declared_e",
+           "declared_labels", "floor_cross", "hat_expressions", "rate_entries",
+           "tilde_expressions"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -269,3 +284,160 @@ def _decls(let: object) -> list[str] | None:
         return split_lets([let] if isinstance(let, str) else let)
     except (TypeError, ValueError):
         return None
+
+
+_GREEK = (r"\\(?:var)?(?:alpha|beta|gamma|delta|epsilon|zeta|eta|theta|iota|kappa|lambda|mu|"
+          r"nu|xi|pi|rho|sigma|tau|upsilon|phi|chi|psi|omega|Gamma|Delta|Theta|Lambda|Xi|Pi|"
+          r"Sigma|Upsilon|Phi|Psi|Omega)(?![A-Za-z])")
+#: one glyph as a reader types it: a bold letter, an accented glyph, a Greek or Latin letter
+_GLYPH = (r"\\(?:mathbf|boldsymbol|bm)\s*(?:\{\s*\\?[A-Za-z]+\s*\}|" + _GREEK
+          + r"|[A-Za-z])|\\(?:hat|bar|tilde|check|breve|vec)\s*\{[^{}]*\}|" + _GREEK
+          + r"|(?<![\\A-Za-z])[A-Za-z]")
+_GLYPH_END = re.compile(r"(?:" + _GLYPH + r")\s*$")
+_SUB_TIMES = re.compile(r"_\s*\\times(?![A-Za-z])")
+
+
+def cross_subscripts(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``X_\\times`` of one glyph or of a parenthesised
+    expression (Eade's ``\\boldsymbol\\omega_\\times``,
+    ``(\\mathbf{R}\\boldsymbol\\omega)_\\times``) respelt ``[X]_\\times`` in the LaTeX
+    and the declarations (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    hits: list[str] = []
+
+    def respell(text: str) -> str:
+        k = 0
+        while True:
+            m = _SUB_TIMES.search(text, k)
+            if not m:
+                return text
+            head = text[:m.start()].rstrip()
+            inner = start = None
+            if head.endswith(")"):
+                close = len(head) - 1 - (6 if head.endswith("\\right)") else 0)
+                depth, j = 0, len(head) - 1
+                while j >= 0:
+                    depth += {")": 1, "(": -1}.get(head[j], 0)
+                    if depth == 0:
+                        break
+                    j -= 1
+                if j >= 0:
+                    start = j - 5 if head[:j].endswith("\\left") else j
+                    inner = head[j + 1:close]
+            else:
+                g = _GLYPH_END.search(head)
+                if g:
+                    start, inner = g.start(), g.group(0).strip()
+            if inner is None:
+                k = m.end()
+                continue
+            hits.append(inner)
+            new = f"[{inner}]_\\times"
+            text = text[:start] + new + text[m.end():]
+            k = start + len(new)
+
+    new, out = _respelt(respell, latex, let)
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"{hits[0]}_\\times: the cross-product matrix of {hits[0]} (Eade's "
+                      f"subscript), read as [{hits[0]}]_\\times")
+
+
+_WIDEHAT = re.compile(r"\\widehat\s*\{")
+_ONE_GLYPH = re.compile(r"\s*(?:" + _GLYPH + r")\s*(?:_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]+))?\s*")
+
+
+def hat_expressions(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\widehat{X}`` whose braces hold more than one glyph
+    (Chirikjian's ``\\widehat{R\\boldsymbol\\omega}``, the hat of a vector expression)
+    respelt ``[X]_\\times`` in the LaTeX and the declarations (``note`` says so); else all
+    unchanged and ``note`` is ``""``. A hat over one glyph is left to the glyph's reading.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    hits: list[str] = []
+
+    def respell(text: str) -> str:
+        out, k = [], 0
+        for m in _WIDEHAT.finditer(text):
+            if m.start() < k:
+                continue
+            depth, j = 1, m.end()
+            while j < len(text) and depth:
+                depth += {"{": 1, "}": -1}.get(text[j], 0)
+                j += 1
+            inner = text[m.end():j - 1]
+            if depth or _ONE_GLYPH.fullmatch(inner):
+                continue
+            out += [text[k:m.start()], f"[{inner}]_\\times"]
+            hits.append(inner)
+            k = j
+        return "".join(out) + text[k:]
+
+    new, out = _respelt(respell, latex, let)
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"\\widehat{{{hits[0]}}}: the hat of the vector {hits[0]} (its "
+                      f"cross-product matrix), read as [{hits[0]}]_\\times")
+
+
+_DELTA_NAME = re.compile(r"\\Delta\s*(?P<glyph>" + _GLYPH + r")\s*"
+                         r"(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))?")
+
+
+def _delta_parts(m) -> tuple[str, str]:
+    return re.sub(r"\s+", "", m["glyph"]), re.sub(r"[\s{}_]", "", m["sub"] or "")
+
+
+def declared_deltas(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\Delta X_{ij}`` whose NAME a ``--let`` declares
+    (Forster et al.'s ``\\Delta\\mathbf{R}_{ij}``, ``\\Delta t_{ij}``) respelt ``X_{\\Delta ij}``,
+    one glyph, in the LaTeX and the declarations (``note`` says so); else all unchanged and
+    ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    decls = _decls(let)
+    if not decls:
+        return latex, let, ""
+    names = set()
+    for d in decls:
+        m = _DELTA_NAME.fullmatch(re.split(r"\s*(?:\(t\))?\s*[:=]", d, maxsplit=1)[0].strip())
+        if m:
+            names.add(_delta_parts(m))
+    if not names:
+        return latex, let, ""
+
+    def respell(text: str) -> str:
+        def one(m):
+            glyph, sub = _delta_parts(m)
+            if (glyph, sub) not in names:
+                return m.group(0)
+            return f"{{{glyph}_{{\\Delta {sub}}}}}"
+        return _DELTA_NAME.sub(one, text)
+
+    shown = ", ".join(sorted(f"\\Delta {g}_{{{s}}}" for g, s in names))
+    return respell(latex), [respell(d) for d in decls], (
+        f"{shown}: one name each (a --let declares it), read as the glyph with Δ in its "
+        f"subscript, not Δ times the glyph")
+
+
+_CONJ_C = re.compile(r"\^\s*(?:\{\s*c\s*\}|c(?![A-Za-z]))")
+_QPRODUCT = re.compile(r"\\(?:odot|otimes)(?![A-Za-z])")
+
+
+def conjugate_c(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: where the LaTeX or a declaration uses the quaternion product,
+    each ``^c`` (Kok, Hol & Schön's conjugate ``\\mathbf{q}^c``) respelt ``^*`` in the LaTeX
+    and the declarations (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    decls = _decls(let) or []
+    if not any(_QPRODUCT.search(t) for t in [latex, *decls]) or \
+            not any(_CONJ_C.search(t) for t in [latex, *decls]):
+        return latex, let, ""
+    new, out = _respelt(lambda t: _CONJ_C.sub("^{*}", t), latex, let)
+    return new, out, ("q^c: the conjugate of a quaternion (Kok, Hol & Schön), read as q^*")

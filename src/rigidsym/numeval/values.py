@@ -431,7 +431,8 @@ def assemble(rows, where: str):
     if any(len(r) != ncol for r in rows):
         raise NotCovered(f"block rows of different lengths in {where!r}")
     heights = [next((shape(e)[0] for e in r if shape(e)), 1 if any(map(_one, r)) or any(
-        isinstance(e, Zero) and e.row for e in r) else None) for r in rows]  # [A; 0^T]
+        isinstance(e, Zero) and e.row for e in r) or _zero_row(r) else None)
+               for r in rows]  # [A; 0^T]
     widths = [next((shape(r[j])[1] for r in rows if shape(r[j])),
                    1 if any(_one(r[j]) for r in rows) else None) for j in range(ncol)]
     unsized = 3 if any(isinstance(e, Eye | Zero) for r in rows for e in r) else 1
@@ -449,6 +450,14 @@ def assemble(rows, where: str):
             c0 += widths[j]
         r0 += heights[i]
     return out
+
+
+def _zero_row(r) -> bool:
+    r"""A row of zeros only, a bold ``\mathbf{0}`` beside a scalar ``0`` (Eade's
+    ``[\omega_\times u; \mathbf{0} 0]``): the scalar gives the row its height, 1."""
+    return all(isinstance(e, Zero) or (not is_matrix(e) and not isinstance(e, Eye) and e == 0)
+               for e in r) and any(isinstance(e, Zero) for e in r) and \
+        any(not isinstance(e, Zero) for e in r)
 
 
 def _one(e) -> bool:

@@ -175,7 +175,8 @@ def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> Zer
     written θu (:mod:`rigidsym.zero.polar`): zero, or undecided with the reason (a
     non-zero result has no witness in the vector's own entries, which the counterexample
     and its second-semantics check need)."""
-    polar = polar_norms(entries)
+    polar = polar_norms(entries, lambda a, b: decide_zero([a - b], seed, probes, plan).zero
+                        is True)
     if polar is None:
         return ZeroResult(None, "undecided", why, plan=plan)
     r = decide_zero(polar[0], seed, probes)

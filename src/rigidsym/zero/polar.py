@@ -41,11 +41,30 @@ def _squares(base) -> tuple | None:
     return tuple(sorted(xs, key=lambda s: s.name)) if len(xs) == 3 else None
 
 
-def polar_norms(entries: list) -> tuple[list, str] | None:
+def _multiple(radicand, base, xs, same):
+    """``k`` when ``radicand`` is ``k`` times the squared norm ``base`` (``k`` a positive
+    rational: ``\\|2\\eta\\|^2 = 4\\|\\eta\\|^2``), as written or identically on the
+    constraint set by ``same``; else ``None``."""
+    if not radicand.free_symbols & set(xs):
+        return None
+    k = sp.cancel(radicand / base)
+    if k.is_Rational and k > 0:
+        return k
+    if same is not None and same(radicand, base):
+        return sp.S.One
+    return None
+
+
+def polar_norms(entries: list, same=None) -> tuple[list, str] | None:
     """``entries`` with each free 3-vector whose norm is under sin/cos written ``\\theta u``.
 
     Args:
         entries: scalar sympy expressions (the differences the zero test decides).
+        same: ``same(a, b)``, True when the radicands ``a`` and ``b`` agree identically on
+            the constraint set (decided by the zero test): a root of ``a`` is then the norm
+            too (Forster et al.'s ``\\mathrm{Exp}(\\mathbf{R}\\boldsymbol\\phi)``: the
+            radicand of ``\\|R\\phi\\|`` is ``\\phi^T R^T R \\phi``, the squared norm of
+            ``\\phi`` for a rotation R). ``None``: only the squared norm as written.
 
     Returns:
         ``(rewritten entries, a note naming each substitution)``, or ``None`` when no norm
@@ -69,12 +88,16 @@ def polar_norms(entries: list) -> tuple[list, str] | None:
         name = "".join(x.name for x in xs)
         theta = angle(f"|{name}|")
         u = unit_vector(f"u[{name}]")
-        norm = {}
+        norm, agree = {}, {}
         for e in out:  # every power of the squared norm with a half-integer exponent
             for p in sp.preorder_traversal(e):
-                if isinstance(p, sp.Pow) and sp.expand(p.base - base) == 0 \
-                        and isinstance(p.exp, sp.Rational) and p.exp.q == 2:
-                    norm[p] = theta ** (2 * p.exp)
+                if not (isinstance(p, sp.Pow) and isinstance(p.exp, sp.Rational)
+                        and p.exp.q == 2):
+                    continue
+                if p.base not in agree:
+                    agree[p.base] = _multiple(p.base, base, xs, same)
+                if agree[p.base] is not None:
+                    norm[p] = agree[p.base] ** p.exp * theta ** (2 * p.exp)
         sub = {x: theta * u[k] for k, x in enumerate(xs)}
         out = [e.xreplace(norm).xreplace(sub) for e in out]
         v = f"({', '.join(x.name for x in xs)})"

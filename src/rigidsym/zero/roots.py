@@ -41,10 +41,26 @@ def has_roots(e) -> bool:
     return any(_is_root(x) for x in sp.preorder_traversal(e))
 
 
+def _joined(e):
+    """``e`` with each product of square roots of radicands sympy knows non-negative (sums
+    of squares of real symbols: norms) written as one root, ``√B √C = √(B C)`` (exact for
+    ``B, C ≥ 0``): Kok-Hol-Schön's ``‖p ⊙ q‖ = ‖p‖ ‖q‖`` is then ``√A = √(B C)``, two roots
+    whose radicands agree, instead of a relation whose sign is left undecided."""
+    def one(m):
+        roots = [f for f in m.args if isinstance(f, sp.Pow) and f.exp == sp.S.Half
+                 and f.base.is_nonnegative]
+        if len(roots) < 2:
+            return m
+        rest = [f for f in m.args if f not in roots]
+        return sp.Mul(*rest) * sp.Pow(sp.expand(sp.Mul(*[r.base for r in roots])), sp.S.Half)
+    return e.replace(lambda y: isinstance(y, sp.Mul), one)
+
+
 def _split(e, decide, merged: list) -> tuple | str:
     """``(coeffs, radicands)``: ``e = Σ_S c_S ∏_{j∈S} √A_j`` (``coeffs``: subset S of
     radicand indices -> root-free c_S), or the reason it cannot be split; the decisions
     that radicands agree go to ``merged`` (a verdict rests on them too)."""
+    e = _joined(e)
     roots = sorted({x for x in sp.preorder_traversal(e) if _is_root(x)}, key=sp.default_sort_key)
     bases: list = []
     for r in roots:

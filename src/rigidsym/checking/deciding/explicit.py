@@ -83,6 +83,8 @@ def _mx(x, model) -> sp.ImmutableMatrix:
     """Explicit value of a matrix expression (see :func:`explicit`)."""
     im = sp.ImmutableMatrix
     if isinstance(x, sp.MatrixBase):
+        if x.has(*_MATRIX_TERMS):  # an entry's trace or determinant (a norm x^T x) evaluated
+            return im(x.applyfunc(lambda e: explicit_scalar(e, model)))
         return im(x.xreplace(model)) if model else im(x)
     if isinstance(x, sp.MatrixSymbol):
         v = model.get(x)

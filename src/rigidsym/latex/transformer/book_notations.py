@@ -274,7 +274,7 @@ class BookNotationRules:
             # stay as recorded, tests/test_latex_parses.py)
             return sp.ImmutableMatrix([[self._val(c) for c in r] for r in rows])
         if self.reader and any(matrix_shape(c) for r in rows for c in r):  # [R d; 0 1]: 0 a block
-            rows = [[sp.ZeroMatrix(1, 1) if c == 0 else c for c in r] for r in rows]
+            rows = [[_zero_cell(r) if c == 0 else c for c in r] for r in rows]
         cells = fit_blocks([[as_block(c) for c in row] for row in rows])
         try:
             return sp.BlockMatrix(cells) if any(len(r) > 1 for r in cells) or len(cells) > 1 \
@@ -522,3 +522,12 @@ class PluckerDual(LieOp):
 
 def _content(items):
     return [i for i in items if not isinstance(i, lark.Token)]
+
+
+def _zero_cell(row: list):
+    """A reader's scalar ``0`` in a block matrix: a zero block its neighbours size, except in
+    a row of zeros only (Eade's se(3) matrix ``[\\omega_\\times u; \\mathbf{0} 0]``), where it is
+    the 1 x 1 zero that gives the row its height (the bold zero then a row of zeros)."""
+    zeros_only = all(c == 0 or type(c) is sp.ZeroMatrix for c in row) and \
+        any(type(c) is sp.ZeroMatrix for c in row)
+    return sp.ImmutableMatrix([[0]]) if zeros_only else sp.ZeroMatrix(1, 1)

@@ -30,7 +30,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.latex import tangent
 from rigidsym.latex.kinematics import expand_models
-from rigidsym.latex.lexing import bracket_key
+from rigidsym.latex.lexing import bracket_key, named_map_key
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
 from rigidsym.latex.transformer.meanings import alternatives, as_written
 from rigidsym.latex.transformer.tilde import own_tilde
@@ -226,6 +226,9 @@ class RigidMotionRules:
 
     def bracketbase(self, items):  # Sola's [\mathbf{q}]_L: a name, in one spelling
         return ("font", bracket_key(str(items[0])))
+
+    def namedbase(self, items):  # Forster's \mathrm{Exp}, Kok's \exp_q: a name, one spelling
+        return ("font", named_map_key(str(items[0])))
 
     def bare(self, items):
         return ("plain", str(items[0]))
