@@ -109,6 +109,12 @@ def _title(rep: AuditReport) -> str:
     return f"`{rep.function}` {what}" + (f" ({where})" if where else "")
 
 
+def _bound(w: WorstInput) -> float:
+    """The accuracy rule's bound at the worst input, relative: ``8 u (kappa + 1)``."""
+    u = 2.0**-53 if w.dtype == "float64" else 2.0**-24
+    return 8 * u * (w.kappa + 1)
+
+
 def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
     """A script that runs without rigidsym: the call at the worst input, exact, and the
     truth (ball arithmetic, rounded to float64) beside what it returns."""
@@ -130,7 +136,8 @@ def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
         lines += [f"truth = np.array([{truth}])",
                   "print('got  ', got)", "print('truth', truth)",
                   "print('relative error', np.linalg.norm(got - truth) / "
-                  "(np.linalg.norm(truth) or 1.0))"]
+                  "(np.linalg.norm(truth) or 1.0))",
+                  f"print('the bound 8 u (kappa + 1)', {_bound(w)!r})"]
         if rep.equivalent:
             lines.append("# an output of the same rotation is as right (the class of "
                          "(e, phi): (-e, -phi), phi + 2 pi k; of q: -q)")
@@ -185,8 +192,7 @@ def pytest_source(rep: AuditReport) -> str:
             'formula (ball arithmetic, rounded); within 8 u (kappa + 1) passes."""', "",
             "import numpy as np", "", f"from {mod} import {name.split('.')[0]}", ""]
     for i, w in enumerate(cases):
-        u = 2.0**-53 if w.dtype == "float64" else 2.0**-24
-        bound = 8 * u * (w.kappa + 1)
+        bound = _bound(w)
         args = ", ".join(f"np.array([float.fromhex(h) for h in {hexes(a)!r}], "
                          f"dtype=np.{w.dtype}).reshape({np.shape(a)!r})" for a in w.args)
         body += ["", f"def test_{rep.target}_worst_input_{w.dtype}_{i}():",
