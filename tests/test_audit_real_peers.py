@@ -1,6 +1,6 @@
 """docs/audit.md's table of real peers, re-run on the installed libraries (``extra``: each
 peer skips with a one-line reason where it is not installed, or where its version is not
-the one the finding was recorded for): every finding of the table is still found, each
+the one the finding was recorded for): every finding of the table is found, each
 confirmed at an input of its window by an independent 50-digit mpmath reference ((2.49)
 inverted at the input matrix; the Jacobians' closed forms), and neither
 equivalent output is accused (transforms3d's signed angle; a correct signed variant,
@@ -147,7 +147,7 @@ def _jr_mp(w) -> mp.matrix:
 
 
 #: (library, distribution, version, the callable's maker, operation, regime, kind):
-#: the table's findings before the re-run, each to be found again
+#: the table's findings, each to be found and confirmed
 FINDINGS = [
     ("pytransform3d", "pytransform3d", "3.17.0",
      lambda m: m.rotations.compact_axis_angle_from_matrix, "rotation_vector_from_rotation",
@@ -176,7 +176,7 @@ def _jaxlie_log(jaxlie):
 
 @pytest.mark.parametrize("module, dist, version, make, op, regime, kind", FINDINGS,
                          ids=[f"{f[0]}-{f[5]}" for f in FINDINGS])
-def test_each_earlier_finding_is_found_again_and_confirmed_by_mpmath(module, dist, version,
+def test_each_finding_of_the_table_is_found_and_confirmed_by_mpmath(module, dist, version,
                                                                       make, op, regime, kind):
     mod = _peer(module, dist, version)
     if module == "spatialmath":
