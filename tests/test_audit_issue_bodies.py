@@ -153,3 +153,39 @@ def test_the_parser_rejects_a_body_without_versions_or_hex():
         parse_issue(good.replace("-0x1.8000000000000p-3", "-0.1875"))
     with pytest.raises(AssertionError, match="reproducer"):
         parse_issue(good.replace("```python\nprint(1)\n```\n", ""))
+
+
+def test_the_reproducer_judges_an_output_of_the_same_rotation_as_right(tmp_path):
+    """A signed angle returns (-e, -phi) where the book's is (e, phi): the reproducer
+    measures the error to the nearer of the truth and its negation (the same rotation by
+    (2.49)), so that a correct function's issue body does not show a wrong value."""
+    import numpy as np
+
+    sys.path.insert(0, str(ROOT / "tests"))
+    import audit_examples as X
+
+    from rigidsym.auditing.audit import AuditReport, WorstInput
+    from rigidsym.auditing.report import markdown
+
+    e = np.array([-0.48, 0.6, 0.64])
+    phi = 0.7
+    E = X.cpm(e)
+    Q = np.eye(3) + np.sin(phi) * E + (1 - np.cos(phi)) * E @ E
+    got = np.concatenate([np.ravel(v) for v in X.axangle_signed(Q)])
+    truth = np.concatenate([e, [phi]])
+    assert np.linalg.norm(got - truth) > 1          # the negated member, not the truth
+    w = WorstInput("float64", "random", 0.0, 0.0, 1.0, 0.0, "", [Q.tolist()],
+                   truth.tolist(), got.tolist())
+    rep = AuditReport("axangle_signed", "natural_invariants_from_rotation", "(2.49)", 8,
+                      "f(Q), convention: the book's own", [], 0.0, None, [], {}, [w], "",
+                      [], 0.0, "audit_examples:axangle_signed", "f(Q)", {"numpy": "2.4"},
+                      "axis_angle")
+    script = parse_issue(markdown(rep).replace("**Findings**\n\n", "**Findings**\n\n"
+                                               "- **note** (none): nothing\n"))["scripts"][0]
+    res = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                         text=True, timeout=120,
+                         env={"PYTHONPATH": str(ROOT / "tests"), "PATH": "/usr/bin:/bin"})
+    assert res.returncode == 0, res.stderr
+    err = float(re.search(r"^relative error (\S+)$", res.stdout, re.M).group(1))
+    # a few u of the float rotation's rounding, where the naive difference is about 2
+    assert err < 1e-14, res.stdout

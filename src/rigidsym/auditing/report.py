@@ -134,13 +134,18 @@ def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
     if w.truth is not None:
         truth = ", ".join(f"float.fromhex({h!r})" for h in hexes(w.truth))
         lines += [f"truth = np.array([{truth}])",
-                  "print('got  ', got)", "print('truth', truth)",
-                  "print('relative error', np.linalg.norm(got - truth) / "
-                  "(np.linalg.norm(truth) or 1.0))",
-                  f"print('the bound 8 u (kappa + 1)', {_bound(w)!r})"]
+                  "print('got  ', got)", "print('truth', truth)"]
         if rep.equivalent:
-            lines.append("# an output of the same rotation is as right (the class of "
-                         "(e, phi): (-e, -phi), phi + 2 pi k; of q: -q)")
+            # the output negated is the same rotation, in any layout, degrees or radians
+            lines += ["# an output of the same rotation is as right: (-e, -phi) for (e, phi) "
+                      "by (2.49), -q for q by (2.3);",
+                      "# the error is to the nearer of truth and -truth (phi + 2 pi k is "
+                      "right too)",
+                      "err = min(np.linalg.norm(got - truth), np.linalg.norm(got + truth))"]
+        else:
+            lines.append("err = np.linalg.norm(got - truth)")
+        lines += ["print('relative error', err / (np.linalg.norm(truth) or 1.0))",
+                  f"print('the bound 8 u (kappa + 1)', {_bound(w)!r})"]
     return lines
 
 
