@@ -425,3 +425,24 @@ def test_the_markdown_is_an_issue_body_with_a_reproducer_that_runs_alone(tmp_pat
     assert res.returncode == 0, res.stderr
     err = float(re.search(r"relative error (\S+)", res.stdout).group(1))
     assert not err <= 8 * 2.0**-53 * (w.kappa + 1), res.stdout     # nan or past the bound
+
+
+def test_a_float32_residual_is_said_only_where_the_outputs_are_float32_values():
+    """No member matches a function that computes in float32 (residual ~1e-7) nor one whose
+    rotation is shrunk by 1e-6 / phi (kornia 0.8.3's axis over ``theta + 1e-6``): the first
+    is said to compute in float32, measured on its outputs; the second is not, though its
+    residual is as small."""
+    sys.path.insert(0, str(ROOT / "tests" / "peer_bugs"))
+    import kornia_recreated
+
+    def exp_float32(w):
+        return X.exp_rodrigues(np.asarray(w, dtype=np.float32)).astype(np.float32)
+
+    hint = "it computes in float32"
+    rep = audit(exp_float32, "rotation_from_rotation_vector", search=False)
+    conv = [f.text for f in rep.findings if f.kind == "convention"]
+    assert conv and hint in conv[0], report.text(rep)
+    rep = audit(kornia_recreated.axis_angle_to_rotation_matrix, "rotation_from_rotation_vector",
+                search=False)
+    conv = [f.text for f in rep.findings if f.kind == "convention"]
+    assert conv and "residual 9" in conv[0] and hint not in conv[0], report.text(rep)

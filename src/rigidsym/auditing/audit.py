@@ -227,15 +227,31 @@ def _no_member(found: C.Found, tgt) -> str:
     return "; ".join(parts)
 
 
-def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str) -> list[Finding]:
+def _float32_values(call, found: C.Found, point: dict) -> bool:
+    """Whether the nearest member's outputs at ``point`` (an ordinary input, float64) are
+    each a float32 value: the function computes in float32 (a JAX function without x64),
+    measured, not guessed from the size of the residual."""
+    try:
+        out = C.call_member(call, found.nearest, point)
+    except Exception:  # noqa: BLE001  (raised at the point: nothing measured)
+        return False
+    out = np.asarray(out, dtype=np.float64)
+    return bool(out.size and np.isfinite(out).all()
+                and (out.astype(np.float32).astype(np.float64) == out).all()
+                and (out != np.round(out)).any())
+
+
+def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str,
+              single: bool = False) -> list[Finding]:
     out = []
     if found.member is None:
         agree = _no_member(found, tgt)
         out.append(Finding("error", "convention", f"no member of {found.tried} matches the "
                            f"book's {tgt.name} at every input: {agree} (residual "
                            f"{found.residual:.3g}, relative)" + (
-                               "; a residual of float32 arithmetic: does it compute in "
-                               "float32 (JAX without x64)?" if found.residual < 1e-4 else "")
+                               "; its outputs are float32 values (each rounds to itself in "
+                               "float32): it computes in float32 (JAX without x64?)"
+                               if single else "")
                            + ("; the accuracy below is judged under the nearest"
                               if _judged_anyway(found) else "")))
     for b in found.broken:
@@ -356,13 +372,15 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                 worst.append(w)
         batch = W.batch_dependence(call, m, R.kernel_of(tgt.kernel),
                                    np.random.default_rng(seed + 2))
+    single = found.member is None and found.nearest is not None and _float32_values(
+        call, found, point[0])
     rep = AuditReport(fname, tgt.name, tgt.book, found.tried,
                       m.says(tgt) if found.member else None,
                       list(m.generators) if m else [],
                       found.residual, found.nearest.says(tgt) if found.nearest else None,
                       found.broken, {d: [vars(b) | {"examples": [e.flag for e in b.examples]}
                                          for b in rows.values()] for d, rows in beh.items()},
-                      worst, batch, _findings(found, tgt, beh, wins, batch),
+                      worst, batch, _findings(found, tgt, beh, wins, batch, single),
                       time.perf_counter() - t0, spec, m.form.label if m else "",
                       versions(func, spec), tgt.equivalent,
                       {d: [_window(w) for w in ws if w.worst_ratio > 1]

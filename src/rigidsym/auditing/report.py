@@ -109,6 +109,12 @@ def _title(rep: AuditReport) -> str:
     return f"`{rep.function}` {what}" + (f" ({where})" if where else "")
 
 
+def _bound(w: WorstInput) -> float:
+    """The accuracy rule's bound at the worst input, relative: ``8 u (kappa + 1)``."""
+    u = 2.0**-53 if w.dtype == "float64" else 2.0**-24
+    return 8 * u * (w.kappa + 1)
+
+
 def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
     """A script that runs without rigidsym: the call at the worst input, exact, and the
     truth (ball arithmetic, rounded to float64) beside what it returns."""
@@ -128,12 +134,18 @@ def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
     if w.truth is not None:
         truth = ", ".join(f"float.fromhex({h!r})" for h in hexes(w.truth))
         lines += [f"truth = np.array([{truth}])",
-                  "print('got  ', got)", "print('truth', truth)",
-                  "print('relative error', np.linalg.norm(got - truth) / "
-                  "(np.linalg.norm(truth) or 1.0))"]
+                  "print('got  ', got)", "print('truth', truth)"]
         if rep.equivalent:
-            lines.append("# an output of the same rotation is as right (the class of "
-                         "(e, phi): (-e, -phi), phi + 2 pi k; of q: -q)")
+            # the output negated is the same rotation, in any layout, degrees or radians
+            lines += ["# an output of the same rotation is as right: (-e, -phi) for (e, phi) "
+                      "by (2.49), -q for q by (2.3);",
+                      "# the error is to the nearer of truth and -truth (phi + 2 pi k is "
+                      "right too)",
+                      "err = min(np.linalg.norm(got - truth), np.linalg.norm(got + truth))"]
+        else:
+            lines.append("err = np.linalg.norm(got - truth)")
+        lines += ["print('relative error', err / (np.linalg.norm(truth) or 1.0))",
+                  f"print('the bound 8 u (kappa + 1)', {_bound(w)!r})"]
     return lines
 
 
@@ -185,8 +197,7 @@ def pytest_source(rep: AuditReport) -> str:
             'formula (ball arithmetic, rounded); within 8 u (kappa + 1) passes."""', "",
             "import numpy as np", "", f"from {mod} import {name.split('.')[0]}", ""]
     for i, w in enumerate(cases):
-        u = 2.0**-53 if w.dtype == "float64" else 2.0**-24
-        bound = 8 * u * (w.kappa + 1)
+        bound = _bound(w)
         args = ", ".join(f"np.array([float.fromhex(h) for h in {hexes(a)!r}], "
                          f"dtype=np.{w.dtype}).reshape({np.shape(a)!r})" for a in w.args)
         body += ["", f"def test_{rep.target}_worst_input_{w.dtype}_{i}():",
