@@ -31,6 +31,9 @@ KERNELS_DIR = EXAMPLE / "rigidsym_c"
 STRICT = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic"]
 GCC = shutil.which("gcc")
 needs_gcc = pytest.mark.skipif(GCC is None, reason="gcc is not installed")
+# one worker compiles the example libraries (module fixtures) for every test of this module
+# (each worker that ran one of them compiled them again)
+pytestmark = pytest.mark.xdist_group("c_target")
 
 #: the status bits (rigidsym_c_common.h)
 OK, SINGULAR, NONFINITE_INPUT, NONFINITE_RESULT, EXTREME_INPUT = 0, 1, 2, 4, 8

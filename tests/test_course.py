@@ -21,6 +21,10 @@ import sympy as sp
 from rigidsym.cli import main
 from tests.test_exam import _leaks
 
+# one worker builds the class made by `exam` (module fixture `made`) for every test of this
+# module (each worker that ran one of them built it again)
+pytestmark = pytest.mark.xdist_group("course_class")
+
 SPEC = """title = "Quiz 3"
 seed = 11
 slip_credit = 0.5

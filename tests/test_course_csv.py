@@ -18,6 +18,10 @@ import pytest
 from rigidsym.cli import main
 from rigidsym.course.answers import read_table
 
+# one worker builds the class and its CSV files (module fixtures) for every test of this
+# module (each worker that ran one of them built it again)
+pytestmark = pytest.mark.xdist_group("course_csv")
+
 SPEC = 'title = "Q"\nseed = 3\n\n[[problem]]\nexercise = "3.5"\nvariants = 1\n'
 ROSTER = "name,id\nAna Lima,00042\nBea Bo,00107\nCy Cole,00300\n"
 

@@ -12,6 +12,10 @@ from rigidsym.checking.checker import check
 from rigidsym.registry.declarations import REGISTRY, load_all
 from rigidsym.report.record import SCHEMA, result_record, to_json
 
+# one worker builds the chapter's checked records (module fixture) for every test of this
+# module (each worker that ran one of them built it again)
+pytestmark = pytest.mark.xdist_group("report_schema")
+
 load_all()
 IDS = ["3.1", "3.59", "3.96e", "3.75"]
 

@@ -15,6 +15,10 @@ import sympy as sp
 from rigidsym.cli import main
 from rigidsym.report.show import expr_lines
 
+# one worker builds the module's explanations for every test of this
+# module (each worker that ran one of them built it again)
+pytestmark = pytest.mark.xdist_group("show")
+
 ROOT = Path(__file__).resolve().parents[1]
 
 

@@ -103,6 +103,10 @@ def test_verify_json_builds_each_declaration_once_cold_none_warm_and_a_module_s_
     assert lean(modules / "again.json") == lean(modules / "cold.json")
 
 
+# four verify runs (seconds); the quick
+# test_verify_json_builds_each_declaration_once_cold_none_warm_and_a_module_s_own keeps the
+# counts of builds, decisions and transcriptions
+@pytest.mark.slow
 def test_json_after_text_builds_only_for_the_transcriptions(modules):
     text = verify(modules)  # no JSON: no transcription asked for
     assert text["transcribe"] == {} and max(text["build"].values()) == 1
