@@ -29,8 +29,11 @@ MARKER = re.compile(r"<!--\s*fig:(?P<body>.*?)-->", re.S)
 STEP = re.compile(r'\.?(?:\[(\d+|\*|"[^"]*")\]|([^.\[\]"\s]+))')
 BODY = re.compile(r'\s*(?P<file>[\w.-]+\.json)\s+(?P<path>(?:\.?(?:\[(?:\d+|\*|"[^"]*")\]'
                   r'|[^.\[\]"\s]+))+)(?P<ops>(?:\s+\S+)*)\s*$')
-#: the figure right before a marker: a number, optionally its unit
-FIGURE = re.compile(r"(-?\d+(?:\.\d+)?)(?:\s?(?:s|ms|us|µs|ns|min|%|x|×))?$")
+#: the figure right before a marker: a number, in exponent form too ("3.6e4 x"), optionally
+#: its unit
+FIGURE = re.compile(r"(-?\d+(?:\.\d+)?(?:e[+-]?\d+)?)(?:\s?(?:s|ms|us|µs|ns|min|%|x|×))?$")
+#: an exponent as Python's format writes it ("e+04", "e-03"), for the page's "e4", "e-3"
+EXPONENT = re.compile(r"e([+-]?)0*(\d)")
 
 #: a time figure: a number (or range of two) and a unit of time
 TIME = re.compile(r"(?<![\w.^/-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.\d+)?)?"
@@ -132,15 +135,21 @@ def _follow(value, path: str):
     return values if "*" in steps else values[0]
 
 
+def _as_printed(formatted: str) -> str:
+    """``formatted`` as the pages print a power of ten: "3.6e+04" as "3.6e4", "2.5e-03" as
+    "2.5e-3" (the mantissa's digits, the page's precision, as the format spec gives them)."""
+    return EXPONENT.sub(lambda m: "e" + m.group(1).replace("+", "") + m.group(2), formatted)
+
+
 def _apply(value, ops: str) -> str:
     for op in ops.split():
         if op in ("min", "max"):
             value = (min if op == "min" else max)(value)
         else:
-            return format(value, op)
+            return _as_printed(format(value, op))
     if isinstance(value, list):
         raise ValueError("a [*] path needs min or max")
-    return str(value)
+    return _as_printed(str(value))
 
 
 def _names_its_machine(record) -> bool:
@@ -265,3 +274,33 @@ def test_a_right_marker_passes():
            "test_command-merged.json parts[0].wall_s .1f -->"
     assert [_check(ROOT / "README.md", text, m) for m in MARKER.finditer(text)] == [None, None]
     assert not [m for m in TIME.finditer(text) if not MARKER.match(text, m.end())]
+
+
+@pytest.mark.parametrize(("before", "figure"), [
+    ("the bound is 3.6e4 x", "3.6e4"),
+    ("below 1.8e-8 (5.6e14 x", "5.6e14"),
+    ("| 2.5e-3", "2.5e-3"),
+    ("(1.15 x", "1.15"),
+    ("took 251.5 s", "251.5"),
+])
+def test_the_figure_before_a_marker_may_be_a_power_of_ten(before, figure):
+    assert FIGURE.search(before).group(1) == figure
+
+
+@pytest.mark.parametrize(("formatted", "printed"), [
+    ("3.6e+04", "3.6e4"), ("1.4e+15", "1.4e15"), ("2.5e-03", "2.5e-3"), ("5e+00", "5e0"),
+    ("1e-05", "1e-5"), ("297", "297"), ("1.15", "1.15"),
+])
+def test_an_exponent_is_compared_as_the_pages_print_it(formatted, printed):
+    assert _as_printed(formatted) == printed
+
+
+def test_a_ratio_in_exponent_form_is_checked_at_its_printed_precision():
+    # the record holds 36161.52...: "3.6e4" at .1e, "3.62e4" at .2e; "3.7e4" is not it
+    right = "3.6e4 x<!-- fig: audit_peers.json rows[0].worst[0].ratio .1e --> and 3.62e4 x" \
+            "<!-- fig: audit_peers.json rows[0].worst[0].ratio .2e -->"
+    assert [_check(ROOT / "README.md", right, m) for m in MARKER.finditer(right)] == [None] * 2
+    assert not [m for m in RATIO.finditer(right) if not MARKER.match(right, m.end())]
+    wrong = "\n3.7e4 x<!-- fig: audit_peers.json rows[0].worst[0].ratio .1e -->"
+    found = _check(ROOT / "docs" / "x.md", wrong, MARKER.search(wrong))
+    assert found and found.startswith("docs/x.md:2: ") and "gives '3.6e4'" in found, found

@@ -1,5 +1,5 @@
 """kornia 0.8.3's ``geometry.conversions.axis_angle_to_rotation_matrix`` (float64; kornia
-issue #3947, fixed by PR #3989), re-created in NumPy: the axis ``w / (theta + 1e-6)`` (a
+#3947, corrected by its PR #3989), re-created in NumPy: the axis ``w / (theta + 1e-6)`` (a
 rotation shrunk by ``1e-6 / theta``) and, where ``theta^2 <= 1e-6``, the first-order
 matrix ``1 + [w]x``."""
 
