@@ -74,7 +74,7 @@ def test_the_zero_test_marks_a_polar_difference_and_only_that():
     r = decide_zero([sp.sin(N) / N - 1], polar=True)
     assert r.zero is None and "θ u" in r.polar_differs
     # the hint declares the vector itself, so it holds inside a --let function's body too
-    assert "--let 'VECTOR = \\theta\\mathbf{u}'" in r.detail
+    assert "--let 'VECTOR = a u' in place of 'VECTOR: vector'" in r.detail
     assert decide_zero([sp.sin(N)**2 + sp.cos(N)**2 - 1], polar=True).polar_differs == ""
 
 

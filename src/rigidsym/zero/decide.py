@@ -194,11 +194,11 @@ def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> Zer
         return ZeroResult(None, "undecided",
                           f"the norm of a free vector under sin/cos: written so ({polar[1]}), "
                           f"the sides differ, but no exact counterexample in the vector's "
-                          f"own entries is found: for one, declare the vector as θ u, "
-                          f"--let 'VECTOR = \\theta\\mathbf{{u}}' in place of 'VECTOR: "
-                          f"vector', with --let '\\mathbf{{u}}: unit vector' and --let "
-                          f"'\\theta: angle' (a --let function of the vector, such as "
-                          f"\\mathrm{{Exp}}(\\boldsymbol\\phi), keeps its body as typed)",
+                          f"own entries is found: for one, declare the vector an angle times a "
+                          f"unit vector, --let 'VECTOR = a u' in place of 'VECTOR: vector', "
+                          f"with --let 'a: angle' and --let 'u: unit vector' (names the "
+                          f"statement does not use; a --let function of the vector, as "
+                          f"Forster's Exp, keeps its body as typed)",
                           plan=plan, polar_differs=polar[1])
     return ZeroResult(None, "undecided", f"{why}; with {polar[1]}: {r.detail}", plan=plan)
 
