@@ -181,8 +181,9 @@ def _traced(e):
 def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> ZeroResult:
     """Entries with the norm of a free 3-vector under sin/cos, decided with the vector
     written θu (:mod:`rigidsym.zero.polar`): zero, or undecided with the reason (a
-    non-zero result has no witness in the vector's own entries, which the counterexample
-    and its second-semantics check need)."""
+    non-zero result has no exact rational witness in the vector's own entries, which the
+    counterexample and its second-semantics check need: it is marked ``polar_differs``, and
+    the checker looks for a point of rational norm proven by ball arithmetic)."""
     polar = polar_norms(entries, lambda a, b: decide_zero([a - b], seed, probes, plan).zero
                         is True)
     if polar is None:
