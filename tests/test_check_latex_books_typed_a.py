@@ -2,9 +2,8 @@
 equations from Shuster (1993), Markley & Crassidis (2014), Kuipers (1999), Murray, Li & Sastry
 (1994), Ma, Soatto, Košecká & Sastry (2004) and Diebel (2006), typed from memory with the
 declarations their readers write, judged against the data file's own NumPy truth (which never
-imports rigidsym). No verdict may be wrong; each case answers as recorded, as typed
-(``WITH_READINGS``, with the books' readings; ``AFTER`` without them) and after the one attempt
-its refusal named (``AFTER_ATTEMPT``).
+imports rigidsym). No verdict may be wrong; each case answers as recorded, as typed with the
+books' readings (``AS_TYPED``) and after the one attempt its refusal named (``AS_ATTEMPTED``).
 
 And the messages of every refusal and undecided verdict, over the LaTeX corpus
 (``tests/data/latex_corpus``) and this trial, leak no exception text: a sample in the
@@ -57,9 +56,9 @@ def _answer(case: dict, latex: str, lets: list, options: dict) -> tuple[str, str
 def test_at_most_a_tenth_of_the_valid_equations_is_refused_as_typed():
     # on the recorded answers (each checked by the test below)
     valid = [c["id"] for c in trial.CASES if not c["slip"]]
-    refused = [i for i in valid if trial.WITH_READINGS[i] == "refused"]
+    refused = [i for i in valid if trial.AS_TYPED[i] == "refused"]
     assert len(refused) <= 0.1 * len(valid), refused
-    assert "WRONG" not in trial.WITH_READINGS.values()
+    assert "WRONG" not in trial.AS_TYPED.values()
 
 
 def test_the_trial_is_forty_cases_from_six_books_with_kinematics_and_slips():
@@ -79,10 +78,10 @@ def test_the_numpy_truth_tells_each_slip_from_its_equation():
 def test_a_trial_case_answers_as_recorded_and_never_wrongly(cid):
     case = CASES[cid]
     typed, _ = _answer(case, case["latex"], list(case["let"]), {})
-    assert typed != "WRONG" and typed == trial.WITH_READINGS[cid], typed
+    assert typed != "WRONG" and typed == trial.AS_TYPED[cid], typed
     if cid in trial.ATTEMPT:
         tried, _ = _answer(case, *trial.attempted(case))
-        assert tried != "WRONG" and tried == trial.AFTER_ATTEMPT[cid], tried
+        assert tried != "WRONG" and tried == trial.AS_ATTEMPTED[cid], tried
 
 
 # ------------------------------------------------------------------ leaked exception text

@@ -102,20 +102,27 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
     assert code == 3 and "Undecided: printed: trig" in out
 
 
-def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys):
+def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys, monkeypatch):
     # its reason ("trig of non-angle argument") is printed, not only in --json; the
     # norm is written θ u (rigidsym.zero.polar), so J w = w is verified, and J w = 2 w, which
-    # does not hold, is undecided with the reason naming the construct
+    # does not hold, fails at a point of rational norm (ball arithmetic); where no such point
+    # is proven it is undecided with the reason naming the construct
+    from rigidsym.checking import checker
+
     lets = ["--let", r"w: vector; \theta = \sqrt{w^T w}",
             "--let", r"J = I + \frac{1 - \cos\theta}{\theta^2}[w] + "
                      r"\frac{\theta - \sin\theta}{\theta^3}[w]^2"]
     code, out, _ = run_cli(capsys, "--latex", "J w = w", *lets)
     assert code == 0, out
     code, out, _ = run_cli(capsys, "--latex", "J w = 2 w", *lets)
+    assert code == 1 and "point of rational norm" in out, out
+    monkeypatch.setattr(checker, "rational_norm_witness", lambda *a, **k: None)
+    code, out, _ = run_cli(capsys, "--latex", "J w = 2 w", *lets)
     said = " ".join(out.split())
     assert code == 3 and "Undecided: printed: the norm of a free vector under sin/cos: written " \
         "so (|(w₁, w₂, w₃)| = θ > 0, (w₁, w₂, w₃) = θ u, u a unit vector), the sides differ" \
         in said, out
+    assert "--let 'VECTOR = a u' in place of 'VECTOR: vector'" in said, out
 
 
 def test_the_reports_print_the_reason_of_an_undecided_member():

@@ -32,6 +32,7 @@ from rigidsym.checking.deciding.evidence import (
     counterexample_ball,
     exact_counterexample,
     numeric_backing,
+    rational_norm_witness,
 )
 from rigidsym.checking.deciding.explicit import (
     EXPLICIT_CACHE,
@@ -51,7 +52,7 @@ from rigidsym.core import work as _work
 from rigidsym.core.settings import ENGINE
 from rigidsym.printing.names import book_text
 from rigidsym.registry.declarations import REGISTRY, Equation, Rel, Statement, is_user_id
-from rigidsym.zero.decide import Unsupported, decide_zero, make_plan
+from rigidsym.zero.decide import Unsupported, ZeroResult, decide_zero, make_plan
 
 __all__ = ["Outcome", "check", "explicit", "shape_of"]
 
@@ -128,9 +129,16 @@ def _decide_case(rel, blhs, brhs, lhs, rhs, seed, describe) -> _RelOutcome:
     ``blhs - brhs`` (the same relation, ``acos``/``atan2`` as such)."""
     diff = [a - b for a, b in zip(entries_of(lhs), entries_of(rhs), strict=True)]
     zr = decide_zero(diff, seed=seed, polar=True)
+    extra = [] if blhs is lhs and brhs is rhs else entries_of(blhs) + entries_of(brhs)
+    witness = zr.witness
+    if zr.polar_differs:  # a norm under sin/cos: a point of rational norm, proven by balls
+        witness = rational_norm_witness(blhs, brhs, seed, entries_of(lhs) + entries_of(rhs))
+        if witness is not None:
+            zr = ZeroResult(False, "counterexample",
+                            f"non-zero at a point of rational norm, proven by ball arithmetic "
+                            f"(the sides differ identically with {zr.polar_differs})")
     if zr.zero is False:
-        extra = [] if blhs is lhs and brhs is rhs else entries_of(blhs) + entries_of(brhs)
-        ce, plan, pt = exact_counterexample(lhs, rhs, zr.witness, seed, extra)
+        ce, plan, pt = exact_counterexample(lhs, rhs, witness, seed, extra)
         if describe is not None:
             ce.update(describe(plan, pt))
         try:

@@ -75,6 +75,13 @@ class ZeroResult:
         detail: one line (degree bound and failure probability, or why undecided).
         witness: parameter point where an entry is non-zero (exact), when ``zero`` is False.
         entry: index of that entry.
+        polar_differs: with ``zero`` None, the note of the substitution (``|(phi_1,
+            phi_2, phi_3)| = θ > 0, ...``) when the entries written with a free vector as
+            ``θ u`` (:mod:`rigidsym.zero.polar`) are not identically zero, a proof that
+            they differ for some vector, but no exact rational point is given (the vector's
+            norm is irrational at the zero test's points); the checker looks for a point of
+            rational norm where ball arithmetic proves it
+            (:func:`rigidsym.checking.deciding.evidence.rational_norm_witness`). Else "".
     """
 
     zero: bool | None
@@ -83,6 +90,7 @@ class ZeroResult:
     witness: dict | None = None
     entry: int | None = None
     plan: Plan | None = None
+    polar_differs: str = ""
 
 
 class _OutOfTime(Exception):
@@ -173,8 +181,9 @@ def _traced(e):
 def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> ZeroResult:
     """Entries with the norm of a free 3-vector under sin/cos, decided with the vector
     written θu (:mod:`rigidsym.zero.polar`): zero, or undecided with the reason (a
-    non-zero result has no witness in the vector's own entries, which the counterexample
-    and its second-semantics check need)."""
+    non-zero result has no exact rational witness in the vector's own entries, which the
+    counterexample and its second-semantics check need: it is marked ``polar_differs``, and
+    the checker looks for a point of rational norm proven by ball arithmetic)."""
     polar = polar_norms(entries, lambda a, b: decide_zero([a - b], seed, probes, plan).zero
                         is True)
     if polar is None:
@@ -185,10 +194,13 @@ def _in_polar_form(entries, seed: int, probes: int, why: str, plan: Plan) -> Zer
     if r.zero is False:
         return ZeroResult(None, "undecided",
                           f"the norm of a free vector under sin/cos: written so ({polar[1]}), "
-                          f"the sides differ, but a counterexample in the vector's own "
-                          f"entries is not exact (its norm is irrational): write the vector "
-                          f"as θ u, --let 'u: unit vector' and --let 'θ: angle', for one",
-                          plan=plan)
+                          f"the sides differ, but no exact counterexample in the vector's "
+                          f"own entries is found: for one, declare the vector an angle times a "
+                          f"unit vector, --let 'VECTOR = a u' in place of 'VECTOR: vector', "
+                          f"with --let 'a: angle' and --let 'u: unit vector' (names the "
+                          f"statement does not use; a --let function of the vector, as "
+                          f"Forster's Exp, keeps its body as typed)",
+                          plan=plan, polar_differs=polar[1])
     return ZeroResult(None, "undecided", f"{why}; with {polar[1]}: {r.detail}", plan=plan)
 
 

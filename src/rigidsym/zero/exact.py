@@ -78,6 +78,12 @@ def _trig(x, plan: Plan, point: dict, one):
     return num / den
 
 
+def _numeric_argument(arg, plan: Plan) -> bool:
+    """Whether a trigonometric argument has no angle of the plan in it (its value at a point
+    is a number, such as a norm, not a combination of half-angle tangents)."""
+    return not any(a in plan.angles for a in sp.sympify(arg).atoms(sp.Symbol, AppliedUndef))
+
+
 def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
     """Evaluate ``expr`` exactly at ``point`` (parameter symbol -> value).
 
@@ -85,7 +91,9 @@ def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
         expr: a sympy expression built from the plan's atoms.
         plan: from :func:`make_plan`.
         point: values of ``plan.params`` (``Fraction`` by default).
-        lift: converts a sympy Rational to the number type (``Fraction``, ``sp.Rational``…).
+        lift: converts a sympy Rational to the number type (``Fraction``, ``sp.Rational``…);
+            with sympy numbers, a trigonometric function of an argument free of angles
+            (a norm) is kept in closed form at its exact argument (``sin(2)``).
         bare_value: optional ``angle atom -> value`` overriding the bare-angle variable
             (used to make a counterexample consistent: ``phi = 2M atan(tau)``).
 
@@ -131,6 +139,12 @@ def evaluate(expr, plan: Plan, point: dict, lift=Fraction, bare_value=None):
         if isinstance(x, sp.Abs):
             return abs(ev(x.args[0]))
         if isinstance(x, TRIG):
+            if lift is not Fraction and _numeric_argument(x.args[0], plan):
+                # sin of a rational norm (a counterexample of rational norm,
+                # rigidsym.zero.polar): a closed form, sin(2), exact and not rational
+                v = ev(x.args[0])
+                if isinstance(v, sp.Expr) and v.is_number:
+                    return x.func(v)
             return _trig(x, plan, point, one)
         raise Unsupported(f"an operator the exact evaluator does not take "
                           f"({type(x).__name__.lower()})")

@@ -21,7 +21,7 @@ import sympy as sp
 
 from rigidsym.algebra.symbols import TIME, angle, constraint_of, unit_vector
 
-__all__ = ["polar_norms"]
+__all__ = ["norm_vectors", "polar_norms"]
 
 _TRIG = (sp.cos, sp.sin, sp.tan, sp.cot, sp.sec, sp.csc)
 
@@ -55,6 +55,30 @@ def _multiple(radicand, base, xs, same):
     return None
 
 
+def norm_vectors(entries: list) -> dict[tuple, sp.Basic]:
+    """The free 3-vectors whose norm ``\\sqrt{x_1^2 + x_2^2 + x_3^2}`` is in the argument of a
+    trigonometric function somewhere in ``entries``.
+
+    Args:
+        entries: scalar sympy expressions.
+
+    Returns:
+        ``(x_1, x_2, x_3)`` (three unconstrained real symbols, sorted by name) -> the
+        squared norm as written, one item per vector; empty when there is none.
+    """
+    groups: dict[tuple, sp.Basic] = {}
+    for e in entries:
+        for f in sp.preorder_traversal(e):
+            if not isinstance(f, _TRIG):
+                continue
+            for p in sp.preorder_traversal(f.args[0]):
+                if isinstance(p, sp.Pow) and p.exp == sp.Rational(1, 2):
+                    xs = _squares(p.base)
+                    if xs is not None:
+                        groups.setdefault(xs, p.base)
+    return groups
+
+
 def polar_norms(entries: list, same=None) -> tuple[list, str] | None:
     """``entries`` with each free 3-vector whose norm is under sin/cos written ``\\theta u``.
 
@@ -71,16 +95,7 @@ def polar_norms(entries: list, same=None) -> tuple[list, str] | None:
         of a free 3-vector is under a trigonometric function, or when a root of such a
         vector other than its norm is left (the rewrite is then not exact).
     """
-    groups: dict[tuple, sp.Basic] = {}
-    for e in entries:
-        for f in sp.preorder_traversal(e):
-            if not isinstance(f, _TRIG):
-                continue
-            for p in sp.preorder_traversal(f.args[0]):
-                if isinstance(p, sp.Pow) and p.exp == sp.Rational(1, 2):
-                    xs = _squares(p.base)
-                    if xs is not None:
-                        groups.setdefault(xs, p.base)
+    groups = norm_vectors(entries)
     if not groups:
         return None
     out, notes = list(entries), []

@@ -19,8 +19,18 @@ from rigidsym.checking.deciding.balls import (
 from rigidsym.checking.deciding.explicit import entries_of, explicit, shape_of
 from rigidsym.registry.declarations import Rel
 from rigidsym.zero.decide import Unsupported, evaluate, make_plan
+from rigidsym.zero.polar import norm_vectors
 
-__all__ = ["numeric_backing", "counterexample_ball"]
+__all__ = ["numeric_backing", "counterexample_ball", "rational_norm_witness",
+           "RATIONAL_DIRECTIONS"]
+
+#: unit directions with rational entries, from the Pythagorean quadruples
+#: 1 + 4 + 4 = 9, 4 + 9 + 36 = 49, 1 + 16 + 64 = 81: a free 3-vector ``s d`` (``s`` a
+#: positive rational) has the rational norm ``s``
+RATIONAL_DIRECTIONS = ((1, 2, 2, 3), (2, 3, 6, 7), (1, 4, 8, 9))
+#: the norms tried (positive rationals, small: a readable counterexample)
+RATIONAL_NORMS = (Fraction(1), Fraction(1, 2), Fraction(2), Fraction(3, 2), Fraction(1, 3),
+                  Fraction(3))
 
 
 # --------------------------------------------------------------------------- numeric
@@ -40,7 +50,11 @@ def numeric_backing(rels: list[Rel], model: dict, seed: int,
 
 # --------------------------------------------------------------------------- counterexample
 def small_witness(entries, plan, seed):
-    """Look for a counterexample point with small rationals (readable), exactly checked."""
+    """Look for a counterexample point with small rationals (readable), exactly checked;
+    ``None`` at once where the norm of a free vector is under sin/cos (its sine at such a
+    point has no exact rational value: :func:`rational_norm_witness` finds those points)."""
+    if norm_vectors(entries):  # sin of an irrational norm: no exact value, never readable
+        return None
     rng = random.Random(seed)
     small = [Fraction(n, d) for n in range(-3, 4) for d in (1, 2, 3)]
     # a fixed number of tries, never a clock: under load a deadline picked another point and
@@ -131,3 +145,58 @@ def counterexample_ball(lhs, rhs, plan, pt) -> tuple[bool, str, int]:
     """``lhs - rhs`` in ball arithmetic at the counterexample
     (:func:`rigidsym.checking.deciding.balls.ball_at`): ``(excludes_zero, ball text, digits)``."""
     return ball_at(entries_of(lhs), entries_of(rhs), plan, pt)
+
+
+def rational_norm_witness(lhs, rhs, seed: int, extra=(), tries: int = 36) -> dict | None:
+    """An exact point where ``lhs`` and ``rhs`` differ, proven by ball arithmetic, for sides
+    that hold the norm of a free 3-vector under sin/cos (Rodrigues' ``\\sin\\|\\phi\\| /
+    \\|\\phi\\|``): the zero test's points give the norm irrational, and the sine of an
+    irrational norm is no exact value.
+
+    Each such vector is put at ``s (a, b, c) / d`` for a Pythagorean quadruple ``a^2 + b^2 +
+    c^2 = d^2`` (:data:`RATIONAL_DIRECTIONS`, entries permuted and signed) and a small norm
+    ``s`` (:data:`RATIONAL_NORMS`), so every root of the norm is the rational ``s`` and the
+    sides are rationals and sines and cosines of rationals; the other parameters take small
+    rationals (constraints exact, as :func:`small_witness`). The residual is evaluated in
+    ball arithmetic (:func:`rigidsym.checking.deciding.balls.ball_at`): a ball that excludes
+    0 proves the sides differ there; one that holds 0 proves nothing, and the next point is
+    tried. No floating point decides.
+
+    Args:
+        lhs, rhs: the explicit sides (book atoms), of the same shape.
+        seed: the id's seed (the same seed, the same points).
+        extra: expressions whose atoms the plan must also give values (as
+            :func:`exact_counterexample`'s).
+        tries: how many points, a fixed count (never a clock).
+
+    Returns:
+        The point (plan parameter -> ``Fraction``; the plan of
+        ``entries_of(lhs) + entries_of(rhs) + extra``), or ``None`` when no vector's norm is
+        under sin/cos or no ball at the points tried excludes 0.
+    """
+    le, re_ = entries_of(lhs), entries_of(rhs)
+    if len(le) != len(re_):
+        return None
+    vectors = norm_vectors([a - b for a, b in zip(le, re_, strict=True)])
+    if not vectors:
+        return None
+    plan = make_plan(le + re_ + list(extra))
+    if not all(x in plan.params for xs in vectors for x in xs):
+        return None
+    rng = random.Random(seed)
+    small = [Fraction(n, d) for n in range(-3, 4) for d in (1, 2, 3)]
+    for _ in range(tries):
+        pt = in_range(plan, {p: rng.choice(small) for p in plan.params})
+        for xs in vectors:
+            *abc, d = rng.choice(RATIONAL_DIRECTIONS)
+            rng.shuffle(abc)
+            s = rng.choice(RATIONAL_NORMS)
+            for x, a in zip(xs, abc, strict=True):
+                pt[x] = s * Fraction(rng.choice((-1, 1)) * a, d)
+        try:
+            excludes, _, _ = ball_at(le, re_, plan, pt)
+        except (ZeroDivisionError, Unsupported):
+            continue
+        if excludes:
+            return pt
+    return None
