@@ -298,7 +298,7 @@ def _function(kc, ctype: str, rescale: list) -> dict:
                       "s": f"sc_{a.name}", "size": a.size, "shape": list(a.shape),
                       "doc": a.doc, "kind": a.kind, "layout": _layout(a.shape)}
                      for a in k.args],
-            "outs": [{"name": o.name, "c": names[o.name], "size": o.size,
+            "outs": [{"name": o.name, "c": names[o.name], "w": f"w_{o.name}", "size": o.size,
                       "shape": list(o.shape), "doc": o.doc, "layout": _layout(o.shape)}
                      for o in k.outputs],
             "groups": _scan_groups(k, ctype),
@@ -306,6 +306,8 @@ def _function(kc, ctype: str, rescale: list) -> dict:
             "out_sum": balanced(slots),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
             "wide": _wide(kc, symbol_spelling(k, names)) if ctype == "double" else None,
+            # the float function's rescue in double: the double function of the kernel
+            "wider": f"{PREFIX}{k.name}" if ctype == "float" else None,
             "rescale": [_plan_code(p, slots) for p in rescale],
             "rescaled": {n for p in rescale for n in p["scale"]}}
 
