@@ -546,6 +546,26 @@ static inline int rigidsym_c_exponent_f(const float *p, int n)
     return e;
 }
 
+/* 1 when the largest magnitude among the n finite values at p is nonzero and outside the
+ * ordinary range (rigidsym_c_extreme_*): a unit vector or rotation matrix of extreme norm */
+static inline int rigidsym_c_extreme_norm_d(const double *p, int n)
+{
+    double m = 0.0;
+    int j;
+    for (j = 0; j < n; ++j)
+        m = fabs(p[j]) > m ? fabs(p[j]) : m;
+    return rigidsym_c_extreme_d(&m, 1);
+}
+
+static inline int rigidsym_c_extreme_norm_f(const float *p, int n)
+{
+    float m = 0.0f;
+    int j;
+    for (j = 0; j < n; ++j)
+        m = fabsf(p[j]) > m ? fabsf(p[j]) : m;
+    return rigidsym_c_extreme_f(&m, 1);
+}
+
 /* q = 2^t p for the n values at p (exact where it stays normal); 1 when one of them is still
  * extreme there, or a nonzero one was flushed to zero (the plan cannot take the sample) */
 static inline int rigidsym_c_scale_d(const double *p, double *q, int n, int t)

@@ -301,6 +301,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_natural_invariants_from_rotation_plain(in_Q, out_e, out_phi);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_Q, 9)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -695,6 +702,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_natural_invariants_from_rotation_f32_plain(in_Q, out_e, out_phi);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_Q, 9)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif

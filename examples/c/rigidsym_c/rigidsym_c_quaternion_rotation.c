@@ -179,6 +179,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_plain(in_q, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -441,6 +448,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_f32_plain(in_q, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -887,6 +901,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_with_jacobians_plain(in_q, out_Q, out_Q_D_q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1314,6 +1335,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(in_q, out_Q, out_Q_D_q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif

@@ -200,6 +200,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_plain(in_e, in_phi, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -490,6 +497,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_f32_plain(in_e, in_phi, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -987,6 +1001,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1463,6 +1484,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
