@@ -6,15 +6,16 @@ Builds benchmarks/c_status_probe.c against a C target folder holding
 library at ``-O2`` or ``-Ofast -fno-fast-math`` (the headers refuse ``__FAST_MATH__``) and the
 application at ``-O2`` or ``-Ofast`` (linking with ``-Ofast`` adds crtfastmath.o, which sets
 x86-64's FTZ and DAZ at start-up), then builds that take the causes apart: gcc ``-O2``
-run with DAZ alone set by the caller (``SET_MXCSR=0x1fc0``), clang ``-O2`` with the
-library built ``-fno-slp-vectorize``, and gcc ``-O2`` and clang ``-Ofast`` with
-``-DRIGIDSYM_C_NO_WIDE`` (the float cold path without its double evaluation: the detection
-by the exception flags alone, against the double evaluation rounded once of the default
-builds). Each run prints, per case (float logs of small rotations, screws of a point 1 nm
-and 1 m from the origin), the samples flagged, those the range test sends to the cold path,
-the exception flags the flagged calls raised, the log's worst relative error and its silent
-wrongs (status 0, off by more than 16 u); the record keeps them per build. x86-64 only
-(MXCSR).
+run with DAZ alone set by the caller (``SET_MXCSR=0x1fc0``); clang ``-O2`` with the library
+built ``-fno-slp-vectorize``; gcc ``-O2`` and clang ``-Ofast`` with ``-DRIGIDSYM_C_NO_WIDE``
+(the float cold path without its double evaluation: the detection by the exception flags
+alone, against the double evaluation rounded once of the default builds); gcc ``-O2`` with
+``-DRIGIDSYM_C_NO_FP_FLAGS`` (neither: a sample no rescaling takes keeps the range test's
+flag, the prediction). Each run prints, per case (float logs of small rotations, screws of
+a point 1 nm and 1 m from the origin), the samples flagged, those the range test sends to
+the cold path, the exception flags the flagged calls raised, the log's worst relative error
+and its silent wrongs (status 0, off by more than 16 u); the record keeps them per build.
+x86-64 only (MXCSR).
 
     python benchmarks/c_status_probe.py --json benchmarks/results/c_status_probe.json
 """
@@ -48,6 +49,9 @@ BUILDS = [
      "the exception flags step alone (no double evaluation of a float sample)"),
     ("clang", ["-Ofast", "-fno-fast-math", "-DRIGIDSYM_C_NO_WIDE"], ["-Ofast"], {},
      "the exception flags step alone (no double evaluation of a float sample)"),
+    ("gcc", ["-O2", "-DRIGIDSYM_C_NO_FP_FLAGS"], ["-O2"], {},
+     "neither (no flags read, no double evaluation): the range test's prediction where no "
+     "rescaling takes the sample"),
 ]
 
 
