@@ -32,8 +32,9 @@ RIGIDSYM_C_BEGIN_DECLS
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in l1, l2 (the other arguments fixed),
  *   p -> 2^(k_l1) p
  * for every integer k_x with
@@ -114,8 +115,9 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
  * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in l1, l2 (the other arguments fixed),
  *   p -> 2^(k_l2) p
  *   p_D_q1 -> 2^(k_l2) p_D_q1
