@@ -40,6 +40,8 @@ SIGNATURES = {
     "natural_invariants_from_rotation": ([9], [3, None]),
     "newton_euler_wrench": ([9, None, 3, 3, 3], [6]),
     "screw_of_displacement": ([9, 3, 3], [3, None, 3, None, 6]),
+    "rotation_from_natural_invariants": ([3, None], [9]),
+    "twist_transfer": ([6, 3, 3], [6]),
 }
 
 _DRIVER = r"""#include <stdio.h>
@@ -154,6 +156,12 @@ def ordinary(kernel: str, n: int, seed: int, lo: float = -6) -> tuple[np.ndarray
     if kernel == "natural_invariants_from_rotation":
         e, phi = _axes(rng, n), 10.0 ** rng.uniform(lo, np.log10(3.0), n)
         return _rot(e, phi).reshape(n, 9), {"e": e, "phi": phi}
+    if kernel == "rotation_from_natural_invariants":
+        e, phi = _axes(rng, n), 10.0 ** rng.uniform(-12, np.log10(3.0), n)
+        return np.hstack([e, phi[:, None]]), {}
+    if kernel == "twist_transfer":
+        comps = lambda lo, hi: rng.normal(size=(n, 3)) * 10.0 ** rng.uniform(lo, hi, (n, 3))  # noqa: E731
+        return np.hstack([comps(-12, 1), comps(-9, 1), comps(-9, 1), comps(-9, 1)]), {}
     if kernel == "newton_euler_wrench":
         inertia = np.einsum("i,jk->ijk", np.ones(n), np.diag([0.02, 0.03, 0.025])) + \
             0.002 * rng.normal(size=(n, 3, 3))
@@ -190,6 +198,19 @@ def check_against_reference(kernel: str, rows: np.ndarray, made: dict, outs: np.
             np.einsum("nij,nj->ni", np.abs(inertia), np.abs(w)) * np.abs(w).max(1)[:, None]
         ref = np.hstack([n_, m[:, None] * cdd])
         mag = np.hstack([mag, np.abs(ref[:, 3:])])
+        assert np.all(np.abs(outs - ref) <= 16 * eps * mag), \
+            np.max(np.abs(outs - ref) / np.maximum(mag, 1e-300))
+    elif kernel == "rotation_from_natural_invariants":
+        # (2.49) on the rounded axis and angle: entries of magnitude at most |e|^2 + 1
+        ref = _rot(x[:, :3], x[:, 3]).reshape(-1, 9)
+        assert np.all(np.abs(outs - ref) <= 16 * eps), np.max(np.abs(outs - ref))
+    elif kernel == "twist_transfer":
+        # t_P = [omega; v_A + omega x (p - a)], the rounded inputs, the terms' magnitudes
+        w, v, a, p = x[:, :3], x[:, 3:6], x[:, 6:9], x[:, 9:12]
+        ref = np.hstack([w, v + np.cross(w, p - a)])
+        r = np.abs(p) + np.abs(a)
+        mag = np.hstack([np.abs(w), np.abs(v) + np.abs(w)[:, [1, 2, 0]] * r[:, [2, 0, 1]]
+                         + np.abs(w)[:, [2, 0, 1]] * r[:, [1, 2, 0]]])
         assert np.all(np.abs(outs - ref) <= 16 * eps * mag), \
             np.max(np.abs(outs - ref) / np.maximum(mag, 1e-300))
 
@@ -255,13 +276,15 @@ def test_status_is_the_same_under_every_compiler_and_flag(tmp_path, kernel):
     check_kernel(tmp_path, KERNELS_DIR, kernel, np.float32, 2000, ["-O2", "-Ofast"])
 
 
-@pytest.mark.slow   # 3 kernels x 2 types x 2 compilers x 3 flags, 20,000 inputs each
+@pytest.mark.slow   # 5 kernels x 2 types x 2 compilers x 3 flags, 20,000 inputs each
 @needs_two
 @pytest.mark.parametrize("dtype", [np.float32, np.float64])
 @pytest.mark.parametrize("kernel", sorted(SIGNATURES))
 def test_status_is_the_same_under_every_compiler_and_flag_full(tmp_path, kernel, dtype):
-    """The full matrix: the log, the wrench and the screw of a displacement (generated
-    here), float and double, gcc and clang at -O2, -O3 and -Ofast."""
+    """The full matrix: the log, the wrench, the rotation from an axis and angle (angles
+    down to 1e-12 rad), the twist transfer (angular velocities down to 1e-12 rad/s, points
+    1 nm from the origin) and the screw of a displacement (generated here), float and
+    double, gcc and clang at -O2, -O3 and -Ofast."""
     kdir = KERNELS_DIR
     if not (kdir / f"rigidsym_c_{kernel}.c").exists():
         from rigidsym.cli import main
