@@ -344,12 +344,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
 
 
 #if RIGIDSYM_C_WIDE_F
-/* rigidsym_c_planar_arm_tip_f32 at an extreme input, evaluated by the double function rigidsym_c_planar_arm_tip and
- * rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float is a double of ordinary
- * magnitude or close, so no product of a few of them underflows or overflows there, and
- * what the double evaluation did is the status. -1 where it cannot take the sample (the
- * caller then goes on as without it): the double function flags an extreme input, or (no
- * cold-path environment) a subnormal input that a flush-to-zero mode would read as zero. */
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_planar_arm_tip and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_wide(
     float in_q1,
     float in_q2,
@@ -1110,12 +1111,13 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
 
 
 #if RIGIDSYM_C_WIDE_F
-/* rigidsym_c_planar_arm_tip_with_jacobians_f32 at an extreme input, evaluated by the double function rigidsym_c_planar_arm_tip_with_jacobians and
- * rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float is a double of ordinary
- * magnitude or close, so no product of a few of them underflows or overflows there, and
- * what the double evaluation did is the status. -1 where it cannot take the sample (the
- * caller then goes on as without it): the double function flags an extreme input, or (no
- * cold-path environment) a subnormal input that a flush-to-zero mode would read as zero. */
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_planar_arm_tip_with_jacobians and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
 static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_wide(
     float in_q1,
     float in_q2,
