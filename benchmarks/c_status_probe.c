@@ -3,7 +3,8 @@
  * how many samples the range test sends to the cold path (a nonzero input component of
  * magnitude outside [2^-30, 2^31)), how many come back flagged, the x86-64 exception flags
  * each flagged call raised (the functions give the caller its flags back with those raised
- * since), and the worst relative error of the log against the exact phi e. One JSON object
+ * since), the worst relative error of the log against the exact phi e and the logs of status
+ * 0 off by more than 16 u (silent wrongs). One JSON object
  * a line; benchmarks/c_status_probe.py builds it with gcc and clang at -O2 and -Ofast.
  * $SET_MXCSR (hex) sets the caller's MXCSR first (0x1fc0: DAZ alone). */
 #include <math.h>
@@ -48,7 +49,7 @@ static int fires(const float *p, int n, float *which)
 static unsigned mxcsr_get(void) { unsigned m; __asm__ volatile("stmxcsr %0" : "=m"(m)); return m; }
 static void mxcsr_put(unsigned m) { __asm__ volatile("ldmxcsr %0" : : "m"(m)); }
 
-struct tally { int n, flagged, fired, fired_flagged, extreme, ie, ze, oe, ue; float input; double maxrel; };
+struct tally { int n, flagged, fired, fired_flagged, extreme, ie, ze, oe, ue, wrong; float input; double maxrel; };
 static void count(struct tally *t, int s, int f, float which, unsigned raised)
 {
     t->n++; t->fired += f; t->flagged += s != 0; t->fired_flagged += f && s != 0;
@@ -62,10 +63,11 @@ static void print(const char *name, const struct tally *t)
 {
     printf("{\"case\": \"%s\", \"n\": %d, \"flagged\": %d, \"extreme_input\": %d, \"range_test_fires\": %d, "
            "\"fired_and_flagged\": %d, \"flagged_raised\": {\"invalid\": %d, \"divide_by_zero\": %d, "
-           "\"overflow\": %d, \"underflow\": %d}, \"a_flagged_input\": %.3g, \"max_rel_err\": ",
+           "\"overflow\": %d, \"underflow\": %d}, \"a_flagged_input\": %.3g, ",
            name, t->n, t->flagged, t->extreme, t->fired, t->fired_flagged, t->ie, t->ze, t->oe, t->ue,
            (double)t->input);
-    if (t->maxrel < 0) printf("null}\n"); else printf("%.3g}\n", t->maxrel);
+    if (t->maxrel < 0) printf("\"silent_wrong_16u\": null, \"max_rel_err\": null}\n");
+    else printf("\"silent_wrong_16u\": %d, \"max_rel_err\": %.3g}\n", t->wrong, t->maxrel);
 }
 static void logs(const char *name, double lo, double hi, int n)
 {
@@ -81,6 +83,7 @@ static void logs(const char *name, double lo, double hi, int n)
         const unsigned raised = mxcsr_get() & 0x3fU;
         count(&t, s, fires(Q, 9, &which), which, raised);
         for (int k = 0; k < 3; ++k) err += (w[k] - phi * e[k]) * (w[k] - phi * e[k]);
+        if (s == 0 && !(sqrt(err) / phi <= 16 * 0x1p-24)) t.wrong++;  /* status 0, off by 16 u */
         if (sqrt(err) / phi > t.maxrel) t.maxrel = sqrt(err) / phi;
     }
     print(name, &t);

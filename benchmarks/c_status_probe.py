@@ -5,12 +5,17 @@ Builds benchmarks/c_status_probe.c against a C target folder holding
 ``rigidsym generate --target c`` of the two into a temporary folder) with gcc and clang, the
 library at ``-O2`` or ``-Ofast -fno-fast-math`` (the headers refuse ``__FAST_MATH__``) and the
 application at ``-O2`` or ``-Ofast`` (linking with ``-Ofast`` adds crtfastmath.o, which sets
-x86-64's FTZ and DAZ at start-up), then two builds that take the causes apart: gcc ``-O2``
-run with DAZ alone set by the caller (``SET_MXCSR=0x1fc0``), and clang ``-O2`` with the
-library built ``-fno-slp-vectorize``. Each run prints, per case (float logs of small
-rotations, screws of a point 1 nm and 1 m from the origin), the samples flagged, those the
-range test sends to the cold path, the exception flags the flagged calls raised and the
-log's worst relative error; the record keeps them per build. x86-64 only (MXCSR).
+x86-64's FTZ and DAZ at start-up), then builds that take the causes apart: gcc ``-O2``
+run with DAZ alone set by the caller (``SET_MXCSR=0x1fc0``); clang ``-O2`` with the library
+built ``-fno-slp-vectorize``; gcc ``-O2`` and clang ``-Ofast`` with ``-DRIGIDSYM_C_NO_WIDE``
+(the float cold path without its double evaluation: the detection by the exception flags
+alone, against the double evaluation rounded once of the default builds); gcc ``-O2`` with
+``-DRIGIDSYM_C_NO_FP_FLAGS`` (neither: a sample no rescaling takes keeps the range test's
+flag, the prediction). Each run prints, per case (float logs of small rotations, screws of
+a point 1 nm and 1 m from the origin), the samples flagged, those the range test sends to
+the cold path, the exception flags the flagged calls raised, the log's worst relative error
+and its silent wrongs (status 0, off by more than 16 u); the record keeps them per build.
+x86-64 only (MXCSR).
 
     python benchmarks/c_status_probe.py --json benchmarks/results/c_status_probe.json
 """
@@ -40,6 +45,13 @@ BUILDS = [
     ("clang", ["-Ofast", "-fno-fast-math"], ["-Ofast"], {}, ""),
     ("gcc", ["-O2"], ["-O2"], {"SET_MXCSR": "0x1fc0"}, "DAZ alone set by the caller"),
     ("clang", ["-O2", "-fno-slp-vectorize"], ["-O2"], {}, "clang without the SLP vectorizer"),
+    ("gcc", ["-O2", "-DRIGIDSYM_C_NO_WIDE"], ["-O2"], {},
+     "the exception flags step alone (no double evaluation of a float sample)"),
+    ("clang", ["-Ofast", "-fno-fast-math", "-DRIGIDSYM_C_NO_WIDE"], ["-Ofast"], {},
+     "the exception flags step alone (no double evaluation of a float sample)"),
+    ("gcc", ["-O2", "-DRIGIDSYM_C_NO_FP_FLAGS"], ["-O2"], {},
+     "neither (no flags read, no double evaluation): the range test's prediction where no "
+     "rescaling takes the sample"),
 ]
 
 
@@ -105,7 +117,7 @@ def main(argv: list[str] | None = None) -> int:
             for c in rec["cases"]:
                 print(f"   {c['case']:40s} flagged {c['flagged']:6d}/{c['n']}, range test "
                       f"{c['range_test_fires']:6d}, raised {c['flagged_raised']}, max rel err "
-                      f"{c['max_rel_err']}")
+                      f"{c['max_rel_err']}, silent wrongs {c['silent_wrong_16u']}")
     if args.json:
         args.json.parent.mkdir(parents=True, exist_ok=True)
         part = args.json.with_suffix(".part")

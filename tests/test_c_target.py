@@ -212,7 +212,9 @@ def test_status_ok_and_values_for_ordinary_inputs(lib, e, phi):
     status, (Q,) = call(lib, "rigidsym_c_rotation_from_natural_invariants", e, phi,
                         ("out", 9))
     small = any(0 < abs(x) < 2.0**-100 for x in [*e, phi])
-    assert status == (EXTREME_INPUT if small and not WIDE else OK)
+    # an axis of extreme norm (its largest component below 2^-100) is no unit vector
+    tiny_axis = 0 < np.max(np.abs(e)) < 2.0**-100
+    assert status == (EXTREME_INPUT if (small and not WIDE) or tiny_axis else OK)
     if small:   # both re-run it in long double (the package NumPy's, this C's own)
         return
     want = K.rotation_from_natural_invariants(e, phi, check=False).ravel()
@@ -446,7 +448,8 @@ WIDE = np.finfo(np.longdouble).maxexp > np.finfo(np.float64).maxexp
 @given(st.sampled_from([1e-300, 1e-200, 1e-40, 1e-12, 1e30]), st.integers(0, 2**32 - 1))
 def test_extreme_inputs_are_rescued_in_long_double(lib, scale, seed):
     """Inputs scaled to 1e-300 ... 1e30 (every intermediate representable in long double):
-    status 0 and the package kernels' values (both re-run in long double, rounded once)."""
+    status 0 and the package kernels' values (both re-run in long double, rounded once);
+    an axis (a unit-vector argument) of extreme norm is flagged, its values the same."""
     from rigidsym import kernels as K
 
     rng = np.random.default_rng(seed)
@@ -457,7 +460,10 @@ def test_extreme_inputs_are_rescued_in_long_double(lib, scale, seed):
     assert np.max(np.abs(got - want)) <= 1e-15 * np.max(np.abs(want))
     e = rng.normal(size=3) * scale
     status, (Q,) = call(lib, "rigidsym_c_rotation_from_natural_invariants", e, 0.3, ("out", 9))
-    assert status == OK
+    # an axis of extreme norm (its largest component outside [2^-100, 2^101)) is flagged:
+    # no unit vector is that short or long
+    big = float(np.max(np.abs(e)))
+    assert status == (OK if 2.0**-100 <= big < 2.0**101 else EXTREME_INPUT)
     want = K.rotation_from_natural_invariants(e, 0.3, check=False).ravel()
     assert np.max(np.abs(Q - want)) <= 1e-15 * np.max(np.abs(want))
 
@@ -1328,15 +1334,17 @@ int main(void)
     const float I[9] = {0.02f, 0.001f, 0, 0.001f, 0.03f, 0.002f, 0, 0.002f, 0.025f};
     const float wd[3] = {0.1f, 0.5f, -0.2f}, cdd[3] = {0, 0, -9.81f};
     const float w[3] = {1e-12f, -2e-12f, 3e-12f}, tiny[3] = {1e-30f, -2e-30f, 3e-30f};
+    const float none[3] = {0, 0, 0};
     float out[6];
-    int s1, s2, kept, raised;
+    int s1, s2, s3, kept, raised;
     feclearexcept(FE_ALL_EXCEPT);
     feraiseexcept(FE_DIVBYZERO);   /* the caller's own flag, raised before the call */
     s1 = rigidsym_c_newton_euler_wrench_f32(I, 1.5f, w, wd, cdd, out);
+    s3 = rigidsym_c_newton_euler_wrench_f32(I, 1.5f, tiny, wd, cdd, out);
     kept = fetestexcept(FE_DIVBYZERO) != 0 && fetestexcept(FE_UNDERFLOW) == 0;
-    s2 = rigidsym_c_newton_euler_wrench_f32(I, 1.5f, tiny, wd, cdd, out);
+    s2 = rigidsym_c_newton_euler_wrench_f32(I, 1.5f, tiny, none, cdd, out);
     raised = fetestexcept(FE_UNDERFLOW) != 0 && fetestexcept(FE_DIVBYZERO) != 0;
-    printf("%d %d %d %d\n", s1, s2, kept, raised);
+    printf("%d %d %d %d %d\n", s1, s2, kept, raised, s3);
     return 0;
 }
 """
@@ -1344,17 +1352,86 @@ int main(void)
 
 @needs_gcc
 def test_the_flags_step_keeps_the_callers_flags(tmp_path):
-    """The flags step clears the exception flags for its evaluation and gives the caller
+    """The cold path clears the exception flags for its evaluation and gives the caller
     back its own with those raised since: a divide-by-zero raised before the call stays
-    raised, an underflow of the call (omega at 1e-30 in float) shows after it; the status
-    is 0 at 1e-12 and EXTREME_INPUT (8) at 1e-30."""
+    raised, an underflow of the call (a torque-free body at omega = 1e-30 in float, whose
+    whole wrench is below float's range) shows after it. The status is 0 at 1e-12, 0 at
+    1e-30 with an angular acceleration (omega x I omega, 1e-62, is below float's resolution
+    of I omega_dot: the double evaluation rounded to float is right, and raises nothing),
+    and EXTREME_INPUT (8) for the torque-free body."""
     src = tmp_path / "kept.c"
     src.write_text(_FLAGS_KEPT)
     exe = tmp_path / "kept"
     subprocess.run([GCC, *STRICT, "-O2", "-I", str(KERNELS_DIR), str(src),
                     *map(str, sources()), "-o", str(exe), "-lm"], check=True)
     out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
-    assert out.split() == ["0", "8", "1", "1"]
+    assert out.split() == ["0", "8", "1", "1", "0"]
+
+
+def _rodrigues(e: np.ndarray, phi: float) -> np.ndarray:
+    """The rotation by phi about the unit axis e, (2.49) in float64 with 1 - cos phi as
+    2 sin^2(phi/2) (exact to a few u of float64 at any angle)."""
+    E = np.array([[0, -e[2], e[1]], [e[2], 0, -e[0]], [-e[1], e[0], 0]])
+    return np.eye(3) + np.sin(phi) * E + 2 * np.sin(phi / 2) ** 2 * (E @ E)
+
+
+@pytest.mark.parametrize("phi", [1e-16, 1e-18, 1e-20, 1e-25])
+def test_float_log_of_a_tiny_rotation_is_status_0_and_right(lib, phi):
+    """The float log (natural invariants) of rotations by 1e-16 ... 1e-25 rad about axes
+    with components of every sign: the float evaluation's small-angle series raises a
+    harmless underflow ((1/6) s_k^2 under float's range, absorbed by 1 +); the double
+    evaluation rounded once raises none, so the status is 0, and the angle and axis are
+    within float rounding of the rotation's own."""
+    rng = np.random.default_rng(83)
+    eps = float(np.finfo(np.float32).eps)
+    for _ in range(16):
+        e = rng.normal(size=3)
+        e /= np.linalg.norm(e)
+        Q = _rodrigues(e, phi).astype(np.float32)
+        status, (ax, ang) = call(lib, "rigidsym_c_natural_invariants_from_rotation_f32", Q,
+                                 ("out", 3), ("out", 1), dtype=np.float32)
+        assert status == OK, (phi, e)
+        # Q's rounding to float moves the angle by up to 2 u of its entries' magnitude
+        assert abs(float(ang[0]) - phi) <= 4 * eps * phi, (phi, ang)
+        assert np.linalg.norm(ax.astype(np.float64) - e) <= 8 * eps, (phi, ax, e)
+
+
+EXTREME_AXES = [
+    ("rigidsym_c_rotation_from_natural_invariants", np.float64, 2.0**300, 2.0**-400),
+    ("rigidsym_c_rotation_from_natural_invariants_f32", np.float32, 2.0**100, 2.0**-100)]
+
+
+def check_extreme_axis(one, name: str, dtype, big: float, tiny: float, wide: bool) -> None:
+    """The axis (0, 0, big) turning by tiny rad, and (0, 0, 1/big) by 1 rad, flagged; the
+    unit axis by tiny rad the identity but for Q_12 = -tiny, Q_21 = tiny, status 0 (float
+    without a wider type: the flags step flags it, sin^2(tiny/2) underflowing)."""
+    s, (Q,) = call(one, name, np.array([0, 0, big]), tiny, ("out", 9), dtype=dtype)
+    assert s & EXTREME_INPUT, (s, Q)
+    s, (Q,) = call(one, name, np.array([0, 0, 1 / big]), 1.0, ("out", 9), dtype=dtype)
+    assert s & EXTREME_INPUT, (s, Q)          # a tiny axis neither
+    s, (Q,) = call(one, name, np.array([0, 0, 1.0]), tiny, ("out", 9), dtype=dtype)
+    want = np.eye(3)
+    want[0, 1], want[1, 0] = -tiny, tiny
+    if dtype == np.float64 or wide:
+        assert s == OK, s
+        assert np.array_equal(Q.astype(np.float64), want.ravel()), Q
+
+
+@pytest.mark.parametrize("name, dtype, big, tiny", EXTREME_AXES)
+def test_an_axis_of_extreme_norm_is_flagged(lib, name, dtype, big, tiny):
+    """The axis (0, 0, 2^300) turning by 2^-400 rad (float: 2^100, 2^-100): no unit vector,
+    and the formula's value there is no rotation (its Q_33 cancels to 0), so the status has
+    EXTREME_INPUT; the unit axis by the same angle is the identity to within the angle,
+    status 0."""
+    check_extreme_axis(lib, name, dtype, big, tiny, wide=True)
+
+
+@pytest.mark.slow   # its own build of the example's sources (-DRIGIDSYM_C_NO_WIDE)
+@pytest.mark.parametrize("name, dtype, big, tiny", EXTREME_AXES)
+def test_an_axis_of_extreme_norm_is_flagged_without_a_wider_type(lib_narrow, name, dtype,
+                                                                 big, tiny):
+    """The same where no wider type rescues (-DRIGIDSYM_C_NO_WIDE)."""
+    check_extreme_axis(lib_narrow, name, dtype, big, tiny, wide=False)
 
 
 _FLUSH = r"""#include <stdio.h>

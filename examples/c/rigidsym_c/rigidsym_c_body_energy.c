@@ -62,6 +62,7 @@ static int rigidsym_c_body_energy_wide(
 #endif
 
 
+
 #if RIGIDSYM_C_RESCALE_D
 /* rigidsym_c_body_energy at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -422,6 +423,53 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_body_energy and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_wide(
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T)
+{
+    double w_v[3];
+    double w_inertia[9];
+    double w_omega[3];
+    double w_T[1];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(&in_m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_v, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_inertia, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_omega, 3))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 3; ++j_)
+        w_v[j_] = (double)in_v[j_];
+    for (j_ = 0; j_ < 9; ++j_)
+        w_inertia[j_] = (double)in_inertia[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_omega[j_] = (double)in_omega[j_];
+    status = rigidsym_c_body_energy((double)in_m, w_v, w_inertia, w_omega, w_T);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 1; ++j_)
+        status |= rigidsym_c_narrow(w_T[j_], &(out_T)[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_body_energy_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -620,6 +668,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_body_energy_f32_wide(in_m, in_v, in_inertia, in_omega, out_T);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
@@ -873,6 +930,7 @@ static int rigidsym_c_body_energy_with_jacobians_wide(
 #pragma clang diagnostic pop
 #endif
 #endif
+
 
 
 #if RIGIDSYM_C_RESCALE_D
@@ -1434,6 +1492,69 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_body_energy_with_jacobians and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_wide(
+    float in_m,
+    const float in_v[3],
+    const float in_inertia[9],
+    const float in_omega[3],
+    float *out_T,
+    float *out_T_D_m,
+    float out_T_D_v[3],
+    float out_T_D_inertia[9],
+    float out_T_D_omega[3])
+{
+    double w_v[3];
+    double w_inertia[9];
+    double w_omega[3];
+    double w_T[1];
+    double w_T_D_m[1];
+    double w_T_D_v[3];
+    double w_T_D_inertia[9];
+    double w_T_D_omega[3];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(&in_m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_v, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_inertia, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_omega, 3))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 3; ++j_)
+        w_v[j_] = (double)in_v[j_];
+    for (j_ = 0; j_ < 9; ++j_)
+        w_inertia[j_] = (double)in_inertia[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_omega[j_] = (double)in_omega[j_];
+    status = rigidsym_c_body_energy_with_jacobians((double)in_m, w_v, w_inertia, w_omega, w_T, w_T_D_m, w_T_D_v, w_T_D_inertia, w_T_D_omega);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 1; ++j_)
+        status |= rigidsym_c_narrow(w_T[j_], &(out_T)[j_]);
+    for (j_ = 0; j_ < 1; ++j_)
+        status |= rigidsym_c_narrow(w_T_D_m[j_], &(out_T_D_m)[j_]);
+    for (j_ = 0; j_ < 3; ++j_)
+        status |= rigidsym_c_narrow(w_T_D_v[j_], &out_T_D_v[j_]);
+    for (j_ = 0; j_ < 9; ++j_)
+        status |= rigidsym_c_narrow(w_T_D_inertia[j_], &out_T_D_inertia[j_]);
+    for (j_ = 0; j_ < 3; ++j_)
+        status |= rigidsym_c_narrow(w_T_D_omega[j_], &out_T_D_omega[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_body_energy_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -1767,6 +1888,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_body_energy_with_jacobians_f32_wide(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */

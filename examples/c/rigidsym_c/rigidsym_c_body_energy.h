@@ -29,11 +29,14 @@ RIGIDSYM_C_BEGIN_DECLS
  *   T: kinetic energy [J]; scalar
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in m, v, inertia, omega (the other arguments fixed),
  *   T -> 2^(k_m + 2*k_v) T
  * for every integer k_x with
@@ -111,11 +114,14 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32_batch(
  * constrained input is an independent variable).
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in m, v, inertia, omega (the other arguments fixed),
  *   T -> 2^(k_inertia + 2*k_omega) T
  *   T_D_m -> 2^(2*k_v) T_D_m

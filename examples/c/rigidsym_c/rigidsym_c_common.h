@@ -25,11 +25,14 @@
 #define RIGIDSYM_C_NONFINITE_RESULT 4
 /* a nonzero input component has magnitude outside [2^-100, 2^101) (double; float:
  * [2^-30, 2^31)) that neither a wider type (the double functions re-run the sample in
- * long double where that is wider, RIGIDSYM_C_WIDE) nor power-of-two rescaling (of the
+ * long double where that is wider, RIGIDSYM_C_WIDE; the float ones in double where
+ * double has hardware flags, RIGIDSYM_C_WIDE_F) nor power-of-two rescaling (of the
  * arguments the kernel is homogeneous in) could take, and whose evaluation raised
  * underflow, overflow, invalid or divide-by-zero (or ran where those flags cannot be
  * read, RIGIDSYM_C_FLAGS_*): intermediates may have underflowed or overflowed, so the
- * outputs are not guaranteed to the stated bound */
+ * outputs are not guaranteed to the stated bound; or an output of the wider evaluation
+ * rounds inexactly into the type's subnormal range; or a unit-vector or rotation
+ * argument is of extreme norm (its largest component so), no unit vector */
 #define RIGIDSYM_C_EXTREME_INPUT 8
 /* an output that is undetermined at these inputs holds its documented default (the
  * axis e = [1, 0, 0] of natural_invariants_from_rotation at Q = 1, where phi = 0

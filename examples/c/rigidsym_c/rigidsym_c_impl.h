@@ -242,6 +242,36 @@ static inline int rigidsym_c_fp_risky(void)
 
 #include "rigidsym_c_common.h"
 
+/* The float functions' rescue in double (<name>_f32_wide, kernel.c.j2): a float sample with
+ * an extreme input is evaluated by the kernel's double function and each output rounded once
+ * to float. A float is at least 2^-149 and below 2^128 in magnitude, so the products of a
+ * few of them are normal doubles: the double evaluation neither underflows nor overflows
+ * where the float one did (the float rotation vector at 1e-20 rad, whose (1/6) s^2 term is
+ * below float's range and was harmless all along), and its own status says what happened.
+ * Only where double is the hardware's arithmetic, with its flags (x86-64 SSE2, aarch64,
+ * 32-bit Arm with a double-precision VFP): a Cortex-M4F's float functions call no
+ * soft-float double helper. -DRIGIDSYM_C_NO_WIDE turns it off with the long double rescue. */
+#if RIGIDSYM_C_FLAGS_D && !defined(RIGIDSYM_C_NO_WIDE)
+#define RIGIDSYM_C_WIDE_F 1
+#else
+#define RIGIDSYM_C_WIDE_F 0
+#endif
+#if RIGIDSYM_C_WIDE_F
+/* *f = d rounded to float; RIGIDSYM_C_EXTREME_INPUT where that rounding lands inexactly in
+ * float's subnormal range (or a flush mode makes it zero: the bits then differ), only
+ * absolutely accurate there; RIGIDSYM_C_NONFINITE_RESULT where a finite d overflows float */
+static inline int rigidsym_c_narrow(double d, float *f)
+{
+    const float r = (float)d;
+    *f = r;
+    if (d - d == 0.0 && !(r - r == 0.0f))
+        return RIGIDSYM_C_NONFINITE_RESULT;
+    if (fabs(d) < (double)FLT_MIN && (double)r != d)
+        return RIGIDSYM_C_EXTREME_INPUT;
+    return 0;
+}
+#endif
+
 /* The input bits of the status: RIGIDSYM_C_NONFINITE_INPUT when a component is infinite or
  * NaN, RIGIDSYM_C_EXTREME_INPUT when all are finite and one is nonzero of magnitude outside
  * [2^-100, 2^101) (float: [2^-30, 2^31)), where products of the inputs could underflow or
@@ -514,6 +544,26 @@ static inline int rigidsym_c_exponent_f(const float *p, int n)
     if (m > 0.0f)
         (void)frexpf(m, &e);
     return e;
+}
+
+/* 1 when the largest magnitude among the n finite values at p is nonzero and outside the
+ * ordinary range (rigidsym_c_extreme_*): a unit vector or rotation matrix of extreme norm */
+static inline int rigidsym_c_extreme_norm_d(const double *p, int n)
+{
+    double m = 0.0;
+    int j;
+    for (j = 0; j < n; ++j)
+        m = fabs(p[j]) > m ? fabs(p[j]) : m;
+    return rigidsym_c_extreme_d(&m, 1);
+}
+
+static inline int rigidsym_c_extreme_norm_f(const float *p, int n)
+{
+    float m = 0.0f;
+    int j;
+    for (j = 0; j < n; ++j)
+        m = fabsf(p[j]) > m ? fabsf(p[j]) : m;
+    return rigidsym_c_extreme_f(&m, 1);
 }
 
 /* q = 2^t p for the n values at p (exact where it stays normal); 1 when one of them is still

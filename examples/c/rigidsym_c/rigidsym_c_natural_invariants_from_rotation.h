@@ -35,7 +35,9 @@ RIGIDSYM_C_BEGIN_DECLS
  *   phi: angle [rad]; scalar
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): each output within 3.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-53, kappa the output's condition number (the package's float64
  * kernel, the same program and bits, measured by its accuracy harness: worst 1.26 over its

@@ -80,6 +80,7 @@ static int rigidsym_c_newton_euler_wrench_wide(
 #endif
 
 
+
 #if RIGIDSYM_C_RESCALE_D
 /* rigidsym_c_newton_euler_wrench at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -482,6 +483,59 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_newton_euler_wrench and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_wide(
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6])
+{
+    double w_I_C[9];
+    double w_omega[3];
+    double w_omega_dot[3];
+    double w_c_ddot[3];
+    double w_w[6];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_I_C, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_omega, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_omega_dot, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_c_ddot, 3))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 9; ++j_)
+        w_I_C[j_] = (double)in_I_C[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_omega[j_] = (double)in_omega[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_omega_dot[j_] = (double)in_omega_dot[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_c_ddot[j_] = (double)in_c_ddot[j_];
+    status = rigidsym_c_newton_euler_wrench(w_I_C, (double)in_m, w_omega, w_omega_dot, w_c_ddot, w_w);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 6; ++j_)
+        status |= rigidsym_c_narrow(w_w[j_], &out_w[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_newton_euler_wrench_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -689,6 +743,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_newton_euler_wrench_f32_wide(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
@@ -1191,6 +1254,7 @@ static int rigidsym_c_newton_euler_wrench_with_jacobians_wide(
 #pragma clang diagnostic pop
 #endif
 #endif
+
 
 
 #if RIGIDSYM_C_RESCALE_D
@@ -2225,6 +2289,79 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_newton_euler_wrench_with_jacobians and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_wide(
+    const float in_I_C[9],
+    float in_m,
+    const float in_omega[3],
+    const float in_omega_dot[3],
+    const float in_c_ddot[3],
+    float out_w[6],
+    float out_w_D_I_C[54],
+    float out_w_D_m[6],
+    float out_w_D_omega[18],
+    float out_w_D_omega_dot[18],
+    float out_w_D_c_ddot[18])
+{
+    double w_I_C[9];
+    double w_omega[3];
+    double w_omega_dot[3];
+    double w_c_ddot[3];
+    double w_w[6];
+    double w_w_D_I_C[54];
+    double w_w_D_m[6];
+    double w_w_D_omega[18];
+    double w_w_D_omega_dot[18];
+    double w_w_D_c_ddot[18];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_I_C, 9))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_m, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_omega, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_omega_dot, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_c_ddot, 3))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 9; ++j_)
+        w_I_C[j_] = (double)in_I_C[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_omega[j_] = (double)in_omega[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_omega_dot[j_] = (double)in_omega_dot[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_c_ddot[j_] = (double)in_c_ddot[j_];
+    status = rigidsym_c_newton_euler_wrench_with_jacobians(w_I_C, (double)in_m, w_omega, w_omega_dot, w_c_ddot, w_w, w_w_D_I_C, w_w_D_m, w_w_D_omega, w_w_D_omega_dot, w_w_D_c_ddot);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 6; ++j_)
+        status |= rigidsym_c_narrow(w_w[j_], &out_w[j_]);
+    for (j_ = 0; j_ < 54; ++j_)
+        status |= rigidsym_c_narrow(w_w_D_I_C[j_], &out_w_D_I_C[j_]);
+    for (j_ = 0; j_ < 6; ++j_)
+        status |= rigidsym_c_narrow(w_w_D_m[j_], &out_w_D_m[j_]);
+    for (j_ = 0; j_ < 18; ++j_)
+        status |= rigidsym_c_narrow(w_w_D_omega[j_], &out_w_D_omega[j_]);
+    for (j_ = 0; j_ < 18; ++j_)
+        status |= rigidsym_c_narrow(w_w_D_omega_dot[j_], &out_w_D_omega_dot[j_]);
+    for (j_ = 0; j_ < 18; ++j_)
+        status |= rigidsym_c_narrow(w_w_D_c_ddot[j_], &out_w_D_c_ddot[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_newton_euler_wrench_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -2803,6 +2940,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_newton_euler_wrench_with_jacobians_f32_wide(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */

@@ -53,6 +53,7 @@ static int rigidsym_c_planar_arm_tip_wide(
 #endif
 
 
+
 #if RIGIDSYM_C_RESCALE_D
 /* rigidsym_c_planar_arm_tip at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -342,6 +343,44 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_planar_arm_tip and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_wide(
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2])
+{
+    double w_p[2];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(&in_q1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_q2, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_l1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_l2, 1))
+        return -1;
+#endif
+    status = rigidsym_c_planar_arm_tip((double)in_q1, (double)in_q2, (double)in_l1, (double)in_l2, w_p);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 2; ++j_)
+        status |= rigidsym_c_narrow(w_p[j_], &out_p[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_planar_arm_tip_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -495,6 +534,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_planar_arm_tip_f32_wide(in_q1, in_q2, in_l1, in_l2, out_p);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
@@ -690,6 +738,7 @@ static int rigidsym_c_planar_arm_tip_with_jacobians_wide(
 #pragma clang diagnostic pop
 #endif
 #endif
+
 
 
 #if RIGIDSYM_C_RESCALE_D
@@ -1061,6 +1110,60 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_planar_arm_tip_with_jacobians and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_wide(
+    float in_q1,
+    float in_q2,
+    float in_l1,
+    float in_l2,
+    float out_p[2],
+    float out_p_D_q1[2],
+    float out_p_D_q2[2],
+    float out_p_D_l1[2],
+    float out_p_D_l2[2])
+{
+    double w_p[2];
+    double w_p_D_q1[2];
+    double w_p_D_q2[2];
+    double w_p_D_l1[2];
+    double w_p_D_l2[2];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(&in_q1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_q2, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_l1, 1))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_l2, 1))
+        return -1;
+#endif
+    status = rigidsym_c_planar_arm_tip_with_jacobians((double)in_q1, (double)in_q2, (double)in_l1, (double)in_l2, w_p, w_p_D_q1, w_p_D_q2, w_p_D_l1, w_p_D_l2);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 2; ++j_)
+        status |= rigidsym_c_narrow(w_p[j_], &out_p[j_]);
+    for (j_ = 0; j_ < 2; ++j_)
+        status |= rigidsym_c_narrow(w_p_D_q1[j_], &out_p_D_q1[j_]);
+    for (j_ = 0; j_ < 2; ++j_)
+        status |= rigidsym_c_narrow(w_p_D_q2[j_], &out_p_D_q2[j_]);
+    for (j_ = 0; j_ < 2; ++j_)
+        status |= rigidsym_c_narrow(w_p_D_l1[j_], &out_p_D_l1[j_]);
+    for (j_ = 0; j_ < 2; ++j_)
+        status |= rigidsym_c_narrow(w_p_D_l2[j_], &out_p_D_l2[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_planar_arm_tip_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -1262,6 +1365,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_planar_arm_tip_with_jacobians_f32_wide(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */

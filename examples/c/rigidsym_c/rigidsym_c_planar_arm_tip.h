@@ -29,11 +29,14 @@ RIGIDSYM_C_BEGIN_DECLS
  *   p: tip position in the base frame [m]; vector of 2
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in l1, l2 (the other arguments fixed),
  *   p -> 2^(k_l1) p
  * for every integer k_x with
@@ -111,11 +114,14 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32_batch(
  * constrained input is an independent variable).
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in l1, l2 (the other arguments fixed),
  *   p -> 2^(k_l2) p
  *   p_D_q1 -> 2^(k_l2) p_D_q1

@@ -69,6 +69,7 @@ static int rigidsym_c_quaternion_rotation_wide(
 
 
 
+
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_plain(
@@ -178,6 +179,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_plain(in_q, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -296,6 +304,38 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_quaternion_rotation and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_wide(
+    const float in_q[4],
+    float out_Q[9])
+{
+    double w_q[4];
+    double w_Q[9];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_q, 4))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 4; ++j_)
+        w_q[j_] = (double)in_q[j_];
+    status = rigidsym_c_quaternion_rotation(w_q, w_Q);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 9; ++j_)
+        status |= rigidsym_c_narrow(w_Q[j_], &out_Q[j_]);
+    return status;
+}
+#endif
+
+
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
@@ -389,6 +429,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
 #endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_quaternion_rotation_f32_wide(in_q, out_Q);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
+#endif
 #if RIGIDSYM_C_FLAGS_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
@@ -400,6 +449,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_f32_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_f32_plain(in_q, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -655,6 +711,7 @@ static int rigidsym_c_quaternion_rotation_with_jacobians_wide(
 
 
 
+
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_plain(
@@ -845,6 +902,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_with_jacobians_plain(in_q, out_Q, out_Q_D_q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1043,6 +1107,42 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_with_jacobians_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_quaternion_rotation_with_jacobians and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_wide(
+    const float in_q[4],
+    float out_Q[9],
+    float out_Q_D_q[36])
+{
+    double w_q[4];
+    double w_Q[9];
+    double w_Q_D_q[36];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_q, 4))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 4; ++j_)
+        w_q[j_] = (double)in_q[j_];
+    status = rigidsym_c_quaternion_rotation_with_jacobians(w_q, w_Q, w_Q_D_q);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 9; ++j_)
+        status |= rigidsym_c_narrow(w_Q[j_], &out_Q[j_]);
+    for (j_ = 0; j_ < 36; ++j_)
+        status |= rigidsym_c_narrow(w_Q_D_q[j_], &out_Q_D_q[j_]);
+    return status;
+}
+#endif
+
+
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_quaternion_rotation_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
@@ -1217,6 +1317,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
 #endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_quaternion_rotation_with_jacobians_f32_wide(in_q, out_Q, out_Q_D_q);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
+#endif
 #if RIGIDSYM_C_FLAGS_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
@@ -1228,6 +1337,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_quaternion_rotation_with_jacobians_f32_odd
 #endif
     if (!done_)
         status |= rigidsym_c_quaternion_rotation_with_jacobians_f32_plain(in_q, out_Q, out_Q_D_q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_q, 4)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif

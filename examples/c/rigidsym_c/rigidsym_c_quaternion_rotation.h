@@ -26,7 +26,9 @@ RIGIDSYM_C_BEGIN_DECLS
  *   Q: rotation matrix (body to world); 3 x 3, row-major: [i][j] at [3*i + j]
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
  * Extreme inputs without a wider type: no rescaling (the outputs are homogeneous in no
@@ -80,7 +82,9 @@ RIGIDSYM_C_API int rigidsym_c_quaternion_rotation_f32_batch(
  * constrained input is an independent variable).
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): no bound stated (a declaration that is not one of the package's
  * kernels, whose float64 accuracy the package measures: docs/accuracy.md).
  * Extreme inputs without a wider type: no rescaling (the outputs are homogeneous in no

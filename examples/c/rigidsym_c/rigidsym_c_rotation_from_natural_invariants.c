@@ -79,6 +79,7 @@ static int rigidsym_c_rotation_from_natural_invariants_wide(
 
 
 
+
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_plain(
@@ -199,6 +200,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_plain(in_e, in_phi, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -331,6 +339,41 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_rotation_from_natural_invariants and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_wide(
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9])
+{
+    double w_e[3];
+    double w_Q[9];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_e, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_phi, 1))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 3; ++j_)
+        w_e[j_] = (double)in_e[j_];
+    status = rigidsym_c_rotation_from_natural_invariants(w_e, (double)in_phi, w_Q);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 9; ++j_)
+        status |= rigidsym_c_narrow(w_Q[j_], &out_Q[j_]);
+    return status;
+}
+#endif
+
+
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
@@ -435,6 +478,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
 #endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_rotation_from_natural_invariants_f32_wide(in_e, in_phi, out_Q);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
+#endif
 #if RIGIDSYM_C_FLAGS_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
@@ -446,6 +498,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_f32_odd(
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_f32_plain(in_e, in_phi, out_Q);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif
@@ -732,6 +791,7 @@ static int rigidsym_c_rotation_from_natural_invariants_with_jacobians_wide(
 
 
 
+
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians evaluated as written, with its outputs' test: the slow path's evaluation */
 static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(
@@ -942,6 +1002,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_plain(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_d(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     rigidsym_c_fp_leave(env_);
 #endif
@@ -1162,6 +1229,49 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_with_jacobians_ba
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_rotation_from_natural_invariants_with_jacobians and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_wide(
+    const float in_e[3],
+    float in_phi,
+    float out_Q[9],
+    float out_Q_D_e[27],
+    float out_Q_D_phi[9])
+{
+    double w_e[3];
+    double w_Q[9];
+    double w_Q_D_e[27];
+    double w_Q_D_phi[9];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_e, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(&in_phi, 1))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 3; ++j_)
+        w_e[j_] = (double)in_e[j_];
+    status = rigidsym_c_rotation_from_natural_invariants_with_jacobians(w_e, (double)in_phi, w_Q, w_Q_D_e, w_Q_D_phi);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 9; ++j_)
+        status |= rigidsym_c_narrow(w_Q[j_], &out_Q[j_]);
+    for (j_ = 0; j_ < 27; ++j_)
+        status |= rigidsym_c_narrow(w_Q_D_e[j_], &out_Q_D_e[j_]);
+    for (j_ = 0; j_ < 9; ++j_)
+        status |= rigidsym_c_narrow(w_Q_D_phi[j_], &out_Q_D_phi[j_]);
+    return status;
+}
+#endif
+
+
 
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
 /* rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32 evaluated as written, with its outputs' test: the slow path's evaluation */
@@ -1356,6 +1466,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
 #endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_wide(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
+#endif
 #if RIGIDSYM_C_FLAGS_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* no rescue took it: the flags decide */
         int r_;
@@ -1367,6 +1486,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_rotation_from_natural_invariants_with_jaco
 #endif
     if (!done_)
         status |= rigidsym_c_rotation_from_natural_invariants_with_jacobians_f32_plain(in_e, in_phi, out_Q, out_Q_D_e, out_Q_D_phi);
+    /* a unit vector or rotation matrix of extreme norm (its largest component nonzero and
+     * outside the ordinary range: no rounding of such an argument, which the caller is to
+     * normalise): the formula's value there (terms of that argument's square cancelling,
+     * the axis (0, 0, 2^300) turning by 2^-400 rad gives a Q_33 of 0) is no rotation, so it
+     * is flagged, never status 0; the outputs are the formula's, as evaluated */
+    if (!(status & RIGIDSYM_C_NONFINITE_INPUT) && (rigidsym_c_extreme_norm_f(in_e, 3)))
+        status |= RIGIDSYM_C_EXTREME_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     rigidsym_c_fp_leave(env_);
 #endif

@@ -27,7 +27,9 @@ RIGIDSYM_C_BEGIN_DECLS
  *   Q: rotation matrix; 3 x 3, row-major: [i][j] at [3*i + j]
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): each output within 3.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-53, kappa the output's condition number (the package's float64
  * kernel, the same program and bits, measured by its accuracy harness: worst 1.15 over its
@@ -90,7 +92,9 @@ RIGIDSYM_C_API int rigidsym_c_rotation_from_natural_invariants_f32_batch(
  * constrained input is an independent variable).
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): each output within 3.0 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-53, kappa the output's condition number (the package's float64
  * kernel, the same program and bits, measured by its accuracy harness: worst 1.15 over its

@@ -69,6 +69,7 @@ static int rigidsym_c_twist_transfer_wide(
 #endif
 
 
+
 #if RIGIDSYM_C_RESCALE_D
 /* rigidsym_c_twist_transfer at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -388,6 +389,50 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_twist_transfer and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_wide(
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6])
+{
+    double w_t_A[6];
+    double w_a[3];
+    double w_p[3];
+    double w_t_P[6];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_t_A, 6))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_a, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_p, 3))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 6; ++j_)
+        w_t_A[j_] = (double)in_t_A[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_a[j_] = (double)in_a[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_p[j_] = (double)in_p[j_];
+    status = rigidsym_c_twist_transfer(w_t_A, w_a, w_p, w_t_P);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 6; ++j_)
+        status |= rigidsym_c_narrow(w_t_P[j_], &out_t_P[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_twist_transfer_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -542,6 +587,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_twist_transfer_f32_wide(in_t_A, in_a, in_p, out_t_P);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */
@@ -909,6 +963,7 @@ static int rigidsym_c_twist_transfer_with_jacobians_wide(
 #pragma clang diagnostic pop
 #endif
 #endif
+
 
 
 #if RIGIDSYM_C_RESCALE_D
@@ -1560,6 +1615,62 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_batch(
 }
 
 
+#if RIGIDSYM_C_WIDE_F
+/* The float function at an extreme input, evaluated by the double function
+ * rigidsym_c_twist_transfer_with_jacobians and rounded once (RIGIDSYM_C_WIDE_F, rigidsym_c_impl.h): every float
+ * is a double of ordinary magnitude or close, so no product of a few of them underflows or
+ * overflows there, and what the double evaluation did is the status. -1 where it cannot
+ * take the sample (the caller then goes on as without it): the double function flags an
+ * extreme input, or (no cold-path environment) a subnormal input that a flush-to-zero mode
+ * would read as zero. */
+static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_wide(
+    const float in_t_A[6],
+    const float in_a[3],
+    const float in_p[3],
+    float out_t_P[6],
+    float out_t_P_D_t_A[36],
+    float out_t_P_D_a[18],
+    float out_t_P_D_p[18])
+{
+    double w_t_A[6];
+    double w_a[3];
+    double w_p[3];
+    double w_t_P[6];
+    double w_t_P_D_t_A[36];
+    double w_t_P_D_a[18];
+    double w_t_P_D_p[18];
+    int j_, status;
+    (void)j_;
+#if !RIGIDSYM_C_FLAGS_F
+    if (rigidsym_c_subnormal_f(in_t_A, 6))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_a, 3))
+        return -1;
+    if (rigidsym_c_subnormal_f(in_p, 3))
+        return -1;
+#endif
+    for (j_ = 0; j_ < 6; ++j_)
+        w_t_A[j_] = (double)in_t_A[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_a[j_] = (double)in_a[j_];
+    for (j_ = 0; j_ < 3; ++j_)
+        w_p[j_] = (double)in_p[j_];
+    status = rigidsym_c_twist_transfer_with_jacobians(w_t_A, w_a, w_p, w_t_P, w_t_P_D_t_A, w_t_P_D_a, w_t_P_D_p);
+    if (status & RIGIDSYM_C_EXTREME_INPUT)
+        return -1;
+    for (j_ = 0; j_ < 6; ++j_)
+        status |= rigidsym_c_narrow(w_t_P[j_], &out_t_P[j_]);
+    for (j_ = 0; j_ < 36; ++j_)
+        status |= rigidsym_c_narrow(w_t_P_D_t_A[j_], &out_t_P_D_t_A[j_]);
+    for (j_ = 0; j_ < 18; ++j_)
+        status |= rigidsym_c_narrow(w_t_P_D_a[j_], &out_t_P_D_a[j_]);
+    for (j_ = 0; j_ < 18; ++j_)
+        status |= rigidsym_c_narrow(w_t_P_D_p[j_], &out_t_P_D_p[j_]);
+    return status;
+}
+#endif
+
+
 #if RIGIDSYM_C_RESCALE_F
 /* rigidsym_c_twist_transfer_with_jacobians_f32 at extreme inputs (RIGIDSYM_C_EXTREME_INPUT, finite): the status and
  * outputs of the rescue below, or -1 where it cannot take the sample (the caller then goes
@@ -1888,6 +1999,15 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#endif
+#if RIGIDSYM_C_WIDE_F
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
+        const int r_ = rigidsym_c_twist_transfer_with_jacobians_f32_wide(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
+        if (r_ >= 0) {
+            status = r_;
+            done_ = 1;
+        }
+    }
 #endif
 #if RIGIDSYM_C_RESCALE_F
     if (!done_ && status == RIGIDSYM_C_EXTREME_INPUT) {   /* rescaled by powers of two */

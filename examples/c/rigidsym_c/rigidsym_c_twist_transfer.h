@@ -28,13 +28,16 @@ RIGIDSYM_C_BEGIN_DECLS
  *   t_P: [omega; v_P]; vector of 6
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): each output within 1.5 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-53, kappa the output's condition number (the package's float64
  * kernel, the same program and bits, measured by its accuracy harness: worst 0.595 over its
  * regimes, at random, against arb; docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in t_A (the other arguments fixed),
  *   t_P -> 2^(k_t_A) t_P
  * for every integer k_x with
@@ -105,13 +108,16 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32_batch(
  * constrained input is an independent variable).
  * Returns: the status, 0 or the OR of RIGIDSYM_C_SINGULAR, RIGIDSYM_C_NONFINITE_INPUT,
  * RIGIDSYM_C_NONFINITE_RESULT, RIGIDSYM_C_EXTREME_INPUT (rigidsym_c_common.h).
- * Constraints ("unit", "rotation", ...) are the caller's to meet: they are not checked.
+ * Constraints ("unit", "rotation", ...) are the caller's to meet: the formula is evaluated
+ * as declared, except that a "unit" or "rotation" argument of extreme norm (its largest
+ * component nonzero and outside the ordinary range) gives RIGIDSYM_C_EXTREME_INPUT.
  * Accuracy (double): each output within 1.5 u (kappa + 1) of the exact value,
  * normwise relative, u = 2^-53, kappa the output's condition number (the package's float64
  * kernel, the same program and bits, measured by its accuracy harness: worst 0.744 over its
  * regimes, at scale 1e-6..1e6, against arb; docs/accuracy.md).
- * Extreme inputs without a wider type (the float function; the double one where long
- * double is double): exact power-of-two rescaling, argument by argument. Homogeneity used:
+ * Extreme inputs without a wider type (the double function where long double is double;
+ * the float one where double has no hardware flags, or where its double evaluation keeps
+ * the flag): exact power-of-two rescaling, argument by argument. Homogeneity used:
  * with x -> 2^(k_x) x for x in t_A (the other arguments fixed),
  *   t_P -> 2^(k_t_A) t_P
  *   t_P_D_t_A -> 2^(0 / k_a) t_P_D_t_A

@@ -65,12 +65,16 @@ STATUS = (
     ("EXTREME_INPUT", 8, "a nonzero input component has magnitude outside [2^-100, 2^101) "
                          "(double; float: [2^-30, 2^31)) that neither a wider type (the "
                          "double functions re-run the sample in long double where that is "
-                         "wider, RIGIDSYM_C_WIDE) nor power-of-two rescaling (of the "
-                         "arguments the kernel is homogeneous in) could take, and whose "
-                         "evaluation raised underflow, overflow, invalid or divide-by-zero "
-                         "(or ran where those flags cannot be read, RIGIDSYM_C_FLAGS_*): "
-                         "intermediates may have underflowed or overflowed, so the outputs "
-                         "are not guaranteed to the stated bound"),
+                         "wider, RIGIDSYM_C_WIDE; the float ones in double where double "
+                         "has hardware flags, RIGIDSYM_C_WIDE_F) nor power-of-two rescaling "
+                         "(of the arguments the kernel is homogeneous in) could take, and "
+                         "whose evaluation raised underflow, overflow, invalid or "
+                         "divide-by-zero (or ran where those flags cannot be read, "
+                         "RIGIDSYM_C_FLAGS_*): intermediates may have underflowed or "
+                         "overflowed, so the outputs are not guaranteed to the stated bound; "
+                         "or an output of the wider evaluation rounds inexactly into the "
+                         "type's subnormal range; or a unit-vector or rotation argument is "
+                         "of extreme norm (its largest component so), no unit vector"),
     ("DEFAULT_OUTPUT", 16, "an output that is undetermined at these inputs holds its "
                            "documented default (the axis e = [1, 0, 0] of "
                            "natural_invariants_from_rotation at Q = 1, where phi = 0 "
@@ -298,7 +302,7 @@ def _function(kc, ctype: str, rescale: list) -> dict:
                       "s": f"sc_{a.name}", "size": a.size, "shape": list(a.shape),
                       "doc": a.doc, "kind": a.kind, "layout": _layout(a.shape)}
                      for a in k.args],
-            "outs": [{"name": o.name, "c": names[o.name], "size": o.size,
+            "outs": [{"name": o.name, "c": names[o.name], "w": f"w_{o.name}", "size": o.size,
                       "shape": list(o.shape), "doc": o.doc, "layout": _layout(o.shape)}
                      for o in k.outputs],
             "groups": _scan_groups(k, ctype),
@@ -306,6 +310,8 @@ def _function(kc, ctype: str, rescale: list) -> dict:
             "out_sum": balanced(slots),
             "bounded": None if any(v["finite"] for v in variants) else _bounded(kc, ctype),
             "wide": _wide(kc, symbol_spelling(k, names)) if ctype == "double" else None,
+            # the float function's rescue in double: the double function of the kernel
+            "wider": f"{PREFIX}{k.name}" if ctype == "float" else None,
             "rescale": [_plan_code(p, slots) for p in rescale],
             "rescaled": {n for p in rescale for n in p["scale"]}}
 
