@@ -278,6 +278,11 @@ def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
 _CPM_BY_SECTION = {"3.2.2": ("a", "b"), "3.4.2": ("a", "p"), "3.7": ("a", "p"),
                    "3.8": ("r", "a", "c")}
 
+#: the model's fresh arrays for a printed glyph whose printed shape admits no product: the
+#: printed v-dot of (3.77a), a 4-array (N-tilde is 3 x 4), the conversion's garble of
+#: nu-dot (``derivations/sec3_4_2_rates.py``); its atoms ``sec342_vdot_1`` ... ``_4``
+_FRESH_ARRAYS = {"sec342_vdot": "\\dot{\\mathbf{v}}"}
+
 _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa", "lambda",
           "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega"}
 
@@ -330,8 +335,13 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                 cpm.setdefault(f"\\mathbf{{{x}}}", []).append(f"\\mathbf{{{x.upper()}}}")
     vectors: dict = {}
     scalars = []
+    fresh: dict = {}  # a printed glyph the model writes as a fresh array of its own shape
     for g in atoms:
         names = g["names"]
+        if len(names) == 1 and (m := re.fullmatch(r"(.+)_(\d)", names[0])) and \
+                m.group(1) in _FRESH_ARRAYS and g["kind"] == "free":
+            fresh.setdefault(m.group(1), []).append(names[0])
+            continue
         if len(names) == 3 and all(re.fullmatch(rf"{re.escape(g['group'])}_[123]", n)
                                    for n in names):
             vectors[g["group"]] = (g["kind"], names, g["timed"])
@@ -350,6 +360,9 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                 out.append({"glyph": f"\\{dots}{{{glyph}}}", **entry,
                             "atoms": [a + primes for a in entry["atoms"]]})
 
+    for base, names in sorted(fresh.items()):
+        out.append({"glyph": _FRESH_ARRAYS[base], "kind": "free",
+                    "atoms": sorted(names, key=lambda a: int(a.rsplit("_", 1)[1]))})
     for base, (kind, names, timed) in sorted(vectors.items()):
         if sorted(names) != [f"{base}_{k}" for k in (1, 2, 3)]:
             continue
