@@ -35,9 +35,18 @@ c_phi, s_phi = sp.cos(phi), sp.sin(phi)
 
 
 # --------------------------------------------------------------------------- (3.96)
+def _B_printed():
+    """``B`` as printed in (3.96e), in the motion's ``e``, ``phi``, ``omega`` (3 x 3, rad/s)."""
+    ew = _dot(e, omega)
+    return (-2 * ew * I3 + 2 * (3 - c_phi) * ew * e * e.T - 2 * (1 + s_phi) * omega * e.T
+            - (2 * c_phi + s_phi) * e * omega.T - s_phi * (Omega - ew * E))
+
+
 @equation("3.96a", "Rate of N", section="3.5", expected="does-not-hold", cause="unknown",
           evidence="the factor 1/(4(1 - cos phi)) belongs to B alone: printed, it multiplies "
-                   "the last row e_dot^T of N_dot as well (the rate of the row e^T of N)",
+                   "the last row e_dot^T of N_dot as well (the rate of the row e^T of N); "
+                   "with B as (3.96e) prints it (a book erratum there) the upper block fails "
+                   "too",
           singular="phi = 0 (mod 2 pi)",
           latex=r"\dot{\mathbf{N}} = \frac{1}{4(1 - \cos \phi)} \begin{bmatrix} \mathbf{B} "
                 r"\\ \dot{\mathbf{e}} \end{bmatrix}")
@@ -46,13 +55,14 @@ def rate_of_N() -> Statement:
 
     Book: Sec. 3.5, Eq. (3.96a). The printed ``e_dot`` sits in the bottom row of a 4 x 3
     block, so it is read as the row ``e_dot^T`` (the only reading the block admits); the
-    verdict does not depend on it. ``B`` is what this equation introduces: 4 (1 - cos phi)
-    times the upper block of ``N_dot``. Corrected: ``N_dot = [B / (4 (1 - cos phi));
-    e_dot^T]``, with ``B`` in closed form from :func:`B_matrix` (corrected (3.96e)).
+    verdict does not depend on it. ``B`` is the page's: "B is defined as" (3.96e), so the
+    printed relation has (3.96e)'s ``B`` (:func:`_B_printed`). Corrected: ``N_dot = [B /
+    (4 (1 - cos phi)); e_dot^T]``, with ``B`` in closed form from :func:`B_matrix`
+    (corrected (3.96e)).
     """
     k = 1 / (4 * (1 - c_phi))
     return Statement(
-        [Rel(Rt.N_dot, k * sp.BlockMatrix([[Rt.B], [e_dot.T]]))], omega_model(),
+        [Rel(Rt.N_dot, k * sp.BlockMatrix([[_B_printed()], [e_dot.T]]))], omega_model(),
         corrected=[Rel(Rt.N_dot, _book(N_matrix_dot), "closed form, B written out")])
 
 
@@ -117,10 +127,7 @@ def auxiliary_matrix_B() -> Statement:
     (``nu_dot = N omega`` for every ``omega``), so no other reading makes the printed form
     hold. Corrected: :func:`B_matrix`.
     """
-    ew = _dot(e, omega)
-    printed = (-2 * ew * I3 + 2 * (3 - c_phi) * ew * e * e.T - 2 * (1 + s_phi) * omega * e.T
-               - (2 * c_phi + s_phi) * e * omega.T - s_phi * (Omega - ew * E))
-    return Statement([Rel(Rt.B, printed)], omega_model(),
+    return Statement([Rel(Rt.B, _B_printed())], omega_model(),
                      corrected=[Rel(Rt.B, _book(B_matrix))])
 
 

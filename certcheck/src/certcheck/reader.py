@@ -334,6 +334,9 @@ class _Reader:
                     loose = loose or h is None or ws[k] is None
                     r[k] = M([[("1" if i == j and b == "1" else "0") for j in range(ws[k] or 3)]
                               for i in range(h or 3)])
+        widths = {sum(b.shape[1] for b in r) for r in rows}
+        if len(widths) == 2 and 1 in widths and len(rows) > 1:  # [B \\ e-dot] (3.96a)
+            self.transposed_rows(rows, max(widths))
         out = []
         for blocks in rows:
             h = blocks[0].shape[0]
@@ -343,6 +346,16 @@ class _Reader:
         if len({len(r) for r in out}) != 1:
             raise NotRead("rows of a block matrix differ in width")
         return M(out, loose)
+
+    def transposed_rows(self, rows: list, width: int) -> None:
+        """A block row that is one column of ``width`` entries under rows ``width`` wide:
+        the page's row printed without its ``^T`` ((3.96a)'s ``e-dot`` under the 3 x 3
+        ``B``), read as the row, the only reading the block matrix admits; cited."""
+        for k, r in enumerate(rows):
+            if len(r) == 1 and r[0].shape == (width, 1) and width > 1:
+                rows[k] = [r[0].t()]
+                self.cited.append(f"a column of {width} entries printed as a row of a block "
+                                  f"matrix {width} wide: read as that row (its ^T lost)")
 
     def glyph(self) -> M:
         start = self.i
@@ -429,7 +442,7 @@ class _Reader:
             return v
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
             n = len(self.cited)
-            inner = _Reader(tokens(str(entry["latex"])), self.table,
+            inner = _Reader(_unaligned(tokens(str(entry["latex"]))), self.table,
                             {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
             value = self.named(key, inner.chain()[0], inner.used | {key})
@@ -447,6 +460,18 @@ class _Reader:
             n = 3 if len(atoms) == 9 else 4
             return M([atoms[n * i:n * i + n] for i in range(n)])
         return scalar(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
+
+
+def _unaligned(toks: list[str]) -> list[str]:
+    """A table line's tokens without an aligned display's marks (``&``, ``\\\\`` outside
+    every bracket and array: (3.96e)'s right side, cited verbatim, runs over two lines)."""
+    out, depth = [], 0
+    for t in toks:
+        depth += (t in ("{", "(", "[", "\\begin{bmatrix}")) - (t in ("}", ")", "]",
+                                                                "\\end{bmatrix}"))
+        if depth or t not in ("&", "\\\\"):
+            out.append(t)
+    return out
 
 
 def _split(tokens: list[str]) -> list[list[list[str]]]:
