@@ -163,14 +163,20 @@ def _V_printed():
 
 @equation("3.97b", "Rate of the left inverse L~", section="3.5", expected="does-not-hold",
           cause="erratum",
-          evidence="[V/D, -u_dot] is the rate of the other left inverse [1 + (U - u u^T)/D, "
-                   "-u] of L, not of (3.77c); also tilde lost and the sign of u_dot",
+          evidence="as printed, [V/D u_dot] is the product (V/D) u_dot, a 3-vector, against "
+                   "the 4 x 3 L_dot; read as the block row [V/D, u_dot], the rate of L~ "
+                   "(3 x 4), it still fails: [V/D, -u_dot] is the rate of the other left "
+                   "inverse [1 + (U - u u^T)/D, -u] of L, not of (3.77c); also tilde lost and "
+                   "the sign of u_dot",
           singular="phi = pi (D = 0)",
           latex=r"\dot{\mathbf{L}} = [\mathbf{V}/D \dot{\mathbf{u}}]")
 def rate_of_L_tilde() -> Statement:
-    """``L_dot = [V / D, u_dot]`` as printed (3 x 4); ``V`` from (3.97d), ``D`` from (3.97e).
+    """``L_dot = [V / D u_dot]`` as printed: the product ``(V / D) u_dot`` (3 x 1), ``V`` as
+    (3.97d) prints it ("V and D are defined below"), ``D`` from (3.97e).
 
-    Book: Sec. 3.5, Eq. (3.97b). The printed lhs is ``L_dot`` (4 x 3). Corrected: the
+    Book: Sec. 3.5, Eq. (3.97b). The printed lhs is ``L_dot`` (4 x 3), so the shapes differ;
+    the bracket read as the block row ``[V / D, u_dot]`` (its column separator lost, the
+    rate of ``L~``'s shape) fails too, as the corrected members show. Corrected: the
     rate of ``L~`` (3.77c) is ``[V / D, ((u0_dot / D) u - u_dot) / D]`` with
     ``V = U_dot - (u0_dot / D) U`` (:func:`L_tilde_dot`). The printed ``V`` (3.97d) and
     ``[V / D, -u_dot]`` are the rate of ``[1 + (U - u u^T) / D, -u]``, an equally valid left
@@ -178,7 +184,7 @@ def rate_of_L_tilde() -> Statement:
     vector of ``L``): that member is verified too.
     """
     return Statement(
-        [Rel(Rt.L_dot, sp.BlockMatrix([[Rt.V / Rt.D, Rt.u_dot]]))], rates_model(),
+        [Rel(Rt.L_dot, _V_printed() / Rt.D * Rt.u_dot)], rates_model(),
         corrected=[Rel(Rt.Lt_dot, _book(L_tilde_dot), "rate of L~ (3.77c)"),
                    Rel(Rt.Lt_alt_dot, sp.BlockMatrix([[_V_printed() / Rt.D, -Rt.u_dot]]),
                        "rate of [1 + (U - u u^T)/D, -u]")])

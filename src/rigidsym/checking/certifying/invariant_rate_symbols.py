@@ -196,14 +196,17 @@ _DEFINED = (
      "makes it: D times the 3 x 3 block of the rate of L-tilde (3.77c) term by term (the page's "
      "L-dot of (3.97b) for the tilde's)"),
 )
-#: B where the page prints it before defining it: as (3.96e) prints it, verbatim (its
-#: alignment marks too; "B is defined as", under (3.96c)), cited and held to that display
+#: B and V where the page prints them before defining them: as (3.96e), (3.97d) print them,
+#: verbatim (alignment marks too; "B is defined as" under (3.96c), "V and D are defined
+#: below" under (3.97c)), cited and held to those displays
 _PRINTED_BELOW = (
     (r"\mathbf{B}", r"-2(\mathbf{e} \cdot \boldsymbol{\omega})\mathbf{1} + 2(3 - \cos \phi)"
      r"(\mathbf{e} \cdot \boldsymbol{\omega})\mathbf{e}\mathbf{e}^T - 2(1 + \sin \phi)"
      r"\boldsymbol{\omega}\mathbf{e}^T \\ &\quad - (2 \cos \phi + \sin \phi)\mathbf{e}"
      r"\boldsymbol{\omega}^T - (\sin \phi)[\boldsymbol{\Omega} - (\mathbf{e} \cdot "
      r"\boldsymbol{\omega})\mathbf{E}]", "(3.96e)"),
+    (r"\mathbf{V}", r"\dot{\mathbf{U}} - (\dot{\mathbf{u}}\mathbf{u}^T + \mathbf{u}\dot{"
+     r"\mathbf{u}}^T) - \frac{\dot{u}_0}{D}(\mathbf{U} - \mathbf{u}\mathbf{u}^T)", "(3.97d)"),
 )
 #: the jets of a motion given by its angular velocity (``omega_model``: e, phi, omega atoms)
 _JETS = (
@@ -281,6 +284,11 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
     text = latex + (" ".join(x for r in "NLH" for _, x, _ in _members(r))
                     if _FAMILY.search(latex) else "")
     out: list[dict] = []
+    for g, x, where in _PRINTED_BELOW:  # a glyph the id prints, defined further down
+        if section == "3.5" and re.search(re.escape(g) + r"(?![_'])", latex) and \
+                g not in have and not re.search(re.escape(g) + r"\s*&?\\equiv", latex):
+            out.append({"glyph": g, "latex": x, "printed_as": where})
+            text += " " + x
     grown = True
     while grown:  # a line's glyphs are given too, once
         grown = False
@@ -290,11 +298,6 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
                                     "\\dot{\\mathbf{a}}" not in have)):
                 out.append({"glyph": g, "latex": x, "model": w})
                 text, grown = text + " " + x, True
-    for g, x, where in _PRINTED_BELOW:  # a glyph the id prints, defined further down
-        if section == "3.5" and re.search(re.escape(g) + r"(?![_'])", latex) and \
-                g not in have and not re.search(re.escape(g) + r"\s*&?\\equiv", latex):
-            out.append({"glyph": g, "latex": x, "printed_as": where})
-            text += " " + x
     given = have | {e["glyph"] for e in out}
     if r"\boldsymbol{\Omega}" in text and r"\boldsymbol{\Omega}" not in given and \
             r"\boldsymbol{\omega}" in given:  # Omega, the cross-product matrix of omega
