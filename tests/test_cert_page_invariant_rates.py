@@ -187,3 +187,35 @@ def test_a_glyph_defined_by_an_erratum_read_as_the_page_uses_it(book):
         t["relations"][0]["lhs"][0][1] = f"2*({t['relations'][0]['lhs'][0][1]})"
         for bad in (line_doubled(c, glyph), t):
             assert f"({i})" in rejection(bad, book), i
+
+
+def test_does_not_hold_read_on_every_side_with_glyphs_the_page_defines_below(book):
+    """3.96a and 3.97b print B and V before the page defines them ("B is defined as",
+    "V and D are defined below"): each read as (3.96e), (3.97d) print it, cited; 3.96a's
+    e-dot printed as a row of the block matrix read as that row; 3.97b's [V/D u-dot] as
+    printed, the product; 3.77a's printed v-dot the model's fresh 4-array. So each
+    does-not-hold is read on both printed sides; B's or V's line with a coefficient changed,
+    an entry of the printed right side doubled, the verdict made verified and B cited as
+    printed in a display that does not print it: rejected naming the id."""
+    certs = certificates(["3.77a", "3.96a", "3.97b"])
+    cited = {"3.96a": "\\mathbf{B} as printed in (3.96e)",
+             "3.97b": "\\mathbf{V} as printed in (3.97d)", "3.77a": "relation 1's lhs"}
+    for i, c in certs.items():
+        lines = read_lines(c, book)
+        assert len(lines) == 1 and lines[0].startswith("read from the page: relation 1's lhs")
+        assert " and rhs" in lines[0] and cited[i] in lines[0], (i, lines)
+        t = copy.deepcopy(c)
+        t["relations"][0]["rhs"][-1][0] = f"2*({t['relations'][0]['rhs'][-1][0]})"
+        cases = [t, relabelled(c, "verified")]
+        cases += [line_changed(c, g, old, new) for g, old, new in (
+            ("\\mathbf{B}", "2(3 - \\cos \\phi)", "2(2 + \\cos \\phi)"),
+            ("\\mathbf{V}", "\\frac{\\dot{u}_0}{D}", "\\frac{\\dot{u}_0}{2D}"))
+            if any(e.get("glyph") == g for e in c["symbols"])]
+        for bad in cases:
+            assert f"({i})" in rejection(bad, book), i
+    assert "row of a block matrix" not in read_lines(certs["3.77a"], book)[0]
+    assert "a column in a block matrix 3 wide: read as a row" in read_lines(
+        certs["3.96a"], book)[0]
+    c = copy.deepcopy(certs["3.96a"])
+    next(e for e in c["symbols"] if e["glyph"] == "\\mathbf{B}")["printed_as"] = "(3.96d)"
+    assert "(3.96a)" in rejection(c, book) and "(3.96d)" in rejection(c, book)

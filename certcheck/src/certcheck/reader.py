@@ -447,8 +447,7 @@ class _Reader:
 
 
 def _unaligned(toks: list[str]) -> list[str]:
-    """A table line's tokens without an aligned display's marks (``&``, ``\\\\`` at depth 0:
-    (3.96e)'s right side, cited verbatim, runs over two lines)."""
+    """A table line's tokens without an aligned display's ``&``, ``\\\\`` at depth 0 (3.96e)."""
     o, c = ("{", "(", "[", "\\begin{bmatrix}"), ("}", ")", "]", "\\end{bmatrix}")
     depth = itertools.accumulate((t in o) - (t in c) for t in toks)
     return [t for t, d in zip(toks, depth, strict=True) if d or t not in ("&", "\\\\")]
