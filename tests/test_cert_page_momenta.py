@@ -167,7 +167,8 @@ def test_moving_body_twist_read_where_the_relation_cancels_its_velocity(book):
     lines = read_lines(c, book)
     assert len(lines) == 1 and lines[0].startswith("read from the page: relation 1's lhs")
     assert " and rhs" in lines[0] and "\\mathbf{t} as the model's" in lines[0], lines
-    cases = [line_changed(c, "\\mathbf{t}", "\\boldsymbol{\\omega} \\\\", "\\dot{\\mathbf{c}} \\\\"),
+    cases = [line_changed(c, "\\mathbf{t}", "\\boldsymbol{\\omega} \\\\",
+                          "\\dot{\\mathbf{c}} \\\\"),
              line_changed(c, "\\mathbf{W}", "\\mathbf{O} \\end", "\\mathbf{1} \\end"),
              shifted_sides(c)]
     assert None not in cases
