@@ -100,7 +100,8 @@ def twist_symbols(have: set, section: str) -> list[dict]:
         where it has ``Q-dot``, ``t`` where it has ``Q-dot`` and ``c-dot`` or ``o-dot``, the
         others only where it has the moving body (``omega``, ``c-dot``, ``c-ddot``,
         ``omega-dot``, ``I_C``, ``p-dot``, ``p-ddot`` through the body line); in section
-        3.4.2 ``v``, ``t``, ``t_A`` and ``t_P`` (where ``v_P`` is given); in section 3.5 ``v``, ``v-dot``, ``t``, ``t-dot``; ``[]`` elsewhere.
+        3.4.2 ``v``, ``t``, ``t_A`` and ``t_P`` (where ``v_P`` is given); in section 3.5
+        ``v``, ``v-dot``, ``t``, ``t-dot``; ``[]`` elsewhere.
     """
     need = {"\\boldsymbol{\\omega}", "\\dot{\\boldsymbol{\\omega}}", "\\dot{\\mathbf{c}}",
             "\\ddot{\\mathbf{c}}", "\\mathbf{I}_C", "\\boldsymbol{\\Omega}", "\\ddot{\\mathbf{o}}"}
