@@ -28,7 +28,7 @@ EVERY_SIDE = ["3.76a", "3.76b", "3.76c", "3.76d", "3.78", "3.79", "3.80a", "3.80
               "3.83b", "3.86", "3.91", "3.92", "3.93", "3.95a", "3.95b", "3.96b", "3.96c",
               "3.97e"]
 #: does-not-hold ids with a side read through the lines: the printed relation still fails
-FAILING = ["3.94", "3.96a", "3.97a", "3.97b", "3.97c"]
+FAILING = ["3.77a", "3.94", "3.96a", "3.97a", "3.97b", "3.97c"]
 #: tamperings that change no value (measured; why): the zero matrices doubled; t = S s-dot
 #: and t-dot = S s-ddot + S-dot s-dot hold under every member's lines (the swap reads the
 #: same t); in 3.91 v meets only T-dot's zero block; in 3.93 H-tilde-dot eta-dot = 0
@@ -193,13 +193,13 @@ def test_does_not_hold_read_on_every_side_with_glyphs_the_page_defines_below(boo
     """3.96a and 3.97b print B and V before the page defines them ("B is defined as",
     "V and D are defined below"): each read as (3.96e), (3.97d) print it, cited; 3.96a's
     e-dot printed as a row of the block matrix read as that row; 3.97b's [V/D u-dot] as
-    printed, the product; 3.77a's printed v-dot the model's fresh 4-array. So each
+    printed, the product (3.77a's printed v-dot, the model's fresh 4-array, in slow). So each
     does-not-hold is read on both printed sides; B's or V's line with a coefficient changed,
     an entry of the printed right side doubled, the verdict made verified and B cited as
     printed in a display that does not print it: rejected naming the id."""
-    certs = certificates(["3.77a", "3.96a", "3.97b"])
+    certs = certificates(["3.96a", "3.97b"])
     cited = {"3.96a": "\\mathbf{B} as printed in (3.96e)",
-             "3.97b": "\\mathbf{V} as printed in (3.97d)", "3.77a": "relation 1's lhs"}
+             "3.97b": "\\mathbf{V} as printed in (3.97d)"}
     for i, c in certs.items():
         lines = read_lines(c, book)
         assert len(lines) == 1 and lines[0].startswith("read from the page: relation 1's lhs")
@@ -213,7 +213,6 @@ def test_does_not_hold_read_on_every_side_with_glyphs_the_page_defines_below(boo
             if any(e.get("glyph") == g for e in c["symbols"])]
         for bad in cases:
             assert f"({i})" in rejection(bad, book), i
-    assert "row of a block matrix" not in read_lines(certs["3.77a"], book)[0]
     assert "a column in a block matrix 3 wide: read as a row" in read_lines(
         certs["3.96a"], book)[0]
     c = copy.deepcopy(certs["3.96a"])
