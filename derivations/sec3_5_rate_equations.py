@@ -35,9 +35,18 @@ c_phi, s_phi = sp.cos(phi), sp.sin(phi)
 
 
 # --------------------------------------------------------------------------- (3.96)
+def _B_printed():
+    """``B`` as printed in (3.96e), in the motion's ``e``, ``phi``, ``omega`` (3 x 3, rad/s)."""
+    ew = _dot(e, omega)
+    return (-2 * ew * I3 + 2 * (3 - c_phi) * ew * e * e.T - 2 * (1 + s_phi) * omega * e.T
+            - (2 * c_phi + s_phi) * e * omega.T - s_phi * (Omega - ew * E))
+
+
 @equation("3.96a", "Rate of N", section="3.5", expected="does-not-hold", cause="unknown",
           evidence="the factor 1/(4(1 - cos phi)) belongs to B alone: printed, it multiplies "
-                   "the last row e_dot^T of N_dot as well (the rate of the row e^T of N)",
+                   "the last row e_dot^T of N_dot as well (the rate of the row e^T of N); "
+                   "with B as (3.96e) prints it (a book erratum there) the upper block fails "
+                   "too",
           singular="phi = 0 (mod 2 pi)",
           latex=r"\dot{\mathbf{N}} = \frac{1}{4(1 - \cos \phi)} \begin{bmatrix} \mathbf{B} "
                 r"\\ \dot{\mathbf{e}} \end{bmatrix}")
@@ -46,13 +55,14 @@ def rate_of_N() -> Statement:
 
     Book: Sec. 3.5, Eq. (3.96a). The printed ``e_dot`` sits in the bottom row of a 4 x 3
     block, so it is read as the row ``e_dot^T`` (the only reading the block admits); the
-    verdict does not depend on it. ``B`` is what this equation introduces: 4 (1 - cos phi)
-    times the upper block of ``N_dot``. Corrected: ``N_dot = [B / (4 (1 - cos phi));
-    e_dot^T]``, with ``B`` in closed form from :func:`B_matrix` (corrected (3.96e)).
+    verdict does not depend on it. ``B`` is the page's: "B is defined as" (3.96e), so the
+    printed relation has (3.96e)'s ``B`` (:func:`_B_printed`). Corrected: ``N_dot = [B /
+    (4 (1 - cos phi)); e_dot^T]``, with ``B`` in closed form from :func:`B_matrix`
+    (corrected (3.96e)).
     """
     k = 1 / (4 * (1 - c_phi))
     return Statement(
-        [Rel(Rt.N_dot, k * sp.BlockMatrix([[Rt.B], [e_dot.T]]))], omega_model(),
+        [Rel(Rt.N_dot, k * sp.BlockMatrix([[_B_printed()], [e_dot.T]]))], omega_model(),
         corrected=[Rel(Rt.N_dot, _book(N_matrix_dot), "closed form, B written out")])
 
 
@@ -117,10 +127,7 @@ def auxiliary_matrix_B() -> Statement:
     (``nu_dot = N omega`` for every ``omega``), so no other reading makes the printed form
     hold. Corrected: :func:`B_matrix`.
     """
-    ew = _dot(e, omega)
-    printed = (-2 * ew * I3 + 2 * (3 - c_phi) * ew * e * e.T - 2 * (1 + s_phi) * omega * e.T
-               - (2 * c_phi + s_phi) * e * omega.T - s_phi * (Omega - ew * E))
-    return Statement([Rel(Rt.B, printed)], omega_model(),
+    return Statement([Rel(Rt.B, _B_printed())], omega_model(),
                      corrected=[Rel(Rt.B, _book(B_matrix))])
 
 
@@ -156,14 +163,20 @@ def _V_printed():
 
 @equation("3.97b", "Rate of the left inverse L~", section="3.5", expected="does-not-hold",
           cause="erratum",
-          evidence="[V/D, -u_dot] is the rate of the other left inverse [1 + (U - u u^T)/D, "
-                   "-u] of L, not of (3.77c); also tilde lost and the sign of u_dot",
+          evidence="as printed, [V/D u_dot] is the product (V/D) u_dot, a 3-vector, against "
+                   "the 4 x 3 L_dot; read as the block row [V/D, u_dot], the rate of L~ "
+                   "(3 x 4), it still fails: [V/D, -u_dot] is the rate of the other left "
+                   "inverse [1 + (U - u u^T)/D, -u] of L, not of (3.77c); also tilde lost and "
+                   "the sign of u_dot",
           singular="phi = pi (D = 0)",
           latex=r"\dot{\mathbf{L}} = [\mathbf{V}/D \dot{\mathbf{u}}]")
 def rate_of_L_tilde() -> Statement:
-    """``L_dot = [V / D, u_dot]`` as printed (3 x 4); ``V`` from (3.97d), ``D`` from (3.97e).
+    """``L_dot = [V / D u_dot]`` as printed: the product ``(V / D) u_dot`` (3 x 1), ``V`` as
+    (3.97d) prints it ("V and D are defined below"), ``D`` from (3.97e).
 
-    Book: Sec. 3.5, Eq. (3.97b). The printed lhs is ``L_dot`` (4 x 3). Corrected: the
+    Book: Sec. 3.5, Eq. (3.97b). The printed lhs is ``L_dot`` (4 x 3), so the shapes differ;
+    the bracket read as the block row ``[V / D, u_dot]`` (its column separator lost, the
+    rate of ``L~``'s shape) fails too, as the corrected members show. Corrected: the
     rate of ``L~`` (3.77c) is ``[V / D, ((u0_dot / D) u - u_dot) / D]`` with
     ``V = U_dot - (u0_dot / D) U`` (:func:`L_tilde_dot`). The printed ``V`` (3.97d) and
     ``[V / D, -u_dot]`` are the rate of ``[1 + (U - u u^T) / D, -u]``, an equally valid left
@@ -171,7 +184,7 @@ def rate_of_L_tilde() -> Statement:
     vector of ``L``): that member is verified too.
     """
     return Statement(
-        [Rel(Rt.L_dot, sp.BlockMatrix([[Rt.V / Rt.D, Rt.u_dot]]))], rates_model(),
+        [Rel(Rt.L_dot, _V_printed() / Rt.D * Rt.u_dot)], rates_model(),
         corrected=[Rel(Rt.Lt_dot, _book(L_tilde_dot), "rate of L~ (3.77c)"),
                    Rel(Rt.Lt_alt_dot, sp.BlockMatrix([[_V_printed() / Rt.D, -Rt.u_dot]]),
                        "rate of [1 + (U - u u^T)/D, -u]")])

@@ -199,3 +199,25 @@ def test_chapter_section_3_2_read_through_the_lines_and_tamperings_rejected(tmp_
         other = "3.8" if i != "3.8" else "3.12"
         for t in _tamperings(c, book, other):
             assert f"({i})" in rejection(t, book), i
+
+
+def test_displaced_points_read_where_the_relation_cancels_the_translation():
+    """3.1 (p' - a' = Q(p - a)): the relation cancels the displacement's translation c, yet
+    the certificate keeps c as atoms, so p' and a' read as the model's displaced points
+    (x' = Q x + c): both sides read. a''s line with 2c, both sides shifted and the verdict
+    a definition: rejected naming the id."""
+    from test_cert_page_momenta import certificates, line_changed, read_lines
+
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    book = book_text()
+    c = certificates(["3.1"])["3.1"]
+    lines = read_lines(c, book)
+    assert len(lines) == 1 and lines[0].startswith("read from the page: relation 1's lhs")
+    assert " and rhs" in lines[0] and "\\mathbf{a}' as the model's" in lines[0], lines
+    assert "c_1" in {n for g in c["atoms"] for n in g["names"]}
+    cases = [line_changed(c, "\\mathbf{a}'", "\\mathbf{c}", "2\\mathbf{c}"), shifted_sides(c),
+             relabelled(c, "definition")]
+    assert None not in cases
+    for t in cases:
+        assert "(3.1)" in rejection(t, book)

@@ -89,3 +89,25 @@ def test_sections_3_3_to_3_4_2_read_through_the_lines_and_tamperings_rejected(bo
         assert lines and (any(read) if i in PARTLY else all(read)), (i, lines)
         for t in filter(None, _cases(c, lines, book, ids[k - 1])):
             assert f"({i})" in rejection(t, book), i
+
+
+@pytest.mark.slow
+def test_a_brace_that_fails_read_as_the_does_not_hold_printed_relation(book):
+    """3.59 (p-dot = brace - brace): its certificate proves the p-dot_perp brace false (the
+    minus sign outside the brace); the brace is a printed relation of the page, read in
+    either order with p-dot_perp the component of p-dot normal to omega and p, a the body
+    point's and the reference point's (a kept as the certificate's atoms though the relation
+    cancels it): both sides read. Each line doubled, the right side doubled, both sides
+    shifted, another id's text and the verdict verified: rejected naming the id (~20 s: the
+    quaternion motion's differing sides)."""
+    c = certificates(["3.59"])["3.59"]
+    lines = read_lines(c, book)
+    assert len(lines) == 1 and lines[0].startswith("read from the page: relation 1's lhs")
+    assert " and rhs" in lines[0] and "\\dot{\\mathbf{p}}_{\\perp} as the model's" in lines[0]
+    assert {g["group"] for g in c["atoms"]} >= {"s34_a_1", "s34_r_1"}
+    cases = [line_doubled(c, "\\dot{\\mathbf{p}}_{\\perp}"), line_doubled(c, "\\mathbf{p}"),
+             doubled_rhs(c), shifted_sides(c), another_printed_text(c, book, "3.60"),
+             relabelled(c, "verified")]
+    assert None not in cases
+    for t in cases:
+        assert "(3.59)" in rejection(t, book)

@@ -155,3 +155,24 @@ def test_twist_rate_at_a_body_point_read_firmly_and_tamperings_rejected(book):
     assert None not in cases
     for t in cases:
         assert "(3.90)" in rejection(t, book)
+
+
+@pytest.mark.slow
+def test_moving_body_twist_read_where_the_relation_cancels_its_velocity(book):
+    """3.141 (W t = 0): the relation cancels t's c-dot (W's lower blocks are O), yet the
+    certificate keeps the body's o as atoms, so t = [omega; c-dot] and W as printed in
+    (3.140) read the left side and the page's bare 0 takes its size: read on every side.
+    t's line with c-dot for omega, W's with 1 for its lower-right O and both sides shifted
+    (each a change that makes W t non-zero; doubling omega or Omega would not): rejected
+    (~3 s: the moving body's rotation)."""
+    c = certificates(["3.141"])["3.141"]
+    lines = read_lines(c, book)
+    assert len(lines) == 1 and lines[0].startswith("read from the page: relation 1's lhs")
+    assert " and rhs" in lines[0] and "\\mathbf{t} as the model's" in lines[0], lines
+    cases = [line_changed(c, "\\mathbf{t}", "\\boldsymbol{\\omega} \\\\",
+                          "\\dot{\\mathbf{c}} \\\\"),
+             line_changed(c, "\\mathbf{W}", "\\mathbf{O} \\end", "\\mathbf{1} \\end"),
+             shifted_sides(c)]
+    assert None not in cases
+    for t in cases:
+        assert "(3.141)" in rejection(t, book)

@@ -1,25 +1,17 @@
 """A second reader of the printed LaTeX, sharing no code with rigidsym's: it reads an id's
-printed text (found in the book by :mod:`certcheck.book`) under the certificate's symbol
-table and checks that what the certificate proves is what is printed.
-
-The symbol table (``cert["symbols"]``) has one entry per book glyph, each a line a referee
-holds against the page: ``{"glyph": "\\mathbf{e}", "kind": "unit", "atoms": ["e_1", "e_2",
-"e_3"]}`` (an atom group of the certificate, with its kind), ``{"glyph": "\\mathbf{E}",
-"cpm_of": "\\mathbf{e}"}`` (the cross-product matrix of another glyph) or ``{"glyph":
-"\\mathbf{B}", "defined_by": "3.96e"}`` (a citation: that side is the certificate's, not
-read here). The notation read: bold and Greek glyphs with dots, primes and subscripts,
-``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition (matrix products), ``\\frac``, ``/``,
-``\\cos``, ``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``,
-brackets and ``bmatrix`` blocks, ``\\|x\\|^2`` (a bare norm, a square root, is not read),
-integer powers of a square matrix, ``\\underbrace{X}_{...}`` (X), and ``[X]_{K}``: X's
-components in the frame K, each glyph G of X read from the table's line ``[G]_{K}``. A
-table line ``{"glyph", "latex", "model"}`` is the certificate's model of a glyph the page
-defines in words, in the table's glyphs; it is read firmly. An integral over the body is
-read through the table's body line (:meth:`_Reader.integral`). ``[G]`` with no frame named
-(3.40's ``[\\mathbf{Q}]``) is not read. A side the reader cannot read is reported, never passed.
-
-Each read side becomes a matrix of texts in the certificate's grammar
-(:mod:`certcheck.arrays`); :mod:`certcheck.compare` holds it against the certificate's.
+printed text (found by :mod:`certcheck.book`) under the certificate's symbol table, one
+line per book glyph: an atom group with its kind (``{"glyph": "\\mathbf{e}", "kind":
+"unit", "atoms": [...]}``), a cross-product matrix (``"cpm_of"``), a formula printed
+elsewhere (``"printed_as"``, its alignment marks dropped) or the model's words for a glyph
+the page defines in words (``"model"``), both read firmly, or a citation (``"defined_by"``:
+not read here). The notation: bold and Greek glyphs with dots, primes and subscripts,
+``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition, ``\\frac``, ``/``, ``\\cos``,
+``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``, brackets and
+``bmatrix`` blocks, ``\\|x\\|^2`` (not a bare norm), integer powers of a square matrix,
+``\\underbrace{X}_{...}`` (X), ``[X]_{K}`` (each glyph G of X read from the line
+``[G]_{K}``; ``[G]`` with no frame, 3.40's, is not read) and the integral over the body
+(:meth:`_Reader.integral`). A side not read is reported, never passed; a side read, a matrix
+of grammar texts (:mod:`certcheck.arrays`), :mod:`certcheck.compare` holds to the certificate's.
 """
 
 from __future__ import annotations
@@ -334,14 +326,19 @@ class _Reader:
                     loose = loose or h is None or ws[k] is None
                     r[k] = M([[("1" if i == j and b == "1" else "0") for j in range(ws[k] or 3)]
                               for i in range(h or 3)])
+        width = max(sum(b.shape[1] for b in r) for r in rows)
+        for k, r in enumerate(rows):  # [B \\ e-dot] (3.96a): a row printed as a column, the
+            if len(rows) > 1 and len(r) == 1 and r[0].shape == (width, 1) != (1, 1):  # only
+                rows[k] = [r[0].t()]  # reading the block matrix admits: its ^T lost; cited
+                self.cited.append(f"a column in a block matrix {width} wide: read as a row")
         out = []
         for blocks in rows:
             h = blocks[0].shape[0]
             if any(b.shape[0] != h for b in blocks):
-                raise NotRead("blocks of a row differ in height")
+                raise NotRead("no array as printed: blocks of a row differ in height")
             out += [sum((b.rows[k] for b in blocks), []) for k in range(h)]
         if len({len(r) for r in out}) != 1:
-            raise NotRead("rows of a block matrix differ in width")
+            raise NotRead("no array as printed: rows of a block matrix differ in width")
         return M(out, loose)
 
     def glyph(self) -> M:
@@ -429,7 +426,7 @@ class _Reader:
             return v
         if "latex" in entry:  # printed elsewhere (another chapter), or the model's own
             n = len(self.cited)
-            inner = _Reader(tokens(str(entry["latex"])), self.table,
+            inner = _Reader(_unaligned(tokens(str(entry["latex"]))), self.table,
                             {k: v for k, v in self.defs.items() if k != key}, self.cited,
                             self.lets, self.seen)
             value = self.named(key, inner.chain()[0], inner.used | {key})
@@ -447,6 +444,13 @@ class _Reader:
             n = 3 if len(atoms) == 9 else 4
             return M([atoms[n * i:n * i + n] for i in range(n)])
         return scalar(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
+
+
+def _unaligned(toks: list[str]) -> list[str]:
+    """A table line's tokens without an aligned display's ``&``, ``\\\\`` at depth 0 (3.96e)."""
+    o, c = ("{", "(", "[", "\\begin{bmatrix}"), ("}", ")", "]", "\\end{bmatrix}")
+    depth = itertools.accumulate((t in o) - (t in c) for t in toks)
+    return [t for t, d in zip(toks, depth, strict=True) if d or t not in ("&", "\\\\")]
 
 
 def _split(tokens: list[str]) -> list[list[list[str]]]:

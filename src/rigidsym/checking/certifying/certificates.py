@@ -207,6 +207,9 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     for _, _, lhs, rhs, _ in sides:
         for e in entries_of(lhs) + entries_of(rhs):
             pr.count(sp.sympify(e))
+    for r, role, _, _, _ in sides:  # every printed glyph's atoms, also where the relation
+        if role == "printed":       # cancels them (p' - a' = Q(p - a): c), for the table
+            _glyph_atoms(pr, r, st.model)
     rels = []
     for r, role, lhs, rhs, ev in sides:
         if ev is None:
@@ -237,6 +240,28 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     if verdict == "does-not-hold":
         out["cause"] = cause_record(eq)
     return out
+
+
+def _glyph_atoms(pr: StatementPrinter, rel, model: dict) -> None:
+    """Name in ``pr`` the atoms of the model's value of each glyph of ``rel`` (a printed
+    relation), so that the certificate's groups hold them where the relation cancels them
+    and the symbol table can bind the glyph (an atom of a kind the checker does not know is
+    left out: its glyph stays unread)."""
+    from sympy.core.function import AppliedUndef
+
+    from rigidsym.algebra.symbols import TIME
+
+    for side in (rel.lhs, rel.rhs):
+        for g in sorted(getattr(side, "free_symbols", set()), key=str):
+            if g not in model:
+                continue
+            for e in entries_of(explicit(g, model)):
+                for a in sorted(sp.sympify(e).atoms(sp.Symbol, AppliedUndef), key=str):
+                    if a != TIME:
+                        try:
+                            pr.atom(a)
+                        except Unprintable:
+                            pass
 
 
 def constants_only(side) -> bool:
@@ -277,6 +302,11 @@ def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
 #: (2.49; Theorem 3.3.1 and (3.39): Omega is skew with axial vector omega)
 _CPM_BY_SECTION = {"3.2.2": ("a", "b"), "3.4.2": ("a", "p"), "3.7": ("a", "p"),
                    "3.8": ("r", "a", "c")}
+
+#: the model's fresh arrays for a printed glyph whose printed shape admits no product: the
+#: printed v-dot of (3.77a), a 4-array (N-tilde is 3 x 4), the conversion's garble of
+#: nu-dot (``derivations/sec3_4_2_rates.py``); its atoms ``sec342_vdot_1`` ... ``_4``
+_FRESH_ARRAYS = {"sec342_vdot": "\\dot{\\mathbf{v}}"}
 
 _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa", "lambda",
           "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega"}
@@ -330,8 +360,13 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                 cpm.setdefault(f"\\mathbf{{{x}}}", []).append(f"\\mathbf{{{x.upper()}}}")
     vectors: dict = {}
     scalars = []
+    fresh: dict = {}  # a printed glyph the model writes as a fresh array of its own shape
     for g in atoms:
         names = g["names"]
+        if len(names) == 1 and (m := re.fullmatch(r"(.+)_(\d)", names[0])) and \
+                m.group(1) in _FRESH_ARRAYS and g["kind"] == "free":
+            fresh.setdefault(m.group(1), []).append(names[0])
+            continue
         if len(names) == 3 and all(re.fullmatch(rf"{re.escape(g['group'])}_[123]", n)
                                    for n in names):
             vectors[g["group"]] = (g["kind"], names, g["timed"])
@@ -350,6 +385,9 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
                 out.append({"glyph": f"\\{dots}{{{glyph}}}", **entry,
                             "atoms": [a + primes for a in entry["atoms"]]})
 
+    for base, names in sorted(fresh.items()):
+        out.append({"glyph": _FRESH_ARRAYS[base], "kind": "free",
+                    "atoms": sorted(names, key=lambda a: int(a.rsplit("_", 1)[1]))})
     for base, (kind, names, timed) in sorted(vectors.items()):
         if sorted(names) != [f"{base}_{k}" for k in (1, 2, 3)]:
             continue

@@ -83,6 +83,13 @@ _V0 = (r"\mathbf{v}_0", rf"{_PAR}\dot{{\mathbf{{a}}}}", "minimum-magnitude veloc
 _BODY_VELOCITY = (r"\dot{\mathbf{p}}", r"\dot{\mathbf{a}} + \dot{\mathbf{Q}}\mathbf{r}",
                   "velocity of the body point P = a + Q r, r constant (the words before "
                   "(3.47): any point of the body)")
+#: (3.59)'s braces: p-dot's components along and normal to omega, p-dot the body point's
+_BRACES = ((r"\dot{\mathbf{p}}_{\parallel}", rf"{_PAR}\dot{{\mathbf{{p}}}}", "component of "
+            "p-dot along omega, e e^T p-dot with e = omega / ||omega|| ((2.6a); the words after "
+            "(3.59): the axial component)"),
+           (r"\dot{\mathbf{p}}_{\perp}", rf"(\mathbf{{1}} - {_PAR})\dot{{\mathbf{{p}}}}",
+            "component of p-dot normal to omega, (1 - e e^T) p-dot with e = omega / ||omega|| "
+            "((2.6b); the words after (3.59): the normal component)"))
 #: the ISA point p: a generic one (alpha in the table), or (3.63)'s, nearest A
 _ON_ISA = (r"\mathbf{p}'_0 + \alpha\boldsymbol{\omega}", "point of the ISA, p'_0 + alpha "
            "omega, alpha free (the words after (3.63): alpha omega added to an ISA point)")
@@ -155,6 +162,8 @@ def instant_screw_symbols(have: set, section: str, latex: str,
         rows += [_V0] if "\\mathbf{v}_0 =" in latex else []
         if "\\mathbf{r}" in have and "\\dot{\\mathbf{p}} \\cdot" in latex:  # (3.53), not
             rows.append(_BODY_VELOCITY)  # (3.59): its certificate's relation is a brace's
+        if "\\dot{\\mathbf{p}}_{\\perp}" in latex and "\\mathbf{r}" in have:  # (3.59)
+            rows += _BRACES
         if "\\mathbf{a}" in have and "\\mathbf{r}" not in have:
             rows[:0] = _ISA[:4]
             if "\\alpha" in have or "\\mathbf{p} = \\mathbf{r}" in latex:

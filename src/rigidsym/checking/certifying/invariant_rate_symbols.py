@@ -42,7 +42,9 @@ representation chosen" (after (3.79)), ``F-tilde`` one of ``N-tilde``, ... (afte
 ``V`` is ``D`` times the 3 x 3 block of the rate of ``L-tilde`` (the page's ``L-dot`` of
 (3.97b) for the tilde's); ``u-dot``, ``u_0-dot`` the rates of (3.95b), and in section 3.5
 ``U``, ``U-dot`` the cross-product matrices of ``u``, ``u-dot`` ("with U denoting, now, the
-cross-product matrix of u", under (3.97e)). Not given: ``V`` in (3.97b), which prints
+cross-product matrix of u", under (3.97e)). Where (3.96a) prints ``B`` before the page
+defines it ("B is defined as"), ``B`` as (3.96e) prints it, cited (``printed_as``), and
+``Omega`` the cross-product matrix of ``omega``. Not given: ``V`` in (3.97b), which prints
 ``[V/D u-dot]``, a product that reads 3 x 1 where the conversion lost a column separator.
 """
 
@@ -194,6 +196,18 @@ _DEFINED = (
      "makes it: D times the 3 x 3 block of the rate of L-tilde (3.77c) term by term (the page's "
      "L-dot of (3.97b) for the tilde's)"),
 )
+#: B and V where the page prints them before defining them: as (3.96e), (3.97d) print them,
+#: verbatim (alignment marks too; "B is defined as" under (3.96c), "V and D are defined
+#: below" under (3.97c)), cited and held to those displays
+_PRINTED_BELOW = (
+    (r"\mathbf{B}", r"-2(\mathbf{e} \cdot \boldsymbol{\omega})\mathbf{1} + 2(3 - \cos \phi)"
+     r"(\mathbf{e} \cdot \boldsymbol{\omega})\mathbf{e}\mathbf{e}^T - 2(1 + \sin \phi)"
+     r"\boldsymbol{\omega}\mathbf{e}^T \\ &\quad - (2 \cos \phi + \sin \phi)\mathbf{e}"
+     r"\boldsymbol{\omega}^T - (\sin \phi)[\boldsymbol{\Omega} - (\mathbf{e} \cdot "
+     r"\boldsymbol{\omega})\mathbf{E}]", "(3.96e)"),
+    (r"\mathbf{V}", r"\dot{\mathbf{U}} - (\dot{\mathbf{u}}\mathbf{u}^T + \mathbf{u}\dot{"
+     r"\mathbf{u}}^T) - \frac{\dot{u}_0}{D}(\mathbf{U} - \mathbf{u}\mathbf{u}^T)", "(3.97d)"),
+)
 #: the jets of a motion given by its angular velocity (``omega_model``: e, phi, omega atoms)
 _JETS = (
     (r"\dot{\mathbf{e}}", r"[\sin \phi / (2(1 - \cos \phi))] (\mathbf{1} - \mathbf{e}"
@@ -255,8 +269,9 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
             line (or a member's line, :func:`member_symbols`) names, are given.
 
     Returns:
-        Entries ``{"glyph", "latex", "model"}`` (``{"glyph", "cpm_of"}`` for ``P`` and
-        ``R-dot``; ``{"glyph", "latex", "model", "reads_as": "text"}`` for
+        Entries ``{"glyph", "latex", "model"}`` (``{"glyph", "cpm_of"}`` for ``P``,
+        ``R-dot`` and ``Omega``; ``{"glyph", "latex", "printed_as"}`` for (3.96a)'s ``B``,
+        (3.96e)'s text verbatim; ``{"glyph", "latex", "model", "reads_as": "text"}`` for
         ``\\mathbf{1tr}``: certcheck reads the glyph as the text ``latex`` in its place),
         only for glyphs the table lacks.
     """
@@ -269,6 +284,11 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
     text = latex + (" ".join(x for r in "NLH" for _, x, _ in _members(r))
                     if _FAMILY.search(latex) else "")
     out: list[dict] = []
+    for g, x, where in _PRINTED_BELOW:  # a glyph the id prints, defined further down
+        if section == "3.5" and re.search(re.escape(g) + r"(?![_'])", latex) and \
+                g not in have and not re.search(re.escape(g) + r"\s*&?\\equiv", latex):
+            out.append({"glyph": g, "latex": x, "printed_as": where})
+            text += " " + x
     grown = True
     while grown:  # a line's glyphs are given too, once
         grown = False
@@ -279,6 +299,9 @@ def invariant_rate_symbols(have: set, section: str, latex: str) -> list[dict]:
                 out.append({"glyph": g, "latex": x, "model": w})
                 text, grown = text + " " + x, True
     given = have | {e["glyph"] for e in out}
+    if r"\boldsymbol{\Omega}" in text and r"\boldsymbol{\Omega}" not in given and \
+            r"\boldsymbol{\omega}" in given:  # Omega, the cross-product matrix of omega
+        out.append({"glyph": r"\boldsymbol{\Omega}", "cpm_of": r"\boldsymbol{\omega}"})
     if section == "3.4.2" and r"\mathbf{P}" in text and r"\mathbf{P}" not in given and \
             r"\mathbf{p}" in given:  # "A and P denote the cross-product matrices of a and p"
         out.append({"glyph": r"\mathbf{P}", "cpm_of": r"\mathbf{p}"})

@@ -97,10 +97,11 @@ def twist_symbols(have: set, section: str) -> list[dict]:
 
     Returns:
         Entries ``{"glyph", "latex", "model"}``, only for glyphs the table lacks: ``W``
-        where it has ``Q-dot``, the others only where it has the moving body (``omega``,
-        ``c-dot``, ``c-ddot``, ``omega-dot``, ``I_C``, ``p-dot``, ``p-ddot`` through the body
-        line); in section 3.4.2 ``v``, ``t``, ``t_A`` and ``t_P`` (where ``v_P`` is given);
-        in section 3.5 ``v``, ``v-dot``, ``t``, ``t-dot``; ``[]`` elsewhere.
+        where it has ``Q-dot``, ``t`` where it has ``Q-dot`` and ``c-dot`` or ``o-dot``, the
+        others only where it has the moving body (``omega``, ``c-dot``, ``c-ddot``,
+        ``omega-dot``, ``I_C``, ``p-dot``, ``p-ddot`` through the body line); in section
+        3.4.2 ``v``, ``t``, ``t_A`` and ``t_P`` (where ``v_P`` is given); in section 3.5
+        ``v``, ``v-dot``, ``t``, ``t-dot``; ``[]`` elsewhere.
     """
     need = {"\\boldsymbol{\\omega}", "\\dot{\\boldsymbol{\\omega}}", "\\dot{\\mathbf{c}}",
             "\\ddot{\\mathbf{c}}", "\\mathbf{I}_C", "\\boldsymbol{\\Omega}", "\\ddot{\\mathbf{o}}"}
@@ -111,6 +112,9 @@ def twist_symbols(have: set, section: str) -> list[dict]:
         return [{"glyph": g, "latex": x, "model": w} for g, x, w in _AT_P if g not in have]
     if not section.startswith("3.8"):
         return []
-    body = need <= have  # W needs only Omega (its printed definition (3.44) if not a line)
+    body = need <= have  # W needs only Omega (its printed definition (3.44) if not a line),
+    spin = "\\dot{\\mathbf{Q}}" in have  # t only omega (3.45) and c-dot (3.141: W t = 0;
+    # c-dot the line of the moving body's o-dot)
     return [{"glyph": g, "latex": x, "model": w} for g, x, w in _LINES if g not in have
-            and (body or g == "\\mathbf{W}" and "\\dot{\\mathbf{Q}}" in have)]
+            and (body or g == "\\mathbf{W}" and spin or g == "\\mathbf{t}" and spin and
+                 {"\\dot{\\mathbf{c}}", "\\dot{\\mathbf{o}}"} & have)]
