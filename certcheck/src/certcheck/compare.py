@@ -1,8 +1,10 @@
 """certcheck's comparison: each printed side read (:func:`certcheck.reader.read_relations`)
-is held to the certificate's under the kinds' hypotheses (:func:`certcheck.check.check_identity`):
-one read firmly that differs is a rejection, one matched (through an equation of the page, or
-one of several models) is NOT READ then. ``X^{-1} = Y`` marked ``restated`` is read as X, Y;
-``\\underbrace{X}_{Y}`` as ``X = Y`` (extra relations, or a does-not-hold's printed one)."""
+is held to the certificate's as a rational function under the kinds' hypotheses
+(:func:`certcheck.check.check_identity`): one read firmly that differs is a rejection, one
+matched through an equation of the page or one of several models is NOT READ when it
+differs. ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y;
+``\\underbrace{X}_{Y}`` as ``X = Y``, where the certificate has that many more relations
+or a does-not-hold's one printed relation may be it."""
 
 from __future__ import annotations
 
@@ -107,10 +109,6 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
     for k, rel in enumerate(printed):
         read, matched = [], []
         for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
-            if isinstance(mine, NotRead) and not held and str(mine).startswith("no array") \
-                    and rel["evidence"]["type"] in ("shape", "counterexample"):  # (3.94)
-                read.append(f"{side} ({mine}: the printed relation cannot hold)")
-                continue
             if isinstance(mine, NotRead):
                 out.append(f"NOT READ: relation {k + 1}'s {side} ({mine}); the certificate's "
                            "word")
@@ -138,8 +136,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                 continue
             if mine.shape != (len(theirs), len(theirs[0])):  # a 1, O or 0 sized so too
                 raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
-                                 f"the page's reads {mine.shape[0]}x{mine.shape[1]}, the "
-                                 f"certificate's {len(theirs)}x{len(theirs[0])}")
+                                 f"the page's reads "
+                                 f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
+                                 f"{len(theirs)}x{len(theirs[0])}")
             try:
                 if not whole:
                     check_identity(st := probe([{"label": f"page {side}", "role": "printed",
@@ -155,7 +154,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                                "); the certificate's word")
                     continue
                 raise CheckError(f"({cert.get('id')}) the printed {side} of relation {k + 1} is "
-                                 f"not the certificate's: {exc}") from None
+                                 f"not the "
+                                 f"certificate's: {exc}") from None
             tentative = soft or any(c.endswith("an equation") for c in cited)
             (matched if tentative else read).append(
                 side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))

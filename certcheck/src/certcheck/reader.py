@@ -335,10 +335,10 @@ class _Reader:
         for blocks in rows:
             h = blocks[0].shape[0]
             if any(b.shape[0] != h for b in blocks):
-                raise NotRead("no array as printed: blocks of a row differ in height")
+                raise NotRead("blocks of a row differ in height")
             out += [sum((b.rows[k] for b in blocks), []) for k in range(h)]
         if len({len(r) for r in out}) != 1:
-            raise NotRead("no array as printed: rows of a block matrix differ in width")
+            raise NotRead("rows of a block matrix differ in width")
         return M(out, loose)
 
     def glyph(self) -> M:
