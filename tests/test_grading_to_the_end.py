@@ -328,6 +328,21 @@ def test_a_class_graded_to_the_end(tmp_path, capsys):
         assert p["data"]["I_A"] != p["data"]["I_B"]
 
 
+@pytest.mark.slow      # a class of thirty made and graded: about 90 s of CPU
+def test_a_class_of_thirty_the_lms_marks_as_the_gradebook(tmp_path, capsys):
+    """Thirty students on the five problems (the spec's default policy: no slips along
+    the way), each box a member of its class, blank, slipped or rounded: the gradebook is
+    the test's own grader's, and STACK's mark of every problem of every student (stack.xml
+    read by the independent reader) and Moodle's import of gradebook.csv are the
+    gradebook's, 30 of 30."""
+    names = ["María García", "María García", "Zoë Müller", "Nguyễn Văn An",
+             "Αλέξανδρος Παπαδόπουλος"] + [f"Student {k:02d}" for k in range(25)]
+    key, rows = _run(tmp_path, [("3.2", 1), ("3.4", 1), ("3.6", 1), ("3.12", 2), ("3.14", 1)],
+                     names, seed=6, capsys=capsys)
+    assert len(key["students"]) == 30 and key["slips_along_the_way"] is False
+    assert {x["status"] for x in rows} >= {"right", "wrong", "missing"}
+
+
 def test_rows_of_one_name_are_two_students_or_a_stated_refusal(tmp_path):
     """Two CSV rows of one name: told apart by their id cells (an id without its leading
     zeros, as a spreadsheet writes it, included); without ids, each row is refused
