@@ -313,8 +313,8 @@ def test_three_students_two_of_one_name_graded_to_the_end(tmp_path, capsys):
 @pytest.mark.slow
 def test_a_class_graded_to_the_end(tmp_path, capsys):
     """Eight students (two of one name, accented, Greek and Vietnamese names), five
-    problems: the exam's cost grows with the class (a replayed solve per slip and student),
-    so eight keep the slow run's share near a minute; the quick run grades three, and
+    problems: the exam's cost grows with the class (the solves and figures of each
+    student), so eight keep the slow run's share near a minute; the quick run grades three, and
     tests/test_course_class.py makes and grades a class of thirty."""
     names = ["María García", "María García", "Zoë Müller", "Nguyễn Văn An",
              "Αλέξανδρος Παπαδόπουλος"] + [f"Student {k:02d}" for k in range(3)]
