@@ -320,7 +320,7 @@ def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
         t = target.reshape(-1)
         i = int(np.argmax(np.abs(t)))
         f = abs(float(value.reshape(-1)[i] / t[i])) if t.size and t[i] else 1.0
-        if period is not None and f > 0.5:
+        if period is not None and f >= 0.5:     # as Verdict.matches: halved included
             tests.append(_wrapped(inp, value, f * period, s))
         elif along is not None:
             tests.append(_along(inp, value, along, s))
