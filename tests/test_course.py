@@ -24,6 +24,7 @@ from tests.test_exam import _leaks
 SPEC = """title = "Quiz 3"
 seed = 11
 slip_credit = 0.5
+slips_along_the_way = true
 
 [[problem]]
 exercise = "3.19"
