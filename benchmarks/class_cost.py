@@ -3,13 +3,16 @@
 The class: a quiz of exercises 3.2, 3.4, 3.6, 3.12 (weight 2) and 3.14, one drawn variant
 each, for a roster of N students (``Student 01``, id ``00001``, ...). Then an answers CSV
 made from the key, box by box in turn: the key's value, the key negated (a named slip),
-the key times 1.37 (wrong and no slip of the final answer: the grader replays the
-solution with each slip along the way), a blank. Three commands, each in a subprocess:
+the key times 1.37 (wrong and no slip of the final answer), a blank. Four commands, each
+in a subprocess:
 
-* ``exam`` in an empty user cache (``RIGIDSYM_CACHE`` a new folder);
-* ``grade`` after it, in the cache ``exam`` left (the replays of the slips that the
-  STACK export solved are read back, as on the instructor's machine);
-* ``grade`` again in another empty cache (every replay solved by the grader).
+* ``exam`` in an empty user cache (``RIGIDSYM_CACHE`` a new folder), the spec's policy
+  as it is (no slips along the way: no replay solved);
+* ``grade`` after it, in the cache ``exam`` left;
+* ``grade`` again in another empty cache;
+* ``exam`` of the spec with ``slips_along_the_way = true`` in a third empty cache (each
+  student's solutions replayed with each slip along the way, an exact solve each, for
+  the STACK export's slip tests).
 
 CPU is the commands' user + system time with their worker processes
 (``getrusage(RUSAGE_CHILDREN)`` before and after each). Prints the figures; ``--json F``
@@ -139,6 +142,8 @@ def main() -> None:
     record = {"host": host(), "load_before": os.getloadavg(), "students": args.students,
               "spec": SPEC}
     cli = [sys.executable, "-m", "rigidsym"]
+    along = SPEC.replace("slip_credit = 0.5\n", "slip_credit = 0.5\nslips_along_the_way = true\n")
+    assert along != SPEC
     with tempfile.TemporaryDirectory(prefix="rigidsym-class-") as tmp:
         d = Path(tmp)
         (d / "quiz.toml").write_text(SPEC, encoding="utf-8")
@@ -153,10 +158,14 @@ def main() -> None:
         record["boxes"] = answers_csv(d / "out", d / "answers.csv")
         record["grade"] = timed([*cli, "grade", "out", "answers.csv"], warm, d)
         record["grade_cold_cache"] = timed([*cli, "grade", "out", "answers.csv"], cold, d)
+        (d / "quiz-along.toml").write_text(along, encoding="utf-8")
+        record["exam_slips_along_the_way"] = timed(
+            [*cli, "exam", "quiz-along.toml", "--students", "roster.csv", "--out", "out-along"],
+            d / "cache-along", d)
     record["load_after"] = os.getloadavg()
-    for k in ("exam", "grade", "grade_cold_cache"):
+    for k in ("exam", "grade", "grade_cold_cache", "exam_slips_along_the_way"):
         r = record[k]
-        print(f"{k:18s} cpu {r['cpu_s']:7.1f} s  wall {r['wall_s']:7.1f} s  ({r['command']})")
+        print(f"{k:24s} cpu {r['cpu_s']:7.1f} s  wall {r['wall_s']:7.1f} s  ({r['command']})")
     print(f"host: {record['host']}; load {record['load_before']} -> {record['load_after']}")
     if args.json:
         args.json.write_text(json.dumps(record, indent=2) + "\n", encoding="utf-8")

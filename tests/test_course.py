@@ -28,6 +28,7 @@ pytestmark = pytest.mark.xdist_group("course_class")
 SPEC = """title = "Quiz 3"
 seed = 11
 slip_credit = 0.5
+slips_along_the_way = true
 
 [[problem]]
 exercise = "3.19"

@@ -313,8 +313,8 @@ def test_three_students_two_of_one_name_graded_to_the_end(tmp_path, capsys):
 @pytest.mark.slow
 def test_a_class_graded_to_the_end(tmp_path, capsys):
     """Eight students (two of one name, accented, Greek and Vietnamese names), five
-    problems: the exam's cost grows with the class (a replayed solve per slip and student),
-    so eight keep the slow run's share near a minute; the quick run grades three, and
+    problems: the exam's cost grows with the class (the solves and figures of each
+    student), so eight keep the slow run's share near a minute; the quick run grades three, and
     tests/test_course_class.py makes and grades a class of thirty."""
     names = ["María García", "María García", "Zoë Müller", "Nguyễn Văn An",
              "Αλέξανδρος Παπαδόπουλος"] + [f"Student {k:02d}" for k in range(3)]
@@ -326,6 +326,21 @@ def test_a_class_graded_to_the_end(tmp_path, capsys):
     for r in key["students"]:
         p = r["problems"][4]
         assert p["data"]["I_A"] != p["data"]["I_B"]
+
+
+@pytest.mark.slow      # a class of thirty made and graded: about 90 s of CPU
+def test_a_class_of_thirty_the_lms_marks_as_the_gradebook(tmp_path, capsys):
+    """Thirty students on the five problems (the spec's default policy: no slips along
+    the way), each box a member of its class, blank, slipped or rounded: the gradebook is
+    the test's own grader's, and STACK's mark of every problem of every student (stack.xml
+    read by the independent reader) and Moodle's import of gradebook.csv are the
+    gradebook's, 30 of 30."""
+    names = ["María García", "María García", "Zoë Müller", "Nguyễn Văn An",
+             "Αλέξανδρος Παπαδόπουλος"] + [f"Student {k:02d}" for k in range(25)]
+    key, rows = _run(tmp_path, [("3.2", 1), ("3.4", 1), ("3.6", 1), ("3.12", 2), ("3.14", 1)],
+                     names, seed=6, capsys=capsys)
+    assert len(key["students"]) == 30 and key["slips_along_the_way"] is False
+    assert {x["status"] for x in rows} >= {"right", "wrong", "missing"}
 
 
 def test_rows_of_one_name_are_two_students_or_a_stated_refusal(tmp_path):

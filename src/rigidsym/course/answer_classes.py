@@ -78,9 +78,10 @@ class Verdict:
         t = self.target.reshape(-1)
         i = int(np.argmax(np.abs(t)))
         f = abs(float(value.reshape(-1)[i] / t[i])) if t.size and t[i] else 1.0
-        if self.period is not None and f > 0.5:
-            # modulo the period scaled as the slip scaled the angle (degrees: 360); a
-            # slip that shrinks the angle (a power of ten down) is compared as it is
+        if self.period is not None and f >= 0.5:
+            # modulo the period scaled as the slip scaled the angle (degrees: 360; halved:
+            # the halves of phi + 2 pi k are phi/2 + pi k); a slip that shrinks the angle
+            # further (a power of ten down) is compared as it is
             w = _wrap(given - value, f * self.period)
             return _near(w, np.zeros_like(w), scale, rtol)
         if self.along is not None:

@@ -61,7 +61,7 @@ def read_spec(spec) -> dict:
     Raises:
         ValueError: unreadable TOML, no problems, a problem without ``exercise``, with
             both ``data`` and ``variants``, or ``variants`` for an exercise that draws none
-            (the message names the problem).
+            (the message names the problem); ``slips_along_the_way`` that is not a truth.
     """
     if not isinstance(spec, dict):
         import tomllib
@@ -82,6 +82,9 @@ def read_spec(spec) -> dict:
             drawn = [i[2:] for i in _drawable()]
             raise ValueError(f"spec: problem {k}: exercise {ex_id[2:]} draws no random "
                              f"variants (those that do: {', '.join(drawn)}); give its data")
+    along = spec.get("slips_along_the_way", False)
+    if not isinstance(along, bool):
+        raise ValueError(f"spec: slips_along_the_way must be true or false, not {along!r}")
     return spec
 
 

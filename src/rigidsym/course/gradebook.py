@@ -23,9 +23,12 @@ graded`` in grades.csv and empty cells in gradebook.csv, never a zero.
 Each student's grading is kept in the user cache, keyed by the student's key record, their
 answers and the credits (and the digest of every source file): grading the class again
 after one answer is fixed grades that student alone, and a grading interrupted goes on
-from the students already graded. The replays of the slips along the way, the costly part
-of a wrong answer's judging, are kept too (:func:`rigidsym.course.grading.replayed_values`):
-those the class's STACK export solved are read back.
+from the students already graded. The slips along the way (the solution replayed with a
+slip injected, :mod:`rigidsym.course.slips`) are tried only where the key's
+``slips_along_the_way`` is true (the spec's policy, default false; a key without it, true);
+their replays, the costly part of a wrong answer's judging, are then kept too
+(:func:`rigidsym.course.grading.replayed_values`): those the class's STACK export solved
+are read back.
 """
 
 from __future__ import annotations
@@ -141,8 +144,9 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
             problems.append(f"{r['student']}" + (f" (id {r['id']})" if r.get("id") else "")
                             + ": not graded: no answer row or file matched this student alone "
                               "(their gradebook cells are left empty)")
-    done = forked_map(lambda i: _student_kept(key["students"][i], given.get(i), credit),
-                      len(key["students"]))
+    along = bool(key.get("slips_along_the_way", True))   # absent: a key of before the policy
+    done = forked_map(lambda i: _student_kept(key["students"][i], given.get(i), credit,
+                                              along), len(key["students"]))
     rows = [row for d in done for row in d[0]]
     book = [d[1] for d in done]
     lines = [d[2] for d in done]
@@ -169,7 +173,8 @@ def _items(rows: list) -> str:
                      [int(x) for x in kv[0][0].split(".")], kv[0][1], -kv[1]))]])
 
 
-def _student_kept(r: dict, ans: dict | None, credit: tuple[float, float]) -> tuple:
+def _student_kept(r: dict, ans: dict | None, credit: tuple[float, float],
+                  along: bool = True) -> tuple:
     """:func:`_student`, kept in the user cache by the student's key record, answers and
     credits (and every source file's digest): grading the class again after one answer
     is fixed, or after an interrupt, grades only the students whose answers changed or
@@ -182,7 +187,7 @@ def _student_kept(r: dict, ans: dict | None, credit: tuple[float, float]) -> tup
 
     h = hashlib.sha256()
     for part in ("graded 1", _sources.package_digest(), _sources.environment(),
-                 json.dumps([r, ans, list(credit)], sort_keys=True, default=repr)):
+                 json.dumps([r, ans, list(credit), along], sort_keys=True, default=repr)):
         h.update(part.encode() + b"\0")
     key = h.hexdigest()
     where = _cache.folder("verdicts") / key[:2] / f"graded-{key}.pickle"
@@ -194,12 +199,13 @@ def _student_kept(r: dict, ans: dict | None, credit: tuple[float, float]) -> tup
             kept = None
         if isinstance(kept, tuple) and len(kept) == 4:
             return kept
-    out = _student(r, ans, credit)
+    out = _student(r, ans, credit, along)
     _cache.put(where, pickle.dumps(out))
     return out
 
 
-def _student(r: dict, ans: dict | None, credit: tuple[float, float]) -> tuple:
+def _student(r: dict, ans: dict | None, credit: tuple[float, float],
+             along: bool = True) -> tuple:
     """One student graded: (rows of grades.csv, the gradebook's row, the summary line,
     every box right); ``ans`` None: no answers matched, nothing graded (status ``not
     graded``, the gradebook's cells empty)."""
@@ -217,7 +223,7 @@ def _student(r: dict, ans: dict | None, credit: tuple[float, float]) -> tuple:
     for p in r["problems"]:
         k = p["problem"]
         mine = {a: ans.get(f"P{k}.{a}") for a in p["asked"]}
-        graded = [g for g in grade(solution_of(p), mine)
+        graded = [g for g in grade(solution_of(p), mine, replay=along)
                   if g.correct is not None or g.note == "ambiguous"]
         share = p["weight"] / max(len(graded), 1)
         total = 0.0

@@ -189,6 +189,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     key = {**document_header(), "title": title, "seed": seed,
            "slip_credit": float(spec.get("slip_credit", 0)),
            "rounding_credit": float(spec.get("rounding_credit", spec.get("slip_credit", 0))),
+           "slips_along_the_way": spec.get("slips_along_the_way", False),
            "students": records}
     return {
         "handouts": out / "handouts", "keys": out / "keys",
@@ -221,7 +222,11 @@ def _draw_all(make, n: int) -> list[dict]:
     drawing one student after another."""
     from rigidsym.course.forked import forked_map
 
-    made = forked_map(make, n)
+    # the first student here: the workers, forked after it, inherit what it warmed (the
+    # exercise modules imported, 3.12's integrals in a symbolic side and height, the
+    # figures' fonts) instead of each warming them again
+    made = [make(0)] if n else []
+    made += forked_map(lambda i: make(i + 1), n - 1)
     taken: dict = {}
     for i, m in enumerate(made):
         if any(key in taken.get(slot, ()) for slot, key in m["drawn"]):
@@ -285,13 +290,15 @@ def moodle_xml(title: str, key: dict) -> str:
             body += [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
                      for k, v in p["data"].items()]
             body.append("</ul>")
-            counts = {a: len(v) for a in p["asked"] if (v := _floats(p["answers"][a]))}
+            # each box's key read once (a parse and an exact evaluation per entry)
+            floats = {a: _floats(p["answers"][a]) for a in p["asked"]}
+            counts = {a: len(v) for a, v in floats.items() if v}
             # a box whose class is declared (an angle whose sign goes with its axis) is
             # right or wrong with its other pieces: no per-number credit in Moodle
             classed = {n for d in declared(mod) for n in names_of(d)}
             whole = math.lcm(*counts.values()) if counts else 1
             for a in p["asked"]:
-                vals = _floats(p["answers"][a])
+                vals = floats[a]
                 if vals is None:            # an expression in symbols: read on paper
                     body.append(f"<p>{html.escape(p['labels'][a])}: (an expression, "
                                 f"graded on paper or by rigidsym grade)</p>")

@@ -19,8 +19,9 @@ student), with:
   phi + 2 pi k, the group's one sign chosen by the most pieces right, as
   :func:`rigidsym.course.answer_classes.judge`; an angle modulo its period; a point of
   a line modulo a shift along it), then any of the grader's slip values
-  (:func:`rigidsym.course.grading.slip_values`, the replays included), then the key
-  rounded to 1, 2 or 3 significant figures;
+  (:func:`rigidsym.course.grading.slip_values`; the replays of the solution with a slip
+  along the way where the key's ``slips_along_the_way`` is true, as the gradebook then
+  tries them), then the key rounded to 1, 2 or 3 significant figures;
 * STACK's question tests: the key, every box blank, each box negated alone, each PRT's
   expected score and note the gradebook's;
 * four nodes per PRT, each ``AlgEquiv(<truth>, true)`` on the feedback variables
@@ -65,7 +66,12 @@ def stack_xml(title: str, key: dict) -> str:
     Args:
         title: the exam's title (the categories' parent).
         key: the class key (``key.json`` of :func:`rigidsym.course.roster.class_exam`:
-            ``slip_credit``, ``rounding_credit``, ``students`` with their problems).
+            ``slip_credit``, ``rounding_credit``, ``slips_along_the_way`` (absent: true,
+            as keys written before the policy existed were graded), ``students`` with
+            their problems). Where ``slips_along_the_way`` is true, each question's
+            solution is replayed with each slip along the way (an exact solve each, the
+            costly part of the export); where false, no replay is solved and neither this
+            export nor the gradebook names such a slip.
 
     Returns:
         The XML text (UTF-8, deterministic: the same key writes the same bytes).
@@ -74,6 +80,7 @@ def stack_xml(title: str, key: dict) -> str:
 
     credit = (float(key.get("slip_credit", 0)),
               float(key.get("rounding_credit", key.get("slip_credit", 0))))
+    along = bool(key.get("slips_along_the_way", True))
     from rigidsym.course.forked import forked_map
 
     def student(i: int) -> list[str]:
@@ -84,7 +91,7 @@ def stack_xml(title: str, key: dict) -> str:
         for p in st["problems"]:
             ident = f"{st.get('id') or st['student']}-P{p['problem']}"
             name = f"{st['student']}: problem {p['problem']} (Exercise {p['id'][2:]})"
-            out.append(_question(name, ident, p, solution_of(p), credit))
+            out.append(_question(name, ident, p, solution_of(p), credit, along))
         return out
 
     # each student's questions in a forked worker (the replays are exact solves)
@@ -113,7 +120,8 @@ def _boxes(p: dict, sol) -> dict[str, np.ndarray]:
     return out
 
 
-def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float]) -> str:
+def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float],
+              along: bool = True) -> str:
     mod = exercise_module(p["id"])
     boxes = _boxes(p, sol)
     inputs = {a: f"ans{i}" for i, a in enumerate(boxes, 1)}
@@ -144,19 +152,21 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float]) 
         parts.append(f"<input><name>{inputs[a]}</name><type>{kind}</type>"
                      f"<tans>ta_{inputs[a]}</tans><forbidfloat>0</forbidfloat>"
                      f"<options>allowempty</options></input>")
-    replayed = replayed_values(sol)    # once per question, kept: the grader reads them too
+    # once per question, kept: the grader reads them too; none unless the key asks
+    replayed = replayed_values(sol) if along else []
     for a in boxes:
         if a not in skipped:
             feedback = _truth_feedback(inputs[a], sol.answers[a]) if a in truths else \
                 _feedback(a, boxes, inputs, group.get(a), sol, replayed)
             parts.append(_prt(inputs[a], a, feedback, credit))
-    parts += _qtests(sol, boxes, inputs, [a for a in boxes if a not in skipped], credit)
+    parts += _qtests(sol, boxes, inputs, [a for a in boxes if a not in skipped], credit,
+                     along)
     parts.append("</question>")
     return "".join(parts)
 
 
 def _qtests(sol, boxes: dict, inputs: dict, exported: list,
-            credit: tuple[float, float]) -> list[str]:
+            credit: tuple[float, float], along: bool = True) -> list[str]:
     """STACK's question tests (each question carries its own): every box right (the
     key), every box blank, and each box negated alone with the others right, the
     expected score and note of each PRT being the gradebook's
@@ -173,7 +183,7 @@ def _qtests(sol, boxes: dict, inputs: dict, exported: list,
         values = {a: "" if v == "EMPTYANSWER" else
                   (-boxes[a] if v.startswith("-") else boxes[a]).tolist() for a, v in
                   given.items()}
-        graded = {g.name: g for g in grade(sol, values)}
+        graded = {g.name: g for g in grade(sol, values, replay=along)}
         parts = [f"<qtest><testcase>{n}</testcase><description>{_x(what)}</description>"]
         parts += [f"<testinput><name>{inputs[a]}</name><value>{v}</value></testinput>"
                   for a, v in given.items()]
@@ -310,7 +320,7 @@ def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
         t = target.reshape(-1)
         i = int(np.argmax(np.abs(t)))
         f = abs(float(value.reshape(-1)[i] / t[i])) if t.size and t[i] else 1.0
-        if period is not None and f > 0.5:
+        if period is not None and f >= 0.5:     # as Verdict.matches: halved included
             tests.append(_wrapped(inp, value, f * period, s))
         elif along is not None:
             tests.append(_along(inp, value, along, s))
