@@ -6,8 +6,8 @@ made from the key, box by box in turn: the key's value, the key negated (a named
 the key times 1.37 (wrong and no slip of the final answer), a blank. Four commands, each
 in a subprocess:
 
-* ``exam`` in an empty user cache (``RIGIDSYM_CACHE`` a new folder), the spec's policy
-  as it is (no slips along the way: no replay solved);
+* ``exam`` in an empty user cache (``RIGIDSYM_CACHE`` a new folder) of the spec with
+  ``slips_along_the_way = false`` (no replay solved);
 * ``grade`` after it, in the cache ``exam`` left;
 * ``grade`` again in another empty cache;
 * ``exam`` of the spec with ``slips_along_the_way = true`` in a third empty cache (each
@@ -40,6 +40,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SPEC = """title = "Class"
 seed = 4
 slip_credit = 0.5
+slips_along_the_way = false
 [[problem]]
 exercise = "3.2"
 variants = 1
@@ -142,7 +143,7 @@ def main() -> None:
     record = {"host": host(), "load_before": os.getloadavg(), "students": args.students,
               "spec": SPEC}
     cli = [sys.executable, "-m", "rigidsym"]
-    along = SPEC.replace("slip_credit = 0.5\n", "slip_credit = 0.5\nslips_along_the_way = true\n")
+    along = SPEC.replace("slips_along_the_way = false\n", "slips_along_the_way = true\n")
     assert along != SPEC
     with tempfile.TemporaryDirectory(prefix="rigidsym-class-") as tmp:
         d = Path(tmp)

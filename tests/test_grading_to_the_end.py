@@ -40,7 +40,10 @@ UNITS_M = {"ex3.2": ("P",), "ex3.6": ("axis_point_p0",)}
 
 
 def _spec(problems) -> str:
-    out = [f'title = "Class"\nseed = 4\nslip_credit = {SLIP}\nrounding_credit = {ROUNDING}']
+    # the test's own grader names the final answer's slips; slips along the way (replays of
+    # each student's solution) are tests/test_slips_along_the_way.py's
+    out = [f'title = "Class"\nseed = 4\nslip_credit = {SLIP}\nrounding_credit = {ROUNDING}\n'
+           'slips_along_the_way = false']
     for ex_id, weight in problems:
         out.append(f'[[problem]]\nexercise = "{ex_id}"\nvariants = 1\nweight = {weight}')
     return "\n".join(out) + "\n"
@@ -330,8 +333,8 @@ def test_a_class_graded_to_the_end(tmp_path, capsys):
 
 @pytest.mark.slow      # a class of thirty made and graded: about 90 s of CPU
 def test_a_class_of_thirty_the_lms_marks_as_the_gradebook(tmp_path, capsys):
-    """Thirty students on the five problems (the spec's default policy: no slips along
-    the way), each box a member of its class, blank, slipped or rounded: the gradebook is
+    """Thirty students on the five problems (the spec sets no slips along the way), each
+    box a member of its class, blank, slipped or rounded: the gradebook is
     the test's own grader's, and STACK's mark of every problem of every student (stack.xml
     read by the independent reader) and Moodle's import of gradebook.csv are the
     gradebook's, 30 of 30."""

@@ -88,7 +88,7 @@ def test_a_policy_that_is_no_truth_is_refused_naming_it(value):
 @pytest.mark.slow      # two class exams with their handouts' figures: about 4 s of CPU
 def test_a_class_key_carries_the_policy_and_grades_by_it(tmp_path):
     """A class of two on 3.4 (the book's data): key.json carries the spec's policy
-    (default false); the gradebook names the replayed slip only under
+    (default true); the gradebook names the replayed slip only under
     ``slips_along_the_way = true``."""
     import csv
     import json
@@ -98,7 +98,7 @@ def test_a_class_key_carries_the_policy_and_grades_by_it(tmp_path):
 
     roster = tmp_path / "roster.csv"
     roster.write_text("name,id\nAmy Ames,1\nBo Bell,2\n", encoding="utf-8")
-    for along in (None, True):
+    for along in (False, None):     # None: the spec says nothing, the default (true)
         spec = {"seed": 3, "slip_credit": 0.5,
                 "problem": [{"exercise": "3.4", "data": {}}]}
         if along is not None:
@@ -106,7 +106,8 @@ def test_a_class_key_carries_the_policy_and_grades_by_it(tmp_path):
         out = tmp_path / f"c{along}"
         class_exam(spec, roster, out)
         key = json.loads((out / "key.json").read_text(encoding="utf-8"))
-        assert key["slips_along_the_way"] is bool(along)
+        named = along is None
+        assert key["slips_along_the_way"] is named
         p = key["students"][0]["problems"][0]
         box, v = _slipped_box(solution_of(p))
         answers = tmp_path / f"a{along}.json"
@@ -117,7 +118,7 @@ def test_a_class_key_carries_the_policy_and_grades_by_it(tmp_path):
         rows = [r for r in csv.DictReader((out / "grades.csv").open(encoding="utf-8-sig"))
                 if r["id"] == "1" and r["answer"] == box]
         assert len(rows) == 1 and rows[0]["status"] == "wrong"
-        assert bool(rows[0]["slip"]) is bool(along), rows[0]
+        assert bool(rows[0]["slip"]) is named, rows[0]
         assert float(rows[0]["points"]) == pytest.approx(
-            0.5 * float(rows[0]["max_points"]) if along else 0.0, rel=1e-5)
+            0.5 * float(rows[0]["max_points"]) if named else 0.0, rel=1e-5)
         assert np.isfinite(v).all()

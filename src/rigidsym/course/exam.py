@@ -82,7 +82,7 @@ def read_spec(spec) -> dict:
             drawn = [i[2:] for i in _drawable()]
             raise ValueError(f"spec: problem {k}: exercise {ex_id[2:]} draws no random "
                              f"variants (those that do: {', '.join(drawn)}); give its data")
-    along = spec.get("slips_along_the_way", False)
+    along = spec.get("slips_along_the_way", True)
     if not isinstance(along, bool):
         raise ValueError(f"spec: slips_along_the_way must be true or false, not {along!r}")
     return spec

@@ -25,7 +25,7 @@ answers and the credits (and the digest of every source file): grading the class
 after one answer is fixed grades that student alone, and a grading interrupted goes on
 from the students already graded. The slips along the way (the solution replayed with a
 slip injected, :mod:`rigidsym.course.slips`) are tried only where the key's
-``slips_along_the_way`` is true (the spec's policy, default false; a key without it, true);
+``slips_along_the_way`` is true (the spec's policy, default true; a key without it, true);
 their replays, the costly part of a wrong answer's judging, are then kept too
 (:func:`rigidsym.course.grading.replayed_values`): those the class's STACK export solved
 are read back.

@@ -189,7 +189,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     key = {**document_header(), "title": title, "seed": seed,
            "slip_credit": float(spec.get("slip_credit", 0)),
            "rounding_credit": float(spec.get("rounding_credit", spec.get("slip_credit", 0))),
-           "slips_along_the_way": spec.get("slips_along_the_way", False),
+           "slips_along_the_way": spec.get("slips_along_the_way", True),
            "students": records}
     return {
         "handouts": out / "handouts", "keys": out / "keys",
