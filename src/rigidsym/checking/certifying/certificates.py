@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import json
 import re
+from contextlib import suppress
 from fractions import Fraction
 from pathlib import Path
 
@@ -207,9 +208,8 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     for _, _, lhs, rhs, _ in sides:
         for e in entries_of(lhs) + entries_of(rhs):
             pr.count(sp.sympify(e))
-    for r, role, _, _, _ in sides:  # every printed glyph's atoms, also where the relation
-        if role == "printed":       # cancels them (p' - a' = Q(p - a): c), for the table
-            _glyph_atoms(pr, r, st.model)
+    for r in (r for r, role, *_ in sides if role == "printed"):  # (p' - a' = Q(p - a): c)
+        _glyph_atoms(pr, r, st.model)
     rels = []
     for r, role, lhs, rhs, ev in sides:
         if ev is None:
@@ -243,25 +243,18 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
 
 
 def _glyph_atoms(pr: StatementPrinter, rel, model: dict) -> None:
-    """Name in ``pr`` the atoms of the model's value of each glyph of ``rel`` (a printed
-    relation), so that the certificate's groups hold them where the relation cancels them
-    and the symbol table can bind the glyph (an atom of a kind the checker does not know is
-    left out: its glyph stays unread)."""
+    """Name in ``pr`` the atoms of the model's value of each glyph of a printed relation,
+    also where it cancels them (an atom of a kind the checker does not know stays out)."""
     from sympy.core.function import AppliedUndef
 
     from rigidsym.algebra.symbols import TIME
 
-    for side in (rel.lhs, rel.rhs):
-        for g in sorted(getattr(side, "free_symbols", set()), key=str):
-            if g not in model:
-                continue
-            for e in entries_of(explicit(g, model)):
-                for a in sorted(sp.sympify(e).atoms(sp.Symbol, AppliedUndef), key=str):
-                    if a != TIME:
-                        try:
-                            pr.atom(a)
-                        except Unprintable:
-                            pass
+    glyphs = (g for side in (rel.lhs, rel.rhs) for g in sorted(getattr(side, "free_symbols",
+                                                                      set()), key=str))
+    for e in (e for g in glyphs if g in model for e in entries_of(explicit(g, model))):
+        for a in sorted(sp.sympify(e).atoms(sp.Symbol, AppliedUndef) - {TIME}, key=str):
+            with suppress(Unprintable):
+                pr.atom(a)
 
 
 def constants_only(side) -> bool:
