@@ -31,17 +31,20 @@ def explicit(x, model: dict | None = None):
     model = model or {}
     key = (id(x), id(model))
     hit = EXPLICIT_CACHE.get(key)
-    if hit is not None and hit[0] is x:
+    # the entry holds x and the model themselves, so neither id is reused by another object
+    # while it is cached (a model built per witness point and freed gave its id to the next)
+    if hit is not None and hit[0] is x and hit[2] is model:
         return hit[1]
     if isinstance(x, sp.MatrixBase | sp.MatrixExpr):
         y = sp.Matrix(_mx(x, model))
     else:
         y = explicit_scalar(sp.sympify(x), model)
-    EXPLICIT_CACHE[key] = (x, y)
+    EXPLICIT_CACHE[key] = (x, y, model)
     return y
 
 
-#: explicit() results within one check (keyed by object identity; cleared per check)
+#: explicit() results within one check (keyed by the identity of the expression and the
+#: model, both held by the entry; cleared per check)
 EXPLICIT_CACHE: dict = {}
 
 
