@@ -17,7 +17,7 @@ from fractions import Fraction
 from math import isqrt
 from pathlib import Path
 
-import numpy as np
+import _typed_trials as typed_trials
 import pytest
 
 import rigidsym
@@ -36,23 +36,11 @@ RECORD = json.loads((ROOT / "benchmarks" / "results" / "latex_trial_lie_books.js
 
 
 def _holds(case: dict) -> bool:
-    rng = np.random.default_rng(81)
-    return max(case["truth"](rng) for _ in range(5)) < trial.TRUTH_TOLERANCE
+    return typed_trials.holds(case, trial.TRUTH_TOLERANCE)
 
 
 def answer(case: dict, latex: str | None = None, lets: list | None = None) -> str:
-    """right / WRONG / refused / undecided, judged by the NumPy truth (the case as typed, or
-    the ``latex`` and ``lets`` given)."""
-    latex = case["latex"] if latex is None else latex
-    lets = case["let"] if lets is None else lets
-    try:
-        r = rigidsym.check_latex(latex, let=lets, repairs=False)
-    except ValueError:
-        return "refused"
-    if r.verdict == "undecided":
-        return "undecided"
-    said = r.verdict in ("verified", "definition")
-    return "right" if said == _holds(case) else "WRONG"
+    return typed_trials.answer(case, trial.TRUTH_TOLERANCE, latex, lets)
 
 
 def test_the_trial_is_thirty_statements_of_four_sources_not_in_the_corpus_with_slips():

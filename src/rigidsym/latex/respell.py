@@ -98,27 +98,35 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
     hits: list[str] = []
 
     def respell(text: str) -> str:
-        out, k = [], 0
-        for m in _TILDE.finditer(text):
-            if m.start() < k:
-                continue
-            depth, j = 1, m.end()
-            while j < len(text) and depth:
-                depth += {"{": 1, "}": -1}.get(text[j], 0)
-                j += 1
-            inner = text[m.end():j - 1]
-            if depth or not re.search(r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner)):
-                continue
-            out += [text[k:m.start()], f"[{inner}]_\\times"]
-            hits.append(inner)
-            k = j
-        return "".join(out) + text[k:]
+        return _braced_as_cross_matrix(text, _TILDE, lambda inner: bool(re.search(
+            r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner))), hits)
 
     new, out = _respelt(respell, latex, let)
     if not hits:
         return latex, let, ""
     return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list) -> str:
+    """``text`` with each accent ``opening`` matches (up to its opening brace) whose braced
+    argument ``takes`` (a predicate of the argument's text) respelt ``[ARG]_\\times``; each
+    argument respelt is appended to ``hits``. An unbalanced brace leaves the rest as is."""
+    out, k = [], 0
+    for m in opening.finditer(text):
+        if m.start() < k:
+            continue
+        depth, j = 1, m.end()
+        while j < len(text) and depth:
+            depth += {"{": 1, "}": -1}.get(text[j], 0)
+            j += 1
+        inner = text[m.end():j - 1]
+        if depth or not takes(inner):
+            continue
+        out += [text[k:m.start()], f"[{inner}]_\\times"]
+        hits.append(inner)
+        k = j
+    return "".join(out) + text[k:]
 
 
 def _respelt(respell, latex: str, let: object) -> tuple[str, object]:
@@ -360,21 +368,8 @@ def hat_expressions(latex: str, let: object) -> tuple[str, object, str]:
     hits: list[str] = []
 
     def respell(text: str) -> str:
-        out, k = [], 0
-        for m in _WIDEHAT.finditer(text):
-            if m.start() < k:
-                continue
-            depth, j = 1, m.end()
-            while j < len(text) and depth:
-                depth += {"{": 1, "}": -1}.get(text[j], 0)
-                j += 1
-            inner = text[m.end():j - 1]
-            if depth or _ONE_GLYPH.fullmatch(inner):
-                continue
-            out += [text[k:m.start()], f"[{inner}]_\\times"]
-            hits.append(inner)
-            k = j
-        return "".join(out) + text[k:]
+        return _braced_as_cross_matrix(text, _WIDEHAT,
+                                       lambda inner: not _ONE_GLYPH.fullmatch(inner), hits)
 
     new, out = _respelt(respell, latex, let)
     if not hits:
