@@ -132,6 +132,7 @@ def test_one_peer_bug_becomes_an_issue_body_the_parser_reads(tmp_path, monkeypat
 
 
 @pytest.mark.slow
+@pytest.mark.thorough(1 / 4)     # two of the eight each commit (all: exhaustive)
 @pytest.mark.parametrize("spec, op, library, kind, where", PEER_BUGS,
                          ids=[b[2] for b in PEER_BUGS])
 def test_each_libraries_bug_becomes_an_issue_body(spec, op, library, kind, where, tmp_path,

@@ -70,6 +70,7 @@ def _check(cid: str) -> None:
 
 
 @pytest.mark.sample(fraction=5 / len(CASES))
+@pytest.mark.thorough(1 / 3)     # the slow rest: a third each commit (all: exhaustive)
 @pytest.mark.parametrize("cid", sorted(CASES))
 def test_a_statement_is_never_wrong_and_answers_as_recorded(cid):
     _check(cid)

@@ -120,6 +120,7 @@ def test_factor_two_and_rounding_of_every_box_are_named(ex_id):
 
 
 @pytest.mark.slow
+@pytest.mark.thorough(1 / 3)     # each commit a third of the exercises (all: exhaustive)
 @pytest.mark.parametrize("ex_id", IDS)
 def test_factor_two_and_rounding_of_every_box_are_named_exhaustive(ex_id):
     _property(ex_id, 20)
