@@ -28,6 +28,8 @@ __all__ = ["numeric_backing", "counterexample_ball", "rational_norm_witness",
 #: 1 + 4 + 4 = 9, 4 + 9 + 36 = 49, 1 + 16 + 64 = 81: a free 3-vector ``s d`` (``s`` a
 #: positive rational) has the rational norm ``s``
 RATIONAL_DIRECTIONS = ((1, 2, 2, 3), (2, 3, 6, 7), (1, 4, 8, 9))
+#: the values a counterexample's parameters are drawn from (small rationals: readable)
+SMALL_RATIONALS = tuple(Fraction(n, d) for n in range(-3, 4) for d in (1, 2, 3))
 #: the norms tried (positive rationals, small: a readable counterexample)
 RATIONAL_NORMS = (Fraction(1), Fraction(1, 2), Fraction(2), Fraction(3, 2), Fraction(1, 3),
                   Fraction(3))
@@ -56,11 +58,10 @@ def small_witness(entries, plan, seed):
     if norm_vectors(entries):  # sin of an irrational norm: no exact value, never readable
         return None
     rng = random.Random(seed)
-    small = [Fraction(n, d) for n in range(-3, 4) for d in (1, 2, 3)]
     # a fixed number of tries, never a clock: under load a deadline picked another point and
     # made the committed report depend on the machine (each try takes about a millisecond)
     for _ in range(300):
-        pt = in_range(plan, {p: rng.choice(small) for p in plan.params})
+        pt = in_range(plan, {p: rng.choice(SMALL_RATIONALS) for p in plan.params})
         try:
             if any(evaluate(e, plan, pt) != 0 for e in entries) and _consistent(entries,
                                                                                 plan, pt):
@@ -184,9 +185,8 @@ def rational_norm_witness(lhs, rhs, seed: int, extra=(), tries: int = 36) -> dic
     if not all(x in plan.params for xs in vectors for x in xs):
         return None
     rng = random.Random(seed)
-    small = [Fraction(n, d) for n in range(-3, 4) for d in (1, 2, 3)]
     for _ in range(tries):
-        pt = in_range(plan, {p: rng.choice(small) for p in plan.params})
+        pt = in_range(plan, {p: rng.choice(SMALL_RATIONALS) for p in plan.params})
         for xs in vectors:
             *abc, d = rng.choice(RATIONAL_DIRECTIONS)
             rng.shuffle(abc)
