@@ -2,14 +2,16 @@
 
 The default run compares generated/inputs.json (the digests of every input file of the
 generator and of every file it wrote) with the tree: seconds instead of a generation of 70 to
-360 s of CPU. The `slow` test generates again, once: `rigidsym generate --check` in a fresh
-process under a fixed PYTHONHASHSEED must exit 0 (generated/'s bytes: the output does not
-depend on set iteration order), and the modules it imported must all be among the recorded
-inputs (the digest rule misses nothing the generator reads).
+360 s of CPU. The `slow` test derives again in a fresh process under a fixed PYTHONHASHSEED
+(a seeded share of the kernels; the whole tree by `rigidsym generate --check` in the
+exhaustive profile): the same bytes (the output does not depend on set iteration order), and
+the modules it imported all among the recorded inputs (the digest rule misses nothing the
+generator reads).
 """
 
 from __future__ import annotations
 
+import importlib
 import json
 import os
 import shutil
@@ -18,6 +20,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
+import _profile
 import pytest
 
 import rigidsym
@@ -123,28 +126,71 @@ def test_no_timestamps_or_absolute_paths():
         assert "/home/" not in text and "/root/" not in text, rel
 
 
-@pytest.mark.slow  # a whole generation (70 to 360 s of CPU); the default run compares digests
+#: the thorough run's share of the book's kernels derived again under another hash seed
+#: (every kernel, and the whole tree compared, in the exhaustive profile)
+FRESH_SHARE = 1 / 4
+#: the fresh process: the CLI's start-up imported first (it imports every command's module,
+#: and only generate's runs), then either ``generate --check`` of the whole tree or the
+#: kernels named in argv[1] derived (none read from the store) and their files written as
+#: JSON to argv[2]; its last line lists the rigidsym modules imported beyond the start-up
+FRESH = """
+import importlib, json, sys
+from rigidsym.cli import main
+start = set(sys.modules)
+names = json.loads(sys.argv[1])
+if names is None:
+    rc = main(["generate", "--check"])
+else:
+    from rigidsym.codegen.generator import BOOK_ORIGIN, generate
+    book = importlib.import_module(BOOK_ORIGIN).KERNELS
+    res = generate(kernels=[k for k in book if k.name in names], origin=BOOK_ORIGIN)
+    with open(sys.argv[2], "w", encoding="utf-8") as f:
+        json.dump({"kernels": [kc.kernel.name for kc in res.kernels], "files": res.files}, f)
+    rc = 0
+print(json.dumps(sorted(m.__file__ for n, m in sys.modules.items()
+                        if n.startswith("rigidsym") and n not in start
+                        and getattr(m, "__file__", None))))
+sys.exit(rc)
+"""
+
+
+@pytest.mark.slow  # a generation: a share of the kernels (the whole tree when exhaustive)
 def test_check_in_a_fresh_process_under_another_hash_seed(tmp_path):
-    """`rigidsym generate --check` in a fresh process under a fixed PYTHONHASHSEED exits 0:
-    generated/ (written under another seed) is byte for byte what this generation writes, so
-    the output does not depend on set iteration order; and every module the generation
-    imported (beyond the CLI's start-up) is among the inputs whose digests
-    generated/inputs.json records. A stale tree prints its diff and exits 1
-    (`test_check_reports_missing_orphan_and_changed`)."""
+    """Derived again in a fresh process under a fixed PYTHONHASHSEED, the kernels' files are
+    byte for byte those of generated/ (written under another seed): the output does not
+    depend on set iteration order; and every module the generation imported (beyond the
+    CLI's start-up) is among the inputs whose digests generated/inputs.json records. The
+    thorough run derives a seeded share of the book's kernels (another share each commit)
+    and compares each derived kernel's own files; the exhaustive profile runs `rigidsym
+    generate --check` over the whole tree (its aggregate files too). A stale tree prints its
+    diff and exits 1 (`test_check_reports_missing_orphan_and_changed`)."""
+    from rigidsym.codegen.generator import BOOK_ORIGIN
+
+    book = sorted(k.name for k in importlib.import_module(BOOK_ORIGIN).KERNELS)
+    picked = _profile.share(book, FRESH_SHARE)
+    whole = len(picked) == len(book)
     # one process (RIGIDSYM_GENERATE_JOBS=1): the modules its workers import are its own
     env = dict(os.environ, PYTHONHASHSEED="4242", RIGIDSYM_GENERATE_JOBS="1")
-    # the modules the command imports beyond the CLI's start-up (which imports every
-    # command's module, and only generate's runs)
-    code = ("import sys, json; from rigidsym.cli import main; start = set(sys.modules); "
-            "rc = main(['generate', '--check']); "
-            "print(json.dumps(sorted(m.__file__ for n, m in sys.modules.items() "
-            "if n.startswith('rigidsym') and n not in start "
-            "and getattr(m, '__file__', None)))); sys.exit(rc)")
-    p = subprocess.run([sys.executable, "-c", code], env=env, cwd=ROOT, capture_output=True,
-                       text=True)
+    out = tmp_path / "files.json"
+    p = subprocess.run([sys.executable, "-c", FRESH, json.dumps(None if whole else picked),
+                        str(out)], env=env, cwd=ROOT, capture_output=True, text=True)
     assert p.returncode == 0, (p.returncode, p.stdout[-4000:], p.stderr[-4000:])
     assert default_out_dir() == ROOT / "generated"
-    recorded = {p.resolve() for p in inputs.input_files()}
+    if not whole:
+        got = json.loads(out.read_text(encoding="utf-8"))
+        derived = set(got["kernels"])
+        assert set(picked) <= derived, sorted(set(picked) - derived)
+        # a kernel's own files (named by it) are the same whichever kernels a generation
+        # holds; the aggregate files (api.py, kernels.json, the module's tables) are not
+        own = {path: text for path, text in got["files"].items()
+               if Path(path).stem in derived}
+        for name in derived:
+            assert sum(Path(path).stem == name for path in own) >= 2, (name, sorted(own))
+        differ = sorted(path for path, text in own.items()
+                        if not (ROOT / "generated" / path).is_file()
+                        or (ROOT / "generated" / path).read_text(encoding="utf-8") != text)
+        assert differ == [], f"derived under PYTHONHASHSEED=4242, these differ: {differ}"
+    recorded = {f.resolve() for f in inputs.input_files()}
     generated = (ROOT / "generated").resolve()
     imported = {Path(f).resolve() for f in json.loads(p.stdout.splitlines()[-1])}
     missed = sorted(str(f) for f in imported
