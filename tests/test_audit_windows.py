@@ -186,7 +186,7 @@ def test_a_planted_window_near_0_is_found_with_its_ends(width, at):
 
 
 @pytest.mark.slow
-@settings(max_examples=examples(40), deadline=None)
+@settings(max_examples=40, deadline=None)
 @given(width=st.floats(math.log10(2), 3.0), at=st.floats(0.0, 1.0),
        seed=st.integers(0, 1000))
 def test_a_planted_window_near_0_is_found_with_its_ends_on_any_seed(width, at, seed):

@@ -412,7 +412,7 @@ def sweep_kernels() -> list[str]:
 
 
 @pytest.mark.slow
-@pytest.mark.thorough(0.5)
+@pytest.mark.thorough(1 / 3)  # two targets each commit (their builds and emulators)
 @pytest.mark.xdist_group("rescue_sweep")
 @pytest.mark.parametrize("target", [
     # the sweep's two findings (x86-64: the float64 SE(3) left Jacobian

@@ -277,6 +277,7 @@ def test_status_is_the_same_under_every_compiler_and_flag(tmp_path, kernel):
 
 
 @pytest.mark.slow   # 5 kernels x 2 types x 2 compilers x 3 flags, 20,000 inputs each
+@pytest.mark.thorough(0.5)  # a seeded half of the (kernel, type) pairs each commit
 @needs_two
 @pytest.mark.parametrize("dtype", [np.float32, np.float64])
 @pytest.mark.parametrize("kernel", sorted(SIGNATURES))

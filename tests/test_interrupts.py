@@ -28,6 +28,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
+import _profile
 import pytest
 
 import rigidsym
@@ -132,13 +133,17 @@ def each_kind_of_checkpoint(points: list[str]) -> list[int]:
     passing of every kind of checkpoint of ``points`` (a cache entry written, an id decided,
     a phase begun, ...), and the third (a SIGTERM, :func:`_signal_at`): each kind of point
     where the command can be cut short, at the start and the end of its work, rather than
-    every passing of each (a cold ``verify`` of three ids passes some twenty)."""
+    every passing of each (a cold ``verify`` of three ids passes some twenty). The thorough
+    run interrupts the third and a seeded half of the others (another half each commit;
+    every one in the exhaustive profile)."""
     first: dict[str, int] = {}
     last: dict[str, int] = {}
     for k, name in enumerate(points, 1):
         first.setdefault(name, k)
         last[name] = k
-    return sorted({*first.values(), *last.values(), *([3] if len(points) >= 3 else [])})
+    every = sorted({*first.values(), *last.values()} - {3})
+    third = [3] if len(points) >= 3 else []
+    return sorted(third + _profile.share(every, 1 / 2, key=lambda k: f"{k}:{points[k - 1]}"))
 
 
 def _warm(mod: Path, cache: Path, tmp_path: Path) -> None:

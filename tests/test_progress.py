@@ -172,41 +172,9 @@ def test_the_live_display_redraws_itself_while_a_phase_reports_nothing(monkeypat
     assert "waiting" in _ANSI.sub("", out.getvalue())
 
 
-@pytest.mark.slow
-def test_report_in_a_pipe_states_every_phase(tmp_path):
-    """The whole report, piped: a start and an end line per phase and, between them, a line
-    at each tenth of a counted phase's items, nothing else on stderr."""
-    p = subprocess.run(_command("report", "--out", str(tmp_path / "out")), cwd=ROOT,
-                       env=_env(tmp_path), capture_output=True, text=True, check=True)
-    phases = ["loading the chapter's declarations", "checking 181 ids",
-              "rendering and writing 3 files of the chapter report", "solving 21 exercises",
-              "rendering and writing the exercises (Markdown, HTML, figures)"]
-    counts: dict[str, list[tuple[int, int]]] = {}
-    lines = []
-    for ln in p.stderr.splitlines():
-        if re.fullmatch(r"rigidsym report: .+: still .+, \d.*", ln):
-            continue  # a quiet phase saying what it is still doing
-        m = re.fullmatch(r"rigidsym report: (.+): (\d+)/(\d+), \d+(\.\d)? s|"
-                         r"rigidsym report: (.+): (\d+)/(\d+), \d+ min \d\d s", ln)
-        if m and (m.group(1) or m.group(5)) in phases:
-            what = m.group(1) or m.group(5)
-            done, total = (int(m.group(2)), int(m.group(3))) if m.group(1) else \
-                (int(m.group(6)), int(m.group(7)))
-            counts.setdefault(what, []).append((done, total))
-            assert lines and lines[-1] == f"rigidsym report: {what} ...", (ln, lines)
-        else:
-            lines.append(ln)
-    for seen in counts.values():       # increasing, below the total
-        assert [d for d, _ in seen] == sorted({d for d, _ in seen}), seen
-        assert all(0 < d < t for d, t in seen), seen
-    assert len(counts.get("checking 181 ids", [])) == 9, counts     # each tenth
-    assert [d for d, _ in counts["solving 21 exercises"]] == list(range(1, 21))  # each item
-    assert len(lines) == 2 * len(phases), lines
-    for k, what in enumerate(phases):
-        assert lines[2 * k] == f"rigidsym report: {what} ..."
-        assert lines[2 * k + 1].startswith(f"rigidsym report: {what}: done in ")
-    assert "11 does-not-hold" in lines[3]
-    assert p.stdout.startswith("wrote ")
+# the whole report in a pipe, each phase's lines: the chapter's chain of commands in
+# test_work_counts.test_the_chapter_counts_verify_json_and_report_warm_do_no_work (its first
+# report, piped), which runs the chapter once for both
 
 
 @pytest.mark.slow

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -60,15 +61,19 @@ def modules(tmp_path):
     return tmp_path
 
 
-def run(where: Path, *args: str) -> dict:
-    """``rigidsym ARGS`` in a fresh process on ``where``'s cache; its work counts."""
+def run(where: Path, *args: str, said: list | None = None) -> dict:
+    """``rigidsym ARGS`` in a fresh process on ``where``'s cache, its output piped; its work
+    counts (``said``, when given, gets its stdout and stderr)."""
     counts = where / "work.json"
     counts.unlink(missing_ok=True)
     env = dict(os.environ, RIGIDSYM_CACHE=str(where / "cache"),
                RIGIDSYM_WORK_FILE=str(counts))
+    env.pop("RIGIDSYM_ASCII", None)
     p = subprocess.run([sys.executable, "-m", "rigidsym", *args], cwd=where, env=env,
                        capture_output=True, text=True, timeout=600)
     assert p.returncode == 0, p.stdout + p.stderr
+    if said is not None:
+        said[:] = [p.stdout, p.stderr]
     return json.loads(counts.read_text(encoding="utf-8"))
 
 
@@ -143,15 +148,17 @@ def test_an_exercise_on_the_book_s_data_is_solved_once_then_read_back(tmp_path, 
 def test_the_chapter_counts_verify_json_and_report_warm_do_no_work(tmp_path):
     """The whole chapter: verify --json builds each declaration at most once cold and none
     warm; the report after them reads the statements the cold run stored (it builds none,
-    and reads each at most once); a warm report builds, decides and solves nothing, and
-    writes the same files."""
+    and reads each at most once) and, piped, states every phase (:func:`report_phases`); a
+    warm report builds, decides and solves nothing, and writes the same files."""
     common = ("verify", "--jobs", "2", "--no-repairs", "--quiet")
     cold = run(tmp_path, *common, "--json", "cold.json")
     assert max(cold["build"].values()) == 1, cold["build"]
     warm = run(tmp_path, *common, "--json", "warm.json")
     assert warm["build"] == {} and warm["decide"] == {} and warm["transcribe"] == {}
     assert lean(tmp_path / "warm.json") == lean(tmp_path / "cold.json")
-    first = run(tmp_path, "report", "--jobs", "2", "--out", "r1")
+    said: list[str] = []
+    first = run(tmp_path, "report", "--jobs", "2", "--out", "r1", said=said)
+    report_phases(*said)
     assert first["build"] == {} and first["transcribe"] == {}, first["build"]
     assert max(first["load"].values()) == 1
     second = run(tmp_path, "report", "--jobs", "2", "--out", "r2")
@@ -160,3 +167,38 @@ def test_the_chapter_counts_verify_json_and_report_warm_do_no_work(tmp_path):
     assert names == sorted(p.name for p in (tmp_path / "r2").iterdir())
     for name in names:
         assert (tmp_path / "r1" / name).read_bytes() == (tmp_path / "r2" / name).read_bytes()
+
+
+def report_phases(stdout: str, stderr: str) -> None:
+    """The chapter's report in a pipe: a start and an end line per phase and, between them,
+    a line at each tenth of a counted phase's items (each item of a phase of at most 30),
+    nothing else on stderr."""
+    phases = ["loading the chapter's declarations", "checking 181 ids",
+              "rendering and writing 3 files of the chapter report", "solving 21 exercises",
+              "rendering and writing the exercises (Markdown, HTML, figures)"]
+    counts: dict[str, list[tuple[int, int]]] = {}
+    lines = []
+    for ln in stderr.splitlines():
+        if re.fullmatch(r"rigidsym report: .+: still .+, \d.*", ln):
+            continue  # a quiet phase saying what it is still doing
+        m = re.fullmatch(r"rigidsym report: (.+): (\d+)/(\d+), \d+(\.\d)? s|"
+                         r"rigidsym report: (.+): (\d+)/(\d+), \d+ min \d\d s", ln)
+        if m and (m.group(1) or m.group(5)) in phases:
+            what = m.group(1) or m.group(5)
+            done, total = (int(m.group(2)), int(m.group(3))) if m.group(1) else \
+                (int(m.group(6)), int(m.group(7)))
+            counts.setdefault(what, []).append((done, total))
+            assert lines and lines[-1] == f"rigidsym report: {what} ...", (ln, lines)
+        else:
+            lines.append(ln)
+    for seen in counts.values():       # increasing, below the total
+        assert [d for d, _ in seen] == sorted({d for d, _ in seen}), seen
+        assert all(0 < d < t for d, t in seen), seen
+    assert len(counts.get("checking 181 ids", [])) == 9, counts     # each tenth
+    assert [d for d, _ in counts["solving 21 exercises"]] == list(range(1, 21))  # each item
+    assert len(lines) == 2 * len(phases), lines
+    for k, what in enumerate(phases):
+        assert lines[2 * k] == f"rigidsym report: {what} ..."
+        assert lines[2 * k + 1].startswith(f"rigidsym report: {what}: done in ")
+    assert "11 does-not-hold" in lines[3]
+    assert stdout.startswith("wrote ")
