@@ -22,6 +22,7 @@ from certcheck.book import (
     definitions_before,
     locate,
 )
+from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
 
@@ -108,7 +109,9 @@ def main(argv: list[str] | None = None) -> int:
                 defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
                 page += compare(cert, locate(book, eq_id), fast=not args.no_flint, defs=defs,
                                 counts=(counts := []))
-                (k, n), = counts
+                (k, n, firm), = counts
+                vac, lines_read = unread_vacuous(cert, firm)  # vacuous: read, or not
+                k, page = max(0, k - 2 * vac), page + lines_read
             elif book is None:
                 n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
         except (CheckError, BookError, OSError, ValueError) as exc:
@@ -119,7 +122,6 @@ def main(argv: list[str] | None = None) -> int:
             failed += 1
             print(f"FAILED {os.path.basename(path)}: {type(exc).__name__}: {exc}")
             continue
-        k = max(0, k - 2 * sum("VACUOUS" in x for x in lines))  # proved nothing there
         sides, unread, not_read = sides + n, unread + n - k, not_read + (k < n)
         print((f"CHECKED ({cert.get('id')}) {verdict}" if k == n else
                f"NOT READ {os.path.basename(path)}: ({cert.get('id')}) {verdict} proved, "

@@ -25,7 +25,7 @@ from certcheck.field import Field, Vanishing, evaluate
 from certcheck.parse import ParseError, names_in, parse
 from certcheck.poly import make_ring
 
-__all__ = ["CheckError", "check_certificate", "load"]
+__all__ = ["CheckError", "check_certificate", "is_vacuous", "load"]
 
 FORMAT = "rigidsym-certificate"
 VERSIONS = (1,)
@@ -571,7 +571,7 @@ _FREE = SimpleNamespace(
     mul=lambda a, b: (a[0] or b[0], a[0] or b[0] or a[1] and b[1]))
 
 
-def _vacuous(rel, st: Statement) -> bool:
+def is_vacuous(rel, st: Statement) -> bool:
     """Vacuous: the two sides are one expression once the lets are read in, or both are
     constants only, an atom standing only in a product with a literal 0 (``1·1·1 = 1``;
     3.30's determinant of a unit triangular block matrix, expanded)."""
@@ -604,7 +604,7 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
                 not roles <= {"printed", "claim"}:
             raise CheckError(f"a {verdict} statement needs identity evidence for every "
                              "printed member and claim")
-        vacuous = [rel for rel in printed or st.rels if _vacuous(rel, st)]
+        vacuous = [rel for rel in printed or st.rels if is_vacuous(rel, st)]
         if len(vacuous) == len(printed or st.rels) and verdict == "verified":
             if ":" not in st.id:  # the book's ids; a reader's own (ns:name) get a note
                 raise CheckError("verified, but every printed relation (or claim) is vacuous:"

@@ -24,7 +24,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
     certificate's side as a rational function under the kinds' hypotheses. ``defs``
     (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
     their printed definitions above the id, each cited. ``counts``: ``(sides read,
-    printed sides)`` appended to it.
+    printed sides, the relations read firmly on both sides)`` appended to it.
 
     Returns:
         Lines for the referee: what was read, and what was not (a finding, never a pass).
@@ -49,7 +49,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                      and isinstance(r.get("page"), int)), key=lambda r: r["page"]):
         printed.insert(r["page"] - 1, r)  # a chain's member the page prints, proved as a claim
     if not printed:  # a theorem in words, proved by its claims: nothing read on the page
-        counts.append((0, 2 * max(1, len(cert["relations"]))))
+        counts.append((0, 2 * max(1, len(cert["relations"])), []))
         return ["NOT READ: no printed relation (the claims are the certificate's reading of"
                 " the page's words)"]
     here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
@@ -84,7 +84,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                              "is the certificate's printed relation")
         pairs = agree or pairs
     if len(pairs) != len(printed):
-        counts.append((0, 2 * len(printed)))
+        counts.append((0, 2 * len(printed), []))
         return [f"NOT READ: {len(pairs)} printed relation(s) on the page, the certificate "
                 f"has {len(printed)} (a family the reader does not match); each relation is "
                 "the certificate's word"]
@@ -105,7 +105,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
         whole = bool(check_identity(st := probe(batch), st.rels, fast))
     except CheckError:
         whole = False
-    n_read = 0
+    n_read, firm = 0, []  # firm: the relations whose two sides are read firmly
     for k, rel in enumerate(printed):
         read, matched = [], []
         for side, (mine, assumed, cited) in (("lhs", pairs[k][0]), ("rhs", pairs[k][1])):
@@ -159,14 +159,14 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
             tentative = soft or any(c.endswith("an equation") for c in cited)
             (matched if tentative else read).append(
                 side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))
-        n_read += len(read) + len(matched)
+        n_read, firm = n_read + len(read) + len(matched), firm + [rel] * (len(read) == 2)
         if read:
             out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
                        "certificate's under the symbol table")
         if matched:  # a difference here would be NOT READ, not a rejection
             out.append(f"matched on the page: relation {k + 1}'s {' and '.join(matched)}, "
                        "the certificate's" + (" under one of its models" if soft else ""))
-    counts.append((n_read, 2 * len(printed)))
+    counts.append((n_read, 2 * len(printed), firm))
     return out
 
 
