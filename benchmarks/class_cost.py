@@ -12,7 +12,9 @@ in a subprocess:
 * ``grade`` again in another empty cache;
 * ``exam`` of the spec with ``slips_along_the_way = true`` in a third empty cache (each
   student's solutions replayed with each slip along the way, an exact solve each, for
-  the STACK export's slip tests).
+  the STACK export's slip tests);
+* ``grade`` of that class (its answers made from its key as above) in the cache that
+  ``exam`` left (the replays read back, none solved again).
 
 CPU is the commands' user + system time with their worker processes
 (``getrusage(RUSAGE_CHILDREN)`` before and after each). Prints the figures; ``--json F``
@@ -163,8 +165,12 @@ def main() -> None:
         record["exam_slips_along_the_way"] = timed(
             [*cli, "exam", "quiz-along.toml", "--students", "roster.csv", "--out", "out-along"],
             d / "cache-along", d)
+        answers_csv(d / "out-along", d / "answers-along.csv")
+        record["grade_slips_along_the_way"] = timed(
+            [*cli, "grade", "out-along", "answers-along.csv"], d / "cache-along", d)
     record["load_after"] = os.getloadavg()
-    for k in ("exam", "grade", "grade_cold_cache", "exam_slips_along_the_way"):
+    for k in ("exam", "grade", "grade_cold_cache", "exam_slips_along_the_way",
+              "grade_slips_along_the_way"):
         r = record[k]
         print(f"{k:24s} cpu {r['cpu_s']:7.1f} s  wall {r['wall_s']:7.1f} s  ({r['command']})")
     print(f"host: {record['host']}; load {record['load_before']} -> {record['load_after']}")

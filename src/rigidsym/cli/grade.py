@@ -24,12 +24,14 @@ from pathlib import Path
 
 from rigidsym.core.files import write_atomic
 
-__all__ = ["grade_command", "read_answers", "add_arguments", "run", "HELP", "EXAMPLES"]
+__all__ = ["grade_command", "parse_weights", "read_answers", "add_arguments", "run", "HELP",
+           "EXAMPLES"]
 
 HELP = "grade a class: each student's answers against their own exam"
 EXAMPLES = """\
   rigidsym grade class/ class/answers.csv    grades.csv and gradebook.csv in class/
   rigidsym grade class/ answers/             a folder of <id or name>.json answer files
+  rigidsym grade class/ answers.csv --weights 1,1,1,2,1   other weights than the spec's
   (class/ as rigidsym exam SPEC --students roster.csv --out class/ wrote it)"""
 
 
@@ -39,6 +41,10 @@ def add_arguments(p) -> None:
     p.add_argument("answers", metavar="ANSWERS",
                    help="the filled answers CSV (a row per student, a column P<k>.<answer> "
                         "per box, as DIR/answers.csv) or a folder of <student>.json files")
+    p.add_argument("--weights", metavar="W1,W2,...",
+                   help="each problem's weight, comma separated, problem 1 first (e.g. "
+                        "1,1,1,2,1), in place of the spec's weights kept in DIR/key.json "
+                        "(the key is not changed)")
 
 
 def run(args) -> int:
@@ -49,7 +55,7 @@ def run(args) -> int:
     from rigidsym.course import grade_class
 
     try:
-        done = grade_class(args.dir, args.answers)
+        done = grade_class(args.dir, args.answers, weights=parse_weights(args.weights))
     except (ValueError, TypeError) as exc:
         print(f"rigidsym: error: {exc} (docs/exams.md describes the files)", file=sys.stderr)
         return 2
@@ -66,6 +72,24 @@ def run(args) -> int:
               f"(listed above); the rest of the class is graded", file=sys.stderr)
         return min(10 + len(done["problems"]), 99)
     return 0 if done["all_right"] else 1
+
+
+def parse_weights(text: str | None) -> list[float] | None:
+    """``--weights``'s text (``"1,1,2"``) as numbers; None when not given.
+
+    Raises:
+        ValueError: an entry that is not a number (the message names ``--weights``).
+    """
+    if text is None:
+        return None
+    out = []
+    for part in text.split(","):
+        try:
+            out.append(float(part))
+        except ValueError:
+            raise ValueError(f"--weights: expected numbers separated by commas (1,1,2), "
+                             f"not {part.strip()!r} in {text!r}") from None
+    return out
 
 
 def read_answers(path: str | Path) -> dict[str, dict]:

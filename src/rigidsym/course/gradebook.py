@@ -43,7 +43,7 @@ import sympy as sp
 from rigidsym.core.files import write_atomic
 from rigidsym.course.worked import Solution, parameters, solve
 
-__all__ = ["grade_class", "solution_of"]
+__all__ = ["grade_class", "solution_of", "with_weights"]
 
 
 def solution_of(rec: dict) -> Solution:
@@ -109,12 +109,16 @@ def _answers(path: str | Path, key: dict) -> tuple[dict[int, dict], list[str]]:
     return out, problems
 
 
-def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
+def grade_class(out_dir: str | Path, answers: str | Path,
+                weights: list[float] | None = None) -> dict:
     """Grade every student of the exam in ``out_dir`` on ``answers``; write the CSVs.
 
     Args:
         out_dir: the folder :func:`rigidsym.course.roster.class_exam` wrote.
         answers: the filled answers CSV, or a folder of one JSON file per student.
+        weights: each problem's weight, in the problems' order (problem 1 first), in
+            place of the spec's ``weight`` kept in ``key.json`` (which is not changed);
+            default: the key's.
 
     Returns:
         ``{"grades": path, "gradebook": path, "table": str (a line per student),
@@ -122,7 +126,9 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
 
     Raises:
         ValueError: no ``key.json`` in ``out_dir``, unreadable answers, a student not in
-            the key, or a column ``P<k>.<name>`` that is no box of the exam.
+            the key, a column ``P<k>.<name>`` that is no box of the exam, or ``weights``
+            not one finite number >= 0 per problem with a positive sum (the message names
+            ``weights``).
     """
     folder = Path(out_dir)
     try:
@@ -133,6 +139,8 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
     if "students" not in key:
         raise ValueError(f"DIR: {folder / 'key.json'} is the key of a single exam; grade it "
                          f"with rigidsym exercise ID --grade")
+    if weights is not None:
+        key = with_weights(key, weights)
     given, problems = _answers(answers, key)
     credit = (float(key.get("slip_credit", 0)),
               float(key.get("rounding_credit", key.get("slip_credit", 0))))
@@ -160,6 +168,35 @@ def grade_class(out_dir: str | Path, answers: str | Path) -> dict:
             "items": write_atomic(folder / "item_analysis.csv", _items(rows)),
             "table": f"{key['title']}: {len(key['students'])} students\n" + "\n".join(lines),
             "all_right": all_right, "problems": problems}
+
+
+def with_weights(key: dict, weights: list[float]) -> dict:
+    """The class key with each problem's ``weight`` replaced by ``weights[k - 1]`` (problem
+    ``k``), for every student; ``key`` itself is not changed.
+
+    Raises:
+        ValueError: ``weights`` is not one finite number >= 0 per problem of the exam, or
+            they are all 0 (the message names ``weights`` and the count expected).
+    """
+    import math
+
+    n = max(len(r["problems"]) for r in key["students"])
+    try:
+        w = [float(x) for x in weights]
+    except (TypeError, ValueError):
+        raise ValueError(f"weights: expected {n} numbers, one per problem, not "
+                         f"{list(weights)!r}") from None
+    if len(w) != n:
+        raise ValueError(f"weights: expected {n} numbers, one per problem of the exam "
+                         f"(problem 1 first), not {len(w)}")
+    bad = [x for x in w if not math.isfinite(x) or x < 0]
+    if bad:
+        raise ValueError(f"weights: each weight must be a finite number >= 0, not {bad[0]!r}")
+    if sum(w) <= 0:
+        raise ValueError("weights: at least one weight must be positive (every weight is 0)")
+    students = [{**r, "problems": [{**p, "weight": w[p["problem"] - 1]}
+                                   for p in r["problems"]]} for r in key["students"]]
+    return {**key, "students": students}
 
 
 def _items(rows: list) -> str:
