@@ -103,6 +103,15 @@ def _wrap(mod, name: str, take=None):
     return call
 
 
+def _package_module():
+    """The compiled module of the imported package (``RIGIDSYM_PEERS_MODULE=package``)."""
+    global VARIANT
+    from rigidsym.kernels.cbuild.driver import MODULE
+    mod = importlib.import_module(f"rigidsym.kernels.{MODULE}")
+    VARIANT += "; K4/K6 through the package's own module"
+    return mod
+
+
 def _public():
     """rigidsym.kernels, from the harness's environment or this checkout's ``.venv`` (its
     site-packages appended: the harness's own NumPy stays first); None if neither imports."""
@@ -152,7 +161,9 @@ def setup(ctx=None) -> None:
         if rk is not None and name in rk.KERNEL_NAMES:
             KERNELS[kid] = _call(getattr(rk, name))
             continue
-        mod = mod or _build(build_dir, NATIVE)
+        mod = mod or (_package_module() if rk is not None and not NATIVE
+                      and os.environ.get("RIGIDSYM_PEERS_MODULE") == "package"
+                      else _build(build_dir, NATIVE))
         take = None
         if rk is not None and rk.set_output_pool()["enabled"]:
             from rigidsym.kernels.runtime.outpool import take

@@ -512,3 +512,22 @@ def test_float_quaternion_right_at_extreme_scales_in_flush_to_zero_mode(tmp_path
         st, *vals = line.split()
         assert int(st) == 0, line
         assert np.abs(np.array(vals, float) - want).max() <= 8 * 2.0**-24, line
+
+
+@pytest.mark.slow   # a build of the default run's kernels and their draws, twice
+@pytest.mark.parametrize("flags", [["-DRIGIDSYM_C_DETECT"],
+                                   ["-DRIGIDSYM_C_DETECT", "-DDRIVER_FTZ"]],
+                         ids=["detect", "detect_ftz"])
+def test_independent_exponents_never_a_silent_wrong_detecting(default_src, tmp_path, flags):
+    """The same with -DRIGIDSYM_C_DETECT (the evaluation first, the flags read after it):
+    a status 0 of the detecting path is within the bound at every exponent, with and
+    without a flush mode."""
+    exe = build([GCC, *STRICT, "-O2", *flags], default_src, DEFAULT_KERNELS,
+                tmp_path / "drv")
+    tally = check_build([], exe, DEFAULT_KERNELS, 20, seed=sum(map(ord, "".join(flags))))
+    assert all(b for _, b in tally.values())
+    for dtype, (m, v) in ((np.float32, (1e30, 1e-18)), (np.float64, (1e300, 1e-160))):
+        xs = issue_cases("kinetic_energy", dtype)[0]
+        ((st, got),) = run_driver([], exe, [(0, dtype, xs)])
+        t = float(mpmath.mpf(float(dtype(m))) * mpmath.mpf(float(dtype(v))) ** 2 / 2)
+        assert st == 0 and abs(got[0] - t) <= 4 * float(np.finfo(dtype).eps) * t, (st, got[0])

@@ -103,9 +103,10 @@ def _call(kernel: str, dtype) -> tuple[str, int, int]:
     return f"{fn}({', '.join(parts)})", k, j
 
 
-def run_builds(tmp: Path, kdir: Path, kernel: str, dtype, rows: np.ndarray, builds) -> dict:
-    """{(cc, flag): (status, outputs, flushing)} of ``kernel`` (its source in ``kdir``) over
-    ``rows`` in each build."""
+def run_builds(tmp: Path, kdir: Path, kernel: str, dtype, rows: np.ndarray, builds,
+               defines: tuple[str, ...] = ()) -> dict:
+    """{(cc, flag): (status, outputs, flushing)} of ``kernel`` (its source in ``kdir``,
+    compiled with ``defines`` as well) over ``rows`` in each build."""
     src = kdir / f"rigidsym_c_{kernel}.c"
     (tmp / "driver.c").write_text(_DRIVER)
     T = "float" if dtype == np.float32 else "double"
@@ -114,10 +115,11 @@ def run_builds(tmp: Path, kdir: Path, kernel: str, dtype, rows: np.ndarray, buil
     np.ascontiguousarray(rows, dtype).tofile(data)
     got = {}
     for cc, flag in builds:
-        tag = f"{kernel}_{T}_{cc}{flag}"
-        obj = tmp / f"{cc}{flag}_{kernel}.o"
+        tag = f"{kernel}_{T}_{cc}{flag}" + "".join(defines)
+        obj = tmp / f"{cc}{flag}{''.join(defines)}_{kernel}.o"
         if not obj.exists():
-            subprocess.run([cc, "-std=c99", *KERNEL_FLAGS[flag], "-c", str(src), "-o", str(obj)],
+            subprocess.run([cc, "-std=c99", *KERNEL_FLAGS[flag], *defines, "-c", str(src),
+                            "-o", str(obj)],
                            check=True, capture_output=True)   # clang: -ffp-contract's warning
         exe = tmp / f"d_{tag}"
         subprocess.run([cc, "-std=c99", flag, f"-DDRV_T={T}", f"-DDRV_NIN={nin}",
@@ -307,3 +309,52 @@ def test_the_log_of_tiny_rotations_is_status_0_everywhere(tmp_path, dtype):
     float rounding of the rotation's own angle and axis."""
     check_kernel(tmp_path, KERNELS_DIR, "natural_invariants_from_rotation", dtype, 20000,
                  ["-O2", "-O3", "-Ofast"], seed=83, lo=-30)
+
+
+def check_detect(tmp: Path, kernel: str, dtype, n: int, builds) -> None:
+    """-DRIGIDSYM_C_DETECT (the evaluation first, its flags read after it): the status of
+    every row the same as the default build's (gcc -O2), the outputs the same bits in
+    every detecting build (with and without a flush mode), status-0 rows within the
+    reference's bound; rows: ordinary small inputs, the same scaled by 2^-600 (double) or
+    2^-40 (float) where nothing underflows, overflowing, underflowing and non-finite ones."""
+    rows, made = ordinary(kernel, n, 3)
+    scaled = rows[:64] * (2.0 ** (-600 if dtype == np.float64 else -40))
+    huge = rows[:3].copy()
+    bad = rows[:4].copy()
+    bad[0, 0], bad[1, 1], bad[2, -1], bad[3, 2] = np.nan, np.inf, -np.inf, np.nan
+    if kernel == "newton_euler_wrench":
+        huge[:, 10:13] = 1e25 if dtype == np.float32 else 1e200
+    else:
+        huge[:, :3] = 1e25 if dtype == np.float32 else 1e200
+        huge[:, 6:9] = 1e25 if dtype == np.float32 else 1e200
+    allrows = np.vstack([rows, scaled, huge, bad])
+    ref = run_builds(tmp, KERNELS_DIR, kernel, dtype, allrows, [("gcc", "-O2")])
+    got = run_builds(tmp, KERNELS_DIR, kernel, dtype, allrows, builds,
+                     ("-DRIGIDSYM_C_DETECT",))
+    status0 = ref["gcc", "-O2"][0]
+    for key, (status, _, _) in got.items():
+        assert np.array_equal(status, status0), (key, np.flatnonzero(status != status0)[:5])
+    assert_same_everywhere(got)
+    status, outs, _ = next(iter(got.values()))
+    assert np.all(status[:n] == OK)
+    check_against_reference(kernel, rows, made, outs[:n], dtype)
+    assert np.all(status[-4:] & NONFINITE_INPUT)
+
+
+@pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64"), reason="x86-64's MXCSR")
+def test_detect_gives_the_default_status(tmp_path):
+    """The wrench in float, gcc at -O2 and -Ofast (FTZ and DAZ: the range test's path)."""
+    check_detect(tmp_path, "newton_euler_wrench", np.float32, 500,
+                 [("gcc", "-O2"), ("gcc", "-Ofast")])
+
+
+@pytest.mark.slow   # 2 kernels x 2 types x 2 compilers x 3 flags, 20,000 inputs each
+@needs_two
+@pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64"), reason="x86-64's MXCSR")
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+@pytest.mark.parametrize("kernel", ["newton_euler_wrench", "twist_transfer"])
+def test_detect_gives_the_default_status_full(tmp_path, kernel, dtype):
+    """The same for both detecting kernels of the example, float and double, gcc and clang
+    at -O2, -O3 and -Ofast."""
+    check_detect(tmp_path, kernel, dtype, 20000,
+                 [(cc, f) for cc in COMPILERS for f in ("-O2", "-O3", "-Ofast")])

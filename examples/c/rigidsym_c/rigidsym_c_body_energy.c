@@ -261,6 +261,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_body_energy gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[1];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_plain_p)(in_m, in_v, in_inertia, in_omega, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 1; ++j_)
+                (out_T)[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -307,6 +326,63 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    double rs_in0_[3];
+    double rs_in1_[9];
+    double rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double c0_v = in_v[0];
+        const double c1_v = in_v[1];
+        const double c2_v = in_v[2];
+        const double c0_inertia = in_inertia[0];
+        const double c1_inertia = in_inertia[1];
+        const double c2_inertia = in_inertia[2];
+        const double c3_inertia = in_inertia[3];
+        const double c4_inertia = in_inertia[4];
+        const double c5_inertia = in_inertia[5];
+        const double c6_inertia = in_inertia[6];
+        const double c7_inertia = in_inertia[7];
+        const double c8_inertia = in_inertia[8];
+        const double c0_omega = in_omega[0];
+        const double c1_omega = in_omega[1];
+        const double c2_omega = in_omega[2];
+        out_T[0] = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = out_T[0];   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_v;
+        rs_in0_[1] = c1_v;
+        rs_in0_[2] = c2_v;
+        in_v = rs_in0_;
+        rs_in1_[0] = c0_inertia;
+        rs_in1_[1] = c1_inertia;
+        rs_in1_[2] = c2_inertia;
+        rs_in1_[3] = c3_inertia;
+        rs_in1_[4] = c4_inertia;
+        rs_in1_[5] = c5_inertia;
+        rs_in1_[6] = c6_inertia;
+        rs_in1_[7] = c7_inertia;
+        rs_in1_[8] = c8_inertia;
+        in_inertia = rs_in1_;
+        rs_in2_[0] = c0_omega;
+        rs_in2_[1] = c1_omega;
+        rs_in2_[2] = c2_omega;
+        in_omega = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_m, *&in_v[0])));
@@ -668,6 +744,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_body_energy_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[1];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_f32_plain_p)(in_m, in_v, in_inertia, in_omega, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 1; ++j_)
+                (out_T)[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -717,6 +812,63 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    float rs_in0_[3];
+    float rs_in1_[9];
+    float rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float c0_v = in_v[0];
+        const float c1_v = in_v[1];
+        const float c2_v = in_v[2];
+        const float c0_inertia = in_inertia[0];
+        const float c1_inertia = in_inertia[1];
+        const float c2_inertia = in_inertia[2];
+        const float c3_inertia = in_inertia[3];
+        const float c4_inertia = in_inertia[4];
+        const float c5_inertia = in_inertia[5];
+        const float c6_inertia = in_inertia[6];
+        const float c7_inertia = in_inertia[7];
+        const float c8_inertia = in_inertia[8];
+        const float c0_omega = in_omega[0];
+        const float c1_omega = in_omega[1];
+        const float c2_omega = in_omega[2];
+        out_T[0] = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = out_T[0];   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_v;
+        rs_in0_[1] = c1_v;
+        rs_in0_[2] = c2_v;
+        in_v = rs_in0_;
+        rs_in1_[0] = c0_inertia;
+        rs_in1_[1] = c1_inertia;
+        rs_in1_[2] = c2_inertia;
+        rs_in1_[3] = c3_inertia;
+        rs_in1_[4] = c4_inertia;
+        rs_in1_[5] = c5_inertia;
+        rs_in1_[6] = c6_inertia;
+        rs_in1_[7] = c7_inertia;
+        rs_in1_[8] = c8_inertia;
+        in_inertia = rs_in1_;
+        rs_in2_[0] = c0_omega;
+        rs_in2_[1] = c1_omega;
+        rs_in2_[2] = c2_omega;
+        in_omega = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_m, *&in_v[0], *&in_v[1], *&in_v[2])));
@@ -1266,6 +1418,37 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_body_energy_with_jacobians gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[1];
+        double rs_o1_[1];
+        double rs_o2_[3];
+        double rs_o3_[9];
+        double rs_o4_[3];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_with_jacobians_plain_p)(in_m, in_v, in_inertia, in_omega, rs_o0_, rs_o1_, rs_o2_, rs_o3_, rs_o4_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 1; ++j_)
+                (out_T)[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 1; ++j_)
+                (out_T_D_m)[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 3; ++j_)
+                out_T_D_v[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 9; ++j_)
+                out_T_D_inertia[j_] = rs_o3_[j_];
+            for (j_ = 0; j_ < 3; ++j_)
+                out_T_D_omega[j_] = rs_o4_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -1313,6 +1496,97 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    double rs_in0_[3];
+    double rs_in1_[9];
+    double rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double c0_v = in_v[0];
+        const double c1_v = in_v[1];
+        const double c2_v = in_v[2];
+        const double c0_inertia = in_inertia[0];
+        const double c1_inertia = in_inertia[1];
+        const double c2_inertia = in_inertia[2];
+        const double c3_inertia = in_inertia[3];
+        const double c4_inertia = in_inertia[4];
+        const double c5_inertia = in_inertia[5];
+        const double c6_inertia = in_inertia[6];
+        const double c7_inertia = in_inertia[7];
+        const double c8_inertia = in_inertia[8];
+        const double c0_omega = in_omega[0];
+        const double c1_omega = in_omega[1];
+        const double c2_omega = in_omega[2];
+        const double x0 = (c0_v*c0_v);
+        const double x1 = (c1_v*c1_v);
+        const double x2 = (c2_v*c2_v);
+        const double x3 = c0_inertia*c0_omega;
+        const double x4 = c3_inertia*c1_omega;
+        const double x5 = c6_inertia*c2_omega;
+        const double x6 = (0.5)*c0_omega;
+        const double x7 = c1_inertia*c0_omega;
+        const double x8 = c4_inertia*c1_omega;
+        const double x9 = c7_inertia*c2_omega;
+        const double x10 = (0.5)*c1_omega;
+        const double x11 = c2_inertia*c0_omega;
+        const double x12 = c5_inertia*c1_omega;
+        const double x13 = c8_inertia*c2_omega;
+        const double x14 = (0.5)*c2_omega;
+        const double x15 = c1_omega*x6;
+        const double x16 = c2_omega*x6;
+        const double x17 = c2_omega*x10;
+        out_T[0] = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
+        out_T_D_v[0] = in_m*c0_v;
+        out_T_D_v[1] = in_m*c1_v;
+        out_T_D_v[2] = in_m*c2_v;
+        out_T_D_inertia[0] = (0.5)*(c0_omega*c0_omega);
+        out_T_D_inertia[1] = x15;
+        out_T_D_inertia[2] = x16;
+        out_T_D_inertia[3] = x15;
+        out_T_D_inertia[4] = (0.5)*(c1_omega*c1_omega);
+        out_T_D_inertia[5] = x17;
+        out_T_D_inertia[6] = x16;
+        out_T_D_inertia[7] = x17;
+        out_T_D_inertia[8] = (0.5)*(c2_omega*c2_omega);
+        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
+        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
+        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_v;
+        rs_in0_[1] = c1_v;
+        rs_in0_[2] = c2_v;
+        in_v = rs_in0_;
+        rs_in1_[0] = c0_inertia;
+        rs_in1_[1] = c1_inertia;
+        rs_in1_[2] = c2_inertia;
+        rs_in1_[3] = c3_inertia;
+        rs_in1_[4] = c4_inertia;
+        rs_in1_[5] = c5_inertia;
+        rs_in1_[6] = c6_inertia;
+        rs_in1_[7] = c7_inertia;
+        rs_in1_[8] = c8_inertia;
+        in_inertia = rs_in1_;
+        rs_in2_[0] = c0_omega;
+        rs_in2_[1] = c1_omega;
+        rs_in2_[2] = c2_omega;
+        in_omega = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_m, *&in_v[0])));
@@ -1888,6 +2162,37 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_body_energy_with_jacobians_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[1];
+        float rs_o1_[1];
+        float rs_o2_[3];
+        float rs_o3_[9];
+        float rs_o4_[3];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_body_energy_with_jacobians_f32_plain_p)(in_m, in_v, in_inertia, in_omega, rs_o0_, rs_o1_, rs_o2_, rs_o3_, rs_o4_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 1; ++j_)
+                (out_T)[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 1; ++j_)
+                (out_T_D_m)[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 3; ++j_)
+                out_T_D_v[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 9; ++j_)
+                out_T_D_inertia[j_] = rs_o3_[j_];
+            for (j_ = 0; j_ < 3; ++j_)
+                out_T_D_omega[j_] = rs_o4_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -1938,6 +2243,97 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    float rs_in0_[3];
+    float rs_in1_[9];
+    float rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float c0_v = in_v[0];
+        const float c1_v = in_v[1];
+        const float c2_v = in_v[2];
+        const float c0_inertia = in_inertia[0];
+        const float c1_inertia = in_inertia[1];
+        const float c2_inertia = in_inertia[2];
+        const float c3_inertia = in_inertia[3];
+        const float c4_inertia = in_inertia[4];
+        const float c5_inertia = in_inertia[5];
+        const float c6_inertia = in_inertia[6];
+        const float c7_inertia = in_inertia[7];
+        const float c8_inertia = in_inertia[8];
+        const float c0_omega = in_omega[0];
+        const float c1_omega = in_omega[1];
+        const float c2_omega = in_omega[2];
+        const float x0 = (c0_v*c0_v);
+        const float x1 = (c1_v*c1_v);
+        const float x2 = (c2_v*c2_v);
+        const float x3 = c0_inertia*c0_omega;
+        const float x4 = c3_inertia*c1_omega;
+        const float x5 = c6_inertia*c2_omega;
+        const float x6 = (0.5f)*c0_omega;
+        const float x7 = c1_inertia*c0_omega;
+        const float x8 = c4_inertia*c1_omega;
+        const float x9 = c7_inertia*c2_omega;
+        const float x10 = (0.5f)*c1_omega;
+        const float x11 = c2_inertia*c0_omega;
+        const float x12 = c5_inertia*c1_omega;
+        const float x13 = c8_inertia*c2_omega;
+        const float x14 = (0.5f)*c2_omega;
+        const float x15 = c1_omega*x6;
+        const float x16 = c2_omega*x6;
+        const float x17 = c2_omega*x10;
+        out_T[0] = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
+        out_T_D_v[0] = in_m*c0_v;
+        out_T_D_v[1] = in_m*c1_v;
+        out_T_D_v[2] = in_m*c2_v;
+        out_T_D_inertia[0] = (0.5f)*(c0_omega*c0_omega);
+        out_T_D_inertia[1] = x15;
+        out_T_D_inertia[2] = x16;
+        out_T_D_inertia[3] = x15;
+        out_T_D_inertia[4] = (0.5f)*(c1_omega*c1_omega);
+        out_T_D_inertia[5] = x17;
+        out_T_D_inertia[6] = x16;
+        out_T_D_inertia[7] = x17;
+        out_T_D_inertia[8] = (0.5f)*(c2_omega*c2_omega);
+        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
+        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
+        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_v;
+        rs_in0_[1] = c1_v;
+        rs_in0_[2] = c2_v;
+        in_v = rs_in0_;
+        rs_in1_[0] = c0_inertia;
+        rs_in1_[1] = c1_inertia;
+        rs_in1_[2] = c2_inertia;
+        rs_in1_[3] = c3_inertia;
+        rs_in1_[4] = c4_inertia;
+        rs_in1_[5] = c5_inertia;
+        rs_in1_[6] = c6_inertia;
+        rs_in1_[7] = c7_inertia;
+        rs_in1_[8] = c8_inertia;
+        in_inertia = rs_in1_;
+        rs_in2_[0] = c0_omega;
+        rs_in2_[1] = c1_omega;
+        rs_in2_[2] = c2_omega;
+        in_omega = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_m, *&in_v[0], *&in_v[1], *&in_v[2])));

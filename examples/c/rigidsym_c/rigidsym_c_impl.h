@@ -127,6 +127,7 @@ typedef char rigidsym_c_error_fsingle_precision_constant_add_fno_single_precisio
 #define RIGIDSYM_C_FP_ALL 0x3fU     /* MXCSR: IE DE ZE OE UE PE */
 #define RIGIDSYM_C_FP_RISKY 0x1dU   /* IE ZE OE UE */
 #define RIGIDSYM_C_FP_FLUSH 0x8040U /* FTZ DAZ */
+#define RIGIDSYM_C_FP_DAZ 0x0040U   /* DAZ (the detecting fast path of kernel.c.j2) */
 static inline unsigned rigidsym_c_fp_get(void)
 {
     unsigned m;
@@ -136,6 +137,19 @@ static inline unsigned rigidsym_c_fp_get(void)
 static inline void rigidsym_c_fp_put(unsigned m)
 {
     __asm__ volatile("ldmxcsr %0" : : "m"(m) : "memory");
+}
+/* the flags once x is computed (x an operand of the read: what it depends on runs first) */
+static inline unsigned rigidsym_c_fp_get_after_d(double x)
+{
+    unsigned m;
+    __asm__ volatile("stmxcsr %0" : "=m"(m) : "x"(x) : "memory");
+    return m;
+}
+static inline unsigned rigidsym_c_fp_get_after_f(float x)
+{
+    unsigned m;
+    __asm__ volatile("stmxcsr %0" : "=m"(m) : "x"(x) : "memory");
+    return m;
 }
 #elif defined(__aarch64__)
 #undef RIGIDSYM_C_FLAGS_D

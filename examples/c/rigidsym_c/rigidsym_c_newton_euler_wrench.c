@@ -288,6 +288,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_newton_euler_wrench gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[6];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_w[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -334,6 +353,79 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    double rs_in0_[9];
+    double rs_in1_[3];
+    double rs_in2_[3];
+    double rs_in3_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double c0_I_C = in_I_C[0];
+        const double c1_I_C = in_I_C[1];
+        const double c2_I_C = in_I_C[2];
+        const double c3_I_C = in_I_C[3];
+        const double c4_I_C = in_I_C[4];
+        const double c5_I_C = in_I_C[5];
+        const double c6_I_C = in_I_C[6];
+        const double c7_I_C = in_I_C[7];
+        const double c8_I_C = in_I_C[8];
+        const double c0_omega = in_omega[0];
+        const double c1_omega = in_omega[1];
+        const double c2_omega = in_omega[2];
+        const double c0_omega_dot = in_omega_dot[0];
+        const double c1_omega_dot = in_omega_dot[1];
+        const double c2_omega_dot = in_omega_dot[2];
+        const double c0_c_ddot = in_c_ddot[0];
+        const double c1_c_ddot = in_c_ddot[1];
+        const double c2_c_ddot = in_c_ddot[2];
+        const double x0 = c6_I_C*c0_omega + c7_I_C*c1_omega + c8_I_C*c2_omega;
+        const double x1 = c3_I_C*c0_omega + c4_I_C*c1_omega + c5_I_C*c2_omega;
+        const double x2 = c0_I_C*c0_omega + c1_I_C*c1_omega + c2_I_C*c2_omega;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x0 - c2_omega*x1;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x0 + c2_omega*x2;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x1 - c1_omega*x2;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = ((out_w[0] + (out_w[1] + out_w[2])) + (out_w[3] + (out_w[4] + out_w[5])));   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_I_C;
+        rs_in0_[1] = c1_I_C;
+        rs_in0_[2] = c2_I_C;
+        rs_in0_[3] = c3_I_C;
+        rs_in0_[4] = c4_I_C;
+        rs_in0_[5] = c5_I_C;
+        rs_in0_[6] = c6_I_C;
+        rs_in0_[7] = c7_I_C;
+        rs_in0_[8] = c8_I_C;
+        in_I_C = rs_in0_;
+        rs_in1_[0] = c0_omega;
+        rs_in1_[1] = c1_omega;
+        rs_in1_[2] = c2_omega;
+        in_omega = rs_in1_;
+        rs_in2_[0] = c0_omega_dot;
+        rs_in2_[1] = c1_omega_dot;
+        rs_in2_[2] = c2_omega_dot;
+        in_omega_dot = rs_in2_;
+        rs_in3_[0] = c0_c_ddot;
+        rs_in3_[1] = c1_c_ddot;
+        rs_in3_[2] = c2_c_ddot;
+        in_c_ddot = rs_in3_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C), _mm_load_sd(in_I_C + 1))));
@@ -743,6 +835,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_newton_euler_wrench_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[6];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_f32_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_w[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -792,6 +903,79 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    float rs_in0_[9];
+    float rs_in1_[3];
+    float rs_in2_[3];
+    float rs_in3_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float c0_I_C = in_I_C[0];
+        const float c1_I_C = in_I_C[1];
+        const float c2_I_C = in_I_C[2];
+        const float c3_I_C = in_I_C[3];
+        const float c4_I_C = in_I_C[4];
+        const float c5_I_C = in_I_C[5];
+        const float c6_I_C = in_I_C[6];
+        const float c7_I_C = in_I_C[7];
+        const float c8_I_C = in_I_C[8];
+        const float c0_omega = in_omega[0];
+        const float c1_omega = in_omega[1];
+        const float c2_omega = in_omega[2];
+        const float c0_omega_dot = in_omega_dot[0];
+        const float c1_omega_dot = in_omega_dot[1];
+        const float c2_omega_dot = in_omega_dot[2];
+        const float c0_c_ddot = in_c_ddot[0];
+        const float c1_c_ddot = in_c_ddot[1];
+        const float c2_c_ddot = in_c_ddot[2];
+        const float x0 = c6_I_C*c0_omega + c7_I_C*c1_omega + c8_I_C*c2_omega;
+        const float x1 = c3_I_C*c0_omega + c4_I_C*c1_omega + c5_I_C*c2_omega;
+        const float x2 = c0_I_C*c0_omega + c1_I_C*c1_omega + c2_I_C*c2_omega;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x0 - c2_omega*x1;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x0 + c2_omega*x2;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x1 - c1_omega*x2;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = ((out_w[0] + (out_w[1] + out_w[2])) + (out_w[3] + (out_w[4] + out_w[5])));   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_I_C;
+        rs_in0_[1] = c1_I_C;
+        rs_in0_[2] = c2_I_C;
+        rs_in0_[3] = c3_I_C;
+        rs_in0_[4] = c4_I_C;
+        rs_in0_[5] = c5_I_C;
+        rs_in0_[6] = c6_I_C;
+        rs_in0_[7] = c7_I_C;
+        rs_in0_[8] = c8_I_C;
+        in_I_C = rs_in0_;
+        rs_in1_[0] = c0_omega;
+        rs_in1_[1] = c1_omega;
+        rs_in1_[2] = c2_omega;
+        in_omega = rs_in1_;
+        rs_in2_[0] = c0_omega_dot;
+        rs_in2_[1] = c1_omega_dot;
+        rs_in2_[2] = c2_omega_dot;
+        in_omega_dot = rs_in2_;
+        rs_in3_[0] = c0_c_ddot;
+        rs_in3_[1] = c1_c_ddot;
+        rs_in3_[2] = c2_c_ddot;
+        in_c_ddot = rs_in3_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_I_C), *(in_I_C + 1), *(in_I_C + 2), *(in_I_C + 3))));
@@ -1835,6 +2019,40 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_newton_euler_wrench_with_jacobians gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[6];
+        double rs_o1_[54];
+        double rs_o2_[6];
+        double rs_o3_[18];
+        double rs_o4_[18];
+        double rs_o5_[18];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, rs_o0_, rs_o1_, rs_o2_, rs_o3_, rs_o4_, rs_o5_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_w[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 54; ++j_)
+                out_w_D_I_C[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 6; ++j_)
+                out_w_D_m[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_w_D_omega[j_] = rs_o3_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_w_D_omega_dot[j_] = rs_o4_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_w_D_c_ddot[j_] = rs_o5_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -1881,6 +2099,214 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    double rs_in0_[9];
+    double rs_in1_[3];
+    double rs_in2_[3];
+    double rs_in3_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double c0_I_C = in_I_C[0];
+        const double c1_I_C = in_I_C[1];
+        const double c2_I_C = in_I_C[2];
+        const double c3_I_C = in_I_C[3];
+        const double c4_I_C = in_I_C[4];
+        const double c5_I_C = in_I_C[5];
+        const double c6_I_C = in_I_C[6];
+        const double c7_I_C = in_I_C[7];
+        const double c8_I_C = in_I_C[8];
+        const double c0_omega = in_omega[0];
+        const double c1_omega = in_omega[1];
+        const double c2_omega = in_omega[2];
+        const double c0_omega_dot = in_omega_dot[0];
+        const double c1_omega_dot = in_omega_dot[1];
+        const double c2_omega_dot = in_omega_dot[2];
+        const double c0_c_ddot = in_c_ddot[0];
+        const double c1_c_ddot = in_c_ddot[1];
+        const double c2_c_ddot = in_c_ddot[2];
+        const double x0 = c7_I_C*c1_omega;
+        const double x1 = c6_I_C*c0_omega;
+        const double x2 = c8_I_C*c2_omega;
+        const double x3 = x1 + x2;
+        const double x4 = x0 + x3;
+        const double x5 = c5_I_C*c2_omega;
+        const double x6 = c3_I_C*c0_omega;
+        const double x7 = c4_I_C*c1_omega;
+        const double x8 = x6 + x7;
+        const double x9 = x5 + x8;
+        const double x10 = c2_I_C*c2_omega;
+        const double x11 = c0_I_C*c0_omega;
+        const double x12 = c1_I_C*c1_omega;
+        const double x13 = x11 + x12;
+        const double x14 = x10 + x13;
+        const double x15 = c0_omega*c2_omega;
+        const double x16 = -x15;
+        const double x17 = c1_omega*c2_omega;
+        const double x18 = -x17;
+        const double x19 = (c2_omega*c2_omega);
+        const double x20 = c0_omega*c1_omega;
+        const double x21 = (c1_omega*c1_omega);
+        const double x22 = (c0_omega*c0_omega);
+        const double x23 = -x20;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x4 - c2_omega*x9;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x4 + c2_omega*x14;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x9 - c1_omega*x14;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        out_w_D_I_C[0] = c0_omega_dot;
+        out_w_D_I_C[1] = c1_omega_dot;
+        out_w_D_I_C[2] = c2_omega_dot;
+        out_w_D_I_C[3] = x16;
+        out_w_D_I_C[4] = x18;
+        out_w_D_I_C[5] = -x19;
+        out_w_D_I_C[6] = x20;
+        out_w_D_I_C[7] = x21;
+        out_w_D_I_C[8] = x17;
+        out_w_D_I_C[9] = x15;
+        out_w_D_I_C[10] = x17;
+        out_w_D_I_C[11] = x19;
+        out_w_D_I_C[12] = c0_omega_dot;
+        out_w_D_I_C[13] = c1_omega_dot;
+        out_w_D_I_C[14] = c2_omega_dot;
+        out_w_D_I_C[15] = -x22;
+        out_w_D_I_C[16] = x23;
+        out_w_D_I_C[17] = x16;
+        out_w_D_I_C[18] = x23;
+        out_w_D_I_C[19] = -x21;
+        out_w_D_I_C[20] = x18;
+        out_w_D_I_C[21] = x22;
+        out_w_D_I_C[22] = x20;
+        out_w_D_I_C[23] = x15;
+        out_w_D_I_C[24] = c0_omega_dot;
+        out_w_D_I_C[25] = c1_omega_dot;
+        out_w_D_I_C[26] = c2_omega_dot;
+        out_w_D_I_C[27] = 0.0;
+        out_w_D_I_C[28] = 0.0;
+        out_w_D_I_C[29] = 0.0;
+        out_w_D_I_C[30] = 0.0;
+        out_w_D_I_C[31] = 0.0;
+        out_w_D_I_C[32] = 0.0;
+        out_w_D_I_C[33] = 0.0;
+        out_w_D_I_C[34] = 0.0;
+        out_w_D_I_C[35] = 0.0;
+        out_w_D_I_C[36] = 0.0;
+        out_w_D_I_C[37] = 0.0;
+        out_w_D_I_C[38] = 0.0;
+        out_w_D_I_C[39] = 0.0;
+        out_w_D_I_C[40] = 0.0;
+        out_w_D_I_C[41] = 0.0;
+        out_w_D_I_C[42] = 0.0;
+        out_w_D_I_C[43] = 0.0;
+        out_w_D_I_C[44] = 0.0;
+        out_w_D_I_C[45] = 0.0;
+        out_w_D_I_C[46] = 0.0;
+        out_w_D_I_C[47] = 0.0;
+        out_w_D_I_C[48] = 0.0;
+        out_w_D_I_C[49] = 0.0;
+        out_w_D_I_C[50] = 0.0;
+        out_w_D_I_C[51] = 0.0;
+        out_w_D_I_C[52] = 0.0;
+        out_w_D_I_C[53] = 0.0;
+        out_w_D_m[0] = 0.0;
+        out_w_D_m[1] = 0.0;
+        out_w_D_m[2] = 0.0;
+        out_w_D_m[3] = c0_c_ddot;
+        out_w_D_m[4] = c1_c_ddot;
+        out_w_D_m[5] = c2_c_ddot;
+        out_w_D_omega[0] = -c3_I_C*c2_omega + c6_I_C*c1_omega;
+        out_w_D_omega[1] = -c4_I_C*c2_omega + 2.0*x0 + x3;
+        out_w_D_omega[2] = c8_I_C*c1_omega - 2.0*x5 - x8;
+        out_w_D_omega[3] = c0_I_C*c2_omega - x0 - 2.0*x1 - x2;
+        out_w_D_omega[4] = c1_I_C*c2_omega - c7_I_C*c0_omega;
+        out_w_D_omega[5] = -c8_I_C*c0_omega + 2.0*x10 + x13;
+        out_w_D_omega[6] = -c0_I_C*c1_omega + x5 + 2.0*x6 + x7;
+        out_w_D_omega[7] = c4_I_C*c0_omega - x10 - x11 - 2.0*x12;
+        out_w_D_omega[8] = -c2_I_C*c1_omega + c5_I_C*c0_omega;
+        out_w_D_omega[9] = 0.0;
+        out_w_D_omega[10] = 0.0;
+        out_w_D_omega[11] = 0.0;
+        out_w_D_omega[12] = 0.0;
+        out_w_D_omega[13] = 0.0;
+        out_w_D_omega[14] = 0.0;
+        out_w_D_omega[15] = 0.0;
+        out_w_D_omega[16] = 0.0;
+        out_w_D_omega[17] = 0.0;
+        out_w_D_omega_dot[0] = c0_I_C;
+        out_w_D_omega_dot[1] = c1_I_C;
+        out_w_D_omega_dot[2] = c2_I_C;
+        out_w_D_omega_dot[3] = c3_I_C;
+        out_w_D_omega_dot[4] = c4_I_C;
+        out_w_D_omega_dot[5] = c5_I_C;
+        out_w_D_omega_dot[6] = c6_I_C;
+        out_w_D_omega_dot[7] = c7_I_C;
+        out_w_D_omega_dot[8] = c8_I_C;
+        out_w_D_omega_dot[9] = 0.0;
+        out_w_D_omega_dot[10] = 0.0;
+        out_w_D_omega_dot[11] = 0.0;
+        out_w_D_omega_dot[12] = 0.0;
+        out_w_D_omega_dot[13] = 0.0;
+        out_w_D_omega_dot[14] = 0.0;
+        out_w_D_omega_dot[15] = 0.0;
+        out_w_D_omega_dot[16] = 0.0;
+        out_w_D_omega_dot[17] = 0.0;
+        out_w_D_c_ddot[0] = 0.0;
+        out_w_D_c_ddot[1] = 0.0;
+        out_w_D_c_ddot[2] = 0.0;
+        out_w_D_c_ddot[3] = 0.0;
+        out_w_D_c_ddot[4] = 0.0;
+        out_w_D_c_ddot[5] = 0.0;
+        out_w_D_c_ddot[6] = 0.0;
+        out_w_D_c_ddot[7] = 0.0;
+        out_w_D_c_ddot[8] = 0.0;
+        out_w_D_c_ddot[9] = in_m;
+        out_w_D_c_ddot[10] = 0.0;
+        out_w_D_c_ddot[11] = 0.0;
+        out_w_D_c_ddot[12] = 0.0;
+        out_w_D_c_ddot[13] = in_m;
+        out_w_D_c_ddot[14] = 0.0;
+        out_w_D_c_ddot[15] = 0.0;
+        out_w_D_c_ddot[16] = 0.0;
+        out_w_D_c_ddot[17] = in_m;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = ((((((out_w[0] + (out_w[1] + out_w[2])) + ((out_w[3] + out_w[4]) + (out_w[5] + out_w_D_I_C[0]))) + (((out_w_D_I_C[1] + out_w_D_I_C[2]) + (out_w_D_I_C[3] + out_w_D_I_C[4])) + ((out_w_D_I_C[5] + out_w_D_I_C[6]) + (out_w_D_I_C[7] + out_w_D_I_C[8])))) + (((out_w_D_I_C[9] + (out_w_D_I_C[10] + out_w_D_I_C[11])) + ((out_w_D_I_C[12] + out_w_D_I_C[13]) + (out_w_D_I_C[14] + out_w_D_I_C[15]))) + (((out_w_D_I_C[16] + out_w_D_I_C[17]) + (out_w_D_I_C[18] + out_w_D_I_C[19])) + ((out_w_D_I_C[20] + out_w_D_I_C[21]) + (out_w_D_I_C[22] + out_w_D_I_C[23]))))) + ((((out_w_D_I_C[24] + (out_w_D_I_C[25] + out_w_D_I_C[26])) + ((out_w_D_I_C[27] + out_w_D_I_C[28]) + (out_w_D_I_C[29] + out_w_D_I_C[30]))) + (((out_w_D_I_C[31] + out_w_D_I_C[32]) + (out_w_D_I_C[33] + out_w_D_I_C[34])) + ((out_w_D_I_C[35] + out_w_D_I_C[36]) + (out_w_D_I_C[37] + out_w_D_I_C[38])))) + (((out_w_D_I_C[39] + (out_w_D_I_C[40] + out_w_D_I_C[41])) + ((out_w_D_I_C[42] + out_w_D_I_C[43]) + (out_w_D_I_C[44] + out_w_D_I_C[45]))) + (((out_w_D_I_C[46] + out_w_D_I_C[47]) + (out_w_D_I_C[48] + out_w_D_I_C[49])) + ((out_w_D_I_C[50] + out_w_D_I_C[51]) + (out_w_D_I_C[52] + out_w_D_I_C[53])))))) + (((((out_w_D_m[0] + (out_w_D_m[1] + out_w_D_m[2])) + ((out_w_D_m[3] + out_w_D_m[4]) + (out_w_D_m[5] + out_w_D_omega[0]))) + (((out_w_D_omega[1] + out_w_D_omega[2]) + (out_w_D_omega[3] + out_w_D_omega[4])) + ((out_w_D_omega[5] + out_w_D_omega[6]) + (out_w_D_omega[7] + out_w_D_omega[8])))) + (((out_w_D_omega[9] + (out_w_D_omega[10] + out_w_D_omega[11])) + ((out_w_D_omega[12] + out_w_D_omega[13]) + (out_w_D_omega[14] + out_w_D_omega[15]))) + (((out_w_D_omega[16] + out_w_D_omega[17]) + (out_w_D_omega_dot[0] + out_w_D_omega_dot[1])) + ((out_w_D_omega_dot[2] + out_w_D_omega_dot[3]) + (out_w_D_omega_dot[4] + out_w_D_omega_dot[5]))))) + ((((out_w_D_omega_dot[6] + (out_w_D_omega_dot[7] + out_w_D_omega_dot[8])) + ((out_w_D_omega_dot[9] + out_w_D_omega_dot[10]) + (out_w_D_omega_dot[11] + out_w_D_omega_dot[12]))) + (((out_w_D_omega_dot[13] + out_w_D_omega_dot[14]) + (out_w_D_omega_dot[15] + out_w_D_omega_dot[16])) + ((out_w_D_omega_dot[17] + out_w_D_c_ddot[0]) + (out_w_D_c_ddot[1] + out_w_D_c_ddot[2])))) + (((out_w_D_c_ddot[3] + (out_w_D_c_ddot[4] + out_w_D_c_ddot[5])) + ((out_w_D_c_ddot[6] + out_w_D_c_ddot[7]) + (out_w_D_c_ddot[8] + out_w_D_c_ddot[9]))) + (((out_w_D_c_ddot[10] + out_w_D_c_ddot[11]) + (out_w_D_c_ddot[12] + out_w_D_c_ddot[13])) + ((out_w_D_c_ddot[14] + out_w_D_c_ddot[15]) + (out_w_D_c_ddot[16] + out_w_D_c_ddot[17])))))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_I_C;
+        rs_in0_[1] = c1_I_C;
+        rs_in0_[2] = c2_I_C;
+        rs_in0_[3] = c3_I_C;
+        rs_in0_[4] = c4_I_C;
+        rs_in0_[5] = c5_I_C;
+        rs_in0_[6] = c6_I_C;
+        rs_in0_[7] = c7_I_C;
+        rs_in0_[8] = c8_I_C;
+        in_I_C = rs_in0_;
+        rs_in1_[0] = c0_omega;
+        rs_in1_[1] = c1_omega;
+        rs_in1_[2] = c2_omega;
+        in_omega = rs_in1_;
+        rs_in2_[0] = c0_omega_dot;
+        rs_in2_[1] = c1_omega_dot;
+        rs_in2_[2] = c2_omega_dot;
+        in_omega_dot = rs_in2_;
+        rs_in3_[0] = c0_c_ddot;
+        rs_in3_[1] = c1_c_ddot;
+        rs_in3_[2] = c2_c_ddot;
+        in_c_ddot = rs_in3_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_I_C), _mm_load_sd(in_I_C + 1))));
@@ -2940,6 +3366,40 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_newton_euler_wrench_with_jacobians_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[6];
+        float rs_o1_[54];
+        float rs_o2_[6];
+        float rs_o3_[18];
+        float rs_o4_[18];
+        float rs_o5_[18];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_newton_euler_wrench_with_jacobians_f32_plain_p)(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, rs_o0_, rs_o1_, rs_o2_, rs_o3_, rs_o4_, rs_o5_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_w[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 54; ++j_)
+                out_w_D_I_C[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 6; ++j_)
+                out_w_D_m[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_w_D_omega[j_] = rs_o3_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_w_D_omega_dot[j_] = rs_o4_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_w_D_c_ddot[j_] = rs_o5_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -2989,6 +3449,214 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    float rs_in0_[9];
+    float rs_in1_[3];
+    float rs_in2_[3];
+    float rs_in3_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float c0_I_C = in_I_C[0];
+        const float c1_I_C = in_I_C[1];
+        const float c2_I_C = in_I_C[2];
+        const float c3_I_C = in_I_C[3];
+        const float c4_I_C = in_I_C[4];
+        const float c5_I_C = in_I_C[5];
+        const float c6_I_C = in_I_C[6];
+        const float c7_I_C = in_I_C[7];
+        const float c8_I_C = in_I_C[8];
+        const float c0_omega = in_omega[0];
+        const float c1_omega = in_omega[1];
+        const float c2_omega = in_omega[2];
+        const float c0_omega_dot = in_omega_dot[0];
+        const float c1_omega_dot = in_omega_dot[1];
+        const float c2_omega_dot = in_omega_dot[2];
+        const float c0_c_ddot = in_c_ddot[0];
+        const float c1_c_ddot = in_c_ddot[1];
+        const float c2_c_ddot = in_c_ddot[2];
+        const float x0 = c7_I_C*c1_omega;
+        const float x1 = c6_I_C*c0_omega;
+        const float x2 = c8_I_C*c2_omega;
+        const float x3 = x1 + x2;
+        const float x4 = x0 + x3;
+        const float x5 = c5_I_C*c2_omega;
+        const float x6 = c3_I_C*c0_omega;
+        const float x7 = c4_I_C*c1_omega;
+        const float x8 = x6 + x7;
+        const float x9 = x5 + x8;
+        const float x10 = c2_I_C*c2_omega;
+        const float x11 = c0_I_C*c0_omega;
+        const float x12 = c1_I_C*c1_omega;
+        const float x13 = x11 + x12;
+        const float x14 = x10 + x13;
+        const float x15 = c0_omega*c2_omega;
+        const float x16 = -x15;
+        const float x17 = c1_omega*c2_omega;
+        const float x18 = -x17;
+        const float x19 = (c2_omega*c2_omega);
+        const float x20 = c0_omega*c1_omega;
+        const float x21 = (c1_omega*c1_omega);
+        const float x22 = (c0_omega*c0_omega);
+        const float x23 = -x20;
+        out_w[0] = c0_I_C*c0_omega_dot + c1_I_C*c1_omega_dot + c2_I_C*c2_omega_dot + c1_omega*x4 - c2_omega*x9;
+        out_w[1] = c3_I_C*c0_omega_dot + c4_I_C*c1_omega_dot + c5_I_C*c2_omega_dot - c0_omega*x4 + c2_omega*x14;
+        out_w[2] = c6_I_C*c0_omega_dot + c7_I_C*c1_omega_dot + c8_I_C*c2_omega_dot + c0_omega*x9 - c1_omega*x14;
+        out_w[3] = c0_c_ddot*in_m;
+        out_w[4] = c1_c_ddot*in_m;
+        out_w[5] = c2_c_ddot*in_m;
+        out_w_D_I_C[0] = c0_omega_dot;
+        out_w_D_I_C[1] = c1_omega_dot;
+        out_w_D_I_C[2] = c2_omega_dot;
+        out_w_D_I_C[3] = x16;
+        out_w_D_I_C[4] = x18;
+        out_w_D_I_C[5] = -x19;
+        out_w_D_I_C[6] = x20;
+        out_w_D_I_C[7] = x21;
+        out_w_D_I_C[8] = x17;
+        out_w_D_I_C[9] = x15;
+        out_w_D_I_C[10] = x17;
+        out_w_D_I_C[11] = x19;
+        out_w_D_I_C[12] = c0_omega_dot;
+        out_w_D_I_C[13] = c1_omega_dot;
+        out_w_D_I_C[14] = c2_omega_dot;
+        out_w_D_I_C[15] = -x22;
+        out_w_D_I_C[16] = x23;
+        out_w_D_I_C[17] = x16;
+        out_w_D_I_C[18] = x23;
+        out_w_D_I_C[19] = -x21;
+        out_w_D_I_C[20] = x18;
+        out_w_D_I_C[21] = x22;
+        out_w_D_I_C[22] = x20;
+        out_w_D_I_C[23] = x15;
+        out_w_D_I_C[24] = c0_omega_dot;
+        out_w_D_I_C[25] = c1_omega_dot;
+        out_w_D_I_C[26] = c2_omega_dot;
+        out_w_D_I_C[27] = 0.0f;
+        out_w_D_I_C[28] = 0.0f;
+        out_w_D_I_C[29] = 0.0f;
+        out_w_D_I_C[30] = 0.0f;
+        out_w_D_I_C[31] = 0.0f;
+        out_w_D_I_C[32] = 0.0f;
+        out_w_D_I_C[33] = 0.0f;
+        out_w_D_I_C[34] = 0.0f;
+        out_w_D_I_C[35] = 0.0f;
+        out_w_D_I_C[36] = 0.0f;
+        out_w_D_I_C[37] = 0.0f;
+        out_w_D_I_C[38] = 0.0f;
+        out_w_D_I_C[39] = 0.0f;
+        out_w_D_I_C[40] = 0.0f;
+        out_w_D_I_C[41] = 0.0f;
+        out_w_D_I_C[42] = 0.0f;
+        out_w_D_I_C[43] = 0.0f;
+        out_w_D_I_C[44] = 0.0f;
+        out_w_D_I_C[45] = 0.0f;
+        out_w_D_I_C[46] = 0.0f;
+        out_w_D_I_C[47] = 0.0f;
+        out_w_D_I_C[48] = 0.0f;
+        out_w_D_I_C[49] = 0.0f;
+        out_w_D_I_C[50] = 0.0f;
+        out_w_D_I_C[51] = 0.0f;
+        out_w_D_I_C[52] = 0.0f;
+        out_w_D_I_C[53] = 0.0f;
+        out_w_D_m[0] = 0.0f;
+        out_w_D_m[1] = 0.0f;
+        out_w_D_m[2] = 0.0f;
+        out_w_D_m[3] = c0_c_ddot;
+        out_w_D_m[4] = c1_c_ddot;
+        out_w_D_m[5] = c2_c_ddot;
+        out_w_D_omega[0] = -c3_I_C*c2_omega + c6_I_C*c1_omega;
+        out_w_D_omega[1] = -c4_I_C*c2_omega + 2.0f*x0 + x3;
+        out_w_D_omega[2] = c8_I_C*c1_omega - 2.0f*x5 - x8;
+        out_w_D_omega[3] = c0_I_C*c2_omega - x0 - 2.0f*x1 - x2;
+        out_w_D_omega[4] = c1_I_C*c2_omega - c7_I_C*c0_omega;
+        out_w_D_omega[5] = -c8_I_C*c0_omega + 2.0f*x10 + x13;
+        out_w_D_omega[6] = -c0_I_C*c1_omega + x5 + 2.0f*x6 + x7;
+        out_w_D_omega[7] = c4_I_C*c0_omega - x10 - x11 - 2.0f*x12;
+        out_w_D_omega[8] = -c2_I_C*c1_omega + c5_I_C*c0_omega;
+        out_w_D_omega[9] = 0.0f;
+        out_w_D_omega[10] = 0.0f;
+        out_w_D_omega[11] = 0.0f;
+        out_w_D_omega[12] = 0.0f;
+        out_w_D_omega[13] = 0.0f;
+        out_w_D_omega[14] = 0.0f;
+        out_w_D_omega[15] = 0.0f;
+        out_w_D_omega[16] = 0.0f;
+        out_w_D_omega[17] = 0.0f;
+        out_w_D_omega_dot[0] = c0_I_C;
+        out_w_D_omega_dot[1] = c1_I_C;
+        out_w_D_omega_dot[2] = c2_I_C;
+        out_w_D_omega_dot[3] = c3_I_C;
+        out_w_D_omega_dot[4] = c4_I_C;
+        out_w_D_omega_dot[5] = c5_I_C;
+        out_w_D_omega_dot[6] = c6_I_C;
+        out_w_D_omega_dot[7] = c7_I_C;
+        out_w_D_omega_dot[8] = c8_I_C;
+        out_w_D_omega_dot[9] = 0.0f;
+        out_w_D_omega_dot[10] = 0.0f;
+        out_w_D_omega_dot[11] = 0.0f;
+        out_w_D_omega_dot[12] = 0.0f;
+        out_w_D_omega_dot[13] = 0.0f;
+        out_w_D_omega_dot[14] = 0.0f;
+        out_w_D_omega_dot[15] = 0.0f;
+        out_w_D_omega_dot[16] = 0.0f;
+        out_w_D_omega_dot[17] = 0.0f;
+        out_w_D_c_ddot[0] = 0.0f;
+        out_w_D_c_ddot[1] = 0.0f;
+        out_w_D_c_ddot[2] = 0.0f;
+        out_w_D_c_ddot[3] = 0.0f;
+        out_w_D_c_ddot[4] = 0.0f;
+        out_w_D_c_ddot[5] = 0.0f;
+        out_w_D_c_ddot[6] = 0.0f;
+        out_w_D_c_ddot[7] = 0.0f;
+        out_w_D_c_ddot[8] = 0.0f;
+        out_w_D_c_ddot[9] = in_m;
+        out_w_D_c_ddot[10] = 0.0f;
+        out_w_D_c_ddot[11] = 0.0f;
+        out_w_D_c_ddot[12] = 0.0f;
+        out_w_D_c_ddot[13] = in_m;
+        out_w_D_c_ddot[14] = 0.0f;
+        out_w_D_c_ddot[15] = 0.0f;
+        out_w_D_c_ddot[16] = 0.0f;
+        out_w_D_c_ddot[17] = in_m;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = ((((((out_w[0] + (out_w[1] + out_w[2])) + ((out_w[3] + out_w[4]) + (out_w[5] + out_w_D_I_C[0]))) + (((out_w_D_I_C[1] + out_w_D_I_C[2]) + (out_w_D_I_C[3] + out_w_D_I_C[4])) + ((out_w_D_I_C[5] + out_w_D_I_C[6]) + (out_w_D_I_C[7] + out_w_D_I_C[8])))) + (((out_w_D_I_C[9] + (out_w_D_I_C[10] + out_w_D_I_C[11])) + ((out_w_D_I_C[12] + out_w_D_I_C[13]) + (out_w_D_I_C[14] + out_w_D_I_C[15]))) + (((out_w_D_I_C[16] + out_w_D_I_C[17]) + (out_w_D_I_C[18] + out_w_D_I_C[19])) + ((out_w_D_I_C[20] + out_w_D_I_C[21]) + (out_w_D_I_C[22] + out_w_D_I_C[23]))))) + ((((out_w_D_I_C[24] + (out_w_D_I_C[25] + out_w_D_I_C[26])) + ((out_w_D_I_C[27] + out_w_D_I_C[28]) + (out_w_D_I_C[29] + out_w_D_I_C[30]))) + (((out_w_D_I_C[31] + out_w_D_I_C[32]) + (out_w_D_I_C[33] + out_w_D_I_C[34])) + ((out_w_D_I_C[35] + out_w_D_I_C[36]) + (out_w_D_I_C[37] + out_w_D_I_C[38])))) + (((out_w_D_I_C[39] + (out_w_D_I_C[40] + out_w_D_I_C[41])) + ((out_w_D_I_C[42] + out_w_D_I_C[43]) + (out_w_D_I_C[44] + out_w_D_I_C[45]))) + (((out_w_D_I_C[46] + out_w_D_I_C[47]) + (out_w_D_I_C[48] + out_w_D_I_C[49])) + ((out_w_D_I_C[50] + out_w_D_I_C[51]) + (out_w_D_I_C[52] + out_w_D_I_C[53])))))) + (((((out_w_D_m[0] + (out_w_D_m[1] + out_w_D_m[2])) + ((out_w_D_m[3] + out_w_D_m[4]) + (out_w_D_m[5] + out_w_D_omega[0]))) + (((out_w_D_omega[1] + out_w_D_omega[2]) + (out_w_D_omega[3] + out_w_D_omega[4])) + ((out_w_D_omega[5] + out_w_D_omega[6]) + (out_w_D_omega[7] + out_w_D_omega[8])))) + (((out_w_D_omega[9] + (out_w_D_omega[10] + out_w_D_omega[11])) + ((out_w_D_omega[12] + out_w_D_omega[13]) + (out_w_D_omega[14] + out_w_D_omega[15]))) + (((out_w_D_omega[16] + out_w_D_omega[17]) + (out_w_D_omega_dot[0] + out_w_D_omega_dot[1])) + ((out_w_D_omega_dot[2] + out_w_D_omega_dot[3]) + (out_w_D_omega_dot[4] + out_w_D_omega_dot[5]))))) + ((((out_w_D_omega_dot[6] + (out_w_D_omega_dot[7] + out_w_D_omega_dot[8])) + ((out_w_D_omega_dot[9] + out_w_D_omega_dot[10]) + (out_w_D_omega_dot[11] + out_w_D_omega_dot[12]))) + (((out_w_D_omega_dot[13] + out_w_D_omega_dot[14]) + (out_w_D_omega_dot[15] + out_w_D_omega_dot[16])) + ((out_w_D_omega_dot[17] + out_w_D_c_ddot[0]) + (out_w_D_c_ddot[1] + out_w_D_c_ddot[2])))) + (((out_w_D_c_ddot[3] + (out_w_D_c_ddot[4] + out_w_D_c_ddot[5])) + ((out_w_D_c_ddot[6] + out_w_D_c_ddot[7]) + (out_w_D_c_ddot[8] + out_w_D_c_ddot[9]))) + (((out_w_D_c_ddot[10] + out_w_D_c_ddot[11]) + (out_w_D_c_ddot[12] + out_w_D_c_ddot[13])) + ((out_w_D_c_ddot[14] + out_w_D_c_ddot[15]) + (out_w_D_c_ddot[16] + out_w_D_c_ddot[17])))))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_I_C;
+        rs_in0_[1] = c1_I_C;
+        rs_in0_[2] = c2_I_C;
+        rs_in0_[3] = c3_I_C;
+        rs_in0_[4] = c4_I_C;
+        rs_in0_[5] = c5_I_C;
+        rs_in0_[6] = c6_I_C;
+        rs_in0_[7] = c7_I_C;
+        rs_in0_[8] = c8_I_C;
+        in_I_C = rs_in0_;
+        rs_in1_[0] = c0_omega;
+        rs_in1_[1] = c1_omega;
+        rs_in1_[2] = c2_omega;
+        in_omega = rs_in1_;
+        rs_in2_[0] = c0_omega_dot;
+        rs_in2_[1] = c1_omega_dot;
+        rs_in2_[2] = c2_omega_dot;
+        in_omega_dot = rs_in2_;
+        rs_in3_[0] = c0_c_ddot;
+        rs_in3_[1] = c1_c_ddot;
+        rs_in3_[2] = c2_c_ddot;
+        in_c_ddot = rs_in3_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_I_C), *(in_I_C + 1), *(in_I_C + 2), *(in_I_C + 3))));

@@ -207,6 +207,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_planar_arm_tip gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[2];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_plain_p)(in_q1, in_q2, in_l1, in_l2, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -252,6 +271,29 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double x0 = in_q1 + in_q2;
+        out_p[0] = in_l1*cos(in_q1) + in_l2*cos(x0);
+        out_p[1] = in_l1*sin(in_q1) + in_l2*sin(x0);
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = (out_p[0] + out_p[1]);   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_q1, *&in_q2)));
@@ -534,6 +576,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_planar_arm_tip_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[2];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_f32_plain_p)(in_q1, in_q2, in_l1, in_l2, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -582,6 +643,29 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float x0 = in_q1 + in_q2;
+        out_p[0] = in_l1*cosf(in_q1) + in_l2*cosf(x0);
+        out_p[1] = in_l1*sinf(in_q1) + in_l2*sinf(x0);
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = (out_p[0] + out_p[1]);   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_q1, *&in_q2, *&in_l1, *&in_l2)));
@@ -942,6 +1026,37 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_planar_arm_tip_with_jacobians gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[2];
+        double rs_o1_[2];
+        double rs_o2_[2];
+        double rs_o3_[2];
+        double rs_o4_[2];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_plain_p)(in_q1, in_q2, in_l1, in_l2, rs_o0_, rs_o1_, rs_o2_, rs_o3_, rs_o4_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_q1[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_q2[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_l1[j_] = rs_o3_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_l2[j_] = rs_o4_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -987,6 +1102,45 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double x0 = cos(in_q1);
+        const double x1 = in_q1 + in_q2;
+        const double x2 = cos(x1);
+        const double x3 = in_l2*x2;
+        const double x4 = in_l1*x0 + x3;
+        const double x5 = sin(in_q1);
+        const double x6 = sin(x1);
+        const double x7 = in_l2*x6;
+        const double x8 = in_l1*x5 + x7;
+        out_p[0] = x4;
+        out_p[1] = x8;
+        out_p_D_q1[0] = -x8;
+        out_p_D_q1[1] = x4;
+        out_p_D_q2[0] = -x7;
+        out_p_D_q2[1] = x3;
+        out_p_D_l1[0] = x0;
+        out_p_D_l1[1] = x5;
+        out_p_D_l2[0] = x2;
+        out_p_D_l2[1] = x6;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_setr_pd(*&in_q1, *&in_q2)));
@@ -1365,6 +1519,37 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_planar_arm_tip_with_jacobians_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[2];
+        float rs_o1_[2];
+        float rs_o2_[2];
+        float rs_o3_[2];
+        float rs_o4_[2];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(in_q1, in_q2, in_l1, in_l2, rs_o0_, rs_o1_, rs_o2_, rs_o3_, rs_o4_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_q1[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_q2[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_l1[j_] = rs_o3_[j_];
+            for (j_ = 0; j_ < 2; ++j_)
+                out_p_D_l2[j_] = rs_o4_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -1413,6 +1598,45 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float x0 = cosf(in_q1);
+        const float x1 = in_q1 + in_q2;
+        const float x2 = cosf(x1);
+        const float x3 = in_l2*x2;
+        const float x4 = in_l1*x0 + x3;
+        const float x5 = sinf(in_q1);
+        const float x6 = sinf(x1);
+        const float x7 = in_l2*x6;
+        const float x8 = in_l1*x5 + x7;
+        out_p[0] = x4;
+        out_p[1] = x8;
+        out_p_D_q1[0] = -x8;
+        out_p_D_q1[1] = x4;
+        out_p_D_q2[0] = -x7;
+        out_p_D_q2[1] = x3;
+        out_p_D_l1[0] = x0;
+        out_p_D_l1[1] = x5;
+        out_p_D_l2[0] = x2;
+        out_p_D_l2[1] = x6;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_q1, *&in_q2, *&in_l1, *&in_l2)));

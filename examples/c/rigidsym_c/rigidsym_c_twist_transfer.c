@@ -224,6 +224,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_twist_transfer gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[6];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_plain_p)(in_t_A, in_a, in_p, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_t_P[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -268,6 +287,65 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    double rs_in0_[6];
+    double rs_in1_[3];
+    double rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double c0_t_A = in_t_A[0];
+        const double c1_t_A = in_t_A[1];
+        const double c2_t_A = in_t_A[2];
+        const double c3_t_A = in_t_A[3];
+        const double c4_t_A = in_t_A[4];
+        const double c5_t_A = in_t_A[5];
+        const double c0_a = in_a[0];
+        const double c1_a = in_a[1];
+        const double c2_a = in_a[2];
+        const double c0_p = in_p[0];
+        const double c1_p = in_p[1];
+        const double c2_p = in_p[2];
+        const double x0 = c2_a - c2_p;
+        const double x1 = c1_a - c1_p;
+        const double x2 = c0_a - c0_p;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = -c1_t_A*x0 + c2_t_A*x1 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 - c2_t_A*x2 + c4_t_A;
+        out_t_P[5] = -c0_t_A*x1 + c1_t_A*x2 + c5_t_A;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = ((out_t_P[0] + (out_t_P[1] + out_t_P[2])) + (out_t_P[3] + (out_t_P[4] + out_t_P[5])));   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_t_A;
+        rs_in0_[1] = c1_t_A;
+        rs_in0_[2] = c2_t_A;
+        rs_in0_[3] = c3_t_A;
+        rs_in0_[4] = c4_t_A;
+        rs_in0_[5] = c5_t_A;
+        in_t_A = rs_in0_;
+        rs_in1_[0] = c0_a;
+        rs_in1_[1] = c1_a;
+        rs_in1_[2] = c2_a;
+        in_a = rs_in1_;
+        rs_in2_[0] = c0_p;
+        rs_in2_[1] = c1_p;
+        rs_in2_[2] = c2_p;
+        in_p = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A), _mm_load_sd(in_t_A + 1))));
@@ -587,6 +665,25 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_twist_transfer_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[6];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_f32_plain_p)(in_t_A, in_a, in_p, rs_o0_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_t_P[j_] = rs_o0_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -634,6 +731,65 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    float rs_in0_[6];
+    float rs_in1_[3];
+    float rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float c0_t_A = in_t_A[0];
+        const float c1_t_A = in_t_A[1];
+        const float c2_t_A = in_t_A[2];
+        const float c3_t_A = in_t_A[3];
+        const float c4_t_A = in_t_A[4];
+        const float c5_t_A = in_t_A[5];
+        const float c0_a = in_a[0];
+        const float c1_a = in_a[1];
+        const float c2_a = in_a[2];
+        const float c0_p = in_p[0];
+        const float c1_p = in_p[1];
+        const float c2_p = in_p[2];
+        const float x0 = c2_a - c2_p;
+        const float x1 = c1_a - c1_p;
+        const float x2 = c0_a - c0_p;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = -c1_t_A*x0 + c2_t_A*x1 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 - c2_t_A*x2 + c4_t_A;
+        out_t_P[5] = -c0_t_A*x1 + c1_t_A*x2 + c5_t_A;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = ((out_t_P[0] + (out_t_P[1] + out_t_P[2])) + (out_t_P[3] + (out_t_P[4] + out_t_P[5])));   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_t_A;
+        rs_in0_[1] = c1_t_A;
+        rs_in0_[2] = c2_t_A;
+        rs_in0_[3] = c3_t_A;
+        rs_in0_[4] = c4_t_A;
+        rs_in0_[5] = c5_t_A;
+        in_t_A = rs_in0_;
+        rs_in1_[0] = c0_a;
+        rs_in1_[1] = c1_a;
+        rs_in1_[2] = c2_a;
+        in_a = rs_in1_;
+        rs_in2_[0] = c0_p;
+        rs_in2_[1] = c1_p;
+        rs_in2_[2] = c2_p;
+        in_p = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_t_A), *(in_t_A + 1), *(in_t_A + 2), *(in_t_A + 3))));
@@ -1294,6 +1450,34 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_twist_transfer_with_jacobians gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        double rs_o0_[6];
+        double rs_o1_[36];
+        double rs_o2_[18];
+        double rs_o3_[18];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_with_jacobians_plain_p)(in_t_A, in_a, in_p, rs_o0_, rs_o1_, rs_o2_, rs_o3_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_t_P[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 36; ++j_)
+                out_t_P_D_t_A[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_t_P_D_a[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_t_P_D_p[j_] = rs_o3_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
@@ -1338,6 +1522,143 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
+#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    double rs_in0_[6];
+    double rs_in1_[3];
+    double rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const double c0_t_A = in_t_A[0];
+        const double c1_t_A = in_t_A[1];
+        const double c2_t_A = in_t_A[2];
+        const double c3_t_A = in_t_A[3];
+        const double c4_t_A = in_t_A[4];
+        const double c5_t_A = in_t_A[5];
+        const double c0_a = in_a[0];
+        const double c1_a = in_a[1];
+        const double c2_a = in_a[2];
+        const double c0_p = in_p[0];
+        const double c1_p = in_p[1];
+        const double c2_p = in_p[2];
+        const double x0 = c2_a - c2_p;
+        const double x1 = -x0;
+        const double x2 = c1_a - c1_p;
+        const double x3 = c0_a - c0_p;
+        const double x4 = -x3;
+        const double x5 = -x2;
+        const double x6 = -c1_t_A;
+        const double x7 = -c2_t_A;
+        const double x8 = -c0_t_A;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = c1_t_A*x1 + c2_t_A*x2 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 + c2_t_A*x4 + c4_t_A;
+        out_t_P[5] = c0_t_A*x5 + c1_t_A*x3 + c5_t_A;
+        out_t_P_D_t_A[0] = 1.0;
+        out_t_P_D_t_A[1] = 0.0;
+        out_t_P_D_t_A[2] = 0.0;
+        out_t_P_D_t_A[3] = 0.0;
+        out_t_P_D_t_A[4] = 0.0;
+        out_t_P_D_t_A[5] = 0.0;
+        out_t_P_D_t_A[6] = 0.0;
+        out_t_P_D_t_A[7] = 1.0;
+        out_t_P_D_t_A[8] = 0.0;
+        out_t_P_D_t_A[9] = 0.0;
+        out_t_P_D_t_A[10] = 0.0;
+        out_t_P_D_t_A[11] = 0.0;
+        out_t_P_D_t_A[12] = 0.0;
+        out_t_P_D_t_A[13] = 0.0;
+        out_t_P_D_t_A[14] = 1.0;
+        out_t_P_D_t_A[15] = 0.0;
+        out_t_P_D_t_A[16] = 0.0;
+        out_t_P_D_t_A[17] = 0.0;
+        out_t_P_D_t_A[18] = 0.0;
+        out_t_P_D_t_A[19] = x1;
+        out_t_P_D_t_A[20] = x2;
+        out_t_P_D_t_A[21] = 1.0;
+        out_t_P_D_t_A[22] = 0.0;
+        out_t_P_D_t_A[23] = 0.0;
+        out_t_P_D_t_A[24] = x0;
+        out_t_P_D_t_A[25] = 0.0;
+        out_t_P_D_t_A[26] = x4;
+        out_t_P_D_t_A[27] = 0.0;
+        out_t_P_D_t_A[28] = 1.0;
+        out_t_P_D_t_A[29] = 0.0;
+        out_t_P_D_t_A[30] = x5;
+        out_t_P_D_t_A[31] = x3;
+        out_t_P_D_t_A[32] = 0.0;
+        out_t_P_D_t_A[33] = 0.0;
+        out_t_P_D_t_A[34] = 0.0;
+        out_t_P_D_t_A[35] = 1.0;
+        out_t_P_D_a[0] = 0.0;
+        out_t_P_D_a[1] = 0.0;
+        out_t_P_D_a[2] = 0.0;
+        out_t_P_D_a[3] = 0.0;
+        out_t_P_D_a[4] = 0.0;
+        out_t_P_D_a[5] = 0.0;
+        out_t_P_D_a[6] = 0.0;
+        out_t_P_D_a[7] = 0.0;
+        out_t_P_D_a[8] = 0.0;
+        out_t_P_D_a[9] = 0.0;
+        out_t_P_D_a[10] = c2_t_A;
+        out_t_P_D_a[11] = x6;
+        out_t_P_D_a[12] = x7;
+        out_t_P_D_a[13] = 0.0;
+        out_t_P_D_a[14] = c0_t_A;
+        out_t_P_D_a[15] = c1_t_A;
+        out_t_P_D_a[16] = x8;
+        out_t_P_D_a[17] = 0.0;
+        out_t_P_D_p[0] = 0.0;
+        out_t_P_D_p[1] = 0.0;
+        out_t_P_D_p[2] = 0.0;
+        out_t_P_D_p[3] = 0.0;
+        out_t_P_D_p[4] = 0.0;
+        out_t_P_D_p[5] = 0.0;
+        out_t_P_D_p[6] = 0.0;
+        out_t_P_D_p[7] = 0.0;
+        out_t_P_D_p[8] = 0.0;
+        out_t_P_D_p[9] = 0.0;
+        out_t_P_D_p[10] = x7;
+        out_t_P_D_p[11] = c1_t_A;
+        out_t_P_D_p[12] = c2_t_A;
+        out_t_P_D_p[13] = 0.0;
+        out_t_P_D_p[14] = x8;
+        out_t_P_D_p[15] = x6;
+        out_t_P_D_p[16] = c0_t_A;
+        out_t_P_D_p[17] = 0.0;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const double s_ = ((((((out_t_P[0] + out_t_P[1]) + (out_t_P[2] + out_t_P[3])) + ((out_t_P[4] + out_t_P[5]) + (out_t_P_D_t_A[0] + (out_t_P_D_t_A[1] + out_t_P_D_t_A[2])))) + (((out_t_P_D_t_A[3] + out_t_P_D_t_A[4]) + (out_t_P_D_t_A[5] + (out_t_P_D_t_A[6] + out_t_P_D_t_A[7]))) + ((out_t_P_D_t_A[8] + out_t_P_D_t_A[9]) + (out_t_P_D_t_A[10] + (out_t_P_D_t_A[11] + out_t_P_D_t_A[12]))))) + ((((out_t_P_D_t_A[13] + out_t_P_D_t_A[14]) + (out_t_P_D_t_A[15] + (out_t_P_D_t_A[16] + out_t_P_D_t_A[17]))) + ((out_t_P_D_t_A[18] + out_t_P_D_t_A[19]) + (out_t_P_D_t_A[20] + (out_t_P_D_t_A[21] + out_t_P_D_t_A[22])))) + (((out_t_P_D_t_A[23] + out_t_P_D_t_A[24]) + (out_t_P_D_t_A[25] + (out_t_P_D_t_A[26] + out_t_P_D_t_A[27]))) + ((out_t_P_D_t_A[28] + out_t_P_D_t_A[29]) + (out_t_P_D_t_A[30] + (out_t_P_D_t_A[31] + out_t_P_D_t_A[32])))))) + (((((out_t_P_D_t_A[33] + out_t_P_D_t_A[34]) + (out_t_P_D_t_A[35] + out_t_P_D_a[0])) + ((out_t_P_D_a[1] + out_t_P_D_a[2]) + (out_t_P_D_a[3] + (out_t_P_D_a[4] + out_t_P_D_a[5])))) + (((out_t_P_D_a[6] + out_t_P_D_a[7]) + (out_t_P_D_a[8] + (out_t_P_D_a[9] + out_t_P_D_a[10]))) + ((out_t_P_D_a[11] + out_t_P_D_a[12]) + (out_t_P_D_a[13] + (out_t_P_D_a[14] + out_t_P_D_a[15]))))) + ((((out_t_P_D_a[16] + out_t_P_D_a[17]) + (out_t_P_D_p[0] + (out_t_P_D_p[1] + out_t_P_D_p[2]))) + ((out_t_P_D_p[3] + out_t_P_D_p[4]) + (out_t_P_D_p[5] + (out_t_P_D_p[6] + out_t_P_D_p[7])))) + (((out_t_P_D_p[8] + out_t_P_D_p[9]) + (out_t_P_D_p[10] + (out_t_P_D_p[11] + out_t_P_D_p[12]))) + ((out_t_P_D_p[13] + out_t_P_D_p[14]) + (out_t_P_D_p[15] + (out_t_P_D_p[16] + out_t_P_D_p[17])))))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_t_A;
+        rs_in0_[1] = c1_t_A;
+        rs_in0_[2] = c2_t_A;
+        rs_in0_[3] = c3_t_A;
+        rs_in0_[4] = c4_t_A;
+        rs_in0_[5] = c5_t_A;
+        in_t_A = rs_in0_;
+        rs_in1_[0] = c0_a;
+        rs_in1_[1] = c1_a;
+        rs_in1_[2] = c2_a;
+        in_a = rs_in1_;
+        rs_in2_[0] = c0_p;
+        rs_in2_[1] = c1_p;
+        rs_in2_[2] = c2_p;
+        in_p = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 2 per SSE2 register */
         __m128i q_ = rigidsym_c_q_d(_mm_castpd_si128(_mm_unpacklo_pd(_mm_load_sd(in_t_A), _mm_load_sd(in_t_A + 1))));
@@ -1999,6 +2320,34 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
+#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+    if (status == RIGIDSYM_C_EXTREME_INPUT) {
+        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
+         * modes off), kept where it raised none of underflow, overflow, invalid and
+         * divide-by-zero and its outputs are finite: the status and bits the detecting
+         * block of rigidsym_c_twist_transfer_with_jacobians_f32 gives without a flush mode, so that a build with DAZ
+         * (-Ofast) and one without agree; otherwise the rescues below */
+        float rs_o0_[6];
+        float rs_o1_[36];
+        float rs_o2_[18];
+        float rs_o3_[18];
+        int r_, j_;
+        rigidsym_c_fp_clear();
+        r_ = (*rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(in_t_A, in_a, in_p, rs_o0_, rs_o1_, rs_o2_, rs_o3_);
+        if (r_ == 0 && !rigidsym_c_fp_risky()) {
+            for (j_ = 0; j_ < 6; ++j_)
+                out_t_P[j_] = rs_o0_[j_];
+            for (j_ = 0; j_ < 36; ++j_)
+                out_t_P_D_t_A[j_] = rs_o1_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_t_P_D_a[j_] = rs_o2_[j_];
+            for (j_ = 0; j_ < 18; ++j_)
+                out_t_P_D_p[j_] = rs_o3_[j_];
+            status = 0;
+            done_ = 1;
+        }
+    }
+#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -2046,6 +2395,143 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
+#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+    float rs_in0_[6];
+    float rs_in1_[3];
+    float rs_in2_[3];
+    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
+         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
+         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
+         * outputs are finite, every input was finite (a NaN or infinite one reaches an
+         * output of this kernel or raises invalid) and every operation was rounded as in
+         * the normal range: status 0, the bits the range test's path gives (its rescues
+         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
+         * the range test below decides, as without this block (the flags this evaluation
+         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+        const float c0_t_A = in_t_A[0];
+        const float c1_t_A = in_t_A[1];
+        const float c2_t_A = in_t_A[2];
+        const float c3_t_A = in_t_A[3];
+        const float c4_t_A = in_t_A[4];
+        const float c5_t_A = in_t_A[5];
+        const float c0_a = in_a[0];
+        const float c1_a = in_a[1];
+        const float c2_a = in_a[2];
+        const float c0_p = in_p[0];
+        const float c1_p = in_p[1];
+        const float c2_p = in_p[2];
+        const float x0 = c2_a - c2_p;
+        const float x1 = -x0;
+        const float x2 = c1_a - c1_p;
+        const float x3 = c0_a - c0_p;
+        const float x4 = -x3;
+        const float x5 = -x2;
+        const float x6 = -c1_t_A;
+        const float x7 = -c2_t_A;
+        const float x8 = -c0_t_A;
+        out_t_P[0] = c0_t_A;
+        out_t_P[1] = c1_t_A;
+        out_t_P[2] = c2_t_A;
+        out_t_P[3] = c1_t_A*x1 + c2_t_A*x2 + c3_t_A;
+        out_t_P[4] = c0_t_A*x0 + c2_t_A*x4 + c4_t_A;
+        out_t_P[5] = c0_t_A*x5 + c1_t_A*x3 + c5_t_A;
+        out_t_P_D_t_A[0] = 1.0f;
+        out_t_P_D_t_A[1] = 0.0f;
+        out_t_P_D_t_A[2] = 0.0f;
+        out_t_P_D_t_A[3] = 0.0f;
+        out_t_P_D_t_A[4] = 0.0f;
+        out_t_P_D_t_A[5] = 0.0f;
+        out_t_P_D_t_A[6] = 0.0f;
+        out_t_P_D_t_A[7] = 1.0f;
+        out_t_P_D_t_A[8] = 0.0f;
+        out_t_P_D_t_A[9] = 0.0f;
+        out_t_P_D_t_A[10] = 0.0f;
+        out_t_P_D_t_A[11] = 0.0f;
+        out_t_P_D_t_A[12] = 0.0f;
+        out_t_P_D_t_A[13] = 0.0f;
+        out_t_P_D_t_A[14] = 1.0f;
+        out_t_P_D_t_A[15] = 0.0f;
+        out_t_P_D_t_A[16] = 0.0f;
+        out_t_P_D_t_A[17] = 0.0f;
+        out_t_P_D_t_A[18] = 0.0f;
+        out_t_P_D_t_A[19] = x1;
+        out_t_P_D_t_A[20] = x2;
+        out_t_P_D_t_A[21] = 1.0f;
+        out_t_P_D_t_A[22] = 0.0f;
+        out_t_P_D_t_A[23] = 0.0f;
+        out_t_P_D_t_A[24] = x0;
+        out_t_P_D_t_A[25] = 0.0f;
+        out_t_P_D_t_A[26] = x4;
+        out_t_P_D_t_A[27] = 0.0f;
+        out_t_P_D_t_A[28] = 1.0f;
+        out_t_P_D_t_A[29] = 0.0f;
+        out_t_P_D_t_A[30] = x5;
+        out_t_P_D_t_A[31] = x3;
+        out_t_P_D_t_A[32] = 0.0f;
+        out_t_P_D_t_A[33] = 0.0f;
+        out_t_P_D_t_A[34] = 0.0f;
+        out_t_P_D_t_A[35] = 1.0f;
+        out_t_P_D_a[0] = 0.0f;
+        out_t_P_D_a[1] = 0.0f;
+        out_t_P_D_a[2] = 0.0f;
+        out_t_P_D_a[3] = 0.0f;
+        out_t_P_D_a[4] = 0.0f;
+        out_t_P_D_a[5] = 0.0f;
+        out_t_P_D_a[6] = 0.0f;
+        out_t_P_D_a[7] = 0.0f;
+        out_t_P_D_a[8] = 0.0f;
+        out_t_P_D_a[9] = 0.0f;
+        out_t_P_D_a[10] = c2_t_A;
+        out_t_P_D_a[11] = x6;
+        out_t_P_D_a[12] = x7;
+        out_t_P_D_a[13] = 0.0f;
+        out_t_P_D_a[14] = c0_t_A;
+        out_t_P_D_a[15] = c1_t_A;
+        out_t_P_D_a[16] = x8;
+        out_t_P_D_a[17] = 0.0f;
+        out_t_P_D_p[0] = 0.0f;
+        out_t_P_D_p[1] = 0.0f;
+        out_t_P_D_p[2] = 0.0f;
+        out_t_P_D_p[3] = 0.0f;
+        out_t_P_D_p[4] = 0.0f;
+        out_t_P_D_p[5] = 0.0f;
+        out_t_P_D_p[6] = 0.0f;
+        out_t_P_D_p[7] = 0.0f;
+        out_t_P_D_p[8] = 0.0f;
+        out_t_P_D_p[9] = 0.0f;
+        out_t_P_D_p[10] = x7;
+        out_t_P_D_p[11] = c1_t_A;
+        out_t_P_D_p[12] = c2_t_A;
+        out_t_P_D_p[13] = 0.0f;
+        out_t_P_D_p[14] = x8;
+        out_t_P_D_p[15] = x6;
+        out_t_P_D_p[16] = c0_t_A;
+        out_t_P_D_p[17] = 0.0f;
+        /* the read is ordered after the outputs' stores, so after every operation */
+        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
+            const float s_ = ((((((out_t_P[0] + out_t_P[1]) + (out_t_P[2] + out_t_P[3])) + ((out_t_P[4] + out_t_P[5]) + (out_t_P_D_t_A[0] + (out_t_P_D_t_A[1] + out_t_P_D_t_A[2])))) + (((out_t_P_D_t_A[3] + out_t_P_D_t_A[4]) + (out_t_P_D_t_A[5] + (out_t_P_D_t_A[6] + out_t_P_D_t_A[7]))) + ((out_t_P_D_t_A[8] + out_t_P_D_t_A[9]) + (out_t_P_D_t_A[10] + (out_t_P_D_t_A[11] + out_t_P_D_t_A[12]))))) + ((((out_t_P_D_t_A[13] + out_t_P_D_t_A[14]) + (out_t_P_D_t_A[15] + (out_t_P_D_t_A[16] + out_t_P_D_t_A[17]))) + ((out_t_P_D_t_A[18] + out_t_P_D_t_A[19]) + (out_t_P_D_t_A[20] + (out_t_P_D_t_A[21] + out_t_P_D_t_A[22])))) + (((out_t_P_D_t_A[23] + out_t_P_D_t_A[24]) + (out_t_P_D_t_A[25] + (out_t_P_D_t_A[26] + out_t_P_D_t_A[27]))) + ((out_t_P_D_t_A[28] + out_t_P_D_t_A[29]) + (out_t_P_D_t_A[30] + (out_t_P_D_t_A[31] + out_t_P_D_t_A[32])))))) + (((((out_t_P_D_t_A[33] + out_t_P_D_t_A[34]) + (out_t_P_D_t_A[35] + out_t_P_D_a[0])) + ((out_t_P_D_a[1] + out_t_P_D_a[2]) + (out_t_P_D_a[3] + (out_t_P_D_a[4] + out_t_P_D_a[5])))) + (((out_t_P_D_a[6] + out_t_P_D_a[7]) + (out_t_P_D_a[8] + (out_t_P_D_a[9] + out_t_P_D_a[10]))) + ((out_t_P_D_a[11] + out_t_P_D_a[12]) + (out_t_P_D_a[13] + (out_t_P_D_a[14] + out_t_P_D_a[15]))))) + ((((out_t_P_D_a[16] + out_t_P_D_a[17]) + (out_t_P_D_p[0] + (out_t_P_D_p[1] + out_t_P_D_p[2]))) + ((out_t_P_D_p[3] + out_t_P_D_p[4]) + (out_t_P_D_p[5] + (out_t_P_D_p[6] + out_t_P_D_p[7])))) + (((out_t_P_D_p[8] + out_t_P_D_p[9]) + (out_t_P_D_p[10] + (out_t_P_D_p[11] + out_t_P_D_p[12]))) + ((out_t_P_D_p[13] + out_t_P_D_p[14]) + (out_t_P_D_p[15] + (out_t_P_D_p[16] + out_t_P_D_p[17])))))));   /* finite only where every output is */
+            if (s_ - s_ == 0.0f)
+                return status;
+        }
+        /* an output may share memory with an input: the range test's path reads the
+         * inputs as they were read here */
+        rs_in0_[0] = c0_t_A;
+        rs_in0_[1] = c1_t_A;
+        rs_in0_[2] = c2_t_A;
+        rs_in0_[3] = c3_t_A;
+        rs_in0_[4] = c4_t_A;
+        rs_in0_[5] = c5_t_A;
+        in_t_A = rs_in0_;
+        rs_in1_[0] = c0_a;
+        rs_in1_[1] = c1_a;
+        rs_in1_[2] = c2_a;
+        in_a = rs_in1_;
+        rs_in2_[0] = c0_p;
+        rs_in2_[1] = c1_p;
+        rs_in2_[2] = c2_p;
+        in_p = rs_in2_;
+    }
+#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_t_A), *(in_t_A + 1), *(in_t_A + 2), *(in_t_A + 3))));

@@ -313,7 +313,40 @@ def _function(kc, ctype: str, rescale: list) -> dict:
             # the float function's rescue in double: the double function of the kernel
             "wider": f"{PREFIX}{k.name}" if ctype == "float" else None,
             "rescale": [_plan_code(p, slots) for p in rescale],
-            "rescaled": {n for p in rescale for n in p["scale"]}}
+            "rescaled": {n for p in rescale for n in p["scale"]},
+            "detect": _detectable(kc, used)}
+
+
+#: the operations through which a NaN input reaches the result and an infinite one reaches
+#: it or raises invalid (no comparison, min/max, sign or select, which can drop either)
+_PROPAGATING = (sp.Symbol, sp.Number, sp.Add, sp.Mul, sp.sin, sp.cos)
+
+
+def _detectable(kc, used: set[str]) -> bool:
+    """Whether ``kc``'s scalar function may take the detecting fast path (kernel.c.j2):
+    one variant (no branch a NaN comparison could steer), every input component used, only
+    sums, products, integer powers, sin and cos (a NaN or infinite input reaches an output
+    or raises invalid), no division or root (nothing singular), and no unit vector or
+    rotation argument (whose extreme norm is flagged by itself). Then a call whose
+    evaluation raised none of underflow, overflow, invalid and divide-by-zero and whose
+    outputs are finite has every input finite and every operation rounded as in the normal
+    range: the status and bits of the range test's path."""
+    k = kc.kernel
+    if len(kc.variants) != 1 or any(a.kind in ("unit", "rotation") for a in k.args):
+        return False
+    v = kc.variants[0]
+    if v.cond is not None or v.program.dens:
+        return False
+    if any(str(c) not in used for _, syms in kc.inputs for c in syms):
+        return False
+    for e in [*(x for _, x in v.program.temps), *v.program.outputs]:
+        for node in sp.preorder_traversal(sp.sympify(e)):
+            if isinstance(node, sp.Pow):
+                if not (node.exp.is_Integer and node.exp > 0):
+                    return False
+            elif not isinstance(node, _PROPAGATING):
+                return False
+    return True
 
 
 def _plan_code(plan: dict, slots: list[str]) -> dict:
