@@ -19,13 +19,14 @@ __all__ = ["compare"]
 
 
 def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
-            counts: list | None = None) -> list[str]:
+            counts: list | None = None, later: str = "") -> list[str]:
     """Read ``page`` under the certificate's symbol table and check that each printed
     relation of the certificate is the printed one: each side the reader reads is the
     certificate's side as a rational function under the kinds' hypotheses. ``defs``
     (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
     their printed definitions above the id, each cited. ``counts``: ``(sides read,
-    printed sides, the relations read firmly on both sides)`` appended to it.
+    printed sides, the relations read firmly on both sides)`` appended to it. ``later``:
+    the book's displays after the id (:func:`certcheck.braces.displays_after`).
 
     Returns:
         Lines for the referee: what was read, and what was not (a finding, never a pass).
@@ -67,7 +68,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
     pairs = [(c[0] if k == 1 or not held or not isinstance(c[0][0], NotRead) else
               (c[1][0], c[1][1], [*c[1][2], "the chain's second member"]), c[k])
              for c in sides for k in range(1, len(c))]
-    pairs += [(c[0], c[1]) for x in brace_relations(page, symbols, defs)  # the page's
+    pairs += [(c[0], c[1]) for x in brace_relations(page, symbols, defs, later)  # the page's
               for c in read_relations(x, symbols, defs, lets)]  # braces (one may fail)
     # one printed relation under several models (a restatement is not another model)
     soft = len(pairs) == 1 and len([r for r in printed if "restated" not in r]) > 1
