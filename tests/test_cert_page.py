@@ -902,3 +902,133 @@ def test_chapter_restated_relations_read_and_forgeries_rejected(chapter):
                 if any("restated" in r for r in c["relations"])}
     assert {"3.14", "3.16", "3.122"} <= set(restated)
     _assert_restated_read_and_tamperings_rejected(restated, book_text())
+
+
+# ------------------------------------------------------------------ a printed relation dropped
+def printed_indices(cert: dict) -> list[int]:
+    """The positions of ``cert``'s relations that the page prints: the printed ones and a
+    chain's member proved as a claim (its ``page``)."""
+    return [k for k, r in enumerate(cert["relations"]) if r.get("role") == "printed"
+            or r.get("role") == "claim" and isinstance(r.get("page"), int)]
+
+
+def relation_dropped(cert: dict, k: int) -> dict:
+    """``cert`` without its ``k``-th relation: every other relation's proof still holds, so
+    only the page can refute it."""
+    c = copy.deepcopy(cert)
+    del c["relations"][k]
+    return c
+
+
+def page_outcome(cert: dict, book: str) -> str:
+    """What certcheck's reading of the page makes of ``cert`` (the proof left out: a
+    dropped relation leaves the others proved): ``"rejected: <why>"``, ``"not read"`` (a
+    printed side not read, exit 3) or ``"read"`` (every printed side read)."""
+    from certcheck.braces import displays_after
+    from certcheck.by_definition import unread_vacuous
+    from certcheck.compare import compare
+
+    i, counts = cert["id"], []
+    try:
+        check_page(cert, book)
+        compare(cert, locate(book, i), fast=True, defs=definitions_before(book, i),
+                counts=counts, later=displays_after(book, i))
+        (k, n, firm), = counts
+        vacuous, _ = unread_vacuous(cert, firm)
+    except (CheckError, BookError) as exc:
+        return f"rejected: {exc}"
+    return "read" if k - 2 * vacuous == n else "not read"
+
+
+def page_relations(cert: dict, book: str) -> int:
+    """How many relations the page prints for ``cert``'s id: its chains' members and the
+    relations under its braces (:mod:`certcheck.braces`), counted from the page."""
+    from certcheck.braces import brace_relations, displays_after
+    from certcheck.reader import read_relations
+
+    i, symbols = cert["id"], cert.get("symbols") or []
+    page, defs = locate(book, i), definitions_before(book, i)
+    return sum(len(c) - 1 for c in read_relations(page, symbols, defs)) + \
+        len(brace_relations(page, symbols, defs, displays_after(book, i)))
+
+
+def test_brace_relations_decided_by_the_label():
+    """A brace's label the table models, one defined before or an expression: a printed
+    relation X = Y; a glyph neither modelled nor defined (a name the brace introduces) or a
+    count in words: none."""
+    from certcheck.braces import brace_relations, displays_after
+
+    page = r"T = \underbrace{a + b}_{\mathbf{c}_1} + \underbrace{d}_{2k \text{ factors}}"
+    modelled = [{"glyph": r"\mathbf{c}_1", "atoms": ["c"]}]
+    assert brace_relations(page, modelled, {}) == [r"a + b = \mathbf { c } _ 1"]
+    assert brace_relations(page, [], {r"\mathbf{c}_1": ("x", "3.1", "\\equiv")}) != []
+    assert brace_relations(page, [], {}) == []  # c_1 introduced here, unmodelled: a name
+    assert brace_relations(page, [], {}, r"x=\mathbf{c}_1+y") != []  # printed later
+    book = r"$$a = \underbrace{b}_{\mathbf{c}} \quad (3.1)$$ $$\mathbf{c} = d \quad (3.2)$$"
+    assert displays_after(book, "3.1") == r"\mathbf{c}=d\quad(3.2)"
+    assert displays_after(book, "3.2") == "" and displays_after(book, "3.9") == ""
+    assert brace_relations(r"x = \underbrace{a}_{-b}", [], {}) == ["a = - b"]
+
+
+@pytest.fixture(scope="module")
+def braced(tmp_path_factory):
+    if not BOOK.exists():
+        pytest.skip("the book is never shipped")
+    folder = tmp_path_factory.mktemp("braced")
+    return folder, certs_for(folder, ["3.4", "3.59", "3.130"])
+
+
+def test_dropped_printed_relation_fails_where_braced(braced):
+    """3.4 (a chain, its brace naming d_{P/A}), 3.59 (does-not-hold, its relation under a
+    brace) and 3.130 (T, and I_C under the brace), each read on every side: each printed
+    relation dropped in turn is rejected naming the id (3.59 left with no printed
+    relation: NOT READ); 3.130 without its I_C relation and I_C's table line too is
+    rejected (the page prints I_C in later displays); certcheck exits 1 on 3.130 without
+    its I_C relation."""
+    from rigidsym.checking.certifying.certificates import certificate_file, write_manifest
+
+    folder, certs = braced
+    book = book_text()
+    for i, c in certs.items():
+        assert page_outcome(c, book) == "read", i
+        for k in printed_indices(c):
+            out = page_outcome(relation_dropped(c, k), book)
+            if c["verdict"] == "does-not-hold" and len(printed_indices(c)) == 1:
+                assert out == "not read", (i, k, out)
+            else:
+                assert out.startswith("rejected") and f"({i})" in out, (i, k, out)
+    c = certs["3.130"]  # the relation and I_C's table line: the page still prints I_C later
+    k = next(k for k in printed_indices(c) if "I_C" in c["relations"][k]["label"])
+    bare = relation_dropped(c, k)
+    bare["symbols"] = [e for e in bare["symbols"] if e.get("glyph") != r"\mathbf{I}_C"]
+    assert len(bare["symbols"]) < len(c["symbols"])
+    assert page_outcome(bare, book).startswith("rejected: (3.130)")
+    tampered = folder / "without_I_C"
+    tampered.mkdir()
+    c = certs["3.130"]
+    k = next(k for k in printed_indices(c) if "I_C" in c["relations"][k]["label"])
+    (tampered / certificate_file("3.130")).write_text(json.dumps(relation_dropped(c, k)))
+    write_manifest(tampered, [certificate_file("3.130")], str(BOOK))
+    p = _certcheck("--quiet", "--book", BOOK, tampered)
+    assert p.returncode == 1 and "FAILED 3.130.json: (3.130)" in p.stdout, p.stdout
+
+
+@pytest.mark.slow
+def test_chapter_dropped_printed_relation_fails(chapter):
+    """Every id read on every side, each relation the page prints dropped in turn: never
+    read on every side (rejected naming the id, or NOT READ). Left out: an id whose page
+    prints one relation that the certificate proves under several models or restatements
+    (3.16, 3.31, F = N, L or H): one of them dropped leaves the printed relation proved."""
+    _, certs = chapter
+    book = book_text()
+    tried = 0
+    for i, c in sorted(certs.items()):
+        if not i[0].isdigit() or page_outcome(c, book) != "read" or \
+                page_relations(c, book) == 1 < len(printed_indices(c)):
+            continue
+        for k in printed_indices(c):
+            out = page_outcome(relation_dropped(c, k), book)
+            assert out == "not read" or out.startswith("rejected") and f"({i})" in out, \
+                (i, k, out)
+            tried += 1
+    assert tried >= 150

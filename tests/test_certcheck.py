@@ -81,15 +81,17 @@ def test_checker_size():
     command (its accounting of what is read), 850 of the second reader of the printed
     LaTeX (its notation, arrays and comparison), 250 of the binding to the page (the
     locator, the manifest, the citations, the causes), 130 of a referee's path through
-    one id (``certcheck explain``) and 50 of the printed relation that holds by definition
-    (``by_definition``: a vacuous relation whose two sides are read)."""
+    one id (``certcheck explain``), 50 of the printed relation that holds by definition
+    (``by_definition``: a vacuous relation whose two sides are read) and 60 of the
+    relations printed under the page's braces (``braces``)."""
     reader, page = ("reader.py", "arrays.py", "compare.py"), ("book.py", "explain.py",
-                                                               "by_definition.py")
+                                                               "by_definition.py", "braces.py")
     lines = {f.name: len(f.read_text().splitlines()) for f in (SRC / "certcheck").glob("*.py")}
     n = sum(k for name, k in lines.items() if name not in reader + page)
     m = sum(lines[name] for name in reader)
     assert n <= 1550 and m <= 850 and lines["book.py"] <= 250, (n, m, lines["book.py"])
     assert lines["explain.py"] <= 130 and lines["by_definition.py"] <= 50
+    assert lines["braces.py"] <= 60
 
 
 @pytest.mark.parametrize("fast", [True, False])

@@ -22,6 +22,7 @@ from certcheck.book import (
     definitions_before,
     locate,
 )
+from certcheck.braces import displays_after
 from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
@@ -108,7 +109,7 @@ def main(argv: list[str] | None = None) -> int:
                 eq_id = str(cert.get("id"))
                 defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
                 page += compare(cert, locate(book, eq_id), fast=not args.no_flint, defs=defs,
-                                counts=(counts := []))
+                                counts=(counts := []), later=displays_after(book, eq_id))
                 (k, n, firm), = counts
                 vac, lines_read = unread_vacuous(cert, firm)  # vacuous: read, or not
                 k, page = max(0, k - 2 * vac), page + lines_read

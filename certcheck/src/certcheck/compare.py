@@ -3,8 +3,8 @@ is held to the certificate's as a rational function under the kinds' hypotheses
 (:func:`certcheck.check.check_identity`): one read firmly that differs is a rejection, one
 matched through an equation of the page or one of several models is NOT READ when it
 differs. ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X and Y;
-``\\underbrace{X}_{Y}`` as ``X = Y``, where the certificate has that many more relations
-or a does-not-hold's one printed relation may be it."""
+``\\underbrace{X}_{Y}`` as ``X = Y`` where the page prints a relation under it
+(:mod:`certcheck.braces`)."""
 
 from __future__ import annotations
 
@@ -12,19 +12,21 @@ import re
 from itertools import accumulate
 
 from certcheck.arrays import M, mul
+from certcheck.braces import brace_relations
 from certcheck.reader import NotRead, read_relations, tokens
 
 __all__ = ["compare"]
 
 
 def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
-            counts: list | None = None) -> list[str]:
+            counts: list | None = None, later: str = "") -> list[str]:
     """Read ``page`` under the certificate's symbol table and check that each printed
     relation of the certificate is the printed one: each side the reader reads is the
     certificate's side as a rational function under the kinds' hypotheses. ``defs``
     (:func:`certcheck.book.definitions_before`): glyphs outside the table are read through
     their printed definitions above the id, each cited. ``counts``: ``(sides read,
-    printed sides, the relations read firmly on both sides)`` appended to it.
+    printed sides, the relations read firmly on both sides)`` appended to it. ``later``:
+    the book's displays after the id (:func:`certcheck.braces.displays_after`).
 
     Returns:
         Lines for the referee: what was read, and what was not (a finding, never a pass).
@@ -66,9 +68,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
     pairs = [(c[0] if k == 1 or not held or not isinstance(c[0][0], NotRead) else
               (c[1][0], c[1][1], [*c[1][2], "the chain's second member"]), c[k])
              for c in sides for k in range(1, len(c))]
-    if len(pairs) + len(b := list(_braces(page))) == len(printed) != len(pairs) or b and not \
-            held and len(printed) == 1:  # the braces are printed relations (one may fail)
-        pairs += [(c[0], c[1]) for x in b for c in read_relations(x, symbols, defs, lets)]
+    pairs += [(c[0], c[1]) for x in brace_relations(page, symbols, defs, later)  # the page's
+              for c in read_relations(x, symbols, defs, lets)]  # braces (one may fail)
     # one printed relation under several models (a restatement is not another model)
     soft = len(pairs) == 1 and len([r for r in printed if "restated" not in r]) > 1
     pairs = pairs * len(printed) if len(pairs) == 1 and len(printed) > 1 else pairs
@@ -194,15 +195,6 @@ def _unit_of(rows: list) -> str | None:
         return "0"
     eye = all(x == ("1" if i == j else "0") for i, row in enumerate(t) for j, x in enumerate(row))
     return "1" if eye and len(t) == len(t[0]) else None
-
-
-def _braces(page: str):
-    """Each ``\\underbrace{X}_{Y}`` of ``page`` as the printed relation ``X = Y``."""
-    depth = list(accumulate(map(lambda c: (c == "{") - (c == "}"), t := tokens(page))))
-    for i in (k for k, x in enumerate(t[:-1]) if x == "\\underbrace" and t[k + 1] == "{"):
-        j = depth.index(depth[i], i + 1)  # X's closing brace
-        y = t[j + 3:depth.index(depth[i], j + 3)] if t[j + 2:j + 3] == ["{"] else t[j + 2:j + 3]
-        yield " ".join(t[i + 2:j]) + " = " + " ".join(y)
 
 
 def _restated(cert: dict, rel: dict, page: str, symbols: list, defs: dict, lets: list):

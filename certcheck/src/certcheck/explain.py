@@ -21,6 +21,7 @@ from certcheck.book import (
     locate,
     symbol_words,
 )
+from certcheck.braces import displays_after
 from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
@@ -71,7 +72,8 @@ def explain(cert: dict, book: str, fast: bool = True) -> tuple[bool, list[str]]:
     try:
         check_page(cert, book)
         verdict, lines = check_certificate(cert, fast=fast)
-        read = compare(cert, page, fast=fast, defs=defs, counts=(counts := []))
+        read = compare(cert, page, fast=fast, defs=defs, counts=(counts := []),
+                       later=displays_after(book, eq_id))
         (k, n, firm), = counts
         unread, lines_read = unread_vacuous(cert, firm)  # a vacuous relation: read, or not
         passed, read = k - 2 * unread == n, read + lines_read
