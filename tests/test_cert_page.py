@@ -690,20 +690,21 @@ def test_moving_body_integrals_read_firmly_and_tamperings_rejected(moving_read):
 def test_chapter_body_line_tampering_rejected_where_read(chapter):
     """Every id read firmly through the integral sign's body line (section 3.8: at rest
     3.123-3.125, 3.131, 3.133a, 3.133b, 3.147; moving 3.126, 3.134b, 3.135, 3.136, 3.142,
-    3.144, 3.145): a particle's mass doubled in the line is rejected."""
+    3.144, 3.145): a particle's mass doubled in the line is rejected. A seeded half of the
+    ids each commit (all in the exhaustive profile): each rejection is a certcheck run."""
     from certcheck.compare import compare
 
     _, certs = chapter
     book = book_text()
     read = 0
-    for i, c in sorted(certs.items()):
+    for i, c in _profile.share(sorted(certs.items()), 1 / 2, key=lambda ic: ic[0]):
         if mass_changed(c) is None or not any(
                 x.startswith("read from the page") and "\\int_{\\mathcal{B}}" in x for x in
                 compare(c, locate(book, i), fast=True, defs=definitions_before(book, i))):
             continue
         read += 1
         assert f"({i})" in rejection(mass_changed(c), book, page_first=True), i
-    assert read >= 14
+    assert read >= (14 if _profile.PROFILE == "exhaustive" else 3)
 
 
 @pytest.fixture(scope="module")

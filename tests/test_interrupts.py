@@ -134,7 +134,7 @@ def each_kind_of_checkpoint(points: list[str]) -> list[int]:
     a phase begun, ...), and the third (a SIGTERM, :func:`_signal_at`): each kind of point
     where the command can be cut short, at the start and the end of its work, rather than
     every passing of each (a cold ``verify`` of three ids passes some twenty). The thorough
-    run interrupts the third and a seeded half of the others (another half each commit;
+    run interrupts the third and a seeded third of the others (another third each commit;
     every one in the exhaustive profile)."""
     first: dict[str, int] = {}
     last: dict[str, int] = {}
@@ -143,7 +143,7 @@ def each_kind_of_checkpoint(points: list[str]) -> list[int]:
         last[name] = k
     every = sorted({*first.values(), *last.values()} - {3})
     third = [3] if len(points) >= 3 else []
-    return sorted(third + _profile.share(every, 1 / 2, key=lambda k: f"{k}:{points[k - 1]}"))
+    return sorted(third + _profile.share(every, 1 / 3, key=lambda k: f"{k}:{points[k - 1]}"))
 
 
 def _warm(mod: Path, cache: Path, tmp_path: Path) -> None:

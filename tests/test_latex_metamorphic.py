@@ -360,6 +360,7 @@ MEASURED_SKIPS = {"a-permutation": _NO_LONE_SYMBOL, "d-model": _NO_LONE_SYMBOL,
 
 
 @pytest.mark.slow
+@pytest.mark.thorough(0.6)  # three of the five transformations each commit
 @pytest.mark.parametrize("prop", sorted(PROPERTIES))
 @settings(max_examples=1, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
