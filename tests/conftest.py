@@ -8,10 +8,10 @@ from __future__ import annotations
 
 import os
 import shutil
-import sys
 import tempfile
 from pathlib import Path
 
+import _bytecode  # noqa: F401  (first: before sympy is imported; tests/_bytecode.py)
 import _profile
 import _shared_run
 import pytest
@@ -53,26 +53,8 @@ def pytest_configure(config):
         _CREATED.append(os.environ["RIGIDSYM_CACHE"])   # xdist workers inherit it
     os.environ.pop("RIGIDSYM_OBJECT_CACHE", None)       # the tests' objects: in their cache
     os.environ.setdefault("RIGIDSYM_LATEX_TIMEOUT", "none")  # no verdict rests on the load
-    keep_bytecode(Path(str(config.rootpath)) / ".pytest_cache" / "pycache")
     become_subreaper()
 
-
-def keep_bytecode(prefix: Path) -> None:
-    """Compile each module once per run, not once per process.
-
-    Where the environment forbids writing bytecode beside the sources
-    (``PYTHONDONTWRITEBYTECODE``, as in many containers) and the README's install byte-compiles
-    nothing (``--no-compile``), every process the suite starts (each xdist worker, each
-    ``rigidsym`` command a test runs) would compile sympy's and the package's modules again:
-    about 2 s of CPU a process. The suite keeps that bytecode under ``prefix``
-    (``PYTHONPYCACHEPREFIX``, inherited by the workers and the commands), so that the sources,
-    the checkout and the virtual environment stay as they were."""
-    if not (os.environ.get("PYTHONDONTWRITEBYTECODE") or sys.dont_write_bytecode):
-        return
-    os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
-    os.environ.setdefault("PYTHONPYCACHEPREFIX", str(prefix))
-    sys.pycache_prefix = os.environ["PYTHONPYCACHEPREFIX"]
-    sys.dont_write_bytecode = False
 
 
 def pytest_unconfigure(config):
