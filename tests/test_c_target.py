@@ -168,12 +168,25 @@ def test_an_application_with_fast_math_still_includes_the_headers(tmp_path):
 # -- the status codes, through ctypes on a shared build of the folder --
 
 @pytest.fixture(scope="module")
-def lib(tmp_path_factory):
+def objects(tmp_path_factory) -> list[str]:
+    """The example's kernels compiled once (strict, -O2, position-independent) for the tests
+    of this module that link them: the shared library below and the programs of the flags
+    tests. test_example_builds_strict_and_matches_numpy keeps the one-line build."""
     if GCC is None:
         pytest.skip("gcc is not installed")
+    out = tmp_path_factory.mktemp("objects")
+    objs = []
+    for s in sources():
+        o = out / (s.stem + ".o")
+        subprocess.run([GCC, *STRICT, "-O2", "-fPIC", "-c", str(s), "-o", str(o)], check=True)
+        objs.append(str(o))
+    return objs
+
+
+@pytest.fixture(scope="module")
+def lib(tmp_path_factory, objects):
     so = tmp_path_factory.mktemp("lib") / "librigidsym_c.so"
-    subprocess.run([GCC, *STRICT, "-O2", "-shared", "-fPIC", *map(str, sources()), "-o",
-                    str(so), "-lm"], check=True)
+    subprocess.run([GCC, "-shared", *objects, "-o", str(so), "-lm"], check=True)
     return ctypes.CDLL(str(so))
 
 
@@ -1351,7 +1364,7 @@ int main(void)
 
 
 @needs_gcc
-def test_the_flags_step_keeps_the_callers_flags(tmp_path):
+def test_the_flags_step_keeps_the_callers_flags(tmp_path, objects):
     """The cold path clears the exception flags for its evaluation and gives the caller
     back its own with those raised since: a divide-by-zero raised before the call stays
     raised, an underflow of the call (a torque-free body at omega = 1e-30 in float, whose
@@ -1362,8 +1375,8 @@ def test_the_flags_step_keeps_the_callers_flags(tmp_path):
     src = tmp_path / "kept.c"
     src.write_text(_FLAGS_KEPT)
     exe = tmp_path / "kept"
-    subprocess.run([GCC, *STRICT, "-O2", "-I", str(KERNELS_DIR), str(src),
-                    *map(str, sources()), "-o", str(exe), "-lm"], check=True)
+    subprocess.run([GCC, *STRICT, "-O2", "-I", str(KERNELS_DIR), str(src), *objects,
+                    "-o", str(exe), "-lm"], check=True)
     out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
     assert out.split() == ["0", "8", "1", "1", "0"]
 
@@ -1460,7 +1473,7 @@ int main(void)
 
 @needs_gcc
 @pytest.mark.skipif(platform.machine() not in ("x86_64", "AMD64"), reason="MXCSR is x86-64's")
-def test_a_flush_to_zero_caller_gets_the_values_of_an_ieee_caller(tmp_path):
+def test_a_flush_to_zero_caller_gets_the_values_of_an_ieee_caller(tmp_path, objects):
     """With DAZ set (gcc links crtfastmath.o into any -Ofast program) the float rescue once
     scaled subnormal inputs to zero and returned zeros with status 0 (an outside trial). The
     cold path turns the flush modes off for its run: the rescue is exact, status 0, in both
@@ -1468,8 +1481,8 @@ def test_a_flush_to_zero_caller_gets_the_values_of_an_ieee_caller(tmp_path):
     src = tmp_path / "flush.c"
     src.write_text(_FLUSH)
     exe = tmp_path / "flush"
-    subprocess.run([GCC, *STRICT, "-O2", "-I", str(KERNELS_DIR), str(src),
-                    *map(str, sources()), "-o", str(exe), "-lm"], check=True)
+    subprocess.run([GCC, *STRICT, "-O2", "-I", str(KERNELS_DIR), str(src), *objects,
+                    "-o", str(exe), "-lm"], check=True)
     out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
     assert out.split("\n")[:2] == ["0 1 0", "0 1 1"]      # rescued, exact; the mode kept
 
