@@ -92,7 +92,10 @@ def main(argv: list[str] | None = None) -> int:
         env["VIRTUAL_ENV"] = str(venv)
         cmd = readme_command(clone / "README.md")
         parts = [p.strip() for p in cmd.split("&&")]
-        info = {"host": host(), "load_before": os.getloadavg(), "command": cmd, "parts": []}
+        commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=clone, capture_output=True,
+                                text=True, check=True).stdout.strip()
+        info = {"host": host(), "commit": commit, "load_before": os.getloadavg(),
+                "command": cmd, "parts": []}
         t0 = time.perf_counter()
         for part in parts:
             if "pytest" in part:
