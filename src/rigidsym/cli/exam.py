@@ -11,6 +11,8 @@ EXAMPLES = """\
   rigidsym exam quiz.toml --out quiz/         handout.html, key.html, key.json
   rigidsym exam quiz.toml --out quiz/ --seed 8   other random variants
   rigidsym exam quiz.toml --students roster.csv --out class/   an exam per student
+  rigidsym exam quiz.toml --students roster.csv --out class/ --weights 1,1,2
+                                              problem 3 counts twice (key.json, exports)
   rigidsym grade class/ class/answers.csv      grade the class (rigidsym grade --help)"""
 
 
@@ -26,16 +28,27 @@ def add_arguments(p) -> None:
                         "and 'email' optional), each with its own seed and a different "
                         "variant of every drawn problem; one key, an answers template and "
                         "a Moodle XML export (default: one exam)")
+    p.add_argument("--weights", metavar="W1,W2,...",
+                   help="a class's problems' weights (their points), comma separated, one "
+                        "per problem of the exam, problem 1 first (e.g. 1,1,2), in place "
+                        "of the spec's weight = ...; kept in DIR/key.json, the gradebook and "
+                        "the Moodle and STACK exports (needs --students)")
 
 
 def run(args) -> int:
     """Write the handout and the key; 0 written, 2 a bad spec or data, 3 a defect."""
+    from rigidsym.cli.grade import parse_weights
     from rigidsym.course import write_exam as exam
 
     try:
+        weights = parse_weights(getattr(args, "weights", None))
         if getattr(args, "students", None):
             from rigidsym.course import class_exam
-            paths = class_exam(args.spec, args.students, args.out, seed=args.seed)
+            paths = class_exam(args.spec, args.students, args.out, seed=args.seed,
+                               weights=weights)
+        elif weights is not None:
+            raise ValueError("--weights: weights go with a class exam (--students "
+                             "ROSTER.csv); a single exam has no gradebook")
         else:
             paths = exam(args.spec, args.out, seed=args.seed)
     except (ValueError, TypeError) as exc:

@@ -61,7 +61,9 @@ def read_spec(spec) -> dict:
     Raises:
         ValueError: unreadable TOML, no problems, a problem without ``exercise``, with
             both ``data`` and ``variants``, or ``variants`` for an exercise that draws none
-            (the message names the problem); ``slips_along_the_way`` that is not a truth.
+            (the message names the problem); a problem's ``weight`` that is not a finite
+            number >= 0, or every problem's 0; ``slips_along_the_way`` that is not a
+            truth.
     """
     if not isinstance(spec, dict):
         import tomllib
@@ -82,10 +84,30 @@ def read_spec(spec) -> dict:
             drawn = [i[2:] for i in _drawable()]
             raise ValueError(f"spec: problem {k}: exercise {ex_id[2:]} draws no random "
                              f"variants (those that do: {', '.join(drawn)}); give its data")
+    _check_weights(problems)
     along = spec.get("slips_along_the_way", True)
     if not isinstance(along, bool):
         raise ValueError(f"spec: slips_along_the_way must be true or false, not {along!r}")
     return spec
+
+
+def _check_weights(problems: list[dict]) -> None:
+    """Each spec problem's ``weight`` (default 1) a finite number >= 0, not all of them 0.
+
+    Raises:
+        ValueError: the first problem whose weight is not so (named), or every weight 0.
+    """
+    import math
+
+    for k, p in enumerate(problems, 1):
+        w = p.get("weight", 1)
+        if isinstance(w, bool) or not isinstance(w, int | float) or not math.isfinite(w) \
+                or w < 0:
+            raise ValueError(f"spec: problem {k}: weight must be a finite number >= 0 "
+                             f"(weight = 2), not {w!r}")
+    if all(p.get("weight", 1) == 0 for p in problems):
+        raise ValueError("spec: at least one problem's weight must be positive (every "
+                         "weight is 0)")
 
 
 def _drawable() -> list[str]:

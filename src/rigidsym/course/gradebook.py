@@ -43,7 +43,7 @@ import sympy as sp
 from rigidsym.core.files import write_atomic
 from rigidsym.course.worked import Solution, parameters, solve
 
-__all__ = ["grade_class", "solution_of", "with_weights"]
+__all__ = ["checked_weights", "grade_class", "solution_of", "with_weights"]
 
 
 def solution_of(rec: dict) -> Solution:
@@ -178,14 +178,30 @@ def with_weights(key: dict, weights: list[float]) -> dict:
         ValueError: ``weights`` is not one finite number >= 0 per problem of the exam, or
             they are all 0 (the message names ``weights`` and the count expected).
     """
+    w = checked_weights(weights, max(len(r["problems"]) for r in key["students"]))
+    students = [{**r, "problems": [{**p, "weight": w[p["problem"] - 1]}
+                                   for p in r["problems"]]} for r in key["students"]]
+    return {**key, "students": students}
+
+
+def checked_weights(weights, n: int) -> list[float]:
+    """``weights`` as ``n`` floats, one per problem of an exam (problem 1 first): what
+    ``rigidsym exam --weights`` and ``rigidsym grade --weights`` accept.
+
+    Raises:
+        ValueError: ``weights`` is not ``n`` finite numbers >= 0 (a text, a count other
+            than ``n``, a negative, an infinite or a NaN entry), or every one is 0 (the
+            message starts ``weights:`` and names the count expected).
+    """
     import math
 
-    n = max(len(r["problems"]) for r in key["students"])
     try:
+        if isinstance(weights, str | bytes):
+            raise TypeError("a text")
         w = [float(x) for x in weights]
     except (TypeError, ValueError):
         raise ValueError(f"weights: expected {n} numbers, one per problem, not "
-                         f"{list(weights)!r}") from None
+                         f"{weights!r}") from None
     if len(w) != n:
         raise ValueError(f"weights: expected {n} numbers, one per problem of the exam "
                          f"(problem 1 first), not {len(w)}")
@@ -194,9 +210,7 @@ def with_weights(key: dict, weights: list[float]) -> dict:
         raise ValueError(f"weights: each weight must be a finite number >= 0, not {bad[0]!r}")
     if sum(w) <= 0:
         raise ValueError("weights: at least one weight must be positive (every weight is 0)")
-    students = [{**r, "problems": [{**p, "weight": w[p["problem"] - 1]}
-                                   for p in r["problems"]]} for r in key["students"]]
-    return {**key, "students": students}
+    return w
 
 
 def _items(rows: list) -> str:

@@ -38,6 +38,7 @@ import sympy as sp
 from rigidsym.core.files import write_atomic
 from rigidsym.course import exam as _exam
 from rigidsym.course.exam_text import box_label, task
+from rigidsym.course.gradebook import checked_weights
 from rigidsym.course.stack_export import stack_xml
 from rigidsym.course.worked import exercise_module, render_html, solution_record
 
@@ -126,7 +127,8 @@ def _head(title: str, st: dict, seed: int, version: str) -> str:
 
 
 def class_exam(spec, roster: str | Path, out_dir: str | Path,
-               seed: int | None = None) -> dict[str, Path]:
+               seed: int | None = None, weights: list[float] | None = None
+               ) -> dict[str, Path]:
     """One exam per student of ``roster``, one key, an answers template and a Moodle XML
     export, in ``out_dir`` (see the module docstring).
 
@@ -135,13 +137,19 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         roster: a CSV with a ``name`` (or ``student``) column; ``id``, ``email`` optional.
         out_dir: the folder to write (made if missing).
         seed: the class seed (default: the spec's ``seed``, else 0).
+        weights: each problem's weight (its points in the gradebook and the exports), one
+            per problem of the exam in the handout's order (problem 1 first: a spec
+            problem of ``variants = 2`` is two), in place of the spec problems' ``weight``
+            (default: theirs, else 1). Kept in ``key.json``.
 
     Returns:
         ``{"handouts": folder, "keys": folder, "key_json", "key_html", "answers",
         "moodle", "stack"}``.
 
     Raises:
-        ValueError: a bad spec or roster, or no new well-posed variant in 50 draws.
+        ValueError: a bad spec or roster, ``weights`` not one finite number >= 0 per
+            problem with a positive sum (the message names ``weights``, before anything
+            is drawn), or no new well-posed variant in 50 draws.
     """
     import matplotlib
     matplotlib.use("Agg", force=False)
@@ -150,12 +158,14 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     spec = _exam.read_spec(spec)
     seed = int(spec.get("seed", 0) if seed is None else seed)
     title = str(spec.get("title", "Rigid-body mechanics: exercises"))
-    weights = [float(p.get("weight", 1)) for p in spec["problem"]]
+    slots = _slots(spec)
+    # problem n's weight: given, one per problem of the exam; else its spec problem's
+    given = None if weights is None else checked_weights(weights, len(slots))
+    spec_weights = [float(p.get("weight", 1)) for p in spec["problem"]]
     students = read_roster(roster)
     out = Path(out_dir)
     slugs = _unique_slugs(students)
     seeds = [student_seed(seed, st["name"]) for st in students]
-    slots = _slots(spec)
 
     def make(i: int, taken: dict | None = None) -> dict:
         """Student i's exam: drawn (against ``taken``: the draws of the students before
@@ -171,7 +181,8 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         write_atomic(out / "keys" / f"{slugs[i]}.html",
                      _exam.handout_page(f"{title}: answer key of {st['name']}", section))
         problems = [dict(solution_record(s), problem=n, spec_problem=k,
-                         weight=weights[k - 1], asked=_exam.asked(s),
+                         weight=given[n - 1] if given else spec_weights[k - 1],
+                         asked=_exam.asked(s),
                          labels={a: box_label(s.id, a) for a in _exam.asked(s)})
                     for n, (s, k) in enumerate(drawn, 1)]
         return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
