@@ -184,7 +184,7 @@ def with_weights(key: dict, weights: list[float]) -> dict:
     return {**key, "students": students}
 
 
-def checked_weights(weights, n: int) -> list[float]:
+def checked_weights(weights: list[float], n: int) -> list[float]:
     """``weights`` as ``n`` floats, one per problem of an exam (problem 1 first): what
     ``rigidsym exam --weights`` and ``rigidsym grade --weights`` accept.
 
