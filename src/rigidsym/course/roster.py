@@ -181,7 +181,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         write_atomic(out / "keys" / f"{slugs[i]}.html",
                      _exam.handout_page(f"{title}: answer key of {st['name']}", section))
         problems = [dict(solution_record(s), problem=n, spec_problem=k,
-                         weight=given[n - 1] if given else spec_weights[k - 1],
+                         weight=given[n - 1] if given is not None else spec_weights[k - 1],
                          asked=_exam.asked(s),
                          labels={a: box_label(s.id, a) for a in _exam.asked(s)})
                     for n, (s, k) in enumerate(drawn, 1)]
