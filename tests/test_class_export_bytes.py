@@ -17,6 +17,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from rigidsym.course.gradebook import grade_class, solution_of
 from rigidsym.course.grading import key_array
 from rigidsym.course.roster import class_exam
@@ -63,6 +65,10 @@ def _answers(folder: Path, path: Path) -> None:
         w.writerows(rows)
 
 
+# slow (~9.5 s of CPU, most of it a second process on an empty cache): the quick
+# tests/test_exam_weights.py checks what the weights put into key.json, moodle.xml, stack.xml
+# and the gradebook, and tests/test_course.py the class's files
+@pytest.mark.slow
 def test_a_class_written_again_elsewhere_is_the_same_bytes_and_grades_the_same(tmp_path):
     (tmp_path / "quiz.toml").write_text(SPEC, encoding="utf-8")
     (tmp_path / "roster.csv").write_text(ROSTER, encoding="utf-8")
