@@ -59,10 +59,17 @@ def _plain(c, rels):
 
 
 def zero_is_one_minus_one(cert):
+    """The first printed relation whose sides are not both zero replaced by ``0 = 1 - 1``
+    (where both are zero under the kinds, as (3.117)'s power of a reciprocal pair with the
+    pitch solved from it, ``0 = 1 - 1`` says what the page says: no forgery)."""
     c = copy.deepcopy(cert)
-    if c["verdict"] != "verified" or not _printed(c):
+    if c["verdict"] != "verified":
         return None
-    r = _printed(c)[0]
+    rs = [r for r in _printed(c)
+          if not all(_holds(c, r[s], _zero(r[s])) for s in ("lhs", "rhs"))]
+    if not rs:
+        return None
+    r = rs[0]
     r["lhs"], r["rhs"] = [["0"]], [["1 - 1"]]
     _plain(c, [r])
     return c
