@@ -221,3 +221,28 @@ def test_displaced_points_read_where_the_relation_cancels_the_translation():
     assert None not in cases
     for t in cases:
         assert "(3.1)" in rejection(t, book)
+
+
+def test_a_determinant_read_from_the_page(tmp_path):
+    """The reader's ``\\det`` expands a square array by its first row: a 3 x 3 array of
+    numbers gives the determinant computed by hand (18; 0 with two equal rows), a 2 x 3 one
+    is NOT READ. 3.30 (``det(U) = 1``, U by (3.29b), A and B the cross-product matrices of
+    a and b) is read on both sides; its right side doubled, both sides shifted, another id's
+    text and the other verdicts: rejected naming the id."""
+    from certcheck.arrays import M, NotRead, det
+
+    rows = [["2", "1", "0"], ["1", "3", "1"], ["0", "1", "4"]]
+    assert eval(det(M(rows)).rows[0][0]) == 2 * (3 * 4 - 1) - 1 * (1 * 4 - 0)
+    assert eval(det(M([rows[0], rows[0], rows[2]])).rows[0][0]) == 0
+    with pytest.raises(NotRead, match="determinant"):
+        det(M(rows[:2]))
+    book = book_text()
+    c = certs_for(tmp_path, ["3.30"])["3.30"]
+    assert c["verdict"] == "restatement"
+    lines = _lines(c, book)
+    assert lines == ["read from the page: relation 1's lhs (through \\mathbf{U} by (3.29b)) "
+                     "and rhs, the certificate's under the symbol table"], lines
+    cases = [shifted_sides(c), doubled_rhs(c), another_printed_text(c, book, "3.29b")]
+    cases += [relabelled(c, v) for v in ("verified", "definition", "does-not-hold")]
+    for t in cases:
+        assert "(3.30)" in rejection(t, book, page_first=True)

@@ -20,7 +20,7 @@ import functools
 import itertools
 import re
 
-from certcheck.arrays import M, NotRead, add, cpm, cross, inverse, mul, scalar, vec3
+from certcheck.arrays import M, NotRead, add, cpm, cross, det, inverse, mul, scalar, vec3
 
 __all__ = ["NotRead", "read_relations", "tokens"]
 
@@ -193,10 +193,10 @@ class _Reader:
             if b.shape != (1, 1):
                 raise NotRead("a fraction over a matrix")
             return M([[f"({x})/({b.rows[0][0]})" for x in r] for r in a.rows], a.loose)
-        if tok in ("\\cos", "\\sin"):
+        if tok in ("\\cos", "\\sin", "\\det"):  # det: a square array's determinant
             self.take()
             arg = self.factor() if self.peek() in ("(", "{") else self.primary()
-            return scalar(f"{tok[1:]}({arg.rows[0][0]})")
+            return det(arg) if tok == "\\det" else scalar(f"{tok[1:]}({arg.rows[0][0]})")
         if tok in ("\\mathrm", "\\text", "\\operatorname"):
             start = self.i
             self.take()
