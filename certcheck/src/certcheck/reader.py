@@ -171,9 +171,11 @@ class _Reader:
                     raise
                 v = self.block_row(start)
             if tok == "[" and not frame and self.i - start == 4 and self.t[start] in (
-                    "\\mathbf", "\\boldsymbol"):
-                raise NotRead("[G] without a frame: G's components in a frame the page "
-                              "does not name")
+                    "\\mathbf", "\\boldsymbol"):  # [G]: its frame in the table's line
+                if (key := "[" + "".join(self.t[start:self.i]) + "]") not in self.table:
+                    raise NotRead("[G] without a frame: G's components in a frame the page "
+                                  "does not name")
+                v = self.lookup(key)
             self.take(")" if tok == "(" else "]")
             self.frame = outer
             if frame:  # [X]_{K}: X's components in the frame K (its subscript read)

@@ -137,6 +137,10 @@ _LINES = (
        "e_2, e_3 (the columns of R; change of basis), its entries q_ij, i, j = 1, 2, 3 (the "
        "words before (3.39))", (r"\mathbf{Q}", r"\mathbf{R}"), "q_{ij}=")
       for k in (1, 2, 3) for m in (1, 2, 3)),
+    ("3.2.3", r"[\mathbf{Q}]", r"\mathbf{R}^T\mathbf{Q}\mathbf{R}", "the matrix of Q in the "
+     "frame X, Y, Z of axes parallel to e_1, e_2, e_3 (the columns of R; change of basis), "
+     "its entries (3.39)'s q_ij (the words before (3.39))", (r"\mathbf{Q}", r"\mathbf{R}"),
+     r"[\mathbf{Q}]="),
 )
 #: the glyphs of the lines, in order (a glyph may have a line in more than one section)
 DISPLACEMENT_GLYPHS = tuple(dict.fromkeys(g for _, g, _, _, _, _ in _LINES))
