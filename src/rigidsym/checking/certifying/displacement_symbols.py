@@ -28,7 +28,8 @@ The project's models (``derivations/sec3_2*.py``):
   of (3.37), orthonormal and right-handed) and the displaced triad ``e'_k = p'_k - a' = Q
   (p_k - a)``; (3.39)'s ``q_ij``, the entries of ``Q`` in the triad's frame, ``R^T Q R``
   (change of basis), with the range ``i, j = 1, 2, 3`` the page states in words (the line
-  of ``q_11`` carries ``"family": "ij"``: certcheck reads the relation for each i, j).
+  of ``q_11`` carries ``"family": "ij"``: certcheck reads the relation for each i, j), and
+  (3.40)'s ``[Q]``, that matrix ``R^T Q R`` (the frame the words before (3.39) name).
 
 Each line is given only where the id prints the glyph (and the table has the glyphs its
 LaTeX names), so the other ids keep reading through the page's own definitions.
