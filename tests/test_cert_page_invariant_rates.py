@@ -94,8 +94,8 @@ def member_copied(cert: dict, k: int) -> dict:
 def test_a_representation_the_page_lists_dropped_or_copied_rejected(book, tmp_path):
     """Each id of FAMILY (three members, read on every side): each member dropped, or
     replaced by a copy of another member, is rejected naming the id and the relation the
-    page prints that the certificate does not carry; certcheck exits 1 on a folder of such
-    copies, naming each id."""
+    page prints that the certificate does not carry, and a copy added as a fourth member is
+    rejected too; certcheck exits 1 on a folder of such copies, naming each id."""
     from rigidsym.checking.certifying.certificates import certificate_file, write_manifest
 
     certs = certificates(FAMILY)
@@ -106,6 +106,10 @@ def test_a_representation_the_page_lists_dropped_or_copied_rejected(book, tmp_pa
                 out = page_outcome(t, book)
                 assert out.startswith(f"rejected: ({i}): the page prints the relation for ") \
                     and "which the certificate does not carry" in out, (i, k, out)
+        extra = copy.deepcopy(c)  # a fourth member, a copy: more than the words list
+        extra["relations"].append(copy.deepcopy(c["relations"][members(c)[0]]))
+        assert page_outcome(extra, book).startswith(
+            f"rejected: ({i}): the certificate carries 4 members of"), i
     for i, c in certs.items():
         (tmp_path / certificate_file(i)).write_text(json.dumps(member_copied(c, members(c)[0])))
     write_manifest(tmp_path, [certificate_file(i) for i in FAMILY], str(BOOK))

@@ -147,9 +147,11 @@ def _family(eq_id: str, fam: list, book: str) -> None:
     for g, listed in named or [("its glyphs", ["a member"])]:  # words list none: a failure
         carried = [m.get(g) for m in lines]
         if sorted(listed) != sorted(map(str, carried)):
-            x = next((x for x in listed if x not in carried), "/".join(listed))
-            raise BookError(f"({eq_id}): the page prints the relation for {g} = {x} (its "
-                            f"words list {len(listed)}), which the certificate does not carry")
+            x = next((x for x in listed if x not in carried), None)
+            raise BookError(f"({eq_id}): " + (f"the certificate carries {len(carried)} "
+                            f"members of {g}, the page's words {len(listed)}" if x is None else
+                            f"the page prints the relation for {g} = {x} (its words list "
+                            f"{len(listed)}), which the certificate does not carry"))
 
 
 def _prints(display: str, s: dict) -> bool:
