@@ -90,9 +90,13 @@ def point_velocity_from_centre() -> Statement:
 @equation("3.128", "Velocity of a body point with R = CPM(r)", section="3.8",
           latex=r"\dot{\mathbf{p}} = \dot{\mathbf{c}} - \mathbf{R}\boldsymbol{\omega}")
 def point_velocity_cpm_form() -> Statement:
-    """``p_dot = c_dot - R omega``, ``R = CPM(r)``. Book: Sec. 3.8, Eq. (3.128). 3x1, m/s."""
-    return Statement([Rel(p_dot, c_dot - R * omega), Rel(R, cpm(r), "R (definition)")],
-                     motion_model())
+    """``p_dot = c_dot - R omega``, ``R = CPM(r)``. Book: Sec. 3.8, Eq. (3.128). 3x1, m/s.
+
+    The page prints one relation; ``R = CPM(r)`` it says in words before it, so that is a
+    claim, not a printed member.
+    """
+    return Statement([Rel(p_dot, c_dot - R * omega)], motion_model(),
+                     claims=[Rel(R, cpm(r), "R (definition)")])
 
 
 @equation("3.129", "Kinetic energy as three integrals", section="3.8",

@@ -1019,15 +1019,17 @@ def test_dropped_printed_relation_fails_where_braced(braced):
 @pytest.mark.slow
 def test_chapter_dropped_printed_relation_fails(chapter):
     """Every id read on every side, each relation the page prints dropped in turn: never
-    read on every side (rejected naming the id, or NOT READ). Left out: an id whose page
-    prints one relation that the certificate proves under several models or restatements
-    (3.16, 3.31, F = N, L or H): one of them dropped leaves the printed relation proved."""
+    read on every side (rejected naming the id, or NOT READ); a member of a family F = N, L,
+    H dropped leaves a representation the page's words list uncarried (rejected). Left out:
+    an id whose page prints one relation that the certificate proves under several
+    restatements (3.16, 3.31): one of them dropped leaves the printed relation proved."""
     _, certs = chapter
     book = book_text()
     tried = 0
     for i, c in sorted(certs.items()):
+        family = any(r.get("symbols") for r in c["relations"])
         if not i[0].isdigit() or page_outcome(c, book) != "read" or \
-                page_relations(c, book) == 1 < len(printed_indices(c)):
+                page_relations(c, book) == 1 < len(printed_indices(c)) and not family:
             continue
         for k in printed_indices(c):
             out = page_outcome(relation_dropped(c, k), book)

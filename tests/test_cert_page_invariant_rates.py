@@ -13,7 +13,15 @@ import json
 
 import _profile
 import pytest
-from test_cert_page import another_printed_text, doubled_rhs, relabelled, shifted_sides
+from test_cert_page import (
+    _certcheck,
+    another_printed_text,
+    doubled_rhs,
+    page_outcome,
+    relabelled,
+    relation_dropped,
+    shifted_sides,
+)
 from test_cert_page_momenta import (
     BOOK,
     certificates,
@@ -35,6 +43,9 @@ FAILING = ["3.77a", "3.94", "3.96a", "3.97a", "3.97b", "3.97c"]
 NO_CHANGE = {r"\mathbf{O}_{43}", r"\mathbf{O}_{34}", ("3.91", r"\mathbf{v}"),
              ("3.93", r"\dot{\boldsymbol{\eta}}"), ("3.93", r"\dot{\tilde{\mathbf{H}}}")}
 SWAP_INVARIANT = {"3.80a", "3.93"}
+#: the ids whose one printed relation holds for each representation the page's words list
+#: ("F is one of N, L, or H"), one printed relation per member, each with its own lines
+FAMILY = ["3.78", "3.79", "3.80a", "3.80b", "3.91", "3.92", "3.93"]
 
 
 @pytest.fixture(scope="module")
@@ -62,6 +73,50 @@ def members_dropped(cert: dict) -> dict:
     for r in c["relations"]:
         r.pop("symbols", None)
     return c
+
+
+def members(cert: dict) -> list[int]:
+    """The positions of the family's members: the printed relations with their own lines."""
+    return [k for k, r in enumerate(cert["relations"]) if r["role"] == "printed"
+            and r.get("symbols")]
+
+
+def member_copied(cert: dict, k: int) -> dict:
+    """Member ``k`` (its label kept) replaced by a copy of the next member: as many printed
+    relations as the page's words list, each proved, one representation twice and member
+    ``k``'s dropped."""
+    c, own = copy.deepcopy(cert), members(cert)
+    c["relations"][k] = {**copy.deepcopy(cert["relations"][own[(own.index(k) + 1) % len(own)]]),
+                         "label": cert["relations"][k]["label"]}
+    return c
+
+
+def test_a_representation_the_page_lists_dropped_or_copied_rejected(book, tmp_path):
+    """Each id of FAMILY (three members, read on every side): each member dropped, or
+    replaced by a copy of another member, is rejected naming the id and the relation the
+    page prints that the certificate does not carry, and a copy added as a fourth member is
+    rejected too; certcheck exits 1 on a folder of such copies, naming each id."""
+    from rigidsym.checking.certifying.certificates import certificate_file, write_manifest
+
+    certs = certificates(FAMILY)
+    for i, c in certs.items():
+        assert len(members(c)) == 3 and page_outcome(c, book) == "read", i
+        for k in members(c):
+            for t in (relation_dropped(c, k), member_copied(c, k)):
+                out = page_outcome(t, book)
+                assert out.startswith(f"rejected: ({i}): the page prints the relation for ") \
+                    and "which the certificate does not carry" in out, (i, k, out)
+        extra = copy.deepcopy(c)  # a fourth member, a copy: more than the words list
+        extra["relations"].append(copy.deepcopy(c["relations"][members(c)[0]]))
+        assert page_outcome(extra, book).startswith(
+            f"rejected: ({i}): the certificate carries 4 members of"), i
+    for i, c in certs.items():
+        (tmp_path / certificate_file(i)).write_text(json.dumps(member_copied(c, members(c)[0])))
+    write_manifest(tmp_path, [certificate_file(i) for i in FAMILY], str(BOOK))
+    p = _certcheck("--quiet", "--book", BOOK, tmp_path)
+    assert p.returncode == 1, p.stdout
+    for i in FAMILY:
+        assert f"FAILED {i}.json: ({i}): the page prints the relation for" in p.stdout, i
 
 
 def test_member_lines_read_each_representation_firmly_and_a_swap_rejected(book):

@@ -34,6 +34,7 @@ CHANGED = {"3.112": ("\\mathbf{\\Gamma}", "& \\mathbf{1} \\\\", "& 2\\mathbf{1} 
            "3.124": ("\\mathbf{q}_O", "\\mathbf{p} d", "2\\mathbf{p} d"),
            "3.126": ("T", "\\frac{1}{2}", "\\frac{1}{3}"),
            "3.127": ("\\mathbf{c}", "\\mathbf{o}", "2\\mathbf{o}"),
+           "3.128": ("\\mathbf{c}", "\\mathbf{o}", "2\\mathbf{o}"),
            "3.129": ("m", "\\rho d", "2\\rho d"),
            "3.130": ("T", "\\frac{1}{2}", "\\frac{1}{3}"),
            "3.131": ("\\mathbf{I}_A", "\\mathbf{1} -", "2\\mathbf{1} -"),
@@ -96,7 +97,8 @@ def test_glyphs_defined_on_the_id_read_firmly_and_tamperings_rejected(own_read):
 @pytest.mark.slow
 def test_chapter_sections_3_7_3_8_own_glyphs_read_and_tamperings_rejected(tmp_path):
     """The other ids these lines read (3.119a's ``V`` of (3.119b), not (3.97d)'s; 3.124,
-    3.126, 3.130's ``T``; 3.127, 3.132 and 3.134a's ``c`` without the body's shape; 3.129's
+    3.126, 3.130's ``T``; 3.127, 3.128 (its ``R = CPM(r)`` a claim: the page says it in
+    words), 3.132 and 3.134a's ``c`` without the body's shape; 3.129's
     and 3.130's underbraces; 3.131's ``I_A``; 3.138's ``M`` on ``r_i = Q rho_i``; 3.147's
     ``M_A``, the kinetic energy's Hessian): read firmly, each tampering rejected naming
     the id."""

@@ -1,12 +1,13 @@
 """The arrays of certcheck's second reader: matrices whose entries are texts of the
 certificate's grammar (``(a)*(b) + ...``), and the operations the chapter's notation prints
-on them (sum, product, transpose, cross product, cross-product matrix, inverse). Each entry
-is built as text, never simplified: :func:`certcheck.check.check_identity` compares it.
+on them (sum, product, transpose, cross product, cross-product matrix, inverse, determinant).
+Each entry is built as text, never simplified: :func:`certcheck.check.check_identity`
+compares it.
 """
 
 from __future__ import annotations
 
-__all__ = ["NotRead", "M", "scalar", "add", "mul", "vec3", "cross", "cpm", "inverse"]
+__all__ = ["NotRead", "M", "scalar", "add", "mul", "vec3", "cross", "cpm", "det", "inverse"]
 
 
 class NotRead(Exception):
@@ -72,18 +73,25 @@ def cpm(v: M) -> M:
               [f"-({x[1]})", f"{x[0]}", "0"]])
 
 
+def det(v: M) -> M:
+    """A square array's determinant, expanded by its first row (as written)."""
+    n, a = v.shape[0], v.rows
+    if v.shape != (n, n):
+        raise NotRead(f"the determinant of a {v.shape} array")
+    return v if n == 1 else scalar(" + ".join(
+        f"({(-1) ** j})*({a[0][j]})*({det(_minor(v, 0, j)).rows[0][0]})" for j in range(n)))
+
+
+def _minor(v: M, i: int, j: int) -> M:
+    return M([r[:j] + r[j + 1:] for k, r in enumerate(v.rows) if k != i])
+
+
 def inverse(v: M) -> M:
     """A scalar's reciprocal or a 3 x 3 matrix's inverse (adjugate over determinant)."""
     if v.shape == (1, 1):
         return scalar(f"1/({v.rows[0][0]})")
     if v.shape != (3, 3):
         raise NotRead(f"the inverse of a {v.shape} array")
-    a = v.rows
-
-    def cof(i, j):  # the cofactor of entry (i, j)
-        r, c = [k for k in range(3) if k != i], [k for k in range(3) if k != j]
-        return (f"(({a[r[0]][c[0]]})*({a[r[1]][c[1]]}) - ({a[r[0]][c[1]]})*"
-                f"({a[r[1]][c[0]]}))*({(-1) ** (i + j)})")
-    det = " + ".join(f"({a[0][j]})*{cof(0, j)}" for j in range(3))
-    return M([[f"({cof(j, i)})/({det})" for j in range(3)] for i in range(3)], v.loose)
-
+    d = det(v).rows[0][0]
+    return M([[f"({(-1) ** (i + j)})*({det(_minor(v, j, i)).rows[0][0]})/({d})" for j in
+               range(3)] for i in range(3)], v.loose)

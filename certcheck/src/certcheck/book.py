@@ -122,10 +122,8 @@ def check_page(cert: dict, book: str) -> list[str]:
                             f"({cited}), which does not print {s.get('latex')!r}")
     fam = [r for r in cert.get("relations") or [] if isinstance(r, dict) and
            r.get("role") == "printed" and r.get("symbols")]  # F = N, L, H: every member
-    g = str((fam or [{"symbols": [{}]}])[0]["symbols"][0].get("glyph")).replace(" ", "")
-    if fam and cert.get("verdict") != "does-not-hold" and _members(book, g) != len(fam):
-        raise BookError(f"({eq_id}): the page's words give {g} {_members(book, g)} "
-                        f"members, the certificate proves {len(fam)}")
+    if fam and cert.get("verdict") != "does-not-hold":
+        _family(eq_id, fam, book)
     lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
     lines += [f"symbol: {symbol_words(s)}" for s in cert.get("symbols") or []]
     lines += [f"symbol of {r.get('label')}: {symbol_words(s)}" for r in cert.get("relations")
@@ -133,13 +131,27 @@ def check_page(cert: dict, book: str) -> list[str]:
     return lines + cause_lines(cert)
 
 
-def _members(book: str, glyph: str) -> int | None:
-    """How many glyphs the page's words give ``glyph``: "$G$ is one of $A$, $B$, or $C$"."""
+def _family(eq_id: str, fam: list, book: str) -> None:
+    """Each member of a family carries its own lines; of each glyph the page's words list
+    ("$F$ is one of $N$, $L$, or $H$") every listed glyph is one member's line, each once, and
+    the words list one at least: a member dropped, or replaced by another's copy, leaves a
+    relation the page prints uncarried, a failure naming the id."""
+    words: dict = {}  # the first list the page's words give each glyph, spaces removed
     for m in re.finditer(r"\$\s*([^$]+?)\s*\$\s+is(?:,\s*correspondingly,|\s+one of)\s+"
                          r"((?:\$[^$]+\$\s*,?\s*(?:or\s+)?)+)", book):
-        if m.group(1).replace(" ", "") == glyph:
-            return len(re.findall(r"\$[^$]+\$", m.group(2)))
-    return None
+        words.setdefault(m.group(1).replace(" ", ""), [
+            x.replace(" ", "") for x in re.findall(r"\$([^$]+)\$", m.group(2))])
+    lines = [{str(s.get("glyph")).replace(" ", ""): str(s.get("latex")).replace(" ", "")
+              for s in r["symbols"] if isinstance(s, dict)} for r in fam]
+    named = [(g, words[g]) for g in dict.fromkeys(k for m in lines for k in m) if g in words]
+    for g, listed in named or [("its glyphs", ["a member"])]:  # words list none: a failure
+        carried = [m.get(g) for m in lines]
+        if sorted(listed) != sorted(map(str, carried)):
+            x = next((x for x in listed if x not in carried), None)
+            raise BookError(f"({eq_id}): " + (f"the certificate carries {len(carried)} "
+                            f"members of {g}, the page's words {len(listed)}" if x is None else
+                            f"the page prints the relation for {g} = {x} (its words list "
+                            f"{len(listed)}), which the certificate does not carry"))
 
 
 def _prints(display: str, s: dict) -> bool:

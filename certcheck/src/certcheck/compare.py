@@ -137,9 +137,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                 continue
             if mine.shape != (len(theirs), len(theirs[0])):  # a 1, O or 0 sized so too
                 raise CheckError(f"({cert.get('id')}) printed {side} {rel.get('label', '')}: "
-                                 f"the page's reads "
-                                 f"{mine.shape[0]}x{mine.shape[1]}, the certificate's "
-                                 f"{len(theirs)}x{len(theirs[0])}")
+                                 f"the page's reads {mine.shape[0]}x{mine.shape[1]}, the "
+                                 f"certificate's {len(theirs)}x{len(theirs[0])}")
             try:
                 if not whole:
                     check_identity(st := probe([{"label": f"page {side}", "role": "printed",
@@ -155,8 +154,7 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
                                "); the certificate's word")
                     continue
                 raise CheckError(f"({cert.get('id')}) the printed {side} of relation {k + 1} is "
-                                 f"not the "
-                                 f"certificate's: {exc}") from None
+                                 f"not the certificate's: {exc}") from None
             tentative = soft or any(c.endswith("an equation") for c in cited)
             (matched if tentative else read).append(
                 side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))

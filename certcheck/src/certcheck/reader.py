@@ -20,7 +20,7 @@ import functools
 import itertools
 import re
 
-from certcheck.arrays import M, NotRead, add, cpm, cross, inverse, mul, scalar, vec3
+from certcheck.arrays import M, NotRead, add, cpm, cross, det, inverse, mul, scalar, vec3
 
 __all__ = ["NotRead", "read_relations", "tokens"]
 
@@ -171,9 +171,11 @@ class _Reader:
                     raise
                 v = self.block_row(start)
             if tok == "[" and not frame and self.i - start == 4 and self.t[start] in (
-                    "\\mathbf", "\\boldsymbol"):
-                raise NotRead("[G] without a frame: G's components in a frame the page "
-                              "does not name")
+                    "\\mathbf", "\\boldsymbol"):  # [G]: its frame in the table's line
+                if (key := "[" + "".join(self.t[start:self.i]) + "]") not in self.table:
+                    raise NotRead("[G] without a frame: G's components in a frame the page "
+                                  "does not name")
+                v = self.lookup(key)
             self.take(")" if tok == "(" else "]")
             self.frame = outer
             if frame:  # [X]_{K}: X's components in the frame K (its subscript read)
@@ -193,10 +195,10 @@ class _Reader:
             if b.shape != (1, 1):
                 raise NotRead("a fraction over a matrix")
             return M([[f"({x})/({b.rows[0][0]})" for x in r] for r in a.rows], a.loose)
-        if tok in ("\\cos", "\\sin"):
+        if tok in ("\\cos", "\\sin", "\\det"):  # det: a square array's determinant
             self.take()
             arg = self.factor() if self.peek() in ("(", "{") else self.primary()
-            return scalar(f"{tok[1:]}({arg.rows[0][0]})")
+            return det(arg) if tok == "\\det" else scalar(f"{tok[1:]}({arg.rows[0][0]})")
         if tok in ("\\mathrm", "\\text", "\\operatorname"):
             start = self.i
             self.take()

@@ -386,8 +386,8 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
             continue
         glyph = _glyph(base, True)
         add(glyph, {"kind": kind, "atoms": sorted(names)}, timed)
-        for cap in cpm.get(glyph, ()):  # U of (3.83b), V of (3.119b) print A and P
-            if cap in latex or cap in ("\\mathbf{A}", "\\mathbf{P}") and \
+        for cap in cpm.get(glyph, ()):  # U of (3.29b), (3.83b), V of (3.119b): A, B, P
+            if cap in latex or cap in ("\\mathbf{A}", "\\mathbf{B}", "\\mathbf{P}") and \
                     re.search(r"\\mathbf\{[UV]\}", latex):
                 out.append({"glyph": cap, "cpm_of": glyph})
     for g in atoms:  # a rotation or transform: its matrix, row-major

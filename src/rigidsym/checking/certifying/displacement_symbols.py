@@ -28,7 +28,8 @@ The project's models (``derivations/sec3_2*.py``):
   of (3.37), orthonormal and right-handed) and the displaced triad ``e'_k = p'_k - a' = Q
   (p_k - a)``; (3.39)'s ``q_ij``, the entries of ``Q`` in the triad's frame, ``R^T Q R``
   (change of basis), with the range ``i, j = 1, 2, 3`` the page states in words (the line
-  of ``q_11`` carries ``"family": "ij"``: certcheck reads the relation for each i, j).
+  of ``q_11`` carries ``"family": "ij"``: certcheck reads the relation for each i, j), and
+  (3.40)'s ``[Q]``, that matrix ``R^T Q R`` (the frame the words before (3.39) name).
 
 Each line is given only where the id prints the glyph (and the table has the glyphs its
 LaTeX names), so the other ids keep reading through the page's own definitions.
@@ -137,6 +138,10 @@ _LINES = (
        "e_2, e_3 (the columns of R; change of basis), its entries q_ij, i, j = 1, 2, 3 (the "
        "words before (3.39))", (r"\mathbf{Q}", r"\mathbf{R}"), "q_{ij}=")
       for k in (1, 2, 3) for m in (1, 2, 3)),
+    ("3.2.3", r"[\mathbf{Q}]", r"\mathbf{R}^T\mathbf{Q}\mathbf{R}", "the matrix of Q in the "
+     "frame X, Y, Z of axes parallel to e_1, e_2, e_3 (the columns of R; change of basis), "
+     "its entries (3.39)'s q_ij (the words before (3.39))", (r"\mathbf{Q}", r"\mathbf{R}"),
+     r"[\mathbf{Q}]="),
 )
 #: the glyphs of the lines, in order (a glyph may have a line in more than one section)
 DISPLACEMENT_GLYPHS = tuple(dict.fromkeys(g for _, g, _, _, _, _ in _LINES))
