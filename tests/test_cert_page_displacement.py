@@ -100,21 +100,27 @@ def test_lines_only_where_the_id_prints_the_glyph():
     assert displacement_symbols({"\\mathbf{e}"}, "3.2.1", r"\alpha = \frac{1}{2}") == []
 
 
+def _twice_x(lines: list[dict]) -> dict:
+    """A definition certificate of ``2 x = 2 x`` over a free 3-vector ``x``, its symbol table
+    ``x`` and ``lines``."""
+    x = ["x_1", "x_2", "x_3"]
+    cert = {"format": "rigidsym-certificate", "version": 1, "id": "3.999",
+            "verdict": "definition", "let": [],
+            "atoms": [{"group": a, "kind": "free", "names": [a], "timed": False} for a in x],
+            "symbols": [{"glyph": "\\mathbf{x}", "kind": "free", "atoms": x}, *lines],
+            "relations": [{"role": "printed", "label": "", "lhs": [[f"2*{a}"] for a in x],
+                           "rhs": [[f"2*{a}"] for a in x], "evidence": {"type": "statement"}}]}
+    return cert
+
+
 def test_reader_reads_a_vector_between_two_points_as_a_glyph():
     """``\\overrightarrow{AP_1}`` is one glyph of the table (3.37's triad); without its line
     it is NOT READ, never passed."""
     from certcheck.compare import compare
 
-    x = ["x_1", "x_2", "x_3"]
-    cert = {"format": "rigidsym-certificate", "version": 1, "id": "3.999",
-            "verdict": "definition", "let": [],
-            "atoms": [{"group": a, "kind": "free", "names": [a], "timed": False} for a in x],
-            "symbols": [{"glyph": "\\mathbf{x}", "kind": "free", "atoms": x},
-                        {"glyph": "\\overrightarrow{AP_1}", "latex": "2\\mathbf{x}",
-                         "model": "twice x"},
-                        {"glyph": "\\mathbf{e}_1", "latex": "2\\mathbf{x}", "model": "2 x"}],
-            "relations": [{"role": "printed", "label": "", "lhs": [[f"2*{a}"] for a in x],
-                           "rhs": [[f"2*{a}"] for a in x], "evidence": {"type": "statement"}}]}
+    cert = _twice_x([{"glyph": "\\overrightarrow{AP_1}", "latex": "2\\mathbf{x}",
+                      "model": "twice x"},
+                     {"glyph": "\\mathbf{e}_1", "latex": "2\\mathbf{x}", "model": "2 x"}])
     page = "\\mathbf{e}_1 \\equiv \\overrightarrow{AP_1}"
     lines = compare(cert, page, fast=False)
     assert lines[0].startswith("read from the page: relation 1's lhs") and " and rhs" in \
@@ -206,15 +212,8 @@ def test_reader_reads_components_in_a_frame_the_table_names():
 
     from certcheck import CheckError
 
-    x = ["x_1", "x_2", "x_3"]
-    cert = {"format": "rigidsym-certificate", "version": 1, "id": "3.999",
-            "verdict": "definition", "let": [],
-            "atoms": [{"group": a, "kind": "free", "names": [a], "timed": False} for a in x],
-            "symbols": [{"glyph": "\\mathbf{x}", "kind": "free", "atoms": x},
-                        {"glyph": "[\\mathbf{x}]", "latex": "2\\mathbf{x}",
-                         "model": "x in a frame of half the unit length"}],
-            "relations": [{"role": "printed", "label": "", "lhs": [[f"2*{a}"] for a in x],
-                           "rhs": [[f"2*{a}"] for a in x], "evidence": {"type": "statement"}}]}
+    cert = _twice_x([{"glyph": "[\\mathbf{x}]", "latex": "2\\mathbf{x}",
+                      "model": "x in a frame of half the unit length"}])
     page = "[\\mathbf{x}] \\equiv 2\\mathbf{x}"
     lines = compare(cert, page, fast=False)
     assert lines[0].startswith("read from the page: relation 1's lhs (through [\\mathbf{x}]")

@@ -10,6 +10,7 @@ import json
 import re
 
 import pytest
+from test_grade_weights import gradebook_points
 
 from rigidsym.cli import main
 from rigidsym.course.gradebook import grade_class, solution_of
@@ -68,12 +69,6 @@ def _all_right(folder):
     return path
 
 
-def _points(folder) -> list[tuple[float, float, float]]:
-    text = (folder / "gradebook.csv").read_text(encoding="utf-8-sig")
-    return [(float(r["Problem 1"]), float(r["Problem 2"]), float(r["Total"]))
-            for r in csv.DictReader(text.splitlines())]
-
-
 def test_weights_given_to_class_exam_reach_the_key_the_exports_and_the_gradebook(
         roster, tmp_path):
     class_exam(SPEC, roster, tmp_path, weights=[3, 0.5])
@@ -82,7 +77,7 @@ def test_weights_given_to_class_exam_reach_the_key_the_exports_and_the_gradebook
     assert _marks(tmp_path, "moodle.xml") == [3.0, 0.5] * 2
     # every box right: each problem scores its weight
     grade_class(tmp_path, _all_right(tmp_path))
-    assert _points(tmp_path) == [(3.0, 0.5, 3.5)] * 2
+    assert gradebook_points(tmp_path) == [(3.0, 0.5, 3.5)] * 2
 
 
 def test_the_specs_weight_serves_where_none_is_given_and_weights_replace_it(roster,
@@ -148,7 +143,7 @@ def test_the_command_lines_weights_reach_the_key_and_the_gradebook(roster, tmp_p
     assert _marks(out, "stack.xml") == [2.0, 0.25] * 2
     capsys.readouterr()
     assert main(["grade", str(out), str(_all_right(out))]) == 0
-    assert _points(out) == [(2.0, 0.25, 2.25)] * 2
+    assert gradebook_points(out) == [(2.0, 0.25, 2.25)] * 2
 
 
 @pytest.mark.parametrize("text, words", [

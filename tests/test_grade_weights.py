@@ -38,7 +38,8 @@ def graded_class(tmp_path_factory):
     return tmp
 
 
-def _totals(folder) -> list[tuple[float, float, float]]:
+def gradebook_points(folder) -> list[tuple[float, float, float]]:
+    """Each student's (problem 1, problem 2, total) points in ``folder``'s gradebook.csv."""
     text = (folder / "gradebook.csv").read_text(encoding="utf-8-sig")
     return [(float(r["Problem 1"]), float(r["Problem 2"]), float(r["Total"]))
             for r in csv.DictReader(text.splitlines())]
@@ -49,13 +50,13 @@ def test_a_problems_points_are_its_weight_given_when_grading(graded_class, weigh
     key_before = (graded_class / "out" / "key.json").read_bytes()
     grade_class(graded_class / "out", graded_class / "answers.csv", weights=weights)
     # problem 1 all right, problem 2 all wrong: the weight of problem 1, and 0
-    assert _totals(graded_class / "out") == [(weights[0], 0.0, weights[0])] * 2
+    assert gradebook_points(graded_class / "out") == [(weights[0], 0.0, weights[0])] * 2
     assert (graded_class / "out" / "key.json").read_bytes() == key_before
 
 
 def test_without_weights_the_keys_weights_grade(graded_class):
     grade_class(graded_class / "out", graded_class / "answers.csv")
-    assert _totals(graded_class / "out") == [(1.0, 0.0, 1.0)] * 2
+    assert gradebook_points(graded_class / "out") == [(1.0, 0.0, 1.0)] * 2
 
 
 @pytest.mark.parametrize("weights, words", [
