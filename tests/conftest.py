@@ -56,7 +56,6 @@ def pytest_configure(config):
     become_subreaper()
 
 
-
 def pytest_unconfigure(config):
     for path in _CREATED:
         shutil.rmtree(path, ignore_errors=True)
