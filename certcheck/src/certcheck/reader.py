@@ -42,7 +42,7 @@ class _Reader:
     def __init__(self, tokens: list[str], table: dict, defs: dict | None = None,
                  cited: list | None = None, lets: list | None = None,
                  seen: dict | None = None):
-        self.t, self.i, self.table = tokens, 0, table
+        self.t, self.i, self.table, self.top = tokens, 0, table, False  # top: a page's side
         self.lets = [] if lets is None else lets  # [name, text]: a glyph's entries, once
         self.seen = {} if seen is None else seen  # key -> (named value, loose, used, cites)
         self.used: set = set()  # the glyphs looked up (through definitions too)
@@ -309,7 +309,7 @@ class _Reader:
 
     def bmatrix(self) -> M:
         self.take("\\begin{bmatrix}")
-        rows, row = [], [self.block()]
+        start, rows, row = self.i, [], [self.block()]
         while self.peek() != "\\end{bmatrix}":
             sep = self.take()
             if sep == "\\\\":
@@ -318,6 +318,7 @@ class _Reader:
             row.append(self.block())
         self.take()
         rows.append(row)
+        raw, whole = [list(r) for r in rows], self.top and self.i == len(self.t) and start == 1
         hs = [next((b.shape[0] for b in r if isinstance(b, M)), None) for r in rows]
         ws = [next((r[k].shape[1] for r in rows if k < len(r) and isinstance(r[k], M)), None)
               for k in range(max(map(len, rows)))]
@@ -336,11 +337,12 @@ class _Reader:
         out = []
         for blocks in rows:
             h = blocks[0].shape[0]
-            if any(b.shape[0] != h for b in blocks):
-                raise NotRead("blocks of a row differ in height")
+            if any(b.shape[0] != h for b in blocks) or len({sum(b.shape[1] for b in r)
+                                                            for r in rows}) != 1:
+                exc = NotRead("the blocks do not fit")
+                exc.blocks = raw if whole else []  # the whole side's (certcheck.compare's)
+                raise exc
             out += [sum((b.rows[k] for b in blocks), []) for k in range(h)]
-        if len({len(r) for r in out}) != 1:
-            raise NotRead("rows of a block matrix differ in width")
         return M(out, loose)
 
     def glyph(self) -> M:
@@ -501,6 +503,7 @@ def read_relations(page: str, symbols: list, defs: dict | None = None,
             for vals in itertools.product("123", repeat=len(idx)):  # a family: each member
                 r = _Reader(_bind(toks, dict(zip(idx, vals, strict=True))), table, defs,
                             cited, lets, seen)
+                r.top = True
                 try:
                     read.append(r.chain()[0])
                 except (NotRead, IndexError) as exc:
