@@ -7,7 +7,7 @@ the page defines in words (``"model"``), both read firmly, or a citation (``"def
 not read here). The notation: bold and Greek glyphs with dots, primes and subscripts,
 ``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition, ``\\frac``, ``/``, ``\\cos``,
 ``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``, brackets and
-``bmatrix`` blocks, ``\\|x\\|^2`` (not a bare norm), integer powers of a square matrix,
+``bmatrix`` blocks, ``\\|x\\|^2``, ``\\|x\\|`` (a square root), powers of a square matrix,
 ``\\underbrace{X}_{...}`` (X), ``[X]_{K}`` (each glyph G of X read from the line
 ``[G]_{K}``; ``[G]`` with no frame, 3.40's, is not read) and the integral over the body
 (:meth:`_Reader.integral`). A side not read is reported, never passed; a side read, a matrix
@@ -144,7 +144,7 @@ class _Reader:
             raise NotRead("an expression ends early")
         if tok.isdigit():
             return scalar(self.take())
-        if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
+        if tok == "\\|":  # a norm: ||x||^2 = x^T x, ||x|| its square root
             self.take()
             end = self.t.index("\\|", self.i) if "\\|" in self.t[self.i:] else self.i
             if (key := "\\|" + "".join(self.t[self.i:end]) + "\\|") in self.table:
@@ -154,12 +154,13 @@ class _Reader:
             x = vec3(self.expr())
             self.norm -= 1
             self.take("\\|")
+            square = " + ".join(f"({c})^2" for c in x)
             if self.t[self.i:self.i + 2] != ["^", "2"] and \
                     self.t[self.i:self.i + 4] != ["^", "{", "2", "}"]:
-                raise NotRead("a norm not squared (a square root)")
+                return scalar(f"sqrt({square})")  # ||x||: decided in K(sqrt(x^T x))
             self.take("^")
             self.group()
-            return scalar(" + ".join(f"({c})^2" for c in x))
+            return scalar(square)
         if tok in ("(", "["):
             self.take()
             outer, frame = self.frame, self.frame_after() if tok == "[" else None
