@@ -77,19 +77,21 @@ def test_import_graph_is_standard_library_only(quick_certs):
 
 
 def test_checker_size():
-    """A referee reads it in an afternoon: at most 1550 lines of mathematics and the
-    command (its accounting of what is read), 850 of the second reader of the printed
-    LaTeX (its notation, arrays and comparison), 250 of the binding to the page (the
-    locator, the manifest, the citations, the causes), 130 of a referee's path through
-    one id (``certcheck explain``), 50 of the printed relation that holds by definition
-    (``by_definition``: a vacuous relation whose two sides are read) and 60 of the
-    relations printed under the page's braces (``braces``)."""
+    """A referee reads it in an afternoon: at most 1610 lines of mathematics and the
+    command (its accounting of what is read; 1550 before the field K(s) of one square root,
+    an unsquared norm's, 3.52-3.55), 900 of the second reader of the printed
+    LaTeX (its notation, arrays and comparison; 850 before it read a side that is no array,
+    (3.94)'s 4 x 3 F-dot in a 3 x 4 slot, each other block held to the page), 250 of the
+    binding to the page (the locator, the manifest, the citations, the causes), 130 of a
+    referee's path through one id (``certcheck explain``), 50 of the printed relation that
+    holds by definition (``by_definition``: a vacuous relation whose two sides are read) and
+    60 of the relations printed under the page's braces (``braces``)."""
     reader, page = ("reader.py", "arrays.py", "compare.py"), ("book.py", "explain.py",
                                                                "by_definition.py", "braces.py")
     lines = {f.name: len(f.read_text().splitlines()) for f in (SRC / "certcheck").glob("*.py")}
     n = sum(k for name, k in lines.items() if name not in reader + page)
     m = sum(lines[name] for name in reader)
-    assert n <= 1550 and m <= 850 and lines["book.py"] <= 250, (n, m, lines["book.py"])
+    assert n <= 1610 and m <= 900 and lines["book.py"] <= 250, (n, m, lines["book.py"])
     assert lines["explain.py"] <= 130 and lines["by_definition.py"] <= 50
     assert lines["braces.py"] <= 60
 

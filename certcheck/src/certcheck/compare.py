@@ -8,6 +8,8 @@ differs. ``X^{-1} = Y`` marked ``restated`` (proved as ``X Y = 1``) is read as X
 
 from __future__ import annotations
 
+import itertools
+import json
 import re
 from itertools import accumulate
 
@@ -94,6 +96,10 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
             pairs[k] = _restated(cert, rel, page, symbols, defs, lets)
     out = [f"relation {k + 1} restated: the printed X^{{-1}} = Y proved as X Y = 1, X and Y"
            " read from the page" for k, r in enumerate(printed) if "restated" in r]
+    for k, rel in enumerate(printed if not held else []):  # a side that is no array
+        for j, s in enumerate(("lhs", "rhs")):
+            if (v := _no_array(cert, rel, s, pairs[k][j][0], pairs[k][1 - j][0])) is not None:
+                pairs[k] = (v, pairs[k][1]) if j == 0 else (pairs[k][0], v)
 
     def probe(rels: list) -> Statement:  # the sides read, as relations of the certificate's
         return Statement({**cert, "verdict": "verified", "relations": rels,
@@ -218,3 +224,43 @@ def _restated(cert: dict, rel: dict, page: str, symbols: list, defs: dict, lets:
                          "Y the inverse of X")
     one = M([[str(int(i == j)) for j in range(n)] for i in range(n)])
     return (mul(a[0], b[0]), a[1] or b[1], a[2] + b[2]), (one, False, [])
+
+
+def _no_array(cert: dict, rel: dict, s: str, e, other) -> tuple | None:
+    """A does-not-hold's printed side that is no array (NotRead with the ``blocks`` of the
+    side's block matrix), read as ``rel[s]``: one block read has another shape than its slot
+    (sized by the other blocks and the page's other side, read), the certificate's entries
+    there distinct free atoms found nowhere else (relation, lets, page's glyphs), every other
+    block the page's."""
+    n, theirs, found = (len(rel[s]), len(rel[s][0])), rel[s], []
+    if not getattr(e, "blocks", None) or getattr(other, "shape", 0) != n:
+        return None
+    cells = {(i, k): b for i, r in enumerate(e.blocks) for k, b in enumerate(r)}
+    page = {a for x in cert.get("symbols") or [] for a in x.get("atoms", []) if a != x["glyph"]}
+    free = {a for g in cert["atoms"] if g.get("kind") == "free" for a in g["names"]} - page
+    text = json.dumps([rel["lhs"], rel["rhs"], cert.get("let")])
+    for hole in [c for c, b in cells.items() if isinstance(b, M)]:
+        hs, ws = ([next((b.shape[d] for c, b in cells.items() if c[d] == x and c != hole and
+                         isinstance(b, M)), None) for x in range(1 + max(c[d] for c in cells))]
+                  for d in (0, 1))
+        for xs, total in ((hs, n[0]), (ws, n[1])):
+            xs[:] = [total - sum(filter(None, xs)) if x is None and xs.count(None) == 1 else x
+                     for x in xs]
+        if None in hs + ws or min(hs + ws) < 1 or (sum(hs), sum(ws)) != n or \
+                len(cells) != len(hs) * len(ws) or any(isinstance(b, M) and (b.shape == (
+                    hs[c[0]], ws[c[1]])) == (c == hole) for c, b in cells.items()):
+            continue
+        v = [list(r) for r in theirs]  # the slot keeps the certificate's entries, if fresh
+        fresh = [v[sum(hs[:hole[0]]) + a][sum(ws[:hole[1]]) + b] for a in range(hs[hole[0]])
+                 for b in range(ws[hole[1]])]
+        if len(set(fresh)) < len(fresh) or any(x not in free or len(re.findall(
+                rf"(?<![\w']){re.escape(x)}(?![\w'])", text)) != 1 for x in fresh):
+            continue
+        for (i, k), b in cells.items():
+            for a, c in itertools.product(range(hs[i]), range(ws[k])) if (i, k) != hole else ():
+                v[sum(hs[:i]) + a][sum(ws[:k]) + c] = b.rows[a][c] if isinstance(b, M) else \
+                    str(int(b == "1" and a == c))
+        found.append(M(v))
+    return (found[0], False, ["no array as printed (a block of another shape than its slot),"
+                              " its slot the certificate's fresh entries"]) if found[1:] == [] \
+        and found else None

@@ -19,7 +19,7 @@ from __future__ import annotations
 from fractions import Fraction
 from math import gcd
 
-__all__ = ["Field", "Vanishing", "evaluate"]
+__all__ = ["Field", "Root", "Vanishing", "evaluate"]
 
 
 class Vanishing(ZeroDivisionError):
@@ -128,6 +128,10 @@ class Field:
         num, c, F = a
         return (num ** n, c ** n, {i: e * n for i, e in F.items()})
 
+    def sqrt(self, a) -> tuple:
+        raise ValueError("sqrt: a square root outside K(s) (a definition's statement may "
+                         "hold one)")
+
     # ------------------------------------------------------------------ time derivative
     def dpoly(self, p):
         out = self.ring.const(0)
@@ -172,6 +176,63 @@ class Field:
         return v
 
 
+class Root:
+    """K(s), s^2 = d, over the Field K: ``a + b s`` as ``(a, b)``; d is the radicand of the
+    first square root met (another radicand is not decided). Zero is decided as a = b = 0,
+    which makes a + b sqrt(d) zero whether or not d is a square in K (so never a false
+    identity); a divisor a^2 - b^2 d that is the zero function is a Vanishing."""
+
+    def __init__(self, F: Field):
+        self.F, self.d = F, None
+        self.one, self.zero = (F.one, F.zero), (F.zero, F.zero)
+
+    def lift(self, a) -> tuple:
+        return (a, self.F.zero)
+
+    def const(self, q) -> tuple:
+        return self.lift(self.F.const(q))
+
+    def is_zero(self, a) -> bool:
+        return self.F.is_zero(a[0]) and self.F.is_zero(a[1])
+
+    def add(self, a, b) -> tuple:
+        return (self.F.add(a[0], b[0]), self.F.add(a[1], b[1]))
+
+    def neg(self, a) -> tuple:
+        return (self.F.neg(a[0]), self.F.neg(a[1]))
+
+    def sub(self, a, b) -> tuple:
+        return self.add(a, self.neg(b))
+
+    def _d(self, y) -> tuple:  # y d (y's part is zero until a square root is met)
+        return self.F.mul(y, self.d) if self.d is not None else self.F.zero
+
+    def mul(self, a, b) -> tuple:
+        F, (x, y), (u, v) = self.F, a, b
+        return (F.add(F.mul(x, u), self._d(F.mul(y, v))), F.add(F.mul(x, v), F.mul(y, u)))
+
+    def inv(self, a) -> tuple:
+        F, (x, y) = self.F, a
+        n = F.inv(F.sub(F.mul(x, x), self._d(F.mul(y, y))))
+        return (F.mul(x, n), F.neg(F.mul(y, n)))
+
+    def div(self, a, b) -> tuple:
+        return self.mul(a, self.inv(b))
+
+    def pow(self, a, n: int) -> tuple:
+        a, out = (self.inv(a) if n < 0 else a), self.one
+        for _ in range(abs(n)):
+            out = self.mul(out, a)
+        return out
+
+    def sqrt(self, a) -> tuple:
+        if not self.F.is_zero(a[1]) or self.d is not None and not self.F.is_zero(
+                self.F.sub(a[0], self.d)):
+            raise ValueError("sqrt: a second radicand (one square root per relation)")
+        self.d = a[0]
+        return (self.F.zero, self.F.one)
+
+
 def evaluate(node, field: Field, leaf, trig, memo: dict):
     """The value of a parsed tree in ``field``: ``leaf(name)`` gives an atom's value,
     ``trig(kind, argument tree)`` a cosine's or sine's; ``memo`` (by node identity) makes a
@@ -196,14 +257,13 @@ def evaluate(node, field: Field, leaf, trig, memo: dict):
             memo[key] = leaf("pi")
         elif tag in ("cos", "sin"):
             memo[key] = trig(tag, n[1])
-        elif tag == "sqrt":
-            raise ValueError("sqrt: this checker decides no relation holding a square root "
-                             "(a definition's statement may hold one)")
         elif not ready:
             stack.append((n, True))
             stack.extend((k, False) for k in n[1:] if isinstance(k, tuple))
         elif tag == "neg":
             memo[key] = field.neg(memo[id(n[1])])
+        elif tag == "sqrt":
+            memo[key] = field.sqrt(memo[id(n[1])])
         elif tag == "pow":
             memo[key] = field.pow(memo[id(n[1])], n[2])
         else:

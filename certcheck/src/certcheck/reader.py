@@ -7,7 +7,7 @@ the page defines in words (``"model"``), both read firmly, or a citation (``"def
 not read here). The notation: bold and Greek glyphs with dots, primes and subscripts,
 ``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition, ``\\frac``, ``/``, ``\\cos``,
 ``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``, brackets and
-``bmatrix`` blocks, ``\\|x\\|^2`` (not a bare norm), integer powers of a square matrix,
+``bmatrix`` blocks, ``\\|x\\|^2``, ``\\|x\\|`` (a square root), powers of a square matrix,
 ``\\underbrace{X}_{...}`` (X), ``[X]_{K}`` (each glyph G of X read from the line
 ``[G]_{K}``; ``[G]`` with no frame, 3.40's, is not read) and the integral over the body
 (:meth:`_Reader.integral`). A side not read is reported, never passed; a side read, a matrix
@@ -42,7 +42,7 @@ class _Reader:
     def __init__(self, tokens: list[str], table: dict, defs: dict | None = None,
                  cited: list | None = None, lets: list | None = None,
                  seen: dict | None = None):
-        self.t, self.i, self.table = tokens, 0, table
+        self.t, self.i, self.table, self.top = tokens, 0, table, False  # top: a page's side
         self.lets = [] if lets is None else lets  # [name, text]: a glyph's entries, once
         self.seen = {} if seen is None else seen  # key -> (named value, loose, used, cites)
         self.used: set = set()  # the glyphs looked up (through definitions too)
@@ -144,7 +144,7 @@ class _Reader:
             raise NotRead("an expression ends early")
         if tok.isdigit():
             return scalar(self.take())
-        if tok == "\\|":  # a norm: only its square is rational, ||x||^2 = x^T x
+        if tok == "\\|":  # a norm: ||x||^2 = x^T x, ||x|| its square root
             self.take()
             end = self.t.index("\\|", self.i) if "\\|" in self.t[self.i:] else self.i
             if (key := "\\|" + "".join(self.t[self.i:end]) + "\\|") in self.table:
@@ -154,12 +154,13 @@ class _Reader:
             x = vec3(self.expr())
             self.norm -= 1
             self.take("\\|")
+            square = " + ".join(f"({c})^2" for c in x)
             if self.t[self.i:self.i + 2] != ["^", "2"] and \
                     self.t[self.i:self.i + 4] != ["^", "{", "2", "}"]:
-                raise NotRead("a norm not squared (a square root)")
+                return scalar(f"sqrt({square})")  # ||x||: decided in K(sqrt(x^T x))
             self.take("^")
             self.group()
-            return scalar(" + ".join(f"({c})^2" for c in x))
+            return scalar(square)
         if tok in ("(", "["):
             self.take()
             outer, frame = self.frame, self.frame_after() if tok == "[" else None
@@ -309,7 +310,7 @@ class _Reader:
 
     def bmatrix(self) -> M:
         self.take("\\begin{bmatrix}")
-        rows, row = [], [self.block()]
+        start, rows, row = self.i, [], [self.block()]
         while self.peek() != "\\end{bmatrix}":
             sep = self.take()
             if sep == "\\\\":
@@ -318,6 +319,7 @@ class _Reader:
             row.append(self.block())
         self.take()
         rows.append(row)
+        raw, whole = [list(r) for r in rows], self.top and self.i == len(self.t) and start == 1
         hs = [next((b.shape[0] for b in r if isinstance(b, M)), None) for r in rows]
         ws = [next((r[k].shape[1] for r in rows if k < len(r) and isinstance(r[k], M)), None)
               for k in range(max(map(len, rows)))]
@@ -336,11 +338,12 @@ class _Reader:
         out = []
         for blocks in rows:
             h = blocks[0].shape[0]
-            if any(b.shape[0] != h for b in blocks):
-                raise NotRead("blocks of a row differ in height")
+            if any(b.shape[0] != h for b in blocks) or len({sum(b.shape[1] for b in r)
+                                                            for r in rows}) != 1:
+                exc = NotRead("the blocks do not fit")
+                exc.blocks = raw if whole else []  # the whole side's (certcheck.compare's)
+                raise exc
             out += [sum((b.rows[k] for b in blocks), []) for k in range(h)]
-        if len({len(r) for r in out}) != 1:
-            raise NotRead("rows of a block matrix differ in width")
         return M(out, loose)
 
     def glyph(self) -> M:
@@ -501,6 +504,7 @@ def read_relations(page: str, symbols: list, defs: dict | None = None,
             for vals in itertools.product("123", repeat=len(idx)):  # a family: each member
                 r = _Reader(_bind(toks, dict(zip(idx, vals, strict=True))), table, defs,
                             cited, lets, seen)
+                r.top = True
                 try:
                     read.append(r.chain()[0])
                 except (NotRead, IndexError) as exc:

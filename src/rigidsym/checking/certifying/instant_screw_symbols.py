@@ -79,6 +79,15 @@ _ISA = (
 _V0 = (r"\mathbf{v}_0", rf"{_PAR}\dot{{\mathbf{{a}}}}", "minimum-magnitude velocity common to "
        "the ISA's points (Theorem 3.4.2): the axial component of every point's velocity "
        "((3.59)'s first brace), the normal one vanishing on the ISA (3.60)")
+#: (3.52)'s signed magnitude v_0 (the words after (3.52)); (3.55)'s e', n' and (3.54)'s array
+_V0_SIGNED = ("v_0", r"\frac{\mathbf{v}_0 \cdot \boldsymbol{\omega}}{\|\boldsymbol{\omega}\|}",
+              "signed magnitude of v_0, bearing the sign of v_0 . omega (the words after (3.52))")
+_ISA_LINE = ((r"\mathbf{e}'", r"\frac{\boldsymbol{\omega}}{\|\boldsymbol{\omega}\|}",
+              "unit vector of the ISA as printed in (3.55)"),
+             (r"\mathbf{n}'", r"\mathbf{p} \times \mathbf{e}'",
+              "moment of the ISA about the origin as printed in (3.55)"),
+             (r"\mathbf{p}_{\mathcal{L}'}", r"\begin{bmatrix} \mathbf{e}' \\ \mathbf{n}' "
+              r"\end{bmatrix}", "Plücker array of the ISA as printed in (3.54)"))
 #: the velocity of a generic body point p = a + Q r (r constant), where a is not in the table
 _BODY_VELOCITY = (r"\dot{\mathbf{p}}", r"\dot{\mathbf{a}} + \dot{\mathbf{Q}}\mathbf{r}",
                   "velocity of the body point P = a + Q r, r constant (the words before "
@@ -121,7 +130,8 @@ _ARRAYS = (
 )
 #: the glyphs of the lines in the book's LaTeX (those given by a model's words or an atom)
 INSTANT_SCREW_GLYPHS = tuple(dict.fromkeys(
-    [g for rows in (_FIXED_POINT, _ISA, _TRANSLATION, [_V0]) for g, _, _ in rows]
+    [g for rows in (_FIXED_POINT, _ISA, _TRANSLATION, [_V0, _V0_SIGNED], _ISA_LINE)
+     for g, _, _ in rows]
     + ["\\mathbf{p}"]
     + [g for g, _, _, _ in _ARRAYS] + ["p", "\\|\\mathbf{v}\\|"]))
 
@@ -159,7 +169,7 @@ def instant_screw_symbols(have: set, section: str, latex: str,
         return _lines(_FIXED_POINT if "\\mathbf{p}_0" in have else _FIXED_POINT[2:], have)
     if section == "3.4.1" and adot in have:
         rows = list(_ISA[4:]) if "\\dot{\\mathbf{a}}_{\\parallel}" in latex else []
-        rows += [_V0] if "\\mathbf{v}_0 =" in latex else []
+        rows += [_V0, _V0_SIGNED] if "\\mathbf{v}_0 =" in latex else []
         if "\\mathbf{r}" in have and "\\dot{\\mathbf{p}} \\cdot" in latex:  # (3.53), not
             rows.append(_BODY_VELOCITY)  # (3.59): its certificate's relation is a brace's
         if "\\dot{\\mathbf{p}}_{\\perp}" in latex and "\\mathbf{r}" in have:  # (3.59)
@@ -168,6 +178,8 @@ def instant_screw_symbols(have: set, section: str, latex: str,
             rows[:0] = _ISA[:4]
             if "\\alpha" in have or "\\mathbf{p} = \\mathbf{r}" in latex:
                 rows.append(("\\mathbf{p}", *(_ON_ISA if "\\alpha" in have else _NEAREST_A)))
+                if "\\alpha" in have and any(f"{g} \\equiv" in latex for g, _, _ in _ISA_LINE):
+                    rows += _ISA_LINE  # (3.54), (3.55): e', n' and the array as printed
         return _lines(rows, have)
     if section != "3.4.2":
         return []
