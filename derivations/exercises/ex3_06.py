@@ -25,6 +25,9 @@ ANSWER_CLASSES = (
     {"kind": "point of line", "point": "axis_point_p0", "direction": "e"},
 )
 FIGURE_NAME = "grasp"
+#: the solver runs on floating data for a slip's replay (rigidsym.course.worked.solve_values):
+#: its decisions are is_zero's (a sign tested after is_zero says it is not 0)
+VALUES_REPLAY = True
 #: the two directions may be measurements (decimals, or floats): the grasp frame is then
 #: built in floating point, rounded to an exact rotation (its residual printed), and a
 #: degeneracy (a sign, a parallel pair) is judged within tol; C' and p stay exact
