@@ -486,7 +486,7 @@ def to_json_value_light(v):
 
 class _Replays:
     """The replays of a solution with a slip along the way, computed once, when first
-    needed (each is an exact solve)."""
+    needed (each a solve for its values, :func:`replayed_values`)."""
 
     def __init__(self, solution):
         self.solution, self.done = solution, None
