@@ -344,12 +344,20 @@ def solve_values(ex_id: str, tol=None, **data) -> Solution:
     checks not run, its closed forms not simplified, each decision taken only on a value
     clear of 0), and the solution has ``values_only`` set; otherwise, or when a decision is
     too close to call (:class:`~.checks.Undecided`), or the float solve ends otherwise than
-    solved, it is :func:`solve`'s exact solution.
+    solved (ill-posed, or an error sympy raises on floats), it is :func:`solve`'s exact
+    solution.
 
-    Args and errors: as :func:`solve`. Source: the exercise modules' ``solve``.
+    Args:
+        ex_id, tol, data: as :func:`solve` takes them.
 
     Returns:
-        The :class:`Solution`; a values-only one is not cached (each replay's data differ).
+        The :class:`Solution` (source: the exercise module's ``solve``); a values-only one
+        is not cached (each replay's data differ), its data are the exact ones read.
+
+    Raises:
+        ValueError: as :func:`solve` (:class:`TooLong` when either solve exceeds
+            :data:`SOLVE_BUDGET`).
+        TypeError: as :func:`solve`.
     """
     ex_id = normalise_id(ex_id)
     params = parameters(ex_id)
@@ -360,7 +368,9 @@ def solve_values(ex_id: str, tol=None, **data) -> Solution:
     try:
         with for_values():
             s = _solved(ex_id, params, d, floats)
-    except Undecided:
+    except TooLong:
+        raise                           # the exact solve would take longer still
+    except (Undecided, Exception):  # noqa: BLE001 -- any other end of the float solve: exact
         s = None
     if s is None or s.status != "solved":
         return solve(ex_id, tol=tol, **data)

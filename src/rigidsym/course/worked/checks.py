@@ -63,7 +63,7 @@ def for_values() -> Iterator[None]:
         _VALUES_ONLY.reset(token)
 
 
-def _numeric(x) -> sp.Float:
+def _numeric(x: sp.Expr) -> sp.Float:
     """``x`` as a :data:`DIGITS`-digit float.
 
     Raises:
@@ -77,7 +77,7 @@ def _numeric(x) -> sp.Float:
     return v
 
 
-def settled(x):
+def settled(x: sp.Expr) -> sp.Expr:
     """``x`` itself; in a replay for its values only, first checked to be farther than
     :data:`MARGIN` from 0, so that its sign (a comparison the solver makes) is the exact
     value's.
