@@ -115,8 +115,8 @@ class Solution:
         data: the data solved on, by parameter name (exact sympy values; the book's
             values where none was given), as :func:`solve` read them.
         tol: the tolerance of measured data, or None (exact data).
-        values_only: the answers are :data:`~.checks.DIGITS`-digit floats of a replay for
-            its values only (:func:`solve_values`): its checks were not run.
+        values_only: the answers are 50-digit floats of a slip's replay for its values
+            only (``rigidsym.course.worked.solve_values``): its checks were not run.
     """
 
     id: str
