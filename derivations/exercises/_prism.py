@@ -12,7 +12,7 @@ import functools
 
 import sympy as sp
 
-from rigidsym.course.worked import Check, is_zero
+from rigidsym.course.worked import Check, Undecided, is_zero, settled, values_only
 
 x, y, z = sp.symbols("x y z", real=True)
 A_SIDE = sp.Rational(1, 40)   # 25 mm in m
@@ -55,10 +55,12 @@ def integrate_pieces(f, pieces, a=A_SIDE, split=None):
 def halves(ylo, yhi) -> tuple:
     """How the piece ``ylo <= y <= yhi`` splits at ``y = 0``, decided exactly on closed
     bounds: ``(yhi <= 0, ylo >= 0, the half y <= 0 is not empty, the half y >= 0 is not
-    empty)``. Pieces with the same split have the same polynomial integrals in their bounds."""
-    below, above = bool(sp.radsimp(yhi) <= 0), bool(sp.radsimp(ylo) >= 0)
-    return (below, above, bool(sp.radsimp((yhi if below else 0) - ylo) > 0),
-            bool(sp.radsimp(yhi - (ylo if above else 0)) > 0))
+    empty)``. Pieces with the same split have the same polynomial integrals in their bounds.
+    In a replay for its values only, each sign is taken on a value clear of 0
+    (:func:`rigidsym.course.worked.settled`)."""
+    below, above = bool(settled(sp.radsimp(yhi)) <= 0), bool(settled(sp.radsimp(ylo)) >= 0)
+    return (below, above, bool(settled(sp.radsimp((yhi if below else 0) - ylo)) > 0),
+            bool(settled(sp.radsimp(yhi - (ylo if above else 0))) > 0))
 
 
 _SIDE, _HEIGHT = sp.symbols("a_side h_height", positive=True)
@@ -102,10 +104,39 @@ def _closed(*values) -> bool:
 
 
 def _evaluated(props, a, h):
+    if values_only():
+        return _floated(props, a, h)
     at = {_SIDE: sp.sympify(a), _HEIGHT: sp.sympify(h)}
     return tuple(v.xreplace(at).applyfunc(lambda e: sp.radsimp(sp.expand(e)))
                  if isinstance(v, sp.MatrixBase) else sp.radsimp(sp.expand(v.xreplace(at)))
                  for v in props)
+
+
+#: the mpmath functions of (side, height) of each entry of a symbolic ``props``, by its id
+_NUMERIC: dict[int, tuple] = {}
+
+
+def _floated(props, a, h):
+    """``props`` (symbolic in the side and the height) at floating ``a``, ``h``, in a
+    replay for its values only: each entry an mpmath function of the two (sympy's
+    ``lambdify``, made once for the cached ``props``) at 50 digits, as sympy Floats."""
+    import mpmath
+
+    from rigidsym.course.worked.checks import DIGITS
+
+    hit = _NUMERIC.get(id(props))
+    if hit is None or hit[0] is not props:
+        hit = (props, [sp.lambdify((_SIDE, _HEIGHT), list(v) if isinstance(v, sp.MatrixBase)
+                                   else v, "mpmath") for v in props])
+        _NUMERIC[id(props)] = hit
+    out = []
+    with mpmath.workdps(DIGITS):
+        A, H = (mpmath.mpf(sp.Float(x, DIGITS)._mpf_) for x in (a, h))
+        for v, f in zip(props, hit[1], strict=True):
+            got = f(A, H)
+            out.append(sp.Matrix(v.rows, v.cols, [sp.Float(x, DIGITS) for x in got])
+                       if isinstance(v, sp.MatrixBase) else sp.Float(got, DIGITS))
+    return tuple(out)
 
 
 def _mass_properties(zlo, zhi, a, pieces, split=None):
@@ -130,11 +161,18 @@ def principal_yz(I):
     Returns ``[(I_xx, e_x), (lambda_1, v_1), (lambda_2, v_2)]`` sorted by moment (smallest
     first), with exact unit ``v`` (``v_k = [0, I_yz, lambda_k - I_yy] / |.|``; ``e_y``,
     ``e_z`` when ``I_yz = 0``), and the angle ``alpha`` of the y-z block's first axis.
-    :func:`principal_check` checks the formula.
+    :func:`principal_check` checks the formula. In a replay for its values only, an
+    ``I_yz`` within 1e-10 of the block's size is left to the exact solve.
+
+    Raises:
+        rigidsym.course.worked.Undecided: in such a replay, ``I_yz`` so near 0.
     """
     Iyy, Izz, Iyz = I[1, 1], I[2, 2], I[1, 2]
     out = [(I[0, 0], sp.Matrix([1, 0, 0]))]
-    if sp.radsimp(Iyz) == 0:
+    if values_only() and abs(Iyz) <= 1e-10 * (abs(Iyy) + abs(Izz)):
+        # lambda - I_yy, of order I_yz^2 / (I_yy - I_zz), is then too small for floating data
+        raise Undecided(f"I_yz = {Iyz} is too near 0 for the axes in floating point")
+    if not values_only() and sp.radsimp(Iyz) == 0:
         yz = [(Iyy, sp.Matrix([0, 1, 0])), (Izz, sp.Matrix([0, 0, 1]))]
     else:
         rad = sp.sqrt(_discriminant(Iyy, Izz, Iyz))
@@ -178,7 +216,10 @@ def principal_check(name: str, I, pairs) -> Check:
     ``I_yz != 0``, the formula's identities (:func:`_formula_holds`, decided once in
     symbols, so a draw costs no minimal polynomial of its nested radicals); the axes are
     ``v / sqrt(v . v)``, unit by construction, ``e_x`` orthogonal to them; when ``I_yz = 0``
-    the moments are ``I``'s diagonal about the coordinate axes, exactly."""
+    the moments are ``I``'s diagonal about the coordinate axes, exactly. Not run in a replay
+    for its values only (a failed check saying so)."""
+    if values_only():
+        return Check(name, False, "not run: a replay for its values only")
     if not is_zero(sp.Matrix([I[0, 1], I[0, 2]])):
         return Check(name, False, "I_xy or I_xz is not 0: x is not principal")
     if is_zero(I[1, 2]):

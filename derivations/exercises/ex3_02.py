@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.course.worked import Param, Solution, exact_check, is_zero
+from rigidsym.course.worked import Param, Solution, exact_check, is_zero, values_only
 
 ID = "ex3.2"
 TITLE = "Wrench on a regular tetrahedron"
@@ -16,6 +16,9 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.2"
 #: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"P": "m"}
 FIGURE_NAME = "tetrahedron"
+#: the solver runs on floating data for a slip's replay (rigidsym.course.worked.solve_values):
+#: its decisions are is_zero's, its closed forms only simplified when exact
+VALUES_REPLAY = True
 _r3, _r6 = sp.sqrt(3), sp.sqrt(6)
 _BOOK = ([0, 0, 0], [1, 0, 0], [sp.Rational(1, 2), _r3 / 2, 0],
          [sp.Rational(1, 2), _r3 / 6, _r6 / 3])
@@ -37,7 +40,10 @@ def unit(v) -> sp.Matrix:
 
 def _simplified(e):
     """An entry in the closed form of its number field: products of radicals expanded and
-    denominators rationalised (``a + b sqrt(157)``, not nested products)."""
+    denominators rationalised (``a + b sqrt(157)``, not nested products); unchanged in a
+    replay for its values only (floating data)."""
+    if values_only():
+        return e
     return sp.radsimp(sp.expand(sp.radsimp(e)))
 
 
@@ -68,7 +74,8 @@ def solve(P_1=PARAMETERS[0].default, P_2=PARAMETERS[1].default, P_3=PARAMETERS[2
           P_4=PARAMETERS[3].default) -> Solution:
     """Worked solution of Exercise 3.2 (vertex positions in metres)."""
     P1, P2, P3, P4 = (sp.Matrix(v) for v in (P_1, P_2, P_3, P_4))
-    title, placed = _what_the_data_are(P1, P2, P3, P4)
+    # the title names the data's shape: not needed for a replay's values
+    title, placed = (TITLE, "") if values_only() else _what_the_data_are(P1, P2, P3, P4)
     s = Solution(ID, title, STATEMENT, CITATION,
                  given={"P1": P1, "P2": P2, "P3": P3, "P4": P4}, assumptions=[placed])
     for a, b, name in ((P2, P3, "P_2 and P_3"), (P4, P1, "P_4 and P_1")):
@@ -98,6 +105,8 @@ def solve(P_1=PARAMETERS[0].default, P_2=PARAMETERS[1].default, P_3=PARAMETERS[2
                "P = sum w_i P_i with sum w_i = 1 (placement-free).")
         s.answers["P_barycentric"] = bary
     s.answers.update({"n_min": nP, "f": f, "n_min_magnitude": sp.sqrt(_simplified(nP.dot(nP)))})
+    if values_only():
+        return s                # a replay for its values: no check (its exact solve checks)
     s.check(exact_check("unit forces along the edges: ||f_i|| = 1, f_1 x (P3 - P2) = 0, "
                         "f_2 x (P1 - P4) = 0",
                         [f1.dot(f1) - 1, f2.dot(f2) - 1, f1.cross(P3 - P2), f2.cross(P1 - P4)]))

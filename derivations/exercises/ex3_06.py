@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.course.worked import Param, Solution, exact_check, is_zero
+from rigidsym.course.worked import Param, Solution, exact_check, is_zero, values_only
 
 from ._fit import exact_rotation
 from ._screw import screw_of_displacement
@@ -25,6 +25,9 @@ ANSWER_CLASSES = (
     {"kind": "point of line", "point": "axis_point_p0", "direction": "e"},
 )
 FIGURE_NAME = "grasp"
+#: the solver runs on floating data for a slip's replay (rigidsym.course.worked.solve_values):
+#: its decisions are is_zero's (a sign tested after is_zero says it is not 0)
+VALUES_REPLAY = True
 #: the two directions may be measurements (decimals, or floats): the grasp frame is then
 #: built in floating point, rounded to an exact rotation (its residual printed), and a
 #: degeneracy (a sign, a parallel pair) is judged within tol; C' and p stay exact
@@ -76,6 +79,8 @@ def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,
     s.answers = {"Q": Q, "phi": phi, "e": e, "axis_point_p0": p0, "axis_plucker": pl}
     if res is not None:
         s.answers["residual"] = res
+    if values_only():
+        return s                # a replay for its values: no check (its exact solve checks)
     c = Cp - Q * p
     s.check(checks)
     s.check(exact_check("Q e = e, e.e = 1; cos(phi) matches tr Q",
@@ -85,28 +90,36 @@ def solve(face_normal=PARAMETERS[0].default, CC_prime=PARAMETERS[1].default,
     return s
 
 
+def _radsimp(v):
+    """``sympy.radsimp(v)``; ``v`` itself in a replay for its values only (floats)."""
+    return v if values_only() else sp.radsimp(v)
+
+
 def _grasp_frame(s: Solution, d_faces, CCp):
-    """The grasp frame [i'', j'', k''] from exact directions, and its exact check."""
+    """The grasp frame [i'', j'', k''] from exact directions, and its exact check (None in a
+    replay for its values only)."""
     signs = {sp.sign(x) for x in d_faces}
     if signs not in ({1}, {-1}):
         s.fail("The face normal has a zero component or components of both signs, so no "
                "normal i'' has all three components positive, as the grasp requires.")
-    i2 = s.step("i''", (d_faces / d_faces.norm() * signs.pop()).applyfunc(sp.radsimp),
+    i2 = s.step("i''", (d_faces / d_faces.norm() * signs.pop()).applyfunc(_radsimp),
                 "Normal to the faces, all components positive.")
     j = i2.cross(CCp)
     if is_zero(j):
         s.fail("The diagonal CC' is normal to the faces (parallel to i''), so j'', normal "
                "to both, is not fixed.")
-    j2 = (j / j.norm()).applyfunc(sp.radsimp)
+    j2 = (j / j.norm()).applyfunc(_radsimp)
     if is_zero(j2[2]):
         s.fail("j'' has a zero Z component, so the grasp's rule (Z component positive) does "
                "not fix its sense.")
     if j2[2] < 0:
         j2 = -j2
     j2 = s.step("j''", j2, "Normal to i'' and to CC', Z component positive.")
-    k2 = s.step("k''", i2.cross(j2).applyfunc(sp.radsimp), "Right-handed frame.")
+    k2 = s.step("k''", i2.cross(j2).applyfunc(_radsimp), "Right-handed frame.")
     Q = s.step("rotation", sp.Matrix.hstack(i2, j2, k2),
                "F' starts parallel to F, so Q's columns are i'', j'', k'' in F.")
+    if values_only():
+        return Q, None
     return Q, exact_check("Q proper orthogonal; j'' normal to CC' and to i''",
                           [Q.T * Q - sp.eye(3), Q.det() - 1, j2.dot(CCp), i2.dot(j2)])
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from rigidsym.course.worked import Param, Solution, exact_check
+from rigidsym.course.worked import Param, Solution, exact_check, settled, values_only
 
 from ._prism import (
     A_SIDE,
@@ -25,6 +25,10 @@ STATEMENT = ("\"cutting it into two parts, which are separated by a plane that c
              "parts.\"")
 CITATION = "Angeles, Sec. 3.9, Exercise 3.12"
 FIGURE_NAME = "cut"
+#: the solver runs on floating data for a slip's replay (rigidsym.course.worked.solve_values):
+#: where the cut leaves the prism, and how each part splits at y = 0, are decided on values
+#: clear of 0 (settled), the principal axes' case on is_zero
+VALUES_REPLAY = True
 #: what the answers are: principal axes are lines (each column up to its sign), so the
 #: angle of the first one from Y is defined modulo pi
 ANSWER_CLASSES = tuple(
@@ -83,7 +87,7 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
                      "Results per unit density (m^5) and per kg of the part (m^2)."])
     positive_sizes(s, a, h)
     y0 = sp.radsimp(h - S)  # where the cut plane z = y + S meets the top face z = h
-    through_top = not sp.radsimp(y0 - S) >= 0
+    through_top = not settled(sp.radsimp(y0 - S)) >= 0
     if through_top:
         s.step("the cut leaves through the top face", y0,
                "a sqrt(3) > h: the plane meets the top face z = h along y = h - a sqrt(3)/2; "
@@ -99,6 +103,8 @@ def solve(a=A_SIDE, h=HEIGHT) -> Solution:
         s.answers[f"{tag}_principal_moments_per_kg_m2"] = sp.Matrix([p[0] / V for p in pr])
         s.answers[f"{tag}_principal_axes"] = sp.Matrix.hstack(*[p[1] for p in pr])
         s.answers[f"{tag}_axis_angle_from_y_rad"] = alpha
+    if values_only():
+        return s                # a replay for its values: no check (its exact solve checks)
     s.extra = _in_mm(s)
     A = 3 * sp.sqrt(3) / 2 * a**2
     s.check(exact_check("volumes add to the prism's, and the wedge is half the prism below "

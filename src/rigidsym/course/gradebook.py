@@ -34,6 +34,7 @@ are read back.
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import json
 from pathlib import Path
@@ -43,7 +44,7 @@ import sympy as sp
 from rigidsym.core.files import write_atomic
 from rigidsym.course.worked import Solution, parameters, solve
 
-__all__ = ["checked_weights", "grade_class", "solution_of", "with_weights"]
+__all__ = ["checked_weights", "grade_class", "key_value", "solution_of", "with_weights"]
 
 
 def solution_of(rec: dict) -> Solution:
@@ -68,10 +69,24 @@ def _value(v, shape):
     if shape is None:                     # a choice (3.10's sequence): kept as text
         return v
     if isinstance(v, list):
-        m = sp.Matrix([[sp.sympify(x) for x in r] if isinstance(r, list) else
-                       [sp.sympify(r)] for r in v])
+        m = sp.Matrix([[key_value(x) for x in r] if isinstance(r, list) else
+                       [key_value(r)] for r in v])
         return m
-    return sp.sympify(v)
+    return key_value(v)
+
+
+@functools.lru_cache(maxsize=1 << 16, typed=True)   # typed: True and 1 read apart
+def key_value(text: str | int | float | bool) -> sp.Basic:
+    """One number of ``key.json`` (sympy's ``str`` of an exact value, as
+    :func:`rigidsym.course.worked.to_json_value` writes it) read back: ``sympy.sympify``,
+    kept (sympy values are immutable): a class's key is read by its Moodle and STACK
+    exports and by the grader, the STACK export in workers forked after the Moodle export
+    read it, and parsing a nested radical takes milliseconds.
+
+    Raises:
+        sympy.SympifyError: ``text`` is no expression.
+    """
+    return sp.sympify(text)
 
 
 def _answers(path: str | Path, key: dict) -> tuple[dict[int, dict], list[str]]:

@@ -486,7 +486,7 @@ def to_json_value_light(v):
 
 class _Replays:
     """The replays of a solution with a slip along the way, computed once, when first
-    needed (each is an exact solve)."""
+    needed (each a solve for its values, :func:`replayed_values`)."""
 
     def __init__(self, solution):
         self.solution, self.done = solution, None
@@ -604,10 +604,11 @@ def read_decimal_comma(given, shape: tuple, where: str):
 
 
 def replayed_values(solution) -> list[tuple[str, str, dict]]:
-    """:func:`rigidsym.course.slips.replays` of ``solution`` with each answer as the grader
-    compares it: the exact value as a float array (:func:`key_array`: 17 digits, the key's
-    shape), ``None`` for a value that is no number (an expression in symbols, a set), text
-    kept as text.
+    """:func:`rigidsym.course.slips.replays` of ``solution`` for their values
+    (``values=True``) with each answer as the grader compares it: the value as a float array
+    (:func:`key_array`: 17 digits, the key's shape; a replay on 50-digit floating data where
+    the exercise allows it, its entries within 1e-20 of 0 written 0), ``None`` for a value
+    that is no number (an expression in symbols, a set), text kept as text.
 
     The list is kept in the user cache (``verdicts/``, beside the solutions on the book's
     data; keyed by the exercise, the solution's exact data and tolerance, every source
@@ -634,8 +635,7 @@ def replayed_values(solution) -> list[tuple[str, str, dict]]:
             return kept
     from rigidsym.course.slips import replays
 
-    out = [(word, detail, {n: _as_compared(v) for n, v in answers.items()})
-           for word, detail, answers in replays(solution)]
+    out = list(replays(solution, values=True))
     if where is not None:
         _cache.put(where, pickle.dumps(out))
     return out
@@ -659,19 +659,9 @@ def _kept_at(solution):
     except (ValueError, TypeError):
         return None
     h = hashlib.sha256()
-    for part in ("replays 1", _sources.package_digest(), _sources.environment(),
+    for part in ("replays 2", _sources.package_digest(), _sources.environment(),
                  solution.id, repr(d.key())):
         h.update(part.encode() + b"\0")
     key = h.hexdigest()
     return _cache.folder("verdicts") / key[:2] / f"replays-{key}.pickle"
 
-
-def _as_compared(v):
-    """An answer as the grader compares it: text kept, a number as its float array, a
-    value that is no number (symbols, a set) None."""
-    if isinstance(v, str):
-        return v
-    try:
-        return key_array(v)
-    except TypeError:
-        return None

@@ -38,7 +38,7 @@ import sympy as sp
 from rigidsym.core.files import write_atomic
 from rigidsym.course import exam as _exam
 from rigidsym.course.exam_text import box_label, task
-from rigidsym.course.gradebook import checked_weights
+from rigidsym.course.gradebook import checked_weights, key_value
 from rigidsym.course.stack_export import stack_xml
 from rigidsym.course.worked import exercise_module, render_html, solution_record
 
@@ -368,7 +368,7 @@ def _floats(v) -> list[float] | None:
     """An answer of the key as floats (a truth as 1 or 0), or None for an expression."""
     out = []
     for x in _flat(v):
-        e = sp.sympify(x)
+        e = key_value(x)
         if e in (sp.true, sp.false):
             out.append(float(bool(e)))
         elif getattr(e, "is_number", False):

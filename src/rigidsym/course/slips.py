@@ -7,7 +7,10 @@ swapped is the solution on the two frames' readings exchanged. Each candidate is
 from the exercise's declared parameters (:class:`~.worked.params.Param`: shape and unit),
 so every exercise with data gets them; an exercise module may add its own steps' slips
 with ``step_slips(solution) -> [(word, detail, data), ...]``. The replay is the exact
-solution on the slipped data (:func:`rigidsym.course.worked.solve`, cached), and only
+solution on the slipped data (:func:`rigidsym.course.worked.solve`, cached), or, for the
+values the grader and the STACK export compare, the solution for its values only
+(:func:`rigidsym.course.worked.solve_values`: the exercise's solver on 50-digit floating
+data where it allows it, the exact solution where a decision is too close to call); only
 data on which it is solved count: a slip that makes the exercise ill-posed reproduces no
 answer.
 
@@ -83,11 +86,19 @@ def data_slips(ex_id: str, data: dict, every: bool = False) -> list[tuple[str, s
     return out
 
 
-def replays(solution):
+def replays(solution, values: bool = False):
     """The answers of ``solution``'s exercise replayed with each slip: yields
     ``(word, detail, answers)`` for each slip of :func:`data_slips` and the exercise's
-    ``step_slips`` on which the exercise is solved (lazily: a replay is an exact solve)."""
-    from rigidsym.course.worked import TooLong, exercise_module, solve
+    ``step_slips`` on which the exercise is solved (lazily: a replay is a solve).
+
+    ``values``: each replay for its answers' values only
+    (:func:`rigidsym.course.worked.solve_values`: floating where the exercise allows it,
+    exact otherwise), each answer given as the grader compares it
+    (:func:`rigidsym.course.grading.key_array`'s float array; text kept; None for a value
+    that is no number), an entry of a floating replay within
+    :data:`rigidsym.course.worked.checks.ZERO` of 0 written 0. Otherwise the exact
+    solution's answers (:func:`rigidsym.course.worked.solve`, cached)."""
+    from rigidsym.course.worked import TooLong, exercise_module, solve, solve_values
 
     if not solution.data:
         return
@@ -96,11 +107,34 @@ def replays(solution):
     tol = {"tol": solution.tol} if solution.tol is not None else {}
     for word, detail, data in slips:
         try:
-            s = solve(solution.id, **tol, **data)
+            s = (solve_values if values else solve)(solution.id, **tol, **data)
         except (ValueError, TypeError, TooLong):
             continue                      # data a slip put out of reach: no replay
         if s.status == "solved":
-            yield word, detail, s.answers
+            yield word, detail, (_compared(s) if values else s.answers)
+
+
+def _compared(s) -> dict:
+    """The answers of a replay as the grader compares them (see :func:`replays`)."""
+    import numpy as np
+
+    from rigidsym.course.grading import key_array
+    from rigidsym.course.worked.checks import ZERO
+
+    out = {}
+    for name, v in s.answers.items():
+        if isinstance(v, str):
+            out[name] = v
+            continue
+        try:
+            a = key_array(v)
+        except TypeError:
+            out[name] = None
+            continue
+        if s.values_only:
+            a = np.where(np.abs(a) <= ZERO, 0.0, a)
+        out[name] = a
+    return out
 
 
 def slip_list(ex_id: str) -> str:

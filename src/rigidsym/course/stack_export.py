@@ -69,9 +69,9 @@ def stack_xml(title: str, key: dict) -> str:
             ``slip_credit``, ``rounding_credit``, ``slips_along_the_way`` (absent: true,
             as keys written before the policy existed were graded), ``students`` with
             their problems). Where ``slips_along_the_way`` is true, each question's
-            solution is replayed with each slip along the way (an exact solve each, the
-            costly part of the export); where false, no replay is solved and neither this
-            export nor the gradebook names such a slip.
+            solution is replayed with each slip along the way (a solve each, for its
+            values: :func:`rigidsym.course.worked.solve_values`); where false, no replay
+            is solved and neither this export nor the gradebook names such a slip.
 
     Returns:
         The XML text (UTF-8, deterministic: the same key writes the same bytes).
@@ -94,8 +94,11 @@ def stack_xml(title: str, key: dict) -> str:
             out.append(_question(name, ident, p, solution_of(p), credit, along))
         return out
 
-    # each student's questions in a forked worker (the replays are exact solves)
-    chunks = forked_map(student, len(key["students"]))
+    # each student's questions in a forked worker (the replays are solves); the first
+    # student's here, so that the workers inherit what its replays warmed (3.12's integrals
+    # in a symbolic side and height for the cuts its slips make) instead of each warming it
+    n = len(key["students"])
+    chunks = ([student(0)] if n else []) + forked_map(lambda i: student(i + 1), max(n - 1, 0))
     lines = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
     lines += [x for c in chunks for x in c] + ["</quiz>"]
     return "\n".join(lines) + "\n"

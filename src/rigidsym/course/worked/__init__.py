@@ -21,13 +21,18 @@ from dataclasses import dataclass, field
 
 from rigidsym.course.worked import solution_store
 from rigidsym.course.worked.checks import (  # noqa: F401
+    DIGITS,
     Check,
+    Undecided,
     algebraic_zero,
     exact_check,
+    for_values,
     identity_check,
     is_zero,
     nonidentity_check,
+    settled,
     truth_check,
+    values_only,
 )
 from rigidsym.course.worked.data import IllPosed, Param, Parameters, read_data, read_value  # noqa: F401
 from rigidsym.course.worked.render import (
@@ -52,6 +57,10 @@ __all__ = [
     "exercise_module",
     "parameters",
     "solve",
+    "solve_values",
+    "values_only",
+    "settled",
+    "Undecided",
     "read_value",
     "read_data",
     "is_zero",
@@ -106,6 +115,8 @@ class Solution:
         data: the data solved on, by parameter name (exact sympy values; the book's
             values where none was given), as :func:`solve` read them.
         tol: the tolerance of measured data, or None (exact data).
+        values_only: the answers are 50-digit floats of a slip's replay for its values
+            only (``rigidsym.course.worked.solve_values``): its checks were not run.
     """
 
     id: str
@@ -123,6 +134,7 @@ class Solution:
     floats: tuple = ()
     data: dict = field(default_factory=dict)
     tol: object = None
+    values_only: bool = False
 
     @property
     def checked(self) -> bool:
@@ -324,13 +336,66 @@ def solve(ex_id: str, tol=None, **data) -> Solution:
     return s
 
 
-def _solved(ex_id: str, params: Parameters, d) -> Solution:
-    """Solve ``ex_id`` on the read data ``d`` (see :func:`solve`)."""
+def solve_values(ex_id: str, tol=None, **data) -> Solution:
+    """The solution of ``ex_id`` on ``data`` for its answers' values only (a slip's replay,
+    of which the grader and the STACK export compare floats): where the exercise's module
+    says ``VALUES_REPLAY = True`` and the data are exact (no ``tol``), its solver runs on the
+    data as :data:`~.checks.DIGITS`-digit floats inside :func:`~.checks.for_values` (its
+    checks not run, its closed forms not simplified, each decision taken only on a value
+    clear of 0), and the solution has ``values_only`` set; otherwise, or when a decision is
+    too close to call (:class:`~.checks.Undecided`), or the float solve ends otherwise than
+    solved (ill-posed, or an error sympy raises on floats), it is :func:`solve`'s exact
+    solution.
+
+    Args:
+        ex_id, tol, data: as :func:`solve` takes them.
+
+    Returns:
+        The :class:`Solution` (source: the exercise module's ``solve``); a values-only one
+        is not cached (each replay's data differ), its data are the exact ones read.
+
+    Raises:
+        ValueError: as :func:`solve` (:class:`TooLong` when either solve exceeds
+            :data:`SOLVE_BUDGET`).
+        TypeError: as :func:`solve`.
+    """
+    ex_id = normalise_id(ex_id)
+    params = parameters(ex_id)
+    d = read_data(params, data, tol)
+    if d.tol is not None or not getattr(exercise_module(ex_id), "VALUES_REPLAY", False):
+        return solve(ex_id, tol=tol, **data)
+    floats = {k: _floated(v) for k, v in d.values.items()}
+    try:
+        with for_values():
+            s = _solved(ex_id, params, d, floats)
+    except TooLong:
+        raise                           # the exact solve would take longer still
+    except (Undecided, Exception):  # noqa: BLE001 -- any other end of the float solve: exact
+        s = None
+    if s is None or s.status != "solved":
+        return solve(ex_id, tol=tol, **data)
+    s.values_only = True
+    return s
+
+
+def _floated(v):
+    """A datum as :data:`~.checks.DIGITS`-digit floats (a matrix entry by entry); text kept."""
+    import sympy as sp
+
+    if isinstance(v, sp.MatrixBase):
+        return v.applyfunc(lambda x: sp.N(x, DIGITS))
+    return sp.N(v, DIGITS) if isinstance(v, sp.Basic) and v.is_number else v
+
+
+def _solved(ex_id: str, params: Parameters, d, values: dict | None = None) -> Solution:
+    """Solve ``ex_id`` on the read data ``d`` (see :func:`solve`); ``values``: the data the
+    solver is given instead of ``d.values`` (:func:`solve_values`)."""
     from rigidsym.core import work as _work
 
     _work.count("solve", ex_id)
     solver: Callable[..., Solution] = exercise_module(ex_id).solve
-    kwargs = dict(d.values, **({"tol": d.tol} if params.measured else {}))
+    kwargs = dict(d.values if values is None else values,
+                  **({"tol": d.tol} if params.measured else {}))
     try:
         with _time_budget(SOLVE_BUDGET, ex_id):
             s = solver(**kwargs)
