@@ -10,7 +10,7 @@ import pytest
 import sympy as sp
 
 from rigidsym.course.exam import drawn_exercises
-from rigidsym.course.grading import key_array, replayed_values
+from rigidsym.course.grading import compared_answers, key_array, replayed_values
 from rigidsym.course.slips import data_slips, replays
 from rigidsym.course.worked import (
     EXERCISE_IDS,
@@ -37,7 +37,7 @@ def _drawn(ex_id: str, seed: int):
 def _same_as_exact(s) -> int:
     """Compare every replay of ``s`` for its values with the exact replay, answer by
     answer; the number of replays solved on floating data."""
-    fast, exact = list(replays(s, values=True)), list(replays(s))
+    fast, exact = list(replays(s, values=True, compare=compared_answers)), list(replays(s))
     assert [(w, d) for w, d, _ in fast] == [(w, d) for w, d, _ in exact]
     for (_, detail, got), (_, _, answers) in zip(fast, exact, strict=True):
         assert set(got) == set(answers), detail
@@ -83,7 +83,7 @@ def test_more_students_replays_for_their_values_are_the_exact_replays(ex_id, see
 
 def test_the_kept_replays_are_the_floating_ones():
     s = _drawn("3.6", 1)
-    kept, fresh = replayed_values(s), list(replays(s, values=True))
+    kept, fresh = replayed_values(s), list(replays(s, values=True, compare=compared_answers))
     assert [(w, d) for w, d, _ in kept] == [(w, d) for w, d, _ in fresh]
     for (_, _, a), (_, _, b) in zip(kept, fresh, strict=True):
         assert all(np.array_equal(a[n], b[n]) for n in b)

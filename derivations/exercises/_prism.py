@@ -122,7 +122,7 @@ def _floated(props, a, h):
     ``lambdify``, made once for the cached ``props``) at 50 digits, as sympy Floats."""
     import mpmath
 
-    from rigidsym.course.worked.checks import DIGITS
+    from rigidsym.course.worked import DIGITS
 
     hit = _NUMERIC.get(id(props))
     if hit is None or hit[0] is not props:

@@ -29,7 +29,7 @@ from rigidsym.course.worked.units import answer_unit
 
 __all__ = ["grade", "Graded", "RTOL", "SLIPS", "is_blank", "answer_shape", "gradeable",
            "rounded_figures", "read_decimal_comma", "AmbiguousNumber", "key_array",
-           "replayed_values", "slip_values"]
+           "compared_answers", "replayed_values", "slip_values"]
 
 #: relative tolerance: an answer is right within 0.1 % of its largest entry
 RTOL = 1e-3
@@ -603,6 +603,30 @@ def read_decimal_comma(given, shape: tuple, where: str):
     return given
 
 
+def compared_answers(s) -> dict:
+    """The answers of solution ``s`` as the grader compares them: each value a float array
+    (:func:`key_array`), ``None`` for a value that is no number (an expression in symbols,
+    a set), text kept as text; where ``s`` was solved on floating data
+    (``s.values_only``: :func:`rigidsym.course.worked.solve_values`), an entry within
+    :data:`rigidsym.course.worked.checks.ZERO` (1e-20) of 0 written 0."""
+    from rigidsym.course.worked.checks import ZERO
+
+    out: dict = {}
+    for name, v in s.answers.items():
+        if isinstance(v, str):
+            out[name] = v
+            continue
+        try:
+            a = key_array(v)
+        except TypeError:
+            out[name] = None
+            continue
+        if s.values_only:
+            a = np.where(np.abs(a) <= ZERO, 0.0, a)
+        out[name] = a
+    return out
+
+
 def replayed_values(solution) -> list[tuple[str, str, dict]]:
     """:func:`rigidsym.course.slips.replays` of ``solution`` for their values
     (``values=True``) with each answer as the grader compares it: the value as a float array
@@ -635,7 +659,7 @@ def replayed_values(solution) -> list[tuple[str, str, dict]]:
             return kept
     from rigidsym.course.slips import replays
 
-    out = list(replays(solution, values=True))
+    out = list(replays(solution, values=True, compare=compared_answers))
     if where is not None:
         _cache.put(where, pickle.dumps(out))
     return out

@@ -86,18 +86,17 @@ def data_slips(ex_id: str, data: dict, every: bool = False) -> list[tuple[str, s
     return out
 
 
-def replays(solution, values: bool = False):
+def replays(solution, values: bool = False, compare=None):
     """The answers of ``solution``'s exercise replayed with each slip: yields
     ``(word, detail, answers)`` for each slip of :func:`data_slips` and the exercise's
     ``step_slips`` on which the exercise is solved (lazily: a replay is a solve).
 
     ``values``: each replay for its answers' values only
     (:func:`rigidsym.course.worked.solve_values`: floating where the exercise allows it,
-    exact otherwise), each answer given as the grader compares it
-    (:func:`rigidsym.course.grading.key_array`'s float array; text kept; None for a value
-    that is no number), an entry of a floating replay within
-    :data:`rigidsym.course.worked.checks.ZERO` of 0 written 0. Otherwise the exact
-    solution's answers (:func:`rigidsym.course.worked.solve`, cached)."""
+    exact otherwise); else the exact solve (:func:`rigidsym.course.worked.solve`, cached).
+    ``compare``: a function of a replay's solution, yielded in place of its answers
+    (:func:`rigidsym.course.grading.compared_answers`: each answer as the grader compares
+    it)."""
     from rigidsym.course.worked import TooLong, exercise_module, solve, solve_values
 
     if not solution.data:
@@ -111,30 +110,7 @@ def replays(solution, values: bool = False):
         except (ValueError, TypeError, TooLong):
             continue                      # data a slip put out of reach: no replay
         if s.status == "solved":
-            yield word, detail, (_compared(s) if values else s.answers)
-
-
-def _compared(s) -> dict:
-    """The answers of a replay as the grader compares them (see :func:`replays`)."""
-    import numpy as np
-
-    from rigidsym.course.grading import key_array
-    from rigidsym.course.worked.checks import ZERO
-
-    out = {}
-    for name, v in s.answers.items():
-        if isinstance(v, str):
-            out[name] = v
-            continue
-        try:
-            a = key_array(v)
-        except TypeError:
-            out[name] = None
-            continue
-        if s.values_only:
-            a = np.where(np.abs(a) <= ZERO, 0.0, a)
-        out[name] = a
-    return out
+            yield word, detail, (compare(s) if compare is not None else s.answers)
 
 
 def slip_list(ex_id: str) -> str:
