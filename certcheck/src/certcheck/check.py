@@ -103,15 +103,9 @@ class Statement:
         """``(orders, used, bare_pi, angles)``: the highest derivative per group, the
         ``(atom, order)`` pairs, whether ``pi`` stands outside cos/sin, and the angles of
         the cos/sin arguments."""
-        orders: dict[int, int] = {}
-        used: set = set()
-        angles: set = set()
-        bare_pi = False
-        for row in rows:
-            for t in row:
-                self._scan(t, orders, used, angles)
-                bare_pi = bare_pi or _uses(t, "pi")
-        return orders, used, bare_pi, angles
+        orders, used, angles, trees = {}, set(), set(), [t for row in rows for t in row]
+        self._scan(trees, orders, used, angles)  # a let shared by the entries: once
+        return orders, used, _uses(trees, "pi"), angles
 
     @staticmethod
     def _merge(usages) -> tuple:
@@ -123,8 +117,11 @@ class Statement:
             used |= u
         return orders, used, any(u[2] for u in usages)
 
-    def _scan(self, tree, orders, used, angles):
-        for name in names_in(tree):
+    def _scan(self, trees: list, orders, used, angles):
+        names, seen = set(), set()
+        for tree in trees:
+            names_in(tree, names, seen)
+        for name in names:
             base, k = _split(name)
             if base not in self.atom_group:
                 raise CheckError(f"{name!r} is neither a declared atom nor a let")
@@ -133,7 +130,7 @@ class Statement:
                 raise CheckError(f"{name!r}: a derivative of an atom not declared timed")
             orders[gi] = max(orders.get(gi, 0), k)
             used.add((base, k))
-        stack, seen = [tree], set()
+        stack, seen = list(trees), set()
         while stack:
             n = stack.pop()
             if id(n) in seen:
@@ -302,9 +299,9 @@ def check_identity(st: Statement, rels: list, fast: bool) -> list[str]:
     out = []
     for r, lhs, rhs in rels:
         _same_shape(lhs, rhs, r)
-        E, m, lf, tr = (F, memo, leaf, trig) if not any(_uses(x, "sqrt") for side in (
-            lhs, rhs) for row in side for x in row) else (R := Root(F), {}, lambda n: R.lift(
-                leaf(n)), lambda k, a: R.lift(trig(k, a)))  # a square root: in K(s)
+        E, m, lf, tr = (F, memo, leaf, trig) if not _uses([x for s in (lhs, rhs) for row in s
+                                                           for x in row], "sqrt") else (
+            R := Root(F), {}, lambda n: R.lift(leaf(n)), lambda k, a: R.lift(trig(k, a)))
         for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True)):
             for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
                 try:
@@ -319,8 +316,8 @@ def check_identity(st: Statement, rels: list, fast: bool) -> list[str]:
     return out
 
 
-def _uses(tree, tag: str) -> bool:
-    stack, seen = [tree], set()
+def _uses(trees: list, tag: str) -> bool:
+    stack, seen = list(trees), set()
     while stack:
         n = stack.pop()
         if id(n) in seen:
