@@ -295,25 +295,37 @@ def check_identity(st: Statement, rels: list, fast: bool) -> list[str]:
     """Every relation of ``rels`` is an identity under the hypotheses."""
     F, atoms, params, leaf, trig, var, index = _identity_context(st, fast)
     _prove_parametrisation(st, F, params)
-    memo: dict = {}
-    out = []
+    memo, R, m, out = {}, None, {}, []
     for r, lhs, rhs in rels:
         _same_shape(lhs, rhs, r)
-        E, m, lf, tr = (F, memo, leaf, trig) if not _uses([x for s in (lhs, rhs) for row in s
-                                                           for x in row], "sqrt") else (
-            R := Root(F), {}, lambda n: R.lift(leaf(n)), lambda k, a: R.lift(trig(k, a)))
-        for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True)):
-            for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
-                try:
-                    diff = E.sub(evaluate(a, E, lf, tr, m), evaluate(b, E, lf, tr, m))
-                except (Vanishing, ValueError) as exc:
-                    raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): {exc}") from None
-                if not E.is_zero(diff):
-                    raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): lhs - rhs is not "
-                                     "zero after the parametrisation")
+        roots = _uses([x for s in (lhs, rhs) for row in s for x in row], "sqrt")
+        if not roots:
+            _zero(r, lhs, rhs, F, memo, leaf, trig)
+        for fresh in () if not roots else (True,) if R is None else (False, True):
+            R, m = (Root(F), {}) if fresh else (R, m)  # K(s): one while the radicand is
+            try:
+                _zero(r, lhs, rhs, R, m, lambda n, R=R: R.lift(leaf(n)),
+                      lambda k, a, R=R: R.lift(trig(k, a)))
+                break
+            except CheckError:  # another radicand: K(s) of its own
+                if fresh:
+                    raise
         out.append(f"{_who(r)}: identity, lhs - rhs = 0 as a rational function of "
                    f"{len(F.ring.names)} parameters")
     return out
+
+
+def _zero(r: dict, lhs, rhs, E, m: dict, lf, tr) -> None:
+    """Every entry of lhs - rhs is zero in ``E`` (evaluated with the memo ``m``)."""
+    for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True)):
+        for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
+            try:
+                diff = evaluate(("sub", a, b), E, lf, tr, m)  # the same difference: once
+            except (Vanishing, ValueError) as exc:
+                raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): {exc}") from None
+            if not E.is_zero(diff):
+                raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): lhs - rhs is not "
+                                 "zero after the parametrisation")
 
 
 def _uses(trees: list, tag: str) -> bool:
