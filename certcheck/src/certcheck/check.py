@@ -29,6 +29,7 @@ __all__ = ["CheckError", "check_certificate", "is_vacuous", "load"]
 
 FORMAT = "rigidsym-certificate"
 VERSIONS = (1,)
+_LETS: list = [[], {}]  # the last statement's lets, as (name, text), and their trees
 
 
 class CheckError(Exception):
@@ -71,11 +72,15 @@ class Statement:
             self.groups.append({"group": str(g.get("group")), "kind": kind, "names": names,
                                 "timed": bool(g.get("timed", False))})
         self.lets: dict = {}
+        pairs, same, (last, trees) = [], True, _LETS  # a probe's lets extend its certificate's
         try:
-            for name, text in cert.get("let", []):
+            for k, (name, text) in enumerate(cert.get("let", [])):
                 if name in self.atom_group or name in self.lets or _split(name)[1]:
                     raise CheckError(f"let {name!r} shadows an atom or another let")
-                self.lets[name] = parse(text, self.lets)
+                pairs.append((name, text))
+                same = same and k < len(last) and last[k] == pairs[k]  # parsed once
+                self.lets[name] = trees[name] if same else parse(text, self.lets)
+            _LETS[:] = pairs, self.lets
             self.rels = []
             for r in cert.get("relations", []):
                 lhs = [[parse(x, self.lets) for x in row] for row in r["lhs"]]
