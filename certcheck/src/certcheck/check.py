@@ -29,6 +29,7 @@ __all__ = ["CheckError", "check_certificate", "is_vacuous", "load"]
 
 FORMAT = "rigidsym-certificate"
 VERSIONS = (1,)
+_LETS: list = [[], {}]  # the last statement's lets, as (name, text), and their trees
 
 
 class CheckError(Exception):
@@ -71,11 +72,15 @@ class Statement:
             self.groups.append({"group": str(g.get("group")), "kind": kind, "names": names,
                                 "timed": bool(g.get("timed", False))})
         self.lets: dict = {}
+        pairs, same, (last, trees) = [], True, _LETS  # a probe's lets extend its certificate's
         try:
-            for name, text in cert.get("let", []):
+            for k, (name, text) in enumerate(cert.get("let", [])):
                 if name in self.atom_group or name in self.lets or _split(name)[1]:
                     raise CheckError(f"let {name!r} shadows an atom or another let")
-                self.lets[name] = parse(text, self.lets)
+                pairs.append((name, text))
+                same = same and k < len(last) and last[k] == pairs[k]  # parsed once
+                self.lets[name] = trees[name] if same else parse(text, self.lets)
+            _LETS[:] = pairs, self.lets
             self.rels = []
             for r in cert.get("relations", []):
                 lhs = [[parse(x, self.lets) for x in row] for row in r["lhs"]]
@@ -103,15 +108,9 @@ class Statement:
         """``(orders, used, bare_pi, angles)``: the highest derivative per group, the
         ``(atom, order)`` pairs, whether ``pi`` stands outside cos/sin, and the angles of
         the cos/sin arguments."""
-        orders: dict[int, int] = {}
-        used: set = set()
-        angles: set = set()
-        bare_pi = False
-        for row in rows:
-            for t in row:
-                self._scan(t, orders, used, angles)
-                bare_pi = bare_pi or _uses(t, "pi")
-        return orders, used, bare_pi, angles
+        orders, used, angles, trees = {}, set(), set(), [t for row in rows for t in row]
+        self._scan(trees, orders, used, angles)  # a let shared by the entries: once
+        return orders, used, _uses(trees, "pi"), angles
 
     @staticmethod
     def _merge(usages) -> tuple:
@@ -123,8 +122,11 @@ class Statement:
             used |= u
         return orders, used, any(u[2] for u in usages)
 
-    def _scan(self, tree, orders, used, angles):
-        for name in names_in(tree):
+    def _scan(self, trees: list, orders, used, angles):
+        names, seen = set(), set()
+        for tree in trees:
+            names_in(tree, names, seen)
+        for name in names:
             base, k = _split(name)
             if base not in self.atom_group:
                 raise CheckError(f"{name!r} is neither a declared atom nor a let")
@@ -133,7 +135,7 @@ class Statement:
                 raise CheckError(f"{name!r}: a derivative of an atom not declared timed")
             orders[gi] = max(orders.get(gi, 0), k)
             used.add((base, k))
-        stack, seen = [tree], set()
+        stack, seen = list(trees), set()
         while stack:
             n = stack.pop()
             if id(n) in seen:
@@ -298,29 +300,41 @@ def check_identity(st: Statement, rels: list, fast: bool) -> list[str]:
     """Every relation of ``rels`` is an identity under the hypotheses."""
     F, atoms, params, leaf, trig, var, index = _identity_context(st, fast)
     _prove_parametrisation(st, F, params)
-    memo: dict = {}
-    out = []
+    memo, R, m, out = {}, None, {}, []
     for r, lhs, rhs in rels:
         _same_shape(lhs, rhs, r)
-        E, m, lf, tr = (F, memo, leaf, trig) if not any(_uses(x, "sqrt") for side in (
-            lhs, rhs) for row in side for x in row) else (R := Root(F), {}, lambda n: R.lift(
-                leaf(n)), lambda k, a: R.lift(trig(k, a)))  # a square root: in K(s)
-        for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True)):
-            for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
-                try:
-                    diff = E.sub(evaluate(a, E, lf, tr, m), evaluate(b, E, lf, tr, m))
-                except (Vanishing, ValueError) as exc:
-                    raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): {exc}") from None
-                if not E.is_zero(diff):
-                    raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): lhs - rhs is not "
-                                     "zero after the parametrisation")
+        roots = _uses([x for s in (lhs, rhs) for row in s for x in row], "sqrt")
+        if not roots:
+            _zero(r, lhs, rhs, F, memo, leaf, trig)
+        for fresh in () if not roots else (True,) if R is None else (False, True):
+            R, m = (Root(F), {}) if fresh else (R, m)  # K(s): one while the radicand is
+            try:
+                _zero(r, lhs, rhs, R, m, lambda n, R=R: R.lift(leaf(n)),
+                      lambda k, a, R=R: R.lift(trig(k, a)))
+                break
+            except CheckError:  # another radicand: K(s) of its own
+                if fresh:
+                    raise
         out.append(f"{_who(r)}: identity, lhs - rhs = 0 as a rational function of "
                    f"{len(F.ring.names)} parameters")
     return out
 
 
-def _uses(tree, tag: str) -> bool:
-    stack, seen = [tree], set()
+def _zero(r: dict, lhs, rhs, E, m: dict, lf, tr) -> None:
+    """Every entry of lhs - rhs is zero in ``E`` (evaluated with the memo ``m``)."""
+    for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True)):
+        for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
+            try:
+                diff = evaluate(("sub", a, b), E, lf, tr, m)  # the same difference: once
+            except (Vanishing, ValueError) as exc:
+                raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): {exc}") from None
+            if not E.is_zero(diff):
+                raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): lhs - rhs is not "
+                                 "zero after the parametrisation")
+
+
+def _uses(trees: list, tag: str) -> bool:
+    stack, seen = list(trees), set()
     while stack:
         n = stack.pop()
         if id(n) in seen:

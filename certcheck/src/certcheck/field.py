@@ -72,8 +72,7 @@ class Field:
             while e < 0 and (q := self.ring.divexact(num, self.factors[i])) is not None:
                 num, e = q, e + 1
             F[i] = e
-        g = gcd(self.ring.content(num), c)
-        if g > 1:
+        if c > 1 and (g := gcd(self.ring.content(num), c)) > 1:
             num, c = self.ring.scale_div(num, g), c // g
         return (num, c, {i: e for i, e in F.items() if e})
 
@@ -209,6 +208,8 @@ class Root:
 
     def mul(self, a, b) -> tuple:
         F, (x, y), (u, v) = self.F, a, b
+        if F.is_zero(y) and F.is_zero(v):  # both in K
+            return (F.mul(x, u), F.zero)
         return (F.add(F.mul(x, u), self._d(F.mul(y, v))), F.add(F.mul(x, v), F.mul(y, u)))
 
     def inv(self, a) -> tuple:
@@ -237,8 +238,9 @@ def evaluate(node, field: Field, leaf, trig, memo: dict):
     """The value of a parsed tree in ``field``: ``leaf(name)`` gives an atom's value,
     ``trig(kind, argument tree)`` a cosine's or sine's; ``memo`` (by node identity) makes a
     shared subtree cost once (the nodes are kept alive in ``memo[None]``, so an identity is
-    never reused by a later tree). Iterative, so a deep tree does not hit the recursion
-    limit."""
+    never reused by a later tree), and so do two subtrees that are one expression: an atom
+    is one element, an operation on the same elements is done once. Iterative, so a deep
+    tree does not hit the recursion limit."""
     keep = memo.setdefault(None, [])
     stack = [(node, False)]
     while stack:
@@ -249,24 +251,18 @@ def evaluate(node, field: Field, leaf, trig, memo: dict):
         if not ready:
             keep.append(n)
         tag = n[0]
-        if tag == "num":
-            memo[key] = field.const(n[1])
-        elif tag == "name":
-            memo[key] = leaf(n[1])
-        elif tag == "pi":
-            memo[key] = leaf("pi")
-        elif tag in ("cos", "sin"):
-            memo[key] = trig(tag, n[1])
+        if tag in ("num", "name", "pi", "cos", "sin"):  # by value (a cos/sin by its argument)
+            if (tag, n[1:]) not in memo:
+                memo[tag, n[1:]] = field.const(n[1]) if tag == "num" else leaf(
+                    n[1]) if tag == "name" else leaf("pi") if tag == "pi" else trig(tag, n[1])
+            memo[key] = memo[tag, n[1:]]
         elif not ready:
             stack.append((n, True))
             stack.extend((k, False) for k in n[1:] if isinstance(k, tuple))
-        elif tag == "neg":
-            memo[key] = field.neg(memo[id(n[1])])
-        elif tag == "sqrt":
-            memo[key] = field.sqrt(memo[id(n[1])])
-        elif tag == "pow":
-            memo[key] = field.pow(memo[id(n[1])], n[2])
-        else:
-            a, b = memo[id(n[1])], memo[id(n[2])]
-            memo[key] = getattr(field, tag)(a, b)
+        else:  # by the identity of its operands' elements (kept alive in memo)
+            args = [memo[id(k)] if isinstance(k, tuple) else k for k in n[1:]]
+            op = (tag, *(a if isinstance(a, int) else id(a) for a in args))  # pow's n
+            if op not in memo:
+                memo[op] = getattr(field, tag)(*args)
+            memo[key] = memo[op]
     return memo[id(node)]

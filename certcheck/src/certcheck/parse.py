@@ -25,101 +25,82 @@ import re
 
 __all__ = ["ParseError", "parse", "names_in"]
 
-_TOKEN = re.compile(r"\s*(?:(\d+)|([A-Za-z][A-Za-z0-9_.]*'*)|(\^|\*|/|\+|-|\(|\)))")
+_TOKEN = re.compile(r"\s*(?:(\d+|[A-Za-z][A-Za-z0-9_.]*'*|[-^*/+()])|(\S))")
 
 
 class ParseError(ValueError):
     """Text outside the grammar."""
 
 
-def _tokens(text: str) -> list[tuple[str, str]]:
-    out = []
-    pos = 0
-    text = text.rstrip()
-    while pos < len(text):
-        m = _TOKEN.match(text, pos)
-        if not m:
-            raise ParseError(f"unexpected character {text[pos:pos + 10]!r} at {pos}")
-        pos = m.end()
-        if m.group(1) is not None:
-            out.append(("int", m.group(1)))
-        elif m.group(2) is not None:
-            out.append(("name", m.group(2)))
-        else:
-            out.append(("op", m.group(3)))
-    return out
+def _tokens(text: str) -> list[str]:
+    """The tokens (an integer, a name or an operator, told apart by the first character)."""
+    found = _TOKEN.findall(text)
+    bad = [b for _, b in found if b]
+    if bad:
+        raise ParseError(f"unexpected character {bad[0]!r}")
+    return [t for t, _ in found]
 
 
 class _Parser:
     def __init__(self, text: str, lets: dict):
-        self.toks = _tokens(text)
-        self.i = 0
-        self.lets = lets
+        self.toks, self.i, self.lets = _tokens(text), 0, lets
 
-    def peek(self):
-        return self.toks[self.i] if self.i < len(self.toks) else ("end", "")
+    def peek(self) -> str:
+        return self.toks[self.i] if self.i < len(self.toks) else ""
 
-    def take(self, kind=None, value=None):
+    def take(self, want: str | None = None) -> str:
         tok = self.peek()
-        if (kind and tok[0] != kind) or (value and tok[1] != value):
-            raise ParseError(f"expected {value or kind}, got {tok[1] or 'the end'!r}")
+        if not tok or want is not None and tok != want:
+            raise ParseError(f"expected {want or 'more'}, got {tok or 'the end'!r}")
         self.i += 1
         return tok
 
     def expr(self):
         node = self.term()
-        while self.peek() in (("op", "+"), ("op", "-")):
-            op = self.take()[1]
-            node = ("add" if op == "+" else "sub", node, self.term())
+        while self.peek() in ("+", "-"):
+            node = ("add" if self.take() == "+" else "sub", node, self.term())
         return node
 
     def term(self):
         node = self.unary()
-        while self.peek() in (("op", "*"), ("op", "/")):
-            op = self.take()[1]
-            node = ("mul" if op == "*" else "div", node, self.unary())
+        while self.peek() in ("*", "/"):
+            node = ("mul" if self.take() == "*" else "div", node, self.unary())
         return node
 
     def unary(self):
-        if self.peek() == ("op", "-"):
+        if self.peek() == "-":
             self.take()
             return ("neg", self.unary())
         return self.power()
 
     def power(self):
         node = self.atom()
-        if self.peek() == ("op", "^"):
+        if self.peek() == "^":
             self.take()
-            sign = 1
-            if self.peek() == ("op", "-"):
-                self.take()
-                sign = -1
-            node = ("pow", node, sign * int(self.take("int")[1]))
+            sign = -1 if self.peek() == "-" else 1
+            self.i += sign < 0
+            if not (n := self.take()).isdigit():
+                raise ParseError(f"expected an integer exponent, got {n!r}")
+            node = ("pow", node, sign * int(n))
         return node
 
     def atom(self):
-        kind, value = self.peek()
-        if kind == "int":
-            self.take()
-            return ("num", int(value))
-        if kind == "name":
-            self.take()
-            if value in ("cos", "sin", "sqrt"):
-                self.take("op", "(")
-                arg = self.expr()
-                self.take("op", ")")
-                return (value, arg)
-            if value == "pi":
-                return ("pi",)
-            if value in self.lets:
-                return self.lets[value]
-            return ("name", value)
-        if (kind, value) == ("op", "("):
-            self.take()
+        tok = self.take()
+        if tok[0].isdigit():
+            return ("num", int(tok))
+        if tok in ("cos", "sin", "sqrt"):
+            self.take("(")
+            arg = self.expr()
+            self.take(")")
+            return (tok, arg)
+        if tok[0].isalpha():
+            return ("pi",) if tok == "pi" else self.lets[tok] if tok in self.lets else \
+                ("name", tok)
+        if tok == "(":
             node = self.expr()
-            self.take("op", ")")
+            self.take(")")
             return node
-        raise ParseError(f"unexpected {value or 'end'!r}")
+        raise ParseError(f"unexpected {tok!r}")
 
 
 def parse(text: str, lets: dict | None = None):
@@ -134,7 +115,7 @@ def parse(text: str, lets: dict | None = None):
     p = _Parser(text, lets or {})
     node = p.expr()
     if p.i != len(p.toks):
-        raise ParseError(f"trailing text after position {p.i}: {p.toks[p.i][1]!r}")
+        raise ParseError(f"trailing text after position {p.i}: {p.toks[p.i]!r}")
     return node
 
 

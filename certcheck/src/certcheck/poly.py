@@ -58,6 +58,8 @@ class Poly:
             a, b = b, a
         if len(b) == 1:
             ((mb, cb),) = b.items()
+            if mb == 0 and cb == 1:  # times 1: the same terms (a Poly is never mutated)
+                return Poly(a, self.deg + other.deg)
             return Poly({m + mb: c * cb for m, c in a.items()}, self.deg + other.deg)
         t: dict = {}
         get = t.get
@@ -65,7 +67,8 @@ class Poly:
             for ma, ca in a.items():
                 k = ma + mb
                 t[k] = get(k, 0) + ca * cb
-        return Poly({m: c for m, c in t.items() if c}, self.deg + other.deg)
+        return Poly(t if all(t.values()) else {m: c for m, c in t.items() if c},
+                    self.deg + other.deg)
 
     def __pow__(self, n: int) -> Poly:
         out = Poly({0: 1}, 0)
@@ -92,6 +95,7 @@ class Ring:
 
     def __init__(self, names: list[str]):
         self.names = list(names)
+        self.guard = sum(1 << (WIDTH * i + WIDTH - 1) for i in range(len(self.names) + 1))
 
     def const(self, c: int) -> Poly:
         return Poly({0: c} if c else {}, 0)
@@ -113,7 +117,7 @@ class Ring:
         return Poly({m: c // d for m, c in p.terms.items()}, p.deg)
 
     def scale(self, p: Poly, d: int) -> Poly:
-        return Poly({m: c * d for m, c in p.terms.items()} if d else {}, p.deg)
+        return p if d == 1 else Poly({m: c * d for m, c in p.terms.items()} if d else {}, p.deg)
 
     def deriv(self, p: Poly, i: int) -> Poly:
         sh = WIDTH * i
@@ -150,9 +154,11 @@ class Ring:
         divide stops it, as does a leading monomial that is not a multiple of f's."""
         if max(p.deg, f.deg) >= 1 << (WIDTH - 1):  # the guard bits need exponents < 2^15
             return None
-        lead = max(f.terms)
+        lead, guard = max(f.terms), self.guard  # p's first and last terms: f's times q's
+        for m, g in ((max(p.terms), lead), (min(p.terms), min(f.terms))):
+            if ((m | guard) - g) & guard != guard or p.terms[m] % f.terms[g]:
+                return None
         lc, rest = f.terms[lead], [(m - lead, c) for m, c in f.terms.items() if m != lead]
-        guard = sum(1 << (WIDTH * i + WIDTH - 1) for i in range(len(self.names) + 1))
         pending, q = dict(p.terms), {}
         heap = [-m for m in pending]
         heapq.heapify(heap)
