@@ -8,9 +8,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import sympy as sp
+from test_grading_replays_kept import assert_compared_as_exact
 
 from rigidsym.course.exam import drawn_exercises
-from rigidsym.course.grading import compared_answers, key_array, replayed_values
+from rigidsym.course.grading import compared_answers, replayed_values
 from rigidsym.course.slips import data_slips, replays
 from rigidsym.course.worked import (
     EXERCISE_IDS,
@@ -38,22 +39,7 @@ def _same_as_exact(s) -> int:
     """Compare every replay of ``s`` for its values with the exact replay, answer by
     answer; the number of replays solved on floating data."""
     fast, exact = list(replays(s, values=True, compare=compared_answers)), list(replays(s))
-    assert [(w, d) for w, d, _ in fast] == [(w, d) for w, d, _ in exact]
-    for (_, detail, got), (_, _, answers) in zip(fast, exact, strict=True):
-        assert set(got) == set(answers), detail
-        for name, v in answers.items():
-            if isinstance(v, str):
-                assert got[name] == v
-                continue
-            try:
-                want = key_array(v)
-            except TypeError:
-                assert got[name] is None
-                continue
-            g = got[name]
-            assert g.shape == want.shape and g.dtype == np.float64, (detail, name)
-            written_zero = (g == 0) & (np.abs(want) <= ZERO)
-            assert np.array_equal(np.where(written_zero, want, g), want), (detail, name, g, want)
+    assert_compared_as_exact(fast, exact, ZERO)
     tol = {"tol": s.tol} if s.tol is not None else {}
     floating = 0
     for _, _, data in data_slips(s.id, s.data):
