@@ -287,7 +287,9 @@ def steiner_theorem_dyad_form() -> Statement:
     (member 1, holds), so ``P_2 = O`` and the off-diagonal block ``P_1 P_2^T`` is ``O``;
     but ``(M_A - M_C)_12 = m (C - A)`` (member 2) is not ``O`` unless ``a = c``. The claim
     makes the obstruction explicit: for ``x = [u; (A - C)^T u]`` (u free),
-    ``x^T (M_A - M_C) x = -m ||u x (a - c)||^2 < 0``, while ``x^T m P P^T x >= 0``.
+    ``x^T (M_A - M_C) x = -m ||u x (a - c)||^2 < 0``, while ``x^T m P P^T x >= 0``. The
+    certificate holds the printed relation itself (``for_every``: P a fresh 6 x 6 array of
+    free atoms), failing at one point for every real P by that x.
 
     Corrected (the decomposition Exercise 3.20 asks for): ``M_A = diag(I_C, O) + m P P^T``
     with ``P = [C - A; 1]`` (6 x 3), the same as ``m R R^T`` with the 6 x 6
@@ -313,7 +315,8 @@ def steiner_theorem_dyad_form() -> Statement:
                   J: _im(block([[Iv, z3], [z3, z3]]))})
     D = M_A - M_C
     uxd = cpm(u) * (a - c)
-    return Statement(
+    page_P = _im(6, 6, list(vector("s38_P", n=36)))  # the page's P: any real 6 x 6 (P P^T
+    return Statement(  # then every positive semi-definite 6 x 6, so every 6 x k P's)
         [Rel(D[3:6, 3:6], O3, "lower-right block m P_2 P_2^T = O, so P_2 = O"),
          Rel(D[0:3, 3:6], O3, "upper-right block m P_1 P_2^T = O, since P_2 = O")],
         model,
@@ -322,4 +325,6 @@ def steiner_theorem_dyad_form() -> Statement:
         corrected=[Rel(M_A, J + m * P * P.T, "J = diag(I_C, O), P = [C - A; 1]"),
                    Rel(M_A, J + m * R6 * R6.T, "6x6 R = [[O, C - A], [O, 1]]"),
                    Rel(M_A, U.T * M_C * U, "U = [[1, O], [A - C, 1]]")],
-        parametrisation=POINT_BODY_WORDS)
+        parametrisation=POINT_BODY_WORDS,
+        for_every=(Rel(M_A, M_C + m * page_P * page_P.T, "printed, for every real P"), page_P,
+                   x))

@@ -97,12 +97,9 @@ class Statement:
     def lcm_M(self, forms) -> dict:
         """For each angle group, the lcm of the denominators of its coefficients."""
         forms = list(forms)
-        out = {}
-        for gi, g in enumerate(self.groups):
-            if g["kind"] in ("angle", "angle_pi"):
-                out[gi] = lcm(1, *[c.denominator for form in forms
-                                   for a, c in form.items() if a == g["names"][0]])
-        return out
+        return {gi: lcm(1, *[c.denominator for form in forms for a, c in form.items()
+                             if a == g["names"][0]])
+                for gi, g in enumerate(self.groups) if g["kind"] in ("angle", "angle_pi")}
 
     def _usage(self, rows) -> tuple:
         """``(orders, used, bare_pi, angles)``: the highest derivative per group, the
@@ -115,12 +112,10 @@ class Statement:
     @staticmethod
     def _merge(usages) -> tuple:
         orders: dict = {}
-        used: set = set()
-        for o, u, _, _ in usages:
+        for o, _, _, _ in usages:
             for gi, k in o.items():
                 orders[gi] = max(orders.get(gi, 0), k)
-            used |= u
-        return orders, used, any(u[2] for u in usages)
+        return orders, set().union(*(u[1] for u in usages)), any(u[2] for u in usages)
 
     def _scan(self, trees: list, orders, used, angles):
         names, seen = set(), set()
@@ -161,10 +156,8 @@ class Statement:
         if tag == "neg":
             return {a: -c for a, c in self._linear(n[1]).items()}
         if tag in ("add", "sub"):
-            a, b = self._linear(n[1]), self._linear(n[2])
-            s = 1 if tag == "add" else -1
-            out = dict(a)
-            for x, c in b.items():
+            out, s = dict(self._linear(n[1])), 1 if tag == "add" else -1
+            for x, c in self._linear(n[2]).items():
                 out[x] = out.get(x, 0) + s * c
             return out
         if tag in ("mul", "div"):
@@ -198,13 +191,9 @@ def _cpow(F, z, n: int, cache: dict, key):
     if n < 0:
         w = _cpow(F, z, -n, cache, key)
         out = (w[0], F.neg(w[1]))
-    elif n == 0:
-        out = (F.one, F.zero)
-    else:
-        half = _cpow(F, z, n // 2, cache, key)
-        out = _cmul(F, half, half)
-        if n % 2:
-            out = _cmul(F, out, z)
+    else:  # z^n = (z^(n // 2))^2 z^(n % 2)
+        out = _cmul(F, *[_cpow(F, z, n // 2, cache, key)] * 2) if n else (F.one, F.zero)
+        out = _cmul(F, out, z) if n % 2 else out
     cache[(key, n)] = out
     return out
 
@@ -218,8 +207,7 @@ def _trig(st: Statement, F: Field, unit_of, cache: dict, M: dict):
         form = st.angle_form(arg)
         z = quarter[int(2 * form.pop("pi", 0)) % 4]
         for a, c in sorted(form.items()):
-            gi = st.atom_group[a][0]
-            n = c * M[gi]
+            n = c * M[gi := st.atom_group[a][0]]
             if n.denominator != 1:
                 raise CheckError(f"coefficient {c} of {a} is not a multiple of 1/{M[gi]}")
             z = _cmul(F, z, _cpow(F, unit_of(a), int(n), cache, a))
@@ -409,56 +397,77 @@ def _check_point(st: Statement, usage, point: dict, angles: dict) -> tuple[list,
 
 def check_counterexample(st: Statement, index: int, ev: dict) -> str:
     """Relation ``index`` fails at the certificate's point: an entry of lhs - rhs is not
-    zero there, and every hypothesis holds there."""
-    r, lhs, rhs = st.rels[index]
-    usage = st.usage[index]
+    zero there, and every hypothesis holds there. With ``for_every`` (free atoms left out of
+    the point: 3.148's P, never given) it fails there for every real value of them:
+    ``x^T (lhs - rhs) x = c + sum w_k L_k^2`` (x the rational ``form``, ``squares`` the
+    pairs ``[w_k, L_k]``), ``c`` a non-zero constant and every ``w_k`` of its sign."""
+    (r, lhs, rhs), usage = st.rels[index], st.usage[index]
     _same_shape(lhs, rhs, r)
     point = {n: _rational(v, n) for n, v in dict(ev.get("point", {})).items()}
     facts, Ms, taus = _check_point(st, usage, point, dict(ev.get("angles", {})))
+    every = [str(a) for a in ev.get("for_every", [])]
+    if any((st.groups[st.atom_group[n][0]] if n in st.atom_group else {}).get("kind") != "free"
+           or st.groups[st.atom_group[n][0]]["timed"] or n in point for n in every):
+        raise CheckError(f"{_who(r)}: for_every names atoms not free, timed, or on the point")
     # bare angles (with tan != 0) and pi are transcendental: at most one of them stays a
     # variable (two such numbers are not known to be algebraically independent)
     bare = sorted({b for b, k in usage[1] if k == 0 and b in taus and taus[b] != 0})
     if usage[2]:
         bare.append("pi")
-    if len(bare) > 1:
+    if len(bare) > 1 or bare and every:
         raise CheckError(f"the entries hold {', '.join(bare)} outside cos/sin: more than one "
-                         "transcendental number, not decided")
-    F = Field(make_ring(bare, fast=False))
+                         "transcendental number (or one beside for_every), not decided")
+    F, slot = Field(make_ring(bare + every, fast=False)), {n: i for i, n in enumerate(bare + every)}
     units = {a: (F.const((1 - t * t) / (1 + t * t)), F.const(2 * t / (1 + t * t)))
              for a, t in taus.items()}
 
     def leaf(name):
-        if name in bare:
-            return F.var(0)
+        if name in slot:
+            return F.var(slot[name])
         if name in taus:  # a bare angle at tan = 0 is 0
             return F.zero
         if name not in point:
             raise CheckError(f"the point gives no value to {name}")
         return F.const(point[name])
     trig = _trig(st, F, units.__getitem__, {}, Ms)
-    memo: dict = {}
-    hit = None
-    for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True)):
-        for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
-            try:
-                d = F.sub(evaluate(a, F, leaf, trig, memo), evaluate(b, F, leaf, trig, memo))
-            except Vanishing:
-                raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): a divisor vanishes "
-                                 "at the point") from None
-            except ValueError as exc:
-                raise CheckError(f"{_who(r)} entry ({i + 1}, {j + 1}): {exc}") from None
-            if hit is None and not F.is_zero(d):
-                hit = (i, j, d)
+    memo, diffs = {}, {}
+    try:
+        for i, (lr, rr) in enumerate(zip(lhs, rhs, strict=True)):
+            for j, (a, b) in enumerate(zip(lr, rr, strict=True)):
+                diffs[i, j] = F.sub(*(evaluate(x, F, leaf, trig, memo) for x in (a, b)))
+        if every:
+            squares = [(w, evaluate(parse(str(t), st.lets), F, leaf, trig, memo))
+                       for w, t in ev.get("squares", [])]
+            return _for_every(r, F, diffs, ev.get("form", []), squares, facts, every)
+    except (Vanishing, ValueError, ParseError) as exc:
+        raise CheckError(f"{_who(r)}: {exc} (a divisor vanishing at the point, or a text "
+                         "outside the grammar)") from None
+    hit = next(((i, j, d) for (i, j), d in diffs.items() if not F.is_zero(d)), None)
     if hit is None:
         raise CheckError(f"{_who(r)}: every entry of lhs - rhs is zero at the point")
     i, j, d = hit
-    if bare:
-        what = (f"is a non-zero rational function of {bare[0]}, a transcendental number "
-                f"(Lindemann), so not zero")
-    else:
-        what = f"= {F.value(d, [])}"
+    what = f"is a non-zero rational function of {bare[0]}, a transcendental number " \
+        "(Lindemann), so not zero" if bare else f"= {F.value(d, [])}"
     return (f"{_who(r)}: does not hold; at the point ({'; '.join(facts) or 'no constraints'})"
             f" entry ({i + 1}, {j + 1}) of lhs - rhs {what}")
+
+
+def _for_every(r, F, diffs, form, squares, facts, every) -> str:
+    """``x^T (lhs - rhs) x - sum w_k L_k^2`` is a non-zero constant c, each w_k c >= 0, and no
+    divisor holds an atom of ``every``: x^T (lhs - rhs) x is never 0, so nor is lhs - rhs."""
+    x, ws = [_rational(v, "form") for v in form], [_rational(w, "weight") for w, _ in squares]
+    q = F.zero if {(i, j) for i in range(len(x)) for j in range(len(x))} == set(diffs) else None
+    for (i, j), d in diffs.items() if q else ():
+        q = F.add(q, F.mul(F.const(x[i] * x[j]), d))
+    for w, (_, L) in zip(ws, squares if q else (), strict=False):
+        q = F.sub(q, F.mul(F.const(w), F.mul(L, L)))
+    c = F.value(q, [0] * len(every)) if q else 0
+    if F.factors or c == 0 or not F.is_zero(F.sub(q, F.const(c))) or any(w * c < 0 for w in ws):
+        raise CheckError(f"{_who(r)}: x^T (lhs - rhs) x (x the form, of the square relation's "
+                         "size) is not a non-zero constant plus squares weighted of its sign")
+    return (f"{_who(r)}: does not hold for any real {', '.join(every[:2])}, ...; at the point "
+            f"({'; '.join(facts) or 'no constraints'}) x^T (lhs - rhs) x = {c} + squares each"
+            " weighted of its sign, never 0")
 
 
 # ----------------------------------------------------------------------------- cofactors
@@ -662,6 +671,4 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
         lines.append(check_counterexample(st, st.rels.index(rel), rel[0]["evidence"]))
     for rel in by["cofactors"]:
         lines.append(check_cofactors(st, st.rels.index(rel), rel[0]["evidence"], fast))
-    if by["identity"]:
-        lines.extend(check_identity(st, by["identity"], fast))
-    return verdict, lines
+    return verdict, lines + (check_identity(st, by["identity"], fast) if by["identity"] else [])

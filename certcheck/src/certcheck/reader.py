@@ -445,8 +445,8 @@ class _Reader:
         atoms = list(entry.get("atoms", []))
         if not atoms:
             raise NotRead(f"the glyph {name} names no atoms")
-        if len(atoms) in (9, 16):  # a rotation or transform, row-major
-            n = 3 if len(atoms) == 9 else 4
+        if len(atoms) in (9, 16, 36):  # a rotation, transform or 6 x 6 array, row-major
+            n = {9: 3, 16: 4, 36: 6}[len(atoms)]
             return M([atoms[n * i:n * i + n] for i in range(n)])
         return scalar(atoms[0]) if len(atoms) == 1 else M([[a] for a in atoms])
 

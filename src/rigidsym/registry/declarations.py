@@ -100,6 +100,10 @@ class Statement:
     defines: tuple[str, ...] = ()
     claims: list[Rel] = field(default_factory=list)
     parametrisation: str = ""
+    #: a does-not-hold whose printed relation holds a glyph the page never gives (3.148's
+    #: P): ``(the printed relation with that glyph a fresh array of free atoms, the array, a
+    #: witness x)``; certified failing for every real value of the array (x^T (lhs - rhs) x)
+    for_every: tuple | None = None
     #: set when ``printed`` was read from the declaration's LaTeX (not written by hand)
     from_latex: bool = False
 

@@ -34,6 +34,7 @@ import sympy as sp
 
 from rigidsym.checking.certifying.body_symbols import point_body_symbols
 from rigidsym.checking.certifying.displacement_symbols import displacement_symbols
+from rigidsym.checking.certifying.for_every import for_every_evidence
 from rigidsym.checking.certifying.force_symbols import force_symbols
 from rigidsym.checking.certifying.instant_screw_symbols import instant_screw_symbols
 from rigidsym.checking.certifying.invariant_rate_symbols import (
@@ -190,7 +191,8 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             bad = next((i for i, s in enumerate(status) if s == "fails"), None)
         if bad is None:
             raise Unprintable("no failing member on record")
-        pairs = [(asserted[bad], "printed" if bad < len(st.printed) else "claim", "fails")]
+        pairs = [(st.for_every[0], "printed", "fails")] if st.for_every else [
+            (asserted[bad], "printed" if bad < len(st.printed) else "claim", "fails")]
         pairs += [(r, "corrected", "identity") for r in st.corrected or []]
     sides = []
     for r, role, ev in pairs:
@@ -212,11 +214,11 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         _glyph_atoms(pr, r, st.model)
     rels = []
     for r, role, lhs, rhs, ev in sides:
-        if ev is None:
-            try:
-                ev = _point(pr, lhs, rhs, seed)
-            except Unsupported as exc:
-                raise Unprintable(str(exc)) from None
+        try:  # a counterexample's point (for every value of an array the page never gives)
+            ev = ev or (for_every_evidence(pr, lhs, rhs, *st.for_every[1:], st.model, seed)
+                        if st.for_every else _point(pr, lhs, rhs, seed))
+        except (Unsupported, ValueError) as exc:
+            raise Unprintable(str(exc)) from None
         rels.append(relation_record(pr, r.label, role, lhs, rhs, ev))
         if role != "corrected" and (pair := _restated_pair(eq.latex or "", lhs, rhs)):
             rels[-1]["restated"] = {"printed": "X^{-1} = Y", "proved": "X Y = 1",
@@ -269,10 +271,8 @@ def constants_only(side) -> bool:
             parts = [walk(a) for a in e.args]
             zero = any(z for z, _ in parts) if e.is_Mul else all(z for z, _ in parts)
             return zero, zero or all(f for _, f in parts)
-        if e.is_Pow and e.exp.is_Integer:
-            z, f = walk(e.base)
-            return z and e.exp > 0, f
-        return False, False
+        z, f = walk(e.base) if e.is_Pow and e.exp.is_Integer else (False, False)
+        return z and bool(e.is_Pow and e.exp > 0), f
     return all(walk(sp.sympify(x))[1] for x in entries_of(side))
 
 
@@ -293,13 +293,13 @@ def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
 #: the cross-product matrices by section, as latex/glyphs.csv declares them (the checking
 #: layer does not import the LaTeX reader): the capital of each vector; e and omega always
 #: (2.49; Theorem 3.3.1 and (3.39): Omega is skew with axial vector omega)
-_CPM_BY_SECTION = {"3.2.2": ("a", "b"), "3.4.2": ("a", "p"), "3.7": ("a", "p"),
-                   "3.8": ("r", "a", "c")}
+_CPM_BY_SECTION = {"3.2.2": "ab", "3.4.2": "ap", "3.7": "ap", "3.8": "rac"}  # their letters
 
 #: the model's fresh arrays for a printed glyph whose printed shape admits no product: the
 #: printed v-dot of (3.77a), a 4-array (N-tilde is 3 x 4), the conversion's garble of
-#: nu-dot (``derivations/sec3_4_2_rates.py``); its atoms ``sec342_vdot_1`` ... ``_4``
-_FRESH_ARRAYS = {"sec342_vdot": "\\dot{\\mathbf{v}}"}
+#: nu-dot (``derivations/sec3_4_2_rates.py``); its atoms ``sec342_vdot_1`` ... ``_4``; 3.148's
+#: P, never given on the page (any real 6 x 6: ``Statement.for_every``), row-major
+_FRESH_ARRAYS = {"sec342_vdot": "\\dot{\\mathbf{v}}", "s38_P": "\\mathbf{P}"}
 
 _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa", "lambda",
           "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega"}
@@ -356,7 +356,7 @@ def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]
     fresh: dict = {}  # a printed glyph the model writes as a fresh array of its own shape
     for g in atoms:
         names = g["names"]
-        if len(names) == 1 and (m := re.fullmatch(r"(.+)_(\d)", names[0])) and \
+        if len(names) == 1 and (m := re.fullmatch(r"(.+)_(\d+)", names[0])) and \
                 m.group(1) in _FRESH_ARRAYS and g["kind"] == "free":
             fresh.setdefault(m.group(1), []).append(names[0])
             continue

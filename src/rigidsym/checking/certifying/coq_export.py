@@ -122,6 +122,7 @@ def counterexample_lemmas(cert: dict) -> list[str]:
         if ev["type"] != "counterexample":
             continue
         point, angles = ev.get("point", {}), ev.get("angles", {})
+        point = {**dict.fromkeys(ev.get("for_every", []), "0"), **point}  # one of every value
         hit = None
         for i, (lr, rr) in enumerate(zip(rel["lhs"], rel["rhs"], strict=True)):
             for j, (a, b) in enumerate(zip(lr, rr, strict=True)):

@@ -23,8 +23,9 @@ The models (``derivations/sec3_7.py``, ``sec3_7_reciprocity.py``, ``sec3_8.py``,
   that defines them;
 - ``M_A``, the model's inertia dyad at A: the Hessian of the kinetic energy ``1/2 int rho
   ||v + omega x (p - a)||^2`` in the twist ``[omega; v]`` at A, which is the integral of
-  ``rho [[(P - A)^T (P - A), P - A], [(P - A)^T, 1]]`` (``P``, ``A`` the cross-product
-  matrices of ``p``, ``a``).
+  ``rho [[(P_i - A)^T (P_i - A), P_i - A], [(P_i - A)^T, 1]]`` (``P_i``, ``A`` the
+  cross-product matrices of the particle's ``p`` and of ``a``: the page's ``P`` of (3.148) is
+  another); ``M_C``, the ``M`` of (3.138) that the words after (3.146) subscript with C.
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ __all__ = ["wrench_inertia_symbols"]
 
 _O, _1 = r"\mathbf{O}", r"\mathbf{1}"
 _INT = r"\int_{\mathcal{B}} \rho "
-_PA = r"(\mathbf{P} - \mathbf{A})"
+_PA = r"(\mathbf{P}_i - \mathbf{A})"
 #: (glyph defined on the id with \equiv, section, LaTeX in the table's glyphs, words)
 _OWN = (
     (r"\mathbf{\Gamma}", "3.7", rf"\begin{{bmatrix}} {_O} & {_1} \\ {_1} & {_O} \end{{bmatrix}}",
@@ -56,7 +57,7 @@ _V = (r"\mathbf{V}", rf"\begin{{bmatrix}} {_1} & \mathbf{{A}} - \mathbf{{P}} \\ 
       rf"{_1} \end{{bmatrix}}", "wrench transfer from A to P as printed in (3.119b)")
 _M_A = (r"\mathbf{M}_A", _INT + rf"\begin{{bmatrix}} {_PA}^T{_PA} & {_PA} \\ {_PA}^T & {_1} "
         r"\end{bmatrix} d\mathcal{B}", "inertia dyad at A: the Hessian of the kinetic energy "
-        "1/2 int rho ||v + omega x (p - a)||^2 in the twist [omega; v] at A, P = CPM(p)")
+        "1/2 int rho ||v + omega x (p - a)||^2 in the twist [omega; v] at A, P_i = CPM(p)")
 
 
 def _defines(latex: str, glyph: str) -> bool:
@@ -127,8 +128,12 @@ def wrench_inertia_symbols(have: set, section: str, latex: str) -> list[dict]:
         for cap, vec in (("\\mathbf{R}", "\\mathbf{r}"), ("\\mathbf{C}", "\\mathbf{c}")):
             if cap not in got:
                 out.append({"glyph": cap, "cpm_of": vec})
-    if body and "\\mathbf{M}_A" in latex and "\\mathbf{P}" not in latex and \
-            "\\mathbf{a}" in have and "\\dot{\\mathbf{Q}}" not in have:
-        out.append({"glyph": "\\mathbf{P}", "cpm_of": "\\mathbf{p}"})  # a particle's, inside
+    if body and "\\mathbf{M}_A" in latex and "\\mathbf{a}" in have and \
+            "\\dot{\\mathbf{Q}}" not in have:
+        out += [{"glyph": g, "cpm_of": v} for g, v in (("\\mathbf{P}_i", "\\mathbf{p}"), (
+            "\\mathbf{A}", "\\mathbf{a}")) if g not in got]  # P_i: a particle's, inside
         line(*_M_A)
+    if body and "\\mathbf{M}_C" in latex:  # (3.148): the words after (3.146) subscript M with C
+        line("\\mathbf{M}_C", _OWN[5][2], "M of (3.138), subscripted C as the words after "
+             "(3.146) say (its moment of inertia centroidal)")
     return out
