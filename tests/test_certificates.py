@@ -76,7 +76,8 @@ def test_check_latex_certificate(tmp_path, capsys):
 
 def test_recheck_reports_a_failure(tmp_path, capsys):
     """A certificate changed on disk after writing: the re-check names it."""
-    from rigidsym.checking.certifying.certificates import certify_line, recheck_folder
+    from rigidsym.checking.certifying.certificates import recheck_folder
+    from rigidsym.checking.export import certify_line
 
     main(["verify", "3.13", "--quiet", "--certificates", str(tmp_path)])
     capsys.readouterr()

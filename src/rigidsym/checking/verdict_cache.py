@@ -54,7 +54,8 @@ from rigidsym.registry import usermodules
 from rigidsym.registry.declarations import REGISTRY, Equation, is_user_id
 
 __all__ = ["lookup", "store", "key_of", "transcription_key", "VerdictCacheWarning", "FORMAT",
-           "read", "claimed", "present"]
+           "read", "claimed", "present", "certificate_key", "read_certificate",
+           "store_certificate"]
 
 #: version of the entry format (an entry of another format is foreign)
 FORMAT = 1
@@ -343,6 +344,53 @@ def store(results: list, keys: dict) -> int:
             if built is not None:  # a user module's load need not build it again
                 write_atomic_bytes(built, b"")
     return len(todo)
+
+
+# --------------------------------------------------------------------------- certificates
+def certificate_key(eq_id: str, verdict: str, members: list[dict] | None,
+                    _deps: dict | None = None) -> str | None:
+    """The key of an id's certificate (hex SHA-256): its verdict's key (the package's
+    source, the certificate's code included, the declaration, the engine's settings), the
+    verdict and the members' statuses the certificate reads; ``None`` where the id is never
+    cached (:func:`key_of`)."""
+    k = key_of(eq_id, _deps)
+    status = json.dumps([m.get("status") for m in members or []])
+    return None if k is None else _digest([k, "certificate", verdict, status], eq_id)
+
+
+def _certificate_path(key: str) -> Path:
+    return _cache.folder("verdicts") / key[:2] / f"{key}.certificate.json"
+
+
+def read_certificate(eq_id: str, key: str) -> dict | str | None:
+    """The stored certificate of ``eq_id`` under ``key`` (a dict), the stored reason it has
+    none (a str), or ``None``: nothing stored, or an entry ignored with a
+    :class:`VerdictCacheWarning` (corrupt or foreign: recomputed, never trusted)."""
+    path = _certificate_path(key)
+    if not path.exists():
+        return None
+    data = _cache.get(path)
+    try:
+        if data is None:
+            raise ValueError("checksum does not match")
+        entry = json.loads(data)
+        made = entry.get("certificate")
+        if entry.get("format") != FORMAT or entry.get("key") != key or \
+                entry.get("id") != eq_id or not isinstance(made, dict | str):
+            raise ValueError("written for another key")
+        return made
+    except (ValueError, TypeError, AttributeError) as exc:
+        warnings.warn(f"verdict cache: ignored the certificate of {eq_id} ({path}): {exc}; "
+                      f"recomputed", VerdictCacheWarning, stacklevel=2)
+        return None
+
+
+def store_certificate(eq_id: str, key: str, made: dict | str) -> None:
+    """Store ``made``, the certificate of ``eq_id`` (a dict) or the reason it has none (a
+    str), under ``key`` (:func:`certificate_key`), atomically under the cache lock."""
+    entry = {"format": FORMAT, "key": key, "id": eq_id, "certificate": made}
+    with _cache.lock("verdicts"):
+        _cache.put(_certificate_path(key), json.dumps(entry).encode())
 
 
 usermodules.KNOWN_TO_BUILD = known_to_build

@@ -120,9 +120,9 @@ def run(args) -> int:
 def _certificates(results, directory, to_stderr: bool = False) -> None:
     """Write the shown verdicts' certificates and say, per id, whether each is certified and
     re-checked by certcheck (on stderr with ``--json``, so stdout stays the records)."""
-    from rigidsym.checking.certifying.certificates import certificate_field, write_certificates
+    from rigidsym.checking.export import certificate_field, export
 
-    done = write_certificates(results, directory, recheck=True)
+    done = export(results, directory, progress=False)
     for r in results:
         f = certificate_field(done, r.id)
         if f["file"] is None:

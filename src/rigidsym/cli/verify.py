@@ -130,7 +130,7 @@ def _document(results, certified) -> str:
         return text
     import json
 
-    from rigidsym.checking.certifying.certificates import certificate_field
+    from rigidsym.checking.export import certificate_field
 
     doc = json.loads(text)
     for row in doc["equations"]:
@@ -198,10 +198,10 @@ def run(args) -> int:
     wall = time.perf_counter() - t0
     certified = None
     if args.certificates:
-        from rigidsym.checking.certifying.certificates import certify_line, write_certificates
+        from rigidsym.checking.export import certify_line, export
 
-        certified = write_certificates(results, args.certificates, recheck=True,
-                                       book=args.book)
+        certified = export(results, args.certificates, book=args.book, jobs=args.jobs,
+                           cache=not args.no_cache, progress=not args.quiet)
         print(certify_line(certified, args.certificates), file=sys.stderr)
     if args.coq:
         print(_coq(results, args.certificates, certified, args.coq), file=sys.stderr)

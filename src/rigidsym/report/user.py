@@ -22,13 +22,9 @@ def certified(results, directory) -> dict:
     (``rigidsym report --certificates DIR``)."""
     import sys
 
-    from rigidsym.checking.certifying.certificates import (
-        certificate_field,
-        certify_line,
-        write_certificates,
-    )
+    from rigidsym.checking.export import certificate_field, certify_line, export
 
-    done = write_certificates(results, directory, recheck=True)
+    done = export(results, directory, progress=False)
     print(certify_line(done, directory), file=sys.stderr)
     return {r.id: certificate_field(done, r.id) for r in results}
 

@@ -57,9 +57,9 @@ from rigidsym.core.files import write_atomic
 from rigidsym.registry.declarations import REGISTRY
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
-__all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "write_certificates",
-           "certificate_file", "recheck_folder", "certify_line", "certificate_field",
-           "write_manifest", "cause_record", "CAUSE_CLASSES", "symbol_table"]
+__all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "certificate_or_reason",
+           "write_certificates", "certificate_file", "recheck_folder", "write_manifest",
+           "cause_record", "CAUSE_CLASSES", "symbol_table"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -641,8 +641,19 @@ def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, s
             rel["evidence"] = {"type": "identity", "why_not_cofactors": str(exc)}
 
 
+def certificate_or_reason(eq_id: str, verdict: str, members: list[dict] | None) -> dict | str:
+    """:func:`certificate` of a result, or why it has none (an undecided verdict, a
+    statement :class:`Unprintable`): what a folder's ``SKIPPED.txt`` says of the id."""
+    if verdict == "undecided":
+        return "undecided: nothing to certify"
+    try:
+        return certificate(eq_id, verdict, members)
+    except (Unprintable, ValueError) as exc:
+        return str(exc)
+
+
 def write_certificates(results, directory, recheck: bool = False,
-                       book: str | None = None) -> dict:
+                       book: str | None = None, made: dict | None = None) -> dict:
     """Write one certificate per decided result into ``directory`` (created), and a
     ``SKIPPED.txt`` naming the ids without one and why.
 
@@ -654,6 +665,8 @@ def write_certificates(results, directory, recheck: bool = False,
             (:func:`recheck_folder`).
         book: the book's text file (the referee's copy, never shipped): its SHA-256 goes
             into ``MANIFEST.json`` and the checker binds each certificate to its page.
+        made: id -> :func:`certificate_or_reason`, made before (the export's workers or
+            store: :mod:`rigidsym.checking.export`); an id not in it is made here.
 
     Returns:
         ``{"written": [ids], "skipped": {id: why}, "rechecked": {id: passed} or None,
@@ -664,13 +677,9 @@ def write_certificates(results, directory, recheck: bool = False,
     out.mkdir(parents=True, exist_ok=True)
     written, skipped, files, evidence = [], {}, {}, {}
     for r in results:
-        if r.verdict == "undecided":
-            skipped[r.id] = "undecided: nothing to certify"
-            continue
-        try:
-            cert = certificate(r.id, r.verdict, r.members)
-        except (Unprintable, ValueError) as exc:
-            skipped[r.id] = str(exc)
+        cert = (made or {}).get(r.id) or certificate_or_reason(r.id, r.verdict, r.members)
+        if isinstance(cert, str):
+            skipped[r.id] = cert
             continue
         write_atomic(out / certificate_file(r.id), json.dumps(cert, indent=1) + "\n")
         written.append(r.id)
@@ -771,30 +780,3 @@ def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
         failures["(certcheck)"] = proc.stderr.strip()[-300:]
     return {"rechecked": passed, "checker": where or "installed certcheck",
             "failures": failures, "not_read": not_read}
-
-
-def certificate_field(summary: dict, eq_id: str) -> dict:
-    """The ``certificate`` member of an id's JSON record (``verify --certificates --json``):
-    ``{"file", "evidence", "rechecked"}``, or ``{"file": None, "why"}``."""
-    if eq_id in summary["skipped"]:
-        return {"file": None, "why": summary["skipped"][eq_id]}
-    rechecked = summary["rechecked"]
-    return {"file": certificate_file(eq_id), "evidence": summary["evidence"].get(eq_id, []),
-            "rechecked": None if rechecked is None else rechecked.get(eq_id)}
-
-
-def certify_line(summary: dict, directory) -> str:
-    """One line on what was written and re-checked (``rigidsym verify --certificates``)."""
-    s = f"certificates: {len(summary['written'])} written to {directory}"
-    if summary["skipped"]:
-        s += f", {len(summary['skipped'])} ids without one (SKIPPED.txt)"
-    if summary["rechecked"] is None:
-        return s + "; certcheck not found, not re-checked (pip install ./certcheck)"
-    ok = sum(summary["rechecked"].values())
-    s += f"; certcheck re-checked {ok} of {len(summary['rechecked'])}"
-    if summary.get("not_read"):
-        s += (f", {len(summary['not_read'])} of them not read from the page on every side "
-              "(the certificate's word there)")
-    for i, why in summary["failures"].items():
-        s += f"\n  certcheck FAILED ({i}): {why}"
-    return s
