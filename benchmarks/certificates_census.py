@@ -2,7 +2,10 @@
 "Measured" table.
 
 Exports every id's certificate with the referee command (``rigidsym verify --certificates
-DIR``, with ``--book`` when the book's text is there), then counts, from the files:
+DIR``, with ``--book`` when the book's text is there) on an empty user cache (``export``:
+every verdict and certificate computed), then again on the cache it filled (``export_warm``:
+read from the verdict store), beside ``rigidsym verify`` alone on an empty cache
+(``verify_cold``), then counts, from the files:
 
 - the ids by verdict (and whether they agree with ``generated/report/chapter3.json``);
 - of the verified ids, how many are certified entirely by cofactors (every relation's
@@ -80,12 +83,16 @@ def timed(argv: list[str], env: dict | None = None) -> dict:
                 "stderr": err.read().decode("utf-8", "replace")}
 
 
-def export(folder: Path, book: Path | None, jobs: int) -> dict:
-    """The referee command: certificates written and re-checked by ``rigidsym verify``."""
-    argv = ["verify", "--certificates", str(folder), "--quiet", "--jobs", str(jobs)]
-    if book:
-        argv += ["--book", str(book)]
-    run = timed([sys.executable, "-c", _CLI, *argv])
+def export(folder: Path | None, book: Path | None, jobs: int, cache: Path) -> dict:
+    """The referee command, certificates written into ``folder`` and re-checked by ``rigidsym
+    verify`` (``None``: ``rigidsym verify`` alone, no certificate), with ``cache`` as the
+    user cache (an empty folder: everything computed; one an earlier run filled: the verdicts
+    and certificates read from its store)."""
+    argv = ["verify", "--quiet", "--jobs", str(jobs)]
+    if folder is not None:
+        argv[1:1] = ["--certificates", str(folder)] + (["--book", str(book)] if book else [])
+    run = timed([sys.executable, "-c", _CLI, *argv],
+                env={**os.environ, "RIGIDSYM_CACHE": str(cache)})
     lines = (run["stderr"] + run["stdout"]).splitlines()
     shown = " ".join("BOOK" if a == str(book) else a for a in argv)
     return {"command": "rigidsym " + shown.replace(str(folder), "DIR"),
@@ -194,7 +201,8 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--book", type=Path, default=_book_default(),
                     help="the book's text (default: ../shared/book/angeles-chapter3.md)")
-    ap.add_argument("--jobs", type=int, default=1, help="rigidsym verify's worker processes")
+    ap.add_argument("--jobs", type=int, default=2,
+                    help="rigidsym verify's worker processes (default 2)")
     ap.add_argument("--keep", type=Path, help="write the certificates here (kept)")
     ap.add_argument("--json", metavar="OUT", help="write the record here")
     args = ap.parse_args()
@@ -205,9 +213,13 @@ def main() -> None:
               "book": args.book is not None}
     with tempfile.TemporaryDirectory() as tmp:
         folder = args.keep or Path(tmp) / "certs"
-        print(f"exporting to {folder} ...", file=sys.stderr, flush=True)
-        record["export"] = export(folder, args.book, args.jobs)
-        print(json.dumps(record["export"]), file=sys.stderr, flush=True)
+        caches = Path(tmp) / "verify-cache", Path(tmp) / "export-cache"
+        for name, where, cache in (("verify_cold", None, caches[0]),
+                                   ("export", folder, caches[1]),
+                                   ("export_warm", Path(tmp) / "again", caches[1])):
+            print(f"{name} ...", file=sys.stderr, flush=True)
+            record[name] = export(where, args.book, args.jobs, cache)
+            print(json.dumps(record[name]), file=sys.stderr, flush=True)
         record.update(census(folder))
         record.update(sizes(folder))
         record["certcheck"] = {}

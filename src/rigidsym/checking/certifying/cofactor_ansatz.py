@@ -1,16 +1,23 @@
 """Cofactors by a linear ansatz, as Lean's ``linear_combination`` is used: find
 polynomials ``mu_i`` with ``f = sum mu_i h_i`` whose monomials are those that bring a term of
 ``h_i`` onto a term of ``f`` (and, ``rounds`` times, onto a term of what they produce), by
-exact linear algebra over Q (python-flint). No multiplier: the cofactors stay as small as the
-identity's own proof, where pseudo-division's initials blow them up (a rotation along a
-motion). ``None`` when the ansatz has no solution or is past its size.
+exact linear algebra over Q (sparse, sympy's ``DomainMatrix``). No multiplier: the cofactors
+stay as small as the identity's own proof, where pseudo-division's initials blow them up (a
+rotation along a motion). ``None`` when the ansatz has no solution or is past its size.
 """
 
 from __future__ import annotations
 
 import flint
+from sympy import QQ
+from sympy.polys.matrices import DomainMatrix
 
 __all__ = ["linear_combination", "hypothesis_polys"]
+
+
+def _qq(c):
+    q = flint.fmpq(c)
+    return QQ(int(q.p), int(q.q))
 
 
 def _divides(s: tuple, t: tuple) -> bool:
@@ -74,21 +81,20 @@ def linear_combination(f, hyps: list, rounds: int = 2, limit: int = 1500):
         return None
     keys = sorted(rows)
     n = len(unknowns)
-    A = flint.fmpq_mat(len(keys), n + 1)
-    for r, key in enumerate(keys):
-        for col, c in rows[key].items():
-            A[r, col] = c
-        A[r, n] = fd.get(key, 0)
-    R, rank = A.rref()
-    pivots = []
-    for r in range(rank):
-        col = next(c for c in range(n + 1) if R[r, c] != 0)
-        if col == n:
-            return None  # inconsistent: no such combination
-        pivots.append((r, col))
+    # the system is sparse (thousands of equations, a few unknowns each): sympy's sparse
+    # reduced row echelon form over Q, the same unique form a dense elimination gives (one of
+    # 4806 x 2611 in 0.04 s instead of 10 s), free unknowns 0
+    A = DomainMatrix({r: {**{col: _qq(c) for col, c in rows[key].items()},
+                          **({n: _qq(fd[key])} if key in fd else {})}
+                      for r, key in enumerate(keys)}, (len(keys), n + 1), QQ)
+    R, pivots = A.rref()
+    if pivots and pivots[-1] == n:
+        return None  # inconsistent: no such combination
+    R = R.to_sdm()
     sol = [flint.fmpq(0)] * n
-    for r, col in pivots:
-        sol[col] = R[r, n]
+    for r, col in enumerate(pivots):
+        v = R.get(r, {}).get(n, QQ.zero)
+        sol[col] = flint.fmpq(int(QQ.numer(v)), int(QQ.denom(v)))
     mus = [ctx.from_dict({}) for _ in hyps]
     for (i, m), v in zip(unknowns, sol, strict=True):
         if v != 0:
