@@ -81,8 +81,10 @@ def test_checker_size():
     command (its accounting of what is read; 1550 before the field K(s) of one square root,
     an unsquared norm's, 3.52-3.55), 900 of the second reader of the printed
     LaTeX (its notation, arrays and comparison; 850 before it read a side that is no array,
-    (3.94)'s 4 x 3 F-dot in a 3 x 4 slot, each other block held to the page), 250 of the
-    binding to the page (the locator, the manifest, the citations, the causes), 130 of a
+    (3.94)'s 4 x 3 F-dot in a 3 x 4 slot, each other block held to the page), 270 of the
+    binding to the page (the locator, the manifest, the citations, the causes; 250 before it
+    held (3.35)'s cases, "In the first two cases", to the untagged displays defining each
+    case's q and q_0, member by member), 130 of a
     referee's path through one id (``certcheck explain``), 50 of the printed relation that
     holds by definition (``by_definition``: a vacuous relation whose two sides are read) and
     60 of the relations printed under the page's braces (``braces``)."""
@@ -91,7 +93,7 @@ def test_checker_size():
     lines = {f.name: len(f.read_text().splitlines()) for f in (SRC / "certcheck").glob("*.py")}
     n = sum(k for name, k in lines.items() if name not in reader + page)
     m = sum(lines[name] for name in reader)
-    assert n <= 1610 and m <= 900 and lines["book.py"] <= 250, (n, m, lines["book.py"])
+    assert n <= 1610 and m <= 900 and lines["book.py"] <= 270, (n, m, lines["book.py"])
     assert lines["explain.py"] <= 130 and lines["by_definition.py"] <= 50
     assert lines["braces.py"] <= 60
 

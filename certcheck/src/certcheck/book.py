@@ -6,7 +6,8 @@
 - :func:`check_page`: a certificate's ``book_latex`` is that text (spaces collapsed, a
   closing comma or full stop dropped; a theorem's words a part of its paragraph), and the
   cause of a does-not-hold is one of the three classes, a conversion slip with its
-  declared page reading.
+  declared page reading; a relation's members held to the page's words and, where it says
+  "In the first two cases", to the displays defining each case.
 - :func:`check_manifest`: ``MANIFEST.json`` lists the SHA-256 of every certificate of the
   folder and of the book text, so a folder is one run of ``rigidsym verify``.
 """
@@ -38,6 +39,10 @@ def sha256(data: bytes) -> str:
     return hashlib.sha256(data).hexdigest()
 
 
+def _tagged(eq_id: str) -> re.Pattern:
+    return re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
+
+
 def _norm(text: str) -> str:
     return re.sub(r"\s+", " ", text).strip().rstrip(",.").strip()
 
@@ -55,8 +60,7 @@ def locate(book: str, eq_id: str) -> str:
         head = re.compile(r"\*\*" + word + num)
         hits = [line for line in book.splitlines() if head.match(line)]
     else:
-        tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
-        hits = [_TAG.sub("", d) for d in _DISPLAY.findall(book) if tag.search(d)]
+        hits = [_TAG.sub("", d) for d in _DISPLAY.findall(book) if _tagged(eq_id).search(d)]
     if len(hits) != 1:
         raise BookError(f"({eq_id}) is printed in {len(hits)} places of the book, not one")
     return _norm(hits[0])
@@ -69,10 +73,9 @@ def definitions_before(book: str, eq_id: str) -> dict:
     one relation) above it; ``\\equiv`` is a definition, ``=`` an equation of the page whose
     certificate the referee checks too (so a side read through it that differs from the
     certificate's is NOT READ, not a rejection: the model's glyph may be another's)."""
-    tag = re.compile(r"(?:\(\s*|\\tag\{)" + re.escape(eq_id) + r"\s*[)}]")
     out: dict = {}
     for m in _DISPLAY.finditer(book):
-        if tag.search(m.group(1)):
+        if _tagged(eq_id).search(m.group(1)):
             break
         tags = re.findall(r"(?:\((3\.\d+[a-z]?)\)|\\tag\{(3\.\d+[a-z]?)\})\s*$", m.group(1))
         if not tags:
@@ -144,6 +147,8 @@ def _family(eq_id: str, fam: list, book: str) -> None:
     lines = [{str(s.get("glyph")).replace(" ", ""): str(s.get("latex")).replace(" ", "")
               for s in r["symbols"] if isinstance(s, dict)} for r in fam]
     named = [(g, words[g]) for g in dict.fromkeys(k for m in lines for k in m) if g in words]
+    if not named and _cases(eq_id, lines, book):
+        return
     for g, listed in named or [("its glyphs", ["a member"])]:  # words list none: a failure
         carried = [m.get(g) for m in lines]
         if sorted(listed) != sorted(map(str, carried)):
@@ -154,11 +159,25 @@ def _family(eq_id: str, fam: list, book: str) -> None:
                             f"{len(listed)}), which the certificate does not carry"))
 
 
+def _cases(eq_id: str, lines: list, book: str) -> bool:
+    """The words "In the first k cases" between the id and the tagged display above it: the
+    members are those k cases, the untagged displays there (``G \\equiv X, \\quad ...``),
+    in order, each member's lines exactly its case's definitions (False: no such words)."""
+    text = book[:next(m.start() for m in _DISPLAY.finditer(book) if _tagged(eq_id).search(m[1]))]
+    text = text[max((m.end() for m in _DISPLAY.finditer(text) if _TAG.search(m[1])), default=0):]
+    k = re.search(r"[Ii]n the first (two|three|four) cases", text)
+    cases = [dict(p.replace(" ", "").split("\\equiv", 1) for p in re.split(r",\s*\\quad", d)
+                  if "\\equiv" in p) for d in _DISPLAY.findall(text)]
+    if k and lines != cases[:("two", "three", "four").index(k[1]) + 2]:
+        raise BookError(f"({eq_id}): the page prints the relation in the first {k[1]} cases "
+                        "above it, each defining its glyphs: the members' lines are not those")
+    return bool(k)
+
+
 def _prints(display: str, s: dict) -> bool:
     """``display`` prints the symbol line's glyph and its text (spaces aside)."""
-    squash = lambda t: re.sub(r"\s+", "", str(t))  # noqa: E731
-    return squash(s.get("glyph")) in squash(display) and squash(s.get("latex")) in \
-        squash(display)
+    return all(re.sub(r"\s+", "", str(s.get(k))) in re.sub(r"\s+", "", display)
+               for k in ("glyph", "latex"))
 
 
 def symbol_words(s) -> str:

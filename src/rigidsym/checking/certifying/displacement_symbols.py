@@ -20,15 +20,16 @@ The project's models (``derivations/sec3_2*.py``):
   as printed where an id defines them (``gamma_L``, ``e``, ``n``, ``kappa``, ``n_A``,
   ``n_B``, ``kappa_A``, ``kappa_B``, ``kappa_inf``); ``U`` as printed in (3.29b) (read in
   (3.29a), printed before it) with ``B`` the cross-product matrix of ``b``;
-- section 3.2.3 (``invariants_model``, ``triad_model``): ``q``, ``q_0`` the Euler-Rodrigues
-  parameters (the invariants the model takes: the page's first example below (3.34)), the
-  pose ``s`` as printed in (3.34) (not in (3.35), whose two relations are two models, the
-  Euler-Rodrigues parameters and the linear invariants: one line would cite the first for
-  both); the vector from ``A`` to the body point ``P_k = A + (column k of R)`` (the triad
-  of (3.37), orthonormal and right-handed) and the displaced triad ``e'_k = p'_k - a' = Q
-  (p_k - a)``; (3.39)'s ``q_ij``, the entries of ``Q`` in the triad's frame, ``R^T Q R``
-  (change of basis), with the range ``i, j = 1, 2, 3`` the page states in words (the line
-  of ``q_11`` carries ``"family": "ij"``: certcheck reads the relation for each i, j), and
+- section 3.2.3 (``invariants_model``, ``triad_model``): ``q``, ``q_0`` the
+  Euler-Rodrigues parameters (the invariants the model takes: the page's first example
+  below (3.34)), the pose ``s`` as printed in (3.34) ((3.35)'s two relations, the
+  Euler-Rodrigues parameters and the linear invariants, carry their own ``q``, ``q_0``,
+  each as its case's display prints it: ``invariant_rate_symbols.member_symbols``); the
+  vector from ``A`` to the body point ``P_k = A + (column k of R)`` (the triad of (3.37),
+  orthonormal and right-handed) and the displaced triad ``e'_k = p'_k - a' = Q (p_k -
+  a)``; (3.39)'s ``q_ij``, the entries of ``Q`` in the triad's frame, ``R^T Q R`` (change
+  of basis), with the range ``i, j = 1, 2, 3`` the page states in words (the line of
+  ``q_11`` carries ``"family": "ij"``: certcheck reads the relation for each i, j), and
   (3.40)'s ``[Q]``, that matrix ``R^T Q R`` (the frame the words before (3.39) name).
 
 Each line is given only where the id prints the glyph (and the table has the glyphs its

@@ -35,7 +35,9 @@ The project's models (``derivations/sec3_4_2.py``, ``rates_model``;
 The page's ``F`` is "correspondingly, N, L, or H, depending upon the invariant
 representation chosen" (after (3.79)), ``F-tilde`` one of ``N-tilde``, ... (after (3.80b)):
 :func:`member_symbols` gives those lines per certificate relation (labelled ``F = N``,
-``F~ = N~``, ...), so each member is read under its own representation.
+``F~ = N~``, ...), so each member is read under its own representation; and (3.35)'s two
+cases ("In the first two cases", the Euler-Rodrigues parameters and the linear invariants),
+each relation under the page's display of its ``q``, ``q_0`` above (3.35), verbatim.
 
 ``B`` and ``V``, only on the page that defines them by an erratum ((3.96e), (3.97d)), as
 (3.96a) and (3.97b) use them: ``B`` is 4(1 - cos phi) times the upper block of ``N-dot``,
@@ -248,11 +250,23 @@ def _members(rep: str) -> tuple:
     )
 
 
+#: (3.35)'s cases: the relation's label -> (its place among the page's cases, ``q``, ``q_0``
+#: as the display above (3.35) prints them)
+_CASES = {"Euler-Rodrigues": (1, r"\sin\left(\frac{\phi}{2}\right)\mathbf{e}",
+                              r"\cos\left(\frac{\phi}{2}\right)"),
+          "linear invariants": (2, r"(\sin \phi)\mathbf{e}", r"\cos \phi")}
+
+
 def member_symbols(label: str, section: str) -> list[dict]:
     """The lines of one certificate relation of the family ``F = N, L, H`` (its label ``F =
-    N`` or ``F~ = N~``, ...), ``{"glyph", "latex", "model"}``; ``[]`` for any other label or
-    outside sections 3.4.2 and 3.5. certcheck reads the page's one relation once per member,
+    N`` or ``F~ = N~``, ...), ``{"glyph", "latex", "model"}``, or of a case of (3.35) (its
+    ``q``, ``q_0`` as the page's k-th display above it prints them, ``printed_as``); ``[]``
+    for any other label or section. certcheck reads the page's one relation once per member,
     under the table and the member's lines."""
+    if section == "3.2.3" and label in _CASES:
+        k, q, q0 = _CASES[label]
+        return [{"glyph": g, "latex": x, "printed_as": f"case {k} above (3.35)"}
+                for g, x in ((r"\mathbf{q}", q), ("q_0", q0))]
     m = re.fullmatch(r"F~? = ([NLH])~?", label or "")
     if m is None or section not in ("3.4.2", "3.5"):
         return []
