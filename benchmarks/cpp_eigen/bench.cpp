@@ -3,8 +3,8 @@
 // Every call reads sample i % 256 of a table of inputs drawn once (so nothing is hoisted)
 // and adds its outputs into a checksum; the variants are timed in interleaved rounds (thread
 // CPU time), the least round kept: `bench N ROUNDS` prints one line per kernel and type:
-// "kernel type ns_layer ns_hand". First it checks that the two agree on every table sample
-// (relative 1e-9 double, 1e-4 float) and that the layer's status is 0 there.
+// "kernel type ns_layer ns_hand ns_hand_behind_a_call". First it checks that the two agree on
+// every table sample (relative 1e-9 double, 1e-4 float) and that the layer's status is 0 there.
 // SPDX-License-Identifier: MIT
 #include <time.h>
 
@@ -154,12 +154,19 @@ template <class S> S hand(int k, const Inputs<S>& in, int i) {
     }
 }
 
-// one timed loop per (kernel, variant), each its own instantiation so the switch folds away
-template <class S, int K, bool Hand> __attribute__((noinline)) S loop(const Inputs<S>& in, long n, int* st) {
+// the hand-written formula behind a call it cannot be inlined through, as the layer's C
+// function is (a separate object): what the call itself costs, apart from the formula
+template <class S, int K> __attribute__((noinline)) S hand_call(const Inputs<S>& in, int i) {
+    return hand<S>(K, in, i);
+}
+
+// one timed loop per (kernel, variant: 0 the layer, 1 the formula inline, 2 the formula
+// behind a call), each its own instantiation so the switch folds away
+template <class S, int K, int V> __attribute__((noinline)) S loop(const Inputs<S>& in, long n, int* st) {
     S acc = 0;
     for (long j = 0; j < n; ++j) {
         const int i = static_cast<int>(j & (kTable - 1));
-        acc += Hand ? hand<S>(K, in, i) : layer<S>(K, in, i, st);
+        acc += V == 1 ? hand<S>(K, in, i) : V == 2 ? hand_call<S, K>(in, i) : layer<S>(K, in, i, st);
     }
     return acc;
 }
@@ -175,19 +182,20 @@ template <class S, int K> bool run(const char* type, const Inputs<S>& in, long n
             return false;
         }
     }
-    double best[2] = {1e300, 1e300};
+    double best[3] = {1e300, 1e300, 1e300};
     volatile S sink = 0;
     for (int r = 0; r < rounds; ++r) {
-        for (int v = 0; v < 2; ++v) {
-            const int which = (r & 1) ? 1 - v : v;   // alternate which goes first
+        for (int v = 0; v < 3; ++v) {
+            const int which = (v + r) % 3;   // rotate which goes first
             const double t0 = now();
-            sink = sink + (which ? loop<S, K, true>(in, n, &st) : loop<S, K, false>(in, n, &st));
+            sink = sink + (which == 1 ? loop<S, K, 1>(in, n, &st)
+                           : which == 2 ? loop<S, K, 2>(in, n, &st) : loop<S, K, 0>(in, n, &st));
             const double dt = now() - t0;
             if (dt < best[which]) best[which] = dt;
         }
     }
-    std::printf("%s %s %.3f %.3f\n", kNames[K], type, 1e9 * best[0] / static_cast<double>(n),
-                1e9 * best[1] / static_cast<double>(n));
+    std::printf("%s %s %.3f %.3f %.3f\n", kNames[K], type, 1e9 * best[0] / static_cast<double>(n),
+                1e9 * best[1] / static_cast<double>(n), 1e9 * best[2] / static_cast<double>(n));
     return st == 0;
 }
 
