@@ -3,7 +3,7 @@
 Layout (``RIGIDSYM_CACHE``, else ``$XDG_CACHE_HOME/rigidsym``, else ``~/.cache/rigidsym``)::
 
     <root>/kernels/    compiled C kernels (rigidsym.kernels.cbuild.driver)
-    <root>/verdicts/   checked results (the verdict cache)
+    <root>/verdicts/   checked results and their certificates (the verdict cache)
     <root>/latex/      the LaTeX grammar's LALR analysis (lark's own cache=)
     <root>/statements/ the book declarations' built statements
                        (rigidsym.registry.statement_cache)
