@@ -9,6 +9,7 @@ rotation along a motion). ``None`` when the ansatz has no solution or is past it
 from __future__ import annotations
 
 import flint
+import numpy as np
 from sympy import QQ
 from sympy.polys.matrices import DomainMatrix
 
@@ -20,32 +21,37 @@ def _qq(c):
     return QQ(int(q.p), int(q.q))
 
 
-def _divides(s: tuple, t: tuple) -> bool:
-    return all(a <= b for a, b in zip(s, t, strict=True))
+def _rows(terms) -> np.ndarray:
+    """Exponent tuples as the rows of an integer array (sorted: a fixed order)."""
+    return np.array(sorted(terms), dtype=np.int64)
 
 
 def _candidates(f_terms: set, hyps: list, rounds: int, limit: int) -> list[set] | None:
-    """Per hypothesis, the monomials its cofactor may use."""
-    cand = [set() for _ in hyps]
+    """Per hypothesis, the monomials its cofactor may use: each quotient ``t / s`` of a
+    target term ``t`` by a term ``s`` of the hypothesis that divides it, and the terms such a
+    quotient brings, within ``f``'s degree in each variable, the next round's targets (the
+    divisibility of every pair tested at once, in NumPy). ``None`` past ``limit``."""
+    cand: list[set] = [set() for _ in hyps]
+    hs = [_rows(h) for h in hyps]
     targets, seen = set(f_terms), set()
-    box = tuple(max(e) for e in zip(*f_terms, strict=True))  # f's degree in each variable
+    box = _rows(f_terms).max(axis=0)  # f's degree in each variable
     total = 0
     for _ in range(rounds):
-        new = set()
-        for t in targets - seen:
-            for i, h in enumerate(hyps):
-                for s in h:
-                    if _divides(s, t):
-                        m = tuple(b - a for a, b in zip(s, t, strict=True))
-                        if m not in cand[i]:
-                            cand[i].add(m)
-                            total += 1
-                            if total > limit:
-                                return None
-                            for u in h:
-                                v = tuple(x + y for x, y in zip(m, u, strict=True))
-                                if all(a <= b for a, b in zip(v, box, strict=True)):
-                                    new.add(v)
+        new: set = set()
+        todo = targets - seen
+        for i, h in enumerate(hs):
+            if not todo or not len(h):
+                continue
+            t = _rows(todo)
+            ti, si = np.nonzero((h[None, :, :] <= t[:, None, :]).all(axis=2))
+            fresh = set(map(tuple, (t[ti] - h[si]).tolist())) - cand[i]
+            total += len(fresh)
+            if total > limit:
+                return None
+            if fresh:
+                cand[i] |= fresh
+                v = (_rows(fresh)[:, None, :] + h[None, :, :]).reshape(-1, h.shape[1])
+                new |= set(map(tuple, v[(v <= box).all(axis=1)].tolist()))
         seen |= targets
         targets = new | targets
     return cand
