@@ -50,14 +50,18 @@ def _cofactor_columns(q):
     return [cross(col[1], col[2]), cross(col[2], col[0]), cross(col[0], col[1])]
 
 def _by_powers(p, i: int) -> dict:
-    """``p`` as ``{k: coefficient of x_i^k}``."""
+    """``p`` as ``{k: coefficient of x_i^k}`` (the nonzero ones): the k-th derivative in
+    ``x_i`` at ``x_i = 0`` over k!, in python-flint's own loops (the terms' Python dict of
+    a polynomial of thousands of terms was the chain's costliest step)."""
     out: dict = {}
-    ctx = p.context()
-    for exps, c in p.to_dict().items():
-        e = list(exps)
-        k, e[i] = e[i], 0
-        out.setdefault(k, []).append((tuple(e), c))
-    return {k: ctx.from_dict(dict(v)) for k, v in out.items()}
+    fact = 1
+    for k in range(_degree(p, i) + 1):
+        a = p.subs({i: 0})
+        if not a.is_zero():
+            out[k] = a / fact if fact > 1 else a
+        p = p.derivative(i)
+        fact *= k + 1
+    return out
 
 
 def _member(R, T, main: str, cof: dict) -> dict:
