@@ -78,9 +78,16 @@ class _Ring:
 
 
 def _frac_add(a, b):
+    """``a + b`` of fractions ``(num, den)`` over the denominators' least common multiple
+    (a sum of terms over powers of one norm stays over its highest power, instead of their
+    product, which the reduction after it then divided out again)."""
     if a[1] == b[1]:
         return (a[0] + b[0], a[1])
-    return (a[0] * b[1] + b[0] * a[1], a[1] * b[1])
+    g = a[1].gcd(b[1])
+    if g.is_one():
+        return (a[0] * b[1] + b[0] * a[1], a[1] * b[1])
+    ag, bg = a[1] / g, b[1] / g
+    return (a[0] * bg + b[0] * ag, ag * b[1])
 
 
 def _reduce(p):
