@@ -16,10 +16,10 @@ then times ``--n`` calls of each in ``--rounds`` interleaved rounds (thread CPU 
 round); each variant runs ``--runs`` times, alternating. A third column times the same
 hand-written formula behind a call the compiler cannot inline through (``hand_call_ns``,
 ``ratio_call``): the layer's function lives in the static library, so what the inline
-formula gains over it by being inlined into the caller's loop is the call's share. The hand-written formulas are
-Eigen's own (``AngleAxis``) where Eigen has one, inline in the application as an engineer
-writes them; the layer is a call into the static library. Writes the record (ns a call,
-ratios layer / formula, the host, the load average before and after).
+formula gains over it by being inlined into the caller's loop is the call's share. The
+hand-written formulas are Eigen's own (``AngleAxis``) where Eigen has one, inline in the
+application as an engineer writes them. Writes the record (ns a call, ratios layer /
+formula, the host, the load average before and after).
 """
 
 from __future__ import annotations

@@ -77,9 +77,10 @@ def test_import_graph_is_standard_library_only(quick_certs):
 
 
 def test_checker_size():
-    """A referee reads it in an afternoon: at most 1610 lines of mathematics and the
+    """A referee reads it in an afternoon: at most 1630 lines of mathematics and the
     command (its accounting of what is read; 1550 before the field K(s) of one square root,
-    an unsquared norm's, 3.52-3.55), 900 of the second reader of the printed
+    an unsquared norm's, 3.52-3.55, 1610 before ``--jobs``, the certificates checked over
+    processes), 900 of the second reader of the printed
     LaTeX (its notation, arrays and comparison; 850 before it read a side that is no array,
     (3.94)'s 4 x 3 F-dot in a 3 x 4 slot, each other block held to the page), 270 of the
     binding to the page (the locator, the manifest, the citations, the causes; 250 before it
@@ -93,7 +94,7 @@ def test_checker_size():
     lines = {f.name: len(f.read_text().splitlines()) for f in (SRC / "certcheck").glob("*.py")}
     n = sum(k for name, k in lines.items() if name not in reader + page)
     m = sum(lines[name] for name in reader)
-    assert n <= 1610 and m <= 900 and lines["book.py"] <= 270, (n, m, lines["book.py"])
+    assert n <= 1630 and m <= 900 and lines["book.py"] <= 270, (n, m, lines["book.py"])
     assert lines["explain.py"] <= 130 and lines["by_definition.py"] <= 50
     assert lines["braces.py"] <= 60
 

@@ -75,3 +75,24 @@ def test_the_key_follows_the_verdict_and_the_statuses(cache):
     assert len({base, k("3.13", "does-not-hold", [{"status": "holds"}]),
                 k("3.13", "verified", [{"status": "fails"}]),
                 k("3.13", "verified", []), k("3.14", "verified", [{"status": "holds"}])}) == 5
+
+
+def test_certcheck_over_processes_says_what_it_says_in_one(cache, tmp_path):
+    """``certcheck --jobs 2`` (the export's) prints the same lines in the same order and
+    exits as one process does, a failing certificate included."""
+    import re
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    folder = tmp_path / "certs"
+    _export(folder)
+    (folder / "3.13.json").write_text("{")      # a malformed certificate: FAILED
+    src = Path(__file__).resolve().parents[1] / "certcheck" / "src"
+
+    def run(jobs: int):
+        p = subprocess.run([sys.executable, "-m", "certcheck", "--jobs", str(jobs), str(folder)],
+                           capture_output=True, text=True, env={"PYTHONPATH": str(src)})
+        return p.returncode, re.sub(r"\[[\d.]+ s\]|, [\d.]+ s", "", p.stdout)
+    one, two = run(1), run(2)
+    assert one == two and one[0] == 1 and "FAILED 3.13.json" in one[1], one

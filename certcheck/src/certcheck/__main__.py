@@ -1,5 +1,6 @@
-"""``python -m certcheck [--book BOOK] [--lenient] [--no-flint] [--quiet] PATH...``: check
-certificates (files, or every ``*.json`` of a folder); with ``--book``, each against the text
+"""``python -m certcheck [--book BOOK] [--jobs N] [--lenient] [--no-flint] [--quiet] PATH...``:
+check certificates (files, or every ``*.json`` of a folder; over N processes with
+``--jobs``, the same output in the same order); with ``--book``, each against the text
 printed as its id and against its folder's ``MANIFEST.json``; print the hypotheses, the
 printed text, the symbols, a cause and a verdict per id. Exit 0: every certificate proved
 and every printed side read from the page; 1: a certificate fails; 2: bad arguments; 3:
@@ -9,6 +10,7 @@ nothing fails, but a printed side is not read from the page (or no ``--book``): 
 from __future__ import annotations
 
 import argparse
+import functools
 import os
 import re
 import sys
@@ -59,6 +61,42 @@ def _manifests(paths, files, book_bytes) -> tuple[int, list[str]]:
     return failed, lines
 
 
+def _one(path: str, book: str | None, fast: bool, quiet: bool) -> tuple[str, int, int]:
+    """One certificate file checked: ``(its output lines, n printed sides, k of them read)``,
+    ``n = -1`` where it failed."""
+    t = time.perf_counter()
+    try:
+        cert = load(path)
+        if book is not None and os.path.basename(path) != \
+                re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
+            raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
+                            f"in the file of another id")
+        page = check_page(cert, book) if book is not None else cause_lines(cert)
+        verdict, lines = check_certificate(cert, fast=fast)
+        k = n = 0
+        if book is not None:  # the second reader: what is proved is what is printed
+            eq_id = str(cert.get("id"))
+            defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
+            page += compare(cert, locate(book, eq_id), fast=fast, defs=defs,
+                            counts=(counts := []), later=displays_after(book, eq_id))
+            (k, n, firm), = counts
+            vac, lines_read = unread_vacuous(cert, firm)  # vacuous: read, or not
+            k, page = max(0, k - 2 * vac), page + lines_read
+        else:
+            n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
+    except (CheckError, BookError, OSError, ValueError) as exc:
+        return f"FAILED {os.path.basename(path)}: {exc}", -1, 0
+    except Exception as exc:  # a malformed certificate is a failure, never a pass
+        return f"FAILED {os.path.basename(path)}: {type(exc).__name__}: {exc}", -1, 0
+    out = [(f"CHECKED ({cert.get('id')}) {verdict}" if k == n else
+            f"NOT READ {os.path.basename(path)}: ({cert.get('id')}) {verdict} proved, "
+            f"{n - k} of {n} printed sides not read from the page (the certificate's "
+            "word)") + f"  [{time.perf_counter() - t:.2f} s]"]
+    if not quiet:
+        out += [f"    {line}" for line in page + lines]
+    return "\n".join(out), n, k
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     if argv[:1] == ["explain"]:
@@ -72,10 +110,14 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--no-flint", action="store_true",
                     help="standard-library arithmetic only, even when python-flint is there")
     ap.add_argument("--quiet", action="store_true", help="one line per certificate")
+    ap.add_argument("--jobs", type=int, default=1, metavar="N",
+                    help="check the certificates over N processes (the same output, in order)")
     ap.add_argument("--lenient", action="store_true",
                     help="exit 0 when nothing fails, though a printed side is not read "
                          "(NOT READ: the certificate's word) or no --book is given")
     args = ap.parse_args(argv)
+    if args.jobs < 1:
+        ap.error(f"--jobs: expected a positive integer, got {args.jobs}")
     files = _files(args.paths)
     if not files:
         print("certcheck: no certificate found", file=sys.stderr)
@@ -94,43 +136,20 @@ def main(argv: list[str] | None = None) -> int:
     for line in head:
         print(line)
     failed = not_read = sides = unread = 0
-    for path in files:
-        t = time.perf_counter()
-        try:
-            cert = load(path)
-            if book is not None and os.path.basename(path) != \
-                    re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
-                raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
-                                f"in the file of another id")
-            page = check_page(cert, book) if book is not None else cause_lines(cert)
-            verdict, lines = check_certificate(cert, fast=not args.no_flint)
-            k = n = 0
-            if book is not None:  # the second reader: what is proved is what is printed
-                eq_id = str(cert.get("id"))
-                defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
-                page += compare(cert, locate(book, eq_id), fast=not args.no_flint, defs=defs,
-                                counts=(counts := []), later=displays_after(book, eq_id))
-                (k, n, firm), = counts
-                vac, lines_read = unread_vacuous(cert, firm)  # vacuous: read, or not
-                k, page = max(0, k - 2 * vac), page + lines_read
-            elif book is None:
-                n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
-        except (CheckError, BookError, OSError, ValueError) as exc:
+    one = functools.partial(_one, book=book, fast=not args.no_flint, quiet=args.quiet)
+    if args.jobs > 1 and len(files) > 1:
+        import multiprocessing
+
+        with multiprocessing.Pool(min(args.jobs, len(files))) as pool:
+            results = list(pool.imap(one, files))  # in order: the output is the same
+    else:
+        results = map(one, files)
+    for out, n, k in results:
+        print(out)
+        if n < 0:
             failed += 1
-            print(f"FAILED {os.path.basename(path)}: {exc}")
-            continue
-        except Exception as exc:  # a malformed certificate is a failure, never a pass
-            failed += 1
-            print(f"FAILED {os.path.basename(path)}: {type(exc).__name__}: {exc}")
-            continue
-        sides, unread, not_read = sides + n, unread + n - k, not_read + (k < n)
-        print((f"CHECKED ({cert.get('id')}) {verdict}" if k == n else
-               f"NOT READ {os.path.basename(path)}: ({cert.get('id')}) {verdict} proved, "
-               f"{n - k} of {n} printed sides not read from the page (the certificate's "
-               "word)") + f"  [{time.perf_counter() - t:.2f} s]")
-        if not args.quiet:
-            for line in page + lines:
-                print(f"    {line}")
+        else:
+            sides, unread, not_read = sides + n, unread + n - k, not_read + (k < n)
     print(f"certcheck: {len(files) - failed - not_read} of {len(files)} certificates "
           f"checked (every printed side read from the page), {not_read} not read on every "
           f"side ({unread} of {sides} printed sides not read), {failed} failed, "

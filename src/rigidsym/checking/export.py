@@ -61,7 +61,7 @@ def export(results, directory, book: str | None = None, jobs: int = 1, cache: bo
         if summary["written"]:
             with rep.phase(f"certcheck on {len(summary['written'])} certificates") as ph:
                 summary.update(recheck_folder(directory, {certificate_file(i): i for i in
-                                                          summary["written"]}, book))
+                                                          summary["written"]}, book, jobs))
                 ph.finish("re-checked")
     return summary
 

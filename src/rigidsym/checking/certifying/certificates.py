@@ -734,7 +734,7 @@ def write_manifest(directory, names: list[str], book: str | None = None) -> dict
     return man
 
 
-def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
+def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 1) -> dict:
     """Run the independent checker (``python -m certcheck``, a separate process that
     imports no rigidsym) on ``directory``.
 
@@ -743,6 +743,7 @@ def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
         files: certificate file name -> id.
         book: the book's text file, passed on as ``--book`` (each certificate is then
             bound to the text printed as its id, the folder to its manifest).
+        jobs: certcheck's processes (``--jobs``).
 
     Returns:
         ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
@@ -761,8 +762,8 @@ def recheck_folder(directory, files: dict, book: str | None = None) -> dict:
     if where:
         env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
     book_args = [] if book is None else ["--book", str(book)]
-    proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", *book_args,
-                           str(directory)],
+    proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", "--jobs", str(jobs),
+                           *book_args, str(directory)],
                           capture_output=True, text=True, env=env, check=False)
     failures, not_read = {}, {}
     for line in proc.stdout.splitlines():
