@@ -326,10 +326,12 @@ def wrench_axis_nearest_point() -> Statement:
           latex=r"The projection of the resultant moment onto the wrench axis is identical "
                 r"for all points")
 def axial_moment_invariant() -> Statement:
-    """Theorem 3.7.2: ``e'' . n_P = e'' . n_A`` for generic points A and P.
+    """Theorem 3.7.2: ``e'' . n_P = e'' . n_A`` for generic points A and P, the relation
+    the theorem's words state (certcheck's table of them, ``certcheck.words``): the claim
+    is the page's relation 1.
 
     Book: Sec. 3.7, Theorem 3.7.2 (cf. Theorem 3.4.1 / (3.51)).
     """
     model, ex = _wrench_model()
     model[e_w] = im(ex["e"])
-    return Statement([], model, claims=[Rel(e_w.T * n_P, e_w.T * n_A)])
+    return Statement([], model, claims=[Rel(e_w.T * n_P, e_w.T * n_A, page=1)])  # the words

@@ -181,6 +181,8 @@ def instant_screw_symbols(have: set, section: str, latex: str,
                 if "\\alpha" in have and any(f"{g} \\equiv" in latex for g, _, _ in _ISA_LINE):
                     rows += _ISA_LINE  # (3.54), (3.55): e', n' and the array as printed
         return _lines(rows, have)
+    if section == "3.4" and dot_q in have and "angular-velocity vector" in latex:  # the
+        return _lines(_FIXED_POINT[2:], have)  # words of Corollary 3.4.1: Omega, omega
     if section != "3.4.2":
         return []
     atom = {e["glyph"]: e for e in table if "atoms" in e}
