@@ -42,6 +42,16 @@ WORDS = {
         r"\boldsymbol{\omega} \cdot \dot{\mathbf{p}} = \boldsymbol{\omega} \cdot \dot{\mathbf{a}}",
         "the projection of v onto omega is (omega . v)/||omega||: identical for any two "
         "points P and A exactly when omega . p-dot = omega . a-dot (the page's display)"),
+    "thm3.7.1": (
+        "For a given system of forces and moments acting on a rigid body, if the resultant "
+        "force is applied at any point of a particular line $\\mathcal{L}''$ , then the "
+        "resultant moment is of minimum magnitude. Moreover, that minimum-magnitude moment "
+        "is parallel to the resultant force.",
+        r"\|\mathbf{n}_A\|^2 = \|\mathbf{n}_0\|^2 + \|\mathbf{f} \times (\mathbf{a} - "
+        r"\mathbf{p})\|^2, \quad \mathbf{f} \times \mathbf{n}_0 = \mathbf{0}",
+        "n_0, the moment about a point P of L'', is n_A - f x (a - p) (3.107) for every A: it "
+        "is of minimum magnitude exactly when the cross term 2 n_0 . f x (a - p) vanishes for "
+        "every A, i.e. when ||n_A||^2 = ||n_0||^2 + ||f x (a - p)||^2; parallel: f x n_0 = 0"),
     "thm3.7.2": (
         "Consider a system of moments and forces acting on a rigid body, with the resultant "
         "force applied at an arbitrary point of the body. The projection of the resultant "
