@@ -88,7 +88,7 @@ def test_checker_size():
     case's q and q_0, member by member), 130 of a
     referee's path through one id (``certcheck explain``), 50 of the printed relation that
     holds by definition (``by_definition``: a vacuous relation whose two sides are read) and
-    60 of the relations printed under the page's braces (``braces``) and 80 of the table of
+    60 of the relations printed under the page's braces (``braces``) and 120 of the table of
     the theorems the page states in words (``words``: the trusted base, each entry a
     statement, its relation in the page's glyphs and why, read in minutes)."""
     reader, page = ("reader.py", "arrays.py", "compare.py"), ("book.py", "explain.py",
@@ -99,7 +99,7 @@ def test_checker_size():
     m = sum(lines[name] for name in reader)
     assert n <= 1612 and m <= 900 and lines["book.py"] <= 270, (n, m, lines["book.py"])
     assert lines["explain.py"] <= 130 and lines["by_definition.py"] <= 50
-    assert lines["braces.py"] <= 60 and lines["words.py"] <= 80
+    assert lines["braces.py"] <= 60 and lines["words.py"] <= 120
 
 
 @pytest.mark.parametrize("fast", [True, False])
