@@ -42,6 +42,17 @@ WORDS = {
         r"\boldsymbol{\omega} \cdot \dot{\mathbf{p}} = \boldsymbol{\omega} \cdot \dot{\mathbf{a}}",
         "the projection of v onto omega is (omega . v)/||omega||: identical for any two "
         "points P and A exactly when omega . p-dot = omega . a-dot (the page's display)"),
+    "thm3.4.2": (
+        "Given a rigid body under general motion, a set of its points located on a line "
+        "$\\mathcal{L}'$ undergoes the identical minimum-magnitude velocity $\\mathbf{v}_0$ "
+        "parallel to the angular velocity.",
+        r"\dot{\mathbf{p}} = \mathbf{v}_0, \quad \boldsymbol{\omega} \times \mathbf{v}_0 = "
+        r"\mathbf{0}, \quad \|\dot{\mathbf{a}}\|^2 - \|\mathbf{v}_0\|^2 = "
+        r"\|\boldsymbol{\omega} \times (\mathbf{a} - \mathbf{p}'_0)\|^2",
+        "p = p'_0 + alpha omega, any point of the line L' (alpha free): its velocity is v_0 "
+        "(identical); v_0 is parallel to omega; the velocity a-dot = v_0 + omega x (a - p'_0) "
+        "(3.50) of any point A is of magnitude at least ||v_0|| exactly when the cross term "
+        "vanishes for every A, i.e. when ||a-dot||^2 - ||v_0||^2 = ||omega x (a - p'_0)||^2"),
     "thm3.7.1": (
         "For a given system of forces and moments acting on a rigid body, if the resultant "
         "force is applied at any point of a particular line $\\mathcal{L}''$ , then the "
