@@ -85,8 +85,9 @@ def test_checker_size():
     (3.94)'s 4 x 3 F-dot in a 3 x 4 slot, each other block held to the page), 270 of the
     binding to the page (the locator, the manifest, the citations, the causes; 250 before it
     held (3.35)'s cases, "In the first two cases", to the untagged displays defining each
-    case's q and q_0, member by member), 130 of a
-    referee's path through one id (``certcheck explain``), 50 of the printed relation that
+    case's q and q_0, member by member), 132 of a
+    referee's path through one id (``certcheck explain``; 130 before it said where a
+    theorem's words are read through the table of ``words``), 50 of the printed relation that
     holds by definition (``by_definition``: a vacuous relation whose two sides are read) and
     60 of the relations printed under the page's braces (``braces``) and 120 of the table of
     the theorems the page states in words (``words``: the trusted base, each entry a
@@ -98,7 +99,7 @@ def test_checker_size():
     n = sum(k for name, k in lines.items() if name not in reader + page)
     m = sum(lines[name] for name in reader)
     assert n <= 1612 and m <= 900 and lines["book.py"] <= 270, (n, m, lines["book.py"])
-    assert lines["explain.py"] <= 130 and lines["by_definition.py"] <= 50
+    assert lines["explain.py"] <= 132 and lines["by_definition.py"] <= 50
     assert lines["braces.py"] <= 60 and lines["words.py"] <= 120
 
 
