@@ -266,7 +266,9 @@ def minimum_velocity_line() -> Statement:
     (:func:`body_velocity`). Checked: (i) ``v(x1 + alpha omega) = v(x1)`` for every
     ``alpha`` (identical velocity on the line); (ii) ``omega x v(x1) = 0`` (parallel to
     ``omega``); (iii) for every point ``x``, ``||v(x)||^2 - ||v(x1)||^2 =
-    ||omega x (x - x1)||^2 >= 0``, zero iff ``x`` lies on ``L'`` (minimum magnitude).
+    ||omega x (x - x1)||^2 >= 0``, zero iff ``x`` lies on ``L'`` (minimum magnitude), ``x``
+    the motion's arbitrary point A (``a``, ``a-dot`` free): the relations the theorem's
+    words state (``certcheck.words``).
 
     Book: Sec. 3.4, Theorem 3.4.2. Singular set: ``omega = 0``.
     """
@@ -274,7 +276,7 @@ def minimum_velocity_line() -> Statement:
     om = sp.Matrix(m[Mt.omega])
     x1 = isa_point_nearest(sp.zeros(3, 1), m)
     alpha = scalar("s34_alpha")
-    x = vector("s34_x")
+    x = sp.Matrix(m[Mt.a])  # the arbitrary point: the page's A, of velocity a-dot (3.50)
     v1 = body_velocity(x1, m)
     vx = body_velocity(x, m)
     d = cross(om, x - x1)

@@ -217,20 +217,24 @@ def minimum_moment_line() -> Statement:
     (a sum of squares: the moment at p_L has minimum magnitude); (iii)
     ``f x n_Q = -||f||^2 (q - p0) + f f^T (q - p0)``, which vanishes iff q - p0 is parallel
     to f: the points of minimum moment form exactly the line through p0 along f.
-    Same structure as Theorem 3.4.2 (ISA) with (omega, v) -> (f, n).
+    Same structure as Theorem 3.4.2 (ISA) with (omega, v) -> (f, n). Q is the page's
+    arbitrary point A (its atoms ``s37_a``: the table's ``a``, ``n_A``); (ii) and (i) are
+    the relations the theorem's words state, in that order (``certcheck.words``), (iii)
+    the proof's own.
 
     Book: Sec. 3.7, Theorem 3.7.1.
     """
     model, ex = _wrench_model()
     mom, fv, p0 = ex["moment"], model[f], ex["p0"]
-    pl, qv = p0 + ex["lam"] * fv, vector("s37_q")
+    pl, qv = p0 + ex["lam"] * fv, vector("s37_a")  # Q arbitrary: the page's A (n_A)
     n_L, n_Q, q, pL = vec("n_L"), vec("n_Q"), vec("q"), vec("p_L")
     model.update({n_L: im(mom(pl)), n_Q: im(mom(qv)), q: im(qv), pL: im(pl),
                   p0_w: im(p0)})
     d = _x(f, q - pL)
     return Statement([], model, claims=[
-        Rel(_x(f, n_L), sp.zeros(3, 1), "moment on the line is parallel to f"),
-        Rel(n_Q.T * n_Q, n_L.T * n_L + d.T * d, "moment magnitude is minimum on the line"),
+        Rel(_x(f, n_L), sp.zeros(3, 1), "moment on the line is parallel to f", page=2),
+        Rel(n_Q.T * n_Q, n_L.T * n_L + d.T * d, "moment magnitude is minimum on the line",
+            page=1),
         Rel(_x(f, n_Q), -norm_f**2 * (q - p0_w) + f * (f.T * (q - p0_w)),
             "moment parallel to f only on the line"),
     ])
@@ -326,10 +330,12 @@ def wrench_axis_nearest_point() -> Statement:
           latex=r"The projection of the resultant moment onto the wrench axis is identical "
                 r"for all points")
 def axial_moment_invariant() -> Statement:
-    """Theorem 3.7.2: ``e'' . n_P = e'' . n_A`` for generic points A and P.
+    """Theorem 3.7.2: ``e'' . n_P = e'' . n_A`` for generic points A and P, the relation
+    the theorem's words state (certcheck's table of them, ``certcheck.words``): the claim
+    is the page's relation 1.
 
     Book: Sec. 3.7, Theorem 3.7.2 (cf. Theorem 3.4.1 / (3.51)).
     """
     model, ex = _wrench_model()
     model[e_w] = im(ex["e"])
-    return Statement([], model, claims=[Rel(e_w.T * n_P, e_w.T * n_A)])
+    return Statement([], model, claims=[Rel(e_w.T * n_P, e_w.T * n_A, page=1)])  # the words

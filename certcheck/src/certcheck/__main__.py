@@ -28,6 +28,7 @@ from certcheck.braces import displays_after
 from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
+from certcheck.words import said, stated
 
 
 def _files(paths: list[str]) -> list[str]:
@@ -77,8 +78,10 @@ def _one(path: str, book: str | None, fast: bool, quiet: bool) -> tuple[str, int
         if book is not None:  # the second reader: what is proved is what is printed
             eq_id = str(cert.get("id"))
             defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
-            page += compare(cert, locate(book, eq_id), fast=fast, defs=defs,
-                            counts=(counts := []), later=displays_after(book, eq_id))
+            text = locate(book, eq_id)  # a theorem in words: the relation they state
+            page += said(eq_id, text) + compare(
+                cert, stated(eq_id, text), fast=fast, defs=defs, counts=(counts := []),
+                later=displays_after(book, eq_id))
             (k, n, firm), = counts
             vac, lines_read = unread_vacuous(cert, firm)  # vacuous: read, or not
             k, page = max(0, k - 2 * vac), page + lines_read

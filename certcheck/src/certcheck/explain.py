@@ -26,6 +26,7 @@ from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
 from certcheck.reader import tokens
+from certcheck.words import stated
 
 __all__ = ["explain", "run"]
 
@@ -49,8 +50,9 @@ def explain(cert: dict, book: str, fast: bool = True) -> tuple[bool, list[str]]:
     """
     eq_id = str(cert.get("id"))
     defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
-    page = locate(book, eq_id)
-    out = [f"({eq_id}) printed as: {page}", "the symbol-table lines its glyphs use:"]
+    page = stated(eq_id, text := locate(book, eq_id))  # a theorem in words: what they state
+    out = [f"({eq_id}) {'stated in words' if page != text else 'printed'} as: {page}",
+           "the symbol-table lines its glyphs use:"]
     table = [s for s in cert.get("symbols") or [] if isinstance(s, dict)]
     for r in cert.get("relations") or []:
         table += [s for s in r.get("symbols") or [] if isinstance(s, dict)]

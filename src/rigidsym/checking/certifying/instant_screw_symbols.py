@@ -105,6 +105,10 @@ _ON_ISA = (r"\mathbf{p}'_0 + \alpha\boldsymbol{\omega}", "point of the ISA, p'_0
 _NEAREST_A = (rf"\mathbf{{p}}'_0 + \frac{{\boldsymbol{{\omega}}^T(\mathbf{{a}} - "
               rf"\mathbf{{p}}'_0)}}{{{_W2}}}\boldsymbol{{\omega}}", "solution of (3.61) that "
               "(3.63) takes: the ISA point nearest A, the foot of the perpendicular from A")
+#: the velocity of a point P of the ISA, (3.49) (Theorem 3.4.2's words)
+_ISA_VELOCITY = (r"\dot{\mathbf{p}}", r"\dot{\mathbf{a}} + \boldsymbol{\Omega}(\mathbf{p} - "
+                 r"\mathbf{a})", "velocity of the point P of the ISA, a-dot + Omega (p - a) "
+                 "as printed in (3.49)")
 #: section 3.4.2's pure translation (the atom sec342_sigma its speed ||v||)
 _TRANSLATION = (
     (r"\mathbf{v}", r"\|\mathbf{v}\|\mathbf{e}", "velocity of the pure translation along the "
@@ -181,6 +185,11 @@ def instant_screw_symbols(have: set, section: str, latex: str,
                 if "\\alpha" in have and any(f"{g} \\equiv" in latex for g, _, _ in _ISA_LINE):
                     rows += _ISA_LINE  # (3.54), (3.55): e', n' and the array as printed
         return _lines(rows, have)
+    if section == "3.4" and dot_q in have and "angular-velocity vector" in latex:  # the
+        return _lines(_FIXED_POINT[2:], have)  # words of Corollary 3.4.1: Omega, omega
+    if section == "3.4" and "\\mathbf{v}_0" in latex and "\\alpha" in have:  # Thm 3.4.2
+        return _lines([*_FIXED_POINT[2:], _ISA[0], _V0, ("\\mathbf{p}", *_ON_ISA),
+                       _ISA_VELOCITY], have)
     if section != "3.4.2":
         return []
     atom = {e["glyph"]: e for e in table if "atoms" in e}
