@@ -245,16 +245,15 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
 
 
 def _defined_through(eq_id: str, section: str) -> dict:
-    """The glyphs each glyph is defined through by the definitions of ``section`` declared
-    before ``eq_id`` (3.22's ``e``: ``p_2``, ``p_1``, ``||p_2 - p_1||``)."""
-    out: dict = {}
-    for d in REGISTRY.values():
-        if d.id == eq_id:
-            return out
+    """The glyphs no definition defines that each glyph is defined through by the
+    definitions of ``section`` declared before ``eq_id`` (3.22's ``e``: ``p_2``, ``p_1``,
+    ``||p_2 - p_1||``; a defined glyph is read through its own definition: 3.125's ``q_O``)."""
+    out, ids = {}, list(REGISTRY)
+    for d in (REGISTRY[i] for i in ids[:ids.index(eq_id)]):
         st = d.build() if d.section == section and d.kind == "definition" else None
         for r in (r for r in st.printed if str(r.lhs) in st.defines) if st else ():
             out.setdefault(r.lhs, set()).update(getattr(r.rhs, "free_symbols", set()))
-    return out
+    return {g: hs - set(out) for g, hs in out.items()}
 
 
 def _glyph_atoms(pr: StatementPrinter, rel, model: dict, through: dict) -> None:
