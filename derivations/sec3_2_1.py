@@ -341,20 +341,23 @@ def screw_system_rhs() -> Statement:
 def screw_axis_point_formula() -> Statement:
     """``p0 = (Q - 1)^T (Q a - a') / (2 (1 - cos phi))``, for ``phi != 0``.
 
-    Checked by the conditions that characterise ``p0`` for a generic displacement
-    ``x -> Q x + c``: ``e^T p0 = 0`` (closest to the origin) and the displacement of ``p0``,
-    ``a' + Q (p0 - a) - p0`` (Eqs. (3.2), (3.3)), parallel to ``e``
-    (``(1 - e e^T)(a' + Q (p0 - a) - p0) = 0``); for ``phi != 0`` the two determine ``p0``
-    uniquely (the rank of ``Q - 1`` is 2, Eq. (3.9b)). :func:`screw_axis_point` is checked
-    against the printed form.
+    Checked against the model's ``p0``, the point closest to the origin of the axis of a
+    displacement written about its own line (:func:`screw_displacement_model`: a rotation
+    ``Q`` about the line through ``w`` along ``e`` and a slide ``d0`` along it, ``p0 = w -
+    (e^T w) e`` by minimisation). Claims: the conditions that characterise ``p0`` for a
+    generic displacement ``x -> Q x + c``, ``e^T p0 = 0`` (closest to the origin) and the
+    displacement of ``p0``, ``a' + Q (p0 - a) - p0`` (Eqs. (3.2), (3.3)), parallel to ``e``
+    (``(1 - e e^T)(a' + Q (p0 - a) - p0) = 0``), which for ``phi != 0`` determine ``p0``
+    uniquely (the rank of ``Q - 1`` is 2, Eq. (3.9b)); :func:`screw_axis_point` against the
+    printed form.
 
     Book: Sec. 3.2.1, Eq. (3.18). Shapes: 3 x 1; metres.
     """
-    model = displacement_model()
+    model = screw_displacement_model()
     printed = (Q - I3).T * (Q * a - a_p) / (2 * (1 - sp.cos(phi)))
     kernel = screw_axis_point(*(model[s] for s in (Q, a, a_p)), phi)
-    return Statement([Rel(e.T * printed, sp.ZeroMatrix(1, 1), "e^T p0 = 0"),
-                      Rel((I3 - e * e.T) * (a_p + Q * (printed - a) - printed),
-                          sp.ZeroMatrix(3, 1), "displacement of p0 parallel to e")],
-                     model, derived=kernel,
-                     claims=[Rel(printed, kernel, "screw_axis_point")])
+    return Statement([Rel(p_0, printed, "p0 as printed")], model, derived=kernel,
+                     claims=[Rel(e.T * printed, sp.ZeroMatrix(1, 1), "e^T p0 = 0"),
+                             Rel((I3 - e * e.T) * (a_p + Q * (printed - a) - printed),
+                                 sp.ZeroMatrix(3, 1), "displacement of p0 parallel to e"),
+                             Rel(printed, kernel, "screw_axis_point")])

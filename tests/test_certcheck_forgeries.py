@@ -10,6 +10,7 @@ corrected forms), the chapter in slow."""
 from __future__ import annotations
 
 import contextlib
+import copy
 import io
 import json
 import re
@@ -118,7 +119,7 @@ REFUTED = [("3.13", "zero_is_one_minus_one"), ("3.13", "zero_zero_definition"),
            ("3.13", "entry_alone"), ("3.13", "forged_does_not_hold"),
            ("3.57", "corrected_as_printed"), ("3.97b", "corrected_as_printed"),
            ("3.141", "true_as_shape_mismatch"), ("3.141", "forged_does_not_hold"),
-           ("3.18", "dropped_relation")]
+           ("3.18", "scaled_sides"), ("3.18", "negated_side")]
 
 
 def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
@@ -286,7 +287,11 @@ def test_explain_follows_an_id_from_the_page_to_the_proof(quick, tmp_path):
     assert any(x.strip().startswith("\\mathbf{A} \\equiv") and "(3.11)" in x for x in lines)
     assert any(x.strip().startswith("\\mathbf{Q}: printed as (2.49)") for x in lines)
     assert any("identity by cofactors" in x for x in lines) and "eq3_13.v" in lines[-1]
-    assert _run("explain", "3.18", tmp_path / "run", "--book", BOOK)[0] == 1  # NOT READ
+    assert _run("explain", "3.18", tmp_path / "run", "--book", BOOK)[0] == 0  # read
+    unlined = copy.deepcopy(quick["3.18"])  # its p_0 line dropped: NOT READ
+    unlined["symbols"] = [s for s in unlined["symbols"] if s["glyph"] != "\\mathbf{p}_0"]
+    forge.write_run(tmp_path / "unread", {"3.18.json": unlined}, BOOK)
+    assert _run("explain", "3.18", tmp_path / "unread", "--book", BOOK)[0] == 1
     forge.write_run(tmp_path / "bad", {"3.13.json": forge.entry_alone(quick["3.13"])}, BOOK)
     rc, out = _run("explain", "3.13", tmp_path / "bad", "--book", BOOK)
     assert rc == 1 and "FAILED" in out, out[-400:]

@@ -211,7 +211,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         for e in entries_of(lhs) + entries_of(rhs):
             pr.count(sp.sympify(e))
     for r in (r for r, role, *_ in sides if role == "printed"):  # (p' - a' = Q(p - a): c)
-        _glyph_atoms(pr, r, st.model)
+        _glyph_atoms(pr, r, st.model, _defined_through(eq_id, eq.section))
     rels = []
     for r, role, lhs, rhs, ev in sides:
         try:  # a counterexample's point (for every value of an array the page never gives)
@@ -244,15 +244,30 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     return out
 
 
-def _glyph_atoms(pr: StatementPrinter, rel, model: dict) -> None:
-    """Name in ``pr`` the atoms of the model's value of each glyph of a printed relation,
-    also where it cancels them (an atom of a kind the checker does not know stays out)."""
+def _defined_through(eq_id: str, section: str) -> dict:
+    """The glyphs no definition defines that each glyph is defined through by the
+    definitions of ``section`` declared before ``eq_id`` (3.22's ``e``: ``p_2``, ``p_1``,
+    ``||p_2 - p_1||``; a defined glyph is read through its own definition: 3.125's ``q_O``)."""
+    out, ids = {}, list(REGISTRY)
+    for d in (REGISTRY[i] for i in ids[:ids.index(eq_id)]):
+        st = d.build() if d.section == section and d.kind == "definition" else None
+        for r in (r for r in st.printed if str(r.lhs) in st.defines) if st else ():
+            out.setdefault(r.lhs, set()).update(getattr(r.rhs, "free_symbols", set()))
+    return {g: hs - set(out) for g, hs in out.items()}
+
+
+def _glyph_atoms(pr: StatementPrinter, rel, model: dict, through: dict) -> None:
+    """Name in ``pr`` the atoms of the model's value of each glyph of a printed relation
+    and of the glyphs a definition before it defines that glyph through (``through``: 3.24's
+    ``e`` read through (3.22)'s ``p_2``), also where it cancels them (an atom of a kind the
+    checker does not know stays out)."""
     from sympy.core.function import AppliedUndef
 
     from rigidsym.algebra.symbols import TIME
 
-    glyphs = (g for side in (rel.lhs, rel.rhs) for g in sorted(getattr(side, "free_symbols",
-                                                                      set()), key=str))
+    glyphs = [g for side in (rel.lhs, rel.rhs) for g in sorted(getattr(side, "free_symbols",
+                                                                      set()), key=str)]
+    glyphs += sorted({h for g in glyphs for h in through.get(g, ())}, key=str)
     for e in (e for g in glyphs if g in model for e in entries_of(explicit(g, model))):
         for a in sorted(sp.sympify(e).atoms(sp.Symbol, AppliedUndef) - {TIME}, key=str):
             with suppress(Unprintable):
