@@ -87,7 +87,8 @@ def test_checker_size():
     call of ``alternatives``: 2 lines), 270 of the
     binding to the page (the locator, the manifest, the citations, the causes; 250 before it
     held (3.35)'s cases, "In the first two cases", to the untagged displays defining each
-    case's q and q_0, member by member; 272, its call of ``alternatives``: 2 lines), 132 of a
+    case's q and q_0, member by member; 272, its call of ``alternatives`` and an alternative's
+    unit in words: 2 lines), 132 of a
     referee's path through one id (``certcheck explain``; 130 before it said where a
     theorem's words are read through the table of ``words``), 50 of the printed relation that
     holds by definition (``by_definition``: a vacuous relation whose two sides are read) and

@@ -194,7 +194,8 @@ def symbol_words(s) -> str:
     if "latex" in s and "model" in s:
         return f"{s.get('glyph')}: {s['latex']} (the model's {s['model']})"
     if "latex" in s:
-        return f"{s.get('glyph')}: printed as {s.get('printed_as', '?')}: {s['latex']}"
+        return f"{s.get('glyph')}: printed as {s.get('printed_as', '?')}: {s['latex']}" + (
+            f", in {s['unit']}" if "unit" in s else "")  # an alternative's unit (m/turn)
     if "defined_by" in s:
         return f"{s.get('glyph')}: defined by ({s['defined_by']})"
     return f"{s.get('glyph')}: {s.get('kind')}, atoms {', '.join(s.get('atoms', []))}"
