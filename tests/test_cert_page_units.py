@@ -5,8 +5,9 @@ carries its own line of the pitch (the alternative's first member, its unit); ce
 the lines to the page, one per alternative, in order, each unit the words' (``certcheck.
 alternatives.check_units``), and reads each alternative under its own line. A coefficient
 (``2 pi`` dropped or doubled), a sign, the alternatives swapped, an alternative dropped,
-another id's text, the other verdicts, a unit word changed are each rejected naming the id;
-the lines dropped leave the pitch NOT READ. (3.7) in the default run, the rest slow."""
+another id's text, the other verdicts, a unit word changed, one alternative's relations under
+two lines are each rejected naming the id; the lines dropped leave the pitch NOT READ. (3.7)
+in the default run, the rest slow."""
 
 from __future__ import annotations
 
@@ -78,6 +79,8 @@ def test_each_alternative_read_in_its_unit_and_tamperings_rejected(book, eq_id):
             _tampered(c, _swap),  # the alternatives' lines swapped
             _tampered(c, lambda rels: rels[last].update(symbols=rels[0]["symbols"])),  # copied
             doubled_rhs(c)]
+    if last > 1:  # (3.53)'s two m/rad relations: the second under the m/turn line
+        page.append(_tampered(c, lambda rels: rels[1].update(symbols=rels[last]["symbols"])))
     swapped = copy.deepcopy(c)  # the relations themselves swapped, each with its line
     idx = [k for k, r in enumerate(swapped["relations"]) if r["role"] == "printed"]
     rel = swapped["relations"]
