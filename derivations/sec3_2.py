@@ -147,7 +147,8 @@ def displacement_pitch() -> Statement:
     model[pitch] = model[d_0] / phi
     model[pitch_turn] = 2 * sp.pi * model[d_0] / phi
     kernel = pitch_of_displacement(model[e], model[d_A], phi)
-    return Statement([Rel(pitch, d_0 / phi), Rel(pitch_turn, 2 * sp.pi * d_0 / phi)], model,
+    return Statement([Rel(pitch, d_0 / phi, "p in m/rad"),
+                      Rel(pitch_turn, 2 * sp.pi * d_0 / phi, "p in m/turn")], model,
                      defines=("pitch", "pitch_turn"),
                      claims=[Rel(pitch, (d_P.T * e)[0, 0] / phi, "second member", page=2),
                              Rel(pitch, kernel, "pitch_of_displacement")])

@@ -211,8 +211,10 @@ def instant_screw_pitch_definition() -> Statement:
     gen = instant_motion_model()  # a generic body point P, not on the ISA
     m.update({p: gen[p], p_dot: gen[p_dot]})
     return Statement(
-        [Rel(pitch, v0 / norm_omega), Rel(pitch, (p_dot.T * omega) / norm_omega**2),
-         Rel(pitch_turn, 2 * sp.pi * v0 / norm_omega)], m, defines=("p'", "p'_turn"),
+        [Rel(pitch, v0 / norm_omega, "p' in m/rad"),
+         Rel(pitch, (p_dot.T * omega) / norm_omega**2, "p' in m/rad"),
+         Rel(pitch_turn, 2 * sp.pi * v0 / norm_omega, "p' in m/turn")], m,
+        defines=("p'", "p'_turn"),
         claims=[Rel(pitch, v0 / norm_omega, "p' = v0/||omega||"),
                 Rel(pitch, (p_dot.T * omega) / norm_omega**2, "p' = pdot.omega/||omega||^2"),
                 Rel(pitch_turn, 2 * sp.pi * v0 / norm_omega, "m/turn variant")])

@@ -275,10 +275,12 @@ def wrench_pitch_definition() -> Statement:
     model, ex = _wrench_model()
     pw_val = ((n_P.T * f)[0, 0] / norm_f**2).xreplace(model).doit()
     model.update({n0: ((n_P.T * f)[0, 0] / norm_f).xreplace(model).doit(), pitch_w: pw_val,
+                  pitch_w_turn: 2 * sp.pi * pw_val,  # a turn is 2 pi rad (the words: m/turn)
                   n0_vec: im(ex["moment"](ex["p0"] + ex["lam"] * model[f]))})
     kernel = wrench_pitch(model[n_A], model[f])
     return Statement(
-        [Rel(pitch_w, n0 / norm_f), Rel(pitch_w_turn, 2 * sp.pi * (n_P.T * f) / norm_f**2)],
+        [Rel(pitch_w, n0 / norm_f, "p'' in m/rad"),
+         Rel(pitch_w_turn, 2 * sp.pi * (n_P.T * f) / norm_f**2, "p'' in m/turn")],
         model, defines=("p_wrench", "p_wrench_turn"),
         claims=[Rel(pitch_w, (n_P.T * f) / norm_f**2, "second member", page=2),
                 Rel(pitch_w, kernel, "kernel wrench_pitch"),

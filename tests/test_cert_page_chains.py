@@ -84,17 +84,27 @@ def chains_read(tmp_path_factory):
 
 def test_chain_member_and_wrench_arrays_read_and_tamperings_rejected(chains_read):
     """3.109 (``p'' \\equiv n_0/||f|| = n_P . f/||f||^2 or p'' = 2 pi ...``): the certificate
-    marks its claim "second member" as the page's relation 2, whose lhs is read as
-    ``n_0/||f||`` (through (3.108)) and rhs through the one-force model; 3.115 (``w = W
-    Gamma s_w, t = T s_t``) through ``w = [n; f]``, ``t = [omega; v]`` and the screws as the
-    model solves them: every side read firmly. Each tampering rejected naming the id."""
+    marks its claim "second member" as the page's relation 2, whose lhs is read through the
+    m/rad alternative's line of ``p''`` (``n_0/||f||``, ``n_0`` through (3.108); without the
+    alternatives' lines, as the chain's second member) and rhs through the one-force
+    model; 3.115 (``w = W Gamma s_w, t = T s_t``) through ``w = [n; f]``, ``t = [omega;
+    v]`` and the screws as the model solves them: every side read firmly. Each tampering
+    rejected naming the id."""
     book = book_text()
     c = chains_read["3.109"]
     assert [r.get("page") for r in c["relations"] if r["role"] == "claim"] == [2, None, None]
     lines = page_comparison(c, book)
     assert any(x.startswith("read from the page: relation 2's lhs") and " and rhs" in x
+               and "p'' as printed in (3.109)" in x for x in lines), lines  # its m/rad line
+    assert not any(x.startswith("NOT READ") for x in lines), lines  # each alternative's p''
+    c = copy.deepcopy(c)  # without the alternatives' lines: p'' NOT READ, relation 2's lhs
+    for r in c["relations"]:  # through the chain's second member
+        r.pop("symbols", None)
+    lines = page_comparison(c, book)
+    assert any(x.startswith("read from the page: relation 2's lhs") and " and rhs" in x
                and "the chain's second member" in x for x in lines), lines
     assert sum(x.startswith("NOT READ") for x in lines) == 2, lines  # p'' defined, twice
+    c = chains_read["3.109"]
     lines = page_comparison(chains_read["3.115"], book)
     assert sum(x.startswith("read from the page") and " and rhs" in x for x in lines) == 2
     assert not any(x.startswith(("NOT READ", "matched")) for x in lines), lines

@@ -19,6 +19,8 @@ import json
 import os
 import re
 
+from certcheck.alternatives import check_units
+
 __all__ = ["BookError", "locate", "check_page", "check_manifest", "sha256", "CAUSES",
            "definitions_before", "symbol_words"]
 
@@ -126,7 +128,7 @@ def check_page(cert: dict, book: str) -> list[str]:
     fam = [r for r in cert.get("relations") or [] if isinstance(r, dict) and
            r.get("role") == "printed" and r.get("symbols")]  # F = N, L, H: every member
     if fam and cert.get("verdict") != "does-not-hold":
-        _family(eq_id, fam, book)
+        _family(eq_id, fam, book, page)
     lines = [f"printed as ({eq_id}): {page if len(page) < 400 else page[:400] + ' ...'}"]
     lines += [f"symbol: {symbol_words(s)}" for s in cert.get("symbols") or []]
     lines += [f"symbol of {r.get('label')}: {symbol_words(s)}" for r in cert.get("relations")
@@ -134,7 +136,7 @@ def check_page(cert: dict, book: str) -> list[str]:
     return lines + cause_lines(cert)
 
 
-def _family(eq_id: str, fam: list, book: str) -> None:
+def _family(eq_id: str, fam: list, book: str, page: str = "") -> None:
     """Each member of a family carries its own lines; of each glyph the page's words list
     ("$F$ is one of $N$, $L$, or $H$") every listed glyph is one member's line, each once, and
     the words list one at least: a member dropped, or replaced by another's copy, leaves a
@@ -147,7 +149,7 @@ def _family(eq_id: str, fam: list, book: str) -> None:
     lines = [{str(s.get("glyph")).replace(" ", ""): str(s.get("latex")).replace(" ", "")
               for s in r["symbols"] if isinstance(s, dict)} for r in fam]
     named = [(g, words[g]) for g in dict.fromkeys(k for m in lines for k in m) if g in words]
-    if not named and _cases(eq_id, lines, book):
+    if not named and (_cases(eq_id, lines, book) or check_units(eq_id, fam, book, page)):
         return
     for g, listed in named or [("its glyphs", ["a member"])]:  # words list none: a failure
         carried = [m.get(g) for m in lines]
@@ -192,7 +194,8 @@ def symbol_words(s) -> str:
     if "latex" in s and "model" in s:
         return f"{s.get('glyph')}: {s['latex']} (the model's {s['model']})"
     if "latex" in s:
-        return f"{s.get('glyph')}: printed as {s.get('printed_as', '?')}: {s['latex']}"
+        return f"{s.get('glyph')}: printed as {s.get('printed_as', '?')}: {s['latex']}" + (
+            f", in {s['unit']}" if "unit" in s else "")  # an alternative's unit (m/turn)
     if "defined_by" in s:
         return f"{s.get('glyph')}: defined by ({s['defined_by']})"
     return f"{s.get('glyph')}: {s.get('kind')}, atoms {', '.join(s.get('atoms', []))}"

@@ -13,6 +13,7 @@ import json
 import re
 from itertools import accumulate
 
+from certcheck.alternatives import read_alternatives
 from certcheck.arrays import M, mul
 from certcheck.braces import brace_relations
 from certcheck.reader import NotRead, read_relations, tokens
@@ -61,10 +62,11 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's
     try:
         sides = read_relations(page, symbols, defs, lets := [])
+        sides = read_alternatives(page, printed, symbols, defs, lets, read_relations) or sides
         if len(sides) == 1 and printed and all(r.get("symbols") for r in printed):  # F = N,
             sides = [read_relations(page, [*symbols, *r["symbols"]], defs, lets)[0]  # L or H:
                      for r in printed]  # each member read under its own lines (its F)
-    except NotRead as exc:
+    except (NotRead, ValueError) as exc:  # ValueError: an alternative's lines (units)
         raise CheckError(f"({cert.get('id')}) the symbol table: {exc}") from None
     held = cert.get("verdict") != "does-not-hold"  # a = b = c: a is b, where a = b holds
     pairs = [(c[0] if k == 1 or not held or not isinstance(c[0][0], NotRead) else

@@ -162,18 +162,19 @@ def instant_screw_symbols(have: set, section: str, latex: str,
         has ``p_0``), ``Omega``, ``omega`` (where it has ``Q-dot``); in section 3.4.1, where
         it has ``a`` and ``a-dot`` (and no body vector ``r``), ``p'_0``, ``r``, ``A``,
         ``b``, and ``p`` where it has ``alpha`` or the page prints (3.63); ``a-dot_par``,
-        ``a-dot_perp``, ``v_0`` where they are printed; ``p-dot`` of the body point ``a + Q
-        r`` where it has the body vector ``r`` and ``p-dot .`` is printed; in section 3.4.2
-        the pitch ``p`` and ``s`` (the atom ``pitch``), the pure translation's ``||v||``,
-        ``v``, ``omega``, ``t``, ``s_inf`` (the atom ``sec342_sigma``), ``nu``, ``lambda``,
-        ``eta`` where (3.75) is printed.
+        ``a-dot_perp``, ``v_0`` where they are printed (``v_0`` in (3.53) too); ``p-dot``
+        of the body point ``a + Q r`` where it has the body vector ``r`` and ``p-dot .`` is
+        printed; in section 3.4.2 the pitch ``p`` and ``s`` (the atom ``pitch``), the pure
+        translation's ``||v||``, ``v``, ``omega``, ``t``, ``s_inf`` (the atom
+        ``sec342_sigma``), ``nu``, ``lambda``, ``eta`` where (3.75) is printed.
     """
     dot_q, adot = "\\dot{\\mathbf{Q}}", "\\dot{\\mathbf{a}}"
     if section == "3.3" and dot_q in have:
         return _lines(_FIXED_POINT if "\\mathbf{p}_0" in have else _FIXED_POINT[2:], have)
     if section == "3.4.1" and adot in have:
         rows = list(_ISA[4:]) if "\\dot{\\mathbf{a}}_{\\parallel}" in latex else []
-        rows += [_V0, _V0_SIGNED] if "\\mathbf{v}_0 =" in latex else []
+        rows += [_V0, _V0_SIGNED] if "\\mathbf{v}_0 =" in latex or \
+            "\\equiv \\frac{v_0}" in latex else []  # (3.53)'s v_0 (its m/rad alternative)
         if "\\mathbf{r}" in have and "\\dot{\\mathbf{p}} \\cdot" in latex:  # (3.53), not
             rows.append(_BODY_VELOCITY)  # (3.59): its certificate's relation is a brace's
         if "\\dot{\\mathbf{p}}_{\\perp}" in latex and "\\mathbf{r}" in have:  # (3.59)

@@ -54,6 +54,8 @@ from __future__ import annotations
 
 import re
 
+from rigidsym.checking.certifying.unit_alternatives import unit_symbols
+
 __all__ = ["INVARIANT_RATE_GLYPHS", "invariant_rate_symbols", "member_symbols"]
 
 _TAN = r"[(\sin \phi)/(1 + \cos \phi)]"
@@ -260,9 +262,12 @@ _CASES = {"Euler-Rodrigues": (1, r"\sin\left(\frac{\phi}{2}\right)\mathbf{e}",
 def member_symbols(label: str, section: str) -> list[dict]:
     """The lines of one certificate relation of the family ``F = N, L, H`` (its label ``F =
     N`` or ``F~ = N~``, ...), ``{"glyph", "latex", "model"}``, or of a case of (3.35) (its
-    ``q``, ``q_0`` as the page's k-th display above it prints them, ``printed_as``); ``[]``
+    ``q``, ``q_0`` as the page's k-th display above it prints them, ``printed_as``), or of
+    an alternative of a pitch in m/rad or m/turn (``unit_alternatives.unit_symbols``); ``[]``
     for any other label or section. certcheck reads the page's one relation once per member,
     under the table and the member's lines."""
+    if own := unit_symbols(label, section):  # a pitch in m/rad or in m/turn
+        return own
     if section == "3.2.3" and label in _CASES:
         k, q, q0 = _CASES[label]
         return [{"glyph": g, "latex": x, "printed_as": f"case {k} above (3.35)"}
