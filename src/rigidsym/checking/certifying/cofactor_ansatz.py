@@ -39,10 +39,10 @@ def _candidates(f_terms: set, hyps: list, rounds: int, limit: int) -> list[set] 
     for _ in range(rounds):
         new: set = set()
         todo = targets - seen
+        t = _rows(todo) if todo else None
         for i, h in enumerate(hs):
-            if not todo or not len(h):
+            if t is None or not len(h):
                 continue
-            t = _rows(todo)
             ti, si = np.nonzero((h[None, :, :] <= t[:, None, :]).all(axis=2))
             fresh = set(map(tuple, (t[ti] - h[si]).tolist())) - cand[i]
             total += len(fresh)
