@@ -109,6 +109,12 @@ def chapter_text():
 
 
 @pytest.fixture(scope="session")
+def book(chapter_text):
+    """The chapter's text, as certcheck's page-reading tests name it (skips without it)."""
+    return chapter_text
+
+
+@pytest.fixture(scope="session")
 def chapter_certificates(tmp_path_factory, worker_id):
     """Every chapter id's certificate of its recorded verdict, built once per run (about
     90 s of CPU) and shared by the workers (``tests/_shared_run.py``)."""

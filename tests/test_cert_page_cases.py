@@ -11,25 +11,19 @@ from __future__ import annotations
 
 import copy
 
-import pytest
 from test_cert_page import another_printed_text, doubled_rhs, page_outcome, relabelled
-from test_cert_page_momenta import BOOK, certificates, rejection
+from test_cert_page_momenta import certificates, rejection
 
 
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
-
-
-def _printed(c: dict) -> list:
+def printed_of(c: dict) -> list:
+    """The certificate's printed relations (a tampering's handle on them)."""
     return [r for r in c["relations"] if r["role"] == "printed"]
 
 
-def _tampered(c: dict, change) -> dict:
+def tampered(c: dict, change) -> dict:
+    """A copy of ``c`` whose printed relations ``change`` edits in place."""
     t = copy.deepcopy(c)
-    change(_printed(t))
+    change(printed_of(t))
     return t
 
 
@@ -43,17 +37,17 @@ def _line(k: int, glyph: str, old: str, new: str):
 
 def test_each_case_read_under_its_display_and_tamperings_rejected(book):
     c = certificates(["3.35"])["3.35"]
-    assert [len(r.get("symbols", [])) for r in _printed(c)] == [2, 2]
+    assert [len(r.get("symbols", [])) for r in printed_of(c)] == [2, 2]
     assert page_outcome(c, book) == "read"
     swap = lambda rels: [r.update(symbols=s) for r, s in zip(  # noqa: E731
         rels, [rels[1]["symbols"], rels[0]["symbols"]], strict=True)]
-    page = [_tampered(c, _line(0, "\\mathbf{q}", "{2}", "{3}")),  # a coefficient of a line
-            _tampered(c, _line(1, "q_0", "\\cos", "-\\cos")),  # a sign
-            _tampered(c, _line(1, "\\mathbf{q}", "(\\sin \\phi)", "")),  # case 3's q = e
-            _tampered(c, swap),  # the cases swapped
-            _tampered(c, lambda rels: rels[1].update(symbols=rels[0]["symbols"])),  # copied
-            _tampered(c, lambda rels: rels[1]["symbols"].pop()),  # a line dropped
-            _tampered(c, lambda rels: rels[0].update(  # the lhs doubled (each case's lhs
+    page = [tampered(c, _line(0, "\\mathbf{q}", "{2}", "{3}")),  # a coefficient of a line
+            tampered(c, _line(1, "q_0", "\\cos", "-\\cos")),  # a sign
+            tampered(c, _line(1, "\\mathbf{q}", "(\\sin \\phi)", "")),  # case 3's q = e
+            tampered(c, swap),  # the cases swapped
+            tampered(c, lambda rels: rels[1].update(symbols=rels[0]["symbols"])),  # copied
+            tampered(c, lambda rels: rels[1]["symbols"].pop()),  # a line dropped
+            tampered(c, lambda rels: rels[0].update(  # the lhs doubled (each case's lhs
                 lhs=[[f"2*({rels[0]['lhs'][0][0]})"]])),  # is 1 under e's unit norm: the
             doubled_rhs(c)]  # other case's lhs, or 2 lhs - 1, would be no change)
     dropped = copy.deepcopy(c)  # the linear invariants' case left out
@@ -64,5 +58,5 @@ def test_each_case_read_under_its_display_and_tamperings_rejected(book):
     for t in (another_printed_text(c, book, "3.36"), doubled_rhs(c),
               *(relabelled(c, v) for v in ("definition", "does-not-hold"))):
         assert "(3.35)" in rejection(t, book)
-    unlined = _tampered(c, lambda rels: [r.pop("symbols") for r in rels])
+    unlined = tampered(c, lambda rels: [r.pop("symbols") for r in rels])
     assert page_outcome(unlined, book) == "not read"  # one relation, two models: matched

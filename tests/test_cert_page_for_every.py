@@ -13,14 +13,7 @@ import copy
 
 import pytest
 from test_cert_page import another_printed_text, doubled_rhs, page_outcome, relabelled
-from test_cert_page_momenta import BOOK, certificates, line_changed, rejection
-
-
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
+from test_cert_page_momenta import certificates, line_changed, rejection
 
 
 @pytest.fixture(scope="module")

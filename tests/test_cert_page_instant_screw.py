@@ -11,7 +11,6 @@ from __future__ import annotations
 import pytest
 from test_cert_page import another_printed_text, doubled_rhs, relabelled, shifted_sides
 from test_cert_page_momenta import (
-    BOOK,
     certificates,
     line_changed,
     line_doubled,
@@ -27,12 +26,6 @@ READ_THROUGH_LINES = ["3.41", "3.42", "3.43", "3.44", "3.45", "3.46", "3.56", "3
 #: square root)
 PARTLY = ["3.52"]
 
-
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
 
 
 #: a line whose doubling changes nothing the id reads: 3.64's omega^T p'_0 = 0 is

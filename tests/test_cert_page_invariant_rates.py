@@ -48,12 +48,6 @@ SWAP_INVARIANT = {"3.80a", "3.93"}
 FAMILY = ["3.78", "3.79", "3.80a", "3.80b", "3.91", "3.92", "3.93"]
 
 
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
-
 
 def member_swapped(cert: dict) -> dict | None:
     """Each member's own lines moved to the next member (F = N read under L's lines)."""

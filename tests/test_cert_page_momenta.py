@@ -81,12 +81,6 @@ def line_doubled(cert: dict, glyph: str) -> dict | None:
         line_changed(cert, glyph, entry["latex"], f"2({entry['latex']})")
 
 
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
-
 
 def test_twist_and_angular_velocity_dyad_read_firmly_and_tamperings_rejected(book):
     """3.140 (W as printed, its own definition read on both sides) and 3.145 (T = t^T M t / 2:

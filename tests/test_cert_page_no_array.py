@@ -12,14 +12,7 @@ import copy
 
 import pytest
 from test_cert_page import another_printed_text, page_outcome, relabelled, relation_dropped
-from test_cert_page_momenta import BOOK, certificates, read_lines, rejection
-
-
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
+from test_cert_page_momenta import certificates, read_lines, rejection
 
 
 @pytest.fixture(scope="module")

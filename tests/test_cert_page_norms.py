@@ -9,16 +9,8 @@ from __future__ import annotations
 
 import copy
 
-import pytest
 from test_cert_page import page_outcome
-from test_cert_page_momenta import BOOK, certificates, line_changed
-
-
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
+from test_cert_page_momenta import certificates, line_changed
 
 
 def _side(c: dict, k: int, new) -> dict:

@@ -15,27 +15,13 @@ import copy
 
 import pytest
 from test_cert_page import another_printed_text, doubled_rhs, page_outcome, relabelled
-from test_cert_page_momenta import BOOK, certificates, rejection
+from test_cert_page_cases import printed_of, tampered
+from test_cert_page_momenta import certificates, rejection
 
 #: the id -> another id's printed text for the tampering
 OTHER = {"3.7": "3.8", "3.53": "3.52", "3.109": "3.108"}
 
 
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
-
-
-def _own(c: dict) -> list:
-    return [r for r in c["relations"] if r["role"] == "printed"]
-
-
-def _tampered(c: dict, change) -> dict:
-    t = copy.deepcopy(c)
-    change(_own(t))
-    return t
 
 
 def _sides(k: int, f):
@@ -65,22 +51,22 @@ def _swap(rels: list) -> None:
                                    pytest.param("3.109", marks=pytest.mark.slow)])
 def test_each_alternative_read_in_its_unit_and_tamperings_rejected(book, eq_id):
     c = certificates([eq_id])[eq_id]
-    own = _own(c)
+    own = printed_of(c)
     units = [r["symbols"][0]["unit"] for r in own]
     assert units[0] == "m/rad" and units[-1] == "m/turn" and len(set(units)) == 2
     assert page_outcome(c, book) == "read"
     last = len(own) - 1
-    page = [_tampered(c, _sides(last, lambda x: x.replace("2*pi*", ""))),  # 2 pi dropped
-            _tampered(c, _sides(last, lambda x: f"2*({x})")),  # 2 pi doubled
-            _tampered(c, _sides(0, lambda x: f"-({x})")),  # a sign
-            _tampered(c, _line(last, "2\\pi", "")),  # the m/turn line without 2 pi
-            _tampered(c, _line(last, "2\\pi", "4\\pi")),  # 2 pi doubled in the line
-            _tampered(c, _line(0, "m/rad", "m/turn")),  # the unit word changed
-            _tampered(c, _swap),  # the alternatives' lines swapped
-            _tampered(c, lambda rels: rels[last].update(symbols=rels[0]["symbols"])),  # copied
+    page = [tampered(c, _sides(last, lambda x: x.replace("2*pi*", ""))),  # 2 pi dropped
+            tampered(c, _sides(last, lambda x: f"2*({x})")),  # 2 pi doubled
+            tampered(c, _sides(0, lambda x: f"-({x})")),  # a sign
+            tampered(c, _line(last, "2\\pi", "")),  # the m/turn line without 2 pi
+            tampered(c, _line(last, "2\\pi", "4\\pi")),  # 2 pi doubled in the line
+            tampered(c, _line(0, "m/rad", "m/turn")),  # the unit word changed
+            tampered(c, _swap),  # the alternatives' lines swapped
+            tampered(c, lambda rels: rels[last].update(symbols=rels[0]["symbols"])),  # copied
             doubled_rhs(c)]
     if last > 1:  # (3.53)'s two m/rad relations: the second under the m/turn line
-        page.append(_tampered(c, lambda rels: rels[1].update(symbols=rels[last]["symbols"])))
+        page.append(tampered(c, lambda rels: rels[1].update(symbols=rels[last]["symbols"])))
     swapped = copy.deepcopy(c)  # the relations themselves swapped, each with its line
     idx = [k for k, r in enumerate(swapped["relations"]) if r["role"] == "printed"]
     rel = swapped["relations"]
@@ -96,5 +82,5 @@ def test_each_alternative_read_in_its_unit_and_tamperings_rejected(book, eq_id):
     for t in (another_printed_text(c, book, OTHER[eq_id]), doubled_rhs(c),
               *(relabelled(c, v) for v in other)):
         assert f"({eq_id})" in rejection(t, book)
-    unlined = _tampered(c, lambda rels: [r.pop("symbols") for r in rels])
+    unlined = tampered(c, lambda rels: [r.pop("symbols") for r in rels])
     assert page_outcome(unlined, book) == "not read"  # the pitch's glyph without a line

@@ -65,12 +65,6 @@ TABLE_TAMPERINGS = {
 IDS = list(TABLE_TAMPERINGS)
 
 
-@pytest.fixture(scope="module")
-def book() -> str:
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
-    return BOOK.read_text(encoding="utf-8")
-
 
 def outcome(cert: dict, book: str) -> str:
     """What the command makes of ``cert`` against ``book`` (page, mathematics, reader, the

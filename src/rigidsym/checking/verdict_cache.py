@@ -284,6 +284,21 @@ def read(eq_id: str, key: str, expanded: bool = False):
     return None if r is None or (expanded and r.derived is None) else r
 
 
+def _entry(path: Path, eq_id: str, key: str) -> dict:
+    """The entry at ``path``, its checksum, format, key and id checked.
+
+    Raises:
+        ValueError: a checksum that does not match, or an entry written for another key.
+    """
+    data = _cache.get(path)
+    if data is None:
+        raise ValueError("checksum does not match")
+    entry = json.loads(data)
+    if entry.get("format") != FORMAT or entry.get("key") != key or entry.get("id") != eq_id:
+        raise ValueError("written for another key")
+    return entry
+
+
 def _read(eq_id: str, key: str):
     """The cached result of ``eq_id`` under ``key``, or ``None`` (missing, or ignored)."""
     from rigidsym.checking.checker import Outcome
@@ -291,15 +306,8 @@ def _read(eq_id: str, key: str):
     path = _path(key)
     if not path.exists():
         return None
-    data = _cache.get(path)
     try:
-        if data is None:
-            raise ValueError("checksum does not match")
-        entry = json.loads(data)
-        if entry.get("format") != FORMAT or entry.get("key") != key or \
-                entry.get("id") != eq_id:
-            raise ValueError("written for another key")
-        row = entry["result"]
+        row = _entry(path, eq_id, key)["result"]
         if set(row) != {f.name for f in fields(Outcome)} or row["id"] != eq_id:
             raise ValueError("not a result of this version")
         return Outcome(**dict(row, cached=True))
@@ -369,15 +377,10 @@ def read_certificate(eq_id: str, key: str) -> dict | str | None:
     path = _certificate_path(key)
     if not path.exists():
         return None
-    data = _cache.get(path)
     try:
-        if data is None:
-            raise ValueError("checksum does not match")
-        entry = json.loads(data)
-        made = entry.get("certificate")
-        if entry.get("format") != FORMAT or entry.get("key") != key or \
-                entry.get("id") != eq_id or not isinstance(made, dict | str):
-            raise ValueError("written for another key")
+        made = _entry(path, eq_id, key).get("certificate")
+        if not isinstance(made, dict | str):
+            raise ValueError("no certificate in it")
         return made
     except (ValueError, TypeError, AttributeError) as exc:
         warnings.warn(f"verdict cache: ignored the certificate of {eq_id} ({path}): {exc}; "
