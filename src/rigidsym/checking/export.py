@@ -3,9 +3,12 @@ id's certificate read from the verdict store where its key matches
 (:func:`rigidsym.checking.verdict_cache.certificate_key`), the others made over worker
 processes and stored, then written, with the folder's manifest, and re-checked by certcheck
 (:func:`rigidsym.checking.certifying.certificates.write_certificates`). A certificate is a
-pure function of what its key covers (the package's source, the declaration, the verdict and
-the members' statuses; its counterexample search is seeded by the id), so a stored one is
-the one the run would make: ``tests/test_certificate_store.py`` compares the two.
+function of what its key covers (the package's source, the declaration, the verdict and the
+members' statuses; its counterexample search is seeded by the id), so a stored one is the
+one the run would make (``tests/test_certificate_store.py`` compares the two), but for the
+cofactor search's CPU-time budget: a relation past it on a loaded machine gets the
+re-computation evidence instead, which certcheck checks as well, and the store keeps the
+certificate made first.
 """
 
 from __future__ import annotations
