@@ -2,6 +2,7 @@
 differs between two generated directories, timed in both builds side by side.
 
     python benchmarks/vec_lanes_select.py BASELINE/generated CANDIDATE/generated [--runs 2]
+                                         [--kernels NAME ...]
 
 BASELINE is a generation as committed; CANDIDATE the same with ``VEC_F64`` (in
 ``rigidsym.codegen.backends.extension.target``) temporarily set to every kernel whose vector
@@ -13,7 +14,9 @@ each differing kernel's ``batch`` is timed on the same inputs, the two builds in
 N = 2e5; the outputs' bytes are compared as well. Prints per kernel the ratio
 candidate / baseline in each regime and in each run, and the kernels faster in both regimes
 in every run (ratio < ``--below``): the list ``VEC_F64`` holds, measured on an AVX2 CPU (the
-path the vector lanes compile on). Standard library, NumPy and the build driver only.
+path the vector lanes compile on). ``--kernels`` names the kernels to time where the two
+generations differ in their common header only (the lanes turned on for another build path
+there, ``rigidsym_common.h``). Standard library, NumPy and the build driver only.
 """
 
 from __future__ import annotations
@@ -63,8 +66,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--runs", type=int, default=2)
     ap.add_argument("--below", type=float, default=0.97)
     ap.add_argument("--build-dir", type=Path, default=Path(tempfile.gettempdir()) / "vec_select")
+    ap.add_argument("--kernels", nargs="+", default=None,
+                    help="the kernels to time (default: those whose C source differs)")
     args = ap.parse_args(argv)
-    names = differing(args.baseline, args.candidate)
+    names = sorted(args.kernels) if args.kernels else differing(args.baseline, args.candidate)
     meta = {k["name"]: k for k in
             json.loads((args.candidate / "kernels.json").read_text())["kernels"]}
     base = build(args.baseline, args.build_dir / "baseline")

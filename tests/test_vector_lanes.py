@@ -1,14 +1,17 @@
 """The float64 lanes across samples (``RIGIDSYM_VEC_F64``, the kernels of ``VEC_F64``): on
-x86-64-v3 their lanes function transposes 4 samples' inputs to columns, runs the sample's
-arithmetic on vector types and feeds the block's range filter from the columns; elsewhere the
-row-major scalar loop runs. Both must give every sample the same bits and the same flag.
+x86-64-v3 (and on x86-64-v4 for those of ``VEC_F64_V4``) their lanes function transposes 4
+samples' inputs to columns, runs the sample's arithmetic on vector types and feeds the block's
+range filter from the columns; elsewhere the row-major scalar loop runs. Both must give every
+sample the same bits and the same flag.
 
 Checked by compiling each such kernel's generated C twice for x86-64-v3, as it is (the
 vector lanes) and with ``-DRIGIDSYM_NO_VEC_F64`` (the scalar sample function in the row-major
 loop, another code path; the same sin/cos code, which differs between build paths), with the
-kernels' flags, and comparing outputs byte for byte and the flagged counts over batches of
-many sizes, with extreme, zero, subnormal and non-finite values at random positions; and the
-transposes alone against their definition for every row width 1-9."""
+kernels' flags (and, on an AVX-512 CPU, twice for x86-64-v4: the lanes for the kernels of
+``VEC_F64_V4``, the row-major loop for the others), and comparing outputs byte for byte and
+the flagged counts over batches of many sizes, with extreme, zero, subnormal and non-finite
+values at random positions; and the transposes alone against their definition for every row
+width 1-9."""
 
 from __future__ import annotations
 
@@ -20,7 +23,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rigidsym.codegen.backends.extension.target import VEC_F64
+from rigidsym.codegen.backends.extension.target import VEC_F64, VEC_F64_V4
 from rigidsym.kernels.cbuild.flags import KERNEL_FLAGS
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -28,6 +31,8 @@ CDIR = ROOT / "generated" / "c"
 GCC = shutil.which("gcc")
 _CPU = Path("/proc/cpuinfo").read_text() if Path("/proc/cpuinfo").exists() else ""
 AVX2 = " avx2" in _CPU and " fma" in _CPU and " bmi2" in _CPU
+AVX512 = AVX2 and all(f" {f}" in _CPU for f in ("avx512f", "avx512bw", "avx512cd",
+                                                 "avx512dq", "avx512vl"))
 META = {k["name"]: k for k in json.loads((ROOT / "generated" / "kernels.json").read_text())
         ["kernels"]}
 pytestmark = pytest.mark.skipif(GCC is None or not AVX2,
@@ -147,6 +152,17 @@ def test_vector_lanes_give_the_scalar_samples_bits_and_flags(name, tmp_path):
     v3, scalar = results["1"], results["0"]
     assert len(v3) == len(scalar) > 0
     assert v3 == scalar
+    if AVX512:      # x86-64-v4: the lanes where VEC_F64_V4 lists the kernel, the same bits
+        v4 = {}
+        for defines, vec in (((), "1" if name in VEC_F64_V4 else "0"),
+                             (("-DRIGIDSYM_NO_VEC_F64",), "0")):
+            exe = _build(src, "x86-64-v4", tmp_path, *defines)
+            out = tmp_path / f"out_v4{''.join(defines)}.bin"
+            r = subprocess.run([str(exe), str(inp), str(out)], capture_output=True,
+                               text=True, check=True)
+            assert r.stdout.split() == [vec]
+            v4[defines] = out.read_bytes()
+        assert v4[()] == v4[("-DRIGIDSYM_NO_VEC_F64",)]
     # counts (the 8 bytes after each batch's outputs): none of ordinary values, the one
     # sample of a lone extreme value, some of the edge batches
     per = 8 * sum(_size(o["shape"]) for o in META[name]["outputs"])

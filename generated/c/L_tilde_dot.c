@@ -16,6 +16,8 @@
  *     a singular flag -> 0.58, never worse than the textbook formula by that rule; equal to
  *     the declared formula by the zero test (exact-cancel)
  */
+/* the float64 lanes on x86-64-v4 too (VEC_F64_V4, chosen by measurement) */
+#define RIGIDSYM_VEC_F64_ON_V4 1
 #include "L_tilde_dot.h"
 
 /* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by

@@ -8,6 +8,8 @@
  * sympy 1.14.0, rigidsym 0.2.0
  * operations: 8
  */
+/* the float64 lanes on x86-64-v4 too (VEC_F64_V4, chosen by measurement) */
+#define RIGIDSYM_VEC_F64_ON_V4 1
 #include "euler_rate_matrix_yxz_body.h"
 
 /* Exactly L = RIGIDSYM_LANES samples (RIGIDSYM_LANES_F32 in float32), always: every sample of every batch is computed by

@@ -9,8 +9,16 @@
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
-#if defined(__AVX2__) && !defined(__AVX512F__)
+/* The AVX2 forms (the block filter's accumulator and the float64 lanes, RIGIDSYM_VEC_F64
+ * below): on x86-64-v3, and on x86-64-v4 for the kernels whose C defines
+ * RIGIDSYM_VEC_F64_ON_V4 before including this header (VEC_F64_V4 of
+ * rigidsym.codegen.backends.extension.target, chosen by measurement on an AVX-512 CPU); the
+ * other kernels of x86-64-v4 keep the AVX-512 range test as a second pass */
+#if defined(__AVX2__) && (!defined(__AVX512F__) || defined(RIGIDSYM_VEC_F64_ON_V4))
+#define RIGIDSYM_AVX2_FORMS 1
 #include <immintrin.h>
+#else
+#define RIGIDSYM_AVX2_FORMS 0
 #endif
 
 #ifndef RIGIDSYM_RESTRICT
@@ -375,8 +383,9 @@ static inline int rigidsym_any_extreme(const double *RIGIDSYM_RESTRICT p, int64_
  * the unsigned max of the high words finds it; a - 1 wraps 0 (and -0) to all ones, the top of
  * the unsigned order, and for a >= 1 its high word is < 923 << 20 exactly when a <= 2^-100's
  * bits, so the unsigned min of the high words of a - 1 finds every nonzero a < 2^-100 (and
- * a = 2^-100). Non-finite values are >= 2^101's bits. Elsewhere the exact test per array. */
-#if defined(__AVX2__) && !defined(__AVX512F__)
+ * a = 2^-100). Non-finite values are >= 2^101's bits. The same on x86-64-v4 for the kernels
+ * of VEC_F64_V4, whose lanes feed it. Elsewhere the exact test per array. */
+#if RIGIDSYM_AVX2_FORMS
 typedef struct {
     __m256i hi, lo;      /* max of the high words of a, min of the high words of a - 1 */
     uint64_t hs, ls;     /* the same over the arrays' last len % 4 values, in 64 bits */
@@ -443,7 +452,8 @@ static inline int rigidsym_extreme_any(const rigidsym_extreme_acc *s) { return s
 #endif
 
 /* float64 lanes across samples (RIGIDSYM_VEC_F64, the kernels of VEC_F64 in
- * rigidsym.codegen.backends.extension.target): on x86-64-v3 such a kernel's lanes function
+ * rigidsym.codegen.backends.extension.target): on x86-64-v3 (and on x86-64-v4 for those of
+ * VEC_F64_V4: RIGIDSYM_AVX2_FORMS above) such a kernel's lanes function
  * transposes each group of 4 samples' row-major inputs into columns of 4 (4 x 4 tiles of
  * unpack and 128-bit permutes, contiguous loads, no gathers), runs the sample's arithmetic
  * on GCC vector types (rigidsym_v4d: one IEEE operation per lane and operator, in the
@@ -452,7 +462,7 @@ static inline int rigidsym_extreme_any(const rigidsym_extreme_acc *s) { return s
  * in registers, and transposes the outputs back. Measured against the row-major loop and
  * its second pass: benchmarks/RESULTS.md. -DRIGIDSYM_NO_VEC_F64 compiles the row-major loop
  * instead (the same bits: tests/test_vector_lanes.py compares the two). */
-#if defined(__AVX2__) && !defined(__AVX512F__) && defined(__GNUC__) && \
+#if RIGIDSYM_AVX2_FORMS && defined(__GNUC__) && \
     !defined(RIGIDSYM_NO_VEC_F64)
 #define RIGIDSYM_VEC_F64 1
 typedef double rigidsym_v4d __attribute__((vector_size(32)));

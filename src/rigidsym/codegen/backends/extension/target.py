@@ -82,6 +82,30 @@ VEC_F64 = frozenset({"H_matrix", "H_matrix_dot", "H_tilde", "H_tilde_dot", "L_ma
     "point_acceleration_with_jacobians", "rotation_from_natural_invariants",
     "screw_axis_point", "screw_axis_point_with_jacobians", "twist_transfer", "wrench_axis",
     "wrench_transfer"})
+#: the kernels of ``VEC_F64`` whose lanes run on x86-64-v4 (an AVX-512 CPU) as well, where
+#: the others keep the compiler's own vectorisation of the row-major loop and the AVX-512
+#: range test as a second pass: the kernel's C defines ``RIGIDSYM_VEC_F64_ON_V4`` before
+#: including ``rigidsym_common.h``. Chosen by measurement on an AVX-512 CPU
+#: (``benchmarks/vec_lanes_select.py --kernels`` over the 73, record
+#: ``vec_lanes_v4.json``): those faster than the v4 loop in cache and at N = 2e5 in two runs,
+#: the same bits; K6 (``newton_euler_residual``) 0.71 and 0.80-0.83, K4 level (not listed).
+VEC_F64_V4 = frozenset({
+    "H_matrix", "H_matrix_dot", "H_tilde_dot", "L_matrix", "L_matrix_dot", "L_tilde",
+    "L_tilde_dot", "N_matrix", "N_matrix_dot", "N_tilde", "N_tilde_dot",
+    "euler_rate_matrix_xyx_body", "euler_rate_matrix_xyx_fixed",
+    "euler_rate_matrix_xyz_body", "euler_rate_matrix_xyz_fixed",
+    "euler_rate_matrix_xzx_body", "euler_rate_matrix_xzx_fixed",
+    "euler_rate_matrix_xzy_body", "euler_rate_matrix_xzy_fixed",
+    "euler_rate_matrix_yxy_body", "euler_rate_matrix_yxy_fixed",
+    "euler_rate_matrix_yxz_body", "euler_rate_matrix_yxz_fixed",
+    "euler_rate_matrix_yzx_body", "euler_rate_matrix_yzy_body",
+    "euler_rate_matrix_yzy_fixed", "euler_rate_matrix_zxy_body",
+    "euler_rate_matrix_zxy_fixed", "euler_rate_matrix_zxz_body",
+    "euler_rate_matrix_zxz_fixed", "euler_rate_matrix_zyx_body",
+    "euler_rate_matrix_zyx_fixed", "euler_rate_matrix_zyz_body",
+    "euler_rate_matrix_zyz_fixed", "newton_euler_residual",
+    "rotation_from_natural_invariants", "screw_axis_point_with_jacobians"})
+
 #: the functions the vector text may call: each is defined in ``c_common.h.j2`` and does the
 #: scalar form's IEEE operations lane by lane (fma as ``_mm256_fmadd_pd``, one rounding)
 VEC_CALLS = frozenset({"rigidsym_diffprod_v4", "rigidsym_sumprod2_v4", "rigidsym_sumprod3_v4",
@@ -151,6 +175,7 @@ def render_kernel(ctx: RenderContext, kc) -> dict[str, str]:
                                                  soa_f32=k.name in SOA_F32,
                                                  soa_f64=k.name in SOA_F64,
                                                  vec_f64=vec,
+                                                 vec_v4=k.name in VEC_F64_V4,
                                                  vec_text=vtext,
                                                  f32=f32_code(kc), **common)
     return files
