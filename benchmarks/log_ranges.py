@@ -14,8 +14,9 @@ temporary folder (or ``--dir``) and built by the generated CMake project (no bui
 Release). ``benchmarks/log_ranges/bench.cpp`` (``g++ -O2 -DNDEBUG``) times, float64, the
 C++ layer ``rigidsym::eigen::rotation_vector_from_rotation``, gtsam's ``SO3::Logmap`` and the
 hand-written Eigen log of ``benchmarks/cpp_eigen/bench.cpp`` (behind a call, and inline), and
-rigidsym's C function itself on a row-major copy of the table (``c_ns``: the layer less its
-copies in and out), on 20000 rotations a range, angle uniform on small [1e-4, 0.1],
+rigidsym's C function itself on a row-major copy of the table (``c_ns``) and the layer on it
+as a row-major Eigen matrix (``rigidsym_rowmajor_ns``, passed on uncopied): the layer less its
+copy of a column-major Q, on 20000 rotations a range, angle uniform on small [1e-4, 0.1],
 uniform [0, pi] and near pi [pi - 0.1, pi], axis uniform on the sphere: ``--n`` calls in
 ``--rounds`` interleaved rounds, thread CPU time, the least round; ``--runs`` runs. It
 first checks the three agree (see the driver) and rigidsym's status is 0. Writes the record:
@@ -40,7 +41,8 @@ from cpp_eigen import build, cpu_name  # noqa: E402
 ROOT = Path(__file__).resolve().parents[1]
 BENCH = ROOT / "benchmarks" / "log_ranges" / "bench.cpp"
 KERNEL = "rotation_vector_from_rotation"
-COLUMNS = ["rigidsym_ns", "gtsam_ns", "hand_ns", "hand_inline_ns", "c_ns", "maxdiff_gtsam",
+COLUMNS = ["rigidsym_ns", "gtsam_ns", "hand_ns", "hand_inline_ns", "c_ns",
+           "rigidsym_rowmajor_ns", "maxdiff_gtsam",
            "maxdiff_gtsam_near_pi_branch", "maxdiff_hand", "n_near_pi_branch"]
 CONFIG_H = """#pragma once
 #define GTSAM_VERSION_MAJOR 4
@@ -128,7 +130,7 @@ def main(argv: list[str] | None = None) -> int:
         after = [round(x, 2) for x in os.getloadavg()]
     best = {}
     for name in runs[0]:
-        b = {c: min(r[name][c] for r in runs) for c in COLUMNS[:5]}
+        b = {c: min(r[name][c] for r in runs) for c in COLUMNS[:6]}
         b["ratio_gtsam"] = round(b["rigidsym_ns"] / b["gtsam_ns"], 3)
         b["ratio_hand"] = round(b["rigidsym_ns"] / b["hand_ns"], 3)
         best[name] = b
@@ -146,6 +148,7 @@ def main(argv: list[str] | None = None) -> int:
     for name, b in best.items():
         print(f"{name:8s} rigidsym {b['rigidsym_ns']:.2f}  gtsam {b['gtsam_ns']:.2f}  "
               f"hand {b['hand_ns']:.2f} (inline {b['hand_inline_ns']:.2f})  C {b['c_ns']:.2f}  "
+              f"rigidsym row-major {b['rigidsym_rowmajor_ns']:.2f}  "
               f"rigidsym/gtsam {b['ratio_gtsam']:.2f}  rigidsym/hand {b['ratio_hand']:.2f}")
     return 0
 

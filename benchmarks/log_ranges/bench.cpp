@@ -2,8 +2,9 @@
 // angle: rigidsym's C++ layer (rigidsym::eigen::rotation_vector_from_rotation), gtsam's
 // SO3::Logmap (compiled from gtsam/geometry/SO3.cpp, an out-of-line call) and the hand-written
 // Eigen log of benchmarks/cpp_eigen/bench.cpp (hand_log), the last behind a call it cannot be
-// inlined through and inline; and rigidsym's C function itself on a row-major copy of the
-// table (no C++ layer: what the layer's copies in and out cost). Each range is a table of kTable rotations Q = exp(phi e): e
+// inlined through and inline; rigidsym's C function itself on a row-major copy of the table
+// (no C++ layer), and the layer on that copy as a row-major Eigen matrix (which it passes to
+// the C function without copying): what the layer's copy of a column-major Q costs. Each range is a table of kTable rotations Q = exp(phi e): e
 // uniform on the sphere, phi uniform on the range; the timed loops walk the table in order.
 // `bench N ROUNDS` first checks, on every sample, that rigidsym's status is 0 and that rigidsym
 // and hand agree within 1e-9 per component, and rigidsym and gtsam too where gtsam takes its
@@ -11,8 +12,8 @@
 // gtsam sources from before its PR #2723 are first-order accurate there, so that difference
 // is reported apart and only bounded by 1e-3 (exit 1 otherwise). Then it times N calls of each
 // in ROUNDS interleaved rounds (thread CPU time, the least round kept) and prints one line a
-// range: "range ns_rigidsym ns_gtsam ns_hand ns_hand_inline ns_c maxdiff_gtsam
-// maxdiff_gtsam_nearpi maxdiff_hand n_nearpi_branch".
+// range: "range ns_rigidsym ns_gtsam ns_hand ns_hand_inline ns_c ns_rigidsym_rowmajor
+// maxdiff_gtsam maxdiff_gtsam_nearpi maxdiff_hand n_nearpi_branch".
 // SPDX-License-Identifier: MIT
 #include <time.h>
 
@@ -53,7 +54,8 @@ struct Table {
     std::vector<Eigen::Matrix3d> Q;
     std::vector<gtsam::SO3> R;
     std::vector<std::array<double, 9>> rm;  // Q row-major, the C function's layout
-    Table(const Range& r, unsigned seed) : Q(kTable), R(kTable), rm(kTable) {
+    std::vector<Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> Qr;  // the same, as Eigen
+    Table(const Range& r, unsigned seed) : Q(kTable), R(kTable), rm(kTable), Qr(kTable) {
         std::mt19937_64 g(seed);
         std::normal_distribution<double> nd;
         std::uniform_real_distribution<double> ang(r.lo, r.hi);
@@ -63,6 +65,7 @@ struct Table {
             Q[i] = Eigen::AngleAxisd(ang(g), e).toRotationMatrix();
             R[i] = gtsam::SO3(Q[i]);
             for (int k = 0; k < 9; ++k) rm[i][k] = Q[i](k / 3, k % 3);
+            Qr[i] = Q[i];
         }
     }
 };
@@ -74,7 +77,7 @@ Eigen::Vector3d hand_log(const Eigen::Matrix3d& Q) {
 }
 __attribute__((noinline)) Eigen::Vector3d hand_call(const Eigen::Matrix3d& Q) { return hand_log(Q); }
 
-Eigen::Vector3d layer(const Eigen::Matrix3d& Q, int* status) {
+template <class M> Eigen::Vector3d layer(const M& Q, int* status) {
     const auto r = rigidsym::eigen::rotation_vector_from_rotation(Q);
     *status |= static_cast<int>(r.status);
     return r.w;
@@ -87,12 +90,13 @@ Eigen::Vector3d c_direct(const std::array<double, 9>& q, int* status) {
 }
 
 // one timed loop per variant: 0 rigidsym, 1 gtsam, 2 hand behind a call, 3 hand inline,
-// 4 rigidsym's C function
+// 4 rigidsym's C function, 5 rigidsym on the row-major matrix
 template <int V> __attribute__((noinline)) double loop(const Table& t, long n, int* st) {
     double acc = 0;
     int i = 0;
     for (long j = 0; j < n; ++j) {
-        const Eigen::Vector3d w = V == 4   ? c_direct(t.rm[i], st)
+        const Eigen::Vector3d w = V == 5   ? layer(t.Qr[i], st)
+                                  : V == 4 ? c_direct(t.rm[i], st)
                                   : V == 0 ? layer(t.Q[i], st)
                                   : V == 1 ? gtsam::SO3::Logmap(t.R[i])
                                   : V == 2 ? hand_call(t.Q[i])
@@ -111,7 +115,7 @@ bool run(const Range& r, unsigned seed, long n, int rounds) {
         int s = 0;
         const Eigen::Vector3d a = layer(t.Q[i], &s), b = gtsam::SO3::Logmap(t.R[i]), c = hand_log(t.Q[i]);
         const double eg = (a - b).cwiseAbs().maxCoeff(), eh = (a - c).cwiseAbs().maxCoeff();
-        if (c_direct(t.rm[i], &s) != a) s |= 256;  // the C function is the layer's
+        if (c_direct(t.rm[i], &s) != a || layer(t.Qr[i], &s) != a) s |= 256;  // the same function
         const bool near_pi = t.Q[i].trace() + 1.0 < 1e-3;
         npi += near_pi;
         (near_pi ? dgp : dg) = std::max(near_pi ? dgp : dg, eg);
@@ -122,8 +126,8 @@ bool run(const Range& r, unsigned seed, long n, int rounds) {
             return false;
         }
     }
-    constexpr int kV = 5;
-    double best[kV] = {1e300, 1e300, 1e300, 1e300, 1e300};
+    constexpr int kV = 6;
+    double best[kV] = {1e300, 1e300, 1e300, 1e300, 1e300, 1e300};
     volatile double sink = 0;
     int st = 0;
     for (int k = 0; k < rounds; ++k) {
@@ -134,14 +138,16 @@ bool run(const Range& r, unsigned seed, long n, int rounds) {
                            : which == 1 ? loop<1>(t, n, &st)
                            : which == 2 ? loop<2>(t, n, &st)
                            : which == 3 ? loop<3>(t, n, &st)
-                                        : loop<4>(t, n, &st));
+                           : which == 4 ? loop<4>(t, n, &st)
+                                        : loop<5>(t, n, &st));
             const double dt = now() - t0;
             if (dt < best[which]) best[which] = dt;
         }
     }
     const double per = 1e9 / static_cast<double>(n);
-    std::printf("%s %.3f %.3f %.3f %.3f %.3f %.3g %.3g %.3g %d\n", r.name, best[0] * per,
-                best[1] * per, best[2] * per, best[3] * per, best[4] * per, dg, dgp, dh, npi);
+    std::printf("%s %.3f %.3f %.3f %.3f %.3f %.3f %.3g %.3g %.3g %d\n", r.name, best[0] * per,
+                best[1] * per, best[2] * per, best[3] * per, best[4] * per, best[5] * per, dg, dgp, dh,
+                npi);
     return st == 0;
 }
 
