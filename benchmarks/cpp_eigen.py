@@ -53,17 +53,19 @@ def cpu_name() -> str:
     return platform.machine()
 
 
-def build(src: Path, work: Path, name: str, cflags: str) -> Path:
+def build(src: Path, work: Path, name: str, cflags: str, bench: Path = BENCH,
+          opt: str = "-O3", extra: tuple[str, ...] = ()) -> Path:
     """The generated folder ``src`` built by its CMake project with ``cflags`` added, and
-    the driver linked against it; returns the driver."""
+    the driver ``bench`` (at ``opt``, with ``extra`` arguments: include folders, objects)
+    linked against it; returns the driver."""
     b = work / f"build-{name}"
     subprocess.run(["cmake", "-S", str(src), "-B", str(b), "-DCMAKE_C_COMPILER=gcc",
                     f"-DCMAKE_C_FLAGS={cflags}"], check=True, capture_output=True)
     subprocess.run(["cmake", "--build", str(b), "-j2"], check=True, capture_output=True)
     exe = work / f"bench-{name}"
-    subprocess.run(["g++", "-std=c++17", "-O3", "-DNDEBUG", "-I/usr/include/eigen3",
-                    "-I", str(src), str(BENCH), str(b / "librigidsym_c.a"), "-o", str(exe)],
-                   check=True)
+    subprocess.run(["g++", "-std=c++17", opt, "-DNDEBUG", "-I/usr/include/eigen3",
+                    "-I", str(src), *extra, str(bench), str(b / "librigidsym_c.a"),
+                    "-o", str(exe)], check=True)
     return exe
 
 
