@@ -120,18 +120,32 @@ template <class D> struct row_major_contiguous
 
 /* The row-major values of an Eigen matrix of either storage order (or an expression): its
  * own storage where that is the layout (no copy), else element (i, j) copied to
- * p[i * cols + j] (a vector's, row or column, element i to p[i]). */
+ * p[i * cols + j] (a vector's, row or column, element i to p[i]). A matrix is copied by
+ * Eigen's own assignment to a row-major map of p (its fixed-size transposing copy), not by
+ * an element loop: the loop cost the rotation log 6-15 ns a call over the C function, and a
+ * varying amount with the stack's placement (benchmarks/RESULTS.md, the rotation log beside
+ * gtsam's). */
 template <class D>
 inline const typename D::Scalar *eigen_in(const Eigen::MatrixBase<D> &x,
                                           typename D::Scalar *, std::true_type) {
     return x.derived().data();
 }
 template <class D>
+inline void eigen_copy(const Eigen::MatrixBase<D> &x, typename D::Scalar *p, std::true_type) {
+    const auto &v = x.eval();
+    for (Eigen::Index i = 0; i < v.size(); ++i) p[i] = v(i);
+}
+template <class D>
+inline void eigen_copy(const Eigen::MatrixBase<D> &x, typename D::Scalar *p, std::false_type) {
+    using M = Eigen::Matrix<typename D::Scalar, D::RowsAtCompileTime, D::ColsAtCompileTime,
+                            Eigen::RowMajor>;
+    Eigen::Map<M> rows(p);
+    rows = x;
+}
+template <class D>
 inline const typename D::Scalar *eigen_in(const Eigen::MatrixBase<D> &x,
                                           typename D::Scalar *p, std::false_type) {
-    const auto &v = x.eval();
-    for (Eigen::Index i = 0; i < v.rows(); ++i)
-        for (Eigen::Index j = 0; j < v.cols(); ++j) p[i * v.cols() + j] = v(i, j);
+    eigen_copy(x, p, std::integral_constant<bool, bool(D::IsVectorAtCompileTime)>());
     return p;
 }
 template <class D>
@@ -710,19 +724,19 @@ inline body_energy_result<rs_S> body_energy(
                   "rigidsym::eigen::body_energy: v must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::body_energy: v must be an Eigen vector of size 3");
-    rs_S cp_v[3];
+    alignas(32) rs_S cp_v[3];
     const rs_S *const buf_v = ::rigidsym::detail::eigen_in(in_v, cp_v);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy: inertia must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D2, 3, 3>::value,
                   "rigidsym::eigen::body_energy: inertia must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S cp_inertia[9];
+    alignas(32) rs_S cp_inertia[9];
     const rs_S *const buf_inertia = ::rigidsym::detail::eigen_in(in_inertia, cp_inertia);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::body_energy: omega must be an Eigen vector of size 3");
-    rs_S cp_omega[3];
+    alignas(32) rs_S cp_omega[3];
     const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     body_energy_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy(in_m, buf_v, buf_inertia, buf_omega, &rs_result.T));
@@ -752,19 +766,19 @@ inline body_energy_with_jacobians_result<rs_S> body_energy_with_jacobians(
                   "rigidsym::eigen::body_energy_with_jacobians: v must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: v must be an Eigen vector of size 3");
-    rs_S cp_v[3];
+    alignas(32) rs_S cp_v[3];
     const rs_S *const buf_v = ::rigidsym::detail::eigen_in(in_v, cp_v);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: inertia must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D2, 3, 3>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: inertia must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S cp_inertia[9];
+    alignas(32) rs_S cp_inertia[9];
     const rs_S *const buf_inertia = ::rigidsym::detail::eigen_in(in_inertia, cp_inertia);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::body_energy_with_jacobians: omega must be an Eigen vector of size 3");
-    rs_S cp_omega[3];
+    alignas(32) rs_S cp_omega[3];
     const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     body_energy_with_jacobians_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_body_energy_with_jacobians(in_m, buf_v, buf_inertia, buf_omega, &rs_result.T, &rs_result.T_D_m, rs_result.T_D_v.data(), rs_result.T_D_inertia.data(), rs_result.T_D_omega.data()));
@@ -789,7 +803,7 @@ inline natural_invariants_from_rotation_result<typename rs_D0::Scalar> natural_i
                   "rigidsym::eigen::natural_invariants_from_rotation: Q must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D0, 3, 3>::value,
                   "rigidsym::eigen::natural_invariants_from_rotation: Q must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S cp_Q[9];
+    alignas(32) rs_S cp_Q[9];
     const rs_S *const buf_Q = ::rigidsym::detail::eigen_in(in_Q, cp_Q);
     natural_invariants_from_rotation_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_natural_invariants_from_rotation(buf_Q, rs_result.e.data(), &rs_result.phi));
@@ -817,25 +831,25 @@ inline newton_euler_wrench_result<typename rs_D0::Scalar> newton_euler_wrench(
                   "rigidsym::eigen::newton_euler_wrench: I_C must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D0, 3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: I_C must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S cp_I_C[9];
+    alignas(32) rs_S cp_I_C[9];
     const rs_S *const buf_I_C = ::rigidsym::detail::eigen_in(in_I_C, cp_I_C);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega must be an Eigen vector of size 3");
-    rs_S cp_omega[3];
+    alignas(32) rs_S cp_omega[3];
     const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega_dot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: omega_dot must be an Eigen vector of size 3");
-    rs_S cp_omega_dot[3];
+    alignas(32) rs_S cp_omega_dot[3];
     const rs_S *const buf_omega_dot = ::rigidsym::detail::eigen_in(in_omega_dot, cp_omega_dot);
     static_assert(std::is_same<typename rs_D4::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench: c_ddot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D4, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench: c_ddot must be an Eigen vector of size 3");
-    rs_S cp_c_ddot[3];
+    alignas(32) rs_S cp_c_ddot[3];
     const rs_S *const buf_c_ddot = ::rigidsym::detail::eigen_in(in_c_ddot, cp_c_ddot);
     newton_euler_wrench_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench(buf_I_C, in_m, buf_omega, buf_omega_dot, buf_c_ddot, rs_result.w.data()));
@@ -868,25 +882,25 @@ inline newton_euler_wrench_with_jacobians_result<typename rs_D0::Scalar> newton_
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: I_C must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_shape<rs_D0, 3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: I_C must be a 3 x 3 Eigen matrix (either storage order)");
-    rs_S cp_I_C[9];
+    alignas(32) rs_S cp_I_C[9];
     const rs_S *const buf_I_C = ::rigidsym::detail::eigen_in(in_I_C, cp_I_C);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega must be an Eigen vector of size 3");
-    rs_S cp_omega[3];
+    alignas(32) rs_S cp_omega[3];
     const rs_S *const buf_omega = ::rigidsym::detail::eigen_in(in_omega, cp_omega);
     static_assert(std::is_same<typename rs_D3::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega_dot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D3, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: omega_dot must be an Eigen vector of size 3");
-    rs_S cp_omega_dot[3];
+    alignas(32) rs_S cp_omega_dot[3];
     const rs_S *const buf_omega_dot = ::rigidsym::detail::eigen_in(in_omega_dot, cp_omega_dot);
     static_assert(std::is_same<typename rs_D4::Scalar, rs_S>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: c_ddot must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D4, 3>::value,
                   "rigidsym::eigen::newton_euler_wrench_with_jacobians: c_ddot must be an Eigen vector of size 3");
-    rs_S cp_c_ddot[3];
+    alignas(32) rs_S cp_c_ddot[3];
     const rs_S *const buf_c_ddot = ::rigidsym::detail::eigen_in(in_c_ddot, cp_c_ddot);
     newton_euler_wrench_with_jacobians_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_newton_euler_wrench_with_jacobians(buf_I_C, in_m, buf_omega, buf_omega_dot, buf_c_ddot, rs_result.w.data(), rs_result.w_D_I_C.data(), rs_result.w_D_m.data(), rs_result.w_D_omega.data(), rs_result.w_D_omega_dot.data(), rs_result.w_D_c_ddot.data()));
@@ -954,7 +968,7 @@ inline quaternion_rotation_result<typename rs_D0::Scalar> quaternion_rotation(
                   "rigidsym::eigen::quaternion_rotation: q must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 4>::value,
                   "rigidsym::eigen::quaternion_rotation: q must be an Eigen vector of size 4");
-    rs_S cp_q[4];
+    alignas(32) rs_S cp_q[4];
     const rs_S *const buf_q = ::rigidsym::detail::eigen_in(in_q, cp_q);
     quaternion_rotation_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation(buf_q, rs_result.Q.data()));
@@ -979,7 +993,7 @@ inline quaternion_rotation_with_jacobians_result<typename rs_D0::Scalar> quatern
                   "rigidsym::eigen::quaternion_rotation_with_jacobians: q must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 4>::value,
                   "rigidsym::eigen::quaternion_rotation_with_jacobians: q must be an Eigen vector of size 4");
-    rs_S cp_q[4];
+    alignas(32) rs_S cp_q[4];
     const rs_S *const buf_q = ::rigidsym::detail::eigen_in(in_q, cp_q);
     quaternion_rotation_with_jacobians_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_quaternion_rotation_with_jacobians(buf_q, rs_result.Q.data(), rs_result.Q_D_q.data()));
@@ -1004,7 +1018,7 @@ inline rotation_from_natural_invariants_result<typename rs_D0::Scalar> rotation_
                   "rigidsym::eigen::rotation_from_natural_invariants: e must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 3>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants: e must be an Eigen vector of size 3");
-    rs_S cp_e[3];
+    alignas(32) rs_S cp_e[3];
     const rs_S *const buf_e = ::rigidsym::detail::eigen_in(in_e, cp_e);
     rotation_from_natural_invariants_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants(buf_e, in_phi, rs_result.Q.data()));
@@ -1031,7 +1045,7 @@ inline rotation_from_natural_invariants_with_jacobians_result<typename rs_D0::Sc
                   "rigidsym::eigen::rotation_from_natural_invariants_with_jacobians: e must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 3>::value,
                   "rigidsym::eigen::rotation_from_natural_invariants_with_jacobians: e must be an Eigen vector of size 3");
-    rs_S cp_e[3];
+    alignas(32) rs_S cp_e[3];
     const rs_S *const buf_e = ::rigidsym::detail::eigen_in(in_e, cp_e);
     rotation_from_natural_invariants_with_jacobians_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_rotation_from_natural_invariants_with_jacobians(buf_e, in_phi, rs_result.Q.data(), rs_result.Q_D_e.data(), rs_result.Q_D_phi.data()));
@@ -1057,19 +1071,19 @@ inline twist_transfer_result<typename rs_D0::Scalar> twist_transfer(
                   "rigidsym::eigen::twist_transfer: t_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::twist_transfer: t_A must be an Eigen vector of size 6");
-    rs_S cp_t_A[6];
+    alignas(32) rs_S cp_t_A[6];
     const rs_S *const buf_t_A = ::rigidsym::detail::eigen_in(in_t_A, cp_t_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::twist_transfer: a must be an Eigen vector of size 3");
-    rs_S cp_a[3];
+    alignas(32) rs_S cp_a[3];
     const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::twist_transfer: p must be an Eigen vector of size 3");
-    rs_S cp_p[3];
+    alignas(32) rs_S cp_p[3];
     const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     twist_transfer_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer(buf_t_A, buf_a, buf_p, rs_result.t_P.data()));
@@ -1098,19 +1112,19 @@ inline twist_transfer_with_jacobians_result<typename rs_D0::Scalar> twist_transf
                   "rigidsym::eigen::twist_transfer_with_jacobians: t_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: t_A must be an Eigen vector of size 6");
-    rs_S cp_t_A[6];
+    alignas(32) rs_S cp_t_A[6];
     const rs_S *const buf_t_A = ::rigidsym::detail::eigen_in(in_t_A, cp_t_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: a must be an Eigen vector of size 3");
-    rs_S cp_a[3];
+    alignas(32) rs_S cp_a[3];
     const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::twist_transfer_with_jacobians: p must be an Eigen vector of size 3");
-    rs_S cp_p[3];
+    alignas(32) rs_S cp_p[3];
     const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     twist_transfer_with_jacobians_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_twist_transfer_with_jacobians(buf_t_A, buf_a, buf_p, rs_result.t_P.data(), rs_result.t_P_D_t_A.data(), rs_result.t_P_D_a.data(), rs_result.t_P_D_p.data()));
@@ -1136,19 +1150,19 @@ inline wrench_transfer_result<typename rs_D0::Scalar> wrench_transfer(
                   "rigidsym::eigen::wrench_transfer: w_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::wrench_transfer: w_A must be an Eigen vector of size 6");
-    rs_S cp_w_A[6];
+    alignas(32) rs_S cp_w_A[6];
     const rs_S *const buf_w_A = ::rigidsym::detail::eigen_in(in_w_A, cp_w_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::wrench_transfer: a must be an Eigen vector of size 3");
-    rs_S cp_a[3];
+    alignas(32) rs_S cp_a[3];
     const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::wrench_transfer: p must be an Eigen vector of size 3");
-    rs_S cp_p[3];
+    alignas(32) rs_S cp_p[3];
     const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     wrench_transfer_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer(buf_w_A, buf_a, buf_p, rs_result.w_P.data()));
@@ -1177,19 +1191,19 @@ inline wrench_transfer_with_jacobians_result<typename rs_D0::Scalar> wrench_tran
                   "rigidsym::eigen::wrench_transfer_with_jacobians: w_A must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D0, 6>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: w_A must be an Eigen vector of size 6");
-    rs_S cp_w_A[6];
+    alignas(32) rs_S cp_w_A[6];
     const rs_S *const buf_w_A = ::rigidsym::detail::eigen_in(in_w_A, cp_w_A);
     static_assert(std::is_same<typename rs_D1::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: a must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D1, 3>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: a must be an Eigen vector of size 3");
-    rs_S cp_a[3];
+    alignas(32) rs_S cp_a[3];
     const rs_S *const buf_a = ::rigidsym::detail::eigen_in(in_a, cp_a);
     static_assert(std::is_same<typename rs_D2::Scalar, rs_S>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: p must have the scalar type of the other arguments");
     static_assert(::rigidsym::detail::is_vector<rs_D2, 3>::value,
                   "rigidsym::eigen::wrench_transfer_with_jacobians: p must be an Eigen vector of size 3");
-    rs_S cp_p[3];
+    alignas(32) rs_S cp_p[3];
     const rs_S *const buf_p = ::rigidsym::detail::eigen_in(in_p, cp_p);
     wrench_transfer_with_jacobians_result<rs_S> rs_result;
     rs_result.status = static_cast<Status>(::rigidsym::detail::call_wrench_transfer_with_jacobians(buf_w_A, buf_a, buf_p, rs_result.w_P.data(), rs_result.w_P_D_w_A.data(), rs_result.w_P_D_a.data(), rs_result.w_P_D_p.data()));
