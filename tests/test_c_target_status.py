@@ -312,11 +312,12 @@ def test_the_log_of_tiny_rotations_is_status_0_everywhere(tmp_path, dtype):
 
 
 def check_detect(tmp: Path, kernel: str, dtype, n: int, builds) -> None:
-    """-DRIGIDSYM_C_DETECT (the evaluation first, its flags read after it): the status of
-    every row the same as the default build's (gcc -O2), the outputs the same bits in
-    every detecting build (with and without a flush mode), status-0 rows within the
-    reference's bound; rows: ordinary small inputs, the same scaled by 2^-600 (double) or
-    2^-40 (float) where nothing underflows, overflowing, underflowing and non-finite ones."""
+    """The default build on x86-64 (the evaluation first, its flags read after it): the
+    status of every row the same as the predicting build's (-DRIGIDSYM_C_PREDICT, the range
+    test first; gcc -O2), the outputs the same bits in every detecting build (with and
+    without a flush mode), status-0 rows within the reference's bound; rows: ordinary small
+    inputs, the same scaled by 2^-600 (double) or 2^-40 (float) where nothing underflows,
+    overflowing, underflowing and non-finite ones."""
     rows, made = ordinary(kernel, n, 3)
     scaled = rows[:64] * (2.0 ** (-600 if dtype == np.float64 else -40))
     huge = rows[:3].copy()
@@ -328,9 +329,9 @@ def check_detect(tmp: Path, kernel: str, dtype, n: int, builds) -> None:
         huge[:, :3] = 1e25 if dtype == np.float32 else 1e200
         huge[:, 6:9] = 1e25 if dtype == np.float32 else 1e200
     allrows = np.vstack([rows, scaled, huge, bad])
-    ref = run_builds(tmp, KERNELS_DIR, kernel, dtype, allrows, [("gcc", "-O2")])
-    got = run_builds(tmp, KERNELS_DIR, kernel, dtype, allrows, builds,
-                     ("-DRIGIDSYM_C_DETECT",))
+    ref = run_builds(tmp, KERNELS_DIR, kernel, dtype, allrows, [("gcc", "-O2")],
+                     ("-DRIGIDSYM_C_PREDICT",))
+    got = run_builds(tmp, KERNELS_DIR, kernel, dtype, allrows, builds)
     status0 = ref["gcc", "-O2"][0]
     for key, (status, _, _) in got.items():
         assert np.array_equal(status, status0), (key, np.flatnonzero(status != status0)[:5])

@@ -261,7 +261,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -326,7 +326,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     double rs_in0_[3];
     double rs_in1_[9];
     double rs_in2_[3];
@@ -338,7 +338,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double c0_v = in_v[0];
         const double c1_v = in_v[1];
         const double c2_v = in_v[2];
@@ -436,6 +439,12 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
 #endif
     if (odd >> 63)
         return rigidsym_c_body_energy_odd(in_m, in_v, in_inertia, in_omega, out_T);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const double c0_v = in_v[0];
     const double c1_v = in_v[1];
@@ -744,7 +753,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -812,7 +821,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     float rs_in0_[3];
     float rs_in1_[9];
     float rs_in2_[3];
@@ -824,7 +833,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float c0_v = in_v[0];
         const float c1_v = in_v[1];
         const float c2_v = in_v[2];
@@ -914,6 +926,12 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_body_energy_f32_odd(in_m, in_v, in_inertia, in_omega, out_T);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const float c0_v = in_v[0];
     const float c1_v = in_v[1];
@@ -1418,7 +1436,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -1496,7 +1514,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     double rs_in0_[3];
     double rs_in1_[9];
     double rs_in2_[3];
@@ -1508,7 +1526,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double c0_v = in_v[0];
         const double c1_v = in_v[1];
         const double c2_v = in_v[2];
@@ -1640,6 +1661,12 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
 #endif
     if (odd >> 63)
         return rigidsym_c_body_energy_with_jacobians_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const double c0_v = in_v[0];
     const double c1_v = in_v[1];
@@ -2162,7 +2189,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -2243,7 +2270,7 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     float rs_in0_[3];
     float rs_in1_[9];
     float rs_in2_[3];
@@ -2255,7 +2282,10 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float c0_v = in_v[0];
         const float c1_v = in_v[1];
         const float c2_v = in_v[2];
@@ -2379,6 +2409,12 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_body_energy_with_jacobians_f32_odd(in_m, in_v, in_inertia, in_omega, out_T, out_T_D_m, out_T_D_v, out_T_D_inertia, out_T_D_omega);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const float c0_v = in_v[0];
     const float c1_v = in_v[1];

@@ -248,6 +248,17 @@ static inline int rigidsym_c_fp_risky(void)
 /* strict floating-point exceptions for the rest of a block (clang 12 and later; GCC keeps
  * them by its default -ftrapping-math): the flags step's evaluation raises only the flags of
  * the operations the source evaluates */
+/* Detected, not predicted (x86-64 with GCC or clang, where MXCSR is read): a kernel of
+ * sums, products, integer powers, sin and cos alone, in one branch, every input component
+ * used and no unit-vector or rotation argument (kernel.c.j2's detecting block) is evaluated
+ * first and MXCSR read once after it; the range test runs only where that read shows a risky
+ * flag or DAZ, or an output is not finite. -DRIGIDSYM_C_PREDICT keeps the range test first,
+ * as on other targets (the same statuses: tests/test_c_target_status.py). */
+#if defined(RIGIDSYM_C_FP_DAZ) && !defined(RIGIDSYM_C_PREDICT)
+#define RIGIDSYM_C_DETECTS 1
+#else
+#define RIGIDSYM_C_DETECTS 0
+#endif
 #if defined(__clang__) && __clang_major__ >= 12
 #define RIGIDSYM_C_STRICT_FP _Pragma("clang fp exceptions(strict)")
 #else

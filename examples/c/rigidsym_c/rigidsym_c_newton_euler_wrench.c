@@ -288,7 +288,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -353,7 +353,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     double rs_in0_[9];
     double rs_in1_[3];
     double rs_in2_[3];
@@ -366,7 +366,10 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double c0_I_C = in_I_C[0];
         const double c1_I_C = in_I_C[1];
         const double c2_I_C = in_I_C[2];
@@ -489,6 +492,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench(
 #endif
     if (odd >> 63)
         return rigidsym_c_newton_euler_wrench_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const double c0_I_C = in_I_C[0];
     const double c1_I_C = in_I_C[1];
@@ -835,7 +844,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -903,7 +912,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     float rs_in0_[9];
     float rs_in1_[3];
     float rs_in2_[3];
@@ -916,7 +925,10 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float c0_I_C = in_I_C[0];
         const float c1_I_C = in_I_C[1];
         const float c2_I_C = in_I_C[2];
@@ -1029,6 +1041,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_newton_euler_wrench_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const float c0_I_C = in_I_C[0];
     const float c1_I_C = in_I_C[1];
@@ -2019,7 +2037,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -2099,7 +2117,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     double rs_in0_[9];
     double rs_in1_[3];
     double rs_in2_[3];
@@ -2112,7 +2130,10 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double c0_I_C = in_I_C[0];
         const double c1_I_C = in_I_C[1];
         const double c2_I_C = in_I_C[2];
@@ -2370,6 +2391,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians(
 #endif
     if (odd >> 63)
         return rigidsym_c_newton_euler_wrench_with_jacobians_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const double c0_I_C = in_I_C[0];
     const double c1_I_C = in_I_C[1];
@@ -3366,7 +3393,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -3449,7 +3476,7 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     float rs_in0_[9];
     float rs_in1_[3];
     float rs_in2_[3];
@@ -3462,7 +3489,10 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float c0_I_C = in_I_C[0];
         const float c1_I_C = in_I_C[1];
         const float c2_I_C = in_I_C[2];
@@ -3710,6 +3740,12 @@ RIGIDSYM_C_API int rigidsym_c_newton_euler_wrench_with_jacobians_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_newton_euler_wrench_with_jacobians_f32_odd(in_I_C, in_m, in_omega, in_omega_dot, in_c_ddot, out_w, out_w_D_I_C, out_w_D_m, out_w_D_omega, out_w_D_omega_dot, out_w_D_c_ddot);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const float c0_I_C = in_I_C[0];
     const float c1_I_C = in_I_C[1];

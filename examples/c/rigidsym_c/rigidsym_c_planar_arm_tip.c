@@ -207,7 +207,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -271,7 +271,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     {   /* detected, not predicted: the evaluation as written, then one read of the flags.
          * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
          * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
@@ -280,7 +280,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double x0 = in_q1 + in_q2;
         out_p[0] = in_l1*cos(in_q1) + in_l2*cos(x0);
         out_p[1] = in_l1*sin(in_q1) + in_l2*sin(x0);
@@ -329,6 +332,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
 #endif
     if (odd >> 63)
         return rigidsym_c_planar_arm_tip_odd(in_q1, in_q2, in_l1, in_l2, out_p);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     {
         const double x0 = in_q1 + in_q2;
@@ -576,7 +585,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -643,7 +652,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     {   /* detected, not predicted: the evaluation as written, then one read of the flags.
          * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
          * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
@@ -652,7 +661,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float x0 = in_q1 + in_q2;
         out_p[0] = in_l1*cosf(in_q1) + in_l2*cosf(x0);
         out_p[1] = in_l1*sinf(in_q1) + in_l2*sinf(x0);
@@ -696,6 +708,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_planar_arm_tip_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     {
         const float x0 = in_q1 + in_q2;
@@ -1026,7 +1044,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -1102,7 +1120,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     {   /* detected, not predicted: the evaluation as written, then one read of the flags.
          * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
          * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
@@ -1111,7 +1129,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double x0 = cos(in_q1);
         const double x1 = in_q1 + in_q2;
         const double x2 = cos(x1);
@@ -1176,6 +1197,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
 #endif
     if (odd >> 63)
         return rigidsym_c_planar_arm_tip_with_jacobians_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     {
         const double x0 = cos(in_q1);
@@ -1519,7 +1546,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -1598,7 +1625,7 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     {   /* detected, not predicted: the evaluation as written, then one read of the flags.
          * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
          * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
@@ -1607,7 +1634,10 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float x0 = cosf(in_q1);
         const float x1 = in_q1 + in_q2;
         const float x2 = cosf(x1);
@@ -1667,6 +1697,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     {
         const float x0 = cosf(in_q1);

@@ -224,7 +224,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_wrench_transfer_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -287,7 +287,7 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     double rs_in0_[6];
     double rs_in1_[3];
     double rs_in2_[3];
@@ -299,7 +299,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double c0_w_A = in_w_A[0];
         const double c1_w_A = in_w_A[1];
         const double c2_w_A = in_w_A[2];
@@ -391,6 +394,12 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer(
 #endif
     if (odd >> 63)
         return rigidsym_c_wrench_transfer_odd(in_w_A, in_a, in_p, out_w_P);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const double c0_w_A = in_w_A[0];
     const double c1_w_A = in_w_A[1];
@@ -665,7 +674,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_wrench_transfer_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -731,7 +740,7 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     float rs_in0_[6];
     float rs_in1_[3];
     float rs_in2_[3];
@@ -743,7 +752,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float c0_w_A = in_w_A[0];
         const float c1_w_A = in_w_A[1];
         const float c2_w_A = in_w_A[2];
@@ -832,6 +844,12 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_wrench_transfer_f32_odd(in_w_A, in_a, in_p, out_w_P);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const float c0_w_A = in_w_A[0];
     const float c1_w_A = in_w_A[1];
@@ -1450,7 +1468,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_wrench_transfer_with_jacobians_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_D
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -1522,7 +1540,7 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians(
     double finite = 0.0;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint64_t odd = 0;
-#if RIGIDSYM_C_FLAGS_D && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
     double rs_in0_[6];
     double rs_in1_[3];
     double rs_in2_[3];
@@ -1534,7 +1552,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const double c0_w_A = in_w_A[0];
         const double c1_w_A = in_w_A[1];
         const double c2_w_A = in_w_A[2];
@@ -1704,6 +1725,12 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians(
 #endif
     if (odd >> 63)
         return rigidsym_c_wrench_transfer_with_jacobians_odd(in_w_A, in_a, in_p, out_w_P, out_w_P_D_w_A, out_w_P_D_a, out_w_P_D_p);
+#if RIGIDSYM_C_FLAGS_D && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const double c0_w_A = in_w_A[0];
     const double c1_w_A = in_w_A[1];
@@ -2320,7 +2347,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_wrench_transfer_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if defined(RIGIDSYM_C_DETECT) && defined(RIGIDSYM_C_FP_DAZ)
+#if RIGIDSYM_C_DETECTS
     if (status == RIGIDSYM_C_EXTREME_INPUT) {
         /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
          * modes off), kept where it raised none of underflow, overflow, invalid and
@@ -2395,7 +2422,7 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && defined(RIGIDSYM_C_FP_DAZ) && defined(RIGIDSYM_C_DETECT)
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
     float rs_in0_[6];
     float rs_in1_[3];
     float rs_in2_[3];
@@ -2407,7 +2434,10 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_f32(
          * the normal range: status 0, the bits the range test's path gives (its rescues
          * scale by powers of two, exact where nothing underflows or overflows). Otherwise
          * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md). Compiled with -DRIGIDSYM_C_DETECT. */
+         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
+         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
+         * ordinary input otherwise) and its outputs are returned. Off with
+         * -DRIGIDSYM_C_PREDICT. */
         const float c0_w_A = in_w_A[0];
         const float c1_w_A = in_w_A[1];
         const float c2_w_A = in_w_A[2];
@@ -2574,6 +2604,12 @@ RIGIDSYM_C_API int rigidsym_c_wrench_transfer_with_jacobians_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_wrench_transfer_with_jacobians_f32_odd(in_w_A, in_a, in_p, out_w_P, out_w_P_D_w_A, out_w_P_D_a, out_w_P_D_p);
+#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
+    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
+     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
+     * range test, not a second evaluation) */
+    return status;
+#endif
 #endif
     const float c0_w_A = in_w_A[0];
     const float c1_w_A = in_w_A[1];
