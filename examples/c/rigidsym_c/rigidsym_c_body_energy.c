@@ -204,7 +204,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_plain(
     const double c1_omega = in_omega[1];
     const double c2_omega = in_omega[2];
     {
-        out_T[0] = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        const double st0_ = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        out_T[0] = st0_;
     }
     /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
      * compiler from folding it) */
@@ -357,10 +358,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
         const double c0_omega = in_omega[0];
         const double c1_omega = in_omega[1];
         const double c2_omega = in_omega[2];
-        out_T[0] = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const double st0_ = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        out_T[0] = st0_;
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const double s_ = out_T[0];   /* finite only where every output is */
+            const double s_ = st0_;   /* finite only where every output is */
             if (s_ - s_ == 0.0)
                 return status;
         }
@@ -462,7 +464,8 @@ RIGIDSYM_C_API int rigidsym_c_body_energy(
     const double c1_omega = in_omega[1];
     const double c2_omega = in_omega[2];
     {
-        out_T[0] = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        const double st0_ = (0.5)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        out_T[0] = st0_;
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -696,7 +699,8 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_f32_plain(
     const float c1_omega = in_omega[1];
     const float c2_omega = in_omega[2];
     {
-        out_T[0] = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        const float st0_ = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        out_T[0] = st0_;
     }
     /* x - x is 0 for finite x, NaN otherwise (the guards of rigidsym_c_impl.h keep the
      * compiler from folding it) */
@@ -852,10 +856,11 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
         const float c0_omega = in_omega[0];
         const float c1_omega = in_omega[1];
         const float c2_omega = in_omega[2];
-        out_T[0] = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const float st0_ = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        out_T[0] = st0_;
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = out_T[0];   /* finite only where every output is */
+            const float s_ = st0_;   /* finite only where every output is */
             if (s_ - s_ == 0.0f)
                 return status;
         }
@@ -949,7 +954,8 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_f32(
     const float c1_omega = in_omega[1];
     const float c2_omega = in_omega[2];
     {
-        out_T[0] = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        const float st0_ = (0.5f)*in_m*((c0_v*c0_v) + (c1_v*c1_v) + (c2_v*c2_v)) + (0.5f)*c0_omega*(c0_inertia*c0_omega + c3_inertia*c1_omega + c6_inertia*c2_omega) + (0.5f)*c1_omega*(c1_inertia*c0_omega + c4_inertia*c1_omega + c7_inertia*c2_omega) + (0.5f)*c2_omega*(c2_inertia*c0_omega + c5_inertia*c1_omega + c8_inertia*c2_omega);
+        out_T[0] = st0_;
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -1334,23 +1340,34 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_plain(
         const double x15 = c1_omega*x6;
         const double x16 = c2_omega*x6;
         const double x17 = c2_omega*x10;
-        out_T[0] = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        out_T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
-        out_T_D_v[0] = in_m*c0_v;
-        out_T_D_v[1] = in_m*c1_v;
-        out_T_D_v[2] = in_m*c2_v;
-        out_T_D_inertia[0] = (0.5)*(c0_omega*c0_omega);
-        out_T_D_inertia[1] = x15;
-        out_T_D_inertia[2] = x16;
-        out_T_D_inertia[3] = x15;
-        out_T_D_inertia[4] = (0.5)*(c1_omega*c1_omega);
-        out_T_D_inertia[5] = x17;
-        out_T_D_inertia[6] = x16;
-        out_T_D_inertia[7] = x17;
-        out_T_D_inertia[8] = (0.5)*(c2_omega*c2_omega);
-        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
-        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
-        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        const double st0_ = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T[0] = st0_;
+        const double st1_ = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
+        out_T_D_m[0] = st1_;
+        const double st2_ = in_m*c0_v;
+        const double st3_ = in_m*c1_v;
+        RIGIDSYM_C_PUT2D(out_T_D_v, st2_, st3_);
+        const double st4_ = in_m*c2_v;
+        out_T_D_v[2] = st4_;
+        const double st5_ = (0.5)*(c0_omega*c0_omega);
+        const double st6_ = x15;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia, st5_, st6_);
+        const double st7_ = x16;
+        const double st8_ = x15;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 2, st7_, st8_);
+        const double st9_ = (0.5)*(c1_omega*c1_omega);
+        const double st10_ = x17;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 4, st9_, st10_);
+        const double st11_ = x16;
+        const double st12_ = x17;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 6, st11_, st12_);
+        const double st13_ = (0.5)*(c2_omega*c2_omega);
+        out_T_D_inertia[8] = st13_;
+        const double st14_ = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
+        const double st15_ = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
+        RIGIDSYM_C_PUT2D(out_T_D_omega, st14_, st15_);
+        const double st16_ = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        out_T_D_omega[2] = st16_;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
@@ -1563,26 +1580,37 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         const double x15 = c1_omega*x6;
         const double x16 = c2_omega*x6;
         const double x17 = c2_omega*x10;
-        out_T[0] = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        out_T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
-        out_T_D_v[0] = in_m*c0_v;
-        out_T_D_v[1] = in_m*c1_v;
-        out_T_D_v[2] = in_m*c2_v;
-        out_T_D_inertia[0] = (0.5)*(c0_omega*c0_omega);
-        out_T_D_inertia[1] = x15;
-        out_T_D_inertia[2] = x16;
-        out_T_D_inertia[3] = x15;
-        out_T_D_inertia[4] = (0.5)*(c1_omega*c1_omega);
-        out_T_D_inertia[5] = x17;
-        out_T_D_inertia[6] = x16;
-        out_T_D_inertia[7] = x17;
-        out_T_D_inertia[8] = (0.5)*(c2_omega*c2_omega);
-        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
-        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
-        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const double st0_ = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T[0] = st0_;
+        const double st1_ = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
+        out_T_D_m[0] = st1_;
+        const double st2_ = in_m*c0_v;
+        const double st3_ = in_m*c1_v;
+        RIGIDSYM_C_PUT2D(out_T_D_v, st2_, st3_);
+        const double st4_ = in_m*c2_v;
+        out_T_D_v[2] = st4_;
+        const double st5_ = (0.5)*(c0_omega*c0_omega);
+        const double st6_ = x15;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia, st5_, st6_);
+        const double st7_ = x16;
+        const double st8_ = x15;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 2, st7_, st8_);
+        const double st9_ = (0.5)*(c1_omega*c1_omega);
+        const double st10_ = x17;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 4, st9_, st10_);
+        const double st11_ = x16;
+        const double st12_ = x17;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 6, st11_, st12_);
+        const double st13_ = (0.5)*(c2_omega*c2_omega);
+        out_T_D_inertia[8] = st13_;
+        const double st14_ = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
+        const double st15_ = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
+        RIGIDSYM_C_PUT2D(out_T_D_omega, st14_, st15_);
+        const double st16_ = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        out_T_D_omega[2] = st16_;
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const double s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));   /* finite only where every output is */
+            const double s_ = ((((st0_ + st1_) + (st2_ + st3_)) + ((st4_ + st5_) + (st6_ + st7_))) + (((st8_ + st9_) + (st10_ + st11_)) + ((st12_ + st13_) + (st14_ + (st15_ + st16_)))));   /* finite only where every output is */
             if (s_ - s_ == 0.0)
                 return status;
         }
@@ -1702,23 +1730,34 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians(
         const double x15 = c1_omega*x6;
         const double x16 = c2_omega*x6;
         const double x17 = c2_omega*x10;
-        out_T[0] = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        out_T_D_m[0] = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
-        out_T_D_v[0] = in_m*c0_v;
-        out_T_D_v[1] = in_m*c1_v;
-        out_T_D_v[2] = in_m*c2_v;
-        out_T_D_inertia[0] = (0.5)*(c0_omega*c0_omega);
-        out_T_D_inertia[1] = x15;
-        out_T_D_inertia[2] = x16;
-        out_T_D_inertia[3] = x15;
-        out_T_D_inertia[4] = (0.5)*(c1_omega*c1_omega);
-        out_T_D_inertia[5] = x17;
-        out_T_D_inertia[6] = x16;
-        out_T_D_inertia[7] = x17;
-        out_T_D_inertia[8] = (0.5)*(c2_omega*c2_omega);
-        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
-        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
-        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        const double st0_ = (0.5)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T[0] = st0_;
+        const double st1_ = (0.5)*x0 + (0.5)*x1 + (0.5)*x2;
+        out_T_D_m[0] = st1_;
+        const double st2_ = in_m*c0_v;
+        const double st3_ = in_m*c1_v;
+        RIGIDSYM_C_PUT2D(out_T_D_v, st2_, st3_);
+        const double st4_ = in_m*c2_v;
+        out_T_D_v[2] = st4_;
+        const double st5_ = (0.5)*(c0_omega*c0_omega);
+        const double st6_ = x15;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia, st5_, st6_);
+        const double st7_ = x16;
+        const double st8_ = x15;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 2, st7_, st8_);
+        const double st9_ = (0.5)*(c1_omega*c1_omega);
+        const double st10_ = x17;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 4, st9_, st10_);
+        const double st11_ = x16;
+        const double st12_ = x17;
+        RIGIDSYM_C_PUT2D(out_T_D_inertia + 6, st11_, st12_);
+        const double st13_ = (0.5)*(c2_omega*c2_omega);
+        out_T_D_inertia[8] = st13_;
+        const double st14_ = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5)*x4 + (0.5)*x5;
+        const double st15_ = c3_inertia*x6 + c5_inertia*x14 + (0.5)*x7 + x8 + (0.5)*x9;
+        RIGIDSYM_C_PUT2D(out_T_D_omega, st14_, st15_);
+        const double st16_ = c6_inertia*x6 + c7_inertia*x10 + (0.5)*x11 + (0.5)*x12 + x13;
+        out_T_D_omega[2] = st16_;
     }
     /* no division or root, and every output bounded by 2^306 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -2087,23 +2126,32 @@ static RIGIDSYM_C_COLD int rigidsym_c_body_energy_with_jacobians_f32_plain(
         const float x15 = c1_omega*x6;
         const float x16 = c2_omega*x6;
         const float x17 = c2_omega*x10;
-        out_T[0] = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        out_T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
-        out_T_D_v[0] = in_m*c0_v;
-        out_T_D_v[1] = in_m*c1_v;
-        out_T_D_v[2] = in_m*c2_v;
-        out_T_D_inertia[0] = (0.5f)*(c0_omega*c0_omega);
-        out_T_D_inertia[1] = x15;
-        out_T_D_inertia[2] = x16;
-        out_T_D_inertia[3] = x15;
-        out_T_D_inertia[4] = (0.5f)*(c1_omega*c1_omega);
-        out_T_D_inertia[5] = x17;
-        out_T_D_inertia[6] = x16;
-        out_T_D_inertia[7] = x17;
-        out_T_D_inertia[8] = (0.5f)*(c2_omega*c2_omega);
-        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
-        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
-        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        const float st0_ = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T[0] = st0_;
+        const float st1_ = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
+        out_T_D_m[0] = st1_;
+        const float st2_ = in_m*c0_v;
+        const float st3_ = in_m*c1_v;
+        RIGIDSYM_C_PUT2F(out_T_D_v, st2_, st3_);
+        const float st4_ = in_m*c2_v;
+        out_T_D_v[2] = st4_;
+        const float st5_ = (0.5f)*(c0_omega*c0_omega);
+        const float st6_ = x15;
+        const float st7_ = x16;
+        const float st8_ = x15;
+        RIGIDSYM_C_PUT4F(out_T_D_inertia, st5_, st6_, st7_, st8_);
+        const float st9_ = (0.5f)*(c1_omega*c1_omega);
+        const float st10_ = x17;
+        const float st11_ = x16;
+        const float st12_ = x17;
+        RIGIDSYM_C_PUT4F(out_T_D_inertia + 4, st9_, st10_, st11_, st12_);
+        const float st13_ = (0.5f)*(c2_omega*c2_omega);
+        out_T_D_inertia[8] = st13_;
+        const float st14_ = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
+        const float st15_ = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
+        RIGIDSYM_C_PUT2F(out_T_D_omega, st14_, st15_);
+        const float st16_ = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        out_T_D_omega[2] = st16_;
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
@@ -2319,26 +2367,35 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
         const float x15 = c1_omega*x6;
         const float x16 = c2_omega*x6;
         const float x17 = c2_omega*x10;
-        out_T[0] = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        out_T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
-        out_T_D_v[0] = in_m*c0_v;
-        out_T_D_v[1] = in_m*c1_v;
-        out_T_D_v[2] = in_m*c2_v;
-        out_T_D_inertia[0] = (0.5f)*(c0_omega*c0_omega);
-        out_T_D_inertia[1] = x15;
-        out_T_D_inertia[2] = x16;
-        out_T_D_inertia[3] = x15;
-        out_T_D_inertia[4] = (0.5f)*(c1_omega*c1_omega);
-        out_T_D_inertia[5] = x17;
-        out_T_D_inertia[6] = x16;
-        out_T_D_inertia[7] = x17;
-        out_T_D_inertia[8] = (0.5f)*(c2_omega*c2_omega);
-        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
-        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
-        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const float st0_ = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T[0] = st0_;
+        const float st1_ = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
+        out_T_D_m[0] = st1_;
+        const float st2_ = in_m*c0_v;
+        const float st3_ = in_m*c1_v;
+        RIGIDSYM_C_PUT2F(out_T_D_v, st2_, st3_);
+        const float st4_ = in_m*c2_v;
+        out_T_D_v[2] = st4_;
+        const float st5_ = (0.5f)*(c0_omega*c0_omega);
+        const float st6_ = x15;
+        const float st7_ = x16;
+        const float st8_ = x15;
+        RIGIDSYM_C_PUT4F(out_T_D_inertia, st5_, st6_, st7_, st8_);
+        const float st9_ = (0.5f)*(c1_omega*c1_omega);
+        const float st10_ = x17;
+        const float st11_ = x16;
+        const float st12_ = x17;
+        RIGIDSYM_C_PUT4F(out_T_D_inertia + 4, st9_, st10_, st11_, st12_);
+        const float st13_ = (0.5f)*(c2_omega*c2_omega);
+        out_T_D_inertia[8] = st13_;
+        const float st14_ = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
+        const float st15_ = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
+        RIGIDSYM_C_PUT2F(out_T_D_omega, st14_, st15_);
+        const float st16_ = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        out_T_D_omega[2] = st16_;
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = ((((out_T[0] + out_T_D_m[0]) + (out_T_D_v[0] + out_T_D_v[1])) + ((out_T_D_v[2] + out_T_D_inertia[0]) + (out_T_D_inertia[1] + out_T_D_inertia[2]))) + (((out_T_D_inertia[3] + out_T_D_inertia[4]) + (out_T_D_inertia[5] + out_T_D_inertia[6])) + ((out_T_D_inertia[7] + out_T_D_inertia[8]) + (out_T_D_omega[0] + (out_T_D_omega[1] + out_T_D_omega[2])))));   /* finite only where every output is */
+            const float s_ = ((((st0_ + st1_) + (st2_ + st3_)) + ((st4_ + st5_) + (st6_ + st7_))) + (((st8_ + st9_) + (st10_ + st11_)) + ((st12_ + st13_) + (st14_ + (st15_ + st16_)))));   /* finite only where every output is */
             if (s_ - s_ == 0.0f)
                 return status;
         }
@@ -2450,23 +2507,32 @@ RIGIDSYM_C_API int rigidsym_c_body_energy_with_jacobians_f32(
         const float x15 = c1_omega*x6;
         const float x16 = c2_omega*x6;
         const float x17 = c2_omega*x10;
-        out_T[0] = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
-        out_T_D_m[0] = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
-        out_T_D_v[0] = in_m*c0_v;
-        out_T_D_v[1] = in_m*c1_v;
-        out_T_D_v[2] = in_m*c2_v;
-        out_T_D_inertia[0] = (0.5f)*(c0_omega*c0_omega);
-        out_T_D_inertia[1] = x15;
-        out_T_D_inertia[2] = x16;
-        out_T_D_inertia[3] = x15;
-        out_T_D_inertia[4] = (0.5f)*(c1_omega*c1_omega);
-        out_T_D_inertia[5] = x17;
-        out_T_D_inertia[6] = x16;
-        out_T_D_inertia[7] = x17;
-        out_T_D_inertia[8] = (0.5f)*(c2_omega*c2_omega);
-        out_T_D_omega[0] = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
-        out_T_D_omega[1] = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
-        out_T_D_omega[2] = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        const float st0_ = (0.5f)*in_m*(x0 + x1 + x2) + x10*(x7 + x8 + x9) + x14*(x11 + x12 + x13) + x6*(x3 + x4 + x5);
+        out_T[0] = st0_;
+        const float st1_ = (0.5f)*x0 + (0.5f)*x1 + (0.5f)*x2;
+        out_T_D_m[0] = st1_;
+        const float st2_ = in_m*c0_v;
+        const float st3_ = in_m*c1_v;
+        RIGIDSYM_C_PUT2F(out_T_D_v, st2_, st3_);
+        const float st4_ = in_m*c2_v;
+        out_T_D_v[2] = st4_;
+        const float st5_ = (0.5f)*(c0_omega*c0_omega);
+        const float st6_ = x15;
+        const float st7_ = x16;
+        const float st8_ = x15;
+        RIGIDSYM_C_PUT4F(out_T_D_inertia, st5_, st6_, st7_, st8_);
+        const float st9_ = (0.5f)*(c1_omega*c1_omega);
+        const float st10_ = x17;
+        const float st11_ = x16;
+        const float st12_ = x17;
+        RIGIDSYM_C_PUT4F(out_T_D_inertia + 4, st9_, st10_, st11_, st12_);
+        const float st13_ = (0.5f)*(c2_omega*c2_omega);
+        out_T_D_inertia[8] = st13_;
+        const float st14_ = c1_inertia*x10 + c2_inertia*x14 + x3 + (0.5f)*x4 + (0.5f)*x5;
+        const float st15_ = c3_inertia*x6 + c5_inertia*x14 + (0.5f)*x7 + x8 + (0.5f)*x9;
+        RIGIDSYM_C_PUT2F(out_T_D_omega, st14_, st15_);
+        const float st16_ = c6_inertia*x6 + c7_inertia*x10 + (0.5f)*x11 + (0.5f)*x12 + x13;
+        out_T_D_omega[2] = st16_;
     }
     /* no division or root, and every output bounded by 2^96 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an

@@ -418,6 +418,30 @@ static inline rigidsym_c_vf rigidsym_c_odd_vf(rigidsym_c_vf b)
 #define RIGIDSYM_C_VECTOR 0
 #endif
 
+/* The stores of a kernel's outputs (kernel.c.j2): 4 floats or 2 doubles of one output array
+ * in one 16-byte store, 2 floats in one 8-byte store, where the compiler has vector
+ * extensions; else one store per component. A caller that reads the outputs in 16-byte
+ * registers right after the call (Eigen's fixed-size vectors, a vectorised loop) has each
+ * load forwarded from one store; from one store per component the load waits for them to
+ * reach the cache (store forwarding fails): the float twist transfer read by Eigen's sum,
+ * 11.1 -> 5.7 ns a call (benchmarks/RESULTS.md). A narrower load is forwarded from a wider
+ * store either way. -DRIGIDSYM_C_SCALAR_STORES: one store per component. */
+#if RIGIDSYM_C_VECTOR && !defined(RIGIDSYM_C_SCALAR_STORES)
+typedef float rigidsym_c_sf __attribute__((vector_size(16)));
+typedef double rigidsym_c_sd __attribute__((vector_size(16)));
+#define RIGIDSYM_C_PUT4F(p, a, b, c, d) \
+    do { const rigidsym_c_sf v_ = {(a), (b), (c), (d)}; memcpy((p), &v_, 16); } while (0)
+#define RIGIDSYM_C_PUT2F(p, a, b) \
+    do { const rigidsym_c_sf v_ = {(a), (b), 0.0f, 0.0f}; memcpy((p), &v_, 8); } while (0)
+#define RIGIDSYM_C_PUT2D(p, a, b) \
+    do { const rigidsym_c_sd v_ = {(a), (b)}; memcpy((p), &v_, 16); } while (0)
+#else
+#define RIGIDSYM_C_PUT4F(p, a, b, c, d) \
+    do { (p)[0] = (a); (p)[1] = (b); (p)[2] = (c); (p)[3] = (d); } while (0)
+#define RIGIDSYM_C_PUT2F(p, a, b) do { (p)[0] = (a); (p)[1] = (b); } while (0)
+#define RIGIDSYM_C_PUT2D(p, a, b) do { (p)[0] = (a); (p)[1] = (b); } while (0)
+#endif
+
 /* x86-64 (SSE2): cheaper still, byte lanes and one accumulator. Per component s = x + x
  * (64-bit lanes; float: 32-bit), |x|'s bits shifted left by one (the sign shifted out; no
  * constant), and n = -s (0 - s), of which only the top bytes count: s's is the exponent's

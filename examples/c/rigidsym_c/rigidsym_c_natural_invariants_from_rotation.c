@@ -164,10 +164,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
         const double x11 = x6 - x7;
         const double x12 = -0.5*c5_Q + (0.5)*c7_Q;
         const double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(x9);
-        out_e[0] = x13*x3;
-        out_e[1] = x13*x5;
-        out_e[2] = x13*x8;
-        out_phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
+        const double st0_ = x13*x3;
+        const double st1_ = x13*x5;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x13*x8;
+        out_e[2] = st2_;
+        const double st3_ = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
+        out_phi[0] = st3_;
         singular |= (x9) == 0.0;
         finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
     } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
@@ -182,10 +185,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
         const double x8 = (0.5)*c7_Q - x2;
         const double x9 = (0.5)*c2_Q - 0.5*c6_Q;
         const double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x6);
-        out_e[0] = x1*x10;
-        out_e[1] = x10*x5;
-        out_e[2] = x10*x3;
-        out_phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*c4_Q + x4);
+        const double st0_ = x1*x10;
+        const double st1_ = x10*x5;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x10*x3;
+        out_e[2] = st2_;
+        const double st3_ = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*c4_Q + x4);
+        out_phi[0] = st3_;
         singular |= (x6) == 0.0;
         finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
     } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0) {
@@ -201,17 +207,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
         const double x9 = (0.5)*c7_Q - x3;
         const double x10 = -0.5*c1_Q + (0.5)*c3_Q;
         const double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))/sqrt(x7);
-        out_e[0] = x11*x2;
-        out_e[1] = x11*x4;
-        out_e[2] = x11*x6;
-        out_phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*c8_Q + x5);
+        const double st0_ = x11*x2;
+        const double st1_ = x11*x4;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x11*x6;
+        out_e[2] = st2_;
+        const double st3_ = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*c8_Q + x5);
+        out_phi[0] = st3_;
         singular |= (x7) == 0.0;
         finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
     } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0) {
-        out_e[0] = 1.0;
-        out_e[1] = 0.0;
-        out_e[2] = 0.0;
-        out_phi[0] = 0.0;
+        const double st0_ = 1.0;
+        const double st1_ = 0.0;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = 0.0;
+        out_e[2] = st2_;
+        const double st3_ = 0.0;
+        out_phi[0] = st3_;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
         const double x0 = -0.5*c5_Q + (0.5)*c7_Q;
@@ -220,10 +232,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
         const double x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const double x4 = sqrt(x3);
         const double x5 = 1.0/x4;
-        out_e[0] = x0*x5;
-        out_e[1] = x2*x5;
-        out_e[2] = x1*x5;
-        out_phi[0] = atan2(x4, (0.5)*c0_Q + (0.5)*c4_Q + (0.5)*c8_Q - 0.5);
+        const double st0_ = x0*x5;
+        const double st1_ = x2*x5;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x1*x5;
+        out_e[2] = st2_;
+        const double st3_ = atan2(x4, (0.5)*c0_Q + (0.5)*c4_Q + (0.5)*c8_Q - 0.5);
+        out_phi[0] = st3_;
         singular |= (x3) == 0.0;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
@@ -386,10 +401,13 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         const double x11 = x6 - x7;
         const double x12 = -0.5*c5_Q + (0.5)*c7_Q;
         const double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(x9);
-        out_e[0] = x13*x3;
-        out_e[1] = x13*x5;
-        out_e[2] = x13*x8;
-        out_phi[0] = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
+        const double st0_ = x13*x3;
+        const double st1_ = x13*x5;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x13*x8;
+        out_e[2] = st2_;
+        const double st3_ = atan2(sqrt((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5);
+        out_phi[0] = st3_;
         singular |= (x9) == 0.0;
         finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
     } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0) {
@@ -404,10 +422,13 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         const double x8 = (0.5)*c7_Q - x2;
         const double x9 = (0.5)*c2_Q - 0.5*c6_Q;
         const double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x6);
-        out_e[0] = x1*x10;
-        out_e[1] = x10*x5;
-        out_e[2] = x10*x3;
-        out_phi[0] = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*c4_Q + x4);
+        const double st0_ = x1*x10;
+        const double st1_ = x10*x5;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x10*x3;
+        out_e[2] = st2_;
+        const double st3_ = atan2(sqrt((x7*x7) + (x8*x8) + (x9*x9)), (0.5)*c4_Q + x4);
+        out_phi[0] = st3_;
         singular |= (x6) == 0.0;
         finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
     } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0) {
@@ -423,17 +444,23 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         const double x9 = (0.5)*c7_Q - x3;
         const double x10 = -0.5*c1_Q + (0.5)*c3_Q;
         const double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))/sqrt(x7);
-        out_e[0] = x11*x2;
-        out_e[1] = x11*x4;
-        out_e[2] = x11*x6;
-        out_phi[0] = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*c8_Q + x5);
+        const double st0_ = x11*x2;
+        const double st1_ = x11*x4;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x11*x6;
+        out_e[2] = st2_;
+        const double st3_ = atan2(sqrt((x10*x10) + (x8*x8) + (x9*x9)), (0.5)*c8_Q + x5);
+        out_phi[0] = st3_;
         singular |= (x7) == 0.0;
         finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
     } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0) {
-        out_e[0] = 1.0;
-        out_e[1] = 0.0;
-        out_e[2] = 0.0;
-        out_phi[0] = 0.0;
+        const double st0_ = 1.0;
+        const double st1_ = 0.0;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = 0.0;
+        out_e[2] = st2_;
+        const double st3_ = 0.0;
+        out_phi[0] = st3_;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
         const double x0 = -0.5*c5_Q + (0.5)*c7_Q;
@@ -442,10 +469,13 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         const double x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const double x4 = sqrt(x3);
         const double x5 = 1.0/x4;
-        out_e[0] = x0*x5;
-        out_e[1] = x2*x5;
-        out_e[2] = x1*x5;
-        out_phi[0] = atan2(x4, (0.5)*c0_Q + (0.5)*c4_Q + (0.5)*c8_Q - 0.5);
+        const double st0_ = x0*x5;
+        const double st1_ = x2*x5;
+        RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
+        const double st2_ = x1*x5;
+        out_e[2] = st2_;
+        const double st3_ = atan2(x4, (0.5)*c0_Q + (0.5)*c4_Q + (0.5)*c8_Q - 0.5);
+        out_phi[0] = st3_;
         singular |= (x3) == 0.0;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
@@ -563,10 +593,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
         const float x11 = x6 - x7;
         const float x12 = -0.5f*c5_Q + (0.5f)*c7_Q;
         const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
-        out_e[0] = x13*x3;
-        out_e[1] = x13*x5;
-        out_e[2] = x13*x8;
-        out_phi[0] = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
+        const float st0_ = x13*x3;
+        const float st1_ = x13*x5;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x13*x8;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
+        out_phi[0] = st3_;
         singular |= (x9) == 0.0f;
         finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
     } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
@@ -581,10 +614,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
         const float x8 = (0.5f)*c7_Q - x2;
         const float x9 = (0.5f)*c2_Q - 0.5f*c6_Q;
         const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x6);
-        out_e[0] = x1*x10;
-        out_e[1] = x10*x5;
-        out_e[2] = x10*x3;
-        out_phi[0] = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*c4_Q + x4);
+        const float st0_ = x1*x10;
+        const float st1_ = x10*x5;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x10*x3;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*c4_Q + x4);
+        out_phi[0] = st3_;
         singular |= (x6) == 0.0f;
         finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
     } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
@@ -600,17 +636,23 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
         const float x9 = (0.5f)*c7_Q - x3;
         const float x10 = -0.5f*c1_Q + (0.5f)*c3_Q;
         const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
-        out_e[0] = x11*x2;
-        out_e[1] = x11*x4;
-        out_e[2] = x11*x6;
-        out_phi[0] = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*c8_Q + x5);
+        const float st0_ = x11*x2;
+        const float st1_ = x11*x4;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x11*x6;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*c8_Q + x5);
+        out_phi[0] = st3_;
         singular |= (x7) == 0.0f;
         finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
     } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0f) {
-        out_e[0] = 1.0f;
-        out_e[1] = 0.0f;
-        out_e[2] = 0.0f;
-        out_phi[0] = 0.0f;
+        const float st0_ = 1.0f;
+        const float st1_ = 0.0f;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = 0.0f;
+        out_e[2] = st2_;
+        const float st3_ = 0.0f;
+        out_phi[0] = st3_;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
         const float x0 = -0.5f*c5_Q + (0.5f)*c7_Q;
@@ -619,10 +661,13 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
         const float x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const float x4 = sqrtf(x3);
         const float x5 = 1.0f/x4;
-        out_e[0] = x0*x5;
-        out_e[1] = x2*x5;
-        out_e[2] = x1*x5;
-        out_phi[0] = atan2f(x4, (0.5f)*c0_Q + (0.5f)*c4_Q + (0.5f)*c8_Q - 0.5f);
+        const float st0_ = x0*x5;
+        const float st1_ = x2*x5;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x1*x5;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(x4, (0.5f)*c0_Q + (0.5f)*c4_Q + (0.5f)*c8_Q - 0.5f);
+        out_phi[0] = st3_;
         singular |= (x3) == 0.0f;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }
@@ -784,10 +829,13 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         const float x11 = x6 - x7;
         const float x12 = -0.5f*c5_Q + (0.5f)*c7_Q;
         const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
-        out_e[0] = x13*x3;
-        out_e[1] = x13*x5;
-        out_e[2] = x13*x8;
-        out_phi[0] = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
+        const float st0_ = x13*x3;
+        const float st1_ = x13*x5;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x13*x8;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(sqrtf((x10*x10) + (x11*x11) + (x12*x12)), x0 + x1 + x2 - 0.5f);
+        out_phi[0] = st3_;
         singular |= (x9) == 0.0f;
         finite = (((x13 - x13) + (out_phi[0] - out_phi[0])) + ((x9 - x9) + (((x10*x10) + (x11*x11) + (x12*x12)) - ((x10*x10) + (x11*x11) + (x12*x12)))));
     } else if (c4_Q >= c0_Q && c4_Q >= c8_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
@@ -802,10 +850,13 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         const float x8 = (0.5f)*c7_Q - x2;
         const float x9 = (0.5f)*c2_Q - 0.5f*c6_Q;
         const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x6);
-        out_e[0] = x1*x10;
-        out_e[1] = x10*x5;
-        out_e[2] = x10*x3;
-        out_phi[0] = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*c4_Q + x4);
+        const float st0_ = x1*x10;
+        const float st1_ = x10*x5;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x10*x3;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(sqrtf((x7*x7) + (x8*x8) + (x9*x9)), (0.5f)*c4_Q + x4);
+        out_phi[0] = st3_;
         singular |= (x6) == 0.0f;
         finite = (((x10 - x10) + (out_phi[0] - out_phi[0])) + ((x6 - x6) + (((x7*x7) + (x8*x8) + (x9*x9)) - ((x7*x7) + (x8*x8) + (x9*x9)))));
     } else if (c8_Q >= c0_Q && c8_Q >= c4_Q && c0_Q + c4_Q + c8_Q < 0.0f) {
@@ -821,17 +872,23 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         const float x9 = (0.5f)*c7_Q - x3;
         const float x10 = -0.5f*c1_Q + (0.5f)*c3_Q;
         const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
-        out_e[0] = x11*x2;
-        out_e[1] = x11*x4;
-        out_e[2] = x11*x6;
-        out_phi[0] = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*c8_Q + x5);
+        const float st0_ = x11*x2;
+        const float st1_ = x11*x4;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x11*x6;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(sqrtf((x10*x10) + (x8*x8) + (x9*x9)), (0.5f)*c8_Q + x5);
+        out_phi[0] = st3_;
         singular |= (x7) == 0.0f;
         finite = (((x11 - x11) + (out_phi[0] - out_phi[0])) + ((x7 - x7) + (((x10*x10) + (x8*x8) + (x9*x9)) - ((x10*x10) + (x8*x8) + (x9*x9)))));
     } else if (c2_Q >= c6_Q && c3_Q >= c1_Q && c7_Q >= c5_Q && c2_Q <= c6_Q && c3_Q <= c1_Q && c7_Q <= c5_Q && c0_Q + c4_Q + c8_Q > 1.0f) {
-        out_e[0] = 1.0f;
-        out_e[1] = 0.0f;
-        out_e[2] = 0.0f;
-        out_phi[0] = 0.0f;
+        const float st0_ = 1.0f;
+        const float st1_ = 0.0f;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = 0.0f;
+        out_e[2] = st2_;
+        const float st3_ = 0.0f;
+        out_phi[0] = st3_;
         status |= RIGIDSYM_C_DEFAULT_OUTPUT;   /* e: its documented default */
     } else {
         const float x0 = -0.5f*c5_Q + (0.5f)*c7_Q;
@@ -840,10 +897,13 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         const float x3 = (x0*x0) + (x1*x1) + (x2*x2);
         const float x4 = sqrtf(x3);
         const float x5 = 1.0f/x4;
-        out_e[0] = x0*x5;
-        out_e[1] = x2*x5;
-        out_e[2] = x1*x5;
-        out_phi[0] = atan2f(x4, (0.5f)*c0_Q + (0.5f)*c4_Q + (0.5f)*c8_Q - 0.5f);
+        const float st0_ = x0*x5;
+        const float st1_ = x2*x5;
+        RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
+        const float st2_ = x1*x5;
+        out_e[2] = st2_;
+        const float st3_ = atan2f(x4, (0.5f)*c0_Q + (0.5f)*c4_Q + (0.5f)*c8_Q - 0.5f);
+        out_phi[0] = st3_;
         singular |= (x3) == 0.0f;
         finite = ((x4 - x4) + ((x5 - x5) + (x3 - x3)));
     }

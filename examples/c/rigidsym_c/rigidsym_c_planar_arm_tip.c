@@ -143,8 +143,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_plain(
     double finite = 0.0;
     {
         const double x0 = in_q1 + in_q2;
-        out_p[0] = in_l1*cos(in_q1) + in_l2*cos(x0);
-        out_p[1] = in_l1*sin(in_q1) + in_l2*sin(x0);
+        const double st0_ = in_l1*cos(in_q1) + in_l2*cos(x0);
+        const double st1_ = in_l1*sin(in_q1) + in_l2*sin(x0);
+        RIGIDSYM_C_PUT2D(out_p, st0_, st1_);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
@@ -285,11 +286,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
          * ordinary input otherwise) and its outputs are returned. Off with
          * -DRIGIDSYM_C_PREDICT. */
         const double x0 = in_q1 + in_q2;
-        out_p[0] = in_l1*cos(in_q1) + in_l2*cos(x0);
-        out_p[1] = in_l1*sin(in_q1) + in_l2*sin(x0);
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const double st0_ = in_l1*cos(in_q1) + in_l2*cos(x0);
+        const double st1_ = in_l1*sin(in_q1) + in_l2*sin(x0);
+        RIGIDSYM_C_PUT2D(out_p, st0_, st1_);
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const double s_ = (out_p[0] + out_p[1]);   /* finite only where every output is */
+            const double s_ = (st0_ + st1_);   /* finite only where every output is */
             if (s_ - s_ == 0.0)
                 return status;
         }
@@ -341,8 +343,9 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip(
 #endif
     {
         const double x0 = in_q1 + in_q2;
-        out_p[0] = in_l1*cos(in_q1) + in_l2*cos(x0);
-        out_p[1] = in_l1*sin(in_q1) + in_l2*sin(x0);
+        const double st0_ = in_l1*cos(in_q1) + in_l2*cos(x0);
+        const double st1_ = in_l1*sin(in_q1) + in_l2*sin(x0);
+        RIGIDSYM_C_PUT2D(out_p, st0_, st1_);
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -521,8 +524,9 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_plain(
     float finite = 0.0f;
     {
         const float x0 = in_q1 + in_q2;
-        out_p[0] = in_l1*cosf(in_q1) + in_l2*cosf(x0);
-        out_p[1] = in_l1*sinf(in_q1) + in_l2*sinf(x0);
+        const float st0_ = in_l1*cosf(in_q1) + in_l2*cosf(x0);
+        const float st1_ = in_l1*sinf(in_q1) + in_l2*sinf(x0);
+        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
@@ -666,11 +670,12 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
          * ordinary input otherwise) and its outputs are returned. Off with
          * -DRIGIDSYM_C_PREDICT. */
         const float x0 = in_q1 + in_q2;
-        out_p[0] = in_l1*cosf(in_q1) + in_l2*cosf(x0);
-        out_p[1] = in_l1*sinf(in_q1) + in_l2*sinf(x0);
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const float st0_ = in_l1*cosf(in_q1) + in_l2*cosf(x0);
+        const float st1_ = in_l1*sinf(in_q1) + in_l2*sinf(x0);
+        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = (out_p[0] + out_p[1]);   /* finite only where every output is */
+            const float s_ = (st0_ + st1_);   /* finite only where every output is */
             if (s_ - s_ == 0.0f)
                 return status;
         }
@@ -717,8 +722,9 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
 #endif
     {
         const float x0 = in_q1 + in_q2;
-        out_p[0] = in_l1*cosf(in_q1) + in_l2*cosf(x0);
-        out_p[1] = in_l1*sinf(in_q1) + in_l2*sinf(x0);
+        const float st0_ = in_l1*cosf(in_q1) + in_l2*cosf(x0);
+        const float st1_ = in_l1*sinf(in_q1) + in_l2*sinf(x0);
+        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
@@ -956,16 +962,21 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_plain(
         const double x6 = sin(x1);
         const double x7 = in_l2*x6;
         const double x8 = in_l1*x5 + x7;
-        out_p[0] = x4;
-        out_p[1] = x8;
-        out_p_D_q1[0] = -x8;
-        out_p_D_q1[1] = x4;
-        out_p_D_q2[0] = -x7;
-        out_p_D_q2[1] = x3;
-        out_p_D_l1[0] = x0;
-        out_p_D_l1[1] = x5;
-        out_p_D_l2[0] = x2;
-        out_p_D_l2[1] = x6;
+        const double st0_ = x4;
+        const double st1_ = x8;
+        RIGIDSYM_C_PUT2D(out_p, st0_, st1_);
+        const double st2_ = -x8;
+        const double st3_ = x4;
+        RIGIDSYM_C_PUT2D(out_p_D_q1, st2_, st3_);
+        const double st4_ = -x7;
+        const double st5_ = x3;
+        RIGIDSYM_C_PUT2D(out_p_D_q2, st4_, st5_);
+        const double st6_ = x0;
+        const double st7_ = x5;
+        RIGIDSYM_C_PUT2D(out_p_D_l1, st6_, st7_);
+        const double st8_ = x2;
+        const double st9_ = x6;
+        RIGIDSYM_C_PUT2D(out_p_D_l2, st8_, st9_);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
@@ -1142,19 +1153,24 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         const double x6 = sin(x1);
         const double x7 = in_l2*x6;
         const double x8 = in_l1*x5 + x7;
-        out_p[0] = x4;
-        out_p[1] = x8;
-        out_p_D_q1[0] = -x8;
-        out_p_D_q1[1] = x4;
-        out_p_D_q2[0] = -x7;
-        out_p_D_q2[1] = x3;
-        out_p_D_l1[0] = x0;
-        out_p_D_l1[1] = x5;
-        out_p_D_l2[0] = x2;
-        out_p_D_l2[1] = x6;
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const double st0_ = x4;
+        const double st1_ = x8;
+        RIGIDSYM_C_PUT2D(out_p, st0_, st1_);
+        const double st2_ = -x8;
+        const double st3_ = x4;
+        RIGIDSYM_C_PUT2D(out_p_D_q1, st2_, st3_);
+        const double st4_ = -x7;
+        const double st5_ = x3;
+        RIGIDSYM_C_PUT2D(out_p_D_q2, st4_, st5_);
+        const double st6_ = x0;
+        const double st7_ = x5;
+        RIGIDSYM_C_PUT2D(out_p_D_l1, st6_, st7_);
+        const double st8_ = x2;
+        const double st9_ = x6;
+        RIGIDSYM_C_PUT2D(out_p_D_l2, st8_, st9_);
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const double s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));   /* finite only where every output is */
+            const double s_ = (((st0_ + st1_) + (st2_ + (st3_ + st4_))) + ((st5_ + st6_) + (st7_ + (st8_ + st9_))));   /* finite only where every output is */
             if (s_ - s_ == 0.0)
                 return status;
         }
@@ -1214,16 +1230,21 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians(
         const double x6 = sin(x1);
         const double x7 = in_l2*x6;
         const double x8 = in_l1*x5 + x7;
-        out_p[0] = x4;
-        out_p[1] = x8;
-        out_p_D_q1[0] = -x8;
-        out_p_D_q1[1] = x4;
-        out_p_D_q2[0] = -x7;
-        out_p_D_q2[1] = x3;
-        out_p_D_l1[0] = x0;
-        out_p_D_l1[1] = x5;
-        out_p_D_l2[0] = x2;
-        out_p_D_l2[1] = x6;
+        const double st0_ = x4;
+        const double st1_ = x8;
+        RIGIDSYM_C_PUT2D(out_p, st0_, st1_);
+        const double st2_ = -x8;
+        const double st3_ = x4;
+        RIGIDSYM_C_PUT2D(out_p_D_q1, st2_, st3_);
+        const double st4_ = -x7;
+        const double st5_ = x3;
+        RIGIDSYM_C_PUT2D(out_p_D_q2, st4_, st5_);
+        const double st6_ = x0;
+        const double st7_ = x5;
+        RIGIDSYM_C_PUT2D(out_p_D_l1, st6_, st7_);
+        const double st8_ = x2;
+        const double st9_ = x6;
+        RIGIDSYM_C_PUT2D(out_p_D_l2, st8_, st9_);
     }
     /* no division or root, and every output bounded by 2^102 for inputs of
      * ordinary magnitude (|x| < 2^101): only an extreme or non-finite input can make an
@@ -1458,16 +1479,21 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_plain(
         const float x6 = sinf(x1);
         const float x7 = in_l2*x6;
         const float x8 = in_l1*x5 + x7;
-        out_p[0] = x4;
-        out_p[1] = x8;
-        out_p_D_q1[0] = -x8;
-        out_p_D_q1[1] = x4;
-        out_p_D_q2[0] = -x7;
-        out_p_D_q2[1] = x3;
-        out_p_D_l1[0] = x0;
-        out_p_D_l1[1] = x5;
-        out_p_D_l2[0] = x2;
-        out_p_D_l2[1] = x6;
+        const float st0_ = x4;
+        const float st1_ = x8;
+        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
+        const float st2_ = -x8;
+        const float st3_ = x4;
+        RIGIDSYM_C_PUT2F(out_p_D_q1, st2_, st3_);
+        const float st4_ = -x7;
+        const float st5_ = x3;
+        RIGIDSYM_C_PUT2F(out_p_D_q2, st4_, st5_);
+        const float st6_ = x0;
+        const float st7_ = x5;
+        RIGIDSYM_C_PUT2F(out_p_D_l1, st6_, st7_);
+        const float st8_ = x2;
+        const float st9_ = x6;
+        RIGIDSYM_C_PUT2F(out_p_D_l2, st8_, st9_);
     }
     {   /* the outputs' sum is finite only where every output is, so the exact test
          * (x - x is 0 for finite x, NaN otherwise; the guards of rigidsym_c_impl.h keep the
@@ -1647,19 +1673,24 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         const float x6 = sinf(x1);
         const float x7 = in_l2*x6;
         const float x8 = in_l1*x5 + x7;
-        out_p[0] = x4;
-        out_p[1] = x8;
-        out_p_D_q1[0] = -x8;
-        out_p_D_q1[1] = x4;
-        out_p_D_q2[0] = -x7;
-        out_p_D_q2[1] = x3;
-        out_p_D_l1[0] = x0;
-        out_p_D_l1[1] = x5;
-        out_p_D_l2[0] = x2;
-        out_p_D_l2[1] = x6;
-        /* the read is ordered after the outputs' stores, so after every operation */
+        const float st0_ = x4;
+        const float st1_ = x8;
+        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
+        const float st2_ = -x8;
+        const float st3_ = x4;
+        RIGIDSYM_C_PUT2F(out_p_D_q1, st2_, st3_);
+        const float st4_ = -x7;
+        const float st5_ = x3;
+        RIGIDSYM_C_PUT2F(out_p_D_q2, st4_, st5_);
+        const float st6_ = x0;
+        const float st7_ = x5;
+        RIGIDSYM_C_PUT2F(out_p_D_l1, st6_, st7_);
+        const float st8_ = x2;
+        const float st9_ = x6;
+        RIGIDSYM_C_PUT2F(out_p_D_l2, st8_, st9_);
+/* the read is ordered after the outputs' stores, so after every operation */
         if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = (((out_p[0] + out_p[1]) + (out_p_D_q1[0] + (out_p_D_q1[1] + out_p_D_q2[0]))) + ((out_p_D_q2[1] + out_p_D_l1[0]) + (out_p_D_l1[1] + (out_p_D_l2[0] + out_p_D_l2[1]))));   /* finite only where every output is */
+            const float s_ = (((st0_ + st1_) + (st2_ + (st3_ + st4_))) + ((st5_ + st6_) + (st7_ + (st8_ + st9_))));   /* finite only where every output is */
             if (s_ - s_ == 0.0f)
                 return status;
         }
@@ -1714,16 +1745,21 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
         const float x6 = sinf(x1);
         const float x7 = in_l2*x6;
         const float x8 = in_l1*x5 + x7;
-        out_p[0] = x4;
-        out_p[1] = x8;
-        out_p_D_q1[0] = -x8;
-        out_p_D_q1[1] = x4;
-        out_p_D_q2[0] = -x7;
-        out_p_D_q2[1] = x3;
-        out_p_D_l1[0] = x0;
-        out_p_D_l1[1] = x5;
-        out_p_D_l2[0] = x2;
-        out_p_D_l2[1] = x6;
+        const float st0_ = x4;
+        const float st1_ = x8;
+        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
+        const float st2_ = -x8;
+        const float st3_ = x4;
+        RIGIDSYM_C_PUT2F(out_p_D_q1, st2_, st3_);
+        const float st4_ = -x7;
+        const float st5_ = x3;
+        RIGIDSYM_C_PUT2F(out_p_D_q2, st4_, st5_);
+        const float st6_ = x0;
+        const float st7_ = x5;
+        RIGIDSYM_C_PUT2F(out_p_D_l1, st6_, st7_);
+        const float st8_ = x2;
+        const float st9_ = x6;
+        RIGIDSYM_C_PUT2F(out_p_D_l2, st8_, st9_);
     }
     /* no division or root, and every output bounded by 2^32 for inputs of
      * ordinary magnitude (|x| < 2^31): only an extreme or non-finite input can make an
