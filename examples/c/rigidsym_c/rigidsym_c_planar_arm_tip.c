@@ -589,25 +589,6 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if RIGIDSYM_C_DETECTS
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
-         * modes off), kept where it raised none of underflow, overflow, invalid and
-         * divide-by-zero and its outputs are finite: the status and bits the detecting
-         * block of rigidsym_c_planar_arm_tip_f32 gives without a flush mode, so that a build with DAZ
-         * (-Ofast) and one without agree; otherwise the rescues below */
-        float rs_o0_[2];
-        int r_, j_;
-        rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_planar_arm_tip_f32_plain_p)(in_q1, in_q2, in_l1, in_l2, rs_o0_);
-        if (r_ == 0 && !rigidsym_c_fp_risky()) {
-            for (j_ = 0; j_ < 2; ++j_)
-                out_p[j_] = rs_o0_[j_];
-            status = 0;
-            done_ = 1;
-        }
-    }
-#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -656,33 +637,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
-         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
-         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
-         * outputs are finite, every input was finite (a NaN or infinite one reaches an
-         * output of this kernel or raises invalid) and every operation was rounded as in
-         * the normal range: status 0, the bits the range test's path gives (its rescues
-         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
-         * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
-         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
-         * ordinary input otherwise) and its outputs are returned. Off with
-         * -DRIGIDSYM_C_PREDICT. */
-        const float x0 = in_q1 + in_q2;
-        const float st0_ = in_l1*cosf(in_q1) + in_l2*cosf(x0);
-        const float st1_ = in_l1*sinf(in_q1) + in_l2*sinf(x0);
-        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
-/* the read is ordered after the outputs' stores, so after every operation */
-        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = (st0_ + st1_);   /* finite only where every output is */
-            if (s_ - s_ == 0.0f)
-                return status;
-        }
-        /* an output may share memory with an input: the range test's path reads the
-         * inputs as they were read here */
-    }
-#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_q1, *&in_q2, *&in_l1, *&in_l2)));
@@ -713,12 +667,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_planar_arm_tip_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p);
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
-     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
-     * range test, not a second evaluation) */
-    return status;
-#endif
 #endif
     {
         const float x0 = in_q1 + in_q2;
@@ -1572,37 +1520,6 @@ static RIGIDSYM_C_COLD int rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if RIGIDSYM_C_DETECTS
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
-         * modes off), kept where it raised none of underflow, overflow, invalid and
-         * divide-by-zero and its outputs are finite: the status and bits the detecting
-         * block of rigidsym_c_planar_arm_tip_with_jacobians_f32 gives without a flush mode, so that a build with DAZ
-         * (-Ofast) and one without agree; otherwise the rescues below */
-        float rs_o0_[2];
-        float rs_o1_[2];
-        float rs_o2_[2];
-        float rs_o3_[2];
-        float rs_o4_[2];
-        int r_, j_;
-        rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_planar_arm_tip_with_jacobians_f32_plain_p)(in_q1, in_q2, in_l1, in_l2, rs_o0_, rs_o1_, rs_o2_, rs_o3_, rs_o4_);
-        if (r_ == 0 && !rigidsym_c_fp_risky()) {
-            for (j_ = 0; j_ < 2; ++j_)
-                out_p[j_] = rs_o0_[j_];
-            for (j_ = 0; j_ < 2; ++j_)
-                out_p_D_q1[j_] = rs_o1_[j_];
-            for (j_ = 0; j_ < 2; ++j_)
-                out_p_D_q2[j_] = rs_o2_[j_];
-            for (j_ = 0; j_ < 2; ++j_)
-                out_p_D_l1[j_] = rs_o3_[j_];
-            for (j_ = 0; j_ < 2; ++j_)
-                out_p_D_l2[j_] = rs_o4_[j_];
-            status = 0;
-            done_ = 1;
-        }
-    }
-#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -1651,53 +1568,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
-         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
-         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
-         * outputs are finite, every input was finite (a NaN or infinite one reaches an
-         * output of this kernel or raises invalid) and every operation was rounded as in
-         * the normal range: status 0, the bits the range test's path gives (its rescues
-         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
-         * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
-         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
-         * ordinary input otherwise) and its outputs are returned. Off with
-         * -DRIGIDSYM_C_PREDICT. */
-        const float x0 = cosf(in_q1);
-        const float x1 = in_q1 + in_q2;
-        const float x2 = cosf(x1);
-        const float x3 = in_l2*x2;
-        const float x4 = in_l1*x0 + x3;
-        const float x5 = sinf(in_q1);
-        const float x6 = sinf(x1);
-        const float x7 = in_l2*x6;
-        const float x8 = in_l1*x5 + x7;
-        const float st0_ = x4;
-        const float st1_ = x8;
-        RIGIDSYM_C_PUT2F(out_p, st0_, st1_);
-        const float st2_ = -x8;
-        const float st3_ = x4;
-        RIGIDSYM_C_PUT2F(out_p_D_q1, st2_, st3_);
-        const float st4_ = -x7;
-        const float st5_ = x3;
-        RIGIDSYM_C_PUT2F(out_p_D_q2, st4_, st5_);
-        const float st6_ = x0;
-        const float st7_ = x5;
-        RIGIDSYM_C_PUT2F(out_p_D_l1, st6_, st7_);
-        const float st8_ = x2;
-        const float st9_ = x6;
-        RIGIDSYM_C_PUT2F(out_p_D_l2, st8_, st9_);
-/* the read is ordered after the outputs' stores, so after every operation */
-        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = (((st0_ + st1_) + (st2_ + (st3_ + st4_))) + ((st5_ + st6_) + (st7_ + (st8_ + st9_))));   /* finite only where every output is */
-            if (s_ - s_ == 0.0f)
-                return status;
-        }
-        /* an output may share memory with an input: the range test's path reads the
-         * inputs as they were read here */
-    }
-#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*&in_q1, *&in_q2, *&in_l1, *&in_l2)));
@@ -1728,12 +1598,6 @@ RIGIDSYM_C_API int rigidsym_c_planar_arm_tip_with_jacobians_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_planar_arm_tip_with_jacobians_f32_odd(in_q1, in_q2, in_l1, in_l2, out_p, out_p_D_q1, out_p_D_q2, out_p_D_l1, out_p_D_l2);
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
-     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
-     * range test, not a second evaluation) */
-    return status;
-#endif
 #endif
     {
         const float x0 = cosf(in_q1);

@@ -685,25 +685,6 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if RIGIDSYM_C_DETECTS
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
-         * modes off), kept where it raised none of underflow, overflow, invalid and
-         * divide-by-zero and its outputs are finite: the status and bits the detecting
-         * block of rigidsym_c_twist_transfer_f32 gives without a flush mode, so that a build with DAZ
-         * (-Ofast) and one without agree; otherwise the rescues below */
-        float rs_o0_[6];
-        int r_, j_;
-        rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_twist_transfer_f32_plain_p)(in_t_A, in_a, in_p, rs_o0_);
-        if (r_ == 0 && !rigidsym_c_fp_risky()) {
-            for (j_ = 0; j_ < 6; ++j_)
-                out_t_P[j_] = rs_o0_[j_];
-            status = 0;
-            done_ = 1;
-        }
-    }
-#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -751,70 +732,6 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    float rs_in0_[6];
-    float rs_in1_[3];
-    float rs_in2_[3];
-    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
-         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
-         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
-         * outputs are finite, every input was finite (a NaN or infinite one reaches an
-         * output of this kernel or raises invalid) and every operation was rounded as in
-         * the normal range: status 0, the bits the range test's path gives (its rescues
-         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
-         * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
-         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
-         * ordinary input otherwise) and its outputs are returned. Off with
-         * -DRIGIDSYM_C_PREDICT. */
-        const float c0_t_A = in_t_A[0];
-        const float c1_t_A = in_t_A[1];
-        const float c2_t_A = in_t_A[2];
-        const float c3_t_A = in_t_A[3];
-        const float c4_t_A = in_t_A[4];
-        const float c5_t_A = in_t_A[5];
-        const float c0_a = in_a[0];
-        const float c1_a = in_a[1];
-        const float c2_a = in_a[2];
-        const float c0_p = in_p[0];
-        const float c1_p = in_p[1];
-        const float c2_p = in_p[2];
-        const float x0 = c2_a - c2_p;
-        const float x1 = c1_a - c1_p;
-        const float x2 = c0_a - c0_p;
-        const float st0_ = c0_t_A;
-        const float st1_ = c1_t_A;
-        const float st2_ = c2_t_A;
-        const float st3_ = -c1_t_A*x0 + c2_t_A*x1 + c3_t_A;
-        RIGIDSYM_C_PUT4F(out_t_P, st0_, st1_, st2_, st3_);
-        const float st4_ = c0_t_A*x0 - c2_t_A*x2 + c4_t_A;
-        const float st5_ = -c0_t_A*x1 + c1_t_A*x2 + c5_t_A;
-        RIGIDSYM_C_PUT2F(out_t_P + 4, st4_, st5_);
-/* the read is ordered after the outputs' stores, so after every operation */
-        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = ((st0_ + (st1_ + st2_)) + (st3_ + (st4_ + st5_)));   /* finite only where every output is */
-            if (s_ - s_ == 0.0f)
-                return status;
-        }
-        /* an output may share memory with an input: the range test's path reads the
-         * inputs as they were read here */
-        rs_in0_[0] = c0_t_A;
-        rs_in0_[1] = c1_t_A;
-        rs_in0_[2] = c2_t_A;
-        rs_in0_[3] = c3_t_A;
-        rs_in0_[4] = c4_t_A;
-        rs_in0_[5] = c5_t_A;
-        in_t_A = rs_in0_;
-        rs_in1_[0] = c0_a;
-        rs_in1_[1] = c1_a;
-        rs_in1_[2] = c2_a;
-        in_a = rs_in1_;
-        rs_in2_[0] = c0_p;
-        rs_in2_[1] = c1_p;
-        rs_in2_[2] = c2_p;
-        in_p = rs_in2_;
-    }
-#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_t_A), *(in_t_A + 1), *(in_t_A + 2), *(in_t_A + 3))));
@@ -857,12 +774,6 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_twist_transfer_f32_odd(in_t_A, in_a, in_p, out_t_P);
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
-     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
-     * range test, not a second evaluation) */
-    return status;
-#endif
 #endif
     const float c0_t_A = in_t_A[0];
     const float c1_t_A = in_t_A[1];
@@ -2500,34 +2411,6 @@ static RIGIDSYM_C_COLD int rigidsym_c_twist_transfer_with_jacobians_f32_odd(
             status = RIGIDSYM_C_NONFINITE_INPUT;
 #if RIGIDSYM_C_FLAGS_F
     env_ = rigidsym_c_fp_enter();
-#if RIGIDSYM_C_DETECTS
-    if (status == RIGIDSYM_C_EXTREME_INPUT) {
-        /* finite inputs, one extreme: the evaluation as written, in IEEE arithmetic (flush
-         * modes off), kept where it raised none of underflow, overflow, invalid and
-         * divide-by-zero and its outputs are finite: the status and bits the detecting
-         * block of rigidsym_c_twist_transfer_with_jacobians_f32 gives without a flush mode, so that a build with DAZ
-         * (-Ofast) and one without agree; otherwise the rescues below */
-        float rs_o0_[6];
-        float rs_o1_[36];
-        float rs_o2_[18];
-        float rs_o3_[18];
-        int r_, j_;
-        rigidsym_c_fp_clear();
-        r_ = (*rigidsym_c_twist_transfer_with_jacobians_f32_plain_p)(in_t_A, in_a, in_p, rs_o0_, rs_o1_, rs_o2_, rs_o3_);
-        if (r_ == 0 && !rigidsym_c_fp_risky()) {
-            for (j_ = 0; j_ < 6; ++j_)
-                out_t_P[j_] = rs_o0_[j_];
-            for (j_ = 0; j_ < 36; ++j_)
-                out_t_P_D_t_A[j_] = rs_o1_[j_];
-            for (j_ = 0; j_ < 18; ++j_)
-                out_t_P_D_a[j_] = rs_o2_[j_];
-            for (j_ = 0; j_ < 18; ++j_)
-                out_t_P_D_p[j_] = rs_o3_[j_];
-            status = 0;
-            done_ = 1;
-        }
-    }
-#endif
 #endif
 #if RIGIDSYM_C_WIDE_F
     if (status == RIGIDSYM_C_EXTREME_INPUT) {   /* the double function, rounded once */
@@ -2575,167 +2458,6 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
     float finite = 0.0f;
 #if !defined(RIGIDSYM_C_TRUSTED_INPUTS)
     uint32_t odd = 0;
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    float rs_in0_[6];
-    float rs_in1_[3];
-    float rs_in2_[3];
-    {   /* detected, not predicted: the evaluation as written, then one read of the flags.
-         * Where none of underflow, overflow, invalid and divide-by-zero is set (by this
-         * evaluation or before it), DAZ is off (a subnormal input read as itself) and the
-         * outputs are finite, every input was finite (a NaN or infinite one reaches an
-         * output of this kernel or raises invalid) and every operation was rounded as in
-         * the normal range: status 0, the bits the range test's path gives (its rescues
-         * scale by powers of two, exact where nothing underflows or overflows). Otherwise
-         * the range test below decides, as without this block (the flags this evaluation
-         * raised stay raised: docs/c-api.md), and where it finds every input ordinary, a
-         * flag the read saw was not this evaluation's (the caller's, or DAZ, which reads no
-         * ordinary input otherwise) and its outputs are returned. Off with
-         * -DRIGIDSYM_C_PREDICT. */
-        const float c0_t_A = in_t_A[0];
-        const float c1_t_A = in_t_A[1];
-        const float c2_t_A = in_t_A[2];
-        const float c3_t_A = in_t_A[3];
-        const float c4_t_A = in_t_A[4];
-        const float c5_t_A = in_t_A[5];
-        const float c0_a = in_a[0];
-        const float c1_a = in_a[1];
-        const float c2_a = in_a[2];
-        const float c0_p = in_p[0];
-        const float c1_p = in_p[1];
-        const float c2_p = in_p[2];
-        const float x0 = c2_a - c2_p;
-        const float x1 = -x0;
-        const float x2 = c1_a - c1_p;
-        const float x3 = c0_a - c0_p;
-        const float x4 = -x3;
-        const float x5 = -x2;
-        const float x6 = -c1_t_A;
-        const float x7 = -c2_t_A;
-        const float x8 = -c0_t_A;
-        const float st0_ = c0_t_A;
-        const float st1_ = c1_t_A;
-        const float st2_ = c2_t_A;
-        const float st3_ = c1_t_A*x1 + c2_t_A*x2 + c3_t_A;
-        RIGIDSYM_C_PUT4F(out_t_P, st0_, st1_, st2_, st3_);
-        const float st4_ = c0_t_A*x0 + c2_t_A*x4 + c4_t_A;
-        const float st5_ = c0_t_A*x5 + c1_t_A*x3 + c5_t_A;
-        RIGIDSYM_C_PUT2F(out_t_P + 4, st4_, st5_);
-        const float st6_ = 1.0f;
-        const float st7_ = 0.0f;
-        const float st8_ = 0.0f;
-        const float st9_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A, st6_, st7_, st8_, st9_);
-        const float st10_ = 0.0f;
-        const float st11_ = 0.0f;
-        const float st12_ = 0.0f;
-        const float st13_ = 1.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 4, st10_, st11_, st12_, st13_);
-        const float st14_ = 0.0f;
-        const float st15_ = 0.0f;
-        const float st16_ = 0.0f;
-        const float st17_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 8, st14_, st15_, st16_, st17_);
-        const float st18_ = 0.0f;
-        const float st19_ = 0.0f;
-        const float st20_ = 1.0f;
-        const float st21_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 12, st18_, st19_, st20_, st21_);
-        const float st22_ = 0.0f;
-        const float st23_ = 0.0f;
-        const float st24_ = 0.0f;
-        const float st25_ = x1;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 16, st22_, st23_, st24_, st25_);
-        const float st26_ = x2;
-        const float st27_ = 1.0f;
-        const float st28_ = 0.0f;
-        const float st29_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 20, st26_, st27_, st28_, st29_);
-        const float st30_ = x0;
-        const float st31_ = 0.0f;
-        const float st32_ = x4;
-        const float st33_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 24, st30_, st31_, st32_, st33_);
-        const float st34_ = 1.0f;
-        const float st35_ = 0.0f;
-        const float st36_ = x5;
-        const float st37_ = x3;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 28, st34_, st35_, st36_, st37_);
-        const float st38_ = 0.0f;
-        const float st39_ = 0.0f;
-        const float st40_ = 0.0f;
-        const float st41_ = 1.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_t_A + 32, st38_, st39_, st40_, st41_);
-        const float st42_ = 0.0f;
-        const float st43_ = 0.0f;
-        const float st44_ = 0.0f;
-        const float st45_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_a, st42_, st43_, st44_, st45_);
-        const float st46_ = 0.0f;
-        const float st47_ = 0.0f;
-        const float st48_ = 0.0f;
-        const float st49_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_a + 4, st46_, st47_, st48_, st49_);
-        const float st50_ = 0.0f;
-        const float st51_ = 0.0f;
-        const float st52_ = c2_t_A;
-        const float st53_ = x6;
-        RIGIDSYM_C_PUT4F(out_t_P_D_a + 8, st50_, st51_, st52_, st53_);
-        const float st54_ = x7;
-        const float st55_ = 0.0f;
-        const float st56_ = c0_t_A;
-        const float st57_ = c1_t_A;
-        RIGIDSYM_C_PUT4F(out_t_P_D_a + 12, st54_, st55_, st56_, st57_);
-        const float st58_ = x8;
-        const float st59_ = 0.0f;
-        RIGIDSYM_C_PUT2F(out_t_P_D_a + 16, st58_, st59_);
-        const float st60_ = 0.0f;
-        const float st61_ = 0.0f;
-        const float st62_ = 0.0f;
-        const float st63_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_p, st60_, st61_, st62_, st63_);
-        const float st64_ = 0.0f;
-        const float st65_ = 0.0f;
-        const float st66_ = 0.0f;
-        const float st67_ = 0.0f;
-        RIGIDSYM_C_PUT4F(out_t_P_D_p + 4, st64_, st65_, st66_, st67_);
-        const float st68_ = 0.0f;
-        const float st69_ = 0.0f;
-        const float st70_ = x7;
-        const float st71_ = c1_t_A;
-        RIGIDSYM_C_PUT4F(out_t_P_D_p + 8, st68_, st69_, st70_, st71_);
-        const float st72_ = c2_t_A;
-        const float st73_ = 0.0f;
-        const float st74_ = x8;
-        const float st75_ = x6;
-        RIGIDSYM_C_PUT4F(out_t_P_D_p + 12, st72_, st73_, st74_, st75_);
-        const float st76_ = c0_t_A;
-        const float st77_ = 0.0f;
-        RIGIDSYM_C_PUT2F(out_t_P_D_p + 16, st76_, st77_);
-/* the read is ordered after the outputs' stores, so after every operation */
-        if (!(rigidsym_c_fp_get() & (RIGIDSYM_C_FP_RISKY | RIGIDSYM_C_FP_DAZ))) {
-            const float s_ = ((((((st0_ + st1_) + (st2_ + st3_)) + ((st4_ + st5_) + (st6_ + (st7_ + st8_)))) + (((st9_ + st10_) + (st11_ + (st12_ + st13_))) + ((st14_ + st15_) + (st16_ + (st17_ + st18_))))) + ((((st19_ + st20_) + (st21_ + (st22_ + st23_))) + ((st24_ + st25_) + (st26_ + (st27_ + st28_)))) + (((st29_ + st30_) + (st31_ + (st32_ + st33_))) + ((st34_ + st35_) + (st36_ + (st37_ + st38_)))))) + (((((st39_ + st40_) + (st41_ + st42_)) + ((st43_ + st44_) + (st45_ + (st46_ + st47_)))) + (((st48_ + st49_) + (st50_ + (st51_ + st52_))) + ((st53_ + st54_) + (st55_ + (st56_ + st57_))))) + ((((st58_ + st59_) + (st60_ + (st61_ + st62_))) + ((st63_ + st64_) + (st65_ + (st66_ + st67_)))) + (((st68_ + st69_) + (st70_ + (st71_ + st72_))) + ((st73_ + st74_) + (st75_ + (st76_ + st77_)))))));   /* finite only where every output is */
-            if (s_ - s_ == 0.0f)
-                return status;
-        }
-        /* an output may share memory with an input: the range test's path reads the
-         * inputs as they were read here */
-        rs_in0_[0] = c0_t_A;
-        rs_in0_[1] = c1_t_A;
-        rs_in0_[2] = c2_t_A;
-        rs_in0_[3] = c3_t_A;
-        rs_in0_[4] = c4_t_A;
-        rs_in0_[5] = c5_t_A;
-        in_t_A = rs_in0_;
-        rs_in1_[0] = c0_a;
-        rs_in1_[1] = c1_a;
-        rs_in1_[2] = c2_a;
-        in_a = rs_in1_;
-        rs_in2_[0] = c0_p;
-        rs_in2_[1] = c1_p;
-        rs_in2_[2] = c2_p;
-        in_p = rs_in2_;
-    }
-#endif
 #if RIGIDSYM_C_SSE2
     {   /* the range test of every input component, 4 per SSE2 register */
         __m128i q_ = rigidsym_c_q_f(_mm_castps_si128(_mm_setr_ps(*(in_t_A), *(in_t_A + 1), *(in_t_A + 2), *(in_t_A + 3))));
@@ -2778,12 +2500,6 @@ RIGIDSYM_C_API int rigidsym_c_twist_transfer_with_jacobians_f32(
 #endif
     if (odd >> 31)
         return rigidsym_c_twist_transfer_with_jacobians_f32_odd(in_t_A, in_a, in_p, out_t_P, out_t_P_D_t_A, out_t_P_D_a, out_t_P_D_p);
-#if RIGIDSYM_C_FLAGS_F && RIGIDSYM_C_DETECTS
-    /* every input ordinary: the detecting block's evaluation raised no flag of its own and
-     * its outputs, finite, are this function's (a caller's sticky flag or DAZ costs the
-     * range test, not a second evaluation) */
-    return status;
-#endif
 #endif
     const float c0_t_A = in_t_A[0];
     const float c1_t_A = in_t_A[1];

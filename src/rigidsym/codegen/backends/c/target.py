@@ -316,7 +316,8 @@ def _function(kc, ctype: str, rescale: list) -> dict:
             "wider": f"{PREFIX}{k.name}" if ctype == "float" else None,
             "rescale": [_plan_code(p, slots) for p in rescale],
             "rescaled": {n for p in rescale for n in p["scale"]},
-            "detect": _detectable(kc, used)}
+            "detect": _detectable(kc, used) and (ctype == "double" or
+                                                 sum(a.size for a in k.args) > DETECT_F32_ABOVE)}
 
 
 def _stores(k: Kernel, ctype: str) -> list[dict]:
@@ -349,6 +350,17 @@ def _stores(k: Kernel, ctype: str) -> list[dict]:
             i += n
             j += n
     return out
+
+
+#: the float functions that detect (kernel.c.j2's detecting block) are those of more input
+#: components than this; a smaller one keeps the range test first. One read of MXCSR costs
+#: about as much as the whole of a small kernel (it waits for the evaluation's operations),
+#: while the float range test costs a few operations per 4 components: with the C++ layer
+#: against hand-written Eigen (benchmarks/cpp_eigen.py, the same run), the float twist
+#: transfer (12 components) 3.27 detecting against 2.12-2.19 with the range test first, the
+#: float Newton-Euler wrench (19) 1.67-1.70 against 1.81; every double function detects (its
+#: range test reads two components a register, one load each: twist 0.89 against 0.97-1.00)
+DETECT_F32_ABOVE = 12
 
 
 #: the operations through which a NaN input reaches the result and an infinite one reaches
