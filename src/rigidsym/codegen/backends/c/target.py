@@ -328,7 +328,7 @@ def _stores(k: Kernel, ctype: str) -> list[dict]:
     rigidsym_c_impl.h), a remaining component and a scalar output one by one. A caller that reads
     the outputs in 16-byte registers (Eigen's fixed-size vectors, any vectorised loop) forwards
     each load from one store; from one store per component it stalls on store forwarding
-    (the float twist transfer read by Eigen: 11.1 -> 5.7 ns a call, benchmarks/RESULTS.md)."""
+    (benchmarks/RESULTS.md, "The outputs' 16-byte stores")."""
     lanes = 4 if ctype == "float" else 2
     out, j = [], 0
     for o in k.outputs:
