@@ -163,7 +163,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
         const double x10 = (0.5)*c3_Q - x4;
         const double x11 = x6 - x7;
         const double x12 = -0.5*c5_Q + (0.5)*c7_Q;
-        const double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(x9);
+        const double x13 = rigidsym_c_negative_d(x10*x8 + x11*x5 + x12*x3)/sqrt(x9);
         const double st0_ = x13*x3;
         const double st1_ = x13*x5;
         RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
@@ -184,7 +184,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
         const double x7 = (0.5)*c3_Q - x0;
         const double x8 = (0.5)*c7_Q - x2;
         const double x9 = (0.5)*c2_Q - 0.5*c6_Q;
-        const double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x6);
+        const double x10 = rigidsym_c_negative_d(x1*x8 + x3*x7 + x5*x9)/sqrt(x6);
         const double st0_ = x1*x10;
         const double st1_ = x10*x5;
         RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
@@ -206,7 +206,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_plain(
         const double x8 = x0 - x1;
         const double x9 = (0.5)*c7_Q - x3;
         const double x10 = -0.5*c1_Q + (0.5)*c3_Q;
-        const double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))/sqrt(x7);
+        const double x11 = rigidsym_c_negative_d(x10*x6 + x2*x9 + x4*x8)/sqrt(x7);
         const double st0_ = x11*x2;
         const double st1_ = x11*x4;
         RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
@@ -400,7 +400,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         const double x10 = (0.5)*c3_Q - x4;
         const double x11 = x6 - x7;
         const double x12 = -0.5*c5_Q + (0.5)*c7_Q;
-        const double x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0) ? (-1.0) : (1.0))/sqrt(x9);
+        const double x13 = rigidsym_c_negative_d(x10*x8 + x11*x5 + x12*x3)/sqrt(x9);
         const double st0_ = x13*x3;
         const double st1_ = x13*x5;
         RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
@@ -421,7 +421,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         const double x7 = (0.5)*c3_Q - x0;
         const double x8 = (0.5)*c7_Q - x2;
         const double x9 = (0.5)*c2_Q - 0.5*c6_Q;
-        const double x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0) ? (-1.0) : (1.0))/sqrt(x6);
+        const double x10 = rigidsym_c_negative_d(x1*x8 + x3*x7 + x5*x9)/sqrt(x6);
         const double st0_ = x1*x10;
         const double st1_ = x10*x5;
         RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
@@ -443,7 +443,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation(
         const double x8 = x0 - x1;
         const double x9 = (0.5)*c7_Q - x3;
         const double x10 = -0.5*c1_Q + (0.5)*c3_Q;
-        const double x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0) ? (-1.0) : (1.0))/sqrt(x7);
+        const double x11 = rigidsym_c_negative_d(x10*x6 + x2*x9 + x4*x8)/sqrt(x7);
         const double st0_ = x11*x2;
         const double st1_ = x11*x4;
         RIGIDSYM_C_PUT2D(out_e, st0_, st1_);
@@ -592,7 +592,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
         const float x10 = (0.5f)*c3_Q - x4;
         const float x11 = x6 - x7;
         const float x12 = -0.5f*c5_Q + (0.5f)*c7_Q;
-        const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
+        const float x13 = rigidsym_c_negative_f(x10*x8 + x11*x5 + x12*x3)/sqrtf(x9);
         const float st0_ = x13*x3;
         const float st1_ = x13*x5;
         RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
@@ -613,7 +613,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
         const float x7 = (0.5f)*c3_Q - x0;
         const float x8 = (0.5f)*c7_Q - x2;
         const float x9 = (0.5f)*c2_Q - 0.5f*c6_Q;
-        const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x6);
+        const float x10 = rigidsym_c_negative_f(x1*x8 + x3*x7 + x5*x9)/sqrtf(x6);
         const float st0_ = x1*x10;
         const float st1_ = x10*x5;
         RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
@@ -635,7 +635,7 @@ static RIGIDSYM_C_COLD int rigidsym_c_natural_invariants_from_rotation_f32_plain
         const float x8 = x0 - x1;
         const float x9 = (0.5f)*c7_Q - x3;
         const float x10 = -0.5f*c1_Q + (0.5f)*c3_Q;
-        const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
+        const float x11 = rigidsym_c_negative_f(x10*x6 + x2*x9 + x4*x8)/sqrtf(x7);
         const float st0_ = x11*x2;
         const float st1_ = x11*x4;
         RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
@@ -828,7 +828,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         const float x10 = (0.5f)*c3_Q - x4;
         const float x11 = x6 - x7;
         const float x12 = -0.5f*c5_Q + (0.5f)*c7_Q;
-        const float x13 = ((x10*x8 + x11*x5 + x12*x3 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x9);
+        const float x13 = rigidsym_c_negative_f(x10*x8 + x11*x5 + x12*x3)/sqrtf(x9);
         const float st0_ = x13*x3;
         const float st1_ = x13*x5;
         RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
@@ -849,7 +849,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         const float x7 = (0.5f)*c3_Q - x0;
         const float x8 = (0.5f)*c7_Q - x2;
         const float x9 = (0.5f)*c2_Q - 0.5f*c6_Q;
-        const float x10 = ((x1*x8 + x3*x7 + x5*x9 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x6);
+        const float x10 = rigidsym_c_negative_f(x1*x8 + x3*x7 + x5*x9)/sqrtf(x6);
         const float st0_ = x1*x10;
         const float st1_ = x10*x5;
         RIGIDSYM_C_PUT2F(out_e, st0_, st1_);
@@ -871,7 +871,7 @@ RIGIDSYM_C_API int rigidsym_c_natural_invariants_from_rotation_f32(
         const float x8 = x0 - x1;
         const float x9 = (0.5f)*c7_Q - x3;
         const float x10 = -0.5f*c1_Q + (0.5f)*c3_Q;
-        const float x11 = ((x10*x6 + x2*x9 + x4*x8 < 0.0f) ? (-1.0f) : (1.0f))/sqrtf(x7);
+        const float x11 = rigidsym_c_negative_f(x10*x6 + x2*x9 + x4*x8)/sqrtf(x7);
         const float st0_ = x11*x2;
         const float st1_ = x11*x4;
         RIGIDSYM_C_PUT2F(out_e, st0_, st1_);

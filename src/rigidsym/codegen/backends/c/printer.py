@@ -16,7 +16,8 @@ from sympy.codegen.ast import float32, float80, real
 
 from rigidsym.codegen.backends.extension.printer import KernelCPrinter
 
-__all__ = ["DoublePrinter", "FloatOnlyPrinter", "WidePrinter", "SpelledSymbols"]
+__all__ = ["BranchFreeSign", "DoublePrinter", "FloatOnlyPrinter", "SpelledSymbols", "WidePrinter",
+           "negative_operand"]
 
 
 class SpelledSymbols:
@@ -31,17 +32,47 @@ class SpelledSymbols:
         return self.names.get(expr.name) or super()._print_Symbol(expr)
 
 
-class DoublePrinter(SpelledSymbols, KernelCPrinter):
+def negative_operand(expr):
+    """``x`` where ``expr`` is ``Piecewise((-1, x < 0), (1, True))`` (the sign choice of a
+    kernel, -1 or 1), else None."""
+    if not isinstance(expr, sp.Piecewise) or len(expr.args) != 2:
+        return None
+    (a, cond), (b, last) = expr.args
+    if last is not sp.true or a != -1 or b != 1:
+        return None
+    if isinstance(cond, sp.StrictLessThan) and cond.rhs == 0:
+        return cond.lhs
+    if isinstance(cond, sp.StrictGreaterThan) and cond.lhs == 0:
+        return cond.rhs
+    return None
+
+
+class BranchFreeSign:
+    """Prints ``Piecewise((-1, x < 0), (1, True))`` as ``rigidsym_c_negative_<t>(x)``
+    (rigidsym_c_impl.h: the same value for every x, -0 and NaN included, by a mask instead of
+    a branch); every other ``Piecewise`` as the C printer does."""
+
+    _negative = "rigidsym_c_negative_d"
+
+    def _print_Piecewise(self, expr):
+        x = negative_operand(expr)
+        if x is None:
+            return super()._print_Piecewise(expr)
+        return f"{self._negative}({self._print(x)})"
+
+
+class DoublePrinter(BranchFreeSign, SpelledSymbols, KernelCPrinter):
     """The package's double printer, with the target's compensated-product helpers."""
 
     _diffprod = "rigidsym_c_diffprod"
     _sumprod = "rigidsym_c_sumprod{n}"
 
 
-class FloatOnlyPrinter(SpelledSymbols, KernelCPrinter):
+class FloatOnlyPrinter(BranchFreeSign, SpelledSymbols, KernelCPrinter):
     """C99 printer of float-only programs (every literal, function and helper in float)."""
 
     _one = "1.0f"
+    _negative = "rigidsym_c_negative_f"
     _diffprod = "rigidsym_c_diffprodf"
     _sumprod = "rigidsym_c_sumprod{n}f"
 
