@@ -413,6 +413,59 @@ def test_the_vector_and_scalar_range_tests_are_the_definition(tmp_path):
     assert out.strip() == "0"
 
 
+_HELPERS_CHECK = _CHECK_PRELUDE + r"""
+/* the branch-free sign and the outputs' store macros against their plain C definitions */
+int main(void)
+{
+    static const double sd[] = {0.0, -0.0, 1.0, -1.0, 5e-324, -5e-324, 1e308, -1e308};
+    long i, bad = 0;
+    for (i = 0; i < 400000; ++i) {
+        uint64_t b = rnd();
+        uint32_t c = (uint32_t)rnd();
+        double x, o[2] = {7.0, 7.0};
+        float xf, of[4] = {7.0f, 7.0f, 7.0f, 7.0f}, of2[3] = {7.0f, 7.0f, 7.0f};
+        memcpy(&x, &b, 8);
+        memcpy(&xf, &c, 4);
+        if (i < 8) x = sd[i], xf = (float)sd[i];
+        if (i == 8) x = NAN, xf = NAN;
+        if (i == 9) x = -NAN, xf = -NAN;
+        if (i == 10) x = -INFINITY, xf = -INFINITY;
+        /* the same bits as the ternary (1.0 for -0 and NaN) */
+        { const double r = rigidsym_c_negative_d(x), t = (x < 0.0) ? -1.0 : 1.0;
+          bad += memcmp(&r, &t, 8) != 0; }
+        { const float r = rigidsym_c_negative_f(xf), t = (xf < 0.0f) ? -1.0f : 1.0f;
+          bad += memcmp(&r, &t, 4) != 0; }
+        RIGIDSYM_C_PUT2D(o, x, -x);
+        bad += memcmp(&o[0], &x, 8) != 0;
+        { const double m = -x; bad += memcmp(&o[1], &m, 8) != 0; }
+        RIGIDSYM_C_PUT4F(of, xf, -xf, 2.0f, xf);
+        bad += memcmp(&of[0], &xf, 4) != 0 || memcmp(&of[3], &xf, 4) != 0 || of[2] != 2.0f;
+        RIGIDSYM_C_PUT2F(of2, -xf, xf);
+        bad += memcmp(&of2[1], &xf, 4) != 0 || of2[2] != 7.0f;   /* 8 bytes, no more */
+    }
+    printf("%ld\n", bad);
+    return 0;
+}
+"""
+
+
+@needs_gcc
+@pytest.mark.parametrize("flags", [[], ["-DRIGIDSYM_C_NO_VECTOR"]], ids=["vector", "scalar"])
+def test_the_sign_and_store_helpers_are_their_plain_definitions(tmp_path, flags):
+    """``rigidsym_c_negative_d``/``_f`` (the printed sign choice ``x < 0 ? -1 : 1``, by a
+    mask) give the ternary's bits for -0, NaN of either sign, infinities, subnormals and 4e5
+    random bit patterns; the outputs' 16-byte stores (``RIGIDSYM_C_PUT*``) write exactly their
+    components, bit for bit, and nothing past them; both in the vector build and in the
+    scalar one of Cortex-M and other compilers."""
+    src = tmp_path / "helpers.c"
+    src.write_text(_HELPERS_CHECK)
+    exe = tmp_path / "helpers"
+    subprocess.run([GCC, *STRICT, "-O2", *flags, "-I", str(KERNELS_DIR), str(src), "-o",
+                    str(exe), "-lm"], check=True)
+    out = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout
+    assert out.strip() == "0"
+
+
 #: the three input range tests: x86-64's SSE2 one (the default here), the generic vector
 #: one that Arm with NEON takes, and the scalar loop of Cortex-M and other compilers
 RANGE_TESTS = {"sse2": [], "vector": ["-DRIGIDSYM_C_NO_SSE2"], "scalar": ["-DRIGIDSYM_C_NO_VECTOR"]}
