@@ -466,6 +466,25 @@ def test_the_sign_and_store_helpers_are_their_plain_definitions(tmp_path, flags)
     assert out.strip() == "0"
 
 
+def test_only_the_sign_choice_prints_branch_free():
+    """``Piecewise((-1, x < 0), (1, True))`` prints as the helper of its type; a form whose
+    value differs from the helper's anywhere (``x <= 0``: -1 at x = -0; swapped values;
+    another threshold) prints as the ternary, and so does the long double rescue."""
+    import sympy as sp
+
+    from rigidsym.codegen.backends.c.printer import DoublePrinter, FloatOnlyPrinter, WidePrinter
+
+    x, y = sp.symbols("x y")
+    sign = sp.Piecewise((-1, x + y < 0), (1, True))
+    assert DoublePrinter().doprint(sign) == "rigidsym_c_negative_d(x + y)"
+    assert FloatOnlyPrinter().doprint(sign) == "rigidsym_c_negative_f(x + y)"
+    assert "?" in WidePrinter().doprint(sign)
+    for other in (sp.Piecewise((-1, x <= 0), (1, True)), sp.Piecewise((1, x < 0), (-1, True)),
+                  sp.Piecewise((-1, x < 1), (1, True)), sp.Piecewise((-2, x < 0), (1, True)),
+                  sp.Piecewise((-1, x < 0), (0, y < 0), (1, True))):
+        assert "?" in DoublePrinter().doprint(other), other
+
+
 #: the three input range tests: x86-64's SSE2 one (the default here), the generic vector
 #: one that Arm with NEON takes, and the scalar loop of Cortex-M and other compilers
 RANGE_TESTS = {"sse2": [], "vector": ["-DRIGIDSYM_C_NO_SSE2"], "scalar": ["-DRIGIDSYM_C_NO_VECTOR"]}

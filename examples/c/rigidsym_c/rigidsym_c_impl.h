@@ -425,7 +425,8 @@ static inline rigidsym_c_vf rigidsym_c_odd_vf(rigidsym_c_vf b)
  * load forwarded from one store; from one store per component the load waits for them to
  * reach the cache (store forwarding fails): the C++ layer of the double twist transfer read
  * by Eigen, 1.11 -> 0.89 of the hand-written formula (benchmarks/RESULTS.md, "The outputs'
- * 16-byte stores"). A narrower load is forwarded from a wider store either way. -DRIGIDSYM_C_SCALAR_STORES: one store per component. */
+ * 16-byte stores"). A narrower load is forwarded from a wider store either way.
+ * -DRIGIDSYM_C_SCALAR_STORES: one store per component. */
 #if RIGIDSYM_C_VECTOR && !defined(RIGIDSYM_C_SCALAR_STORES)
 typedef float rigidsym_c_sf __attribute__((vector_size(16)));
 typedef double rigidsym_c_sd __attribute__((vector_size(16)));
