@@ -13,6 +13,7 @@ import json
 
 import _profile
 import pytest
+from _book import BOOK
 from test_cert_page import (
     _certcheck,
     another_printed_text,
@@ -23,7 +24,6 @@ from test_cert_page import (
     shifted_sides,
 )
 from test_cert_page_momenta import (
-    BOOK,
     certificates,
     line_changed,
     line_doubled,

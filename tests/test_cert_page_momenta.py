@@ -29,7 +29,6 @@ from test_cert_page import (  # noqa: E402
 
 from certcheck import CheckError, check_certificate  # noqa: E402
 
-BOOK = ROOT.parent / "shared" / "book" / "angeles-chapter3.md"
 #: the Newton-Euler ids whose every printed side is read through the lines (measured)
 NEWTON_EULER = ["3.134b", "3.135", "3.136", "3.137", "3.139", "3.140", "3.142", "3.143",
                 "3.145", "3.146"]

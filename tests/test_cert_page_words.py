@@ -20,12 +20,13 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "certcheck" / "src"))
 
+from _book import BOOK  # noqa: E402
 from certcheck.book import BookError, check_page, locate, sha256  # noqa: E402
 from certcheck.braces import displays_after  # noqa: E402
 from certcheck.by_definition import unread_vacuous  # noqa: E402
 from certcheck.compare import compare  # noqa: E402
 from test_cert_page import another_printed_text, relabelled  # noqa: E402
-from test_cert_page_momenta import BOOK, certificates  # noqa: E402
+from test_cert_page_momenta import certificates  # noqa: E402
 
 from certcheck import CheckError, check_certificate, words  # noqa: E402
 
