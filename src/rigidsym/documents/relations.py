@@ -169,8 +169,10 @@ class _Tokens:
             if n is None or isinstance(n, LatexCommentNode):
                 continue
             if skip_group and isinstance(n, LatexGroupNode):
+                kind = "label" if skip_group == "label" else "sep"
+                text = n.latex_verbatim()
+                self.add(kind, text[1:-1].strip() if kind == "label" else text, n.pos)
                 skip_group = False
-                self.add("sep", n.latex_verbatim(), n.pos)
                 continue
             skip_group = False
             if isinstance(n, LatexCharsNode):
@@ -188,16 +190,17 @@ class _Tokens:
             elif isinstance(n, LatexMacroNode):
                 skip_group = self.macro(n)
 
-    def macro(self, n) -> bool:
-        """Add a macro node; ``True`` when the next group is its argument to drop."""
+    def macro(self, n) -> bool | str:
+        """Add a macro node; ``True`` when the next group is its argument to drop,
+        ``"label"`` when it is a label's."""
         name, whole = n.macroname, n.latex_verbatim()
         has_args = bool(n.nodeargd and any(a is not None for a in n.nodeargd.argnlist))
         if name == "\\" and self.depth == 0:
             self.add("br", "\\\\", n.pos)
         elif name in ("label", "tag", "tag*"):
-            arg = whole[whole.find("{") + 1:whole.rfind("}")] if has_args else ""
-            self.add("label", arg.strip(), n.pos)
-            return not has_args
+            if not has_args:
+                return "label"
+            self.add("label", whole[whole.find("{") + 1:whole.rfind("}")].strip(), n.pos)
         elif name in ("nonumber", "notag"):
             pass
         elif name in ("left", "bigl", "Bigl", "biggl", "Biggl"):
@@ -233,7 +236,7 @@ class _Tokens:
 
 def _clean(text: str) -> str:
     """A side without surrounding space, spacing macros and a closing period or comma."""
-    t = text.strip()
+    t = " ".join(text.split())
     changed = True
     while changed and t:
         changed = False
