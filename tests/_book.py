@@ -24,6 +24,8 @@ _WHERE = os.environ.get("RIGIDSYM_TESTS_BOOK", "")
 #: the chapter's path (a path that does not exist under ``RIGIDSYM_TESTS_BOOK=none``)
 BOOK = (ROOT / "tests" / "no-book-here" if _WHERE.lower() == "none"
         else Path(_WHERE) if _WHERE else SHARED / "book" / "angeles-chapter3.md")
+#: the chapter's reading (shipped: rigidsym.derivations), certcheck's ``--reading``
+READING = ROOT / "derivations" / "angeles-chapter3.reading.toml"
 #: the skip's one line
 REASON = (f"the chapter is not at {BOOK} (the project never ships it; "
           "RIGIDSYM_TESTS_BOOK names a copy)")

@@ -23,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "certcheck" / "src"
 sys.path.insert(0, str(SRC))
 
-from _book import BOOK, book_path, book_text, needs_book  # noqa: E402
+from _book import BOOK, READING, book_path, book_text, needs_book  # noqa: E402
 from certcheck.book import (  # noqa: E402
     BookError,
     check_manifest,
@@ -54,7 +54,7 @@ def certs_for(folder: Path, ids: list[str]) -> dict:
     for i in ids:  # the recorded verdict: certcheck, not this test, says whether it holds
         certs[i] = certificate(i, REGISTRY[i].expected)
         (folder / certificate_file(i)).write_text(json.dumps(certs[i], indent=1) + "\n")
-    write_manifest(folder, [certificate_file(i) for i in ids], str(BOOK))
+    write_manifest(folder, [certificate_file(i) for i in ids], str(BOOK), READING)
     return certs
 
 
@@ -218,7 +218,7 @@ def test_locator_finds_every_printed_id(registry):
 
 def test_referee_command_passes_and_prints_the_page(five):
     folder, certs = five
-    p = _certcheck("--book", BOOK, folder)
+    p = _certcheck("--book", BOOK, "--reading", READING, folder)
     unread = p.stdout.count("\nNOT READ ")  # an id proved, not read on every side: exit 3
     assert p.returncode == (3 if unread else 0), p.stdout + p.stderr
     assert p.stdout.count("CHECKED") + unread == len(FIVE)
@@ -273,7 +273,7 @@ def test_manifest_binds_the_folder_to_one_run(five, tmp_path):
         check_manifest(str(copy_), [str(p) for p in (copy_.glob("3*.json"))], book)
     with pytest.raises(BookError, match="SHA-256"):  # another book
         check_manifest(str(folder), files, book + b"\n")
-    p = _certcheck("--book", BOOK, copy_)
+    p = _certcheck("--book", BOOK, "--reading", READING, copy_)
     assert p.returncode == 1 and "FAILED MANIFEST.json" in p.stdout, p.stdout
 
 
@@ -294,7 +294,7 @@ def chapter(tmp_path_factory, chapter_certificates):
     folder = tmp_path_factory.mktemp("chapter")
     for i, c in chapter_certificates.items():
         (folder / certificate_file(i)).write_text(json.dumps(c, indent=1) + "\n")
-    write_manifest(folder, [certificate_file(i) for i in chapter_certificates], str(BOOK))
+    write_manifest(folder, [certificate_file(i) for i in chapter_certificates], str(BOOK), READING)
     return folder, {i: json.loads(json.dumps(c)) for i, c in chapter_certificates.items()}
 
 
@@ -999,8 +999,8 @@ def test_dropped_printed_relation_fails_where_braced(braced):
     c = certs["3.130"]
     k = next(k for k in printed_indices(c) if "I_C" in c["relations"][k]["label"])
     (tampered / certificate_file("3.130")).write_text(json.dumps(relation_dropped(c, k)))
-    write_manifest(tampered, [certificate_file("3.130")], str(BOOK))
-    p = _certcheck("--quiet", "--book", BOOK, tampered)
+    write_manifest(tampered, [certificate_file("3.130")], str(BOOK), READING)
+    p = _certcheck("--quiet", "--book", BOOK, "--reading", READING, tampered)
     assert p.returncode == 1 and "FAILED 3.130.json: (3.130)" in p.stdout, p.stdout
 
 

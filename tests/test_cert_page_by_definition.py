@@ -15,7 +15,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from _book import book_path
+from _book import READING, book_path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "certcheck" / "src"))
@@ -131,7 +131,7 @@ def test_cli_counts_the_vacuous_relation_read(quick_certs, tmp_path, capsys):
 
     folder = tmp_path / "run"
     certs_for(folder, QUICK)
-    rc = main(["--book", str(BOOK), str(folder)])
+    rc = main(["--book", str(BOOK), "--reading", str(READING), str(folder)])
     out = capsys.readouterr().out
     assert rc == 0, out
     for i in QUICK:

@@ -13,7 +13,7 @@ import json
 
 import _profile
 import pytest
-from _book import BOOK
+from _book import BOOK, READING
 from test_cert_page import (
     _certcheck,
     another_printed_text,
@@ -106,11 +106,15 @@ def test_a_representation_the_page_lists_dropped_or_copied_rejected(book, tmp_pa
             f"rejected: ({i}): the certificate carries 4 members of"), i
     for i, c in certs.items():
         (tmp_path / certificate_file(i)).write_text(json.dumps(member_copied(c, members(c)[0])))
-    write_manifest(tmp_path, [certificate_file(i) for i in FAMILY], str(BOOK))
-    p = _certcheck("--quiet", "--book", BOOK, tmp_path)
+    write_manifest(tmp_path, [certificate_file(i) for i in FAMILY], str(BOOK), READING)
+    p = _certcheck("--quiet", "--book", BOOK, tmp_path)   # the page's reader alone
     assert p.returncode == 1, p.stdout
     for i in FAMILY:
         assert f"FAILED {i}.json: ({i}): the page prints the relation for" in p.stdout, i
+    p = _certcheck("--quiet", "--book", BOOK, "--reading", READING, tmp_path)
+    assert p.returncode == 1, p.stdout   # the reading first: the copy is not its table
+    for i in FAMILY:
+        assert f"FAILED {i}.json: ({i}) relation" in p.stdout, i
 
 
 def test_member_lines_read_each_representation_firmly_and_a_swap_rejected(book):

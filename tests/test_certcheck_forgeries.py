@@ -25,7 +25,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "certcheck" / "src"
 sys.path.insert(0, str(SRC))
 
-from _book import BOOK, book_path  # noqa: E402
+from _book import BOOK, READING, book_path  # noqa: E402
 from certcheck.__main__ import main  # noqa: E402
 
 from certcheck import CheckError, check_certificate  # noqa: E402
@@ -56,7 +56,7 @@ def _named(out: str, eq_id: str) -> bool:
 
 def _rejected(tmp: Path, eq_id: str, cert: dict) -> tuple[int, str]:
     forge.write_run(tmp, {f"{eq_id}.json": cert}, BOOK)
-    return _run("--book", BOOK, tmp, "--quiet")
+    return _run("--book", BOOK, "--reading", READING, tmp, "--quiet")
 
 
 @pytest.fixture(scope="module")
@@ -88,14 +88,14 @@ def test_files_given_are_held_to_their_folders_manifest(quick, tmp_path):
     i = "3.13"
     forge.write_run(tmp_path, {f"{i}.json": quick[i]}, BOOK)
     (tmp_path / f"{i}.json").write_text(json.dumps(forge.zero_is_one_minus_one(quick[i])))
-    rc, out = _run("--book", BOOK, tmp_path / f"{i}.json", "--quiet")
+    rc, out = _run("--book", BOOK, "--reading", READING, tmp_path / f"{i}.json", "--quiet")
     assert rc == 1 and "MANIFEST" in out and "SHA-256" in out, out
 
 
 def test_summary_counts_the_per_id_lines_and_exit_says_unread(quick, tmp_path):
     book_path()  # the run's manifest names the chapter (tests/_book.py)
     forge.write_run(tmp_path, {f"{i}.json": c for i, c in quick.items()}, BOOK)
-    rc, out = _run("--book", BOOK, tmp_path, "--quiet")
+    rc, out = _run("--book", BOOK, "--reading", READING, tmp_path, "--quiet")
     lines = out.splitlines()
     checked = sum(x.startswith("CHECKED") for x in lines)
     unread = [x for x in lines if x.startswith("NOT READ")]
@@ -109,7 +109,7 @@ def test_summary_counts_the_per_id_lines_and_exit_says_unread(quick, tmp_path):
                             for x in unread)
     assert rc == (1 if failed else 3 if unread else 0)
     if unread and not failed:
-        assert _run("--book", BOOK, tmp_path, "--quiet", "--lenient")[0] == 0
+        assert _run("--book", BOOK, "--reading", READING, tmp_path, "--quiet", "--lenient")[0] == 0
     assert _run(tmp_path, "--quiet")[0] == 3  # no book: nothing read from the page
     assert _run(tmp_path, "--quiet", "--lenient")[0] == 0
 

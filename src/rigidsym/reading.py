@@ -23,8 +23,12 @@ words are those of ``--let`` (``docs/reading-files.md`` is the reference)::
     where = "(2)"
     scope = "2"                            # optional: a section; the let holds in it only
 
-    [id."3.77b"]                           # optional: what the page prints an id as
-    class = "definition"                   # relation | definition | theorem | not-checked
+    [classes]                              # what the page prints each id as
+    relation = ["1", "3"]                  # relation | definition | theorem | not-checked
+    definition = ["2"]
+
+    [id."2"]                               # optional: a note on one id
+    class = "definition"
     where = "printed with \\equiv"
 
 Every key is checked: an unknown key, table or value is an error naming it and the file
@@ -57,9 +61,10 @@ CONVENTIONS: dict[str, tuple[str, ...]] = {
 }
 #: an id's class as the page prints it
 CLASSES = ("relation", "definition", "theorem", "not-checked")
-_LET_KEYS = {"let", "where", "scope", "ids"}
+_LET_KEYS = {"let", "where", "scope", "ids", "cites", "family", "reads_as", "particles",
+             "relation", "unit"}
 _ID_KEYS = {"class", "where", "relations"}
-_TOP = {"reading", "conventions", "let", "id"}
+_TOP = {"reading", "conventions", "let", "id", "classes"}
 
 
 @dataclass(frozen=True)
@@ -72,6 +77,13 @@ class Let:
         scope: the section it holds in, ``None`` for the whole text.
         ids: the ids it is for (``()``: every id of its scope).
         line: its ``[[let]]`` entry's number, from 1 (for messages).
+        cites: the display of another text the page reproduces for it (``"(2.49)"``).
+        family: the indices of a family the page states in words (``"ij"``: i, j = 1, 2, 3).
+        reads_as: how a run-together of the converted text is read (``"text"``).
+        relation: the one relation of the id it holds for (a member of a family or a unit
+            alternative: ``"p in m/rad"``), ``""`` for the whole id.
+        unit: the unit the glyph is read in for that relation (``"m/turn"``).
+        particles: a body of point masses: per particle, the glyphs it gives values to.
     """
 
     let: str
@@ -79,6 +91,12 @@ class Let:
     scope: str | None = None
     ids: tuple[str, ...] = ()
     line: int = 0
+    cites: str = ""
+    family: str = ""
+    reads_as: str = ""
+    relation: str = ""
+    unit: str = ""
+    particles: tuple[tuple[tuple[str, str], ...], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -198,13 +216,34 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
         scope = entry.get("scope")
         if scope is not None:
             _text(scope, where, f"{here} scope")
+        extras = {k: _text(entry.get(k, ""), where, f"{here} {k}", allow_empty=True)
+                  for k in ("cites", "family", "reads_as", "relation", "unit")}
+        particles = entry.get("particles", [])
+        if not isinstance(particles, list) or not all(
+                isinstance(p, dict) and all(isinstance(v, str) for v in p.values())
+                for p in particles):
+            raise _bad(where, f"{here} particles must be a list of tables of strings")
         lets.append(Let(text.strip(), _text(entry.get("where", ""), where, f"{here} where",
                                             allow_empty=True),
-                        scope, tuple(ids), n))
+                        scope, tuple(ids), n, **extras,
+                        particles=tuple(tuple(sorted(p.items())) for p in particles)))
+    ids_out: dict[str, IdReading] = {}
+    classes = doc.get("classes", {})
+    if not isinstance(classes, dict):
+        raise _bad(where, "[classes] must be a table of class = [ids]")
+    for cls, members in classes.items():
+        if cls not in CLASSES:
+            raise _bad(where, f"[classes]: unknown class {cls!r}; expected one of "
+                              f"{', '.join(CLASSES)}")
+        if not isinstance(members, list) or not all(isinstance(i, str) for i in members):
+            raise _bad(where, f"[classes] {cls} must be a list of ids")
+        for i in members:
+            if i in ids_out:
+                raise _bad(where, f"[classes]: {i!r} is given two classes")
+            ids_out[i] = IdReading(i, cls)
     ids_table = doc.get("id", {})
     if not isinstance(ids_table, dict):
         raise _bad(where, "id must be a table of ids ([id.\"3.1\"])")
-    ids_out = {}
     for i, entry in ids_table.items():
         here = f"[id.{i!r}]"
         if not isinstance(entry, dict):
@@ -218,6 +257,8 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
         rel = entry.get("relations")
         if rel is not None and (not isinstance(rel, int) or isinstance(rel, bool) or rel < 1):
             raise _bad(where, f"{here} relations must be a positive integer")
+        if i in ids_out and ids_out[i].cls != cls:
+            raise _bad(where, f"{here} class {cls!r} but [classes] gives {ids_out[i].cls!r}")
         ids_out[i] = IdReading(i, cls, _text(entry.get("where", ""), where, f"{here} where",
                                              allow_empty=True), rel)
     return Reading(path, reading_sha256(raw), page, dict(conventions), tuple(lets), ids_out)

@@ -54,7 +54,7 @@ from rigidsym.checking.deciding.explicit import (
     shape_of,
 )
 from rigidsym.core.files import write_atomic
-from rigidsym.registry.declarations import REGISTRY
+from rigidsym.registry.declarations import REGISTRY, book_reading
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "certificate_or_reason",
@@ -668,7 +668,8 @@ def certificate_or_reason(eq_id: str, verdict: str, members: list[dict] | None) 
 
 
 def write_certificates(results, directory, recheck: bool = False,
-                       book: str | None = None, made: dict | None = None) -> dict:
+                       book: str | None = None, made: dict | None = None,
+                       reading: str | Path | None = None) -> dict:
     """Write one certificate per decided result into ``directory`` (created), and a
     ``SKIPPED.txt`` naming the ids without one and why.
 
@@ -682,6 +683,10 @@ def write_certificates(results, directory, recheck: bool = False,
             into ``MANIFEST.json`` and the checker binds each certificate to its page.
         made: id -> :func:`certificate_or_reason`, made before (the export's workers or
             store: :mod:`rigidsym.checking.export`); an id not in it is made here.
+        reading: the reading file the certificates are bound to (its SHA-256 into
+            ``MANIFEST.json``, ``--reading`` for the checker); ``None``: the book's reading
+            (:func:`rigidsym.registry.declarations.book_reading`) where every id written is
+            the book's, else none.
 
     Returns:
         ``{"written": [ids], "skipped": {id: why}, "rechecked": {id: passed} or None,
@@ -702,11 +707,13 @@ def write_certificates(results, directory, recheck: bool = False,
         evidence[r.id] = [rel["evidence"]["type"] for rel in cert["relations"]]
     write_atomic(out / "SKIPPED.txt",
                  "".join(f"{i}: {why}\n" for i, why in skipped.items()) or "none\n")
-    write_manifest(out, list(files), book)
+    if reading is None and written and all(":" not in i for i in written):
+        reading = book_reading()
+    write_manifest(out, list(files), book, reading)
     summary = {"written": written, "skipped": skipped, "rechecked": None, "checker": None,
-               "failures": {}, "evidence": evidence}
+               "failures": {}, "evidence": evidence, "reading": reading}
     if recheck and written:
-        summary.update(recheck_folder(out, files, book))
+        summary.update(recheck_folder(out, files, book, reading=reading))
     return summary
 
 
@@ -721,13 +728,14 @@ def _checker_path() -> str | None:
     return "" if importlib.util.find_spec("certcheck") is not None else None
 
 
-def write_manifest(directory, names: list[str], book: str | None = None) -> dict:
-    """Write ``directory/MANIFEST.json``: the SHA-256 of each certificate file of ``names``
-    and of the book text (``None`` without one), and rigidsym's version, so that the folder
-    is one run (certcheck verifies it). Returns the manifest.
+def write_manifest(directory, names: list[str], book: str | None = None,
+                   reading: str | Path | None = None) -> dict:
+    """Write ``directory/MANIFEST.json``: the SHA-256 of each certificate file of ``names``,
+    of the book text and of the reading file (``None`` without one), and rigidsym's version,
+    so that the folder is one run (certcheck verifies it). Returns the manifest.
 
     Raises:
-        BadInput: ``book`` is not a readable file.
+        BadInput: ``book`` or ``reading`` is not a readable file.
     """
     import hashlib
 
@@ -741,15 +749,23 @@ def write_manifest(directory, names: list[str], book: str | None = None) -> dict
             book_sha = hashlib.sha256(Path(book).read_bytes()).hexdigest()
         except OSError as exc:
             raise BadInput(f"book: expected a readable text file, got {book!r} ({exc})") from None
+    reading_sha = None
+    if reading is not None:
+        try:
+            reading_sha = hashlib.sha256(Path(reading).read_bytes()).hexdigest()
+        except OSError as exc:
+            raise BadInput(f"reading: expected a readable file, got {str(reading)!r} "
+                           f"({exc})") from None
     man = {"format": "rigidsym-certificate-manifest", "rigidsym": __version__,
-           "book_sha256": book_sha,
+           "book_sha256": book_sha, "reading_sha256": reading_sha,
            "certificates": {n: hashlib.sha256((out / n).read_bytes()).hexdigest()
                             for n in sorted(names)}}
     write_atomic(out / "MANIFEST.json", json.dumps(man, indent=1) + "\n")
     return man
 
 
-def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 1) -> dict:
+def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 1,
+                   reading: str | Path | None = None) -> dict:
     """Run the independent checker (``python -m certcheck``, a separate process that
     imports no rigidsym) on ``directory``.
 
@@ -759,6 +775,8 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
         book: the book's text file, passed on as ``--book`` (each certificate is then
             bound to the text printed as its id, the folder to its manifest).
         jobs: certcheck's processes (``--jobs``).
+        reading: the reading file, passed on as ``--reading`` (each id's symbol table and
+            class are then the reading's).
 
     Returns:
         ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
@@ -777,6 +795,7 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
     if where:
         env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
     book_args = [] if book is None else ["--book", str(book)]
+    book_args += [] if reading is None else ["--reading", str(reading)]
     proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", "--jobs", str(jobs),
                            *book_args, str(directory)],
                           capture_output=True, text=True, env=env, check=False)
