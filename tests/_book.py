@@ -26,6 +26,21 @@ BOOK = (ROOT / "tests" / "no-book-here" if _WHERE.lower() == "none"
         else Path(_WHERE) if _WHERE else SHARED / "book" / "angeles-chapter3.md")
 #: the chapter's reading (shipped: rigidsym.derivations), certcheck's ``--reading``
 READING = ROOT / "derivations" / "angeles-chapter3.reading.toml"
+
+
+def model_glyphs() -> set[str]:
+    """The glyphs the reading gives a model (``NAME = LATEX``: what the page says in words
+    or by another display, written in the table's glyphs)."""
+    from rigidsym.reading import load_reading
+
+    out = set()
+    for x in load_reading(READING).lets:
+        colon, eq = x.let.find(":"), x.let.find("=")
+        if eq >= 0 and (colon < 0 or eq < colon) and "\\mathrm{CPM}" not in x.let:
+            out.add(x.let[:eq].strip())
+    return out
+
+
 #: the skip's one line
 REASON = (f"the chapter is not at {BOOK} (the project never ships it; "
           "RIGIDSYM_TESTS_BOOK names a copy)")

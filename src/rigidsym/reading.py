@@ -62,7 +62,7 @@ CONVENTIONS: dict[str, tuple[str, ...]] = {
 #: an id's class as the page prints it
 CLASSES = ("relation", "definition", "theorem", "not-checked")
 _LET_KEYS = {"let", "where", "scope", "ids", "cites", "family", "reads_as", "particles",
-             "relation", "unit"}
+             "relation", "unit", "atoms_of"}
 _ID_KEYS = {"class", "where", "relations"}
 _TOP = {"reading", "conventions", "let", "id", "classes"}
 
@@ -83,6 +83,10 @@ class Let:
         relation: the one relation of the id it holds for (a member of a family or a unit
             alternative: ``"p in m/rad"``), ``""`` for the whole id.
         unit: the unit the glyph is read in for that relation (``"m/turn"``).
+        atoms_of: for a kind, where its values come from when the glyph is not a model
+            symbol's own: another glyph (``"\\mathbf{o}"``: ``[\\mathbf{o}]_{\\mathcal{F}}``,
+            o's components in F), a model scalar (``"ell"``) or a model array, its entries
+            in index order (``"s38_P_*"``).
         particles: a body of point masses: per particle, the glyphs it gives values to.
     """
 
@@ -96,6 +100,7 @@ class Let:
     reads_as: str = ""
     relation: str = ""
     unit: str = ""
+    atoms_of: str = ""
     particles: tuple[tuple[tuple[str, str], ...], ...] = ()
 
 
@@ -217,7 +222,8 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
         if scope is not None:
             _text(scope, where, f"{here} scope")
         extras = {k: _text(entry.get(k, ""), where, f"{here} {k}", allow_empty=True)
-                  for k in ("cites", "family", "reads_as", "relation", "unit")}
+                  for k in ("cites", "family", "reads_as", "relation", "unit",
+                                    "atoms_of")}
         particles = entry.get("particles", [])
         if not isinstance(particles, list) or not all(
                 isinstance(p, dict) and all(isinstance(v, str) for v in p.values())

@@ -22,7 +22,7 @@ _FIXED = {"unit vector": ("unit", 3), "unit 4-vector": ("unit4", 4), "rotation":
           "angle in [0, pi]": ("angle_pi", 1), "scalar": ("free", 1)}
 _CLASSES = ("relation", "definition", "theorem", "not-checked")
 _LET_KEYS = {"let", "where", "scope", "ids", "cites", "family", "reads_as", "particles",
-             "relation", "unit"}
+             "relation", "unit", "atoms_of"}
 #: the most lines one certificate's table may have (the chapter's largest has 78)
 MAX_LINES = 400
 
@@ -101,6 +101,7 @@ def load_reading(data: bytes, name: str = "the reading") -> dict:
     if unknown:
         raise ReadingError(f"{name}: unknown table {sorted(unknown)[0]!r}")
     lines: dict = {}
+    sources: dict = {}   # id -> glyph -> where its atoms come from (atoms_of)
     for n, entry in enumerate(doc.get("let", []), start=1):
         where = f"{name}: [[let]] {n}"
         if not isinstance(entry, dict) or not isinstance(entry.get("let"), str):
@@ -112,6 +113,10 @@ def load_reading(data: bytes, name: str = "the reading") -> dict:
         line = _line(entry, where)
         for i in entry["ids"]:
             lines.setdefault((str(i), entry.get("relation", "")), []).append(line)
+            if entry.get("atoms_of"):
+                if line[0] != "kind":
+                    raise ReadingError(f"{where}: atoms_of on a line that is not a kind")
+                sources.setdefault(str(i), {})[line[1]] = str(entry["atoms_of"])
     classes: dict = {}
     for cls, ids in (doc.get("classes") or {}).items():
         if cls not in _CLASSES:
@@ -126,7 +131,8 @@ def load_reading(data: bytes, name: str = "the reading") -> dict:
             raise ReadingError(f"{name}: [id.{i!r}]: class {cls!r} (or another than "
                                f"[classes]' {classes.get(i)!r})")
         classes[i] = cls
-    return {"sha256": reading_sha256(data), "lines": lines, "classes": classes}
+    return {"sha256": reading_sha256(data), "lines": lines, "classes": classes,
+            "atoms_of": sources}
 
 
 def _cert_lines(cert: dict, table: list, atoms: dict, where: str) -> list:
@@ -235,6 +241,7 @@ def bind(cert: dict, reading: dict) -> list[str]:
         n += len(have)
         named |= {str(a).rstrip("'") for e in table if isinstance(e, dict)
                   for a in e.get("atoms") or ()}
+    _sources(cert, reading.get("atoms_of", {}).get(i, {}), top, where)
     missing = sorted(given - seen)
     if missing:
         raise ReadingError(f"{where}: the reading gives relation '{missing[0]}' its own lines; "
@@ -244,6 +251,34 @@ def bind(cert: dict, reading: dict) -> list[str]:
             raise ReadingError(f"{where}: atom group {grp.get('group')!r} is named by no "
                                "line of the reading (its kind would be the certificate's word)")
     return [f"reading: {n} symbol lines and the class ({cls}) are the reading's"]
+
+
+def _family(prefix: str, names: list[str]) -> list[str]:
+    found = []
+    for n in names:
+        rest = n[len(prefix):] if n.startswith(prefix) else ""
+        rest = rest[1:] if rest.startswith("_") else rest
+        if rest.isdigit():
+            found.append((int(rest), n))
+    return [n for _, n in sorted(found)]
+
+
+def _sources(cert: dict, sources: dict, top: list, where: str) -> None:
+    """Each glyph the reading gives ``atoms_of``: its line's atoms are those (another
+    glyph's, a model scalar, a model array's entries in index order)."""
+    names = [n for g in cert.get("atoms") or [] for n in g.get("names", [])]
+    lines = {e["glyph"]: e for e in top if "kind" in e}
+    for glyph, src in sources.items():
+        if src.endswith("_*"):
+            want = _family(src[:-2], names)
+        elif src in lines and src != glyph:
+            want = list(lines[src].get("atoms") or [])
+        else:
+            want = [src]
+        have = list((lines.get(glyph) or {}).get("atoms") or [])
+        if not want or have != want:
+            raise ReadingError(f"{where}: {glyph}'s atoms are not those the reading names "
+                               f"({src})")
 
 
 def _check(want: list, have: list, bases: dict, where: str) -> None:
