@@ -20,6 +20,7 @@ from rigidsym.core.files import load_module
 from rigidsym.kernels.runtime import names as _names
 from rigidsym.kernels.runtime import state as _state
 from rigidsym.kernels.runtime.space import KernelSpace
+from rigidsym.kernels.runtime.translation import document
 
 __all__ = ["PUBLIC_MODULE", "KERNEL_NAMES", "public", "load", "space_of"]
 
@@ -56,6 +57,7 @@ def _bind_module(mod: types.ModuleType) -> KernelSpace:
     else:
         space = KernelSpace.from_directory(here)
     space.bind_api(mod)
+    document(mod)
     return space
 
 

@@ -39,6 +39,7 @@ from rigidsym.kernels.runtime.inputs import (
     validate,
 )
 from rigidsym.kernels.runtime.rescue import RANGE32, extreme_rows, rescue
+from rigidsym.kernels.runtime.translation import COMPLETED, complete
 from rigidsym.kernels.runtime.scale import (
     MIN_PARALLEL,
     numpy_f32,
@@ -243,6 +244,8 @@ class KernelSpace:
                 flags = res
             else:
                 flags = self._classify_c_rows(name, flat, bufs, n) if res else None
+            if name in COMPLETED:
+                flags = complete(name, flat, bufs, flags, batch, on_singular)
             if flags is not None and flags.any():
                 _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular)
         results = []

@@ -1,0 +1,167 @@
+"""Pure translations: the screw of infinite pitch where a generated kernel cannot say it.
+
+A rigid-body motion without rotation (Q = 1 in a finite displacement, omega = 0 in a twist)
+is a screw of infinite pitch (Angeles, Sec. 3.2 and 3.4.1): its axis direction is the
+translation's, ``e = t / ||t||``; its pitch is ``+inf`` (an IEEE 754 value: an answer, not an
+error); its axis is any line parallel to ``e`` (as the axis of Q = 1 is any unit vector), and
+the answer takes the one through the origin, ``p0 = 0`` (pytransform3d's ``q = 0`` of a
+translation screw); its Plücker array is the normalised screw at infinity ``[0; e]`` (the limit
+of the screw array ``[e; p0 x e + p e] / p`` of Eq. (3.71) as ``p -> inf``; Modern Robotics'
+screw axis ``S = [0; v]`` of a translation, in the same ``[omega; v]`` order), not
+``[e; p0 x e]``. A motion that is neither rotation nor translation (Q = 1 and a' = a; omega = 0
+and a_dot = 0) has no screw: every output but ``phi = 0`` is undetermined, a
+:class:`~rigidsym.kernels.runtime.errors.SingularConfigurationError` naming the argument under
+``on_singular="raise"`` and NaN under ``"nan"``.
+
+The generated kernels hold their branch's value at those rows (``screw_of_displacement``'s
+``identity`` branch: phi = 0 exactly and finite placeholders; ``instant_screw_axis``: the
+singular flag of its division by ``||omega||^2``). :func:`complete` replaces them after the
+batch runs, on the NumPy and C back-ends and through Dask (each block's call), from the
+inputs of those rows alone. The slide of a pure translation, ``||a' - a||``, is not among
+``screw_of_displacement``'s outputs (``pitch * phi`` is ``inf * 0``, NaN): it is the caller's
+``e . (a' - a)``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rigidsym.kernels.runtime.errors import SingularConfigurationError, at_batch_indices
+
+__all__ = ["COMPLETED", "ALWAYS_CHECKED", "complete", "document"]
+
+#: the kernels whose pure-translation rows :func:`complete` answers
+COMPLETED = ("screw_of_displacement", "instant_screw_axis")
+#: the kernels whose pure-translation rows the C entries do not flag (the generated branch
+#: answers them): they always take the Python path, which completes them
+ALWAYS_CHECKED = ("screw_of_displacement",)
+
+#: sample flag of the generated batch functions for a singular row (numpy_kernel.py.j2)
+_SINGULAR = 1
+
+_DOC = {
+    "screw_of_displacement": (
+        "at Q = 1 with a' != a (a pure translation by t = a' - a; vect(Q) = 0 exactly, "
+        "cos phi > 0) the displacement is a screw of infinite pitch: e = t / ||t||, phi = 0, "
+        "p0 = 0 (the axis is any line parallel to e; the answer is the one through the "
+        "origin, pytransform3d's convention), pitch = +inf, plucker = [0; e] (the "
+        "normalised screw at infinity, Modern Robotics' S = [0; v]; not [e; p0 x e]). The "
+        "slide ||t|| = e . (a' - a) is not among the outputs (pitch * phi is NaN there). At "
+        "Q = 1 with a' = a (no motion) every output but phi = 0 is undetermined: "
+        "SingularConfigurationError naming 'a_prime' (on_singular='nan': NaN in e, p0, "
+        "pitch and plucker, phi = 0). The C target (rigidsym generate --target c) keeps "
+        "the finite placeholders there, e = [1, 0, 0], p0 = 0, pitch = 0, plucker = [1, 0, "
+        "0, 0, 0, 0], and says so with RIGIDSYM_C_DEFAULT_OUTPUT in the status."),
+    "instant_screw_axis": (
+        "at omega = 0 with a_dot != 0 (a pure translation at velocity v = a_dot) the instant "
+        "screw is a screw of infinite pitch: p0 = 0 (the axis is any line parallel to v; the "
+        "answer is the one through the origin), pitch = +inf, plucker = [0; v / ||v||] (the "
+        "normalised screw at infinity, Modern Robotics' S = [0; v/||v||]). At omega = 0 and "
+        "a_dot = 0 (no motion) every output is undetermined: SingularConfigurationError "
+        "naming 'a_dot' (on_singular='nan': NaN). The C target keeps its singular status "
+        "there."),
+}
+
+
+def _unit_rows(t: np.ndarray) -> np.ndarray:
+    """``t / ||t||`` row by row, computed in float64 after scaling by the largest component
+    (no overflow or underflow of the squares), in ``t``'s dtype."""
+    t64 = t.astype(np.float64)
+    s = np.abs(t64).max(axis=1, keepdims=True)
+    u = t64 / s
+    return (u / np.linalg.norm(u, axis=1, keepdims=True)).astype(t.dtype)
+
+
+def _no_motion(name: str, arg: str, rows: np.ndarray, batch: tuple, what: str) -> None:
+    w = [tuple(int(j) for j in np.unravel_index(i, batch)) for i in rows[:20]]
+    raise SingularConfigurationError(
+        f"{name}: singular configuration ({what}: no motion, so no screw) in argument "
+        f"{arg!r}{at_batch_indices(w, rows.size > 20)}", arg, w)
+
+
+def complete(name: str, flat: list, bufs: list, flags, batch: tuple,
+             on_singular: str):
+    """Answer the pure-translation rows of kernel ``name`` in place.
+
+    Args:
+        name: the kernel (one of :data:`COMPLETED`; any other is left as it is).
+        flat: its inputs, flattened to ``(n, ...)`` and broadcast.
+        bufs: its output buffers ``(n, ...)``, as the batch function wrote them.
+        flags: the ``(n,)`` uint8 sample flags (1 singular, 2 non-finite), or None when no
+            row is flagged.
+        batch: the batch shape (for the indices of an error).
+        on_singular: ``"raise"`` or ``"nan"``.
+
+    Returns:
+        The flags, with the rows answered here cleared (None stays None).
+
+    Raises:
+        SingularConfigurationError: a row without motion under ``on_singular="raise"``.
+    """
+    if name == "screw_of_displacement":
+        _a, a, a_prime = flat
+        e, phi, p0, pitch, kappa = bufs
+        mask = phi == 0
+        if flags is not None:
+            mask &= flags == 0
+        rows = np.flatnonzero(mask)
+        if rows.size:
+            t = a_prime[rows] - a[rows]
+            _answer(name, "a_prime", "Q = 1 and a' = a", rows, t, p0, pitch, kappa, e,
+                    batch, on_singular)
+        return flags
+    if name == "instant_screw_axis" and flags is not None:
+        omega, _a, a_dot = flat
+        p0, pitch, kappa = bufs
+        rows = np.flatnonzero((flags == _SINGULAR) & (omega == 0).all(axis=1))
+        if rows.size:
+            _answer(name, "a_dot", "omega = 0 and a_dot = 0", rows, a_dot[rows], p0, pitch,
+                    kappa, None, batch, on_singular)
+            flags = flags.copy()
+            flags[rows] = 0
+    return flags
+
+
+def _answer(name, arg, what, rows, t, p0, pitch, kappa, e, batch, on_singular) -> None:
+    """Write the screw at infinity of translations ``t`` into ``rows``; the rows with
+    ``t = 0`` raise or get NaN."""
+    moving = (t != 0).any(axis=1)
+    still = rows[~moving]
+    if still.size and on_singular == "raise":
+        _no_motion(name, arg, still, batch, what)
+    go = rows[moving]
+    if go.size:
+        u = _unit_rows(t[moving])
+        if e is not None:
+            e[go] = u
+        p0[go] = 0
+        pitch[go] = np.inf
+        kappa[go, :3] = 0
+        kappa[go, 3:] = u
+    for buf in (e, p0, pitch, kappa):
+        if buf is not None:
+            buf[still] = np.nan
+
+
+def document(mod) -> None:
+    """Add the pure-translation paragraph to the docstrings of :data:`COMPLETED`'s kernels
+    of the generated ``api`` module ``mod``, and take out the sentence on the finite
+    placeholders that the answer replaces (the generated ``Notes`` describe the generated
+    program, which the C target keeps)."""
+    for name, text in _DOC.items():
+        f = getattr(mod, name, None)
+        if f is None or f.__doc__ is None or text in f.__doc__:
+            continue
+        doc = f.__doc__
+        old = ("At Q = 1 (vect(Q) = 0 exactly, cos phi > 0: a pure translation by a' - a, or "
+               "none) phi = 0 exactly and the outputs it leaves undetermined hold documented "
+               "defaults: e = [1, 0, 0], p0 = 0, pitch = 0 (the pitch of a pure translation "
+               "is infinite), plucker = [1, 0, 0, 0, 0, 0]; phi == 0 exactly says they are "
+               "the defaults (the C target's status has RIGIDSYM_C_DEFAULT_OUTPUT). ")
+        doc = doc.replace(old, "")
+        marker = "\n    Notes:\n"
+        if marker in doc:
+            doc = doc.replace(marker, f"{marker}        Pure translation: {text}\n\n", 1)
+        else:
+            doc = doc.rstrip() + f"\n\n    Notes:\n        Pure translation: {text}\n"
+        f.__doc__ = doc
