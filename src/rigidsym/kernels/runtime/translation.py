@@ -32,9 +32,10 @@ __all__ = ["COMPLETED", "ALWAYS_CHECKED", "complete", "document"]
 
 #: the kernels whose pure-translation rows :func:`complete` answers
 COMPLETED = ("screw_of_displacement", "instant_screw_axis")
-#: the kernels whose pure-translation rows the C entries do not flag (the generated branch
-#: answers them): they always take the Python path, which completes them
-ALWAYS_CHECKED = ("screw_of_displacement",)
+#: the kernels whose pure-translation rows the C entries would answer themselves (the
+#: generated branch's placeholders; NaN under on_singular="nan"): they always take the Python
+#: path, which runs the same C batch and completes them
+ALWAYS_CHECKED = COMPLETED
 
 #: sample flag of the generated batch functions for a singular row (numpy_kernel.py.j2)
 _SINGULAR = 1

@@ -1,0 +1,203 @@
+"""Every kernel with partly defined outputs, through its inverse: the input back, or the
+output flagged undetermined.
+
+The kernels whose outputs change form at a pose (Q = 1: the axis of no rotation is any unit
+vector, a pure translation is a screw of infinite pitch; omega = 0: a translational twist):
+
+- ``natural_invariants_from_rotation`` -> ``rotation_from_natural_invariants`` gives Q back
+  (at Q = 1 with phi = 0 exactly and the default axis, which every unit vector is there);
+- ``screw_of_displacement`` -> Chasles' displacement ``a' = p0 + Q(e, phi)(a - p0) + d e``
+  with the slide ``d = pitch phi``: a' back for a screw of finite pitch; for a pure
+  translation (pitch = +inf) ``e`` is the direction of a' - a, ``plucker = [0; e]`` and the
+  slide is flagged undetermined (``inf * 0`` is NaN: it is not among the outputs); for no
+  motion (Q = 1, a' = a) an error naming ``a_prime``, NaN but phi = 0 under
+  ``on_singular="nan"``;
+- ``instant_screw_axis`` -> the twist of the screw ``(p0, pitch, plucker)`` at amplitude
+  ``w`` (the kernel's outputs are the unit screw; ``w = ||omega||``, or ``||a_dot||`` for a
+  translation, Modern Robotics' theta): ``omega = w e'``, the origin's velocity
+  ``w (n' + pitch e')``, or ``w [0; v/||v||]``'s ``v`` at infinite pitch; a_dot back.
+
+NumPy and C back-ends, float64 and float32; the quick profile draws a few batches.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from _profile import examples
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from rigidsym import kernels as K
+
+BACKENDS = ("numpy", "c")
+DTYPES = (np.float64, np.float32)
+#: rows of each batch: drawn screw motions, rotations near 0 and pi, pure translations, none
+N = 12
+
+
+def _run(backend: str, f, *args, **kw):
+    before = K.backend()
+    try:
+        if K.use_backend(backend) != backend:
+            pytest.skip("no C extension")
+        return f(*args, **kw)
+    finally:
+        K.use_backend(before)
+
+
+def _axes(rng, n):
+    e = rng.standard_normal((n, 3))
+    return e / np.linalg.norm(e, axis=1, keepdims=True)
+
+
+def _rotations(rng, dtype):
+    """N rotations: the first two Q = 1 exactly, then angles near 0, near pi and anywhere
+    (float64 matrices rounded to ``dtype``)."""
+    tiny = 1e-6 if dtype == np.float64 else 1e-3
+    phi = np.concatenate([[0.0, 0.0], tiny * rng.uniform(1, 10, 2),
+                          np.pi - tiny * rng.uniform(0, 10, 2), rng.uniform(0, np.pi, N - 6)])
+    Q = K.rotation_from_natural_invariants(_axes(rng, N), phi)
+    Q[:2] = np.eye(3)
+    return Q.astype(dtype)
+
+
+def _tol(dtype) -> float:
+    return 512 * float(np.finfo(dtype).eps)
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("backend", BACKENDS)
+@settings(max_examples=examples(4), deadline=None)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_natural_invariants_give_the_rotation_back(backend, dtype, seed):
+    Q = _rotations(np.random.default_rng(seed), dtype)
+    e, phi = _run(backend, K.natural_invariants_from_rotation, Q)
+    assert np.all(phi[:2] == 0) and np.all(e[:2] == [1, 0, 0])    # any axis is right there
+    back = K.rotation_from_natural_invariants(e, phi)
+    assert np.abs(back.astype(np.float64) - Q).max() <= 8 * _tol(dtype)
+
+
+def _displacements(rng, dtype):
+    """N displacements: Q = 1 with a' - a != 0 (row 0) and a' = a (row 1), then screw
+    motions (a rotation about the axis through p0, a slide d along it) with some d = 0."""
+    Q = _rotations(rng, np.float64)
+    e, phi = K.natural_invariants_from_rotation(Q)
+    a = rng.uniform(-2, 2, (N, 3))
+    p0, d = rng.uniform(-2, 2, (N, 3)), rng.uniform(-1, 1, N)
+    d[rng.uniform(size=N) < 0.3] = 0
+    ap = p0 + np.einsum("nij,nj->ni", Q, a - p0) + d[:, None] * e
+    ap[0] = a[0] + rng.uniform(-2, 2, 3)
+    ap[1] = a[1]
+    return Q.astype(dtype), a.astype(dtype), ap.astype(dtype)
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("backend", BACKENDS)
+@settings(max_examples=examples(4), deadline=None)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_screw_of_displacement_gives_the_displacement_back(backend, dtype, seed):
+    Q, a, ap = _displacements(np.random.default_rng(seed), dtype)
+    with pytest.raises(K.SingularConfigurationError, match="'a_prime'") as info:
+        _run(backend, K.screw_of_displacement, Q, a, ap)
+    assert info.value.indices == [(1,)]                       # no motion: row 1 only
+    e, phi, p0, pitch, kappa = _run(backend, K.screw_of_displacement, Q, a, ap,
+                                    on_singular="nan")
+    R = np.full((N, 3, 3), np.nan)
+    R[2:] = K.rotation_from_natural_invariants(e[2:], phi[2:])     # in the call's dtype
+    e, phi, p0, pitch, kappa, Q, a, ap = (x.astype(np.float64) for x in
+                                          (e, phi, p0, pitch, kappa, Q, a, ap))
+    # no motion: every output undetermined but phi = 0
+    assert phi[1] == 0 and np.isnan(e[1]).all() and np.isnan(p0[1]).all()
+    assert np.isnan(pitch[1]) and np.isnan(kappa[1]).all()
+    # a pure translation: the screw at infinity along t = a' - a; its slide is undetermined
+    t = ap[0] - a[0]
+    with np.errstate(invalid="ignore"):
+        assert phi[0] == 0 and pitch[0] == np.inf and np.isnan(pitch[0] * phi[0])
+    assert np.abs(e[0] - t / np.linalg.norm(t)).max() <= _tol(dtype)
+    assert np.array_equal(kappa[0, :3], [0, 0, 0]) and np.array_equal(kappa[0, 3:], e[0])
+    assert np.isfinite(p0[0]).all()
+    # the screws of finite pitch: Chasles' displacement gives a' back
+    r = slice(2, None)
+    assert np.isfinite(pitch[r]).all()
+    back = p0[r] + np.einsum("nij,nj->ni", R[r], a[r] - p0[r]) \
+        + (pitch[r] * phi[r])[:, None] * e[r]
+    scale = 1 + np.abs(a[r]).max() + np.abs(ap[r]).max() + np.abs(p0[r]).max()
+    assert np.abs(back - ap[r]).max() <= _tol(dtype) * scale
+    # and the Plücker array of a finite axis is [e; p0 x e]
+    np.testing.assert_allclose(kappa[r], np.concatenate([e[r], np.cross(p0[r], e[r])], 1),
+                               atol=_tol(dtype) * scale)
+
+
+def _twists(rng, dtype):
+    """N twists at points a: omega = 0 with a_dot != 0 (rows 0, 2) and a_dot = 0 (row 1),
+    then general ones, some of zero pitch."""
+    omega = rng.uniform(-2, 2, (N, 3))
+    omega[:3] = 0
+    a, a_dot = rng.uniform(-2, 2, (N, 3)), rng.uniform(-2, 2, (N, 3))
+    a_dot[1] = 0
+    flat = 3 + np.flatnonzero(rng.uniform(size=N - 3) < 0.3)
+    a_dot[flat] -= (np.einsum("ni,ni->n", a_dot[flat], omega[flat])
+                    / np.einsum("ni,ni->n", omega[flat], omega[flat]))[:, None] * omega[flat]
+    return omega.astype(dtype), a.astype(dtype), a_dot.astype(dtype)
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("backend", BACKENDS)
+@settings(max_examples=examples(4), deadline=None)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_instant_screw_gives_the_twist_back(backend, dtype, seed):
+    omega, a, a_dot = _twists(np.random.default_rng(seed), dtype)
+    with pytest.raises(K.SingularConfigurationError, match="'a_dot'") as info:
+        _run(backend, K.instant_screw_axis, omega, a, a_dot)
+    assert info.value.indices == [(1,)]
+    p0, pitch, kappa = (np.asarray(x, dtype=np.float64) for x in
+                        _run(backend, K.instant_screw_axis, omega, a, a_dot,
+                             on_singular="nan"))
+    omega, a, a_dot = (x.astype(np.float64) for x in (omega, a, a_dot))
+    assert np.isnan(p0[1]).all() and np.isnan(pitch[1]) and np.isnan(kappa[1]).all()
+    w = np.linalg.norm(np.where((omega == 0).all(1)[:, None], a_dot, omega), axis=1)
+    rows = np.r_[0, 2:N]
+    inf = np.isinf(pitch[rows])
+    assert np.array_equal(inf, (omega[rows] == 0).all(1))
+    assert (pitch[rows][inf] > 0).all()
+    with np.errstate(invalid="ignore"):
+        om = w[rows, None] * kappa[rows, :3]
+        v0 = np.where(inf[:, None], w[rows, None] * kappa[rows, 3:],
+                      w[rows, None] * (kappa[rows, 3:] + pitch[rows, None] * kappa[rows, :3]))
+    back = v0 + np.cross(om, a[rows])
+    scale = 1 + np.abs(a_dot).max() + np.abs(omega).max() * (1 + np.abs(a).max())
+    assert np.abs(om - omega[rows]).max() <= _tol(dtype) * scale
+    assert np.abs(back - a_dot[rows]).max() <= _tol(dtype) * scale * (1 + np.abs(p0[rows]).max())
+
+
+@pytest.mark.extra
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_pure_translation_as_the_peers(backend):
+    """pytransform3d (screw parameters q, s, h of a translation: q = 0, s = t/||t||,
+    h = inf) and Modern Robotics (MatrixLog6: S = [0; t/||t||], theta = ||t||) agree with
+    screw_of_displacement at Q = 1 and with instant_screw_axis at omega = 0, up to their
+    conventions (pytransform3d's q is our p0; their S is our plucker; theta, the slide, is
+    not among our outputs)."""
+    pt = pytest.importorskip("pytransform3d.transformations")
+    mr = pytest.importorskip("modern_robotics")
+    rng = np.random.default_rng(11)
+    for t in [np.array([0.0, 0.5, 0.2]), *rng.uniform(-3, 3, (5, 3))]:
+        a = rng.uniform(-1, 1, 3)
+        e, phi, p0, pitch, kappa = _run(backend, K.screw_of_displacement, np.eye(3), a, a + t)
+        T = np.eye(4)
+        T[:3, 3] = t
+        q, s, h = pt.screw_parameters_from_screw_axis(
+            pt.screw_axis_from_exponential_coordinates(
+                pt.exponential_coordinates_from_transform(T))[0])
+        S, theta = mr.AxisAng6(mr.se3ToVec(mr.MatrixLog6(T)))
+        assert h == pitch == np.inf and phi == 0
+        np.testing.assert_allclose(e, s, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(p0, q, rtol=0, atol=0)
+        np.testing.assert_allclose(kappa, S, rtol=0, atol=1e-15)
+        np.testing.assert_allclose(theta, float(np.dot(e, t)), rtol=1e-15)
+        # the instant screw of the twist [0; t] at a: the same screw at infinity
+        p0_i, pitch_i, kappa_i = _run(backend, K.instant_screw_axis, np.zeros(3), a, t)
+        assert pitch_i == np.inf
+        np.testing.assert_allclose(kappa_i, S, rtol=0, atol=1e-15)
+        np.testing.assert_array_equal(p0_i, q)
