@@ -39,13 +39,13 @@ from rigidsym.kernels.runtime.inputs import (
     validate,
 )
 from rigidsym.kernels.runtime.rescue import RANGE32, extreme_rows, rescue
-from rigidsym.kernels.runtime.translation import COMPLETED, complete
 from rigidsym.kernels.runtime.scale import (
     MIN_PARALLEL,
     numpy_f32,
     resolve_threads,
     result_dtype,
 )
+from rigidsym.kernels.runtime.translation import COMPLETED, complete
 
 #: sample flags of the generated batch functions (numpy_kernel.py.j2)
 _SINGULAR, _NONFINITE = 1, 2
