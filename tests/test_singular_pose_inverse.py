@@ -201,3 +201,12 @@ def test_pure_translation_as_the_peers(backend):
         assert pitch_i == np.inf
         np.testing.assert_allclose(kappa_i, S, rtol=0, atol=1e-15)
         np.testing.assert_array_equal(p0_i, q)
+
+
+def test_docstrings_list_the_pure_translation():
+    """The kernels that answer a pure translation say so in their docstrings, without the
+    generated sentence on the finite placeholders."""
+    for f in (K.screw_of_displacement, K.instant_screw_axis):
+        doc = f.__doc__
+        assert "Pure translation: at " in doc and "pitch = +inf" in doc, f.__name__
+        assert "hold documented defaults" not in doc and "no motion" in doc, f.__name__

@@ -50,7 +50,7 @@ _DOC = {
         "slide ||t|| = e . (a' - a) is not among the outputs (pitch * phi is NaN there). At "
         "Q = 1 with a' = a (no motion) every output but phi = 0 is undetermined: "
         "SingularConfigurationError naming 'a_prime' (on_singular='nan': NaN in e, p0, "
-        "pitch and plucker, phi = 0). The C target (rigidsym generate --target c) keeps "
+        "pitch and plucker, phi = 0). The C target (docs/c-api.md) keeps "
         "the finite placeholders there, e = [1, 0, 0], p0 = 0, pitch = 0, plucker = [1, 0, "
         "0, 0, 0, 0], and says so with RIGIDSYM_C_DEFAULT_OUTPUT in the status."),
     "instant_screw_axis": (
@@ -144,22 +144,40 @@ def _answer(name, arg, what, rows, t, p0, pitch, kappa, e, batch, on_singular) -
             buf[still] = np.nan
 
 
+#: the generated docstrings' sentences that the answer changes: (old, new) per kernel
+_REPLACE = {
+    "screw_of_displacement": (
+        ("At Q = 1 (vect(Q) = 0 exactly, cos phi > 0: a pure translation by a' - a, or "
+         "none) phi = 0 exactly and the outputs it leaves undetermined hold documented "
+         "defaults: e = [1, 0, 0], p0 = 0, pitch = 0 (the pitch of a pure translation is "
+         "infinite), plucker = [1, 0, 0, 0, 0, 0]; phi == 0 exactly says they are the "
+         "defaults (the C target's status has RIGIDSYM_C_DEFAULT_OUTPUT). ", ""),
+        ("the axis is lost in the type), unless on_singular='nan'.",
+         "the axis is lost in the type), and at Q = 1 with a' = a (no motion, naming "
+         "'a_prime'), unless on_singular='nan'."),
+        ("\n        Singular set: Q != 1", "\n        Singular set: Q = 1 with a' = a (no "
+         "motion); Q != 1")),
+    "instant_screw_axis": (
+        ("on the singular set (omega = 0 (pure translation))",
+         "on the singular set (omega = 0 and a_dot = 0: no motion, naming 'a_dot')"),
+        ("Singular set: omega = 0 (pure translation).",
+         "Singular set: omega = 0 and a_dot = 0 (no motion); omega = 0 alone is a pure "
+         "translation, answered above.")),
+}
+
+
 def document(mod) -> None:
-    """Add the pure-translation paragraph to the docstrings of :data:`COMPLETED`'s kernels
-    of the generated ``api`` module ``mod``, and take out the sentence on the finite
-    placeholders that the answer replaces (the generated ``Notes`` describe the generated
-    program, which the C target keeps)."""
+    """Say in the docstrings of :data:`COMPLETED`'s kernels of the generated ``api`` module
+    ``mod`` what they return at a pure translation: the paragraph first in ``Notes``, and
+    the generated sentences on the finite placeholders and the singular set rewritten (the
+    generated text describes the generated program, which the C target keeps)."""
     for name, text in _DOC.items():
         f = getattr(mod, name, None)
         if f is None or f.__doc__ is None or text in f.__doc__:
             continue
         doc = f.__doc__
-        old = ("At Q = 1 (vect(Q) = 0 exactly, cos phi > 0: a pure translation by a' - a, or "
-               "none) phi = 0 exactly and the outputs it leaves undetermined hold documented "
-               "defaults: e = [1, 0, 0], p0 = 0, pitch = 0 (the pitch of a pure translation "
-               "is infinite), plucker = [1, 0, 0, 0, 0, 0]; phi == 0 exactly says they are "
-               "the defaults (the C target's status has RIGIDSYM_C_DEFAULT_OUTPUT). ")
-        doc = doc.replace(old, "")
+        for old, new in _REPLACE[name]:
+            doc = doc.replace(old, new)
         marker = "\n    Notes:\n"
         if marker in doc:
             doc = doc.replace(marker, f"{marker}        Pure translation: {text}\n\n", 1)
