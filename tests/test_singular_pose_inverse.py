@@ -210,3 +210,22 @@ def test_docstrings_list_the_pure_translation():
         doc = f.__doc__
         assert "Pure translation: at " in doc and "pitch = +inf" in doc, f.__name__
         assert "hold documented defaults" not in doc and "no motion" in doc, f.__name__
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_pure_translation_at_the_ends_of_the_range(backend):
+    """A translation whose a' - a overflows keeps its direction (finite in, the answer
+    out); an unchecked NaN in a' gives NaN in every output that depends on it (phi = 0
+    does not)."""
+    for dtype, big in ((np.float64, 1e308), (np.float32, np.float32(3e38))):
+        I3 = np.eye(3, dtype=dtype)
+        a, ap = np.array([-big, 0, 0], dtype), np.array([big, big, 0], dtype)
+        e, phi, p0, pitch, kappa = _run(backend, K.screw_of_displacement, I3, a, ap)
+        assert e.dtype == dtype and pitch == np.inf and phi == 0
+        np.testing.assert_allclose(e, [2 / 5**0.5, 1 / 5**0.5, 0], rtol=4e-7)
+        p0, pitch, kappa = _run(backend, K.instant_screw_axis, np.zeros(3, dtype), a, ap)
+        assert pitch == np.inf and np.allclose(kappa[3:], [2**-0.5, 2**-0.5, 0])
+    e, phi, p0, pitch, kappa = _run(backend, K.screw_of_displacement, np.eye(3),
+                                    [0.0, 0, 0], [np.nan, 1, 0], check=False,
+                                    on_singular="nan")
+    assert phi == 0 and all(np.isnan(x).all() for x in (e, p0, pitch, kappa))

@@ -65,12 +65,22 @@ _DOC = {
 
 
 def _unit_rows(t: np.ndarray) -> np.ndarray:
-    """``t / ||t||`` row by row, computed in float64 after scaling by the largest component
-    (no overflow or underflow of the squares), in ``t``'s dtype."""
+    """``t / ||t||`` row by row (``t != 0``), computed in float64 after scaling by the
+    largest component (no overflow or underflow of the squares), in ``t``'s dtype."""
     t64 = t.astype(np.float64)
     s = np.abs(t64).max(axis=1, keepdims=True)
     u = t64 / s
     return (u / np.linalg.norm(u, axis=1, keepdims=True)).astype(t.dtype)
+
+
+def _difference(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``b - a`` row by row in float64, both scaled by the same power of two first (exact),
+    so that the direction of a difference that overflows the type is kept: only its
+    direction is used."""
+    a64, b64 = a.astype(np.float64), b.astype(np.float64)
+    big = np.maximum(np.abs(a64).max(axis=1), np.abs(b64).max(axis=1))
+    k = np.frexp(np.where(np.isfinite(big) & (big > 0), big, 1.0))[1][:, None]
+    return np.ldexp(b64, -k) - np.ldexp(a64, -k)
 
 
 def _no_motion(name: str, arg: str, rows: np.ndarray, batch: tuple, what: str) -> None:
@@ -107,7 +117,7 @@ def complete(name: str, flat: list, bufs: list, flags, batch: tuple,
             mask &= flags == 0
         rows = np.flatnonzero(mask)
         if rows.size:
-            t = a_prime[rows] - a[rows]
+            t = _difference(a[rows], a_prime[rows])
             _answer(name, "a_prime", "Q = 1 and a' = a", rows, t, p0, pitch, kappa, e,
                     batch, on_singular)
         return flags
@@ -125,14 +135,16 @@ def complete(name: str, flat: list, bufs: list, flags, batch: tuple,
 
 def _answer(name, arg, what, rows, t, p0, pitch, kappa, e, batch, on_singular) -> None:
     """Write the screw at infinity of translations ``t`` into ``rows``; the rows with
-    ``t = 0`` raise or get NaN."""
-    moving = (t != 0).any(axis=1)
-    still = rows[~moving]
+    ``t = 0`` raise or get NaN, those of a non-finite ``t`` (an unchecked NaN or inf input)
+    NaN."""
+    finite = np.isfinite(t).all(axis=1)
+    moving = finite & (t != 0).any(axis=1)
+    still = rows[finite & ~moving]
     if still.size and on_singular == "raise":
         _no_motion(name, arg, still, batch, what)
     go = rows[moving]
     if go.size:
-        u = _unit_rows(t[moving])
+        u = _unit_rows(t[moving]).astype(pitch.dtype)
         if e is not None:
             e[go] = u
         p0[go] = 0
@@ -141,7 +153,7 @@ def _answer(name, arg, what, rows, t, p0, pitch, kappa, e, batch, on_singular) -
         kappa[go, 3:] = u
     for buf in (e, p0, pitch, kappa):
         if buf is not None:
-            buf[still] = np.nan
+            buf[rows[~moving]] = np.nan
 
 
 #: the generated docstrings' sentences that the answer changes: (old, new) per kernel
