@@ -229,3 +229,21 @@ def test_pure_translation_at_the_ends_of_the_range(backend):
                                     [0.0, 0, 0], [np.nan, 1, 0], check=False,
                                     on_singular="nan")
     assert phi == 0 and all(np.isnan(x).all() for x in (e, p0, pitch, kappa))
+
+
+def test_strided_out_arrays_and_the_backends_agree():
+    """The answer reaches the caller's strided ``out`` arrays, and NumPy and C give the same
+    bits for a batch mixing translations and screws."""
+    Q = np.stack([np.eye(3)] * 4)
+    Q[2:] = K.rotation_from_natural_invariants([0, 0.6, 0.8], [0.5, 1.0])
+    a, ap = np.zeros((4, 3)), np.array([[1, 2, 2], [3, 0, 0], [1, 1, 1], [0, 0, 1.0]])
+    ref = _run("numpy", K.screw_of_displacement, Q, a, ap)
+    assert np.array_equal(ref[3][:2], [np.inf, np.inf])
+    np.testing.assert_array_equal(ref[0][:2], [[1 / 3, 2 / 3, 2 / 3], [1, 0, 0]])
+    for backend in BACKENDS:
+        big = [np.empty((4, 2 * n)) for n in (3, 1, 3, 1, 6)]
+        out = tuple(b[:, ::2] if b.shape[1] > 2 else b[:, 0] for b in big)
+        got = _run(backend, K.screw_of_displacement, Q, a, ap, out=out)
+        assert all(g is o for g, o in zip(got, out, strict=True))
+        for g, w in zip(got, ref, strict=True):
+            np.testing.assert_array_equal(g, w)

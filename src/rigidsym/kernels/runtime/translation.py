@@ -28,15 +28,10 @@ import numpy as np
 
 from rigidsym.kernels.runtime.errors import SingularConfigurationError, at_batch_indices
 
-__all__ = ["COMPLETED", "ALWAYS_CHECKED", "complete", "document"]
+__all__ = ["COMPLETED", "complete", "wrap_entry", "document"]
 
 #: the kernels whose pure-translation rows :func:`complete` answers
 COMPLETED = ("screw_of_displacement", "instant_screw_axis")
-#: the kernels whose pure-translation rows the C entries would answer themselves (the
-#: generated branch's placeholders; NaN under on_singular="nan"): they always take the Python
-#: path, which runs the same C batch and completes them
-ALWAYS_CHECKED = COMPLETED
-
 #: sample flag of the generated batch functions for a singular row (numpy_kernel.py.j2)
 _SINGULAR = 1
 
@@ -124,13 +119,60 @@ def complete(name: str, flat: list, bufs: list, flags, batch: tuple,
     if name == "instant_screw_axis" and flags is not None:
         omega, _a, a_dot = flat
         p0, pitch, kappa = bufs
-        rows = np.flatnonzero((flags == _SINGULAR) & (omega == 0).all(axis=1))
+        rows = np.flatnonzero((flags == _SINGULAR) & (omega == 0).all(axis=1)
+                              & np.isfinite(_a).all(axis=1))
         if rows.size:
             _answer(name, "a_dot", "omega = 0 and a_dot = 0", rows, a_dot[rows], p0, pitch,
                     kappa, None, batch, on_singular)
             flags = flags.copy()
             flags[rows] = 0
     return flags
+
+
+def wrap_entry(name: str, entry, shapes: tuple):
+    """The compiled entry of kernel ``name`` (``entry(*inputs, out, check, on_singular,
+    threads)``), followed by :func:`complete` on the rows it answered with the generated
+    program's values: ``screw_of_displacement``'s rows of phi == 0 exactly, and
+    ``instant_screw_axis``'s NaN rows under ``on_singular="nan"`` (under ``"raise"`` the
+    entry hands its flagged calls to the Python path, which completes them). A call without
+    such a row costs one comparison of an output; a lazy (Dask) result is returned as it is.
+
+    Args:
+        name: the kernel (one of :data:`COMPLETED`).
+        entry: its compiled entry.
+        shapes: its inputs' core shapes (``(3, 3)``, ``(3,)``, ...).
+
+    Returns:
+        The wrapped entry, with the same calling convention.
+    """
+    nin, sod = len(shapes), name == "screw_of_displacement"
+
+    def f(*args):
+        res = entry(*args)
+        mark = res[1]                   # phi; the pitch of instant_screw_axis
+        if type(mark) is not np.ndarray:
+            return res
+        if mark.ndim == 0:                  # one sample: a Python comparison, no ufunc
+            v = mark.item()
+            if (v != 0) if sod else (v == v):
+                return res
+        rows = mark == 0 if sod else np.isnan(mark)
+        if not rows.any():
+            return res
+        on_singular = "raise" if args[nin + 2] is None else args[nin + 2]
+        batch, dtype = mark.shape, mark.dtype
+        n = mark.size
+        ins = [np.broadcast_to(np.asarray(x, dtype=dtype), batch + sh).reshape((n,) + sh)
+               for x, sh in zip(args[:nin], shapes, strict=True)]
+        bufs = [np.array(r, copy=True).reshape((n,) + r.shape[len(batch):]) for r in res]
+        flags = None if sod else \
+            np.where(rows.reshape(n), _SINGULAR, 0).astype(np.uint8)
+        complete(name, ins, bufs, flags, batch, on_singular)
+        for r, b in zip(res, bufs, strict=True):
+            r[...] = b.reshape(r.shape)
+        return res
+    f.__name__ = f.__qualname__ = name
+    return f
 
 
 def _answer(name, arg, what, rows, t, p0, pitch, kappa, e, batch, on_singular) -> None:
