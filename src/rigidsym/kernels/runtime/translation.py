@@ -17,7 +17,9 @@ The generated kernels hold their branch's value at those rows (``screw_of_displa
 ``identity`` branch: phi = 0 exactly and finite placeholders; ``instant_screw_axis``: the
 singular flag of its division by ``||omega||^2``). :func:`complete` replaces them after the
 batch runs, on the NumPy and C back-ends and through Dask (each block's call), from the
-inputs of those rows alone. The slide of a pure translation, ``||a' - a||``, is not among
+inputs of those rows alone; :func:`wrap_entry` does it after the compiled entries of the C
+extension, which answer those rows themselves. The PyTorch and JAX kernels and the C target
+(``rigidsym generate --target c``) keep the generated values. The slide of a pure translation, ``||a' - a||``, is not among
 ``screw_of_displacement``'s outputs (``pitch * phi`` is ``inf * 0``, NaN): it is the caller's
 ``e . (a' - a)``.
 """
