@@ -1,5 +1,5 @@
 """Every kernel with partly defined outputs, through its inverse: the input back, or the
-output flagged undetermined.
+output flagged undetermined (NaN, an error).
 
 The kernels whose outputs change form at a pose (Q = 1: the axis of no rotation is any unit
 vector, a pure translation is a screw of infinite pitch; omega = 0: a translational twist):
@@ -15,7 +15,9 @@ vector, a pure translation is a screw of infinite pitch; omega = 0: a translatio
 - ``instant_screw_axis`` -> the twist of the screw ``(p0, pitch, plucker)`` at amplitude
   ``w`` (the kernel's outputs are the unit screw; ``w = ||omega||``, or ``||a_dot||`` for a
   translation, Modern Robotics' theta): ``omega = w e'``, the origin's velocity
-  ``w (n' + pitch e')``, or ``w [0; v/||v||]``'s ``v`` at infinite pitch; a_dot back.
+  ``w (n' + pitch e')``, or ``w [0; v/||v||]``'s ``v`` at infinite pitch; a_dot back;
+- ``wrench_axis`` -> the wrench of the screw at magnitude ||f|| (||n_A|| for a pure couple,
+  the dual of a translation).
 
 NumPy and C back-ends, float64 and float32; the quick profile draws a few batches.
 """
@@ -171,6 +173,46 @@ def test_instant_screw_gives_the_twist_back(backend, dtype, seed):
     assert np.abs(back - a_dot[rows]).max() <= _tol(dtype) * scale * (1 + np.abs(p0[rows]).max())
 
 
+def _wrenches(rng, dtype):
+    """N wrenches [n_A; f] at points a: f = 0 with n_A != 0 (rows 0, 2: pure couples) and
+    w_A = 0 (row 1), then general ones."""
+    w = rng.uniform(-2, 2, (N, 6))
+    w[:3, 3:] = 0
+    w[1] = 0
+    return w.astype(dtype), rng.uniform(-2, 2, (N, 3)).astype(dtype)
+
+
+@pytest.mark.parametrize("dtype", DTYPES)
+@pytest.mark.parametrize("backend", BACKENDS)
+@settings(max_examples=examples(4), deadline=None)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_wrench_axis_gives_the_wrench_back(backend, dtype, seed):
+    """The wrench of the screw (p0, pitch, plucker) at magnitude ||f|| (||n_A|| for a pure
+    couple): f = m e'', the moment about the origin m (n'' + pitch e''), or m [0; n/||n||]'s
+    n at infinite pitch; n_A = n_O - a x f."""
+    w, a = _wrenches(np.random.default_rng(seed), dtype)
+    with pytest.raises(K.SingularConfigurationError, match="'w_A'") as info:
+        _run(backend, K.wrench_axis, w, a)
+    assert info.value.indices == [(1,)]
+    p0, pitch, kappa = (np.asarray(x, dtype=np.float64) for x in
+                        _run(backend, K.wrench_axis, w, a, on_singular="nan"))
+    w, a = w.astype(np.float64), a.astype(np.float64)
+    assert np.isnan(p0[1]).all() and np.isnan(pitch[1]) and np.isnan(kappa[1]).all()
+    couple = (w[:, 3:] == 0).all(1)
+    m = np.linalg.norm(np.where(couple[:, None], w[:, :3], w[:, 3:]), axis=1)
+    rows = np.r_[0, 2:N]
+    inf = np.isinf(pitch[rows])
+    assert np.array_equal(inf, couple[rows]) and (pitch[rows][inf] > 0).all()
+    with np.errstate(invalid="ignore"):
+        f = m[rows, None] * kappa[rows, :3]
+        n_O = np.where(inf[:, None], m[rows, None] * kappa[rows, 3:],
+                       m[rows, None] * (kappa[rows, 3:] + pitch[rows, None] * kappa[rows, :3]))
+    scale = 1 + np.abs(w).max() * (1 + np.abs(a).max())
+    assert np.abs(f - w[rows, 3:]).max() <= _tol(dtype) * scale
+    assert np.abs(n_O - np.cross(a[rows], f) - w[rows, :3]).max() \
+        <= _tol(dtype) * scale * (1 + np.abs(p0[rows]).max())
+
+
 @pytest.mark.extra
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_pure_translation_as_the_peers(backend):
@@ -204,12 +246,17 @@ def test_pure_translation_as_the_peers(backend):
 
 
 def test_docstrings_list_the_pure_translation():
-    """The kernels that answer a pure translation say so in their docstrings, without the
-    generated sentence on the finite placeholders."""
-    for f in (K.screw_of_displacement, K.instant_screw_axis):
+    """The kernels that answer a pure translation (a pure couple) say so in their
+    docstrings, without the generated sentences on the finite placeholders and on a singular
+    set that the answer leaves."""
+    for f in (K.screw_of_displacement, K.instant_screw_axis, K.wrench_axis):
         doc = f.__doc__
-        assert "Pure translation: at " in doc and "pitch = +inf" in doc, f.__name__
-        assert "hold documented defaults" not in doc and "no motion" in doc, f.__name__
+        assert ("Pure translation: at " in doc or "Pure couple: at " in doc) \
+            and "pitch = +inf" in doc, f.__name__
+        for stale in ("hold documented defaults", "Singular set: f = 0 (pure moment).",
+                      "(f = 0 (pure moment))", "Singular set: omega = 0 (pure translation).",
+                      "(omega = 0 (pure translation))"):
+            assert stale not in doc, (f.__name__, stale)
 
 
 @pytest.mark.parametrize("backend", BACKENDS)

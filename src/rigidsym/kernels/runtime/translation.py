@@ -1,25 +1,27 @@
 """Pure translations: the screw of infinite pitch where a generated kernel cannot say it.
 
 A rigid-body motion without rotation (Q = 1 in a finite displacement, omega = 0 in a twist)
-is a screw of infinite pitch (Angeles, Sec. 3.2 and 3.4.1): its axis direction is the
-translation's, ``e = t / ||t||``; its pitch is ``+inf`` (an IEEE 754 value: an answer, not an
-error); its axis is any line parallel to ``e`` (as the axis of Q = 1 is any unit vector), and
-the answer takes the one through the origin, ``p0 = 0`` (pytransform3d's ``q = 0`` of a
-translation screw); its Plücker array is the normalised screw at infinity ``[0; e]`` (the limit
-of the screw array ``[e; p0 x e + p e] / p`` of Eq. (3.71) as ``p -> inf``; Modern Robotics'
-screw axis ``S = [0; v]`` of a translation, in the same ``[omega; v]`` order), not
-``[e; p0 x e]``. A motion that is neither rotation nor translation (Q = 1 and a' = a; omega = 0
-and a_dot = 0) has no screw: every output but ``phi = 0`` is undetermined, a
+is a screw of infinite pitch (Angeles, Sec. 3.2 and 3.4.1), and so is its dual, a pure couple
+(f = 0 in a wrench, Sec. 3.7): its axis direction is the translation's (the couple's),
+``e = t / ||t||``; its pitch is ``+inf`` (an IEEE 754 value: an answer, not an error); its
+axis is any line parallel to ``e`` (as the axis of Q = 1 is any unit vector), and the answer
+takes the one through the origin, ``p0 = 0`` (pytransform3d's ``q = 0`` of a translation
+screw); its Plücker array is the normalised screw at infinity ``[0; e]`` (the limit of the
+screw array ``[e; p0 x e + p e] / p`` of Eq. (3.71) as ``p -> inf``; Modern Robotics' screw
+axis ``S = [0; v]`` of a translation, in the same ``[omega; v]`` order), not ``[e; p0 x e]``.
+No motion (Q = 1 and a' = a; omega = 0 and a_dot = 0) and no load (w_A = 0) have no screw:
+every output but ``phi = 0`` is undetermined, a
 :class:`~rigidsym.kernels.runtime.errors.SingularConfigurationError` naming the argument under
 ``on_singular="raise"`` and NaN under ``"nan"``.
 
 The generated kernels hold their branch's value at those rows (``screw_of_displacement``'s
-``identity`` branch: phi = 0 exactly and finite placeholders; ``instant_screw_axis``: the
-singular flag of its division by ``||omega||^2``). :func:`complete` replaces them after the
-batch runs, on the NumPy and C back-ends and through Dask (each block's call), from the
-inputs of those rows alone; :func:`wrap_entry` does it after the compiled entries of the C
-extension, which answer those rows themselves. The PyTorch and JAX kernels and the C target
-(``rigidsym generate --target c``) keep the generated values. The slide of a pure translation, ``||a' - a||``, is not among
+``identity`` branch: phi = 0 exactly and finite placeholders; ``instant_screw_axis`` and
+``wrench_axis``: the singular flag of their division by ``||omega||^2``, ``||f||^2``).
+:func:`complete` replaces them after the batch runs, on the NumPy and C back-ends and through
+Dask (each block's call), from the inputs of those rows alone; :func:`wrap_entry` does it
+after the compiled entries of the C extension, which answer those rows themselves. The
+PyTorch and JAX kernels and the C target (``rigidsym generate --target c``) keep the
+generated values. The slide of a pure translation, ``||a' - a||``, is not among
 ``screw_of_displacement``'s outputs (``pitch * phi`` is ``inf * 0``, NaN): it is the caller's
 ``e . (a' - a)``.
 """
@@ -33,10 +35,14 @@ from rigidsym.kernels.runtime.errors import SingularConfigurationError, at_batch
 __all__ = ["COMPLETED", "complete", "wrap_entry", "document"]
 
 #: the kernels whose pure-translation rows :func:`complete` answers
-COMPLETED = ("screw_of_displacement", "instant_screw_axis")
+COMPLETED = ("screw_of_displacement", "instant_screw_axis", "wrench_axis")
 #: sample flag of the generated batch functions for a singular row (numpy_kernel.py.j2)
 _SINGULAR = 1
 
+#: the docstring paragraph's label
+_LABEL = {"screw_of_displacement": "Pure translation", "instant_screw_axis": "Pure translation",
+          "wrench_axis": "Pure couple"}
+#: the docstring paragraph of each kernel of COMPLETED
 _DOC = {
     "screw_of_displacement": (
         "at Q = 1 with a' != a (a pure translation by t = a' - a; vect(Q) = 0 exactly, "
@@ -58,6 +64,13 @@ _DOC = {
         "a_dot = 0 (no motion) every output is undetermined: SingularConfigurationError "
         "naming 'a_dot' (on_singular='nan': NaN). The C target keeps its singular status "
         "there."),
+    "wrench_axis": (
+        "at f = 0 with n_A != 0 (a pure couple: the moment n = n_A about every point) the "
+        "wrench is a screw of infinite pitch: p0 = 0 (the axis is any line parallel to n; "
+        "the answer is the one through the origin), pitch = +inf, plucker = [0; n / ||n||] "
+        "(the normalised screw at infinity, as for a translational twist). At w_A = 0 (no "
+        "load) every output is undetermined: SingularConfigurationError naming 'w_A' "
+        "(on_singular='nan': NaN). The C target keeps its singular status there."),
 }
 
 
@@ -83,7 +96,7 @@ def _difference(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 def _no_motion(name: str, arg: str, rows: np.ndarray, batch: tuple, what: str) -> None:
     w = [tuple(int(j) for j in np.unravel_index(i, batch)) for i in rows[:20]]
     raise SingularConfigurationError(
-        f"{name}: singular configuration ({what}: no motion, so no screw) in argument "
+        f"{name}: singular configuration ({what}, so no screw) in argument "
         f"{arg!r}{at_batch_indices(w, rows.size > 20)}", arg, w)
 
 
@@ -115,17 +128,22 @@ def complete(name: str, flat: list, bufs: list, flags, batch: tuple,
         rows = np.flatnonzero(mask)
         if rows.size:
             t = _difference(a[rows], a_prime[rows])
-            _answer(name, "a_prime", "Q = 1 and a' = a", rows, t, p0, pitch, kappa, e,
+            _answer(name, "a_prime", "Q = 1 and a' = a: no motion", rows, t, p0, pitch, kappa, e,
                     batch, on_singular)
         return flags
-    if name == "instant_screw_axis" and flags is not None:
-        omega, _a, a_dot = flat
+    if name in ("instant_screw_axis", "wrench_axis") and flags is not None:
+        if name == "instant_screw_axis":    # omega = 0: every point moves at a_dot
+            omega, a, a_dot = flat
+            zero, arg, what = omega, "a_dot", "omega = 0 and a_dot = 0: no motion"
+        else:                               # f = 0: the moment is n_A about every point
+            w_A, a = flat
+            zero, a_dot, arg, what = w_A[:, 3:], w_A[:, :3], "w_A", "f = 0 and n_A = 0: no load"
         p0, pitch, kappa = bufs
-        rows = np.flatnonzero((flags == _SINGULAR) & (omega == 0).all(axis=1)
-                              & np.isfinite(_a).all(axis=1))
+        rows = np.flatnonzero((flags == _SINGULAR) & (zero == 0).all(axis=1)
+                              & np.isfinite(a).all(axis=1))
         if rows.size:
-            _answer(name, "a_dot", "omega = 0 and a_dot = 0", rows, a_dot[rows], p0, pitch,
-                    kappa, None, batch, on_singular)
+            _answer(name, arg, what, rows, a_dot[rows], p0, pitch, kappa, None, batch,
+                    on_singular)
             flags = flags.copy()
             flags[rows] = 0
     return flags
@@ -219,6 +237,11 @@ _REPLACE = {
         ("Singular set: omega = 0 (pure translation).",
          "Singular set: omega = 0 and a_dot = 0 (no motion); omega = 0 alone is a pure "
          "translation, answered above.")),
+    "wrench_axis": (
+        ("on the singular set (f = 0 (pure moment))",
+         "on the singular set (w_A = 0: no load, naming 'w_A')"),
+        ("Singular set: f = 0 (pure moment).",
+         "Singular set: w_A = 0 (no load); f = 0 alone is a pure couple, answered above.")),
 }
 
 
@@ -236,7 +259,7 @@ def document(mod) -> None:
             doc = doc.replace(old, new)
         marker = "\n    Notes:\n"
         if marker in doc:
-            doc = doc.replace(marker, f"{marker}        Pure translation: {text}\n\n", 1)
+            doc = doc.replace(marker, f"{marker}        {_LABEL[name]}: {text}\n\n", 1)
         else:
-            doc = doc.rstrip() + f"\n\n    Notes:\n        Pure translation: {text}\n"
+            doc = doc.rstrip() + f"\n\n    Notes:\n        {_LABEL[name]}: {text}\n"
         f.__doc__ = doc
