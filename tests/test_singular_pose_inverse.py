@@ -24,6 +24,9 @@ NumPy and C back-ends, float64 and float32; the quick profile draws a few batche
 
 from __future__ import annotations
 
+import shutil
+import subprocess
+
 import numpy as np
 import pytest
 from _profile import examples
@@ -83,8 +86,9 @@ def test_natural_invariants_give_the_rotation_back(backend, dtype, seed):
 def _displacements(rng, dtype):
     """N displacements: Q = 1 with a' - a != 0 (row 0) and a' = a (row 1), then screw
     motions (a rotation about the axis through p0, a slide d along it) with some d = 0."""
-    Q = _rotations(rng, np.float64)
-    e, phi = K.natural_invariants_from_rotation(Q)
+    Q = _rotations(rng, dtype)                       # near-0 angles of the type
+    e, _ = (x.astype(np.float64) for x in K.natural_invariants_from_rotation(Q))
+    Q = Q.astype(np.float64)
     a = rng.uniform(-2, 2, (N, 3))
     p0, d = rng.uniform(-2, 2, (N, 3)), rng.uniform(-1, 1, N)
     d[rng.uniform(size=N) < 0.3] = 0
@@ -294,3 +298,87 @@ def test_strided_out_arrays_and_the_backends_agree():
         assert all(g is o for g, o in zip(got, out, strict=True))
         for g, w in zip(got, ref, strict=True):
             np.testing.assert_array_equal(g, w)
+
+
+#: the C target's kernels of partly defined outputs: (name, input sizes, output sizes)
+_C_KERNELS = (("natural_invariants_from_rotation", (9,), (3, 1)),
+              ("screw_of_displacement", (9, 3, 3), (3, 1, 3, 1, 6)),
+              ("instant_screw_axis", (3, 3, 3), (3, 1, 6)),
+              ("wrench_axis", (6, 3), (3, 1, 6)))
+#: the generated placeholders of the C target's RIGIDSYM_C_DEFAULT_OUTPUT (16), flattened
+_C_PLACEHOLDERS = {"natural_invariants_from_rotation": [1, 0, 0, 0],
+                   "screw_of_displacement": [1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0]}
+
+
+def _c_rows(rng, dtype) -> dict:
+    """Each kernel's rows in ``dtype``: its poses of partly defined outputs first."""
+    Q = _rotations(rng, dtype)
+    Qd, a, ap = _displacements(rng, dtype)
+    return {"natural_invariants_from_rotation": (Q,), "screw_of_displacement": (Qd, a, ap),
+            "instant_screw_axis": _twists(rng, dtype), "wrench_axis": _wrenches(rng, dtype)}
+
+
+def _c_call(name: str, ins: tuple, outs: tuple, suffix: str, ctype: str, fmt: str,
+            row: list) -> str:
+    """One C block: the row's inputs, the call, the status and outputs printed."""
+    decl = [f"const {ctype} i{j}[{n}] = {{" + ", ".join(repr(float(v)) for v in x.ravel())
+            + "};" for j, (n, x) in enumerate(zip(ins, row, strict=True))]
+    offs = np.cumsum((0, *outs))[:-1]
+    call = (f"s = rigidsym_c_{name}{suffix}(" + ", ".join(
+        [f"i{j}" for j in range(len(ins))] + [f"o{suffix} + {o}" for o in offs]) + ");")
+    return ("{ " + " ".join(decl) + f' {call} printf("%d", s); for (i = 0; i < {sum(outs)};'
+            f' i++) printf(" {fmt}", (double)o{suffix}[i]); printf("\\n"); }}')
+
+
+@pytest.mark.slow  # four kernels derived for the C target and a gcc build: ~1 min
+@pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc is not installed")
+def test_c_target_gives_the_input_back_or_says_it_cannot(tmp_path):
+    """The C target, double and float: where the status is 0 the outputs are the NumPy
+    kernels' of the same type (which give the input back, above) to the type's tolerance;
+    the poses the runtime answers as screws at infinity are flagged there,
+    RIGIDSYM_C_DEFAULT_OUTPUT (16) with the documented placeholders (and phi = 0, where
+    NumPy's phi is 0 exactly) or RIGIDSYM_C_SINGULAR (1, with NONFINITE_RESULT 4) with every
+    output NaN: never a status 0 with another screw's values."""
+    from rigidsym.codegen.backends.c.target import generate_c
+    from rigidsym.codegen.generator import compile_many
+    from rigidsym.codegen.usergen import select_kernels
+
+    ks, origin = select_kernels(None, [k[0] for k in _C_KERNELS])
+    for path, text in generate_c(compile_many(ks, plan32=False), origin).items():
+        (tmp_path / path).write_text(text)
+    rows = {dt: _c_rows(np.random.default_rng(5), dt) for dt in DTYPES}
+    body = [_c_call(name, ins, outs, suffix, ctype, fmt, [x[r] for x in rows[dt][name]])
+            for name, ins, outs in _C_KERNELS
+            for dt, suffix, ctype, fmt in ((np.float64, "", "double", "%.17g"),
+                                           (np.float32, "_f32", "float", "%.9g"))
+            for r in range(N)]
+    (tmp_path / "main.c").write_text(
+        '#include <stdio.h>\n#include "rigidsym_c.h"\nint main(void)\n{\n'
+        "    double o[16]; float o_f32[16]; int s, i;\n    "
+        + "\n    ".join(body) + "\n    return 0;\n}\n")
+    exe = tmp_path / "main"
+    subprocess.run(["gcc", "-std=c99", "-O2", "-I", str(tmp_path), str(tmp_path / "main.c"),
+                    *map(str, tmp_path.glob("rigidsym_c_*.c")), "-o", str(exe), "-lm"],
+                   check=True)
+    lines = iter(subprocess.run([str(exe)], check=True, capture_output=True,
+                                text=True).stdout.splitlines())
+    seen = set()
+    for name, _ins, _outs in _C_KERNELS:
+        for dt in DTYPES:
+            want = np.concatenate(
+                [np.asarray(o, dtype=np.float64).reshape(N, -1) for o in
+                 _run("numpy", getattr(K, name), *rows[dt][name], on_singular="nan")], 1)
+            for r in range(N):
+                s, *got = (float(x) for x in next(lines).split())
+                label = (name, np.dtype(dt).name, r, s, got)
+                seen.add(int(s) & 17)
+                if s == 16:
+                    assert got == _C_PLACEHOLDERS[name] and want[r][3] == 0, label
+                elif int(s) & 1:                # with NONFINITE_RESULT (4) on the way
+                    assert np.isnan(got).all() and not np.isfinite(want[r]).all(), label
+                else:
+                    assert s == 0 and np.isfinite(want[r]).all(), label
+                    scale = 1 + np.abs(want[r]).max()
+                    assert np.abs(np.array(got) - want[r]).max() \
+                        <= 4096 * scale * float(np.finfo(dt).eps), label
+    assert seen == {0, 1, 16}
