@@ -31,7 +31,7 @@ from hypothesis import strategies as st
 from rigidsym import kernels as K
 from rigidsym.core.draws import draw
 from rigidsym.kernels.runtime import state as _state
-from rigidsym.kernels.runtime.translation import COMPLETED
+from rigidsym.kernels.runtime.screw_at_infinity import COMPLETED
 
 SEQS = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY", "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
 
@@ -230,7 +230,7 @@ def _case(call, specs, arg: int, corruption: str, rng):
 
 def _answers(name: str, specs: list, outs: list) -> list:
     """The outputs with the one documented infinity taken out: the pitch +inf of a pure
-    translation's screw (rigidsym.kernels.runtime.translation), an IEEE answer."""
+    translation's screw (rigidsym.kernels.runtime.screw_at_infinity), an IEEE answer."""
     if name not in COMPLETED:
         return outs
     k = [o["name"] for o in _state.builtin().meta[name]["outputs"]].index("pitch")

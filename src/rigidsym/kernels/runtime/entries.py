@@ -37,7 +37,7 @@ from rigidsym.kernels.runtime import outpool as _outpool
 from rigidsym.kernels.runtime import state as _state
 from rigidsym.kernels.runtime.inputs import UNIT_AS_IS_EPS
 from rigidsym.kernels.runtime.scale import MIN_PARALLEL, get_num_threads
-from rigidsym.kernels.runtime.translation import COMPLETED, wrap_entry
+from rigidsym.kernels.runtime.screw_at_infinity import COMPLETED, wrap_entry
 
 __all__ = ["Lazy", "bind_api", "entries", "unbind", "pooled", "rebind"]
 
@@ -216,7 +216,7 @@ def entries(space: Any) -> types.SimpleNamespace:
             mod._environ(data, os.environ.encodekey("RIGIDSYM_NUM_THREADS"))
         ns = dict(zip(mod.kernels, mod.entries, strict=True))
         # the kernels whose rows of a pure translation the runtime answers after the entry
-        # (rigidsym.kernels.runtime.translation); their functions run their Python body
+        # (rigidsym.kernels.runtime.screw_at_infinity); their functions run their Python body
         ns.update({k: wrap_entry(k, ns[k], tuple(tuple(a["shape"])
                                                  for a in space.meta[k]["args"]))
                    for k in COMPLETED if k in ns})

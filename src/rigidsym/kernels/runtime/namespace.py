@@ -19,8 +19,8 @@ from rigidsym.core.config import generated_dir
 from rigidsym.core.files import load_module
 from rigidsym.kernels.runtime import names as _names
 from rigidsym.kernels.runtime import state as _state
+from rigidsym.kernels.runtime.screw_at_infinity import document
 from rigidsym.kernels.runtime.space import KernelSpace
-from rigidsym.kernels.runtime.translation import document
 
 __all__ = ["PUBLIC_MODULE", "KERNEL_NAMES", "public", "load", "space_of"]
 

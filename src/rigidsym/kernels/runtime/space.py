@@ -45,7 +45,7 @@ from rigidsym.kernels.runtime.scale import (
     resolve_threads,
     result_dtype,
 )
-from rigidsym.kernels.runtime.translation import COMPLETED, complete
+from rigidsym.kernels.runtime.screw_at_infinity import COMPLETED, complete
 
 #: sample flags of the generated batch functions (numpy_kernel.py.j2)
 _SINGULAR, _NONFINITE = 1, 2

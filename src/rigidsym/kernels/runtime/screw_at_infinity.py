@@ -1,4 +1,4 @@
-"""Pure translations: the screw of infinite pitch where a generated kernel cannot say it.
+"""Screws at infinity: a pure translation (a pure couple) where a generated kernel cannot say it.
 
 A rigid-body motion without rotation (Q = 1 in a finite displacement, omega = 0 in a twist)
 is a screw of infinite pitch (Angeles, Sec. 3.2 and 3.4.1), and so is its dual, a pure couple
