@@ -363,9 +363,35 @@ def test_object_cache_off_and_its_folder():
     try:
         os.environ["RIGIDSYM_OBJECT_CACHE"] = "0"
         assert _objects.root() is None
+        os.environ["RIGIDSYM_OBJECT_CACHE"] = "/elsewhere/objs"
+        assert _objects.root() == Path("/elsewhere/objs")
         os.environ.pop("RIGIDSYM_OBJECT_CACHE")
-        os.environ["RIGIDSYM_CACHE"] = "/somewhere/cache"
-        assert _objects.root() == Path("/somewhere/cache/objects")
+        os.environ["XDG_CACHE_HOME"] = "/home/x/.cache"
+        assert _objects.root() == Path("/home/x/.cache/rigidsym/objects")
+    finally:
+        os.environ.clear()
+        os.environ.update(old)
+
+
+@settings(max_examples=examples(20))
+@given(st.one_of(st.none(), st.text(st.characters(blacklist_categories=("Cs",),
+                                                  blacklist_characters="\x00"), min_size=1)))
+def test_rigidsym_cache_moves_verdicts_never_the_objects(cache):
+    """``RIGIDSYM_CACHE`` (one run's verdicts kept apart) leaves the object cache where it is,
+    so the next build reuses every object; only ``RIGIDSYM_OBJECT_CACHE`` moves it."""
+    pytest.importorskip("filelock")
+    from rigidsym.core import cache as _cache
+    from rigidsym.kernels.cbuild import objects as _objects
+
+    old = dict(os.environ)
+    try:
+        os.environ.pop("RIGIDSYM_OBJECT_CACHE", None)
+        os.environ.pop("RIGIDSYM_CACHE", None)
+        before = _objects.root()
+        if cache is not None:
+            os.environ["RIGIDSYM_CACHE"] = cache
+        assert _objects.root() == before
+        assert cache is None or _cache.root() == Path(cache).expanduser()
     finally:
         os.environ.clear()
         os.environ.update(old)
