@@ -50,7 +50,7 @@ PERCENT = re.compile(r"(?<![\w.^/%~-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.
 #: figure, and why
 NOT_MEASURED = [
     ("README.md", "least one every 2.5 s", "the build's progress interval, a setting "
-     "(setup.py's _SILENCE)"),
+     "(rigidsym.kernels.cbuild.driver.SILENCE)"),
     ("docs/setup.md", "at least one every 2.5 s", "the build's progress interval, a setting"),
     ("docs/commands.md", "with no line for 2.5 s says", "a piped phase's longest quiet, a "
      "setting (progress.SILENCE)"),
