@@ -52,6 +52,8 @@ NOT_MEASURED = [
     ("README.md", "least one every 2.5 s", "the build's progress interval, a setting "
      "(rigidsym.kernels.cbuild.driver.SILENCE)"),
     ("docs/setup.md", "at least one every 2.5 s", "the build's progress interval, a setting"),
+    ("docs/commands.md", "then one every 2.5 s saying", "the start's longest quiet, a "
+     "setting (progress.SILENCE)"),
     ("docs/commands.md", "with no line for 2.5 s says", "a piped phase's longest quiet, a "
      "setting (progress.SILENCE)"),
     ("docs/accuracy.md", "= 2 s (c E", "algebra: s is sin(phi/2)"),
