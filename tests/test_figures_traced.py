@@ -306,3 +306,63 @@ def test_a_ratio_in_exponent_form_is_checked_at_its_printed_precision():
     wrong = "\n3.7e4 x<!-- fig: audit_peers.json rows[0].worst[0].ratio .1e -->"
     found = _check(ROOT / "docs" / "x.md", wrong, MARKER.search(wrong))
     assert found and found.startswith("docs/x.md:2: ") and "gives '3.6e4'" in found, found
+
+
+# ------------------------------------------------------------------ what the tool prints
+#: a quoted output of the tool: ``…`<!-- quote: FILE PATH -->``, the code span before it
+#: equal to the record's string (or ending in `` = `` and it: ``e = [...]``)
+QUOTE = re.compile(r"`(?P<span>[^`]*)`<!--\s*quote:(?P<body>.*?)-->", re.S)
+#: a recorded command -> the pages that show it, word for word (benchmarks/
+#: check_latex_examples.py records what the tool prints for it)
+SHOWN = {"rodrigues_slip": ("README.md", "docs/check-latex.md")}
+EXAMPLES = RESULTS / "check_latex_examples.json"
+
+
+def _commands(text: str) -> list[list[str]]:
+    """Every ``rigidsym ...`` shell command of a page's code, its continued lines joined,
+    as an argument list."""
+    import shlex
+
+    out = []
+    for line in text.replace("\\\n", " ").splitlines():
+        line = line.strip()
+        if line.startswith("rigidsym "):
+            try:
+                out.append(shlex.split(line, comments=True))
+            except ValueError:      # not a shell line (prose starting with the name)
+                pass
+    return out
+
+
+def test_every_quoted_output_is_what_the_tool_printed():
+    """A counterexample or a repair quoted from the tool equals the record of the command's
+    run (benchmarks/check_latex_examples.py), not a hand copy."""
+    wrong, n = [], 0
+    for page in pages():
+        text = page.read_text(encoding="utf-8")
+        for m in QUOTE.finditer(text):
+            n += 1
+            where = f"{_name(page)}:{_line(text, m.start())}"
+            body = BODY.match(" ".join(m.group("body").split()))
+            if not body:
+                wrong.append(f"{where}: unparsable marker {m.group(0)!r}")
+                continue
+            record = json.loads((RESULTS / body["file"]).read_text(encoding="utf-8"))
+            assert _names_its_machine(record), body["file"]
+            want = str(_follow(record, body["path"]))
+            span = m.group("span")
+            if span != want and not span.endswith(" = " + want):
+                wrong.append(f"{where}: the page quotes {span!r}, {body['file']} "
+                             f"{body['path']} is {want!r}")
+    assert not wrong, "\n".join(wrong)
+    assert n >= 5, "the Rodrigues slip's quotes in docs/check-latex.md are gone"
+
+
+def test_the_pages_show_the_recorded_command_word_for_word():
+    """The command whose output a page quotes is the one the record ran: a reader who runs
+    the README's (or check-latex.md's) command sees the quoted counterexample."""
+    record = json.loads(EXAMPLES.read_text(encoding="utf-8"))
+    for name, shown in SHOWN.items():
+        argv = record["examples"][name]["argv"]
+        for page in shown:
+            assert argv in _commands((ROOT / page).read_text(encoding="utf-8")), (page, argv)
