@@ -366,3 +366,52 @@ def test_the_pages_show_the_recorded_command_word_for_word():
         argv = record["examples"][name]["argv"]
         for page in shown:
             assert argv in _commands((ROOT / page).read_text(encoding="utf-8")), (page, argv)
+
+
+def test_the_readme_commands_time_is_its_newest_record():
+    """One figure for the README's command: each page that states its time states first
+    that of the newest record (``test_command-*.json`` by its commit's date; a record with
+    no commit predates those with one), and never another as the current one."""
+    import subprocess
+
+    dated = {}
+    for f in RESULTS.glob("test_command-*.json"):
+        commit = json.loads(f.read_text(encoding="utf-8")).get("commit")
+        if not commit:
+            continue
+        r = subprocess.run(["git", "show", "-s", "--format=%ct", commit], cwd=ROOT,
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            pytest.skip(f"no git history of {commit} here (an sdist, a shallow clone)")
+        dated[f.name] = int(r.stdout.strip())
+    newest = max(dated.values())
+    for page in ("docs/where-it-stands.md", "docs/testing.md"):
+        text = (ROOT / page).read_text(encoding="utf-8")
+        cited = [b["file"] for b in (BODY.match(m.group("body")) for m in MARKER.finditer(text))
+                 if b and b["file"].startswith("test_command-") and b["path"] == "wall_s"]
+        assert cited and dated.get(cited[0]) == newest, (page, cited[:1], newest)
+
+
+def test_the_build_counts_on_the_pages_are_the_trees():
+    """The kernels and objects the pages count are those of the generated tree, as the
+    driver plans them (x86-64-v2 and -v3 every kernel and the table, -v4 the kernels that
+    call sin or cos and the table, and the module), not a figure of an older tree."""
+    from rigidsym.kernels.cbuild import driver, paths
+
+    sources = driver.kernel_sources(ROOT / "generated" / "c")
+    plan, _ = paths.partial_plan(paths.X86_PATHS, sources, driver.TABLE_SOURCE)
+    n = {k: len(v) for k, v in plan.items()}
+    want = [("README.md", r"the (\d+) kernels and their table", len(sources) - 1),
+            ("README.md", r"the (\d+) that call\s+`sin`/`cos`", n["v4"] - 1),
+            ("docs/setup.md", r"\((\d+) objects\s+instead", len(sources) + 1),
+            ("docs/setup.md", r"instead of the (\d+) of x86-64-v4 and -v3", n["v4"] + n["v3"] + 1),
+            ("benchmarks/RESULTS.md", r"The tree now builds (\d+) objects", sum(n.values()) + 1),
+            ("benchmarks/RESULTS.md", r"\((\d+) for x86-64-v2", n["v2"]),
+            ("benchmarks/RESULTS.md", r"(\d+) for x86-64-v4, and the module", n["v4"])]
+    wrong = []
+    for page, pattern, value in want:
+        m = re.search(pattern, (ROOT / page).read_text(encoding="utf-8"))
+        if not m or int(m.group(1)) != value:
+            wrong.append(f"{page}: {pattern!r} reads {m.group(1) if m else None}, the tree "
+                         f"has {value}")
+    assert not wrong, "\n".join(wrong)
