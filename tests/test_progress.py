@@ -30,7 +30,7 @@ from rigidsym.course.worked import EXERCISE_IDS
 
 ROOT = Path(__file__).resolve().parents[1]
 #: the program's start lines (rigidsym.core.progress.starting), before a command's own
-START = re.compile(r"rigidsym [a-z-]+: (starting \.\.\.|still starting \(.+\), .+ s)")
+START = re.compile(r"rigidsym [a-z-]+: (starting \.\.\.|still (starting|working) \(.+\), .+ s)")
 _ANSI = re.compile(r"\x1b\[[0-9;?]*[A-Za-z]")
 #: runs ``python -m rigidsym ARGS`` and, at the first words it writes on stderr from its main
 #: thread (past the program's start line, rigidsym.core.progress.starting), writes to the

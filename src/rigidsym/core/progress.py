@@ -90,7 +90,8 @@ def starting(command: str, enabled: bool = True, stream=None):
     """The first line of a command, before its heavy imports (sympy takes seconds, tens of
     seconds on a loaded machine), and until the command's own progress begins (its first
     :class:`Reporter`), a line whenever :data:`SILENCE` seconds pass without one, saying
-    what runs (:func:`doing`): ``rigidsym verify: still starting (importing sympy), 5.0 s``.
+    what runs (:func:`doing`): ``rigidsym verify: still starting (importing sympy), 5.0 s``,
+    or, past its imports, ``rigidsym generate: still working (in rigidsym.x.f), 9.0 s``.
 
     Args:
         command: the head of each line (``rigidsym verify``).
@@ -111,8 +112,10 @@ def starting(command: str, enabled: bool = True, stream=None):
             with _START_LOCK:
                 now = time.perf_counter()
                 if now - said[0] >= SILENCE and not stop.is_set():
-                    print(f"{command}: still starting ({doing(main)}), "
-                          f"{format_seconds(now - t0)}", file=out, flush=True)
+                    what = doing(main)
+                    phase = "starting" if what.startswith("importing") else "working"
+                    print(f"{command}: still {phase} ({what}), {format_seconds(now - t0)}",
+                          file=out, flush=True)
                     said[0] = now
 
     th = threading.Thread(target=watch, daemon=True, name="rigidsym-starting")
