@@ -31,7 +31,7 @@ from contextlib import contextmanager
 from rigidsym.core.interrupts import checkpoint
 
 __all__ = ["Reporter", "Phase", "PER_ITEM", "SILENCE", "load_durations", "save_durations",
-           "format_seconds", "starting", "doing"]
+           "format_seconds", "starting", "begun", "doing"]
 
 #: refreshes per second of the live display (at least one)
 REFRESH = 4
@@ -124,12 +124,13 @@ def starting(command: str, enabled: bool = True, stream=None):
     try:
         yield
     finally:
-        _started()
+        begun()
         th.join()
 
 
-def _started() -> None:
-    """The command's own progress begins: the start's lines end (none after this returns)."""
+def begun() -> None:
+    """The command's own progress begins (a :class:`Reporter`, the C build's lines): the
+    start's lines (:func:`starting`) end, none after this returns."""
     with _START_LOCK:
         stop, _START["stop"] = _START["stop"], None
         if stop is not None:
@@ -240,7 +241,7 @@ class Reporter:
 
     def __enter__(self) -> Reporter:
         if self.enabled:
-            _started()
+            begun()
         s = self._stream()
         self.live = self.enabled and hasattr(s, "isatty") and s.isatty() and \
             os.environ.get("TERM") != "dumb"

@@ -107,6 +107,9 @@ def _valid(path: Path, sources: str) -> bool | None:
 
 
 def _notice(gdir: Path, cfg: _build.Config, where: Path, why: str) -> None:
+    from rigidsym.core.progress import begun
+
+    begun()     # the build's own lines follow: the program's start lines end
     cdir = Path(gdir) / "c"
     n = len(_build.kernel_sources(cdir)) - 1     # the table is not a kernel
     print(f"rigidsym: compiling the C of {n} kernels in {gdir} ({why}) for "
