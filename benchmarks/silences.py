@@ -7,7 +7,8 @@ display instead), and timestamps every line as it arrives (a line ends at ``\\n`
 and per command its exit code, wall time, the wait for its first line, the longest gap
 between two lines (the start and the exit count as lines) with the lines on both sides of
 it, and the number of lines. The target (docs/setup.md, docs/commands.md) is no silence
-over 3 s.
+over 3 s. ``benchmarks/first_hour.py`` replays the README's steps in a fresh clone with no
+load; this script times any command under one.
 
     python benchmarks/silences.py --busy 2 --json benchmarks/results/silences.json \\
         --command 'rigidsym verify --sections 3.2' --command 'python -c "import rigidsym.cli"'

@@ -397,7 +397,10 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     """Compile ``gdir/c`` into the module file ``out`` (objects in ``tmp``, each reused from
     the object cache :mod:`rigidsym.kernels.cbuild.objects` when it holds it); returns ``out``.
     ``stats``, when given, receives ``objects``, ``compiled``, ``reused``, ``seconds``
-    (wall) and ``cpu_seconds`` (the compiler processes' user + system time).
+    (wall) and ``cpu_seconds`` (the compiler processes' user + system time). ``progress``
+    (:data:`Progress`, e.g. :func:`text_progress`) is called from the pool's watch: as each
+    compile or the link finishes, and every :data:`TICK` seconds while none does, with what
+    runs.
 
     Raises:
         BuildError: a compile or the link failed (the compiler's last lines in the message).
