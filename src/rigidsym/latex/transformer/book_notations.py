@@ -291,9 +291,9 @@ class BookNotationRules:
         return g is not None and (g.meaning or "").endswith(TIMED)
 
     def velocity(self, key: str, value):
-        """``\\dot X`` of a symbol declared a function of time: a rotation's ``X [w_X]``, a
-        transform's ``X [V_X]`` (w_X, V_X free: the body velocity), else a free symbol of
-        X's shape (``\\dot\\theta``)."""
+        """``\\dot X`` of a symbol declared a function of time: a rotation's or a transform's
+        ``X [X_w]`` (``X_w`` free, introduced by the reader: the body angular velocity, or
+        the body twist), else a free symbol of X's shape (``\\dot\\theta``)."""
         g = self.overrides[key]
         self.glyphs[key] = g
         dkey = dot_key(key)
@@ -311,8 +311,10 @@ class BookNotationRules:
             w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
             self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
                                                  "body velocity", "")
+            what = "angular velocity" if n == 3 else "twist"
             self._note(f"{dkey} = {g.name} [{w.name}]: the time derivative of a "
-                       f"{g.meaning.split(',')[0]} ({w.name} its body velocity, free)")
+                       f"{g.meaning.split(',')[0]} ({w.name}: the body {what} of {g.name}, "
+                       f"introduced by the reader, free)")
             return value * rigid_motions.hat(w)
         if dkey not in self.glyphs:
             self._note(f"{dkey}: the time derivative of {key} (a function of time, free)")
