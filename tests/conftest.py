@@ -52,7 +52,8 @@ def pytest_configure(config):
     if "RIGIDSYM_CACHE" not in os.environ:
         os.environ["RIGIDSYM_CACHE"] = tempfile.mkdtemp(prefix="rigidsym-tests-")
         _CREATED.append(os.environ["RIGIDSYM_CACHE"])   # xdist workers inherit it
-    os.environ.pop("RIGIDSYM_OBJECT_CACHE", None)       # the tests' objects: in their cache
+    # the tests' objects: in their own cache (RIGIDSYM_CACHE does not move the object cache)
+    os.environ["RIGIDSYM_OBJECT_CACHE"] = os.path.join(os.environ["RIGIDSYM_CACHE"], "objects")
     os.environ.setdefault("RIGIDSYM_LATEX_TIMEOUT", "none")  # no verdict rests on the load
     become_subreaper()
 
