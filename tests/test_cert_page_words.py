@@ -25,11 +25,13 @@ from certcheck.book import BookError, check_page, locate, sha256  # noqa: E402
 from certcheck.braces import displays_after  # noqa: E402
 from certcheck.by_definition import unread_vacuous  # noqa: E402
 from certcheck.compare import compare  # noqa: E402
+from certcheck.reading import load_reading  # noqa: E402
 from test_cert_page import another_printed_text, relabelled  # noqa: E402
 from test_cert_page_momenta import certificates  # noqa: E402
 
 from certcheck import CheckError, check_certificate, words  # noqa: E402
 
+words.use(load_reading(READING.read_bytes()))   # the theorems in words: the reading's
 _V = words.WORDS["thm3.4.2"][1]
 #: id -> (a sign, a coefficient, a transpose where it matters: the table's relation changed)
 TABLE_TAMPERINGS = {

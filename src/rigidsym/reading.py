@@ -63,7 +63,7 @@ CONVENTIONS: dict[str, tuple[str, ...]] = {
 CLASSES = ("relation", "definition", "theorem", "not-checked")
 _LET_KEYS = {"let", "where", "scope", "ids", "cites", "family", "reads_as", "particles",
              "relation", "unit", "atoms_of"}
-_ID_KEYS = {"class", "where", "relations"}
+_ID_KEYS = {"class", "where", "relations", "page_reading", "words", "states", "why"}
 _TOP = {"reading", "conventions", "let", "id", "classes"}
 
 
@@ -114,12 +114,22 @@ class IdReading:
         where: where the page says so.
         relations: the number of relations the page prints under the id, ``None`` if not
             stated.
+        page_reading: for a slip of a converted text, what the printed page is read to show
+            and how that reading was decided (``"verified: ..."`` or ``"its own erratum:
+            ..."``), ``""`` if none.
+        words: for a theorem in words, its statement as the page prints it.
+        states: the relation(s) those words state, in the page's glyphs (LaTeX).
+        why: why the relation is what the words say, no stronger, no weaker.
     """
 
     id: str
     cls: str
     where: str = ""
     relations: int | None = None
+    page_reading: str = ""
+    words: str = ""
+    states: str = ""
+    why: str = ""
 
 
 @dataclass(frozen=True)
@@ -266,7 +276,9 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
         if i in ids_out and ids_out[i].cls != cls:
             raise _bad(where, f"{here} class {cls!r} but [classes] gives {ids_out[i].cls!r}")
         ids_out[i] = IdReading(i, cls, _text(entry.get("where", ""), where, f"{here} where",
-                                             allow_empty=True), rel)
+                                             allow_empty=True), rel,
+                               *(_text(entry.get(k, ""), where, f"{here} {k}", allow_empty=True)
+                                 for k in ("page_reading", "words", "states", "why")))
     return Reading(path, reading_sha256(raw), page, dict(conventions), tuple(lets), ids_out)
 
 

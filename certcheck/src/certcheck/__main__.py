@@ -32,7 +32,7 @@ from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
 from certcheck.reading import ReadingError, bind, load_reading
-from certcheck.words import said, stated
+from certcheck.words import said, stated, use
 
 #: the largest certificate file read (bytes; the chapter's largest is 0.36 MB)
 MAX_BYTES = 4_000_000
@@ -161,6 +161,7 @@ def main(argv: list[str] | None = None) -> int:
         except ReadingError as exc:
             print(f"certcheck: --reading: {exc}", file=sys.stderr)
             return 2
+    use(reading)   # the theorems in words: the reading's
     t0 = time.perf_counter()
     bad_manifests, head = _manifests(args.paths, files, book_bytes, reading)
     ids: dict = {}

@@ -86,7 +86,8 @@ def _line(entry: dict, where: str) -> tuple:
 
 def load_reading(data: bytes, name: str = "the reading") -> dict:
     """A reading file's bytes, checked: ``{"sha256", "lines": {(id, relation): [line]},
-    "classes": {id: class}}``.
+    "classes": {id: class}, "atoms_of": {id: {glyph: source}}, "words": {id: (statement,
+    relation, why)}}`` (``words``: the theorems the page states in words).
 
     Raises:
         ReadingError: not TOML, an unknown key, kind or class, an id given two classes.
@@ -125,14 +126,20 @@ def load_reading(data: bytes, name: str = "the reading") -> dict:
             if i in classes:
                 raise ReadingError(f"{name}: [classes]: {i!r} given two classes")
             classes[str(i)] = cls
+    words: dict = {}
     for i, entry in (doc.get("id") or {}).items():
         cls = entry.get("class") if isinstance(entry, dict) else None
         if cls not in _CLASSES or classes.get(i, cls) != cls:
             raise ReadingError(f"{name}: [id.{i!r}]: class {cls!r} (or another than "
                                f"[classes]' {classes.get(i)!r})")
         classes[i] = cls
+        said = [entry.get(k) for k in ("words", "states", "why")]
+        if any(said):
+            if not all(isinstance(x, str) and x for x in said):
+                raise ReadingError(f"{name}: [id.{i!r}]: words, states and why go together")
+            words[i] = tuple(said)
     return {"sha256": reading_sha256(data), "lines": lines, "classes": classes,
-            "atoms_of": sources}
+            "atoms_of": sources, "words": words}
 
 
 def _cert_lines(cert: dict, table: list, atoms: dict, where: str) -> list:

@@ -51,7 +51,7 @@ from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "certificate_or_reason",
            "write_certificates", "certificate_file", "recheck_folder", "write_manifest",
-           "cause_record", "CAUSE_CLASSES", "symbol_table"]
+           "cause_record", "CAUSE_CLASSES", "symbol_table", "page_reading"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -329,6 +329,17 @@ def relation_table(eq_id: str, label: str) -> list[dict]:
 CAUSE_CLASSES = {"erratum": "book erratum", "conversion": "conversion slip"}
 
 
+def page_reading(eq_id: str) -> str:
+    """The reading's decided page reading of ``eq_id`` (a slip of the converted text: what
+    the printed page is read to show, ``"verified: ..."`` or ``"its own erratum: ..."``),
+    ``""`` where it gives none."""
+    if is_user_id(eq_id):
+        return ""
+    reading = reading_of(book_reading())
+    entry = reading.ids.get(eq_id) if reading is not None else None
+    return entry.page_reading if entry is not None else ""
+
+
 def cause_record(eq) -> dict:
     """The cause of a does-not-hold declaration for its certificate: ``{"class": "book
     erratum" | "conversion slip" | "undetermined", "why": the declared evidence}``, and for
@@ -338,29 +349,14 @@ def cause_record(eq) -> dict:
     cls = CAUSE_CLASSES.get(eq.cause, "undetermined")
     out = {"class": cls, "why": eq.evidence or ""}
     if cls == "conversion slip":
+        decided = page_reading(eq.id)
         out["page_reading"] = ("conjecture: the printed page shows the corrected form below, "
                                "the converted text lost or changed a glyph: "
                                + (eq.evidence or "(no evidence declared)")
-                               + (" Decided: " + PAGE_READINGS[eq.id]
-                                  if eq.id in PAGE_READINGS else ""))
+                               + (f" Decided: {decided}" if decided else ""))
     return out
 
 
-#: each conversion slip's declared page reading, decided: the reading is the corrected form
-#: this certificate proves (verified), or, where restoring the lost glyphs still leaves a
-#: term or factor missing (the corrected form proved carries it), its own book erratum
-PAGE_READINGS = {
-    "3.77a": "verified: the reading (nu-dot for v-dot) is the corrected chain, whose three "
-             "members the certificate proves by cofactors",
-    "3.94": "verified: the reading (F~-dot, the 3x4 rate, in the upper-left block) is the "
-            "corrected form, which the certificate proves by cofactors",
-    "3.97a": "its own erratum: with the tilde and phi restored the printed bracket still "
-             "lacks the term (1 - cos phi) E-dot of d/dt[(1 - cos phi) E]; the corrected form "
-             "the certificate proves carries it (a book erratum beside the conversion slip)",
-    "3.97c": "its own erratum: with the tilde restored the printed bracket still lacks the "
-             "factor 2 of H~ (3.77d); the corrected form the certificate proves, 2 [r0-dot 1 + "
-             "R-dot, -r-dot], carries it (a book erratum beside the conversion slip)",
-}
 
 
 def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, seed: int) -> None:
