@@ -212,6 +212,14 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
         if value not in CONVENTIONS[key]:
             raise _bad(where, f"[conventions] {key} = {value!r}; expected one of "
                               f"{', '.join(CONVENTIONS[key])}")
+    lets = _lets(doc, where)
+    ids_out = _ids(doc, where)
+    return Reading(path, reading_sha256(raw), page, dict(conventions), tuple(lets), ids_out)
+
+
+
+def _lets(doc: dict, where: str) -> list[Let]:
+    """The ``[[let]]`` entries of a parsed reading, checked."""
     lets = []
     entries = doc.get("let", [])
     if not isinstance(entries, list):
@@ -243,6 +251,11 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
                                             allow_empty=True),
                         scope, tuple(ids), n, **extras,
                         particles=tuple(tuple(sorted(p.items())) for p in particles)))
+    return lets
+
+
+def _ids(doc: dict, where: str) -> dict[str, IdReading]:
+    """What a parsed reading says of ids (``[classes]``, ``[id."..."]``), checked."""
     ids_out: dict[str, IdReading] = {}
     classes = doc.get("classes", {})
     if not isinstance(classes, dict):
@@ -279,7 +292,7 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
                                              allow_empty=True), rel,
                                *(_text(entry.get(k, ""), where, f"{here} {k}", allow_empty=True)
                                  for k in ("page_reading", "words", "states", "why")))
-    return Reading(path, reading_sha256(raw), page, dict(conventions), tuple(lets), ids_out)
+    return ids_out
 
 
 def load_reading(path: str | Path) -> Reading:
