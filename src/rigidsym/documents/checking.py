@@ -85,7 +85,9 @@ def decide(p: Plan, options: dict) -> dict:
     if p.action == "definition":
         return rec | {"verdict": "definition", "method": "document definition",
                       "reason": f"defines {p.defines} for the relations after it"}
-    return rec | _decided(r.latex, p.lets, options)
+    t = time.monotonic()
+    out = rec | _decided(r.latex, p.lets, options)
+    return out | {"seconds": round(time.monotonic() - t, 3)}
 
 
 def _decided(latex: str, lets: list[str], options: dict) -> dict:

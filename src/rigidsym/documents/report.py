@@ -16,7 +16,7 @@ __all__ = ["FIELDS", "as_json", "as_markdown", "as_text"]
 #: the keys of a relation's record
 FIELDS = ("file", "line", "column", "display", "index", "label", "latex", "op", "kind",
           "verdict", "method", "read_as", "counterexample", "corrected", "corrected_latex",
-          "cause", "reason", "free", "lets")
+          "cause", "reason", "free", "lets", "seconds")
 _WORDS = {"verified": "verified", "does-not-hold": "DOES NOT HOLD",
           "definition": "definition", "undecided": "undecided", "not-checked": "not checked"}
 
