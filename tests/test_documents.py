@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 import rigidsym
 from rigidsym.cli import main
 from rigidsym.core.errors import BadInput
-from rigidsym.documents import check_document, read_document
+from rigidsym.documents import check_document, conventions, exit_code, read_document
 from rigidsym.documents.declarations import plan
 from rigidsym.documents.displays import Display, Source
 from rigidsym.documents.relations import split_display
@@ -173,3 +173,57 @@ def test_the_example_notes_find_their_slip(capsys):
     assert code == 1
     assert "DOES NOT HOLD" in out and "flip the sign" in out
     assert "an approximation" in out
+
+
+# ----------------------------------------------------------------------- conventions
+VERDICT = st.sampled_from(["verified", "does-not-hold", "undecided"])
+
+
+@given(st.lists(VERDICT, min_size=2, max_size=2), st.sampled_from(list(conventions.CHOICES)))
+def test_a_relation_under_each_open_convention_never_from_a_default(verdicts, key):
+    combos = [c for c, _ in conventions.choices([key])]
+    outs = [(c, {"verdict": v, "counterexample": f"x = {i}"})
+            for i, (c, v) in enumerate(zip(combos, verdicts, strict=True))]
+    got = conventions.combine([key], outs)
+    assert list(got["under"].values()) == verdicts  # each convention's verdict said
+    if len(set(verdicts)) == 1:
+        assert got["verdict"] == verdicts[0]
+    elif set(verdicts) == {"verified", "does-not-hold"}:
+        good = verdicts.index("verified")
+        bad = 1 - good
+        assert got["verdict"] == "convention-dependent" and got["corrected"] is None
+        name = [conventions.NAMES[c[0]] for c in combos]
+        assert got["reason"].startswith(f"holds under {name[good]}, not under {name[bad]}")
+        assert f"x = {bad}" in got["reason"] and key in got["reason"]
+    else:
+        assert got["verdict"] == "undecided"
+
+
+def test_a_convention_fixed_by_a_let_or_notation_is_not_open():
+    notes = ["quaternion product: Hamilton's ...", "tangent order: not declared; ..."]
+    assert conventions.open_in(notes, None, [], None) == ["quaternion_product",
+                                                          "tangent_order"]
+    assert conventions.open_in(notes, None, ["\\odot: JPL"], "barfoot") == []
+    assert conventions.open_in([], "the two orders disagree (--let 'tangent order: a')",
+                               [], None) == ["tangent_order"]
+    assert conventions.open_in(["numeric cross-check"], None, [], None) == []
+
+
+@pytest.mark.slow
+def test_open_conventions_decided_under_each_and_fixed_ones_said_back_once():
+    res = check_document(DATA / "conventions.md", repairs=False)
+    v = [r["verdict"] for r in res.records]
+    assert v == ["convention-dependent", "verified", "definition", "convention-dependent"]
+    qq, ad = res.records[0], res.records[3]
+    assert qq["reason"].startswith("holds under Hamilton's") and "not under JPL's" in \
+        qq["reason"]
+    assert ad["reason"].startswith("holds under the tangent order [v; ω]")
+    assert exit_code(res) == 3
+    fixed = check_document(DATA / "conventions.md", repairs=False,
+                           reading=DATA / "conventions-fixed.reading.toml")
+    assert [r["verdict"] for r in fixed.records] == ["verified", "verified", "definition",
+                                                     "verified"]
+    assert not any(r["under"] for r in fixed.records)
+    said = fixed.conventions
+    assert len(said) == 2 and sum("quaternion_product = hamilton" in c for c in said) == 1
+    assert exit_code(fixed) == 0

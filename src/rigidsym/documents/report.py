@@ -16,8 +16,9 @@ __all__ = ["FIELDS", "as_json", "as_markdown", "as_text"]
 #: the keys of a relation's record
 FIELDS = ("file", "line", "column", "display", "index", "label", "latex", "op", "kind",
           "verdict", "method", "read_as", "counterexample", "corrected", "corrected_latex",
-          "cause", "reason", "free", "lets", "seconds")
+          "cause", "reason", "free", "under", "lets", "seconds")
 _WORDS = {"verified": "verified", "does-not-hold": "DOES NOT HOLD",
+          "convention-dependent": "holds under one convention",
           "definition": "definition", "undecided": "undecided", "not-checked": "not checked"}
 
 
@@ -37,7 +38,9 @@ def _detail(rec: dict) -> list[str]:
             out.append(f"corrected: {rec['corrected']}   ({rec['cause']})")
         elif rec["cause"]:
             out.append(rec["cause"])
-    elif rec["reason"] and rec["verdict"] != "verified":
+        if rec.get("under"):
+            out.append(rec["reason"])
+    elif rec["reason"] and (rec["verdict"] != "verified" or rec.get("under")):
         out.append(rec["reason"])
     return out
 
