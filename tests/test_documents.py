@@ -14,9 +14,12 @@ import rigidsym
 from rigidsym.cli import main
 from rigidsym.core.errors import BadInput
 from rigidsym.documents import check_document, conventions, exit_code, read_document
+from rigidsym.documents.checking import VERDICTS, DocumentResult
 from rigidsym.documents.declarations import plan
 from rigidsym.documents.displays import Display, Source
+from rigidsym.documents.html import as_html
 from rigidsym.documents.relations import split_display
+from rigidsym.documents.report import FIELDS
 from rigidsym.registry import declarations as registry
 
 DATA = Path(__file__).parent / "data" / "documents"
@@ -166,10 +169,44 @@ def test_cli_bad_input_and_one_of_file_or_latex(tmp_path, capsys):
     capsys.readouterr()
 
 
+# ----------------------------------------------------------------------- the HTML page
+@given(st.lists(st.sampled_from(VERDICTS), min_size=4, max_size=4))
+@settings(max_examples=10)
+def test_the_html_page_shows_each_display_in_order_with_its_verdicts(verdicts):
+    doc = read_document(DATA / "verdicts.md")
+    recs = []
+    for r, v in zip(doc.relations, verdicts, strict=True):
+        bad = v == "does-not-hold"
+        recs.append({k: None for k in FIELDS} | {
+            "file": r.file, "line": r.line, "display": r.display, "index": r.index,
+            "latex": r.latex, "label": r.label, "verdict": v,
+            "reason": None if v in ("verified", "does-not-hold") else f"why {r.index}",
+            "point": [{"latex": "\\mathbf{e}", "value": "[0; 1; 0]"}] if bad else None,
+            "corrected": "Q = 1" if bad else None,
+            "corrected_latex": "\\mathbf{Q} = \\boxed{\\mathbf{1}}" if bad else None,
+            "cause": "drop a term" if bad else None})
+    page = as_html(DocumentResult(doc, None, recs))
+    assert "<script" not in page and "src=" not in page  # offline: nothing fetched
+    at = [page.index(f'id="display-{d.number}"') for d in doc.displays]
+    assert at == sorted(at)  # the displays in the document's order
+    for rec in recs:  # each relation typeset, its verdict beside it, in its display
+        i = page.index(f'id="r-{rec["display"]}-{rec["index"]}"')
+        j = page.index("</div>", i)
+        assert "<math" in page[i:j] and f'badge {rec["verdict"]}"' in page[i:j]
+        assert page.index(f'id="display-{rec["display"]}"') < i
+    n_bad = verdicts.count("does-not-hold")
+    assert page.count("Counterexample (exact)") == n_bad
+    assert page.count("Corrected (drop a term)") == n_bad
+    assert page.count('<menclose notation="box">') == n_bad  # the edit boxed, in MathML
+
+
 @pytest.mark.slow
-def test_the_example_notes_find_their_slip(capsys):
-    code = main(["check", str(Path(__file__).parents[1] / "examples" / "notes.md")])
+def test_the_example_notes_find_their_slip(capsys, tmp_path):
+    code = main(["check", str(Path(__file__).parents[1] / "examples" / "notes.md"),
+                 "--html", str(tmp_path / "errata.html")])
     out = capsys.readouterr().out
+    page = (tmp_path / "errata.html").read_text(encoding="utf-8")
+    assert "Counterexample (exact)" in page and page.count('id="display-') == 5
     assert code == 1
     assert "DOES NOT HOLD" in out and "flip the sign" in out
     assert "an approximation" in out

@@ -82,7 +82,7 @@ def decide(p: Plan, options: dict) -> dict:
                     "skip": "not-checked"}[p.action],
            "lets": list(p.lets), "verdict": None, "method": None, "read_as": None,
            "counterexample": None, "corrected": None, "corrected_latex": None,
-           "cause": None, "reason": None, "free": [], "under": None}
+           "cause": None, "reason": None, "free": [], "under": None, "point": None}
     if p.action == "skip":
         return rec | {"verdict": "not-checked", "reason": p.reason}
     if p.action == "definition":
@@ -148,6 +148,8 @@ def _check_once(latex: str, lets: list[str], options: dict) -> tuple[dict, list[
         out["reason"] = r.cause or r.detail or "undecided"
     if r.verdict == "does-not-hold":
         out["counterexample"] = _counterexample(r)
+        out["point"] = [{"latex": x.get("latex") or x.get("symbol"), "value": x.get("text")}
+                        for x in (r.counterexample or {}).get("symbols", [])]
         reps = r.repairs or []
         if reps:
             out["corrected"] = reps[0].get("text")

@@ -114,7 +114,7 @@ def combine(keys: list[str], outs: list[tuple[tuple[tuple[str, str], ...], dict]
         c, o = fails[0]
         return {"verdict": "convention-dependent", "method": o.get("method"),
                 "read_as": first.get("read_as"),
-                "counterexample": o.get("counterexample"),
+                "counterexample": o.get("counterexample"), "point": o.get("point"),
                 "corrected": None, "corrected_latex": None, "cause": None,
                 "under": under,
                 "reason": (f"holds under {', '.join(_words(h) for h in holds)}, not under "
