@@ -11,6 +11,7 @@ __all__ = ["add_arguments", "run", "HELP", "EXAMPLES", "EXIT"]
 HELP = "decide an equation written in LaTeX, or every display of a document (its symbols: --let)"
 EXAMPLES = r"""  rigidsym check notes.md          every displayed relation of a Markdown or LaTeX
                                    document; its symbols: notes.reading.toml beside it
+  rigidsym check notes.md --html errata.html   and the errata as one offline page (MathML)
   rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
       --let '\mathbf{Q}: rotation'
   rigidsym check --latex \
