@@ -594,3 +594,14 @@ def test_a_slice_of_a_parameter_at_an_argument_that_is_no_symbol(latex, let, ver
     double cover) and A at the quaternion of (e, θ) being Rodrigues' passive rotation are
     textbook facts (Markley & Crassidis 2014, ch. 2)."""
     assert rigidsym.check_latex(latex, let=let).verdict == verdict
+
+
+@pytest.mark.parametrize("bracket", [r"[\mathbf{n}]_\times", r"[\mathbf{n}]_{\times}",
+                                     r"\left[\mathbf{n}\right]_{ \times }"])
+@pytest.mark.parametrize("sign, verdict", [("+", "verified"), ("-", "does-not-hold")])
+def test_the_cross_product_bracket_reads_its_subscript_bare_or_braced(bracket, sign, verdict):
+    # TeX's _\times and _{\times} are one subscript (a Stack Exchange answer writes the
+    # outer-product identity n n^T = [n]_{\times}^2 + I so)
+    r = rigidsym.check_latex(rf"\mathbf{{n}}\mathbf{{n}}^T = {bracket}^2 {sign} \mathbf{{I}}",
+                             let=[r"\mathbf{n}: unit vector"], repairs=False)
+    assert r.verdict == verdict, r.detail

@@ -83,7 +83,7 @@ def _numpy_holds(sides) -> bool:
     return True
 
 
-CASES = [("mathse-rodrigues-matrix.tex", MATHSE, 10),
+CASES = [("mathse-rodrigues-matrix.tex", MATHSE, 11),
          ("rotations-jl-angleaxis.md", ROTATIONS_JL, 1),
          ("quaternions-jl-rotations.md", {}, 0)]
 
