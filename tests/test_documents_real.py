@@ -68,9 +68,25 @@ MATHSE = {
     56: (lambda p: p["R"], lambda p: np.eye(3) + p["s"] * p["K"] + (1 - p["c"]) * p["K"] @ p["K"]),
     60: (lambda p: np.outer(p["n"], p["n"]), lambda p: cpm(p["n"]) @ cpm(p["n"]) + np.eye(3)),
 }
+def _rodrigues(p):
+    return np.eye(3) + p["s"] * cpm(p["n"]) + (1 - p["c"]) * cpm(p["n"]) @ cpm(p["n"])
+
+
+def _written_out(p):
+    """The page's matrix, entry by entry, in n_x, n_y, n_z."""
+    (x, y, z), c, s = p["n"], p["c"], p["s"]
+    return np.array([[c + x * x * (1 - c), x * y * (1 - c) - z * s, z * x * (1 - c) + y * s],
+                     [x * y * (1 - c) + z * s, c + y * y * (1 - c), y * z * (1 - c) - x * s],
+                     [z * x * (1 - c) - y * s, y * z * (1 - c) + x * s, c + z * z * (1 - c)]])
+
+
 ROTATIONS_JL = {
-    21: (lambda p: expm(p["th"] * cpm(p["n"])),
-         lambda p: np.eye(3) + p["s"] * cpm(p["n"]) + (1 - p["c"]) * cpm(p["n"]) @ cpm(p["n"])),
+    21: (lambda p: expm(p["th"] * cpm(p["n"])), _rodrigues),
+    22: (_rodrigues, _written_out),
+    28: (lambda p: cpm(p["n"]), lambda p: np.array([[0, -p["n"][2], p["n"][1]],
+                                                    [p["n"][2], 0, -p["n"][0]],
+                                                    [-p["n"][1], p["n"][0], 0]])),
+    35: (lambda p: p["n"], lambda p: np.array([p["n"][0], p["n"][1], p["n"][2]])),
 }
 
 
@@ -84,7 +100,7 @@ def _numpy_holds(sides) -> bool:
 
 
 CASES = [("mathse-rodrigues-matrix.tex", MATHSE, 11),
-         ("rotations-jl-angleaxis.md", ROTATIONS_JL, 1),
+         ("rotations-jl-angleaxis.md", ROTATIONS_JL, 4),
          ("quaternions-jl-rotations.md", {}, 0)]
 
 
