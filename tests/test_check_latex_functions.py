@@ -594,3 +594,31 @@ def test_a_slice_of_a_parameter_at_an_argument_that_is_no_symbol(latex, let, ver
     double cover) and A at the quaternion of (e, θ) being Rodrigues' passive rotation are
     textbook facts (Markley & Crassidis 2014, ch. 2)."""
     assert rigidsym.check_latex(latex, let=let).verdict == verdict
+
+
+@pytest.mark.parametrize("bracket", [r"[\mathbf{n}]_\times", r"[\mathbf{n}]_{\times}",
+                                     r"\left[\mathbf{n}\right]_{ \times }"])
+@pytest.mark.parametrize("sign, verdict", [("+", "verified"), ("-", "does-not-hold")])
+def test_the_cross_product_bracket_reads_its_subscript_bare_or_braced(bracket, sign, verdict):
+    # TeX's _\times and _{\times} are one subscript (a Stack Exchange answer writes the
+    # outer-product identity n n^T = [n]_{\times}^2 + I so)
+    r = rigidsym.check_latex(rf"\mathbf{{n}}\mathbf{{n}}^T = {bracket}^2 {sign} \mathbf{{I}}",
+                             let=[r"\mathbf{n}: unit vector"], repairs=False)
+    assert r.verdict == verdict, r.detail
+
+
+@pytest.mark.parametrize("entry, verdict", [("n_y", "verified"), ("-n_y", "does-not-hold")])
+def test_a_declared_3_vectors_axis_subscripts_are_its_entries(entry, verdict):
+    # Rotations.jl writes R_n(theta) out in n_x, n_y, n_z beside the unit axis \bm{n}
+    latex = (r"[\bm{n}]_\times = \begin{pmatrix} 0 & -n_z & " + entry + r" \\ n_z & 0 & -n_x"
+             r" \\ -n_y & n_x & 0 \end{pmatrix}")
+    r, reading = rigidsym.api.check_latex_run(latex, [r"\bm{n}: unit vector"], None, (),
+                                              False)
+    assert r.verdict == verdict, r.detail
+    assert not reading.free and any("n_{x}: read as entry 1 (x)" in n for n in reading.notes)
+
+
+def test_an_axis_subscript_beside_no_3_vector_is_a_symbol_of_its_own():
+    r, reading = rigidsym.api.check_latex_run(r"q_x + \mathbf{q}^T\mathbf{q} = q_x + 1",
+                                              [r"\mathbf{q}: unit 4-vector"], None, (), False)
+    assert r.verdict == "verified" and "q_{x}" in reading.free

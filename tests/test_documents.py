@@ -13,10 +13,13 @@ from hypothesis import strategies as st
 import rigidsym
 from rigidsym.cli import main
 from rigidsym.core.errors import BadInput
-from rigidsym.documents import check_document, read_document
+from rigidsym.documents import check_document, conventions, exit_code, read_document
+from rigidsym.documents.checking import VERDICTS, DocumentResult
 from rigidsym.documents.declarations import plan
 from rigidsym.documents.displays import Display, Source
+from rigidsym.documents.html import as_html
 from rigidsym.documents.relations import split_display
+from rigidsym.documents.report import FIELDS
 from rigidsym.registry import declarations as registry
 
 DATA = Path(__file__).parent / "data" / "documents"
@@ -166,10 +169,98 @@ def test_cli_bad_input_and_one_of_file_or_latex(tmp_path, capsys):
     capsys.readouterr()
 
 
+# ----------------------------------------------------------------------- the HTML page
+@given(st.lists(st.sampled_from(VERDICTS), min_size=4, max_size=4))
+@settings(max_examples=10)
+def test_the_html_page_shows_each_display_in_order_with_its_verdicts(verdicts):
+    doc = read_document(DATA / "verdicts.md")
+    recs = []
+    for r, v in zip(doc.relations, verdicts, strict=True):
+        bad = v == "does-not-hold"
+        recs.append({k: None for k in FIELDS} | {
+            "file": r.file, "line": r.line, "display": r.display, "index": r.index,
+            "latex": r.latex, "label": r.label, "verdict": v,
+            "reason": None if v in ("verified", "does-not-hold") else f"why {r.index}",
+            "point": [{"latex": "\\mathbf{e}", "value": "[0; 1; 0]"}] if bad else None,
+            "corrected": "Q = 1" if bad else None,
+            "corrected_latex": "\\mathbf{Q} = \\boxed{\\mathbf{1}}" if bad else None,
+            "cause": "drop a term" if bad else None})
+    page = as_html(DocumentResult(doc, None, recs))
+    assert "<script" not in page and "src=" not in page  # offline: nothing fetched
+    at = [page.index(f'id="display-{d.number}"') for d in doc.displays]
+    assert at == sorted(at)  # the displays in the document's order
+    for rec in recs:  # each relation typeset, its verdict beside it, in its display
+        i = page.index(f'id="r-{rec["display"]}-{rec["index"]}"')
+        j = page.index("</div>", i)
+        assert "<math" in page[i:j] and f'badge {rec["verdict"]}"' in page[i:j]
+        assert page.index(f'id="display-{rec["display"]}"') < i
+    n_bad = verdicts.count("does-not-hold")
+    assert page.count("Counterexample (exact)") == n_bad
+    assert page.count("Corrected (drop a term)") == n_bad
+    assert page.count('<menclose notation="box">') == n_bad  # the edit boxed, in MathML
+
+
 @pytest.mark.slow
-def test_the_example_notes_find_their_slip(capsys):
-    code = main(["check", str(Path(__file__).parents[1] / "examples" / "notes.md")])
+def test_the_example_notes_find_their_slip(capsys, tmp_path):
+    code = main(["check", str(Path(__file__).parents[1] / "examples" / "notes.md"),
+                 "--html", str(tmp_path / "errata.html")])
     out = capsys.readouterr().out
+    page = (tmp_path / "errata.html").read_text(encoding="utf-8")
+    assert "Counterexample (exact)" in page and page.count('id="display-') == 5
     assert code == 1
     assert "DOES NOT HOLD" in out and "flip the sign" in out
     assert "an approximation" in out
+
+
+# ----------------------------------------------------------------------- conventions
+VERDICT = st.sampled_from(["verified", "does-not-hold", "undecided"])
+
+
+@given(st.lists(VERDICT, min_size=2, max_size=2), st.sampled_from(list(conventions.CHOICES)))
+def test_a_relation_under_each_open_convention_never_from_a_default(verdicts, key):
+    combos = [c for c, _ in conventions.choices([key])]
+    outs = [(c, {"verdict": v, "counterexample": f"x = {i}"})
+            for i, (c, v) in enumerate(zip(combos, verdicts, strict=True))]
+    got = conventions.combine([key], outs)
+    assert list(got["under"].values()) == verdicts  # each convention's verdict said
+    if len(set(verdicts)) == 1:
+        assert got["verdict"] == verdicts[0]
+    elif set(verdicts) == {"verified", "does-not-hold"}:
+        good = verdicts.index("verified")
+        bad = 1 - good
+        assert got["verdict"] == "convention-dependent" and got["corrected"] is None
+        name = [conventions.NAMES[c[0]] for c in combos]
+        assert got["reason"].startswith(f"holds under {name[good]}, not under {name[bad]}")
+        assert f"x = {bad}" in got["reason"] and key in got["reason"]
+    else:
+        assert got["verdict"] == "undecided"
+
+
+def test_a_convention_fixed_by_a_let_or_notation_is_not_open():
+    notes = ["quaternion product: Hamilton's ...", "tangent order: not declared; ..."]
+    assert conventions.open_in(notes, None, [], None) == ["quaternion_product",
+                                                          "tangent_order"]
+    assert conventions.open_in(notes, None, ["\\odot: JPL"], "barfoot") == []
+    assert conventions.open_in([], "the two orders disagree (--let 'tangent order: a')",
+                               [], None) == ["tangent_order"]
+    assert conventions.open_in(["numeric cross-check"], None, [], None) == []
+
+
+@pytest.mark.slow
+def test_open_conventions_decided_under_each_and_fixed_ones_said_back_once():
+    res = check_document(DATA / "conventions.md", repairs=False)
+    v = [r["verdict"] for r in res.records]
+    assert v == ["convention-dependent", "verified", "definition", "convention-dependent"]
+    qq, ad = res.records[0], res.records[3]
+    assert qq["reason"].startswith("holds under Hamilton's") and "not under JPL's" in \
+        qq["reason"]
+    assert ad["reason"].startswith("holds under the tangent order [v; ω]")
+    assert exit_code(res) == 3
+    fixed = check_document(DATA / "conventions.md", repairs=False,
+                           reading=DATA / "conventions-fixed.reading.toml")
+    assert [r["verdict"] for r in fixed.records] == ["verified", "verified", "definition",
+                                                     "verified"]
+    assert not any(r["under"] for r in fixed.records)
+    said = fixed.conventions
+    assert len(said) == 2 and sum("quaternion_product = hamilton" in c for c in said) == 1
+    assert exit_code(fixed) == 0

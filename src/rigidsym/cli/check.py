@@ -11,6 +11,7 @@ __all__ = ["add_arguments", "run", "HELP", "EXAMPLES", "EXIT"]
 HELP = "decide an equation written in LaTeX, or every display of a document (its symbols: --let)"
 EXAMPLES = r"""  rigidsym check notes.md          every displayed relation of a Markdown or LaTeX
                                    document; its symbols: notes.reading.toml beside it
+  rigidsym check notes.md --html errata.html   and the errata as one offline page (MathML)
   rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
       --let '\mathbf{Q}: rotation'
   rigidsym check --latex \
@@ -48,6 +49,10 @@ def add_arguments(c) -> None:
                         "X.reading.toml beside X.md, if there is one)")
     c.add_argument("--markdown", action="store_true",
                    help="with FILE: print the errata as Markdown (default: text)")
+    c.add_argument("--html", metavar="OUT",
+                   help="with FILE: also write the errata as one offline HTML page to OUT "
+                        "(the displays in order, MathML, each relation's verdict beside it; "
+                        "default: none)")
     c.add_argument("--let", action="append", metavar="DECL", default=[],
                    help="what a symbol is: 'NAME: KIND' or 'NAME = LATEX' (repeatable; one "
                         "value may hold several separated by '; '; default: none, every "
@@ -93,8 +98,8 @@ def run(args) -> int:
         from rigidsym.cli.check_document import run_document
 
         return run_document(args)
-    if args.reading or args.markdown:
-        print("rigidsym: error: --reading and --markdown go with a document FILE",
+    if args.reading or args.markdown or args.html:
+        print("rigidsym: error: --reading, --markdown and --html go with a document FILE",
               file=sys.stderr)
         return 2
     try:

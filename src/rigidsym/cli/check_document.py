@@ -34,4 +34,10 @@ def run_document(args) -> int:
                          timeout="default" if args.timeout is None else args.timeout,
                          progress=progress)
     print(as_json(res) if args.json else as_markdown(res) if args.markdown else as_text(res))
+    if args.html:
+        from rigidsym.core.files import write_atomic
+        from rigidsym.documents.html import as_html
+
+        write_atomic(args.html, as_html(res))
+        print(f"errata page: {args.html}", file=sys.stderr)
     return exit_code(res)

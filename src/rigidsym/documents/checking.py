@@ -16,15 +16,17 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rigidsym.core.errors import BadInput
-from rigidsym.documents import store
+from rigidsym.documents import conventions, store
 from rigidsym.documents.declarations import CONVENTION_LETS, Plan, plan
 from rigidsym.documents.document import Document, read_document
 from rigidsym.reading import Reading, load_reading, sidecar
 
 __all__ = ["DocumentResult", "VERDICTS", "check_document", "decide", "exit_code"]
 
-#: a relation's verdicts: the engine's, ``definition`` and ``not-checked``
-VERDICTS = ("verified", "does-not-hold", "definition", "undecided", "not-checked")
+#: a relation's verdicts: the engine's, ``convention-dependent`` (holds under one
+#: convention the document leaves open, not under another), ``definition``, ``not-checked``
+VERDICTS = ("verified", "does-not-hold", "convention-dependent", "definition", "undecided",
+            "not-checked")
 
 
 @dataclass
@@ -56,11 +58,12 @@ class DocumentResult:
 
 
 def exit_code(result: DocumentResult) -> int:
-    """1 if a relation does not hold, else 3 if one is not decided, else 0."""
+    """1 if a relation does not hold, else 3 if one is not decided (or holds under one
+    convention the document leaves open and not another), else 0."""
     c = result.counts()
     if c["does-not-hold"]:
         return 1
-    return 3 if c["undecided"] or c["not-checked"] else 0
+    return 3 if c["undecided"] or c["not-checked"] or c["convention-dependent"] else 0
 
 
 def _counterexample(r) -> str:
@@ -79,13 +82,15 @@ def decide(p: Plan, options: dict) -> dict:
                     "skip": "not-checked"}[p.action],
            "lets": list(p.lets), "verdict": None, "method": None, "read_as": None,
            "counterexample": None, "corrected": None, "corrected_latex": None,
-           "cause": None, "reason": None, "free": []}
+           "cause": None, "reason": None, "free": [], "under": None, "point": None}
     if p.action == "skip":
         return rec | {"verdict": "not-checked", "reason": p.reason}
     if p.action == "definition":
         return rec | {"verdict": "definition", "method": "document definition",
                       "reason": f"defines {p.defines} for the relations after it"}
-    return rec | _decided(r.latex, p.lets, options)
+    t = time.monotonic()
+    out = rec | _decided(r.latex, p.lets, options)
+    return out | {"seconds": round(time.monotonic() - t, 3)}
 
 
 def _decided(latex: str, lets: list[str], options: dict) -> dict:
@@ -100,6 +105,20 @@ def _decided(latex: str, lets: list[str], options: dict) -> dict:
 
 
 def _check(latex: str, lets: list[str], options: dict) -> dict:
+    """The verdict fields of ``latex`` with ``lets``; under each admissible convention
+    where it uses one nothing fixes (:mod:`.conventions`)."""
+    out, notes, refusal = _check_once(latex, lets, options)
+    keys = conventions.open_in(notes, refusal, lets, options["notation"])
+    if not keys:
+        return out
+    outs = [(combo, _check_once(latex, list(lets) + more, options)[0])
+            for combo, more in conventions.choices(keys)]
+    return conventions.combine(keys, outs)
+
+
+def _check_once(latex: str, lets: list[str], options: dict) -> tuple[dict, list[str],
+                                                                       str | None]:
+    """The verdict fields, the reading's notes and the engine's refusal (or ``None``)."""
     from rigidsym.api import check_latex_run
     from rigidsym.latex import LatexError
 
@@ -109,24 +128,28 @@ def _check(latex: str, lets: list[str], options: dict) -> dict:
                                      options["timeout"])
     except LatexError as exc:
         return {"verdict": "not-checked", "method": "not read",
-                "reason": f"a construct not read: {str(exc).splitlines()[0]}"}
+                "reason": f"a construct not read: {str(exc).splitlines()[0]}"}, [], None
     except BadInput as exc:
         return {"verdict": "not-checked", "method": "bad declarations",
-                "reason": str(exc).splitlines()[0]}
+                "reason": str(exc).splitlines()[0]}, [], str(exc)
     except Exception:  # noqa: BLE001 -- the reader's internal error: never a verdict
         return {"verdict": "not-checked", "method": "internal error",
-                "reason": "an internal error while reading this relation (never a verdict)"}
+                "reason": "an internal error while reading this relation (never a verdict)"
+                }, [], None
     out = {"verdict": r.verdict, "method": r.method,
            "read_as": reading.text if reading is not None else None}
     free = list(reading.free) if reading is not None else []
+    notes = list(reading.notes) if reading is not None else []
     if free:
         return out | {"verdict": "not-checked", "method": "undeclared symbols", "free": free,
                       "reason": "undeclared: " + ", ".join(free) + " (declare each in the "
-                                "reading file or with --let; never guessed)"}
+                                "reading file or with --let; never guessed)"}, notes, None
     if r.verdict == "undecided":
         out["reason"] = r.cause or r.detail or "undecided"
     if r.verdict == "does-not-hold":
         out["counterexample"] = _counterexample(r)
+        out["point"] = [{"latex": x.get("latex") or x.get("symbol"), "value": x.get("text")}
+                        for x in (r.counterexample or {}).get("symbols", [])]
         reps = r.repairs or []
         if reps:
             out["corrected"] = reps[0].get("text")
@@ -135,7 +158,7 @@ def _check(latex: str, lets: list[str], options: dict) -> dict:
         else:
             words = [s.get("words") for s in (r.repair_search or []) if s.get("words")]
             out["cause"] = "no repair found" + (f" ({words[0]})" if words else "")
-    return out
+    return out, notes, None
 
 
 def check_document(path: str | Path, *, reading: str | Path | None = None,
@@ -193,5 +216,15 @@ def check_document(path: str | Path, *, reading: str | Path | None = None,
     except KeyboardInterrupt:  # keep what was decided
         if progress is not None:
             progress(f"interrupted: {len(result.records)} of {len(plans)} relations decided")
+    for key in conventions.CHOICES:
+        n = sum(1 for rec in result.records
+                if rec.get("under") and any(conventions.NAMES[(key, v)] in w
+                                            for w in rec["under"] for v in
+                                            conventions.CHOICES[key]))
+        if n:
+            result.conventions.append(
+                f"{key}: not fixed by the document; {n} relation{'s' * (n != 1)} that "
+                f"use{'s' * (n == 1)} it decided under each of "
+                f"{', '.join(conventions.CHOICES[key])}")
     result.seconds = time.monotonic() - t0
     return result

@@ -20,6 +20,7 @@ declaration of a symbol that does not occur.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 from rigidsym.core.errors import BadInput
 from rigidsym.documents.relations import DEFINING, NOT_CHECKED, Relation
@@ -61,19 +62,28 @@ class Plan:
     let: str = ""
 
 
-def _keys(latex: str) -> set[str] | None:
+@lru_cache(maxsize=4096)
+def _glyphs(latex: str) -> frozenset[str] | None:
+    """The glyph keys of ``latex`` (memoised: a document's models are asked for again by
+    every relation after them), or ``None`` where it cannot be read."""
     from rigidsym.latex import LatexError
     from rigidsym.latex.declgraph import glyph_keys
 
     try:
-        return glyph_keys(latex)
+        return frozenset(glyph_keys(latex))
     except (LatexError, ValueError):
         return None
 
 
+def _keys(latex: str) -> set[str] | None:
+    got = _glyphs(latex)
+    return None if got is None else set(got)
+
+
+@lru_cache(maxsize=4096)
 def _one_let(text: str):
     """The :class:`rigidsym.latex.lets.Let` of ``text``, or ``None`` when its NAME is not
-    one symbol (or a function of parameters)."""
+    one symbol (or a function of parameters); memoised."""
     from rigidsym.latex import LatexError
     from rigidsym.latex.lets import read_lets
 

@@ -11,17 +11,19 @@ import json
 
 from rigidsym.documents.checking import VERDICTS, DocumentResult
 
-__all__ = ["FIELDS", "as_json", "as_markdown", "as_text"]
+__all__ = ["FIELDS", "as_json", "as_markdown", "as_text", "summary"]
 
 #: the keys of a relation's record
 FIELDS = ("file", "line", "column", "display", "index", "label", "latex", "op", "kind",
           "verdict", "method", "read_as", "counterexample", "corrected", "corrected_latex",
-          "cause", "reason", "free", "lets")
+          "cause", "reason", "free", "under", "point", "lets", "seconds")
 _WORDS = {"verified": "verified", "does-not-hold": "DOES NOT HOLD",
+          "convention-dependent": "holds under one convention",
           "definition": "definition", "undecided": "undecided", "not-checked": "not checked"}
 
 
-def _summary(res: DocumentResult) -> str:
+def summary(res: DocumentResult) -> str:
+    """The report's first line: the document, its relations and displays, the counts."""
     c = res.counts()
     parts = [f"{c[v]} {_WORDS[v].lower()}" + ("s" if v == "definition" and c[v] != 1 else "")
              for v in VERDICTS if c[v]]
@@ -37,14 +39,16 @@ def _detail(rec: dict) -> list[str]:
             out.append(f"corrected: {rec['corrected']}   ({rec['cause']})")
         elif rec["cause"]:
             out.append(rec["cause"])
-    elif rec["reason"] and rec["verdict"] != "verified":
+        if rec.get("under"):
+            out.append(rec["reason"])
+    elif rec["reason"] and (rec["verdict"] != "verified" or rec.get("under")):
         out.append(rec["reason"])
     return out
 
 
 def as_text(res: DocumentResult) -> str:
     """One line per relation, grouped by display, each with ``FILE:LINE``."""
-    lines = [_summary(res)]
+    lines = [summary(res)]
     if res.reading is not None:
         lines.append(f"reading: {res.reading.path}")
     lines += [f"convention: {c}" for c in res.conventions]
@@ -81,7 +85,7 @@ def _cell(text: str | None) -> str:
 def as_markdown(res: DocumentResult) -> str:
     """The errata as a Markdown table per display, the counterexample and the correction
     under a relation that does not hold."""
-    out = [f"# Errata of `{res.document.path}`", "", _summary(res), ""]
+    out = [f"# Errata of `{res.document.path}`", "", summary(res), ""]
     out += [f"- convention: {c}" for c in res.conventions]
     shown = None
     for rec in res.records:

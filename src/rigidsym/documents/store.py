@@ -21,7 +21,7 @@ from rigidsym.core import cache
 __all__ = ["FORMAT", "get", "key", "put"]
 
 #: the entry format (another format's entry is foreign: recomputed)
-FORMAT = 1
+FORMAT = 2
 
 
 def key(latex: str, lets: list[str], options: dict) -> str:

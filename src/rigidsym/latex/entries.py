@@ -12,6 +12,9 @@ book writes a vector's entries (Markley & Crassidis' ``q_4``, Shuster's ``q_1 ..
   reading is unique wherever the LaTeX writes either; where it writes neither and the two
   verdicts differ, the statement is refused naming the entry that settles it
   (``\mathbf{q}_{1:1}``).
+- A 3-vector declared by a ``--let``: ``n_x``, ``n_y``, ``n_z`` are its entries 1, 2, 3
+  (Rotations.jl's ``R_{\bm{n}}`` written out in ``n_x ... n_z``; :data:`AXES`), said under
+  ``read as:`` the same way; ``--let 'n_x: scalar'`` makes one a symbol of its own.
 - A bold subscripted name, ``\mathbf{p}_1`` beside ``\mathbf{p}``, is a vector's name in the
   books (point 1) as often as an entry: a choice point between a symbol of its own and the
   entry; the rule above reads the plain (or Greek) letters only.
@@ -26,7 +29,7 @@ such identity as ambiguous.
 
 from __future__ import annotations
 
-__all__ = ["DECLARED_PARAM", "BASE_READINGS", "entry_index", "is_base_point", "base_point",
+__all__ = ["AXES", "DECLARED_PARAM", "BASE_READINGS", "entry_index", "is_base_point", "base_point",
            "base_words", "base_settles"]
 
 #: the end of a parameter glyph's meaning when a ``--let`` declares the global vector of
@@ -37,6 +40,9 @@ DECLARED_PARAM = " (a --let declares it too)"
 BASE_READINGS = ("entry", "entry0")
 
 _BASE = " counted from 1 or 0"
+
+#: the axis subscripts of a 3-vector's entries, and the entry each names (from 1)
+AXES = {"x": 1, "y": 2, "z": 3}
 
 
 def is_base_point(key: str) -> bool:

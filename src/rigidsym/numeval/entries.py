@@ -3,7 +3,8 @@ written from the attitude books, not from the reader: a ``--let``'s vector of n
 entries has entries ``q_1 ... q_n`` (Markley & Crassidis, Shuster); a 4-vector may be
 counted from 0 instead (Diebel's, Kuipers' ``q_0 ... q_3``, scalar first), a choice point of
 the letter whose reading fails where its count does not fit (``q_0`` from 1, ``q_4`` from
-0); another subscript (Kuipers' ``q_0`` beside a 3-vector) names a symbol of its own.
+0); a declared 3-vector's ``n_x``, ``n_y``, ``n_z`` are its entries 1 to 3; another
+subscript (Kuipers' ``q_0`` beside a 3-vector) names a symbol of its own.
 Imports lark and the standard library only (the contract of :mod:`rigidsym.numeval`)."""
 
 from __future__ import annotations
@@ -55,6 +56,20 @@ def entry_of_declared(ev, t, k: int, letter: str, decls: dict, base_letter, text
     return None
 
 
+def _axis_entry(ev, i: int, letter: str, base_letter):
+    """``n_x``, ``n_y``, ``n_z``: entry ``i`` (from 0) of the declared 3-vector of
+    ``letter``, as the books write a unit axis's components; ``None`` where no declared
+    3-vector has that letter (a symbol of its own)."""
+    for d in ev.env.decls.values():
+        if not (isinstance(d.name, lark.Tree) and base_letter(d.name)[0] == letter
+                and base_letter(d.name)[2]):
+            continue
+        v = ev.value(d.name)
+        if V.is_matrix(v) and v.cols == 1 and v.rows == 3:
+            return v[i]
+    return None
+
+
 def entries_of(ev, t, base_letter, text_of):
     r"""``q_{1:3}``: entries 1 to 3 of the vector q (1-based, inclusive), ``q_{4:4}`` entry 4;
     ``q_4`` beside a declared ``q`` or ``\mathbf{q}`` (:func:`entry_of_declared`); ``None``
@@ -72,6 +87,9 @@ def entries_of(ev, t, base_letter, text_of):
         if isinstance(tok, lark.Token) and tok.type == "SUBATOM" and str(tok).isdigit():
             return entry_of_declared(ev, t, int(str(tok)), base_letter(t)[0], ev.env.decls,
                                      base_letter, text_of)
+        if isinstance(tok, lark.Token) and tok.type == "SUBATOM" and str(tok) in "xyz" \
+                and len(str(tok)) == 1 and not base_letter(t)[1]:
+            return _axis_entry(ev, "xyz".index(str(tok)), base_letter(t)[0], base_letter)
         return None
     lo, hi = (int(x) for x in str(tok).replace(" ", "").split(":"))
     v = ev.value(lark.Tree("glyph", [t.children[0]]))

@@ -12,7 +12,7 @@ from dataclasses import dataclass, replace
 import lark
 import sympy as sp
 
-from rigidsym.latex.entries import DECLARED_PARAM, entry_index
+from rigidsym.latex.entries import AXES, DECLARED_PARAM, entry_index
 from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
 from rigidsym.latex.table import lookup
@@ -191,13 +191,21 @@ class GlyphRules:
         unless told). ``None`` where it is no choice: the symbol, by the rules."""
         if not getattr(self, "reader", False) or accent or inner is not None or pre \
                 or len(rest) != 1 or not isinstance(rest[0], tuple) \
-                or not rest[0][1].isdigit() or key in self.overrides:
+                or not (rest[0][1].isdigit() or rest[0][1] in AXES) \
+                or key in self.overrides:
             return None
-        k = int(rest[0][1])
+        axis = rest[0][1] in AXES
+        k = AXES[rest[0][1]] if axis else int(rest[0][1])
         for vbase in dict.fromkeys([("bold", base[1]), base]):
             vkey = self._key(vbase, [], None)
             g = self.overrides.get(vkey)
             shape = getattr(g, "shape", ())
+            if axis and (shape != (3, 1) or base[0] == "bold" or g.kind == "param"):
+                continue  # n_x: an entry of a declared 3-vector only
+            if axis:
+                self.readings.append(f"{key}: read as entry {k} ({rest[0][1]}) of {vkey} "
+                                     f"(--let '{key}: scalar' for a symbol of its own)")
+                return GlyphKey(key, base, rest, accent, self._symbol(vkey, vbase)[k - 1, 0])
             if len(shape) == 2 and shape[1] == 1 and shape[0] > 1 and base[0] != "bold" and (
                     g.kind != "param" or g.meaning.endswith(DECLARED_PARAM)):
                 try:  # a --let's vector: its entry, counted from 1 (from 0 too: a 4-vector)
