@@ -29,14 +29,16 @@ READING = ROOT / "derivations" / "angeles-chapter3.reading.toml"
 
 
 def model_glyphs() -> set[str]:
-    """The glyphs the reading gives a model (``NAME = LATEX``: what the page says in words
-    or by another display, written in the table's glyphs)."""
+    """The glyphs the reading gives a model in words (``NAME = LATEX`` with a ``where``: what
+    the page says in words or by another display, written in the table's glyphs; a formula
+    cited from another display, ``cites``, left out)."""
     from rigidsym.reading import load_reading
 
     out = set()
     for x in load_reading(READING).lets:
         colon, eq = x.let.find(":"), x.let.find("=")
-        if eq >= 0 and (colon < 0 or eq < colon) and "\\mathrm{CPM}" not in x.let:
+        if eq >= 0 and (colon < 0 or eq < colon) and "\\mathrm{CPM}" not in x.let \
+                and x.where and not x.cites:
             out.add(x.let[:eq].strip())
     return out
 

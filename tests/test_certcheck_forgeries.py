@@ -138,7 +138,10 @@ def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
     c = json.loads(json.dumps(certs["3.13"]))  # a citation of (3.11) that (3.11) does not print
     q = next(s for s in c["symbols"] if s.get("printed_as"))
     q["printed_as"] = "(3.11)"
-    rc, out = _rejected(tmp_path / "cite", "3.13", c)
+    rc, out = _rejected(tmp_path / "cite", "3.13", c)   # the reading's line cites (2.49)
+    assert rc == 1 and "FAILED 3.13.json: (3.13)" in out and "(3.11)" in out, out[-600:]
+    forge.write_run(tmp_path / "cite-page", {"3.13.json": c}, BOOK)   # the page alone
+    rc, out = _run("--book", BOOK, tmp_path / "cite-page", "--quiet")
     assert rc == 1 and "does not print" in out and "(3.11)" in out, out[-600:]
 
 
