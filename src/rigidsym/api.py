@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 import time
 from collections.abc import Iterable, Sequence
+from time import process_time
 from types import ModuleType
 
 from rigidsym.latex.statement import said_choices
@@ -128,7 +129,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         repair_seconds: a time limit of the repair search in seconds (default
             :data:`REPAIR_SECONDS`, 10; ``None``: none): past it the verdict is given with
             "search stopped after N s, K candidates tried".
-        timeout: a time limit of the whole check in seconds (``None``: none; the default,
+        timeout: a limit of the whole check in seconds of CPU time (``None``: none; the default,
             ``"default"``: 60 s, or the environment variable ``RIGIDSYM_LATEX_TIMEOUT``,
             seconds or ``none``): past it the verdict is ``undecided``, its ``cause`` naming
             the step it was in (reading, the symbolic zero test, the other readings, the
@@ -189,14 +190,30 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     _seconds(repair_seconds)
     let, order, said = tangent.split_setting(let, notation)
     let, product, product_said = quaternions.split_setting(let, notation)
+    product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
+    if not product_fixed:  # the user's own lets may fix the storage order (scalar last)
+        stored = quaternions.storage_order(let)
+        if stored is not None:
+            product, product_said, product_fixed = \
+                stored[0], f"storage order: --let '{stored[1]}'", True
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
-    t0, seen = time.monotonic(), {}
+    t0, seen = process_time(), {}
     try:
         with limit.limited(seconds), quaternions.using(product, product_said), \
                 quaternion_convention(product == quaternions.JPL):
             with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
                 r, reading = _check_latex_steps(latex, let, book, modules, repairs,
                                                 repair_budget, notation, repair_seconds, seen)
+            if not product_fixed and r.verdict != "undecided" and any(
+                    n.startswith("quaternion product:") for n in reading.notes):
+                # the product is used and nothing declares its convention: read in JPL's too
+                with quaternions.using(quaternions.JPL, quaternions.OTHER), \
+                        quaternion_convention(True), tangent.using(order, said), \
+                        tangent_order(order == tangent.TRANSLATION):
+                    other, _ = _check_latex_steps(latex, let, book, modules, False,
+                                                  repair_budget, notation, repair_seconds, {})
+                quaternions.both_conventions(r.verdict, other.verdict, reading.notes)
+                r.model = list(r.model) + reading.notes[-1:]
             if fixed or r.verdict == "undecided" or not any(
                     n.startswith("tangent order:") for n in reading.notes):
                 return r, reading
@@ -209,7 +226,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
             return r, reading
     except limit.TimeUp as exc:
         return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
-                        time.monotonic() - t0)
+                        process_time() - t0)
 
 
 def _time_up(exc, latex, let, book, modules, notation, reading, seconds):
@@ -326,6 +343,10 @@ def _choice_words(key: str) -> str:
     if key.endswith(" shape"):
         return (f"{key[:-6]} (a bold capital no --let declares) can be a 3×3 matrix or a "
                 f"3-vector")
+    from rigidsym.latex.transformer.meanings import is_cross_bracket
+
+    if is_cross_bracket(key):
+        return _cross_words(key)
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -340,6 +361,16 @@ def _choice_words(key: str) -> str:
     return f"{key}(...) can be read as a product or as {key} applied to its argument"
 
 
+def _cross_words(key: str) -> str:
+    """``[A x\\wedge]`` in words: its readings and their books
+    (:data:`rigidsym.latex.contested.CONTESTED`)."""
+    from rigidsym.latex.contested import construct
+
+    c = construct("bracket cross")
+    return (f"{key} (a product before x\\wedge inside a bracket) can be read as "
+            + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
+
+
 def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
@@ -350,6 +381,12 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
+    from rigidsym.latex.transformer.meanings import is_cross_bracket
+
+    if is_cross_bracket(key):
+        left, x = key[1:].rsplit("\\", 1)[0].rsplit(" ", 1)
+        return (f"write [{left} {x}]_\\times (the content's cross-product matrix) or "
+                f"{left}[{x}]_\\times ({left} times)")
     if key.startswith("[["):
         return (f"write [{key[2:-2]}]_\\times or -[{key[2:-2]}]_\\times for {key}, or a "
                 f"--let function (--let 'N(\\mathbf{{u}}) = -[\\mathbf{{u}}]_\\times')")

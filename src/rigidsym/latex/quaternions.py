@@ -15,6 +15,7 @@ Roumeliotis (2005) (8)); the second semantics has its own (:mod:`rigidsym.numeva
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -25,7 +26,8 @@ from rigidsym.core.errors import BadInput
 from rigidsym.latex.let_text import split_lets
 
 __all__ = ["HAMILTON", "JPL", "NAMES", "current", "declared", "using", "split_setting",
-           "product", "conjugate", "inverse", "said", "NOTATION_PRODUCTS", "word"]
+           "product", "conjugate", "inverse", "said", "NOTATION_PRODUCTS", "word",
+           "storage_order", "both_conventions", "OTHER"]
 
 HAMILTON, JPL = "Hamilton", "JPL"
 #: the glyphs of the product, as a --let NAME
@@ -100,8 +102,65 @@ def split_setting(let, notation: str | None = None) -> tuple[object, str, str | 
     return (let if text is None else kept), convention, text
 
 
+#: the declaration text of the other convention's reading (it joins that reading's id)
+OTHER = "\\otimes: JPL (the undeclared convention's other reading)"
+#: a --let's slice of three entries of a 4-vector: \bar q_{1:3} (scalar last), q_{2:4}
+#: (scalar first), counted from 1
+_SLICE = re.compile(r"_\{\s*([1-4])\s*:\s*([1-4])\s*\}")
+
+
+def storage_order(let) -> tuple[str, str] | None:
+    """The convention a user's own ``--let`` s fix by the 4-vector's storage order:
+    ``(JPL, text)`` where one names entries 1 to 3 as the vector part (``\\mathbf{q} =
+    \\bar q_{1:3}``: the scalar last), ``(HAMILTON, text)`` where one names entries 2 to 4
+    (the scalar first); ``None`` where none does or they contradict each other."""
+    if let is None:
+        return None
+    try:
+        strings = split_lets([let] if isinstance(let, str) else
+                             [f"{k} = {v}" for k, v in let.items()] if isinstance(let, dict)
+                             else list(let))
+    except (TypeError, AttributeError):
+        return None
+    found = {}
+    for s in strings:
+        for m in _SLICE.finditer(s):
+            lo, hi = int(m.group(1)), int(m.group(2))
+            if (lo, hi) == (1, 3):
+                found.setdefault(JPL, s)
+            elif (lo, hi) == (2, 4):
+                found.setdefault(HAMILTON, s)
+    return next(iter(found.items())) if len(found) == 1 else None
+
+
+def both_conventions(first: str, other: str, notes: list[str]) -> None:
+    """A statement that uses the quaternion product with no convention declared, read in
+    both: ``first`` the verdict in Hamilton's, ``other`` in JPL's. Where they agree a note is
+    appended to ``notes``.
+
+    Raises:
+        BadInput: they differ: the convention is the reader's to declare, never assumed.
+    """
+    if first == other:
+        notes.append(f"quaternion product: no convention declared; the statement read in "
+                     f"both, Hamilton's (scalar first, ij = k) and JPL's (scalar last, ij = "
+                     f"-k): both {first}")
+        return
+    raise BadInput(f"--latex: the quaternion product \\otimes (\\odot) can be read as "
+                   f"Hamilton's (scalar first q = [w; x; y; z], ij = k: Solà (2017), Kok-Hol-"
+                   f"Schön) or as JPL's (scalar last q = [x; y; z; w], ij = -k: Trawny & "
+                   f"Roumeliotis (2005)), nothing declares it, and the two disagree (Hamilton: "
+                   f"{first}; JPL: {other}): say which, --let '\\otimes: Hamilton' or --let "
+                   f"'\\otimes: JPL' (or --notation jpl), or name the vector part in a --let "
+                   f"(\\mathbf{{q}} = \\bar q_{{1:3}}: the scalar last)")
+
+
 def said() -> str:
     """The reading's note of the convention used."""
+    text = declared()
+    if text and text.startswith("storage order:"):
+        return (f"quaternion product: {current()}'s, the storage order fixed by "
+                f"{text[len('storage order:'):].strip()}")
     if current() == JPL:
         return ("quaternion product: JPL's, scalar last q = [x; y; z; w], ij = -k "
                 "(Trawny & Roumeliotis (2005) (8))")

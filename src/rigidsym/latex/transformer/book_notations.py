@@ -202,7 +202,10 @@ class BookNotationRules:
 
     def cross_op(self, items):
         a, tok = self._val(items[0]), str(items[1])
-        return self._cross_matrix(a, dual="*" in tok)
+        r = self._cross_matrix(a, dual="*" in tok)
+        if "*" not in tok:  # [A x\wedge]: a contested bracket (RigidMotionRules.hat_bracket)
+            self.made[r] = ("cross_op", (a, "\\wedge" if "wedge" in tok else "\\times"))
+        return r
 
     def _cross_matrix(self, a, dual: bool):
         s = matrix_shape(a)

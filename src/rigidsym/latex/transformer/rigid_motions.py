@@ -172,6 +172,8 @@ class RigidMotionRules:
 
         v = self._val(x)
         own_tilde(self, x)  # [\tilde{x}]: Schaub & Junkins' matrix, no hat of a vector
+        if matrix_shape(v) == (3, 3):
+            return self._cross_bracket(v)
         if matrix_shape(v) not in ((3, 1), (6, 1)):
             return v
         how = self.made.get(v)
@@ -191,6 +193,37 @@ class RigidMotionRules:
             self._note(tangent.said())
         # printed [x] as written (transformer.meanings)
         return as_written(rigid_motions.hat(v, tangent.rigid_order()))
+
+    def _cross_bracket(self, v):
+        """``[A\\mathbf{x}\\wedge]`` (``\\times``): a contested construct
+        (:mod:`rigidsym.latex.contested`, "bracket cross"): the cross-product matrix of the
+        content ``[(A x)]_×`` (Groves) or ``A [x]_×`` (the operator binds to the factor
+        before it, Featherstone), a choice point read both ways. Any other 3 x 3 content
+        groups."""
+        from rigidsym.algebra.operators import Cpm
+        from rigidsym.printing import notation
+
+        how = self.made.get(v)
+        if not how or how[0] != "mul":
+            return v
+        left, op = how[1]
+        made = self.made.get(op)
+        if not made or made[0] != "cross_op":
+            return v
+        x, tok = made[1]
+        content = left * x
+        if matrix_shape(content) != (3, 1):
+            return v
+        key = f"[{notation.text(left)} {notation.text(x)}{tok}]"
+        self.choice_points.setdefault(key, alternatives(key))
+        if self.choices.get(key, alternatives(key)[0]) == "bind":
+            self._note(f"{key}: read as {notation.text(left)} [{notation.text(x)}]_× (a "
+                       f"choice: or the cross-product matrix of the content)")
+            return v
+        self._note(f"{key}: read as the cross-product matrix of the content "
+                   f"[{notation.text(content)}]_× (a choice: or {notation.text(left)} "
+                   f"[{notation.text(x)}]_×)")
+        return Cpm(content)
 
     # ---- derivatives
     def deriv_op(self, items):
