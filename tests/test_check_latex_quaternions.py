@@ -52,14 +52,17 @@ def test_each_books_product_matrix_holds_in_its_convention_and_not_in_the_other(
 
 
 def test_an_undeclared_convention_that_matters_is_asked_and_odot_is_the_same_product():
-    # Solà's left matrix read with no convention: Hamilton's verifies it, JPL's does not, so
-    # the reader asks, naming both readings and each verdict; never a default
+    # Trawny's left matrix (entries 1 to 4, nothing fixing the storage order) read with no
+    # convention: JPL's verifies it, Hamilton's does not, so the reader asks, naming both
+    # readings and each verdict; never a default
     for op in (r"\otimes", r"\odot"):
-        with pytest.raises(BadInput, match=r"Hamilton: verified; JPL: does-not-hold") as e:
-            _check(LEFT.replace(r"\otimes", op), PQ + [SOLA_L])
+        with pytest.raises(BadInput, match=r"Hamilton: does-not-hold; JPL: verified") as e:
+            _check(LEFT.replace(r"\otimes", op), PQ + [TRAWNY_L])
         assert r"--let '\otimes: JPL'" in str(e.value) and "Trawny" in str(e.value)
-    r = _check(LEFT.replace(r"\otimes", r"\odot"), PQ + [SOLA_L, HAM])
-    assert r.verdict == "verified" and "Hamilton" in _said(r)[0]
+    # Solà's, written in p_0 (entries counted from 0): the scalar first, Hamilton's, said
+    r = _check(LEFT.replace(r"\otimes", r"\odot"), PQ + [SOLA_L])
+    assert r.verdict == "verified" and "Hamilton's, the storage order fixed by the entry p_0" \
+        in _said(r)[0], _said(r)
 
 
 def test_a_statement_true_in_both_conventions_is_decided_and_said_so():

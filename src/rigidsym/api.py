@@ -192,10 +192,10 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     let, product, product_said = quaternions.split_setting(let, notation)
     product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
     if not product_fixed:  # the user's own lets may fix the storage order (scalar last)
-        stored = quaternions.storage_order(let)
+        stored = quaternions.storage_order(let, latex)
         if stored is not None:
             product, product_said, product_fixed = \
-                stored[0], f"storage order: --let '{stored[1]}'", True
+                stored[0], f"storage order: {stored[1]}", True
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
     t0, seen = process_time(), {}
     try:

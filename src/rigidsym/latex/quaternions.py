@@ -109,27 +109,51 @@ OTHER = "\\otimes: JPL (the undeclared convention's other reading)"
 _SLICE = re.compile(r"_\{\s*([1-4])\s*:\s*([1-4])\s*\}")
 
 
-def storage_order(let) -> tuple[str, str] | None:
-    """The convention a user's own ``--let`` s fix by the 4-vector's storage order:
-    ``(JPL, text)`` where one names entries 1 to 3 as the vector part (``\\mathbf{q} =
-    \\bar q_{1:3}``: the scalar last), ``(HAMILTON, text)`` where one names entries 2 to 4
-    (the scalar first); ``None`` where none does or they contradict each other."""
-    if let is None:
-        return None
-    try:
-        strings = split_lets([let] if isinstance(let, str) else
-                             [f"{k} = {v}" for k, v in let.items()] if isinstance(let, dict)
-                             else list(let))
-    except (TypeError, AttributeError):
-        return None
-    found = {}
+#: a column of two blocks, ``\\begin{bmatrix} 0 \\\\ \\mathbf{v} \\end{bmatrix}``
+_BLOCKS = re.compile(r"\\begin\{[bp]matrix\}((?:(?!\\end\{|&).)*?)\\\\((?:(?!\\end\{|&|"
+                     r"\\\\).)*?)\\end\{[bp]matrix\}", re.S)
+_BOLD = re.compile(r"\\(?:mathbf|boldsymbol|bm)\b")
+#: a norm's content (a scalar whatever it holds): \|\boldsymbol\eta\|
+_NORMS = re.compile(r"\\\|.*?\\\|")
+#: a plain letter's entry 0, q_0, q_{0}
+_ZERO = re.compile(r"(?<![A-Za-z\\])([a-z])_\{?\s*0\s*\}?(?![0-9])")
+
+
+def storage_order(let, latex: str = "") -> tuple[str, str] | None:
+    """The convention the user's own writing fixes by the 4-vector's storage order:
+    ``(JPL, how)`` where a ``--let`` names entries 1 to 3 as the vector part (``\\mathbf{q} =
+    \\bar q_{1:3}``: the scalar last) or a column of two blocks puts a bold vector above a
+    scalar, ``(HAMILTON, how)`` where a ``--let`` names entries 2 to 4 or a column puts the
+    scalar first (Kok-Hol-Schön's ``[0; \\mathbf{v}]``); ``None`` where nothing does or the
+    signs contradict each other. ``how`` says which writing fixed it."""
+    strings: list[str] = []
+    if let is not None:
+        try:
+            strings = split_lets([let] if isinstance(let, str) else
+                                 [f"{k} = {v}" for k, v in let.items()]
+                                 if isinstance(let, dict) else list(let))
+        except (TypeError, AttributeError):
+            strings = []
+    found: dict[str, str] = {}
     for s in strings:
         for m in _SLICE.finditer(s):
             lo, hi = int(m.group(1)), int(m.group(2))
             if (lo, hi) == (1, 3):
-                found.setdefault(JPL, s)
+                found.setdefault(JPL, f"--let '{s}'")
             elif (lo, hi) == (2, 4):
-                found.setdefault(HAMILTON, s)
+                found.setdefault(HAMILTON, f"--let '{s}'")
+    for text in [latex, *strings]:
+        for m in _BLOCKS.finditer(text or ""):
+            top, bottom = (bool(_BOLD.search(_NORMS.sub("", g))) for g in m.groups())
+            if top != bottom:
+                written = " ".join(m.group(0).split())
+                found.setdefault(JPL if top else HAMILTON, f"the column {written}")
+    for text in [latex, *strings]:  # q_0 of a bold q: entries counted from 0, scalar first
+        for m in _ZERO.finditer(text or ""):
+            if re.search(r"\\(?:mathbf|boldsymbol|bm|bar)\s*\{?\s*" + re.escape(m.group(1))
+                         + r"(?![A-Za-z])", " ".join([latex, *strings])):
+                found.setdefault(HAMILTON, f"the entry {m.group(0)} (counted from 0: the "
+                                           f"scalar first)")
     return next(iter(found.items())) if len(found) == 1 else None
 
 
