@@ -290,6 +290,9 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     step("deciding")
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
                          repair_seconds=_seconds(repair_seconds)))
+    from rigidsym.latex.tangent_rates import project_rates
+
+    project_rates(r.counterexample, reading.rows)  # a unit vector's rate: the one used
     if reading.others:  # several readings type-check: a verdict only when all agree
         step("readings")
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
