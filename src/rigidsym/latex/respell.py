@@ -108,10 +108,12 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
 
 
-def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list) -> str:
+def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
+                            form: str = "[{}]_\\times") -> str:
     """``text`` with each accent ``opening`` matches (up to its opening brace) whose braced
-    argument ``takes`` (a predicate of the argument's text) respelt ``[ARG]_\\times``; each
-    argument respelt is appended to ``hits``. An unbalanced brace leaves the rest as is."""
+    argument ``takes`` (a predicate of the argument's text) respelt ``form`` of ARG
+    (``[ARG]_\\times``); each argument respelt is appended to ``hits``. An unbalanced brace
+    leaves the rest as is."""
     out, k = [], 0
     for m in opening.finditer(text):
         if m.start() < k:
@@ -123,7 +125,7 @@ def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list) -
         inner = text[m.end():j - 1]
         if depth or not takes(inner):
             continue
-        out += [text[k:m.start()], f"[{inner}]_\\times"]
+        out += [text[k:m.start()], form.format(inner)]
         hits.append(inner)
         k = j
     return "".join(out) + text[k:]
@@ -359,9 +361,11 @@ _ONE_GLYPH = re.compile(r"\s*(?:" + _GLYPH + r")\s*(?:_\s*(?:\{[^{}]*\}|\\?[A-Za
 
 def hat_expressions(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\widehat{X}`` whose braces hold more than one glyph
-    (Chirikjian's ``\\widehat{R\\boldsymbol\\omega}``, the hat of a vector expression)
-    respelt ``[X]_\\times`` in the LaTeX and the declarations (``note`` says so); else all
-    unchanged and ``note`` is ``""``. A hat over one glyph is left to the glyph's reading.
+    (Chirikjian's ``\\widehat{R\\boldsymbol\\omega}``, Bullo-Lewis'
+    ``\\widehat{\\mathrm{Ad}_g\\xi}``: the hat of a vector expression) respelt
+    ``(X)^\\wedge`` in the LaTeX and the declarations (``note`` says so): so(3) of a
+    3-vector, se(3) of a 6-vector; else all unchanged and ``note`` is ``""``. A hat over
+    one glyph is left to the glyph's reading.
 
     Args and Raises: as :func:`declared_e`.
     """
@@ -369,13 +373,14 @@ def hat_expressions(latex: str, let: object) -> tuple[str, object, str]:
 
     def respell(text: str) -> str:
         return _braced_as_cross_matrix(text, _WIDEHAT,
-                                       lambda inner: not _ONE_GLYPH.fullmatch(inner), hits)
+                                       lambda inner: not _ONE_GLYPH.fullmatch(inner), hits,
+                                       "({})^\\wedge")
 
     new, out = _respelt(respell, latex, let)
     if not hits:
         return latex, let, ""
-    return new, out, (f"\\widehat{{{hits[0]}}}: the hat of the vector {hits[0]} (its "
-                      f"cross-product matrix), read as [{hits[0]}]_\\times")
+    return new, out, (f"\\widehat{{{hits[0]}}}: the hat of the vector {hits[0]} (so(3) of a "
+                      f"3-vector, se(3) of a 6-vector), read as ({hits[0]})^\\wedge")
 
 
 _DELTA_NAME = re.compile(r"\\Delta\s*(?P<glyph>" + _GLYPH + r")\s*"
