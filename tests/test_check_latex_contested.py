@@ -127,3 +127,17 @@ def test_the_docs_table_lists_every_construct_with_its_books():
         for r in c.readings:
             assert f"**{r.name}**" in row and r.books.split(" (")[0].split(",")[0] in row, \
                 (c.key, r.name)
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"[F_1, F_2] = F_1F_2 - F_2F_1", "verified"),  # Hall (2015) Def. 2.21
+    (r"[F_1, F_2] = F_2F_1 - F_1F_2", "does-not-hold"),
+])
+def test_the_commutator_of_two_matrices_is_read(latex, verdict):
+    assert _check(latex, [r"F_1: matrix", r"F_2: matrix"]).verdict == verdict
+
+
+def test_a_bracket_of_two_vectors_is_refused_saying_what_to_write():
+    with pytest.raises(ValueError, match=r"\[x\^\\wedge, y\^\\wedge\]"):
+        _check(r"[\mathbf{a}, \mathbf{b}] = \mathbf{0}",
+               [r"\mathbf{a}: vector", r"\mathbf{b}: vector"])

@@ -256,6 +256,14 @@ class Evaluator:
             return self._bracket(inner)
         return self.value(inner)
 
+    def r_commutator(self, t):
+        """``[X, Y]``: XY - YX of two square matrices of one size."""
+        a, b = (self.value(k) for k in self._kids(t))
+        if not (V.is_matrix(a) and V.is_matrix(b)) or a.rows != a.cols \
+                or (a.rows, a.cols) != (b.rows, b.cols):
+            raise NotCovered(f"a commutator of no two square matrices in {text_of(t)!r}")
+        return V.add(V.mul(a, b), V.neg(V.mul(b, a)))
+
     def r_bracket(self, t):
         return self._bracket(self._kids(t)[0])
 

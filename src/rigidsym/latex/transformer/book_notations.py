@@ -200,6 +200,23 @@ class BookNotationRules:
                              f"expected two 6-vectors (Featherstone's v \\times^* f)", "shapes")
         return self._cross_matrix(a, dual=True) * b
 
+    def commutator(self, items):
+        """``[X, Y]``: the commutator ``XY - YX`` of two square matrices of one size (Hall
+        (2015) Def. 2.21's bracket of matrices); of two 3-vectors it is refused naming what
+        to write."""
+        a, b = (self._val(i) for i in _content(items))
+        sa, sb = matrix_shape(a), matrix_shape(b)
+        if sa is not None and sa == sb and sa[0] == sa[1]:
+            self._note("[X, Y]: the commutator XY - YX")
+            return a * b - b * a
+        if sa in ((3, 1), (6, 1)) and sa == sb:
+            raise LatexError(f"[x, y] of two {sa[0]}-vectors: the Lie bracket is not read; "
+                             f"write [x^\\wedge, y^\\wedge] (the commutator of their hats: "
+                             f"x^\\wedge y^\\wedge - y^\\wedge x^\\wedge) or, of 3-vectors, "
+                             f"x \\times y", "shapes")
+        raise LatexError(f"[X, Y] between {shape_words(a)} and {shape_words(b)}: the "
+                         f"commutator XY - YX needs two square matrices of one size", "shapes")
+
     def cross_op(self, items):
         a, tok = self._val(items[0]), str(items[1])
         r = self._cross_matrix(a, dual="*" in tok)
