@@ -141,3 +141,30 @@ def test_a_bracket_of_two_vectors_is_refused_saying_what_to_write():
     with pytest.raises(ValueError, match=r"\[x\^\\wedge, y\^\\wedge\]"):
         _check(r"[\mathbf{a}, \mathbf{b}] = \mathbf{0}",
                [r"\mathbf{a}: vector", r"\mathbf{b}: vector"])
+
+
+ROT = r"\mathbf{Q}(t): rotation"
+SPACE = r"\dot{\mathbf{Q}} = [\boldsymbol\omega]_\times\mathbf{Q}"
+BODY = r"\dot{\mathbf{Q}} = \mathbf{Q}[\boldsymbol\omega]_\times"
+
+
+@pytest.mark.parametrize("declared, latex, verdict", [
+    (r"\boldsymbol\omega: angular velocity of \mathbf{Q}", SPACE, "verified"),
+    pytest.param(r"\boldsymbol\omega: angular velocity of \mathbf{Q}", BODY, "does-not-hold",
+                 marks=SLOW),
+    pytest.param(r"\boldsymbol\omega: angular velocity of \mathbf{Q} in the body frame", BODY,
+                 "verified", marks=SLOW),
+    pytest.param(r"\boldsymbol\omega: body angular velocity of \mathbf{Q}", SPACE,
+                 "does-not-hold", marks=SLOW),
+])
+def test_the_angular_velocity_of_a_rotation_is_declarable_in_words(declared, latex, verdict):
+    r = _check(latex, [ROT, declared])
+    assert r.verdict == verdict
+    assert any("angular velocity of \\mathbf{Q}, read as" in m for m in r.model), r.model
+
+
+def test_no_note_names_the_readers_own_body_velocity():
+    r = _check(SPACE, [ROT, r"\boldsymbol\omega: vector"])
+    assert r.verdict == "does-not-hold"  # ω free: the relation does not hold for every ω
+    assert not any("Q_w" in m or "Q_{w}" in m for m in r.model), r.model
+    assert any("introduced by the reader" in m for m in r.model), r.model

@@ -260,6 +260,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
+        angular_velocities,
         conjugate_c,
         cross_subscripts,
         declared_deltas,
@@ -273,6 +274,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     from rigidsym.latex.statement import declare_latex
 
     step("reading")
+    latex, let, spin = angular_velocities(latex, let)  # ω: angular velocity of Q
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
@@ -283,7 +285,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt):
+    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading
@@ -310,8 +312,29 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     if second:
         reading.notes.append(second)
     r.expected = r.verdict
-    r.model = list(r.model) + reading.notes
+    r.model = _without_own(list(r.model), reading.rows) + reading.notes
     return r, reading
+
+
+def _without_own(model: list[str], rows: dict) -> list[str]:
+    """The model's lines without the reader's own symbols (a rotation's body velocity,
+    said in words where the reader makes it) in its ``free:`` line: a message names only
+    what the user wrote."""
+    from rigidsym.printing import notation
+
+    own = {notation.book_group(g.name) for g in rows.values()
+           if getattr(g, "meaning", "") == "body velocity"}
+    if not own:
+        return model
+    out = []
+    for line in model:
+        if line.startswith("free: "):
+            kept = [x for x in line[6:].split(", ") if x not in own]
+            if not kept:
+                continue
+            line = "free: " + ", ".join(kept)
+        out.append(line)
+    return out
 
 
 def _readings_agree(reading, first, others) -> None:

@@ -51,7 +51,7 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["conjugate_c", "cross_subscripts", "declared_deltas", "declared_e",
+__all__ = ["angular_velocities", "conjugate_c", "cross_subscripts", "declared_deltas", "declared_e",
            "declared_labels", "floor_cross", "hat_expressions", "rate_entries",
            "tilde_expressions"]
 
@@ -441,3 +441,42 @@ def conjugate_c(latex: str, let: object) -> tuple[str, object, str]:
         return latex, let, ""
     new, out = _respelt(lambda t: _CONJ_C.sub("^{*}", t), latex, let)
     return new, out, ("q^c: the conjugate of a quaternion (Kok, Hol & Schön), read as q^*")
+
+
+#: ``NAME: angular velocity of X`` (the space frame's, unless ``in the body frame`` or
+#: ``body angular velocity of X``)
+_SPIN = re.compile(r"^\s*(?P<name>.+?)\s*:\s*(?:the\s+)?(?P<body>body\s+)?angular\s+velocity"
+                   r"\s+of\s+(?P<of>.+?)(?:\s+in\s+the\s+(?P<frame>body|space)\s+frame)?"
+                   r"\s*$")
+
+
+def angular_velocities(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``--let 'NAME: angular velocity of X'`` (X a rotation of
+    time; the books' "ω is the angular velocity of Q") respelt as its model, in the space
+    frame ``NAME = (\\dot{X}X^T)^\\vee`` (``\\dot X = [ω]_× X``), in the body frame
+    (``... in the body frame``, ``body angular velocity of X``) ``NAME = (X^T\\dot{X})^\\vee``
+    (``\\dot X = X [ω]_×``); ``note`` says so. Else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    decls = _decls(let)
+    if not decls:
+        return latex, let, ""
+    out, said = [], []
+    for d in decls:
+        m = _SPIN.match(d)
+        if not m:
+            out.append(d)
+            continue
+        x = m["of"].strip()
+        dot = f"\\dot{{{x}}}"
+        body = bool(m["body"]) or m["frame"] == "body"
+        model = f"({x}^T{dot})^\\vee" if body else f"({dot}{x}^T)^\\vee"
+        out.append(f"{m['name'].strip()} = {model}")
+        said.append(f"{m['name'].strip()}: the {'body' if body else 'space'} angular velocity "
+                    f"of {x}, read as {m['name'].strip()} = {model} ({dot} = "
+                    + (f"{x}[{m['name'].strip()}]_\\times)" if body else
+                       f"[{m['name'].strip()}]_\\times {x})"))
+    if not said:
+        return latex, let, ""
+    return latex, out, "; ".join(said)

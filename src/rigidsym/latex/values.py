@@ -138,7 +138,9 @@ def glyph_values(rd: GlyphReader, lend: dict, values: dict,
                                  g.shape[1] == 1 else
                                  (lambda n, s=g.shape: _sym.matrix(n, *s)), g.name, scalars)
     angles = _periodic_angles(rd, free, values, printed, scalars)
-    free_ = [f for f, k in zip(free_, free, strict=True) if k not in angles]
+    # the reader's own (a rotation's body velocity) is said where it is made, not here
+    own = {k for k in free if (rd.over.get(k) or rd.glyphs[k]).meaning == "body velocity"}
+    free_ = [f for f, k in zip(free_, free, strict=True) if k not in angles and k not in own]
     notes += [f"{k}: an angle (no --let declares it): it occurs only in {', '.join(fs)}, at "
               f"integer multiples, so the relation has period 2π in {k} and deciding it for "
               f"{k} in (-π, π) decides it for every real {k}" if d == 1 else

@@ -331,8 +331,10 @@ class BookNotationRules:
             w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
             self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
                                                  "body velocity", "")
-            self._note(f"{dkey} = {g.name} [{w.name}]: the time derivative of a "
-                       f"{g.meaning.split(',')[0]} ({w.name} its body velocity, free)")
+            self._note(f"{dkey}: the time derivative of a {g.meaning.split(',')[0]}, "
+                       f"{key} [w] with w the body {'angular ' if n == 3 else ''}velocity "
+                       f"of {key}, introduced by the reader (free; --let "
+                       f"'\\boldsymbol\\omega: angular velocity of {key}' names it)")
             return value * rigid_motions.hat(w)
         if dkey not in self.glyphs:
             self._note(f"{dkey}: the time derivative of {key} (a function of time, free)")
