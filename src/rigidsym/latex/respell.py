@@ -191,11 +191,18 @@ def _entry_rate(letter: str) -> re.Pattern:
                       + tail + r")\s*_\s*(?:\{\s*(?P<k>\d)\s*\}|(?P<k1>\d))")
 
 
+#: a vector of time, ``\\mathbf{e}(t): unit 4-vector``: the rate of its entries is its rate's
+_TIMED_VECTOR = re.compile(
+    r"\\(?P<font>mathbf|boldsymbol|bm)\s*\{?\s*(?P<letter>\\[A-Za-z]+|[A-Za-z])\s*\}?\s*"
+    r"\(t\)\s*:[^=]*vector")
+
+
 def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\dot\\epsilon_k`` beside a ``--let`` of the rate
-    ``\\dot{\\boldsymbol\\epsilon}`` (a model or a kind) respelt as that rate's entry
-    ``\\dot{\\boldsymbol{\\epsilon}}_{k:k}`` in the LaTeX and the other declarations (``note``
-    says so); else all unchanged and ``note`` is ``""``.
+    ``\\dot{\\boldsymbol\\epsilon}`` (a model or a kind), or of the vector as a function of
+    time (``\\mathbf{e}(t): unit 4-vector``, Baruh's ``\\dot e_0``), respelt as that rate's
+    entry ``\\dot{\\boldsymbol{\\epsilon}}_{k:k}`` in the LaTeX and the other declarations
+    (``note`` says so); else all unchanged and ``note`` is ``""``.
 
     Counted from 1, as Greenwood's ``\\epsilon_1 ... \\epsilon_4``; from 0 where the LaTeX or a
     declaration writes the letter's subscript 0 (Kuipers' ``q_0``).
@@ -207,9 +214,9 @@ def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
         return latex, let, ""
     rates = {}
     for i, d in enumerate(decls):
-        m = _RATE_DECL.match(d.strip())
+        m = _RATE_DECL.match(d.strip()) or _TIMED_VECTOR.match(d.strip())
         if m:
-            rates[m["letter"]] = (m["font"], i)
+            rates.setdefault(m["letter"], (m["font"], i))
     hits: list[str] = []
     for letter, (font, i) in rates.items():
         pat = _entry_rate(letter)
