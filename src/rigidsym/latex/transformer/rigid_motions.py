@@ -70,11 +70,17 @@ class RigidMotionRules:
 
     def _exp(self, x, how):
         s = matrix_shape(x)
+        if s == (1, 1):
+            x, s = as_scalar(x), None
         if s is None:
-            raise LatexError(f"{how} of a scalar{self._named(x)}: the scalar exponential is "
-                             f"not decided exactly by the engine; {how} is read as the "
-                             f"matrix exponential of a 3x3 (so(3)) or 4x4 (se(3)) exponent",
-                             "shapes")
+            from rigidsym.printing import notation
+
+            raise LatexError(f"{how} of the scalar {notation.text(x)}: a scalar exponential, "
+                             f"which the engine does not decide exactly (its vocabulary has "
+                             f"the matrix exponential of a 3x3 (so(3)) or 4x4 (se(3)) "
+                             f"exponent only); write the value it takes where you know it "
+                             f"(Jacobi's \\det e^{{X}} = e^{{\\operatorname{{tr}} X}} of X: "
+                             f"so(3), tr X = 0: \\det e^{{X}} = 1)", "shapes")
         if s not in ((3, 3), (4, 4)):
             raise LatexError(f"{how} of {shape_words(x)}{self._named(x)}: expected a 3x3 (so(3)) "
                              f"or 4x4 (se(3)) exponent, e.g. [\\hat\\omega]\\theta with "
