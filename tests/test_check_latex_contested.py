@@ -168,3 +168,5 @@ def test_no_note_names_the_readers_own_body_velocity():
     assert r.verdict == "does-not-hold"  # ω free: the relation does not hold for every ω
     assert not any("Q_w" in m or "Q_{w}" in m for m in r.model), r.model
     assert any("introduced by the reader" in m for m in r.model), r.model
+    names = [s["symbol"] for s in r.counterexample["symbols"]]
+    assert "Q_w" not in names and any("body angular velocity of" in n for n in names), names

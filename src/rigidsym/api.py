@@ -292,9 +292,10 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     step("deciding")
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
                          repair_seconds=_seconds(repair_seconds)))
-    from rigidsym.latex.tangent_rates import project_rates
+    from rigidsym.latex.printed_point import own_symbols_said, project_rates
 
     project_rates(r.counterexample, reading.rows)  # a unit vector's rate: the one used
+    own_symbols_said(r.counterexample, reading.rows)  # never the reader's internal name
     if reading.others:  # several readings type-check: a verdict only when all agree
         step("readings")
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])

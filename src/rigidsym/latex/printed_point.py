@@ -1,10 +1,13 @@
-"""A counterexample is the point it claims: the rate of a unit vector printed tangent.
+"""A counterexample is the point it claims, in the user's words.
 
-The reader reads the rate of a unit vector ``\\mathbf{e}(t)`` as ``(1 - e e^T) ė`` with ``ė``
-free (:mod:`rigidsym.latex.transformer.book_notations`), so the symbolic path's point gives
-the free ``ė``; the statement used its projection on the tangent of the sphere. The printed
-point gives the projection, the value the check used, which satisfies ``e · ė = 0``: a
-reader substituting the printed values by hand finds both printed sides.
+- The rate of a unit vector printed tangent: the reader reads the rate of ``\\mathbf{e}(t)``
+  as ``(1 - e e^T) ė`` with ``ė`` free (:mod:`rigidsym.latex.transformer.book_notations`), so
+  the symbolic path's point gives the free ``ė``; the statement used its projection on the
+  tangent of the sphere. The printed point gives the projection, the value the check used,
+  which satisfies ``e · ė = 0``: a reader substituting the printed values by hand finds both
+  printed sides (:func:`project_rates`).
+- A symbol the reader introduced (a rotation's body velocity, the reader's ``Q_w``) is
+  printed in words, never by its internal name (:func:`own_symbols_said`).
 """
 
 from __future__ import annotations
@@ -14,7 +17,7 @@ import sympy as sp
 from rigidsym.checking.deciding.point_values import decimal_text
 from rigidsym.printing import notation
 
-__all__ = ["project_rates"]
+__all__ = ["project_rates", "own_symbols_said"]
 
 
 def _vector(point: dict, name: str, n: int) -> sp.Matrix | None:
@@ -54,3 +57,27 @@ def project_rates(counterexample: dict | None, rows: dict) -> None:
             if s.get("latex") in (f"\\dot{{{key}}}", f"\\dot{key}"):
                 s.update(exact=sp.sstr(tangent), text=notation.text(tangent),
                          decimal=decimal_text(tangent))
+
+
+def own_symbols_said(counterexample: dict | None, rows: dict) -> None:
+    """Name, in ``counterexample``'s ``symbols`` (changed in place), each symbol the reader
+    introduced by what it is: ``w, the body angular velocity of \\mathbf{Q}, introduced by
+    the reader`` for a rotation's (``... velocity`` for a transform's).
+
+    Args:
+        counterexample: the symbolic path's, or ``None``.
+        rows: the reading's glyph key -> glyph; the reader's own have the meaning
+            ``body velocity`` and the key ``OWNER_{w}``.
+    """
+    if not counterexample:
+        return
+    said = {}
+    for key, g in rows.items():
+        if getattr(g, "meaning", "") == "body velocity" and key.endswith("_{w}"):
+            owner = key[:-len("_{w}")]
+            angular = "angular " if tuple(getattr(g, "shape", ()) or ()) == (3, 1) else ""
+            said[key] = (f"w, the body {angular}velocity of {owner}, introduced by the "
+                         f"reader")
+    for s in counterexample.get("symbols") or []:
+        if s.get("latex") in said:
+            s["symbol"] = said[s["latex"]]
