@@ -37,7 +37,7 @@ def _cases() -> dict:
 
 CASES = _cases()
 #: one case per kind in the quick run
-FAST = {"latex_books_typed_b:k-wie-quat-slip"}
+FAST = {"lie_books_typed:k-rot-orth-slip"}
 
 
 @pytest.fixture(autouse=True)
