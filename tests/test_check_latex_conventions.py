@@ -40,9 +40,9 @@ def test_both_tables_name_the_same_constructs_and_readings_each_written_separate
         assert set(readings) == {r.name for r in CONTESTED[name].readings}, name
 
 
-def _second(latex, lets, choices=None, jpl=False) -> bool:
+def _second(latex, lets, choices=None, jpl=False, translation=False) -> bool:
     """Whether the second semantics, in the reading given, finds the sides equal."""
-    with V.quaternion_convention(jpl):
+    with V.quaternion_convention(jpl), V.tangent_order(translation):
         found = residuals(tree(latex), decls_of(read_lets(lets)), 4, choices=choices)
     worst = max(r.relative for r in found)
     assert worst < VANISHES or worst > FAILS, worst
@@ -70,4 +70,20 @@ def test_the_quaternion_product_disagrees_exactly_where_the_readings_differ(late
     verdict = rigidsym.check_latex(latex, let=Q + [rf"\otimes: {theirs}"], repairs=False
                                    ).verdict
     equal = _second(latex, Q, jpl=mine == "JPL")
+    assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)
+
+
+#: the hat of a twist written as the block matrix of an angular-first twist [ω; v]
+XI = [r"\boldsymbol\xi = \begin{bmatrix} \boldsymbol\omega \\ \mathbf{v} \end{bmatrix}",
+      r"\boldsymbol\omega: vector", r"\mathbf{v}: vector"]
+HAT = (r"\boldsymbol\xi^\wedge = \begin{bmatrix} [\boldsymbol\omega]_\times & \mathbf{v} \\ "
+       r"\mathbf{0}^T & 0 \end{bmatrix}")
+
+
+@pytest.mark.parametrize("mine", conventions.TANGENT)
+@pytest.mark.parametrize("theirs", [r.name for r in CONTESTED["tangent order"].readings])
+def test_the_tangent_order_disagrees_exactly_where_the_readings_differ(mine, theirs):
+    verdict = rigidsym.check_latex(HAT, let=XI + [f"tangent order: {theirs}"], repairs=False
+                                   ).verdict
+    equal = _second(HAT, XI, translation=mine == "translation first")
     assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)
