@@ -170,3 +170,18 @@ def test_no_note_names_the_readers_own_body_velocity():
     assert any("introduced by the reader" in m for m in r.model), r.model
     names = [s["symbol"] for s in r.counterexample["symbols"]]
     assert "Q_w" not in names and any("body angular velocity of" in n for n in names), names
+
+
+@pytest.mark.parametrize("reading, verdict", [("content", "verified"),
+                                              pytest.param("bind", "does-not-hold",
+                                                           marks=SLOW)])
+def test_a_declared_bracket_cross_is_used_by_both_semantics_and_said(reading, verdict):
+    r = _check(GROVES, C + [f"bracket cross: {reading}"])
+    assert r.verdict == verdict
+    assert any("declared by --let 'bracket cross" in m for m in r.model), r.model
+    assert any(m.startswith("numeric cross-check") for m in r.model), r.model
+
+
+def test_a_bracket_cross_reading_no_book_has_is_refused_naming_both():
+    with pytest.raises(BadInput, match=r"'bracket cross: content', 'bracket cross: bind'"):
+        _check(GROVES, C + ["bracket cross: inside"])

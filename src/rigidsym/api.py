@@ -181,7 +181,8 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                  repair_seconds=REPAIR_SECONDS, timeout=TIMEOUT):
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI;
     ``None`` where the time limit passed before the LaTeX was read)."""
-    from rigidsym.latex import limit, quaternions, tangent
+    from rigidsym.latex import contested, limit, quaternions, tangent
+    from rigidsym.numeval.conventions import declared_readings
     from rigidsym.numeval.values import quaternion_convention, tangent_order
 
     seconds = limit.default_seconds() if timeout == "default" else \
@@ -190,6 +191,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     _seconds(repair_seconds)
     let, order, said = tangent.split_setting(let, notation)
     let, product, product_said = quaternions.split_setting(let, notation)
+    let, settled, settled_said = contested.split_settings(let)  # 'bracket cross: content'
     product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
     if not product_fixed:  # the user's own lets may fix the storage order (scalar last)
         stored = quaternions.storage_order(let, latex)
@@ -200,7 +202,8 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     t0, seen = process_time(), {}
     try:
         with limit.limited(seconds), quaternions.using(product, product_said), \
-                quaternion_convention(product == quaternions.JPL):
+                quaternion_convention(product == quaternions.JPL), \
+                contested.using(settled, settled_said), declared_readings(settled):
             with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
                 r, reading = _check_latex_steps(latex, let, book, modules, repairs,
                                                 repair_budget, notation, repair_seconds, seen)
@@ -412,7 +415,8 @@ def _settles(key: str) -> str:
 
     if is_cross_bracket(key):
         left, x = key[1:].rsplit("\\", 1)[0].rsplit(" ", 1)
-        return (f"write [{left} {x}]_\\times (the content's cross-product matrix) or "
+        return (f"--let 'bracket cross: content' or --let 'bracket cross: bind', or write "
+                f"[{left} {x}]_\\times (the content's cross-product matrix) or "
                 f"{left}[{x}]_\\times ({left} times)")
     if key.startswith("[["):
         return (f"write [{key[2:-2]}]_\\times or -[{key[2:-2]}]_\\times for {key}, or a "

@@ -12,9 +12,16 @@ The second semantics (:mod:`rigidsym.numeval`) has its own table of the same con
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass
 
-__all__ = ["Reading", "Construct", "CONTESTED", "construct", "readings_of"]
+from rigidsym.core.errors import BadInput
+from rigidsym.latex.let_text import split_lets
+
+__all__ = ["Reading", "Construct", "CONTESTED", "construct", "readings_of", "DECLARABLE",
+           "declared", "declared_texts", "using", "split_settings"]
 
 
 @dataclass(frozen=True)
@@ -47,7 +54,8 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
                  "Groves (2013) (2.50), Titterton & Weston (2004)"),
          Reading("bind", "x× binds to the factor before it: A [x]_×",
                  "Featherstone (2008) (2.31)-(2.33): E r× is E (r×)")),
-        r"write [A\mathbf{x}]_\times (the content) or A[\mathbf{x}]_\times (A times)"),
+        r"--let 'bracket cross: content' or --let 'bracket cross: bind' (or write "
+        r"[A\mathbf{x}]_\times for the content, A[\mathbf{x}]_\times for A times)"),
     Construct(
         "quaternion product", r"\mathbf{p}\otimes\mathbf{q}, \mathbf{p}\odot\mathbf{q}",
         (Reading("Hamilton", "scalar first q = [w; x; y; z], ij = k",
@@ -98,3 +106,63 @@ def construct(key: str) -> Construct:
 def readings_of(key: str) -> tuple[str, ...]:
     """The names of the readings of the construct ``key``, the first shown first."""
     return tuple(r.name for r in CONTESTED[key].readings)
+
+
+#: the constructs a ``--let 'CONSTRUCT: READING'`` settles here (the quaternion product and
+#: the tangent order have declarations of their own: rigidsym.latex.quaternions, .tangent)
+DECLARABLE = ("bracket cross",)
+_DECLARED: ContextVar[tuple[dict, tuple] | None] = ContextVar("contested_declared",
+                                                             default=None)
+
+
+def declared(key: str) -> str | None:
+    """The reading of the construct ``key`` a ``--let`` declared for the check running now,
+    or ``None``."""
+    return (_DECLARED.get() or ({}, ()))[0].get(key)
+
+
+def declared_texts() -> tuple[str, ...]:
+    """The ``--let`` texts that declared readings now (they join the check's id)."""
+    return (_DECLARED.get() or ({}, ()))[1]
+
+
+@contextmanager
+def using(readings: dict, texts=()) -> Iterator[None]:
+    """Within the block the constructs of ``readings`` (key -> reading) are read so, as the
+    ``--let`` s ``texts`` declare."""
+    token = _DECLARED.set((dict(readings), tuple(texts)))
+    try:
+        yield
+    finally:
+        _DECLARED.reset(token)
+
+
+def split_settings(let) -> tuple[object, dict, list[str]]:
+    """``let`` without its ``CONSTRUCT: READING`` declarations (:data:`DECLARABLE`), the
+    readings they declare, and their texts (which join the check's id).
+
+    Raises:
+        BadInput: a reading the construct does not have, or a construct declared twice.
+    """
+    if let is None or isinstance(let, dict):
+        return let, {}, []
+    try:
+        strings = split_lets([let] if isinstance(let, str) else list(let))
+    except (TypeError, AttributeError):
+        return let, {}, []
+    kept, found, texts = [], {}, []
+    for s in strings:
+        name, _, value = s.partition(":")
+        key = " ".join(name.split()).lower()
+        if key not in DECLARABLE or not value.strip():
+            kept.append(s)
+            continue
+        names = readings_of(key)
+        if value.strip().lower() not in names:
+            raise BadInput(f"--let '{s}': expected one of "
+                           + ", ".join(f"'{key}: {n}'" for n in names))
+        if key in found:
+            raise BadInput(f"--let: {key} is declared twice")
+        found[key] = value.strip().lower()
+        texts.append(s)
+    return (let if not found else kept), found, texts

@@ -15,7 +15,12 @@ two semantics shared by accident could not decide a statement alone.
 
 from __future__ import annotations
 
-__all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "choice_key"]
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+
+__all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "choice_key", "settled",
+           "declared_readings"]
 
 #: [A x\wedge]: the content's hat, or A times x's hat
 BRACKET_CROSS = ("content", "bind")
@@ -31,3 +36,30 @@ READINGS = {"bracket cross": BRACKET_CROSS, "quaternion product": QUATERNION,
 def choice_key(construct: str, text: str) -> str:
     """The choice point of ``construct`` (a key of :data:`READINGS`) written ``text``."""
     return f"{construct} {text}"
+
+
+_SETTLED: ContextVar[dict | None] = ContextVar("numeval_settled", default=None)
+
+
+def settled(construct: str) -> str | None:
+    """The reading of ``construct`` the user declared for this evaluation, or ``None``
+    (every reading of :data:`READINGS` is then evaluated)."""
+    return (_SETTLED.get() or {}).get(construct)
+
+
+@contextmanager
+def declared_readings(readings: dict) -> Iterator[None]:
+    """Within the block each construct of ``readings`` (name -> reading, one of
+    :data:`READINGS`) is read so, as the user's ``--let 'CONSTRUCT: READING'`` says.
+
+    Raises:
+        ValueError: a construct or reading this semantics does not have.
+    """
+    for k, v in readings.items():
+        if v not in READINGS.get(k, ()):
+            raise ValueError(f"readings: {k!r}: {v!r} is no reading of this semantics")
+    token = _SETTLED.set(dict(readings))
+    try:
+        yield
+    finally:
+        _SETTLED.reset(token)

@@ -293,7 +293,8 @@ class Evaluator:
         if content is None or V.shape(content) != (3, 1):
             return V.mul(a, self.value(op))
         key = conventions.choice_key("bracket cross", text_of(inner))
-        if self.choose(key, conventions.BRACKET_CROSS) == "content":
+        how = conventions.settled("bracket cross") or self.choose(key, conventions.BRACKET_CROSS)
+        if how == "content":
             return V.hat(content)
         return V.mul(a, V.hat(x))
 
