@@ -32,27 +32,6 @@ def _driver():
     return mod
 
 
-#: the longest the build stays silent between two progress lines, in seconds (a reader
-#: takes a longer silence for a hang)
-_SILENCE = 2.5
-
-
-def _tenths(t0: float):
-    """A progress callback printing a line at each tenth of the build, and between tenths
-    whenever :data:`_SILENCE` seconds passed without one (pip shows them with ``-v``;
-    without it pip is silent for the whole compile, minutes on 2 cores)."""
-    shown = [0, t0]
-
-    def progress(done: int, total: int) -> None:
-        tenth, now = 10 * done // max(total, 1), time.perf_counter()
-        if tenth > shown[0] or now - shown[1] >= _SILENCE or done == total:
-            shown[:] = [tenth, now]
-            print(f"rigidsym: {min(done, total - 1)}/{total - 1} objects"
-                  f"{' and the link' if done == total else ''} "
-                  f"({100 * done // max(total, 1)} %), {now - t0:.0f} s", flush=True)
-    return progress
-
-
 class BuildKernels(build_ext):
     """build_ext for the kernels: the driver compiles and links; setuptools only places the
     module (in the wheel, or beside the sources for an editable install)."""
@@ -94,11 +73,13 @@ class BuildKernels(build_ext):
         print(f"rigidsym: compiling {n} objects ({', '.join(p.name for p in cfg.paths)}; "
               f"OpenMP {cfg.openmp}, libmvec {cfg.libmvec}) on {drv.jobs()} cores, about "
               f"{drv.estimate_seconds(GENERATED / 'c', cfg):.0f} s", flush=True)
+        # a line at each tenth of the objects and whenever 2.5 s passed without one, naming
+        # what runs (pip shows them with -v; without it pip is silent for the whole compile)
         t0 = time.perf_counter()
         Path(self.build_temp).mkdir(parents=True, exist_ok=True)
         stats: dict = {}
         with tempfile.TemporaryDirectory(dir=self.build_temp) as tmp:
-            drv.build(GENERATED, out, cfg, Path(tmp), stats=stats, progress=_tenths(t0))
+            drv.build(GENERATED, out, cfg, Path(tmp), stats=stats, progress=drv.text_progress(t0))
         # what was built, in what time: kernels.build_info()["build"] reads it back
         stats.update(paths=[p.name for p in cfg.paths],
                      built=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()))

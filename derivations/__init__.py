@@ -7,6 +7,11 @@ so that adding a section touches no other file).
 
 import importlib
 import pkgutil
+from pathlib import Path
+
+#: the reading of the page these declarations transcribe: each glyph's kind or model and
+#: each id's class, the file certcheck binds every certificate to (``--reading``)
+READING = Path(__file__).with_name("angeles-chapter3.reading.toml")
 
 for _m in sorted(m.name for m in pkgutil.iter_modules(__path__) if m.name.startswith("sec3_")):
     importlib.import_module(f"{__name__}.{_m}")

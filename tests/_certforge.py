@@ -230,6 +230,9 @@ def write_run(folder: Path, certs: dict, book: Path) -> None:
         data = (json.dumps(c, indent=1) + "\n").encode()
         (folder / name).write_bytes(data)
         listed[name] = hashlib.sha256(data).hexdigest()
+    reading = Path(__file__).resolve().parents[1] / "derivations" / \
+        "angeles-chapter3.reading.toml"
     man = {"certificates": listed, "rigidsym": "forged",
-           "book_sha256": hashlib.sha256(book.read_bytes()).hexdigest()}
+           "book_sha256": hashlib.sha256(book.read_bytes()).hexdigest(),
+           "reading_sha256": hashlib.sha256(reading.read_bytes()).hexdigest()}
     (folder / "MANIFEST.json").write_text(json.dumps(man, indent=1) + "\n")

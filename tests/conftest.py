@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import os
 import shutil
+import sys
 import tempfile
-from pathlib import Path
 
+import _book
 import _bytecode  # noqa: F401  (first: before sympy is imported; tests/_bytecode.py)
 import _profile
 import _shared_run
@@ -51,7 +52,8 @@ def pytest_configure(config):
     if "RIGIDSYM_CACHE" not in os.environ:
         os.environ["RIGIDSYM_CACHE"] = tempfile.mkdtemp(prefix="rigidsym-tests-")
         _CREATED.append(os.environ["RIGIDSYM_CACHE"])   # xdist workers inherit it
-    os.environ.pop("RIGIDSYM_OBJECT_CACHE", None)       # the tests' objects: in their cache
+    # the tests' objects: in their own cache (RIGIDSYM_CACHE does not move the object cache)
+    os.environ["RIGIDSYM_OBJECT_CACHE"] = os.path.join(os.environ["RIGIDSYM_CACHE"], "objects")
     os.environ.setdefault("RIGIDSYM_LATEX_TIMEOUT", "none")  # no verdict rests on the load
     become_subreaper()
 
@@ -92,7 +94,24 @@ def pytest_xdist_node_collection_finished(node, ids):
         _say(node.config, f"rigidsym tests: {len(ids)} collected; running (a mark per test; "
                           "the chapter's verdicts are decided once, on one worker)")
 
-CHAPTER = Path(__file__).resolve().parents[2] / "shared" / "book" / "angeles-chapter3.md"
+sys.addaudithook(_book._audit)   # the guard: opens under ../shared (tests/_book.py)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_runtest_setup(item):
+    _book.begin(item.nodeid)          # before any fixture of the test is set up
+
+
+@pytest.hookimpl(trylast=True)
+def pytest_runtest_teardown(item, nextitem):
+    # no test reads outside the checkout but through tests/_book.py, which skips where the
+    # chapter is absent: a test that opened ../shared another way passes only beside the
+    # project's own checkout, and fails in every other clone
+    opened = _book.ungranted(item.nodeid)
+    if opened:
+        pytest.fail(f"{item.nodeid} opened {', '.join(opened)} outside the checkout without "
+                    "tests/_book.py (book_path, book_text or the book fixture): a clone with "
+                    "no ../shared would fail it", pytrace=False)
 
 
 @pytest.fixture(scope="session")
@@ -100,18 +119,16 @@ def registry():
     return load_all()
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture
 def chapter_text():
-    if not CHAPTER.exists():
-        pytest.skip(f"the chapter is not beside the checkout ({CHAPTER}); the project never "
-                    "ships it")
-    return CHAPTER.read_text(encoding="utf-8")
+    """The chapter's text (skips the test where it is absent: it is never shipped)."""
+    return _book.book_text()
 
 
-@pytest.fixture(scope="session")
-def book(chapter_text):
+@pytest.fixture
+def book():
     """The chapter's text, as certcheck's page-reading tests name it (skips without it)."""
-    return chapter_text
+    return _book.book_text()
 
 
 @pytest.fixture(scope="session")
@@ -167,6 +184,15 @@ def pytest_collection_modifyitems(session, config, items):
             if _profile.plain(item.nodeid) not in keep:
                 item.add_marker("slow")
     _thorough_shares(config, items)
+    # the tests that read the chapter (its fixtures, or a module that reads it through
+    # tests/_book.py): marked ``book``, so that .ci/run's thorough part, beside the chapter,
+    # runs them after the README's command ran them (skipping) in a clone with no ../shared
+    readers = {id(getattr(_book, n)) for n in ("book_path", "book_text", "BOOK")}
+    for item in items:
+        module = getattr(item, "module", None)
+        if ({"book", "chapter_text"} & set(getattr(item, "fixturenames", ()))
+                or any(id(v) in readers for v in vars(module).values() if module)):
+            item.add_marker("book")
     # the tests of the chapter's certificates on one worker (--dist loadgroup): the other
     # worker runs other tests while the first builds them, instead of waiting on the lock
     for item in items:

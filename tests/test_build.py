@@ -7,6 +7,7 @@ tests/test_wheel.py, which owns the session's wheel fixture.
 
 from __future__ import annotations
 
+import itertools
 import json
 import os
 import subprocess
@@ -363,9 +364,35 @@ def test_object_cache_off_and_its_folder():
     try:
         os.environ["RIGIDSYM_OBJECT_CACHE"] = "0"
         assert _objects.root() is None
+        os.environ["RIGIDSYM_OBJECT_CACHE"] = "/elsewhere/objs"
+        assert _objects.root() == Path("/elsewhere/objs")
         os.environ.pop("RIGIDSYM_OBJECT_CACHE")
-        os.environ["RIGIDSYM_CACHE"] = "/somewhere/cache"
-        assert _objects.root() == Path("/somewhere/cache/objects")
+        os.environ["XDG_CACHE_HOME"] = "/home/x/.cache"
+        assert _objects.root() == Path("/home/x/.cache/rigidsym/objects")
+    finally:
+        os.environ.clear()
+        os.environ.update(old)
+
+
+@settings(max_examples=examples(20))
+@given(st.one_of(st.none(), st.text(st.characters(blacklist_categories=("Cs",),
+                                                  blacklist_characters="\x00"), min_size=1)))
+def test_rigidsym_cache_moves_verdicts_never_the_objects(cache):
+    """``RIGIDSYM_CACHE`` (one run's verdicts kept apart) leaves the object cache where it is,
+    so the next build reuses every object; only ``RIGIDSYM_OBJECT_CACHE`` moves it."""
+    pytest.importorskip("filelock")
+    from rigidsym.core import cache as _cache
+    from rigidsym.kernels.cbuild import objects as _objects
+
+    old = dict(os.environ)
+    try:
+        os.environ.pop("RIGIDSYM_OBJECT_CACHE", None)
+        os.environ.pop("RIGIDSYM_CACHE", None)
+        before = _objects.root()
+        if cache is not None:
+            os.environ["RIGIDSYM_CACHE"] = cache
+        assert _objects.root() == before
+        assert cache is None or _cache.root() == Path(cache).expanduser()
     finally:
         os.environ.clear()
         os.environ.update(old)
@@ -458,3 +485,59 @@ def test_a_header_compiles_again_only_the_objects_that_include_it(user_dir, tmp_
     plan, _ = _build._paths.partial_plan(_build.configure().paths, srcs, "rigidsym_table.c")
     readers = {kernel.name, "rigidsym_table.c"}
     assert stats["compiled"] == sum(s.name in readers for v in plan.values() for s in v) + 1
+
+
+# ------------------------------------------------------------------ the build's progress
+@settings(max_examples=examples(60))
+@given(steps=st.lists(st.tuples(st.floats(0.0, 1.0), st.booleans()), min_size=1, max_size=80))
+def test_the_build_is_never_quiet_longer_than_silence_and_a_tick(steps):
+    """Called as :func:`build` calls it (a step finishing, or a tick every TICK s while none
+    does), the text progress prints a line at least every SILENCE + TICK seconds of the
+    build's clock, and the line after a quiet spell names what runs."""
+    from io import StringIO
+    from unittest import mock
+
+    clock, out, printed = [0.0], StringIO(), []
+    total = sum(f for _, f in steps) + 2
+    with mock.patch("time.perf_counter", lambda: clock[0]):
+        progress = _build.text_progress(0.0, out)
+        done = 0
+        for dt, finished in steps:
+            # the gap between two calls: a tick at most (wait() returns on a finish sooner)
+            clock[0] += dt * _build.TICK
+            done += finished
+            before = out.tell()
+            progress(done, total, (("slow.c (x86-64-v3)", clock[0]),))
+            if out.tell() > before:
+                printed.append((clock[0], out.getvalue()[before:]))
+    times = [0.0] + [t for t, _ in printed]
+    assert all(b - a <= _build.SILENCE + _build.TICK for a, b in itertools.pairwise(times))
+    assert clock[0] - times[-1] < _build.SILENCE + _build.TICK
+    for _, line in printed:
+        if "%" in line and "running:" in line:
+            assert "slow.c (x86-64-v3)" in line
+
+
+def test_a_long_compile_is_named_while_it_runs(tmp_path, monkeypatch):
+    """The pool itself reports: while one object compiles longer than SILENCE and none
+    finishes, a line says which source, for which path, runs."""
+    import io
+    import time
+
+    cdir = tmp_path / "c"
+    cdir.mkdir()
+    for name in (_build.MODULE_SOURCE, _build.TABLE_SOURCE, "quick.c", "slow.c"):
+        (cdir / name).write_text("/* */\n")
+    monkeypatch.setenv("RIGIDSYM_OBJECT_CACHE", "0")
+    monkeypatch.setattr(_build, "SILENCE", 0.2)
+    monkeypatch.setattr(_build, "TICK", 0.02)
+    monkeypatch.setattr(_build, "_run", lambda argv: time.sleep(0.6 if "slow.c" in
+                                                                    " ".join(argv) else 0))
+    cfg = _build.configure()
+    monkeypatch.setattr(_build, "jobs", lambda: 1)     # one at a time: slow.c alone runs
+    out = io.StringIO()
+    _build.build(tmp_path, tmp_path / "m.so", cfg, tmp_path / "objs",
+                 progress=_build.text_progress(time.perf_counter(), out))
+    lines = out.getvalue().splitlines()
+    assert any("running: slow.c (" in line for line in lines), lines
+    assert "and the link" in lines[-1]

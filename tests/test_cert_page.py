@@ -23,6 +23,7 @@ ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "certcheck" / "src"
 sys.path.insert(0, str(SRC))
 
+from _book import BOOK, READING, book_path, book_text, needs_book  # noqa: E402
 from certcheck.book import (  # noqa: E402
     BookError,
     check_manifest,
@@ -33,12 +34,10 @@ from certcheck.book import (  # noqa: E402
 
 from certcheck import CheckError, check_certificate  # noqa: E402
 
-BOOK = ROOT.parent / "shared" / "book" / "angeles-chapter3.md"
 #: a verified rotation identity, an erratum, a conversion slip, a definition, an identity
 #: by definition (3.41: p = Q p0 with p modelled as Q p0)
 FIVE = ["3.1", "3.96e", "3.94", "3.66", "3.41"]
 
-needs_book = pytest.mark.skipif(not BOOK.exists(), reason="the book is never shipped")
 
 
 def certs_for(folder: Path, ids: list[str]) -> dict:
@@ -55,14 +54,13 @@ def certs_for(folder: Path, ids: list[str]) -> dict:
     for i in ids:  # the recorded verdict: certcheck, not this test, says whether it holds
         certs[i] = certificate(i, REGISTRY[i].expected)
         (folder / certificate_file(i)).write_text(json.dumps(certs[i], indent=1) + "\n")
-    write_manifest(folder, [certificate_file(i) for i in ids], str(BOOK))
+    write_manifest(folder, [certificate_file(i) for i in ids], str(BOOK), READING)
     return certs
 
 
 @pytest.fixture(scope="module")
 def five(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     folder = tmp_path_factory.mktemp("page")
     return folder, certs_for(folder, FIVE)
 
@@ -72,10 +70,6 @@ def _certcheck(*args) -> subprocess.CompletedProcess:
             "main; sys.exit(main(sys.argv[2:]))")
     return subprocess.run([sys.executable, "-I", "-S", "-c", code, str(SRC), *map(str, args)],
                           capture_output=True, text=True, timeout=300)
-
-
-def book_text() -> str:
-    return BOOK.read_text(encoding="utf-8")
 
 
 def rejection(cert: dict, book: str, page_first: bool = False) -> str:
@@ -224,7 +218,7 @@ def test_locator_finds_every_printed_id(registry):
 
 def test_referee_command_passes_and_prints_the_page(five):
     folder, certs = five
-    p = _certcheck("--book", BOOK, folder)
+    p = _certcheck("--book", BOOK, "--reading", READING, folder)
     unread = p.stdout.count("\nNOT READ ")  # an id proved, not read on every side: exit 3
     assert p.returncode == (3 if unread else 0), p.stdout + p.stderr
     assert p.stdout.count("CHECKED") + unread == len(FIVE)
@@ -264,6 +258,7 @@ def test_reader_rejects_what_is_not_printed(five):
 
 
 def test_manifest_binds_the_folder_to_one_run(five, tmp_path):
+    book_path()  # the run's manifest names the chapter (tests/_book.py)
     folder, certs = five
     book = BOOK.read_bytes()
     files = sorted(str(p) for p in folder.glob("*.json") if p.name != "MANIFEST.json")
@@ -278,7 +273,7 @@ def test_manifest_binds_the_folder_to_one_run(five, tmp_path):
         check_manifest(str(copy_), [str(p) for p in (copy_.glob("3*.json"))], book)
     with pytest.raises(BookError, match="SHA-256"):  # another book
         check_manifest(str(folder), files, book + b"\n")
-    p = _certcheck("--book", BOOK, copy_)
+    p = _certcheck("--book", BOOK, "--reading", READING, copy_)
     assert p.returncode == 1 and "FAILED MANIFEST.json" in p.stdout, p.stdout
 
 
@@ -293,14 +288,13 @@ def test_coq_file_names_are_module_names():
 # ------------------------------------------------------------------ slow: the chapter
 @pytest.fixture(scope="module")
 def chapter(tmp_path_factory, chapter_certificates):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     from rigidsym.checking.certifying.certificates import certificate_file, write_manifest
 
     folder = tmp_path_factory.mktemp("chapter")
     for i, c in chapter_certificates.items():
         (folder / certificate_file(i)).write_text(json.dumps(c, indent=1) + "\n")
-    write_manifest(folder, [certificate_file(i) for i in chapter_certificates], str(BOOK))
+    write_manifest(folder, [certificate_file(i) for i in chapter_certificates], str(BOOK), READING)
     return folder, {i: json.loads(json.dumps(c)) for i, c in chapter_certificates.items()}
 
 
@@ -536,8 +530,7 @@ def test_reader_a_glyph_defined_here_shadows_an_earlier_one():
 
 @pytest.fixture(scope="module")
 def model_read(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     return certs_for(tmp_path_factory.mktemp("model"), ["3.98", "3.84"])
 
 
@@ -615,8 +608,7 @@ def test_reader_notation_integral_over_the_tables_body():
 
 @pytest.fixture(scope="module")
 def body_read(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     return certs_for(tmp_path_factory.mktemp("body"), ["3.131", "3.133a"])
 
 
@@ -650,8 +642,7 @@ def test_point_body_integrals_read_firmly_and_tamperings_rejected(body_read):
 
 @pytest.fixture(scope="module")
 def moving_read(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     return certs_for(tmp_path_factory.mktemp("moving"), ["3.126", "3.144"])
 
 
@@ -710,8 +701,7 @@ def test_chapter_body_line_tampering_rejected_where_read(chapter):
 
 @pytest.fixture(scope="module")
 def points_read(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     return certs_for(tmp_path_factory.mktemp("points"), ["3.8", "3.21"])
 
 
@@ -795,8 +785,7 @@ def test_reader_notation_families_alternatives_bare_blocks():
 
 @pytest.fixture(scope="module")
 def forces_read(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     return certs_for(tmp_path_factory.mktemp("forces"), ["3.106", "3.121", "3.38", "3.117"])
 
 
@@ -880,8 +869,7 @@ def _assert_restated_read_and_tamperings_rejected(certs: dict, book: str) -> Non
 
 @pytest.fixture(scope="module")
 def restated_read(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     return certs_for(tmp_path_factory.mktemp("restated"), ["3.16", "3.122"])
 
 
@@ -976,8 +964,7 @@ def test_brace_relations_decided_by_the_label():
 
 @pytest.fixture(scope="module")
 def braced(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     folder = tmp_path_factory.mktemp("braced")
     return folder, certs_for(folder, ["3.4", "3.59", "3.130"])
 
@@ -1012,8 +999,8 @@ def test_dropped_printed_relation_fails_where_braced(braced):
     c = certs["3.130"]
     k = next(k for k in printed_indices(c) if "I_C" in c["relations"][k]["label"])
     (tampered / certificate_file("3.130")).write_text(json.dumps(relation_dropped(c, k)))
-    write_manifest(tampered, [certificate_file("3.130")], str(BOOK))
-    p = _certcheck("--quiet", "--book", BOOK, tampered)
+    write_manifest(tampered, [certificate_file("3.130")], str(BOOK), READING)
+    p = _certcheck("--quiet", "--book", BOOK, "--reading", READING, tampered)
     assert p.returncode == 1 and "FAILED 3.130.json: (3.130)" in p.stdout, p.stdout
 
 

@@ -13,6 +13,7 @@ import json
 
 import _profile
 import pytest
+from _book import BOOK, READING
 from test_cert_page import (
     _certcheck,
     another_printed_text,
@@ -23,7 +24,6 @@ from test_cert_page import (
     shifted_sides,
 )
 from test_cert_page_momenta import (
-    BOOK,
     certificates,
     line_changed,
     line_doubled,
@@ -106,11 +106,15 @@ def test_a_representation_the_page_lists_dropped_or_copied_rejected(book, tmp_pa
             f"rejected: ({i}): the certificate carries 4 members of"), i
     for i, c in certs.items():
         (tmp_path / certificate_file(i)).write_text(json.dumps(member_copied(c, members(c)[0])))
-    write_manifest(tmp_path, [certificate_file(i) for i in FAMILY], str(BOOK))
-    p = _certcheck("--quiet", "--book", BOOK, tmp_path)
+    write_manifest(tmp_path, [certificate_file(i) for i in FAMILY], str(BOOK), READING)
+    p = _certcheck("--quiet", "--book", BOOK, tmp_path)   # the page's reader alone
     assert p.returncode == 1, p.stdout
     for i in FAMILY:
         assert f"FAILED {i}.json: ({i}): the page prints the relation for" in p.stdout, i
+    p = _certcheck("--quiet", "--book", BOOK, "--reading", READING, tmp_path)
+    assert p.returncode == 1, p.stdout   # the reading first: the copy is not its table
+    for i in FAMILY:
+        assert f"FAILED {i}.json: ({i}) relation" in p.stdout, i
 
 
 def test_member_lines_read_each_representation_firmly_and_a_swap_rejected(book):
@@ -188,7 +192,9 @@ def test_every_invariant_rate_id_read_and_each_line_doubled_rejected(book,
     reads doubled, both sides shifted, the right side doubled (where not 0), the members'
     lines swapped, another id's text: rejected naming the id. FAILING: the left side read,
     the printed relation still failing (verdict verified: rejected)."""
-    from rigidsym.checking.certifying.invariant_rate_symbols import INVARIANT_RATE_GLYPHS
+    from _book import model_glyphs
+
+    INVARIANT_RATE_GLYPHS = model_glyphs()  # the reading's model lines
 
     # the run's shared certificates (~10 s to build these again), each a copy
     certs = {i: json.loads(json.dumps(chapter_certificates[i])) for i in EVERY_SIDE + FAILING}

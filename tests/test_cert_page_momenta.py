@@ -29,7 +29,6 @@ from test_cert_page import (  # noqa: E402
 
 from certcheck import CheckError, check_certificate  # noqa: E402
 
-BOOK = ROOT.parent / "shared" / "book" / "angeles-chapter3.md"
 #: the Newton-Euler ids whose every printed side is read through the lines (measured)
 NEWTON_EULER = ["3.134b", "3.135", "3.136", "3.137", "3.139", "3.140", "3.142", "3.143",
                 "3.145", "3.146"]
@@ -114,7 +113,9 @@ def test_newton_euler_read_through_the_lines_and_each_line_doubled_rejected(
     (where not 0), a particle's mass changed, another id's text: rejected naming the id (a
     particle's velocity without o-dot is not: 3.134b reads no velocity, and in 3.139 c-dot
     meets only W's zero block)."""
-    from rigidsym.checking.certifying.twist_symbols import TWIST_GLYPHS
+    from _book import model_glyphs
+
+    TWIST_GLYPHS = model_glyphs()  # the reading's model lines
 
     # the run's shared certificates (~25 s to build these again), each a copy
     certs = {i: json.loads(json.dumps(chapter_certificates[i])) for i in NEWTON_EULER}

@@ -20,15 +20,18 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "certcheck" / "src"))
 
+from _book import BOOK, READING  # noqa: E402
 from certcheck.book import BookError, check_page, locate, sha256  # noqa: E402
 from certcheck.braces import displays_after  # noqa: E402
 from certcheck.by_definition import unread_vacuous  # noqa: E402
 from certcheck.compare import compare  # noqa: E402
+from certcheck.reading import load_reading  # noqa: E402
 from test_cert_page import another_printed_text, relabelled  # noqa: E402
-from test_cert_page_momenta import BOOK, certificates  # noqa: E402
+from test_cert_page_momenta import certificates  # noqa: E402
 
 from certcheck import CheckError, check_certificate, words  # noqa: E402
 
+words.use(load_reading(READING.read_bytes()))   # the theorems in words: the reading's
 _V = words.WORDS["thm3.4.2"][1]
 #: id -> (a sign, a coefficient, a transpose where it matters: the table's relation changed)
 TABLE_TAMPERINGS = {
@@ -122,7 +125,8 @@ def _folder(tmp: Path, cert: dict, book_path: Path) -> Path:
     name = f"{cert['id']}.json"
     (tmp / name).write_text(json.dumps(cert), encoding="utf-8")
     man = {"rigidsym": "test", "certificates": {name: sha256((tmp / name).read_bytes())},
-           "book_sha256": sha256(book_path.read_bytes())}
+           "book_sha256": sha256(book_path.read_bytes()),
+           "reading_sha256": sha256(READING.read_bytes())}
     (tmp / "MANIFEST.json").write_text(json.dumps(man), encoding="utf-8")
     return tmp
 
@@ -175,7 +179,7 @@ def test_command_reads_the_words_and_fails_closed(book, tmp_path):
                            certificate_tamperings(c, book)[-1][1]]):
         (tmp_path / str(k)).mkdir()
         folder = _folder(tmp_path / str(k), t, BOOK)
-        codes.append(main([str(folder), "--book", str(BOOK), "--quiet"]))
+        codes.append(main([str(folder), "--book", str(BOOK), "--reading", str(READING), "--quiet"]))
     assert codes == [0, 1, 3]
 
 

@@ -25,11 +25,11 @@ ROOT = Path(__file__).resolve().parents[1]
 SRC = ROOT / "certcheck" / "src"
 sys.path.insert(0, str(SRC))
 
+from _book import BOOK, READING, book_path  # noqa: E402
 from certcheck.__main__ import main  # noqa: E402
 
 from certcheck import CheckError, check_certificate  # noqa: E402
 
-BOOK = ROOT.parent / "shared" / "book" / "angeles-chapter3.md"
 QUICK = ["3.13", "3.18", "3.97b"]
 
 
@@ -56,13 +56,12 @@ def _named(out: str, eq_id: str) -> bool:
 
 def _rejected(tmp: Path, eq_id: str, cert: dict) -> tuple[int, str]:
     forge.write_run(tmp, {f"{eq_id}.json": cert}, BOOK)
-    return _run("--book", BOOK, tmp, "--quiet")
+    return _run("--book", BOOK, "--reading", READING, tmp, "--quiet")
 
 
 @pytest.fixture(scope="module")
 def quick(tmp_path_factory):
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     return _certs(QUICK)
 
 
@@ -85,16 +84,18 @@ def test_forgeries_rejected_naming_the_id(quick, tmp_path):
 
 def test_files_given_are_held_to_their_folders_manifest(quick, tmp_path):
     """A changed file given by name (not its folder) is still held to the run's manifest."""
+    book_path()  # the run's manifest names the chapter (tests/_book.py)
     i = "3.13"
     forge.write_run(tmp_path, {f"{i}.json": quick[i]}, BOOK)
     (tmp_path / f"{i}.json").write_text(json.dumps(forge.zero_is_one_minus_one(quick[i])))
-    rc, out = _run("--book", BOOK, tmp_path / f"{i}.json", "--quiet")
+    rc, out = _run("--book", BOOK, "--reading", READING, tmp_path / f"{i}.json", "--quiet")
     assert rc == 1 and "MANIFEST" in out and "SHA-256" in out, out
 
 
 def test_summary_counts_the_per_id_lines_and_exit_says_unread(quick, tmp_path):
+    book_path()  # the run's manifest names the chapter (tests/_book.py)
     forge.write_run(tmp_path, {f"{i}.json": c for i, c in quick.items()}, BOOK)
-    rc, out = _run("--book", BOOK, tmp_path, "--quiet")
+    rc, out = _run("--book", BOOK, "--reading", READING, tmp_path, "--quiet")
     lines = out.splitlines()
     checked = sum(x.startswith("CHECKED") for x in lines)
     unread = [x for x in lines if x.startswith("NOT READ")]
@@ -108,7 +109,7 @@ def test_summary_counts_the_per_id_lines_and_exit_says_unread(quick, tmp_path):
                             for x in unread)
     assert rc == (1 if failed else 3 if unread else 0)
     if unread and not failed:
-        assert _run("--book", BOOK, tmp_path, "--quiet", "--lenient")[0] == 0
+        assert _run("--book", BOOK, "--reading", READING, tmp_path, "--quiet", "--lenient")[0] == 0
     assert _run(tmp_path, "--quiet")[0] == 3  # no book: nothing read from the page
     assert _run(tmp_path, "--quiet", "--lenient")[0] == 0
 
@@ -126,6 +127,7 @@ def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
     """On ids read on every side, or where the read side or a bold 1, O or 0 decides: a
     side containing a bare 1 (3.97b's rate of L) is read at its shape, a bold 0 is an array
     sized by its other side (3.141: no shape mismatch, no scalar), so each is a rejection."""
+    book_path()  # the run's manifest names the chapter (tests/_book.py)
     certs = {**quick, **_certs(["3.57", "3.141"])}
     for k, (i, name) in enumerate(REFUTED):
         t = forge.FORGERIES[name](certs[i])
@@ -194,8 +196,7 @@ def test_chapter_forgeries_rejected_and_none_vacuous(tmp_path, chapter_certifica
     of a seeded third of the chapter rests on vacuous relations only (checked by certcheck
     itself; test_whole_chapter_certified_and_tampering_rejected passes certcheck on every id,
     which fails a vacuous verified one)."""
-    if not BOOK.exists():
-        pytest.skip("the book is never shipped")
+    book_path()  # skips where the chapter is absent (tests/_book.py)
     certs = json.loads(json.dumps(chapter_certificates))  # forgeries never touch the shared one
     missed = []
     sample = _profile.share(sorted(certs), 0.1)
@@ -280,6 +281,7 @@ def test_explain_follows_an_id_from_the_page_to_the_proof(quick, tmp_path):
     """``certcheck explain ID``: the printed line, the table's lines its glyphs use with the
     page's definitions (3.13's A by (3.11), Q as printed in (2.49)), the evidence and the
     Coq file; exit 0 only where the id passes read on every side."""
+    book_path()  # the run's manifest names the chapter (tests/_book.py)
     forge.write_run(tmp_path / "run", {f"{i}.json": c for i, c in quick.items()}, BOOK)
     rc, out = _run("explain", "3.13", tmp_path / "run", "--book", BOOK)
     lines = out.splitlines()

@@ -218,3 +218,21 @@ def test_a_rate_of_another_shape_is_refused_naming_both():
     with pytest.raises((BadInput, LatexError)) as exc:
         rigidsym.check_latex(latex, let=lets, repairs=False)
     assert r"\dot{\mathbf{q}}" in str(exc.value) and "3-vector" in str(exc.value), exc.value
+
+
+@pytest.mark.parametrize("latex, let, introduced, says", [
+    (r"\frac{d}{dt}\left(\mathbf{C}^\mathsf{T}\mathbf{C}\right) = \mathbf{0}",
+     r"\mathbf{C}(t): rotation", r"\mathbf{C}_{w}",
+     "C_w: the body angular velocity of C, introduced by the reader"),
+    (r"\frac{d}{dt}\cos\theta = -\dot\theta\sin\theta", r"\theta(t): angle",
+     r"\dot{\theta}", r"\dot{\theta}: the time derivative of \theta"),
+])
+def test_a_rate_the_reader_introduces_is_said_as_what_it_is_not_as_the_users(latex, let,
+                                                                              introduced, says):
+    """The body velocity of a rotation declared a function of time, and a scalar's rate, are
+    the reader's own symbols: the reading says what each is, and the list of the user's
+    undeclared symbols ("free, no --let declares them") does not name them."""
+    r = rigidsym.check_latex(latex, let=[let], repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+    assert any(says in " ".join(n.split()) for n in r.model), r.model
+    assert not any(n.startswith("free, no --let") and introduced in n for n in r.model), r.model

@@ -139,11 +139,12 @@ def test_bad_keywords(kw, err):
 
 
 def test_singular_raise_and_nan_rows():
-    # omega = 0: the instant screw axis is undefined (natural_invariants_from_rotation at
+    # omega = 0 and a_dot = 0: no motion, so no instant screw axis (omega = 0 alone is a
+    # pure translation, a screw of infinite pitch; natural_invariants_from_rotation at
     # Q = 1 is not singular: phi = 0 and the default axis)
     with pytest.raises(K.SingularConfigurationError, match=r"batch indices \[\(1,\)\]"):
-        K.instant_screw_axis(np.array([[0.0, 0, 1], [0, 0, 0]]), np.zeros(3), [1.0, 0, 0])
-    p0, pitch, plucker = K.instant_screw_axis(np.zeros(3), np.zeros(3), [1.0, 0, 0],
+        K.instant_screw_axis(np.array([[0.0, 0, 1], [0, 0, 0]]), np.zeros(3), np.zeros(3))
+    p0, pitch, plucker = K.instant_screw_axis(np.zeros(3), np.zeros(3), np.zeros(3),
                                               on_singular="nan")
     assert np.isnan(p0).all() and np.isnan(pitch) and np.isnan(plucker).all()
     with pytest.raises(K.NonFiniteResultError):

@@ -50,8 +50,10 @@ PERCENT = re.compile(r"(?<![\w.^/%~-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.
 #: figure, and why
 NOT_MEASURED = [
     ("README.md", "least one every 2.5 s", "the build's progress interval, a setting "
-     "(setup.py's _SILENCE)"),
+     "(rigidsym.kernels.cbuild.driver.SILENCE)"),
     ("docs/setup.md", "at least one every 2.5 s", "the build's progress interval, a setting"),
+    ("docs/commands.md", "then one every 2.5 s saying", "the start's longest quiet, a "
+     "setting (progress.SILENCE)"),
     ("docs/commands.md", "with no line for 2.5 s says", "a piped phase's longest quiet, a "
      "setting (progress.SILENCE)"),
     ("docs/accuracy.md", "= 2 s (c E", "algebra: s is sin(phi/2)"),
@@ -304,3 +306,112 @@ def test_a_ratio_in_exponent_form_is_checked_at_its_printed_precision():
     wrong = "\n3.7e4 x<!-- fig: audit_peers.json rows[0].worst[0].ratio .1e -->"
     found = _check(ROOT / "docs" / "x.md", wrong, MARKER.search(wrong))
     assert found and found.startswith("docs/x.md:2: ") and "gives '3.6e4'" in found, found
+
+
+# ------------------------------------------------------------------ what the tool prints
+#: a quoted output of the tool: ``…`<!-- quote: FILE PATH -->``, the code span before it
+#: equal to the record's string (or ending in `` = `` and it: ``e = [...]``)
+QUOTE = re.compile(r"`(?P<span>[^`]*)`<!--\s*quote:(?P<body>.*?)-->", re.S)
+#: a recorded command -> the pages that show it, word for word (benchmarks/
+#: check_latex_examples.py records what the tool prints for it)
+SHOWN = {"rodrigues_slip": ("README.md", "docs/check-latex.md")}
+EXAMPLES = RESULTS / "check_latex_examples.json"
+
+
+def _commands(text: str) -> list[list[str]]:
+    """Every ``rigidsym ...`` shell command of a page's code, its continued lines joined,
+    as an argument list."""
+    import shlex
+
+    out = []
+    for line in text.replace("\\\n", " ").splitlines():
+        line = line.strip()
+        if line.startswith("rigidsym "):
+            try:
+                out.append(shlex.split(line, comments=True))
+            except ValueError:      # not a shell line (prose starting with the name)
+                pass
+    return out
+
+
+def test_every_quoted_output_is_what_the_tool_printed():
+    """A counterexample or a repair quoted from the tool equals the record of the command's
+    run (benchmarks/check_latex_examples.py), not a hand copy."""
+    wrong, n = [], 0
+    for page in pages():
+        text = page.read_text(encoding="utf-8")
+        for m in QUOTE.finditer(text):
+            n += 1
+            where = f"{_name(page)}:{_line(text, m.start())}"
+            body = BODY.match(" ".join(m.group("body").split()))
+            if not body:
+                wrong.append(f"{where}: unparsable marker {m.group(0)!r}")
+                continue
+            record = json.loads((RESULTS / body["file"]).read_text(encoding="utf-8"))
+            assert _names_its_machine(record), body["file"]
+            want = str(_follow(record, body["path"]))
+            span = m.group("span")
+            if span != want and not span.endswith(" = " + want):
+                wrong.append(f"{where}: the page quotes {span!r}, {body['file']} "
+                             f"{body['path']} is {want!r}")
+    assert not wrong, "\n".join(wrong)
+    assert n >= 5, "the Rodrigues slip's quotes in docs/check-latex.md are gone"
+
+
+def test_the_pages_show_the_recorded_command_word_for_word():
+    """The command whose output a page quotes is the one the record ran: a reader who runs
+    the README's (or check-latex.md's) command sees the quoted counterexample."""
+    record = json.loads(EXAMPLES.read_text(encoding="utf-8"))
+    for name, shown in SHOWN.items():
+        argv = record["examples"][name]["argv"]
+        for page in shown:
+            assert argv in _commands((ROOT / page).read_text(encoding="utf-8")), (page, argv)
+
+
+def test_the_readme_commands_time_is_its_newest_record():
+    """One figure for the README's command: each page that states its time states first
+    that of the newest record (``test_command-*.json`` by its commit's date; a record with
+    no commit predates those with one), and never another as the current one."""
+    import subprocess
+
+    dated = {}
+    for f in RESULTS.glob("test_command-*.json"):
+        commit = json.loads(f.read_text(encoding="utf-8")).get("commit")
+        if not commit:
+            continue
+        r = subprocess.run(["git", "show", "-s", "--format=%ct", commit], cwd=ROOT,
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            pytest.skip(f"no git history of {commit} here (an sdist, a shallow clone)")
+        dated[f.name] = int(r.stdout.strip())
+    newest = max(dated.values())
+    for page in ("docs/where-it-stands.md", "docs/testing.md"):
+        text = (ROOT / page).read_text(encoding="utf-8")
+        cited = [b["file"] for b in (BODY.match(m.group("body")) for m in MARKER.finditer(text))
+                 if b and b["file"].startswith("test_command-") and b["path"] == "wall_s"]
+        assert cited and dated.get(cited[0]) == newest, (page, cited[:1], newest)
+
+
+def test_the_build_counts_on_the_pages_are_the_trees():
+    """The kernels and objects the pages count are those of the generated tree, as the
+    driver plans them (x86-64-v2 and -v3 every kernel and the table, -v4 the kernels that
+    call sin or cos and the table, and the module), not a figure of an older tree."""
+    from rigidsym.kernels.cbuild import driver, paths
+
+    sources = driver.kernel_sources(ROOT / "generated" / "c")
+    plan, _ = paths.partial_plan(paths.X86_PATHS, sources, driver.TABLE_SOURCE)
+    n = {k: len(v) for k, v in plan.items()}
+    want = [("README.md", r"the (\d+) kernels and their table", len(sources) - 1),
+            ("README.md", r"the (\d+) that call\s+`sin`/`cos`", n["v4"] - 1),
+            ("docs/setup.md", r"\((\d+) objects\s+instead", len(sources) + 1),
+            ("docs/setup.md", r"instead of the (\d+) of x86-64-v4 and -v3", n["v4"] + n["v3"] + 1),
+            ("benchmarks/RESULTS.md", r"The tree now builds (\d+) objects", sum(n.values()) + 1),
+            ("benchmarks/RESULTS.md", r"\((\d+) for x86-64-v2", n["v2"]),
+            ("benchmarks/RESULTS.md", r"(\d+) for x86-64-v4, and the module", n["v4"])]
+    wrong = []
+    for page, pattern, value in want:
+        m = re.search(pattern, (ROOT / page).read_text(encoding="utf-8"))
+        if not m or int(m.group(1)) != value:
+            wrong.append(f"{page}: {pattern!r} reads {m.group(1) if m else None}, the tree "
+                         f"has {value}")
+    assert not wrong, "\n".join(wrong)

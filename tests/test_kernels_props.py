@@ -31,6 +31,7 @@ from hypothesis import strategies as st
 from rigidsym import kernels as K
 from rigidsym.core.draws import draw
 from rigidsym.kernels.runtime import state as _state
+from rigidsym.kernels.runtime.screw_at_infinity import COMPLETED
 
 SEQS = ("ZXZ", "XYX", "YZY", "ZYZ", "XZX", "YXY", "XYZ", "YZX", "ZXY", "XZY", "ZYX", "YXZ")
 
@@ -227,6 +228,15 @@ def _case(call, specs, arg: int, corruption: str, rng):
     return inputs
 
 
+def _answers(name: str, specs: list, outs: list) -> list:
+    """The outputs with the one documented infinity taken out: the pitch +inf of a pure
+    translation's screw (rigidsym.kernels.runtime.screw_at_infinity), an IEEE answer."""
+    if name not in COMPLETED:
+        return outs
+    k = [o["name"] for o in _state.builtin().meta[name]["outputs"]].index("pitch")
+    return [np.where(o == np.inf, 0.0, o) if i == k else o for i, o in enumerate(outs)]
+
+
 def bad_input_table(name: str, n_cases: int, seed: int, call=None) -> dict:
     """The corruptions on kernel ``name`` (``call``: another back-end's function of it)."""
     call, specs = call or KERNELS[name][0], KERNELS[name][1]
@@ -261,7 +271,7 @@ def bad_input_table(name: str, n_cases: int, seed: int, call=None) -> dict:
         except Exception as exc:  # noqa: BLE001 - anything else is an escape
             escapes.append((label, f"{type(exc).__name__}: {exc}"))
         else:
-            if not all(np.isfinite(o).all() for o in _outputs(res)):
+            if not all(np.isfinite(o).all() for o in _answers(name, specs, _outputs(res))):
                 escapes.append((label, "silent non-finite output"))
             else:
                 stats["finite"] += 1

@@ -1,13 +1,15 @@
 """Partly defined outputs of ``screw_of_displacement``.
 
-At Q = 1 the displacement is a pure translation by a' - a (or none): phi = 0 is known
-exactly, while the axis, its point and the pitch (infinite, or 0/0 at a' = a) are not
-determined. As for ``natural_invariants_from_rotation`` (gtsam's exact zero at the
-identity), phi = 0 exactly is returned and the other outputs hold the documented defaults
-e = [1, 0, 0], p0 = 0, pitch = 0, plucker = [e; p0 x e], on NumPy, the C extension, torch and
-JAX (one declaration: the kernel's branch ``identity``); the C target adds
-RIGIDSYM_C_DEFAULT_OUTPUT (16) to the status. It is never a SingularConfigurationError
-(status 1 and NaN in every output in C), phi included.
+At Q = 1 the displacement is a pure translation by t = a' - a, or none. A pure translation
+is a screw of infinite pitch (Angeles, Sec. 3.2; pytransform3d's screw parameters, Modern
+Robotics' translation screw): e = t/||t||, phi = 0 exactly, p0 = 0 (the axis through the
+origin: every line parallel to e is an axis), pitch = +inf, plucker = [0; e], on NumPy and
+the C extension (the runtime answers the rows of the generated ``identity`` branch). No
+motion (a' = a) has no screw: SingularConfigurationError naming a_prime, or NaN in every
+output but phi = 0 under on_singular="nan". The PyTorch and JAX kernels and the C target
+keep the generated branch's finite placeholders, e = [1, 0, 0], p0 = 0, pitch = 0,
+plucker = [e; p0 x e], with phi == 0 exactly saying so (the C target's status
+RIGIDSYM_C_DEFAULT_OUTPUT, 16).
 
 Rotations by angles whose ||vect(Q)||^2 underflows (phi below about 1e-154 in float64, 1e-19
 in float32) are answered through the wide rescue: phi to a few u and the axis of the given Q.
@@ -23,6 +25,7 @@ import pytest
 
 from rigidsym import kernels as K
 
+#: the generated identity branch's placeholders (PyTorch, JAX, the C target)
 DEFAULTS = ([1.0, 0.0, 0.0], 0.0, [0.0, 0.0, 0.0], 0.0, [1.0, 0, 0, 0, 0, 0])
 
 
@@ -52,19 +55,28 @@ def _assert_defaults(outs, rows=(0, 1)):
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
 @pytest.mark.parametrize("backend", ["numpy", "c"])
-def test_identity_gives_phi_zero_and_the_defaults(dtype, backend):
-    """Rows at Q = 1 answered (phi = 0 exactly, the defaults), no error; the other rows
-    reproduce their displacement (Chasles: a' = p0 + Q (a - p0) + pitch phi e)."""
+def test_identity_gives_the_screw_at_infinity(dtype, backend):
+    """Row 0 (a pure translation): e = t/||t||, phi = 0, p0 = 0, pitch = +inf, plucker =
+    [0; e]; row 1 (no motion): an error naming a_prime at batch index (1,), NaN but phi = 0
+    under on_singular="nan"; the other rows reproduce their displacement (Chasles: a' = p0
+    + Q (a - p0) + pitch phi e)."""
     Q, a, ap = _batch(dtype)
     before = K.backend()
     try:
         if K.use_backend(backend) != backend:
             pytest.skip("no C extension")
-        outs = K.screw_of_displacement(Q, a, ap)
+        with pytest.raises(K.SingularConfigurationError, match="'a_prime'") as info:
+            K.screw_of_displacement(Q, a, ap)
+        outs = K.screw_of_displacement(Q, a, ap, on_singular="nan")
     finally:
         K.use_backend(before)
-    _assert_defaults(outs)
+    assert info.value.indices == [(1,)]
     e, phi, p0, pitch, kappa = (np.asarray(x, dtype=np.float64) for x in outs)
+    t = np.array([0.2, -0.4, 1.0])
+    assert phi[0] == 0 and pitch[0] == np.inf and np.array_equal(p0[0], [0, 0, 0])
+    assert np.abs(e[0] - t / np.linalg.norm(t)).max() <= 4 * float(np.finfo(dtype).eps)
+    assert np.array_equal(kappa[0], np.r_[0, 0, 0, e[0]])
+    assert phi[1] == 0 and all(np.isnan(x[1]).all() for x in (e, p0, pitch, kappa))
     assert np.all(phi[2:] > 0)
     Q64, a64, ap64 = (x.astype(np.float64) for x in (Q, a, ap))
     back = p0[2:] + np.einsum("nij,nj->ni", Q64[2:], a64[2:] - p0[2:]) \
@@ -75,7 +87,8 @@ def test_identity_gives_phi_zero_and_the_defaults(dtype, backend):
 
 @pytest.mark.parametrize("lib", ["torch", "jax"])
 def test_identity_on_the_array_backends(lib):
-    """The same declaration on torch and JAX (skipped where the library is missing)."""
+    """PyTorch and JAX keep the generated branch's placeholders at Q = 1 (phi == 0 exactly
+    says so); elsewhere NumPy's values (skipped where the library is missing)."""
     pytest.importorskip(lib)
     Q, a, ap = _batch(np.float64)
     if lib == "torch":
@@ -93,7 +106,7 @@ def test_identity_on_the_array_backends(lib):
         outs = [np.asarray(o) for o in
                 rk.screw_of_displacement(*(jnp.asarray(x) for x in (Q, a, ap)))]
     _assert_defaults(outs)
-    ref = K.screw_of_displacement(Q, a, ap)
+    ref = K.screw_of_displacement(Q, a, ap, on_singular="nan")
     for got, want in zip(outs, ref, strict=True):
         np.testing.assert_allclose(got[2:], want[2:], rtol=1e-12, atol=1e-12)
 

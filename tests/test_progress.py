@@ -29,10 +29,13 @@ from rigidsym.core.progress import PER_ITEM, Reporter, format_seconds
 from rigidsym.course.worked import EXERCISE_IDS
 
 ROOT = Path(__file__).resolve().parents[1]
+#: the program's start lines (rigidsym.core.progress.starting), before a command's own
+START = re.compile(r"rigidsym [a-z-]+: (starting \.\.\.|still (starting|working) \(.+\), .+ s)")
 _ANSI = re.compile(r"\x1b\[[0-9;?]*[A-Za-z]")
 #: runs ``python -m rigidsym ARGS`` and, at the first words it writes on stderr from its main
-#: thread, writes to the file ``FIRST_WORDS`` names those words, the work counted so far
-#: (:mod:`rigidsym.core.work`) and the book's modules imported, then exits
+#: thread (past the program's start line, rigidsym.core.progress.starting), writes to the
+#: file ``FIRST_WORDS`` names those words, the work counted so far (:mod:`rigidsym.core.work`)
+#: and the book's modules imported, then exits
 FIRST = r"""
 import json, os, re, runpy, sys, threading
 
@@ -49,7 +52,8 @@ class FirstWords:
     def write(self, text):
         n = self._stream.write(text)
         if threading.current_thread() is threading.main_thread() and \
-                re.search("[a-z]{5,}", ANSI.sub("", text)):
+                re.search("[a-z]{5,}", ANSI.sub("", text)) and \
+                not re.fullmatch(r"rigidsym [a-z-]+: starting \.\.\.\s*", ANSI.sub("", text)):
             from rigidsym.core import work
             state = {"text": ANSI.sub("", text), "work": sorted(set(work.COUNTS)),
                      "book": sorted(m for m in sys.modules
@@ -181,7 +185,8 @@ def test_the_live_display_redraws_itself_while_a_phase_reports_nothing(monkeypat
 def test_exercise_all_in_a_pipe(tmp_path):
     p = subprocess.run(_command("exercise", "--all"), cwd=ROOT, env=_env(tmp_path),
                        capture_output=True, text=True)
-    err = p.stderr.splitlines()
+    # the program's start lines (before sympy is imported) come first: then the command's
+    err = [ln for ln in p.stderr.splitlines() if not START.fullmatch(ln)]
     # a slow exercise says it is still being solved, never a line that says nothing
     still = [ln for ln in err if ": still " in ln]
     assert all(re.fullmatch(r"rigidsym exercise --all: solving 21 exercises: still solving "
@@ -372,3 +377,48 @@ def test_first_run_estimate_does_not_explode(monkeypatch, tmp_path):
     prior_only = runner._Estimate([f"i{k}" for k in range(50)], jobs=2).left({})
     naive = 49 * 12.0 / 2                 # every id as slow as the first
     assert prior_only < est.left({}) < naive / 4
+
+
+def test_a_command_says_it_starts_and_what_it_imports_until_its_progress(monkeypatch,
+                                                                         tmp_path):
+    """The start of a command: a first line at once, then, while it imports (sympy takes
+    seconds), a line after each SILENCE seconds naming the module being imported; its own
+    progress (a Reporter) ends them. Lines are waited for, not timed."""
+    monkeypatch.setattr(_progress, "SILENCE", 0.05)
+    monkeypatch.setattr(_progress, "TICK", 0.01)
+    said = tmp_path / "said.txt"
+    (tmp_path / "slow_to_import.py").write_text(
+        f"import time\nfrom pathlib import Path\nhang = time.monotonic() + 60\n"
+        f"while 'still' not in Path({str(said)!r}).read_text() and time.monotonic() < hang:\n"
+        f"    time.sleep(0.01)\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    with open(said, "w") as out, _progress.starting("rigidsym test", stream=out):
+        import slow_to_import  # noqa: F401
+        with Reporter("rigidsym test", stream=out) as rep, rep.phase("checking"):
+            time.sleep(0.2)
+    lines = said.read_text().splitlines()
+    assert lines[0] == "rigidsym test: starting ..."
+    assert re.fullmatch(r"rigidsym test: still starting \(importing slow_to_import\), "
+                        r"\d+\.\d s", lines[1]), lines
+    first = lines.index("rigidsym test: checking ...")
+    assert not any("starting" in ln for ln in lines[first:]), lines
+    out = io.StringIO()
+    with _progress.starting("x", enabled=False, stream=out):
+        time.sleep(0.1)
+    assert out.getvalue() == ""
+
+
+def test_the_program_speaks_before_it_imports_sympy():
+    """``rigidsym verify``'s first line on stderr is its start line, written before sympy
+    (seconds to import) is loaded: read, then the command is stopped."""
+    p = subprocess.Popen([sys.executable, "-c", "import sys; sys.argv[0] = 'rigidsym'; "
+                          "from rigidsym.cli import main; import sys as s; "
+                          "s.modules.get('sympy') and print('sympy early', file=s.stderr); "
+                          "main()", "verify", "3.1"],
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    try:
+        first = p.stderr.readline()
+    finally:
+        p.kill()
+        p.wait()
+    assert first == "rigidsym verify: starting ...\n", first

@@ -181,6 +181,9 @@ def report_phases(stdout: str, stderr: str) -> None:
     for ln in stderr.splitlines():
         if re.fullmatch(r"rigidsym report: .+: still .+, \d.*", ln):
             continue  # a quiet phase saying what it is still doing
+        if re.fullmatch(r"rigidsym report: (starting \.\.\.|still (starting|working) \(.+\), "
+                        r".+ s)", ln):
+            continue  # the program's start, before its heavy imports
         m = re.fullmatch(r"rigidsym report: (.+): (\d+)/(\d+), \d+(\.\d)? s|"
                          r"rigidsym report: (.+): (\d+)/(\d+), \d+ min \d\d s", ln)
         if m and (m.group(1) or m.group(5)) in phases:

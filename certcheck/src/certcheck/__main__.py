@@ -1,16 +1,19 @@
-"""``python -m certcheck [--book BOOK] [--jobs N] [--lenient] [--no-flint] [--quiet] PATH...``:
-check certificates (files, or every ``*.json`` of a folder; over N processes with
-``--jobs``, the same output in the same order); with ``--book``, each against the text
-printed as its id and against its folder's ``MANIFEST.json``; print the hypotheses, the
-printed text, the symbols, a cause and a verdict per id. Exit 0: every certificate proved
-and every printed side read from the page; 1: a certificate fails; 2: bad arguments; 3:
-nothing fails, but a printed side is not read from the page (or no ``--book``): 0 with
-``--lenient``."""
+"""``python -m certcheck [--book BOOK] [--reading READING] [--jobs N] [--lenient]
+[--no-flint] [--quiet] PATH...``: check certificates (files, or every ``*.json`` of a
+folder; over N processes with ``--jobs``, the same output in the same order); with
+``--book``, each against the text printed as its id and against its folder's
+``MANIFEST.json``; with ``--reading``, each id's symbol table and class as the reading file
+gives them (a certificate supplies evidence only); print the hypotheses, the printed text,
+the symbols, a cause and a verdict per id. Exit 0: every certificate proved and every
+printed side read from the page under the reading; 1: a certificate fails; 2: bad
+arguments; 3: nothing fails, but a printed side is not read from the page (or no
+``--book``, or no ``--reading``): 0 with ``--lenient``."""
 
 from __future__ import annotations
 
 import argparse
 import functools
+import json
 import os
 import re
 import sys
@@ -28,7 +31,11 @@ from certcheck.braces import displays_after
 from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
-from certcheck.words import said, stated
+from certcheck.reading import ReadingError, bind, load_reading
+from certcheck.words import said, stated, use
+
+#: the largest certificate file read (bytes; the chapter's largest is 0.36 MB)
+MAX_BYTES = 4_000_000
 
 
 def _files(paths: list[str]) -> list[str]:
@@ -42,7 +49,7 @@ def _files(paths: list[str]) -> list[str]:
     return out
 
 
-def _manifests(paths, files, book_bytes) -> tuple[int, list[str]]:
+def _manifests(paths, files, book_bytes, reading=None) -> tuple[int, list[str]]:
     """Check each folder's manifest (a file's folder too, for the files given): required
     with a book, else where present."""
     failed, lines = 0, []
@@ -55,24 +62,30 @@ def _manifests(paths, files, book_bytes) -> tuple[int, list[str]]:
         mine = [f for f in files if (os.path.dirname(f) or ".") == p]
         try:
             lines += check_manifest(p, mine, book_bytes, whole=p in paths
-                                    or p + os.sep in paths)
+                                    or p + os.sep in paths,
+                                    reading=None if reading is None else reading["sha256"])
         except BookError as exc:
             failed += 1
             lines.append(f"FAILED MANIFEST.json of {p}: {exc}")
     return failed, lines
 
 
-def _one(path: str, book: str | None, fast: bool, quiet: bool) -> tuple[str, int, int]:
+def _one(path: str, book: str | None, fast: bool, quiet: bool,
+         reading: dict | None = None) -> tuple[str, int, int]:
     """One certificate file checked: ``(its output lines, n printed sides, k of them read)``,
     ``n = -1`` where it failed."""
     t = time.perf_counter()
     try:
+        if os.path.getsize(path) > MAX_BYTES:
+            raise ValueError(f"larger than {MAX_BYTES} bytes (certcheck's limit on one "
+                             "certificate)")
         cert = load(path)
+        bound = [] if reading is None else bind(cert, reading)
         if book is not None and os.path.basename(path) != \
                 re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
             raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
                             f"in the file of another id")
-        page = check_page(cert, book) if book is not None else cause_lines(cert)
+        page = bound + (check_page(cert, book) if book is not None else cause_lines(cert))
         verdict, lines = check_certificate(cert, fast=fast)
         k = n = 0
         if book is not None:  # the second reader: what is proved is what is printed
@@ -87,7 +100,7 @@ def _one(path: str, book: str | None, fast: bool, quiet: bool) -> tuple[str, int
             k, page = max(0, k - 2 * vac), page + lines_read
         else:
             n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
-    except (CheckError, BookError, OSError, ValueError) as exc:
+    except (CheckError, BookError, ReadingError, OSError, ValueError) as exc:
         return f"FAILED {os.path.basename(path)}: {exc}", -1, 0
     except Exception as exc:  # a malformed certificate is a failure, never a pass
         return f"FAILED {os.path.basename(path)}: {type(exc).__name__}: {exc}", -1, 0
@@ -110,6 +123,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--book", metavar="FILE",
                     help="the book's text (Markdown with LaTeX): bind each certificate to the "
                          "text printed as its id, and each folder to its manifest")
+    ap.add_argument("--reading", metavar="FILE",
+                    help="the reading of the book (TOML): each id's symbol table and class "
+                         "are the reading's, the certificate supplies evidence only")
     ap.add_argument("--no-flint", action="store_true",
                     help="standard-library arithmetic only, even when python-flint is there")
     ap.add_argument("--quiet", action="store_true", help="one line per certificate")
@@ -134,12 +150,38 @@ def main(argv: list[str] | None = None) -> int:
             print(f"certcheck: --book: cannot read {args.book}: {exc}", file=sys.stderr)
             return 2
     book = None if book_bytes is None else book_bytes.decode("utf-8")
+    reading = None
+    if args.reading:
+        try:
+            with open(args.reading, "rb") as f:
+                reading = load_reading(f.read(), args.reading)
+        except OSError as exc:
+            print(f"certcheck: --reading: cannot read {args.reading}: {exc}", file=sys.stderr)
+            return 2
+        except ReadingError as exc:
+            print(f"certcheck: --reading: {exc}", file=sys.stderr)
+            return 2
+    use(reading)   # the theorems in words: the reading's
     t0 = time.perf_counter()
-    bad_manifests, head = _manifests(args.paths, files, book_bytes)
+    bad_manifests, head = _manifests(args.paths, files, book_bytes, reading)
+    ids: dict = {}
+    for f in files:  # one id once per run: two certificates of one id are one too many
+        try:
+            with open(f, "rb") as fh:
+                head_id = json.loads(fh.read(MAX_BYTES + 1)).get("id") \
+                    if os.path.getsize(f) <= MAX_BYTES else None
+        except (OSError, ValueError, AttributeError):
+            continue  # reported by its own check
+        if head_id is not None and str(head_id) in ids:
+            bad_manifests += 1
+            head.append(f"FAILED ({head_id}): two certificates of one id in one run "
+                        f"({ids[str(head_id)]} and {f})")
+        ids.setdefault(str(head_id), f)
     for line in head:
         print(line)
     failed = not_read = sides = unread = 0
-    one = functools.partial(_one, book=book, fast=not args.no_flint, quiet=args.quiet)
+    one = functools.partial(_one, book=book, fast=not args.no_flint, quiet=args.quiet,
+                            reading=reading)
     if args.jobs > 1 and len(files) > 1:
         import multiprocessing
 
@@ -158,10 +200,12 @@ def main(argv: list[str] | None = None) -> int:
           f"side ({unread} of {sides} printed sides not read), {failed} failed, "
           f"{time.perf_counter() - t0:.1f} s"
           + (f", {bad_manifests} manifest(s) failed" if bad_manifests else "")
-          + ("" if book is not None else "; not bound to the page (no --book)"))
+          + ("" if book is not None else "; not bound to the page (no --book)")
+          + ("" if reading is not None else "; not bound to a reading (no --reading): each "
+             "symbol table and class is the certificate's word"))
     if failed or bad_manifests:
         return 1
-    return 3 if not_read and not args.lenient else 0
+    return 3 if (not_read or reading is None) and not args.lenient else 0
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -229,7 +229,7 @@ def cause_lines(cert: dict) -> list[str]:
 
 
 def check_manifest(folder: str, files: list[str], book: bytes | None,
-                   whole: bool = True) -> list[str]:
+                   whole: bool = True, reading: str | None = None) -> list[str]:
     """``folder/MANIFEST.json`` against the folder's certificates and the book.
 
     Args:
@@ -238,6 +238,7 @@ def check_manifest(folder: str, files: list[str], book: bytes | None,
         book: the book's bytes, or ``None`` when no book is given.
         whole: the folder was given (every listed certificate must be there), not some of
             its files (each of them must still be listed, with its SHA-256).
+        reading: the SHA-256 of the reading given, or ``None``: the manifest must state it.
 
     Raises:
         BookError: no manifest, a certificate missing from it, listed but absent, or whose
@@ -269,4 +270,9 @@ def check_manifest(folder: str, files: list[str], book: bytes | None,
             raise BookError(f"the book given has SHA-256 {sha256(book)[:16]}..., the run's "
                             f"was {str(man.get('book_sha256'))[:16]}...")
         lines.append(f"manifest: the book text's SHA-256 {sha256(book)[:16]}... is the run's")
+    if reading is not None:
+        if man.get("reading_sha256") != reading:
+            raise BookError(f"the reading given has SHA-256 {reading[:16]}..., the run's was "
+                            f"{str(man.get('reading_sha256'))[:16]}...")
+        lines.append(f"manifest: the reading's SHA-256 {reading[:16]}... is the run's")
     return lines

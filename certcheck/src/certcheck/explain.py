@@ -26,7 +26,8 @@ from certcheck.by_definition import unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
 from certcheck.reader import tokens
-from certcheck.words import stated
+from certcheck.reading import ReadingError, bind, load_reading
+from certcheck.words import stated, use
 
 __all__ = ["explain", "run"]
 
@@ -99,13 +100,16 @@ def explain(cert: dict, book: str, fast: bool = True) -> tuple[bool, list[str]]:
 
 
 def run(argv: list[str]) -> int:
-    """``certcheck explain ID PATH --book BOOK``: print one id's path from the page to the
-    proof. Exit 0: it passes, read on every side; 1: it fails or a side is not read; 2: bad
-    arguments (no such file, another id's file, no book)."""
+    """``certcheck explain ID PATH --book BOOK [--reading READING]``: print one id's path
+    from the page to the proof. Exit 0: it passes, read on every side; 1: it fails or a
+    side is not read; 2: bad arguments (no such file, another id's file, no book)."""
     ap = argparse.ArgumentParser(prog="certcheck explain", description=__doc__.split("\n\n")[0])
-    ap.add_argument("id", help="the id, as printed: 3.16, 3.96e, thm3.2.1")
+    ap.add_argument("id", help="the id, as the reading names it")
     ap.add_argument("path", help="the folder of certificates (or the id's file)")
     ap.add_argument("--book", metavar="FILE", required=True, help="the book's text")
+    ap.add_argument("--reading", metavar="FILE",
+                    help="the reading of the book: the id's table and class bound to it, and "
+                         "the theorems in words read")
     ap.add_argument("--no-flint", action="store_true", help="standard-library arithmetic only")
     args = ap.parse_args(argv)
     path = args.path if not os.path.isdir(args.path) else os.path.join(
@@ -114,18 +118,30 @@ def run(argv: list[str]) -> int:
         cert = load(path)
         with open(args.book, "rb") as f:
             book = f.read()
+        reading = None
+        if args.reading:
+            with open(args.reading, "rb") as f:
+                reading = load_reading(f.read(), args.reading)
     except (OSError, ValueError, CheckError) as exc:
         print(f"certcheck explain: {exc}", file=sys.stderr)
         return 2
+    use(reading)
     if str(cert.get("id")) != args.id:
         print(f"certcheck explain: {path} holds ({cert.get('id')}), not ({args.id})",
               file=sys.stderr)
         return 2
     try:  # the file is held to its folder's manifest, as a file given to certcheck is
-        check_manifest(os.path.dirname(path) or ".", [path], book, whole=False)
+        check_manifest(os.path.dirname(path) or ".", [path], book, whole=False,
+                       reading=None if reading is None else reading["sha256"])
     except BookError as exc:
         print(f"FAILED ({args.id}) MANIFEST.json: {exc}")
         return 1
+    if reading is not None:
+        try:
+            print("\n".join(bind(cert, reading)))
+        except ReadingError as exc:
+            print(f"FAILED {exc}")
+            return 1
     passed, lines = explain(cert, book.decode("utf-8"), fast=not args.no_flint)
     print("\n".join(lines))
     return 0 if passed else 1

@@ -64,8 +64,11 @@ def export(results, directory, book: str | None = None, jobs: int = 1, cache: bo
         if summary["written"]:
             with rep.phase(f"certcheck on {len(summary['written'])} certificates") as ph:
                 summary.update(recheck_folder(directory, {certificate_file(i): i for i in
-                                                          summary["written"]}, book, jobs))
-                ph.finish("re-checked")
+                                                          summary["written"]}, book, jobs,
+                                              reading=summary.get("reading")))
+                ph.finish("certcheck not found: not re-checked" if summary["rechecked"] is None
+                          else "re-checked" if not summary["failures"] else
+                          f"certcheck FAILED on {len(summary['failures'])}")
     return summary
 
 

@@ -55,7 +55,7 @@ from rigidsym.registry.declarations import REGISTRY, Equation, is_user_id
 
 __all__ = ["lookup", "store", "key_of", "transcription_key", "VerdictCacheWarning", "FORMAT",
            "read", "claimed", "present", "certificate_key", "read_certificate",
-           "store_certificate"]
+           "store_certificate", "engine_settings"]
 
 #: version of the entry format (an entry of another format is foreign)
 FORMAT = 1
@@ -83,6 +83,12 @@ def _settings() -> str:
     values |= {"zero.decide.SAMPLE_SET_SIZE": str(decide.SAMPLE_SET_SIZE),
                "repairing.fasteval.PRIME": str(fasteval.PRIME)}
     return json.dumps(values, sort_keys=True)
+
+
+def engine_settings() -> str:
+    """The engine's settings as they are now (JSON), a part of every key: a verdict store of
+    another kind (``rigidsym.documents.store``) keys on them as this cache does."""
+    return _settings()
 
 
 @cache

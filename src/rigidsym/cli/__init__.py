@@ -51,7 +51,7 @@ from rigidsym.cli import (
     verify,
 )
 from rigidsym.cli.common import HelpFormatter, add_ascii, ascii_output
-from rigidsym.core import interrupts
+from rigidsym.core import interrupts, progress
 from rigidsym.core import work as _work
 from rigidsym.core.errors import did_you_mean
 
@@ -65,6 +65,9 @@ _COMMANDS = {"verify": verify, "report": report, "show": show, "check": check,
              "generate": generate.GENERATE, "build-c": generate.BUILD_C, "audit": audit,
              "cache": cache,
              "glossary": glossary}
+
+#: the commands that answer at once (no sympy, no checking): no start line
+_QUICK = frozenset({"cache", "glossary"})
 
 DESCRIPTION = """\
 Checked computer algebra for chapter 3 of J. Angeles, Fundamentals of Robotic Mechanical
@@ -170,9 +173,13 @@ def _main(argv: list[str] | None) -> int:
     from rigidsym.registry.declarations import BadInput
     if getattr(args, "ascii_all", False):   # rigidsym --ascii COMMAND: as COMMAND --ascii
         args.ascii = True
+    # the program's first line before its heavy imports, and one every 2.5 s until the
+    # command's own progress (tests calling main() in-process see none)
+    announce = argv is None and args.command not in _QUICK and not getattr(args, "quiet", False)
     with ascii_output(getattr(args, "ascii", False)):
         try:
-            code = args.func(args)
+            with progress.starting(f"rigidsym {args.command}", enabled=announce):
+                code = args.func(args)
             sys.stdout.flush()  # a closed pipe shows here, not at the interpreter's exit
             _work.dump()  # the work done, where a test or a benchmark asked for it
             return code

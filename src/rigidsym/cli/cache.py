@@ -5,7 +5,8 @@ The cache (:mod:`rigidsym.core.cache`) holds compiled kernels (``kernels/``), ch
 (``latex/``) and the book's built statements (``statements/``,
 :mod:`rigidsym.registry.statement_cache`). Clearing never changes a verdict:
 what is gone is computed again on the next run. ``info`` lists the C driver's object cache
-too (:mod:`rigidsym.kernels.cbuild.objects`: ``objects/``, or ``RIGIDSYM_OBJECT_CACHE``),
+too (:mod:`rigidsym.kernels.cbuild.objects`: ``~/.cache/rigidsym/objects``, or
+``RIGIDSYM_OBJECT_CACHE``; ``RIGIDSYM_CACHE`` does not move it),
 which ``pip install`` fills and reads; ``rm -r`` of its folder empties it.
 """
 

@@ -8,8 +8,10 @@ from rigidsym.cli.common import MODULE_HELP, add_repair_arguments, repair_option
 
 __all__ = ["add_arguments", "run", "HELP", "EXAMPLES", "EXIT"]
 
-HELP = "decide an equation written in LaTeX (its symbols: --let)"
-EXAMPLES = r"""  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
+HELP = "decide an equation written in LaTeX, or every display of a document (its symbols: --let)"
+EXAMPLES = r"""  rigidsym check notes.md          every displayed relation of a Markdown or LaTeX
+                                   document; its symbols: notes.reading.toml beside it
+  rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
       --let '\mathbf{Q}: rotation'
   rigidsym check --latex \
       '\mathbf{Q} = \mathbf{1} + \sin\phi\,\mathbf{E} + (1 - \cos\phi)\mathbf{E}^2' \
@@ -34,9 +36,18 @@ EXIT = {"verified": 0, "definition": 0, "does-not-hold": 1, "undecided": 3}
 
 def add_arguments(c) -> None:
     """Arguments of ``rigidsym check``."""
-    c.add_argument("--latex", required=True, metavar="LATEX",
+    c.add_argument("file", nargs="?", metavar="FILE",
+                   help="a document (.md or .tex): decide every displayed relation "
+                        "(docs/check-documents.md); its declarations: the reading file "
+                        "FILE's stem + .reading.toml beside it, --reading, --let")
+    c.add_argument("--latex", metavar="LATEX",
                    help="the relation(s) in LaTeX: = or \\equiv chains, several separated "
-                        "by ',' or \\quad")
+                        "by ',' or \\quad (this or FILE)")
+    c.add_argument("--reading", metavar="FILE",
+                   help="with FILE: the document's reading file (default: the sidecar "
+                        "X.reading.toml beside X.md, if there is one)")
+    c.add_argument("--markdown", action="store_true",
+                   help="with FILE: print the errata as Markdown (default: text)")
     c.add_argument("--let", action="append", metavar="DECL", default=[],
                    help="what a symbol is: 'NAME: KIND' or 'NAME = LATEX' (repeatable; one "
                         "value may hold several separated by '; '; default: none, every "
@@ -74,6 +85,18 @@ def run(args) -> int:
     from rigidsym.latex import LatexError
     from rigidsym.registry.declarations import BadInput
 
+    if (args.file is None) == (args.latex is None):
+        print("rigidsym: error: give a document FILE or --latex LATEX (one of them)",
+              file=sys.stderr)
+        return 2
+    if args.file is not None:
+        from rigidsym.cli.check_document import run_document
+
+        return run_document(args)
+    if args.reading or args.markdown:
+        print("rigidsym: error: --reading and --markdown go with a document FILE",
+              file=sys.stderr)
+        return 2
     try:
         from rigidsym.api import check_latex_run
         from rigidsym.core.progress import Reporter

@@ -233,4 +233,7 @@ def run(args) -> int:
         whose = "the book's" if any(not is_user_id(r.id) for r in results
                                     if r.verdict == "does-not-hold") else "its own"
         print(f"Why an equation does not hold, in {whose} symbols: rigidsym show ID")
+    if certified is not None and certified["written"] and (
+            certified["rechecked"] is None or certified["failures"]):
+        return 1   # a certificate certcheck rejected, or none re-checked: never a pass
     return 1 if off else 0

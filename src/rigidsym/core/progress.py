@@ -31,7 +31,7 @@ from contextlib import contextmanager
 from rigidsym.core.interrupts import checkpoint
 
 __all__ = ["Reporter", "Phase", "PER_ITEM", "SILENCE", "load_durations", "save_durations",
-           "format_seconds"]
+           "format_seconds", "starting", "begun", "doing"]
 
 #: refreshes per second of the live display (at least one)
 REFRESH = 4
@@ -55,6 +55,86 @@ def format_seconds(s: float) -> str:
         return f"{s:.0f} s"
     m, r = divmod(int(round(s)), 60)
     return f"{m} min {r:02d} s"
+
+
+#: the start of the running command (:func:`starting`): its watch's stop, and the lock its
+#: lines and the first progress of the command take in turn
+_START = {"stop": None}
+_START_LOCK = threading.Lock()
+
+
+def doing(ident: int) -> str:
+    """What the thread ``ident`` is doing, in words, from its stack: ``"importing sympy"``
+    (the outermost library being imported, else the innermost module of rigidsym), else
+    ``"in rigidsym.x.f"`` (its innermost function of rigidsym), else ``"working"``."""
+    frame = sys._current_frames().get(ident)
+    stack = []
+    while frame is not None:
+        stack.append(frame)
+        frame = frame.f_back
+    modules = [f.f_globals.get("__name__", "") for f in reversed(stack)   # outermost first
+               if f.f_code.co_name == "<module>"]
+    modules = [m for m in modules if m not in ("__main__", "")]
+    if modules:
+        other = [m for m in modules if m.split(".")[0] != "rigidsym"]
+        return f"importing {other[0] if other else modules[-1]}"
+    for f in stack:                              # innermost first
+        name = f.f_globals.get("__name__", "")
+        if name.startswith("rigidsym") and not name.startswith("rigidsym.core.progress"):
+            return f"in {name}.{f.f_code.co_name}"
+    return "working"
+
+
+@contextmanager
+def starting(command: str, enabled: bool = True, stream=None):
+    """The first line of a command, before its heavy imports (sympy takes seconds, tens of
+    seconds on a loaded machine), and until the command's own progress begins (its first
+    :class:`Reporter`), a line whenever :data:`SILENCE` seconds pass without one, saying
+    what runs (:func:`doing`): ``rigidsym verify: still starting (importing sympy), 5.0 s``,
+    or, past its imports, ``rigidsym generate: still working (in rigidsym.x.f), 9.0 s``.
+
+    Args:
+        command: the head of each line (``rigidsym verify``).
+        enabled: ``False`` prints nothing (``--quiet``).
+        stream: where to write (default ``sys.stderr``).
+    """
+    if not enabled:
+        yield
+        return
+    out = stream if stream is not None else sys.stderr
+    t0, main = time.perf_counter(), threading.get_ident()
+    print(f"{command}: starting ...", file=out, flush=True)
+    stop = threading.Event()
+    said = [t0]
+
+    def watch() -> None:
+        while not stop.wait(TICK):
+            with _START_LOCK:
+                now = time.perf_counter()
+                if now - said[0] >= SILENCE and not stop.is_set():
+                    what = doing(main)
+                    phase = "starting" if what.startswith("importing") else "working"
+                    print(f"{command}: still {phase} ({what}), {format_seconds(now - t0)}",
+                          file=out, flush=True)
+                    said[0] = now
+
+    th = threading.Thread(target=watch, daemon=True, name="rigidsym-starting")
+    _START["stop"] = stop
+    th.start()
+    try:
+        yield
+    finally:
+        begun()
+        th.join()
+
+
+def begun() -> None:
+    """The command's own progress begins (a :class:`Reporter`, the C build's lines): the
+    start's lines (:func:`starting`) end, none after this returns."""
+    with _START_LOCK:
+        stop, _START["stop"] = _START["stop"], None
+        if stop is not None:
+            stop.set()
 
 
 class Phase:
@@ -160,6 +240,8 @@ class Reporter:
                            f"{format_seconds(time.perf_counter() - ph.t0)}")
 
     def __enter__(self) -> Reporter:
+        if self.enabled:
+            begun()
         s = self._stream()
         self.live = self.enabled and hasattr(s, "isatty") and s.isatty() and \
             os.environ.get("TERM") != "dumb"

@@ -6,8 +6,8 @@
   tangent of the sphere. The printed point gives the projection, the value the check used,
   which satisfies ``e · ė = 0``: a reader substituting the printed values by hand finds both
   printed sides (:func:`project_rates`).
-- A symbol the reader introduced (a rotation's body velocity, the reader's ``Q_w``) is
-  printed in words, never by its internal name (:func:`own_symbols_said`).
+- A symbol the reader introduced (a rotation's body velocity ``Q_w``) is printed with what
+  it is, never as if the user had written it (:func:`own_symbols_said`).
 """
 
 from __future__ import annotations
@@ -75,9 +75,10 @@ def own_symbols_said(counterexample: dict | None, rows: dict) -> None:
     for key, g in rows.items():
         if getattr(g, "meaning", "") == "body velocity" and key.endswith("_{w}"):
             owner = key[:-len("_{w}")]
-            angular = "angular " if tuple(getattr(g, "shape", ()) or ()) == (3, 1) else ""
-            said[key] = (f"w, the body {angular}velocity of {owner}, introduced by the "
-                         f"reader")
+            what = "angular velocity" if tuple(getattr(g, "shape", ()) or ()) == (3, 1) \
+                else "twist"
+            of = getattr(rows.get(owner), "name", owner)
+            said[key] = f"{g.name}, the body {what} of {of}, introduced by the reader"
     for s in counterexample.get("symbols") or []:
         if s.get("latex") in said:
             s["symbol"] = said[s["latex"]]

@@ -66,6 +66,11 @@ def shape_words(x) -> str:
     return "a scalar" if s is None else f"a {s[0]}x{s[1]} matrix"
 
 
+#: the meaning of a glyph the user wrote and nothing declares (:func:`default_glyph`); a
+#: free glyph with another meaning is one the reader introduced (a rate, a body velocity)
+UNDECLARED = "(not in the glyph table)"
+
+
 def default_glyph(key: str, base) -> Glyph:
     """A glyph the table does not list: bold lower-case a 3-vector, bold capital a 3x3
     matrix, anything else a scalar; named after its LaTeX."""
@@ -73,7 +78,7 @@ def default_glyph(key: str, base) -> Glyph:
     if base and base[0] == "bold":
         letter = base[1].lstrip("\\")
         shape = (3, 3) if letter[0].isupper() else (3, 1)
-    return Glyph(key, "*", name_from_key(key), shape, "free", "(not in the glyph table)", "")
+    return Glyph(key, "*", name_from_key(key), shape, "free", UNDECLARED, "")
 
 
 def name_from_key(key: str) -> str:

@@ -15,7 +15,7 @@ from rigidsym.latex.declgraph import glyph_keys, model_order
 from rigidsym.latex.lets import Let, kind_of
 from rigidsym.latex.periodic import periodic_angles
 from rigidsym.latex.reader_glyphs import GlyphReader, glyph_symbol
-from rigidsym.latex.shapes import LatexError, matrix_shape
+from rigidsym.latex.shapes import UNDECLARED, LatexError, matrix_shape
 from rigidsym.latex.table import Glyph
 
 __all__: list[str] = []
@@ -101,7 +101,7 @@ def glyph_values(rd: GlyphReader, lend: dict, values: dict,
     """Each used glyph's value into ``values`` (a declared kind, a lent model, a glyph-table
     row or definition, a free matrix of named entries, an angle by its uses in ``printed``
     and the models: :mod:`rigidsym.latex.periodic`); the notes and the free glyphs."""
-    notes, free, seen, free_, lent_ = [], [], set(), [], []
+    notes, free, seen, free_, lent_ = [], [], set(), {}, []
     scalars = {(rd.over.get(k) or rd.glyphs[k]).name for k in rd.used
                if not (rd.over.get(k) or rd.glyphs[k]).shape}
     while rd.used - seen:  # a book definition read below may bring glyphs of its own
@@ -123,7 +123,8 @@ def glyph_values(rd: GlyphReader, lend: dict, values: dict,
                          f"{', its model' if value is not None else ', free'})")
         elif g.kind == "free":
             free.append(key)
-            free_.append(f"{key} ({value_shape_words(g.shape)})")
+            if g.meaning == UNDECLARED:   # the reader's own (a rate) say what they are
+                free_[key] = f"{key} ({value_shape_words(g.shape)})"
         else:  # a glyph-table row of --book
             notes.append(f"{key}: {g.meaning} ({g.name}, {value_shape_words(g.shape)}; "
                          f"glyph table, {g.section})")
@@ -138,9 +139,7 @@ def glyph_values(rd: GlyphReader, lend: dict, values: dict,
                                  g.shape[1] == 1 else
                                  (lambda n, s=g.shape: _sym.matrix(n, *s)), g.name, scalars)
     angles = _periodic_angles(rd, free, values, printed, scalars)
-    # the reader's own (a rotation's body velocity) is said where it is made, not here
-    own = {k for k in free if (rd.over.get(k) or rd.glyphs[k]).meaning == "body velocity"}
-    free_ = [f for f, k in zip(free_, free, strict=True) if k not in angles and k not in own]
+    free_ = [f for k, f in free_.items() if k not in angles]
     notes += [f"{k}: an angle (no --let declares it): it occurs only in {', '.join(fs)}, at "
               f"integer multiples, so the relation has period 2π in {k} and deciding it for "
               f"{k} in (-π, π) decides it for every real {k}" if d == 1 else

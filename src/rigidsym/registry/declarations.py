@@ -38,6 +38,7 @@ __all__ = [
     "BadInput",
     "is_user_id",
     "book_ids",
+    "book_reading",
     "forget_module",
     "forget_built",
     "DeclarationTypeError",
@@ -389,6 +390,21 @@ def load_all() -> dict[str, Equation]:
     importlib.import_module(_config.BOOK)  # by name: the machinery never imports the book
 
     return REGISTRY
+
+
+def book_reading():
+    """The reading file of the book the registry declares (``READING`` of the book package,
+    :data:`rigidsym.core.config.BOOK`): each glyph's kind or model and each id's class, as a
+    person reviewed them (:mod:`rigidsym.reading`); ``None`` where the book names none.
+
+    Returns:
+        A :class:`pathlib.Path`, or ``None``.
+    """
+    import importlib
+
+    from rigidsym.core import config as _config
+
+    return getattr(importlib.import_module(_config.BOOK), "READING", None)
 
 
 def book_ids() -> list[str]:

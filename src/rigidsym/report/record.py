@@ -152,11 +152,12 @@ def origin_shown(rec: dict) -> str:
 def page_reading(r: Outcome) -> str:
     """For a conversion slip, one sentence on its declared page reading (a conjecture about
     the printed page, the source being a converted text), as decided in
-    :data:`rigidsym.checking.certifying.certificates.PAGE_READINGS`: ``verified`` only
-    where every corrected member of ``r`` holds; ``""`` for an undecided reading."""
-    from rigidsym.checking.certifying.certificates import PAGE_READINGS
+    the book's reading (:func:`rigidsym.checking.certifying.certificates.page_reading`):
+    ``verified`` only where every corrected member of ``r`` holds; ``""`` for an undecided
+    reading."""
+    from rigidsym.checking.certifying.certificates import page_reading as decided_reading
 
-    decided = PAGE_READINGS.get(r.id, "")
+    decided = decided_reading(r.id)
     corrected = [m for m in r.members if m.get("role") == "corrected"]
     head = (" The page reading: the declared reading of the printed page (a conjecture, the "
             "source being a converted text)")

@@ -32,18 +32,10 @@ from pathlib import Path
 
 import sympy as sp
 
-from rigidsym.checking.certifying.body_symbols import point_body_symbols
-from rigidsym.checking.certifying.displacement_symbols import displacement_symbols
+from rigidsym.checking.certifying import reading_table
 from rigidsym.checking.certifying.for_every import for_every_evidence
-from rigidsym.checking.certifying.force_symbols import force_symbols
-from rigidsym.checking.certifying.instant_screw_symbols import instant_screw_symbols
-from rigidsym.checking.certifying.invariant_rate_symbols import (
-    invariant_rate_symbols,
-    member_symbols,
-)
+from rigidsym.checking.certifying.reading_table import id_lets, reading_of
 from rigidsym.checking.certifying.statement import StatementPrinter, Unprintable, relation_record
-from rigidsym.checking.certifying.twist_symbols import twist_symbols
-from rigidsym.checking.certifying.wrench_inertia_symbols import wrench_inertia_symbols
 from rigidsym.checking.deciding.evidence import small_witness
 from rigidsym.checking.deciding.explicit import (
     EXPLICIT_CACHE,
@@ -54,12 +46,12 @@ from rigidsym.checking.deciding.explicit import (
     shape_of,
 )
 from rigidsym.core.files import write_atomic
-from rigidsym.registry.declarations import REGISTRY
+from rigidsym.registry.declarations import REGISTRY, book_reading, is_user_id
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "certificate_or_reason",
            "write_certificates", "certificate_file", "recheck_folder", "write_manifest",
-           "cause_record", "CAUSE_CLASSES", "symbol_table"]
+           "cause_record", "CAUSE_CLASSES", "symbol_table", "page_reading"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -223,7 +215,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         if role != "corrected" and (pair := _restated_pair(eq.latex or "", lhs, rhs)):
             rels[-1]["restated"] = {"printed": "X^{-1} = Y", "proved": "X Y = 1",
                                     "X": pair[0], "Y": pair[1]}
-        if role != "corrected" and (own := member_symbols(r.label, eq.section or "")):
+        if role != "corrected" and (own := relation_table(eq_id, r.label)):
             rels[-1]["symbols"] = own  # F = N, L or H: this member's F (the page's words)
         if role == "claim" and getattr(r, "page", 0):  # a chain's member the page prints
             rels[-1]["page"] = r.page
@@ -238,7 +230,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     out = {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
            "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
-    out["symbols"] = symbol_table(atoms, eq.latex or "", eq.section or "")
+    out["symbols"] = symbol_table(atoms, eq_id)
     if verdict == "does-not-hold":
         out["cause"] = cause_record(eq)
     return out
@@ -305,304 +297,47 @@ def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
     return m.group(1), m.group(2)
 
 
-#: the cross-product matrices by section, as latex/glyphs.csv declares them (the checking
-#: layer does not import the LaTeX reader): the capital of each vector; e and omega always
-#: (2.49; Theorem 3.3.1 and (3.39): Omega is skew with axial vector omega)
-_CPM_BY_SECTION = {"3.2.2": "ab", "3.4.2": "ap", "3.7": "ap", "3.8": "rac"}  # their letters
+def symbol_table(atoms: list[dict], eq_id: str) -> list[dict]:
+    """One entry per glyph the statement's atoms stand for, for a referee to hold against
+    the page (certcheck reads the printed LaTeX under it, docs/certificates.md): the model
+    symbols' own lines (``{"glyph", "kind", "atoms"}``, their rates), then the lines the
+    book's reading gives the id (:func:`rigidsym.registry.declarations.book_reading`,
+    :mod:`rigidsym.checking.certifying.reading_table`): a cross-product matrix, a formula of
+    another chapter as the page reproduces it, what the page says in words. A reader's own
+    id has the model symbols' lines alone.
 
-#: the model's fresh arrays for a printed glyph whose printed shape admits no product: the
-#: printed v-dot of (3.77a), a 4-array (N-tilde is 3 x 4), the conversion's garble of
-#: nu-dot (``derivations/sec3_4_2_rates.py``); its atoms ``sec342_vdot_1`` ... ``_4``; 3.148's
-#: P, never given on the page (any real 6 x 6: ``Statement.for_every``), row-major
-_FRESH_ARRAYS = {"sec342_vdot": "\\dot{\\mathbf{v}}", "s38_P": "\\mathbf{P}"}
-
-_GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "eta", "theta", "kappa", "lambda",
-          "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega"}
-
-
-def _glyph(base: str, vector: bool) -> str:
-    """The book's glyph of an atom group's name (``e`` -> ``\\mathbf{e}``, ``omega`` ->
-    ``\\boldsymbol{\\omega}``, ``phi`` -> ``\\phi``, ``r0`` -> ``r_0``, ``p0`` ->
-    ``\\mathbf{p}_0``, ``adot`` -> ``\\dot{\\mathbf{a}}``)."""
-    base = re.sub(r"^s\d+_", "", base)  # a section's prefix
-    m = re.fullmatch(r"([A-Za-z]+?)(dot)?_?(\d?)", base)  # p0 -> p_0, adot -> dot a
-    core, dot, sub = m.groups() if m else (base, None, "")
-    if core in _GREEK or core.capitalize() in {g.capitalize() for g in _GREEK}:
-        out = f"\\boldsymbol{{\\{core}}}" if vector else f"\\{core}"
-    elif vector and m:
-        out = f"\\mathbf{{{core}}}"
-    elif len(core) == 1:
-        out = core
-    else:  # a name the book does not print (the model's own)
-        return f"\\mathbf{{{base}}}" if vector else base
-    return (f"\\dot{{{out}}}" if dot else out) + (f"_{sub}" if sub else "")
-
-
-def symbol_table(atoms: list[dict], latex: str, section: str = "") -> list[dict]:
-    """One entry per book glyph the statement's atoms stand for, for a referee to hold
-    against the page (certcheck reads the printed LaTeX under it, docs/certificates.md):
-    ``{"glyph", "kind", "atoms"}`` for a vector (three atoms ``x_1, x_2, x_3`` of one kind)
-    or a scalar, ``{"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"}`` for the
-    cross-product matrix of a vector when its capital is printed, and the time derivative
-    ``\\dot{...}`` of a timed glyph (its atoms' jets), a rotation's or transform's matrix
-    (its atoms row-major). A cross-product matrix only where printed in ``latex`` and the
-    glyph table (``latex/glyphs.csv``) defines it so for the id's ``section``. Where ``e``
-    and ``phi`` are atoms and no rotation group is, ``{"glyph": "\\mathbf{Q}", "latex":
-    ..., "printed_as": "(2.49)"}``: Q of the natural invariants as printed in chapter 2
-    (and its time derivative term by term), which certcheck reads firmly and cites (3.14's
-    and 3.16's printed inverse, proved as A^T A times it being 1, is marked ``restated``:
-    :func:`_restated_pair`); 3.14's ``alpha``, ``beta`` as printed in (3.15); ``A``, ``P``
-    where ``U`` (3.83b) or ``V`` (3.119b) is printed. Section 3.8's point-mass body:
-    :func:`rigidsym.checking.certifying.body_symbols.point_body_symbols`; section 3.7's
-    system of forces: :func:`rigidsym.checking.certifying.force_symbols.force_symbols`;
-    section 3.8's twists and momenta:
-    :func:`rigidsym.checking.certifying.twist_symbols.twist_symbols`; sections 3.3-3.4.2's:
-    :func:`rigidsym.checking.certifying.instant_screw_symbols.instant_screw_symbols`; the glyphs
-    sections 3.7 and 3.8 define on the id itself, ``V`` and ``M_A``:
-    :func:`rigidsym.checking.certifying.wrench_inertia_symbols.wrench_inertia_symbols`;
-    section 3.2.3's triad ``e_k`` where printed: column k of the rotation ``R``."""
-    cpm: dict = {"\\mathbf{e}": ["\\mathbf{E}"], "\\boldsymbol{\\omega}": ["\\boldsymbol{\\Omega}"]}
-    for sec, letters in _CPM_BY_SECTION.items():
-        if section == sec or section.startswith(sec + "."):
-            for x in letters:
-                cpm.setdefault(f"\\mathbf{{{x}}}", []).append(f"\\mathbf{{{x.upper()}}}")
-    vectors: dict = {}
-    scalars = []
-    fresh: dict = {}  # a printed glyph the model writes as a fresh array of its own shape
-    for g in atoms:
-        names = g["names"]
-        if len(names) == 1 and (m := re.fullmatch(r"(.+)_(\d+)", names[0])) and \
-                m.group(1) in _FRESH_ARRAYS and g["kind"] == "free":
-            fresh.setdefault(m.group(1), []).append(names[0])
-            continue
-        if len(names) == 3 and all(re.fullmatch(rf"{re.escape(g['group'])}_[123]", n)
-                                   for n in names):
-            vectors[g["group"]] = (g["kind"], names, g["timed"])
-        elif len(names) == 1:
-            m = re.fullmatch(r"(.+)_([123])", names[0])
-            if m and g["kind"] == "free":
-                vectors.setdefault(m.group(1), ("free", [], g["timed"]))[1].append(names[0])
-            else:
-                scalars.append((names[0], g["kind"], g["timed"]))
-    out = []
-
-    def add(glyph, entry, timed):  # every atom's glyph: definitions on the page use them
-        out.append({"glyph": glyph, **entry})
-        if timed:  # its first and second time derivatives: the atoms' jets
-            for dots, primes in (("dot", "'"), ("ddot", "''")):
-                out.append({"glyph": f"\\{dots}{{{glyph}}}", **entry,
-                            "atoms": [a + primes for a in entry["atoms"]]})
-
-    for base, names in sorted(fresh.items()):
-        out.append({"glyph": _FRESH_ARRAYS[base], "kind": "free",
-                    "atoms": sorted(names, key=lambda a: int(a.rsplit("_", 1)[1]))})
-    for base, (kind, names, timed) in sorted(vectors.items()):
-        if sorted(names) != [f"{base}_{k}" for k in (1, 2, 3)]:
-            continue
-        glyph = _glyph(base, True)
-        add(glyph, {"kind": kind, "atoms": sorted(names)}, timed)
-        for cap in cpm.get(glyph, ()):  # U of (3.29b), (3.83b), V of (3.119b): A, B, P
-            if cap in latex or cap in ("\\mathbf{A}", "\\mathbf{B}", "\\mathbf{P}") and \
-                    re.search(r"\\mathbf\{[UV]\}", latex):
-                out.append({"glyph": cap, "cpm_of": glyph})
-    for g in atoms:  # a rotation or transform: its matrix, row-major
-        if g["kind"] in ("rotation", "transform"):
-            add(_glyph(g["group"], True), {"kind": g["kind"], "atoms": list(g["names"])},
-                g["timed"])
-    for name, kind, timed in scalars:
-        add(_glyph(name, False), {"kind": kind, "atoms": [name]}, timed)
-    glyphs = {e["glyph"] for e in out}
-    # Q of the natural invariants, as printed (also for glyphs defined through Q: Omega)
-    if "\\mathbf{Q}" not in glyphs and {"\\mathbf{e}", "\\phi"} <= glyphs:
-        out.append({"glyph": "\\mathbf{Q}", "latex": _Q_NATURAL, "printed_as": "(2.49)"})
-        if "\\mathbf{E}" not in glyphs:
-            out.append({"glyph": "\\mathbf{E}", "cpm_of": "\\mathbf{e}"})
-        if {"\\dot{\\mathbf{e}}", "\\dot{\\phi}"} <= glyphs:
-            out.append({"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_NATURAL,
-                        "printed_as": "the time derivative of (2.49)"})
-            out.append({"glyph": "\\dot{\\mathbf{E}}", "cpm_of": "\\dot{\\mathbf{e}}"})
-    if section == "3.2.1" and "\\beta \\mathbf{e}" in latex and "\\phi" in glyphs:
-        out += [{"glyph": g, "latex": x, "printed_as": "(3.15)"} for g, x in _ALPHA_BETA]
-    out += model_symbols({e["glyph"] for e in out}, section, out)
-    out += force_symbols({e["glyph"] for e in out}, section, out)
-    if section == "3.2.3" and "\\mathbf{e}_i" in latex and "\\mathbf{e}_1" not in glyphs \
-            and any(e.get("kind") == "rotation" and e["glyph"] == "\\mathbf{R}" for e in out):
-        out += [{"glyph": f"\\mathbf{{e}}_{k}", "model": f"column {k} of the rotation R (the "
-                 "triad e_1, e_2, e_3 orthonormal and right-handed)", "latex":
-                 "\\mathbf{R}\\begin{bmatrix} " + " \\\\ ".join(str(int(j == k))
-                                                            for j in (1, 2, 3)) + " \\end{bmatrix}"}
-                for k in (1, 2, 3)]
-    out += displacement_symbols({e["glyph"] for e in out}, section, latex)
-    out += instant_screw_symbols({e["glyph"] for e in out}, section, latex, out)
-    out += point_body_symbols({e["glyph"] for e in out}, section)
-    out += invariant_rate_symbols({e["glyph"] for e in out}, section, latex)
-    out += twist_symbols({e["glyph"] for e in out}, section)
-    return out + wrench_inertia_symbols({e["glyph"] for e in out}, section, latex)
-
-
-def _has(glyphs: set, latex: str) -> bool:
-    """Whether every glyph ``latex`` names (of :data:`_MODEL_GLYPHS`) is in ``glyphs``."""
-    return all(g in glyphs for g in _MODEL_GLYPHS if re.search(re.escape(g) + "(?![_'])", latex))
-
-
-def model_symbols(glyphs: set, section: str, table: list[dict] | None = None) -> list[dict]:
-    """The glyphs the page leaves to words or to a derivative, as the certificate's model
-    defines them, each ``{"glyph", "latex", "model"}``: LaTeX in the book's glyphs of the
-    table (never an expansion in atoms) and the model's words, for a referee to hold
-    against the page; certcheck reads them firmly (a side that differs is a rejection).
-
-    - a rotation ``Q`` of the quaternion ``(q, q_4)`` and its rate (``u`` the quaternion's
-      rate; section 3.4's instant models);
-    - a body point ``p = a + Q r`` (``r`` constant) and its rates;
-    - ``Omega-dot``, the rate of ``Omega = Q-dot Q^T`` (3.44), and ``omega-dot`` its vector;
-    - in section 3.6, components in the frames ``F`` and ``M``: ``[o]_F``, ``[rho]_M`` the
-      atoms, ``[rho]_F = Q rho``, ``[p]_F = o + Q rho`` and their rates.
+    Raises:
+        Unprintable: the reading gives a line the statement's atoms cannot back.
     """
-    out: list[dict] = []
-    have = set(glyphs)
-    quaternion = {"\\mathbf{q}", "\\mathbf{u}", "q_4", "u_4"} <= have and \
-        "\\mathbf{Q}" not in have
-    if quaternion:
-        out += [{"glyph": "\\tilde{\\mathbf{q}}", "cpm_of": "\\mathbf{q}"},
-                {"glyph": "\\tilde{\\mathbf{u}}", "cpm_of": "\\mathbf{u}"},
-                {"glyph": "\\mathbf{Q}", "latex": _Q_QUATERNION,
-                 "model": "rotation of the quaternion (q, q_4), not normalised"},
-                {"glyph": "\\dot{\\mathbf{Q}}", "latex": _QDOT_QUATERNION,
-                 "model": "rate of that rotation, the quaternion's rate being (u, u_4)"}]
-        have |= {"\\mathbf{Q}", "\\dot{\\mathbf{Q}}"}
-    for glyph, latex, words in _MODEL_LATEX:
-        if glyph in have or not _has(have, latex):
-            continue
-        if "'" in glyph and not section.startswith("3.2"):  # x' = Q x + c: section 3.2's
-            continue
-        if section == "3.6" and "[" in glyph or "[" not in glyph and (
-                "\\mathbf{r}" not in latex or not _timed_r(table)):
-            out.append({"glyph": glyph, "latex": latex, "model": words})
-            have.add(glyph)
-    if section == "3.6":  # the atoms: o's components in F, rho's in M, Q's in F
-        for e in table or []:
-            for base, frame in (("\\mathbf{o}", "F"), ("\\boldsymbol{\\rho}", "M"),
-                                ("\\mathbf{Q}", "F")):
-                g = e["glyph"]
-                undotted = g[g.index("{") + 1:-1] if g.startswith(("\\dot{", "\\ddot{")) \
-                    else g
-                if "atoms" in e and undotted == base:
-                    out.append({**e, "glyph": f"[{e['glyph']}]_{{\\mathcal{{{frame}}}}}"})
-    if section == "3.2" and {"\\mathbf{a}'", "\\mathbf{e}"} <= have and "d_0" not in have:
-        out.append({"glyph": "d_0", "latex": "\\mathbf{e}^T(\\mathbf{a}' - \\mathbf{a})",
-                    "model": "slide along the axis e^T d_A (3.5), d_A = a' - a (3.3)"})
-    if section == "3.2.2" and {"\\mathbf{p}_1", "\\mathbf{u}", "ell"} <= have:
-        out += _line_points(have, table or [])
-    if {"\\mathbf{w_axis}", "\\mathbf{e}"} <= have:
-        out += _axis_points(have, table or [])
-    return out
+    reading = None if is_user_id(eq_id) else reading_of(book_reading())
+    try:
+        return reading_table.table(atoms, id_lets(reading, eq_id))
+    except reading_table.ReadingMismatch as exc:
+        raise Unprintable(f"({eq_id}): {exc}") from None
 
 
-def _axis_points(have: set, table: list[dict]) -> list[dict]:
-    """Section 3.2.1's displacement about its own axis (the line through ``w_axis`` along
-    ``e``, a slide ``d_0`` along it), as the model has it: ``c = w - Q w + d_0 e``, the
-    displaced ``a' = Q a + c`` (``d_A`` by (3.3)), and ``p_0`` the axis' point closest to
-    the origin, ``w - (e^T w) e``."""
-    d0 = [{**e, "glyph": "d_0"} for e in table if e.get("glyph") == "d0_axial"]
-    out = [*d0,
-           {"glyph": "\\mathbf{p}_0", "latex": "\\mathbf{w_axis} - (\\mathbf{e}^T"
-            "\\mathbf{w_axis})\\mathbf{e}", "model": "P_0, the axis' point closest to the "
-            "origin (the axis through w_axis along e)"}]
-    if "\\mathbf{a}" in have and d0:
-        out += [{"glyph": "\\mathbf{c}", "latex": "\\mathbf{w_axis} - \\mathbf{Q}"
-                 "\\mathbf{w_axis} + d_0\\mathbf{e}", "model": "the displacement's "
-                 "translation: a rotation Q about the axis and a slide d_0 along it"},
-                {"glyph": "\\mathbf{a}'", "latex": "\\mathbf{Q}\\mathbf{a} + \\mathbf{c}",
-                 "model": "displaced point, x' = Q x + c"}]
-    return [e for e in out if e["glyph"] not in have]
-
-
-def _line_points(have: set, table: list[dict]) -> list[dict]:
-    """Section 3.2.2's line through P_1 and P_2 (the page's words), as the model has it:
-    ``p_2 = p_1 + ell u`` (``u`` unit, ``ell`` the distance), a point ``p = p_1 + lambda
-    (p_2 - p_1)`` of it, ``P_i`` the cross-product matrices of ``p_i``."""
-    ell = next(e for e in table if e.get("glyph") == "ell")
-    out = [{**ell, "glyph": "\\ell"},
-           {"glyph": "\\mathbf{p}_2", "latex": "\\mathbf{p}_1 + \\ell\\mathbf{u}",
-            "model": "the line's second point P_2, at distance ell from P_1 along the unit u"},
-           {"glyph": "\\mathbf{P}_1", "cpm_of": "\\mathbf{p}_1"},
-           {"glyph": "\\mathbf{P}_2", "cpm_of": "\\mathbf{p}_2"}]
-    if "\\lambda" in have and "\\mathbf{p}" not in have:
-        out.append({"glyph": "\\mathbf{p}", "latex": "\\mathbf{p}_1 + \\lambda(\\mathbf{p}_2"
-                    " - \\mathbf{p}_1)", "model": "a point P of the line"})
-    return out
-
-
-def _timed_r(table) -> bool:
-    """Whether ``r`` is timed (then ``p = a + Q r`` has more rates than written here)."""
-    return any(e.get("glyph") == "\\dot{\\mathbf{r}}" for e in table or [])
-
-
-#: the glyphs the model entries below are written in
-_MODEL_GLYPHS = ("\\mathbf{Q}", "\\dot{\\mathbf{Q}}", "\\ddot{\\mathbf{Q}}", "\\mathbf{a}",
-                 "\\dot{\\mathbf{a}}", "\\ddot{\\mathbf{a}}", "\\mathbf{r}", "\\mathbf{o}",
-                 "\\mathbf{c}", "\\mathbf{p}", "\\dot{\\mathbf{p}}", "\\mathbf{a}_0",
-                 "\\mathbf{p}_0", "\\dot{\\mathbf{c}}",
-                 "\\dot{\\mathbf{o}}", "\\ddot{\\mathbf{o}}", "\\boldsymbol{\\rho}",
-                 "\\dot{\\boldsymbol{\\rho}}", "\\ddot{\\boldsymbol{\\rho}}")
-_OMEGA_DOT = r"\ddot{\mathbf{Q}}\mathbf{Q}^T + \dot{\mathbf{Q}}\dot{\mathbf{Q}}^T"
-#: (glyph, LaTeX in the table's glyphs, the model's words)
-_MODEL_LATEX = (
-    (r"\mathbf{p}", r"\mathbf{a} + \mathbf{Q}\mathbf{r}", "body point, r constant"),
-    (r"\dot{\mathbf{p}}", r"\dot{\mathbf{a}} + \dot{\mathbf{Q}}\mathbf{r}",
-     "body point's velocity, r constant"),
-    (r"\ddot{\mathbf{p}}", r"\ddot{\mathbf{a}} + \ddot{\mathbf{Q}}\mathbf{r}",
-     "body point's acceleration, r constant"),
-    (r"\mathbf{a}", r"\mathbf{Q}\mathbf{a}_0 + \mathbf{c}", "point A, x = Q x_0 + c"),
-    (r"\mathbf{p}", r"\mathbf{Q}\mathbf{p}_0 + \mathbf{c}", "point P, x = Q x_0 + c"),
-    (r"\dot{\mathbf{a}}", r"\dot{\mathbf{Q}}\mathbf{a}_0 + \dot{\mathbf{c}}",
-     "A's velocity, x = Q x_0 + c"),
-    (r"\dot{\mathbf{p}}", r"\dot{\mathbf{Q}}\mathbf{p}_0 + \dot{\mathbf{c}}",
-     "P's velocity, x = Q x_0 + c"),
-    (r"\mathbf{v}_A", r"\dot{\mathbf{a}}", "A's velocity"),
-    (r"\mathbf{v}_P", r"\dot{\mathbf{p}}", "P's velocity"),
-    (r"\mathbf{a}'", r"\mathbf{Q}\mathbf{a} + \mathbf{c}", "displaced point, x' = Q x + c"),
-    (r"\mathbf{p}'", r"\mathbf{Q}\mathbf{p} + \mathbf{c}", "displaced point, x' = Q x + c"),
-    (r"\dot{\boldsymbol{\Omega}}", _OMEGA_DOT, "rate of Omega = Q-dot Q^T (3.44)"),
-    (r"\dot{\boldsymbol{\omega}}", rf"\text{{vect}}({_OMEGA_DOT})",
-     "rate of omega = vect(Omega) (3.45)"),
-    (r"[\mathbf{p}]_{\mathcal{F}}", r"\mathbf{o} + \mathbf{Q}\boldsymbol{\rho}",
-     "P's position in F: M's origin plus rho's components along M's axes"),
-    (r"[\boldsymbol{\rho}]_{\mathcal{F}}", r"\mathbf{Q}\boldsymbol{\rho}",
-     "rho in F: its M-components along M's axes"),
-    (r"[\dot{\mathbf{p}}]_{\mathcal{F}}", r"\dot{\mathbf{o}} + \dot{\mathbf{Q}}"
-     r"\boldsymbol{\rho} + \mathbf{Q}\dot{\boldsymbol{\rho}}", "rate of [p]_F"),
-    (r"[\ddot{\mathbf{p}}]_{\mathcal{F}}", r"\ddot{\mathbf{o}} + \ddot{\mathbf{Q}}"
-     r"\boldsymbol{\rho} + 2\dot{\mathbf{Q}}\dot{\boldsymbol{\rho}} + \mathbf{Q}"
-     r"\ddot{\boldsymbol{\rho}}", "second rate of [p]_F"),
-    (r"[\boldsymbol{\Omega}]_{\mathcal{F}}", r"\dot{\mathbf{Q}}\mathbf{Q}^T",
-     "Omega = Q-dot Q^T (3.44) in F"),
-    (r"[\dot{\boldsymbol{\Omega}}]_{\mathcal{F}}", _OMEGA_DOT, "rate of Omega in F"),
-)
-#: the rotation of the quaternion (q, q_4) (section 3.4's models), and its rate
-_Q_QUATERNION = (r"\frac{(q_4^2 - \mathbf{q}^T\mathbf{q})\mathbf{1} + 2\mathbf{q}\mathbf{q}^T "
-                 r"+ 2q_4\tilde{\mathbf{q}}}{\mathbf{q}^T\mathbf{q} + q_4^2}")
-_QDOT_QUATERNION = (r"\frac{(2q_4u_4 - 2\mathbf{q}^T\mathbf{u})\mathbf{1} + 2\mathbf{u}"
-                    r"\mathbf{q}^T + 2\mathbf{q}\mathbf{u}^T + 2u_4\tilde{\mathbf{q}} + 2q_4"
-                    r"\tilde{\mathbf{u}} - (2\mathbf{q}^T\mathbf{u} + 2q_4u_4)\mathbf{Q}}"
-                    r"{\mathbf{q}^T\mathbf{q} + q_4^2}")
-
-
-#: the rotation of angle phi about the unit vector e, as printed in chapter 2 (2.49)
-_Q_NATURAL = (r"\mathbf{e}\mathbf{e}^T + \cos\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
-              r"+ \sin\phi\mathbf{E}")
-#: (3.14)'s coefficients, as printed in (3.15)
-_ALPHA_BETA = (("\\alpha", r"\frac{1}{2(1 - \cos \phi)}"),
-               ("\\beta", r"\frac{1 - 2 \cos \phi}{2(1 - \cos \phi)}"))
-#: Q's time derivative, term by term (product rule; e, phi functions of time)
-_QDOT_NATURAL = (r"\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T "
-                 r"- \dot{\phi}\sin\phi(\mathbf{1} - \mathbf{e}\mathbf{e}^T) "
-                 r"- \cos\phi(\dot{\mathbf{e}}\mathbf{e}^T + \mathbf{e}\dot{\mathbf{e}}^T) "
-                 r"+ \dot{\phi}\cos\phi\mathbf{E} + \sin\phi\dot{\mathbf{E}}")
+def relation_table(eq_id: str, label: str) -> list[dict]:
+    """The table the reading gives one relation of ``eq_id`` (a member of a family, a unit
+    alternative: its label), ``[]`` where it gives none."""
+    if is_user_id(eq_id) or not label:
+        return []
+    lets = id_lets(reading_of(book_reading()), eq_id, label)
+    return reading_table.table([], lets, own=False) if lets else []
 
 
 #: the declared cause of a does-not-hold -> the certificate's cause class
 CAUSE_CLASSES = {"erratum": "book erratum", "conversion": "conversion slip"}
+
+
+def page_reading(eq_id: str) -> str:
+    """The reading's decided page reading of ``eq_id`` (a slip of the converted text: what
+    the printed page is read to show, ``"verified: ..."`` or ``"its own erratum: ..."``),
+    ``""`` where it gives none."""
+    if is_user_id(eq_id):
+        return ""
+    reading = reading_of(book_reading())
+    entry = reading.ids.get(eq_id) if reading is not None else None
+    return entry.page_reading if entry is not None else ""
 
 
 def cause_record(eq) -> dict:
@@ -614,29 +349,14 @@ def cause_record(eq) -> dict:
     cls = CAUSE_CLASSES.get(eq.cause, "undetermined")
     out = {"class": cls, "why": eq.evidence or ""}
     if cls == "conversion slip":
+        decided = page_reading(eq.id)
         out["page_reading"] = ("conjecture: the printed page shows the corrected form below, "
                                "the converted text lost or changed a glyph: "
                                + (eq.evidence or "(no evidence declared)")
-                               + (" Decided: " + PAGE_READINGS[eq.id]
-                                  if eq.id in PAGE_READINGS else ""))
+                               + (f" Decided: {decided}" if decided else ""))
     return out
 
 
-#: each conversion slip's declared page reading, decided: the reading is the corrected form
-#: this certificate proves (verified), or, where restoring the lost glyphs still leaves a
-#: term or factor missing (the corrected form proved carries it), its own book erratum
-PAGE_READINGS = {
-    "3.77a": "verified: the reading (nu-dot for v-dot) is the corrected chain, whose three "
-             "members the certificate proves by cofactors",
-    "3.94": "verified: the reading (F~-dot, the 3x4 rate, in the upper-left block) is the "
-            "corrected form, which the certificate proves by cofactors",
-    "3.97a": "its own erratum: with the tilde and phi restored the printed bracket still "
-             "lacks the term (1 - cos phi) E-dot of d/dt[(1 - cos phi) E]; the corrected form "
-             "the certificate proves carries it (a book erratum beside the conversion slip)",
-    "3.97c": "its own erratum: with the tilde restored the printed bracket still lacks the "
-             "factor 2 of H~ (3.77d); the corrected form the certificate proves, 2 [r0-dot 1 + "
-             "R-dot, -r-dot], carries it (a book erratum beside the conversion slip)",
-}
 
 
 def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, seed: int) -> None:
@@ -668,7 +388,8 @@ def certificate_or_reason(eq_id: str, verdict: str, members: list[dict] | None) 
 
 
 def write_certificates(results, directory, recheck: bool = False,
-                       book: str | None = None, made: dict | None = None) -> dict:
+                       book: str | None = None, made: dict | None = None,
+                       reading: str | Path | None = None) -> dict:
     """Write one certificate per decided result into ``directory`` (created), and a
     ``SKIPPED.txt`` naming the ids without one and why.
 
@@ -682,6 +403,10 @@ def write_certificates(results, directory, recheck: bool = False,
             into ``MANIFEST.json`` and the checker binds each certificate to its page.
         made: id -> :func:`certificate_or_reason`, made before (the export's workers or
             store: :mod:`rigidsym.checking.export`); an id not in it is made here.
+        reading: the reading file the certificates are bound to (its SHA-256 into
+            ``MANIFEST.json``, ``--reading`` for the checker); ``None``: the book's reading
+            (:func:`rigidsym.registry.declarations.book_reading`) where every id written is
+            the book's, else none.
 
     Returns:
         ``{"written": [ids], "skipped": {id: why}, "rechecked": {id: passed} or None,
@@ -702,11 +427,13 @@ def write_certificates(results, directory, recheck: bool = False,
         evidence[r.id] = [rel["evidence"]["type"] for rel in cert["relations"]]
     write_atomic(out / "SKIPPED.txt",
                  "".join(f"{i}: {why}\n" for i, why in skipped.items()) or "none\n")
-    write_manifest(out, list(files), book)
+    if reading is None and written and all(":" not in i for i in written):
+        reading = book_reading()
+    write_manifest(out, list(files), book, reading)
     summary = {"written": written, "skipped": skipped, "rechecked": None, "checker": None,
-               "failures": {}, "evidence": evidence}
+               "failures": {}, "evidence": evidence, "reading": reading}
     if recheck and written:
-        summary.update(recheck_folder(out, files, book))
+        summary.update(recheck_folder(out, files, book, reading=reading))
     return summary
 
 
@@ -721,13 +448,14 @@ def _checker_path() -> str | None:
     return "" if importlib.util.find_spec("certcheck") is not None else None
 
 
-def write_manifest(directory, names: list[str], book: str | None = None) -> dict:
-    """Write ``directory/MANIFEST.json``: the SHA-256 of each certificate file of ``names``
-    and of the book text (``None`` without one), and rigidsym's version, so that the folder
-    is one run (certcheck verifies it). Returns the manifest.
+def write_manifest(directory, names: list[str], book: str | None = None,
+                   reading: str | Path | None = None) -> dict:
+    """Write ``directory/MANIFEST.json``: the SHA-256 of each certificate file of ``names``,
+    of the book text and of the reading file (``None`` without one), and rigidsym's version,
+    so that the folder is one run (certcheck verifies it). Returns the manifest.
 
     Raises:
-        BadInput: ``book`` is not a readable file.
+        BadInput: ``book`` or ``reading`` is not a readable file.
     """
     import hashlib
 
@@ -741,15 +469,23 @@ def write_manifest(directory, names: list[str], book: str | None = None) -> dict
             book_sha = hashlib.sha256(Path(book).read_bytes()).hexdigest()
         except OSError as exc:
             raise BadInput(f"book: expected a readable text file, got {book!r} ({exc})") from None
+    reading_sha = None
+    if reading is not None:
+        try:
+            reading_sha = hashlib.sha256(Path(reading).read_bytes()).hexdigest()
+        except OSError as exc:
+            raise BadInput(f"reading: expected a readable file, got {str(reading)!r} "
+                           f"({exc})") from None
     man = {"format": "rigidsym-certificate-manifest", "rigidsym": __version__,
-           "book_sha256": book_sha,
+           "book_sha256": book_sha, "reading_sha256": reading_sha,
            "certificates": {n: hashlib.sha256((out / n).read_bytes()).hexdigest()
                             for n in sorted(names)}}
     write_atomic(out / "MANIFEST.json", json.dumps(man, indent=1) + "\n")
     return man
 
 
-def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 1) -> dict:
+def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 1,
+                   reading: str | Path | None = None) -> dict:
     """Run the independent checker (``python -m certcheck``, a separate process that
     imports no rigidsym) on ``directory``.
 
@@ -759,6 +495,8 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
         book: the book's text file, passed on as ``--book`` (each certificate is then
             bound to the text printed as its id, the folder to its manifest).
         jobs: certcheck's processes (``--jobs``).
+        reading: the reading file, passed on as ``--reading`` (each id's symbol table and
+            class are then the reading's).
 
     Returns:
         ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
@@ -777,6 +515,7 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
     if where:
         env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
     book_args = [] if book is None else ["--book", str(book)]
+    book_args += [] if reading is None else ["--reading", str(reading)]
     proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", "--jobs", str(jobs),
                            *book_args, str(directory)],
                           capture_output=True, text=True, env=env, check=False)

@@ -39,7 +39,8 @@ import os
 import platform
 import shlex
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -73,6 +74,7 @@ UNSAFE_FLAGS, unsafe_flag, kernel_flags = (_flags.UNSAFE_FLAGS, _flags.unsafe_fl
 __all__ = ["MODULE", "IsaPath", "Config", "BuildError", "CompilerNotFound",
            "default_paths", "compiler", "configure", "kernel_sources", "sources_hash",
            "embedded_hash", "build", "object_count", "estimate_seconds", "jobs", "cpu_features",
+           "Progress", "SILENCE", "TICK", "text_progress", "running_text",
            "X86_PATHS", "NATIVE", "BASELINE", "KERNEL_FLAGS", "MVEC_FLAGS", "OMP_FLAGS"]
 
 #: the extension module's name (every generated directory builds one of this name)
@@ -250,7 +252,47 @@ def estimate_seconds(cdir: Path, cfg: Config) -> float:
     return n * SECONDS_PER_OBJECT / (par * share)
 
 
-Progress = Callable[[int, int], None]
+#: ``progress(done, total, running)``: ``done`` of ``total`` steps (every object, then the
+#: link) finished, and what runs now, ``(name, seconds running)`` pairs, oldest first. Called
+#: by :func:`build` when a step finishes and every :data:`TICK` seconds while none does.
+Progress = Callable[[int, int, tuple[tuple[str, float], ...]], None]
+#: the longest :func:`text_progress` stays silent between two lines, in seconds (a reader
+#: takes a longer silence for a hang)
+SILENCE = 2.5
+#: how often :func:`build` calls its progress callback while no step finishes, in seconds
+TICK = 0.25
+
+
+def text_progress(t0: float, stream=None) -> Progress:
+    """A :data:`Progress` printing a line at each tenth of the build and, between tenths,
+    whenever :data:`SILENCE` seconds passed without one; a line after a silence names what
+    runs (the compiles, or the link) and for how long. ``t0`` is the build's start
+    (``time.perf_counter()``); lines go to ``stream`` (default ``sys.stdout``, read at each
+    line). ``setup.py`` prints the build's lines with it (pip shows them with ``-v``), and
+    so does a run-time build off a terminal."""
+    import time
+
+    shown = [0, t0]
+
+    def progress(done: int, total: int, running: tuple[tuple[str, float], ...] = ()) -> None:
+        tenth, now = 10 * done // max(total, 1), time.perf_counter()
+        if not (tenth > shown[0] or now - shown[1] >= SILENCE or done == total):
+            return
+        quiet = tenth == shown[0] and done < total
+        shown[:] = [tenth, now]
+        line = (f"rigidsym: {min(done, total - 1)}/{total - 1} objects"
+                f"{' and the link' if done == total else ''} "
+                f"({100 * done // max(total, 1)} %), {now - t0:.0f} s")
+        if quiet and running:
+            line += "; running: " + running_text(running)
+        print(line, file=stream or sys.stdout, flush=True)
+    return progress
+
+
+def running_text(running: tuple[tuple[str, float], ...], most: int = 3) -> str:
+    """What runs, in words: ``"rigidsym_module.c (x86-64-v2) 7 s, ... and 2 more"``."""
+    shown = ", ".join(f"{name} {sec:.0f} s" for name, sec in running[:most])
+    return shown + (f" and {len(running) - most} more" if len(running) > most else "")
 
 
 def _tasks(cdir: Path, cfg: Config, tmp: Path) -> list[tuple[list[str], Path]]:
@@ -297,19 +339,75 @@ def _run(argv: list[str]) -> None:
         raise BuildError(f"{shlex.join(argv)}\nfailed with exit code {r.returncode}:\n{tail}")
 
 
+class _Running:
+    """The steps running now in :func:`build`'s pool, and since when (thread-safe)."""
+
+    def __init__(self) -> None:
+        import threading
+
+        self._lock, self._since = threading.Lock(), {}
+
+    @contextmanager
+    def step(self, name: str) -> Iterator[None]:
+        import time
+
+        with self._lock:
+            self._since[name] = time.perf_counter()
+        try:
+            yield
+        finally:
+            with self._lock:
+                self._since.pop(name, None)
+
+    def now(self) -> tuple[tuple[str, float], ...]:
+        """``(name, seconds running)`` of each running step, the oldest first."""
+        import time
+
+        t = time.perf_counter()
+        with self._lock:
+            since = sorted(self._since.items(), key=lambda kv: kv[1])
+        return tuple((name, t - t0) for name, t0 in since)
+
+
+def _watched(futures: list, done: int, total: int, progress: Progress | None,
+             running: _Running) -> list:
+    """The results of ``futures`` (steps ``done + 1`` ... of ``total``), calling
+    ``progress`` as each finishes and every :data:`TICK` seconds while none does; the
+    first failure cancels the steps not started and is raised."""
+    from concurrent.futures import FIRST_COMPLETED, wait
+
+    pending, results = set(futures), []
+    try:
+        while pending:
+            finished, pending = wait(pending, timeout=TICK, return_when=FIRST_COMPLETED)
+            for f in finished:
+                results.append(f.result())
+            done += len(finished)
+            if progress is not None:
+                progress(done, total, running.now())
+    except BaseException:
+        for f in futures:       # the first failure: do not start the rest
+            f.cancel()
+        raise
+    return results
+
+
 def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
           progress: Progress | None = None, stats: dict | None = None) -> Path:
     """Compile ``gdir/c`` into the module file ``out`` (objects in ``tmp``, each reused from
     the object cache :mod:`rigidsym.kernels.cbuild.objects` when it holds it); returns ``out``.
     ``stats``, when given, receives ``objects``, ``compiled``, ``reused``, ``seconds``
-    (wall) and ``cpu_seconds`` (the compiler processes' user + system time).
+    (wall) and ``cpu_seconds`` (the compiler processes' user + system time). ``progress``
+    (:data:`Progress`, e.g. :func:`text_progress`) is called from the pool's watch: as each
+    compile or the link finishes, and every :data:`TICK` seconds while none does, with what
+    runs.
 
     Raises:
         BuildError: a compile or the link failed (the compiler's last lines in the message).
     """
     import resource
     import time
-    from concurrent.futures import ThreadPoolExecutor, as_completed
+    from concurrent.futures import ThreadPoolExecutor
 
     import numpy
 
@@ -321,30 +419,34 @@ def build(gdir: Path, out: Path, cfg: Config, tmp: Path,
     tasks = _tasks(cdir, cfg, Path(tmp))
     where = _objects.root()
     neutral = {str(cdir): "<generated>", _numpy_include(): f"<numpy {numpy.__version__}>"}
-    total, compiled = len(tasks) + 1, 0
+    total = len(tasks) + 1
+    names = {suffix: name for suffix, name in ((p.suffix, p.name) for p in cfg.paths)}
+    running = _Running()
+
+    def compile_one(argv: list[str]) -> bool:
+        src, obj = Path(argv[argv.index("-c") + 1]), Path(argv[argv.index("-o") + 1])
+        where_ = f" ({names[obj.parent.name]})" if obj.parent.name in names else ""
+        with running.step(src.name + where_):
+            return _objects.compile_cached(_run, argv, where,
+                                           _objects.headers_digest(cdir, src), neutral)
+
     with ThreadPoolExecutor(max_workers=min(jobs(), len(tasks))) as pool:
-        futures = [pool.submit(_objects.compile_cached, _run, argv, where,
-                               _objects.headers_digest(cdir, Path(argv[argv.index("-c") + 1])),
-                               neutral)
-                   for argv, _ in tasks]
-        try:
-            for done, f in enumerate(as_completed(futures), 1):
-                compiled += f.result()
-                if progress is not None:
-                    progress(done, total)
-        except BaseException:
-            for f in futures:       # the first failure: do not start the rest
-                f.cancel()
-            raise
+        futures = [pool.submit(compile_one, argv) for argv, _ in tasks]
+        compiled = sum(_watched(futures, 0, total, progress, running))
     link = [*cfg.cc, "-shared", *(("-bundle", "-undefined", "dynamic_lookup")
                                   if sys.platform == "darwin" else ()),
             *(str(o) for _, o in tasks), *cfg.libraries(),
             *_paths.partial_plan(cfg.paths, kernel_sources(cdir), TABLE_SOURCE)[1],
             *(OMP_FLAGS if cfg.openmp else ()), "-o", str(out)]
     Path(out).parent.mkdir(parents=True, exist_ok=True)
-    _run(link)
-    if progress is not None:
-        progress(total, total)
+
+    def link_it() -> bool:
+        with running.step("the link"):
+            _run(link)
+        return False
+
+    with ThreadPoolExecutor(max_workers=1) as pool:
+        _watched([pool.submit(link_it)], len(tasks), total, progress, running)
     if stats is not None:
         r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu = r1.ru_utime + r1.ru_stime - r0.ru_utime - r0.ru_stime

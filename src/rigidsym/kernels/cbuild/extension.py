@@ -107,6 +107,9 @@ def _valid(path: Path, sources: str) -> bool | None:
 
 
 def _notice(gdir: Path, cfg: _build.Config, where: Path, why: str) -> None:
+    from rigidsym.core.progress import begun
+
+    begun()     # the build's own lines follow: the program's start lines end
     cdir = Path(gdir) / "c"
     n = len(_build.kernel_sources(cdir)) - 1     # the table is not a kernel
     print(f"rigidsym: compiling the C of {n} kernels in {gdir} ({why}) for "
@@ -117,7 +120,8 @@ def _notice(gdir: Path, cfg: _build.Config, where: Path, why: str) -> None:
 
 def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
     """Build into a temporary folder beside ``path``, then :func:`_cache.put` (atomic,
-    checksummed). A progress bar on a terminal."""
+    checksummed). A progress bar on a terminal, else a line per tenth of the objects and one
+    whenever :data:`rigidsym.kernels.cbuild.driver.SILENCE` seconds passed without one."""
     import tempfile
     import time
 
@@ -138,10 +142,12 @@ def _compile(gdir: Path, cfg: _build.Config, path: Path) -> None:
                 total = _build.object_count(Path(gdir) / "c", cfg) + 1
                 task = bar.add_task("compile", total=total)
                 _build.build(gdir, out, cfg, Path(tmp),
-                             lambda done, total: bar.update(task, completed=done, total=total),
+                             lambda done, total, running=(): bar.update(task, completed=done,
+                                                                        total=total),
                              stats=stats)
-        else:
-            _build.build(gdir, out, cfg, Path(tmp), stats=stats)
+        else:   # a line per tenth, and one whenever 2.5 s passed without (what runs)
+            _build.build(gdir, out, cfg, Path(tmp), stats=stats,
+                         progress=_build.text_progress(time.perf_counter(), sys.stderr))
         stats.update(paths=[p.name for p in cfg.paths],
                      built=time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()))
         _cache.put(path, out.read_bytes())

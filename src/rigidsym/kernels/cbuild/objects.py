@@ -12,11 +12,13 @@ compiler's identity (``cc --version`` and ``cc -dumpmachine``). Entries live in
 writes its entries (a temporary file and a rename, the checksum last, under a ``filelock``
 lock): an entry that fails its checksum is compiled again, never linked.
 
-The root is ``RIGIDSYM_OBJECT_CACHE``, else ``<RIGIDSYM_CACHE>/objects``, else
-``$XDG_CACHE_HOME/rigidsym/objects`` (``~/.cache/rigidsym/objects``);
-``RIGIDSYM_OBJECT_CACHE=0`` turns the cache off. Standard library and ``filelock`` only:
-``setup.py`` loads the driver by path before rigidsym is importable (``filelock`` is in
-``build-system.requires``); without ``filelock`` every object is compiled.
+The root is ``RIGIDSYM_OBJECT_CACHE``, else ``$XDG_CACHE_HOME/rigidsym/objects``
+(``~/.cache/rigidsym/objects``); ``RIGIDSYM_OBJECT_CACHE=0`` turns the cache off.
+``RIGIDSYM_CACHE`` does not move it: that variable keeps one run's verdicts apart, and the
+objects, which depend only on the sources and the compiler, stay shared by every build.
+Standard library and ``filelock`` only: ``setup.py`` loads the driver by path before
+rigidsym is importable (``filelock`` is in ``build-system.requires``); without ``filelock``
+every object is compiled.
 """
 
 from __future__ import annotations
@@ -36,8 +38,10 @@ FORMAT = "1"
 
 
 def root() -> Path | None:
-    """The object cache folder, or ``None`` when ``RIGIDSYM_OBJECT_CACHE=0`` or ``filelock``
-    is missing."""
+    """The object cache folder: ``RIGIDSYM_OBJECT_CACHE``, else
+    ``$XDG_CACHE_HOME/rigidsym/objects`` (``~/.cache/rigidsym/objects``), whatever
+    ``RIGIDSYM_CACHE`` says; ``None`` when ``RIGIDSYM_OBJECT_CACHE=0`` or ``filelock`` is
+    missing."""
     env = os.environ.get("RIGIDSYM_OBJECT_CACHE")
     if env == "0":
         return None
@@ -47,9 +51,6 @@ def root() -> Path | None:
         return None
     if env:
         return Path(env).expanduser()
-    base = os.environ.get("RIGIDSYM_CACHE")
-    if base:
-        return Path(base).expanduser() / "objects"
     xdg = os.environ.get("XDG_CACHE_HOME") or (Path.home() / ".cache")
     return Path(xdg) / "rigidsym" / "objects"
 

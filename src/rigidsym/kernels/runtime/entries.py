@@ -37,6 +37,7 @@ from rigidsym.kernels.runtime import outpool as _outpool
 from rigidsym.kernels.runtime import state as _state
 from rigidsym.kernels.runtime.inputs import UNIT_AS_IS_EPS
 from rigidsym.kernels.runtime.scale import MIN_PARALLEL, get_num_threads
+from rigidsym.kernels.runtime.screw_at_infinity import COMPLETED, wrap_entry
 
 __all__ = ["Lazy", "bind_api", "entries", "unbind", "pooled", "rebind"]
 
@@ -146,7 +147,7 @@ def _install(space: Any, mod: types.ModuleType) -> None:
               and code.co_argcount == len(meta["args"]) and code.co_posonlyargcount == 0
               and code.co_varnames[code.co_argcount:code.co_argcount + code.co_kwonlyargcount]
               == _KEYWORDS and not code.co_flags & 0x0C      # no *args, **kwargs
-              and tuple(kwd) == _KEYWORDS)
+              and tuple(kwd) == _KEYWORDS and name not in COMPLETED)
         if ok and defaults not in (None, tuple(kwd.values())):
             ok = False                          # one set of defaults for every kernel
         if ok:
@@ -213,7 +214,12 @@ def entries(space: Any) -> types.SimpleNamespace:
         data = getattr(os.environ, "_data", None)     # what get_num_threads reads
         if hasattr(mod, "_environ") and type(data) is dict:
             mod._environ(data, os.environ.encodekey("RIGIDSYM_NUM_THREADS"))
-        space._entries = types.SimpleNamespace(**dict(zip(mod.kernels, mod.entries,
-                                                          strict=True)))
+        ns = dict(zip(mod.kernels, mod.entries, strict=True))
+        # the kernels whose rows of a pure translation the runtime answers after the entry
+        # (rigidsym.kernels.runtime.screw_at_infinity); their functions run their Python body
+        ns.update({k: wrap_entry(k, ns[k], tuple(tuple(a["shape"])
+                                                 for a in space.meta[k]["args"]))
+                   for k in COMPLETED if k in ns})
+        space._entries = types.SimpleNamespace(**ns)
         _state.LISTENERS.append(lambda name, m=mod: m._enable(name == "c"))
         return space._entries

@@ -19,6 +19,7 @@ from rigidsym.core.config import generated_dir
 from rigidsym.core.files import load_module
 from rigidsym.kernels.runtime import names as _names
 from rigidsym.kernels.runtime import state as _state
+from rigidsym.kernels.runtime.screw_at_infinity import document
 from rigidsym.kernels.runtime.space import KernelSpace
 
 __all__ = ["PUBLIC_MODULE", "KERNEL_NAMES", "public", "load", "space_of"]
@@ -56,6 +57,7 @@ def _bind_module(mod: types.ModuleType) -> KernelSpace:
     else:
         space = KernelSpace.from_directory(here)
     space.bind_api(mod)
+    document(mod)
     return space
 
 

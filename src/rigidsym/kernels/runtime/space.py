@@ -45,6 +45,7 @@ from rigidsym.kernels.runtime.scale import (
     resolve_threads,
     result_dtype,
 )
+from rigidsym.kernels.runtime.screw_at_infinity import COMPLETED, complete
 
 #: sample flags of the generated batch functions (numpy_kernel.py.j2)
 _SINGULAR, _NONFINITE = 1, 2
@@ -243,6 +244,8 @@ class KernelSpace:
                 flags = res
             else:
                 flags = self._classify_c_rows(name, flat, bufs, n) if res else None
+            if name in COMPLETED:
+                flags = complete(name, flat, bufs, flags, batch, on_singular)
             if flags is not None and flags.any():
                 _report_flags(name, meta, flags, flat, bufs, batch, check, on_singular)
         results = []

@@ -311,9 +311,9 @@ class BookNotationRules:
         return g is not None and (g.meaning or "").endswith(TIMED)
 
     def velocity(self, key: str, value):
-        """``\\dot X`` of a symbol declared a function of time: a rotation's ``X [w_X]``, a
-        transform's ``X [V_X]`` (w_X, V_X free: the body velocity), else a free symbol of
-        X's shape (``\\dot\\theta``)."""
+        """``\\dot X`` of a symbol declared a function of time: a rotation's or a transform's
+        ``X [X_w]`` (``X_w`` free, introduced by the reader: the body angular velocity, or
+        the body twist), else a free symbol of X's shape (``\\dot\\theta``)."""
         g = self.overrides[key]
         self.glyphs[key] = g
         dkey = dot_key(key)
@@ -331,10 +331,12 @@ class BookNotationRules:
             w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
             self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
                                                  "body velocity", "")
-            self._note(f"{dkey}: the time derivative of a {g.meaning.split(',')[0]}, "
-                       f"{key} [w] with w the body {'angular ' if n == 3 else ''}velocity "
-                       f"of {key}, introduced by the reader (free; --let "
-                       f"'\\boldsymbol\\omega: angular velocity of {key}' names it)")
+            what = "angular velocity" if n == 3 else "twist"
+            named = (f"; --let '\\boldsymbol\\omega: angular velocity of {key}' declares a "
+                     f"symbol of yours" if n == 3 else "")
+            self._note(f"{dkey} = {g.name} [{w.name}]: the time derivative of a "
+                       f"{g.meaning.split(',')[0]} ({w.name}: the body {what} of {g.name}, "
+                       f"introduced by the reader, free{named})")
             return value * rigid_motions.hat(w)
         if dkey not in self.glyphs:
             self._note(f"{dkey}: the time derivative of {key} (a function of time, free)")

@@ -1,0 +1,197 @@
+"""Decide every relation of a document: its errata.
+
+Each relation the declarations plan (:mod:`.declarations`) is decided by
+:func:`rigidsym.api.check_latex_run` with exactly the declarations it uses, so its verdict
+is the verdict of ``rigidsym check --latex`` with those ``--let``s. A relation with a
+symbol nothing declares is not given a verdict (``not-checked``, naming the symbols); a
+LaTeX the reader refuses is ``not-checked`` with the reader's message. Records are kept in
+the verdict store (:mod:`.store`), so a re-run re-checks only what changed.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rigidsym.core.errors import BadInput
+from rigidsym.documents import store
+from rigidsym.documents.declarations import CONVENTION_LETS, Plan, plan
+from rigidsym.documents.document import Document, read_document
+from rigidsym.reading import Reading, load_reading, sidecar
+
+__all__ = ["DocumentResult", "VERDICTS", "check_document", "decide", "exit_code"]
+
+#: a relation's verdicts: the engine's, ``definition`` and ``not-checked``
+VERDICTS = ("verified", "does-not-hold", "definition", "undecided", "not-checked")
+
+
+@dataclass
+class DocumentResult:
+    """A document's errata.
+
+    Attributes:
+        document: the document read.
+        reading: its reading file (``None`` if none).
+        records: one record per relation, in reading order (:func:`decide`'s keys).
+        conventions: the reading's conventions, each with whether ``check_latex`` uses it.
+        stored: how many records came from the verdict store.
+        seconds: the wall time of the run.
+    """
+
+    document: Document
+    reading: Reading | None
+    records: list[dict] = field(default_factory=list)
+    conventions: list[str] = field(default_factory=list)
+    stored: int = 0
+    seconds: float = 0.0
+
+    def counts(self) -> dict[str, int]:
+        """How many relations have each verdict."""
+        out = dict.fromkeys(VERDICTS, 0)
+        for r in self.records:
+            out[r["verdict"]] += 1
+        return out
+
+
+def exit_code(result: DocumentResult) -> int:
+    """1 if a relation does not hold, else 3 if one is not decided, else 0."""
+    c = result.counts()
+    if c["does-not-hold"]:
+        return 1
+    return 3 if c["undecided"] or c["not-checked"] else 0
+
+
+def _counterexample(r) -> str:
+    ce = r.counterexample or {}
+    return "; ".join(f"{s.get('latex') or s.get('symbol')} = {s.get('text')}"
+                     for s in ce.get("symbols", []))
+
+
+def decide(p: Plan, options: dict) -> dict:
+    """The record of one relation's plan, decided with ``options`` (``notation``,
+    ``repairs``, ``repair_seconds``, ``timeout``)."""
+    r = p.relation
+    rec = {"file": r.file, "line": r.line, "column": r.column, "display": r.display,
+           "index": r.index, "label": r.label, "latex": r.latex, "op": r.op,
+           "kind": {"decide": "identity", "definition": "definition",
+                    "skip": "not-checked"}[p.action],
+           "lets": list(p.lets), "verdict": None, "method": None, "read_as": None,
+           "counterexample": None, "corrected": None, "corrected_latex": None,
+           "cause": None, "reason": None, "free": []}
+    if p.action == "skip":
+        return rec | {"verdict": "not-checked", "reason": p.reason}
+    if p.action == "definition":
+        return rec | {"verdict": "definition", "method": "document definition",
+                      "reason": f"defines {p.defines} for the relations after it"}
+    return rec | _decided(r.latex, p.lets, options)
+
+
+def _decided(latex: str, lets: list[str], options: dict) -> dict:
+    """The verdict fields of ``latex`` checked with ``lets`` (stored, or computed)."""
+    k = store.key(latex, lets, options)
+    got = store.get(k)
+    if got is not None:
+        return got | {"stored": True}
+    out = _check(latex, lets, options)
+    store.put(k, out)
+    return out | {"stored": False}
+
+
+def _check(latex: str, lets: list[str], options: dict) -> dict:
+    from rigidsym.api import check_latex_run
+    from rigidsym.latex import LatexError
+
+    try:
+        r, reading = check_latex_run(latex, lets, None, (), options["repairs"], None,
+                                     options["notation"], options["repair_seconds"],
+                                     options["timeout"])
+    except LatexError as exc:
+        return {"verdict": "not-checked", "method": "not read",
+                "reason": f"a construct not read: {str(exc).splitlines()[0]}"}
+    except BadInput as exc:
+        return {"verdict": "not-checked", "method": "bad declarations",
+                "reason": str(exc).splitlines()[0]}
+    except Exception:  # noqa: BLE001 -- the reader's internal error: never a verdict
+        return {"verdict": "not-checked", "method": "internal error",
+                "reason": "an internal error while reading this relation (never a verdict)"}
+    out = {"verdict": r.verdict, "method": r.method,
+           "read_as": reading.text if reading is not None else None}
+    free = list(reading.free) if reading is not None else []
+    if free:
+        return out | {"verdict": "not-checked", "method": "undeclared symbols", "free": free,
+                      "reason": "undeclared: " + ", ".join(free) + " (declare each in the "
+                                "reading file or with --let; never guessed)"}
+    if r.verdict == "undecided":
+        out["reason"] = r.cause or r.detail or "undecided"
+    if r.verdict == "does-not-hold":
+        out["counterexample"] = _counterexample(r)
+        reps = r.repairs or []
+        if reps:
+            out["corrected"] = reps[0].get("text")
+            out["corrected_latex"] = reps[0].get("latex")
+            out["cause"] = "; ".join(reps[0].get("edits", []))
+        else:
+            words = [s.get("words") for s in (r.repair_search or []) if s.get("words")]
+            out["cause"] = "no repair found" + (f" ({words[0]})" if words else "")
+    return out
+
+
+def check_document(path: str | Path, *, reading: str | Path | None = None,
+                   lets: list[str] | tuple[str, ...] = (), notation: str | None = None,
+                   repairs: bool = True, repair_seconds: float | None = 10.0,
+                   timeout: float | str | None = "default",
+                   progress: Callable[[str], None] | None = None) -> DocumentResult:
+    """Decide every displayed relation of the document at ``path``.
+
+    Args:
+        path: a Markdown (``.md``) or LaTeX (``.tex``) document.
+        reading: its reading file; ``None``: the sidecar ``X.reading.toml`` beside it if
+            there is one (:func:`rigidsym.reading.sidecar`), else none.
+        lets: more declarations, in ``--let``'s words (after the reading's).
+        notation: a book's symbol table (as ``check_latex``'s ``notation``).
+        repairs, repair_seconds, timeout: as :func:`rigidsym.check_latex`'s.
+        progress: called with one line per display (``None``: silent).
+
+    Returns:
+        The :class:`DocumentResult`: one record per relation, in reading order.
+
+    Raises:
+        BadInput: a document or reading file that cannot be read, a declaration that
+            cannot be read (each naming the file and line or key).
+    """
+    t0 = time.monotonic()
+    doc = read_document(path)
+    if reading is None and sidecar(path).is_file():
+        reading = sidecar(path)
+    rd = load_reading(reading) if reading is not None else None
+    options = {"notation": notation, "repairs": repairs, "repair_seconds": repair_seconds,
+               "timeout": timeout}
+    result = DocumentResult(doc, rd)
+    if rd is not None:
+        for key, value in rd.conventions.items():
+            used = (key, value) in CONVENTION_LETS
+            result.conventions.append(f"{key} = {value}" + (
+                f" (as --let '{CONVENTION_LETS[(key, value)]}')" if used else
+                " (said back; no relation's check depends on it)"))
+    plans = plan(list(doc.relations), rd, list(lets))
+    by_display: dict[int, list[Plan]] = {}
+    for p in plans:
+        by_display.setdefault(p.relation.display, []).append(p)
+    try:
+        for d in doc.displays:
+            t = time.monotonic()
+            for p in by_display.get(d.number, []):
+                rec = decide(p, options)
+                result.stored += bool(rec.pop("stored", False))
+                result.records.append(rec)
+            if progress is not None:
+                n = len(by_display.get(d.number, []))
+                progress(f"display {d.number}/{len(doc.displays)} ({d.source.file}:{d.line}): "
+                         f"{n} relation{'s' * (n != 1)}, {time.monotonic() - t:.1f} s")
+    except KeyboardInterrupt:  # keep what was decided
+        if progress is not None:
+            progress(f"interrupted: {len(result.records)} of {len(plans)} relations decided")
+    result.seconds = time.monotonic() - t0
+    return result

@@ -1,0 +1,175 @@
+"""``rigidsym check FILE``: documents read into relations, declared once, decided as
+``check --latex`` decides each (docs/check-documents.md)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import rigidsym
+from rigidsym.cli import main
+from rigidsym.core.errors import BadInput
+from rigidsym.documents import check_document, read_document
+from rigidsym.documents.declarations import plan
+from rigidsym.documents.displays import Display, Source
+from rigidsym.documents.relations import split_display
+from rigidsym.registry import declarations as registry
+
+DATA = Path(__file__).parent / "data" / "documents"
+
+
+@pytest.fixture(autouse=True)
+def forget_latex_ids():
+    yield
+    registry.forget_module("rigidsym.latex.statement")
+
+
+def relations_of(body: str, macros: dict | None = None):
+    d = Display(Source("t.tex", body), 1, body, 0, 1, "equation", None, macros or {})
+    return split_display(d)
+
+
+def pairs(rels):
+    return [(r.lhs, r.op, r.rhs) for r in rels]
+
+
+# ----------------------------------------------------------------------- reading
+def test_latex_document_every_construct():
+    rels = read_document(DATA / "constructs.tex").relations
+    got = {(r.display, r.lhs, r.op, r.rhs) for r in rels}
+    assert (1, "a", "=", "b") in got and (1, "b", "=", "c") in got  # a chain
+    assert (2, "d", "=", "e") in got and (2, "e", "=", "f") in got  # &= relates to e
+    assert (2, "k", ":=", "m") in got  # \quad separates
+    assert (3, "q", "=", "r") in got  # eqnarray's &=&
+    assert (4, "s", "=", "t + u + w") in got  # multline continues the right side
+    assert (5, "z", "\\approx", "\\mathbf{R}_{1}^T \\mathbf{v}") in got  # \newcommand, \def
+    m = [r for r in rels if r.display == 6]  # split; a matrix's \\ kept
+    assert m[0].rhs.startswith("\\begin{bmatrix}") and m[1].lhs == m[0].rhs
+    assert [r.rhs for r in rels if r.display == 7][0].endswith("\\end{cases}")
+    assert (8, "\\alpha", "=", "\\left(\\beta, \\gamma\\right)") in got  # no split in ()
+    inp = [r for r in rels if r.label == "eq:input"][0]  # \input followed
+    assert inp.file.endswith("parts/more.tex") and inp.line == 2
+    assert inp.latex == "\\mathbf{R}_{2} = \\mathbf{v}"
+    by = {r.latex: r for r in rels}
+    assert by["a = b"].label == by["b = c"].label == "eq:chain"
+    assert by["d = e"].label == "eq:first" and by["e = f"].label == "T2"
+    assert (by["d = e"].line, by["d = e"].column) == (11, 1)
+    assert (by["e = f"].line, by["e = f"].column) == (12, 4)  # the '=' of '&= f'
+
+
+def test_markdown_document_every_flavour():
+    rels = read_document(DATA / "constructs.md").relations
+    got = [(r.display, r.latex) for r in rels]
+    assert got == [(1, "a = b"), (1, "b = c"), (2, "d = e"), (3, "f = g"), (3, "h = k"),
+                   (4, "m = n"), (5, "p = q"), (5, "q = r"), (6, "\\mathbf{R}^T = s")]
+    text = (DATA / "constructs.md").read_text().splitlines()
+    for r in rels:  # every place points at the relation's first glyph
+        assert text[r.line - 1][r.column - 1:].startswith(r.lhs[:1] if r.index == 1 or
+                                                          r.display in (3,) else "=")
+
+
+def test_a_document_of_another_kind_or_missing_is_bad_input(tmp_path):
+    (tmp_path / "x.txt").write_text("a = b")
+    with pytest.raises(BadInput, match="Markdown"):
+        read_document(tmp_path / "x.txt")
+    with pytest.raises(BadInput, match="cannot read"):
+        read_document(tmp_path / "missing.md")
+
+
+_SYM = st.sampled_from(["a", "b", "c", "x_1", "\\alpha", "\\mathbf{v}", "f(y)"])
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.lists(_SYM, min_size=2, max_size=5))
+def test_a_chain_is_its_consecutive_pairs(terms):
+    chain = " = ".join(terms)
+    want = [(a, "=", b) for a, b in zip(terms[:-1], terms[1:], strict=True)]
+    assert pairs(relations_of(chain)) == want
+    lines = terms[0] + " &= " + " \\\\\n &= ".join(terms[1:])  # the same as align lines
+    assert pairs(relations_of(f"\\begin{{align}}{lines}\\end{{align}}")) == \
+        pairs(relations_of(chain))
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.permutations([("a", "b"), ("c", "d + e"), ("\\mathbf{v}", "f(x, y)")]),
+       st.sampled_from([", ", ", \\quad ", " \\qquad ", "; "]))
+def test_relations_separated_or_reordered_are_the_same_relations(rels, sep):
+    body = sep.join(f"{a} = {b}" for a, b in rels)
+    assert pairs(relations_of(body)) == [(a, "=", b) for a, b in rels]
+
+
+@settings(max_examples=15, deadline=None)
+@given(st.sampled_from(["\\mathbf{R}", "R_{z}", "\\theta"]), st.integers(0, 1))
+def test_a_macro_reads_as_its_expansion(body, nargs):
+    defn = f"\\newcommand{{\\mac}}[{nargs}]{{{body}{'_{#1}' if nargs else ''}}}"
+    use = "\\mac{2}" if nargs else "\\mac"
+    want = body + ("_{2}" if nargs else "")
+    assert pairs(relations_of(f"{defn}\n{use} = a")) == [(want, "=", "a")]
+
+
+def test_definitions_in_document_order_and_one_used_before_refused():
+    rels = read_document(DATA / "later.md").relations
+    plans = plan(list(rels), None, [r"\mathbf{e}: unit vector"])
+    assert plans[0].action == "skip"
+    assert "\\mathbf{E}" in plans[0].reason and "later" in plans[0].reason
+    assert "later.md:6" in plans[0].reason
+    assert plans[1].action == "definition" and plans[1].defines == "\\mathbf{E}"
+    # the same two displays the other way round: the definition is a model after it
+    back = list(reversed(rels))
+    again = plan(back, None, [r"\mathbf{e}: unit vector"])
+    assert again[1].action == "decide"
+    assert r"\mathbf{E} = \mathrm{CPM}(\mathbf{e})" in again[1].lets
+
+
+def test_each_relation_gets_only_the_declarations_it_uses():
+    rels = read_document(DATA / "verdicts.md").relations
+    from rigidsym.reading import load_reading
+
+    plans = plan(list(rels), load_reading(DATA / "verdicts.reading.toml"))
+    assert [p.action for p in plans] == ["definition", "decide", "decide", "decide"]
+    assert plans[1].lets == [r"\mathbf{Q}: rotation"]
+    assert set(plans[2].lets) == {r"\mathbf{e}: unit vector",
+                                  r"\mathbf{E} = \mathrm{CPM}(\mathbf{e})"}
+
+
+# ----------------------------------------------------------------------- deciding
+def test_verdicts_equal_check_latex_alone_and_undeclared_never_guessed(capsys):
+    res = check_document(DATA / "verdicts.md", repairs=False)
+    recs = {r["latex"]: r for r in res.records}
+    qq = recs[r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}"]
+    alone = rigidsym.check_latex(qq["latex"], let=qq["lets"], repairs=False)
+    assert qq["verdict"] == alone.verdict == "verified"
+    free = recs[r"\mathbf{Q}\mathbf{a} = \mathbf{a}"]  # a: declared by nothing
+    assert free["verdict"] == "not-checked" and free["free"] == ["\\mathbf{a}"]
+    assert "line" in free and free["line"] == 12
+    assert recs[r"\mathbf{E} := \mathrm{CPM}(\mathbf{e})"]["verdict"] == "definition"
+    assert res.stored == 0
+    warm = check_document(DATA / "verdicts.md", repairs=False)
+    assert warm.stored == 3 and [r["verdict"] for r in warm.records] == \
+        [r["verdict"] for r in res.records]
+    code = main(["check", str(DATA / "verdicts.md"), "--no-repairs", "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert code == 3 and out["counts"]["not-checked"] == 1  # one not decided: exit 3
+    assert {k for k in out["relations"][0]} >= {"file", "line", "verdict", "reason"}
+
+
+def test_cli_bad_input_and_one_of_file_or_latex(tmp_path, capsys):
+    assert main(["check"]) == 2
+    assert main(["check", str(tmp_path / "none.md")]) == 2
+    (tmp_path / "n.md").write_text("$$a = b$$\n")
+    (tmp_path / "n.reading.toml").write_text("[reading]\nformat = 2\n")
+    assert main(["check", str(tmp_path / "n.md")]) == 2
+    capsys.readouterr()
+
+
+@pytest.mark.slow
+def test_the_example_notes_find_their_slip(capsys):
+    code = main(["check", str(Path(__file__).parents[1] / "examples" / "notes.md")])
+    out = capsys.readouterr().out
+    assert code == 1
+    assert "DOES NOT HOLD" in out and "flip the sign" in out
+    assert "an approximation" in out
