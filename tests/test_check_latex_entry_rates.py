@@ -63,3 +63,19 @@ def test_a_zero_row_under_a_column_block_is_one_row_in_both_semantics():
     assert r.verdict == "verified", r.detail
     slip = rigidsym.check_latex(block + r" = \mathbf{A}\mathbf{a}", repairs=False)
     assert slip.verdict == "does-not-hold" and slip.counterexample
+
+
+E_T = r"\mathbf{e}(t): unit 4-vector"
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    # Baruh's Euler parameters e_0 ... e_3 of a unit 4-vector of time: e · ė = 0
+    (r"e_0\dot e_0 + e_1\dot e_1 + e_2\dot e_2 + e_3\dot e_3 = 0", "verified"),
+    (r"e_0\dot e_0 + e_1\dot e_1 + e_2\dot e_2 = 0", "does-not-hold"),
+    # counted from 1
+    (r"e_1\dot e_1 + e_2\dot e_2 + e_3\dot e_3 + e_4\dot e_4 = 0", "verified"),
+])
+def test_the_rate_of_an_entry_of_a_vector_of_time_is_the_entry_of_its_rate(latex, verdict):
+    r = rigidsym.check_latex(latex, let=[E_T], repairs=False)
+    assert r.verdict == verdict, r.model
+    assert any("of the rate of \\mathbf{e}" in n for n in r.model), r.model

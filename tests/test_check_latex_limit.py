@@ -69,6 +69,7 @@ def test_a_limit_that_passes_in_the_repair_search_keeps_the_alarm_nested(monkeyp
     r = rigidsym.check_latex(*SLIP, timeout=600, repair_seconds=5)
     assert r.verdict == "does-not-hold"
     assert signal.getsignal(signal.SIGALRM) is signal.SIG_DFL
+    assert signal.getsignal(signal.SIGPROF) is signal.SIG_DFL
 
 
 @pytest.mark.parametrize("bad", [0, -1, "60", True, float("nan")])
@@ -118,3 +119,50 @@ def test_a_2_s_limit_on_a_slow_statement_ends_undecided_with_its_reason_by_the_c
     step = next(s for s in limit.STEPS if f"step '{s}'" in r.cause)
     assert limit.STEPS[step][1] in r.cause and "(2 s)" in r.cause, r.cause
     assert signal.getsignal(signal.SIGALRM) is signal.SIG_DFL
+    assert signal.getsignal(signal.SIGPROF) is signal.SIG_DFL
+
+
+def test_the_limit_counts_cpu_time_so_waiting_never_ends_a_check():
+    # a block that waits (as a check does beside busy processes) spends wall-clock time and
+    # next to no CPU time: a limit of 0.2 s has not passed after 0.5 s of waiting
+    import time
+
+    with limit.limited(0.2):
+        time.sleep(0.5)
+        limit.step("deciding")  # no TimeUp: the CPU deadline is not reached
+
+
+def _spin(seconds: float) -> None:
+    import time
+
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        pass
+
+
+@pytest.mark.slow
+def test_the_same_verdict_on_an_idle_machine_and_beside_cpu_bound_siblings(monkeypatch):
+    # a limit a few times the check's own CPU time: on an idle machine and beside CPU-bound
+    # sibling processes (more than the cores, so that the wall clock stretches) the verdict
+    # is the same, since the limit counts the check's CPU time only
+    import multiprocessing as mp
+    import os
+    import time
+
+    monkeypatch.delenv(limit.HOOK, raising=False)
+    t0 = time.process_time()
+    idle = rigidsym.check_latex(*SLIP, repairs=False, timeout=600)
+    spent = time.process_time() - t0
+    ctx = mp.get_context("fork")
+    siblings = [ctx.Process(target=_spin, args=(60.0,), daemon=True)
+                for _ in range(min(8, 2 * (os.cpu_count() or 1) + 2))]
+    for p in siblings:
+        p.start()
+    try:
+        registry.forget_module("rigidsym.latex.statement")
+        loaded = rigidsym.check_latex(*SLIP, repairs=False, timeout=max(3 * spent, 1.0))
+    finally:
+        for p in siblings:
+            p.terminate()
+            p.join()
+    assert idle.verdict == loaded.verdict == "does-not-hold", (loaded.verdict, loaded.cause)

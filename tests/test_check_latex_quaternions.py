@@ -51,9 +51,24 @@ def test_each_books_product_matrix_holds_in_its_convention_and_not_in_the_other(
     assert other.split(": ")[1] in _said(r)[0]
 
 
-def test_hamilton_is_the_default_and_odot_is_the_same_product():
+def test_an_undeclared_convention_that_matters_is_asked_and_odot_is_the_same_product():
+    # Trawny's left matrix (entries 1 to 4, nothing fixing the storage order) read with no
+    # convention: JPL's verifies it, Hamilton's does not, so the reader asks, naming both
+    # readings and each verdict; never a default
+    for op in (r"\otimes", r"\odot"):
+        with pytest.raises(BadInput, match=r"Hamilton: does-not-hold; JPL: verified") as e:
+            _check(LEFT.replace(r"\otimes", op), PQ + [TRAWNY_L])
+        assert r"--let '\otimes: JPL'" in str(e.value) and "Trawny" in str(e.value)
+    # Solà's, written in p_0 (entries counted from 0): the scalar first, Hamilton's, said
     r = _check(LEFT.replace(r"\otimes", r"\odot"), PQ + [SOLA_L])
-    assert r.verdict == "verified" and "Hamilton" in _said(r)[0]
+    assert r.verdict == "verified" and "Hamilton's, the storage order fixed by the entry p_0" \
+        in _said(r)[0], _said(r)
+
+
+def test_a_statement_true_in_both_conventions_is_decided_and_said_so():
+    r = _check(r"(\mathbf{p}\otimes\mathbf{q})^* = \mathbf{q}^*\otimes\mathbf{p}^*", PQ)
+    assert r.verdict == "verified"
+    assert any("read in both" in m and "both verified" in m for m in _said(r)), r.model
 
 
 @pytest.mark.slow
@@ -230,13 +245,13 @@ def _notation(latex, lets, notation):
 
 
 def test_the_jpl_notation_declares_jpls_product():
-    # Trawny's L(q), written by hand, scalar last: JPL's under the notation, Hamilton's without
+    # Trawny's L(q), written by hand, scalar last: JPL's under the notation, asked without
     lets = PQ + [r"\mathbf{L} = " + TRAWNY_QL]
     latex = r"\mathbf{L}\mathbf{p} = \mathbf{q}\otimes\mathbf{p}"
     r = _notation(latex, lets, "jpl")
     assert r.verdict == "verified" and "JPL" in _said(r)[0]
-    r = _notation(latex, lets, None)
-    assert r.verdict == "does-not-hold" and r.counterexample
+    with pytest.raises(BadInput, match=r"Hamilton: does-not-hold; JPL: verified"):
+        _notation(latex, lets, None)
     r = _notation(latex, lets + [HAM], "jpl")  # a --let wins over the table
     assert r.verdict == "does-not-hold" and "Hamilton" in _said(r)[0]
 

@@ -150,8 +150,15 @@ def test_an_exponent_of_an_undeclared_vector_names_it():
     with pytest.raises(LatexError) as exc:
         rigidsym.check_latex(r"\mathbf{R} = e^{\mathbf{x}}")
     assert r"\mathbf{x}" in str(exc.value) and "3x3" in str(exc.value)
-    with pytest.raises(LatexError, match=r"of a scalar \(x\).*scalar exponential"):
+    with pytest.raises(LatexError, match=r"of the scalar x: a scalar exponential"):
         rigidsym.check_latex(r"y = e^{x}")
+
+
+def test_jacobis_formula_is_refused_saying_what_to_write():
+    with pytest.raises(LatexError, match=r"scalar tr\(X\).*\\det e\^\{X\} = 1"):
+        rigidsym.check_latex(r"\det e^{X} = e^{\operatorname{tr} X}", let=[r"X: so(3)"])
+    assert rigidsym.check_latex(r"\det e^{X} = 1", let=[r"X: so(3)"], repairs=False
+                                ).verdict == "verified"
 
 
 @pytest.mark.parametrize("latex, words", [

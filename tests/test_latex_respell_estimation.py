@@ -33,10 +33,24 @@ def test_a_sized_block_or_a_bracket_is_no_cross_subscript(latex):
     assert cross_subscripts(latex, None) == (latex, None, "")
 
 
+@pytest.mark.slow
+def test_a_wide_hat_over_a_6_vector_product_is_its_se3_hat():
+    import rigidsym
+
+    lets = [r"\mathbf{T}: transform", r"\boldsymbol\xi: twist"]
+    for right, verdict in ((r"\mathbf{T}\boldsymbol\xi^\wedge\mathbf{T}^{-1}", "verified"),
+                           (r"\mathbf{T}^{-1}\boldsymbol\xi^\wedge\mathbf{T}", "does-not-hold")):
+        r = rigidsym.check_latex(r"\widehat{\mathrm{Ad}_{\mathbf{T}}\boldsymbol\xi} = " + right,
+                                 let=lets, repairs=False)
+        assert r.verdict == verdict
+        assert any(r"read as (\mathrm{Ad}_{\mathbf{T}}\boldsymbol\xi)^\wedge" in m
+                   for m in r.model), r.model
+
+
 def test_a_wide_hat_over_an_expression_is_its_hat_and_over_one_glyph_a_name():
     new, _, note = hat_expressions(r"R\hat{\boldsymbol\omega}R^T = \widehat{R\boldsymbol\omega}",
                                    None)
-    assert new == r"R\hat{\boldsymbol\omega}R^T = [R\boldsymbol\omega]_\times" and note
+    assert new == r"R\hat{\boldsymbol\omega}R^T = (R\boldsymbol\omega)^\wedge" and note
     for one in (r"\widehat{T}R", r"\widehat{\boldsymbol\xi}", r"\widehat{\mathbf{x}_1}"):
         assert hat_expressions(one, None) == (one, None, "")
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 import time
 from collections.abc import Iterable, Sequence
+from time import process_time
 from types import ModuleType
 
 from rigidsym.latex.statement import said_choices
@@ -128,7 +129,7 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
         repair_seconds: a time limit of the repair search in seconds (default
             :data:`REPAIR_SECONDS`, 10; ``None``: none): past it the verdict is given with
             "search stopped after N s, K candidates tried".
-        timeout: a time limit of the whole check in seconds (``None``: none; the default,
+        timeout: a limit of the whole check in seconds of CPU time (``None``: none; the default,
             ``"default"``: 60 s, or the environment variable ``RIGIDSYM_LATEX_TIMEOUT``,
             seconds or ``none``): past it the verdict is ``undecided``, its ``cause`` naming
             the step it was in (reading, the symbolic zero test, the other readings, the
@@ -180,7 +181,8 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                  repair_seconds=REPAIR_SECONDS, timeout=TIMEOUT):
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI;
     ``None`` where the time limit passed before the LaTeX was read)."""
-    from rigidsym.latex import limit, quaternions, tangent
+    from rigidsym.latex import contested, limit, quaternions, tangent
+    from rigidsym.numeval.conventions import declared_readings
     from rigidsym.numeval.values import quaternion_convention, tangent_order
 
     seconds = limit.default_seconds() if timeout == "default" else \
@@ -189,14 +191,32 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     _seconds(repair_seconds)
     let, order, said = tangent.split_setting(let, notation)
     let, product, product_said = quaternions.split_setting(let, notation)
+    let, settled, settled_said = contested.split_settings(let)  # 'bracket cross: content'
+    product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
+    if not product_fixed:  # the user's own lets may fix the storage order (scalar last)
+        stored = quaternions.storage_order(let, latex)
+        if stored is not None:
+            product, product_said, product_fixed = \
+                stored[0], f"storage order: {stored[1]}", True
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
-    t0, seen = time.monotonic(), {}
+    t0, seen = process_time(), {}
     try:
         with limit.limited(seconds), quaternions.using(product, product_said), \
-                quaternion_convention(product == quaternions.JPL):
+                quaternion_convention(product == quaternions.JPL), \
+                contested.using(settled, settled_said), declared_readings(settled):
             with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
                 r, reading = _check_latex_steps(latex, let, book, modules, repairs,
                                                 repair_budget, notation, repair_seconds, seen)
+            if not product_fixed and r.verdict != "undecided" and any(
+                    n.startswith("quaternion product:") for n in reading.notes):
+                # the product is used and nothing declares its convention: read in JPL's too
+                with quaternions.using(quaternions.JPL, quaternions.OTHER), \
+                        quaternion_convention(True), tangent.using(order, said), \
+                        tangent_order(order == tangent.TRANSLATION):
+                    other, _ = _check_latex_steps(latex, let, book, modules, False,
+                                                  repair_budget, notation, repair_seconds, {})
+                quaternions.both_conventions(r.verdict, other.verdict, reading.notes)
+                r.model = list(r.model) + reading.notes[-1:]
             if fixed or r.verdict == "undecided" or not any(
                     n.startswith("tangent order:") for n in reading.notes):
                 return r, reading
@@ -209,7 +229,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
             return r, reading
     except limit.TimeUp as exc:
         return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
-                        time.monotonic() - t0)
+                        process_time() - t0)
 
 
 def _time_up(exc, latex, let, book, modules, notation, reading, seconds):
@@ -243,6 +263,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
+        angular_velocities,
         conjugate_c,
         cross_subscripts,
         declared_deltas,
@@ -256,6 +277,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     from rigidsym.latex.statement import declare_latex
 
     step("reading")
+    latex, let, spin = angular_velocities(latex, let)  # ω: angular velocity of Q
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
@@ -266,13 +288,17 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt):
+    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading
     step("deciding")
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,
                          repair_seconds=_seconds(repair_seconds)))
+    from rigidsym.latex.printed_point import own_symbols_said, project_rates
+
+    project_rates(r.counterexample, reading.rows)  # a unit vector's rate: the one used
+    own_symbols_said(r.counterexample, reading.rows)  # never the reader's internal name
     if reading.others:  # several readings type-check: a verdict only when all agree
         step("readings")
         _readings_agree(reading, r, [_check(o.eq, repairs=False) for o in reading.others])
@@ -290,8 +316,29 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     if second:
         reading.notes.append(second)
     r.expected = r.verdict
-    r.model = list(r.model) + reading.notes
+    r.model = _without_own(list(r.model), reading.rows) + reading.notes
     return r, reading
+
+
+def _without_own(model: list[str], rows: dict) -> list[str]:
+    """The model's lines without the reader's own symbols (a rotation's body velocity,
+    said in words where the reader makes it) in its ``free:`` line: a message names only
+    what the user wrote."""
+    from rigidsym.printing import notation
+
+    own = {notation.book_group(g.name) for g in rows.values()
+           if getattr(g, "meaning", "") == "body velocity"}
+    if not own:
+        return model
+    out = []
+    for line in model:
+        if line.startswith("free: "):
+            kept = [x for x in line[6:].split(", ") if x not in own]
+            if not kept:
+                continue
+            line = "free: " + ", ".join(kept)
+        out.append(line)
+    return out
 
 
 def _readings_agree(reading, first, others) -> None:
@@ -326,6 +373,10 @@ def _choice_words(key: str) -> str:
     if key.endswith(" shape"):
         return (f"{key[:-6]} (a bold capital no --let declares) can be a 3×3 matrix or a "
                 f"3-vector")
+    from rigidsym.latex.transformer.meanings import is_cross_bracket
+
+    if is_cross_bracket(key):
+        return _cross_words(key)
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -340,6 +391,16 @@ def _choice_words(key: str) -> str:
     return f"{key}(...) can be read as a product or as {key} applied to its argument"
 
 
+def _cross_words(key: str) -> str:
+    """``[A x\\wedge]`` in words: its readings and their books
+    (:data:`rigidsym.latex.contested.CONTESTED`)."""
+    from rigidsym.latex.contested import construct
+
+    c = construct("bracket cross")
+    return (f"{key} (a product before x\\wedge inside a bracket) can be read as "
+            + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
+
+
 def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
@@ -350,6 +411,13 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
+    from rigidsym.latex.transformer.meanings import is_cross_bracket
+
+    if is_cross_bracket(key):
+        left, x = key[1:].rsplit("\\", 1)[0].rsplit(" ", 1)
+        return (f"--let 'bracket cross: content' or --let 'bracket cross: bind', or write "
+                f"[{left} {x}]_\\times (the content's cross-product matrix) or "
+                f"{left}[{x}]_\\times ({left} times)")
     if key.startswith("[["):
         return (f"write [{key[2:-2]}]_\\times or -[{key[2:-2]}]_\\times for {key}, or a "
                 f"--let function (--let 'N(\\mathbf{{u}}) = -[\\mathbf{{u}}]_\\times')")

@@ -27,7 +27,7 @@ EXAMPLES = r"""  rigidsym check notes.md          every displayed relation of a 
 --let NAME = LATEX a first-principles model in the same notation
 --notation NAME    a book's symbols: lynch-park, murray-li-sastry, siciliano, spong, craig,
                    featherstone, barfoot, sola, corke, jpl
---timeout S        the limit of the whole check (default 60 s): past it undecided, exit 3
+--timeout S        the CPU-time limit of the whole check (default 60 s): past it undecided, exit 3
 exit codes: 0 holds (verified or definition), 1 does not hold, 3 undecided (also past
             --timeout), 2 bad input"""
 

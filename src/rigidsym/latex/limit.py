@@ -1,14 +1,20 @@
 """The time limit of ``rigidsym check --latex``: past it the answer is ``undecided``, naming
 the step it was in and a hint, never a run without end.
 
+The limit is on the **CPU time** of the checking process (``time.process_time``: user and
+system time of its threads), never the wall clock: a statement decided on an idle machine is
+decided alike beside other busy processes, which slow the wall clock and not the CPU time the
+check spends.
+
 A check passes through named steps (:data:`STEPS`): reading the LaTeX and the ``--let``s,
 the symbolic zero test (with the repair search), the other readings, the numeric cross-check.
-:func:`limited` arms an alarm (``SIGALRM``) for the whole check and :func:`step` marks each
-step as it begins; when the time passes, :class:`TimeUp` is raised in the step running then.
-Inside the repair search the search's own alarm nests (the nearer time stops the search,
-which keeps the verdict, and the next step ends the check), and at each step boundary a
-passed deadline ends the check too (also where no alarm can be armed: outside the main
-thread, on a platform without ``setitimer``).
+:func:`limited` arms a profiling timer (``ITIMER_PROF``, ``SIGPROF``: it counts the
+process's CPU time) for the whole check and :func:`step` marks each step as it begins; when
+the time passes, :class:`TimeUp` is raised in the step running then. The repair search's own
+wall-clock alarm (``SIGALRM``) is another signal and runs inside it (it stops the search,
+never the verdict), and at each step boundary a passed CPU deadline ends the check too (also
+where no timer can be armed: outside the main thread, on a platform without
+``setitimer``).
 
 A deterministic hook for tests: with ``RIGIDSYM_LATEX_LIMIT_AT=STEP`` (a name of
 :data:`STEPS`) the limit counts as passed the moment ``STEP`` begins, and the clock is not
@@ -49,7 +55,8 @@ STEPS = {
 }
 #: the environment variable of the deterministic hook (see the module's docstring)
 HOOK = "RIGIDSYM_LATEX_LIMIT_AT"
-#: the running check's limit: its deadline (``time.monotonic()``), its length in seconds, the
+#: the running check's limit: its deadline (``time.process_time()``), its length in CPU
+#: seconds, the
 #: step running now; ``None`` deadline: no limit
 _NOW: dict = {"deadline": None, "seconds": None, "step": None}
 
@@ -117,24 +124,23 @@ def step(name: str) -> None:
     if os.environ.get(HOOK, "").strip() == name:
         raise TimeUp(name, _NOW["seconds"])
     deadline = _NOW["deadline"]
-    if deadline is not None and time.monotonic() >= deadline:
+    if deadline is not None and time.process_time() >= deadline:
         raise TimeUp(name, _NOW["seconds"])
 
 
 def _alarm_usable() -> bool:
-    return hasattr(signal, "setitimer") and \
+    return hasattr(signal, "setitimer") and hasattr(signal, "SIGPROF") and \
         threading.current_thread() is threading.main_thread() and \
-        signal.getsignal(signal.SIGALRM) is signal.SIG_DFL
+        signal.getsignal(signal.SIGPROF) in (signal.SIG_DFL, signal.SIG_IGN)
 
 
 @contextmanager
 def limited(seconds: float | None) -> Iterator[None]:
-    """Within the block, a check's limit of ``seconds`` (``None``: none, the block unguarded
-    but for :data:`HOOK`): :class:`TimeUp` in the step running when it passes (see the
-    module's docstring). The repair search's own alarm nests inside it
-    (:func:`rigidsym.checking.repairing.deadline.time_limit`). Not re-entrant."""
+    """Within the block, a check's limit of ``seconds`` of CPU time (``None``: none, the
+    block unguarded but for :data:`HOOK`): :class:`TimeUp` in the step running when it
+    passes (see the module's docstring). Not re-entrant."""
     hooked = bool(os.environ.get(HOOK, "").strip())  # the hook alone, never the clock
-    _NOW.update(deadline=None if seconds is None or hooked else time.monotonic() + seconds,
+    _NOW.update(deadline=None if seconds is None or hooked else time.process_time() + seconds,
                 seconds=seconds, step=None)
     if seconds is None or hooked or not _alarm_usable():
         try:
@@ -150,13 +156,12 @@ def limited(seconds: float | None) -> Iterator[None]:
         on[0] = False
         raise TimeUp(_NOW["step"] or "reading", seconds)
 
-    _late.nestable = True  # the repair search's alarm may nest inside (deadline.time_limit)
-    old = signal.signal(signal.SIGALRM, _late)
+    old = signal.signal(signal.SIGPROF, _late)
     try:
-        signal.setitimer(signal.ITIMER_REAL, seconds)
+        signal.setitimer(signal.ITIMER_PROF, seconds)
         yield
     finally:
         on[0] = False
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, old)
+        signal.setitimer(signal.ITIMER_PROF, 0)
+        signal.signal(signal.SIGPROF, old)
         _NOW.update(deadline=None, seconds=None, step=None)

@@ -15,6 +15,7 @@ Roumeliotis (2005) (8)); the second semantics has its own (:mod:`rigidsym.numeva
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
@@ -25,7 +26,8 @@ from rigidsym.core.errors import BadInput
 from rigidsym.latex.let_text import split_lets
 
 __all__ = ["HAMILTON", "JPL", "NAMES", "current", "declared", "using", "split_setting",
-           "product", "conjugate", "inverse", "said", "NOTATION_PRODUCTS", "word"]
+           "product", "conjugate", "inverse", "said", "NOTATION_PRODUCTS", "word",
+           "storage_order", "both_conventions", "OTHER"]
 
 HAMILTON, JPL = "Hamilton", "JPL"
 #: the glyphs of the product, as a --let NAME
@@ -100,8 +102,89 @@ def split_setting(let, notation: str | None = None) -> tuple[object, str, str | 
     return (let if text is None else kept), convention, text
 
 
+#: the declaration text of the other convention's reading (it joins that reading's id)
+OTHER = "\\otimes: JPL (the undeclared convention's other reading)"
+#: a --let's slice of three entries of a 4-vector: \bar q_{1:3} (scalar last), q_{2:4}
+#: (scalar first), counted from 1
+_SLICE = re.compile(r"_\{\s*([1-4])\s*:\s*([1-4])\s*\}")
+
+
+#: a column of two blocks, ``\\begin{bmatrix} 0 \\\\ \\mathbf{v} \\end{bmatrix}``
+_BLOCKS = re.compile(r"\\begin\{[bp]matrix\}((?:(?!\\end\{|&).)*?)\\\\((?:(?!\\end\{|&|"
+                     r"\\\\).)*?)\\end\{[bp]matrix\}", re.S)
+_BOLD = re.compile(r"\\(?:mathbf|boldsymbol|bm)\b")
+#: a norm's content (a scalar whatever it holds): \|\boldsymbol\eta\|
+_NORMS = re.compile(r"\\\|.*?\\\|")
+#: a plain letter's entry 0, q_0, q_{0}
+_ZERO = re.compile(r"(?<![A-Za-z\\])([a-z])_\{?\s*0\s*\}?(?![0-9])")
+
+
+def storage_order(let, latex: str = "") -> tuple[str, str] | None:
+    """The convention the user's own writing fixes by the 4-vector's storage order:
+    ``(JPL, how)`` where a ``--let`` names entries 1 to 3 as the vector part (``\\mathbf{q} =
+    \\bar q_{1:3}``: the scalar last) or a column of two blocks puts a bold vector above a
+    scalar, ``(HAMILTON, how)`` where a ``--let`` names entries 2 to 4 or a column puts the
+    scalar first (Kok-Hol-Schön's ``[0; \\mathbf{v}]``); ``None`` where nothing does or the
+    signs contradict each other. ``how`` says which writing fixed it."""
+    strings: list[str] = []
+    if let is not None:
+        try:
+            strings = split_lets([let] if isinstance(let, str) else
+                                 [f"{k} = {v}" for k, v in let.items()]
+                                 if isinstance(let, dict) else list(let))
+        except (TypeError, AttributeError):
+            strings = []
+    found: dict[str, str] = {}
+    for s in strings:
+        for m in _SLICE.finditer(s):
+            lo, hi = int(m.group(1)), int(m.group(2))
+            if (lo, hi) == (1, 3):
+                found.setdefault(JPL, f"--let '{s}'")
+            elif (lo, hi) == (2, 4):
+                found.setdefault(HAMILTON, f"--let '{s}'")
+    for text in [latex, *strings]:
+        for m in _BLOCKS.finditer(text or ""):
+            top, bottom = (bool(_BOLD.search(_NORMS.sub("", g))) for g in m.groups())
+            if top != bottom:
+                written = " ".join(m.group(0).split())
+                found.setdefault(JPL if top else HAMILTON, f"the column {written}")
+    for text in [latex, *strings]:  # q_0 of a bold q: entries counted from 0, scalar first
+        for m in _ZERO.finditer(text or ""):
+            if re.search(r"\\(?:mathbf|boldsymbol|bm|bar)\s*\{?\s*" + re.escape(m.group(1))
+                         + r"(?![A-Za-z])", " ".join([latex, *strings])):
+                found.setdefault(HAMILTON, f"the entry {m.group(0)} (counted from 0: the "
+                                           f"scalar first)")
+    return next(iter(found.items())) if len(found) == 1 else None
+
+
+def both_conventions(first: str, other: str, notes: list[str]) -> None:
+    """A statement that uses the quaternion product with no convention declared, read in
+    both: ``first`` the verdict in Hamilton's, ``other`` in JPL's. Where they agree a note is
+    appended to ``notes``.
+
+    Raises:
+        BadInput: they differ: the convention is the reader's to declare, never assumed.
+    """
+    if first == other:
+        notes.append(f"quaternion product: no convention declared; the statement read in "
+                     f"both, Hamilton's (scalar first, ij = k) and JPL's (scalar last, ij = "
+                     f"-k): both {first}")
+        return
+    raise BadInput(f"--latex: the quaternion product \\otimes (\\odot) can be read as "
+                   f"Hamilton's (scalar first q = [w; x; y; z], ij = k: Solà (2017), Kok-Hol-"
+                   f"Schön) or as JPL's (scalar last q = [x; y; z; w], ij = -k: Trawny & "
+                   f"Roumeliotis (2005)), nothing declares it, and the two disagree (Hamilton: "
+                   f"{first}; JPL: {other}): say which, --let '\\otimes: Hamilton' or --let "
+                   f"'\\otimes: JPL' (or --notation jpl), or name the vector part in a --let "
+                   f"(\\mathbf{{q}} = \\bar q_{{1:3}}: the scalar last)")
+
+
 def said() -> str:
     """The reading's note of the convention used."""
+    text = declared()
+    if text and text.startswith("storage order:"):
+        return (f"quaternion product: {current()}'s, the storage order fixed by "
+                f"{text[len('storage order:'):].strip()}")
     if current() == JPL:
         return ("quaternion product: JPL's, scalar last q = [x; y; z; w], ij = -k "
                 "(Trawny & Roumeliotis (2005) (8))")

@@ -51,7 +51,7 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["conjugate_c", "cross_subscripts", "declared_deltas", "declared_e",
+__all__ = ["angular_velocities", "conjugate_c", "cross_subscripts", "declared_deltas", "declared_e",
            "declared_labels", "floor_cross", "hat_expressions", "rate_entries",
            "tilde_expressions"]
 
@@ -108,10 +108,12 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
 
 
-def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list) -> str:
+def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
+                            form: str = "[{}]_\\times") -> str:
     """``text`` with each accent ``opening`` matches (up to its opening brace) whose braced
-    argument ``takes`` (a predicate of the argument's text) respelt ``[ARG]_\\times``; each
-    argument respelt is appended to ``hits``. An unbalanced brace leaves the rest as is."""
+    argument ``takes`` (a predicate of the argument's text) respelt ``form`` of ARG
+    (``[ARG]_\\times``); each argument respelt is appended to ``hits``. An unbalanced brace
+    leaves the rest as is."""
     out, k = [], 0
     for m in opening.finditer(text):
         if m.start() < k:
@@ -123,7 +125,7 @@ def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list) -
         inner = text[m.end():j - 1]
         if depth or not takes(inner):
             continue
-        out += [text[k:m.start()], f"[{inner}]_\\times"]
+        out += [text[k:m.start()], form.format(inner)]
         hits.append(inner)
         k = j
     return "".join(out) + text[k:]
@@ -189,11 +191,18 @@ def _entry_rate(letter: str) -> re.Pattern:
                       + tail + r")\s*_\s*(?:\{\s*(?P<k>\d)\s*\}|(?P<k1>\d))")
 
 
+#: a vector of time, ``\\mathbf{e}(t): unit 4-vector``: the rate of its entries is its rate's
+_TIMED_VECTOR = re.compile(
+    r"\\(?P<font>mathbf|boldsymbol|bm)\s*\{?\s*(?P<letter>\\[A-Za-z]+|[A-Za-z])\s*\}?\s*"
+    r"\(t\)\s*:[^=]*vector")
+
+
 def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\dot\\epsilon_k`` beside a ``--let`` of the rate
-    ``\\dot{\\boldsymbol\\epsilon}`` (a model or a kind) respelt as that rate's entry
-    ``\\dot{\\boldsymbol{\\epsilon}}_{k:k}`` in the LaTeX and the other declarations (``note``
-    says so); else all unchanged and ``note`` is ``""``.
+    ``\\dot{\\boldsymbol\\epsilon}`` (a model or a kind), or of the vector as a function of
+    time (``\\mathbf{e}(t): unit 4-vector``, Baruh's ``\\dot e_0``), respelt as that rate's
+    entry ``\\dot{\\boldsymbol{\\epsilon}}_{k:k}`` in the LaTeX and the other declarations
+    (``note`` says so); else all unchanged and ``note`` is ``""``.
 
     Counted from 1, as Greenwood's ``\\epsilon_1 ... \\epsilon_4``; from 0 where the LaTeX or a
     declaration writes the letter's subscript 0 (Kuipers' ``q_0``).
@@ -205,9 +214,9 @@ def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
         return latex, let, ""
     rates = {}
     for i, d in enumerate(decls):
-        m = _RATE_DECL.match(d.strip())
+        m = _RATE_DECL.match(d.strip()) or _TIMED_VECTOR.match(d.strip())
         if m:
-            rates[m["letter"]] = (m["font"], i)
+            rates.setdefault(m["letter"], (m["font"], i))
     hits: list[str] = []
     for letter, (font, i) in rates.items():
         pat = _entry_rate(letter)
@@ -359,9 +368,11 @@ _ONE_GLYPH = re.compile(r"\s*(?:" + _GLYPH + r")\s*(?:_\s*(?:\{[^{}]*\}|\\?[A-Za
 
 def hat_expressions(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\widehat{X}`` whose braces hold more than one glyph
-    (Chirikjian's ``\\widehat{R\\boldsymbol\\omega}``, the hat of a vector expression)
-    respelt ``[X]_\\times`` in the LaTeX and the declarations (``note`` says so); else all
-    unchanged and ``note`` is ``""``. A hat over one glyph is left to the glyph's reading.
+    (Chirikjian's ``\\widehat{R\\boldsymbol\\omega}``, Bullo-Lewis'
+    ``\\widehat{\\mathrm{Ad}_g\\xi}``: the hat of a vector expression) respelt
+    ``(X)^\\wedge`` in the LaTeX and the declarations (``note`` says so): so(3) of a
+    3-vector, se(3) of a 6-vector; else all unchanged and ``note`` is ``""``. A hat over
+    one glyph is left to the glyph's reading.
 
     Args and Raises: as :func:`declared_e`.
     """
@@ -369,13 +380,14 @@ def hat_expressions(latex: str, let: object) -> tuple[str, object, str]:
 
     def respell(text: str) -> str:
         return _braced_as_cross_matrix(text, _WIDEHAT,
-                                       lambda inner: not _ONE_GLYPH.fullmatch(inner), hits)
+                                       lambda inner: not _ONE_GLYPH.fullmatch(inner), hits,
+                                       "({})^\\wedge")
 
     new, out = _respelt(respell, latex, let)
     if not hits:
         return latex, let, ""
-    return new, out, (f"\\widehat{{{hits[0]}}}: the hat of the vector {hits[0]} (its "
-                      f"cross-product matrix), read as [{hits[0]}]_\\times")
+    return new, out, (f"\\widehat{{{hits[0]}}}: the hat of the vector {hits[0]} (so(3) of a "
+                      f"3-vector, se(3) of a 6-vector), read as ({hits[0]})^\\wedge")
 
 
 _DELTA_NAME = re.compile(r"\\Delta\s*(?P<glyph>" + _GLYPH + r")\s*"
@@ -436,3 +448,42 @@ def conjugate_c(latex: str, let: object) -> tuple[str, object, str]:
         return latex, let, ""
     new, out = _respelt(lambda t: _CONJ_C.sub("^{*}", t), latex, let)
     return new, out, ("q^c: the conjugate of a quaternion (Kok, Hol & Schön), read as q^*")
+
+
+#: ``NAME: angular velocity of X`` (the space frame's, unless ``in the body frame`` or
+#: ``body angular velocity of X``)
+_SPIN = re.compile(r"^\s*(?P<name>.+?)\s*:\s*(?:the\s+)?(?P<body>body\s+)?angular\s+velocity"
+                   r"\s+of\s+(?P<of>.+?)(?:\s+in\s+the\s+(?P<frame>body|space)\s+frame)?"
+                   r"\s*$")
+
+
+def angular_velocities(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``--let 'NAME: angular velocity of X'`` (X a rotation of
+    time; the books' "ω is the angular velocity of Q") respelt as its model, in the space
+    frame ``NAME = (\\dot{X}X^T)^\\vee`` (``\\dot X = [ω]_× X``), in the body frame
+    (``... in the body frame``, ``body angular velocity of X``) ``NAME = (X^T\\dot{X})^\\vee``
+    (``\\dot X = X [ω]_×``); ``note`` says so. Else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    decls = _decls(let)
+    if not decls:
+        return latex, let, ""
+    out, said = [], []
+    for d in decls:
+        m = _SPIN.match(d)
+        if not m:
+            out.append(d)
+            continue
+        x = m["of"].strip()
+        dot = f"\\dot{{{x}}}"
+        body = bool(m["body"]) or m["frame"] == "body"
+        model = f"({x}^T{dot})^\\vee" if body else f"({dot}{x}^T)^\\vee"
+        out.append(f"{m['name'].strip()} = {model}")
+        said.append(f"{m['name'].strip()}: the {'body' if body else 'space'} angular velocity "
+                    f"of {x}, read as {m['name'].strip()} = {model} ({dot} = "
+                    + (f"{x}[{m['name'].strip()}]_\\times)" if body else
+                       f"[{m['name'].strip()}]_\\times {x})"))
+    if not said:
+        return latex, let, ""
+    return latex, out, "; ".join(said)

@@ -66,10 +66,12 @@ class Reading:
 def latex_id(latex: str, lets: list[Let], book: str | None, modules,
              notation: str | None = None) -> str:
     """The id of a LaTeX check: ``latex:`` and a short hash of the input."""
-    from rigidsym.latex import quaternions, tangent
+    from rigidsym.latex import contested, quaternions, tangent
 
-    # a --let 'tangent order: ...' or '\otimes: JPL' (taken out of lets) joins the id
-    said = [x for x in (tangent.declared(), quaternions.declared()) if x]
+    # a --let 'tangent order: ...', '\otimes: JPL' or 'bracket cross: content' (taken out
+    # of lets) joins the id
+    said = [x for x in (tangent.declared(), quaternions.declared(), *contested.declared_texts())
+            if x]
     key = json.dumps([latex, [x.text for x in lets] + said, book,
                       [str(m) for m in modules or ()]] + ([notation] if notation else []))
     return "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]

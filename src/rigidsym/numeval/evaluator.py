@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import accents, entries, hats, motion, names, rates, tilde
+from rigidsym.numeval import accents, conventions, entries, hats, motion, names, rates, tilde
 from rigidsym.numeval import values as V
 from rigidsym.numeval.names import glyph_key
 from rigidsym.numeval.sampler import sample
@@ -256,6 +256,14 @@ class Evaluator:
             return self._bracket(inner)
         return self.value(inner)
 
+    def r_commutator(self, t):
+        """``[X, Y]``: XY - YX of two square matrices of one size."""
+        a, b = (self.value(k) for k in self._kids(t))
+        if not (V.is_matrix(a) and V.is_matrix(b)) or a.rows != a.cols \
+                or (a.rows, a.cols) != (b.rows, b.cols):
+            raise NotCovered(f"a commutator of no two square matrices in {text_of(t)!r}")
+        return V.add(V.mul(a, b), V.neg(V.mul(b, a)))
+
     def r_bracket(self, t):
         return self._bracket(self._kids(t)[0])
 
@@ -263,6 +271,10 @@ class Evaluator:
         """``[x]``: the hat of a 3- or 6-vector (the books' cross-product matrix); around
         more than one symbol (``[R\\mathbf{a}]``) a choice with a bracket that groups (the
         readings whose sides have one shape are kept)."""
+        kids = self._kids(inner) if getattr(inner, "data", None) == "mul" else []
+        if len(kids) == 2 and getattr(kids[1], "data", None) == "cross_op" and not any(
+                c in str(kids[1].children[-1]) for c in ("*", "ast")):
+            return self._bracket_cross(kids[0], kids[1], inner)
         v = V.scalar(self.value(inner))
         if V.is_matrix(v) and v.cols == 1 and v.rows in (3, 6):
             if inner.data in ("glyph", "accented", "accented_bare"):
@@ -270,6 +282,21 @@ class Evaluator:
             return V.hat(v) if self.choose(f"bracket {text_of(inner)}",
                                             ("hat", "group")) == "hat" else v
         return v
+
+    def _bracket_cross(self, left, op, inner):
+        """``[A\\mathbf{x}\\wedge]``: the hat of the content ``A x`` or ``A x^∧``
+        (:data:`rigidsym.numeval.conventions.BRACKET_CROSS`), a choice point; a content that
+        is no 3-vector leaves the product ``A x^∧``."""
+        a = self.value(left)
+        x = V.scalar(self.value(self._kids(op)[0]))
+        content = V.scalar(V.mul(a, x)) if V.shape(x) == (3, 1) else None
+        if content is None or V.shape(content) != (3, 1):
+            return V.mul(a, self.value(op))
+        key = conventions.choice_key("bracket cross", text_of(inner))
+        how = conventions.settled("bracket cross") or self.choose(key, conventions.BRACKET_CROSS)
+        if how == "content":
+            return V.hat(content)
+        return V.mul(a, V.hat(x))
 
     def choose(self, key: str, options: tuple[str, ...]) -> str:
         """The reading taken at the choice point ``key`` (its first option unless the
@@ -684,7 +711,8 @@ def _difference(a, b, where: str):
 
 
 def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
-              free: bool = True, spread: float = 1, fixed=None) -> list[Residual]:
+              free: bool = True, spread: float = 1, fixed=None,
+              choices: dict | None = None) -> list[Residual]:
     """Each relation of ``tree`` (a parse of the statement) at ``points`` random points.
 
     Args:
@@ -696,6 +724,8 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
             (a book's notation gives meanings): it is not covered.
         spread: unconstrained reals (free scalars, vectors' entries) in (-2s, 2s).
         fixed: glyph key -> its value at every point (a given point); others are drawn.
+        choices: choice point -> the reading taken there (``{"bracket cross [C ω\\wedge]":
+            "bind"}``): that one reading alone is evaluated, no other enumerated.
 
     Returns:
         One :class:`Residual` per relation and point (``relative``: the largest entry of
@@ -708,6 +738,8 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
     chains = [c for c in tree.children if isinstance(c, lark.Tree) and c.data == "chain"]
     if not chains:
         raise NotCovered("a statement with no relation")
+    if choices is not None:
+        return _at_points(chains, table, points, seed, free, dict(choices), spread, fixed)[0]
     first_error = None
     try:
         out, met = _at_points(chains, table, points, seed, free, {}, spread, fixed)

@@ -26,10 +26,10 @@ def time_limit(deadline: float | None) -> Iterator[None]:
     ``deadline`` (``SIGALRM``, once), wherever the search is: between candidates the search
     checks the time itself, but one step (sympy's Gauss-Jordan inverse of a 6x6) can take a
     minute. Only in the main thread of a POSIX process whose ``SIGALRM`` has no handler
-    already (pytest-timeout's, a caller's), or whose handler is marked ``nestable`` (the
-    whole check's limit, :func:`rigidsym.latex.limit.limited`): then the nearer of the two
-    times stops the search, and the outer alarm is re-armed for its own time at the end;
-    elsewhere the block runs unguarded."""
+    already (pytest-timeout's, a caller's), or whose handler is marked ``nestable``: then
+    the nearer of the two times stops the search, and the outer alarm is re-armed for its
+    own time at the end; elsewhere the block runs unguarded. (The whole check's CPU-time
+    limit, :func:`rigidsym.latex.limit.limited`, is another signal, ``SIGPROF``.)"""
     outer = signal.getsignal(signal.SIGALRM) if hasattr(signal, "setitimer") else None
     nested = getattr(outer, "nestable", False)
     if deadline is None or not hasattr(signal, "setitimer") \

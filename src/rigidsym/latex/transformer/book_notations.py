@@ -200,9 +200,29 @@ class BookNotationRules:
                              f"expected two 6-vectors (Featherstone's v \\times^* f)", "shapes")
         return self._cross_matrix(a, dual=True) * b
 
+    def commutator(self, items):
+        """``[X, Y]``: the commutator ``XY - YX`` of two square matrices of one size (Hall
+        (2015) Def. 2.21's bracket of matrices); of two 3-vectors it is refused naming what
+        to write."""
+        a, b = (self._val(i) for i in _content(items))
+        sa, sb = matrix_shape(a), matrix_shape(b)
+        if sa is not None and sa == sb and sa[0] == sa[1]:
+            self._note("[X, Y]: the commutator XY - YX")
+            return a * b - b * a
+        if sa in ((3, 1), (6, 1)) and sa == sb:
+            raise LatexError(f"[x, y] of two {sa[0]}-vectors: the Lie bracket is not read; "
+                             f"write [x^\\wedge, y^\\wedge] (the commutator of their hats: "
+                             f"x^\\wedge y^\\wedge - y^\\wedge x^\\wedge) or, of 3-vectors, "
+                             f"x \\times y", "shapes")
+        raise LatexError(f"[X, Y] between {shape_words(a)} and {shape_words(b)}: the "
+                         f"commutator XY - YX needs two square matrices of one size", "shapes")
+
     def cross_op(self, items):
         a, tok = self._val(items[0]), str(items[1])
-        return self._cross_matrix(a, dual="*" in tok)
+        r = self._cross_matrix(a, dual="*" in tok)
+        if "*" not in tok:  # [A x\wedge]: a contested bracket (RigidMotionRules.hat_bracket)
+            self.made[r] = ("cross_op", (a, "\\wedge" if "wedge" in tok else "\\times"))
+        return r
 
     def _cross_matrix(self, a, dual: bool):
         s = matrix_shape(a)
@@ -312,9 +332,11 @@ class BookNotationRules:
             self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
                                                  "body velocity", "")
             what = "angular velocity" if n == 3 else "twist"
+            named = (f"; --let '\\boldsymbol\\omega: angular velocity of {key}' declares a "
+                     f"symbol of yours" if n == 3 else "")
             self._note(f"{dkey} = {g.name} [{w.name}]: the time derivative of a "
                        f"{g.meaning.split(',')[0]} ({w.name}: the body {what} of {g.name}, "
-                       f"introduced by the reader, free)")
+                       f"introduced by the reader, free{named})")
             return value * rigid_motions.hat(w)
         if dkey not in self.glyphs:
             self._note(f"{dkey}: the time derivative of {key} (a function of time, free)")

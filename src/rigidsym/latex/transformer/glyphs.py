@@ -14,7 +14,7 @@ import sympy as sp
 
 from rigidsym.latex.entries import AXES, DECLARED_PARAM, entry_index
 from rigidsym.latex.kinematics import dot_key
-from rigidsym.latex.shapes import LatexError, default_glyph, shape_words
+from rigidsym.latex.shapes import LatexError, default_glyph, matrix_shape, shape_words
 from rigidsym.latex.table import lookup
 from rigidsym.latex.transformer.book_notations import index_key
 from rigidsym.latex.transformer.meanings import alternatives
@@ -99,6 +99,11 @@ class GlyphRules:
         accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        if accent == "\\dot" and not inner.accent and not inner.rest and len(items) == 3 \
+                and isinstance(items[2], tuple) and ":" in items[2][1] \
+                and self.timed(inner.key):
+            # \dot{\mathbf{e}}_{1:1} of e(t): entries of its rate (a unit vector's tangent)
+            return self._rate_slice(inner, items[2], accent)
         if not inner.accent and not inner.rest and len(items) == 3 \
                 and isinstance(items[2], tuple) and ":" in items[2][1]:
             # \bar{q}_{1:3}: a range of entries of the accented vector \bar{q}, not of q
@@ -246,6 +251,22 @@ class GlyphRules:
         self.readings.append(f"{key}: read as entry {k} of {vkey} (a choice: or a symbol of "
                              f"its own)")
         return GlyphKey(key, base, rest, accent, v[k - 1, 0])
+
+    def _rate_slice(self, inner, sub, accent):
+        """``\\dot{\\mathbf{e}}_{lo:hi}`` of a vector of time: entries of its rate, as
+        :meth:`velocity` reads it."""
+        v = self.velocity(inner.key, inner.value)
+        key = self._key(inner.base, [sub], accent, "")
+        lo, hi = (int(n) for n in sub[1].replace(" ", "").split(":"))
+        shape = matrix_shape(v)
+        if not shape or shape[1] != 1 or not 1 <= lo <= hi <= shape[0]:
+            raise LatexError(f"{key}: entries {lo} to {hi} of the rate of {inner.key}, "
+                             f"{shape_words(v)}", "shapes")
+        what = f"entry {lo}" if lo == hi else f"entries {lo} to {hi}"
+        self.readings.append(f"{key}: {what} of the rate of {inner.key}")
+        value = v[lo - 1, 0] if lo == hi else \
+            sp.ImmutableMatrix([[v[i, 0]] for i in range(lo - 1, hi)])
+        return GlyphKey(key, inner.base, [sub], accent, value)
 
     def _slice(self, key, base, rest, accent, pre):
         """``\\mathbf{q}_{1:3}``: entries 1 to 3 (counted from 1, both included) of the

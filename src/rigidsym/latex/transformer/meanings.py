@@ -23,6 +23,7 @@ import re
 import sympy as sp
 
 from rigidsym.algebra.operators import Cpm
+from rigidsym.latex.contested import readings_of
 from rigidsym.latex.entries import BASE_READINGS, base_words, is_base_point
 from rigidsym.latex.hats import CAPITAL_READINGS, HAT_READINGS
 from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, as_scalar, matrix_shape
@@ -35,7 +36,14 @@ __all__: list[str] = []
 #: 3-vector or 6-vector (``[\\mathbf{a}]``, keyed by ``[a]``): its hat or a grouping
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
                 "index": ("name", "entry"), "tilde": ("skew", "own"), "hat": HAT_READINGS,
-                "base": BASE_READINGS, "double": ("cpm", "neg"), "shape": CAPITAL_READINGS}
+                "base": BASE_READINGS, "double": ("cpm", "neg"), "shape": CAPITAL_READINGS,
+                "cross": readings_of("bracket cross")}
+
+
+def is_cross_bracket(key: str) -> bool:
+    """``[A x\\wedge]``, ``[A x\\times]``: a product before an ``x\\times`` inside a
+    bracket (:mod:`rigidsym.latex.contested`, "bracket cross")."""
+    return key.startswith("[") and key.endswith(("\\wedge]", "\\times]"))
 
 
 def _kind(key: str) -> str:
@@ -45,6 +53,8 @@ def _kind(key: str) -> str:
         return "shape"
     if key.startswith("[["):  # Shuster's [[u]]: the cross-product matrix or its negative
         return "double"
+    if is_cross_bracket(key):  # Groves' [C\omega\wedge]: the content's or C times
+        return "cross"
     if is_base_point(key):  # a 4-vector's entries counted from 1 or 0 (latex.entries)
         return "base"
     if key.endswith(" hat"):  # an undeclared \hat{X} (rigidsym.latex.hats)
@@ -62,6 +72,9 @@ def said(key: str, choice: str) -> str:
     its entry``."""
     if _kind(key) == "bracket":
         return f"{key} {'a bracket that groups' if choice == 'group' else 'the hat'}"
+    if _kind(key) == "cross":
+        return f"{key} " + ("A [x]_× (x× binds to the factor before it)" if choice == "bind"
+                            else "the cross-product matrix of its content")
     if _kind(key) == "tilde":
         return ("each \\tilde{x} of a 3-vector " + ("a vector of its own" if choice == "own"
                                                     else "its cross-product matrix [x]_\\times"))

@@ -28,7 +28,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import rigid_motions
-from rigidsym.latex import tangent
+from rigidsym.latex import contested, tangent
 from rigidsym.latex.kinematics import expand_models
 from rigidsym.latex.lexing import bracket_key, named_map_key
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
@@ -70,11 +70,17 @@ class RigidMotionRules:
 
     def _exp(self, x, how):
         s = matrix_shape(x)
+        if s == (1, 1):
+            x, s = as_scalar(x), None
         if s is None:
-            raise LatexError(f"{how} of a scalar{self._named(x)}: the scalar exponential is "
-                             f"not decided exactly by the engine; {how} is read as the "
-                             f"matrix exponential of a 3x3 (so(3)) or 4x4 (se(3)) exponent",
-                             "shapes")
+            from rigidsym.printing import notation
+
+            raise LatexError(f"{how} of the scalar {notation.text(x)}: a scalar exponential, "
+                             f"which the engine does not decide exactly (its vocabulary has "
+                             f"the matrix exponential of a 3x3 (so(3)) or 4x4 (se(3)) "
+                             f"exponent only); write the value it takes where you know it "
+                             f"(Jacobi's \\det e^{{X}} = e^{{\\operatorname{{tr}} X}} of X: "
+                             f"so(3), tr X = 0: \\det e^{{X}} = 1)", "shapes")
         if s not in ((3, 3), (4, 4)):
             raise LatexError(f"{how} of {shape_words(x)}{self._named(x)}: expected a 3x3 (so(3)) "
                              f"or 4x4 (se(3)) exponent, e.g. [\\hat\\omega]\\theta with "
@@ -172,6 +178,8 @@ class RigidMotionRules:
 
         v = self._val(x)
         own_tilde(self, x)  # [\tilde{x}]: Schaub & Junkins' matrix, no hat of a vector
+        if matrix_shape(v) == (3, 3):
+            return self._cross_bracket(v)
         if matrix_shape(v) not in ((3, 1), (6, 1)):
             return v
         how = self.made.get(v)
@@ -191,6 +199,40 @@ class RigidMotionRules:
             self._note(tangent.said())
         # printed [x] as written (transformer.meanings)
         return as_written(rigid_motions.hat(v, tangent.rigid_order()))
+
+    def _cross_bracket(self, v):
+        """``[A\\mathbf{x}\\wedge]`` (``\\times``): a contested construct
+        (:mod:`rigidsym.latex.contested`, "bracket cross"): the cross-product matrix of the
+        content ``[(A x)]_×`` (Groves) or ``A [x]_×`` (the operator binds to the factor
+        before it, Featherstone), a choice point read both ways. Any other 3 x 3 content
+        groups."""
+        from rigidsym.algebra.operators import Cpm
+        from rigidsym.printing import notation
+
+        how = self.made.get(v)
+        if not how or how[0] != "mul":
+            return v
+        left, op = how[1]
+        made = self.made.get(op)
+        if not made or made[0] != "cross_op":
+            return v
+        x, tok = made[1]
+        content = left * x
+        if matrix_shape(content) != (3, 1):
+            return v
+        key = f"[{notation.text(left)} {notation.text(x)}{tok}]"
+        settled = contested.declared("bracket cross")  # --let 'bracket cross: ...'
+        if settled is None:
+            self.choice_points.setdefault(key, alternatives(key))
+        how = "declared by --let 'bracket cross: ...'" if settled else "a choice"
+        if (settled or self.choices.get(key, alternatives(key)[0])) == "bind":
+            self._note(f"{key}: read as {notation.text(left)} [{notation.text(x)}]_× ({how}: "
+                       f"or the cross-product matrix of the content)")
+            return v
+        self._note(f"{key}: read as the cross-product matrix of the content "
+                   f"[{notation.text(content)}]_× ({how}: or {notation.text(left)} "
+                   f"[{notation.text(x)}]_×)")
+        return Cpm(content)
 
     # ---- derivatives
     def deriv_op(self, items):

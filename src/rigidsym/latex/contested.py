@@ -1,0 +1,168 @@
+"""The contested constructs of the reader's LaTeX: constructs that two books read two ways,
+each with its readings and the books behind them (:data:`CONTESTED`). docs/check-latex.md
+("Contested constructs") prints this table.
+
+A statement that uses one is decided under each reading the user has not settled: where
+the verdicts agree, the verdict stands and ``read as:`` says so; where they differ the answer
+is bad input naming the construct, each reading with its verdict, and the ``--let`` (or
+``--notation``, or respelling) that settles it. A reading is never picked by a rule alone.
+The second semantics (:mod:`rigidsym.numeval`) has its own table of the same constructs
+(:mod:`rigidsym.numeval.conventions`), written separately.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass
+
+from rigidsym.core.errors import BadInput
+from rigidsym.latex.let_text import split_lets
+
+__all__ = ["Reading", "Construct", "CONTESTED", "construct", "readings_of", "DECLARABLE",
+           "declared", "declared_texts", "using", "split_settings"]
+
+
+@dataclass(frozen=True)
+class Reading:
+    """One reading of a contested construct: its name (a choice's value), what it means,
+    and the books that read it so."""
+
+    name: str
+    means: str
+    books: str
+
+
+@dataclass(frozen=True)
+class Construct:
+    """A construct two books read differently: its key (:data:`CONTESTED`), how it is
+    written, its readings (the first is the one ``read as:`` shows first) and what settles
+    it."""
+
+    key: str
+    written: str
+    readings: tuple[Reading, ...]
+    settles: str
+
+
+#: every contested construct, by key
+CONTESTED: dict[str, Construct] = {c.key: c for c in (
+    Construct(
+        "bracket cross", r"[A\mathbf{x}\wedge], [A\mathbf{x}\times]",
+        (Reading("content", "the cross-product matrix of the bracket's content, [(A x)]_×",
+                 "Groves (2013) (2.50), Titterton & Weston (2004)"),
+         Reading("bind", "x× binds to the factor before it: A [x]_×",
+                 "Featherstone (2008) (2.31)-(2.33): E r× is E (r×)")),
+        r"--let 'bracket cross: content' or --let 'bracket cross: bind' (or write "
+        r"[A\mathbf{x}]_\times for the content, A[\mathbf{x}]_\times for A times)"),
+    Construct(
+        "quaternion product", r"\mathbf{p}\otimes\mathbf{q}, \mathbf{p}\odot\mathbf{q}",
+        (Reading("Hamilton", "scalar first q = [w; x; y; z], ij = k",
+                 "Solà (2017) (12), Kok–Hol–Schön (2017)"),
+         Reading("JPL", "scalar last q = [x; y; z; w], ij = -k",
+                 "Trawny & Roumeliotis (2005) (8), Breckenridge (1999)")),
+        r"--let '\otimes: Hamilton' or --let '\otimes: JPL' (--notation jpl); a --let that "
+        r"names a 4-vector's entries (q_4 = \bar q_{4:4}, \mathbf{q} = \bar q_{1:3}: scalar "
+        r"last) fixes the storage order and with it the convention"),
+    Construct(
+        "tangent order", r"a 6-vector's hat, vee, \mathrm{Ad}, \mathrm{ad}",
+        (Reading("angular first", "a twist [ω; v]",
+                 "Lynch & Park (2017), Murray–Li–Sastry (1994), Featherstone (2008)"),
+         Reading("translation first", "a twist [v; ω] (ξ = [ρ; φ])",
+                 "Barfoot (2017), Solà et al. (2018), Sophus, manif")),
+        r"--let 'tangent order: angular first' or --let 'tangent order: translation first' "
+        r"(or --notation barfoot, sola, lynch-park ...)"),
+    Construct(
+        "hat", r"\hat{y} of a glyph, \hat{\omega}",
+        (Reading("unit", "a unit vector of its own", "Lynch & Park (2017), Corke (2017)"),
+         Reading("skew", "the skew matrix [y]_×", "Murray–Li–Sastry (1994), Barfoot (2017)")),
+        r"--let '\hat{y}: unit vector' or --notation murray-li-sastry (or --let '\hat{y} = "
+        r"[y]_\times')"),
+    Construct(
+        "hat of a product", r"\hat{xy}, \widehat{\mathrm{Ad}_g\xi}",
+        (Reading("skew", "the hat of the product, (xy)^∧", "Murray–Li–Sastry (1994), Bullo & "
+                 "Lewis (2004)"),),
+        r"write (xy)^\wedge or [xy]_\times for the hat of the product"),
+    Construct(
+        "exponential", r"e^{X}",
+        (Reading("scalar", "the scalar exponential, where the exponent is a scalar "
+                 "(e^{\\operatorname{tr} X}, e^{i\\theta})", "Hall (2015) Thm 2.12 (Jacobi)"),
+         Reading("matrix", "the matrix exponential, where the exponent is a square matrix",
+                 "Lynch & Park (2017) (3.51), Murray–Li–Sastry (1994)")),
+        "decided by the exponent's shape: no choice remains"),
+)}
+
+
+def construct(key: str) -> Construct:
+    """The contested construct ``key`` (a key of :data:`CONTESTED`).
+
+    Raises:
+        KeyError: no such construct.
+    """
+    return CONTESTED[key]
+
+
+def readings_of(key: str) -> tuple[str, ...]:
+    """The names of the readings of the construct ``key``, the first shown first."""
+    return tuple(r.name for r in CONTESTED[key].readings)
+
+
+#: the constructs a ``--let 'CONSTRUCT: READING'`` settles here (the quaternion product and
+#: the tangent order have declarations of their own: rigidsym.latex.quaternions, .tangent)
+DECLARABLE = ("bracket cross",)
+_DECLARED: ContextVar[tuple[dict, tuple] | None] = ContextVar("contested_declared",
+                                                             default=None)
+
+
+def declared(key: str) -> str | None:
+    """The reading of the construct ``key`` a ``--let`` declared for the check running now,
+    or ``None``."""
+    return (_DECLARED.get() or ({}, ()))[0].get(key)
+
+
+def declared_texts() -> tuple[str, ...]:
+    """The ``--let`` texts that declared readings now (they join the check's id)."""
+    return (_DECLARED.get() or ({}, ()))[1]
+
+
+@contextmanager
+def using(readings: dict, texts=()) -> Iterator[None]:
+    """Within the block the constructs of ``readings`` (key -> reading) are read so, as the
+    ``--let`` s ``texts`` declare."""
+    token = _DECLARED.set((dict(readings), tuple(texts)))
+    try:
+        yield
+    finally:
+        _DECLARED.reset(token)
+
+
+def split_settings(let) -> tuple[object, dict, list[str]]:
+    """``let`` without its ``CONSTRUCT: READING`` declarations (:data:`DECLARABLE`), the
+    readings they declare, and their texts (which join the check's id).
+
+    Raises:
+        BadInput: a reading the construct does not have, or a construct declared twice.
+    """
+    if let is None or isinstance(let, dict):
+        return let, {}, []
+    try:
+        strings = split_lets([let] if isinstance(let, str) else list(let))
+    except (TypeError, AttributeError):
+        return let, {}, []
+    kept, found, texts = [], {}, []
+    for s in strings:
+        name, _, value = s.partition(":")
+        key = " ".join(name.split()).lower()
+        if key not in DECLARABLE or not value.strip():
+            kept.append(s)
+            continue
+        names = readings_of(key)
+        if value.strip().lower() not in names:
+            raise BadInput(f"--let '{s}': expected one of "
+                           + ", ".join(f"'{key}: {n}'" for n in names))
+        if key in found:
+            raise BadInput(f"--let: {key} is declared twice")
+        found[key] = value.strip().lower()
+        texts.append(s)
+    return (let if not found else kept), found, texts

@@ -1,0 +1,65 @@
+"""The second semantics' own table of the contested constructs: the readings it evaluates
+for each construct that two books read two ways, written here from the books (not taken
+from the symbolic reader's table, :mod:`rigidsym.latex.contested`), so that a reading the
+two semantics shared by accident could not decide a statement alone.
+
+- ``bracket cross``: ``[A\\mathbf{x}\\wedge]`` is the cross-product matrix of the content,
+  ``(A x)^∧`` (Groves (2013) (2.50)), or ``A x^∧``, the operator bound to the factor before it
+  (Featherstone (2008) (2.31)).
+- ``quaternion product``: Hamilton's units ``ij = k`` with the scalar first (Hamilton 1843,
+  Solà (2017) (8)) or JPL's ``ij = -k`` with the scalar last (Trawny & Roumeliotis (2005) (2)),
+  :func:`rigidsym.numeval.values.quaternion_product`.
+- ``tangent order``: a twist ``[ω; v]`` (Lynch & Park) or ``[v; ω]`` (Barfoot),
+  :func:`rigidsym.numeval.values.tangent_order`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
+
+__all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "choice_key", "settled",
+           "declared_readings"]
+
+#: [A x\wedge]: the content's hat, or A times x's hat
+BRACKET_CROSS = ("content", "bind")
+#: p \otimes q: Hamilton's (scalar first, ij = k) or JPL's (scalar last, ij = -k)
+QUATERNION = ("Hamilton", "JPL")
+#: a 6-vector's order: angular part first or translation first
+TANGENT = ("angular first", "translation first")
+#: every contested construct this semantics evaluates, by name, its readings
+READINGS = {"bracket cross": BRACKET_CROSS, "quaternion product": QUATERNION,
+            "tangent order": TANGENT}
+
+
+def choice_key(construct: str, text: str) -> str:
+    """The choice point of ``construct`` (a key of :data:`READINGS`) written ``text``."""
+    return f"{construct} {text}"
+
+
+_SETTLED: ContextVar[dict | None] = ContextVar("numeval_settled", default=None)
+
+
+def settled(construct: str) -> str | None:
+    """The reading of ``construct`` the user declared for this evaluation, or ``None``
+    (every reading of :data:`READINGS` is then evaluated)."""
+    return (_SETTLED.get() or {}).get(construct)
+
+
+@contextmanager
+def declared_readings(readings: dict) -> Iterator[None]:
+    """Within the block each construct of ``readings`` (name -> reading, one of
+    :data:`READINGS`) is read so, as the user's ``--let 'CONSTRUCT: READING'`` says.
+
+    Raises:
+        ValueError: a construct or reading this semantics does not have.
+    """
+    for k, v in readings.items():
+        if v not in READINGS.get(k, ()):
+            raise ValueError(f"readings: {k!r}: {v!r} is no reading of this semantics")
+    token = _SETTLED.set(dict(readings))
+    try:
+        yield
+    finally:
+        _SETTLED.reset(token)

@@ -1,0 +1,188 @@
+"""Contested constructs (:mod:`rigidsym.latex.contested`): a construct two books read two
+ways is decided under each reading; where the verdicts differ the reader asks, naming the
+construct, the readings and each verdict, and where they agree the verdict stands and
+``read as:`` says so. Never a verdict from a default reading.
+
+Per construct: a true statement and its slip, under each reading (the respelling or the
+declaration that fixes it) and with the reading left open.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import rigidsym
+from rigidsym.core.errors import BadInput
+from rigidsym.latex.contested import CONTESTED
+from rigidsym.registry import declarations as registry
+
+C = [r"\mathbf{C}: rotation", r"\boldsymbol\omega: vector"]
+#: Groves (2013) (2.50): the cross-product matrix of a rotated vector, true read as the
+#: bracket's content; and the slip that is true only where x\wedge binds to C
+GROVES = r"\mathbf{C}[\boldsymbol\omega\wedge]\mathbf{C}^T = [\mathbf{C}\boldsymbol\omega\wedge]"
+GROVES_SLIP = r"[\mathbf{C}\boldsymbol\omega\wedge] = \mathbf{C}[\boldsymbol\omega\wedge]"
+
+
+@pytest.fixture(autouse=True)
+def forget_latex_ids():
+    yield
+    registry.forget_module("rigidsym.latex.statement")
+
+
+def _check(latex, lets):
+    return rigidsym.check_latex(latex, let=lets, repairs=False)
+
+
+def test_every_construct_has_two_readings_or_says_why_not_and_its_books():
+    for c in CONTESTED.values():
+        assert c.readings and all(r.books and r.means for r in c.readings), c.key
+        assert c.settles, c.key
+
+
+SLOW = pytest.mark.slow
+
+
+@pytest.mark.parametrize("op, latex, content, bind", [
+    (r"\wedge", GROVES, "verified", "does-not-hold"),
+    pytest.param(r"\wedge", GROVES_SLIP, "does-not-hold", "verified", marks=SLOW),
+    pytest.param(r"\times", GROVES, "verified", "does-not-hold", marks=SLOW),
+    pytest.param(r"\times", GROVES_SLIP, "does-not-hold", "verified", marks=SLOW),
+])
+def test_the_bracket_cross_is_asked_naming_each_reading_and_its_verdict(op, latex, content,
+                                                                        bind):
+    with pytest.raises(BadInput) as e:
+        _check(latex.replace(r"\wedge", op), C)
+    msg = str(e.value)
+    assert f"the cross-product matrix of its content: {content}" in msg, msg
+    assert f"binds to the factor before it): {bind}" in msg, msg
+    assert "Groves" in msg and "Featherstone" in msg and r"]_\times" in msg, msg
+
+
+@SLOW
+@pytest.mark.parametrize("latex, verdict", [
+    # the content's reading, respelt: Groves' identity holds, its slip does not
+    (r"\mathbf{C}[\boldsymbol\omega]_\times\mathbf{C}^T = [\mathbf{C}\boldsymbol\omega]_\times",
+     "verified"),
+    (r"[\mathbf{C}\boldsymbol\omega]_\times = \mathbf{C}[\boldsymbol\omega]_\times",
+     "does-not-hold"),
+    # the binding's reading, respelt: C (ω×) C^T is no C (ω×)
+    (r"\mathbf{C}[\boldsymbol\omega]_\times\mathbf{C}^T = \mathbf{C}[\boldsymbol\omega]_\times",
+     "does-not-hold"),
+    (r"\mathbf{C}[\boldsymbol\omega]_\times\mathbf{C}^T\mathbf{C} = "
+     r"\mathbf{C}[\boldsymbol\omega]_\times", "verified"),
+])
+def test_the_bracket_cross_respelt_is_decided_under_the_reading_written(latex, verdict):
+    assert _check(latex, C).verdict == verdict
+
+
+@SLOW
+def test_a_bracket_cross_whose_readings_agree_is_decided_and_said():
+    r = _check(r"[c\boldsymbol\omega\wedge] = c[\boldsymbol\omega\wedge]",
+               [r"c: scalar", r"\boldsymbol\omega: vector"])
+    assert r.verdict == "verified"
+    assert any("readings type-check" in m and "all verified" in m for m in r.model), r.model
+
+
+#: Trawny & Roumeliotis (2005) (62), the attitude matrix of a JPL quaternion, scalar last,
+#: named through the user's own lets (q_4 the scalar, \mathbf{q} entries 1 to 3)
+TRAWNY = [r"\bar q: unit 4-vector", r"\bar p: unit 4-vector", r"q_4 = \bar q_{4:4}",
+          r"\mathbf{q} = \bar q_{1:3}",
+          r"\mathbf{C}(\bar q) = (2q_4^2 - 1)I_3 - 2q_4[\mathbf{q}]_\times + "
+          r"2\mathbf{q}\mathbf{q}^T"]
+#: the same matrix as Hamilton's active rotation, scalar first (Solà (2017) (115))
+HAMILTON = [r"\bar q: unit 4-vector", r"\bar p: unit 4-vector", r"q_0 = \bar q_{1:1}",
+            r"\mathbf{q} = \bar q_{2:4}",
+            r"\mathbf{C}(\bar q) = (q_0^2 - \mathbf{q}^T\mathbf{q})I_3 + 2q_0[\mathbf{q}]_\times"
+            r" + 2\mathbf{q}\mathbf{q}^T"]
+PRODUCT = r"\mathbf{C}(\bar q\otimes\bar p) = \mathbf{C}(\bar q)\mathbf{C}(\bar p)"
+PRODUCT_SLIP = r"\mathbf{C}(\bar q\otimes\bar p) = \mathbf{C}(\bar p)\mathbf{C}(\bar q)"
+
+
+@pytest.mark.parametrize("lets, own", [(TRAWNY, "JPL"),
+                                       pytest.param(HAMILTON, "Hamilton", marks=SLOW)])
+def test_the_storage_order_of_the_users_lets_fixes_the_product_and_is_said(lets, own):
+    r = _check(PRODUCT, lets)
+    assert r.verdict == "verified", r.model
+    said = [m for m in r.model if m.startswith("quaternion product:")]
+    assert said and f"{own}'s, the storage order fixed by --let" in said[0], said
+    assert _check(PRODUCT_SLIP, lets).verdict == "does-not-hold"
+
+
+@SLOW
+@pytest.mark.parametrize("lets, own, other", [(TRAWNY, "JPL", "Hamilton"),
+                                              (HAMILTON, "Hamilton", "JPL")])
+def test_a_declared_product_is_used_and_the_other_convention_fails(lets, own, other):
+    assert _check(PRODUCT, lets + [rf"\otimes: {own}"]).verdict == "verified"
+    assert _check(PRODUCT, lets + [rf"\otimes: {other}"]).verdict == "does-not-hold"
+
+
+def test_the_docs_table_lists_every_construct_with_its_books():
+    from pathlib import Path
+
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "check-latex.md").read_text()
+    table = doc.split("## Contested constructs", 1)[1].split("\n## ", 1)[0]
+    for c in CONTESTED.values():
+        row = next((line for line in table.splitlines() if f"({c.key})" in line), None)
+        assert row is not None, c.key
+        for r in c.readings:
+            assert f"**{r.name}**" in row and r.books.split(" (")[0].split(",")[0] in row, \
+                (c.key, r.name)
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"[F_1, F_2] = F_1F_2 - F_2F_1", "verified"),  # Hall (2015) Def. 2.21
+    (r"[F_1, F_2] = F_2F_1 - F_1F_2", "does-not-hold"),
+])
+def test_the_commutator_of_two_matrices_is_read(latex, verdict):
+    assert _check(latex, [r"F_1: matrix", r"F_2: matrix"]).verdict == verdict
+
+
+def test_a_bracket_of_two_vectors_is_refused_saying_what_to_write():
+    with pytest.raises(ValueError, match=r"\[x\^\\wedge, y\^\\wedge\]"):
+        _check(r"[\mathbf{a}, \mathbf{b}] = \mathbf{0}",
+               [r"\mathbf{a}: vector", r"\mathbf{b}: vector"])
+
+
+ROT = r"\mathbf{Q}(t): rotation"
+SPACE = r"\dot{\mathbf{Q}} = [\boldsymbol\omega]_\times\mathbf{Q}"
+BODY = r"\dot{\mathbf{Q}} = \mathbf{Q}[\boldsymbol\omega]_\times"
+
+
+@pytest.mark.parametrize("declared, latex, verdict", [
+    (r"\boldsymbol\omega: angular velocity of \mathbf{Q}", SPACE, "verified"),
+    pytest.param(r"\boldsymbol\omega: angular velocity of \mathbf{Q}", BODY, "does-not-hold",
+                 marks=SLOW),
+    pytest.param(r"\boldsymbol\omega: angular velocity of \mathbf{Q} in the body frame", BODY,
+                 "verified", marks=SLOW),
+    pytest.param(r"\boldsymbol\omega: body angular velocity of \mathbf{Q}", SPACE,
+                 "does-not-hold", marks=SLOW),
+])
+def test_the_angular_velocity_of_a_rotation_is_declarable_in_words(declared, latex, verdict):
+    r = _check(latex, [ROT, declared])
+    assert r.verdict == verdict
+    assert any("angular velocity of \\mathbf{Q}, read as" in m for m in r.model), r.model
+
+
+def test_the_readers_own_body_velocity_is_said_as_what_it_is_everywhere():
+    r = _check(SPACE, [ROT, r"\boldsymbol\omega: vector"])
+    assert r.verdict == "does-not-hold"  # ω free: the relation does not hold for every ω
+    assert not any(m.startswith("free") and "Q_w" in m for m in r.model), r.model
+    assert any("Q_w: the body angular velocity of Q, introduced by the reader" in m
+               and "angular velocity of \\mathbf{Q}' declares" in m for m in r.model), r.model
+    names = [s["symbol"] for s in r.counterexample["symbols"]]
+    assert "Q_w, the body angular velocity of Q, introduced by the reader" in names, names
+
+
+@pytest.mark.parametrize("reading, verdict", [("content", "verified"),
+                                              pytest.param("bind", "does-not-hold",
+                                                           marks=SLOW)])
+def test_a_declared_bracket_cross_is_used_by_both_semantics_and_said(reading, verdict):
+    r = _check(GROVES, C + [f"bracket cross: {reading}"])
+    assert r.verdict == verdict
+    assert any("declared by --let 'bracket cross" in m for m in r.model), r.model
+    assert any(m.startswith("numeric cross-check") for m in r.model), r.model
+
+
+def test_a_bracket_cross_reading_no_book_has_is_refused_naming_both():
+    with pytest.raises(BadInput, match=r"'bracket cross: content', 'bracket cross: bind'"):
+        _check(GROVES, C + ["bracket cross: inside"])
