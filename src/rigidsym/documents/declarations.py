@@ -116,43 +116,12 @@ def _closure(used: set[str], models: dict[str, tuple[str, set[str]]]) -> set[str
     return seen
 
 
-def plan(relations: list[Relation], reading: Reading | None = None,
-         lets: list[str] | tuple[str, ...] = ()) -> list[Plan]:
-    """What to do with each relation, in document order (:mod:`this module
-    <.declarations>`).
-
-    Args:
-        relations: the document's relations, in reading order.
-        reading: its reading file, or ``None``.
-        lets: ``--let`` declarations of the command line (after the reading's).
-
-    Raises:
-        BadInput: a declaration of the reading or of ``lets`` that cannot be read.
-    """
-    from rigidsym.latex.lets import split_lets
-
-    plans = []
+def _definitions(relations: list[Relation], declared) -> tuple[list[Plan], list]:
+    """The first pass of :func:`plan`: each relation skipped (an elision, a relation not
+    checked, an empty side), a definition (``(index, key, let text, relation)`` in ``defs``)
+    or a claim to decide, in document order."""
+    plans: list[Plan] = []
     defs: list[tuple[int, str, str, Relation]] = []  # (index, key, let text, relation)
-    declared_cache: dict = {}
-
-    def declared(label):
-        if label not in declared_cache:
-            texts = split_lets(base_lets(reading, list(lets), label))
-            kinds = {}
-            for t in texts:
-                x = _one_let(t)
-                if x is None and ":" in t and t.split(":")[0].strip() in (
-                        "\\otimes", "\\odot", "tangent order"):
-                    kinds[t.split(":")[0].strip()] = (t, set())
-                    continue
-                if x is None:
-                    raise BadInput(f"the declaration '{t}' cannot be read (reading file or "
-                                   f"--let)")
-                kinds[x.key] = (t, _keys(x.latex) or set() if x.latex else set())
-            declared_cache[label] = kinds
-        return declared_cache[label]
-
-    # first pass: the definitions, in order
     for i, r in enumerate(relations):
         base = declared(r.label)
         if any(e in r.latex for e in ELISIONS):
@@ -182,6 +151,44 @@ def plan(relations: list[Relation], reading: Reading | None = None,
             continue
         defs.append((i, x.key, text, r))
         plans.append(Plan(r, "definition", defines=x.key, let=text))
+    return plans, defs
+
+
+def plan(relations: list[Relation], reading: Reading | None = None,
+         lets: list[str] | tuple[str, ...] = ()) -> list[Plan]:
+    """What to do with each relation, in document order (:mod:`this module
+    <.declarations>`).
+
+    Args:
+        relations: the document's relations, in reading order.
+        reading: its reading file, or ``None``.
+        lets: ``--let`` declarations of the command line (after the reading's).
+
+    Raises:
+        BadInput: a declaration of the reading or of ``lets`` that cannot be read.
+    """
+    from rigidsym.latex.lets import split_lets
+
+    declared_cache: dict = {}
+
+    def declared(label):
+        if label not in declared_cache:
+            texts = split_lets(base_lets(reading, list(lets), label))
+            kinds = {}
+            for t in texts:
+                x = _one_let(t)
+                if x is None and ":" in t and t.split(":")[0].strip() in (
+                        "\\otimes", "\\odot", "tangent order"):
+                    kinds[t.split(":")[0].strip()] = (t, set())
+                    continue
+                if x is None:
+                    raise BadInput(f"the declaration '{t}' cannot be read (reading file or "
+                                   f"--let)")
+                kinds[x.key] = (t, _keys(x.latex) or set() if x.latex else set())
+            declared_cache[label] = kinds
+        return declared_cache[label]
+
+    plans, defs = _definitions(relations, declared)
     # second pass: each relation's declarations, and definitions used before they stand
     for n, p in enumerate(plans):
         if p.action == "skip":

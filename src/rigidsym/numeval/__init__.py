@@ -10,6 +10,7 @@ values` (matrix algebra and the operators on mpmath values), :mod:`~rigidsym.num
 evaluator` (the tree walk, scope, and the residual of each relation).
 """
 
-from rigidsym.numeval.evaluator import Decl, NotCovered, Residual, residuals
+from rigidsym.numeval.evaluator import Decl, NotCovered, Residual
+from rigidsym.numeval.random_points import residuals
 
 __all__ = ["Decl", "NotCovered", "Residual", "residuals"]

@@ -11,8 +11,9 @@ import lark
 import mpmath as mp
 
 from rigidsym.numeval import motion
-from rigidsym.numeval.evaluator import DIGITS, TIME, Residual, residuals, text_of
+from rigidsym.numeval.evaluator import DIGITS, TIME, Residual, text_of
 from rigidsym.numeval.names import glyph_key
+from rigidsym.numeval.random_points import residuals
 
 __all__ = ["value_of", "residuals_at", "subtree_values"]
 
@@ -40,7 +41,7 @@ def residuals_at(tree, decls, given: list) -> tuple[list[Residual], list[str]]:
         point fixes the statement).
 
     Raises:
-        NotCovered: as :func:`~rigidsym.numeval.evaluator.residuals`.
+        NotCovered: as :func:`~rigidsym.numeval.random_points.residuals`.
         ValueError: a value that is not plain (:func:`value_of`).
     """
     with mp.workdps(DIGITS + 10):

@@ -2,7 +2,7 @@ r"""The second semantics' reading of an undeclared hat, ``\hat{X}``,
 written from the books, not from the reader: Lynch & Park's and Corke's ``\hat\omega`` is a
 unit vector of its own, Murray, Li & Sastry's (2.9) and Ma, Soatto, Košecká & Sastry's
 ``\widehat{T}`` the skew matrix of the vector under it. Both are readings of one choice
-point (``hat`` and the glyph's text); :func:`rigidsym.numeval.evaluator.residuals` evaluates
+point (``hat`` and the glyph's text); :func:`rigidsym.numeval.random_points.residuals` evaluates
 each and keeps those whose sides have one shape. Imports lark, mpmath and the standard
 library only (the import-linter contract of :mod:`rigidsym.numeval`)."""
 

@@ -2,7 +2,7 @@
 undeclared ``\\tilde{X}`` of a 3-vector ``X`` is a choice point, read as the cross-product
 matrix of ``X`` (Wittenburg, Shabana, Greenwood, Schaub & Junkins) or as a vector of its own
 (an estimate's error), every tilde of a reading the same way; the enumeration of
-:func:`rigidsym.numeval.evaluator.residuals` keeps each reading it evaluates. The second
+:func:`rigidsym.numeval.random_points.residuals` keeps each reading it evaluates. The second
 reading is not evaluated (an undeclared accent's meaning is the reader's), so a verdict
 that rests on it alone is refused.
 As the reader does (:mod:`rigidsym.latex.transformer.tilde`), written again here: this
