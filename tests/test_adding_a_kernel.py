@@ -74,6 +74,11 @@ def _run(cmd: str, cwd: Path, env: dict, timeout: float) -> None:
 
 @pytest.mark.slow  # a clone, every kernel derived in a fresh store, a build: 10-20 min
 def test_a_kernel_added_by_the_page_alone_leaves_the_suite_green(tmp_path):
+    import _profile
+
+    if _profile.PROFILE != "exhaustive":   # CI's budget: test_the_scratch_steps_are_the_pages
+        pytest.skip("the exhaustive profile only (RIGIDSYM_TEST_PROFILE=exhaustive): 10-20 "
+                    "min; the quick test holds the steps to the page")
     if shutil.which("git") is None or shutil.which(os.environ.get("CC", "cc")) is None:
         pytest.skip("needs git and a C compiler")
     clone = tmp_path / "clone"
