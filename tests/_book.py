@@ -28,20 +28,6 @@ BOOK = (ROOT / "tests" / "no-book-here" if _WHERE.lower() == "none"
 READING = ROOT / "derivations" / "angeles-chapter3.reading.toml"
 
 
-def model_glyphs() -> set[str]:
-    """The glyphs the reading gives a model in words (``NAME = LATEX`` with a ``where``: what
-    the page says in words or by another display, written in the table's glyphs; a formula
-    cited from another display, ``cites``, left out)."""
-    from rigidsym.reading import load_reading
-
-    out = set()
-    for x in load_reading(READING).lets:
-        colon, eq = x.let.find(":"), x.let.find("=")
-        if eq >= 0 and (colon < 0 or eq < colon) and "\\mathrm{CPM}" not in x.let \
-                and x.where and not x.cites:
-            out.add(x.let[:eq].strip())
-    return out
-
 
 #: the skip's one line
 REASON = (f"the chapter is not at {BOOK} (the project never ships it; "

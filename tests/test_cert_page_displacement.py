@@ -38,9 +38,7 @@ def _lines(c: dict, book: str) -> list[str]:
 
 def _mine(c: dict) -> list[str]:
     """The glyphs of the id's table that are this module's lines with LaTeX."""
-    from _book import model_glyphs
-
-    DISPLACEMENT_GLYPHS = model_glyphs()  # the reading's model lines
+    from _reading_groups import DISPLACEMENT_GLYPHS
 
     return [e["glyph"] for e in c["symbols"] if e["glyph"] in DISPLACEMENT_GLYPHS
             and "latex" in e]

@@ -37,9 +37,7 @@ def _cases(c: dict, lines: list[str], book: str, other: str) -> list:
     """Each line the reading used doubled (p'_0 also made the ISA's point r, its
     omega-component kept, where p'_0 is read for itself), both sides shifted, the right
     side doubled (where not 0: no change), another id's printed text, the other verdict."""
-    from _book import model_glyphs
-
-    INSTANT_SCREW_GLYPHS = model_glyphs()  # the reading's model lines
+    from _reading_groups import INSTANT_SCREW_GLYPHS
 
     used = [g for g in INSTANT_SCREW_GLYPHS if any(f"{g} as the model's" in x for x in lines)]
     assert used, (c["id"], lines)

@@ -192,9 +192,7 @@ def test_every_invariant_rate_id_read_and_each_line_doubled_rejected(book,
     reads doubled, both sides shifted, the right side doubled (where not 0), the members'
     lines swapped, another id's text: rejected naming the id. FAILING: the left side read,
     the printed relation still failing (verdict verified: rejected)."""
-    from _book import model_glyphs
-
-    INVARIANT_RATE_GLYPHS = model_glyphs()  # the reading's model lines
+    from _reading_groups import INVARIANT_RATE_GLYPHS
 
     # the run's shared certificates (~10 s to build these again), each a copy
     certs = {i: json.loads(json.dumps(chapter_certificates[i])) for i in EVERY_SIDE + FAILING}

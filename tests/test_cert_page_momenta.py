@@ -113,9 +113,7 @@ def test_newton_euler_read_through_the_lines_and_each_line_doubled_rejected(
     (where not 0), a particle's mass changed, another id's text: rejected naming the id (a
     particle's velocity without o-dot is not: 3.134b reads no velocity, and in 3.139 c-dot
     meets only W's zero block)."""
-    from _book import model_glyphs
-
-    TWIST_GLYPHS = model_glyphs()  # the reading's model lines
+    from _reading_groups import TWIST_GLYPHS
 
     # the run's shared certificates (~25 s to build these again), each a copy
     certs = {i: json.loads(json.dumps(chapter_certificates[i])) for i in NEWTON_EULER}

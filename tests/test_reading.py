@@ -83,3 +83,16 @@ def test_every_convention_value_reads():
     for key, values in CONVENTIONS.items():
         for v in values:
             assert parse_reading(HEAD + f'[conventions]\n{key} = "{v}"\n').conventions == {key: v}
+
+
+def test_the_page_tests_groups_are_lines_of_the_reading():
+    """The glyphs the page-reading tests group by section (tests/_reading_groups.py) are each
+    given a line by the chapter's reading: a group never names a line the reading dropped."""
+    import _reading_groups as groups
+
+    given = {x.let.split("=")[0].split(":")[0].strip().removesuffix("(t)").strip()
+             for x in load_reading(READING).lets}
+    for name in ("DISPLACEMENT_GLYPHS", "INSTANT_SCREW_GLYPHS", "INVARIANT_RATE_GLYPHS",
+                 "TWIST_GLYPHS"):
+        missing = set(getattr(groups, name)) - given
+        assert not missing, (name, missing)
