@@ -56,8 +56,13 @@ def covered() -> set[str]:
 
 @cache
 def code_strings() -> str:
-    """Every string constant of the package's code (docstrings left out), joined."""
-    found = []
+    """Every string constant of the package's code (docstrings left out) and the strings of
+    the chapter's reading (its model lines' words go into every certificate), joined."""
+    import tomllib
+
+    reading = tomllib.loads((ROOT / "derivations" / "angeles-chapter3.reading.toml")
+                            .read_text(encoding="utf-8"))
+    found = [x.get("where", "") for x in reading.get("let", [])]
     for path in SRC.rglob("*.py"):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         docs = {id(node.body[0].value) for node in ast.walk(tree)

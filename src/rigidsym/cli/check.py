@@ -8,7 +8,7 @@ from rigidsym.cli.common import MODULE_HELP, add_repair_arguments, repair_option
 
 __all__ = ["add_arguments", "run", "HELP", "EXAMPLES", "EXIT"]
 
-HELP = "decide an equation written in LaTeX, or every display of a document (its symbols: --let)"
+HELP = "decide LaTeX: one relation (--latex) or a whole document"
 EXAMPLES = r"""  rigidsym check notes.md          every displayed relation of a Markdown or LaTeX
                                    document; its symbols: notes.reading.toml beside it
   rigidsym check notes.md --html errata.html   and the errata as one offline page (MathML)
@@ -40,7 +40,8 @@ def add_arguments(c) -> None:
     c.add_argument("file", nargs="?", metavar="FILE",
                    help="a document (.md or .tex): decide every displayed relation "
                         "(docs/check-documents.md); its declarations: the reading file "
-                        "FILE's stem + .reading.toml beside it, --reading, --let")
+                        "FILE's stem + .reading.toml beside it, --reading, --let (default: "
+                        "none: --latex instead)")
     c.add_argument("--latex", metavar="LATEX",
                    help="the relation(s) in LaTeX: = or \\equiv chains, several separated "
                         "by ',' or \\quad (this or FILE)")

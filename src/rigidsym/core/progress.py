@@ -72,8 +72,11 @@ def doing(ident: int) -> str:
     while frame is not None:
         stack.append(frame)
         frame = frame.f_back
-    modules = [f.f_globals.get("__name__", "") for f in reversed(stack)   # outermost first
-               if f.f_code.co_name == "<module>"]
+    # a module's body run by the import system (not a script or exec'd code: pytest-xdist's
+    # worker runs in a module body of its own), outermost first
+    modules = [f.f_globals.get("__name__", "") for f in reversed(stack)
+               if f.f_code.co_name == "<module>" and f.f_back is not None
+               and f.f_back.f_globals.get("__name__", "").startswith("importlib")]
     modules = [m for m in modules if m not in ("__main__", "")]
     if modules:
         other = [m for m in modules if m.split(".")[0] != "rigidsym"]
