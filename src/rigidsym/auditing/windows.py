@@ -278,6 +278,11 @@ def scan_all(ap: Approach, judge: Callable[[list, str], object], seed: int,
         j = seen[(x, draw)]
         return j.ratio if j.flag != "expected" else 0.0
 
+    def error(x: float, draw: int) -> float:
+        judged(x, draw)
+        j = seen[(x, draw)]
+        return j.err if j.flag != "expected" else 0.0
+
     xs = _samples(rng)
     if screen is None:
         rs = [judged(x, k) for k, x in enumerate(xs)]
@@ -300,7 +305,7 @@ def scan_all(ap: Approach, judge: Callable[[list, str], object], seed: int,
                 continue            # inside a worse window (as that one's draw gives it)
             wx, wr = _golden(xs, i, lambda x, i=i: judged(x, i))
             w = Window(ap, wx, wr, seen[(wx, i)])
-            _ends(w, xs, rs, a, b, i, judged)
+            _ends(w, xs, rs, a, b, i, judged, error)
             out.append(w)
         for a, b in runs[MAX_WINDOWS:]:
             if any(w.lo <= xs[a] and xs[b] <= w.hi for w in out):
@@ -359,15 +364,19 @@ def _golden(xs, i, r) -> tuple[float, float]:
     return wx, r(wx)
 
 
-def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged) -> None:
+def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged, error) -> None:
     """The ends of the window of lattice samples ``lo_i..hi_i`` (over the bound at both),
     on the draw of its worst sample ``i``: the lattice re-judged on that draw out from
     each end, :data:`COARSE` samples a step, while over the bound (a defect of some draws
     only, the axis, is a window on each of them), then bisected to within
     :data:`END_FACTOR`; a jump of the error across an end, and the slope of the error over
-    the window's samples."""
+    the window's samples. A jump is one of the error itself (``error(x, draw)``), not of
+    its ratio to the bound alone: a flat error beside a bound that changes is no branch."""
     def r(x):
         return judged(x, i)
+
+    def e(x):
+        return error(x, i)
 
     def walk(k: int, step: int) -> int:
         """The last lattice index over the bound on draw ``i`` stepping from ``k``."""
@@ -408,8 +417,10 @@ def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged) -> None:
         step = ins / out                       # toward the inside
         a = [r(ins * step ** k) for k in range(3)]
         b = [r(out / step ** k) for k in range(3)]
+        ea = [e(ins * step ** k) for k in range(3)]
+        eb = [e(out / step ** k) for k in range(3)]
         if all(map(math.isfinite, b)) and min(a) >= JUMP * max(max(b), 1e-300) \
-                and min(a) > 1:
+                and min(a) > 1 and min(ea) >= JUMP * max(eb):
             if w.jump is None or min(a) / max(b) > w.jump[1] / max(w.jump[2], 1e-300):
                 w.jump = (math.sqrt(ins * out), min(a), max(b))
     inside = [(x, rr) for x, rr in zip(xs[lo_i:hi_i + 1], rs[lo_i:hi_i + 1], strict=True)
