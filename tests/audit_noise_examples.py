@@ -58,3 +58,35 @@ def axis_angle_zero_axis(Q):
     if phi == 0:
         return np.zeros(3), 0.0
     return w / phi, phi
+
+
+def rotation_from_axis_angle(e, phi):
+    """``Q = e e^T + cos(phi) (1 - e e^T) + sin(phi) E`` (2.49) with ``1 - cos(phi)`` as
+    ``2 sin^2(phi / 2)`` (accurate everywhere)."""
+    e = np.asarray(e, dtype=np.float64)
+    E = np.array([[0.0, -e[2], e[1]], [e[2], 0.0, -e[0]], [-e[1], e[0], 0.0]])
+    return np.eye(3) + math.sin(phi) * E + 2 * math.sin(phi / 2) ** 2 * E @ E
+
+
+# a truncated series on a window between two decades: 1 - cos(phi) as phi^2 / 2 alone on
+# 2e-3 < phi < 5e-3 (a threshold meant for the next term): right at 1e-3 and at 1e-2, about
+# 1e3 x the bound at 3e-3 (the dropped phi^4 / 24 against 8 u (kappa + 1))
+def rotation_series_between_decades(e, phi):
+    e = np.asarray(e, dtype=np.float64)
+    if 2e-3 < abs(phi) < 5e-3:
+        E = np.array([[0.0, -e[2], e[1]], [e[2], 0.0, -e[0]], [-e[1], e[0], 0.0]])
+        return np.eye(3) + math.sin(phi) * E + phi**2 / 2 * E @ E
+    return rotation_from_axis_angle(e, phi)
+
+
+def quaternion(Q):
+    """The Euler-Rodrigues parameters [r; r0] of Q (r0 >= 0), from the logarithm."""
+    w = log(Q)
+    phi = float(np.linalg.norm(w))
+    r = w * (math.sin(phi / 2) / phi) if phi else np.zeros(3)
+    return np.array([*r, math.cos(phi / 2)])
+
+
+# the other sign everywhere (r0 <= 0): the same rotation, a convention to name
+def quaternion_negated(Q):
+    return -quaternion(Q)

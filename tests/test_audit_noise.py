@@ -147,4 +147,4 @@ def test_whole_audits_find_what_is_there_only(func, op, ok):
         if f.kind in ("inaccurate", "silent wrong"):
             assert float(f.text.split("error ")[1].split(" x")[0]) >= W.FIND
     if func is N.axis_angle_zero_axis:
-        assert any(f.kind == "convention" and "zero axis" in f.text for f in rep.findings)
+        assert any(f.kind == "axis convention" and "zero axis" in f.text for f in rep.findings)

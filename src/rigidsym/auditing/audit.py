@@ -355,7 +355,7 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                            tgt.equivalent)
     call = as_numpy_callable(functools.partial(func, **keywords) if keywords else func)
     found = _find(call, tgt, tuple(names) if names else parameter_names(func), seed)
-    beh, worst, batch, wins, confirm, undefined = {}, [], "", {}, {}, None
+    beh, worst, batch, wins, confirm, undefined, sign = {}, [], "", {}, {}, None, ""
     m = found.member
     if m is None and _judged_anyway(found):
         m = found.nearest
@@ -382,10 +382,11 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                                    np.random.default_rng(seed + 2))
         confirm = _confirmations(call, tgt, m, beh, seed, n_start, steps, search)
         undefined = _undefined_axis(call, tgt, m)
+        sign = _sign_convention(call, tgt, m, seed)
     single = found.member is None and found.nearest is not None and _float32_values(
         call, found, point[0])
     rep = AuditReport(fname, tgt.name, tgt.book, found.tried,
-                      m.says(tgt) if found.member else None,
+                      m.says(tgt) + (f"; {sign}" if sign else "") if found.member else None,
                       list(m.generators) if m else [],
                       found.residual, found.nearest.says(tgt) if found.nearest else None,
                       found.broken, {d: [vars(b) | {"examples": [e.flag for e in b.examples]}
@@ -399,7 +400,43 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
         rep.findings.insert(0, Finding("note", "output", kind.says))
     if undefined is not None:
         rep.findings.append(undefined)
+    if sign:
+        rep.findings.append(Finding("note", "sign convention", sign))
     return rep
+
+
+def _sign_convention(call, tgt, m, seed: int) -> str:
+    """The sign the function gives an output whose negation is the same rotation, in words,
+    where it is not the book's (``r0 >= 0`` of a quaternion, ``phi >= 0`` of the natural
+    invariants), measured at 16 ordinary inputs before any output is moved onto its class:
+    "" where it is the book's at each."""
+    if tgt.equivalent not in ("quaternion", "axis_angle") or "negated_out" in m.generators:
+        return ""
+    rng = np.random.default_rng(seed + 17)
+    pts = C.ordinary_points(R.kernel_of(tgt.kernel), 16, rng)
+    truth = _truth(tgt, pts)[m.kernel(tgt)]
+    other = 0
+    for x, t in zip(pts, truth, strict=True):
+        try:
+            got = C.call_member(call, m, x)
+        except Exception:  # noqa: BLE001  (it raises there: the flags say so)
+            return ""
+        if got.shape != t.shape or not np.isfinite(got).all():
+            return ""
+        if tgt.equivalent == "quaternion":
+            other += bool(np.linalg.norm(got + t) < np.linalg.norm(got - t))
+        else:
+            other += bool(got[3] * t[3] < 0)
+    what = ("the quaternion of the other sign, -q (r0 <= 0), for the book's q (r0 >= 0): "
+            "the same rotation (q and -q, (2.3))" if tgt.equivalent == "quaternion" else
+            "the angle negated with the axis, (-e, -phi) for the book's (e, phi), phi >= 0: "
+            "the same rotation (2.49)")
+    if other == len(pts):
+        return f"sign: {what}, at each of {len(pts)} ordinary inputs; its convention"
+    if other:
+        return (f"sign: {what} at {other} of {len(pts)} ordinary inputs, the book's sign at "
+                f"the others (a sign of its own choosing); its convention")
+    return ""
 
 
 #: the seed offset of the re-run that confirms a finding resting on one input
@@ -431,8 +468,8 @@ def _undefined_axis(call, tgt, m) -> Finding | None:
     except Exception:  # noqa: BLE001  (it raises at the identity: the flags say so)
         return None
     if out.size == 4 and not np.any(out):
-        return Finding("note", "convention", "at Q = 1 (phi = 0, where the axis is undefined) "
-                       "it returns the zero axis [0, 0, 0] with the angle 0: its convention "
-                       "for the undefined axis, the same rotation, not counted as wrong (a "
-                       "caller that divides by |e| must test for it)")
+        return Finding("note", "axis convention", "at Q = 1 (phi = 0, where the axis is "
+                       "undefined) it returns the zero axis [0, 0, 0] with the angle 0: its "
+                       "convention for the undefined axis, the same rotation, not counted as "
+                       "wrong (a caller that divides by |e| must test for it)")
     return None
