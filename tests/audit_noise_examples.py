@@ -90,3 +90,12 @@ def quaternion(Q):
 # the other sign everywhere (r0 <= 0): the same rotation, a convention to name
 def quaternion_negated(Q):
     return -quaternion(Q)
+
+
+# ahrs' hughes, its batched path re-created: one matrix at a time right, a stack of them
+# the conjugate quaternion [-r; r0] (the inverse rotation) of each
+def quaternion_batched_conjugate(Q):
+    Q = np.asarray(Q, dtype=np.float64)
+    if Q.ndim == 3:
+        return np.stack([quaternion(M) * np.array([-1.0, -1.0, -1.0, 1.0]) for M in Q])
+    return quaternion(Q)

@@ -81,6 +81,8 @@ class AuditReport:
     equivalent: str = ""       # the output's class of outputs of the same rotation, or ""
     windows: dict = field(default_factory=dict)    # dtype -> [window over the bound]
     keywords: dict = field(default_factory=dict)   # the flags it is called with (twist=True)
+    wrong: dict = field(default_factory=dict)      # dtype -> [class of wrong output met]
+    framework: str = ""        # the array framework it takes ("torch"), or "" (NumPy)
 
     @property
     def ok(self) -> bool:
@@ -287,7 +289,9 @@ def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str,
                                    f"x the bound 8 u (kappa + 1) (rigidsym's kernel: "
                                    f"{b.kernel_worst_ratio:.2g} x)" +
                                    _window_cause(b.regime, wins.get(dt, []))))
-    if "differs" in batch:
+    if "disagrees" in batch:
+        out.append(Finding("error", "batch", batch))
+    elif "differs" in batch:
         out.append(Finding("note", "batch", batch))
     return out
 
@@ -356,14 +360,17 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
     call = as_numpy_callable(functools.partial(func, **keywords) if keywords else func)
     found = _find(call, tgt, tuple(names) if names else parameter_names(func), seed)
     beh, worst, batch, wins, confirm, undefined, sign = {}, [], "", {}, {}, None, ""
+    wrong: dict = {}
     m = found.member
     if m is None and _judged_anyway(found):
         m = found.nearest
     if m is not None:
         for d in dtypes:
             dt = np.dtype(d).type
-            b, j, _, win = W.sweep(tgt, m, call, dt, seed, n_start, steps, search)
+            b, j, bad, win = W.sweep(tgt, m, call, dt, seed, n_start, steps, search)
             beh[d] = b
+            wrong[d] = [_wrong(tgt, m, c, dt) for c in sorted(
+                bad.values(), key=lambda c: (-c.count, c.name))]
             wins[d] = win
             if j is not None:
                 w = _worst_input(tgt, m, j, dt)
@@ -379,7 +386,7 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                         w.got = None
                 worst.append(w)
         batch = W.batch_dependence(call, m, R.kernel_of(tgt.kernel),
-                                   np.random.default_rng(seed + 2))
+                                   np.random.default_rng(seed + 2), tgt)
         confirm = _confirmations(call, tgt, m, beh, seed, n_start, steps, search)
         undefined = _undefined_axis(call, tgt, m)
         sign = _sign_convention(call, tgt, m, seed)
@@ -398,6 +405,15 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
                        for d, ws in wins.items()}, keywords)
     if kind is not None:
         rep.findings.insert(0, Finding("note", "output", kind.says))
+    rep.wrong = wrong
+    rep.framework = getattr(call, "framework", "")
+    if rep.framework:
+        from rigidsym.auditing.callables import framework_version
+
+        rep.versions[rep.framework] = framework_version(rep.framework) or "not known"
+    told = _told(wrong)
+    if told is not None:
+        rep.findings.append(told)
     if undefined is not None:
         rep.findings.append(undefined)
     if sign:
@@ -437,6 +453,45 @@ def _sign_convention(call, tgt, m, seed: int) -> str:
         return (f"sign: {what} at {other} of {len(pts)} ordinary inputs, the book's sign at "
                 f"the others (a sign of its own choosing); its convention")
     return ""
+
+
+def _wrong(tgt, m, c: W.WrongClass, dtype) -> dict:
+    """A class of wrong output as plain data: its count, how far off, and its worst input
+    in the user's convention (the regime, the arguments as the function takes them)."""
+    j = c.worst
+    _, rounded = W.truth_at(m.kernel(tgt), j.point, dtype)
+    x = {a.name: np.asarray(v, dtype=np.float64) for a, v in
+         zip(R.kernel_of(tgt.kernel).args, rounded, strict=True)}
+    return {"class": c.name, "count": c.count, "off": c.off, "regime": j.regime,
+            "ratio": j.ratio, "args": [np.asarray(a, dtype=dtype).tolist()
+                                       for a in m.user_args(x)]}
+
+
+#: the classes of wrong output that are wrong answers (not a loss of digits)
+WRONG_ANSWERS = ("NaN/inf", "exception", "wrong rotation", "conjugate", "transposed",
+                 "inverse rotation", "wrong branch", "wrong value")
+
+
+def _told(wrong: dict) -> Finding | None:
+    """Every class of wrong output the audit met, with its count and how far off: one
+    finding (an error where a class is a wrong answer, else a note), so that 16 wrong
+    rotations are told beside the NaN of the same function."""
+    parts = []
+    for d, classes in wrong.items():
+        for c in classes:
+            off = c["off"]
+            how = ("" if not np.isfinite(off) else
+                   f", off by up to {off:.3g} rad" if c["class"] in (
+                       "wrong rotation", "conjugate", "transposed", "inverse rotation")
+                   else f", relative error up to {off:.3g}")
+            parts.append(f"{d}: {c['class']} at {c['count']} input"
+                         f"{'s' if c['count'] != 1 else ''}{how} (worst: {c['regime']})")
+    if not parts:
+        return None
+    sev = "error" if any(c["class"] in WRONG_ANSWERS for cs in wrong.values()
+                         for c in cs) else "note"
+    return Finding(sev, "wrong outputs", "the wrong outputs met, by class: " +
+                   "; ".join(parts))
 
 
 #: the seed offset of the re-run that confirms a finding resting on one input

@@ -31,7 +31,7 @@ from rigidsym.codegen.accuracy.harness import reference as R
 from rigidsym.codegen.accuracy.harness import search as S
 
 __all__ = ["FIND", "extreme", "Runner", "Judged", "Behaviour", "audit_regimes", "judge_point",
-           "condition_number", "rejudge",
+           "condition_number", "rejudge", "WrongClass", "classify", "rotation_of", "WRONG",
            "sweep", "batch_dependence", "screen_points"]
 
 
@@ -39,6 +39,13 @@ __all__ = ["FIND", "extreme", "Runner", "Judged", "Behaviour", "audit_regimes", 
 #: re-run confirms: below it (an error of 1.0x to 2x the bound) it is the rounding's luck
 #: beside a bound that is itself a rule of thumb, not a defect a maintainer can act on
 FIND = 2.0
+
+
+#: a relative error (or a rotation off by this angle, radians) from which on an output is
+#: wrong, not inaccurate
+WRONG = 1e-3
+#: the angle (radians) within which two rotations are one (a transposed output, a branch)
+SAME = 1e-6
 
 
 def extreme(regime: str) -> bool:
@@ -368,9 +375,11 @@ def screen_points(name: str, points, dtype, runner: Runner) -> np.ndarray:
 
 def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
           n_start: int = 12, steps: int = 40, search: bool = True):
-    """``(behaviours by regime, worst Judged, runner, windows)`` over the regimes, the
-    approaches searched continuously (:mod:`.windows`: each a :class:`.windows.Window`) and
-    the hill-climbing search, in ``dtype``."""
+    """``(behaviours by regime, worst Judged, wrong outputs, windows)`` over the regimes,
+    the approaches searched continuously (:mod:`.windows`: each a :class:`.windows.Window`)
+    and the hill-climbing search, in ``dtype``; the wrong outputs ``{class:
+    WrongClass}`` (:func:`classify`) of every input judged outside the ends of the
+    floating range."""
     from rigidsym.auditing import windows as V
 
     name = member.kernel(tgt)
@@ -398,7 +407,14 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
             ws = V.scan_all(ap, judge, seed, screen)
             windows += ws
             judged += [(ap.regime, j) for _, j in ws[0].judged]
+    wrong: dict[str, WrongClass] = {}
     for regime, j in judged:
+        if j.flag != "expected" and (j.flag or j.ratio >= FIND) and not extreme(regime):
+            cls, off = classify(tgt, name, j, dtype, runner)
+            c = wrong.setdefault(cls, WrongClass(cls))
+            c.count += 1
+            if c.worst is None or (off, j.ratio) > (c.off, c.worst.ratio):
+                c.off, c.worst = off, j
         b = beh.setdefault(regime, Behaviour(regime))
         b.n += 1
         b.kernel_worst_ratio = max(b.kernel_worst_ratio, j.kernel_ratio)
@@ -416,7 +432,7 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
         key = (not extreme(regime), j.ratio)
         if worst is None or key > (not extreme(worst.regime), worst.ratio):
             worst = j
-    return beh, worst, runner, windows
+    return beh, worst, wrong, windows
 
 
 def rejudge(tgt: Target, member: Member, func: Callable, dtype, regime: str, seed: int,
@@ -450,6 +466,90 @@ def rejudge(tgt: Target, member: Member, func: Callable, dtype, regime: str, see
     return max(ratios, default=0.0)
 
 
+@dataclass
+class WrongClass:
+    """One class of wrong output the audit met (:func:`classify`): how many inputs, the
+    largest ``off`` (the angle between the rotation returned and the truth's, radians,
+    where the output denotes a rotation; else the relative error), and the worst input."""
+
+    name: str
+    count: int = 0
+    off: float = 0.0
+    worst: Judged | None = None
+
+
+def _quat_rotation(q) -> np.ndarray:
+    r, r0 = np.asarray(q[:3], dtype=np.float64), float(q[3])
+    n = float(r @ r) + r0 * r0
+    if n == 0:
+        return np.full((3, 3), np.nan)
+    R = np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])
+    return np.eye(3) + (2 * r0 * R + 2 * R @ R) / n
+
+
+def rotation_of(tgt: Target, name: str, v) -> np.ndarray | None:
+    """The rotation (3 x 3) an output of ``tgt`` denotes, ``v`` flat in the book's layout (a
+    row of :class:`Runner`'s, or the truth): a rotation matrix, a quaternion ``[r; r0]``,
+    the natural invariants ``[e; phi]``, a rotation vector, Euler angles (their sequence
+    from the kernel ``name``); None where the output is no rotation."""
+    from rigidsym.auditing.equivalence import axis_angle_rotation
+
+    v = np.asarray(v, dtype=np.float64)
+    if not np.isfinite(v).all():
+        return None
+    if tgt.antipodal == "euler":
+        sl = tgt.user_slice(R.kernel_of(name))
+        return euler_rotation(name.rsplit("_", 1)[-1], v[sl][:3])
+    if tgt.kind == "rotation" and v.size == 9:
+        return v.reshape(3, 3)
+    if tgt.equivalent == "quaternion" and v.size == 4:
+        return _quat_rotation(v)
+    if tgt.equivalent == "axis_angle" and v.size == 4:
+        n = float(np.linalg.norm(v[:3]))
+        return np.eye(3) if v[3] == 0 else (axis_angle_rotation(v[:3] / n, float(v[3]))
+                                             if n else None)
+    if tgt.antipodal == "rotation_vector" and v.size == 3:
+        n = float(np.linalg.norm(v))
+        return np.eye(3) if n == 0 else axis_angle_rotation(v / n, n)
+    return None
+
+
+def _angle(A: np.ndarray, B: np.ndarray) -> float:
+    """The angle (radians) between two rotations, from ``|A - B|_F = 2 sqrt(2) sin(t/2)``."""
+    return 2 * math.asin(min(1.0, float(np.linalg.norm(A - B)) / (2 * math.sqrt(2))))
+
+
+def classify(tgt: Target, name: str, j: Judged, dtype, runner: Runner) -> tuple[str, float]:
+    """``(class, off)`` of a wrong output at the judged input ``j`` (a flag, or an error at
+    or past :data:`FIND` x the bound): "exception", "NaN/inf"; where the output denotes a
+    rotation, "conjugate" (a quaternion's), "transposed" (a matrix's) or "inverse rotation"
+    (another's) where it is the truth's inverse, "wrong branch" where it is the truth's
+    rotation but not the book's output (``w + 2 pi w/|w|``), "wrong rotation" off by
+    :data:`WRONG` rad or more; else "wrong value" (relative error WRONG or more) or
+    "inaccurate". ``off``: the angle between the rotations (radians), else the relative
+    error."""
+    if j.flag.startswith("raises"):
+        return "exception", math.inf
+    if j.flag:
+        return "NaN/inf", math.inf
+    arrays = J.round_points([j.point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine).all():
+        return "NaN/inf", math.inf
+    truth, _ = truth_at(name, j.point, dtype)
+    Rm = rotation_of(tgt, name, mine)
+    Rt = None if truth is None else rotation_of(tgt, name, truth)
+    if Rm is None or Rt is None:
+        return ("wrong value" if j.err >= WRONG else "inaccurate"), j.err
+    off, inv = _angle(Rm, Rt), _angle(Rm, Rt.T)
+    if off <= SAME:
+        return ("wrong branch" if j.err >= WRONG else "inaccurate"), j.err
+    if inv <= SAME and _angle(Rt, Rt.T) >= WRONG:     # the inverse told from the rotation
+        return ("conjugate" if tgt.equivalent == "quaternion" else "transposed"
+                if tgt.kind == "rotation" else "inverse rotation"), off
+    return ("wrong rotation" if off >= WRONG else "inaccurate"), off
+
+
 def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarray]]:
     """``(truth at the input as rounded to dtype, the rounded arguments)`` at an exact
     point; where the declared formula is undefined there (a removable singularity, ``w =
@@ -466,9 +566,17 @@ def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarra
     return ref, [a[0] for a in arrays]
 
 
-def batch_dependence(func: Callable, member: Member, tgt_kernel, rng) -> str:
+#: a batched row that differs from the row alone by this much (relative) or more
+#: disagrees: at ordinary inputs (kappa of a few) it is far past any rounding
+DISAGREE = 1e-8
+
+
+def batch_dependence(func: Callable, member: Member, tgt_kernel, rng,
+                     tgt: Target | None = None) -> str:
     """Whether the function takes a batch in its form and, if so, whether a row alone and
-    the same row in a batch agree bit for bit."""
+    the same row in a batch agree bit for bit; where they differ by :data:`DISAGREE` or
+    more (relative), "disagrees", with what the batched rows are against the rows alone
+    where ``tgt``'s output denotes a rotation (the conjugate, the transpose)."""
     pts = ordinary_points(tgt_kernel, 8, rng)
     rows = [call_member(func, member, x) for x in pts]
     args = [member.user_args(x) for x in pts]
@@ -482,8 +590,31 @@ def batch_dependence(func: Callable, member: Member, tgt_kernel, rng) -> str:
     if got.size != len(pts) * rows[0].size:
         return "not batched (one input at a time)"
     per = got.reshape(len(pts), -1) if not isinstance(got, tuple) else got
-    diffs = [float(np.max(np.abs(member.book_out(per[i]) - rows[i])))
-             for i in range(len(pts))]
+    batched = [member.book_out(per[i]) for i in range(len(pts))]
+    diffs = [float(np.max(np.abs(b - r))) for b, r in zip(batched, rows, strict=True)]
     worst = max(diffs)
-    return ("batched; each row equal bit for bit to the row alone" if worst == 0 else
-            f"batched; a row in the batch differs from the row alone by up to {worst:.3g}")
+    rel = max(float(np.linalg.norm(b - r)) / max(float(np.linalg.norm(r)), 1e-300)
+              for b, r in zip(batched, rows, strict=True))
+    if not rel >= DISAGREE:
+        return ("batched; each row equal bit for bit to the row alone" if worst == 0 else
+                f"batched; a row in the batch differs from the row alone by up to "
+                f"{worst:.3g}")
+    off = sum(1 for b, r in zip(batched, rows, strict=True)
+              if not np.linalg.norm(b - r) < DISAGREE * np.linalg.norm(r))
+    what = ""
+    if tgt is not None:
+        name = tgt.kernel
+        kinds = set()
+        for b, r in zip(batched, rows, strict=True):
+            Rb, Rr = rotation_of(tgt, name, b), rotation_of(tgt, name, r)
+            if Rb is None or Rr is None:
+                kinds.add("")
+            elif _angle(Rb, Rr.T) <= SAME < _angle(Rb, Rr):
+                kinds.add("conjugate" if tgt.equivalent == "quaternion" else
+                          "transpose" if tgt.kind == "rotation" else "inverse")
+            elif _angle(Rb, Rr) > SAME:
+                kinds.add("other rotation")
+        if len(kinds) == 1 and "" not in kinds:
+            what = f": the batched path returns the {kinds.pop()} of the row alone's"
+    return (f"batched; the batched path disagrees with the row alone at {off} of "
+            f"{len(pts)} ordinary inputs, by up to {rel:.3g} (relative){what}")
