@@ -83,6 +83,7 @@ class AuditReport:
     keywords: dict = field(default_factory=dict)   # the flags it is called with (twist=True)
     wrong: dict = field(default_factory=dict)      # dtype -> [class of wrong output met]
     framework: str = ""        # the array framework it takes ("torch"), or "" (NumPy)
+    gradients: dict = field(default_factory=dict)  # the derivative's audit, where it has one
 
     @property
     def ok(self) -> bool:
@@ -298,7 +299,7 @@ def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str,
 
 def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed: int = 0,
           dtypes: Sequence[str] = ("float64",), search: bool = True, n_start: int = 12,
-          steps: int = 40, spec: str = "") -> AuditReport:
+          steps: int = 40, spec: str = "", gradients: bool = True) -> AuditReport:
     """Audit ``func`` as the operation ``as_`` of the chapter.
 
     Finds the convention ``func`` implements (its argument layout and the member of the
@@ -324,6 +325,8 @@ def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed:
             besides the regimes.
         n_start, steps: the search's random starts and climbing steps.
         spec: ``module:function`` (written into a regression test).
+        gradients: audit the derivative too where the function is differentiable in
+            PyTorch or JAX (:mod:`.gradients`): a wrong gradient behind a right value.
 
     Returns:
         An :class:`AuditReport` (``ok`` False where there is a finding of severity error).
@@ -337,10 +340,48 @@ def audit(func: Callable, as_: str, *, names: Sequence[str] | None = None, seed:
         # the user's function and the reference at the ends of the floating range overflow
         # by design there: the report says what came of it, the warnings would not
         warnings.simplefilter("ignore", RuntimeWarning)
-        return _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec)
+        return _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec,
+                      gradients)
 
 
-def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> AuditReport:
+def _gradients(func, tgt, m, framework: str, seed: int, point: dict) -> dict:
+    """The derivative audited (:mod:`.gradients`) where the function is differentiable in a
+    framework it already uses (PyTorch where it takes tensors; JAX where JAX is imported):
+    ``{framework, checked, wrong: [{regime, err, tol, args}]}``, or {} where it is not."""
+    import sys
+
+    from rigidsym.auditing import gradients as D
+
+    tried = framework or ("jax" if "jax" in sys.modules else "")
+    if not tried:
+        return {}
+    lib = D.differentiable(func, m.user_args(point), tried)
+    if not lib:
+        return {}
+    checks = D.check_gradients(func, tgt, m, lib, D.gradient_points(tgt, m, seed))
+    wrong = [vars(c) for c in checks if not c.err <= c.tol]
+    return {"framework": lib, "checked": len(checks), "wrong": wrong}
+
+
+def _gradient_finding(g: dict) -> Finding:
+    """The wrong derivatives as one finding: how many inputs, how far off, where."""
+    wrong = g["wrong"]
+    nan = sum(1 for c in wrong if not np.isfinite(c["err"]))
+    fin = [c["err"] for c in wrong if np.isfinite(c["err"])]
+    worst = max(wrong, key=lambda c: c["err"])
+    regimes = ", ".join(dict.fromkeys(c["regime"] for c in wrong))
+    return Finding("error", "gradient", f"its {g['framework']} derivative is wrong at "
+                   f"{len(wrong)} of {g['checked']} inputs where the value is right "
+                   f"(against the book's, along each tangent direction: "
+                   + (f"NaN/inf at {nan}" if nan else "")
+                   + ("; " if nan and fin else "")
+                   + (f"relative error up to {max(fin):.3g}, past sqrt(u) = "
+                      f"{worst['tol']:.2g}" if fin else "")
+                   + f"); at: {regimes}")
+
+
+def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec,
+           gradients=True) -> AuditReport:
     t0 = time.perf_counter()
     tgt = target(as_)
     for d in dtypes:
@@ -407,6 +448,11 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec) -> Audi
         rep.findings.insert(0, Finding("note", "output", kind.says))
     rep.wrong = wrong
     rep.framework = getattr(call, "framework", "")
+    if m is not None and gradients:
+        rep.gradients = _gradients(functools.partial(func, **keywords) if keywords else func,
+                                   tgt, m, rep.framework, seed, point[0])
+        if rep.gradients.get("wrong"):
+            rep.findings.append(_gradient_finding(rep.gradients))
     if rep.framework:
         from rigidsym.auditing.callables import framework_version
 
