@@ -49,7 +49,9 @@ class Expression:
 def expression(spec: str) -> Expression | None:
     """The :class:`Expression` of ``spec`` (``mod:lambda x: f(x).g`` or ``mod:EXPR`` with each
     ``...`` an argument, named after its keyword where it is one: ``Quaternion(matrix=...)
-    .axis`` takes ``matrix``), or None for a plain ``module:attribute[.attribute]``.
+    .axis`` takes ``matrix``), or None for a plain ``module:attribute[.attribute]``. The
+    expression sees the module's names and its top-level package by its own name
+    (``rowan:lambda Q: rowan.to_euler(rowan.from_matrix(Q), 'zyx', 'intrinsic')``).
 
     Raises:
         BadInput: an expression that does not parse, or has no argument."""
@@ -111,11 +113,16 @@ def load(spec: str) -> Callable:
         raise BadInput(f"function {spec!r}: module {mod_name!r} does not import ({e})") from e
     ex = expression(spec)
     if ex is not None:
-        missing = [n for n in ex.names if not hasattr(obj, n) and not hasattr(
-            __builtins__ if isinstance(__builtins__, dict) else __builtins__, n)]
+        import builtins
+
+        top = mod_name.split(".")[0]
+        missing = [n for n in ex.names if not hasattr(obj, n) and not hasattr(builtins, n)
+                   and n != top]
         if missing:
             raise BadInput(f"function {spec!r}: {mod_name} has no {', '.join(missing)}")
-        fn = eval(ex.source, dict(vars(obj)))  # noqa: S307  (the user's own expression)
+        # the module's names, and the package by its own name (rowan.to_euler(...))
+        scope = {**vars(obj), top: importlib.import_module(top)}
+        fn = eval(ex.source, scope)  # noqa: S307  (the user's own expression)
         fn.__name__ = fn.__qualname__ = attr.strip()
         return fn
     for part in attr.split("."):

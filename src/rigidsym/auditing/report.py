@@ -44,7 +44,10 @@ def _callee(rep: AuditReport) -> tuple[list[str], str]:
     if ex is not None:
         import builtins
 
-        names = [n for n in ex.names if not hasattr(builtins, n)]
+        top = mod.split(".")[0]
+        if top in ex.names:
+            lines.append(f"import {top}")
+        names = [n for n in ex.names if not hasattr(builtins, n) and n != top]
         if names:
             lines.append(f"from {mod} import {', '.join(names)}")
         return lines, f"({ex.source})"

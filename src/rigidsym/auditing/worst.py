@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rigidsym.auditing.conventions import Member, call_member, flat, ordinary_points
+from rigidsym.auditing.conventions import Member, call_member, ordinary_points, to_numpy
 from rigidsym.auditing.equivalence import nearest
 from rigidsym.auditing.targets import Target
 from rigidsym.codegen.accuracy import regimes as P
@@ -44,8 +44,11 @@ FIND = 2.0
 #: a relative error (or a rotation off by this angle, radians) from which on an output is
 #: wrong, not inaccurate
 WRONG = 1e-3
-#: the angle (radians) within which two rotations are one (a transposed output, a branch)
+#: the angle (radians) within which two rotations are one (a transposed output)
 SAME = 1e-6
+#: the angle (radians) within which an output is the truth's rotation to the rounding (an
+#: output of another branch, w + 2 pi w/|w|, denotes it to a few ulps)
+SAME_BRANCH = 1e-12
 
 
 def extreme(regime: str) -> bool:
@@ -542,12 +545,17 @@ def classify(tgt: Target, name: str, j: Judged, dtype, runner: Runner) -> tuple[
     if Rm is None or Rt is None:
         return ("wrong value" if j.err >= WRONG else "inaccurate"), j.err
     off, inv = _angle(Rm, Rt), _angle(Rm, Rt.T)
-    if off <= SAME:
+    if off <= SAME_BRANCH and _angle(Rt, np.eye(3)) >= SAME:
+        # the truth's rotation to the rounding, another output: w + 2 pi w/|w| (near the
+        # identity an axis is nearly free and a wrong one is no branch: a wrong value)
         return ("wrong branch" if j.err >= WRONG else "inaccurate"), j.err
     if inv <= SAME and _angle(Rt, Rt.T) >= WRONG:     # the inverse told from the rotation
         return ("conjugate" if tgt.equivalent == "quaternion" else "transposed"
                 if tgt.kind == "rotation" else "inverse rotation"), off
-    return ("wrong rotation" if off >= WRONG else "inaccurate"), off
+    if off >= WRONG:
+        return "wrong rotation", off
+    # a rotation near the truth's, an output far from the book's (an axis near the identity)
+    return ("wrong value" if j.err >= WRONG else "inaccurate"), j.err
 
 
 def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarray]]:
@@ -582,14 +590,19 @@ def batch_dependence(func: Callable, member: Member, tgt_kernel, rng,
     args = [member.user_args(x) for x in pts]
     try:
         with np.errstate(all="ignore"):
-            got = func(*[np.stack([np.asarray(a[j], dtype=np.float64) for a in args])
+            out = func(*[np.stack([np.asarray(a[j], dtype=np.float64) for a in args])
                          for j in range(len(args[0]))])
-        got = flat(got)
+        # each output batched along its first axis: a row is each output's row, in turn
+        # (a tuple (axes, angles) is (n, 3) and (n,), not one array of n rows)
+        outs = out if isinstance(out, (tuple, list)) else [out]
+        outs = [to_numpy(o) for o in outs]
+        if not all(o.ndim and o.shape[0] == len(pts) for o in outs):
+            return "not batched (one input at a time)"
+        per = [np.concatenate([np.ravel(o[i]) for o in outs]) for i in range(len(pts))]
     except Exception:  # noqa: BLE001  (not batched: one input at a time)
         return "not batched (one input at a time)"
-    if got.size != len(pts) * rows[0].size:
+    if any(p.size != rows[0].size for p in per):
         return "not batched (one input at a time)"
-    per = got.reshape(len(pts), -1) if not isinstance(got, tuple) else got
     batched = [member.book_out(per[i]) for i in range(len(pts))]
     diffs = [float(np.max(np.abs(b - r))) for b, r in zip(batched, rows, strict=True)]
     worst = max(diffs)
