@@ -130,8 +130,8 @@ def _alone(script: str, where: Path) -> dict:
     return {"error": float(err.group(1)), "bound": float(bound.group(1)), "out": res.stdout}
 
 
-@pytest.mark.parametrize("spec", ["chainlib:Rot(matrix=...).log",
-                                  "chainlib:lambda Q: Rot(matrix=Q).log"])
+@pytest.mark.parametrize("spec", ["chainlib:Rot(matrix=...).log", pytest.param(
+    "chainlib:lambda Q: Rot(matrix=Q).log", marks=pytest.mark.slow)])
 def test_a_method_chain_is_audited_as_written_and_its_body_runs_alone(
         spec, tmp_path, monkeypatch, capsys):
     (tmp_path / "chainlib.py").write_text(CHAIN)
