@@ -6,7 +6,8 @@ expression form). Every verdict is the recorded one, every error finding is at 2
 bound or more, and each verdict with a reference is confirmed at the audit's worst input
 by an independent 50-digit mpmath reference written here ((2.3) and its inverse by
 Shepperd's choice, (2.49) and its inverse through the quaternion): a finding's output is
-2x the bound off or more (or not finite), a pass's within it."""
+2x the bound off or more (or not finite), a pass's within it; a finding's issue body runs
+alone in a fresh ``python -c`` and prints its wrong value."""
 
 from __future__ import annotations
 
@@ -157,6 +158,24 @@ PEERS = [
 ]
 
 
+def _alone(script: str) -> tuple[float, float]:
+    """``(relative error, bound)`` the script prints, run in a fresh ``python -c`` (the
+    installed libraries only; no rigidsym on the path)."""
+    import re
+    import subprocess
+    import sys
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as where:
+        res = subprocess.run([sys.executable, "-c", script], cwd=where, capture_output=True,
+                             text=True, timeout=120, env={"PATH": "/usr/bin:/bin"})
+    assert res.returncode == 0, res.stderr[-2000:]
+    err = re.search(r"relative error (\S+)", res.stdout)
+    bound = re.search(r"the bound 8 u \(kappa \+ 1\) (\S+)", res.stdout)
+    assert err and bound, res.stdout
+    return float(err.group(1)), float(bound.group(1))
+
+
 def _peer(module: str, distribution: str, version: str):
     mod = pytest.importorskip(module, reason=f"{distribution} is not installed")
     try:
@@ -179,6 +198,16 @@ def test_each_verdict_is_the_recorded_one_and_confirmed(module, dist, version, s
         if f.kind in ("inaccurate", "silent wrong"):
             ratio = float(f.text.split("error ")[1].split(" x")[0])
             assert ratio >= FIND, f.text
+    if verdict == "find":
+        # the issue body runs alone as pasted (no rigidsym) and shows the wrong value
+        from rigidsym.auditing import report
+
+        scripts = report.markdown(rep).split("```python\n")[1:]
+        assert scripts
+        for script in (s.split("```")[0] for s in scripts):
+            assert "import rigidsym" not in script
+            ran = _alone(script)
+            assert not ran[0] <= ran[1], script[-600:]
     if ref is None or not rep.worst or rep.worst[0].got is None:
         return
     w = rep.worst[0]
