@@ -148,3 +148,14 @@ def test_whole_audits_find_what_is_there_only(func, op, ok):
             assert float(f.text.split("error ")[1].split(" x")[0]) >= W.FIND
     if func is N.axis_angle_zero_axis:
         assert any(f.kind == "axis convention" and "zero axis" in f.text for f in rep.findings)
+
+
+def test_a_rerun_judges_the_regime_anew():
+    """The exact half turn holds one input a seed: its error is judged again at another
+    seed's (a new axis) before it is a finding."""
+    tgt = target(LOG)
+    m = C.Member(tgt.forms[0], ())
+    again = W.rejudge(tgt, m, N.log_past_noise, np.float64, "Q at phi=pi", 1009)
+    assert again >= W.FIND, again
+    assert W.rejudge(tgt, m, N.log_near_noise, np.float64, "Q at phi=pi", 1009) < W.FIND
+    assert W.rejudge(tgt, m, N.log_past_noise, np.float64, "no such regime", 1009) == 0.0
