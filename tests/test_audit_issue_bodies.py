@@ -47,12 +47,12 @@ PEER_BUGS = [
 #: the quick run's one library: found without the continuous search
 QUICK = "jaxlie_recreated:so3_log"
 
-TITLE = re.compile(r"^### `(?P<function>[\w.]+)` (?P<what>.+)$")
+TITLE = re.compile(r"^### `(?P<function>[^`]+)` (?P<what>.+)$")
 VERSIONS = re.compile(r"Versions: (?P<list>[^\n]*?)\.\n")
 FINDING = re.compile(r"^- \*\*(?P<severity>error|note)\*\* \((?P<kind>[\w ]+)\): (?P<text>.+)$",
                      re.M)
 ARGUMENT = re.compile(r"^\| argument (?P<i>\d+) \| `(?P<hex>[^`]+)` \|$", re.M)
-HEX = re.compile(r"^-?0x[01]\.[0-9a-f]{13}p[+-]\d+$")
+HEX = re.compile(r"^-?0x(?:[01]\.[0-9a-f]{13}p[+-]\d+|0\.0p\+0)$")   # 0: 0x0.0p+0
 SCRIPT = re.compile(r"```python\n(?P<code>.*?)```", re.S)
 
 

@@ -4,9 +4,10 @@ the one the finding was recorded for): every finding of the table is found, each
 confirmed at an input of its window by an independent 50-digit mpmath reference ((2.49)
 inverted at the input matrix; the Jacobians' closed forms), and neither
 equivalent output is accused (transforms3d's signed angle; a correct signed variant,
-tests/test_audit_equivalence.py). Pinocchio 4.1.0's ``log3`` window below ``phi`` =
-2.46e-3 (``sqrt(2 (1 - cos phi))`` for the angle) and transforms3d 0.4.2's small-angle axis
-are found with the versions the report names."""
+tests/test_audit_equivalence.py). Pinocchio 4.1.0's ``log3`` below ``phi`` = 2.46e-3
+(``sqrt(2 (1 - cos phi))`` for the angle, 1.15 x the bound at most) is no finding (under
+2 x, noise level), and transforms3d 0.4.2's small-angle axis is found with the versions
+the report names."""
 
 from __future__ import annotations
 
@@ -98,14 +99,15 @@ def test_pinocchio_log3_window_between_decades_and_near_a_half_turn():
     rep = audit(lambda Q: pin.log3(np.asarray(Q, dtype=np.float64)),
                 "rotation_vector_from_rotation", seed=0, spec="pinocchio:log3")
     assert rep.versions.get("pinocchio") == "4.1.0", rep.versions
-    # phi -> 0: the window where the angle is sqrt(2 (1 - cos)) (tr Q > 3 - eps^(1/3)),
-    # over the bound at its top below phi = 2.46e-3
-    win = _windows(rep, "Q: phi->0")
-    assert win and 1e-3 < win[0]["worst_x"] < 2.47e-3, (win, report.text(rep))
-    assert _errors(rep.findings, "inaccurate", "Q: phi->0"), report.text(rep)
-    # mpmath: thousands of u inside the window, tens above it (acos there), at 4 axes each
+    # phi -> 0: where the angle is sqrt(2 (1 - cos)) (tr Q > 3 - eps^(1/3)), below phi =
+    # 2.46e-3, the error is about 1.15 x the bound at its top: under 2 x, noise level, no
+    # finding and no window reported
+    assert not [w for w in _windows(rep, "Q: phi->0") if w["worst_ratio"] >= 2], \
+        report.text(rep)
+    assert not _errors(rep.findings, "inaccurate", "Q: phi->0"), report.text(rep)
+    # mpmath: thousands of u inside that range, tens above it (acos there), at 4 axes each
     inside = max(_err_u(pin.log3(Q), _log_mp(Q)) for e in _axes(4)
-                 for Q in [_rotation(e, mp.mpf(win[0]["worst_x"]))])
+                 for Q in [_rotation(e, mp.mpf("2.4e-3"))])
     above = max(_err_u(pin.log3(Q), _log_mp(Q)) for e in _axes(4)
                 for Q in [_rotation(e, mp.mpf("3e-3"))])
     assert inside > 2000 and above < 100, (inside, above)

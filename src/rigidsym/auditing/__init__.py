@@ -8,7 +8,9 @@ book (``rigidsym audit``, :func:`rigidsym.audit`).
   (the accuracy harness of :mod:`rigidsym.codegen.accuracy.harness`).
 - ``windows``: each approach to a singular set searched continuously, the window of error
   located, its cause as measured.
-- ``callables``: a ``module:function`` or a C symbol (ctypes) as a callable.
+- ``gradients``: the derivative of a JAX or PyTorch function against the book's.
+- ``callables``: a ``module:function``, a method or chain (``mod:Rot(matrix=...).log``,
+  ``mod:lambda Q: ...``) or a C symbol (ctypes) as a callable.
 - ``audit``: :func:`audit` and its :class:`AuditReport`.
 - ``report``: the report as text, JSON, Markdown and a pytest regression file.
 """

@@ -1,23 +1,101 @@
-"""The user's function as a Python callable: ``package.module:function`` imported, or a C
-symbol of a shared library called through ctypes (``libfoo.so:fn`` with a signature
+"""The user's function as a Python callable: ``package.module:function`` imported, a bound
+method or a chain written as an expression over the module's names
+(``pyquaternion:Quaternion(matrix=...).axis``, each ``...`` an argument, or the lambda
+form ``pyquaternion:lambda Q: Quaternion(matrix=Q).axis``), or a C symbol of a shared
+library called through ctypes (``libfoo.so:fn`` with a signature
 ``t_A[6],a[3],p[3]->t_P[6]``: pointers to doubles, inputs then outputs, returning void).
-PyTorch and JAX functions are called with NumPy arrays first and, where that raises, with
-tensors of the same values (their outputs are read back as NumPy arrays).
+PyTorch functions are called with NumPy arrays first and, where that raises, with tensors
+of the same values (their outputs are read back as NumPy arrays); the framework used is
+recorded on the callable (``framework``), for the reproducer to build the same tensors.
 """
 
 from __future__ import annotations
 
+import ast
 import ctypes
 import importlib
 import inspect
 import re
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
 from rigidsym.core.errors import BadInput
 
-__all__ = ["load", "c_function", "parameter_names", "as_numpy_callable"]
+__all__ = ["load", "c_function", "parameter_names", "as_numpy_callable", "Expression",
+           "expression", "FRAMEWORKS", "framework_version"]
+
+#: the array frameworks a function may need its arguments in: ``{module: the function
+#: that makes its array of a NumPy array}`` (JAX takes NumPy arrays itself)
+FRAMEWORKS = {"torch": "as_tensor"}
+
+
+@dataclass(frozen=True)
+class Expression:
+    """A spec whose attribute part is an expression (a bound method, a chain).
+
+    Attributes:
+        module: the module whose names it uses.
+        source: the lambda's source (``lambda matrix: Quaternion(matrix=matrix).axis``).
+        names: the module's names it uses (imported by a reproducer).
+    """
+
+    module: str
+    source: str
+    names: tuple[str, ...]
+
+
+def expression(spec: str) -> Expression | None:
+    """The :class:`Expression` of ``spec`` (``mod:lambda x: f(x).g`` or ``mod:EXPR`` with each
+    ``...`` an argument, named after its keyword where it is one: ``Quaternion(matrix=...)
+    .axis`` takes ``matrix``), or None for a plain ``module:attribute[.attribute]``. The
+    expression sees the module's names and its top-level package by its own name
+    (``rowan:lambda Q: rowan.to_euler(rowan.from_matrix(Q), 'zyx', 'intrinsic')``).
+
+    Raises:
+        BadInput: an expression that does not parse, or has no argument."""
+    mod_name, sep, attr = spec.partition(":")
+    if not sep or re.fullmatch(r"[A-Za-z_]\w*(\.[A-Za-z_]\w*)*", attr.strip()):
+        return None
+    text = attr.strip()
+    if not text.startswith("lambda"):
+        names, out, k = [], [], 0
+        for m in re.finditer(r"(?:(\b[A-Za-z_]\w*)\s*=\s*)?\.\.\.", text):
+            kw = m.group(1)
+            name = kw if kw and kw not in names else f"arg{len(names)}"
+            names.append(name)
+            out.append(text[k:m.start()] + (f"{kw}={name}" if kw else name))
+            k = m.end()
+        if not names:
+            raise BadInput(f"function {spec!r}: an expression needs its arguments as ... "
+                           f"(Quaternion(matrix=...).axis) or the lambda form "
+                           f"(lambda Q: Quaternion(matrix=Q).axis)")
+        text = f"lambda {', '.join(names)}: " + "".join(out) + text[k:]
+    try:
+        tree = ast.parse(text, mode="eval")
+    except SyntaxError as e:
+        raise BadInput(f"function {spec!r}: the expression does not parse ({e.msg})") from e
+    if not isinstance(tree.body, ast.Lambda):
+        raise BadInput(f"function {spec!r}: expected a lambda or an expression with ...")
+    params = {a.arg for a in tree.body.args.args}
+    used = sorted({n.id for n in ast.walk(tree) if isinstance(n, ast.Name)
+                   and isinstance(n.ctx, ast.Load)} - params)
+    return Expression(mod_name, text, tuple(used))
+
+
+def framework_version(name: str) -> str | None:
+    """The installed version of the framework ``name`` (its distribution's, else its
+    ``__version__``), None where it does not import."""
+    from importlib import metadata
+
+    try:
+        return metadata.version(name)
+    except metadata.PackageNotFoundError:
+        import sys
+
+        v = getattr(sys.modules.get(name), "__version__", None)
+        return v if isinstance(v, str) else None
 
 
 def load(spec: str) -> Callable:
@@ -33,6 +111,20 @@ def load(spec: str) -> Callable:
         obj = importlib.import_module(mod_name)
     except ImportError as e:
         raise BadInput(f"function {spec!r}: module {mod_name!r} does not import ({e})") from e
+    ex = expression(spec)
+    if ex is not None:
+        import builtins
+
+        top = mod_name.split(".")[0]
+        missing = [n for n in ex.names if not hasattr(obj, n) and not hasattr(builtins, n)
+                   and n != top]
+        if missing:
+            raise BadInput(f"function {spec!r}: {mod_name} has no {', '.join(missing)}")
+        # the module's names, and the package by its own name (rowan.to_euler(...))
+        scope = {**vars(obj), top: importlib.import_module(top)}
+        fn = eval(ex.source, scope)  # noqa: S307  (the user's own expression)
+        fn.__name__ = fn.__qualname__ = attr.strip()
+        return fn
     for part in attr.split("."):
         if not hasattr(obj, part):
             raise BadInput(f"function {spec!r}: {mod_name} has no {attr!r}")
@@ -115,28 +207,34 @@ def parameter_names(func: Callable) -> tuple[str, ...] | None:
 
 def as_numpy_callable(func: Callable) -> Callable:
     """``func`` called with NumPy arrays, and where that raises a TypeError or an
-    AttributeError (a PyTorch function), with float64 tensors of the same values."""
-    state: dict = {}
+    AttributeError (a PyTorch function), with float64 tensors of the same values (each
+    framework of :data:`FRAMEWORKS` that imports, in turn); the framework that worked is
+    the callable's ``framework`` attribute from then on ("" for NumPy)."""
+    def convert(name: str, args) -> list:
+        mod = importlib.import_module(name)
+        make = getattr(mod, FRAMEWORKS[name])
+        return [make(np.asarray(a)) for a in args]
 
     def call(*args):
-        if state.get("torch"):
-            import torch
-
-            return func(*[torch.as_tensor(np.asarray(a)) for a in args])
+        if call.framework:
+            return func(*convert(call.framework, args))
         try:
             return func(*args)
         except (TypeError, AttributeError) as first:
-            try:
-                import torch
-            except ImportError:
-                raise first from None
-            try:
-                out = func(*[torch.as_tensor(np.asarray(a)) for a in args])
-            except Exception:  # noqa: BLE001  (not a PyTorch function: NumPy's error)
-                raise first from None
-            state["torch"] = True
-            return out
+            for name in FRAMEWORKS:
+                try:
+                    importlib.import_module(name)
+                except ImportError:
+                    continue
+                try:
+                    out = func(*convert(name, args))
+                except Exception:  # noqa: BLE001, S112  (not this framework's function)
+                    continue
+                call.framework = name
+                return out
+            raise first from None
 
+    call.framework = ""
     call.__name__ = getattr(func, "__name__", "function")
     call.__wrapped__ = func
     return call

@@ -6,9 +6,11 @@ The classes follow from the book's statements, not from a list of peers' habits:
 - the natural invariants ``(e, phi)`` of ``Q`` (2.49): ``Q(e, phi) = e e^T + cos(phi) (1 -
   e e^T) + sin(phi) E`` is unchanged by ``(e, phi) -> (-e, -phi)`` (cos even, sin and E
   odd) and by ``phi -> phi + 2 pi k``; at ``phi = 0`` (``Q = 1``) by any rotation of the
-  unit axis (``Q = e e^T + 1 - e e^T = 1`` whatever ``e``); at ``phi = pi`` the pair
-  ``(e, pi)``, ``(-e, pi)`` is the first two composed. The contract asks ``|e| = 1``: a
-  non-unit axis is not moved onto the class (its error stays).
+  unit axis (``Q = e e^T + 1 - e e^T = 1`` whatever ``e``), and the zero axis with the angle
+  0 is a library's answer for the undefined axis there (its convention, which the audit
+  names); at ``phi = pi`` the pair ``(e, pi)``, ``(-e, pi)`` is the first two composed.
+  The contract asks ``|e| = 1``: a non-unit axis is not moved onto the class (its error
+  stays).
 - the Euler-Rodrigues parameters ``eta`` (2.3): ``Q`` is quadratic in ``eta``, so ``eta``
   and ``-eta`` are the same rotation everywhere.
 
@@ -59,8 +61,12 @@ def _axis_angle(got: np.ndarray, anchor: np.ndarray, u: float) -> np.ndarray:
     e, phi = got[:3], float(got[3])
     ae, aphi = anchor[:3], float(anchor[3])
     if aphi == 0.0:
-        # Q = 1: any unit axis (its length kept: |e| - 1 is the output's error), any 2 pi k
+        # Q = 1: any unit axis (its length kept: |e| - 1 is the output's error), any 2 pi k;
+        # the zero axis with the angle 0 is a library's documented answer for the undefined
+        # axis (pyquaternion's): the same rotation, told as its convention (audit)
         n = float(np.linalg.norm(e))
+        if n == 0.0 and phi == 0.0:
+            return anchor.copy()
         k = round(phi / (2 * math.pi)) if math.isfinite(phi) else 0
         ax = ae * n if n > 0 else e
         return np.concatenate([ax, [_shift(phi, k)]])

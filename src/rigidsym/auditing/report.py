@@ -28,14 +28,81 @@ def _array(a) -> str:
     return f"np.array([{vals}])" + (f".reshape({shape!r})" if len(shape) > 1 else "")
 
 
+def _callee(rep: AuditReport) -> tuple[list[str], str]:
+    """``(import lines, the callee as the code calls it)`` of the audited function: the
+    module's name imported (``from mod import f``) and ``f``, or for an expression (a bound
+    method, a chain: :func:`.callables.expression`) the module's names it uses and the
+    lambda in parentheses; the array framework's import where the function takes its
+    tensors."""
+    from rigidsym.auditing.callables import expression
+
+    mod, _, name = rep.spec.partition(":")
+    lines = ["import numpy as np"]
+    if rep.framework:
+        lines.append(f"import {rep.framework}")
+    ex = expression(rep.spec) if mod and name else None
+    if ex is not None:
+        import builtins
+
+        top = mod.split(".")[0]
+        if top in ex.names:
+            lines.append(f"import {top}")
+        names = [n for n in ex.names if not hasattr(builtins, n) and n != top]
+        if names:
+            lines.append(f"from {mod} import {', '.join(names)}")
+        return lines, f"({ex.source})"
+    if mod and name and "<" not in name:
+        lines.append(f"from {mod} import {name.split('.')[0]}")
+    return lines, name or rep.function
+
+
+def _arg(rep: AuditReport, a, dtype: str = "float64") -> str:
+    """An argument as the function takes it: a NumPy array, or the framework's tensor of it
+    (``torch.as_tensor(np.array(...))``)."""
+    from rigidsym.auditing.callables import FRAMEWORKS
+
+    arr = _array(a) if dtype == "float64" else f"{_array(a)}.astype(np.{dtype})"
+    return f"{rep.framework}.{FRAMEWORKS[rep.framework]}({arr})" if rep.framework else arr
+
+
+#: a line that reads the user's output as float64 NumPy values, tensors included
+_READ = ("got = np.concatenate([np.ravel(np.asarray(o.detach().cpu() if hasattr(o, "
+         "'detach') else o, dtype=np.float64)) for o in outs])")
+
+
 def _keywords(rep: AuditReport) -> str:
     """The flags the function is audited with, as a call's trailing arguments."""
     return "".join(f", {k}={v!r}" for k, v in rep.keywords.items())
 
 
 def _call(rep: AuditReport, w: WorstInput) -> str:
-    name = rep.spec.rpartition(":")[2] or rep.function
-    return f"{name}({', '.join(_array(a) for a in w.args)}{_keywords(rep)})"
+    name = _callee(rep)[1]
+    return f"{name}({', '.join(_arg(rep, a, w.dtype) for a in w.args)}{_keywords(rep)})"
+
+
+def _off(c: dict) -> str:
+    """How far off a class of wrong output is, in words."""
+    if not np.isfinite(c["off"]):
+        return "-"
+    if c["class"] in ("wrong rotation", "conjugate", "transposed", "inverse rotation"):
+        return f"{c['off']:.3g} rad"
+    return f"{c['off']:.3g} (relative)"
+
+
+def _class_call(rep: AuditReport, c: dict) -> str:
+    name = _callee(rep)[1]
+    return f"{name}({', '.join(_arg(rep, a) for a in c['args'])}{_keywords(rep)})"
+
+
+def _wrong_lines(rep: AuditReport) -> list[str]:
+    out = []
+    for d, classes in rep.wrong.items():
+        if classes:
+            out.append(f"  wrong outputs met, {d} (class: inputs, off by; worst input):")
+        for c in classes:
+            out.append(f"    {c['class']}: {c['count']}, {_off(c)}; {c['regime']}: "
+                       f"{_class_call(rep, c)}")
+    return out
 
 
 def _worst_lines(rep: AuditReport) -> list[str]:
@@ -62,6 +129,7 @@ def text(rep: AuditReport) -> str:
         lines.append(f"  convention: none of {rep.tried} members matches; nearest: "
                      f"{rep.nearest} (residual {rep.residual:.3g})")
     lines += _worst_lines(rep)
+    lines += _wrong_lines(rep)
     for dt, rows in rep.behaviour.items():
         lines.append(f"  per regime, {dt} (inputs: worst err / bound, yours | rigidsym's; "
                      f"flags where the truth is finite; flags where it is not):")
@@ -118,19 +186,15 @@ def _bound(w: WorstInput) -> float:
 def _reproducer(rep: AuditReport, w: WorstInput) -> list[str]:
     """A script that runs without rigidsym: the call at the worst input, exact, and the
     truth (ball arithmetic, rounded to float64) beside what it returns."""
-    mod, _, name = rep.spec.partition(":")
-    lines = ["import numpy as np"]
-    if mod and name and "<" not in name:
-        lines.append(f"from {mod} import {name.split('.')[0]}")
-    lines.append("")
+    lines, name = _callee(rep)
+    vers = ", ".join(f"{k} {v}" for k, v in rep.versions.items())
+    lines = [f"# audited with {vers}" if vers else "# versions not known", *lines, ""]
     for i, a in enumerate(w.args):
-        lines.append(f"arg{i} = {_array(a)}")
-    call = (f"{name or rep.function}({', '.join(f'arg{i}' for i in range(len(w.args)))}"
+        lines.append(f"arg{i} = {_arg(rep, a, w.dtype)}")
+    call = (f"{name}({', '.join(f'arg{i}' for i in range(len(w.args)))}"
             f"{_keywords(rep)})")
     lines += [f"out = {call}",
-              "outs = out if isinstance(out, (tuple, list)) else [out]",
-              "got = np.concatenate([np.ravel(np.asarray(o, dtype=np.float64)) "
-              "for o in outs])"]
+              "outs = out if isinstance(out, (tuple, list)) else [out]", _READ]
     if w.truth is not None:
         truth = ", ".join(f"float.fromhex({h!r})" for h in hexes(w.truth))
         lines += [f"truth = np.array([{truth}])",
@@ -164,10 +228,25 @@ def markdown(rep: AuditReport) -> str:
              "```", "", "**Findings**", ""]
     for f in rep.findings:
         lines.append(f"- **{f.severity}** ({f.kind}): {f.text}")
+    for d, classes in rep.wrong.items():
+        if not classes:
+            continue
+        lines += ["", f"**Wrong outputs met** ({d}; each class, the audit's inputs that gave "
+                  f"it, how far off, its worst input):", "",
+                  "| class | inputs | off by | worst input |", "|---|---|---|---|"]
+        for c in classes:
+            args = "; ".join(" ".join(hexes(a)) for a in c["args"])
+            lines.append(f"| {c['class']} | {c['count']} | {_off(c)} | {c['regime']}: "
+                         f"`{args}` |")
     for w in rep.worst:
-        lines += ["", f"**Worst input** ({w.dtype}, {w.regime}): error **{w.err_u:.3g} u** "
-                  f"(condition number {w.kappa:.3g}; the bound 8 u (kappa + 1) x "
-                  f"{w.ratio:.3g}); rigidsym's kernel: {w.kernel_err_u:.3g} u.", "",
+        kind = f", as {rep.framework} tensors" if rep.framework else ""
+        # a flag has no error to weigh against a condition number: said as what it is
+        said = (f"**{w.flag}**, where the truth is finite" if w.flag and not
+                np.isfinite(w.ratio) else
+                f"error **{w.err_u:.3g} u** (condition number {w.kappa:.3g}; the bound 8 u "
+                f"(kappa + 1) x {w.ratio:.3g})")
+        lines += ["", f"**Worst input** ({w.dtype}, {w.regime}): {said}; rigidsym's kernel: "
+                  f"{w.kernel_err_u:.3g} u.", "",
                   "| | exact value (hex floats) |", "|---|---|"]
         for i, a in enumerate(w.args):
             lines.append(f"| argument {i + 1} | `{' '.join(hexes(a))}` |")
@@ -175,7 +254,8 @@ def markdown(rep: AuditReport) -> str:
             lines.append(f"| truth (60+ digits, rounded) | `{' '.join(hexes(w.truth))}` |")
         if w.got is not None:
             lines.append(f"| got | `{' '.join(hexes(w.got))}` |")
-        lines += ["", "Reproducer (NumPy only):", "", "```python", *_reproducer(rep, w), "```"]
+        lines += ["", f"Reproducer (NumPy and the function's library{kind}; no rigidsym):",
+                  "", "```python", *_reproducer(rep, w), "```"]
     return "\n".join(lines) + "\n"
 
 
@@ -188,6 +268,7 @@ def pytest_source(rep: AuditReport) -> str:
     mod, _, name = rep.spec.partition(":")
     if not mod or not name or "<" in name:
         raise BadInput("--pytest: the function must be importable as module:function")
+    imports, callee = _callee(rep)
     cases = [w for w in rep.worst if w.truth is not None]
     if not cases:
         raise BadInput("--pytest: no worst input with a defined truth to test")
@@ -195,19 +276,17 @@ def pytest_source(rep: AuditReport) -> str:
             f"the worst input found, in the function's convention ({rep.form};",
             f"{', '.join(rep.generators) or 'the book'}'s), against the truth of the book's",
             'formula (ball arithmetic, rounded); within 8 u (kappa + 1) passes."""', "",
-            "import numpy as np", "", f"from {mod} import {name.split('.')[0]}", ""]
+            *imports, ""]
     for i, w in enumerate(cases):
         bound = _bound(w)
-        args = ", ".join(f"np.array([float.fromhex(h) for h in {hexes(a)!r}], "
-                         f"dtype=np.{w.dtype}).reshape({np.shape(a)!r})" for a in w.args)
+        args = ", ".join(_arg(rep, a, w.dtype) for a in w.args)
         body += ["", f"def test_{rep.target}_worst_input_{w.dtype}_{i}():",
                  f"    # {w.regime}: error {w.err_u:.3g} u at audit time",
                  f"    args = [{args}]",
                  f"    truth = np.array([float.fromhex(h) for h in {hexes(w.truth)!r}])",
-                 f"    out = {name}(*args{_keywords(rep)})",
+                 f"    out = {callee}(*args{_keywords(rep)})",
                  "    outs = out if isinstance(out, (tuple, list)) else [out]",
-                 "    got = np.concatenate([np.ravel(np.asarray(o, dtype=np.float64)) "
-                 "for o in outs])",
+                 f"    {_READ}",
                  "    assert np.isfinite(got).all()",
                  f"    assert np.linalg.norm(got - truth) <= {bound!r} * ("
                  "np.linalg.norm(truth) or 1.0)"]

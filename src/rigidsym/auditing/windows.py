@@ -4,7 +4,10 @@ decades is missed, and the cause of a window read from the function's own errors
 An *approach* is a one-parameter family of inputs ``x -> point`` (the angle ``phi`` of a
 rotation toward the identity, ``pi - phi`` toward a half turn, ``|w|`` toward 0, the
 distance to a derived zero of a norm), everything else (the axis, the other arguments)
-drawn anew for each sample. It is sampled on a lattice in ``log10 x``, :data:`PER_DECADE`
+drawn anew for each sample; a scalar angle's approach to 0 and to pi, a unit quaternion's
+angle to 0 and to pi. A window is written in the variable the function takes: in the
+distance to the singular point near it (radians: ``pi - |w|``), in ``|w|`` itself away
+from it (:meth:`Approach.shown`). It is sampled on a lattice in ``log10 x``, :data:`PER_DECADE`
 points a decade from 1e-16 to 1 shifted by a random offset (seeded), so that every
 interval of ``x`` wider than a factor ``10 ** (1 / PER_DECADE)`` (1.075 at 32 a decade)
 holds a sample. The whole lattice is first screened at once against rigidsym's kernel (the
@@ -36,8 +39,10 @@ from rigidsym.codegen.accuracy import regimes as P
 
 __all__ = ["Approach", "Window", "approaches", "scan", "scan_all", "PER_DECADE", "DECADES",
            "END_FACTOR", "JUMP", "GAP", "SCREEN", "COARSE", "MAX_WINDOWS", "GOLDEN",
-           "SCATTER"]
+           "SCATTER", "FAR"]
 
+#: an approach's parameter from which on a window is written in the function's own variable
+FAR = 0.1
 #: samples per decade of the approach's parameter
 PER_DECADE = 32
 #: the decades sampled: x from 10**-DECADES to 1
@@ -72,6 +77,24 @@ class Approach:
     regime: str
     var: str
     point: Callable[[float, int], list]
+    #: ``var = scale x`` (pi - |w| = pi x on the approach of |w| to pi)
+    scale: float = 1.0
+    #: the variable the function takes (``|w|``), where ``var`` is a distance to a point
+    #: other than 0 (pi, 2 pi), and ``x -> its value``: away from that point (x >= FAR) a
+    #: window is written in it (``|w| = 0.0157``, not ``pi - |w| = 3.12``)
+    far_var: str = ""
+    far: Callable[[float], float] | None = None
+
+    def shown(self, xs: list[float], near: bool | None = None) -> tuple[str, list[float]]:
+        """``(variable, values)`` of the approach's parameters ``xs`` as the report writes
+        them: the distance ``var`` near its singular point, the function's own variable
+        (``far_var``) where the largest of ``xs`` is FAR or more from it (or ``near`` is
+        False)."""
+        if near is None:
+            near = max(xs) < FAR
+        if self.far is None or near:
+            return self.var, [self.scale * x for x in xs]
+        return self.far_var, [self.far(x) for x in xs]
 
 
 @dataclass
@@ -109,15 +132,20 @@ class Window:
         """The cause as measured, or "cause not determined"."""
         v = self.approach.var
         if self.jump is not None and not math.isfinite(self.jump[1]):
-            return (f"the output is NaN, inf or an exception on the window, from {v} = "
-                    f"{self.jump[0]:.3g} (located to within 1 %); cause not determined")
+            jv, (jx,) = self.approach.shown([self.jump[0]], self._near())
+            return (f"the output is NaN, inf or an exception on the window, from {jv} = "
+                    f"{jx:.3g} (located to within 1 %); cause not determined")
         if self.jump is not None:
             x, inside, outside = self.jump
             near_hi = self.hi is not None and (self.lo is None or abs(math.log(
                 x / self.hi)) < abs(math.log(x / self.lo)))
+            jv, (jx,) = self.approach.shown([x], self._near())
+            if jv != v and self.approach.far is not None and \
+                    self.approach.far(1.0) < self.approach.far(0.5):
+                near_hi = not near_hi        # |w| = pi (1 - x) runs the other way
             side = "below" if near_hi else "above"
-            text = (f"the error jumps {inside / max(outside, 1e-300):.3g}-fold at {v} = "
-                    f"{x:.3g} (located to within 1 %; the error {side} it is the window's): "
+            text = (f"the error jumps {inside / max(outside, 1e-300):.3g}-fold at {jv} = "
+                    f"{jx:.3g} (located to within 1 %; the error {side} it is the window's): "
                     f"a threshold branch")
             if self.slope is not None and abs(self.slope) >= 0.5:
                 text += f"; inside the window the error goes as ({v})^{self.slope:.2g}"
@@ -127,14 +155,22 @@ class Window:
                     f"cause not determined")
         return "cause not determined"
 
+    def _near(self) -> bool:
+        """Whether the window is written in the distance ``var`` (else in ``far_var``)."""
+        return max(x for x in (self.worst_x, self.lo, self.hi) if x is not None) < FAR
+
     def where(self) -> str:
-        """The window in words: its ends and its worst."""
-        v = self.approach.var
+        """The window in words: its ends and its worst, in the variable the function takes
+        (``|w|``) away from the singular point, in the distance to it near it."""
+        near = self._near()
+        v, (wx,) = self.approach.shown([self.worst_x], near)
         if self.lo is None or self.hi is None:
-            return f"worst at {v} = {self.worst_x:.3g}"
-        lo = f"{self.lo:.3g} (the smallest sampled)" if self.lo_open else f"{self.lo:.3g}"
-        hi = f"{self.hi:.3g} (the largest sampled)" if self.hi_open else f"{self.hi:.3g}"
-        return f"over the bound for {lo} < {v} < {hi}, worst at {v} = {self.worst_x:.3g}"
+            return f"worst at {v} = {wx:.3g}"
+        _, (lo, hi) = self.approach.shown([self.lo, self.hi], near)
+        ends = sorted([(lo, self.lo_open, "the smallest sampled"),
+                       (hi, self.hi_open, "the largest sampled")])
+        a, b = (f"{x:.3g}" + (f" ({why})" if o else "") for x, o, why in ends)
+        return f"over the bound for {a} < {v} < {b}, worst at {v} = {wx:.3g}"
 
 
 def _q(x: float) -> fmpq:
@@ -189,12 +225,38 @@ def approaches(kernel, seed: int) -> list[Approach]:
             out.append(Approach(f"|{a.name}[0:3]| -> 0", f"|{a.name}|",
                                 put(i, lambda x, e, d, own, f=vec: f(_q(x), e, own))))
             if a.name in ("w", "xi"):
-                out += [Approach(f"|{a.name}[0:3]| -> pi", f"pi - |{a.name}|",
+                n = f"|{a.name}|"
+                out += [Approach(f"|{a.name}[0:3]| -> pi", f"pi - {n}",
                                  put(i, lambda x, e, d, own, f=vec: f(
-                                     _q(math.pi * (1 - x)), e, own))),
-                        Approach(f"|{a.name}[0:3]| -> pi", f"|{a.name}| - pi",
+                                     _q(math.pi * (1 - x)), e, own)), math.pi, n,
+                                 lambda x: math.pi * (1 - x)),
+                        Approach(f"|{a.name}[0:3]| -> pi", f"{n} - pi",
                                  put(i, lambda x, e, d, own, f=vec: f(
-                                     _q(math.pi * (1 + x)), e, own)))]
+                                     _q(math.pi * (1 + x)), e, own)), math.pi, n,
+                                 lambda x: math.pi * (1 + x))]
+        elif a.kind == "angle":
+            def ang(r):
+                return [r]
+
+            out += [Approach(f"|{a.name}| -> 0", f"|{a.name}|",
+                             put(i, lambda x, e, d, _, f=ang: f(_q(x)))),
+                    Approach(f"|{a.name}| -> pi", f"pi - |{a.name}|",
+                             put(i, lambda x, e, d, _, f=ang: f(_q(math.pi * (1 - x)))),
+                             math.pi, f"|{a.name}|", lambda x: math.pi * (1 - x))]
+        elif a.kind == "unit" and a.shape == (4,):
+            # a unit quaternion [r; r0] of the angle x toward the identity, pi - x toward a
+            # half turn: exact (t = tan(x / 4), the axis a rational unit vector)
+            def quat(x, e, half):
+                t = _q(math.tan(x / 4))
+                s, c = 2 * t / (1 + t * t), (1 - t * t) / (1 + t * t)
+                if half:
+                    s, c = c, s
+                return [*(v * s for v in e), c]
+
+            out += [Approach("eta: phi->0", "phi", put(i, lambda x, e, d, _, f=quat: f(
+                        x, e, False))),
+                    Approach("eta: phi->pi", "pi - phi", put(i, lambda x, e, d, _, f=quat: f(
+                        x, e, True)))]
     seen = set()
     for z in norm_zeros(kernel):
         t0 = float(z.theta0)
@@ -216,10 +278,11 @@ def approaches(kernel, seed: int) -> list[Approach]:
             return p
 
         s0 = P.sp_str(z.theta0)
-        out += [Approach(name, f"({s0} - |{arg}|)/{s0}",
-                         lambda x, draw, f=at: f(x, draw, sign=-1)),
-                Approach(name, f"(|{arg}| - {s0})/{s0}",
-                         lambda x, draw, f=at: f(x, draw, sign=1))]
+        sc = max(t0, 1.0)
+        out += [Approach(name, f"{s0} - |{arg}|", lambda x, draw, f=at: f(x, draw, sign=-1),
+                         sc, f"|{arg}|", lambda x, t0=t0, sc=sc: t0 - x * sc),
+                Approach(name, f"|{arg}| - {s0}", lambda x, draw, f=at: f(x, draw, sign=1),
+                         sc, f"|{arg}|", lambda x, t0=t0, sc=sc: t0 + x * sc)]
     return out
 
 
@@ -278,6 +341,11 @@ def scan_all(ap: Approach, judge: Callable[[list, str], object], seed: int,
         j = seen[(x, draw)]
         return j.ratio if j.flag != "expected" else 0.0
 
+    def error(x: float, draw: int) -> float:
+        judged(x, draw)
+        j = seen[(x, draw)]
+        return j.err if j.flag != "expected" else 0.0
+
     xs = _samples(rng)
     if screen is None:
         rs = [judged(x, k) for k, x in enumerate(xs)]
@@ -300,7 +368,7 @@ def scan_all(ap: Approach, judge: Callable[[list, str], object], seed: int,
                 continue            # inside a worse window (as that one's draw gives it)
             wx, wr = _golden(xs, i, lambda x, i=i: judged(x, i))
             w = Window(ap, wx, wr, seen[(wx, i)])
-            _ends(w, xs, rs, a, b, i, judged)
+            _ends(w, xs, rs, a, b, i, judged, error)
             out.append(w)
         for a, b in runs[MAX_WINDOWS:]:
             if any(w.lo <= xs[a] and xs[b] <= w.hi for w in out):
@@ -359,15 +427,19 @@ def _golden(xs, i, r) -> tuple[float, float]:
     return wx, r(wx)
 
 
-def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged) -> None:
+def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged, error) -> None:
     """The ends of the window of lattice samples ``lo_i..hi_i`` (over the bound at both),
     on the draw of its worst sample ``i``: the lattice re-judged on that draw out from
     each end, :data:`COARSE` samples a step, while over the bound (a defect of some draws
     only, the axis, is a window on each of them), then bisected to within
     :data:`END_FACTOR`; a jump of the error across an end, and the slope of the error over
-    the window's samples."""
+    the window's samples. A jump is one of the error itself (``error(x, draw)``), not of
+    its ratio to the bound alone: a flat error beside a bound that changes is no branch."""
     def r(x):
         return judged(x, i)
+
+    def e(x):
+        return error(x, i)
 
     def walk(k: int, step: int) -> int:
         """The last lattice index over the bound on draw ``i`` stepping from ``k``."""
@@ -408,8 +480,10 @@ def _ends(w: Window, xs, rs, lo_i: int, hi_i: int, i: int, judged) -> None:
         step = ins / out                       # toward the inside
         a = [r(ins * step ** k) for k in range(3)]
         b = [r(out / step ** k) for k in range(3)]
+        ea = [e(ins * step ** k) for k in range(3)]
+        eb = [e(out / step ** k) for k in range(3)]
         if all(map(math.isfinite, b)) and min(a) >= JUMP * max(max(b), 1e-300) \
-                and min(a) > 1:
+                and min(a) > 1 and min(ea) >= JUMP * max(eb):
             if w.jump is None or min(a) / max(b) > w.jump[1] / max(w.jump[2], 1e-300):
                 w.jump = (math.sqrt(ins * out), min(a), max(b))
     inside = [(x, rr) for x, rr in zip(xs[lo_i:hi_i + 1], rs[lo_i:hi_i + 1], strict=True)

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rigidsym.auditing.conventions import Member, call_member, flat, ordinary_points
+from rigidsym.auditing.conventions import Member, call_member, ordinary_points, to_numpy
 from rigidsym.auditing.equivalence import nearest
 from rigidsym.auditing.targets import Target
 from rigidsym.codegen.accuracy import regimes as P
@@ -30,8 +30,25 @@ from rigidsym.codegen.accuracy.harness import judge as J
 from rigidsym.codegen.accuracy.harness import reference as R
 from rigidsym.codegen.accuracy.harness import search as S
 
-__all__ = ["extreme", "Runner", "Judged", "Behaviour", "audit_regimes", "judge_point",
+__all__ = ["FIND", "extreme", "Runner", "Judged", "Behaviour", "audit_regimes", "judge_point",
+           "condition_number", "rejudge", "WrongClass", "classify", "rotation_of", "WRONG",
            "sweep", "batch_dependence", "screen_points"]
+
+
+#: an error is a finding at or past this many times the bound 8 u (kappa + 1), at inputs a
+#: re-run confirms: below it (an error of 1.0x to 2x the bound) it is the rounding's luck
+#: beside a bound that is itself a rule of thumb, not a defect a maintainer can act on
+FIND = 2.0
+
+
+#: a relative error (or a rotation off by this angle, radians) from which on an output is
+#: wrong, not inaccurate
+WRONG = 1e-3
+#: the angle (radians) within which two rotations are one (a transposed output)
+SAME = 1e-6
+#: the angle (radians) within which an output is the truth's rotation to the rounding (an
+#: output of another branch, w + 2 pi w/|w|, denotes it to a few ulps)
+SAME_BRANCH = 1e-12
 
 
 def extreme(regime: str) -> bool:
@@ -143,6 +160,7 @@ class Behaviour:
     nan: int = 0             # non-finite where the truth is finite (a silent wrong)
     raised: int = 0          # exceptions where the truth is finite
     expected: int = 0        # flags (NaN or exceptions) where the truth is undefined
+    over: int = 0            # inputs at or past FIND x the bound
     examples: list = field(default_factory=list)
 
 
@@ -159,21 +177,75 @@ def judge_point(name: str, regime: str, point, dtype, runner: Runner,
         flag, ratio = (f"raises {raised[0]}" if raised else "NaN"), math.inf
     elif user.flagged_expected:
         flag, ratio = _at_undefined(name, point, dtype, runner, before)
-    err = user.err
-    if not flag and user.beyond and antipodal:
-        # at the half turn itself the sign is the input's rounding's (kappa infinite, not
-        # judged by the rule), but the magnitude and the axis are not: w or -w, within 16 u
-        ratio, err = _at_half_turn(name, point, dtype, runner, antipodal)
+    err, kappa = user.err, user.kappa
+    if not flag and user.beyond:
+        # kappa u >= 1/8: the harness does not judge; the condition number is still the
+        # problem's (never 0), and an error past 8 u (kappa + 1) is still wrong
+        kappa = condition_number(name, point, dtype)
+        if antipodal != "euler":
+            ratio, err = _beyond(name, point, dtype, runner, antipodal, kappa)
     if antipodal == "euler":
         if not flag and (ratio > 1 or user.beyond):
             ratio, err = _euler_family(name, point, dtype, runner, ratio, err,
                                        bool(user.beyond))
-    elif not flag and ratio > 1 and antipodal:
-        other = _antipodal(name, point, dtype, runner, user.kappa, antipodal)
+    elif not flag and ratio > 1 and antipodal and not user.beyond:
+        other = _antipodal(name, point, dtype, runner, kappa, antipodal)
         if other < ratio:       # the other sign's truth: its error is the one reported
             u = float(np.finfo(dtype).eps) / 2
-            ratio, err = other, other * 8 * u * (user.kappa + 1)
-    return Judged(regime, point, ratio, err, user.kappa, kern.worst_ratio, kern.err, flag)
+            ratio, err = other, other * 8 * u * (kappa + 1)
+    return Judged(regime, point, ratio, err, kappa, kern.worst_ratio, kern.err, flag)
+
+
+def condition_number(name: str, point, dtype) -> float:
+    """The condition number ``kappa`` of the declared formula at the exact ``point`` (the
+    harness's: derivatives along each argument's tangent space, ball arithmetic), at least
+    ``1 / (8 u)`` where the harness leaves the input unjudged (``kappa u >= 1/8``); inf where
+    the formula is undefined there."""
+    k = R.kernel_of(name)
+    arrays = J.round_points([point], dtype, k)
+    f = R.pick(name, [float(x) for a in arrays for x in a[0].ravel()])
+    exact = [x for a in point for x in a]
+    ref, prec = R.reference(f, exact)
+    if ref is None:
+        return math.inf
+    from rigidsym.codegen.accuracy.harness.compare import kappa_of
+
+    scale, norms = R.condition(name, f, point, [o.size for o in k.outputs], ref, prec)
+    return kappa_of(scale, norms)
+
+
+def _near_half_turn(truth: np.ndarray, kind: str) -> bool:
+    """Whether the truth lies nearer a half turn than the identity, where its sign (of w,
+    of the axis, of q) is what the input's rounding decides."""
+    if kind == "rotation_vector":
+        return float(np.linalg.norm(truth)) > math.pi / 2
+    if kind == "axis":
+        return abs(float(truth[3])) > math.pi / 2
+    if kind == "quaternion":
+        return abs(float(truth[3])) < math.sqrt(0.5)
+    return False
+
+
+def _beyond(name, point, dtype, runner, antipodal: str, kappa: float) -> tuple[float, float]:
+    """``(ratio, err)`` at an input the harness leaves unjudged (``kappa u >= 1/8``): near a
+    half turn the distance to the nearer of the truth and its other sign over 16 u (the sign
+    is the rounding's, the magnitude and axis are not, :func:`_at_half_turn`); elsewhere the
+    error over the bound ``8 u (kappa + 1)`` with the problem's own ``kappa`` (near the
+    identity ``kappa ~ 1 / phi``: a flat error of 2e-14 at phi = 1e-16 is within it)."""
+    truth, _ = truth_at(name, point, dtype)
+    if truth is None or not np.linalg.norm(truth):
+        return 0.0, 0.0
+    if antipodal and _near_half_turn(truth, antipodal):
+        return _at_half_turn(name, point, dtype, runner, antipodal)
+    if not math.isfinite(kappa):
+        return 0.0, 0.0
+    arrays = J.round_points([point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine).all():
+        return 0.0, 0.0
+    u = float(np.finfo(dtype).eps) / 2
+    err = float(np.linalg.norm(mine - truth)) / float(np.linalg.norm(truth))
+    return err / (8 * u * (kappa + 1)), err
 
 
 def _antipodal(name, point, dtype, runner, kappa, kind: str) -> float:
@@ -306,9 +378,11 @@ def screen_points(name: str, points, dtype, runner: Runner) -> np.ndarray:
 
 def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
           n_start: int = 12, steps: int = 40, search: bool = True):
-    """``(behaviours by regime, worst Judged, runner, windows)`` over the regimes, the
-    approaches searched continuously (:mod:`.windows`: each a :class:`.windows.Window`) and
-    the hill-climbing search, in ``dtype``."""
+    """``(behaviours by regime, worst Judged, wrong outputs, windows)`` over the regimes,
+    the approaches searched continuously (:mod:`.windows`: each a :class:`.windows.Window`)
+    and the hill-climbing search, in ``dtype``; the wrong outputs ``{class:
+    WrongClass}`` (:func:`classify`) of every input judged outside the ends of the
+    floating range."""
     from rigidsym.auditing import windows as V
 
     name = member.kernel(tgt)
@@ -336,7 +410,14 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
             ws = V.scan_all(ap, judge, seed, screen)
             windows += ws
             judged += [(ap.regime, j) for _, j in ws[0].judged]
+    wrong: dict[str, WrongClass] = {}
     for regime, j in judged:
+        if j.flag != "expected" and (j.flag or j.ratio >= FIND) and not extreme(regime):
+            cls, off = classify(tgt, name, j, dtype, runner)
+            c = wrong.setdefault(cls, WrongClass(cls))
+            c.count += 1
+            if c.worst is None or (off, j.ratio) > (c.off, c.worst.ratio):
+                c.off, c.worst = off, j
         b = beh.setdefault(regime, Behaviour(regime))
         b.n += 1
         b.kernel_worst_ratio = max(b.kernel_worst_ratio, j.kernel_ratio)
@@ -349,11 +430,132 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
             if len(b.examples) < 2:
                 b.examples.append(j)
         b.worst_ratio = max(b.worst_ratio, j.ratio)
+        b.over += int(j.ratio >= FIND)
         # the ends of the floating range rank after every other regime
         key = (not extreme(regime), j.ratio)
         if worst is None or key > (not extreme(worst.regime), worst.ratio):
             worst = j
-    return beh, worst, runner, windows
+    return beh, worst, wrong, windows
+
+
+def rejudge(tgt: Target, member: Member, func: Callable, dtype, regime: str, seed: int,
+            n_start: int = 12, steps: int = 40) -> float:
+    """The worst ratio on ``regime`` judged anew with ``seed``: its points drawn again (new
+    axes, new other arguments), the approach scanned again, or the hill-climbing search
+    run again; 0 where ``seed`` gives the regime no input. What confirms (or not) an
+    error met at one input alone."""
+    from rigidsym.auditing import windows as V
+
+    name = member.kernel(tgt)
+    k = R.kernel_of(name)
+    runner = Runner(func, member, R.kernel_of(tgt.kernel), tgt)
+
+    def judge(pt, reg):
+        return judge_point(name, reg, pt, dtype, runner, tgt.antipodal)
+
+    if regime == "search (hill climbing)":
+        _, pt = S.search(name, dtype, ("user",), seed=seed, n_start=n_start, steps=steps,
+                         runner=runner, condition=True)
+        pts = [] if pt is None else [pt]
+    else:
+        pts = audit_regimes(k, dtype, seed).get(regime, [])
+    ratios = [j.ratio for j in map(lambda p: judge(p, regime), pts) if j.flag != "expected"]
+    for ap in V.approaches(k, seed):
+        if ap.regime == regime:
+            def screen(ps, reg):
+                return screen_points(name, ps, dtype, runner)
+            ws = V.scan_all(ap, judge, seed, screen)
+            ratios += [w.worst_ratio for w in ws]
+    return max(ratios, default=0.0)
+
+
+@dataclass
+class WrongClass:
+    """One class of wrong output the audit met (:func:`classify`): how many inputs, the
+    largest ``off`` (the angle between the rotation returned and the truth's, radians,
+    where the output denotes a rotation; else the relative error), and the worst input."""
+
+    name: str
+    count: int = 0
+    off: float = 0.0
+    worst: Judged | None = None
+
+
+def _quat_rotation(q) -> np.ndarray:
+    r, r0 = np.asarray(q[:3], dtype=np.float64), float(q[3])
+    n = float(r @ r) + r0 * r0
+    if n == 0:
+        return np.full((3, 3), np.nan)
+    R = np.array([[0.0, -r[2], r[1]], [r[2], 0.0, -r[0]], [-r[1], r[0], 0.0]])
+    return np.eye(3) + (2 * r0 * R + 2 * R @ R) / n
+
+
+def rotation_of(tgt: Target, name: str, v) -> np.ndarray | None:
+    """The rotation (3 x 3) an output of ``tgt`` denotes, ``v`` flat in the book's layout (a
+    row of :class:`Runner`'s, or the truth): a rotation matrix, a quaternion ``[r; r0]``,
+    the natural invariants ``[e; phi]``, a rotation vector, Euler angles (their sequence
+    from the kernel ``name``); None where the output is no rotation."""
+    from rigidsym.auditing.equivalence import axis_angle_rotation
+
+    v = np.asarray(v, dtype=np.float64)
+    if not np.isfinite(v).all():
+        return None
+    if tgt.antipodal == "euler":
+        sl = tgt.user_slice(R.kernel_of(name))
+        return euler_rotation(name.rsplit("_", 1)[-1], v[sl][:3])
+    if tgt.kind == "rotation" and v.size == 9:
+        return v.reshape(3, 3)
+    if tgt.equivalent == "quaternion" and v.size == 4:
+        return _quat_rotation(v)
+    if tgt.equivalent == "axis_angle" and v.size == 4:
+        n = float(np.linalg.norm(v[:3]))
+        return np.eye(3) if v[3] == 0 else (axis_angle_rotation(v[:3] / n, float(v[3]))
+                                             if n else None)
+    if tgt.antipodal == "rotation_vector" and v.size == 3:
+        n = float(np.linalg.norm(v))
+        return np.eye(3) if n == 0 else axis_angle_rotation(v / n, n)
+    return None
+
+
+def _angle(A: np.ndarray, B: np.ndarray) -> float:
+    """The angle (radians) between two rotations, from ``|A - B|_F = 2 sqrt(2) sin(t/2)``."""
+    return 2 * math.asin(min(1.0, float(np.linalg.norm(A - B)) / (2 * math.sqrt(2))))
+
+
+def classify(tgt: Target, name: str, j: Judged, dtype, runner: Runner) -> tuple[str, float]:
+    """``(class, off)`` of a wrong output at the judged input ``j`` (a flag, or an error at
+    or past :data:`FIND` x the bound): "exception", "NaN/inf"; where the output denotes a
+    rotation, "conjugate" (a quaternion's), "transposed" (a matrix's) or "inverse rotation"
+    (another's) where it is the truth's inverse, "wrong branch" where it is the truth's
+    rotation but not the book's output (``w + 2 pi w/|w|``), "wrong rotation" off by
+    :data:`WRONG` rad or more; else "wrong value" (relative error WRONG or more) or
+    "inaccurate". ``off``: the angle between the rotations (radians), else the relative
+    error."""
+    if j.flag.startswith("raises"):
+        return "exception", math.inf
+    if j.flag:
+        return "NaN/inf", math.inf
+    arrays = J.round_points([j.point], dtype, R.kernel_of(name))
+    mine = runner(name, arrays, dtype, "user")[0]
+    if not np.isfinite(mine).all():
+        return "NaN/inf", math.inf
+    truth, _ = truth_at(name, j.point, dtype)
+    Rm = rotation_of(tgt, name, mine)
+    Rt = None if truth is None else rotation_of(tgt, name, truth)
+    if Rm is None or Rt is None:
+        return ("wrong value" if j.err >= WRONG else "inaccurate"), j.err
+    off, inv = _angle(Rm, Rt), _angle(Rm, Rt.T)
+    if off <= SAME_BRANCH and _angle(Rt, np.eye(3)) >= SAME:
+        # the truth's rotation to the rounding, another output: w + 2 pi w/|w| (near the
+        # identity an axis is nearly free and a wrong one is no branch: a wrong value)
+        return ("wrong branch" if j.err >= WRONG else "inaccurate"), j.err
+    if inv <= SAME and _angle(Rt, Rt.T) >= WRONG:     # the inverse told from the rotation
+        return ("conjugate" if tgt.equivalent == "quaternion" else "transposed"
+                if tgt.kind == "rotation" else "inverse rotation"), off
+    if off >= WRONG:
+        return "wrong rotation", off
+    # a rotation near the truth's, an output far from the book's (an axis near the identity)
+    return ("wrong value" if j.err >= WRONG else "inaccurate"), j.err
 
 
 def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarray]]:
@@ -372,24 +574,60 @@ def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarra
     return ref, [a[0] for a in arrays]
 
 
-def batch_dependence(func: Callable, member: Member, tgt_kernel, rng) -> str:
+#: a batched row that differs from the row alone by this much (relative) or more
+#: disagrees: at ordinary inputs (kappa of a few) it is far past any rounding
+DISAGREE = 1e-8
+
+
+def batch_dependence(func: Callable, member: Member, tgt_kernel, rng,
+                     tgt: Target | None = None) -> str:
     """Whether the function takes a batch in its form and, if so, whether a row alone and
-    the same row in a batch agree bit for bit."""
+    the same row in a batch agree bit for bit; where they differ by :data:`DISAGREE` or
+    more (relative), "disagrees", with what the batched rows are against the rows alone
+    where ``tgt``'s output denotes a rotation (the conjugate, the transpose)."""
     pts = ordinary_points(tgt_kernel, 8, rng)
     rows = [call_member(func, member, x) for x in pts]
     args = [member.user_args(x) for x in pts]
     try:
         with np.errstate(all="ignore"):
-            got = func(*[np.stack([np.asarray(a[j], dtype=np.float64) for a in args])
+            out = func(*[np.stack([np.asarray(a[j], dtype=np.float64) for a in args])
                          for j in range(len(args[0]))])
-        got = flat(got)
+        # each output batched along its first axis: a row is each output's row, in turn
+        # (a tuple (axes, angles) is (n, 3) and (n,), not one array of n rows)
+        outs = out if isinstance(out, (tuple, list)) else [out]
+        outs = [to_numpy(o) for o in outs]
+        if not all(o.ndim and o.shape[0] == len(pts) for o in outs):
+            return "not batched (one input at a time)"
+        per = [np.concatenate([np.ravel(o[i]) for o in outs]) for i in range(len(pts))]
     except Exception:  # noqa: BLE001  (not batched: one input at a time)
         return "not batched (one input at a time)"
-    if got.size != len(pts) * rows[0].size:
+    if any(p.size != rows[0].size for p in per):
         return "not batched (one input at a time)"
-    per = got.reshape(len(pts), -1) if not isinstance(got, tuple) else got
-    diffs = [float(np.max(np.abs(member.book_out(per[i]) - rows[i])))
-             for i in range(len(pts))]
+    batched = [member.book_out(per[i]) for i in range(len(pts))]
+    diffs = [float(np.max(np.abs(b - r))) for b, r in zip(batched, rows, strict=True)]
     worst = max(diffs)
-    return ("batched; each row equal bit for bit to the row alone" if worst == 0 else
-            f"batched; a row in the batch differs from the row alone by up to {worst:.3g}")
+    rel = max(float(np.linalg.norm(b - r)) / max(float(np.linalg.norm(r)), 1e-300)
+              for b, r in zip(batched, rows, strict=True))
+    if not rel >= DISAGREE:
+        return ("batched; each row equal bit for bit to the row alone" if worst == 0 else
+                f"batched; a row in the batch differs from the row alone by up to "
+                f"{worst:.3g}")
+    off = sum(1 for b, r in zip(batched, rows, strict=True)
+              if not np.linalg.norm(b - r) < DISAGREE * np.linalg.norm(r))
+    what = ""
+    if tgt is not None:
+        name = tgt.kernel
+        kinds = set()
+        for b, r in zip(batched, rows, strict=True):
+            Rb, Rr = rotation_of(tgt, name, b), rotation_of(tgt, name, r)
+            if Rb is None or Rr is None:
+                kinds.add("")
+            elif _angle(Rb, Rr.T) <= SAME < _angle(Rb, Rr):
+                kinds.add("conjugate" if tgt.equivalent == "quaternion" else
+                          "transpose" if tgt.kind == "rotation" else "inverse")
+            elif _angle(Rb, Rr) > SAME:
+                kinds.add("other rotation")
+        if len(kinds) == 1 and "" not in kinds:
+            what = f": the batched path returns the {kinds.pop()} of the row alone's"
+    return (f"batched; the batched path disagrees with the row alone at {off} of "
+            f"{len(pts)} ordinary inputs, by up to {rel:.3g} (relative){what}")

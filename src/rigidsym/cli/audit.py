@@ -18,14 +18,22 @@ EXAMPLES = """\
       --as wrench_transfer            a C function through ctypes
   rigidsym audit mymod:log --as rotation_vector_from_rotation --pytest test_log.py
                                       a regression test of the worst input
+  rigidsym audit 'pyquaternion:Quaternion(matrix=...).axis' \
+      --as natural_invariants_from_rotation
+                                      a bound method or chain, each argument as ...
+  rigidsym audit 'liegroups.numpy:lambda Q: SO3.from_matrix(Q).log()' \
+      --as rotation_vector_from_rotation
+                                      the lambda form
 exit codes: 0 no finding, 1 findings, 2 bad input"""
 
 
 def add_arguments(p) -> None:
     """Arguments of ``rigidsym audit``."""
     p.add_argument("function", nargs="?", default="",
-                   help="the function, MODULE:FUNCTION, importable from here (default: none; "
-                        "then --c)")
+                   help="the function, MODULE:FUNCTION, importable from here, or a method "
+                        "or chain over the module's names, MODULE:'Class(matrix=...).method' "
+                        "(each argument as ...) or MODULE:'lambda Q: Class(Q).method()' "
+                        "(default: none; then --c)")
     p.add_argument("--as", dest="as_", required=True, metavar="OPERATION",
                    help="what it claims to compute, a kernel's name (no default: required; "
                         "a wrong name lists those there are): twist_transfer, "
