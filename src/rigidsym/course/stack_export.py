@@ -48,6 +48,7 @@ import math
 import numpy as np
 
 from rigidsym.course.answer_classes import column_signs, declared, names_of, rotations_onto
+from rigidsym.course.box_kinds import ZERO
 from rigidsym.course.grading import RTOL, key_array, replayed_values, slip_values
 from rigidsym.course.worked import exercise_module
 
@@ -278,7 +279,8 @@ def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol,
         lines.append(f"isright: if isblank then false else ({near})")
         slips = " or ".join(dict.fromkeys(
             t for m in members for t in _slip_tests(inp, sol, box, m, None, None, replayed)))
-        lines.append(f"isslip: if isblank then false else ({slips or 'false'})")
+        lines.append(f"isslip: if isblank then false else if {_trivial(inp, sol, k)} then "
+                     f"false else ({slips or 'false'})")
         rounded = " or ".join(_rounded_tests(inp, m) for m in members)
         lines.append(f"isrounded: if isblank then false else ({rounded})")
     else:
@@ -308,7 +310,33 @@ def _slips(inp: str, sol, box: str, target: np.ndarray, period, along,
     ``replayed``: the solution's replays, computed once per question)."""
     body = " or ".join(dict.fromkeys(_slip_tests(inp, sol, box, target, period, along,
                                                  replayed))) or "false"
-    return f"if is({inp} = EMPTYANSWER) then false else ({body})"
+    if body == "false":
+        return f"if is({inp} = EMPTYANSWER) then false else false"
+    return (f"if is({inp} = EMPTYANSWER) then false else if {_trivial(inp, sol, target)} "
+            f"then false else ({body})")
+
+
+def _trivial(inp: str, sol, target: np.ndarray) -> str:
+    """``is`` the answer trivial, as :func:`rigidsym.course.box_kinds.trivial` decides: all
+    zero (within the tolerance of the key's largest entry), all entries equal, or a datum
+    of the exercise echoed: such an answer earns no slip credit."""
+    from rigidsym.course.grading import data_arrays
+
+    matrix = target.ndim > 0
+    flat = f"flatten(args({inp}))" if matrix else inp
+    top = f"lmax(abs({flat}))" if matrix else f"abs({inp})"
+    tests = [f"is({top} <= {ZERO!r})"]
+    if target.size > 1:
+        tests.append(f"is(lmax({flat}) - lmin({flat}) <= {RTOL!r}*{top})")
+    for d in data_arrays(sol):
+        d = d.reshape(-1)
+        if d.size != target.size:
+            continue
+        lit = ("[" + ",".join(repr(float(x)) for x in d) + "]") if matrix else \
+            repr(float(d[0]))
+        dist = f"lmax(abs({flat} - {lit}))" if matrix else f"abs({inp} - {lit})"
+        tests.append(f"is({dist} <= {RTOL!r}*max({float(np.max(np.abs(d)))!r}, {top}))")
+    return "(" + " or ".join(tests) + ")"
 
 
 def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
@@ -319,7 +347,7 @@ def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
     for _, value in slip_values(sol, box, target, replayed=replayed):
         if value.shape != target.shape:
             continue
-        s = max(sc, float(np.max(np.abs(value))) if value.size else 0.0)
+        s = float(np.max(np.abs(value))) if value.size else sc    # the slipped key's
         t = target.reshape(-1)
         i = int(np.argmax(np.abs(t)))
         f = abs(float(value.reshape(-1)[i] / t[i])) if t.size and t[i] else 1.0
@@ -328,7 +356,7 @@ def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
         elif along is not None:
             tests.append(_along(inp, value, along, s))
         else:
-            tests.append(_near(inp, value, s))
+            tests.append(_near(inp, value, s, floor=False))
     return tests
 
 
@@ -376,12 +404,15 @@ def _dist(expr: str, matrix: bool, minus: str = "") -> str:
     return f"lmax({a})" if matrix else a
 
 
-def _tol(scale: float) -> str:
-    return repr(RTOL * scale + 1e-12)
+def _tol(scale: float, floor: bool = True) -> str:
+    return repr(RTOL * scale + (1e-12 if floor else 0.0))
 
 
-def _near(inp: str, value: np.ndarray, scale: float) -> str:
-    return f"is({_dist(f'{inp} - {_lit(value)}', value.ndim > 0)} <= {_tol(scale)})"
+def _near(inp: str, value: np.ndarray, scale: float, floor: bool = True) -> str:
+    """``is`` the answer within the tolerance of ``value`` (``floor``: plus 1e-12, as the
+    grader compares with the key; a slip's value is compared relative to itself alone,
+    as :func:`rigidsym.course.box_kinds.slip_close`)."""
+    return f"is({_dist(f'{inp} - {_lit(value)}', value.ndim > 0)} <= {_tol(scale, floor)})"
 
 
 def _wrapped(inp: str, value: np.ndarray, period: float, scale: float) -> str:
