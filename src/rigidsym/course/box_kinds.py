@@ -16,7 +16,8 @@ angle      an angle or an angular rate (``rad``, ``rad/s``)                   si
                                                                               degrees,
                                                                               factor 2
 rotation   a rotation matrix                                                  transpose,
-                                                                              sign, swap
+                                                                              sign, swap,
+                                                                              factor 2
 quantity   another physical quantity (``N m``, ``kg m^2``)                    sign, a
                                                                               prefix
                                                                               (10^3 and
@@ -47,7 +48,7 @@ import numpy as np
 import sympy as sp
 
 __all__ = ["KINDS", "box_kind", "admits", "unit_powers", "trivial", "slip_counts",
-           "slip_close", "replays_admitted", "ZERO"]
+           "slip_close", "replays_admitted", "ZERO", "constant"]
 
 KINDS = ("truth", "reason", "count", "length", "angle", "rotation", "quantity", "vector")
 
@@ -56,7 +57,7 @@ _ADMITS = {
     "length": frozenset({"sign", "unit", "factor 2", "swap", "order", "transpose",
                          "reference point"}),
     "angle": frozenset({"sign", "degrees", "factor 2", "reference point"}),
-    "rotation": frozenset({"transpose", "sign", "swap"}),
+    "rotation": frozenset({"transpose", "sign", "swap", "factor 2"}),
     "quantity": frozenset({"sign", "unit", "factor 2", "swap", "order", "transpose",
                            "reference point"}),
     "vector": frozenset({"sign", "factor 2", "swap", "order", "transpose",
@@ -144,16 +145,16 @@ def unit_powers(kind: str, unit: str | None) -> tuple[int, ...]:
 def trivial(given: np.ndarray, key: np.ndarray, data: list[np.ndarray], rtol: float) -> bool:
     """An answer that earns no slip credit whatever it matches: all zero (every entry
     within :data:`ZERO` of 0, the grader's absolute floor), all entries equal (an array
-    of two or more, within ``rtol`` of its largest entry), or a datum of the exercise
-    echoed (equal within ``rtol`` to one of ``data`` of the same size). ``key`` is the
-    key's value (its shape)."""
+    of two or more, within ``rtol`` of its largest entry; unless the ``key`` is so too:
+    then its slips are), or a datum of the exercise echoed (equal within ``rtol`` to one
+    of ``data`` of the same size)."""
     g = np.asarray(given, dtype=float).reshape(-1)
     if not g.size or not np.all(np.isfinite(g)):
         return True
     top = float(np.max(np.abs(g)))
     if top <= ZERO:
         return True
-    if g.size > 1 and float(np.max(g) - np.min(g)) <= rtol * top:
+    if g.size > 1 and float(np.max(g) - np.min(g)) <= rtol * top and not constant(key, rtol):
         return True
     for d in data:
         d = np.asarray(d, dtype=float).reshape(-1)
@@ -161,6 +162,12 @@ def trivial(given: np.ndarray, key: np.ndarray, data: list[np.ndarray], rtol: fl
                 rtol * max(float(np.max(np.abs(d))), top):
             return True
     return False
+
+
+def constant(a: np.ndarray, rtol: float) -> bool:
+    """An array of two or more entries, all equal within ``rtol`` of its largest."""
+    a = np.asarray(a, dtype=float).reshape(-1)
+    return a.size > 1 and float(np.max(a) - np.min(a)) <= rtol * float(np.max(np.abs(a)))
 
 
 def slip_counts(value: np.ndarray, key: np.ndarray, rtol: float) -> bool:

@@ -21,7 +21,9 @@ student), with:
   a line modulo a shift along it), then any of the grader's slip values
   (:func:`rigidsym.course.grading.slip_values`; the replays of the solution with a slip
   along the way where the key's ``slips_along_the_way`` is true, as the gradebook then
-  tries them), then the key rounded to 1, 2 or 3 significant figures;
+  tries them; a slip's value compared within 0.1 % of its own largest entry, and no slip
+  named on a trivial answer: all zero, all entries equal, a datum echoed), then the key
+  rounded to 1, 2 or 3 significant figures;
 * STACK's question tests: the key, every box blank, each box negated alone, each PRT's
   expected score and note the gradebook's;
 * four nodes per PRT, each ``AlgEquiv(<truth>, true)`` on the feedback variables
@@ -30,7 +32,8 @@ student), with:
   answer notes are ``<box>: blank | right | slip | rounded | wrong``.
 
 Only builtins of Maxima are used: ``matrix``, ``args``, ``flatten``, ``abs``, ``lmax``,
-``floor``, ``is``, ``if then else``, ``and``/``or``, ``.`` (a matrix product) and ``%pi``.
+``lmin``, ``max``, ``floor``, ``is``, ``if then else``, ``and``/``or``, ``.`` (a matrix
+product) and ``%pi``.
 A ``rotation onto`` box (3.14's [Q]_B) is right near any of its four rotations, and a
 ``columns up to sign`` box (3.12's principal axes) near any choice of its columns' signs;
 a slip or a rounding of any member is named, as the grader judges it. Boxes that are
@@ -48,7 +51,7 @@ import math
 import numpy as np
 
 from rigidsym.course.answer_classes import column_signs, declared, names_of, rotations_onto
-from rigidsym.course.box_kinds import ZERO
+from rigidsym.course.box_kinds import ZERO, constant
 from rigidsym.course.grading import RTOL, key_array, replayed_values, slip_values
 from rigidsym.course.worked import exercise_module
 
@@ -326,7 +329,7 @@ def _trivial(inp: str, sol, target: np.ndarray) -> str:
     flat = f"flatten(args({inp}))" if matrix else inp
     top = f"lmax(abs({flat}))" if matrix else f"abs({inp})"
     tests = [f"is({top} <= {ZERO!r})"]
-    if target.size > 1:
+    if target.size > 1 and not constant(target, RTOL):
         tests.append(f"is(lmax({flat}) - lmin({flat}) <= {RTOL!r}*{top})")
     for d in data_arrays(sol):
         d = d.reshape(-1)
