@@ -30,11 +30,14 @@ import html
 import io
 import json
 import math
+import pickle
 import re
 from pathlib import Path
 
 import sympy as sp
 
+from rigidsym.core import cache as _cache
+from rigidsym.core import interrupts
 from rigidsym.core.files import write_atomic
 from rigidsym.course import exam as _exam
 from rigidsym.course.exam_text import box_label, task
@@ -167,7 +170,30 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     slugs = _unique_slugs(students)
     seeds = [student_seed(seed, st["name"]) for st in students]
 
+    kept_at = [_kept_at(spec, seed, title, given, st, slug, own)
+               for st, slug, own in zip(students, slugs, seeds, strict=True)]
+    interrupts.note_kept(lambda: sum(_cache.get(p) is not None for p in kept_at),
+                         len(students), "students")
+
     def make(i: int, taken: dict | None = None) -> dict:
+        """Student i's exam: kept from an earlier run of the same class (its files
+        written again only where they differ), else drawn and kept."""
+        if taken is None:
+            blob = _cache.get(kept_at[i])
+            if blob is not None:
+                done = pickle.loads(blob)
+                for rel, text in done.pop("files").items():
+                    _write_if_changed(out / rel, text)
+                interrupts.checkpoint("advance")
+                return done
+        done = draw(i, taken)
+        if taken is None:
+            _cache.put(kept_at[i], pickle.dumps(done))
+        interrupts.checkpoint("advance")
+        done.pop("files")
+        return done
+
+    def draw(i: int, taken: dict | None = None) -> dict:
         """Student i's exam: drawn (against ``taken``: the draws of the students before
         i), its handout written; its key record and section, and its drawn data keys."""
         st, own = students[i], seeds[i]
@@ -175,11 +201,13 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         sols = [s for s, _ in drawn]
         version = version_of(sols)
         head = _head(title, st, own, version)
-        write_atomic(out / "handouts" / f"{slugs[i]}.html",
-                     _exam.handout_text(f"{title}: {st['name']}", sols, head, columns=True))
+        files = {f"handouts/{slugs[i]}.html": _exam.handout_text(f"{title}: {st['name']}",
+                                                                 sols, head, columns=True)}
         section = _key_section(head, sols)
-        write_atomic(out / "keys" / f"{slugs[i]}.html",
-                     _exam.handout_page(f"{title}: answer key of {st['name']}", section))
+        files[f"keys/{slugs[i]}.html"] = _exam.handout_page(
+            f"{title}: answer key of {st['name']}", section)
+        for rel, text in files.items():
+            write_atomic(out / rel, text)
         problems = [dict(solution_record(s), problem=n, spec_problem=k,
                          weight=given[n - 1] if given is not None else spec_weights[k - 1],
                          asked=_exam.asked(s),
@@ -188,7 +216,7 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
                            "seed": own, "version": version,
                            "handout": f"handouts/{slugs[i]}.html", "problems": problems},
-                "section": section,
+                "section": section, "files": files,
                 "drawn": [(slot, _exam.variant_key(s)) for slot, s in zip(slots, sols, strict=True)
                           if slot is not None]}
 
@@ -212,6 +240,34 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         "moodle": write_atomic(out / "moodle.xml", moodle_xml(title, key)),
         "stack": write_atomic(out / "stack.xml", stack_xml(title, key)),
     }
+
+
+def _kept_at(spec: dict, seed: int, title: str, weights, st: dict, slug: str,
+             own: int) -> Path:
+    """Where one student's finished exam is kept in the user cache (``verdicts/``): keyed
+    by the spec, the class seed, the title, the weights, the student's record, file name
+    and seed, every source file of the package and the book, and the libraries'
+    versions; a class exam interrupted and run again draws only the students not kept."""
+    from rigidsym.core import sources as _sources
+
+    h = hashlib.sha256()
+    for part in ("class exam 1", _sources.package_digest(), _sources.environment(),
+                 json.dumps(spec, sort_keys=True, default=str), str(seed), title,
+                 repr(weights), json.dumps(st, sort_keys=True, default=str), slug,
+                 str(own)):
+        h.update(part.encode() + b"\0")
+    key = h.hexdigest()
+    return _cache.folder("verdicts") / key[:2] / f"exam-{key}.pickle"
+
+
+def _write_if_changed(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` (atomically) unless the file already holds it."""
+    try:
+        if path.read_text(encoding="utf-8") == text:
+            return
+    except (OSError, UnicodeDecodeError):
+        pass
+    write_atomic(path, text)
 
 
 def _unique_slugs(students: list[dict]) -> list[str]:
