@@ -29,7 +29,7 @@ from rigidsym.course.worked import (
 )
 from rigidsym.declare import block, cpm, scalar, symmetric_matrix, vector
 
-__all__ = ["drawn", "draw", "statements", "decided", "WHY"]
+__all__ = ["drawn", "draw", "statements", "decided", "WHY", "SYMBOLS", "symbols"]
 
 #: the reasons a student picks from, by number
 WHY = {1: "it holds (the identity, or an equivalent form of it)",
@@ -37,6 +37,42 @@ WHY = {1: "it holds (the identity, or an equivalent form of it)",
        3: "it fails: a factor, a term or an exponent is changed",
        4: "it fails: the order of a product, or a transpose, is changed"}
 _PER_VARIANT = 3
+
+#: the notation every true-or-false handout defines (the book's, Sec. 2.2 and 3.8)
+_NOTATION = ("CPM(a): the cross-product matrix of a 3-vector a, CPM(a) b = a x b for every b; "
+             "a x b: the cross product; a . b: the dot product; ||a||: the Euclidean norm; "
+             "^T: the transpose; tr: the trace; 1: the 3 x 3 identity matrix; O: the 3 x 3 "
+             "zero matrix; [[A, B], [C, D]]: a matrix of 3 x 3 blocks, row by row")
+#: exercise -> what its statements' symbols are (every symbol a statement uses, defined
+#: on the handout: a symbol's meaning is part of the problem, never only of the key)
+SYMBOLS = {
+    "ex3.3": "p, e, x: any 3-vectors; lambda: any real number",
+    "ex3.8": "omega, p: any 3-vectors",
+    "ex3.9": "a, b: any 3-vectors (CPM(a), CPM(b): two small rotations' cross-product "
+             "matrices)",
+    "ex3.13": "p_1, p_2: any 3-vectors (the positions of two particles); m: any real number "
+              "(the mass of each); P = [p_1 p_2]: the 3 x 2 matrix of columns p_1, p_2",
+    "ex3.15": "d: any 3-vector (d = p - c, from the mass centre C to the point P); m: any "
+              "real number (the mass); I_C: any symmetric 3 x 3 matrix (the inertia matrix "
+              "about C); I_P = I_C - m CPM(d)^2: the inertia matrix about P",
+    "ex3.16": "d: any 3-vector (d = a - c, from the mass centre C to the point A); x: any "
+              "3-vector; m: any real number (the mass); I_C: any symmetric 3 x 3 matrix (the "
+              "inertia matrix about C); I_A = I_C - m CPM(d)^2: the inertia matrix about A",
+    "ex3.17": "omega: any 3-vector (the angular velocity); Omega = CPM(omega); I: any "
+              "symmetric 3 x 3 matrix (an inertia matrix)",
+    "ex3.18": "omega: any 3-vector (the angular velocity); Omega = CPM(omega); I: any "
+              "symmetric 3 x 3 matrix (an inertia matrix)",
+    "ex3.20": "b: any 3-vector; m: any real number (the mass); I_C: any symmetric 3 x 3 "
+              "matrix (the inertia matrix about the mass centre C); M_C = [[I_C, O], "
+              "[O, m 1]]: the 6 x 6 mass matrix about C; B = CPM(b); N = [[1, O], [-B, 1]]",
+    "ex3.21": "omega, omega_dot: any two 3-vectors (the angular velocity and acceleration, "
+              "independent of each other)",
+}
+
+
+def symbols(ex_id: str) -> str:
+    """The sentence a true-or-false handout of ``ex_id`` defines its symbols with."""
+    return f"Symbols: {SYMBOLS[ex_id]}; {_NOTATION}."
 
 
 def _dot(u, v):
@@ -248,8 +284,8 @@ def draw(ex_id: str, rng) -> tuple[str, dict] | Solution:
              for n, k in enumerate(picks)]
     s = Solution(ex_id, mod.TITLE,
                  "True or false, and why? For every value of the symbols: "
-                 + "; ".join(lines) + ". Reasons: " + "; ".join(f"{n} {w}" for n, w in
-                                                                 WHY.items()) + ".",
+                 + "; ".join(lines) + ". " + symbols(ex_id) + " Reasons: "
+                 + "; ".join(f"{n} {w}" for n, w in WHY.items()) + ".",
                  mod.CITATION + " (a true-or-false variant)")
     truths = [decided(ex_id, k)[0] for k in picks]
     s.steps = [_step(ex_id, k) for k in picks]

@@ -29,8 +29,9 @@ TASKS = {
     "ex3.4": "Two six-axis force sensors, with frames F_1 and F_2, read the same wrench "
              "(data below). Show from the invariants of the wrench that the readings are "
              "compatible, and find the orientation [Q]_1 of F_2 relative to F_1.",
-    "ex3.5": "A joint axis is estimated by its Plücker coordinates [e; n] in the gripper "
-             "frame (data below). Find the distance d of the axis from the origin and the "
+    "ex3.5": "A joint axis is estimated by its normalised Plücker coordinates [e; n] in "
+             "the gripper frame (data below: e is the unit vector of the axis, n its moment "
+             "about the origin). Find the distance d of the axis from the origin and the "
              "point P* of the axis closest to the origin, p* = e x n.",
     "ex3.6": "A gripper G grasps the truncated unit cube [0, 1]^3 of the data below by its "
              "two cut faces (the finger planes, normal to the data's face normal) and "
