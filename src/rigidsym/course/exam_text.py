@@ -9,7 +9,7 @@ for a list, its order; the answer's column name in the class's answers CSV follo
 
 from __future__ import annotations
 
-__all__ = ["ANSWER_FORMAT", "task", "box_label", "TASKS", "BOXES", "ASKED"]
+__all__ = ["ANSWER_FORMAT", "task", "box_label", "TASKS", "BOXES", "ASKED", "lms_statement"]
 
 #: exercise -> the answers a handout asks (default: every answer that is a value); 3.10's
 #: table of all twelve sequences stays in the key
@@ -187,3 +187,27 @@ def box_label(ex_id: str, name: str) -> str:
             if name.startswith(stem):
                 return words + name[len(stem):]
     return name.replace("_", " ")
+
+
+def lms_statement(p: dict) -> str:
+    """A problem's statement as an LMS question shows it (HTML): the task the handout
+    states (kept in the key record as ``task``: a proof's true-or-false statements in the
+    book's notation, with its symbols defined) and the student's data, each datum named as
+    the handout's table names it (no datum of a drawn statement's internal numbering)."""
+    import html
+
+    from rigidsym.course.worked import exercise_module, parameters
+
+    mod = exercise_module(p["id"])
+    text = p.get("task") or task(p["id"], getattr(mod, "STATEMENT", ""))
+    names = {q.name for q in parameters(p["id"])}
+    data = [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
+            for k, v in p["data"].items() if k in names]
+    return f"<p>{html.escape(text)}</p>" + (f"<ul>{''.join(data)}</ul>" if data else "")
+
+
+def _shown(v) -> str:
+    """A datum as the handout shows it: ``[1, -1/20, 0]``."""
+    if isinstance(v, list):
+        return "[" + ", ".join(_shown(x) for x in v) + "]"
+    return str(v)

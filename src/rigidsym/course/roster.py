@@ -40,10 +40,12 @@ from rigidsym.core import cache as _cache
 from rigidsym.core import interrupts
 from rigidsym.core.files import write_atomic
 from rigidsym.course import exam as _exam
-from rigidsym.course.exam_text import box_label, task
+from rigidsym.course.box_kinds import box_kind
+from rigidsym.course.exam_text import box_label, lms_statement, task
 from rigidsym.course.gradebook import checked_weights, key_value
 from rigidsym.course.stack_export import stack_xml
 from rigidsym.course.worked import exercise_module, render_html, solution_record
+from rigidsym.course.worked.units import answer_unit
 
 __all__ = ["class_exam", "read_roster", "student_seed", "version_of"]
 
@@ -211,7 +213,8 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         problems = [dict(solution_record(s), problem=n, spec_problem=k,
                          weight=given[n - 1] if given is not None else spec_weights[k - 1],
                          asked=_exam.asked(s),
-                         labels={a: box_label(s.id, a) for a in _exam.asked(s)})
+                         labels={a: box_label(s.id, a) for a in _exam.asked(s)},
+                         task=task(s.id, s.statement))
                     for n, (s, k) in enumerate(drawn, 1)]
         return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
                            "seed": own, "version": version,
@@ -344,6 +347,7 @@ def moodle_xml(title: str, key: dict) -> str:
     from rigidsym.course.answer_classes import declared, names_of
     from rigidsym.course.grading import RTOL
 
+    along = bool(key.get("slips_along_the_way", True))
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
     for st in key["students"]:
         # by id as well: two students of one name get two categories, unique idnumbers
@@ -352,11 +356,7 @@ def moodle_xml(title: str, key: dict) -> str:
                    f"{_x(who)}</text></category></question>")
         for p in st["problems"]:
             mod = exercise_module(p["id"])
-            body = [f"<p>{html.escape(task(p['id'], getattr(mod, 'STATEMENT', '')))}</p>",
-                    "<ul>"]
-            body += [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
-                     for k, v in p["data"].items()]
-            body.append("</ul>")
+            body = [lms_statement(p)]
             # each box's key read once (a parse and an exact evaluation per entry)
             floats = {a: _floats(p["answers"][a]) for a in p["asked"]}
             counts = {a: len(v) for a, v in floats.items() if v}
@@ -375,14 +375,18 @@ def moodle_xml(title: str, key: dict) -> str:
                 # share lcm(entry counts) integer marks, as Moodle reads a part's weight
                 w = whole // len(vals)
                 tol = f"{RTOL * scale:.3g}"
-                truth = str(p["answers"][a]) in ("True", "False")
-                extra = "" if a in classed or truth else \
-                    _slip_answers(vals, tol, key.get("slip_credit", 0), a,
+                kind = box_kind(mod, a, key_value(p["answers"][a]) if not
+                                isinstance(p["answers"][a], list) else None,
+                                answer_unit(mod, a))
+                exact = kind in ("truth", "reason", "count")
+                extra = "" if a in classed or exact or len(vals) != 1 else \
+                    _slip_answers(vals, _one_number_slips(p, a, along),
+                                  key.get("slip_credit", 0),
                                   key.get("rounding_credit", key.get("slip_credit", 0)))
-                if truth:            # typed as labelled: true or false, one choice right
-                    right = str(p["answers"][a]) == "True"
-                    parts = f"{{{w}:MULTICHOICE:{'=' if right else ''}true~" \
-                            f"{'' if right else '='}false}}"
+                if kind == "truth":   # one choice of the truths in order: all or nothing
+                    parts = _truth_choice(vals, whole)
+                elif exact:          # the numbers in order, as typed: all or nothing
+                    parts = _exact_answer(vals, whole)
                 else:
                     parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{tol}{extra}}}" for v in vals)
                 body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
@@ -397,20 +401,60 @@ def moodle_xml(title: str, key: dict) -> str:
     return "\n".join(out) + "\n"
 
 
-def _slip_answers(vals: list[float], tol: str, credit: float, name: str,
+def _truth_choice(vals: list[float], weight: int) -> str:
+    """A truth box as one ``MULTICHOICE`` of every combination of its truths in order
+    (``true, false, true``): right only with every truth right, as the gradebook scores
+    the box."""
+    import itertools
+
+    words = ("false", "true")
+    right = tuple(int(round(v)) for v in vals)
+    choices = [", ".join(words[t] for t in c) for c in itertools.product((1, 0),
+                                                                        repeat=len(vals))]
+    mark = [("=" if c == ", ".join(words[t] for t in right) else "") + c for c in choices]
+    return f"{{{weight}:MULTICHOICE:{'~'.join(mark)}}}"
+
+
+def _exact_answer(vals: list[float], weight: int) -> str:
+    """A reason or count box as one ``SHORTANSWER``: its whole numbers in order, with or
+    without spaces after the commas (``1, 4, 1`` or ``1,4,1``); all or nothing."""
+    nums = [str(int(round(v))) for v in vals]
+    forms = dict.fromkeys((", ".join(nums), ",".join(nums), " ".join(nums)))
+    return f"{{{weight}:SHORTANSWER:" + "~".join(f"={f}" for f in forms) + "}"
+
+
+def _one_number_slips(p: dict, name: str, along: bool) -> list[float]:
+    """The grader's slip values of a one-number box, in its order
+    (:func:`rigidsym.course.grading.slip_values`: the slips the box's kind admits, and the
+    replays along the way where the key's policy asks for them)."""
+    from rigidsym.course.gradebook import solution_of
+    from rigidsym.course.grading import key_array, replayed_values, slip_values
+
+    sol = solution_of(p)
+    target = key_array(sol.answers[name])
+    replayed = replayed_values(sol) if along else []
+    return [float(v.reshape(-1)[0]) for _, v in slip_values(sol, name, target,
+                                                             replayed=replayed)
+            if v.size == 1]
+
+
+def _slip_answers(vals: list[float], slips: list[float], credit: float,
                   rounding: float = 0.0) -> str:
-    """Moodle's partial credit (``~%n%value:tol``) for the slips of a one-number box that
-    the policy credits (``slip_credit``): its sign, and for an angle degrees for radians;
-    then the key rounded to 1, 2 or 3 significant figures (``rounding_credit``, as
-    :func:`rigidsym.course.grading.rounded_figures` names it: within 1e-9 relative). Where
-    a box is one number, Moodle's part is the box, and scores as the gradebook."""
+    """Moodle's partial credit (``~%n%value:tol``) of a one-number box: each of the
+    grader's ``slips`` values (``slip_credit``), each within 0.1 % of itself as the grader
+    compares a slip, then the key rounded to 1, 2 or 3 significant figures
+    (``rounding_credit``, as :func:`rigidsym.course.grading.rounded_figures` names it:
+    within 1e-9 relative). Where a box is one number, Moodle's part is the box, and scores
+    as the gradebook (a slip is never 0: a zero answer earns none, as in the gradebook)."""
+    from rigidsym.course.grading import RTOL
+
     if len(vals) != 1 or not vals[0]:
         return ""
     v, out = vals[0], []
+    tol = f"{RTOL * abs(v) + 1e-12:.3g}"
     pct = round(100 * float(credit))
     if pct > 0:
-        slips = [-v] + ([v * 180 / math.pi] if "phi" in name or "rad" in name else [])
-        out += [f"~%{pct}%{x!r}:{tol}" for x in slips if abs(x - v) > 2 * float(tol)]
+        out += [f"~%{pct}%{x!r}:{RTOL * abs(x)!r}" for x in dict.fromkeys(slips) if x]
     pct = round(100 * float(rounding))
     if pct > 0:
         for n in range(1, 4):
@@ -432,13 +476,6 @@ def _floats(v) -> list[float] | None:
         else:
             return None
     return out
-
-
-def _shown(v) -> str:
-    """A datum as the handout shows it: ``[1, -1/20, 0]``."""
-    if isinstance(v, list):
-        return "[" + ", ".join(_shown(x) for x in v) + "]"
-    return str(v)
 
 
 def _x(text: str) -> str:

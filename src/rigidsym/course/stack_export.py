@@ -52,6 +52,7 @@ import numpy as np
 
 from rigidsym.course.answer_classes import column_signs, declared, names_of, rotations_onto
 from rigidsym.course.box_kinds import ZERO, constant
+from rigidsym.course.exam_text import lms_statement
 from rigidsym.course.grading import RTOL, key_array, replayed_values, slip_values
 from rigidsym.course.worked import exercise_module
 
@@ -138,7 +139,9 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float],
                for n in names_of(d)]
     group = {n: d for d in decls if d["kind"] in STACK_KINDS for n in names_of(d)
              if n in boxes}
-    text = [f"<p>{html.escape(p['labels'].get(a, a))}: [[input:{inputs[a]}]] "
+    # "[[" opens a STACK tag (an input, a feedback): a block matrix's brackets as entities
+    text = [lms_statement(p).replace("[", "&#91;")]
+    text += [f"<p>{html.escape(p['labels'].get(a, a))}: [[input:{inputs[a]}]] "
             f"[[validation:{inputs[a]}]] [[feedback:prt_{inputs[a]}]]</p>"
             for a in boxes if a not in skipped]
     text += [f"<p>{html.escape(p['labels'].get(a, a))}: graded by rigidsym grade (import "
