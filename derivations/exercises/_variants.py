@@ -10,9 +10,11 @@ counterexample, :func:`~rigidsym.course.worked.nonidentity_check`), never assume
 statement neither proved nor refuted is never drawn.
 
 The answers: ``holds``, one truth per statement (1 true, 0 false; "true"/"false" typed),
-and ``why``, one reason per statement: 1 it holds (the identity or an equivalent form),
-2 it fails by a sign, 3 by a factor, term or exponent, 4 by the order of a product or a
-transpose.
+and ``why``, one reason per statement, by the number the handout gives it: the reasons (it
+holds, the identity or an equivalent form; it fails by a sign; by a factor, term or
+exponent; by the order of a product or a transpose, :data:`WHY`) are listed in an order
+drawn with the statements (the datum ``reasons``: the :data:`WHY` key of each number), so
+that neighbours' reason numbers differ.
 """
 
 from __future__ import annotations
@@ -279,21 +281,26 @@ def draw(ex_id: str, rng) -> tuple[str, dict] | Solution:
         return "data", _grasp_data(rng)
     pool = [k for k in range(len(statements(ex_id))) if decided(ex_id, k)[0] is not None]
     picks = rng.sample(pool, _PER_VARIANT)
+    # the reasons listed in a drawn order, as a quiz shuffles its choices: neighbours'
+    # reason numbers differ though their statements' verdicts agree
+    order = list(WHY)
+    rng.shuffle(order)
     mod = exercise_module(ex_id)
     lines = [f"({'i' * (n + 1) if n < 3 else n + 1}) {statements(ex_id)[k][0]}"
              for n, k in enumerate(picks)]
     s = Solution(ex_id, mod.TITLE,
                  "True or false, and why? For every value of the symbols: "
                  + "; ".join(lines) + ". " + symbols(ex_id) + " Reasons: "
-                 + "; ".join(f"{n} {w}" for n, w in WHY.items()) + ".",
+                 + "; ".join(f"{n} {WHY[r]}" for n, r in enumerate(order, 1)) + ".",
                  mod.CITATION + " (a true-or-false variant)")
     truths = [decided(ex_id, k)[0] for k in picks]
     s.steps = [_step(ex_id, k) for k in picks]
+    label = {reason: n for n, reason in enumerate(order, 1)}
     s.answers = {"holds": sp.Matrix([int(t) for t in truths]),
-                 "why": sp.Matrix([1 if t else statements(ex_id)[k][2]
+                 "why": sp.Matrix([label[1 if t else statements(ex_id)[k][2]]
                                    for t, k in zip(truths, picks, strict=True)])}
     s.checks = [decided(ex_id, k)[1] for k in picks]
-    s.data = {"statements": sp.Matrix(picks)}
+    s.data = {"statements": sp.Matrix(picks), "reasons": sp.Matrix(order)}
     return s
 
 

@@ -111,7 +111,8 @@ def version_of(sols: list) -> str:
     """A short version of an exam: 6 letters (no digit, so no number on the sheet reads
     as an answer) of a hash of its problems' exercises and data, so a returned sheet is
     matched to its key."""
-    text = "|".join(f"{s.id}:{_exam.variant_key(s)}" for s in sols)
+    text = "|".join(f"{s.id}:{sorted((k, str(v)) for k, v in s.data.items())!r}"
+                    for s in sols)
     h = int(hashlib.sha256(text.encode()).hexdigest(), 16)
     return "".join("ABCDEFGHJKLMNPQRSTUVWXYZ"[(h >> (5 * i)) % 24] for i in range(6))
 
