@@ -29,7 +29,17 @@ from rigidsym.course.worked import (
     identity_check,
     nonidentity_check,
 )
-from rigidsym.declare import block, cpm, scalar, symmetric_matrix, vector
+from rigidsym.declare import (
+    TIME,
+    block,
+    cpm,
+    rotation_from_natural_invariants,
+    scalar,
+    symmetric_matrix,
+    unit_vector,
+    vect,
+    vector,
+)
 
 __all__ = ["drawn", "draw", "statements", "decided", "WHY", "SYMBOLS", "symbols"]
 
@@ -50,7 +60,12 @@ _NOTATION = ("CPM(a): the cross-product matrix of a 3-vector a, CPM(a) b = a x b
 SYMBOLS = {
     "ex3.3": "p, e, x: any 3-vectors; lambda: any real number",
     "ex3.8": "omega, p: any 3-vectors",
-    "ex3.9": "a, b: any 3-vectors (CPM(a), CPM(b): two small rotations' cross-product "
+    "ex3.9": "phi(t): an angle, a function of the time t; e(t): a unit vector, a function "
+             "of t; Q: the "
+             "rotation through phi about e (Eq. 2.49); omega = vect(Q_dot Q^T): its angular "
+             "velocity; phi_dot, e_dot, d/dt: derivatives with respect to t; to first order "
+             "in phi: for a small rotation, terms in phi^2, phi phi_dot and higher dropped; "
+             "a, b: any 3-vectors (CPM(a), CPM(b): two small rotations' cross-product "
              "matrices)",
     "ex3.13": "p_1, p_2: any 3-vectors (the positions of two particles); m: any real number "
               "(the mass of each); P = [p_1 p_2]: the 3 x 2 matrix of columns p_1, p_2",
@@ -103,10 +118,27 @@ def _s38():
              W**4 - n * (n * sp.eye(3) - w * w.T), 1)]
 
 
+def _small_rotation_rate():
+    """The first-order coefficient of omega = vect(Q_dot Q^T) for Q the rotation through
+    epsilon phi(t) about the unit e(t) (Eq. 2.49), as 3.9's worked solution expands it;
+    and phi, e."""
+    e = unit_vector("ex39_e", t=TIME)
+    phi = scalar("phi", t=TIME)
+    eps = sp.Symbol("epsilon", real=True)
+    Q = rotation_from_natural_invariants(e, eps * phi)
+    omega = vect(Q.diff(TIME) * Q.T)
+    return omega.diff(eps).subs(eps, 0), phi, e
+
+
 def _s39():
     a, b = vector("a"), vector("b")
     A, B = cpm(a), cpm(b)
-    return [("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(a x b)", A * B - B * A - cpm(a.cross(b)), 1),
+    w1, phi, e = _small_rotation_rate()
+    rate = (phi * e).diff(TIME)
+    return [("omega = d(phi e)/dt, to first order in phi", w1 - rate, 1),
+            ("omega = -d(phi e)/dt, to first order in phi", w1 + rate, 2),
+            ("omega = phi_dot e, to first order in phi", w1 - phi.diff(TIME) * e, 3),
+            ("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(a x b)", A * B - B * A - cpm(a.cross(b)), 1),
             ("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(b x a)", A * B - B * A - cpm(b.cross(a)), 4),
             ("CPM(a) CPM(b) = CPM(b) CPM(a) (two small rotations commute exactly)",
              A * B - B * A, 4),
@@ -227,6 +259,9 @@ _STATEMENTS = {"ex3.3": _s33, "ex3.8": _s38, "ex3.9": _s39, "ex3.13": _s313,
                "ex3.15": _s315, "ex3.16": _s316, "ex3.17": _s317, "ex3.18": _s318,
                "ex3.20": _s320, "ex3.21": _s321}
 _NUMERIC = ("ex3.6",)
+#: exercise -> its statements of the exercise's own point, one of which every variant asks
+#: (3.9: the angular velocity of a small rotation is d(phi e)/dt)
+_POINT = {"ex3.9": (0, 1, 2)}
 
 
 #: the finger planes' normals a draw of 3.6 takes: the book's cube diagonal, and unit
@@ -281,6 +316,9 @@ def draw(ex_id: str, rng) -> tuple[str, dict] | Solution:
         return "data", _grasp_data(rng)
     pool = [k for k in range(len(statements(ex_id))) if decided(ex_id, k)[0] is not None]
     picks = rng.sample(pool, _PER_VARIANT)
+    point = [k for k in _POINT.get(ex_id, ()) if k in pool]
+    if point and not set(picks) & set(point):      # the exercise's own point is asked
+        picks[rng.randrange(_PER_VARIANT)] = rng.choice(point)
     # the reasons listed in a drawn order, as a quiz shuffles its choices: neighbours'
     # reason numbers differ though their statements' verdicts agree
     order = list(WHY)
