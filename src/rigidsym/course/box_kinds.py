@@ -1,34 +1,19 @@
 """What an answer box holds, and the slips that kind of answer admits.
 
 As STACK's potential-response trees name a mistake only where the mathematics names it,
-a box is graded with the slips of its kind alone:
+a box is graded with the slips of its kind alone (docs/exams.md, "Slips by kind"):
 
-=========  =================================================================  ==========
-kind       what the box holds                                                 its slips
-=========  =================================================================  ==========
-truth      true or false (1 or 0, one per statement)                          none
-reason     a reason's number (one per statement)                              none
-count      a whole number                                                     none
-length     a length, area or volume (a unit ``m``, ``m^2`` ...)               sign, a
-           unit prefix of length (mm, cm for m: 10^(2k), 10^(3k) for m^k,     power of
-           either way), factor 2, swap, order, transpose, the exercise's own  length
-angle      an angle or an angular rate (``rad``, ``rad/s``)                   sign,
-                                                                              degrees,
-                                                                              factor 2
-rotation   a rotation matrix                                                  transpose,
-                                                                              sign, swap,
-                                                                              factor 2
-quantity   another physical quantity (``N m``, ``kg m^2``)                    sign, a
-                                                                              prefix
-                                                                              (10^3 and
-                                                                              its length
-                                                                              powers)
-vector     an array or number with no single unit (a Plücker array)           sign,
-                                                                              factor 2,
-                                                                              swap,
-                                                                              order,
-                                                                              transpose
-=========  =================================================================  ==========
+- ``truth``: true or false (1 or 0, one per statement); ``reason``: a reason's number;
+  ``count``: a whole number. No slip: right or wrong.
+- ``length``: a unit ``m^k`` (or declared): sign, a unit prefix of length only
+  (10^(+-2k), 10^(+-3k): cm, mm for m), factor 2, swap, order, transpose, reference point.
+- ``angle``: a unit ``rad`` or ``rad/s``: sign, degrees (either way), factor 2, reference
+  point.
+- ``rotation``: a 3 x 3 rotation: transpose, sign, swap, factor 2.
+- ``quantity``: another unit (``N m``, ``kg m^2``): sign, a prefix (10^(+-3) and the
+  powers of its lengths), factor 2, swap, order, transpose, reference point.
+- ``vector``: no single unit (a Plücker array, barycentric weights): sign, factor 2, swap,
+  order, transpose, reference point.
 
 The slips along the way (the solution replayed with a slip in its data,
 :mod:`rigidsym.course.slips`) and rounding apply to every kind but truth, reason and count.

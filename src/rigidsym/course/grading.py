@@ -9,7 +9,10 @@ mm^2 for m, m, kg, m^2), ``"factor 2"`` (the answer doubled or halved: a diamete
 radius, a half-angle formula's 2 dropped), ``"swap"`` (two components, rows or columns
 exchanged) and ``"reference point"`` (the same quantity about another point of the body,
 where the exercise declares one: its module's ``slips(solution)``). Else ``"not a known
-slip"``.
+slip"``. Only the slips the box's kind admits are tried (:mod:`.box_kinds`: a truth or a
+reason number none, a length only its unit prefixes, an angle degrees), and a slip is
+named only for an answer that is not trivial (zero, all entries equal, a datum echoed)
+within the tolerance of the slipped key itself.
 
 Numbers are compared in floating point within a stated tolerance: a grade is a judgement
 on a student's decimals, not a proof; the expected values themselves are exact.
