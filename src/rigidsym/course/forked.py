@@ -42,12 +42,11 @@ def forked_map(fn: Callable[[int], object], n: int) -> list:
     pool = ProcessPoolExecutor(k, mp_context=mp.get_context("fork"), initializer=for_worker)
     try:
         return list(pool.map(_call, range(n)))
-    except KeyboardInterrupt:  # stop the workers now rather than wait for their work
+    except KeyboardInterrupt:
+        # the items not begun are cancelled; those under way end (a worker killed while it
+        # writes its result would leave the pool's reader waiting for the rest forever)
         _quiet_pool_thread()
-        procs = list((getattr(pool, "_processes", None) or {}).values())
         pool.shutdown(wait=False, cancel_futures=True)
-        for p in procs:
-            p.terminate()
         raise
     finally:
         pool.shutdown(wait=True)
