@@ -97,6 +97,7 @@ def test_an_interrupted_class_exam_keeps_its_finished_students(tmp_path):
         assert (tmp_path / "c" / name).read_bytes() == (tmp_path / "d" / name).read_bytes()
 
 
+@pytest.mark.slow
 def test_exam_interrupted_while_drawing_says_one_line(tmp_path):
     """SIGINT at the first student's end (before the workers start): exit 130, one line,
     no traceback."""
