@@ -7,9 +7,10 @@ Maxima, as documented: ``a: b;`` assigns; ``if c then x else y``; ``and``, ``or`
 ``<``, ``<=``, ``>``, ``>=`` on numbers; ``+ - * / ^`` act entry by entry on lists and
 matrices (a number with a list or matrix: on each entry); ``.`` is the matrix product;
 ``matrix([r1], [r2], ...)`` a matrix of rows; ``args(M)`` the list of M's rows;
-``flatten`` a nested list made flat; ``abs`` entry by entry; ``lmax`` the largest entry
-of a list; ``floor``; ``is(b)`` the truth of b; ``%pi``. Anything else is an error: the
-export must write no Maxima this reader does not know.
+``flatten`` a nested list made flat; ``abs`` entry by entry; ``lmax`` (``lmin``) the
+largest (smallest) entry of a list; ``max`` of numbers; ``floor``; ``is(b)`` the truth of
+b; ``%pi``. Anything else is an error: the export must write no Maxima this reader does
+not know.
 
 STACK, as documented: a question's inputs are the student's answers (``allowempty``: a
 blank input is ``EMPTYANSWER``); each PRT's feedback variables are evaluated, then its
@@ -86,6 +87,8 @@ _FUNCTIONS = {
     "flatten": _flatten,
     "abs": _abs,
     "lmax": lambda lst: max(lst),
+    "lmin": lambda lst: min(lst),
+    "max": lambda *xs: max(xs),
     "floor": lambda x: float(math.floor(x)),
     "is": lambda b: b if isinstance(b, bool) else
     (_ for _ in ()).throw(ValueError(f"Maxima: is({b!r})")),

@@ -90,8 +90,11 @@ def test_moodle_xml_has_a_cloze_question_per_student_and_problem(made):
     # so a right box and a blank box score as the gradebook scores them.
     for q in qs:
         text = q.getElementsByTagName("questiontext")[0].toxml()
-        boxes = [re.findall(r"\{(\d+):NUMERICAL:=([^:]+):([^}]+)\}", para)
-                 for para in text.split("<p>") if ":NUMERICAL:" in para]
+        # a box of numbers is a NUMERICAL part per entry; a truth or reason box one
+        # MULTICHOICE or SHORTANSWER part
+        boxes = [re.findall(r"\{(\d+):(?:NUMERICAL|MULTICHOICE|SHORTANSWER):()([^}]+)\}",
+                            para)
+                 for para in text.split("<p>") if re.search(r"\{\d+:[A-Z]+:", para)]
         marks = [sum(int(w) for w, _, _ in b) for b in boxes]
         assert len(set(marks)) == 1, marks
         for blank in range(len(boxes)):        # one box blank, the others right

@@ -106,7 +106,11 @@ def _decided(ex_id):
     for seed in range(12):
         s = V.draw(ex_id, random.Random(seed))
         holds, why = list(s.answers["holds"]), list(s.answers["why"])
-        assert all((h == 1) == (w == 1) for h, w in zip(holds, why, strict=True))
+        order = [int(r) for r in s.data["reasons"]]          # reason of label n + 1
+        assert sorted(order) == [1, 2, 3, 4]
+        assert all((h == 1) == (order[w - 1] == 1) for h, w in zip(holds, why, strict=True))
+        for n, r in enumerate(order, 1):                     # the handout says which is which
+            assert f"{n} {V.WHY[r]}" in s.statement
         assert s.checked and len(s.steps) == 3
         seen.add(tuple(s.data["statements"]))
         words = ",".join("true" if h else "false" for h in holds)

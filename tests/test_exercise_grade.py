@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 
 import numpy as np
 import pytest
@@ -70,7 +71,10 @@ def test_sign_of_the_moment_transfer_and_reference_point(ex319):
     assert _slip(ex319, "n_2", _floats(Q.T * (n + d.cross(f)))).slip == "sign"
     assert _slip(ex319, "n_2", _floats(Q.T * n)).slip == "reference point"   # about S
     f2 = _floats(Q.T * f)
-    assert _slip(ex319, "f_2", [f2[1], f2[0], f2[2]]).slip == "swap"
+    assert _slip(ex319, "f_2", [f2[0], f2[2], f2[1]]).slip == "swap"
+    # entries 0 and 1 exchanged give f_S itself: a datum echoed names no slip
+    assert _floats(f) == [f2[1], f2[0], f2[2]]
+    assert _slip(ex319, "f_2", [f2[1], f2[0], f2[2]]).slip is None
 
 
 def test_degrees_for_radians():
@@ -232,10 +236,11 @@ def test_rows_of_a_matrix_exchanged_are_a_swap(ex34):
                                     10**6], ids=lambda f: f"{f:g}")
 def test_a_prefix_either_way_is_a_unit_slip(ex311, factor):
     """The inertia per kg in m^2 written with mm^2 (10^6), cm^2 (10^4), and the conversion
-    done the wrong way round (10^-6, 10^-4), or a length's mm or cm (10^3, 10^2, and
-    inverted): each a unit slip."""
+    done the wrong way round (10^-6, 10^-4): each a unit slip; a length's factor (10^3,
+    10^2, inverted) is no prefix of an area, and names no slip."""
     I_kg = ex311.answers["I_C_per_kg_m2"]
-    assert _slip(ex311, "I_C_per_kg_m2", _floats(I_kg * sp.Rational(factor))).slip == "unit"
+    got = _slip(ex311, "I_C_per_kg_m2", _floats(I_kg * sp.Rational(factor))).slip
+    assert got == ("unit" if abs(math.log10(factor)) in (4, 6) else None)
 
 
 def test_a_slip_along_the_way_is_named_only_by_the_replay(ex319):

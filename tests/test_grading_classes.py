@@ -14,6 +14,7 @@ exhaustive run (``-m slow``) many.
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -150,12 +151,34 @@ def in_class(ex_id, name, value, member) -> bool:
     return near(value, k)
 
 
-def one_edit_slips(name, v):
-    """The one-edit slips of a value: (word, edited value)."""
+def unit_factor(name, ex_id=None):
+    """The factor of a unit slip of box ``name`` as the docs give it (docs/exams.md, the
+    slips by kind): a length m^k (its documented unit, or declared a length) typed in mm^k,
+    10^(3k); another quantity with a unit, 10^3; a box with no unit (or an angle), none."""
+    from rigidsym.course.worked import exercise_module
+    from rigidsym.course.worked.units import answer_unit
+
+    if ex_id is None:
+        return None
+    mod = exercise_module(ex_id)
+    if getattr(mod, "ANSWER_KINDS", {}).get(name) == "length":
+        return 1000.0
+    unit = answer_unit(mod, name)
+    if not unit or "rad" in unit:
+        return None
+    m = re.fullmatch(r"m(?:\^(\d+))?", unit.strip())
+    return 10.0 ** (3 * int(m.group(1) or 1)) if m else 1000.0
+
+
+def one_edit_slips(name, v, ex_id=None):
+    """The one-edit slips of a value: (word, edited value); the unit slip only where the
+    box has a unit (``ex_id`` given: :func:`unit_factor`)."""
     out = []
+    f = unit_factor(name, ex_id)
     if np.any(v != 0):
         out.append(("sign", -v))
-        out.append(("unit", v * 1000.0))
+        if f is not None:
+            out.append(("unit", v * f))
     if v.ndim == 2 and v.shape[0] == v.shape[1] > 1 and not np.allclose(v, v.T, atol=1e-6):
         out.append(("transpose", v.T))
     if v.ndim == 0 and ("phi" in name or "rad" in name or "angle" in name) and v != 0:
@@ -188,12 +211,13 @@ def _check(ex_id, member, blank):
             flipped = grade(s, {k: not bool(v > 0.5)}, replay=False)
             assert next(g for g in flipped if g.name == k).correct is False
             continue
-        edits = one_edit_slips(k, member[k])
+        edits = one_edit_slips(k, member[k], ex_id)
         if k in POINTS_ON_AXIS.get(ex_id, ())[:1]:
             # a slip that scales a point scales the axis with it (named for any point);
             # an exchange of entries is named on the key's own point
             edits = [(w, x) for w, x in edits if w in ("sign", "unit")] + \
-                [(w, x) for w, x in one_edit_slips(k, key[k][0]) if w not in ("sign", "unit")]
+                [(w, x) for w, x in one_edit_slips(k, key[k][0], ex_id)
+                 if w not in ("sign", "unit")]
         for word, value in edits:
             if in_class(ex_id, k, value, member):
                 continue                # an edit that lands in the class: right, not a slip

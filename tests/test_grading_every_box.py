@@ -81,7 +81,8 @@ def _check(ex_id, member):
             g = _graded(ex_id, name, value, member)
             assert g.correct is False and g.slip is not None, (ex_id, name, f, g.detail)
             # named factor 2 unless an edit the grader tries first gives the same value
-            earlier = [w for w, x in one_edit_slips(name, v) if _same(name, x, value, scale)]
+            earlier = [w for w, x in one_edit_slips(name, v, ex_id)
+                       if _same(name, x, value, scale)]
             earlier += [x for x in own.get(name, ()) if _same(name, x, value, scale)]
             assert g.slip == "factor 2" or earlier, (ex_id, name, f, g.slip, g.detail)
         keyed = {n: x for n, (x, _) in key.items()}     # the rounding of the key itself
@@ -89,7 +90,7 @@ def _check(ex_id, member):
             r = np.vectorize(lambda x, n=figures: float(f"{x:.{n - 1}e}"))(k)
             if _near(r, k, scale) or in_class(ex_id, name, r, {**keyed, name: r}):
                 continue                      # a rounding inside the tolerance is right
-            if any(_same(name, x, r, scale) for _, x in one_edit_slips(name, k)) or \
+            if any(_same(name, x, r, scale) for _, x in one_edit_slips(name, k, ex_id)) or \
                     _same(name, 2 * k, r, scale) or _same(name, k / 2, r, scale) or \
                     any(_same(name, x, r, scale) for x in own.get(name, ())):
                 continue                      # the rounding is also an earlier slip

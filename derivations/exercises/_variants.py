@@ -10,9 +10,11 @@ counterexample, :func:`~rigidsym.course.worked.nonidentity_check`), never assume
 statement neither proved nor refuted is never drawn.
 
 The answers: ``holds``, one truth per statement (1 true, 0 false; "true"/"false" typed),
-and ``why``, one reason per statement: 1 it holds (the identity or an equivalent form),
-2 it fails by a sign, 3 by a factor, term or exponent, 4 by the order of a product or a
-transpose.
+and ``why``, one reason per statement, by the number the handout gives it: the reasons (it
+holds, the identity or an equivalent form; it fails by a sign; by a factor, term or
+exponent; by the order of a product or a transpose, :data:`WHY`) are listed in an order
+drawn with the statements (the datum ``reasons``: the :data:`WHY` key of each number), so
+that neighbours' reason numbers differ.
 """
 
 from __future__ import annotations
@@ -27,9 +29,19 @@ from rigidsym.course.worked import (
     identity_check,
     nonidentity_check,
 )
-from rigidsym.declare import block, cpm, scalar, symmetric_matrix, vector
+from rigidsym.declare import (
+    TIME,
+    block,
+    cpm,
+    rotation_from_natural_invariants,
+    scalar,
+    symmetric_matrix,
+    unit_vector,
+    vect,
+    vector,
+)
 
-__all__ = ["drawn", "draw", "statements", "decided", "WHY"]
+__all__ = ["drawn", "draw", "statements", "decided", "WHY", "SYMBOLS", "symbols"]
 
 #: the reasons a student picks from, by number
 WHY = {1: "it holds (the identity, or an equivalent form of it)",
@@ -37,6 +49,47 @@ WHY = {1: "it holds (the identity, or an equivalent form of it)",
        3: "it fails: a factor, a term or an exponent is changed",
        4: "it fails: the order of a product, or a transpose, is changed"}
 _PER_VARIANT = 3
+
+#: the notation every true-or-false handout defines (the book's, Sec. 2.2 and 3.8)
+_NOTATION = ("CPM(a): the cross-product matrix of a 3-vector a, CPM(a) b = a x b for every b; "
+             "a x b: the cross product; a . b: the dot product; ||a||: the Euclidean norm; "
+             "^T: the transpose; tr: the trace; 1: the 3 x 3 identity matrix; O: the 3 x 3 "
+             "zero matrix; [[A, B], [C, D]]: a matrix of 3 x 3 blocks, row by row")
+#: exercise -> what its statements' symbols are (every symbol a statement uses, defined
+#: on the handout: a symbol's meaning is part of the problem, never only of the key)
+SYMBOLS = {
+    "ex3.3": "p, e, x: any 3-vectors; lambda: any real number",
+    "ex3.8": "omega, p: any 3-vectors",
+    "ex3.9": "phi(t): an angle, a function of the time t; e(t): a unit vector, a function "
+             "of t; Q: the "
+             "rotation through phi about e (Eq. 2.49); omega = vect(Q_dot Q^T): its angular "
+             "velocity; phi_dot, e_dot, d/dt: derivatives with respect to t; to first order "
+             "in phi: for a small rotation, terms in phi^2, phi phi_dot and higher dropped; "
+             "a, b: any 3-vectors (CPM(a), CPM(b): two small rotations' cross-product "
+             "matrices)",
+    "ex3.13": "p_1, p_2: any 3-vectors (the positions of two particles); m: any real number "
+              "(the mass of each); P = [p_1 p_2]: the 3 x 2 matrix of columns p_1, p_2",
+    "ex3.15": "d: any 3-vector (d = p - c, from the mass centre C to the point P); m: any "
+              "real number (the mass); I_C: any symmetric 3 x 3 matrix (the inertia matrix "
+              "about C); I_P = I_C - m CPM(d)^2: the inertia matrix about P",
+    "ex3.16": "d: any 3-vector (d = a - c, from the mass centre C to the point A); x: any "
+              "3-vector; m: any real number (the mass); I_C: any symmetric 3 x 3 matrix (the "
+              "inertia matrix about C); I_A = I_C - m CPM(d)^2: the inertia matrix about A",
+    "ex3.17": "omega: any 3-vector (the angular velocity); Omega = CPM(omega); I: any "
+              "symmetric 3 x 3 matrix (an inertia matrix)",
+    "ex3.18": "omega: any 3-vector (the angular velocity); Omega = CPM(omega); I: any "
+              "symmetric 3 x 3 matrix (an inertia matrix)",
+    "ex3.20": "b: any 3-vector; m: any real number (the mass); I_C: any symmetric 3 x 3 "
+              "matrix (the inertia matrix about the mass centre C); M_C = [[I_C, O], "
+              "[O, m 1]]: the 6 x 6 mass matrix about C; B = CPM(b); N = [[1, O], [-B, 1]]",
+    "ex3.21": "omega, omega_dot: any two 3-vectors (the angular velocity and acceleration, "
+              "independent of each other)",
+}
+
+
+def symbols(ex_id: str) -> str:
+    """The sentence a true-or-false handout of ``ex_id`` defines its symbols with."""
+    return f"Symbols: {SYMBOLS[ex_id]}; {_NOTATION}."
 
 
 def _dot(u, v):
@@ -65,10 +118,27 @@ def _s38():
              W**4 - n * (n * sp.eye(3) - w * w.T), 1)]
 
 
+def _small_rotation_rate():
+    """The first-order coefficient of omega = vect(Q_dot Q^T) for Q the rotation through
+    epsilon phi(t) about the unit e(t) (Eq. 2.49), as 3.9's worked solution expands it;
+    and phi, e."""
+    e = unit_vector("ex39_e", t=TIME)
+    phi = scalar("phi", t=TIME)
+    eps = sp.Symbol("epsilon", real=True)
+    Q = rotation_from_natural_invariants(e, eps * phi)
+    omega = vect(Q.diff(TIME) * Q.T)
+    return omega.diff(eps).subs(eps, 0), phi, e
+
+
 def _s39():
     a, b = vector("a"), vector("b")
     A, B = cpm(a), cpm(b)
-    return [("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(a x b)", A * B - B * A - cpm(a.cross(b)), 1),
+    w1, phi, e = _small_rotation_rate()
+    rate = (phi * e).diff(TIME)
+    return [("omega = d(phi e)/dt, to first order in phi", w1 - rate, 1),
+            ("omega = -d(phi e)/dt, to first order in phi", w1 + rate, 2),
+            ("omega = phi_dot e, to first order in phi", w1 - phi.diff(TIME) * e, 3),
+            ("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(a x b)", A * B - B * A - cpm(a.cross(b)), 1),
             ("CPM(a) CPM(b) - CPM(b) CPM(a) = CPM(b x a)", A * B - B * A - cpm(b.cross(a)), 4),
             ("CPM(a) CPM(b) = CPM(b) CPM(a) (two small rotations commute exactly)",
              A * B - B * A, 4),
@@ -189,6 +259,9 @@ _STATEMENTS = {"ex3.3": _s33, "ex3.8": _s38, "ex3.9": _s39, "ex3.13": _s313,
                "ex3.15": _s315, "ex3.16": _s316, "ex3.17": _s317, "ex3.18": _s318,
                "ex3.20": _s320, "ex3.21": _s321}
 _NUMERIC = ("ex3.6",)
+#: exercise -> its statements of the exercise's own point, one of which every variant asks
+#: (3.9: the angular velocity of a small rotation is d(phi e)/dt)
+_POINT = {"ex3.9": (0, 1, 2)}
 
 
 #: the finger planes' normals a draw of 3.6 takes: the book's cube diagonal, and unit
@@ -243,21 +316,29 @@ def draw(ex_id: str, rng) -> tuple[str, dict] | Solution:
         return "data", _grasp_data(rng)
     pool = [k for k in range(len(statements(ex_id))) if decided(ex_id, k)[0] is not None]
     picks = rng.sample(pool, _PER_VARIANT)
+    point = [k for k in _POINT.get(ex_id, ()) if k in pool]
+    if point and not set(picks) & set(point):      # the exercise's own point is asked
+        picks[rng.randrange(_PER_VARIANT)] = rng.choice(point)
+    # the reasons listed in a drawn order, as a quiz shuffles its choices: neighbours'
+    # reason numbers differ though their statements' verdicts agree
+    order = list(WHY)
+    rng.shuffle(order)
     mod = exercise_module(ex_id)
     lines = [f"({'i' * (n + 1) if n < 3 else n + 1}) {statements(ex_id)[k][0]}"
              for n, k in enumerate(picks)]
     s = Solution(ex_id, mod.TITLE,
                  "True or false, and why? For every value of the symbols: "
-                 + "; ".join(lines) + ". Reasons: " + "; ".join(f"{n} {w}" for n, w in
-                                                                 WHY.items()) + ".",
+                 + "; ".join(lines) + ". " + symbols(ex_id) + " Reasons: "
+                 + "; ".join(f"{n} {WHY[r]}" for n, r in enumerate(order, 1)) + ".",
                  mod.CITATION + " (a true-or-false variant)")
     truths = [decided(ex_id, k)[0] for k in picks]
     s.steps = [_step(ex_id, k) for k in picks]
+    label = {reason: n for n, reason in enumerate(order, 1)}
     s.answers = {"holds": sp.Matrix([int(t) for t in truths]),
-                 "why": sp.Matrix([1 if t else statements(ex_id)[k][2]
+                 "why": sp.Matrix([label[1 if t else statements(ex_id)[k][2]]
                                    for t, k in zip(truths, picks, strict=True)])}
     s.checks = [decided(ex_id, k)[1] for k in picks]
-    s.data = {"statements": sp.Matrix(picks)}
+    s.data = {"statements": sp.Matrix(picks), "reasons": sp.Matrix(order)}
     return s
 
 

@@ -18,6 +18,10 @@ CITATION = "Angeles, Sec. 3.9, Exercise 3.1"
 #: the documented unit of each answer with one (graded answers may be written in any
 #: compatible unit); the others are pure numbers or mixed
 ANSWER_UNITS = {"phi": "rad"}
+#: the axis's points on the coordinate planes are points of the data's frame: lengths, with a
+#: length's unit slips (mm, cm for m), though written with no unit
+ANSWER_KINDS = {"intersection_x=0": "length", "intersection_y=0": "length",
+                "intersection_z=0": "length"}
 #: what the answers are (the grader judges a student's answer by its class): the axis and
 #: angle of Q with the Plücker array of its axis, one sign for all three ((e, phi, [e; n])
 #: is (-e, -phi, -[e; n])) and phi + 2 pi k

@@ -169,14 +169,14 @@ def given_figure(s: Solution):
 
 
 def random_data(rng) -> dict:
-    """A variant with readable exact numbers (an exam's draw): homogeneous Plücker
-    coordinates of integers, the direction a Pythagorean quadruple (so that its norm is an
-    integer) and the moment that of a point of small integers not on the origin's line."""
+    """A variant with readable exact numbers (an exam's draw): normalised Plücker
+    coordinates, the direction e a unit vector of rationals (a Pythagorean quadruple over
+    its norm, as (1, 2, 2)/3) and the moment n = p x e of a point p of small integers not
+    on the origin's line, so that the handout's p* = e x n and d = ||n|| hold as printed."""
     from ._random import small_vector, unit_vector
 
     while True:
         e = unit_vector(rng)
-        e = e * sp.ilcm(*[x.q for x in e])          # the quadruple's integers
         n = small_vector(rng).cross(e)
         if not is_zero(n):
             return {"plucker": [*e, *n]}

@@ -38,6 +38,7 @@ def add_arguments(p) -> None:
 def run(args) -> int:
     """Write the handout and the key; 0 written, 2 a bad spec or data, 3 a defect."""
     from rigidsym.cli.grade import parse_weights
+    from rigidsym.core import interrupts
     from rigidsym.course import write_exam as exam
 
     try:
@@ -52,9 +53,13 @@ def run(args) -> int:
         else:
             paths = exam(args.spec, args.out, seed=args.seed)
     except (ValueError, TypeError) as exc:
+        if interrupts.received():
+            raise           # the interrupt in another form: rigidsym.cli.main says it
         print(f"rigidsym: error: {exc} (docs/exams.md describes the spec)", file=sys.stderr)
         return 2
     except Exception as exc:  # noqa: BLE001 - a defect, never the code of a bad spec
+        if interrupts.received():
+            raise           # a worker pool cut short by Ctrl-C: rigidsym.cli.main says it
         print(f"rigidsym: internal error, please report: {type(exc).__name__}: {exc}",
               file=sys.stderr)
         return 3

@@ -52,14 +52,19 @@ def run(args) -> int:
     defect, 10 + n (at most 99) when n answer files or rows were not graded (each
     reported on its own line; the rest of the class is graded). Writes DIR/grades.csv,
     DIR/gradebook.csv and DIR/item_analysis.csv and prints a line per student."""
+    from rigidsym.core import interrupts
     from rigidsym.course import grade_class
 
     try:
         done = grade_class(args.dir, args.answers, weights=parse_weights(args.weights))
     except (ValueError, TypeError) as exc:
+        if interrupts.received():
+            raise           # the interrupt in another form: rigidsym.cli.main says it
         print(f"rigidsym: error: {exc} (docs/exams.md describes the files)", file=sys.stderr)
         return 2
     except Exception as exc:  # noqa: BLE001 - a defect, never the code of a grade
+        if interrupts.received():
+            raise           # a worker pool cut short by Ctrl-C: rigidsym.cli.main says it
         print(f"rigidsym: internal error, please report: {type(exc).__name__}: {exc}",
               file=sys.stderr)
         return 3

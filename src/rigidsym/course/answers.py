@@ -1,8 +1,13 @@
-"""Reading students' answers: one JSON file, a folder of them, or a CSV of a class.
+"""Reading students' answers: one JSON or text file, a folder of them, or a CSV of a class.
 
 A value is a number, an exact string (``"sqrt(3)/2"``), nested JSON lists, or a string
 the grader splits as ``--set`` splits data (``"0,0,1;1,0,0;0,1,0"``); a blank is kept
 blank, and the grader counts it missing.
+
+Files are read as editors save them: UTF-8 with or without a byte-order mark (Notepad,
+Excel), lines ending in LF or CRLF; a CSV's separator ``,``, ``;`` or a tab. A text file
+(``.txt``) holds one answer a line, ``name = value`` (or ``name: value``); blank lines and
+lines starting with ``#`` are skipped.
 """
 
 from __future__ import annotations
@@ -25,23 +30,63 @@ def read_answers(path: str | Path) -> dict[str, dict]:
     """
     p = Path(path)
     if p.is_dir():
-        files = sorted(p.glob("*.json"))
-        if not files:
-            raise ValueError(f"--grade: no *.json answer files in the folder {p}")
-        return {f.stem: _json_answers(f) for f in files}
+        files = _answer_files(p)
+        return {f.stem: _file_answers(f) for f in files}
     if p.suffix.lower() == ".csv":
         return _csv_answers(p)
-    return {p.stem: _json_answers(p)}
+    return {p.stem: _file_answers(p)}
+
+
+def _answer_files(p: Path) -> list[Path]:
+    """The ``*.json`` and ``*.txt`` answer files of a folder, sorted by name.
+
+    Raises:
+        ValueError: there are none.
+    """
+    files = sorted([*p.glob("*.json"), *p.glob("*.txt")])
+    if not files:
+        raise ValueError(f"--grade: no *.json (or *.txt) answer files in the folder {p}")
+    return files
+
+
+def _file_answers(f: Path) -> dict:
+    """One student's answers from a JSON or a text file (by its suffix)."""
+    return _txt_answers(f) if f.suffix.lower() == ".txt" else _json_answers(f)
 
 
 def _json_answers(f: Path) -> dict:
     try:
-        doc = json.loads(f.read_text(encoding="utf-8"))
+        doc = json.loads(f.read_text(encoding="utf-8-sig"))     # a BOM (Notepad) skipped
     except (OSError, ValueError) as exc:
         raise ValueError(f"--grade: cannot read {f}: {exc}") from None
     if not isinstance(doc, dict):
         raise ValueError(f"--grade: expected a JSON object {{answer name: value}} in {f}")
     return doc
+
+
+def _txt_answers(f: Path) -> dict:
+    """A text file of ``name = value`` lines (or ``name: value``), as :mod:`.answers`
+    describes.
+
+    Raises:
+        ValueError: an unreadable file, or a line with neither ``=`` nor ``:`` (the
+            message names the file and the line number).
+    """
+    try:
+        text = f.read_text(encoding="utf-8-sig")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ValueError(f"--grade: cannot read {f}: {exc}") from None
+    out: dict = {}
+    for n, line in enumerate(text.splitlines(), 1):
+        t = line.strip()
+        if not t or t.startswith("#"):
+            continue
+        sep = "=" if "=" in t else ":" if ":" in t else None
+        if sep is None:
+            raise ValueError(f"--grade: {f}, line {n}: expected 'name = value', got {t!r}")
+        name, _, value = t.partition(sep)
+        out[name.strip()] = _cell(value)
+    return out
 
 
 def read_table(f: Path, what: str = "--grade") -> list[dict]:
@@ -116,13 +161,10 @@ def read_class_answers(path: str | Path) -> tuple[list[tuple[str, dict]], list[s
     """
     p = Path(path)
     if p.is_dir():
-        files = sorted(p.glob("*.json"))
-        if not files:
-            raise ValueError(f"--grade: no *.json answer files in the folder {p}")
         out, problems = [], []
-        for f in files:
+        for f in _answer_files(p):
             try:
-                out.append((f.stem, _json_answers(f)))
+                out.append((f.stem, _file_answers(f)))
             except ValueError as exc:
                 problems.append(f"{f.name}: not graded: {exc}")
         return out, problems

@@ -178,8 +178,10 @@ def drawn_exercises(spec: dict, seed: int, taken: dict | None = None) -> list[tu
 
 
 def variant_key(s) -> str:
-    """The data of a solution as one string (equal data, equal strings)."""
-    return repr(sorted((k, str(v)) for k, v in s.data.items()))
+    """A drawn variant's answers as one string (equal answers, equal strings): a class
+    draws each student's variant again while its answers repeat another student's, so that
+    neighbours' answer keys differ (other data with the same answers count as a repeat)."""
+    return repr(sorted((k, str(v)) for k, v in s.answers.items()))
 
 
 def _svg(fig) -> str:

@@ -9,7 +9,7 @@ for a list, its order; the answer's column name in the class's answers CSV follo
 
 from __future__ import annotations
 
-__all__ = ["ANSWER_FORMAT", "task", "box_label", "TASKS", "BOXES", "ASKED"]
+__all__ = ["ANSWER_FORMAT", "task", "box_label", "TASKS", "BOXES", "ASKED", "lms_statement"]
 
 #: exercise -> the answers a handout asks (default: every answer that is a value); 3.10's
 #: table of all twelve sequences stays in the key
@@ -29,8 +29,9 @@ TASKS = {
     "ex3.4": "Two six-axis force sensors, with frames F_1 and F_2, read the same wrench "
              "(data below). Show from the invariants of the wrench that the readings are "
              "compatible, and find the orientation [Q]_1 of F_2 relative to F_1.",
-    "ex3.5": "A joint axis is estimated by its Plücker coordinates [e; n] in the gripper "
-             "frame (data below). Find the distance d of the axis from the origin and the "
+    "ex3.5": "A joint axis is estimated by its normalised Plücker coordinates [e; n] in "
+             "the gripper frame (data below: e is the unit vector of the axis, n its moment "
+             "about the origin). Find the distance d of the axis from the origin and the "
              "point P* of the axis closest to the origin, p* = e x n.",
     "ex3.6": "A gripper G grasps the truncated unit cube [0, 1]^3 of the data below by its "
              "two cut faces (the finger planes, normal to the data's face normal) and "
@@ -186,3 +187,27 @@ def box_label(ex_id: str, name: str) -> str:
             if name.startswith(stem):
                 return words + name[len(stem):]
     return name.replace("_", " ")
+
+
+def lms_statement(p: dict) -> str:
+    """A problem's statement as an LMS question shows it (HTML): the task the handout
+    states (kept in the key record as ``task``: a proof's true-or-false statements in the
+    book's notation, with its symbols defined) and the student's data, each datum named as
+    the handout's table names it (no datum of a drawn statement's internal numbering)."""
+    import html
+
+    from rigidsym.course.worked import exercise_module, parameters
+
+    mod = exercise_module(p["id"])
+    text = p.get("task") or task(p["id"], getattr(mod, "STATEMENT", ""))
+    names = {q.name for q in parameters(p["id"])}
+    data = [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
+            for k, v in p["data"].items() if k in names]
+    return f"<p>{html.escape(text)}</p>" + (f"<ul>{''.join(data)}</ul>" if data else "")
+
+
+def _shown(v) -> str:
+    """A datum as the handout shows it: ``[1, -1/20, 0]``."""
+    if isinstance(v, list):
+        return "[" + ", ".join(_shown(x) for x in v) + "]"
+    return str(v)

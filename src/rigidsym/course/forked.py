@@ -42,12 +42,34 @@ def forked_map(fn: Callable[[int], object], n: int) -> list:
     pool = ProcessPoolExecutor(k, mp_context=mp.get_context("fork"), initializer=for_worker)
     try:
         return list(pool.map(_call, range(n)))
-    except KeyboardInterrupt:  # stop the workers now rather than wait for their work
-        procs = list((getattr(pool, "_processes", None) or {}).values())
+    except KeyboardInterrupt:
+        # the items not begun are cancelled; those under way end (a worker killed while it
+        # writes its result would leave the pool's reader waiting for the rest forever)
+        _quiet_pool_thread()
         pool.shutdown(wait=False, cancel_futures=True)
-        for p in procs:
-            p.terminate()
         raise
     finally:
         pool.shutdown(wait=True)
         _FN.clear()
+
+
+def _quiet_pool_thread() -> None:
+    """An interrupted map's pool breaks as its workers are stopped, and the executor's
+    management thread then sets an exception on futures the map already cancelled:
+    CPython 3.11 raises ``InvalidStateError`` there and prints it as a thread's traceback
+    (the interrupt's one line must stay the only one). From now on this process's thread
+    hook drops a ``BrokenProcessPool`` or ``InvalidStateError`` of a thread; any other
+    exception of a thread is printed as before."""
+    import threading
+    from concurrent.futures import InvalidStateError
+    from concurrent.futures.process import BrokenProcessPool
+
+    previous = threading.excepthook
+
+    def hook(args) -> None:
+        if args.exc_type is not None and issubclass(args.exc_type, (InvalidStateError,
+                                                                    BrokenProcessPool)):
+            return
+        previous(args)
+
+    threading.excepthook = hook

@@ -9,7 +9,10 @@ mm^2 for m, m, kg, m^2), ``"factor 2"`` (the answer doubled or halved: a diamete
 radius, a half-angle formula's 2 dropped), ``"swap"`` (two components, rows or columns
 exchanged) and ``"reference point"`` (the same quantity about another point of the body,
 where the exercise declares one: its module's ``slips(solution)``). Else ``"not a known
-slip"``.
+slip"``. Only the slips the box's kind admits are tried (:mod:`.box_kinds`: a truth or a
+reason number none, a length only its unit prefixes, an angle degrees), and a slip is
+named only for an answer that is not trivial (zero, all entries equal, a datum echoed)
+within the tolerance of the slipped key itself.
 
 Numbers are compared in floating point within a stated tolerance: a grade is a judgement
 on a student's decimals, not a proof; the expected values themselves are exact.
@@ -23,6 +26,15 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
+from rigidsym.course.box_kinds import (
+    admits,
+    box_kind,
+    replays_admitted,
+    slip_close,
+    slip_counts,
+    trivial,
+    unit_powers,
+)
 from rigidsym.course.grading_units import unit_off, unit_slip
 from rigidsym.course.worked.numbers import read_text, split_text
 from rigidsym.course.worked.units import answer_unit
@@ -38,7 +50,6 @@ SLIPS = ("transpose", "sign", "degrees", "unit", "factor 2", "swap", "order", "f
          "reference point", "rounded")
 _TRUTH = {"true": 1.0, "t": 1.0, "yes": 1.0, "y": 1.0, "holds": 1.0,
           "false": 0.0, "f": 0.0, "no": 0.0, "n": 0.0, "fails": 0.0}
-_UNIT_POWERS = (-15, -9, -6, -4, -3, -2, 2, 3, 4, 6, 9, 15)
 
 
 @dataclass
@@ -164,9 +175,13 @@ def slip_values(solution, name: str, target: np.ndarray, replay: bool = True,
     """
     from rigidsym.course.worked import exercise_module
 
-    own = getattr(exercise_module(solution.id), "slips", None)
+    module = exercise_module(solution.id)
+    kind, unit = kind_of(module, name, solution.answers.get(name))
+    own = getattr(module, "slips", None)
     extra = [(w, d, _expected(v)) for w, d, v in (own(solution) if own else {}).get(name, [])]
-    out = [(w, v) for w, _, v in _candidates(target, name, extra)]
+    out = [(w, v) for w, _, v in _candidates(target, name, extra, kind, unit)]
+    if not replays_admitted(kind):
+        return out
     for word, _, answers in (() if not replay else replayed if replayed is not None
                              else _Replays(solution)):
         value = answers.get(name)
@@ -176,8 +191,35 @@ def slip_values(solution, name: str, target: np.ndarray, replay: bool = True,
             v = _expected(value)
         except TypeError:
             continue
-        if v.shape == target.shape:
+        if v.shape == target.shape and slip_counts(v, target, RTOL):
             out.append((word, v))
+    return out
+
+
+def kind_of(module, name: str, right) -> tuple[str, str | None]:
+    """``(kind, unit)`` of box ``name`` of an exercise ``module`` whose key is ``right``
+    (:func:`rigidsym.course.box_kinds.box_kind`; the unit documented, or None)."""
+    unit = answer_unit(module, name)
+    return box_kind(module, name, right, unit), unit
+
+
+def data_arrays(solution) -> list[np.ndarray]:
+    """The solution's numeric data as float arrays (an answer that echoes one of them is
+    trivial: :func:`rigidsym.course.box_kinds.trivial`)."""
+    out = []
+    for v in (getattr(solution, "data", None) or {}).values():
+        if isinstance(v, list):
+            try:
+                v = sp.Matrix(v)
+            except (TypeError, ValueError, sp.SympifyError):
+                continue
+        if not isinstance(v, sp.MatrixBase | sp.Expr) or isinstance(v, sp.Symbol):
+            continue
+        try:
+            out.append(np.array(sp.N(v, 17).tolist() if isinstance(v, sp.MatrixBase)
+                                else sp.N(v, 17), dtype=float))
+        except (TypeError, ValueError, AttributeError):
+            continue
     return out
 
 
@@ -189,14 +231,23 @@ def _close_plain(a: np.ndarray, b: np.ndarray, scale: float) -> bool:
     return a.shape == b.shape and bool(np.all(np.abs(a - b) <= RTOL * scale + 1e-12))
 
 
-def _candidates(e: np.ndarray, name: str, extra: list):
-    """(slip, what the edit is, edited answer), in the order of :data:`SLIPS`."""
+def _candidates(e: np.ndarray, name: str, extra: list, kind: str = "vector",
+                unit: str | None = None):
+    """(slip, what the edit is, edited answer), in the order of :data:`SLIPS`: those a box
+    of ``kind`` admits (:func:`rigidsym.course.box_kinds.admits`) whose edited answer can
+    name a slip (:func:`rigidsym.course.box_kinds.slip_counts`: not near 0, not the key)."""
+    for word, detail, value in _all_candidates(e, name, extra, kind, unit):
+        if admits(kind, word) and slip_counts(value, e, RTOL):
+            yield word, detail, value
+
+
+def _all_candidates(e: np.ndarray, name: str, extra: list, kind: str, unit: str | None):
     if e.ndim == 2 and e.shape[0] == e.shape[1] > 1 and not np.allclose(e, e.T):
         yield "transpose", f"{name} transposed", e.T
     yield "sign", f"-{name}", -e
     flat = e.reshape(-1)
     for i in range(flat.size):
-        if flat[i] != 0 and flat.size > 1:
+        if abs(flat[i]) > RTOL * float(np.max(np.abs(flat))) and flat.size > 1:
             f = flat.copy()
             f[i] = -f[i]
             yield "sign", f"the sign of entry {i} of {name}", f.reshape(e.shape)
@@ -205,7 +256,7 @@ def _candidates(e: np.ndarray, name: str, extra: list):
             yield word, detail, value
     yield "degrees", f"{name} in degrees for radians", e * 180 / math.pi
     yield "degrees", f"{name} in radians for degrees", e * math.pi / 180
-    for k in _UNIT_POWERS:
+    for k in unit_powers(kind, unit):
         yield "unit", f"{name} x 10^{k} (a unit prefix: mm, cm, g, mm^2 for m, m, kg, m^2)", \
             e * 10.0**k
     yield "factor 2", f"{name} doubled", 2 * e
@@ -291,6 +342,7 @@ def grade(solution, answers: dict, slips: dict | None = None,
     replayed = _Replays(solution) if replay else None
     units = {name: answer_unit(module, name) for name in solution.answers}
     read = _read_all(solution, answers, units)
+    data = data_arrays(solution)
     verdicts = _classes(module, solution, read)
     out = []
     for name, right in solution.answers.items():
@@ -316,14 +368,12 @@ def grade(solution, answers: dict, slips: dict | None = None,
         if v is not None and v.right:
             out.append(Graded(name, True, None, shown, got[2], note=v.note))
             continue
-        if right in (sp.true, sp.false):   # a truth has no slips: a power of ten of 1
-            g, e = got[0], got[1]          # is within tol of 0 ("unit" for false)
-            ok = _close_plain(g, e, 1.0)
-            out.append(Graded(name, ok, None, shown, "the key's truth" if ok else
-                              f"not the key's truth ({bool(right)})"))
+        kind = box_kind(module, name, right, units[name])
+        if not replays_admitted(kind):     # a truth, a reason, a count: no slips
+            out.append(_grade_exact(name, got, right, shown, kind))
             continue
         out.append(_grade_one(name, got, right, shown, (slips or {}).get(name, []),
-                              replayed, units[name], v))
+                              replayed, units[name], v, kind, data))
     return out
 
 
@@ -497,11 +547,34 @@ class _Replays:
         return iter(self.done)
 
 
+def _grade_exact(name, got, right, shown, kind) -> Graded:
+    """A truth, a reason number or a count: right when it is the key, else wrong; no slip
+    is named (a wrong truth is no sign or unit slip of the right one)."""
+    g, e = got[0], got[1]
+    ok = g.shape == e.shape and bool(np.all(np.abs(g - e) <= 1e-9))
+    what = {"truth": "truth", "reason": "reason", "count": "count"}.get(kind, "value")
+    if ok:
+        return Graded(name, True, None, shown, f"the key's {what}")
+    return Graded(name, False, None, shown, f"not the key's {what} ({_shown_short(right)}); "
+                  f"a {what} has no slips")
+
+
+def _shown_short(right) -> str:
+    if right in (sp.true, sp.false):
+        return str(bool(right)).lower()
+    if isinstance(right, sp.MatrixBase):
+        return "[" + ", ".join(str(x) for x in right) + "]"
+    return str(right)
+
+
 def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
-               verdict=None) -> Graded:
+               verdict=None, kind="vector", data=()) -> Graded:
     """A read answer (``got``: :func:`_read_all`'s tuple) against the key (or, for a
     declared class, ``verdict``'s member, compared modulo the class's freedom): right, a
-    named slip, rounded, or wrong."""
+    named slip of the box's ``kind``, rounded, or wrong. A slip is named only when the
+    answer is not trivial (:func:`rigidsym.course.box_kinds.trivial`: all zero, all equal,
+    a datum echoed) and matches the slipped key within the tolerance relative to the
+    slipped key."""
     g, e, tol, written = got
     if verdict is not None:
         e = verdict.target
@@ -510,19 +583,24 @@ def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
         return verdict.matches(a, b, sc, RTOL) if verdict is not None else \
             _close_plain(a, b, sc)
 
+    def _slipped(a, b):
+        return verdict.matches(a, b, float(np.max(np.abs(b))), RTOL) \
+            if verdict is not None else slip_close(a, b, RTOL)
+
     scale = max(float(np.max(np.abs(e))) if e.size else 0.0, 1e-300)
     if _close(g, e, scale):
         return Graded(name, True, None, shown, tol,
                       note=f"units {written}→{unit}" if written and written != unit
                       else "right")
+    plain = trivial(g, e, list(data), RTOL)      # zero, constant, a datum: no slip
     extra_f = [(w, d, _expected(v)) for w, d, v in extra]
-    for member in (e, *(verdict.members if verdict is not None else ())):
-        for word, detail, value in _candidates(member, name, extra_f):
-            if _close(g, value, max(scale, float(np.max(np.abs(value))))):
+    for member in () if plain else (e, *(verdict.members if verdict is not None else ())):
+        for word, detail, value in _candidates(member, name, extra_f, kind, unit):
+            if _slipped(g, value):
                 more = unit_slip(word, value, member, unit, written)
                 return Graded(name, False, word, shown, f"matches {detail}" + more,
                               note=_slip_note(word, detail, value, member, unit, written))
-    for word, detail, answers in replayed or ():
+    for word, detail, answers in () if plain else replayed or ():
         value = answers.get(name)
         if value is None or isinstance(value, str):
             continue
@@ -530,7 +608,7 @@ def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
             v = _expected(value)
         except TypeError:
             continue
-        if v.shape == g.shape and _close(g, v, max(scale, float(np.max(np.abs(v))))):
+        if v.shape == g.shape and slip_counts(v, e, RTOL) and _slipped(g, v):
             return Graded(name, False, word, shown, f"matches the solution with {detail}",
                           note=f"{word} (along the way)")
     figures = next((f for m in (e, *(verdict.members if verdict is not None else ()))
@@ -539,6 +617,10 @@ def _grade_one(name, got, right, shown, extra, replayed=None, unit=None,
         return Graded(name, False, "rounded", shown,
                       f"rounded to {figures} significant figures (the tolerance: {tol})",
                       note=f"rounded {figures} s.f.")
+    if plain:
+        return Graded(name, False, None, shown, f"not within the tolerance ({tol}); a "
+                      f"trivial answer (zero, all entries equal, or a datum echoed) names "
+                      f"no slip")
     return Graded(name, False, None, shown, f"not within the tolerance ({tol}), and not a "
                   f"known slip")
 

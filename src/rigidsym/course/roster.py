@@ -30,17 +30,22 @@ import html
 import io
 import json
 import math
+import pickle
 import re
 from pathlib import Path
 
 import sympy as sp
 
+from rigidsym.core import cache as _cache
+from rigidsym.core import interrupts
 from rigidsym.core.files import write_atomic
 from rigidsym.course import exam as _exam
-from rigidsym.course.exam_text import box_label, task
+from rigidsym.course.box_kinds import box_kind
+from rigidsym.course.exam_text import box_label, lms_statement, task
 from rigidsym.course.gradebook import checked_weights, key_value
 from rigidsym.course.stack_export import stack_xml
 from rigidsym.course.worked import exercise_module, render_html, solution_record
+from rigidsym.course.worked.units import answer_unit
 
 __all__ = ["class_exam", "read_roster", "student_seed", "version_of"]
 
@@ -106,7 +111,8 @@ def version_of(sols: list) -> str:
     """A short version of an exam: 6 letters (no digit, so no number on the sheet reads
     as an answer) of a hash of its problems' exercises and data, so a returned sheet is
     matched to its key."""
-    text = "|".join(f"{s.id}:{_exam.variant_key(s)}" for s in sols)
+    text = "|".join(f"{s.id}:{sorted((k, str(v)) for k, v in s.data.items())!r}"
+                    for s in sols)
     h = int(hashlib.sha256(text.encode()).hexdigest(), 16)
     return "".join("ABCDEFGHJKLMNPQRSTUVWXYZ"[(h >> (5 * i)) % 24] for i in range(6))
 
@@ -167,7 +173,30 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     slugs = _unique_slugs(students)
     seeds = [student_seed(seed, st["name"]) for st in students]
 
+    kept_at = [_kept_at(spec, seed, title, given, st, slug, own)
+               for st, slug, own in zip(students, slugs, seeds, strict=True)]
+    interrupts.note_kept(lambda: sum(_cache.get(p) is not None for p in kept_at),
+                         len(students), "students")
+
     def make(i: int, taken: dict | None = None) -> dict:
+        """Student i's exam: kept from an earlier run of the same class (its files
+        written again only where they differ), else drawn and kept."""
+        if taken is None:
+            blob = _cache.get(kept_at[i])
+            if blob is not None:
+                done = pickle.loads(blob)
+                for rel, text in done.pop("files").items():
+                    _write_if_changed(out / rel, text)
+                interrupts.checkpoint("advance")
+                return done
+        done = draw(i, taken)
+        if taken is None:
+            _cache.put(kept_at[i], pickle.dumps(done))
+        interrupts.checkpoint("advance")
+        done.pop("files")
+        return done
+
+    def draw(i: int, taken: dict | None = None) -> dict:
         """Student i's exam: drawn (against ``taken``: the draws of the students before
         i), its handout written; its key record and section, and its drawn data keys."""
         st, own = students[i], seeds[i]
@@ -175,20 +204,23 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         sols = [s for s, _ in drawn]
         version = version_of(sols)
         head = _head(title, st, own, version)
-        write_atomic(out / "handouts" / f"{slugs[i]}.html",
-                     _exam.handout_text(f"{title}: {st['name']}", sols, head, columns=True))
+        files = {f"handouts/{slugs[i]}.html": _exam.handout_text(f"{title}: {st['name']}",
+                                                                 sols, head, columns=True)}
         section = _key_section(head, sols)
-        write_atomic(out / "keys" / f"{slugs[i]}.html",
-                     _exam.handout_page(f"{title}: answer key of {st['name']}", section))
+        files[f"keys/{slugs[i]}.html"] = _exam.handout_page(
+            f"{title}: answer key of {st['name']}", section)
+        for rel, text in files.items():
+            write_atomic(out / rel, text)
         problems = [dict(solution_record(s), problem=n, spec_problem=k,
                          weight=given[n - 1] if given is not None else spec_weights[k - 1],
                          asked=_exam.asked(s),
-                         labels={a: box_label(s.id, a) for a in _exam.asked(s)})
+                         labels={a: box_label(s.id, a) for a in _exam.asked(s)},
+                         task=task(s.id, s.statement))
                     for n, (s, k) in enumerate(drawn, 1)]
         return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
                            "seed": own, "version": version,
                            "handout": f"handouts/{slugs[i]}.html", "problems": problems},
-                "section": section,
+                "section": section, "files": files,
                 "drawn": [(slot, _exam.variant_key(s)) for slot, s in zip(slots, sols, strict=True)
                           if slot is not None]}
 
@@ -212,6 +244,34 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
         "moodle": write_atomic(out / "moodle.xml", moodle_xml(title, key)),
         "stack": write_atomic(out / "stack.xml", stack_xml(title, key)),
     }
+
+
+def _kept_at(spec: dict, seed: int, title: str, weights, st: dict, slug: str,
+             own: int) -> Path:
+    """Where one student's finished exam is kept in the user cache (``verdicts/``): keyed
+    by the spec, the class seed, the title, the weights, the student's record, file name
+    and seed, every source file of the package and the book, and the libraries'
+    versions; a class exam interrupted and run again draws only the students not kept."""
+    from rigidsym.core import sources as _sources
+
+    h = hashlib.sha256()
+    for part in ("class exam 1", _sources.package_digest(), _sources.environment(),
+                 json.dumps(spec, sort_keys=True, default=str), str(seed), title,
+                 repr(weights), json.dumps(st, sort_keys=True, default=str), slug,
+                 str(own)):
+        h.update(part.encode() + b"\0")
+    key = h.hexdigest()
+    return _cache.folder("verdicts") / key[:2] / f"exam-{key}.pickle"
+
+
+def _write_if_changed(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` (atomically) unless the file already holds it."""
+    try:
+        if path.read_text(encoding="utf-8") == text:
+            return
+    except (OSError, UnicodeDecodeError):
+        pass
+    write_atomic(path, text)
 
 
 def _unique_slugs(students: list[dict]) -> list[str]:
@@ -288,6 +348,7 @@ def moodle_xml(title: str, key: dict) -> str:
     from rigidsym.course.answer_classes import declared, names_of
     from rigidsym.course.grading import RTOL
 
+    along = bool(key.get("slips_along_the_way", True))
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
     for st in key["students"]:
         # by id as well: two students of one name get two categories, unique idnumbers
@@ -296,11 +357,7 @@ def moodle_xml(title: str, key: dict) -> str:
                    f"{_x(who)}</text></category></question>")
         for p in st["problems"]:
             mod = exercise_module(p["id"])
-            body = [f"<p>{html.escape(task(p['id'], getattr(mod, 'STATEMENT', '')))}</p>",
-                    "<ul>"]
-            body += [f"<li>{html.escape(k)} = {html.escape(_shown(v))}</li>"
-                     for k, v in p["data"].items()]
-            body.append("</ul>")
+            body = [lms_statement(p)]
             # each box's key read once (a parse and an exact evaluation per entry)
             floats = {a: _floats(p["answers"][a]) for a in p["asked"]}
             counts = {a: len(v) for a, v in floats.items() if v}
@@ -319,14 +376,18 @@ def moodle_xml(title: str, key: dict) -> str:
                 # share lcm(entry counts) integer marks, as Moodle reads a part's weight
                 w = whole // len(vals)
                 tol = f"{RTOL * scale:.3g}"
-                truth = str(p["answers"][a]) in ("True", "False")
-                extra = "" if a in classed or truth else \
-                    _slip_answers(vals, tol, key.get("slip_credit", 0), a,
+                kind = box_kind(mod, a, key_value(p["answers"][a]) if not
+                                isinstance(p["answers"][a], list) else None,
+                                answer_unit(mod, a))
+                exact = kind in ("truth", "reason", "count")
+                extra = "" if a in classed or exact or len(vals) != 1 else \
+                    _slip_answers(vals, _one_number_slips(p, a, along),
+                                  key.get("slip_credit", 0),
                                   key.get("rounding_credit", key.get("slip_credit", 0)))
-                if truth:            # typed as labelled: true or false, one choice right
-                    right = str(p["answers"][a]) == "True"
-                    parts = f"{{{w}:MULTICHOICE:{'=' if right else ''}true~" \
-                            f"{'' if right else '='}false}}"
+                if kind == "truth":   # one choice of the truths in order: all or nothing
+                    parts = _truth_choice(vals, whole)
+                elif exact:          # the numbers in order, as typed: all or nothing
+                    parts = _exact_answer(vals, whole)
                 else:
                     parts = " ".join(f"{{{w}:NUMERICAL:={v!r}:{tol}{extra}}}" for v in vals)
                 body.append(f"<p>{html.escape(p['labels'][a])}: {parts}</p>")
@@ -341,20 +402,60 @@ def moodle_xml(title: str, key: dict) -> str:
     return "\n".join(out) + "\n"
 
 
-def _slip_answers(vals: list[float], tol: str, credit: float, name: str,
+def _truth_choice(vals: list[float], weight: int) -> str:
+    """A truth box as one ``MULTICHOICE`` of every combination of its truths in order
+    (``true, false, true``): right only with every truth right, as the gradebook scores
+    the box."""
+    import itertools
+
+    words = ("false", "true")
+    right = tuple(int(round(v)) for v in vals)
+    choices = [", ".join(words[t] for t in c) for c in itertools.product((1, 0),
+                                                                        repeat=len(vals))]
+    mark = [("=" if c == ", ".join(words[t] for t in right) else "") + c for c in choices]
+    return f"{{{weight}:MULTICHOICE:{'~'.join(mark)}}}"
+
+
+def _exact_answer(vals: list[float], weight: int) -> str:
+    """A reason or count box as one ``SHORTANSWER``: its whole numbers in order, with or
+    without spaces after the commas (``1, 4, 1`` or ``1,4,1``); all or nothing."""
+    nums = [str(int(round(v))) for v in vals]
+    forms = dict.fromkeys((", ".join(nums), ",".join(nums), " ".join(nums)))
+    return f"{{{weight}:SHORTANSWER:" + "~".join(f"={f}" for f in forms) + "}"
+
+
+def _one_number_slips(p: dict, name: str, along: bool) -> list[float]:
+    """The grader's slip values of a one-number box, in its order
+    (:func:`rigidsym.course.grading.slip_values`: the slips the box's kind admits, and the
+    replays along the way where the key's policy asks for them)."""
+    from rigidsym.course.gradebook import solution_of
+    from rigidsym.course.grading import key_array, replayed_values, slip_values
+
+    sol = solution_of(p)
+    target = key_array(sol.answers[name])
+    replayed = replayed_values(sol) if along else []
+    return [float(v.reshape(-1)[0]) for _, v in slip_values(sol, name, target,
+                                                             replayed=replayed)
+            if v.size == 1]
+
+
+def _slip_answers(vals: list[float], slips: list[float], credit: float,
                   rounding: float = 0.0) -> str:
-    """Moodle's partial credit (``~%n%value:tol``) for the slips of a one-number box that
-    the policy credits (``slip_credit``): its sign, and for an angle degrees for radians;
-    then the key rounded to 1, 2 or 3 significant figures (``rounding_credit``, as
-    :func:`rigidsym.course.grading.rounded_figures` names it: within 1e-9 relative). Where
-    a box is one number, Moodle's part is the box, and scores as the gradebook."""
+    """Moodle's partial credit (``~%n%value:tol``) of a one-number box: each of the
+    grader's ``slips`` values (``slip_credit``), each within 0.1 % of itself as the grader
+    compares a slip, then the key rounded to 1, 2 or 3 significant figures
+    (``rounding_credit``, as :func:`rigidsym.course.grading.rounded_figures` names it:
+    within 1e-9 relative). Where a box is one number, Moodle's part is the box, and scores
+    as the gradebook (a slip is never 0: a zero answer earns none, as in the gradebook)."""
+    from rigidsym.course.grading import RTOL
+
     if len(vals) != 1 or not vals[0]:
         return ""
     v, out = vals[0], []
+    tol = f"{RTOL * abs(v) + 1e-12:.3g}"
     pct = round(100 * float(credit))
     if pct > 0:
-        slips = [-v] + ([v * 180 / math.pi] if "phi" in name or "rad" in name else [])
-        out += [f"~%{pct}%{x!r}:{tol}" for x in slips if abs(x - v) > 2 * float(tol)]
+        out += [f"~%{pct}%{x!r}:{RTOL * abs(x)!r}" for x in dict.fromkeys(slips) if x]
     pct = round(100 * float(rounding))
     if pct > 0:
         for n in range(1, 4):
@@ -376,13 +477,6 @@ def _floats(v) -> list[float] | None:
         else:
             return None
     return out
-
-
-def _shown(v) -> str:
-    """A datum as the handout shows it: ``[1, -1/20, 0]``."""
-    if isinstance(v, list):
-        return "[" + ", ".join(_shown(x) for x in v) + "]"
-    return str(v)
 
 
 def _x(text: str) -> str:

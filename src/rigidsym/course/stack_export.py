@@ -21,7 +21,9 @@ student), with:
   a line modulo a shift along it), then any of the grader's slip values
   (:func:`rigidsym.course.grading.slip_values`; the replays of the solution with a slip
   along the way where the key's ``slips_along_the_way`` is true, as the gradebook then
-  tries them), then the key rounded to 1, 2 or 3 significant figures;
+  tries them; a slip's value compared within 0.1 % of its own largest entry, and no slip
+  named on a trivial answer: all zero, all entries equal, a datum echoed), then the key
+  rounded to 1, 2 or 3 significant figures;
 * STACK's question tests: the key, every box blank, each box negated alone, each PRT's
   expected score and note the gradebook's;
 * four nodes per PRT, each ``AlgEquiv(<truth>, true)`` on the feedback variables
@@ -30,7 +32,8 @@ student), with:
   answer notes are ``<box>: blank | right | slip | rounded | wrong``.
 
 Only builtins of Maxima are used: ``matrix``, ``args``, ``flatten``, ``abs``, ``lmax``,
-``floor``, ``is``, ``if then else``, ``and``/``or``, ``.`` (a matrix product) and ``%pi``.
+``lmin``, ``max``, ``floor``, ``is``, ``if then else``, ``and``/``or``, ``.`` (a matrix
+product) and ``%pi``.
 A ``rotation onto`` box (3.14's [Q]_B) is right near any of its four rotations, and a
 ``columns up to sign`` box (3.12's principal axes) near any choice of its columns' signs;
 a slip or a rounding of any member is named, as the grader judges it. Boxes that are
@@ -48,6 +51,8 @@ import math
 import numpy as np
 
 from rigidsym.course.answer_classes import column_signs, declared, names_of, rotations_onto
+from rigidsym.course.box_kinds import ZERO, constant
+from rigidsym.course.exam_text import lms_statement
 from rigidsym.course.grading import RTOL, key_array, replayed_values, slip_values
 from rigidsym.course.worked import exercise_module
 
@@ -134,7 +139,9 @@ def _question(name: str, ident: str, p: dict, sol, credit: tuple[float, float],
                for n in names_of(d)]
     group = {n: d for d in decls if d["kind"] in STACK_KINDS for n in names_of(d)
              if n in boxes}
-    text = [f"<p>{html.escape(p['labels'].get(a, a))}: [[input:{inputs[a]}]] "
+    # "[[" opens a STACK tag (an input, a feedback): a block matrix's brackets as entities
+    text = [lms_statement(p).replace("[", "&#91;")]
+    text += [f"<p>{html.escape(p['labels'].get(a, a))}: [[input:{inputs[a]}]] "
             f"[[validation:{inputs[a]}]] [[feedback:prt_{inputs[a]}]]</p>"
             for a in boxes if a not in skipped]
     text += [f"<p>{html.escape(p['labels'].get(a, a))}: graded by rigidsym grade (import "
@@ -278,7 +285,8 @@ def _feedback(box: str, boxes: dict, inputs: dict, decl: dict | None, sol,
         lines.append(f"isright: if isblank then false else ({near})")
         slips = " or ".join(dict.fromkeys(
             t for m in members for t in _slip_tests(inp, sol, box, m, None, None, replayed)))
-        lines.append(f"isslip: if isblank then false else ({slips or 'false'})")
+        lines.append(f"isslip: if isblank then false else if {_trivial(inp, sol, k)} then "
+                     f"false else ({slips or 'false'})")
         rounded = " or ".join(_rounded_tests(inp, m) for m in members)
         lines.append(f"isrounded: if isblank then false else ({rounded})")
     else:
@@ -308,7 +316,33 @@ def _slips(inp: str, sol, box: str, target: np.ndarray, period, along,
     ``replayed``: the solution's replays, computed once per question)."""
     body = " or ".join(dict.fromkeys(_slip_tests(inp, sol, box, target, period, along,
                                                  replayed))) or "false"
-    return f"if is({inp} = EMPTYANSWER) then false else ({body})"
+    if body == "false":
+        return f"if is({inp} = EMPTYANSWER) then false else false"
+    return (f"if is({inp} = EMPTYANSWER) then false else if {_trivial(inp, sol, target)} "
+            f"then false else ({body})")
+
+
+def _trivial(inp: str, sol, target: np.ndarray) -> str:
+    """``is`` the answer trivial, as :func:`rigidsym.course.box_kinds.trivial` decides: all
+    zero (within the tolerance of the key's largest entry), all entries equal, or a datum
+    of the exercise echoed: such an answer earns no slip credit."""
+    from rigidsym.course.grading import data_arrays
+
+    matrix = target.ndim > 0
+    flat = f"flatten(args({inp}))" if matrix else inp
+    top = f"lmax(abs({flat}))" if matrix else f"abs({inp})"
+    tests = [f"is({top} <= {ZERO!r})"]
+    if target.size > 1 and not constant(target, RTOL):
+        tests.append(f"is(lmax({flat}) - lmin({flat}) <= {RTOL!r}*{top})")
+    for d in data_arrays(sol):
+        d = d.reshape(-1)
+        if d.size != target.size:
+            continue
+        lit = ("[" + ",".join(repr(float(x)) for x in d) + "]") if matrix else \
+            repr(float(d[0]))
+        dist = f"lmax(abs({flat} - {lit}))" if matrix else f"abs({inp} - {lit})"
+        tests.append(f"is({dist} <= {RTOL!r}*max({float(np.max(np.abs(d)))!r}, {top}))")
+    return "(" + " or ".join(tests) + ")"
 
 
 def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
@@ -319,7 +353,7 @@ def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
     for _, value in slip_values(sol, box, target, replayed=replayed):
         if value.shape != target.shape:
             continue
-        s = max(sc, float(np.max(np.abs(value))) if value.size else 0.0)
+        s = float(np.max(np.abs(value))) if value.size else sc    # the slipped key's
         t = target.reshape(-1)
         i = int(np.argmax(np.abs(t)))
         f = abs(float(value.reshape(-1)[i] / t[i])) if t.size and t[i] else 1.0
@@ -328,7 +362,7 @@ def _slip_tests(inp: str, sol, box: str, target: np.ndarray, period, along,
         elif along is not None:
             tests.append(_along(inp, value, along, s))
         else:
-            tests.append(_near(inp, value, s))
+            tests.append(_near(inp, value, s, floor=False))
     return tests
 
 
@@ -376,12 +410,15 @@ def _dist(expr: str, matrix: bool, minus: str = "") -> str:
     return f"lmax({a})" if matrix else a
 
 
-def _tol(scale: float) -> str:
-    return repr(RTOL * scale + 1e-12)
+def _tol(scale: float, floor: bool = True) -> str:
+    return repr(RTOL * scale + (1e-12 if floor else 0.0))
 
 
-def _near(inp: str, value: np.ndarray, scale: float) -> str:
-    return f"is({_dist(f'{inp} - {_lit(value)}', value.ndim > 0)} <= {_tol(scale)})"
+def _near(inp: str, value: np.ndarray, scale: float, floor: bool = True) -> str:
+    """``is`` the answer within the tolerance of ``value`` (``floor``: plus 1e-12, as the
+    grader compares with the key; a slip's value is compared relative to itself alone,
+    as :func:`rigidsym.course.box_kinds.slip_close`)."""
+    return f"is({_dist(f'{inp} - {_lit(value)}', value.ndim > 0)} <= {_tol(scale, floor)})"
 
 
 def _wrapped(inp: str, value: np.ndarray, period: float, scale: float) -> str:
