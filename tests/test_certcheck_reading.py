@@ -39,6 +39,20 @@ def _line(cert: dict, pred) -> dict:
     return next(e for e in cert["symbols"] if pred(e))
 
 
+@pytest.fixture(scope="module")
+def few():
+    """Three ids' certificates of their recorded verdicts: 3.13 (e unit, phi, Q as (2.49)
+    prints it), 3.22 (a definition with models), 3.50 (a rotation, its rates, dotted
+    models)."""
+    from rigidsym.checking.certifying.certificates import certificate
+    from rigidsym.registry.declarations import REGISTRY, load_all
+
+    load_all()
+    return {i: json.loads(json.dumps(certificate(i, REGISTRY[i].expected)))
+            for i in ("3.13", "3.22", "3.50")}
+
+
+@pytest.mark.slow  # every id: the thorough run; test_forgeries_... holds three in the quick
 def test_every_chapter_certificate_is_the_reading_s(chapter_certificates):
     """181 ids: each certificate's tables and class are exactly the reading's, and the
     reading lists every id once (no id the reading leaves to the certificate)."""
@@ -120,10 +134,12 @@ def _forgeries(certs: dict) -> list[tuple[str, str, dict]]:
     return out
 
 
-def test_forgeries_of_the_table_and_class_rejected_naming_the_id(chapter_certificates):
+def test_forgeries_of_the_table_and_class_rejected_naming_the_id(few):
     """Each forgery fails with a message naming its id (certcheck prints it on the id's
-    FAILED line)."""
-    found = _forgeries(chapter_certificates)
+    FAILED line); the genuine three bind."""
+    for i, c in few.items():
+        assert bind(c, READ)[0].startswith("reading: "), i
+    found = _forgeries(few)
     assert len(found) == 13, [w for w, *_ in found]
     for what, i, c in found:
         assert f"({i})" in _rejected(c), what
@@ -155,6 +171,7 @@ def _perturbed(entry: str, rng: random.Random) -> str:
     return name + "'" + sep + rest
 
 
+@pytest.mark.slow  # the chapter's certificates: built in the thorough run anyway
 def test_each_line_of_the_reading_perturbed_fails_the_ids_it_serves(chapter_certificates,
                                                                      tmp_path):
     """A seeded sample of the reading's [[let]] lines (every line in the thorough run), each
@@ -189,7 +206,7 @@ def _certcheck(*args) -> subprocess.CompletedProcess:
                           capture_output=True, text=True, timeout=600)
 
 
-def test_the_command_binds_to_the_reading_and_fails_closed(chapter_certificates, tmp_path):
+def test_the_command_binds_to_the_reading_and_fails_closed(few, tmp_path):
     """The command: a genuine pair of certificates passes with --reading (exit 0, their
     table bound); the same folder without --reading exits 3 (the tables are the
     certificate's word); a forged table, an id twice in one run, a reading the manifest
@@ -200,17 +217,16 @@ def test_the_command_binds_to_the_reading_and_fails_closed(chapter_certificates,
     book = book_path()   # skips where the chapter is absent: exit 0 needs the page read
     ids = ["3.13", "3.22"]
     run = tmp_path / "run"
-    write_run(run, {f"{i}.json": chapter_certificates[i] for i in ids}, book)
+    write_run(run, {f"{i}.json": few[i] for i in ids}, book)
     p = _certcheck("--quiet", "--book", book, "--reading", READING, run)
     assert p.returncode == 0, p.stdout + p.stderr
     assert _certcheck("--quiet", "--book", book, run).returncode == 3
-    forged = {f"{i}.json": chapter_certificates[i] for i in ids}
-    forged["3.13.json"] = _forgeries({"3.13": chapter_certificates["3.13"],
-                                      "3.22": chapter_certificates["3.22"]})[0][2]
+    forged = {f"{i}.json": few[i] for i in ids}
+    forged["3.13.json"] = _forgeries(few)[0][2]
     write_run(tmp_path / "forged", forged, book)
     p = _certcheck("--quiet", "--book", book, "--reading", READING, tmp_path / "forged")
     assert p.returncode == 1 and "FAILED 3.13.json: (3.13)" in p.stdout, p.stdout
-    relabelled = copy.deepcopy(chapter_certificates["3.13"])   # one id, two folders
+    relabelled = copy.deepcopy(few["3.13"])   # one id, two folders
     write_run(tmp_path / "second", {"3.13.json": relabelled}, book)
     p = _certcheck("--quiet", "--book", book, "--reading", READING, run, tmp_path / "second")
     assert p.returncode == 1 and "two certificates of one id" in p.stdout, p.stdout
@@ -218,7 +234,7 @@ def test_the_command_binds_to_the_reading_and_fails_closed(chapter_certificates,
     other.write_text(READING.read_text(encoding="utf-8") + "\n# reviewed again\n")
     p = _certcheck("--quiet", "--book", book, "--reading", other, run)
     assert p.returncode == 1 and "the reading given has SHA-256" in p.stdout, p.stdout
-    big = copy.deepcopy(chapter_certificates["3.22"])
+    big = copy.deepcopy(few["3.22"])
     big["padding"] = "x" * 4_100_000
     write_run(tmp_path / "big", {"3.22.json": big}, book)
     p = _certcheck("--quiet", "--book", book, "--reading", READING, tmp_path / "big")

@@ -448,16 +448,23 @@ def _audit(func, as_, names, seed, dtypes, search, n_start, steps, spec,
         rep.findings.insert(0, Finding("note", "output", kind.says))
     rep.wrong = wrong
     rep.framework = getattr(call, "framework", "")
-    if m is not None and gradients:
-        rep.gradients = _gradients(functools.partial(func, **keywords) if keywords else func,
-                                   tgt, m, rep.framework, seed, point[0])
+    return _told_all(rep, functools.partial(func, **keywords) if keywords else func, tgt, m,
+                     (seed, point[0]) if gradients else None, undefined, sign)
+
+
+def _told_all(rep: AuditReport, func, tgt, m, gradients, undefined, sign) -> AuditReport:
+    """The rest of an audit's report: the gradients checked (``gradients``: ``(seed,
+    point)``, or ``None``), the framework's version, each wrong output told, an undefined
+    axis and the library's sign convention as findings."""
+    if m is not None and gradients is not None:
+        rep.gradients = _gradients(func, tgt, m, rep.framework, *gradients)
         if rep.gradients.get("wrong"):
             rep.findings.append(_gradient_finding(rep.gradients))
     if rep.framework:
         from rigidsym.auditing.callables import framework_version
 
         rep.versions[rep.framework] = framework_version(rep.framework) or "not known"
-    told = _told(wrong)
+    told = _told(rep.wrong)
     if told is not None:
         rep.findings.append(told)
     if undefined is not None:

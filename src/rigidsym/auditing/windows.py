@@ -183,7 +183,6 @@ def approaches(kernel, seed: int) -> list[Approach]:
     (its first block) toward 0, a rotation vector's toward pi from both sides, and the
     distance to each derived zero of a norm. Each draw takes a new axis and new other
     arguments (seeded by ``seed`` and the draw)."""
-    from rigidsym.codegen.accuracy.singular_sets import norm_zeros
 
     cache: dict = {}
 
@@ -257,6 +256,15 @@ def approaches(kernel, seed: int) -> list[Approach]:
                         x, e, False))),
                     Approach("eta: phi->pi", "pi - phi", put(i, lambda x, e, d, _, f=quat: f(
                         x, e, True)))]
+    return out + _derived(kernel, drawn)
+
+
+def _derived(kernel, drawn) -> list[Approach]:
+    """The approaches of :func:`approaches` to each derived zero of a norm (both sides),
+    ``drawn`` its draws of the other arguments and directions."""
+    from rigidsym.codegen.accuracy.singular_sets import norm_zeros
+
+    out: list[Approach] = []
     seen = set()
     for z in norm_zeros(kernel):
         t0 = float(z.theta0)

@@ -132,6 +132,39 @@ def _head(title: str, st: dict, seed: int, version: str) -> str:
             f"<b>Version:</b> {version}</p>\n")
 
 
+def _draw_student(ctx: dict, i: int, taken: dict | None = None) -> dict:
+    """Student i's exam of :func:`class_exam` (``ctx``: its spec, roster, seeds, file
+    names, title, folder and weights): drawn (against ``taken``: the draws of the students
+    before i), its handout written; its key record and section, and its drawn data keys."""
+    spec, students, seeds, slugs = ctx["spec"], ctx["students"], ctx["seeds"], ctx["slugs"]
+    title, out, given, slots = ctx["title"], ctx["out"], ctx["given"], ctx["slots"]
+    spec_weights = ctx["spec_weights"]
+    st, own = students[i], seeds[i]
+    drawn = _exam.drawn_exercises(spec, own, taken)
+    sols = [s for s, _ in drawn]
+    version = version_of(sols)
+    head = _head(title, st, own, version)
+    files = {f"handouts/{slugs[i]}.html": _exam.handout_text(f"{title}: {st['name']}",
+                                                             sols, head, columns=True)}
+    section = _key_section(head, sols)
+    files[f"keys/{slugs[i]}.html"] = _exam.handout_page(
+        f"{title}: answer key of {st['name']}", section)
+    for rel, text in files.items():
+        write_atomic(out / rel, text)
+    problems = [dict(solution_record(s), problem=n, spec_problem=k,
+                     weight=given[n - 1] if given is not None else spec_weights[k - 1],
+                     asked=_exam.asked(s),
+                     labels={a: box_label(s.id, a) for a in _exam.asked(s)},
+                     task=task(s.id, s.statement))
+                for n, (s, k) in enumerate(drawn, 1)]
+    return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
+                       "seed": own, "version": version,
+                       "handout": f"handouts/{slugs[i]}.html", "problems": problems},
+            "section": section, "files": files,
+            "drawn": [(slot, _exam.variant_key(s)) for slot, s in zip(slots, sols, strict=True)
+                      if slot is not None]}
+
+
 def class_exam(spec, roster: str | Path, out_dir: str | Path,
                seed: int | None = None, weights: list[float] | None = None
                ) -> dict[str, Path]:
@@ -173,6 +206,8 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
     slugs = _unique_slugs(students)
     seeds = [student_seed(seed, st["name"]) for st in students]
 
+    ctx = {"spec": spec, "students": students, "seeds": seeds, "slugs": slugs, "title": title,
+           "out": out, "given": given, "spec_weights": spec_weights, "slots": slots}
     kept_at = [_kept_at(spec, seed, title, given, st, slug, own)
                for st, slug, own in zip(students, slugs, seeds, strict=True)]
     interrupts.note_kept(lambda: sum(_cache.get(p) is not None for p in kept_at),
@@ -189,40 +224,12 @@ def class_exam(spec, roster: str | Path, out_dir: str | Path,
                     _write_if_changed(out / rel, text)
                 interrupts.checkpoint("advance")
                 return done
-        done = draw(i, taken)
+        done = _draw_student(ctx, i, taken)
         if taken is None:
             _cache.put(kept_at[i], pickle.dumps(done))
         interrupts.checkpoint("advance")
         done.pop("files")
         return done
-
-    def draw(i: int, taken: dict | None = None) -> dict:
-        """Student i's exam: drawn (against ``taken``: the draws of the students before
-        i), its handout written; its key record and section, and its drawn data keys."""
-        st, own = students[i], seeds[i]
-        drawn = _exam.drawn_exercises(spec, own, taken)
-        sols = [s for s, _ in drawn]
-        version = version_of(sols)
-        head = _head(title, st, own, version)
-        files = {f"handouts/{slugs[i]}.html": _exam.handout_text(f"{title}: {st['name']}",
-                                                                 sols, head, columns=True)}
-        section = _key_section(head, sols)
-        files[f"keys/{slugs[i]}.html"] = _exam.handout_page(
-            f"{title}: answer key of {st['name']}", section)
-        for rel, text in files.items():
-            write_atomic(out / rel, text)
-        problems = [dict(solution_record(s), problem=n, spec_problem=k,
-                         weight=given[n - 1] if given is not None else spec_weights[k - 1],
-                         asked=_exam.asked(s),
-                         labels={a: box_label(s.id, a) for a in _exam.asked(s)},
-                         task=task(s.id, s.statement))
-                    for n, (s, k) in enumerate(drawn, 1)]
-        return {"record": {"student": st["name"], "id": st["id"], "email": st["email"],
-                           "seed": own, "version": version,
-                           "handout": f"handouts/{slugs[i]}.html", "problems": problems},
-                "section": section, "files": files,
-                "drawn": [(slot, _exam.variant_key(s)) for slot, s in zip(slots, sols, strict=True)
-                          if slot is not None]}
 
     made = _draw_all(make, len(students))
     records = [m["record"] for m in made]
