@@ -53,7 +53,9 @@ def _numeric_boxes(s):
 #: reason's neighbours); the others' boxes in the thorough run: each exercise is solved
 #: when its test runs, never at collection (solving all 21 costs tens of seconds)
 QUICK = ("ex3.1", "ex3.4", "ex3.5", "ex3.10", "ex3.19")
-EXERCISES = [pytest.param(e, marks=() if e in QUICK else pytest.mark.slow, id=e[2:])
+EXERCISES = [pytest.param(e, marks=() if e in QUICK else (pytest.mark.slow,
+                                                                  pytest.mark.unpriced),
+                          id=e[2:])
              for e in EXERCISE_IDS]
 
 
