@@ -146,11 +146,10 @@ def _cert_lines(cert: dict, table: list, atoms: dict, where: str) -> list:
     """A certificate's table as canonical lines (checking each line's own structure)."""
     if not isinstance(table, list) or len(table) > MAX_LINES:
         raise ReadingError(f"{where}: a symbol table of at most {MAX_LINES} lines expected")
-    out, by_glyph = [], {}
+    out = []
     for e in table:
         if not isinstance(e, dict) or not isinstance(e.get("glyph"), str):
             raise ReadingError(f"{where}: a symbol line without a glyph: {e!r}")
-        by_glyph.setdefault(e["glyph"], []).append(e)
     for e in table:
         g = e["glyph"]
         keys = set(e) - {"glyph"}
