@@ -23,7 +23,8 @@ def plane_normal(a, e, p) -> sp.Matrix:
 
 def quadric(lines, p):
     """``f(p) = det[N_1, N_2, N_3]`` and its coefficients ``M`` (symmetric), ``g``, ``h``."""
-    f = sp.expand(sp.Matrix.hstack(*[plane_normal(a, e, p) for a, e in lines]).det())
+    n1, n2, n3 = (plane_normal(a, e, p) for a, e in lines)
+    f = sp.expand(n1.dot(n2.cross(n3)))
     M = sp.hessian(f, list(p)) / 2
     zero = dict.fromkeys(p, 0)
     g = sp.Matrix([sp.diff(f, v) for v in p]).subs(zero)
@@ -41,10 +42,16 @@ def _origin_check(s: Solution) -> None:
              (sp.Matrix([1, 1, 0]), sp.Matrix([0, 0, 1]))]
     f, M, _, _ = quadric(lines, p)
     vals = [f.subs(dict(zip(p, c, strict=True))) for c in ([0, 0, 0], [2, 2, 2], [0, 1, 0])]
-    ok = M.det() != 0 and max(vals) > 0 > min(vals)
+    ok = det3(M) != 0 and max(vals) > 0 > min(vals)
     s.check(truth_check("one quadric, det M != 0, and f takes both signs at origins c: h = "
                         "f(c) > 0 or < 0 for the same det M", ok,
-                        f"det M = {M.det()}, f(c) = {', '.join(map(str, vals))} (exact)"))
+                        f"det M = {det3(M)}, f(c) = {', '.join(map(str, vals))} (exact)"))
+
+
+def det3(m: sp.Matrix) -> sp.Expr:
+    """det of a 3 x 3 matrix as the triple product of its columns (sympy's default Bareiss
+    elimination simplifies every product on the way: seconds a call on symbolic entries)."""
+    return m[:, 0].dot(m[:, 1].cross(m[:, 2]))
 
 
 def mutual_moment(l1, l2):
@@ -99,7 +106,7 @@ def solve() -> Solution:
                   for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1))), sp.zeros(3, 3)) / 2
     g_book = -(e[0].cross(n[1].cross(n[2])) + e[1].cross(n[2].cross(n[0]))
                + e[2].cross(n[0].cross(n[1])))
-    h_book = sp.Matrix.hstack(*n).det()
+    h_book = det3(sp.Matrix.hstack(*n))
     # coefficient of det M: derive in the frame of the common perpendicular of L_1, L_2
     d, t_, b1, b2, b3, q1, q2, q3 = sp.symbols("d t b1 b2 b3 q1 q2 q3", real=True)
     special = [(sp.zeros(3, 1), sp.Matrix([1, 0, 0])),
@@ -108,13 +115,13 @@ def solve() -> Solution:
     _, Ms, _, _ = quadric(special, p)
     prod_s = (mutual_moment(special[0], special[1]) * mutual_moment(special[1], special[2])
               * mutual_moment(special[2], special[0])
-              * sp.Matrix.hstack(*[e for _, e in special]).det())
-    s.step("det M in adapted axes", sp.factor(Ms.det()),
+              * det3(sp.Matrix.hstack(*[e for _, e in special])))
+    s.step("det M in adapted axes", sp.factor(det3(Ms)),
            "Axes: L_1 the X axis, L_2 through (0, 0, d) normal to Z (Z along the common "
            "perpendicular), as the hint suggests.")
-    k = sp.cancel(Ms.det() / prod_s)
+    k = sp.cancel(det3(Ms) / prod_s)
     mu = [mutual_moment(lines[i], lines[j]) for i, j in ((0, 1), (1, 2), (2, 0))]
-    detE = sp.Matrix.hstack(*[e for _, e in lines]).det()
+    detE = sp.expand(det3(sp.Matrix.hstack(*[e for _, e in lines])))
     law = s.step("det M", k * mu[0] * mu[1] * mu[2] * detE,
                  "det M = k mu_12 mu_23 mu_31 det[e_1, e_2, e_3] (frame-free form, decided "
                  "below for generic lines); mu_ij = (a_i - a_j).(e_i x e_j) vanishes iff "
@@ -150,12 +157,12 @@ def solve() -> Solution:
                            [f.subs(dict(zip(p, a + lam * e, strict=True)),
                                    simultaneous=True) for a, e in lines]))
     s.check(identity_check("det M = k mu_12 mu_23 mu_31 det[e_1, e_2, e_3], generic lines",
-                           [M.det() - law]))
+                           [det3(M) - law]))
     s.check(nonidentity_check("det M is not identically zero (hyperboloid for generic lines)",
-                              [M.det()]))
+                              [det3(M)]))
     par = [(sp.zeros(3, 1), sp.Matrix([1, 0, 0])), (sp.Matrix([0, 0, 1]), sp.Matrix([1, 1, 0])),
            (sp.Matrix([0, 0, 2]), sp.Matrix([0, 1, 0]))]
     _, Mp, _, _ = quadric(par, p)
     s.check(identity_check("counterexample: three skew lines parallel to the X-Y plane give "
-                           "det M = 0 (hyperbolic paraboloid)", [Mp.det()]))
+                           "det M = 0 (hyperbolic paraboloid)", [det3(Mp)]))
     return s
