@@ -284,8 +284,8 @@ def _findings(found: C.Found, tgt, beh: dict, wins: dict, batch: str,
                                    f"seed met {again:.3g} x at most there: not confirmed, "
                                    f"not a finding"))
             elif np.isfinite(b.worst_ratio) and b.worst_ratio >= W.FIND:
-                u = 2.0**-53 if dt == "float64" else 2.0**-24
-                kind = "silent wrong" if b.worst_ratio * 8 * u > 1e-3 else "inaccurate"
+                # wrong past 0.1 % of its size: a wrong value, whatever kappa allows
+                kind = "silent wrong" if b.worst_err > 1e-3 else "inaccurate"
                 out.append(Finding(sev, kind, f"{dt}, {b.regime}: error {b.worst_ratio:.3g} "
                                    f"x the bound 8 u (kappa + 1) (rigidsym's kernel: "
                                    f"{b.kernel_worst_ratio:.2g} x)" +

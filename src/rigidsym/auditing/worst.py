@@ -156,6 +156,7 @@ class Behaviour:
     regime: str
     n: int = 0
     worst_ratio: float = 0.0
+    worst_err: float = 0.0   # the largest normwise relative error met (finite outputs)
     kernel_worst_ratio: float = 0.0
     nan: int = 0             # non-finite where the truth is finite (a silent wrong)
     raised: int = 0          # exceptions where the truth is finite
@@ -430,6 +431,8 @@ def sweep(tgt: Target, member: Member, func: Callable, dtype, seed: int = 0,
             if len(b.examples) < 2:
                 b.examples.append(j)
         b.worst_ratio = max(b.worst_ratio, j.ratio)
+        if not j.flag and math.isfinite(j.err):
+            b.worst_err = max(b.worst_err, j.err)
         b.over += int(j.ratio >= FIND)
         # the ends of the floating range rank after every other regime
         key = (not extreme(regime), j.ratio)
@@ -579,6 +582,15 @@ def truth_at(name: str, point, dtype) -> tuple[np.ndarray | None, list[np.ndarra
 DISAGREE = 1e-8
 
 
+def _same_rotations(tgt: Target, pairs: list) -> bool:
+    """Each pair ``(batched row, row alone)`` denotes one rotation (within :data:`SAME`)."""
+    for b, r in pairs:
+        Rb, Rr = rotation_of(tgt, tgt.kernel, b), rotation_of(tgt, tgt.kernel, r)
+        if Rb is None or Rr is None or not _angle(Rb, Rr) <= SAME:
+            return False
+    return True
+
+
 def batch_dependence(func: Callable, member: Member, tgt_kernel, rng,
                      tgt: Target | None = None) -> str:
     """Whether the function takes a batch in its form and, if so, whether a row alone and
@@ -612,8 +624,13 @@ def batch_dependence(func: Callable, member: Member, tgt_kernel, rng,
         return ("batched; each row equal bit for bit to the row alone" if worst == 0 else
                 f"batched; a row in the batch differs from the row alone by up to "
                 f"{worst:.3g}")
-    off = sum(1 for b, r in zip(batched, rows, strict=True)
-              if not np.linalg.norm(b - r) < DISAGREE * np.linalg.norm(r))
+    apart = [(b, r) for b, r in zip(batched, rows, strict=True)
+             if not np.linalg.norm(b - r) < DISAGREE * np.linalg.norm(r)]
+    off = len(apart)
+    if tgt is not None and tgt.equivalent and _same_rotations(tgt, apart):
+        return (f"batched; a row in the batch differs from the row alone at {off} of "
+                f"{len(pts)} ordinary inputs: another member of its class, the same "
+                f"rotation ({tgt.equivalent})")
     what = ""
     if tgt is not None:
         name = tgt.kernel
