@@ -49,3 +49,13 @@ def test_no_verdict_of_the_blind_trial_is_wrong(case):
         return
     said = r.verdict in ("verified", "definition")
     assert said is case["truth"], (r.verdict, r.model)
+
+
+def test_a_counterexample_avoids_the_points_where_a_side_is_undefined():
+    """Stevens-Lewis-Johnson's Euler rates with a sign slipped: tan(theta) in a --let is
+    undefined at theta = pi/2, a small witness the search meets; the point shown is one where
+    both sides are defined (before: undecided, 'ZeroDivisionError while checking')."""
+    case = next(c for c in CASES if c["id"] == "sl-euler-rates-slip")
+    r = rigidsym.check_latex(case["latex"], let=case["lets"], repairs=False)
+    assert r.verdict == "does-not-hold", (r.verdict, r.detail)
+    assert r.counterexample and "theta" in r.counterexample["point"]

@@ -127,3 +127,51 @@ def test_a_refusal_names_its_construct_and_leaks_nothing(latex, let):
 def test_a_label_before_a_subscript_is_the_same_glyph(latex, verdict):
     # \mathbf{a}^S_1 is TeX's \mathbf{a}_1^S (never refused: "unexpected '_'")
     assert _v(latex, [r"\mathbf{a}_1^S: unit vector"]) == verdict
+
+
+def test_the_truth_of_the_spelling_cases_by_numpy():
+    """Szeliski's v = v_par + cos(theta) v_perp + sin(theta) v_x is R v (Rodrigues), and with
+    cos and sin swapped it is not; a point mass's inertia m (r^T r 1 - r r^T) annihilates r."""
+    rng = np.random.default_rng(64)
+    n, v, r = rng.normal(size=(3, 3))
+    n /= np.linalg.norm(n)
+    th, m = 0.7, 2.5
+    N = np.array([[0, -n[2], n[1]], [n[2], 0, -n[0]], [-n[1], n[0], 0]])
+    R = np.eye(3) + np.sin(th) * N + (1 - np.cos(th)) * N @ N
+    par, cross = n * (n @ v), np.cross(n, v)
+    assert np.allclose(R @ v, par + np.cos(th) * (v - par) + np.sin(th) * cross)
+    assert not np.allclose(R @ v, par + np.sin(th) * (v - par) + np.cos(th) * cross)
+    inertia = m * ((r @ r) * np.eye(3) - np.outer(r, r))
+    assert np.allclose(inertia @ r, 0) and not np.allclose(inertia @ n, 0)
+
+
+_SZELISKI = [r"\hat{\mathbf{n}}: unit vector", r"\theta: angle", r"\mathbf{v}: vector",
+             r"\mathbf{v}_\parallel = \hat{\mathbf{n}}(\hat{\mathbf{n}}\cdot\mathbf{v})",
+             r"\mathbf{v}_\perp = \mathbf{v} - \mathbf{v}_\parallel",
+             r"\mathbf{v}_\times = \hat{\mathbf{n}}\times\mathbf{v}",
+             r"\mathbf{R} = \mathbf{I} + \sin\theta[\hat{\mathbf{n}}]_\times + (1 - \cos\theta)"
+             r"[\hat{\mathbf{n}}]_\times^2"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\mathbf{R}\mathbf{v} = \mathbf{v}_\parallel + \cos\theta\,\mathbf{v}_\perp + "
+     r"\sin\theta\,\mathbf{v}_\times", "verified"),
+    (r"\mathbf{R}\mathbf{v} = \mathbf{v}_\parallel + \sin\theta\,\mathbf{v}_\perp + "
+     r"\cos\theta\,\mathbf{v}_\times", "does-not-hold"),
+])
+def test_a_declared_name_with_a_cross_subscript_is_a_name_of_its_own(latex, verdict):
+    """Szeliski's v_\\times = n x v, declared by the reader, is a vector named v_\\times (not
+    Eade's cross-product matrix [v]_\\times, which an undeclared v_\\times still reads as)."""
+    assert _v(latex, _SZELISKI) == verdict
+
+
+@pytest.mark.parametrize("rhs, verdict", [
+    (r"\mathbf{0}", "verified"),
+    (r"m\,\mathbf{r}", "does-not-hold"),
+])
+def test_a_thin_space_inside_parentheses_is_no_argument_comma(rhs, verdict):
+    """m(r^T r\\, 1 - r r^T): the thin space \\, is spacing, not the comma of an application
+    to two arguments (before: "unexpected ')' ... expected one of: , or \\quad")."""
+    let = [r"m: scalar", r"\mathbf{r}: vector",
+           r"\mathbf{J} = m(\mathbf{r}^T\mathbf{r}\,\mathbf{1} - \mathbf{r}\mathbf{r}^T)"]
+    assert _v(r"\mathbf{J}\mathbf{r} = " + rhs, let) == verdict

@@ -314,6 +314,20 @@ _GLYPH_END = re.compile(r"(?:" + _GLYPH + r")\s*$")
 _SUB_TIMES = re.compile(r"_\s*\\times(?![A-Za-z])")
 
 
+def _named_cross_subscripts(let: object) -> set[str]:
+    """The glyphs ``X`` whose ``X_\\times`` a declaration names on its left (Szeliski's
+    ``\\mathbf{v}_\\times = \\hat{\\mathbf{n}}\\times\\mathbf{v}``, a vector): names of
+    their own, never respelt, in the LaTeX or the declarations."""
+    out = set()
+    for d in _decls(let) or []:
+        name = re.split(r"[:=]", d, maxsplit=1)[0]
+        m = _SUB_TIMES.search(name)
+        g = _GLYPH_END.search(name[:m.start()]) if m else None
+        if g:
+            out.add(re.sub(r"\s+", "", g.group(0)))
+    return out
+
+
 def cross_subscripts(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``X_\\times`` of one glyph or of a parenthesised
     expression (Eade's ``\\boldsymbol\\omega_\\times``,
@@ -323,6 +337,7 @@ def cross_subscripts(latex: str, let: object) -> tuple[str, object, str]:
     Args and Raises: as :func:`declared_e`.
     """
     hits: list[str] = []
+    named = _named_cross_subscripts(let)
 
     def respell(text: str) -> str:
         k = 0
@@ -347,7 +362,7 @@ def cross_subscripts(latex: str, let: object) -> tuple[str, object, str]:
                 g = _GLYPH_END.search(head)
                 if g:
                     start, inner = g.start(), g.group(0).strip()
-            if inner is None:
+            if inner is None or re.sub(r"\s+", "", inner) in named:
                 k = m.end()
                 continue
             hits.append(inner)

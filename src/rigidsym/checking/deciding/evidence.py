@@ -76,9 +76,11 @@ def _consistent(entries, plan, pt) -> bool:
     value ``2M atan(tau)`` (the zero test treats a bare angle as a variable of its own, so
     ``theta = acos(cos theta)`` is non-zero at ``theta = 1/2, tau = 0``, where the angle is
     0 and both sides vanish): the point shown must be one where the sides differ."""
+    # computed in every case: a point where a side is undefined once the bare angles take
+    # their values (tan theta at theta = pi/2) raises here and the search goes on
+    vals = [_exact_value(e, plan, pt) for e in entries]
     if not any(a in plan.angles for a in plan.bare):
         return True
-    vals = [_exact_value(e, plan, pt) for e in entries]
     return any(abs(float(sp.N(v, 30))) > 1e-12 for v in vals)
 
 

@@ -61,6 +61,9 @@ class GlyphRules:
     def times(self, _):
         return "\\times "
 
+    def sub_times(self, _):
+        return ("sub", "\\times ")   # v_\times is v_{\times}: one name in TeX
+
     def slash(self, _):
         return "/"
 
