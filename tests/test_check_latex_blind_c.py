@@ -19,10 +19,9 @@ import rigidsym
 DATA = Path(__file__).resolve().parent / "data" / "blind_trial_c.json"
 CASES = json.loads(DATA.read_text())["cases"]
 
-#: wrong as typed: Szeliski's quaternion (x, y, z, w) multiplies by Hamilton's rule (2.42);
-#: the checker's two readings of \otimes tie the rule to the storage order (Hamilton scalar
-#: first, JPL scalar last), so neither is the book's, and both say does-not-hold
-KNOWN_WRONG = {"sz-product-otimes"}
+#: wrong as typed: none (Szeliski's quaternion (x, y, z, w) multiplied by Hamilton's rule
+#: (2.42) is asked: the readings of \otimes include Hamilton's rule with the scalar last)
+KNOWN_WRONG: set[str] = set()
 
 
 def test_the_recorded_truths_are_the_numpy_checks():

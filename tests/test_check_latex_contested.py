@@ -103,10 +103,21 @@ PRODUCT_SLIP = r"\mathbf{C}(\bar q\otimes\bar p) = \mathbf{C}(\bar p)\mathbf{C}(
 @pytest.mark.parametrize("lets, own", [(TRAWNY, "JPL"),
                                        pytest.param(HAMILTON, "Hamilton", marks=SLOW)])
 def test_the_storage_order_of_the_users_lets_fixes_the_product_and_is_said(lets, own):
+    """The scalar first (Solà's q_0 = \\bar q_{1:1}) is Hamilton's in every book: decided and
+    said. The scalar last (Trawny's \\mathbf{q} = \\bar q_{1:3}) is read with either rule
+    (JPL's; Hamilton's in Szeliski, Eigen, ROS): the product and its slip are asked, naming
+    the let that fixed the layout, until the rule is declared."""
+    if own == "JPL":
+        for latex in (PRODUCT, PRODUCT_SLIP):
+            with pytest.raises(BadInput, match=r"puts the scalar last, which does not fix the "
+                               r"rule of the units.*Trawny.*Szeliski"):
+                _check(latex, lets)
+        lets = lets + [r"\otimes: JPL"]
     r = _check(PRODUCT, lets)
     assert r.verdict == "verified", r.model
     said = [m for m in r.model if m.startswith("quaternion product:")]
-    assert said and f"{own}'s, the storage order fixed by --let" in said[0], said
+    assert said and f"{own}'s" in said[0], said
+    assert own == "JPL" or "the storage order fixed by --let" in said[0], said
     assert _check(PRODUCT_SLIP, lets).verdict == "does-not-hold"
 
 

@@ -27,6 +27,9 @@ Q = [r"\mathbf{q}: unit 4-vector"]
 #: q ⊗ q^* is the identity quaternion: [1; 0; 0; 0] scalar first, [0; 0; 0; 1] scalar last
 UNIT_FIRST = r"\mathbf{q}\otimes\mathbf{q}^* = \begin{bmatrix} 1 \\ 0 \\ 0 \\ 0 \end{bmatrix}"
 UNIT_LAST = r"\mathbf{q}\otimes\mathbf{q}^* = \begin{bmatrix} 0 \\ 0 \\ 0 \\ 1 \end{bmatrix}"
+#: i ⊗ j = k with the scalar last: Hamilton's units (Szeliski's layout), not JPL's (ij = -k)
+IJ_LAST = (r"\begin{bmatrix} 1 \\ 0 \\ 0 \\ 0 \end{bmatrix}\otimes\begin{bmatrix} 0 \\ 1 "
+           r"\\ 0 \\ 0 \end{bmatrix} = \begin{bmatrix} 0 \\ 0 \\ 1 \\ 0 \end{bmatrix}")
 
 
 @pytest.fixture(autouse=True)
@@ -40,9 +43,10 @@ def test_both_tables_name_the_same_constructs_and_readings_each_written_separate
         assert set(readings) == {r.name for r in CONTESTED[name].readings}, name
 
 
-def _second(latex, lets, choices=None, jpl=False, translation=False) -> bool:
+def _second(latex, lets, choices=None, jpl=False, translation=False, last=None) -> bool:
     """Whether the second semantics, in the reading given, finds the sides equal."""
-    with V.quaternion_convention(jpl), V.tangent_order(translation):
+    with V.quaternion_convention(jpl), V.quaternion_storage(last), \
+            V.tangent_order(translation):
         found = residuals(tree(latex), decls_of(read_lets(lets)), 4, choices=choices)
     worst = max(r.relative for r in found)
     assert worst < VANISHES or worst > FAILS, worst
@@ -62,15 +66,19 @@ def test_the_bracket_cross_disagrees_exactly_where_the_readings_differ(mine, the
     assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)
 
 
-@pytest.mark.parametrize("latex", [UNIT_FIRST, UNIT_LAST])
 @pytest.mark.parametrize("mine", conventions.QUATERNION)
 @pytest.mark.parametrize("theirs", [r.name for r in CONTESTED["quaternion product"].readings])
-def test_the_quaternion_product_disagrees_exactly_where_the_readings_differ(latex, mine,
-                                                                           theirs):
-    verdict = rigidsym.check_latex(latex, let=Q + [rf"\otimes: {theirs}"], repairs=False
-                                   ).verdict
-    equal = _second(latex, Q, jpl=mine == "JPL")
-    assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)
+def test_the_quaternion_product_disagrees_exactly_where_the_readings_differ(mine, theirs):
+    """On the witnesses (the identity in each layout; i ⊗ j = k stored scalar last) the two
+    semantics agree on each where the readings are the same, and differ on one at least where
+    they are not: the scalar's place and the rule of the units are each caught."""
+    differ = []
+    for latex, lets in ((UNIT_FIRST, Q), (UNIT_LAST, Q), (IJ_LAST, [])):
+        verdict = rigidsym.check_latex(latex, let=lets + [rf"\otimes: {theirs}"],
+                                       repairs=False).verdict
+        equal = _second(latex, lets, jpl=mine == "JPL", last=mine != "Hamilton")
+        differ.append(_disagree(verdict, equal))
+    assert any(differ) == (mine != theirs), (mine, theirs, differ)
 
 
 #: the hat of a twist written as the block matrix of an angular-first twist [ω; v]

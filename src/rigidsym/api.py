@@ -183,7 +183,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     ``None`` where the time limit passed before the LaTeX was read)."""
     from rigidsym.latex import contested, limit, quaternions, tangent
     from rigidsym.numeval.conventions import declared_readings
-    from rigidsym.numeval.values import quaternion_convention, tangent_order
+    from rigidsym.numeval.values import quaternion_convention, quaternion_storage, tangent_order
 
     seconds = limit.default_seconds() if timeout == "default" else \
         limit.seconds_argument(timeout)
@@ -193,29 +193,39 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     let, product, product_said = quaternions.split_setting(let, notation)
     let, settled, settled_said = contested.split_settings(let)  # 'bracket cross: content'
     product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
-    if not product_fixed:  # the user's own lets may fix the storage order (scalar last)
-        stored = quaternions.storage_order(let, latex)
-        if stored is not None:
-            product, product_said, product_fixed = \
-                stored[0], f"storage order: {stored[1]}", True
+    # the user's own lets may fix the storage order (scalar last); the rule of the units
+    # stays the declaration's, else both rules are read in that order
+    stored = None if product_fixed else quaternions.storage_order(let, latex)
+    if stored is not None:
+        order_q, product = ("last" if stored[0] == quaternions.JPL else "first"), stored[0]
+    else:  # a declaration's own layout ('\otimes: Hamilton, scalar last'), else the rule's
+        order_q = quaternions.place_of((product_said or "").partition(":")[2])
+    # the scalar first is Hamilton's in every book of the corpora; the scalar last is read
+    # with either rule (JPL's: Trawny & Roumeliotis; Hamilton's: Szeliski, Eigen, ROS)
+    rule_open = not product_fixed and order_q != "first"
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
     t0, seen = process_time(), {}
     try:
         with limit.limited(seconds), quaternions.using(product, product_said), \
                 quaternion_convention(product == quaternions.JPL), \
+                quaternions.stored(order_q, stored[1] if stored else
+                                   f"--let '{product_said}'" if product_said else ""), \
+                quaternion_storage(None if order_q is None else order_q == "last"), \
                 contested.using(settled, settled_said), declared_readings(settled):
             with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
                 r, reading = _check_latex_steps(latex, let, book, modules, repairs,
                                                 repair_budget, notation, repair_seconds, seen)
-            if not product_fixed and r.verdict != "undecided" and any(
-                    n.startswith("quaternion product:") for n in reading.notes):
-                # the product is used and nothing declares its convention: read in JPL's too
-                with quaternions.using(quaternions.JPL, quaternions.OTHER), \
-                        quaternion_convention(True), tangent.using(order, said), \
-                        tangent_order(order == tangent.TRANSLATION):
-                    other, _ = _check_latex_steps(latex, let, book, modules, False,
-                                                  repair_budget, notation, repair_seconds, {})
-                quaternions.both_conventions(r.verdict, other.verdict, reading.notes)
+            if rule_open and r.verdict != "undecided" and any(
+                    "quaternion product:" in n for n in reading.notes):
+                # the product is used and nothing declares its rule: read under the other
+                # rule, and the other scalar's place where nothing fixes it
+                verdicts = {(product, order_q or ("last" if product == quaternions.JPL
+                                                  else "first")): r.verdict}
+                verdicts.update(_other_quaternion_readings(
+                    product, order_q, (latex, let, book, modules, repair_budget, notation,
+                                       repair_seconds), (order, said)))
+                quaternions.both_conventions(verdicts, reading.notes,
+                                             stored[1] if stored else None)
                 r.model = list(r.model) + reading.notes[-1:]
             if fixed or r.verdict == "undecided" or not any(
                     n.startswith("tangent order:") for n in reading.notes):
@@ -230,6 +240,31 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     except limit.TimeUp as exc:
         return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
                         process_time() - t0)
+
+
+def _other_quaternion_readings(product: str, order_q: str | None, args: tuple,
+                               tangent_setting: tuple) -> dict[tuple[str, str], str]:
+    """The verdicts of a statement under each other pair of a quaternion rule of the units
+    and a scalar's place (:data:`rigidsym.latex.quaternions.READINGS`; ``order_q``: the place
+    the lets fix, else any), the first reading ``product`` in its own layout excepted."""
+    from rigidsym.latex import quaternions, tangent
+    from rigidsym.numeval.values import quaternion_convention, quaternion_storage, tangent_order
+
+    latex, let, book, modules, repair_budget, notation, repair_seconds = args
+    order, said = tangent_setting
+    first = (product, order_q or ("last" if product == quaternions.JPL else "first"))
+    out = {}
+    for rule, place in quaternions.READINGS:
+        if (rule, place) == first or (order_q and place != order_q):
+            continue
+        with quaternions.using(rule, quaternions.other_reading(rule, place)), \
+                quaternion_convention(rule == quaternions.JPL), \
+                quaternions.stored(place, ""), quaternion_storage(place == "last"), \
+                tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
+            other, _ = _check_latex_steps(latex, let, book, modules, False,
+                                          repair_budget, notation, repair_seconds, {})
+        out[(rule, place)] = other.verdict
+    return out
 
 
 def _time_up(exc, latex, let, book, modules, notation, reading, seconds):

@@ -61,10 +61,13 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
         (Reading("Hamilton", "scalar first q = [w; x; y; z], ij = k",
                  "Solà (2017) (12), Kok–Hol–Schön (2017)"),
          Reading("JPL", "scalar last q = [x; y; z; w], ij = -k",
-                 "Trawny & Roumeliotis (2005) (8), Breckenridge (1999)")),
-        r"--let '\otimes: Hamilton' or --let '\otimes: JPL' (--notation jpl); a --let that "
-        r"names a 4-vector's entries (q_4 = \bar q_{4:4}, \mathbf{q} = \bar q_{1:3}: scalar "
-        r"last) fixes the storage order and with it the convention"),
+                 "Trawny & Roumeliotis (2005) (8), Breckenridge (1999)"),
+         Reading("Hamilton, scalar last", "scalar last q = [x; y; z; w], ij = k",
+                 "Szeliski (2022) (2.41)-(2.42), Eigen, ROS")),
+        r"--let '\otimes: Hamilton', --let '\otimes: JPL' (--notation jpl) or --let "
+        r"'\otimes: Hamilton, scalar last'; a --let that names a 4-vector's entries "
+        r"(q_0 = \bar q_{1:1}: the scalar first) fixes Hamilton's; one that puts the scalar "
+        r"last (\mathbf{q} = \bar q_{1:3}) leaves the rule of the units to declare"),
     Construct(
         "tangent order", r"a 6-vector's hat, vee, \mathrm{Ad}, \mathrm{ad}",
         (Reading("angular first", "a twist [ω; v]",

@@ -27,7 +27,8 @@ from rigidsym.latex.let_text import split_lets
 
 __all__ = ["HAMILTON", "JPL", "NAMES", "current", "declared", "using", "split_setting",
            "product", "conjugate", "inverse", "said", "NOTATION_PRODUCTS", "word",
-           "storage_order", "both_conventions", "OTHER"]
+           "storage_order", "both_conventions", "other_reading", "READINGS", "scalar_last",
+           "stored", "layout", "place_of"]
 
 HAMILTON, JPL = "Hamilton", "JPL"
 #: the glyphs of the product, as a --let NAME
@@ -36,6 +37,13 @@ NAMES = ("\\otimes", "\\odot")
 NOTATION_PRODUCTS = {"jpl": JPL}
 _CONVENTION: ContextVar[tuple[str, str | None]] = ContextVar("quaternion_convention",
                                                              default=(HAMILTON, None))
+
+
+#: where the reader's own writing fixes the 4-vector's storage order: the scalar "first" or
+#: "last", whatever the rule of the units; ``None``: the convention's own (Hamilton's first,
+#: JPL's last). Szeliski (2022) (2.41)-(2.42), Eigen and ROS store (x, y, z, w) and multiply
+#: by Hamilton's rule: the storage order does not fix the rule
+_STORAGE: ContextVar[tuple[str, str] | None] = ContextVar("quaternion_storage", default=None)
 
 
 def current() -> str:
@@ -64,9 +72,43 @@ def using(convention: str, text: str | None = None) -> Iterator[None]:
         _CONVENTION.reset(token)
 
 
+def scalar_last() -> bool:
+    """Whether the scalar is a 4-vector's last entry in the check running now."""
+    fixed = _STORAGE.get()
+    return current() == JPL if fixed is None else fixed[0] == "last"
+
+
+@contextmanager
+def stored(order: str | None, how: str = "") -> Iterator[None]:
+    """Within the block the scalar is entry ``order`` ("first", "last"; ``None``: where the
+    convention puts it), whatever the rule of the units; ``how``: the writing that fixed it.
+
+    Raises:
+        ValueError: another order.
+    """
+    if order not in (None, "first", "last"):
+        raise ValueError(f"order: expected 'first', 'last' or None, got {order!r}")
+    token = _STORAGE.set(None if order is None else (order, how))
+    try:
+        yield
+    finally:
+        _STORAGE.reset(token)
+
+
 def word(value: str) -> str | None:
-    """The convention a declaration's value names (``"JPL"``, ``" hamilton"``), or ``None``."""
-    return {"hamilton": HAMILTON, "jpl": JPL}.get(value.strip().lower())
+    """The convention a declaration's value names (``"JPL"``, ``" hamilton"``, ``"Hamilton,
+    scalar last"``), or ``None``."""
+    rule, _, place = value.partition(",")
+    if place and place_of(value) is None:
+        return None
+    return {"hamilton": HAMILTON, "jpl": JPL}.get(rule.strip().lower())
+
+
+def place_of(value: str | None) -> str | None:
+    """The scalar's place a declaration's value names after its rule (``"Hamilton, scalar
+    last"``: Szeliski's and Eigen's layout), or ``None`` (the rule's own)."""
+    _, _, place = (value or "").partition(",")
+    return {"scalar first": "first", "scalar last": "last"}.get(" ".join(place.split()).lower())
 
 
 def split_setting(let, notation: str | None = None) -> tuple[object, str, str | None]:
@@ -95,15 +137,35 @@ def split_setting(let, notation: str | None = None) -> tuple[object, str, str | 
             named = word(value)
             if named is None:
                 raise BadInput(f"--let '{s}': expected '{name.strip()}: Hamilton' (scalar "
-                               f"first, ij = k) or '{name.strip()}: JPL' (scalar last, ij = -k)")
+                               f"first, ij = k) or '{name.strip()}: JPL' (scalar last, ij = -k), "
+                               f"either followed by ', scalar last' or ', scalar first' where "
+                               f"the layout is the other rule's (Szeliski's 'Hamilton, scalar "
+                               f"last')")
             convention, text = named, s
         else:
             kept.append(s)
     return (let if text is None else kept), convention, text
 
 
-#: the declaration text of the other convention's reading (it joins that reading's id)
-OTHER = "\\otimes: JPL (the undeclared convention's other reading)"
+def other_reading(rule: str, order: str) -> str:
+    """The declaration text of another reading of an undeclared product (it joins that
+    reading's id): the rule of the units and the scalar's place."""
+    return f"\\otimes: {rule}, the scalar {order} (a reading of the undeclared convention)"
+
+
+#: the pairs of a rule of the units and a scalar's place that the books use, and the books
+#: behind each: an undeclared product is read under each (no book of the corpora pairs the
+#: scalar first with ij = -k)
+READINGS = {(HAMILTON, "first"): "Solà (2017), Kok-Hol-Schön (2017)",
+            (JPL, "last"): "Trawny & Roumeliotis (2005)",
+            (HAMILTON, "last"): "Szeliski (2022) (2.42), Eigen, ROS"}
+
+
+def layout() -> str | None:
+    """The scalar's place where the reader's writing fixed it ("first", "last"), or ``None``
+    (it joins the check's id)."""
+    fixed = _STORAGE.get()
+    return None if fixed is None else f"the scalar {fixed[0]}"
 #: a --let's slice of three entries of a 4-vector: \bar q_{1:3} (scalar last), q_{2:4}
 #: (scalar first), counted from 1
 _SLICE = re.compile(r"_\{\s*([1-4])\s*:\s*([1-4])\s*\}")
@@ -157,34 +219,45 @@ def storage_order(let, latex: str = "") -> tuple[str, str] | None:
     return next(iter(found.items())) if len(found) == 1 else None
 
 
-def both_conventions(first: str, other: str, notes: list[str]) -> None:
-    """A statement that uses the quaternion product with no convention declared, read in
-    both: ``first`` the verdict in Hamilton's, ``other`` in JPL's. Where they agree a note is
-    appended to ``notes``.
+def both_conventions(verdicts: dict[tuple[str, str], str], notes: list[str],
+                     storage: str | None = None) -> None:
+    """A statement that uses the quaternion product with no rule declared, read under each
+    pair of a rule of the units and a scalar's place (:data:`READINGS`): ``verdicts`` each
+    pair's verdict; ``storage`` what fixed the scalar's place (then both rules read in that
+    one layout), or ``None``. Where they agree a note is appended to ``notes``.
 
     Raises:
         BadInput: they differ: the convention is the reader's to declare, never assumed.
     """
-    if first == other:
-        notes.append(f"quaternion product: no convention declared; the statement read in "
-                     f"both, Hamilton's (scalar first, ij = k) and JPL's (scalar last, ij = "
-                     f"-k): both {first}")
+    rule = {HAMILTON: "Hamilton's ij = k", JPL: "JPL's ij = -k"}
+    if len(set(verdicts.values())) == 1:
+        pairs = ", ".join(f"{rule[r]} with the scalar {o}" for r, o in verdicts)
+        what = (f"the scalar {next(iter(verdicts))[1]}, as {storage} fixes it; the rule of "
+                f"the units declared by nothing" if storage else "no convention declared")
+        notes.append(f"quaternion product: {what}; the statement read in each of the books' "
+                     f"readings ({pairs}): each {next(iter(verdicts.values()))}")
         return
-    raise BadInput(f"--latex: the quaternion product \\otimes (\\odot) can be read as "
-                   f"Hamilton's (scalar first q = [w; x; y; z], ij = k: Solà (2017), Kok-Hol-"
-                   f"Schön) or as JPL's (scalar last q = [x; y; z; w], ij = -k: Trawny & "
-                   f"Roumeliotis (2005)), nothing declares it, and the two disagree (Hamilton: "
-                   f"{first}; JPL: {other}): say which, --let '\\otimes: Hamilton' or --let "
-                   f"'\\otimes: JPL' (or --notation jpl), or name the vector part in a --let "
-                   f"(\\mathbf{{q}} = \\bar q_{{1:3}}: the scalar last)")
+    each = "; ".join(f"{rule[r]} with the scalar {o} ({READINGS[(r, o)]}): {v}"
+                     for (r, o), v in verdicts.items())
+    fixed = (f"{storage} puts the scalar {next(iter(verdicts))[1]}, which does not fix the "
+             f"rule of the units, " if storage else "nothing declares it, ")
+    raise BadInput(f"--latex: the quaternion product \\otimes (\\odot) is read two ways "
+                   f"by the books: the rule of the units (Hamilton's ij = k or JPL's ij = -k) "
+                   f"and the scalar's place are two choices; {fixed}and the readings disagree "
+                   f"({each}): say which, --let '\\otimes: Hamilton' (the scalar first), "
+                   f"--let '\\otimes: JPL' (the scalar last; or --notation jpl) or --let "
+                   f"'\\otimes: Hamilton, scalar last'")
 
 
 def said() -> str:
     """The reading's note of the convention used."""
-    text = declared()
-    if text and text.startswith("storage order:"):
-        return (f"quaternion product: {current()}'s, the storage order fixed by "
-                f"{text[len('storage order:'):].strip()}")
+    fixed = _STORAGE.get()
+    if fixed is not None:
+        rule = ("ij = -k (Trawny & Roumeliotis (2005) (8))" if current() == JPL else
+                "ij = k (Solà (2017) (12))")
+        how = f"the storage order fixed by {fixed[1]}" if fixed[1] else "the storage order"
+        return (f"quaternion product: {current()}'s, {how} (the scalar {fixed[0]}), the rule "
+                f"of the units {rule}")
     if current() == JPL:
         return ("quaternion product: JPL's, scalar last q = [x; y; z; w], ij = -k "
                 "(Trawny & Roumeliotis (2005) (8))")
@@ -195,13 +268,13 @@ def said() -> str:
 def _parts(q) -> tuple[sp.Expr, sp.Matrix]:
     """``(scalar, vector part)`` of a 4-vector in the convention now."""
     e = [q[i, 0] for i in range(4)]
-    if current() == JPL:
+    if scalar_last():
         return e[3], sp.Matrix(e[:3])
     return e[0], sp.Matrix(e[1:])
 
 
 def _join(w, v) -> sp.Matrix:
-    if current() == JPL:
+    if scalar_last():
         return sp.Matrix([v[0], v[1], v[2], w])
     return sp.Matrix([w, v[0], v[1], v[2]])
 

@@ -70,8 +70,8 @@ def latex_id(latex: str, lets: list[Let], book: str | None, modules,
 
     # a --let 'tangent order: ...', '\otimes: JPL' or 'bracket cross: content' (taken out
     # of lets) joins the id
-    said = [x for x in (tangent.declared(), quaternions.declared(), *contested.declared_texts())
-            if x]
+    said = [x for x in (tangent.declared(), quaternions.declared(), quaternions.layout(),
+                        *contested.declared_texts()) if x]
     key = json.dumps([latex, [x.text for x in lets] + said, book,
                       [str(m) for m in modules or ()]] + ([notation] if notation else []))
     return "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]

@@ -7,8 +7,10 @@ two semantics shared by accident could not decide a statement alone.
   ``(A x)^∧`` (Groves (2013) (2.50)), or ``A x^∧``, the operator bound to the factor before it
   (Featherstone (2008) (2.31)).
 - ``quaternion product``: Hamilton's units ``ij = k`` with the scalar first (Hamilton 1843,
-  Solà (2017) (8)) or JPL's ``ij = -k`` with the scalar last (Trawny & Roumeliotis (2005) (2)),
-  :func:`rigidsym.numeval.values.quaternion_product`.
+  Solà (2017) (8)), JPL's ``ij = -k`` with the scalar last (Trawny & Roumeliotis (2005) (2)),
+  or Hamilton's units with the scalar last (Szeliski (2022) (2.42), Eigen's storage):
+  :func:`rigidsym.numeval.values.quaternion_product` and
+  :func:`rigidsym.numeval.values.quaternion_storage`.
 - ``tangent order``: a twist ``[ω; v]`` (Lynch & Park) or ``[v; ω]`` (Barfoot),
   :func:`rigidsym.numeval.values.tangent_order`.
 """
@@ -24,8 +26,9 @@ __all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "choice_key", "
 
 #: [A x\wedge]: the content's hat, or A times x's hat
 BRACKET_CROSS = ("content", "bind")
-#: p \otimes q: Hamilton's (scalar first, ij = k) or JPL's (scalar last, ij = -k)
-QUATERNION = ("Hamilton", "JPL")
+#: p \otimes q: Hamilton's (scalar first, ij = k), JPL's (scalar last, ij = -k), or
+#: Hamilton's units stored scalar last
+QUATERNION = ("Hamilton", "JPL", "Hamilton, scalar last")
 #: a 6-vector's order: angular part first or translation first
 TANGENT = ("angular first", "translation first")
 #: every contested construct this semantics evaluates, by name, its readings

@@ -16,7 +16,7 @@ __all__ = ["NotCovered", "Eye", "Zero", "shape", "add", "neg", "mul", "cross", "
            "expm", "rodrigues", "logm", "adjoint", "small_adjoint", "spatial_cross", "sized",
            "scalar", "assemble", "TRANSLATION_FIRST", "tangent_order", "JPL_PRODUCT",
            "quaternion_convention", "quaternion_product", "quaternion_conjugate",
-           "quaternion_inverse"]
+           "quaternion_inverse", "SCALAR_LAST", "quaternion_storage"]
 
 #: the quaternion product of the check running now: ``False`` Hamilton's (scalar first,
 #: ij = k; the default), ``True`` JPL's (scalar last, ij = -k)
@@ -34,16 +34,39 @@ def quaternion_convention(jpl: bool) -> Iterator[None]:
         JPL_PRODUCT.reset(token)
 
 
+#: the scalar's place where the reader's writing fixes it: ``True`` last, ``False`` first,
+#: ``None`` the convention's own (JPL's last, Hamilton's first): the storage order of a
+#: 4-vector and the rule of its units are two choices (Szeliski (2022) stores (x, y, z, w)
+#: and multiplies by Hamilton's rule)
+SCALAR_LAST: ContextVar[bool | None] = ContextVar("scalar_last", default=None)
+
+
+@contextmanager
+def quaternion_storage(last: bool | None) -> Iterator[None]:
+    """Within the block a 4-vector's scalar is its last entry (``last``), its first
+    (``False``), or where the convention puts it (``None``)."""
+    token = SCALAR_LAST.set(last)
+    try:
+        yield
+    finally:
+        SCALAR_LAST.reset(token)
+
+
+def _last() -> bool:
+    last = SCALAR_LAST.get()
+    return JPL_PRODUCT.get() if last is None else last
+
+
 def _quaternion(q, what: str):
     """``(w, x, y, z)`` of a 4-vector in the convention now (scalar first or last)."""
     q = scalar(q)
     if not is_matrix(q) or (q.rows, q.cols) != (4, 1):
         raise NotCovered(f"{what} of a value that is no 4-vector")
-    return (q[3], q[0], q[1], q[2]) if JPL_PRODUCT.get() else (q[0], q[1], q[2], q[3])
+    return (q[3], q[0], q[1], q[2]) if _last() else (q[0], q[1], q[2], q[3])
 
 
 def _as_quaternion(w, x, y, z):
-    return mp.matrix([x, y, z, w]) if JPL_PRODUCT.get() else mp.matrix([w, x, y, z])
+    return mp.matrix([x, y, z, w]) if _last() else mp.matrix([w, x, y, z])
 
 
 def quaternion_product(p, q):
