@@ -19,7 +19,8 @@ vector, a pure translation is a screw of infinite pitch; omega = 0: a translatio
 - ``wrench_axis`` -> the wrench of the screw at magnitude ||f|| (||n_A|| for a pure couple,
   the dual of a translation).
 
-NumPy and C back-ends, float64 and float32; the quick profile draws a few batches.
+NumPy, C, PyTorch and JAX back-ends, float64 and float32; the quick profile draws a few
+batches.
 """
 
 from __future__ import annotations
@@ -35,13 +36,34 @@ from hypothesis import strategies as st
 
 from rigidsym import kernels as K
 
-BACKENDS = ("numpy", "c")
+#: NumPy, the C extension, and the PyTorch and JAX kernels (their extras: .ci/run's part)
+BACKENDS = ("numpy", "c", pytest.param("torch", marks=pytest.mark.extra),
+            pytest.param("jax", marks=pytest.mark.extra))
 DTYPES = (np.float64, np.float32)
 #: rows of each batch: drawn screw motions, rotations near 0 and pi, pure translations, none
 N = 12
 
 
+def _array_library(backend: str):
+    """The PyTorch or JAX kernels, an array of the library from a NumPy array (lists are
+    passed as they are) and a NumPy array back."""
+    if backend == "torch":
+        torch = pytest.importorskip("torch")
+        from rigidsym.kernels import torch as lib
+        return lib, torch.from_numpy, lambda x: x.numpy()
+    jax = pytest.importorskip("jax")
+    jax.config.update("jax_enable_x64", True)
+    from rigidsym.kernels import jax as lib
+    return lib, jax.numpy.asarray, np.asarray
+
+
 def _run(backend: str, f, *args, **kw):
+    """``f`` (a NumPy kernel of ``rigidsym.kernels``) on ``backend``, NumPy arrays out."""
+    if backend in ("torch", "jax"):
+        lib, to, back = _array_library(backend)
+        res = getattr(lib, f.__name__)(*(to(x) if isinstance(x, np.ndarray) else x
+                                         for x in args), **kw)
+        return tuple(back(r) for r in res) if isinstance(res, tuple) else back(res)
     before = K.backend()
     try:
         if K.use_backend(backend) != backend:
@@ -263,6 +285,20 @@ def test_docstrings_list_the_pure_translation():
             assert stale not in doc, (f.__name__, stale)
 
 
+@pytest.mark.extra
+@pytest.mark.parametrize("backend", ["torch", "jax"])
+def test_array_docstrings_list_the_pure_translation(backend):
+    """The PyTorch and JAX kernels say the same, and name no motion (load) as their only
+    singular set."""
+    lib = _array_library(backend)[0]
+    for f in (lib.screw_of_displacement, lib.instant_screw_axis, lib.wrench_axis):
+        doc = f.__doc__
+        assert ("Pure translation: at " in doc or "Pure couple: at " in doc) \
+            and "pitch = +inf" in doc, f.__name__
+        assert "no motion (naming" in doc or "no load (naming" in doc, f.__name__
+        assert "(pure moment)" not in doc and "(pure translation))" not in doc, f.__name__
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_pure_translation_at_the_ends_of_the_range(backend):
     """A translation whose a' - a overflows keeps its direction (finite in, the answer
@@ -291,7 +327,7 @@ def test_strided_out_arrays_and_the_backends_agree():
     ref = _run("numpy", K.screw_of_displacement, Q, a, ap)
     assert np.array_equal(ref[3][:2], [np.inf, np.inf])
     np.testing.assert_array_equal(ref[0][:2], [[1 / 3, 2 / 3, 2 / 3], [1, 0, 0]])
-    for backend in BACKENDS:
+    for backend in ("numpy", "c"):
         big = [np.empty((4, 2 * n)) for n in (3, 1, 3, 1, 6)]
         out = tuple(b[:, ::2] if b.shape[1] > 2 else b[:, 0] for b in big)
         got = _run(backend, K.screw_of_displacement, Q, a, ap, out=out)

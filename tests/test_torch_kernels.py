@@ -178,7 +178,7 @@ def test_singular_samples_raise_in_eager_and_are_nan_on_request():
     a = torch.zeros(2, 3, dtype=torch.float64)
     with pytest.raises(K.SingularConfigurationError, match=r"\(1,\)") as info:
         rk.instant_screw_axis(omega, a, a)
-    assert info.value.argument == "omega"
+    assert info.value.argument == "a_dot"     # omega = 0 and a_dot = 0: no motion
     p0, pitch, _ = rk.instant_screw_axis(omega, a, a, on_singular="nan")
     assert torch.isnan(pitch[1]) and torch.isfinite(pitch[0])
     pitch[0].backward()   # the NaN row contributes a zero gradient, not NaN

@@ -27,6 +27,7 @@ from typing import Any
 
 from rigidsym.core.config import generated_dir
 from rigidsym.core.files import load_module
+from rigidsym.kernels.arrays import infinity as _infinity
 from rigidsym.kernels.arrays import rescue as _ar
 from rigidsym.kernels.arrays.inputs import (
     broadcast_batch,
@@ -501,6 +502,9 @@ class Space:
         clear = False
         if not traced:
             res, bad, clear = self._rescue(name, full, res, bad, batch)
+        # screws at infinity (pure translations, couples): the field's answer, pitch +inf
+        res, bad, at_inf = _infinity.complete(lib, name, full, res, bad, batch, on_singular,
+                                              traced)
         big = None
         if res[0].dtype != dtype:  # float16, bfloat16: computed in float32, rounded once
             big = rounds_to_inf(xp, res, batch, lib.finfo(dtype))
@@ -514,7 +518,10 @@ class Space:
         # its IEEE value)
         sing = bad
         over = nonfinite_rows(xp, res, batch)
-        bad = bad | ((over if big is None else over | big) & ~nonfinite_rows(xp, full, batch))
+        over = over if big is None else over | big
+        if at_inf is not None:  # pitch = +inf there is the answer, not an overflow
+            over = over & ~at_inf
+        bad = bad | (over & ~nonfinite_rows(xp, full, batch))
         if on_singular == "raise":
             if bool(bad.any()):  # the error path copies the masks to the host
                 raise_flagged(name, meta, lib.host(sing), lib.host(bad & ~sing),
@@ -522,6 +529,11 @@ class Space:
         else:
             # inf inputs kept by a program that propagates them: its non-finite outputs NaN
             inf = traced and lib.finite_inside() and self.progs.propagates_inf(name)
+            if inf and at_inf is not None:
+                keep = at_inf.reshape(batch + (1,))
+                res = [xp.where(keep if r.ndim > len(batch) else at_inf, r,
+                                xp.where(xp.isinf(r), xp.nan, r)) for r in res]
+                inf = False
             res = [xp.where(bad.reshape(batch + (1,) * (r.ndim - len(batch))) |
                             xp.isinf(r) if inf else
                             bad.reshape(batch + (1,) * (r.ndim - len(batch))), xp.nan, r)

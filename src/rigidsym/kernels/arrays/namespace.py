@@ -13,6 +13,7 @@ from pathlib import Path
 from rigidsym.kernels.arrays.evaluation import SUFFIX, ArraySpace
 from rigidsym.kernels.arrays.inputs import shape_text
 from rigidsym.kernels.runtime import names as _names
+from rigidsym.kernels.runtime import screw_at_infinity as _infinity
 from rigidsym.kernels.runtime import state as _state
 
 __all__ = ["docstring", "make_kernel", "namespace", "module_api"]
@@ -30,10 +31,16 @@ def docstring(meta: dict, backend: str, derivative: str) -> str:
     lines += [f"    {lib} {shape_text(o['shape'])}: {o['name']}" for o in meta["outputs"]]
     lines += ["", "Raises:", "    TypeError, ValueError: bad argument (naming it), or check=True"
               " / on_singular='raise' while traced."]
-    if meta["singular"]:
+    infinity = _infinity.note(meta["name"])
+    if infinity is not None:   # the singular set is no motion (load) alone
+        arg, what = _infinity.NO_MOTION[meta["name"]]
+        lines.append(f"    SingularConfigurationError: {what} (naming {arg!r}), eager and "
+                     f"on_singular='raise'.")
+    elif meta["singular"]:
         lines.append(f"    SingularConfigurationError: on the singular set "
                      f"({meta['singular']}), eager and on_singular='raise'.")
-    lines += ["", "Notes:", f"    Derivative: {derivative}",
+    lines += ["", "Notes:"] + ([f"    {infinity}"] if infinity is not None else []) + [
+              f"    Derivative: {derivative}",
               f"    Generated; {meta['ops']} operations; math hash {meta['hash']}."]
     return "\n".join(lines)
 

@@ -20,10 +20,11 @@ The generated kernels hold their branch's value at those rows (``screw_of_displa
 :func:`complete` replaces them after the batch runs, on the NumPy and C back-ends and through
 Dask (each block's call), from the inputs of those rows alone; :func:`wrap_entry` does it
 after the compiled entries of the C extension, which answer those rows themselves. The
-PyTorch and JAX kernels and the C target (``rigidsym generate --target c``) keep the
-generated values. The slide of a pure translation, ``||a' - a||``, is not among
-``screw_of_displacement``'s outputs (``pitch * phi`` is ``inf * 0``, NaN): it is the caller's
-``e . (a' - a)``.
+PyTorch and JAX kernels answer them alike, in their own array operations
+(:mod:`rigidsym.kernels.arrays.infinity`, traceable); the C target (``rigidsym generate
+--target c``) keeps the generated values and says so in its status. The slide of a pure
+translation, ``||a' - a||``, is not among ``screw_of_displacement``'s outputs (``pitch *
+phi`` is ``inf * 0``, NaN): it is the caller's ``e . (a' - a)``.
 """
 
 from __future__ import annotations
@@ -32,10 +33,14 @@ import numpy as np
 
 from rigidsym.kernels.runtime.errors import SingularConfigurationError, at_batch_indices
 
-__all__ = ["COMPLETED", "complete", "wrap_entry", "document"]
+__all__ = ["COMPLETED", "NO_MOTION", "complete", "wrap_entry", "document", "note", "no_motion"]
 
 #: the kernels whose pure-translation rows :func:`complete` answers
 COMPLETED = ("screw_of_displacement", "instant_screw_axis", "wrench_axis")
+#: each kernel's argument named where it has no screw at all, and why
+NO_MOTION = {"screw_of_displacement": ("a_prime", "Q = 1 and a' = a: no motion"),
+             "instant_screw_axis": ("a_dot", "omega = 0 and a_dot = 0: no motion"),
+             "wrench_axis": ("w_A", "f = 0 and n_A = 0: no load")}
 #: sample flag of the generated batch functions for a singular row (numpy_kernel.py.j2)
 _SINGULAR = 1
 
@@ -93,7 +98,25 @@ def _difference(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.ldexp(b64, -k) - np.ldexp(a64, -k)
 
 
-def _no_motion(name: str, arg: str, rows: np.ndarray, batch: tuple, what: str) -> None:
+def note(name: str) -> str | None:
+    """The docstring paragraph of kernel ``name`` on its screw at infinity (None: not one
+    of :data:`COMPLETED`)."""
+    return f"{_LABEL[name]}: {_DOC[name]}" if name in _DOC else None
+
+
+def no_motion(name: str, rows: np.ndarray, batch: tuple) -> None:
+    """Raise the error of kernel ``name``'s rows without motion (or load).
+
+    Args:
+        name: the kernel (one of :data:`COMPLETED`).
+        rows: the flat indices of those rows in the batch (at least one).
+        batch: the batch shape.
+
+    Raises:
+        SingularConfigurationError: always, naming the argument of :data:`NO_MOTION` and
+            the first 20 batch indices.
+    """
+    arg, what = NO_MOTION[name]
     w = [tuple(int(j) for j in np.unravel_index(i, batch)) for i in rows[:20]]
     raise SingularConfigurationError(
         f"{name}: singular configuration ({what}, so no screw) in argument "
@@ -128,22 +151,19 @@ def complete(name: str, flat: list, bufs: list, flags, batch: tuple,
         rows = np.flatnonzero(mask)
         if rows.size:
             t = _difference(a[rows], a_prime[rows])
-            _answer(name, "a_prime", "Q = 1 and a' = a: no motion", rows, t, p0, pitch, kappa, e,
-                    batch, on_singular)
+            _answer(name, rows, t, p0, pitch, kappa, e, batch, on_singular)
         return flags
     if name in ("instant_screw_axis", "wrench_axis") and flags is not None:
         if name == "instant_screw_axis":    # omega = 0: every point moves at a_dot
-            omega, a, a_dot = flat
-            zero, arg, what = omega, "a_dot", "omega = 0 and a_dot = 0: no motion"
+            zero, a, a_dot = flat
         else:                               # f = 0: the moment is n_A about every point
             w_A, a = flat
-            zero, a_dot, arg, what = w_A[:, 3:], w_A[:, :3], "w_A", "f = 0 and n_A = 0: no load"
+            zero, a_dot = w_A[:, 3:], w_A[:, :3]
         p0, pitch, kappa = bufs
         rows = np.flatnonzero((flags == _SINGULAR) & (zero == 0).all(axis=1)
                               & np.isfinite(a).all(axis=1))
         if rows.size:
-            _answer(name, arg, what, rows, a_dot[rows], p0, pitch, kappa, None, batch,
-                    on_singular)
+            _answer(name, rows, a_dot[rows], p0, pitch, kappa, None, batch, on_singular)
             flags = flags.copy()
             flags[rows] = 0
     return flags
@@ -195,7 +215,7 @@ def wrap_entry(name: str, entry, shapes: tuple):
     return f
 
 
-def _answer(name, arg, what, rows, t, p0, pitch, kappa, e, batch, on_singular) -> None:
+def _answer(name, rows, t, p0, pitch, kappa, e, batch, on_singular) -> None:
     """Write the screw at infinity of translations ``t`` into ``rows``; the rows with
     ``t = 0`` raise or get NaN, those of a non-finite ``t`` (an unchecked NaN or inf input)
     NaN."""
@@ -203,7 +223,7 @@ def _answer(name, arg, what, rows, t, p0, pitch, kappa, e, batch, on_singular) -
     moving = finite & (t != 0).any(axis=1)
     still = rows[finite & ~moving]
     if still.size and on_singular == "raise":
-        _no_motion(name, arg, still, batch, what)
+        no_motion(name, still, batch)
     go = rows[moving]
     if go.size:
         u = _unit_rows(t[moving]).astype(pitch.dtype)
