@@ -175,3 +175,16 @@ def test_a_thin_space_inside_parentheses_is_no_argument_comma(rhs, verdict):
     let = [r"m: scalar", r"\mathbf{r}: vector",
            r"\mathbf{J} = m(\mathbf{r}^T\mathbf{r}\,\mathbf{1} - \mathbf{r}\mathbf{r}^T)"]
     assert _v(r"\mathbf{J}\mathbf{r} = " + rhs, let) == verdict
+
+
+@pytest.mark.parametrize("sub", [r"\bm{n}", r"\mathbf{n}", r"\bm n", r"\boldsymbol{n}"])
+@pytest.mark.parametrize("sign, verdict", [("+", "verified"), ("-", "does-not-hold")])
+def test_a_bold_letter_in_a_subscript_is_part_of_the_name(sub, sign, verdict):
+    """Rotations.jl's R_{\\bm{n}}(\\theta), the rotation about n: a bold letter in a
+    subscript is one name however it is spelt (before: "unexpected \\bm (a font)"); the
+    model's Rodrigues form holds, its sign slip does not."""
+    let = [r"\theta: angle", r"\mathbf{n}: unit vector",
+           r"R_{\mathbf{n}}(x) = \exp(x [\mathbf{n}]_\times)"]
+    rhs = (rf"\mathbf{{1}} + \sin\theta [\mathbf{{n}}]_\times {sign} "
+           r"(1 - \cos\theta)[\mathbf{n}]_\times^2")
+    assert _v(rf"R_{{{sub}}}(\theta) = " + rhs, let) == verdict

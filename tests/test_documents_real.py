@@ -104,12 +104,20 @@ CASES = [("mathse-rodrigues-matrix.tex", MATHSE, 11),
          ("quaternions-jl-rotations.md", {}, 0)]
 
 
-@pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
+_CHECKED: dict = {}
+
+
+def _records(name: str) -> list:
+    """The records of ``rigidsym check`` on document ``name``, once per session."""
+    if name not in _CHECKED:
+        _CHECKED[name] = check_document(REAL / name).records
+    return _CHECKED[name]
+
+
+@pytest.mark.slow  # 5 s for the three documents (priced: .ci/run's thorough part)
 @pytest.mark.parametrize("name, identities, decided", CASES)
 def test_a_real_document_no_wrong_verdict(name, identities, decided):
-    res = check_document(REAL / name)
-    ids = [r for r in res.records if r["kind"] == "identity"]
+    ids = [r for r in _records(name) if r["kind"] == "identity"]
     got = [r for r in ids if r["verdict"] in ("verified", "does-not-hold")]
     assert len(got) == decided, [(r["line"], r["verdict"], r["reason"]) for r in ids]
     for r in got:  # every verdict given agrees with NumPy; a false one comes corrected
@@ -121,3 +129,13 @@ def test_a_real_document_no_wrong_verdict(name, identities, decided):
         assert r["verdict"] in ("verified", "does-not-hold") or r["reason"], r
     for line, sides in identities.items():  # the NumPy sides are sound themselves
         assert _numpy_holds(sides), line
+
+
+@pytest.mark.slow
+def test_nine_in_ten_identities_of_the_real_documents_decided():
+    """At least 90 % of the real documents' identities get a verdict (docs/check-documents.md
+    names the one that does not, and why)."""
+    ids = [r for name, _, _ in CASES for r in _records(name) if r["kind"] == "identity"]
+    decided = [r for r in ids if r["verdict"] in ("verified", "does-not-hold")]
+    assert len(decided) >= 0.9 * len(ids), [(r["line"], r["reason"]) for r in ids
+                                            if r not in decided]

@@ -67,6 +67,11 @@ class GlyphRules:
     def slash(self, _):
         return "/"
 
+    def boldsub(self, items):
+        """A bold letter in a subscript (``R_{\\bm{n}}``: the rotation about n), part of
+        the name, keyed as ``\\mathbf``."""
+        return "\\mathbf{" + str(items[-1]) + "}"
+
     def calsub(self, items):
         return "\\mathcal{" + str(items[0]) + "}" + (str(items[1]) if len(items) > 1 else "")
 
