@@ -208,11 +208,13 @@ def plan(relations: list[Relation], reading: Reading | None = None,
             if p.action == "decide":
                 p.lets = [t for t, _ in models.values()]  # check_latex names the error
             continue
-        later = sorted((k, rel) for i, k, _, rel in defs
-                       if at < i and k in used and k not in models
-                       and k != p.defines)
+        # by name, then place: a symbol the document defines twice later is named at its
+        # first definition (Relations do not compare)
+        later = sorted(((k, i, rel) for i, k, _, rel in defs
+                        if at < i and k in used and k not in models and k != p.defines),
+                       key=lambda x: x[:2])
         if later:
-            k, rel = later[0]
+            k, _, rel = later[0]
             plans[n] = Plan(r, "skip", reason=f"uses {k}, which the document defines only "
                                               f"later, at {rel.place} (display {rel.display})")
             continue
