@@ -105,6 +105,19 @@ def test_relations_separated_or_reordered_are_the_same_relations(rels, sep):
     assert pairs(relations_of(body)) == [(a, "=", b) for a, b in rels]
 
 
+@pytest.mark.parametrize("number", ["3.8", "3.9a", "12", "2.4.1"])
+@pytest.mark.parametrize("sep", [" \\quad ", " \\qquad ", "\\quad"])
+def test_a_printed_number_closing_a_line_is_its_label(number, sep):
+    """A converted book's ``x = y \\quad (3.9a)`` is ``x = y`` labelled 3.9a, as
+    ``\\tag{3.9a}``; a parenthesised expression or a relation after ``\\quad`` is not."""
+    rels = relations_of(f"a = b + c{sep}({number})")
+    assert pairs(rels) == [("a", "=", "b + c")] and rels[0].label == number
+    tagged = relations_of(f"a = b + c \\tag{{{number}}}")
+    assert pairs(tagged) == pairs(rels) and tagged[0].label == rels[0].label
+    for body in (f"a = b{sep}(x + y)", f"a = b{sep}(3.8) = c", f"(3.8){sep}a = b"):
+        assert all(r.label is None for r in relations_of(body)), body
+
+
 @settings(max_examples=15, deadline=None)
 @given(st.sampled_from(["\\mathbf{R}", "R_{z}", "\\theta"]), st.integers(0, 1))
 def test_a_macro_reads_as_its_expansion(body, nargs):

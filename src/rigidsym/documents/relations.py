@@ -12,7 +12,9 @@ display (outside parentheses, brackets, ``\\left...\\right`` pairs and groups):
 - ``,``, ``;``, ``\\quad``, ``\\qquad`` and prose (``\\text{and}``) separate relations;
 - ``\\\\`` inside a matrix (``bmatrix``, ``cases``, ``array``...) stays inside it;
 - ``\\label{x}`` and ``\\tag{x}`` name the relations of their line (of the display, where it
-  has one label); ``\\nonumber``, ``\\notag`` and ``&`` are dropped.
+  has one label), and so does a printed number closing a line after ``\\quad``
+  (``x = y \\quad (3.9a)``, as converted books print it); ``\\nonumber``, ``\\notag`` and
+  ``&`` are dropped.
 
 Each :class:`Relation` carries its file, line, column, display number and label.
 """
@@ -248,6 +250,23 @@ def _clean(text: str) -> str:
     return t
 
 
+def _printed_number(line: list) -> str | None:
+    """The equation number a converted book prints at the end of a line, after ``\\quad``
+    (``x = y \\quad (3.9a)``, as ``\\tag{3.9a}``): the last segment of the line when it is
+    a parenthesised number alone (digits, dots, one letter) and a segment with a relation
+    comes before it; else None."""
+    if len(line) < 2 or any(k == "op" for k, _, _ in line[-1]) or \
+            not any(k == "op" for seg in line[:-1] for k, _, _ in seg):
+        return None
+    text = "".join(t for _, t, _ in line[-1]).strip().rstrip(".").strip()
+    if len(text) < 3 or text[0] != "(" or text[-1] != ")":
+        return None
+    inner = text[1:-1].strip()
+    core = inner[:-1] if inner[-1:].isalpha() and inner[-1:].islower() else inner
+    parts = core.split(".")
+    return inner if core and all(p.isdigit() for p in parts) else None
+
+
 def split_display(display: Display) -> list[Relation]:
     """The relations of ``display``, in reading order (:mod:`this module <.relations>`).
 
@@ -282,6 +301,11 @@ def split_display(display: Display) -> list[Relation]:
             labels[-1].append(tok[1])
         else:
             lines[-1][-1].append(tok)
+    for li, line in enumerate(lines):  # a printed number closing the line: its label
+        number = _printed_number(line)
+        if number is not None:
+            line.pop()
+            labels[li].append(number)
     all_labels = [x for ls in labels for x in ls]
     pending: list[dict] = []  # relations being built: lhs, op, rhs, pos, line
     carry = ""
