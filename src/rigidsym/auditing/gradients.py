@@ -48,6 +48,10 @@ def _flat_out(out, lib):
     if lib == "torch":
         import torch
 
+        if not any(isinstance(o, torch.Tensor) and o.requires_grad for o in outs):
+            # the inputs left the graph (pyquaternion's float() and NumPy arrays): autograd
+            # would give a zero Jacobian, which is no derivative of the function's
+            raise TypeError("the outputs are not tensors of the inputs' graph")
         return torch.cat([torch.as_tensor(o).reshape(-1).to(torch.float64) for o in outs])
     import jax.numpy as jnp
 
@@ -57,7 +61,9 @@ def _flat_out(out, lib):
 def jacobian(func: Callable, args: list, framework: str) -> np.ndarray:
     """``d flat(func(*args)) / d flat(args)``, (outputs, inputs) float64, by ``framework``'s
     own differentiation (``"jax"``: ``jax.jacfwd``; ``"torch"``: ``torch.autograd.functional.
-    jacobian``). Raises what the framework raises (a NumPy function traced by JAX)."""
+    jacobian``). Raises what the framework raises (a NumPy function traced by JAX), and
+    TypeError where no output of a PyTorch call is in the inputs' graph (a function that
+    converts its tensors to floats or NumPy arrays)."""
     if framework == "torch":
         import torch
 
