@@ -11,7 +11,7 @@ words are those of ``--let`` (``docs/reading-files.md`` is the reference)::
     page = "notes.md"                      # the text this is the reading of (relative)
 
     [conventions]                          # each said back in every report
-    quaternion_product = "hamilton"        # or "jpl"
+    quaternion_product = "hamilton"        # or "jpl", "hamilton-scalar-last"
     tangent_order = "angular-first"        # or "linear-first"
 
     [[let]]                                # one declaration, in --let's words
@@ -51,7 +51,7 @@ __all__ = ["CLASSES", "CONVENTIONS", "FORMAT", "IdReading", "Let", "Reading", "l
 FORMAT = 1
 #: the conventions a reading may fix, each with the values it admits
 CONVENTIONS: dict[str, tuple[str, ...]] = {
-    "quaternion_product": ("hamilton", "jpl"),
+    "quaternion_product": ("hamilton", "jpl", "hamilton-scalar-last"),
     "quaternion_order": ("scalar-first", "scalar-last"),
     "tangent_order": ("angular-first", "linear-first"),
     "rotation": ("active", "passive"),

@@ -1,9 +1,10 @@
 """The conventions a document may leave open, and a relation decided under each.
 
 A relation that uses the quaternion product (``\\otimes``, ``\\odot``, a conjugate of a
-4-vector: Hamilton's or JPL's) or the tangent order of SE(3) (a twist ``[ω; v]`` or
-``[v; ω]``) where neither the reading file, a ``--let`` nor the ``--notation`` fixes it is
-never given a verdict from a default: it is decided under each admissible convention. Where
+4-vector: Hamilton's scalar first, JPL's, or Hamilton's stored scalar last) or the tangent
+order of SE(3) (a twist ``[ω; v]`` or ``[v; ω]``) where neither the reading file, a
+``--let`` nor the ``--notation`` fixes it is never given a verdict from a default: it is
+decided under each admissible convention. Where
 the verdicts agree, that is the verdict (``under`` says each); where they differ, the
 relation ``holds under X, not under Y`` (verdict ``convention-dependent``), with the
 counterexample under the convention where it fails, and the reading file's line that fixes
@@ -18,7 +19,8 @@ __all__ = ["CHOICES", "NAMES", "choices", "combine", "fixed", "open_in"]
 
 #: each convention's admissible choices: the reading file's value -> the ``--let`` saying it
 CHOICES = {
-    "quaternion_product": {"hamilton": "\\otimes: Hamilton", "jpl": "\\otimes: JPL"},
+    "quaternion_product": {"hamilton": "\\otimes: Hamilton", "jpl": "\\otimes: JPL",
+                           "hamilton-scalar-last": "\\otimes: Hamilton, scalar last"},
     "tangent_order": {"angular-first": "tangent order: angular first",
                       "linear-first": "tangent order: linear first"},
 }
@@ -26,11 +28,15 @@ CHOICES = {
 NAMES = {
     ("quaternion_product", "hamilton"): "Hamilton's quaternion product (scalar first, ij = k)",
     ("quaternion_product", "jpl"): "JPL's quaternion product (scalar last, ij = -k)",
+    ("quaternion_product", "hamilton-scalar-last"): "Hamilton's quaternion product stored "
+    "scalar last (ij = k, [x; y; z; w])",
     ("tangent_order", "angular-first"): "the tangent order [ω; v] (angular first)",
     ("tangent_order", "linear-first"): "the tangent order [v; ω] (linear first)",
 }
-#: a note of the engine's reading that says the relation uses the convention
-_USES = {"quaternion_product": "quaternion product:", "tangent_order": "tangent order:"}
+#: the words of the engine's notes (or of its question) that say the relation uses the
+#: convention
+_USES = {"quaternion_product": ("quaternion product:", "quaternion product \\otimes"),
+         "tangent_order": ("tangent order:",)}
 
 
 def fixed(lets: list[str], notation: str | None) -> set[str]:
@@ -64,8 +70,9 @@ def open_in(notes: list[str], refusal: str | None, lets: list[str],
     """
     done = fixed(lets, notation)
     uses = set()
-    for key, word in _USES.items():
-        if any(word in n for n in notes) or (refusal and word in refusal):
+    for key, words in _USES.items():
+        if any(w in n for w in words for n in notes) or \
+                (refusal and any(w in refusal for w in words)):
             uses.add(key)
     return [k for k in CHOICES if k in uses and k not in done]
 

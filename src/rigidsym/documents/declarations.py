@@ -23,18 +23,15 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 
 from rigidsym.core.errors import BadInput
+from rigidsym.documents.conventions import CHOICES
 from rigidsym.documents.relations import DEFINING, NOT_CHECKED, Relation
 from rigidsym.reading import Reading, lets_for
 
 __all__ = ["CONVENTION_LETS", "Plan", "plan"]
 
 #: a reading file's conventions that ``check_latex`` takes, as the ``--let`` that says each
-CONVENTION_LETS = {
-    ("quaternion_product", "hamilton"): "\\otimes: Hamilton",
-    ("quaternion_product", "jpl"): "\\otimes: JPL",
-    ("tangent_order", "angular-first"): "tangent order: angular first",
-    ("tangent_order", "linear-first"): "tangent order: linear first",
-}
+CONVENTION_LETS = {(key, value): let for key, values in CHOICES.items()
+                   for value, let in values.items()}
 #: the words of the elisions no verdict is given for
 ELISIONS = ("\\cdots", "\\ldots", "\\dots", "\\vdots", "\\ddots", "\\dotsb", "\\dotsc",
             "\\dotsm")
