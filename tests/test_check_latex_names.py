@@ -188,3 +188,20 @@ def test_a_bold_letter_in_a_subscript_is_part_of_the_name(sub, sign, verdict):
     rhs = (rf"\mathbf{{1}} + \sin\theta [\mathbf{{n}}]_\times {sign} "
            r"(1 - \cos\theta)[\mathbf{n}]_\times^2")
     assert _v(rf"R_{{{sub}}}(\theta) = " + rhs, let) == verdict
+
+
+_JAZAR = [r"{}^G R_B(t): rotation", r"{}^G\omega_B: angular velocity of {}^G R_B"]
+
+
+@pytest.mark.parametrize("index", [r"{}^G", r"{}^{G}"])
+@pytest.mark.parametrize("rhs, verdict", [
+    (r"[{}^G\omega_B]_\times\,{}^G R_B", "verified"),       # Jazar (2010) ch. 7
+    (r"{}^G R_B\,[{}^G\omega_B]_\times", "does-not-hold"),  # the body-frame order
+    (r"[{}^G\omega_B]_\times^T\,{}^G R_B", "does-not-hold"),
+])
+def test_the_dot_of_a_frame_indexed_rotation_is_its_rate(index, rhs, verdict):
+    """Jazar's {}^G\\dot{R}_B is the rate of the declared {}^G R_B(t), in both semantics
+    (before: the reader took it for a glyph of its own, the second semantics refused it), its
+    index spelt either way; an undeclared rate stays a name of its own."""
+    lets = [x.replace(r"{}^G", index, 1) for x in _JAZAR]
+    assert _v(index + r"\dot{R}_B = " + rhs, lets) == verdict

@@ -386,11 +386,16 @@ class Evaluator:
             if not V.is_matrix(v) or v.cols != 1 or not 1 <= lo <= hi <= v.rows:
                 raise NotCovered(f"the entries {text_of(t)}")
             return v[lo - 1] if lo == hi else mp.matrix([v[i] for i in range(lo - 1, hi)])
-        accent = str(t.children[0])
+        accent, inner = str(t.children[0]), None
         if accent in ("\\dot", "\\ddot") and len(t.children) == 2:
             inner = t.children[1]
             if inner.data == "bare":
                 inner = lark.Tree("glyph", [lark.Tree("base", list(inner.children))])
+        elif t.data == "indexed_accent" and str(t.children[1]).strip() in ("\\dot", "\\ddot"):
+            # Jazar's {}^G\dot{R}_B: the rate of the declared {}^G R_B(t)
+            index, accent, base, *rest = t.children
+            accent, inner = str(accent).strip(), lark.Tree("glyph", [index, base, *rest])
+        if inner is not None:
             d = self.env.decls.get(glyph_key(inner))
             if d is not None and (d.timed or rates.is_model(d)):  # or of a model
                 v = self._derivative(inner, _TIME_TREE, t)

@@ -89,6 +89,8 @@ def glyph_key(t) -> str:
     if isinstance(t, lark.Token) and t.type == "BRACKET_NAME":  # [\mathbf q]_L: one spelling
         s = re.sub(r"[\s{}]", "", str(t))
         return re.sub(r"\\(boldsymbol|bm)(?![A-Za-z])", r"\\mathbf", s)
+    if isinstance(t, lark.Token) and t.type == "LEFT_INDEX":  # {}^{G} and {}^G: one index
+        return re.sub(r"\{([^{}]+)\}", r"\1", "".join(str(t).split()))
     if isinstance(t, lark.Token):
         # bold by any macro is one glyph, as the books and the reader take it
         return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",

@@ -282,7 +282,16 @@ class RigidMotionRules:
 
         base = ("plain", str(items[2].children[0])) if isinstance(items[2], lark.Tree) \
             else items[2]
-        return self._resolve(base, list(items[3:]), str(items[1]), pre=index_key(str(items[0])))
+        accent, pre = str(items[1]).strip(), index_key(str(items[0]))
+        if accent in ("\\dot", "\\ddot") and all(isinstance(r, tuple) for r in items[3:]):
+            # Jazar's {}^G\dot{R}_B: the rate of {}^G R_B where that is a function of time
+            # (or a model); else a name of its own
+            under = self._resolve(base, list(items[3:]), None, pre=pre)
+            if self.timed(under.key) or (accent == "\\dot" and
+                                         self.model_rate(under.key) is not None):
+                return self.accented([items[1], under])
+            self._unuse(under.key)
+        return self._resolve(base, list(items[3:]), str(items[1]), pre=pre)
 
     def accented_bare(self, items):
         inner = self._resolve(items[1], [], None)
