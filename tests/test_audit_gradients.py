@@ -72,7 +72,6 @@ def test_numpy_functions_have_no_derivative_to_audit():
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_the_audit_reports_the_wrong_gradient():
     rep = audit(G.exp_stop_gradient_axis, EXP, search=False)
     assert rep.gradients["framework"] == "jax" and rep.gradients["wrong"]

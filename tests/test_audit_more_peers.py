@@ -23,7 +23,7 @@ from rigidsym import audit  # noqa: E402
 from rigidsym.auditing import callables  # noqa: E402
 from rigidsym.auditing.worst import FIND  # noqa: E402
 
-pytestmark = [pytest.mark.extra, pytest.mark.slow, pytest.mark.unpriced]
+pytestmark = [pytest.mark.extra, pytest.mark.slow]
 
 U = 2.0**-53
 mp.mp.dps = 50

@@ -58,7 +58,6 @@ def test_kappa_where_the_harness_does_not_judge_is_the_problems():
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_a_flat_error_near_the_identity_is_no_window_and_no_branch():
     """SymForce's to_tangent: a flat relative error of 2e-14 below phi = 1e-6 is far inside
     8 u (kappa + 1), kappa ~ 1.2 / phi; judged with kappa = 0 below phi = 1.08e-15 it was
@@ -76,7 +75,6 @@ def test_a_flat_error_near_the_identity_is_no_window_and_no_branch():
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_the_threshold_of_a_flat_error_is_not_a_branch_but_a_real_jump_is():
     """The jump is measured on the error itself: at pi - phi = pi - 2.5 the error of
     log_past_noise steps from the rounding's to 48 u (a branch of the function's own)."""
@@ -138,7 +136,6 @@ def test_the_zero_axis_is_named_as_the_convention():
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 @pytest.mark.parametrize("func, op, ok", [
     (N.log_flat_error, LOG, True), (N.log_near_noise, LOG, True),
     (N.log_past_noise, LOG, False),

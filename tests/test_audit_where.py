@@ -84,8 +84,7 @@ def _scan(func, op, regime, seed):
     return V.scan_all(ap, judge, seed, screen)
 
 
-@pytest.mark.parametrize("seed", [0, *(pytest.param(k, marks=(pytest.mark.slow,
-                                                               pytest.mark.unpriced))
+@pytest.mark.parametrize("seed", [0, *(pytest.param(k, marks=pytest.mark.slow)
                                       for k in (1, 2, 3))])
 def test_a_truncated_series_between_decades_is_found(seed):
     w = _scan(N.rotation_series_between_decades, "rotation_from_natural_invariants",

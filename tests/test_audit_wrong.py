@@ -105,7 +105,6 @@ def test_the_wrong_outputs_are_one_finding_with_their_counts():
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_the_gimbal_lock_bug_is_told_whole():
     """NaN past +-1 and wrong rotations at the lock, both counted, each with its worst
     input, in the text and the Markdown."""

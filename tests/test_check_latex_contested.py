@@ -39,7 +39,7 @@ def test_every_construct_has_two_readings_or_says_why_not_and_its_books():
         assert c.settles, c.key
 
 
-SLOW = (pytest.mark.slow, pytest.mark.unpriced)  # new, not yet priced for CI (conftest)
+SLOW = (pytest.mark.slow,)
 
 
 @pytest.mark.parametrize("op, latex, content, bind", [
@@ -59,7 +59,6 @@ def test_the_bracket_cross_is_asked_naming_each_reading_and_its_verdict(op, late
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced
 @pytest.mark.parametrize("latex, verdict", [
     # the content's reading, respelt: Groves' identity holds, its slip does not
     (r"\mathbf{C}[\boldsymbol\omega]_\times\mathbf{C}^T = [\mathbf{C}\boldsymbol\omega]_\times",
@@ -77,7 +76,6 @@ def test_the_bracket_cross_respelt_is_decided_under_the_reading_written(latex, v
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced
 def test_a_bracket_cross_whose_readings_agree_is_decided_and_said():
     r = _check(r"[c\boldsymbol\omega\wedge] = c[\boldsymbol\omega\wedge]",
                [r"c: scalar", r"\boldsymbol\omega: vector"])
@@ -122,7 +120,6 @@ def test_the_storage_order_of_the_users_lets_fixes_the_product_and_is_said(lets,
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced
 @pytest.mark.parametrize("lets, own, other", [(TRAWNY, "JPL", "Hamilton"),
                                               (HAMILTON, "Hamilton", "JPL")])
 def test_a_declared_product_is_used_and_the_other_convention_fails(lets, own, other):

@@ -68,7 +68,7 @@ def _declared(lets) -> dict:
 
 
 def _params():
-    rest = (pytest.mark.slow, pytest.mark.unpriced)   # new, not yet priced for CI (conftest)
+    rest = (pytest.mark.slow,)
     return [pytest.param(k, marks=() if k in FAST else rest) for k in sorted(CASES)]
 
 

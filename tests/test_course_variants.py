@@ -95,7 +95,7 @@ def test_true_or_false_statements_are_decided_and_reasons_follow():
 
 
 def _decided(ex_id):
-    V = _exam._variants()
+    V = _exam.variants_module()
     stmts = V.statements(ex_id)
     assert len(stmts) >= 5                                # 60 ordered triples at least
     for k, (text, _, why) in enumerate(stmts):

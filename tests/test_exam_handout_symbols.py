@@ -17,13 +17,13 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from rigidsym.course.exam import _variants, handout_text
+from rigidsym.course.exam import handout_text, variants_module
 from rigidsym.course.grading import grade
 
 #: the prose words a statement may use beside its symbols
 _WORDS = {"equals", "it", "is", "symmetric", "two", "small", "rotations", "commute",
           "exactly", "for", "every", "value", "of", "the", "symbols", "x", "and"}
-_PROOFS = [i for i in _variants().drawn() if i != "ex3.6"]
+_PROOFS = [i for i in variants_module().drawn() if i != "ex3.6"]
 
 
 def _text(page: str) -> str:
@@ -42,7 +42,7 @@ def _defined(text: str) -> set[str]:
 
 @pytest.mark.parametrize("ex_id", _PROOFS, ids=[i[2:] for i in _PROOFS])
 def test_every_symbol_of_a_statement_is_defined_on_the_handout(ex_id):
-    mod = _variants()
+    mod = variants_module()
     for k in range(len(mod.statements(ex_id))):
         text = mod.statements(ex_id)[k][0]
         page = _text(handout_text("Quiz", [_one(ex_id, k)]))
@@ -56,7 +56,7 @@ def test_every_symbol_of_a_statement_is_defined_on_the_handout(ex_id):
 def _one(ex_id, k):
     """A drawn variant whose statements include statement ``k``."""
     for n in range(200):
-        s = _variants().draw(ex_id, random.Random(f"symbols {ex_id} {n}"))
+        s = variants_module().draw(ex_id, random.Random(f"symbols {ex_id} {n}"))
         if k in [int(x) for x in s.data["statements"]]:
             return s
     pytest.skip(f"statement {k} of {ex_id} is never drawn (undecided)")

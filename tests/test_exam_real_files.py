@@ -64,7 +64,6 @@ def _run(args, env, cwd):
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_an_interrupted_class_exam_keeps_its_finished_students(tmp_path):
     """One core (the students drawn one after another, in this process): SIGINT at the
     third student's end; the run again draws only the students not kept."""
@@ -99,7 +98,6 @@ def test_an_interrupted_class_exam_keeps_its_finished_students(tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_exam_interrupted_while_drawing_says_one_line(tmp_path):
     """SIGINT at the first student's end (before the workers start): exit 130, one line,
     no traceback."""

@@ -34,7 +34,6 @@ def test_a_sized_block_or_a_bracket_is_no_cross_subscript(latex):
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_a_wide_hat_over_a_6_vector_product_is_its_se3_hat():
     import rigidsym
 

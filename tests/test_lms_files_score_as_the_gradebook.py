@@ -197,7 +197,6 @@ def test_moodle_and_stack_score_a_class_as_the_gradebook(tmp_path):
 
 
 @pytest.mark.slow
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 def test_moodle_and_stack_score_a_class_of_24_as_the_gradebook(tmp_path):
     seen = _check_class(tmp_path, 24, seed=5)
     assert seen["stack"] == 96 and seen["moodle"] >= 48, seen

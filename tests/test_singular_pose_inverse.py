@@ -367,7 +367,6 @@ def _c_call(name: str, ins: tuple, outs: tuple, suffix: str, ctype: str, fmt: st
 
 
 @pytest.mark.slow  # four kernels derived for the C target and a gcc build: ~1 min
-@pytest.mark.unpriced  # new, not yet priced for CI's budget (conftest)
 @pytest.mark.skipif(shutil.which("gcc") is None, reason="gcc is not installed")
 def test_c_target_gives_the_input_back_or_says_it_cannot(tmp_path):
     """The C target, double and float: where the status is 0 the outputs are the NumPy

@@ -25,6 +25,7 @@ from __future__ import annotations
 import html
 import json
 import random
+import types
 from pathlib import Path
 
 from rigidsym.core.files import write_atomic
@@ -38,7 +39,7 @@ from rigidsym.course.worked import (
     solve,
 )
 
-__all__ = ["exam", "read_spec", "asked"]
+__all__ = ["exam", "read_spec", "asked", "variants_module"]
 
 _DRAWS = 50
 _STYLE = """
@@ -114,14 +115,19 @@ def _drawable() -> list[str]:
     """The exercises that draw variants: their own ``random_data``, or the book's
     ``_variants`` module (3.6's data, the proofs' true-or-false statements)."""
     from rigidsym.course.worked import EXERCISE_IDS
-    more = set(_variants().drawn())
+    more = set(variants_module().drawn())
     return [i for i in EXERCISE_IDS if hasattr(exercise_module(i), "random_data")
             or i in more]
 
 
-def _variants():
+def variants_module() -> types.ModuleType:
     """The book's module of variants for the exercises without ``random_data`` (loaded by
-    its configured name: the machinery never imports the book)."""
+    its configured name: the machinery never imports the book).
+
+    Returns:
+        The module ``<exercises package>._variants``: ``draw(ex_id, rng)`` one variant of an
+        exercise, ``drawn()`` the exercises it draws.
+    """
     import importlib
 
     from rigidsym.core import config as _config
@@ -133,7 +139,7 @@ def _variant(ex_id: str, rng):
     own = getattr(exercise_module(ex_id), "random_data", None)
     if own is not None:
         return solve(ex_id, **own(rng))
-    got = _variants().draw(ex_id, rng)
+    got = variants_module().draw(ex_id, rng)
     return solve(ex_id, **got[1]) if isinstance(got, tuple) else got
 
 
