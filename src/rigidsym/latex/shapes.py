@@ -144,16 +144,19 @@ def as_block(c):
     return c
 
 
-def fit_blocks(cells: list[list]) -> list[list]:
+def fit_blocks(cells: list[list], unit_rows: frozenset[int] = frozenset()) -> list[list]:
     """Size the zero and identity blocks (``\\mathbf{O}``, ``\\mathbf{0}``, ``\\mathbf{1}``)
-    from the other blocks of their row and column: the book writes them unsized."""
+    from the other blocks of their row and column: the book writes them unsized.
+    ``unit_rows``: the rows one high where no block of theirs sizes them (a reader's row of
+    scalar zeros, Gallier's ``[B & U; 0 & 0]``)."""
 
     def first(sizes):  # a sized block, else an identity's (square) size
         sizes = list(sizes)
         return next((n for n, c in sizes if not loose(c)),
                     next((n for n, c in sizes if isinstance(c, sp.Identity)), None))
 
-    heights = [first((matrix_shape(c)[0], c) for c in row) for row in cells]
+    heights = [first((matrix_shape(c)[0], c) for c in row) or (1 if i in unit_rows else None)
+               for i, row in enumerate(cells)]
     ncol = max(len(r) for r in cells)
     widths = [first((matrix_shape(r[j])[1], r[j]) for r in cells if j < len(r))
               for j in range(ncol)]

@@ -293,9 +293,14 @@ class BookNotationRules:
             # read as 9 blocks of 1 x 1, was printed block by block; the chapter's parses
             # stay as recorded, tests/test_latex_parses.py)
             return sp.ImmutableMatrix([[self._val(c) for c in r] for r in rows])
+        unit = frozenset()
         if self.reader and any(matrix_shape(c) for r in rows for c in r):  # [R d; 0 1]: 0 a block
+            # a row of scalar zeros alone is one high ([B & U; 0 & 0]), its zeros sized
+            # by their columns
+            unit = frozenset(i for i, r in enumerate(rows)
+                             if all(matrix_shape(c) is None and c == 0 for c in r))
             rows = [[_zero_cell(r) if c == 0 else c for c in r] for r in rows]
-        cells = fit_blocks([[as_block(c) for c in row] for row in rows])
+        cells = fit_blocks([[as_block(c) for c in row] for row in rows], unit)
         try:
             return sp.BlockMatrix(cells) if any(len(r) > 1 for r in cells) or len(cells) > 1 \
                 else cells[0][0]

@@ -143,7 +143,8 @@ class GlyphRules:
             if self.timed(inner.key) and not self.overrides[inner.key].meaning.startswith(
                     ("rotation", "homogeneous")):
                 return self.second_rate(inner.key)  # X's shape (a 4-vector's)
-        if accent == "\\dot" and not items[2:] and not inner.accent:  # of a model
+        if accent == "\\dot" and not items[2:] and (
+                not inner.accent or inner.key in self.overrides):  # of a model (\tilde{R} = ...)
             rate = self.model_rate(inner.key)
             if rate is not None:
                 return rate
@@ -161,7 +162,10 @@ class GlyphRules:
 
     def _resolve(self, base, rest, accent, inner=None, pre=""):
         if inner is not None:  # an accent over a glyph that has its own sub/primes
-            key = f"{accent}{{{inner.key}}}" + "".join(
+            # (or accents: \dot{\hat{R}} is keyed so, its accents recorded as \hat\dot)
+            outer = accent[len(inner.accent):] if inner.accent and \
+                accent.startswith(inner.accent) else accent
+            key = f"{outer}{{{inner.key}}}" + "".join(
                 "_{" + r[1] + "}" if isinstance(r, tuple) else str(r)
                 for r in rest[len(inner.rest):])
         else:
