@@ -11,11 +11,10 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import subprocess
 import time
 from pathlib import Path
 
-import rigidsym
+from blind_trial_c import run_case  # the same answer, judged the same way
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data" / "blind_trial_d.json"
@@ -52,40 +51,12 @@ NOTES = {
 }
 
 
-def run_case(case: dict, timeout: float | None) -> dict:
-    """The checker's answer to one case as typed, judged against its recorded truth."""
-    t0 = time.process_time()
-    try:
-        r = rigidsym.check_latex(case["latex"], let=case["lets"], notation=case["notation"],
-                                 repairs=False, timeout=timeout)
-    except ValueError as exc:
-        return {"id": case["id"], "verdict": "bad-input", "judged": "undecided",
-                "reason": str(exc), "cpu_s": round(time.process_time() - t0, 2)}
-    row = {"id": case["id"], "verdict": r.verdict, "cpu_s": round(time.process_time() - t0, 2)}
-    if r.verdict == "undecided":
-        row.update(judged="undecided", reason=r.detail or r.cause or "")
-    else:
-        said = r.verdict in ("verified", "definition")
-        row["judged"] = "right" if said == case["truth"] else "WRONG"
-        if row["judged"] == "WRONG":
-            row["read_as"] = list(r.model)
-    return row
-
-
-def _commit() -> str:
-    try:
-        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, text=True,
-                              capture_output=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
-
-
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--timeout", type=float, default=60.0, help="CPU seconds per statement")
     ap.add_argument("ids", nargs="*")
     a = ap.parse_args()
-    from test_command import host  # the host as the other records name it
+    from test_command import commit, host  # the host as the other records name it
 
     machine, load = host(), [round(x, 2) for x in os.getloadavg()]
     cases = json.loads(DATA.read_text())["cases"]
@@ -104,7 +75,7 @@ def main() -> None:
     n = len(rows)
     decided = sum(r["judged"] != "undecided" for r in rows)
     wrong = [r["id"] for r in rows if r["judged"] == "WRONG"]
-    record = {"data": "tests/data/blind_trial_d.json", "commit": _commit(), "host": machine,
+    record = {"data": "tests/data/blind_trial_d.json", "commit": commit(), "host": machine,
               "load_before": load, "timeout_cpu_s": a.timeout,
               "wall_s": round(time.perf_counter() - w0, 1),
               "cpu_s": round(time.process_time() - c0, 1),

@@ -88,15 +88,14 @@ def _objects() -> str:
     return f"{_build.object_count(ROOT / 'generated' / 'c', _build.configure())} objects"
 
 
-def _commit() -> str:
-    return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT,
-                          capture_output=True, text=True).stdout.strip() or "unknown"
 
 
 def render(rows) -> str:
+    from test_command import commit  # the checkout's commit, as the other records name it
+
     lines = [BEGIN, "## The build", "",
              "`python benchmarks/build.py --results`: one run of each step on "
-             f"{os.cpu_count()} cores, {_objects()} at commit {_commit()}; CPU = user + "
+             f"{os.cpu_count()} cores, {_objects()} at commit {commit()}; CPU = user + "
              "system of every process the step started (pip, the compilers).", "",
              "| step | wall s | CPU s | load at start |", "|---|---:|---:|---:|"]
     lines += [f"| {what} | {wall:.1f} | {cpu:.1f} | {load:.1f} |" for what, wall, cpu, load

@@ -18,7 +18,6 @@ import importlib.util
 import json
 import os
 import resource
-import subprocess
 import time
 from pathlib import Path
 
@@ -73,12 +72,6 @@ def judge(trial, case: dict, timeout: float | None = 60.0) -> dict:
             "cpu_s": round(cpu, 2)}
 
 
-def _commit() -> str:
-    try:
-        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, text=True,
-                              capture_output=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def main() -> None:
@@ -87,7 +80,7 @@ def main() -> None:
     ap.add_argument("--only", nargs="*", default=None, help="case ids (default: all)")
     ap.add_argument("--out", type=Path, default=OUT)
     args = ap.parse_args()
-    from test_command import host  # the host as the other records name it
+    from test_command import commit, host  # the host as the other records name it
 
     machine, load = host(), [round(x, 2) for x in os.getloadavg()]
     trial = load_trial()
@@ -110,7 +103,7 @@ def main() -> None:
     total["decided_percent"] = round(100 * total["right"] / max(total["statements"], 1), 1)
     out = {"what": "tests/data/estimation_books_typed.py through rigidsym.check_latex as typed "
                    "(repairs off), judged by its NumPy truth",
-           "commit": _commit(), "host": machine, "load_before": load,
+           "commit": commit(), "host": machine, "load_before": load,
            "timeout_s": args.timeout,
            "max_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024),
            "total": total, "books": books, "cases": rows}

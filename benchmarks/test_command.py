@@ -38,6 +38,15 @@ def readme_command(readme: Path) -> str:
     raise SystemExit("README.md has no test command")
 
 
+def commit() -> str:
+    """The checkout's short commit, or "unknown" outside a git checkout."""
+    try:
+        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT, text=True,
+                              capture_output=True, check=True).stdout.strip() or "unknown"
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
 def host() -> dict:
     model = "unknown"
     try:

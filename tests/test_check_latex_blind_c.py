@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import _blind_trial
 import blind_trial_c_truth as truth
 import pytest
 
@@ -35,19 +36,9 @@ def test_the_recorded_truths_are_the_numpy_checks():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("case", [
-    pytest.param(c, id=c["id"], marks=pytest.mark.xfail(strict=True, reason="wrong as typed"))
-    if c["id"] in KNOWN_WRONG else pytest.param(c, id=c["id"]) for c in CASES])
+@pytest.mark.parametrize("case", _blind_trial.params(CASES, KNOWN_WRONG))
 def test_no_verdict_of_the_blind_trial_is_wrong(case):
-    try:
-        r = rigidsym.check_latex(case["latex"], let=case["lets"], notation=case["notation"],
-                                 repairs=False, timeout=None)
-    except ValueError:
-        return  # refused: not decided, never wrong
-    if r.verdict == "undecided":
-        return
-    said = r.verdict in ("verified", "definition")
-    assert said is case["truth"], (r.verdict, r.model)
+    _blind_trial.assert_not_wrong(case)
 
 
 def test_a_counterexample_avoids_the_points_where_a_side_is_undefined():
