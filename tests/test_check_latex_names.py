@@ -239,3 +239,29 @@ def test_a_row_of_scalar_zeros_in_a_block_matrix_is_one_high(corner, verdict):
     lhs = r"e^{\begin{bmatrix} B & U \\ 0 & 0 \end{bmatrix}}"
     rhs = rf"\begin{{bmatrix}} e^B & VU \\ 0 & {corner} \end{{bmatrix}}"
     assert _v(lhs + " = " + rhs, _GALLIER) == verdict
+
+
+_VEX = [r"a: unit vector", r"\theta: angle",
+        r"\tilde{R} = I_3 + \sin\theta\,[a]_\times + (1 - \cos\theta)[a]_\times^2",
+        r"\mathrm{vex}(\mathbf{A}) = \mathbf{A}^\vee", r"H: matrix",
+        r"\mathbb{P}_a(H) = \frac12(H - H^T)"]
+
+
+@pytest.mark.parametrize("rhs, verdict", [
+    (r"\sin\theta\,a", "verified"),
+    pytest.param(r"\theta\,a", "does-not-hold", marks=pytest.mark.slow),
+])
+def test_an_upright_operator_name_and_a_blackboard_letter_are_names_a_let_defines(rhs,
+                                                                                  verdict):
+    """Mahony-Hamel-Pflimlin's vex(P_a(R~)) = sin(theta) a: \\mathrm{vex} is a function a
+    --let defines, as \\mathrm{Exp} is, and \\mathbb{P}_a a name (before: 'unknown operator
+    vex', 'unknown macro \\mathbb'); \\mathbb{I} stays Chirikjian's identity."""
+    assert _v(r"\mathrm{vex}(\mathbb{P}_a(\tilde{R})) = " + rhs, _VEX) == verdict
+
+
+def test_an_undeclared_operator_name_says_how_to_declare_it():
+    with pytest.raises(BadInput, match=r"the operator 'sgn' \(\\mathrm\{sgn\}\), which the "
+                                       r"vocabulary does not have \(declare it: --let "
+                                       r"'\\mathrm\{sgn\}"):
+        _v(r"\mathrm{sgn}(x) = x", [r"x: scalar"])
+    assert _v(r"\mathbb{I}\mathbf{a} = \mathbf{a}", [r"\mathbf{a}: vector"]) == "verified"

@@ -133,6 +133,12 @@ class Env:
             raise NotCovered(f"the glyph {text_of(tree)}, which no declaration names (a "
                              f"notation's meaning)")
         if not letter or not plain and not names.decorated_name(tree):
+            named = tree.children[0] if isinstance(tree, lark.Tree) and tree.children else None
+            if isinstance(named, lark.Tree) and named.data == "namedbase":
+                text = "".join(text_of(tree).split())
+                word = text[text.find("{") + 1:-1]
+                raise NotCovered(f"the operator {word!r} ({text}), which the vocabulary does "
+                                 f"not have (declare it: --let '{text}(x) = ...')")
             raise NotCovered(f"the undeclared glyph {text_of(tree)}")
         if bold and letter.islower():
             return sample("vector", self.rng)
