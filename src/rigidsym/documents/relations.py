@@ -267,6 +267,15 @@ def _printed_number(line: list) -> str | None:
     return inner if core and all(p.isdigit() for p in parts) else None
 
 
+def _take_printed_numbers(lines: list, labels: list[list[str]]) -> None:
+    """Each line's closing printed number (:func:`_printed_number`) moved to its labels."""
+    for li, line in enumerate(lines):
+        number = _printed_number(line)
+        if number is not None:
+            line.pop()
+            labels[li].append(number)
+
+
 def split_display(display: Display) -> list[Relation]:
     """The relations of ``display``, in reading order (:mod:`this module <.relations>`).
 
@@ -301,11 +310,7 @@ def split_display(display: Display) -> list[Relation]:
             labels[-1].append(tok[1])
         else:
             lines[-1][-1].append(tok)
-    for li, line in enumerate(lines):  # a printed number closing the line: its label
-        number = _printed_number(line)
-        if number is not None:
-            line.pop()
-            labels[li].append(number)
+    _take_printed_numbers(lines, labels)
     all_labels = [x for ls in labels for x in ls]
     pending: list[dict] = []  # relations being built: lhs, op, rhs, pos, line
     carry = ""

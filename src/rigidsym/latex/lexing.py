@@ -182,7 +182,8 @@ _NAMED_MAP = re.compile(r"\\(?:mathrm|operatorname)\s*\{\s*([A-Za-z][A-Za-z]+)\s
 
 def named_map_key(token: str) -> str:
     """The one spelling of a named map (the grammar's ``NAMED_MAP``): ``\\operatorname{Exp}``,
-    ``\\mathrm{ Exp }`` -> ``\\mathrm{Exp}`` (``\\mathrm{vex}`` alike); ``\\exp_q``, ``\\exp_{q}`` -> ``\\exp_{q}``."""
+    ``\\mathrm{ Exp }`` -> ``\\mathrm{Exp}`` (``\\mathrm{vex}`` alike); ``\\exp_q``,
+    ``\\exp_{q}`` -> ``\\exp_{q}``."""
     m = _NAMED_MAP.fullmatch(token.strip())
     if not m:
         return "".join(token.split())
