@@ -265,3 +265,23 @@ def test_an_undeclared_operator_name_says_how_to_declare_it():
                                        r"'\\mathrm\{sgn\}"):
         _v(r"\mathrm{sgn}(x) = x", [r"x: scalar"])
     assert _v(r"\mathbb{I}\mathbf{a} = \mathbf{a}", [r"\mathbf{a}: vector"]) == "verified"
+
+
+_MR = [r"\boldsymbol\Pi(t): vector",
+       r"\dot{\boldsymbol\Pi} = \boldsymbol\Pi\times\boldsymbol\Omega",
+       r"\boldsymbol\Omega = \mathbb{I}^{-1}\boldsymbol\Pi", r"I_1: scalar", r"I_2: scalar",
+       r"I_3: scalar", r"\mathbb{I} = \operatorname{diag}(I_1, I_2, I_3)"]
+
+
+@pytest.mark.parametrize("rhs, verdict", [
+    (r"\frac12\boldsymbol\Pi\cdot\boldsymbol\Omega", "verified"),
+    pytest.param(r"\frac12\boldsymbol\Pi\cdot\mathbb{I}\boldsymbol\Pi", "does-not-hold",
+                 marks=pytest.mark.slow),
+])
+def test_a_declared_blackboard_i_is_the_name_not_the_identity(rhs, verdict):
+    """Marsden & Ratiu's inertia tensor \\mathbb{I}, declared: the free rigid body's energy
+    (1/2) Pi . Omega is conserved, (1/2) Pi . I Pi is not (before: 'expected one symbol as
+    NAME, got \\mathbb{I}'); undeclared, \\mathbb{I} stays
+    Chirikjian's identity (test_an_undeclared_operator_name_says_how_to_declare_it)."""
+    lhs = r"\frac{d}{dt}\left(" + rhs + r"\right) = 0"
+    assert _v(lhs, _MR) == verdict

@@ -51,7 +51,8 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["angular_velocities", "conjugate_c", "cross_subscripts", "declared_deltas", "declared_e",
+__all__ = ["angular_velocities", "conjugate_c", "cross_subscripts", "declared_blackboard",
+           "declared_deltas", "declared_e",
            "declared_labels", "floor_cross", "hat_expressions", "rate_entries",
            "tilde_expressions"]
 
@@ -83,6 +84,35 @@ def declared_e(latex: str, let: object) -> tuple[str, object, str]:
     note = ("e^: a power of the declared symbol e (a --let names e), not the exponential; "
             "write \\exp for it") if changed else ""
     return new, out, note
+
+
+#: Chirikjian's identity and zero, \mathbb{I} and \mathbb{O} (also 1, 0), as the grammar reads them
+_BLACKBOARD = re.compile(r"\\mathbb\s*\{\s*([IO01])\s*\}")
+
+
+def declared_blackboard(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: where a ``--let`` names ``\\mathbb{I}`` (Marsden & Ratiu's
+    inertia tensor, ``--let '\\mathbb{I} = \\operatorname{diag}(I_1, I_2, I_3)'``; also
+    ``\\mathbb{O}``), that glyph is the declared name, not Chirikjian's identity (zero): each
+    occurrence in the LaTeX and the declarations is respelt ``\\mathbb{ I }``, the grammar's
+    name in the blackboard font (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args:
+        latex: the LaTeX.
+        let: the declarations, as :func:`declared_e`'s.
+    """
+    decls = _decls(let)
+    named = {m.group(1) for d in decls or []
+             if (m := _BLACKBOARD.fullmatch(re.split(r"[:=(]", d, maxsplit=1)[0].strip()))}
+    if not named:
+        return latex, let, ""
+
+    def name(m):
+        return f"\\mathbb{{ {m.group(1)} }}" if m.group(1) in named else m.group(0)
+
+    glyphs = ", ".join(f"\\mathbb{{{g}}}" for g in sorted(named))
+    return (_BLACKBOARD.sub(name, latex), [_BLACKBOARD.sub(name, d) for d in decls],
+            f"{glyphs}: the declared name, not the identity (zero) matrix")
 
 
 _TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
