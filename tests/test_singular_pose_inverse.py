@@ -418,3 +418,39 @@ def test_c_target_gives_the_input_back_or_says_it_cannot(tmp_path):
                     assert np.abs(np.array(got) - want[r]).max() \
                         <= 4096 * scale * float(np.finfo(dt).eps), label
     assert seen == {0, 1, 16}
+
+
+@pytest.mark.extra
+@pytest.mark.parametrize("backend", ["torch", "jax"])
+def test_the_screw_at_infinity_traced_and_differentiated(backend):
+    """Traced (jax.jit, torch.func.vmap), the pure translation's row is the eager answer and
+    no motion's is NaN (on_singular='nan', the traced default); a gradient through a batch
+    holding both is finite, that of e along t/||t|| (d e/d a' = (1 - e e^T)/||t||)."""
+    lib, to, back = _array_library(backend)
+    Q = np.stack([np.eye(3)] * 3)
+    Q[2] = K.rotation_from_natural_invariants([0.0, 0.6, 0.8], 0.5)
+    a, ap = np.zeros((3, 3)), np.array([[1.0, 2.0, 2.0], [0.0, 0.0, 0.0], [1.0, 1.0, 1.0]])
+    eager = lib.screw_of_displacement(to(Q), to(a), to(ap), on_singular="nan")
+    t = ap[0] / 3.0
+    want = (np.eye(3) - np.outer(t, t)) / 3.0           # d e / d a' of row 0, ||t|| = 3
+    if backend == "jax":
+        import jax
+        import jax.numpy as jnp
+
+        traced = jax.jit(lambda *x: lib.screw_of_displacement(*x))(to(Q), to(a), to(ap))
+        grad = jax.jacfwd(lambda p: lib.screw_of_displacement(to(Q), to(a), p)[0])(to(ap))
+        grad = np.asarray(grad)[0, :, 0, :]
+        assert bool(jnp.all(jnp.isfinite(grad)))
+    else:
+        import torch
+
+        traced = torch.func.vmap(lambda q, x, y: lib.screw_of_displacement(q, x, y))(
+            to(Q), to(a), to(ap))
+        grad = torch.autograd.functional.jacobian(
+            lambda p: lib.screw_of_displacement(to(Q), to(a), p, on_singular="nan")[0][0],
+            to(ap))[:, 0, :].numpy()
+    for e, t_ in zip(eager, traced, strict=True):  # the same NaN and inf; values to an ulp
+        np.testing.assert_allclose(back(e), back(t_), rtol=1e-15, atol=0)
+    got = back(traced[3])
+    assert got[0] == np.inf and np.isnan(got[1]) and np.isfinite(got[2])
+    np.testing.assert_allclose(grad, want, atol=1e-12)

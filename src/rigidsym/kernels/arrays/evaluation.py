@@ -519,7 +519,7 @@ class Space:
         sing = bad
         over = nonfinite_rows(xp, res, batch)
         over = over if big is None else over | big
-        if at_inf is not None:  # pitch = +inf there is the answer, not an overflow
+        if at_inf is not None:  # pitch = +inf, or no motion's NaN: the answer, not an overflow
             over = over & ~at_inf
         bad = bad | (over & ~nonfinite_rows(xp, full, batch))
         if on_singular == "raise":

@@ -74,10 +74,10 @@ def complete(lib, name: str, full: list, res: list, sing, batch: tuple, on_singu
         traced: an input is traced (no host reads).
 
     Returns:
-        ``(outputs, singular mask, answered mask)``: the rows of a screw at infinity
-        answered (the answered mask), those without motion NaN but ``phi``, neither
-        singular any longer; the answered mask is None where no row is a candidate (known
-        without a device read).
+        ``(outputs, singular mask, answered mask)``: the rows answered here (the answered
+        mask: a screw at infinity, or NaN but ``phi`` without motion), no longer singular
+        and whose inf (pitch) or NaN is the answer, not an overflow; the answered mask is
+        None where no row is a candidate (known without a device read).
 
     Raises:
         SingularConfigurationError: eager, ``on_singular="raise"``, a row without motion
@@ -120,4 +120,4 @@ def complete(lib, name: str, full: list, res: list, sing, batch: tuple, on_singu
     out[k + 1] = _put(xp, undetermined, nan, _put(xp, moving, inf, pitch))
     screw = xp.concatenate([xp.zeros_like(e), e], -1)
     out[k + 2] = _put(xp, undetermined, nan, _put(xp, moving, screw, kappa))
-    return out, sing & ~cand, moving
+    return out, sing & ~cand, cand
