@@ -285,3 +285,24 @@ def test_a_declared_blackboard_i_is_the_name_not_the_identity(rhs, verdict):
     Chirikjian's identity (test_an_undeclared_operator_name_says_how_to_declare_it)."""
     lhs = r"\frac{d}{dt}\left(" + rhs + r"\right) = 0"
     assert _v(lhs, _MR) == verdict
+
+
+_GINSBERG = [r"[R]: rotation", r"\{\omega\}: vector", r"[I]: symmetric matrix",
+             r"[I'] = [R][I][R]^T", r"\{\omega'\} = [R]\{\omega\}"]
+
+
+@pytest.mark.parametrize("rhs, verdict", [
+    (r"\frac{1}{2}\{\omega\}^T[I]\{\omega\}", "verified"),
+    pytest.param(r"\frac{1}{2}\{\omega\}^T[I']\{\omega\}", "does-not-hold",
+                 marks=pytest.mark.slow),
+])
+def test_declared_column_braces_are_the_glyph_inside(rhs, verdict):
+    """Ginsberg's {omega} (the column of omega's components), declared: the kinetic energy
+    is the same in either basis, [I'] = [R][I][R]^T (before: 'unknown macro \\{'); undeclared,
+    \\{ stays unread (a set's braces in other books)."""
+    lhs = r"\frac{1}{2}\{\omega'\}^T[I']\{\omega'\} = "
+    assert _v(lhs + rhs, _GINSBERG) == verdict
+    if verdict == "verified":
+        with pytest.raises((BadInput, LatexError), match=r"unknown macro \\\{"):
+            _v(lhs + rhs, [x.replace(r"\{\omega\}: vector", r"\omega: vector")
+                           for x in _GINSBERG])

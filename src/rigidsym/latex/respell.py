@@ -52,7 +52,7 @@ import re
 from rigidsym.latex.lets import read_lets, split_lets
 
 __all__ = ["angular_velocities", "conjugate_c", "cross_subscripts", "declared_blackboard",
-           "declared_deltas", "declared_e",
+           "declared_columns", "declared_deltas", "declared_e",
            "declared_labels", "floor_cross", "hat_expressions", "rate_entries",
            "tilde_expressions"]
 
@@ -113,6 +113,36 @@ def declared_blackboard(latex: str, let: object) -> tuple[str, object, str]:
     glyphs = ", ".join(f"\\mathbb{{{g}}}" for g in sorted(named))
     return (_BLACKBOARD.sub(name, latex), [_BLACKBOARD.sub(name, d) for d in decls],
             f"{glyphs}: the declared name, not the identity (zero) matrix")
+
+
+#: Ginsberg's column-matrix braces around one glyph, \{\omega\}, \{\omega'\}
+_COLUMN = re.compile(r"\\\{\s*((?:\\[A-Za-z]+\s*(?:\{[^{}]*\})?|[A-Za-z])'*)\s*\\\}")
+
+
+def declared_columns(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: where a ``--let`` names ``\\{x\\}`` (Ginsberg's column matrix
+    of x's components, ``--let '\\{\\omega\\}: vector'``), each ``\\{x\\}`` of the LaTeX and the
+    declarations is the glyph x, respelt ``{x}`` (a TeX group: the braces draw the column and
+    group nothing; ``note`` says so); undeclared, ``\\{`` stays unread (a set's braces in
+    other books). Else all unchanged and ``note`` is ``""``.
+
+    Args:
+        latex: the LaTeX.
+        let: the declarations, as :func:`declared_e`'s.
+    """
+    decls = _decls(let)
+    named = {re.sub(r"\s+", "", m.group(1)) for d in decls or []
+             if (m := _COLUMN.fullmatch(re.split(r"[:=]", d, maxsplit=1)[0].strip()))}
+    if not named:
+        return latex, let, ""
+
+    def group(m):
+        return "{" + m.group(1) + "}" if re.sub(r"\s+", "", m.group(1)) in named else m.group(0)
+
+    said = ", ".join(f"\\{{{g}\\}}" for g in sorted(named))
+    return (_COLUMN.sub(group, latex), [_COLUMN.sub(group, d) for d in decls],
+            f"{said}: the column matrix of the glyph inside the braces (Ginsberg's), "
+            f"that glyph")
 
 
 _TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
