@@ -507,7 +507,8 @@ def test_compiled_masked_row_has_zero_gradient():
     parameter the batch shares stays finite, equal to eager autograd's."""
     rng = np.random.default_rng(5)
     base, a, a_dot = _t([rng.standard_normal((4, 3)) for _ in range(3)])
-    base[2] = 0.0  # singular: the pitch is NaN there
+    base[2] = 0.0  # no motion (omega = 0, a_dot = 0): every output NaN there
+    a_dot[2] = 0.0  # (omega = 0 alone is a pure translation, a screw at infinity)
 
     def grads(fn):
         s = torch.tensor(1.5, dtype=torch.float64, requires_grad=True)
