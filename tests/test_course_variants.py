@@ -26,7 +26,7 @@ DEFAULT = (NEW - {"ex3.6"}) | {"ex3.19"}     # 3.6: 12 s (ten replays of 0.7 s)
 
 
 def test_every_exercise_draws_variants_and_the_docs_list_its_slips():
-    assert _exam._drawable() == EXERCISE_IDS
+    assert _exam.drawable() == EXERCISE_IDS
     page = (Path(__file__).resolve().parents[1] / "docs" / "exams.md").read_text()
     for ex_id in EXERCISE_IDS:
         assert f"| {ex_id[2:]} | {slip_list(ex_id)} |" in page, ex_id

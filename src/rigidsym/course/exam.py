@@ -39,7 +39,7 @@ from rigidsym.course.worked import (
     solve,
 )
 
-__all__ = ["exam", "read_spec", "asked", "variants_module"]
+__all__ = ["exam", "read_spec", "asked", "drawable", "variants_module"]
 
 _DRAWS = 50
 _STYLE = """
@@ -81,8 +81,8 @@ def read_spec(spec) -> dict:
         ex_id = normalise_id(str(p["exercise"]))
         if "data" in p and "variants" in p:
             raise ValueError(f"spec: problem {k} gives both data and variants; one of them")
-        if "variants" in p and ex_id not in _drawable():
-            drawn = [i[2:] for i in _drawable()]
+        if "variants" in p and ex_id not in drawable():
+            drawn = [i[2:] for i in drawable()]
             raise ValueError(f"spec: problem {k}: exercise {ex_id[2:]} draws no random "
                              f"variants (those that do: {', '.join(drawn)}); give its data")
     _check_weights(problems)
@@ -111,9 +111,13 @@ def _check_weights(problems: list[dict]) -> None:
                          "weight is 0)")
 
 
-def _drawable() -> list[str]:
+def drawable() -> list[str]:
     """The exercises that draw variants: their own ``random_data``, or the book's
-    ``_variants`` module (3.6's data, the proofs' true-or-false statements)."""
+    ``_variants`` module (3.6's data, the proofs' true-or-false statements).
+
+    Returns:
+        Their ids (``"ex3.1"``, ...), in the order of ``EXERCISE_IDS``.
+    """
     from rigidsym.course.worked import EXERCISE_IDS
     more = set(variants_module().drawn())
     return [i for i in EXERCISE_IDS if hasattr(exercise_module(i), "random_data")
