@@ -63,7 +63,10 @@ needs_book = pytest.mark.skipif(not present(), reason=REASON)
 
 #: (test, path) of each open under SHARED since the current test began
 OPENED: list[tuple[str, str]] = []
-_SHARED_TEXT = str(SHARED.resolve()) + os.sep
+#: ``SHARED`` as written and as resolved: where ``shared`` is a link (a clone beside a
+#: linked ``shared/``), an open through either spelling is under it
+_SHARED_TEXTS = tuple(dict.fromkeys((os.path.abspath(SHARED) + os.sep,
+                                     str(SHARED.resolve()) + os.sep)))
 
 
 def _audit(event: str, args: tuple) -> None:
@@ -74,7 +77,7 @@ def _audit(event: str, args: tuple) -> None:
         path = os.path.abspath(os.fsdecode(args[0]))
     except (TypeError, ValueError):
         return
-    if path.startswith(_SHARED_TEXT) or path + os.sep == _SHARED_TEXT:
+    if path.startswith(_SHARED_TEXTS) or path + os.sep in _SHARED_TEXTS:
         OPENED.append((_CURRENT[0], path))
 
 
