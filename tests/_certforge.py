@@ -17,7 +17,15 @@ rejected on the page or the mathematics, never on a checksum.
 - ``scaled_sides``: both sides of every printed relation times 2 (still an identity);
 - ``negated_side``: a printed relation's right side negated, its evidence an identity;
 - ``transposed_side``: a non-symmetric printed side transposed;
-- ``false_citation``: a symbol line citing a display of the chapter that does not print it.
+- ``false_citation``: a symbol line citing a display of the chapter that does not print it;
+- ``claim_does_not_hold``: a verified id's printed relation kept with its proof, a false
+  claim refuted beside it, the id a does-not-hold;
+- ``refuted_corrected``: a does-not-hold's corrected form replaced by the failing printed
+  relation and its counterexample (a corrected form that is not proved);
+- ``restatement_as_verified`` / ``verified_as_restatement``: the class swapped, the
+  restatement's constant side written ``(1) + (a - a)`` so that it looks computed;
+- ``squaring_bomb`` / ``let_bomb``: a side holding 40 nested squarings of an atom, written
+  out or through 40 lets (degree 2^40: no answer in any time).
 """
 
 from __future__ import annotations
@@ -215,10 +223,86 @@ def false_citation(cert):
     return None
 
 
+def claim_does_not_hold(cert):
+    c = copy.deepcopy(cert)
+    if c["verdict"] != "verified" or not _printed(c):
+        return None
+    c["relations"].append({"label": "a claim", "role": "claim", "lhs": [["1"]],
+                           "rhs": [["0"]], "evidence": {"type": "counterexample",
+                                                        "point": {}, "angles": {}}})
+    c["verdict"] = "does-not-hold"
+    c["cause"] = {"class": "book erratum", "why": "a claim fails at a point"}
+    return c
+
+
+def refuted_corrected(cert):
+    c = copy.deepcopy(cert)
+    corr = [r for r in c["relations"] if r["role"] == "corrected"]
+    fails = [r for r in _printed(c) if r["evidence"]["type"] == "counterexample"]
+    if c["verdict"] != "does-not-hold" or not corr or not fails:
+        return None
+    for k in ("lhs", "rhs", "evidence"):
+        corr[0][k] = copy.deepcopy(fails[0][k])
+    return c
+
+
+def _first_atom(c):
+    return next(n for g in c["atoms"] for n in g["names"])
+
+
+def restatement_as_verified(cert):
+    c = copy.deepcopy(cert)
+    if c["verdict"] != "restatement" or not c["atoms"]:
+        return None
+    a = _first_atom(c)
+    for r in _printed(c):
+        r["rhs"] = [[f"({x}) + ({a} - {a})" for x in row] for row in r["rhs"]]
+    _plain(c, _printed(c))
+    c["verdict"] = "verified"
+    return c
+
+
+def verified_as_restatement(cert):
+    c = copy.deepcopy(cert)
+    if c["verdict"] != "verified" or not _printed(c):
+        return None
+    c["verdict"] = "restatement"
+    return c
+
+
+def squaring_bomb(cert):
+    c = copy.deepcopy(cert)
+    if not _printed(c) or not c["atoms"]:
+        return None
+    x = _first_atom(c)
+    for _ in range(40):
+        x = f"({x})^2"
+    r = _printed(c)[0]
+    r["lhs"] = [[f"({v}) + {x} - {x}" for v in row] for row in r["lhs"]]
+    _plain(c, [r])
+    return c
+
+
+def let_bomb(cert):
+    c = copy.deepcopy(cert)
+    if not _printed(c) or not c["atoms"]:
+        return None
+    prev = _first_atom(c)
+    for k in range(40):
+        c["let"].append([f"bomb{k}", f"({prev})^2"])
+        prev = f"bomb{k}"
+    r = _printed(c)[0]
+    r["lhs"] = [[f"({v}) + {prev} - {prev}" for v in row] for row in r["lhs"]]
+    _plain(c, [r])
+    return c
+
+
 FORGERIES = {f.__name__: f for f in (
     zero_is_one_minus_one, zero_zero_definition, entry_alone, forged_does_not_hold,
     corrected_as_printed, corrected_as_definition, true_as_shape_mismatch, dropped_relation,
-    scaled_sides, negated_side, transposed_side, false_citation)}
+    scaled_sides, negated_side, transposed_side, false_citation, claim_does_not_hold,
+    refuted_corrected, restatement_as_verified, verified_as_restatement, squaring_bomb,
+    let_bomb)}
 
 
 def write_run(folder: Path, certs: dict, book: Path) -> None:

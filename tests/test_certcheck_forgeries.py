@@ -120,7 +120,10 @@ REFUTED = [("3.13", "zero_is_one_minus_one"), ("3.13", "zero_zero_definition"),
            ("3.13", "entry_alone"), ("3.13", "forged_does_not_hold"),
            ("3.57", "corrected_as_printed"), ("3.97b", "corrected_as_printed"),
            ("3.141", "true_as_shape_mismatch"), ("3.141", "forged_does_not_hold"),
-           ("3.18", "scaled_sides"), ("3.18", "negated_side")]
+           ("3.18", "scaled_sides"), ("3.18", "negated_side"),
+           ("3.13", "claim_does_not_hold"), ("3.96e", "refuted_corrected"),
+           ("3.30", "restatement_as_verified"), ("3.13", "verified_as_restatement"),
+           ("3.13", "squaring_bomb"), ("3.97b", "let_bomb")]
 
 
 def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
@@ -128,7 +131,7 @@ def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
     side containing a bare 1 (3.97b's rate of L) is read at its shape, a bold 0 is an array
     sized by its other side (3.141: no shape mismatch, no scalar), so each is a rejection."""
     book_path()  # the run's manifest names the chapter (tests/_book.py)
-    certs = {**quick, **_certs(["3.57", "3.141"])}
+    certs = {**quick, **_certs(["3.57", "3.141", "3.30", "3.96e"])}
     for k, (i, name) in enumerate(REFUTED):
         t = forge.FORGERIES[name](certs[i])
         assert t is not None, (i, name)
@@ -143,6 +146,24 @@ def test_referees_tamperings_fail_with_a_reason(quick, tmp_path):
     forge.write_run(tmp_path / "cite-page", {"3.13.json": c}, BOOK)   # the page alone
     rc, out = _run("--book", BOOK, tmp_path / "cite-page", "--quiet")
     assert rc == 1 and "does not print" in out and "(3.11)" in out, out[-600:]
+
+
+def test_limits_refuse_with_a_located_reason():
+    """Past each bound (docs/certificates.md, Limits) a certificate is refused with the
+    bound named, before any arithmetic; the CPU limit interrupts a block that runs past it."""
+    from certcheck.limits import MAX_NESTING, LimitError, cpu_limit
+    c = _vacuous("e_1^2 + e_2^2 + e_3^2", "1")
+    assert check_certificate(c)[0] == "verified"
+    for side, why in [("(" * (MAX_NESTING + 1) + "e_1" + ")" * (MAX_NESTING + 1), "nested"),
+                      ("e_1^65", "exponent"), ("1" + "0" * 61, "digits"),
+                      ("((e_1^8)^8)^8", "degree bound")]:
+        bad = copy.deepcopy(c)
+        bad["relations"][0]["lhs"] = [[f"e_1^2 + e_2^2 + e_3^2 + {side} - {side}"]]
+        with pytest.raises(CheckError, match=why):
+            check_certificate(bad)
+    with pytest.raises(LimitError, match="CPU"), cpu_limit(0.2):
+        while True:
+            pass
 
 
 def test_a_bare_one_inside_a_side_leaves_its_shape_firm():

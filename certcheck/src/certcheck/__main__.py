@@ -28,9 +28,10 @@ from certcheck.book import (
     locate,
 )
 from certcheck.braces import displays_after
-from certcheck.by_definition import unread_vacuous
+from certcheck.by_definition import page_class, unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
+from certcheck.limits import cpu_limit
 from certcheck.reading import ReadingError, bind, load_reading
 from certcheck.words import said, stated, use
 
@@ -79,31 +80,42 @@ def _one(path: str, book: str | None, fast: bool, quiet: bool,
         if os.path.getsize(path) > MAX_BYTES:
             raise ValueError(f"larger than {MAX_BYTES} bytes (certcheck's limit on one "
                              "certificate)")
-        cert = load(path)
-        bound = [] if reading is None else bind(cert, reading)
-        if book is not None and os.path.basename(path) != \
-                re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
-            raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
-                            f"in the file of another id")
-        page = bound + (check_page(cert, book) if book is not None else cause_lines(cert))
-        verdict, lines = check_certificate(cert, fast=fast)
-        k = n = 0
-        if book is not None:  # the second reader: what is proved is what is printed
-            eq_id = str(cert.get("id"))
-            defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
-            text = locate(book, eq_id)  # a theorem in words: the relation they state
-            page += said(eq_id, text) + compare(
-                cert, stated(eq_id, text), fast=fast, defs=defs, counts=(counts := []),
-                later=displays_after(book, eq_id))
-            (k, n, firm), = counts
-            vac, lines_read = unread_vacuous(cert, firm)  # vacuous: read, or not
-            k, page = max(0, k - 2 * vac), page + lines_read
-        else:
-            n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
+        with cpu_limit():
+            return _bounded(path, book, fast, quiet, reading, t)
     except (CheckError, BookError, ReadingError, OSError, ValueError) as exc:
         return f"FAILED {os.path.basename(path)}: {exc}", -1, 0
+    except RecursionError:
+        return (f"FAILED {os.path.basename(path)}: nested beyond what certcheck follows "
+                "(its limits: docs/certificates.md)", -1, 0)
     except Exception as exc:  # a malformed certificate is a failure, never a pass
         return f"FAILED {os.path.basename(path)}: {type(exc).__name__}: {exc}", -1, 0
+
+
+def _bounded(path: str, book: str | None, fast: bool, quiet: bool, reading: dict | None,
+             t: float) -> tuple[str, int, int]:
+    """:func:`_one` under certcheck's CPU limit."""
+    cert = load(path)
+    bound = [] if reading is None else bind(cert, reading)
+    if book is not None and os.path.basename(path) != \
+            re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
+        raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
+                        f"in the file of another id")
+    page = bound + (check_page(cert, book) if book is not None else cause_lines(cert))
+    verdict, lines = check_certificate(cert, fast=fast)
+    k = n = 0
+    if book is not None:  # the second reader: what is proved is what is printed
+        eq_id = str(cert.get("id"))
+        defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
+        text = locate(book, eq_id)  # a theorem in words: the relation they state
+        page += said(eq_id, text) + compare(
+            cert, stated(eq_id, text), fast=fast, defs=defs, counts=(counts := []),
+            later=displays_after(book, eq_id), read_sides=(sides := []))
+        (k, n, firm), = counts
+        page += page_class(cert, verdict, sides)  # a restatement: the page's word
+        vac, lines_read = unread_vacuous(cert, firm)  # vacuous: read, or not
+        k, page = max(0, k - 2 * vac), page + lines_read
+    else:
+        n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
     out = [(f"CHECKED ({cert.get('id')}) {verdict}" if k == n else
             f"NOT READ {os.path.basename(path)}: ({cert.get('id')}) {verdict} proved, "
             f"{n - k} of {n} printed sides not read from the page (the certificate's "

@@ -14,9 +14,9 @@ two sides count as not read: the relation is the certificate's word.
 
 from __future__ import annotations
 
-from certcheck.check import Statement, is_vacuous
+from certcheck.check import CheckError, Statement, is_vacuous
 
-__all__ = ["unread_vacuous"]
+__all__ = ["page_class", "unread_vacuous"]
 
 
 def unread_vacuous(cert: dict, firm: list[dict]) -> tuple[int, list[str]]:
@@ -44,3 +44,42 @@ def unread_vacuous(cert: dict, firm: list[dict]) -> tuple[int, list[str]]:
         "definition, both sides read from the page (one rational function as read); not "
         "evidence of the id"
         for r in read]
+
+
+def page_class(cert: dict, verdict: str, read_sides: list) -> list[str]:
+    """Whether the page's relations, as read, derive something: a verified id whose printed
+    relations, each read firmly from the page, are constants only there (3.30's determinant
+    of a unit triangular matrix) is a restatement, and a restatement must be one on the page.
+    (Two sides the reader expands to one text are not taken for a restatement: it reads
+    through the page's definitions, 3.76b's both sides among them.) The certificate's sides
+    may be written otherwise (``(1) + (a - a)``); the page's decide.
+
+    Args:
+        cert: the certificate.
+        verdict: what :func:`certcheck.check.check_certificate` proved of it.
+        read_sides: :func:`certcheck.compare.compare`'s ``read_sides``.
+
+    Returns:
+        A line for the referee where the page decided (none where a printed relation is not
+        read firmly: that relation is then NOT READ, the certificate's word).
+
+    Raises:
+        certcheck.check.CheckError: the certificate's class is not the page's.
+    """
+    printed = [r for r in cert.get("relations", []) if r.get("role") == "printed"]
+    if verdict not in ("verified", "restatement") or not printed or \
+            len(read_sides) != len(printed):
+        return []
+    probe = {**cert, "verdict": "verified", "let": [
+        *cert.get("let", []), *{n: t for _, _, _, lets in read_sides for n, t in lets}.items()],
+        "relations": [{"label": r.get("label", ""), "role": "printed", "lhs": lhs, "rhs": rhs,
+                       "evidence": {"type": "identity"}} for r, lhs, rhs, _ in read_sides]}
+    st = Statement(probe)  # constants only: the reader may expand both sides to one text
+    restated = all(is_vacuous(rel, st, same=False) for rel in st.rels)
+    if restated != (verdict == "restatement"):
+        raise CheckError(f"({cert.get('id')}) the certificate says {verdict}, but the page's "
+                         "relations as read " + ("are constants only: a restatement"
+                                                 if restated else
+                                                 "derive something: not a restatement"))
+    return [f"class decided from the page: {'a restatement' if restated else 'derives something'}"
+            " (the printed relations as read)"]

@@ -22,6 +22,7 @@ from types import SimpleNamespace
 
 from certcheck import kinds as K
 from certcheck.field import Field, Root, Vanishing, evaluate
+from certcheck.limits import MAX_DIGITS, LimitError, check_tree
 from certcheck.parse import ParseError, names_in, parse
 from certcheck.poly import make_ring
 
@@ -81,11 +82,15 @@ class Statement:
                 same = same and k < len(last) and last[k] == pairs[k]  # parsed once
                 self.lets[name] = trees[name] if same else parse(text, self.lets)
             _LETS[:] = pairs, self.lets
-            self.rels = []
+            self.rels, memo = [], {}
             for r in cert.get("relations", []):
                 lhs = [[parse(x, self.lets) for x in row] for row in r["lhs"]]
                 rhs = [[parse(x, self.lets) for x in row] for row in r["rhs"]]
+                for t in (t for row in lhs + rhs for t in row):
+                    check_tree(t, _who(r), memo)
                 self.rels.append((r, lhs, rhs))
+        except LimitError as exc:
+            raise CheckError(f"beyond certcheck's limits: {exc}") from None
         except (ParseError, KeyError, TypeError, ValueError) as exc:
             raise CheckError(f"statement outside the grammar: {exc}") from None
         # every name an atom of a declared group, jets only of timed ones; usage per relation
@@ -346,6 +351,9 @@ def _who(r: dict) -> str:
 
 # ----------------------------------------------------------------------------- counterexample
 def _rational(text, what: str) -> Fraction:
+    if len(str(text)) > 2 * MAX_DIGITS + 2:
+        raise CheckError(f"{what}: a number of {len(str(text))} characters (certcheck's "
+                         f"limit: {MAX_DIGITS} digits a part)")
     try:
         return Fraction(str(text))
     except (ValueError, ZeroDivisionError):
@@ -538,11 +546,13 @@ def check_cofactors(st: Statement, index: int, ev: dict, fast: bool = True) -> s
         if len(mus) != len(hyps):
             raise CheckError(f"{where}: {len(mus)} cofactors for {len(hyps)} hypotheses")
         try:
-            D = evaluate(parse(e["denominator"], st.lets), F, leaf, trig, memo)
+            check_tree(D := parse(e["denominator"], st.lets), f"{where}'s denominator")
+            D = evaluate(D, F, leaf, trig, memo)
             total = F.mul(D, F.sub(evaluate(a, F, leaf, trig, memo),
                                    evaluate(b, F, leaf, trig, memo)))
             for mu, h in zip(mus, hyps, strict=True):
-                total = F.sub(total, F.mul(evaluate(parse(mu), F, leaf, trig, memo), h))
+                check_tree(m := parse(mu), f"{where}'s cofactor")
+                total = F.sub(total, F.mul(evaluate(m, F, leaf, trig, memo), h))
         except (Vanishing, ValueError, KeyError) as exc:
             raise CheckError(f"{where}: {exc}") from None
         if not F.is_zero(total):
@@ -596,13 +606,14 @@ _FREE = SimpleNamespace(
     mul=lambda a, b: (a[0] or b[0], a[0] or b[0] or a[1] and b[1]))
 
 
-def is_vacuous(rel, st: Statement) -> bool:
-    """Vacuous: the two sides are one expression once the lets are read in, or both are
-    constants only, an atom standing only in a product with a literal 0 (``1·1·1 = 1``;
-    3.30's determinant of a unit triangular block matrix, expanded)."""
+def is_vacuous(rel, st: Statement, same: bool = True) -> bool:
+    """Vacuous: the two sides are one expression once the lets are read in (unless
+    ``same`` is false), or both are constants only, an atom standing only in a product with
+    a literal 0 (``1·1·1 = 1``; 3.30's determinant of a unit triangular block matrix,
+    expanded)."""
     memo: dict = {}
     try:
-        return rel[1] == rel[2] or all(
+        return same and rel[1] == rel[2] or all(
             evaluate(x, _FREE, lambda n: (False, False), lambda k, a: (False, False), memo)[1]
             for side in rel[1:] for row in side for x in row)
     except ValueError:  # a square root: not a constant of this kind
@@ -624,6 +635,15 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
         raise CheckError("no relation")
     roles = {rel[0].get("role") for rel in st.rels}
     printed = [rel for rel in st.rels if rel[0].get("role") == "printed"]
+    unproved = [rel for rel in st.rels if rel[0].get("role") == "corrected"
+                and rel not in by["identity"] + by["cofactors"]]
+    if unproved:  # a corrected form is a theorem of the certificate: proved, or no form
+        raise CheckError(f"{_who(unproved[0][0])}: a corrected form needs identity or "
+                         "cofactor evidence (it is proved, never stated or refuted)")
+    if verdict == "restatement" and not all(is_vacuous(rel, st) for rel in printed or st.rels):
+        raise CheckError("a restatement, but a printed relation derives something (its sides "
+                         "are neither one expression nor constants only): verified or not, "
+                         "never a restatement")
     if verdict in ("verified", "restatement"):  # a restatement: identities deriving nothing
         if by["counterexample"] or by["shape"] or by["statement"] or \
                 not roles <= {"printed", "claim"}:
@@ -642,10 +662,15 @@ def _check(cert: dict, fast: bool) -> tuple[str, list[str]]:
                   for rel in printed if rel in vacuous and verdict == "verified"]
     elif verdict == "does-not-hold":
         failing = [rel for rel in by["counterexample"] + by["shape"]
-                   if rel[0].get("role") in ("printed", "claim")]
+                   if rel[0].get("role") == "printed" or rel[0].get("role") == "claim"
+                   and isinstance(rel[0].get("page"), int)]  # a chain's member, printed
         if not failing or by["statement"]:
-            raise CheckError("a does-not-hold needs a printed member with a counterexample "
-                             "or a shape mismatch")
+            raise CheckError("a does-not-hold needs a printed relation with a counterexample "
+                             "or a shape mismatch (a failing claim is not the page's)")
+        refuted = [rel for rel in by["counterexample"] + by["shape"] if rel not in failing]
+        if refuted:
+            raise CheckError(f"{_who(refuted[0][0])}: refuted, but not a printed relation "
+                             "(a does-not-hold fails on what the page prints)")
     elif verdict == "definition":
         if all(str(x).strip() == "0" for rel in printed for s in ("lhs", "rhs")
                for row in rel[0][s] for x in row):

@@ -22,7 +22,8 @@ __all__ = ["compare"]
 
 
 def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
-            counts: list | None = None, later: str = "") -> list[str]:
+            counts: list | None = None, later: str = "",
+            read_sides: list | None = None) -> list[str]:
     """Read ``page`` under the certificate's symbol table and check that each printed
     relation of the certificate is the printed one: each side the reader reads is the
     certificate's side as a rational function under the kinds' hypotheses. ``defs``
@@ -30,6 +31,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
     their printed definitions above the id, each cited. ``counts``: ``(sides read,
     printed sides, the relations read firmly on both sides)`` appended to it. ``later``:
     the book's displays after the id (:func:`certcheck.braces.displays_after`).
+    ``read_sides``: for each relation read firmly on both sides, ``(relation, the page's
+    lhs rows, the page's rhs rows, the lets the reader named)`` appended to it, so that
+    what the page's relation is (a restatement, say) is decided from the page.
 
     Returns:
         Lines for the referee: what was read, and what was not (a finding, never a pass).
@@ -167,6 +171,8 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
             (matched if tentative else read).append(
                 side + (f" (through {', '.join(dict.fromkeys(cited))})" if cited else ""))
         n_read, firm = n_read + len(read) + len(matched), firm + [rel] * (len(read) == 2)
+        if len(read) == 2 and read_sides is not None:
+            read_sides.append((rel, pairs[k][0][0].rows, pairs[k][1][0].rows, list(lets)))
         if read:
             out.append(f"read from the page: relation {k + 1}'s {' and '.join(read)}, the "
                        "certificate's under the symbol table")

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import re
 
+from certcheck.limits import MAX_NESTING
+
 __all__ = ["ParseError", "parse", "names_in"]
 
 _TOKEN = re.compile(r"\s*(?:(\d+|[A-Za-z][A-Za-z0-9_.]*'*|[-^*/+()])|(\S))")
@@ -43,7 +45,14 @@ def _tokens(text: str) -> list[str]:
 
 class _Parser:
     def __init__(self, text: str, lets: dict):
-        self.toks, self.i, self.lets = _tokens(text), 0, lets
+        self.toks, self.i, self.lets, self.depth = _tokens(text), 0, lets, 0
+
+    def deeper(self) -> None:
+        """One more level of parentheses or minus signs; past :data:`MAX_NESTING`, a
+        refusal (never a recursion error)."""
+        self.depth += 1
+        if self.depth > MAX_NESTING:
+            raise ParseError(f"nested deeper than {MAX_NESTING} levels (certcheck's limit)")
 
     def peek(self) -> str:
         return self.toks[self.i] if self.i < len(self.toks) else ""
@@ -70,7 +79,10 @@ class _Parser:
     def unary(self):
         if self.peek() == "-":
             self.take()
-            return ("neg", self.unary())
+            self.deeper()
+            node = ("neg", self.unary())
+            self.depth -= 1
+            return node
         return self.power()
 
     def power(self):
@@ -90,15 +102,19 @@ class _Parser:
             return ("num", int(tok))
         if tok in ("cos", "sin", "sqrt"):
             self.take("(")
+            self.deeper()
             arg = self.expr()
             self.take(")")
+            self.depth -= 1
             return (tok, arg)
         if tok[0].isalpha():
             return ("pi",) if tok == "pi" else self.lets[tok] if tok in self.lets else \
                 ("name", tok)
         if tok == "(":
+            self.deeper()
             node = self.expr()
             self.take(")")
+            self.depth -= 1
             return node
         raise ParseError(f"unexpected {tok!r}")
 
