@@ -197,3 +197,60 @@ def test_a_declared_bracket_cross_is_used_by_both_semantics_and_said(reading, ve
 def test_a_bracket_cross_reading_no_book_has_is_refused_naming_both():
     with pytest.raises(BadInput, match=r"'bracket cross: content', 'bracket cross: bind'"):
         _check(GROVES, C + ["bracket cross: inside"])
+
+
+A = [r"\mathbf{a}: vector"]
+#: Marsden & Ratiu's inertia tensor, principal axes (1999) ch. 15
+MR = [r"I_1: scalar", r"I_2: scalar", r"I_3: scalar",
+      r"\mathbb{I} = \operatorname{diag}(I_1, I_2, I_3)"]
+PRINCIPAL = (r"\mathbb{I}\mathbf{a} = \begin{bmatrix} I_1 a_1 \\ I_2 a_2 \\ I_3 a_3 "
+             r"\end{bmatrix}")
+
+
+def test_an_undeclared_blackboard_i_is_asked_where_the_readings_disagree():
+    """\\mathbb{I} a = a: true of Chirikjian's identity, false of Marsden & Ratiu's inertia
+    tensor (a symmetric 3x3 matrix): bad input naming both, each verdict and the --let."""
+    with pytest.raises(BadInput) as e:
+        _check(r"\mathbb{I}\mathbf{a} = \mathbf{a}", A)
+    msg = str(e.value)
+    assert "the identity: verified; a symmetric 3×3 matrix: does-not-hold" in msg, msg
+    assert "Chirikjian" in msg and "Marsden & Ratiu" in msg, msg
+    assert r"--let '\mathbb{I}: identity'" in msg and r"--let '\mathbb{I}: symmetric " \
+        r"matrix'" in msg, msg
+
+
+@pytest.mark.parametrize("latex, lets, verdict", [
+    (r"\mathbb{I}\mathbf{a} = \mathbf{a}", A + [r"\mathbb{I}: identity"], "verified"),
+    (r"\mathbb{I}\mathbf{a} = \mathbf{a}", A + [r"\mathbb{I}: symmetric matrix"],
+     "does-not-hold"),
+    # true of the inertia tensor on its principal axes, false of the identity
+    (PRINCIPAL, A + MR, "verified"),
+    (PRINCIPAL, A + MR[:3] + [r"\mathbb{I}: identity"], "does-not-hold"),
+])
+def test_each_declaration_of_blackboard_i_decides(latex, lets, verdict):
+    r = _check(latex, lets)
+    assert r.verdict == verdict, r.model
+    if r"\mathbb{I}: identity" in lets:
+        assert any(r"declared by --let '\mathbb{I}: identity'" in m for m in r.model), r.model
+
+
+@pytest.mark.parametrize("latex, lets, said", [
+    (r"\mathbb{I}^T = \mathbb{I}", [], "both verified"),  # symmetric either way
+    (r"\mathbb{I}\mathbf{a} = 2\mathbf{a}", A, "both does-not-hold"),
+    # a 4x4 identity: the 3x3 inertia tensor does not fit
+    (r"\begin{bmatrix} R & \mathbf{t} \\ \mathbf{0}^T & 1 \end{bmatrix}\begin{bmatrix} R^T & "
+     r"-R^T\mathbf{t} \\ \mathbf{0}^T & 1 \end{bmatrix} = \mathbb{I}",
+     [r"R: rotation", r"\mathbf{t}: vector"], "does not type-check"),
+])
+def test_an_undeclared_blackboard_i_is_decided_where_one_verdict_remains(latex, lets, said):
+    r = _check(latex, lets)
+    assert r.verdict in ("verified", "does-not-hold")
+    assert any(m.startswith(r"\mathbb{I}: not declared") and said in m for m in r.model), \
+        r.model
+
+
+def test_a_sized_blackboard_i_is_the_identity_and_a_twice_declared_one_refused():
+    assert _check(r"\mathbb{I}_3\mathbf{a} = \mathbf{a}", A).verdict == "verified"
+    with pytest.raises(BadInput, match="declared twice"):
+        _check(r"\mathbb{I}\mathbf{a} = \mathbf{a}",
+               A + [r"\mathbb{I}: identity", r"\mathbb{I}: matrix"])

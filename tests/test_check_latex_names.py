@@ -255,7 +255,7 @@ def test_an_upright_operator_name_and_a_blackboard_letter_are_names_a_let_define
                                                                                   verdict):
     """Mahony-Hamel-Pflimlin's vex(P_a(R~)) = sin(theta) a: \\mathrm{vex} is a function a
     --let defines, as \\mathrm{Exp} is, and \\mathbb{P}_a a name (before: 'unknown operator
-    vex', 'unknown macro \\mathbb'); \\mathbb{I} stays Chirikjian's identity."""
+    vex', 'unknown macro \\mathbb'); \\mathbb{I} is contested (test_check_latex_contested)."""
     assert _v(r"\mathrm{vex}(\mathbb{P}_a(\tilde{R})) = " + rhs, _VEX) == verdict
 
 
@@ -264,7 +264,8 @@ def test_an_undeclared_operator_name_says_how_to_declare_it():
                                        r"vocabulary does not have \(declare it: --let "
                                        r"'\\mathrm\{sgn\}"):
         _v(r"\mathrm{sgn}(x) = x", [r"x: scalar"])
-    assert _v(r"\mathbb{I}\mathbf{a} = \mathbf{a}", [r"\mathbf{a}: vector"]) == "verified"
+    assert _v(r"\mathbb{I}\mathbf{a} = \mathbf{a}",
+              [r"\mathbf{a}: vector", r"\mathbb{I}: identity"]) == "verified"
 
 
 _MR = [r"\boldsymbol\Pi(t): vector",
@@ -281,8 +282,8 @@ _MR = [r"\boldsymbol\Pi(t): vector",
 def test_a_declared_blackboard_i_is_the_name_not_the_identity(rhs, verdict):
     """Marsden & Ratiu's inertia tensor \\mathbb{I}, declared: the free rigid body's energy
     (1/2) Pi . Omega is conserved, (1/2) Pi . I Pi is not (before: 'expected one symbol as
-    NAME, got \\mathbb{I}'); undeclared, \\mathbb{I} stays
-    Chirikjian's identity (test_an_undeclared_operator_name_says_how_to_declare_it)."""
+    NAME, got \\mathbb{I}'); undeclared, \\mathbb{I} is read both ways, Chirikjian's identity
+    and a name (test_check_latex_contested)."""
     lhs = r"\frac{d}{dt}\left(" + rhs + r"\right) = 0"
     assert _v(lhs, _MR) == verdict
 
@@ -301,7 +302,11 @@ def test_declared_column_braces_are_the_glyph_inside(rhs, verdict):
     is the same in either basis, [I'] = [R][I][R]^T (before: 'unknown macro \\{'); undeclared,
     \\{ stays unread (a set's braces in other books)."""
     lhs = r"\frac{1}{2}\{\omega'\}^T[I']\{\omega'\} = "
-    assert _v(lhs + rhs, _GINSBERG) == verdict
+    r = rigidsym.check_latex(lhs + rhs, let=_GINSBERG, repairs=False)
+    assert r.verdict == verdict
+    # the model's own NAME [I'] is no identity read (before: "in --let '[I'] = ...': I':
+    # the identity (no --let declares I')")
+    assert not any("the identity" in line for line in r.model), r.model
     if verdict == "verified":
         with pytest.raises((BadInput, LatexError), match=r"unknown macro \\\{"):
             _v(lhs + rhs, [x.replace(r"\{\omega\}: vector", r"\omega: vector")

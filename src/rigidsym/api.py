@@ -182,6 +182,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI;
     ``None`` where the time limit passed before the LaTeX was read)."""
     from rigidsym.latex import contested, limit, quaternions, tangent
+    from rigidsym.latex.respell import declared_identity, open_blackboard
     from rigidsym.numeval.conventions import declared_readings
     from rigidsym.numeval.values import quaternion_convention, quaternion_storage, tangent_order
 
@@ -192,6 +193,10 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     let, order, said = tangent.split_setting(let, notation)
     let, product, product_said = quaternions.split_setting(let, notation)
     let, settled, settled_said = contested.split_settings(let)  # 'bracket cross: content'
+    let, identity_said = declared_identity(let)  # '\mathbb{I}: identity' (Chirikjian's)
+    if identity_said is not None:  # it joins the check's id
+        settled_said = [*settled_said, identity_said]
+    board_open = identity_said is None and open_blackboard(latex, let)
     product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
     # the user's own lets may fix the storage order (scalar last); the rule of the units
     # stays the declaration's, else both rules are read in that order
@@ -212,34 +217,71 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                                    f"--let '{product_said}'" if product_said else ""), \
                 quaternion_storage(None if order_q is None else order_q == "last"), \
                 contested.using(settled, settled_said), declared_readings(settled):
-            with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
-                r, reading = _check_latex_steps(latex, let, book, modules, repairs,
-                                                repair_budget, notation, repair_seconds, seen)
-            if rule_open and r.verdict != "undecided" and any(
-                    "quaternion product:" in n for n in reading.notes):
-                # the product is used and nothing declares its rule: read under the other
-                # rule, and the other scalar's place where nothing fixes it
-                verdicts = {(product, order_q or ("last" if product == quaternions.JPL
-                                                  else "first")): r.verdict}
-                verdicts.update(_other_quaternion_readings(
-                    product, order_q, (latex, let, book, modules, repair_budget, notation,
-                                       repair_seconds), (order, said)))
-                quaternions.both_conventions(verdicts, reading.notes,
-                                             stored[1] if stored else None)
+
+            def read(let, repairs, seen):
+                """The statement read under every quaternion and tangent reading left
+                open, ``let`` its declarations."""
+                with tangent.using(order, said), tangent_order(order == tangent.TRANSLATION):
+                    r, reading = _check_latex_steps(latex, let, book, modules, repairs,
+                                                    repair_budget, notation, repair_seconds,
+                                                    seen)
+                if rule_open and r.verdict != "undecided" and any(
+                        "quaternion product:" in n for n in reading.notes):
+                    # the product is used and nothing declares its rule: read under the
+                    # other rule, and the other scalar's place where nothing fixes it
+                    verdicts = {(product, order_q or ("last" if product == quaternions.JPL
+                                                      else "first")): r.verdict}
+                    verdicts.update(_other_quaternion_readings(
+                        product, order_q, (latex, let, book, modules, repair_budget,
+                                           notation, repair_seconds), (order, said)))
+                    quaternions.both_conventions(verdicts, reading.notes,
+                                                 stored[1] if stored else None)
+                    r.model = list(r.model) + reading.notes[-1:]
+                if fixed or r.verdict == "undecided" or not any(
+                        n.startswith("tangent order:") for n in reading.notes):
+                    return r, reading
+                # the order matters and nothing declares it: read in the other order too
+                with tangent.using(tangent.TRANSLATION, tangent.OTHER), tangent_order(True):
+                    other, _ = _check_latex_steps(latex, let, book, modules, False,
+                                                  repair_budget, notation, repair_seconds, {})
+                tangent.both_orders(r.verdict, other.verdict, reading.notes)
                 r.model = list(r.model) + reading.notes[-1:]
-            if fixed or r.verdict == "undecided" or not any(
-                    n.startswith("tangent order:") for n in reading.notes):
                 return r, reading
-            # the order matters and nothing declares it: read in the other order too
-            with tangent.using(tangent.TRANSLATION, tangent.OTHER), tangent_order(True):
-                other, _ = _check_latex_steps(latex, let, book, modules, False, repair_budget,
-                                              notation, repair_seconds, {})
-            tangent.both_orders(r.verdict, other.verdict, reading.notes)
-            r.model = list(r.model) + reading.notes[-1:]
+
+            r, reading = read(let, repairs, seen)
+            if identity_said is not None:
+                reading.notes.append(f"\\mathbb{{I}}: the identity (declared by --let "
+                                     f"'{identity_said}')")
+                r.model = list(r.model) + reading.notes[-1:]
+            if board_open and r.verdict != "undecided":
+                _blackboard_readings(r, reading, read, let)
             return r, reading
     except limit.TimeUp as exc:
         return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
                         process_time() - t0)
+
+
+def _blackboard_readings(r: Result, reading, read, let) -> None:
+    """An undeclared ``\\mathbb{I}`` read as the identity gave ``r``: the statement read
+    again with it a name (Marsden & Ratiu's inertia tensor, a symmetric 3×3 matrix; ``read``
+    reads under ``let``); where the verdicts agree a note joins ``r`` and ``reading``
+    (:func:`rigidsym.latex.respell.both_blackboard`).
+
+    Raises:
+        BadInput: the readings disagree, or the name reading is refused."""
+    from rigidsym.latex.respell import both_blackboard, with_name_reading
+    from rigidsym.latex.shapes import LatexError
+
+    other, why = None, ""
+    try:
+        other = read(with_name_reading(let), False, {})[0].verdict
+    except LatexError as exc:
+        first = str(exc).splitlines()[0].split(" in '", 1)[0]
+        why = f"{exc.construct}: {first}"
+    except BadInput as exc:
+        why = str(exc).splitlines()[0]
+    both_blackboard(r.verdict, other, reading.notes, why)
+    r.model = list(r.model) + reading.notes[-1:]
 
 
 def _other_quaternion_readings(product: str, order_q: str | None, args: tuple,

@@ -476,9 +476,11 @@ BASELINE = {
     'e-se3-exp': 'refused',
 }
 
-#: the answers as typed with the trial's rules: 43 right, 1 refused, 0 undecided, 0 WRONG
+#: the answers as typed with the trial's rules: 42 right, 2 refused, 0 undecided, 0 WRONG
 #: (the four slips whose sides differ only through the norm of a free vector under sin/cos
-#: do not hold at a point of rational norm, proven by ball arithmetic)
+#: do not hold at a point of rational norm, proven by ball arithmetic; c-jl-r-jr, right
+#: while an undeclared \mathbb{I} was the identity, is asked: Marsden & Ratiu's inertia
+#: tensor is the other reading, and J_l = R J_r does not hold of it)
 AS_TYPED = {
     'f-skew-anti': 'right',
     'f-skew-anti-slip': 'right',
@@ -508,7 +510,7 @@ AS_TYPED = {
     'c-ad-inv-slip': 'right',
     'c-ad-ad': 'right',
     'c-ad-ad-slip': 'right',
-    'c-jl-r-jr': 'right',
+    'c-jl-r-jr': 'refused',
     'c-jr-r-jl-slip': 'right',
     'c-jl-jrt': 'refused',
     'c-hat-conj': 'right',
@@ -528,13 +530,17 @@ AS_TYPED = {
 
 #: the one attempt a reader makes after the message of a case refused as typed: the
 #: ``--let`` the message names dropped (a declaration of a symbol the statement never uses)
-ATTEMPT = {"c-jl-jrt": {"drop": [r"R = \exp(\theta N)"]}}
+#: or added (Chirikjian's \mathbb{I}, read both ways where nothing declares it: J_l = R J_r
+#: holds of the identity, not of a symmetric matrix)
+ATTEMPT = {"c-jl-jrt": {"drop": [r"R = \exp(\theta N)"]},
+           "c-jl-r-jr": {"add": [r"\mathbb{I}: identity"]}}
 
 #: the answers after the one attempt of :data:`ATTEMPT`
-AS_ATTEMPTED = {"c-jl-jrt": "right"}
+AS_ATTEMPTED = {"c-jl-jrt": "right", "c-jl-r-jr": "right"}
 
 
 def attempted(case: dict) -> tuple[str, list]:
     """The LaTeX and ``--let``s of ``case`` after its :data:`ATTEMPT` (as typed if none)."""
-    drop = ATTEMPT.get(case["id"], {}).get("drop", [])
-    return case["latex"], [x for x in case["let"] if x not in drop]
+    how = ATTEMPT.get(case["id"], {})
+    drop = how.get("drop", [])
+    return case["latex"], [x for x in case["let"] if x not in drop] + how.get("add", [])

@@ -88,6 +88,15 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
                  "Lewis (2004)"),),
         r"write (xy)^\wedge or [xy]_\times for the hat of the product"),
     Construct(
+        "blackboard I", r"\mathbb{I}",
+        (Reading("identity", "the identity matrix, sized by its neighbours",
+                 "Chirikjian (2011) vol. 2 ch. 10"),
+         Reading("inertia", "a name: the inertia tensor, a symmetric 3×3 matrix",
+                 "Marsden & Ratiu (1999) ch. 15: Π = 𝕀Ω")),
+        r"--let '\mathbb{I}: identity' (or write \mathbb{I}_3), or a --let naming it "
+        r"(--let '\mathbb{I}: symmetric matrix', --let '\mathbb{I} = "
+        r"\operatorname{diag}(I_1, I_2, I_3)')"),
+    Construct(
         "exponential", r"e^{X}",
         (Reading("scalar", "the scalar exponential, where the exponent is a scalar "
                  "(e^{\\operatorname{tr} X}, e^{i\\theta})", "Hall (2015) Thm 2.12 (Jacobi)"),

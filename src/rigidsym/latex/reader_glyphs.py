@@ -330,8 +330,13 @@ class GlyphReader:
 
     def model_readings(self, x: Let, readings: list[str]) -> None:
         """The readings of a ``--let`` model, printed with the others (before, a
-        bracket read inside a model was never said)."""
+        bracket read inside a model was never said). Those of its own NAME are left out:
+        the model is read as ``NAME = LATEX``, and the NAME there is no value read (Ginsberg's
+        ``[I'] = [R][I][R]^T`` printed "I': the identity", the glyph before the
+        declaration made it a name)."""
         for r in readings:
+            if r.startswith(f"{x.key}: "):
+                continue
             note = f"in --let '{x.text}': {r}"
             if note not in self.notes:
                 self.notes.append(note)
