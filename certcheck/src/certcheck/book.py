@@ -2,7 +2,9 @@
 
 - :func:`locate`: the printed text of an id in the book's text (the referee's copy; never
   shipped): the display ``$$ ... $$`` tagged ``(3.xx)`` or ``\\tag{3.xx}``, its tag cut
-  off, or the paragraph of ``**Theorem 3.x.y.**``.
+  off, or the paragraph of ``**Theorem 3.x.y.**``; a reader's own id ``ns:name`` in a
+  reader's own text likewise, tagged ``\\tag{ns:name}`` or ``(ns:name)``
+  (:data:`READER_ID`).
 - :func:`check_page`: a certificate's ``book_latex`` is that text (spaces collapsed, a
   closing comma or full stop dropped; a theorem's words a part of its paragraph), and the
   cause of a does-not-hold is one of the three classes, a conversion slip with its
@@ -22,14 +24,17 @@ import re
 from certcheck.alternatives import check_units
 
 __all__ = ["BookError", "locate", "check_page", "check_manifest", "sha256", "CAUSES",
-           "definitions_before", "symbol_words"]
+           "definitions_before", "symbol_words", "READER_ID"]
 
 #: the causes of a does-not-hold a certificate may give
 CAUSES = ("book erratum", "conversion slip", "undetermined")
 
+#: a reader's own id, ``namespace:name`` (rigidsym's user ids): printed in a reader's text
+READER_ID = re.compile(r"[a-z][a-z0-9_-]*:[A-Za-z0-9_.-]+")
+
 _DISPLAY = re.compile(r"\$\$(.*?)\$\$", re.S)
 _TAG = re.compile(r"\s*(?:\\quad\s*)?(?:\\tag\{[^}]*\}|\((?:3\.\d+[a-z]?)"
-                  r"(?:\s*,\s*3\.\d+[a-z]?)*\))\s*$")
+                  r"(?:\s*,\s*3\.\d+[a-z]?)*\)|\(" + READER_ID.pattern + r"\))\s*$")
 
 
 class BookError(Exception):
@@ -106,7 +111,8 @@ def check_page(cert: dict, book: str) -> list[str]:
             does-not-hold gives no cause of :data:`CAUSES`.
     """
     eq_id = str(cert.get("id", ""))
-    if not re.fullmatch(r"3\.\d+[a-z]?|(thm|cor)3\.\d\.\d|caveat3\.\d", eq_id):
+    if not re.fullmatch(r"3\.\d+[a-z]?|(thm|cor)3\.\d\.\d|caveat3\.\d", eq_id) and \
+            not READER_ID.fullmatch(eq_id):  # a reader's own id: printed in their text
         if cert.get("book_latex"):
             raise BookError(f"({eq_id}): not a printed id, yet it gives a printed text")
         return [f"({eq_id}) is the project's own statement (not printed in the book): bound "

@@ -22,16 +22,27 @@ from rigidsym.checking.certifying.certificates import (
 )
 from rigidsym.core.progress import Reporter
 
-__all__ = ["export", "certificate_field", "certify_line"]
+__all__ = ["export", "certificate_field", "certify_line", "all_checked"]
 
 
 def _make(job: tuple) -> tuple[str, dict | str]:
-    eq_id, verdict, members = job
-    return eq_id, certificate_or_reason(eq_id, verdict, members)
+    eq_id, verdict, members, reading = job
+    return eq_id, certificate_or_reason(eq_id, verdict, members, reading)
+
+
+def _keyed(key: str | None, reading: str | None) -> str | None:
+    """A certificate's store key, the reader's reading file's bytes joined to it (a user
+    id's table is the reading's lines: another reading, another certificate)."""
+    if key is None or reading is None:
+        return key
+    import hashlib
+    from pathlib import Path
+
+    return hashlib.sha256(key.encode() + b"\0" + Path(reading).read_bytes()).hexdigest()
 
 
 def export(results, directory, book: str | None = None, jobs: int = 1, cache: bool = True,
-           progress: bool = True) -> dict:
+           progress: bool = True, reading: str | None = None) -> dict:
     """Write and re-check the certificates of ``results`` into ``directory``.
 
     Args:
@@ -42,16 +53,20 @@ def export(results, directory, book: str | None = None, jobs: int = 1, cache: bo
         cache: read and store certificates in the verdict store (``False``:
             ``--no-cache``, every certificate made anew and nothing stored).
         progress: a progress line per tenth of the certificates made (stderr).
+        reading: the reading file of a reader's own text: the user ids' symbol tables are
+            its lines, its SHA-256 goes into the manifest and certcheck is given it as
+            ``--reading`` (``None``: the book's reading for a run of the book's ids).
 
     Returns:
         :func:`~rigidsym.checking.certifying.certificates.write_certificates`' summary.
     """
     decided = [r for r in results if r.verdict != "undecided"]
     deps: dict = {}
-    keys = {r.id: verdict_cache.certificate_key(r.id, r.verdict, r.members, deps)
+    keys = {r.id: _keyed(verdict_cache.certificate_key(r.id, r.verdict, r.members, deps),
+                         reading)
             for r in decided} if cache else {}
     made = {i: c for i, k in keys.items() if k and (c := verdict_cache.read_certificate(i, k))}
-    todo = [(r.id, r.verdict, r.members) for r in decided if r.id not in made]
+    todo = [(r.id, r.verdict, r.members, reading) for r in decided if r.id not in made]
     with Reporter("rigidsym verify", enabled=progress) as rep:
         with rep.phase(f"certificates of {len(todo)} ids", total=len(todo)) as ph:
             for eq_id, cert in _made(todo, jobs):
@@ -60,16 +75,26 @@ def export(results, directory, book: str | None = None, jobs: int = 1, cache: bo
                     verdict_cache.store_certificate(eq_id, keys[eq_id], cert)
                 ph.advance(1, eq_id)
             ph.finish(f"{len(todo)} made, {len(decided) - len(todo)} from the verdict store")
-        summary = write_certificates(results, directory, book=book, made=made)
+        summary = write_certificates(results, directory, book=book, made=made,
+                                     reading=reading)
         if summary["written"]:
             with rep.phase(f"certcheck on {len(summary['written'])} certificates") as ph:
                 summary.update(recheck_folder(directory, {certificate_file(i): i for i in
                                                           summary["written"]}, book, jobs,
                                               reading=summary.get("reading")))
                 ph.finish("certcheck not found: not re-checked" if summary["rechecked"] is None
-                          else "re-checked" if not summary["failures"] else
-                          f"certcheck FAILED on {len(summary['failures'])}")
+                          else f"certcheck FAILED on {len(summary['failures'])}"
+                          if summary["failures"] else
+                          f"proved; {len(summary['not_read'])} not read from the page on "
+                          "every side" if summary.get("not_read") else "re-checked")
     return summary
+
+
+def all_checked(summary: dict) -> bool:
+    """Whether certcheck printed ``CHECKED (id)`` for every certificate written (each
+    proved, bound to the page and the reading, every printed side read) and exited 0."""
+    return summary.get("exit") == 0 and bool(summary["written"]) and \
+        set(summary.get("checked") or ()) == set(summary["written"])
 
 
 def _made(todo: list, jobs: int):
@@ -97,13 +122,33 @@ def certificate_field(summary: dict, eq_id: str) -> dict:
             "rechecked": None if rechecked is None else rechecked.get(eq_id)}
 
 
-def certify_line(summary: dict, directory) -> str:
-    """One line on what was written and re-checked (``rigidsym verify --certificates``)."""
+def certify_line(summary: dict, directory, bound: bool = False) -> str:
+    """One line on what was written and re-checked (``rigidsym verify --certificates``).
+
+    Args:
+        summary: :func:`export`'s summary.
+        directory: the folder, as the user named it.
+        bound: the run is bound to a reader's own text and reading (``--book`` and
+            ``--reading`` with ``--module``): the line says whether every certificate is
+            ``CHECKED`` (:func:`all_checked`), and names those that are not.
+    """
     s = f"certificates: {len(summary['written'])} written to {directory}"
     if summary["skipped"]:
         s += f", {len(summary['skipped'])} ids without one (SKIPPED.txt)"
     if summary["rechecked"] is None:
         return s + "; certcheck not found, not re-checked (pip install ./certcheck)"
+    if bound:
+        n, k = len(summary["written"]), len(set(summary.get("checked") or ()))
+        s += (f"; certcheck CHECKED {k} of {n} (each bound to the text and the reading, every "
+              "printed side read from the text)" if all_checked(summary) else
+              f"; NOT CHECKED: certcheck CHECKED {k} of {n} (exit {summary.get('exit')}), "
+              f"{len(summary['failures'])} failed, {len(summary.get('not_read') or {})} not "
+              "read from the text on every side")
+        for i, why in (summary.get("not_read") or {}).items():
+            s += f"\n  certcheck NOT READ ({i}): {why}"
+        for i, why in summary["failures"].items():
+            s += f"\n  certcheck FAILED ({i}): {why}"
+        return s
     ok = sum(summary["rechecked"].values())
     s += f"; certcheck re-checked {ok} of {len(summary['rechecked'])}"
     if summary.get("not_read"):

@@ -29,7 +29,11 @@ EXAMPLES = """\
   rigidsym verify --certificates certs    a certificate per id, re-checked by certcheck
                                           (docs/certificates.md)
   rigidsym verify --certificates certs --book ../shared/book/angeles-chapter3.md
-                                          ... each bound to its printed text, one run"""
+                                          ... each bound to its printed text, one run
+  rigidsym verify --module examples/rotation_notes.py --certificates certs \\
+      --book examples/rotation_notes.md --reading examples/rotation_notes.reading.toml
+                                          your module's, bound to your text and reading:
+                                          exit 1 unless certcheck CHECKED every one"""
 
 
 def add_arguments(v) -> None:
@@ -67,6 +71,12 @@ def add_arguments(v) -> None:
                         "referee's copy, never shipped): its SHA-256 goes into the folder's "
                         "MANIFEST.json and certcheck binds each certificate to the text "
                         "printed as its id (default: none)")
+    v.add_argument("--reading", metavar="FILE",
+                   help="with --certificates and --module: the reading of your text (TOML, "
+                        "docs/own-equations.md): your ids' symbol tables and classes are its "
+                        "lines, certcheck holds them to it, and the run exits 1 unless "
+                        "certcheck CHECKED every certificate (default: with --book, the "
+                        "reading beside the text, TEXT.reading.toml, when there is one)")
     add_repair_arguments(v)
 
 
@@ -172,6 +182,7 @@ def _coq(results, cert_dir, certified, coq_dir) -> str:
 
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
+    from rigidsym.checking.export import all_checked
     from rigidsym.checking.runner import run_checks  # sympy: after the parser
     from rigidsym.registry.declarations import is_user_id
     from rigidsym.report.record import cause_line, summary, transcription_extra
@@ -187,6 +198,7 @@ def run(args) -> int:
         if not Path(args.book).is_file():
             raise BadInput(f"--book: expected the book's text file, got {args.book!r}")
     ids = select_with_modules(args.ids, args.section, args.module)
+    reading = _user_reading(args, ids, is_user_id)
     fmt = output_format(args)
     # a JSON document carries the transcription records: computed beside the verdicts in
     # the workers that build the declarations, never built again here
@@ -197,12 +209,15 @@ def run(args) -> int:
                          **repair_options(args))
     wall = time.perf_counter() - t0
     certified = None
+    # a reader's module bound to their text: only CHECKED certificates pass (fail closed)
+    bound = bool(args.certificates) and (reading is not None or (
+        args.book is not None and any(is_user_id(i) for i in ids)))
     if args.certificates:
         from rigidsym.checking.export import certify_line, export
 
         certified = export(results, args.certificates, book=args.book, jobs=args.jobs,
-                           cache=not args.no_cache, progress=not args.quiet)
-        print(certify_line(certified, args.certificates), file=sys.stderr)
+                           cache=not args.no_cache, progress=not args.quiet, reading=reading)
+        print(certify_line(certified, args.certificates, bound=bound), file=sys.stderr)
     if args.coq:
         print(_coq(results, args.certificates, certified, args.coq), file=sys.stderr)
     if args.json:
@@ -217,10 +232,20 @@ def run(args) -> int:
     if book and summary(book)["does-not-hold"]:
         line += (f"; of the book's equations, {summary(book)['does-not-hold']} do not hold "
                  f"as printed: {cause_line(book)}")
+    unchecked = bound and certified is not None and bool(certified["written"]) and \
+        not all_checked(certified)
+    if unchecked:
+        line += ("; certificates NOT CHECKED by certcheck (" + (
+            "certcheck not found" if certified["rechecked"] is None else
+            f"{len(set(certified.get('checked') or ()))} of {len(certified['written'])} "
+            f"CHECKED, certcheck exit {certified.get('exit')}") + ")")
+    elif bound and certified is not None and certified["written"]:
+        line += (f"; certificates: certcheck CHECKED {len(certified['written'])} of "
+                 f"{len(certified['written'])} against the text and the reading")
     if fmt == "json":  # stdout is the document; the words go to stderr
         sys.stdout.write(_document(results, certified))
         print(line, file=sys.stderr)
-        return 1 if off else 0
+        return 1 if off or unchecked else 0
     if not args.quiet:
         (_table if fmt == "table" else _plain)(results)
         _repairs(results)
@@ -234,6 +259,45 @@ def run(args) -> int:
                                     if r.verdict == "does-not-hold") else "its own"
         print(f"Why an equation does not hold, in {whose} symbols: rigidsym show ID")
     if certified is not None and certified["written"] and (
-            certified["rechecked"] is None or certified["failures"]):
+            certified["rechecked"] is None or certified["failures"] or unchecked):
         return 1   # a certificate certcheck rejected, or none re-checked: never a pass
     return 1 if off else 0
+
+
+def _user_reading(args, ids: list[str], is_user_id) -> str | None:
+    """The reading file of the reader's text the run's user ids are bound to: ``--reading``,
+    or with ``--book`` and a module's ids, the reading beside the text
+    (``TEXT.reading.toml``, :func:`rigidsym.reading.sidecar`) when there is one; ``None``
+    for a run of the book's ids.
+
+    Raises:
+        BadInput: ``--reading`` without ``--certificates``, not a readable reading file, or
+            given for a run that holds the book's ids (their reading is the book's).
+    """
+    from pathlib import Path
+
+    from rigidsym.core.errors import BadInput
+    from rigidsym.reading import load_reading, sidecar
+
+    path = args.reading
+    if path is None:
+        beside = sidecar(args.book) if args.book is not None else None
+        if beside is None or not beside.is_file() or not any(is_user_id(i) for i in ids):
+            return None
+        path = str(beside)
+    elif not args.certificates:
+        raise BadInput("--reading: only with --certificates DIR (the certificates' symbol "
+                       "tables are its lines)")
+    book_ids = [i for i in ids if not is_user_id(i)]
+    if book_ids:
+        raise BadInput(f"--reading: the reading of your own text, for a --module's ids; the "
+                       f"run holds the book's ids too ({', '.join(book_ids[:3])}"
+                       f"{', ...' if len(book_ids) > 3 else ''}), whose reading is the book's: "
+                       "certify them in a run of their own")
+    if not Path(path).is_file():
+        raise BadInput(f"--reading: expected a reading file (TOML), got {path!r}")
+    try:
+        load_reading(path)
+    except BadInput as exc:
+        raise BadInput(f"--reading: {exc}") from None
+    return path

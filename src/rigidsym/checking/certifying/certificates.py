@@ -51,7 +51,7 @@ from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
 __all__ = ["FORMAT", "VERSION", "Unprintable", "certificate", "certificate_or_reason",
            "write_certificates", "certificate_file", "recheck_folder", "write_manifest",
-           "cause_record", "CAUSE_CLASSES", "symbol_table", "page_reading"]
+           "cause_record", "CAUSE_CLASSES", "symbol_table", "page_reading", "reading_for"]
 
 FORMAT = "rigidsym-certificate"
 VERSION = 1
@@ -138,7 +138,8 @@ def _fails(r, model: dict, seed: int) -> bool:
 
 
 def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
-                seed: int | None = None, cofactors: bool = True) -> dict:
+                seed: int | None = None, cofactors: bool = True,
+                reading: str | Path | None = None) -> dict:
     """The certificate of an id's verdict (a plain dict; ``json.dumps`` writes it).
 
     Args:
@@ -151,10 +152,14 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         cofactors: give an identity cofactor evidence where
             :func:`rigidsym.checking.certifying.cofactors.cofactor_evidence` finds it (else, and
             when ``False``, a re-computation certificate).
+        reading: the reading file of a reader's own text (:mod:`rigidsym.reading`): a user
+            id's symbol table, relation tables and page reading are its lines
+            (:func:`reading_for`); ignored for a book id, whose reading is the book's.
 
     Raises:
         Unprintable: the statement leaves the grammar, an atom has a kind the checker does
             not know, or no counterexample was found.
+        BadInput: ``reading`` is not a readable reading file.
         ValueError: an undecided verdict (nothing to certify).
     """
     from rigidsym.checking.deciding.explicit import seed_of
@@ -215,7 +220,7 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
         if role != "corrected" and (pair := _restated_pair(eq.latex or "", lhs, rhs)):
             rels[-1]["restated"] = {"printed": "X^{-1} = Y", "proved": "X Y = 1",
                                     "X": pair[0], "Y": pair[1]}
-        if role != "corrected" and (own := relation_table(eq_id, r.label)):
+        if role != "corrected" and (own := relation_table(eq_id, r.label, reading)):
             rels[-1]["symbols"] = own  # F = N, L or H: this member's F (the page's words)
         if role == "claim" and getattr(r, "page", 0):  # a chain's member the page prints
             rels[-1]["page"] = r.page
@@ -230,9 +235,9 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
     out = {"format": FORMAT, "version": VERSION, "id": eq_id, "title": eq.title,
            "verdict": verdict, "book_latex": eq.latex or "", "atoms": atoms,
            "book_names": dict(sorted(pr.book.items())), "let": pr.lets, "relations": rels}
-    out["symbols"] = symbol_table(atoms, eq_id)
+    out["symbols"] = symbol_table(atoms, eq_id, reading)
     if verdict == "does-not-hold":
-        out["cause"] = cause_record(eq)
+        out["cause"] = cause_record(eq, reading)
     return out
 
 
@@ -297,31 +302,51 @@ def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
     return m.group(1), m.group(2)
 
 
-def symbol_table(atoms: list[dict], eq_id: str) -> list[dict]:
+def reading_for(eq_id: str, reading: str | Path | None = None):
+    """The reading whose lines an id's certificate carries: the book's
+    (:func:`rigidsym.registry.declarations.book_reading`) for a book id, whatever
+    ``reading`` is; ``reading`` (a reader's own reading file) for a user id ``ns:name``,
+    ``None`` without one. A user id never takes a line of the book's reading (its glyphs
+    may look the same, ``\\mathbf{Q}``, and mean the reader's model).
+
+    Returns:
+        A :class:`rigidsym.reading.Reading`, or ``None``.
+
+    Raises:
+        BadInput: ``reading`` is not a readable reading file.
+    """
+    if is_user_id(eq_id):
+        return reading_of(reading)
+    return reading_of(book_reading())
+
+
+def symbol_table(atoms: list[dict], eq_id: str,
+                 reading: str | Path | None = None) -> list[dict]:
     """One entry per glyph the statement's atoms stand for, for a referee to hold against
     the page (certcheck reads the printed LaTeX under it, docs/certificates.md): the model
     symbols' own lines (``{"glyph", "kind", "atoms"}``, their rates), then the lines the
     book's reading gives the id (:func:`rigidsym.registry.declarations.book_reading`,
     :mod:`rigidsym.checking.certifying.reading_table`): a cross-product matrix, a formula of
     another chapter as the page reproduces it, what the page says in words. A reader's own
-    id has the model symbols' lines alone.
+    id takes the lines of ``reading``, the reading file of the reader's text
+    (:func:`reading_for`); without one, the model symbols' lines alone.
 
     Raises:
         Unprintable: the reading gives a line the statement's atoms cannot back.
+        BadInput: ``reading`` is not a readable reading file.
     """
-    reading = None if is_user_id(eq_id) else reading_of(book_reading())
     try:
-        return reading_table.table(atoms, id_lets(reading, eq_id))
+        return reading_table.table(atoms, id_lets(reading_for(eq_id, reading), eq_id))
     except reading_table.ReadingMismatch as exc:
         raise Unprintable(f"({eq_id}): {exc}") from None
 
 
-def relation_table(eq_id: str, label: str) -> list[dict]:
-    """The table the reading gives one relation of ``eq_id`` (a member of a family, a unit
-    alternative: its label), ``[]`` where it gives none."""
-    if is_user_id(eq_id) or not label:
+def relation_table(eq_id: str, label: str, reading: str | Path | None = None) -> list[dict]:
+    """The table the reading (:func:`reading_for`) gives one relation of ``eq_id`` (a
+    member of a family, a unit alternative: its label), ``[]`` where it gives none."""
+    if not label:
         return []
-    lets = id_lets(reading_of(book_reading()), eq_id, label)
+    lets = id_lets(reading_for(eq_id, reading), eq_id, label)
     return reading_table.table([], lets, own=False) if lets else []
 
 
@@ -329,27 +354,27 @@ def relation_table(eq_id: str, label: str) -> list[dict]:
 CAUSE_CLASSES = {"erratum": "book erratum", "conversion": "conversion slip"}
 
 
-def page_reading(eq_id: str) -> str:
-    """The reading's decided page reading of ``eq_id`` (a slip of the converted text: what
-    the printed page is read to show, ``"verified: ..."`` or ``"its own erratum: ..."``),
-    ``""`` where it gives none."""
-    if is_user_id(eq_id):
-        return ""
-    reading = reading_of(book_reading())
-    entry = reading.ids.get(eq_id) if reading is not None else None
+def page_reading(eq_id: str, reading: str | Path | None = None) -> str:
+    """The reading's (:func:`reading_for`) decided page reading of ``eq_id`` (a slip of
+    the converted text: what the printed page is read to show, ``"verified: ..."`` or
+    ``"its own erratum: ..."``), ``""`` where it gives none."""
+    found = reading_for(eq_id, reading)
+    entry = found.ids.get(eq_id) if found is not None else None
     return entry.page_reading if entry is not None else ""
 
 
-def cause_record(eq) -> dict:
+def cause_record(eq, reading: str | Path | None = None) -> dict:
     """The cause of a does-not-hold declaration for its certificate: ``{"class": "book
-    erratum" | "conversion slip" | "undetermined", "why": the declared evidence}``, and for
+    erratum" | "conversion slip" | "undetermined", "why": the declared evidence (a
+    reader's id: its evidence, else its ``cause=`` words)}``, and for
     a conversion slip ``"page_reading"``: what the printed page is declared to show, a
     conjecture about the page (the source is a converted text) whose corrected form the
     certificate proves."""
     cls = CAUSE_CLASSES.get(eq.cause, "undetermined")
-    out = {"class": cls, "why": eq.evidence or ""}
+    # a reader's cause= is their words (the book's is one of CAUSE_CLASSES' keys)
+    out = {"class": cls, "why": eq.evidence or (eq.cause if is_user_id(eq.id) else "") or ""}
     if cls == "conversion slip":
-        decided = page_reading(eq.id)
+        decided = page_reading(eq.id, reading)
         out["page_reading"] = ("conjecture: the printed page shows the corrected form below, "
                                "the converted text lost or changed a glyph: "
                                + (eq.evidence or "(no evidence declared)")
@@ -376,13 +401,15 @@ def _add_cofactors(pr: StatementPrinter, rels: list, sides: list, atoms: list, s
             rel["evidence"] = {"type": "identity", "why_not_cofactors": str(exc)}
 
 
-def certificate_or_reason(eq_id: str, verdict: str, members: list[dict] | None) -> dict | str:
-    """:func:`certificate` of a result, or why it has none (an undecided verdict, a
-    statement :class:`Unprintable`): what a folder's ``SKIPPED.txt`` says of the id."""
+def certificate_or_reason(eq_id: str, verdict: str, members: list[dict] | None,
+                          reading: str | Path | None = None) -> dict | str:
+    """:func:`certificate` of a result (a user id's tables from ``reading``), or why it has
+    none (an undecided verdict, a statement :class:`Unprintable`): what a folder's
+    ``SKIPPED.txt`` says of the id."""
     if verdict == "undecided":
         return "undecided: nothing to certify"
     try:
-        return certificate(eq_id, verdict, members)
+        return certificate(eq_id, verdict, members, reading=reading)
     except (Unprintable, ValueError) as exc:
         return str(exc)
 
@@ -404,7 +431,8 @@ def write_certificates(results, directory, recheck: bool = False,
         made: id -> :func:`certificate_or_reason`, made before (the export's workers or
             store: :mod:`rigidsym.checking.export`); an id not in it is made here.
         reading: the reading file the certificates are bound to (its SHA-256 into
-            ``MANIFEST.json``, ``--reading`` for the checker); ``None``: the book's reading
+            ``MANIFEST.json``, ``--reading`` for the checker; the user ids' symbol tables
+            are its lines, :func:`reading_for`); ``None``: the book's reading
             (:func:`rigidsym.registry.declarations.book_reading`) where every id written is
             the book's, else none.
 
@@ -417,7 +445,8 @@ def write_certificates(results, directory, recheck: bool = False,
     out.mkdir(parents=True, exist_ok=True)
     written, skipped, files, evidence = [], {}, {}, {}
     for r in results:
-        cert = (made or {}).get(r.id) or certificate_or_reason(r.id, r.verdict, r.members)
+        cert = (made or {}).get(r.id) or certificate_or_reason(r.id, r.verdict, r.members,
+                                                               reading)
         if isinstance(cert, str):
             skipped[r.id] = cert
             continue
@@ -500,9 +529,11 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
 
     Returns:
         ``{"rechecked": {id: passed}, "checker": where it was found, "failures": {id:
-        reason}, "not_read": {id: what}}``; ``rechecked`` is ``None`` when certcheck is
-        not found; ``not_read``: ids proved whose printed sides are not all read from the
-        page (certcheck's exit 3).
+        reason}, "not_read": {id: what}, "checked": [ids], "exit": certcheck's exit
+        status}``; ``rechecked`` is ``None`` (and ``exit`` ``None``) when certcheck is not
+        found; ``not_read``: ids proved whose printed sides are not all read from the page
+        (certcheck's exit 3); ``checked``: the ids certcheck printed ``CHECKED (id)`` for,
+        proved with every printed side read from the page.
     """
     import os
     import subprocess
@@ -510,7 +541,8 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
 
     where = _checker_path()
     if where is None:
-        return {"rechecked": None, "checker": None, "failures": {}, "not_read": {}}
+        return {"rechecked": None, "checker": None, "failures": {}, "not_read": {},
+                "checked": [], "exit": None}
     env = dict(os.environ)
     if where:
         env["PYTHONPATH"] = where + os.pathsep + env.get("PYTHONPATH", "")
@@ -519,8 +551,10 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
     proc = subprocess.run([sys.executable, "-m", "certcheck", "--quiet", "--jobs", str(jobs),
                            *book_args, str(directory)],
                           capture_output=True, text=True, env=env, check=False)
-    failures, not_read = {}, {}
+    failures, not_read, checked = {}, {}, []
     for line in proc.stdout.splitlines():
+        if line.startswith("CHECKED ("):
+            checked.append(line[len("CHECKED ("):].split(") ", 1)[0])
         if line.startswith("NOT READ "):
             name, _, why = line[len("NOT READ "):].partition(": ")
             not_read[files.get(name, name)] = why
@@ -530,8 +564,10 @@ def recheck_folder(directory, files: dict, book: str | None = None, jobs: int = 
                 failures[files[name]] = why
             else:  # the folder's manifest: no id of its own
                 failures[f"({name.split(' ')[0]})"] = why
-    passed = {i: i not in failures for i in files.values()}
-    if proc.returncode not in (0, 1, 3):
-        failures["(certcheck)"] = proc.stderr.strip()[-300:]
+    if proc.returncode not in (0, 1, 3) or (proc.returncode == 1 and not failures):
+        failures["(certcheck)"] = (f"exit {proc.returncode}: "  # never a silent pass
+                                   + (proc.stderr.strip() or proc.stdout.strip())[-300:])
+    passed = {i: i not in failures and proc.returncode in (0, 1, 3) for i in files.values()}
     return {"rechecked": passed, "checker": where or "installed certcheck",
-            "failures": failures, "not_read": not_read}
+            "failures": failures, "not_read": not_read, "checked": checked,
+            "exit": proc.returncode}

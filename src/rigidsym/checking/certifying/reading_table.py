@@ -12,6 +12,7 @@ import functools
 import re
 from pathlib import Path
 
+from rigidsym.core.errors import BadInput
 from rigidsym.reading import Let, Reading, load_reading
 
 __all__ = ["ReadingMismatch", "atom_lines", "glyph_of", "id_lets", "reading_of", "table"]
@@ -88,11 +89,20 @@ def _load(path: str, stamp: float) -> Reading:
 
 def reading_of(path: str | Path | None) -> Reading | None:
     """The reading file at ``path`` (parsed once per change of the file), ``None`` for
-    ``None``."""
+    ``None``.
+
+    Raises:
+        BadInput: the file is missing or unreadable, or not a reading
+            (:func:`rigidsym.reading.parse_reading`), naming it.
+    """
     if path is None:
         return None
     p = Path(path)
-    return _load(str(p), p.stat().st_mtime)
+    try:
+        stamp = p.stat().st_mtime
+    except OSError as exc:
+        raise BadInput(f"reading {p}: cannot read the file ({exc.strerror})") from None
+    return _load(str(p), stamp)
 
 
 def id_lets(reading: Reading | None, eq_id: str, relation: str = "") -> list[Let]:
