@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import time
 from pathlib import Path
 
@@ -68,34 +69,51 @@ def run_case(case: dict, timeout: float | None) -> dict:
     return row
 
 
-def main() -> None:
+def run_trial(data: Path, out: Path, notes: dict[str, str], *, provenance: bool = True) -> None:
+    """The blind trials' one main (C, D, E): run each case of ``data`` as typed (or only the ids
+    given), print a line each and, for a whole run, write the record to ``out``; with
+    ``provenance`` the record names the commit, the host, the load and the wall/CPU time."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--timeout", type=float, default=60.0, help="CPU seconds per statement")
     ap.add_argument("ids", nargs="*")
     a = ap.parse_args()
-    cases = json.loads(DATA.read_text())["cases"]
+    head: dict = {"data": data.relative_to(ROOT).as_posix()}
+    if provenance:
+        from test_command import commit, host  # the host as the other records name it
+
+        load = [round(x, 2) for x in os.getloadavg()]
+        head.update(commit=commit(), host=host(), load_before=load)
+    head["timeout_cpu_s"] = a.timeout
+    cases = json.loads(data.read_text())["cases"]
     rows = []
+    w0, c0 = time.perf_counter(), time.process_time()
     for case in cases:
         if a.ids and case["id"] not in a.ids:
             continue
         row = run_case(case, a.timeout)
         row["truth"] = case["truth"]
-        if case["id"] in NOTES:
-            row["note"] = NOTES[case["id"]]
+        if case["id"] in notes:
+            row["note"] = notes[case["id"]]
         rows.append(row)
         print(row["id"], row["verdict"], row["judged"], row["cpu_s"],
               row.get("reason", "")[:300].replace("\n", " | "), flush=True)
     n = len(rows)
     decided = sum(r["judged"] != "undecided" for r in rows)
     wrong = [r["id"] for r in rows if r["judged"] == "WRONG"]
-    record = {"data": "tests/data/blind_trial_c.json", "timeout_cpu_s": a.timeout,
-              "n": n, "decided_as_typed": decided,
-              "decided_fraction": round(decided / n, 4) if n else None,
-              "wrong": wrong, "rows": rows}
+    record = dict(head)
+    if provenance:
+        record.update(wall_s=round(time.perf_counter() - w0, 1),
+                      cpu_s=round(time.process_time() - c0, 1))
+    record.update(n=n, decided_as_typed=decided,
+                  decided_fraction=round(decided / n, 4) if n else None, wrong=wrong, rows=rows)
     if not a.ids:
-        OUT.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n")
-    print(json.dumps({k: record[k] for k in ("n", "decided_as_typed", "decided_fraction",
-                                              "wrong")}))
+        out.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n")
+    keys = ("n", "decided_as_typed", "decided_fraction", "wrong")
+    print(json.dumps({k: record[k] for k in keys + (("wall_s", "cpu_s") if provenance else ())}))
+
+
+def main() -> None:
+    run_trial(DATA, OUT, NOTES, provenance=False)  # the third trial's record named no host
 
 
 if __name__ == "__main__":

@@ -8,13 +8,9 @@ reason), the fraction decided as typed, and the machine it ran on.
 
 from __future__ import annotations
 
-import argparse
-import json
-import os
-import time
 from pathlib import Path
 
-from blind_trial_c import run_case  # the same answer, judged the same way
+from blind_trial_c import run_trial  # the same answer, judged and recorded the same way
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA = ROOT / "tests" / "data" / "blind_trial_d.json"
@@ -52,40 +48,7 @@ NOTES = {
 
 
 def main() -> None:
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--timeout", type=float, default=60.0, help="CPU seconds per statement")
-    ap.add_argument("ids", nargs="*")
-    a = ap.parse_args()
-    from test_command import commit, host  # the host as the other records name it
-
-    machine, load = host(), [round(x, 2) for x in os.getloadavg()]
-    cases = json.loads(DATA.read_text())["cases"]
-    rows = []
-    w0, c0 = time.perf_counter(), time.process_time()
-    for case in cases:
-        if a.ids and case["id"] not in a.ids:
-            continue
-        row = run_case(case, a.timeout)
-        row["truth"] = case["truth"]
-        if case["id"] in NOTES:
-            row["note"] = NOTES[case["id"]]
-        rows.append(row)
-        print(row["id"], row["verdict"], row["judged"], row["cpu_s"],
-              row.get("reason", "")[:300].replace("\n", " | "), flush=True)
-    n = len(rows)
-    decided = sum(r["judged"] != "undecided" for r in rows)
-    wrong = [r["id"] for r in rows if r["judged"] == "WRONG"]
-    record = {"data": "tests/data/blind_trial_d.json", "commit": commit(), "host": machine,
-              "load_before": load, "timeout_cpu_s": a.timeout,
-              "wall_s": round(time.perf_counter() - w0, 1),
-              "cpu_s": round(time.process_time() - c0, 1),
-              "n": n, "decided_as_typed": decided,
-              "decided_fraction": round(decided / n, 4) if n else None,
-              "wrong": wrong, "rows": rows}
-    if not a.ids:
-        OUT.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n")
-    print(json.dumps({k: record[k] for k in ("n", "decided_as_typed", "decided_fraction",
-                                              "wrong", "wall_s", "cpu_s")}))
+    run_trial(DATA, OUT, NOTES)
 
 
 if __name__ == "__main__":
