@@ -541,6 +541,11 @@ _EXP = [r"\hat\omega: unit vector; \theta: angle", r"R = e^{[\hat\omega]\theta}"
     (r"R^T(\mathbf{a} - \mathbf{b}) = R^T\mathbf{a} - R^T\mathbf{b}", [r"R: rotation"],
      "verified"),
     (r"(a + b)^2(c + d) = (a + b)^2 c + (a + b)^2 d", [], "verified"),
+    # a power after the parenthesis: the argument's in a product, the value's in an
+    # application (a^2(b + c)^2 was read (a^2 (b + c))^2, a^2(b + c)^{-1}(b + c) as 1/a^2)
+    (r"a^2(b + c)^{-1}(b + c) = a^2", [r"a: scalar"], "verified"),
+    (r"a^2(b + c)^2 = a^4(b + c)^2", [r"a: scalar"], "does-not-hold"),
+    (r"R_z^T(\alpha)^2 = R_z(-2\alpha)", [_RZ, r"\alpha: angle"], "verified"),
 ])
 def test_an_application_reads_alike_however_it_is_typeset(latex, let, verdict):
     """\\left( and a power before the argument are never read as products of a free scalar
@@ -548,6 +553,19 @@ def test_an_application_reads_alike_however_it_is_typeset(latex, let, verdict):
     the truth of each is the textbook's (R_z(0) = I, R_zᵀ(α) = R_z(-α))."""
     r = rigidsym.check_latex(latex, let=let)
     assert r.verdict == verdict, r.detail
+
+
+@pytest.mark.slow  # a family; the quick list above holds three of its members
+@pytest.mark.parametrize("m, n", [(2, 2), (3, -1), (-1, 3), (2, 3), (-2, 2), (3, 2)])
+def test_a_power_after_a_products_parenthesis_is_the_arguments(m, n):
+    """``a^m(b + c)^n`` is ``a^m`` times ``(b + c)^n`` (the factors commuted verify), never
+    ``(a^m (b + c))^n`` (which differs wherever m(n - 1) != 0)."""
+    let = [r"a: scalar", r"b: scalar", r"c: scalar"]
+    left = f"a^{{{m}}}(b + c)^{{{n}}}"
+    assert rigidsym.check_latex(f"{left} = (b + c)^{{{n}}} a^{{{m}}}", let=let).verdict == \
+        "verified"
+    assert rigidsym.check_latex(f"{left} = (a^{{{m}}}(b + c))^{{{n}}}", let=let).verdict == \
+        "does-not-hold"
 
 
 def test_an_application_with_left_and_right_decides_as_with_plain_parentheses():

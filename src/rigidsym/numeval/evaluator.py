@@ -567,11 +567,14 @@ class Evaluator:
         f, sup, *args = self._kids(t)
         return self._raise(self._call(f, args, t, many=True), sup, t)
 
-    def r_apply_pre(self, t):
-        post, sup, arg = t.children[0], t.children[1], t.children[2]
+    def r_apply_pre(self, t):  # a^2(b + c)^2: a last power is the argument's in a product
+        post, sup, arg, *last = t.children
         if isinstance(post, lark.Tree) and self._applies(post, arg):  # R^T(\theta)
-            return self._raise(self._call(post, [arg], t), sup, t)
-        return V.mul(self._raise(self.value(post), sup, t), self.value(arg))
+            v = self._raise(self._call(post, [arg], t), sup, t)
+            return self._raise(v, last[0], t) if last else v
+        a = self.value(arg)
+        return V.mul(self._raise(self.value(post), sup, t),
+                     self._raise(a, last[0], t) if last else a)
 
     def _call(self, f, args, t, many: bool = False):
         key = glyph_key(f)

@@ -247,8 +247,10 @@ class MeaningRules:
         is an application (a ``--let`` function, a symbol that is no scalar applied to a
         scalar, a function letter), the power of its value, as ``X(y)^S``; otherwise the
         product ``X^S y`` (``a^2(b + c)``, ``R^T(\mathbf{a} - \mathbf{b})``). Always the
-        product would make ``R_z^T(0)\mathbf{a} = \mathbf{0}`` verify."""
-        f, sup, arg = items
+        product would make ``R_z^T(0)\mathbf{a} = \mathbf{0}`` verify. A power after the
+        parenthesis (``a^2(b + c)^2``) is the argument's in the product, the value's in the
+        application (``R^T(\theta)^2``)."""
+        f, sup, arg, *last = items
         fv, x = self._val(f), as_scalar(self._val(arg))
         key = getattr(f, "key", None)  # None: no glyph, ((a + b)^2 (c + d)), a product
         applied = key in self.functions or (
@@ -258,8 +260,9 @@ class MeaningRules:
                 or (matrix_shape(fv) is not None and not self._modelless_vector(f, fv)
                     and self._may_depend(f, x))))
         if applied:
-            return self.apply([f, arg, sup])
-        return self.mul([self.power([f, sup]), arg])
+            value = self.apply([f, arg, sup])
+            return self.power([value, *last]) if last else value
+        return self.mul([self.power([f, sup]), self.power([arg, *last]) if last else arg])
 
     def _may_depend(self, f, x) -> bool:
         r"""Whether ``f`` applied to ``x`` could be read: ``f`` has no model (refused as an
