@@ -451,6 +451,10 @@ def bind_document(cert: dict, book: str, reading: dict | None) -> tuple[dict, li
 
     eq_id = str(cert.get("id"))
     rel, cls, offered = page_reading(book, eq_id, reading or {"page_lets": []})
+    verdict = cert.get("verdict")
+    if (verdict == "definition") != (cls == "definition"):
+        raise ReadingError(f"({eq_id}): the certificate says {verdict}, the page prints the "
+                           f"relation on line {rel['line']} as a {cls}")
     if reading is None:
         return rel, [f"page: ({eq_id}) is the relation on line {rel['line']}, a {cls}"]
     if any(isinstance(r, dict) and "symbols" in r for r in cert.get("relations") or []):
