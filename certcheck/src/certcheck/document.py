@@ -320,9 +320,17 @@ def _display_relations(text: str, start: int, body: str, number: int) -> list[di
 
 
 def relations(text: str) -> list[dict]:
-    """Every displayed relation of ``text`` in reading order: ``{"line", "label", "lhs",
-    "op", "rhs", "display"}`` (``line`` from 1: where its left side starts, or its relation
-    symbol on a line that begins with one).
+    """Every displayed relation of ``text`` in reading order.
+
+    Args:
+        text: the page (Markdown or LaTeX).
+
+    Returns:
+        One ``{"line", "label", "lhs", "op", "rhs", "display"}`` per relation: ``line`` from
+        1, where its left side starts (or its relation symbol, on a line that begins with
+        one); ``label`` its line's or its display's one label, or ``None``; ``op`` as
+        printed (``=``, ``\\triangleq``, ``:=`` for ``\\stackrel{\\text{def}}{=}``);
+        ``display`` from 1.
 
     Raises:
         DocumentError: a display that begins with a relation symbol.
@@ -334,13 +342,28 @@ def relations(text: str) -> list[dict]:
 
 
 def printed(rel: dict) -> str:
-    """A relation as the page prints it (``lhs op rhs``)."""
+    """A relation as the page prints it.
+
+    Args:
+        rel: a record of :func:`relations`.
+
+    Returns:
+        ``lhs op rhs``, one space around the relation symbol.
+    """
     return f"{rel['lhs']} {rel['op']} {rel['rhs']}"
 
 
 def locate(text: str, eq_id: str) -> tuple[int, list[dict]]:
-    """The index of the relation ``eq_id`` names among :func:`relations` of ``text``, and
-    the relations.
+    """The relation ``eq_id`` names on the page: the one whose label is ``eq_id``; for
+    ``label:X``, the one whose label is ``X``; for ``line:L``, the one relation that stands
+    on line L; for ``line:L.K``, the K-th of the relations on line L (two or more).
+
+    Args:
+        text: the page.
+        eq_id: the id.
+
+    Returns:
+        ``(its index in the relations, the relations)`` (:func:`relations`).
 
     Raises:
         DocumentError: the id names no relation of the page, or more than one.
@@ -420,7 +443,16 @@ def page_reading(text: str, eq_id: str, reading: dict) -> tuple[dict, str, list[
 def document_id(cert: dict, book: str | None, reading: dict | None) -> bool:
     """Whether ``cert`` is of a document's relation: its id is a reader's (``ns:name``),
     a page is given, and the reading gives the id no class (a module's ids are listed in
-    its ``[classes]``); without a reading, the page's tagged displays do not print it."""
+    its ``[classes]``); without a reading, the page's tagged displays do not print it.
+
+    Args:
+        cert: the certificate.
+        book: the page's text, or ``None``.
+        reading: :func:`certcheck.reading.load_reading`'s reading, or ``None``.
+
+    Returns:
+        ``True`` where :func:`bind_document` binds it.
+    """
     eq_id = str(cert.get("id"))
     if book is None or not READER_ID.fullmatch(eq_id):
         return False
@@ -438,6 +470,11 @@ def bind_document(cert: dict, book: str, reading: dict | None) -> tuple[dict, li
     (:func:`page_reading`), each symbol line one the reading or the page's definitions give
     the relation (a line the relation does not use may be left out: a glyph the page prints
     and the table lacks leaves that side not read, and an atom no line names fails).
+
+    Args:
+        cert: the certificate.
+        book: the page's text.
+        reading: the reading, or ``None`` (the class and the relation only).
 
     Returns:
         ``(the relation, the lines to print)``.

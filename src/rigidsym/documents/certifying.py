@@ -61,6 +61,9 @@ def document_ids(relations: list[Relation], text: str, main: str) -> dict[int, s
         relations: the document's relations, in reading order.
         text: the page's text (the file ``main``).
         main: the page's file name, as the relations carry it.
+
+    Returns:
+        ``{index in relations: id}`` for each relation of ``main`` that has an id.
     """
     mine = [(k, r) for k, r in enumerate(relations) if r.file == main]
     labels: dict[str, list[int]] = {}
@@ -219,7 +222,7 @@ def certify_document(result: DocumentResult, directory: str | Path,
             write_atomic(out / certificate_file(eq_id), json.dumps(cert, indent=1) + "\n")
             written[eq_id] = where
     finally:
-        for eq_id in made:  # the page's ids are this run's, never the session's
+        for eq_id in made:  # the page's ids are this run's, never the process's
             REGISTRY.pop(eq_id, None)
     write_atomic(out / "SKIPPED.txt",
                  "".join(f"{w}: {why}\n" for w, why in skipped.items()) or "none\n")
