@@ -160,10 +160,12 @@ def test_a_model_other_than_the_page_definition_fails(run, tmp_path):
 
 
 #: a page of the forms the locator reads: a chain, an align with one label (it names both
-#: relations of the display), a matrix's & and \\, a printed number
+#: relations of the display), a matrix's & and \\, a printed number, separators outside
+#: \left ... \right and parentheses
 PAGE = ("Text.\n\n$$\na = b = c\n$$\n\n\\begin{align}\nx &= y \\label{eq:x} \\\\\n"
         "&= z\n\\end{align}\n\n$$\n\\mathbf{A} = \\begin{bmatrix} 1 & 0 \\\\ 0 & 1 "
-        "\\end{bmatrix} \\quad (3.9a)\n$$\n")
+        "\\end{bmatrix} \\quad (3.9a)\n$$\n\n$$\n\\mathbf{a} = \\left\\{ x, y \\right\\}, "
+        "b = \\left( c, d \\right) \\quad \\text{and} \\quad f = g(x, y)\n$$\n")
 
 
 def test_locator_reads_labels_lines_and_chains():
@@ -202,7 +204,8 @@ def test_rigidsym_ids_are_certchecks(page, tmp_path):
     text = path.read_text(encoding="utf-8")
     ids = document_ids(list(doc.relations), text, str(path))
     want = [*IDS, "line:31"] if page == "notes" else \
-        ["line:4.1", "line:4.2", "line:8", "line:9", "label:3.9a"]
+        ["line:4.1", "line:4.2", "line:8", "line:9", "label:3.9a", "line:17.1", "line:17.2",
+         "line:17.3"]
     assert sorted(ids.values()) == sorted(want)
     for k, eq_id in ids.items():
         j, rels = locate(text, eq_id)

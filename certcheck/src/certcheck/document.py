@@ -105,7 +105,7 @@ def _tokens(body: str) -> list[tuple[str, str, int]]:
         if c == "%" and body[i - 1:i] != "\\":
             i = body.find("\n", i) if "\n" in body[i:] else len(body)
             continue
-        if delim:
+        if delim and c != "\\" and not c.isspace():  # \left( : the delimiter
             depth += delim
             delim = 0
             add("text", c, i)

@@ -93,7 +93,10 @@ def line_of(entry: dict, where: str) -> tuple:
 def load_reading(data: bytes, name: str = "the reading") -> dict:
     """A reading file's bytes, checked: ``{"sha256", "lines": {(id, relation): [line]},
     "classes": {id: class}, "atoms_of": {id: {glyph: source}}, "words": {id: (statement,
-    relation, why)}}`` (``words``: the theorems the page states in words).
+    relation, why)}, "page_lets": [(entry, scope, ids, line)]}`` (``words``: the theorems
+    the page states in words; ``page_lets``: every ``[[let]]`` with its scope and ids, a
+    document's relations' lines, :mod:`certcheck.document`; a let with no ids serves no
+    listed id).
 
     Raises:
         ReadingError: not TOML, an unknown key, kind or class, an id given two classes.
