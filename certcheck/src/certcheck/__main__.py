@@ -1,13 +1,14 @@
 """``python -m certcheck [--book BOOK] [--reading READING] [--jobs N] [--lenient]
 [--no-flint] [--quiet] PATH...``: check certificates (files, or every ``*.json`` of a
 folder; over N processes with ``--jobs``, the same output in the same order); with
-``--book``, each against the text printed as its id and against its folder's
-``MANIFEST.json``; with ``--reading``, each id's symbol table and class as the reading file
-gives them (a certificate supplies evidence only); print the hypotheses, the printed text,
-the symbols, a cause and a verdict per id. Exit 0: every certificate proved and every
-printed side read from the page under the reading; 1: a certificate fails; 2: bad
-arguments; 3: nothing fails, but a printed side is not read from the page (or no
-``--book``, or no ``--reading``): 0 with ``--lenient``."""
+``--book``, each against the text printed as its id (a document's relation: its label, or
+its line, ``line:L``; certcheck.document) and against its folder's ``MANIFEST.json``; with
+``--reading``, each id's symbol table and class as the reading file gives them (a
+certificate supplies evidence only); print the hypotheses, the printed text, the symbols,
+a cause and a verdict per id. Exit 0: every certificate proved and every printed side read
+from the page under the reading; 1: a certificate fails; 2: bad arguments; 3: nothing
+fails, but a printed side is not read from the page (or no ``--book``, or no
+``--reading``): 0 with ``--lenient``."""
 
 from __future__ import annotations
 
@@ -31,6 +32,7 @@ from certcheck.braces import displays_after
 from certcheck.by_definition import page_class, unread_vacuous
 from certcheck.check import CheckError, check_certificate, load
 from certcheck.compare import compare
+from certcheck.document import bind_document, document_id, printed
 from certcheck.limits import cpu_limit
 from certcheck.reading import ReadingError, bind, load_reading
 from certcheck.words import said, stated, use
@@ -95,18 +97,24 @@ def _bounded(path: str, book: str | None, fast: bool, quiet: bool, reading: dict
              t: float) -> tuple[str, int, int]:
     """:func:`_one` under certcheck's CPU limit."""
     cert = load(path)
-    bound = [] if reading is None else bind(cert, reading)
+    rel = None  # a document's relation: located, classed and read by certcheck.document
+    if document_id(cert, book, reading):
+        rel, bound = bind_document(cert, book, reading)
+    else:
+        bound = [] if reading is None else bind(cert, reading)
     if book is not None and os.path.basename(path) != \
             re.sub(r"[^A-Za-z0-9._-]", "_", str(cert.get("id"))) + ".json":
         raise BookError(f"({cert.get('id')}): the certificate of ({cert.get('id')}) "
                         f"in the file of another id")
-    page = bound + (check_page(cert, book) if book is not None else cause_lines(cert))
+    page = bound + (check_page(cert, book, None if rel is None else printed(rel))
+                    if book is not None else cause_lines(cert))
     verdict, lines = check_certificate(cert, fast=fast)
     k = n = 0
     if book is not None:  # the second reader: what is proved is what is printed
         eq_id = str(cert.get("id"))
         defs = definitions_before(book, eq_id) if eq_id[0].isdigit() else {}
-        text = locate(book, eq_id)  # a theorem in words: the relation they state
+        # a theorem in words: the relation they state; a document's relation: its sides
+        text = locate(book, eq_id) if rel is None else f"{rel['lhs']} = {rel['rhs']}"
         page += said(eq_id, text) + compare(
             cert, stated(eq_id, text), fast=fast, defs=defs, counts=(counts := []),
             later=displays_after(book, eq_id), read_sides=(sides := []))

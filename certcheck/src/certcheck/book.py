@@ -4,7 +4,8 @@
   shipped): the display ``$$ ... $$`` tagged ``(3.xx)`` or ``\\tag{3.xx}``, its tag cut
   off, or the paragraph of ``**Theorem 3.x.y.**``; a reader's own id ``ns:name`` in a
   reader's own text likewise, tagged ``\\tag{ns:name}`` or ``(ns:name)``
-  (:data:`READER_ID`).
+  (:data:`READER_ID`); a document's relations are located by
+  :mod:`certcheck.document`.
 - :func:`check_page`: a certificate's ``book_latex`` is that text (spaces collapsed, a
   closing comma or full stop dropped; a theorem's words a part of its paragraph), and the
   cause of a does-not-hold is one of the three classes, a conversion slip with its
@@ -103,23 +104,32 @@ _GLYPH = (r"(\\dot\{|\\ddot\{)?\\(mathbf|boldsymbol)\{[^{}]*\}\}?(_\{?\w+\}?)?'*
           r"|\\?\w+(_\{?\w+\}?)?")
 
 
-def check_page(cert: dict, book: str) -> list[str]:
+def check_page(cert: dict, book: str, printed: str | None = None) -> list[str]:
     """The certificate's id, printed text and cause against the page; lines to print.
+
+    Args:
+        cert: the certificate.
+        book: the page's text.
+        printed: the relation a document prints under the id
+            (:func:`certcheck.document.locate`), ``None``: the id's display, found by
+            :func:`locate`.
 
     Raises:
         BookError: ``book_latex`` is not the text printed as the certificate's id, or a
             does-not-hold gives no cause of :data:`CAUSES`.
     """
     eq_id = str(cert.get("id", ""))
-    if not re.fullmatch(r"3\.\d+[a-z]?|(thm|cor)3\.\d\.\d|caveat3\.\d", eq_id) and \
-            not READER_ID.fullmatch(eq_id):  # a reader's own id: printed in their text
+    book_id = re.fullmatch(r"3\.\d+[a-z]?|(thm|cor)3\.\d\.\d|caveat3\.\d", eq_id)
+    # a reader's own id: printed in their text
+    if printed is None and not book_id and not READER_ID.fullmatch(eq_id):
         if cert.get("book_latex"):
             raise BookError(f"({eq_id}): not a printed id, yet it gives a printed text")
         return [f"({eq_id}) is the project's own statement (not printed in the book): bound "
                 "to no page"] + cause_lines(cert)
-    page = locate(book, eq_id)
+    page = locate(book, eq_id) if printed is None else _norm(printed)
     latex = _norm(str(cert.get("book_latex") or ""))
-    bound = latex == page or (not eq_id[0].isdigit() and len(latex) >= 20 and latex in page)
+    bound = latex == page or (printed is None and not eq_id[0].isdigit() and len(latex) >= 20
+                              and latex in page)  # a document's relation: exactly its text
     if not bound:
         where = next((i for i, (a, b) in enumerate(zip(latex, page, strict=False)) if a != b),
                      min(len(latex), len(page)))

@@ -6,8 +6,9 @@ elsewhere (``"printed_as"``, its alignment marks dropped) or the model's words f
 the page defines in words (``"model"``), both read firmly, or a citation (``"defined_by"``:
 not read here). The notation: bold and Greek glyphs with dots, primes and subscripts,
 ``^T``, ``^2``, ``\\times``, ``\\cdot``, juxtaposition, ``\\frac``, ``/``, ``\\cos``,
-``\\sin``, ``\\mathrm{tr}``, ``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``, brackets and
-``bmatrix`` blocks, ``\\|x\\|^2``, ``\\|x\\|`` (a square root), powers of a square matrix,
+``\\sin``, ``\\mathrm{tr}``, ``\\mathrm{CPM}(\\mathbf{e})`` (the cross-product matrix),
+``\\mathbf{1}``, ``\\mathbf{0}``, ``\\mathbf{O}``, brackets and ``bmatrix`` blocks,
+``\\|x\\|^2``, ``\\|x\\|`` (a square root), powers of a square matrix,
 ``\\underbrace{X}_{...}`` (X), ``[X]_{K}`` (each glyph G of X read from the line
 ``[G]_{K}``; ``[G]`` with no frame, 3.40's, is not read) and the integral over the body
 (:meth:`_Reader.integral`). A side not read is reported, never passed; a side read, a matrix
@@ -204,12 +205,16 @@ class _Reader:
             start = self.i
             self.take()
             word = self.group()
-            if word in ("tr", "vect"):
+            if word in ("tr", "vect", "CPM"):
                 self.take("(")
                 v = self.expr()
                 self.take(")")
                 if v.shape != (3, 3) and word == "vect":
                     raise NotRead(f"vect of a {v.shape} array")
+                if word == "CPM":  # the reading's word: the cross-product matrix of v
+                    if v.shape != (3, 1):
+                        raise NotRead(f"CPM of a {v.shape} array")
+                    return cpm(v)
                 if word == "tr":
                     return scalar(" + ".join(v.rows[i][i] for i in range(v.shape[0])))
                 a = v.rows  # vect(A): the axial vector of A's skew part, (1/2) of the sums

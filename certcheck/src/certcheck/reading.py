@@ -14,7 +14,7 @@ import hashlib
 import json
 import tomllib
 
-__all__ = ["ReadingError", "bind", "load_reading", "reading_sha256"]
+__all__ = ["ReadingError", "bind", "line_of", "load_reading", "reading_sha256"]
 
 #: the words of a KIND -> (the certificate's kind, its number of atoms)
 _FIXED = {"unit vector": ("unit", 3), "unit 4-vector": ("unit4", 4), "rotation": ("rotation", 9),
@@ -62,8 +62,14 @@ def _nospace(s: str) -> str:
     return "".join(s.split())
 
 
-def _line(entry: dict, where: str) -> tuple:
-    """One ``[[let]]`` entry as the canonical line a certificate's entry must equal."""
+def line_of(entry: dict, where: str) -> tuple:
+    """One ``[[let]]`` entry (``{"let": ..., "where": ...}``) as the canonical line a
+    certificate's entry must equal.
+
+    Raises:
+        ReadingError: a let that is neither ``NAME: KIND`` nor ``NAME = LATEX``, or of an
+            unknown kind (``where`` names it).
+    """
     text = entry["let"].strip()
     colon, eq = _top(text, ":"), _top(text, "=")
     if colon >= 0 and (eq < 0 or colon < eq):
@@ -87,7 +93,10 @@ def _line(entry: dict, where: str) -> tuple:
 def load_reading(data: bytes, name: str = "the reading") -> dict:
     """A reading file's bytes, checked: ``{"sha256", "lines": {(id, relation): [line]},
     "classes": {id: class}, "atoms_of": {id: {glyph: source}}, "words": {id: (statement,
-    relation, why)}}`` (``words``: the theorems the page states in words).
+    relation, why)}, "page_lets": [(entry, scope, ids, line)]}`` (``words``: the theorems
+    the page states in words; ``page_lets``: every ``[[let]]`` with its scope and ids, a
+    document's relations' lines, :mod:`certcheck.document`; a let with no ids serves no
+    listed id).
 
     Raises:
         ReadingError: not TOML, an unknown key, kind or class, an id given two classes.
@@ -102,6 +111,7 @@ def load_reading(data: bytes, name: str = "the reading") -> dict:
     if unknown:
         raise ReadingError(f"{name}: unknown table {sorted(unknown)[0]!r}")
     lines: dict = {}
+    page_lets: list = []  # every entry: (entry, scope, ids, line), a document's relations'
     sources: dict = {}   # id -> glyph -> where its atoms come from (atoms_of)
     for n, entry in enumerate(doc.get("let", []), start=1):
         where = f"{name}: [[let]] {n}"
@@ -109,10 +119,11 @@ def load_reading(data: bytes, name: str = "the reading") -> dict:
             raise ReadingError(f"{where}: expected a table with a let")
         if set(entry) - _LET_KEYS:
             raise ReadingError(f"{where}: unknown key {sorted(set(entry) - _LET_KEYS)[0]!r}")
-        if not entry.get("ids"):
-            raise ReadingError(f"{where}: no ids (a certificate's line names its id)")
-        line = _line(entry, where)
-        for i in entry["ids"]:
+        line = line_of(entry, where)
+        scope = entry.get("scope")
+        page_lets.append((entry, None if scope is None else str(scope),
+                          tuple(str(i) for i in entry.get("ids") or ()), line))
+        for i in entry.get("ids") or ():
             lines.setdefault((str(i), entry.get("relation", "")), []).append(line)
             if entry.get("atoms_of"):
                 if line[0] != "kind":
@@ -139,7 +150,7 @@ def load_reading(data: bytes, name: str = "the reading") -> dict:
                 raise ReadingError(f"{name}: [id.{i!r}]: words, states and why go together")
             words[i] = tuple(said)
     return {"sha256": reading_sha256(data), "lines": lines, "classes": classes,
-            "atoms_of": sources, "words": words}
+            "atoms_of": sources, "words": words, "page_lets": page_lets}
 
 
 def _cert_lines(cert: dict, table: list, atoms: dict, where: str) -> list:

@@ -12,6 +12,8 @@ HELP = "decide LaTeX: one relation (--latex) or a whole document"
 EXAMPLES = r"""  rigidsym check notes.md          every displayed relation of a Markdown or LaTeX
                                    document; its symbols: notes.reading.toml beside it
   rigidsym check notes.md --html errata.html   and the errata as one offline page (MathML)
+  rigidsym check notes.md --certificates certs  and a certificate per decided relation,
+                                   re-checked by certcheck against notes.md and its reading
   rigidsym check --latex '\mathbf{Q}^T\mathbf{Q} = \mathbf{1}' \
       --let '\mathbf{Q}: rotation'
   rigidsym check --latex \
@@ -29,7 +31,8 @@ EXAMPLES = r"""  rigidsym check notes.md          every displayed relation of a 
                    featherstone, barfoot, sola, corke, jpl
 --timeout S        the CPU-time limit of the whole check (default 60 s): past it undecided, exit 3
 exit codes: 0 holds (verified or definition), 1 does not hold, 3 undecided (also past
-            --timeout), 2 bad input"""
+            --timeout), 2 bad input; with FILE --certificates DIR, 4 when certcheck did not
+            CHECK every certificate written"""
 
 #: exit code per verdict
 EXIT = {"verified": 0, "definition": 0, "does-not-hold": 1, "undecided": 3}
@@ -71,6 +74,11 @@ def add_arguments(c) -> None:
     c.add_argument("--certificate", metavar="FILE",
                    help="write the verdict's certificate to FILE (docs/certificates.md) and "
                         "re-check it with certcheck when it is found (default: none)")
+    c.add_argument("--certificates", metavar="DIR",
+                   help="with FILE: write a certificate per decided relation into DIR, "
+                        "bound to FILE and its reading file, and re-check them with certcheck "
+                        "(docs/check-documents.md, 'Certificates'); exit 4 unless certcheck "
+                        "CHECKED every one (default: none)")
     c.add_argument("--json", action="store_true",
                    help="print the schema-2 record, with read_as and readings (default: "
                         "book notation as text)")
@@ -99,9 +107,9 @@ def run(args) -> int:
         from rigidsym.cli.check_document import run_document
 
         return run_document(args)
-    if args.reading or args.markdown or args.html:
-        print("rigidsym: error: --reading, --markdown and --html go with a document FILE",
-              file=sys.stderr)
+    if args.reading or args.markdown or args.html or args.certificates:
+        print("rigidsym: error: --reading, --markdown, --html and --certificates go with a "
+              "document FILE", file=sys.stderr)
         return 2
     try:
         from rigidsym.api import check_latex_run

@@ -46,6 +46,7 @@ from rigidsym.checking.deciding.explicit import (
     shape_of,
 )
 from rigidsym.core.files import write_atomic
+from rigidsym.reading import Reading
 from rigidsym.registry.declarations import REGISTRY, book_reading, is_user_id
 from rigidsym.zero.decide import Unsupported, decide_zero, evaluate, make_plan
 
@@ -139,7 +140,7 @@ def _fails(r, model: dict, seed: int) -> bool:
 
 def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
                 seed: int | None = None, cofactors: bool = True,
-                reading: str | Path | None = None) -> dict:
+                reading: str | Path | Reading | None = None) -> dict:
     """The certificate of an id's verdict (a plain dict; ``json.dumps`` writes it).
 
     Args:
@@ -154,7 +155,9 @@ def certificate(eq_id: str, verdict: str, members: list[dict] | None = None,
             when ``False``, a re-computation certificate).
         reading: the reading file of a reader's own text (:mod:`rigidsym.reading`): a user
             id's symbol table, relation tables and page reading are its lines
-            (:func:`reading_for`); ignored for a book id, whose reading is the book's.
+            (:func:`reading_for`), or a :class:`rigidsym.reading.Reading` (a document's
+            relation: :mod:`rigidsym.documents.certifying`); ignored for a book id, whose
+            reading is the book's.
 
     Raises:
         Unprintable: the statement leaves the grammar, an atom has a kind the checker does
@@ -302,7 +305,7 @@ def _restated_pair(latex: str, lhs, rhs) -> tuple[str, str] | None:
     return m.group(1), m.group(2)
 
 
-def reading_for(eq_id: str, reading: str | Path | None = None):
+def reading_for(eq_id: str, reading: str | Path | Reading | None = None):
     """The reading whose lines an id's certificate carries: the book's
     (:func:`rigidsym.registry.declarations.book_reading`) for a book id, whatever
     ``reading`` is; ``reading`` (a reader's own reading file) for a user id ``ns:name``,

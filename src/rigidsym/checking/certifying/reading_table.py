@@ -87,16 +87,18 @@ def _load(path: str, stamp: float) -> Reading:
     return load_reading(path)
 
 
-def reading_of(path: str | Path | None) -> Reading | None:
+def reading_of(path: str | Path | Reading | None) -> Reading | None:
     """The reading file at ``path`` (parsed once per change of the file), ``None`` for
-    ``None``.
+    ``None``; a :class:`rigidsym.reading.Reading` itself (a document's relation: the lines
+    its reading file and the page's own definitions give it, built by
+    :mod:`rigidsym.documents.certifying`).
 
     Raises:
         BadInput: the file is missing or unreadable, or not a reading
             (:func:`rigidsym.reading.parse_reading`), naming it.
     """
-    if path is None:
-        return None
+    if path is None or isinstance(path, Reading):
+        return path
     p = Path(path)
     try:
         stamp = p.stat().st_mtime
