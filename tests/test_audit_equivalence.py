@@ -166,6 +166,10 @@ def test_near_a_half_turn_and_the_identity_the_class_is_judged_by_its_accuracy()
             assert (j.ratio > 1) == (off != 0), (regime, sign, k, off, j)
 
 
+# a full audit with its window located to 1 %; quick: a window at phi -> 0 located with its
+# ends (test_audit_windows.py::test_a_planted_window_near_0_is_found_with_its_ends) and a
+# correct member passing (test_any_member_under_any_convention_is_never_accused)
+@pytest.mark.slow
 def test_a_signed_angle_passes_and_the_eigenvector_axis_bug_is_found():
     """A correct signed angle (transforms3d's convention) passes; transforms3d's
     mat2axangle, re-created, is found in the book's convention and its small-angle axis

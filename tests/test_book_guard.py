@@ -35,6 +35,9 @@ def test_an_open_under_shared_is_caught_and_a_grant_lets_it_pass():
     _book.OPENED.clear()       # this test's own probe: not a read of the chapter
 
 
+# a pytest process; quick: the README's command itself, which .ci/run runs in a clone with
+# no ../shared, where every test marked book skips this way
+@pytest.mark.slow
 def test_without_the_book_each_reader_skips_with_one_line(tmp_path):
     """``RIGIDSYM_TESTS_BOOK=none`` is a clone with no ../shared: every test that needs the
     chapter skips naming why, none errors (a test module of the page, run so)."""

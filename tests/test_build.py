@@ -28,6 +28,9 @@ from rigidsym.kernels.cbuild import extension as _ext
 REPO = Path(__file__).resolve().parents[1]
 HAVE_CC = _build.compiler() is not None
 needs_cc = pytest.mark.skipif(not HAVE_CC, reason="no C compiler")
+# the generated user directory (a `rigidsym generate` process, user_dir) is made once, on one
+# worker: each worker that ran one of its tests made it again
+pytestmark = pytest.mark.xdist_group("build")
 
 #: a user module of one kernel (and its generated Jacobian kernel)
 ONE_KERNEL = '''
@@ -85,7 +88,8 @@ _LOAD = """
 """
 
 
-# four cold builds; quick: test_a_second_build_reuses_every_object_and_links_the_same_module
+# four cold builds; quick:
+# test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again
 @pytest.mark.slow
 @needs_cc
 def test_four_processes_on_an_empty_cache_compile_once(user_dir, tmp_path):
@@ -110,7 +114,8 @@ def test_four_processes_on_an_empty_cache_compile_once(user_dir, tmp_path):
     np.testing.assert_allclose(ws[0], v * np.linspace(-2, 2, 10)[:, None], rtol=1e-15)
 
 
-@pytest.mark.slow  # a build; quick: test_a_corrupt_object_is_compiled_again_never_linked
+@pytest.mark.slow  # a build; quick:
+# test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again
 @needs_cc
 def test_corrupt_cached_module_is_rebuilt_with_a_warning_never_loaded(user_dir, tmp_path):
     cache = tmp_path / "cache"
@@ -134,7 +139,8 @@ def test_corrupt_cached_module_is_rebuilt_with_a_warning_never_loaded(user_dir, 
     assert _ext._valid(so, _build.embedded_hash(good)) is False
 
 
-@pytest.mark.slow  # a build; quick: test_a_corrupt_object_is_compiled_again_never_linked
+@pytest.mark.slow  # a build; quick:
+# test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again
 @needs_cc
 def test_stale_module_is_never_loaded_and_rebuilt_with_a_notice(user_dir, tmp_path,
                                                                 monkeypatch, capfd):
@@ -312,7 +318,11 @@ def _build_with_objects(user_dir: Path, tmp: Path, objects: Path) -> tuple[dict,
 
 
 @needs_cc
-def test_a_second_build_reuses_every_object_and_links_the_same_module(user_dir, tmp_path):
+def test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again(user_dir,
+                                                                              tmp_path):
+    """A second build reuses every object and links the same module; an object whose
+    checksum no longer matches is compiled again, never linked (one cache, three builds:
+    two tests built the first cold one apiece)."""
     objects = tmp_path / "objects"
     first, so1 = _build_with_objects(user_dir, tmp_path, objects)
     n = _build.object_count(user_dir / "c", _build.configure())
@@ -321,20 +331,14 @@ def test_a_second_build_reuses_every_object_and_links_the_same_module(user_dir, 
     assert second["compiled"] == 0 and second["reused"] == n
     assert so1 == so2
     assert not list(objects.rglob("*.tmp")) and not list(objects.rglob(".*.tmp"))
-
-
-@needs_cc
-def test_a_corrupt_object_is_compiled_again_never_linked(user_dir, tmp_path):
-    objects = tmp_path / "objects"
-    _, so1 = _build_with_objects(user_dir, tmp_path, objects)
     victim = sorted(objects.rglob("*.o"))[0]
     victim.write_bytes(b"\x7fELF not an object")          # its checksum no longer matches
-    stats, so2 = _build_with_objects(user_dir, tmp_path, objects)
-    assert stats["compiled"] == 1 and so2 == so1
+    stats, so3 = _build_with_objects(user_dir, tmp_path, objects)
+    assert stats["compiled"] == 1 and so3 == so1
     assert victim.read_bytes() != b"\x7fELF not an object"   # replaced by the fresh compile
 
 
-# three builds; quick: test_a_second_build_reuses_every_object_and_links_the_same_module
+# three builds; quick: test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again
 @pytest.mark.slow
 @needs_cc
 def test_other_flags_or_sources_miss_the_object_cache(user_dir, tmp_path, monkeypatch):

@@ -475,6 +475,10 @@ int main(void)
 """
 
 
+# a kernel generated and built; quick: the float rescue at 1e-36 ... 1e37
+# (test_c_target.py::test_extreme_float_inputs_are_rescaled); the flush mode itself runs in
+# the thorough profile (here and test_independent_exponents_never_a_silent_wrong's ftz)
+@pytest.mark.slow
 @pytest.mark.skipif(GCC is None, reason="gcc is not installed")
 def test_float_quaternion_right_at_extreme_scales_in_flush_to_zero_mode(tmp_path):
     """A firmware's quat_wxyz_to_rotation (Q of q / |q|, degree 0 in q) in float at

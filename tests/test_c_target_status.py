@@ -270,6 +270,7 @@ needs_two = pytest.mark.skipif(len(COMPILERS) < 2, reason="gcc and clang are bot
 
 
 @needs_two
+@pytest.mark.sample(fraction=0.5)   # one kernel in the quick run, the other thorough
 @pytest.mark.parametrize("kernel", ["natural_invariants_from_rotation", "newton_euler_wrench"])
 def test_status_is_the_same_under_every_compiler_and_flag(tmp_path, kernel):
     """Float, gcc and clang at -O2 and -Ofast: 2,000 ordinary small inputs of status 0 with

@@ -430,7 +430,7 @@ def _generic(name, n, m=None):
     return sp.ImmutableMatrix(sp.MatrixSymbol(name, n, m or n).as_explicit())
 
 
-@pytest.mark.sample(fraction=0.4)
+@pytest.mark.sample(fraction=0.25)
 @pytest.mark.parametrize("make", ["generic 1", "generic 2", "generic 3", "generic 4",
                                   "transform", "featherstone", "cayley", "rotation"])
 def test_the_exact_inverse_is_the_inverse(make):

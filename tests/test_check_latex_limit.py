@@ -111,6 +111,10 @@ JR_INVERSE = (r"\mathbf{J}_r^{-1} = \mathbf{I} + \frac{1}{2}[\boldsymbol\theta]_
               r"[\boldsymbol\theta]_\times^2", JR_INV[1][:3])
 
 
+# 2 s of CPU by the clock; quick: the same ending at a named step
+# (test_past_the_limit_the_check_is_undecided_naming_its_step_and_a_hint) and the limit
+# counting CPU time (test_the_limit_counts_cpu_time_so_waiting_never_ends_a_check)
+@pytest.mark.slow
 def test_a_2_s_limit_on_a_slow_statement_ends_undecided_with_its_reason_by_the_clock(monkeypatch):
     # no hook: the alarm itself ends the check, in whichever step it runs then
     monkeypatch.delenv(limit.HOOK, raising=False)

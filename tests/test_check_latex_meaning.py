@@ -102,6 +102,9 @@ def test_an_undecided_verdict_prints_its_reason(capsys):
     assert code == 3 and "Undecided: printed: trig" in out
 
 
+# three checks with repairs; quick: test_check_latex_estimation_books.py::
+# test_a_slip_through_a_norm_under_sin_cos_fails_at_a_point_of_rational_norm
+@pytest.mark.slow
 def test_the_reason_of_a_trig_of_a_norm_is_printed_in_book_notation(capsys, monkeypatch):
     # its reason ("trig of non-angle argument") is printed, not only in --json; the
     # norm is written θ u (rigidsym.zero.polar), so J w = w is verified, and J w = 2 w, which

@@ -155,7 +155,7 @@ def _docs_examples():
     return out
 
 
-
+@pytest.mark.sample(fraction=0.5)   # half the page's examples quick, the rest thorough
 @pytest.mark.parametrize("kw", _docs_examples(), ids=lambda kw: kw["latex"][:40])
 def test_every_docs_example_decides_as_before_and_is_checked_by_it(kw):
     try:

@@ -41,6 +41,10 @@ def test_rodrigues_as_modern_robotics_writes_it_is_verified():
     assert any("I: the identity" in n for n in r.model)  # the reading says how I was read
 
 
+# a repair search without a time limit; quick: the same slip through the first-principles
+# lets, its exact point and its sign flip (test_check_latex.py::
+# test_a_one_edit_slip_of_rodrigues_does_not_hold_with_exact_point_and_repair)
+@pytest.mark.slow
 def test_a_sign_slip_of_rodrigues_does_not_hold_with_an_exact_point_and_a_repair():
     # repair_seconds=None: the repair found is the search's, not the clock's
     r = rigidsym.check_latex(RODRIGUES.replace(r"+ \sin", r"- \sin"), let=[W],

@@ -25,6 +25,10 @@ def _improve(name: str):
     return flat, *accurate.improve(k, "main", flat, syms, sflat, conds)
 
 
+# the screw kernel compiled, measured and decided; quick: a rewrite kept only when the zero
+# test decides it (test_fractions_in_cos_phi_merged_and_decided,
+# test_an_unequal_rewrite_is_refused_by_the_zero_test)
+@pytest.mark.slow
 def test_skew_part_rewrite_is_kept_measured_and_decided():
     before, after, chosen = _improve("screw_of_displacement")
     # the axis point from the skew part (it replaces the declared grouping of p0,
@@ -114,6 +118,9 @@ def _ctx(name: str) -> tuple:
     return k, syms, _flatten(k, k.build(**syms)), ctx
 
 
+# four kernels compiled; quick: test_fractions_in_cos_phi_merged_and_decided (a rewrite in
+# cos phi, exact and decided)
+@pytest.mark.slow
 def test_tan_half_polynomial_exact_off_the_sphere_and_decided():
     """L_tilde_dot's fractions over ``1 + cos phi`` as the polynomial in ``t =
     tan(phi/2)`` they are, each coefficient homogenised in ``e`` (guards against: 6.3 u where the

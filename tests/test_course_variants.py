@@ -56,9 +56,10 @@ def _changed(v):
     return str(e + sp.Rational(7, 3))
 
 
-def test_a_variant_of_the_proofs_and_of_3_19_is_graded():
-    for ex_id in sorted(DEFAULT):           # one test: the default run's size is a budget
-        _graded(ex_id)
+@pytest.mark.sample      # a seeded share in the quick run, the rest in the thorough one
+@pytest.mark.parametrize("ex_id", sorted(DEFAULT))
+def test_a_variant_of_the_proofs_and_of_3_19_is_graded(ex_id):
+    _graded(ex_id)
 
 
 @pytest.mark.slow
@@ -89,9 +90,10 @@ def _graded(ex_id):
     assert all(g.missing for g in blank)
 
 
-def test_true_or_false_statements_are_decided_and_reasons_follow():
-    for ex_id in sorted(NEW - {"ex3.6"}):
-        _decided(ex_id)
+@pytest.mark.sample      # a seeded share in the quick run, the rest in the thorough one
+@pytest.mark.parametrize("ex_id", sorted(NEW - {"ex3.6"}))
+def test_true_or_false_statements_are_decided_and_reasons_follow(ex_id):
+    _decided(ex_id)
 
 
 def _decided(ex_id):

@@ -80,6 +80,9 @@ def test_weights_given_to_class_exam_reach_the_key_the_exports_and_the_gradebook
     assert gradebook_points(tmp_path) == [(3.0, 0.5, 3.5)] * 2
 
 
+# two class exams; quick: test_the_command_lines_weights_reach_the_key_and_the_gradebook
+# (the spec's weights where none is given, then --weights replacing them)
+@pytest.mark.slow
 def test_the_specs_weight_serves_where_none_is_given_and_weights_replace_it(roster,
                                                                           tmp_path):
     spec = {**SPEC, "problem": [SPEC["problem"][0], {**SPEC["problem"][1], "weight": 2}]}

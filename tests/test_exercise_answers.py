@@ -41,6 +41,10 @@ def test_ex3_7_parallel_moments_give_both_mirror_lines():
 
 
 # default since 3.12's parts are integrated once in a symbolic a and h: about 2 s of CPU
+# an exact solve of 3.12 on other data; quick: test_exercises.py::
+# test_exercise_solved_and_checked[ex3.12] (its solve and machine checks) and
+# test_ex3_12_principal_check_decides_and_can_fail
+@pytest.mark.slow
 def test_ex3_12_cut_through_the_top_face_gives_both_parts():
     s = ex.solve("ex3.12", a="1/40", h="1/40")
     assert s.status == "solved" and s.checked
@@ -70,6 +74,9 @@ def test_not_solved_has_its_own_status_and_exit_code():
     assert _exit_code(s) == EXIT_NOT_SOLVED != EXIT_ILL_POSED
 
 
+# a process of its own; quick: test_exercises.py::test_cli_student_data (the command on a
+# student's --set data, exit 0)
+@pytest.mark.slow
 def test_cli_3_7_on_a_users_data_exits_0():
     r = subprocess.run([sys.executable, "-m", "rigidsym", "exercise", "3.7", "--set", "a=1,0,0",
                         "--set", "b=2,0,0", "--set", "n_A=0,1,0", "--set", "n_B=0,2,0"],

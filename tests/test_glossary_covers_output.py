@@ -28,6 +28,10 @@ GLOSSARY = ROOT / "docs" / "glossary.md"
 SRC = ROOT / "src" / "rigidsym"
 CERTCHECK_MAIN = ROOT / "certcheck" / "src" / "certcheck" / "__main__.py"
 
+# the package's strings (code_strings, every source parsed) are read once, on one worker:
+# each worker that ran a field word's test read them again
+pytestmark = pytest.mark.xdist_group("glossary")
+
 #: words of the field the output prints (certificates' symbol tables, ``--let`` kinds and
 #: readings, ``check --latex``'s notes); each must occur in a string of the package's code
 FIELD_WORDS = ("counterexample", "numeric cross-check", "natural invariants", "pitch",
@@ -64,15 +68,16 @@ def code_strings() -> str:
                             .read_text(encoding="utf-8"))
     found = [x.get("where", "") for x in reading.get("let", [])]
     for path in SRC.rglob("*.py"):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        docs = {id(node.body[0].value) for node in ast.walk(tree)
-                if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef,
-                                     ast.AsyncFunctionDef))
-                and node.body and isinstance(node.body[0], ast.Expr)
-                and isinstance(node.body[0].value, ast.Constant)}
-        found += [node.value for node in ast.walk(tree)
-                  if isinstance(node, ast.Constant) and isinstance(node.value, str)
-                  and id(node) not in docs]
+        docs, strings = set(), []       # one walk of the tree: its docstrings, its strings
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if (isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef,
+                                  ast.AsyncFunctionDef))
+                    and node.body and isinstance(node.body[0], ast.Expr)
+                    and isinstance(node.body[0].value, ast.Constant)):
+                docs.add(id(node.body[0].value))
+            elif isinstance(node, ast.Constant) and isinstance(node.value, str):
+                strings.append(node)
+        found += [node.value for node in strings if id(node) not in docs]
     return "\n".join(found)
 
 

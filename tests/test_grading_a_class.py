@@ -257,6 +257,10 @@ def _stack_against_gradebook(tmp_path, key, rows, behaviours) -> int:
     return len(key["students"])
 
 
+# a class made, graded and exported; quick: test_grading_to_the_end.py::
+# test_three_students_two_of_one_name_graded_to_the_end (a class to the gradebook) and
+# test_lms_files_score_as_the_gradebook.py (Moodle and STACK score it as the gradebook)
+@pytest.mark.slow
 def test_a_class_of_four_graded_to_the_end(tmp_path, capsys):
     key, expected, behaviours = _class(tmp_path, 4, seed=1)
     rows = _grade_and_compare(tmp_path, key, expected, capsys)

@@ -159,6 +159,9 @@ def _show_all(ids, modules=None) -> dict[str, str]:
     return out
 
 
+# every id of a reader's module shown, and its report; quick: the same scan of the
+# committed report (test_committed_report_has_no_internal_name), rendered by the same code
+@pytest.mark.slow
 def test_reader_module_show_and_report_have_no_internal_name(tmp_path, code):
     from rigidsym.cli import main
     from rigidsym.registry.usermodules import select_with_modules

@@ -23,18 +23,26 @@ pytestmark = pytest.mark.xdist_group("show")
 ROOT = Path(__file__).resolve().parents[1]
 
 
+#: the line the fixture's process prints after each id's explanation
+_END = "-- end of rigidsym show --"
+
+
 @pytest.fixture(scope="module")
 def shown():
     """`rigidsym show --full` of three does-not-hold ids, stdout a pipe (not a TTY), no
-    COLUMNS."""
+    COLUMNS: the command's ``main`` called once per id in one process (a process apiece
+    paid its start-up three times for the same texts)."""
     env = {k: v for k, v in os.environ.items() if k != "COLUMNS"}
-    out = {}
-    for i in ("3.96e", "3.59", "3.148"):
-        p = subprocess.run([sys.executable, "-m", "rigidsym", "show", i, "--full"],
-                           capture_output=True,
-                           text=True, env=env, cwd=ROOT, check=True)
-        out[i] = p.stdout
-    return out
+    ids = ("3.96e", "3.59", "3.148")
+    code = ("import sys; from rigidsym.cli import main\n"
+            f"for i in {ids!r}:\n"
+            "    assert main(['show', i, '--full']) == 0\n"
+            f"    print({_END!r}, flush=True)\n")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       env=env, cwd=ROOT, check=True)
+    parts = p.stdout.split(_END + "\n")
+    assert len(parts) == len(ids) + 1 and parts[-1] == "", p.stdout[-2000:]
+    return dict(zip(ids, parts, strict=False))
 
 
 @pytest.mark.parametrize("eq_id", ["3.96e", "3.59", "3.148"])

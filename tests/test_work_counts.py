@@ -88,6 +88,10 @@ def lean(path: Path) -> list:
     return [{k: v for k, v in r.items() if k not in ("seconds", "cached")} for r in rows]
 
 
+# three verify processes; quick: test_statement_cache.py::
+# test_a_damaged_entry_is_built_again_and_replaced (each declaration built once cold, loaded
+# warm) and test_a_change_of_what_the_key_covers_misses (an edit builds again)
+@pytest.mark.slow
 def test_verify_json_builds_each_declaration_once_cold_none_warm_and_a_module_s_own(modules):
     cold = verify(modules, "--json", "cold.json")
     assert len(cold["build"]) == ROT_IDS + len(OTH_IDS)
