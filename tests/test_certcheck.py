@@ -101,7 +101,7 @@ def test_checker_size():
     (3.7), (3.53), (3.109)'s m/rad and m/turn, each read under its own line). Since then: 1890
     for the command and the mathematics with the bounds on a certificate (``limits``, 150
     lines; the class decided from the page and corrected forms proved in ``check``), 915 for
-    the second reader (the page's sides kept for the class, ``\mathrm{CPM}``), 295 for the
+    the second reader (the page's sides kept for the class, the CPM of the reading), 295 for the
     binding to the page (a reader's own ids), 85 for ``by_definition`` (the class of a
     restatement from the page), 330 for the reading (a document's ``[[let]]`` lines) and 515
     for a document as the page (``document``: its relations by label or line, their class

@@ -180,6 +180,25 @@ def _coq(results, cert_dir, certified, coq_dir) -> str:
             f"coqc -q FILE), {len(done['none'])} ids without one (NO-PROOF.txt)")
 
 
+def _check_book(args) -> None:
+    """``--book`` only with ``--certificates``, and a file.
+
+    Raises:
+        rigidsym.core.errors.BadInput: either is not so (names ``--book``).
+    """
+    if args.book is None:
+        return
+    from pathlib import Path
+
+    from rigidsym.core.errors import BadInput
+
+    if not args.certificates:
+        raise BadInput("--book: only with --certificates DIR (it binds the certificates "
+                       "to the page)")
+    if not Path(args.book).is_file():
+        raise BadInput(f"--book: expected the book's text file, got {args.book!r}")
+
+
 def run(args) -> int:
     """``rigidsym verify``: decide equations, print a table, optionally write JSON."""
     from rigidsym.checking.export import all_checked
@@ -187,16 +206,7 @@ def run(args) -> int:
     from rigidsym.registry.declarations import is_user_id
     from rigidsym.report.record import cause_line, summary, transcription_extra
 
-    if args.book is not None:
-        from pathlib import Path
-
-        from rigidsym.core.errors import BadInput
-
-        if not args.certificates:
-            raise BadInput("--book: only with --certificates DIR (it binds the certificates "
-                           "to the page)")
-        if not Path(args.book).is_file():
-            raise BadInput(f"--book: expected the book's text file, got {args.book!r}")
+    _check_book(args)
     ids = select_with_modules(args.ids, args.section, args.module)
     reading = _user_reading(args, ids, is_user_id)
     fmt = output_format(args)

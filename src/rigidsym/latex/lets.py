@@ -28,7 +28,7 @@ from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.book_notations import SETS
 
-__all__ = ["KIND_WORDS", "Let", "kind_of", "split_lets", "read_lets", "rated_lets"]
+__all__ = ["KIND_WORDS", "Let", "kind_of", "let_items", "split_lets", "read_lets", "rated_lets"]
 
 #: the kinds a ``--let NAME: KIND`` takes, in words (``n``, ``m``: sizes, e.g. ``6-vector``,
 #: ``4x4 matrix``)
@@ -183,7 +183,7 @@ def read_lets(let) -> list[Let]:
         BadInput: a declaration that is neither form, a NAME that is not one glyph, an
             unknown KIND (the kinds listed), a name declared twice.
     """
-    out = [_one_let(d) for d in _items(let)]
+    out = [_one_let(d) for d in let_items(let)]
     seen: dict[str, Let] = {}
     for x in out:
         if x.key in seen:
@@ -193,9 +193,14 @@ def read_lets(let) -> list[Let]:
     return out
 
 
-def _items(let) -> list[str]:
-    """The declaration strings of ``let`` (:func:`read_lets`' argument), a dict's values
-    written as ``NAME: KIND`` or ``NAME = LATEX``."""
+def let_items(let) -> list[str]:
+    """The declaration strings of ``let`` (:func:`read_lets`' argument: ``None``, a string,
+    a list of strings or a dict ``NAME -> KIND or LaTeX``), a dict's values written as
+    ``NAME: KIND`` or ``NAME = LATEX``.
+
+    Raises:
+        rigidsym.latex.BadInput: a dict whose keys or values are not strings.
+    """
     if let is None:
         return []
     if isinstance(let, str):

@@ -111,11 +111,11 @@ def _blackboard_named(decls: list[str] | None) -> set[str]:
 def _texts(let: object) -> list[str] | None:
     """The declarations of ``let`` one by one, a dict's written ``NAME: KIND`` or
     ``NAME = LATEX``; ``None`` for a value :func:`rigidsym.latex.lets.read_lets` refuses."""
-    from rigidsym.latex.lets import _items
+    from rigidsym.latex.lets import let_items
 
     if isinstance(let, dict):
         try:
-            return _items(let)
+            return let_items(let)
         except (TypeError, ValueError, AttributeError):
             return None
     return _decls(let)
