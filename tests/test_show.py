@@ -36,20 +36,27 @@ def shown():
     ids = ("3.96e", "3.59", "3.148")
     code = ("import sys; from rigidsym.cli import main\n"
             f"for i in {ids!r}:\n"
-            "    assert main(['show', i, '--full']) == 0\n"
-            f"    print({_END!r}, flush=True)\n")
+            "    for more in ([], ['--ascii']):\n"
+            "        assert main(['show', i, '--full', *more]) == 0\n"
+            f"        print({_END!r}, flush=True)\n")
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                        env=env, cwd=ROOT, check=True)
     parts = p.stdout.split(_END + "\n")
-    assert len(parts) == len(ids) + 1 and parts[-1] == "", p.stdout[-2000:]
-    return dict(zip(ids, parts, strict=False))
+    assert len(parts) == 2 * len(ids) + 1 and parts[-1] == "", p.stdout[-2000:]
+    return {**dict(zip(ids, parts[0::2], strict=False)),
+            **{i + " ascii": t for i, t in zip(ids, parts[1::2], strict=False)}}
 
 
 @pytest.mark.parametrize("eq_id", ["3.96e", "3.59", "3.148"])
 def test_explains_within_100_columns(shown, eq_id):
+    """In the book's notation and spelt in ASCII (``omega``, ``||omega||^2``: 3.59's
+    lines grew to 118 columns once spelt, wrapped before), no line past 100 columns."""
     text = shown[eq_id]
     assert "↪" not in text
     assert max(len(line) for line in text.splitlines()) <= 100
+    spelt = shown[eq_id + " ascii"]
+    assert spelt.isascii() and max(len(line) for line in spelt.splitlines()) <= 100
+    assert "Verdict: does-not-hold" in spelt and "Counterexample" in spelt
     assert "Verdict: does-not-hold" in text
     assert "Fails:" in text and "Cause:" in text and "unknown" not in text.lower()
     assert "Counterexample" in text and "residual (left - right)" in text

@@ -164,7 +164,7 @@ def run(args) -> int:
     # everything, as show --full: a relation read from LaTeX has no id to show again
     print(explain(atoms, {"printed": st.printed, "claim": st.claims,
                           "corrected": st.corrected or []}, "--latex (rigidsym check)", width,
-                  full=True))
+                  full=True, ascii=getattr(sys.stdout, "encoding", "") == "ascii"))
     return EXIT.get(r.verdict, 3)
 
 

@@ -111,7 +111,8 @@ def run(args) -> int:
         if k:
             print("\n" + "-" * min(width, 40) + "\n")
         print(explain(r, {"printed": st.printed, "claim": st.claims,
-                          "corrected": st.corrected or []}, where, width, full=args.full))
+                          "corrected": st.corrected or []}, where, width, full=args.full,
+                      ascii=getattr(sys.stdout, "encoding", "") == "ascii"))
     if args.certificates:
         _certificates(shown, args.certificates, args.json)
     return 0

@@ -144,7 +144,7 @@ def _verdict_lines(r: Outcome, rec: dict, width: int) -> list[str]:
 
 
 def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int,
-            full: bool = False) -> str:
+            full: bool = False, ascii: bool = False) -> str:
     """The explanation printed by ``rigidsym show``.
 
     Args:
@@ -157,6 +157,8 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int,
             backing); else at most :data:`SHORT_LINES` lines: the members, the verdict,
             the counterexample, the cause and the corrected form, a relation too long for
             :data:`_SHORT_BLOCK` lines summarised in one.
+        ascii: spelt in ASCII (``omega``, ``||a||``: :func:`rigidsym.printing.ascii.to_ascii`)
+            before the lines are fitted, so that the spelling does not widen them.
 
     Returns:
         Text, no line wider than ``width`` unless a single unbreakable token is.
@@ -218,9 +220,24 @@ def explain(r: Outcome, rels: dict[str, list[Rel]], where: str, width: int,
     if full and numeric_sentence(rec["numeric"]):
         out += _hard_wrap(numeric_sentence(rec["numeric"]), width, "")
     out += _hard_wrap(GLOSSARY_HINT, width, "")
+    if ascii:
+        out = _spelt(out, width)
     if not full:
         out = _fit_short(out, r.id, width)
     return "\n".join(out)
+
+
+def _spelt(lines: list[str], width: int) -> list[str]:
+    """``lines`` spelt in ASCII, each one the spelling made wider than ``width`` broken again
+    at its spaces, kept at its indentation."""
+    from rigidsym.printing.ascii import to_ascii
+
+    out = []
+    for line in (x for text in lines for x in to_ascii(text).split("\n")):
+        body = line.lstrip(" ")
+        out += [line] if len(line) <= width else \
+            _hard_wrap(body, width, line[:len(line) - len(body)])
+    return out
 
 
 def _short_counterexample(lines: list[str], eq_id: str) -> list[str]:
