@@ -7,6 +7,8 @@ models made explicit in dependency order, a cycle refused. Used by
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
@@ -28,6 +30,25 @@ def value_shape_words(shape) -> str:
     return f"{shape[0]}-vector" if shape[1] == 1 else f"{shape[0]}×{shape[1]} matrix"
 
 
+#: an entry's key as the parser keys it: ``q_{0}``, ``n_{x}``, ``\\dot{\\epsilon}_{1}`` (the
+#: rate of an entry), the letter in group 1 or 2
+_ENTRY_KEY = re.compile(r"(?:\\dot\{(\\?[A-Za-z]+)\}|(\\?[A-Za-z]+))_\{(?:[0-9]|[xyz])\}")
+
+
+def entry_vectors(mentioned: set[str], keys: set[str]) -> set[str]:
+    r"""The declared vectors (their keys among ``keys``) of which ``mentioned`` names an
+    entry or an entry's rate: ``q_{0}`` beside a --let of ``q`` or ``\mathbf{q}`` (the
+    reader's :mod:`rigidsym.latex.entries`); a subscripted glyph a --let declares itself
+    names no entry."""
+    out: set[str] = set()
+    for k in mentioned - keys:
+        m = _ENTRY_KEY.fullmatch(k)
+        if m:
+            letter = m.group(1) or m.group(2)
+            out |= {letter, f"\\mathbf{{{letter}}}", f"\\boldsymbol{{{letter}}}"} & keys
+    return out
+
+
 def _is_function(x: Let) -> bool:
     return bool(x.params) and x.params != ("t",)  # X(t) = ...: a model in time
 
@@ -43,6 +64,9 @@ def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
                 mentions[x.key] = glyph_keys(x.latex) - set(x.param_keys)
             except LatexError:
                 mentions[x.key] = set()  # the parse below says why
+    keys = {x.key for x in lets}
+    for k in mentions:  # q_0 of R's model mentions the model q: q is read first, and used
+        mentions[k] |= entry_vectors(mentions[k], keys) - {k}
     occurs: set[str] = set()
     for x in model_order(lets, mentions):
         occurs |= mentions[x.key] | set(x.param_keys)

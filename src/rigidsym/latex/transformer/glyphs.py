@@ -129,6 +129,9 @@ class GlyphRules:
                 self._unuse(inner.key)  # \dot\theta_1: theta alone is no glyph of it
             if accent == "\\dot" and self.timed(under.key):
                 return self.velocity(under.key, under.value)
+            rate = self.model_rate(under.key) if accent == "\\dot" else None
+            if rate is not None:  # \dot{e}_R of a model e_R built on functions of time
+                return rate
             self._unuse(under.key)
             return self._resolve(inner.base, list(under.rest), accent)
         base, rest = inner.base, list(inner.rest) + list(items[2:])
