@@ -589,7 +589,8 @@ class Evaluator:
                 arg = self.value(args[0])
                 if not V.is_matrix(V.scalar(arg)) and not isinstance(arg, V.Eye | V.Zero):
                     return self.value(f)
-            if self.choose(f"apply {key}", ("product", "apply")) == "apply":
+            if self._depends(d, args[0]) and self.choose(
+                    f"apply {key}", ("product", "apply")) == "apply":
                 return self.value(f)  # X(\mathbf{y}): X itself, applied
         if d is None or not d.params:
             if many:
@@ -601,6 +602,33 @@ class Evaluator:
             raise NotCovered(f"{text_of(t)}: {len(args)} arguments of a function of "
                              f"{len(d.params)}")
         return self._apply_values(d, [self.value(a) for a in args], t)
+
+    def _depends(self, d, arg) -> bool:
+        """The model ``d`` may depend on the argument ``arg`` of ``X(arg)``: its body, or a
+        model its body mentions (all the way down), mentions a glyph of ``arg``, or a kind
+        relates one to another (``body angular velocity of R``); else ``X(arg)`` is only
+        the product, as the books write a model that is no function of ``arg``."""
+        def mentioned(t) -> set[str]:
+            out: set[str] = set()
+            for sub in t.iter_subtrees() if isinstance(t, lark.Tree) else ():
+                if sub.data in ("glyph", "accented", "accented_bare", "label_first"):
+                    out.add(glyph_key(sub))
+            return out
+
+        wanted = mentioned(arg)
+        if any(" of " in getattr(self.env.decls.get(k), "kind", "") for k in wanted):
+            return True
+        seen, todo = set(), [d]
+        while todo:
+            m = todo.pop()
+            if " of " in m.kind:
+                return True
+            keys = mentioned(m.body) - seen if m.body is not None else set()
+            if keys & wanted:
+                return True
+            seen |= keys
+            todo += [self.env.decls[k] for k in keys if k in self.env.decls]
+        return False
 
     def _apply_values(self, d, vals, t):
         """The function ``d`` at the argument values ``vals``."""
