@@ -280,3 +280,24 @@ def test_model_vector_used_only_through_its_entries(sign, verdict):
              r"q = \begin{bmatrix} \cos\frac{\theta}{2} \\ \hat{\mathbf{n}}\sin\frac{\theta}{2}"
              r" \end{bmatrix}", Q_R], repairs=False)
     assert r.verdict == verdict
+
+
+# ---- a dot over a glyph with a subscript and a capital label: Savage's \dot{C}_B^I
+SAVAGE = [r"\boldsymbol\phi(t): vector", r"\phi = |\boldsymbol\phi|",
+          r"C_B^I = I + \frac{\sin\phi}{\phi}(\boldsymbol\phi\times) + \frac{1 - \cos\phi}"
+          r"{\phi^2}(\boldsymbol\phi\times)(\boldsymbol\phi\times)",
+          r"\boldsymbol\omega_{IB}^B: vector"]
+BORTZ = (r"\dot{{\boldsymbol\phi}} = \boldsymbol\omega_{{IB}}^B {} \frac12\boldsymbol\phi\times"
+         r"\boldsymbol\omega_{{IB}}^B + \frac{{1}}{{\phi^2}}\left(1 - \frac{{\phi\sin\phi}}"
+         r"{{2(1 - \cos\phi)}}\right)\boldsymbol\phi\times(\boldsymbol\phi\times"
+         r"\boldsymbol\omega_{{IB}}^B)")
+
+
+@pytest.mark.parametrize("sign, verdict", [("+", "verified"), ("-", "does-not-hold")])
+def test_dot_over_a_labelled_glyph(sign, verdict):
+    """``\\dot{C}_B^I``: the rate of the model ``C_B^I`` (the label part of the name), in both
+    semantics; ``C_B^I(\\boldsymbol\\omega\\times)`` a product (C's model does not depend on
+    omega, so no application is read by either)."""
+    r = rigidsym.check_latex(r"\dot{C}_B^I = C_B^I(\boldsymbol\omega_{IB}^B\times)",
+                             let=[*SAVAGE, BORTZ.format(sign)], repairs=False)
+    assert r.verdict == verdict
