@@ -604,31 +604,31 @@ class Evaluator:
         return self._apply_values(d, [self.value(a) for a in args], t)
 
     def _depends(self, d, arg) -> bool:
-        """The model ``d`` may depend on the argument ``arg`` of ``X(arg)``: its body, or a
-        model its body mentions (all the way down), mentions a glyph of ``arg``, or a kind
-        relates one to another (``body angular velocity of R``); else ``X(arg)`` is only
-        the product, as the books write a model that is no function of ``arg``."""
+        """The model ``d`` may depend on the argument ``arg`` of ``X(arg)``: the glyphs its
+        body mentions and those of ``arg``, each through the models they mention (all the
+        way down), meet, or a kind relates a glyph to another (``body angular velocity of
+        R``); else ``X(arg)`` is only the product, as the books write a model that is no
+        function of ``arg``."""
         def mentioned(t) -> set[str]:
-            out: set[str] = set()
-            for sub in t.iter_subtrees() if isinstance(t, lark.Tree) else ():
-                if sub.data in ("glyph", "accented", "accented_bare", "label_first"):
-                    out.add(glyph_key(sub))
-            return out
+            return {glyph_key(sub) for sub in (t.iter_subtrees() if isinstance(t, lark.Tree)
+                                               else ())
+                    if sub.data in ("glyph", "accented", "accented_bare", "label_first")}
 
-        wanted = mentioned(arg)
-        if any(" of " in getattr(self.env.decls.get(k), "kind", "") for k in wanted):
-            return True
-        seen, todo = set(), [d]
-        while todo:
-            m = todo.pop()
-            if " of " in m.kind:
-                return True
-            keys = mentioned(m.body) - seen if m.body is not None else set()
-            if keys & wanted:
-                return True
-            seen |= keys
-            todo += [self.env.decls[k] for k in keys if k in self.env.decls]
-        return False
+        def through(keys: set[str]) -> set[str] | None:  # None: a kind relates glyphs
+            seen, todo = set(), set(keys)
+            while todo:
+                k = todo.pop()
+                seen.add(k)
+                m = self.env.decls.get(k)
+                if m is not None and " of " in m.kind:
+                    return None
+                if m is not None and m.body is not None:
+                    todo |= mentioned(m.body) - seen
+            return seen
+
+        mine = through(mentioned(d.body) - {glyph_key(d.name)})
+        theirs = through(mentioned(arg))
+        return mine is None or theirs is None or bool(mine & theirs)
 
     def _apply_values(self, d, vals, t):
         """The function ``d`` at the argument values ``vals``."""
