@@ -655,3 +655,15 @@ def test_model_beside_a_parenthesis_it_does_not_depend_on(latex, verdict):
     r = rigidsym.check_latex(latex, let=["A: matrix", "x: vector"],
                              notation="murray-li-sastry", repairs=False)
     assert r.verdict == verdict
+
+
+@pytest.mark.parametrize("right, verdict", [
+    (r"\mathbf{u}(\mathbf{u}\cdot\mathbf{v}) - |\mathbf{u}|^2\mathbf{v}", "verified"),
+    (r"|\mathbf{u}|^2\mathbf{v} - \mathbf{u}(\mathbf{u}\cdot\mathbf{v})", "does-not-hold")])
+def test_a_squared_hat_drops_the_unit_vector_reading(right, verdict):
+    """Holm's ``\\hat{\\mathbf{u}}^2``: the square of a 3x1 unit vector is no power (a shapes
+    error, not sympy's internal one), so that reading of the hat is dropped and the skew
+    matrix's decides."""
+    r = rigidsym.check_latex(r"\hat{\mathbf{u}}^2\mathbf{v} = " + right,
+                             let=[r"\mathbf{u}: vector", r"\mathbf{v}: vector"], repairs=False)
+    assert r.verdict == verdict
