@@ -1,5 +1,6 @@
 """The quaternion product of the estimation books, a declaration of the reader's: ``\\otimes``
-(Solà, Trawny-Roumeliotis), ``\\odot`` (Kok-Hol-Schön) and ``\\star`` (Hanson) between two 4-vectors, in
+(Solà, Trawny-Roumeliotis), ``\\odot`` (Kok-Hol-Schön) and ``\\star`` (Hanson) between two
+4-vectors, in
 **Hamilton's** convention (scalar first, ``q = [w; x; y; z]``, ``ij = k``: Solà, Kok-Hol-Schön,
 the default) or **JPL's** (scalar last, ``q = [x; y; z; w]``, ``ij = -k``: Trawny-
 Roumeliotis, Breckenridge), said once: ``--let '\\otimes: JPL'`` (or ``Hamilton``; ``\\odot``

@@ -28,8 +28,13 @@ from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.meanings import alternatives, said
-from rigidsym.latex.values import (entry_vectors, glyph_values, read_models, resolve_models,
-                                   value_shape_words)
+from rigidsym.latex.values import (
+    entry_vectors,
+    glyph_values,
+    read_models,
+    resolve_models,
+    value_shape_words,
+)
 from rigidsym.printing import notation
 from rigidsym.registry.declarations import Rel, Statement
 
