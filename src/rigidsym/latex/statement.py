@@ -309,7 +309,7 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     # an angle of which only \dot X occurs is used (Greenwood's psi), and so is a model
     # (Lee's e_R, read only as \dot{e}_R: the model's rate) and a vector whose entries alone
     # occur (q_0 ... q_3 of Hanson's q in R's model)
-    occurs |= entry_vectors(occurs, {x.key for x in lets})
+    occurs |= entry_vectors(occurs, lets)
     for x in lets:
         if x.key not in occurs and not ((x.latex or x.kind.split(" in ")[0] in (
                 "angle", "scalar")) and dot_key(x.key) in occurs):
