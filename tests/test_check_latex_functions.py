@@ -640,3 +640,30 @@ def test_an_axis_subscript_beside_no_3_vector_is_a_symbol_of_its_own():
     r, reading = rigidsym.api.check_latex_run(r"q_x + \mathbf{q}^T\mathbf{q} = q_x + 1",
                                               [r"\mathbf{q}: unit 4-vector"], None, (), False)
     assert r.verdict == "verified" and "q_{x}" in reading.free
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\hat{x}(A - A^T) = \hat{x}A - \hat{x}A^T", "verified"),
+    (r"\operatorname{tr}[A\hat{x}] = \frac12\operatorname{tr}[\hat{x}(A - A^T)] = "
+     r"-x^T(A - A^T)^\vee", "verified"),
+    (r"\operatorname{tr}[A\hat{x}] = \frac12\operatorname{tr}[\hat{x}(A - A^T)] = "
+     r"x^T(A - A^T)^\vee", "does-not-hold")])
+def test_model_beside_a_parenthesis_it_does_not_depend_on(latex, verdict):
+    """Murray-Li-Sastry's ``\\hat{x}(A - A^T)``: the hat's model does not depend on A, so it
+    is the product in both semantics (the second semantics read 'X itself, applied' too and
+    disagreed with the first); and ``x^T(A - A^T)^\\vee``'s vee is the parenthesis'."""
+    r = rigidsym.check_latex(latex, let=["A: matrix", "x: vector"],
+                             notation="murray-li-sastry", repairs=False)
+    assert r.verdict == verdict
+
+
+@pytest.mark.parametrize("right, verdict", [
+    (r"\mathbf{u}(\mathbf{u}\cdot\mathbf{v}) - |\mathbf{u}|^2\mathbf{v}", "verified"),
+    (r"|\mathbf{u}|^2\mathbf{v} - \mathbf{u}(\mathbf{u}\cdot\mathbf{v})", "does-not-hold")])
+def test_a_squared_hat_drops_the_unit_vector_reading(right, verdict):
+    """Holm's ``\\hat{\\mathbf{u}}^2``: the square of a 3x1 unit vector is no power (a shapes
+    error, not sympy's internal one), so that reading of the hat is dropped and the skew
+    matrix's decides."""
+    r = rigidsym.check_latex(r"\hat{\mathbf{u}}^2\mathbf{v} = " + right,
+                             let=[r"\mathbf{u}: vector", r"\mathbf{v}: vector"], repairs=False)
+    assert r.verdict == verdict

@@ -236,3 +236,68 @@ def test_a_rate_the_reader_introduces_is_said_as_what_it_is_not_as_the_users(lat
     assert r.verdict == "verified", (r.detail, r.model)
     assert any(says in " ".join(n.split()) for n in r.model), r.model
     assert not any(n.startswith("free, no --let") and introduced in n for n in r.model), r.model
+
+
+# ---- a --let model used only through its rate or its entries (Lee's e_R, Hanson's q)
+LEE = [r"R(t): rotation", r"R_d(t): rotation", r"\Omega: body angular velocity of R",
+       r"\Omega_d: body angular velocity of R_d", r"e_R = \frac12(R_d^TR - R^TR_d)^\vee",
+       r"e_\Omega = \Omega - R^TR_d\Omega_d"]
+
+
+@pytest.mark.parametrize("sign, verdict", [("R^TR_d", "verified"),
+                                           ("R_d^TR", "does-not-hold")])
+def test_model_read_only_through_its_rate(sign, verdict):
+    """``\\dot{e}_R`` of the model ``e_R`` (Lee, Leok & McClamroch): d/dt of the model, and
+    the model used by it (never 'e_R does not occur', never a free rate)."""
+    r = rigidsym.check_latex(rf"\dot{{e}}_R = \frac12(\operatorname{{tr}}[R^TR_d]I - {sign})"
+                             r"e_\Omega", let=LEE, repairs=False)
+    assert r.verdict == verdict
+
+
+def test_rate_of_a_model_in_explicit_time_is_refused_not_free():
+    """``\\dot\\omega_1`` of ``--let '\\omega_1 = \\omega_0\\cos\\Omega t'``: the reader takes
+    d/dt only along the declared functions of time, so it is refused, never a free scalar
+    unrelated to the model (which would decide a wrong verdict)."""
+    with pytest.raises(BadInput, match=r"time derivative of \\omega_\{1\}"):
+        rigidsym.check_latex(r"\dot\omega_1 = -\omega_0\Omega\sin\Omega t",
+                             let=[r"\Omega: scalar", r"\omega_1 = \omega_0\cos\Omega t"],
+                             repairs=False)
+
+
+Q_R = (r"R = \begin{bmatrix} q_0^2 + q_1^2 - q_2^2 - q_3^2 & 2q_1q_2 - 2q_0q_3 & 2q_1q_3 + "
+       r"2q_0q_2 \\ 2q_1q_2 + 2q_0q_3 & q_0^2 - q_1^2 + q_2^2 - q_3^2 & 2q_2q_3 - 2q_0q_1 \\ "
+       r"2q_1q_3 - 2q_0q_2 & 2q_2q_3 + 2q_0q_1 & q_0^2 - q_1^2 - q_2^2 + q_3^2 \end{bmatrix}")
+
+
+@pytest.mark.parametrize("sign, verdict", [("+", "verified"), ("-", "does-not-hold")])
+def test_model_vector_used_only_through_its_entries(sign, verdict):
+    """Hanson's ``q`` model, used only as ``q_0 ... q_3`` in R's model: read first (R after
+    it), its entries counted from 0 as written, and used."""
+    r = rigidsym.check_latex(
+        rf"R = \cos\theta\,I_3 + (1 - \cos\theta)\hat{{\mathbf{{n}}}}\hat{{\mathbf{{n}}}}^T "
+        rf"{sign} \sin\theta[\hat{{\mathbf{{n}}}}]_\times",
+        let=[r"\hat{\mathbf{n}}: unit vector", r"\theta: angle",
+             r"q = \begin{bmatrix} \cos\frac{\theta}{2} \\ \hat{\mathbf{n}}\sin\frac{\theta}{2}"
+             r" \end{bmatrix}", Q_R], repairs=False)
+    assert r.verdict == verdict
+
+
+# ---- a dot over a glyph with a subscript and a capital label: Savage's \dot{C}_B^I
+SAVAGE = [r"\boldsymbol\phi(t): vector", r"\phi = |\boldsymbol\phi|",
+          r"C_B^I = I + \frac{\sin\phi}{\phi}(\boldsymbol\phi\times) + \frac{1 - \cos\phi}"
+          r"{\phi^2}(\boldsymbol\phi\times)(\boldsymbol\phi\times)",
+          r"\boldsymbol\omega_{IB}^B: vector"]
+BORTZ = (r"\dot{{\boldsymbol\phi}} = \boldsymbol\omega_{{IB}}^B {} \frac12\boldsymbol\phi\times"
+         r"\boldsymbol\omega_{{IB}}^B + \frac{{1}}{{\phi^2}}\left(1 - \frac{{\phi\sin\phi}}"
+         r"{{2(1 - \cos\phi)}}\right)\boldsymbol\phi\times(\boldsymbol\phi\times"
+         r"\boldsymbol\omega_{{IB}}^B)")
+
+
+@pytest.mark.parametrize("sign, verdict", [("+", "verified"), ("-", "does-not-hold")])
+def test_dot_over_a_labelled_glyph(sign, verdict):
+    """``\\dot{C}_B^I``: the rate of the model ``C_B^I`` (the label part of the name), in both
+    semantics; ``C_B^I(\\boldsymbol\\omega\\times)`` a product (C's model does not depend on
+    omega, so no application is read by either)."""
+    r = rigidsym.check_latex(r"\dot{C}_B^I = C_B^I(\boldsymbol\omega_{IB}^B\times)",
+                             let=[*SAVAGE, BORTZ.format(sign)], repairs=False)
+    assert r.verdict == verdict

@@ -310,3 +310,28 @@ def test_the_inverse_stored_scalar_last_is_asked_until_a_layout_is_declared(lets
         return
     r = _check(INV_LAST, [r"\mathbf{q}: 4-vector"] + lets)
     assert r.verdict == (verdict or "does-not-hold"), (lets, r.verdict)
+
+
+HANSON_R = (r"R(q) = \begin{bmatrix} q_0^2 + q_1^2 - q_2^2 - q_3^2 & 2q_1q_2 - 2q_0q_3 & "
+            r"2q_1q_3 + 2q_0q_2 \\ 2q_1q_2 + 2q_0q_3 & q_0^2 - q_1^2 + q_2^2 - q_3^2 & 2q_2q_3 - "
+            r"2q_0q_1 \\ 2q_1q_3 - 2q_0q_2 & 2q_2q_3 + 2q_0q_1 & q_0^2 - q_1^2 - q_2^2 + q_3^2 "
+            r"\end{bmatrix}")
+HANSON = [r"q: unit 4-vector", r"p: unit 4-vector", HANSON_R]
+
+
+def test_hansons_star_is_the_quaternion_product_asked_undeclared():
+    """Hanson's ``q \\star p`` reads as ``\\otimes``: where the three readings disagree it is
+    asked, naming the --let; the norm identity holds under all three."""
+    with pytest.raises(BadInput, match=r"\\star\) is read two ways"):
+        rigidsym.check_latex(r"R(q\star p) = R(q)R(p)", let=HANSON, repairs=False)
+    r = rigidsym.check_latex(r"|q\star p| = |q||p|", let=["q: 4-vector", "p: 4-vector"],
+                             repairs=False)
+    assert r.verdict == "verified"
+
+
+@pytest.mark.parametrize("right, verdict", [("R(q)R(p)", "verified"),
+                                            ("R(p)R(q)", "does-not-hold")])
+def test_hansons_star_decided_once_declared(right, verdict):
+    r = rigidsym.check_latex(rf"R(q\star p) = {right}", let=[*HANSON, r"\star: Hamilton"],
+                             repairs=False)
+    assert r.verdict == verdict

@@ -57,7 +57,7 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
         r"--let 'bracket cross: content' or --let 'bracket cross: bind' (or write "
         r"[A\mathbf{x}]_\times for the content, A[\mathbf{x}]_\times for A times)"),
     Construct(
-        "quaternion product", r"\mathbf{p}\otimes\mathbf{q}, \mathbf{p}\odot\mathbf{q}",
+        "quaternion product", r"\mathbf{p}\otimes\mathbf{q}, \mathbf{p}\odot\mathbf{q}, p\star q",
         (Reading("Hamilton", "scalar first q = [w; x; y; z], ij = k",
                  "Solà (2017) (12), Kok–Hol–Schön (2017)"),
          Reading("JPL", "scalar last q = [x; y; z; w], ij = -k",

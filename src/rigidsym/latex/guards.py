@@ -87,14 +87,19 @@ def time_derivatives(free: list[str], used: set[str], declared: dict,
     rate of an ``X`` declared a scalar or an angle: a value of its own at the instant, as
     free as ``X`` (Greenwood's ``\\omega^2 = \\dot\\psi^2 + ... + 2\\dot\\psi\\dot\\phi\\cos
     \\theta``)."""
+    from rigidsym.latex.kinematics import rate_target
+
     for key in free:
         m = _DOT.match(key)
-        if m and m.group(2) in used:
-            x = m.group(2)
+        # \dot{\omega}_{1}: the rate of \omega_{1}, as kinematics keys it (not \omega}_{1)
+        accent, x = ("dot", rate_target(key)) if rate_target(key) else \
+            (m.group(1), m.group(2)) if m else ("", "")
+        # (a model X counts though only \dot X occurs: its rate, never a free symbol)
+        if x and (x in used or getattr(declared.get(x), "latex", None)):
             if x in declared and declared[x].name.replace(" ", "").endswith("(t)"):
                 # X(t): \dot X is its derivative (rigidsym.latex.transformer.book_notations)
                 continue
-            if no_derivative and m.group(1) == "dot" and x in declared \
+            if no_derivative and accent == "dot" and x in declared \
                     and declared[x].kind.split(" in ")[0] in ("angle", "scalar"):
                 continue
             how = "declared" if x in declared else "free"

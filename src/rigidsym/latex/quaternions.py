@@ -1,5 +1,6 @@
 """The quaternion product of the estimation books, a declaration of the reader's: ``\\otimes``
-(Solà, Trawny-Roumeliotis) and ``\\odot`` (Kok-Hol-Schön) between two 4-vectors, in
+(Solà, Trawny-Roumeliotis), ``\\odot`` (Kok-Hol-Schön) and ``\\star`` (Hanson) between two
+4-vectors, in
 **Hamilton's** convention (scalar first, ``q = [w; x; y; z]``, ``ij = k``: Solà, Kok-Hol-Schön,
 the default) or **JPL's** (scalar last, ``q = [x; y; z; w]``, ``ij = -k``: Trawny-
 Roumeliotis, Breckenridge), said once: ``--let '\\otimes: JPL'`` (or ``Hamilton``; ``\\odot``
@@ -32,7 +33,7 @@ __all__ = ["HAMILTON", "JPL", "NAMES", "current", "declared", "using", "split_se
 
 HAMILTON, JPL = "Hamilton", "JPL"
 #: the glyphs of the product, as a --let NAME
-NAMES = ("\\otimes", "\\odot")
+NAMES = ("\\otimes", "\\odot", "\\star")
 #: the notations whose table declares the product (``\\otimes: JPL`` in ``jpl.txt``)
 NOTATION_PRODUCTS = {"jpl": JPL}
 _CONVENTION: ContextVar[tuple[str, str | None]] = ContextVar("quaternion_convention",
@@ -241,7 +242,7 @@ def both_conventions(verdicts: dict[tuple[str, str], str], notes: list[str],
                      for (r, o), v in verdicts.items())
     fixed = (f"{storage} puts the scalar {next(iter(verdicts))[1]}, which does not fix the "
              f"rule of the units, " if storage else "nothing declares it, ")
-    raise BadInput(f"--latex: the quaternion product \\otimes (\\odot) is read two ways "
+    raise BadInput(f"--latex: the quaternion product \\otimes (\\odot, \\star) is read two ways "
                    f"by the books: the rule of the units (Hamilton's ij = k or JPL's ij = -k) "
                    f"and the scalar's place are two choices; {fixed}and the readings disagree "
                    f"({each}): say which, --let '\\otimes: Hamilton' (the scalar first), "

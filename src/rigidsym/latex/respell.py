@@ -622,7 +622,7 @@ def declared_deltas(latex: str, let: object) -> tuple[str, object, str]:
 
 
 _CONJ_C = re.compile(r"\^\s*(?:\{\s*c\s*\}|c(?![A-Za-z]))")
-_QPRODUCT = re.compile(r"\\(?:odot|otimes)(?![A-Za-z])")
+_QPRODUCT = re.compile(r"\\(?:odot|otimes|star)(?![A-Za-z])")
 
 
 def conjugate_c(latex: str, let: object) -> tuple[str, object, str]:

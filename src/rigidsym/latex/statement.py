@@ -28,7 +28,13 @@ from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.meanings import alternatives, said
-from rigidsym.latex.values import glyph_values, read_models, resolve_models, value_shape_words
+from rigidsym.latex.values import (
+    entry_vectors,
+    glyph_values,
+    read_models,
+    resolve_models,
+    value_shape_words,
+)
 from rigidsym.printing import notation
 from rigidsym.registry.declarations import Rel, Statement
 
@@ -300,9 +306,13 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
                        f"and [\\mathbf{{q}}]_R) is a name of its own that no --let declares: "
                        f"declare its model, e.g. --let '{k} = \\begin{{bmatrix}} ... "
                        f"\\end{{bmatrix}}', or its kind, --let '{k}: 4x4 matrix'")
-    for x in lets:  # an angle of which only \dot X occurs is used (Greenwood's psi)
-        if x.key not in occurs and not (x.kind.split(" in ")[0] in ("angle", "scalar")
-                                        and dot_key(x.key) in occurs):
+    # an angle of which only \dot X occurs is used (Greenwood's psi), and so is a model
+    # (Lee's e_R, read only as \dot{e}_R: the model's rate) and a vector whose entries alone
+    # occur (q_0 ... q_3 of Hanson's q in R's model)
+    occurs |= entry_vectors(occurs, lets)
+    for x in lets:
+        if x.key not in occurs and not ((x.latex or x.kind.split(" in ")[0] in (
+                "angle", "scalar")) and dot_key(x.key) in occurs):
             raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
                            f"model (the LaTeX's glyphs: "
                            f"{', '.join(sorted(parsed.glyphs)) or 'none'})")

@@ -7,6 +7,8 @@ models made explicit in dependency order, a cycle refused. Used by
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from rigidsym.algebra import symbols as _sym
@@ -28,6 +30,41 @@ def value_shape_words(shape) -> str:
     return f"{shape[0]}-vector" if shape[1] == 1 else f"{shape[0]}×{shape[1]} matrix"
 
 
+#: an entry's key as the parser keys it: ``q_{0}``, ``n_{x}``, ``\\dot{\\epsilon}_{1}`` (the
+#: rate of an entry), the letter in group 1 or 2
+_ENTRY_KEY = re.compile(r"(?:\\dot\{(\\?[A-Za-z]+)\}|(\\?[A-Za-z]+))_\{(?:[0-9]|[xyz])\}")
+
+
+def entry_vectors(mentioned: set[str], lets) -> set[str]:
+    r"""The declared vectors (keys of ``lets``) of which ``mentioned`` names an entry or an
+    entry's rate: ``q_{0}`` beside a --let of ``q`` or ``\mathbf{q}`` (the reader's
+    :mod:`rigidsym.latex.entries`: a declared n-vector's entries 1 to n, a 4-vector's 0 to 4,
+    a 3-vector's x, y, z; a model's shape is not known before it is read); a subscripted
+    glyph a --let declares itself names no entry."""
+    shapes = {x.key: (_kind_shape(x) if x.kind else None) for x in lets}
+    out: set[str] = set()
+    for k in mentioned - set(shapes):
+        m = _ENTRY_KEY.fullmatch(k)
+        if not m:
+            continue
+        letter, sub = m.group(1) or m.group(2), k.rsplit("_{", 1)[1][:-1]
+        for v in {letter, f"\\mathbf{{{letter}}}", f"\\boldsymbol{{{letter}}}"} & set(shapes):
+            n = shapes[v]
+            if n is None or (sub in "xyz" and n == 3) or (sub.isdigit() and (
+                    1 <= int(sub) <= n or (n == 4 and int(sub) == 0))):
+                out.add(v)
+    return out
+
+
+def _kind_shape(x: Let) -> int:
+    """The entries of the vector a --let's kind declares, 0 for no vector."""
+    try:
+        shape = kind_of(x.kind, x.text)[0]
+    except BadInput:
+        return 0
+    return shape[0] if len(shape) == 2 and shape[1] == 1 else 0
+
+
 def _is_function(x: Let) -> bool:
     return bool(x.params) and x.params != ("t",)  # X(t) = ...: a model in time
 
@@ -43,8 +80,16 @@ def read_models(rd: GlyphReader, lets: list[Let], values: dict) -> set[str]:
                 mentions[x.key] = glyph_keys(x.latex) - set(x.param_keys)
             except LatexError:
                 mentions[x.key] = set()  # the parse below says why
+    # q_0 of R's model mentions the model q: q is read first (where that makes no cycle:
+    # K's x_0 beside a model \mathbf{x} = K\mathbf{X} names no entry of it), and is used
+    entry = {k: v | (entry_vectors(v, lets) - {k}) for k, v in mentions.items()}
+    try:
+        order = model_order(lets, entry)
+        mentions = entry
+    except BadInput:
+        order = model_order(lets, mentions)
     occurs: set[str] = set()
-    for x in model_order(lets, mentions):
+    for x in order:
         occurs |= mentions[x.key] | set(x.param_keys)
         if _is_function(x):
             rd.add_function(x)

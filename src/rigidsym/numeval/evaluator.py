@@ -589,7 +589,8 @@ class Evaluator:
                 arg = self.value(args[0])
                 if not V.is_matrix(V.scalar(arg)) and not isinstance(arg, V.Eye | V.Zero):
                     return self.value(f)
-            if self.choose(f"apply {key}", ("product", "apply")) == "apply":
+            if self._depends(d, args[0]) and self.choose(
+                    f"apply {key}", ("product", "apply")) == "apply":
                 return self.value(f)  # X(\mathbf{y}): X itself, applied
         if d is None or not d.params:
             if many:
@@ -601,6 +602,33 @@ class Evaluator:
             raise NotCovered(f"{text_of(t)}: {len(args)} arguments of a function of "
                              f"{len(d.params)}")
         return self._apply_values(d, [self.value(a) for a in args], t)
+
+    def _depends(self, d, arg) -> bool:
+        """The model ``d`` may depend on the argument ``arg`` of ``X(arg)``: the glyphs its
+        body mentions and those of ``arg``, each through the models they mention (all the
+        way down), meet, or a kind relates a glyph to another (``body angular velocity of
+        R``); else ``X(arg)`` is only the product, as the books write a model that is no
+        function of ``arg``."""
+        def mentioned(t) -> set[str]:
+            return {glyph_key(sub) for sub in (t.iter_subtrees() if isinstance(t, lark.Tree)
+                                               else ())
+                    if sub.data in ("glyph", "accented", "accented_bare", "label_first")}
+
+        def through(keys: set[str]) -> set[str] | None:  # None: a kind relates glyphs
+            seen, todo = set(), set(keys)
+            while todo:
+                k = todo.pop()
+                seen.add(k)
+                m = self.env.decls.get(k)
+                if m is not None and " of " in m.kind:
+                    return None
+                if m is not None and m.body is not None:
+                    todo |= mentioned(m.body) - seen
+            return seen
+
+        mine = through(mentioned(d.body) - {glyph_key(d.name)})
+        theirs = through(mentioned(arg))
+        return mine is None or theirs is None or bool(mine & theirs)
 
     def _apply_values(self, d, vals, t):
         """The function ``d`` at the argument values ``vals``."""

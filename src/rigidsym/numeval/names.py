@@ -34,8 +34,14 @@ def canonical(t: object) -> object:
         spelt = lark.Token("LEFT_INDEX", plain)
         base = lark.Tree("base", list(letter.children)) if letter.data == "bare" else letter
         return lark.Tree("indexed_accent", [spelt, accent, base, *rest])
-    if not isinstance(t, lark.Tree) or t.data not in ("accented", "accented_bare") \
-            or len(t.children) != 3:
+    if not isinstance(t, lark.Tree) or t.data not in ("accented", "accented_bare"):
+        return t
+    label = [c for c in t.children[2:] if isinstance(c, lark.Token) and c.type == "SUPLABEL"]
+    if label:  # Savage's \dot{C}_B^N: the accent over C_B^N, its label part of the name
+        accent, inner, *rest = [c for c in t.children if c not in label]
+        return canonical(lark.Tree("accented", [accent, canonical(lark.Tree(
+            "glyph", [_base_of(t.data, inner), *rest, *label]))]))
+    if len(t.children) != 3:
         return t
     accent, inner, sub = t.children
     if not isinstance(sub, lark.Tree) or sub.data != "subscript":
@@ -48,6 +54,15 @@ def canonical(t: object) -> object:
     else:
         return t
     return lark.Tree("accented", [accent, lark.Tree("glyph", [base, sub])])
+
+
+def _base_of(rule: str, inner):
+    """The base of an accent's letter: a bare letter's, or a plain glyph's one child."""
+    if rule == "accented_bare":
+        return lark.Tree("base", list(inner.children))
+    if inner.data == "glyph" and len(inner.children) == 1:
+        return inner.children[0]
+    return inner
 
 
 def unlabelled(t: object) -> object:

@@ -193,6 +193,9 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
             return x.inverse() if not isinstance(x, sp.MatrixBase) else x.inv()
         if matrix_shape(x) == (1, 1):
             return as_scalar(x) ** n
+        if matrix_shape(x)[0] != matrix_shape(x)[1]:  # \hat{u}^2 of a unit vector \hat{u}
+            raise LatexError(f"^{n} of a {matrix_shape(x)[0]}x{matrix_shape(x)[1]} matrix: "
+                             f"a power of a square matrix only", "shapes")
         return x ** n
 
     def sup(self, items):

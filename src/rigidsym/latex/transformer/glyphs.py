@@ -107,6 +107,21 @@ class GlyphRules:
         accent, inner = wide(str(items[0])), items[1]
         if not isinstance(inner, GlyphKey):
             raise LatexError(f"{accent} over an expression: expected a glyph", "accent")
+        labels = [i for i in items[2:] if isinstance(i, lark.Token) and i.type == "SUPLABEL"]
+        if labels and not inner.accent:
+            # Savage's \dot{C}_B^N: TeX's accent over C_B^N (the label part of the name, as in
+            # a glyph); the rate of C_B^N where that is a function of time or a model
+            rest = [*inner.rest, *(i for i in items[2:] if i not in labels),
+                    *(label_key(str(i)) for i in labels)]
+            under = self._resolve(inner.base, rest, None)
+            self._unuse(inner.key)
+            if accent == "\\dot" and self.timed(under.key):
+                return self.velocity(under.key, under.value)
+            rate = self.model_rate(under.key) if accent == "\\dot" else None
+            if rate is not None:
+                return rate
+            self._unuse(under.key)
+            return self._resolve(inner.base, rest, accent)
         if accent == "\\dot" and not inner.accent and not inner.rest and len(items) == 3 \
                 and isinstance(items[2], tuple) and ":" in items[2][1] \
                 and self.timed(inner.key):
@@ -129,6 +144,9 @@ class GlyphRules:
                 self._unuse(inner.key)  # \dot\theta_1: theta alone is no glyph of it
             if accent == "\\dot" and self.timed(under.key):
                 return self.velocity(under.key, under.value)
+            rate = self.model_rate(under.key) if accent == "\\dot" else None
+            if rate is not None:  # \dot{e}_R of a model e_R built on functions of time
+                return rate
             self._unuse(under.key)
             return self._resolve(inner.base, list(under.rest), accent)
         base, rest = inner.base, list(inner.rest) + list(items[2:])
