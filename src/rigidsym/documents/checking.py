@@ -17,7 +17,7 @@ from pathlib import Path
 
 from rigidsym.core.errors import BadInput
 from rigidsym.documents import conventions, store
-from rigidsym.documents.declarations import CONVENTION_LETS, Plan, plan
+from rigidsym.documents.declarations import CONVENTION_LETS, Plan, omitted_lines, plan
 from rigidsym.documents.document import Document, read_document
 from rigidsym.reading import Reading, load_reading, sidecar
 
@@ -40,6 +40,8 @@ class DocumentResult:
         conventions: the reading's conventions, each with whether ``check_latex`` uses it.
         stored: how many records came from the verdict store.
         seconds: the wall time of the run.
+        omitted: the reading's lines no relation is given, each once: ``{"let",
+            "reason", "labels"}`` (:func:`rigidsym.documents.declarations.reading_lets`).
     """
 
     document: Document
@@ -48,6 +50,7 @@ class DocumentResult:
     conventions: list[str] = field(default_factory=list)
     stored: int = 0
     seconds: float = 0.0
+    omitted: list[dict] = field(default_factory=list)
 
     def counts(self) -> dict[str, int]:
         """How many relations have each verdict."""
@@ -199,6 +202,8 @@ def check_document(path: str | Path, *, reading: str | Path | None = None,
                 f" (as --let '{CONVENTION_LETS[(key, value)]}')" if used else
                 " (said back; no relation's check depends on it)"))
     plans = plan(list(doc.relations), rd, list(lets))
+    if rd is not None:
+        result.omitted = omitted_lines(rd, [r.label for r in doc.relations])
     by_display: dict[int, list[Plan]] = {}
     for p in plans:
         by_display.setdefault(p.relation.display, []).append(p)
