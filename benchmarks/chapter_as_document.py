@@ -48,8 +48,14 @@ DECIDED = ("verified", "does-not-hold", "definition")
 #: a reason not decided -> its group (the first that matches)
 _GROUPS = (
     (r"^undeclared: ", "a symbol the reading does not declare for the label"),
-    (r"which the document defines only later", "uses a symbol the page defines only later"),
+    (r"which the document defines only later", "uses a symbol the reading does not declare "
+                                               "for the label, which the page defines later"),
+    (r"whose line of the reading for .* is not given", "uses a symbol whose reading line is "
+                                                       "not given (listed with why)"),
     (r"are read as one glyph", "two reading lines read as one glyph"),
+    (r"^--latex: the numeric cross-check does not evaluate", "the numeric cross-check does not "
+                                                             "evaluate a construct"),
+    (r"^--let", "a declaration check_latex refuses"),
     (r"^a construct not read", "LaTeX the reader does not read"),
     (r"^an elision", "an elision"),
     (r"^a side is empty", "a side is empty (a display split by prose)"),

@@ -12,8 +12,7 @@ from rigidsym.core.errors import BadInput
 from rigidsym.documents.declarations import omitted_lines, plan, reading_lets
 from rigidsym.documents.displays import Display, Source
 from rigidsym.documents.relations import split_display
-from rigidsym.latex.lets import (model_names, model_spelling, read_lets,
-                                 respell_model_names)
+from rigidsym.latex.lets import model_names, model_spelling, read_lets, respell_model_names
 from rigidsym.reading import parse_reading
 from rigidsym.registry import declarations as registry
 
@@ -132,3 +131,21 @@ def test_the_reading_s_class_and_its_lines_for_a_label_rule_the_page():
 def test_a_line_read_nowhere_is_still_bad_input_from_the_command_line():
     with pytest.raises(BadInput, match="cannot be read"):
         plan(display(r"x = y \quad (1)"), None, [r"\|\mathbf{v}\|: scalar"])
+
+
+def test_a_line_not_given_withholds_its_glyphs_and_a_rate_reads_from_x_of_t():
+    rd = parse_reading(READING)
+    rels = (display(r"p = d_0 \quad (1)") + display(r"\mathbf{v} = \mathbf{v} \quad (1)")
+            + display(r"\dot{\mathbf{a}}^T\mathbf{a} = \mathbf{a}^T\dot{\mathbf{a}} \quad (1)"))
+    plans = plan(rels, rd)
+    # the member's p (m/rad or m/turn) is not said: never read as another p
+    assert plans[0].action == "skip" and "'p = d_0', is not given" in plans[0].reason
+    # a line that constrains v and is not given leaves v undecided, never free
+    assert plans[1].action == "skip" and r"\|\mathbf{v}\|: scalar" in plans[1].reason
+    # \dot a is the rate of a(t): its declaration comes with it
+    assert plans[2].action == "decide" and plans[2].lets == [r"\mathbf{a}(t): 3-vector"]
+
+
+def test_ell_is_a_glyph():
+    assert rigidsym.check_latex(r"(\ell + 1)^2 = \ell^2 + 2\ell + 1",
+                                repairs=False).verdict == "verified"

@@ -28,7 +28,8 @@ from rigidsym.documents.conventions import CHOICES
 from rigidsym.documents.relations import DEFINING, NOT_CHECKED, Relation
 from rigidsym.reading import Reading, lets_for
 
-__all__ = ["CONVENTION_LETS", "Plan", "omitted_lines", "plan", "reading_lets"]
+__all__ = ["CONVENTION_LETS", "Plan", "omitted_lines", "plan", "reading_lets",
+           "withheld"]
 
 #: a reading file's conventions that ``check_latex`` takes, as the ``--let`` that says each
 CONVENTION_LETS = {(key, value): let for key, values in CHOICES.items()
@@ -155,6 +156,35 @@ def reading_lets(reading: Reading, label: str | None) -> tuple[list[str], list[t
     return given, omitted
 
 
+def withheld(reading: Reading, label: str | None) -> tuple[dict[str, str], dict[str, str]]:
+    """What the lines :func:`reading_lets` does not give ``label`` leave: the glyphs no
+    relation under it may be decided with (``{key: the line}``: the line's symbol, or every
+    glyph of a line whose NAME is no symbol, ``\\|\\mathbf{f}\\| = W``, which constrains
+    them), and the rates ``--let`` reads as the line says (``{key of \\dot{X}: key of X}``,
+    X a function of time), which no definition of the page replaces."""
+    from rigidsym.latex.lets import model_names, respell_model_names
+
+    names = model_names(lets_for(reading, scope=label, id=label))
+    blocked: dict[str, str] = {}
+    rates: dict[str, str] = {}
+    for t, why in reading_lets(reading, label)[1]:
+        text = respell_model_names(t, names)
+        colon, eq = _top(text, ":"), _top(text, "=")
+        cut = colon if colon >= 0 and (eq < 0 or colon < eq) else eq
+        name = text[:cut].strip() if cut >= 0 else text
+        one = _one_let(f"{name}: scalar")
+        of = _one_let(f"{_RATE.fullmatch(text[cut + 1:].strip()).group(2)}: scalar") \
+            if why.endswith("as --let reads it") else None
+        if one is not None and of is not None:
+            rates[one.key] = of.key
+            continue
+        keys = {one.key} if one is not None else (
+            (_keys(name) or set()) | (_keys(text[eq + 1:]) or set() if cut == eq else set()))
+        for k in keys:
+            blocked.setdefault(k, t)
+    return blocked, rates
+
+
 def omitted_lines(reading: Reading, labels) -> list[dict]:
     """The reading's lines not given to the relations of ``labels`` (:func:`reading_lets`),
     each once with its reason and the labels, in the file's order."""
@@ -241,8 +271,7 @@ def _definitions(relations: list[Relation], declared,
         text = f"{r.lhs} = {r.rhs}"
         x = _one_let(text)
         earlier = {k for _, k, _, _ in defs}
-        cls = printed_class(r.label)
-        if cls == "relation" and r.op not in DEFINING:  # the reading: a relation, a claim
+        if printed_class(r.label) == "relation":  # the reading: a relation, a claim
             plans.append(Plan(r, "decide"))
             continue
         if r.op in DEFINING:
@@ -306,6 +335,14 @@ def plan(relations: list[Relation], reading: Reading | None = None,
             declared_cache[label] = kinds
         return declared_cache[label]
 
+    held_cache: dict = {}
+
+    def held(label):
+        if label not in held_cache:
+                held_cache[label] = withheld(reading, label) if reading is not None and label \
+                else ({}, {})
+        return held_cache[label]
+
     def printed_class(label):
         got = reading.ids.get(label) if reading is not None and label else None
         return got.cls if got is not None else None
@@ -327,6 +364,10 @@ def plan(relations: list[Relation], reading: Reading | None = None,
         for k in pinned.get(r.label, ()):  # the reading's line for this label by its id wins
             if k in base:
                 models[k] = base[k]
+        blocked, rates = held(r.label)
+        for k in rates:  # \dot X of X(t), as the reading says: no definition of the page
+            if k in active and k not in base:
+                del models[k]
         target = p.let.split("=", 1)[1] if p.action == "definition" else r.latex
         used = _keys(target)
         if used is None:
@@ -344,6 +385,15 @@ def plan(relations: list[Relation], reading: Reading | None = None,
                                               f"later, at {rel.place} (display {rel.display})")
             continue
         need = _closure(used, models)
+        if any(k in rates for k in need):  # \dot X: read from X(t)'s declaration
+            need = _closure(need | {rates[k] for k in need if k in rates}, models)
+        cut = sorted(k for k in blocked if k in need)
+        if cut:
+            k = cut[0]
+            plans[n] = Plan(r, "skip", reason=f"uses {k}, whose line of the reading for "
+                                              f"({r.label}), '{blocked[k]}', is not given "
+                                              f"(listed with why)")
+            continue
         clash = sorted(k for k in clashes.get(r.label, {})
                        if k in need and (k not in active or k in pinned.get(r.label, ())))
         if clash:
