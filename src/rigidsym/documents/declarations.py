@@ -28,8 +28,8 @@ from rigidsym.documents.conventions import CHOICES
 from rigidsym.documents.relations import DEFINING, NOT_CHECKED, Relation
 from rigidsym.reading import Reading, lets_for
 
-__all__ = ["CONVENTION_LETS", "Plan", "omitted_lines", "plan", "reading_lets",
-           "withheld"]
+__all__ = ["CONVENTION_LETS", "Plan", "omitted_lines", "plan", "rate_line",
+           "reading_lets", "withheld"]
 
 #: a reading file's conventions that ``check_latex`` takes, as the ``--let`` that says each
 CONVENTION_LETS = {(key, value): let for key, values in CHOICES.items()
@@ -51,6 +51,10 @@ class Plan:
         reason: why it is skipped, naming the text.
         defines: the glyph key it defines (``definition``).
         let: the declaration it becomes (``definition``).
+        checked: the LaTeX handed to the check when it is not the relation's own: ``LHS =
+            RHS`` for one written with a defining symbol (``\\equiv``) whose left side the
+            reading declares for a label it prints as a relation (a claim about that
+            symbol); ``""`` otherwise.
     """
 
     relation: Relation
@@ -59,6 +63,7 @@ class Plan:
     reason: str = ""
     defines: str = ""
     let: str = ""
+    checked: str = ""
 
 
 @lru_cache(maxsize=4096)
@@ -104,8 +109,9 @@ def reading_lets(reading: Reading, label: str | None) -> tuple[list[str], list[t
     - ``atoms_of`` (the glyph's values are another glyph's or a model name's): the model
       ``NAME = SOURCE`` (``d_0 = d0_axial``, ``[\\mathbf{o}]_{\\mathcal{F}} = \\mathbf{o}``),
       which says the same; a model array's entries (``s38_P_*``) are not given;
-    - ``NAME: rate of X`` with NAME ``\\dot{X}`` (``second rate``: ``\\ddot{X}``): not given,
-      ``--let`` reads ``\\dot{X}`` as the rate of ``X(t)`` already; another NAME is not given;
+    - ``NAME: rate of X`` with NAME ``\\dot{X}`` (``second rate``: ``\\ddot{X}``): given as
+      written, the rate ``--let`` reads for ``X(t)`` (:func:`rate_line`; the check is handed
+      ``X(t)``'s line for it, not the rate's); a rate of another NAME is not given;
     - ``relation`` (the line holds for one relation of the id, a member of a family or a unit
       alternative): not given, the document's relations do not name the member;
     - ``particles`` (the integral over a body as a sum over point masses): not given;
@@ -137,11 +143,12 @@ def reading_lets(reading: Reading, label: str | None) -> tuple[list[str], list[t
             continue
         rate = _RATE.fullmatch(kind)
         if rate:
-            dot = "\\ddot" if rate.group(1) else "\\dot"
-            same = "".join(name.split()) == "".join(f"{dot}{{{rate.group(2)}}}".split())
-            omitted.append((t, f"{name} is the rate of {rate.group(2)}(t) as --let reads it"
-                            if same else f"a rate named {name}, not {dot}{{{rate.group(2)}}}"
-                                         f", is not said by --let"))
+            if rate_line(t) is not None:  # \dot{X} of X(t): the rate --let reads
+                given.append(t)
+            else:
+                dot = "\\ddot" if rate.group(1) else "\\dot"
+                omitted.append((t, f"a rate named {name}, not {dot}{{{rate.group(2)}}}, is "
+                                   f"not said by --let"))
             continue
         if x.atoms_of:
             if x.atoms_of.endswith("_*"):
@@ -156,33 +163,43 @@ def reading_lets(reading: Reading, label: str | None) -> tuple[list[str], list[t
     return given, omitted
 
 
-def withheld(reading: Reading, label: str | None) -> tuple[dict[str, str], dict[str, str]]:
-    """What the lines :func:`reading_lets` does not give ``label`` leave: the glyphs no
-    relation under it may be decided with (``{key: the line}``: the line's symbol, or every
-    glyph of a line whose NAME is no symbol, ``\\|\\mathbf{f}\\| = W``, which constrains
-    them), and the rates ``--let`` reads as the line says (``{key of \\dot{X}: key of X}``,
-    X a function of time), which no definition of the page replaces."""
+def rate_line(text: str) -> tuple[str, str] | None:
+    """``(key of \\dot{X}, key of X)`` for a reading's ``\\dot{X}: rate of X`` (``\\ddot{X}:
+    second rate of X``): the rate ``--let`` reads for a function of time ``X(t)``, which
+    ``check_latex`` lists among the symbols it was not told of; ``None`` for another line."""
+    colon, eq = _top(text, ":"), _top(text, "=")
+    if colon < 0 or 0 <= eq < colon:
+        return None
+    name, rate = text[:colon].strip(), _RATE.fullmatch(text[colon + 1:].strip())
+    if rate is None:
+        return None
+    dot = "\\ddot" if rate.group(1) else "\\dot"
+    if "".join(name.split()) != "".join(f"{dot}{{{rate.group(2)}}}".split()):
+        return None
+    one, of = _one_let(f"{name}: scalar"), _one_let(f"{rate.group(2)}: scalar")
+    return (one.key, of.key) if one is not None and of is not None else None
+
+
+def withheld(reading: Reading, label: str | None) -> dict[str, str]:
+    """The glyphs no relation under ``label`` may be decided with, the reading's lines
+    :func:`reading_lets` does not give it being left out: ``{key: the line}``, the line's
+    symbol, or every glyph of a line whose NAME is no symbol (``\\|\\mathbf{f}\\| = W``,
+    which constrains them)."""
     from rigidsym.latex.lets import model_names, respell_model_names
 
     names = model_names(lets_for(reading, scope=label, id=label))
     blocked: dict[str, str] = {}
-    rates: dict[str, str] = {}
-    for t, why in reading_lets(reading, label)[1]:
+    for t, _ in reading_lets(reading, label)[1]:
         text = respell_model_names(t, names)
         colon, eq = _top(text, ":"), _top(text, "=")
         cut = colon if colon >= 0 and (eq < 0 or colon < eq) else eq
         name = text[:cut].strip() if cut >= 0 else text
         one = _one_let(f"{name}: scalar")
-        of = _one_let(f"{_RATE.fullmatch(text[cut + 1:].strip()).group(2)}: scalar") \
-            if why.endswith("as --let reads it") else None
-        if one is not None and of is not None:
-            rates[one.key] = of.key
-            continue
         keys = {one.key} if one is not None else (
             (_keys(name) or set()) | (_keys(text[eq + 1:]) or set() if cut == eq else set()))
         for k in keys:
             blocked.setdefault(k, t)
-    return blocked, rates
+    return blocked
 
 
 def omitted_lines(reading: Reading, labels) -> list[dict]:
@@ -272,7 +289,8 @@ def _definitions(relations: list[Relation], declared,
         x = _one_let(text)
         earlier = {k for _, k, _, _ in defs}
         if printed_class(r.label) == "relation":  # the reading: a relation, a claim
-            plans.append(Plan(r, "decide"))
+            plans.append(Plan(r, "decide", checked=f"{r.lhs} = {r.rhs}" if r.op in DEFINING
+                              and x is not None and x.key in base else ""))
             continue
         if r.op in DEFINING:
             if x is None:
@@ -317,6 +335,12 @@ def plan(relations: list[Relation], reading: Reading | None = None,
             names = model_names(texts)
             kinds = {}
             for t in texts:
+                rl = rate_line(t)
+                if rl is not None:  # \dot X of X(t): needs X(t)'s line
+                    kinds[rl[0]] = (t, {rl[1]})
+                    if t in by_id:
+                        pinned.setdefault(label, set()).add(rl[0])
+                    continue
                 x = _one_let(respell_model_names(t, names))
                 if x is None and ":" in t and t.split(":")[0].strip() in (
                         "\\otimes", "\\odot", "tangent order"):
@@ -340,7 +364,7 @@ def plan(relations: list[Relation], reading: Reading | None = None,
     def held(label):
         if label not in held_cache:
                 held_cache[label] = withheld(reading, label) if reading is not None and label \
-                else ({}, {})
+                else {}
         return held_cache[label]
 
     def printed_class(label):
@@ -364,10 +388,7 @@ def plan(relations: list[Relation], reading: Reading | None = None,
         for k in pinned.get(r.label, ()):  # the reading's line for this label by its id wins
             if k in base:
                 models[k] = base[k]
-        blocked, rates = held(r.label)
-        for k in rates:  # \dot X of X(t), as the reading says: no definition of the page
-            if k in active and k not in base:
-                del models[k]
+        blocked = held(r.label)
         target = p.let.split("=", 1)[1] if p.action == "definition" else r.latex
         used = _keys(target)
         if used is None:
@@ -385,8 +406,6 @@ def plan(relations: list[Relation], reading: Reading | None = None,
                                               f"later, at {rel.place} (display {rel.display})")
             continue
         need = _closure(used, models)
-        if any(k in rates for k in need):  # \dot X: read from X(t)'s declaration
-            need = _closure(need | {rates[k] for k in need if k in rates}, models)
         cut = sorted(k for k in blocked if k in need)
         if cut:
             k = cut[0]
