@@ -126,9 +126,8 @@ def _statement(p, rec: dict, lets: list[str]):
     """The statement of a relation's plan ``p`` read from its LaTeX with ``lets`` (a
     definition: ``NAME = LATEX`` under its own model; a false one with its corrected form,
     read from the record's ``corrected_latex``)."""
-    from rigidsym.latex.statement import declare_latex
-
     from rigidsym.documents.declarations import rate_line
+    from rigidsym.latex.statement import declare_latex
 
     r = p.relation
     lets = [t for t in lets if rate_line(t) is None]  # \dot X of X(t): read from X(t)
