@@ -55,7 +55,7 @@ _GROUPS = (
     (r"are read as one glyph", "two reading lines read as one glyph"),
     (r"^--latex: the numeric cross-check does not evaluate", "the numeric cross-check does not "
                                                              "evaluate a construct"),
-    (r"^--let", "a declaration check_latex refuses"),
+    (r"^--(let|latex)\b", "a declaration check_latex refuses"),
     (r"^a construct not read", "LaTeX the reader does not read"),
     (r"^an elision", "an elision"),
     (r"^a side is empty", "a side is empty (a display split by prose)"),
