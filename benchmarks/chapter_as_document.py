@@ -118,10 +118,10 @@ def compare(records: list[dict], verify: dict[str, str]) -> dict:
         row = {"id": eq_id, "verify": v, "document": got,
                "lines": [r["line"] for r in recs]}
         if bad:
-            row["relations"] = [{"line": r["line"], "latex": r["latex"],
-                                 "verdict": r["verdict"], "counterexample":
-                                 r.get("counterexample"), "reason": r.get("reason")}
-                                for r in recs]
+            row["relations"] = [{"line": r["line"], "verdict": r["verdict"],
+                                 "counterexample": r.get("counterexample"),
+                                 "reason": r.get("reason")} for r in recs]
+            row["latex"] = [r["latex"] for r in recs]  # printed, never recorded (the page's)
             disagree.append(row)
         elif ok:
             agree.append(eq_id)
@@ -168,7 +168,8 @@ def main(argv=None) -> int:
         "ids decided": len(verify) - len(cmp["undecided"]),
         "agreeing": len(cmp["agree"]), "disagreeing": len(cmp["disagree"]),
         "partly decided": len(cmp["partly"]), "ids not decided": len(cmp["undecided"]),
-        "disagreements": cmp["disagree"], "agree": cmp["agree"], "partly": cmp["partly"],
+        "disagreements": [{k: v for k, v in row.items() if k != "latex"}
+                          for row in cmp["disagree"]], "agree": cmp["agree"], "partly": cmp["partly"],
         "undecided ids": cmp["undecided"], "labels not ids": cmp["labels_not_ids"],
         "reading lines not given": len(res.omitted),
         "omitted": res.omitted,
@@ -184,6 +185,8 @@ def main(argv=None) -> int:
           f"{out['partly decided']} partly decided")
     for row in cmp["disagree"]:
         print(f"  DISAGREE ({row['id']}): verify {row['verify']}, document {row['document']}")
+        for rel, latex in zip(row["relations"], row["latex"], strict=True):
+            print(f"    line {rel['line']}: {latex}  {rel['verdict']}")
     print(f"reading lines not given to a relation: {len(res.omitted)}")
     print(f"{wall:.0f} s wall, {cpu:.0f} s CPU, {res.stored} from the store; "
           f"{host['cpu']}, {host['cores']} cores, load {host['load']}; wrote {args.out}")
