@@ -169,7 +169,8 @@ def main(argv=None) -> int:
         "agreeing": len(cmp["agree"]), "disagreeing": len(cmp["disagree"]),
         "partly decided": len(cmp["partly"]), "ids not decided": len(cmp["undecided"]),
         "disagreements": [{k: v for k, v in row.items() if k != "latex"}
-                          for row in cmp["disagree"]], "agree": cmp["agree"], "partly": cmp["partly"],
+                          for row in cmp["disagree"]],
+        "agree": cmp["agree"], "partly": cmp["partly"],
         "undecided ids": cmp["undecided"], "labels not ids": cmp["labels_not_ids"],
         "reading lines not given": len(res.omitted),
         "omitted": res.omitted,
