@@ -77,7 +77,7 @@ def test_import_graph_is_standard_library_only(quick_certs):
 
 
 def test_checker_size():
-    """A referee reads it in an afternoon: at most 1632 lines of mathematics and the
+    r"""A referee reads it in an afternoon: at most 1632 lines of mathematics and the
     command (its accounting of what is read; 1550 before the field K(s) of one square root,
     an unsquared norm's, 3.52-3.55; 1610 before the command read a theorem's words through
     the table of ``words`` and checked the certificates over processes, ``--jobs``), 900 of

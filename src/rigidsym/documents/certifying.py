@@ -126,13 +126,15 @@ def _statement(p, rec: dict, lets: list[str]):
     """The statement of a relation's plan ``p`` read from its LaTeX with ``lets`` (a
     definition: ``NAME = LATEX`` under its own model; a false one with its corrected form,
     read from the record's ``corrected_latex``)."""
+    from rigidsym.documents.declarations import rate_line
     from rigidsym.latex.statement import declare_latex
 
     r = p.relation
+    lets = [t for t in lets if rate_line(t) is None]  # \dot X of X(t): read from X(t)
     if p.action == "definition":
         eq, _ = declare_latex(f"{r.lhs} = {r.rhs}", [*lets, p.let])
         return eq.build()
-    eq, _ = declare_latex(r.latex, lets)
+    eq, _ = declare_latex(p.checked or r.latex, lets)
     st = eq.build()
     if rec["verdict"] == "does-not-hold" and rec.get("corrected_latex"):
         fixed, _ = declare_latex(_unboxed(rec["corrected_latex"]), lets)

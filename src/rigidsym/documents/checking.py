@@ -17,7 +17,7 @@ from pathlib import Path
 
 from rigidsym.core.errors import BadInput
 from rigidsym.documents import conventions, store
-from rigidsym.documents.declarations import CONVENTION_LETS, Plan, plan
+from rigidsym.documents.declarations import CONVENTION_LETS, Plan, omitted_lines, plan, rate_line
 from rigidsym.documents.document import Document, read_document
 from rigidsym.reading import Reading, load_reading, sidecar
 
@@ -40,6 +40,8 @@ class DocumentResult:
         conventions: the reading's conventions, each with whether ``check_latex`` uses it.
         stored: how many records came from the verdict store.
         seconds: the wall time of the run.
+        omitted: the reading's lines no relation is given, each once: ``{"let",
+            "reason", "labels"}`` (:func:`rigidsym.documents.declarations.reading_lets`).
     """
 
     document: Document
@@ -48,6 +50,7 @@ class DocumentResult:
     conventions: list[str] = field(default_factory=list)
     stored: int = 0
     seconds: float = 0.0
+    omitted: list[dict] = field(default_factory=list)
 
     def counts(self) -> dict[str, int]:
         """How many relations have each verdict."""
@@ -89,7 +92,11 @@ def decide(p: Plan, options: dict) -> dict:
         return rec | {"verdict": "definition", "method": "document definition",
                       "reason": f"defines {p.defines} for the relations after it"}
     t = time.monotonic()
-    out = rec | _decided(r.latex, p.lets, options)
+    out = rec | _decided(p.checked or r.latex, p.lets, options)
+    if p.checked:
+        out["reason"] = out["reason"] or (
+            f"the reading prints ({r.label}) as a relation and declares {r.lhs}: checked "
+            f"as {p.checked}")
     return out | {"seconds": round(time.monotonic() - t, 3)}
 
 
@@ -122,6 +129,12 @@ def _check_once(latex: str, lets: list[str], options: dict) -> tuple[dict, list[
     from rigidsym.api import check_latex_run
     from rigidsym.latex import LatexError
 
+    said = {}  # a reading's \dot{X}: rate of X: the rate check_latex reads for X(t)
+    for t in lets:
+        rl = rate_line(t)
+        if rl is not None:
+            said[rl[0]] = t
+    lets = [t for t in lets if t not in said.values()]
     try:
         r, reading = check_latex_run(latex, lets, None, (), options["repairs"], None,
                                      options["notation"], options["repair_seconds"],
@@ -138,7 +151,7 @@ def _check_once(latex: str, lets: list[str], options: dict) -> tuple[dict, list[
                 }, [], None
     out = {"verdict": r.verdict, "method": r.method,
            "read_as": reading.text if reading is not None else None}
-    free = list(reading.free) if reading is not None else []
+    free = [f for f in (reading.free if reading is not None else []) if f not in said]
     notes = list(reading.notes) if reading is not None else []
     if free:
         return out | {"verdict": "not-checked", "method": "undeclared symbols", "free": free,
@@ -199,6 +212,8 @@ def check_document(path: str | Path, *, reading: str | Path | None = None,
                 f" (as --let '{CONVENTION_LETS[(key, value)]}')" if used else
                 " (said back; no relation's check depends on it)"))
     plans = plan(list(doc.relations), rd, list(lets))
+    if rd is not None:
+        result.omitted = omitted_lines(rd, [r.label for r in doc.relations])
     by_display: dict[int, list[Plan]] = {}
     for p in plans:
         by_display.setdefault(p.relation.display, []).append(p)

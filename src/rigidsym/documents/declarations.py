@@ -19,6 +19,7 @@ declaration of a symbol that does not occur.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -27,7 +28,8 @@ from rigidsym.documents.conventions import CHOICES
 from rigidsym.documents.relations import DEFINING, NOT_CHECKED, Relation
 from rigidsym.reading import Reading, lets_for
 
-__all__ = ["CONVENTION_LETS", "Plan", "plan"]
+__all__ = ["CONVENTION_LETS", "Plan", "omitted_lines", "plan", "rate_line",
+           "reading_lets", "withheld"]
 
 #: a reading file's conventions that ``check_latex`` takes, as the ``--let`` that says each
 CONVENTION_LETS = {(key, value): let for key, values in CHOICES.items()
@@ -49,6 +51,10 @@ class Plan:
         reason: why it is skipped, naming the text.
         defines: the glyph key it defines (``definition``).
         let: the declaration it becomes (``definition``).
+        checked: the LaTeX handed to the check when it is not the relation's own: ``LHS =
+            RHS`` for one written with a defining symbol (``\\equiv``) whose left side the
+            reading declares for a label it prints as a relation (a claim about that
+            symbol); ``""`` otherwise.
     """
 
     relation: Relation
@@ -57,6 +63,7 @@ class Plan:
     reason: str = ""
     defines: str = ""
     let: str = ""
+    checked: str = ""
 
 
 @lru_cache(maxsize=4096)
@@ -90,14 +97,158 @@ def _one_let(text: str):
         return None
 
 
+_RATE = re.compile(r"(second )?rate of (.+)")
+
+
+def reading_lets(reading: Reading, label: str | None) -> tuple[list[str], list[tuple[str, str]]]:
+    """The reading's ``[[let]]`` lines for ``label`` in ``--let``'s words, and those a
+    document's relation is not given, each with why.
+
+    A line is given as written, except:
+
+    - ``atoms_of`` (the glyph's values are another glyph's or a model name's): the model
+      ``NAME = SOURCE`` (``d_0 = d0_axial``, ``[\\mathbf{o}]_{\\mathcal{F}} = \\mathbf{o}``),
+      which says the same; a model array's entries (``s38_P_*``) are not given;
+    - ``NAME: rate of X`` with NAME ``\\dot{X}`` (``second rate``: ``\\ddot{X}``): given as
+      written, the rate ``--let`` reads for ``X(t)`` (:func:`rate_line`; the check is handed
+      ``X(t)``'s line for it, not the rate's); a rate of another NAME is not given;
+    - ``relation`` (the line holds for one relation of the id, a member of a family or a unit
+      alternative): not given, the document's relations do not name the member;
+    - ``particles`` (the integral over a body as a sum over point masses): not given;
+    - a line ``--let`` cannot read (a NAME that is no symbol, ``\\|\\mathbf{v}\\|``): not
+      given, with the reader's words.
+
+    Returns:
+        ``(lets, omitted)``: the lines given, and ``(line, reason)`` for each not given.
+    """
+    from rigidsym.latex.lets import model_names, respell_model_names
+
+    texts = lets_for(reading, scope=label, id=label)
+    names = model_names(texts)
+    by_text = {x.let: x for x in reading.lets}
+    given: list[str] = []
+    omitted: list[tuple[str, str]] = []
+    for t in texts:
+        x = by_text[t]
+        colon, eq = _top(t, ":"), _top(t, "=")
+        kind = t[colon + 1:].strip() if colon >= 0 and (eq < 0 or colon < eq) else ""
+        name = t[:colon].strip() if kind else ""
+        if x.relation:
+            omitted.append((t, f"it holds for one relation of ({label}), '{x.relation}', "
+                               f"which the document's relations do not name"))
+            continue
+        if x.particles:
+            omitted.append((t, "a body of point masses (particles): the integral over it as "
+                               "the sum over them is not said by --let"))
+            continue
+        rate = _RATE.fullmatch(kind)
+        if rate:
+            if rate_line(t) is not None:  # \dot{X} of X(t): the rate --let reads
+                given.append(t)
+            else:
+                dot = "\\ddot" if rate.group(1) else "\\dot"
+                omitted.append((t, f"a rate named {name}, not {dot}{{{rate.group(2)}}}, is "
+                                   f"not said by --let"))
+            continue
+        if x.atoms_of:
+            if x.atoms_of.endswith("_*"):
+                omitted.append((t, f"its values are the entries of the model's array "
+                                   f"{x.atoms_of} (atoms_of), not said by --let"))
+                continue
+            t = _atoms_model(x)
+        if _one_let(respell_model_names(t, names)) is None:
+            omitted.append((t, _why_not(respell_model_names(t, names))))
+            continue
+        given.append(t)
+    return given, omitted
+
+
+def rate_line(text: str) -> tuple[str, str] | None:
+    """``(key of \\dot{X}, key of X)`` for a reading's ``\\dot{X}: rate of X`` (``\\ddot{X}:
+    second rate of X``): the rate ``--let`` reads for a function of time ``X(t)``, which
+    ``check_latex`` lists among the symbols it was not told of; ``None`` for another line."""
+    colon, eq = _top(text, ":"), _top(text, "=")
+    if colon < 0 or 0 <= eq < colon:
+        return None
+    name, rate = text[:colon].strip(), _RATE.fullmatch(text[colon + 1:].strip())
+    if rate is None:
+        return None
+    dot = "\\ddot" if rate.group(1) else "\\dot"
+    if "".join(name.split()) != "".join(f"{dot}{{{rate.group(2)}}}".split()):
+        return None
+    one, of = _one_let(f"{name}: scalar"), _one_let(f"{rate.group(2)}: scalar")
+    return (one.key, of.key) if one is not None and of is not None else None
+
+
+def withheld(reading: Reading, label: str | None) -> dict[str, str]:
+    """The glyphs no relation under ``label`` may be decided with, the reading's lines
+    :func:`reading_lets` does not give it being left out: ``{key: the line}``, the line's
+    symbol, or every glyph of a line whose NAME is no symbol (``\\|\\mathbf{f}\\| = W``,
+    which constrains them)."""
+    from rigidsym.latex.lets import model_names, respell_model_names
+
+    names = model_names(lets_for(reading, scope=label, id=label))
+    blocked: dict[str, str] = {}
+    for t, _ in reading_lets(reading, label)[1]:
+        text = respell_model_names(t, names)
+        colon, eq = _top(text, ":"), _top(text, "=")
+        cut = colon if colon >= 0 and (eq < 0 or colon < eq) else eq
+        name = text[:cut].strip() if cut >= 0 else text
+        one = _one_let(f"{name}: scalar")
+        keys = {one.key} if one is not None else (
+            (_keys(name) or set()) | (_keys(text[eq + 1:]) or set() if cut == eq else set()))
+        for k in keys:
+            blocked.setdefault(k, t)
+    return blocked
+
+
+def omitted_lines(reading: Reading, labels) -> list[dict]:
+    """The reading's lines not given to the relations of ``labels`` (:func:`reading_lets`),
+    each once with its reason and the labels, in the file's order."""
+    out: dict[tuple[str, str], list[str]] = {}
+    for label in dict.fromkeys(x for x in labels if x):
+        for t, why in reading_lets(reading, label)[1]:
+            out.setdefault((t, why), []).append(label)
+    return [{"let": t, "reason": why, "labels": ls} for (t, why), ls in out.items()]
+
+
+def _atoms_model(x) -> str:
+    """The model a kind line with ``atoms_of`` is given as: ``NAME = SOURCE``."""
+    if not x.atoms_of:
+        return x.let
+    return f"{x.let[:_top(x.let, ':')].strip()} = {x.atoms_of}"
+
+
+def _top(text: str, ch: str) -> int:
+    depth = 0
+    for i, c in enumerate(text):
+        depth += {"{": 1, "}": -1}.get(c, 0)
+        if c == ch and depth == 0:
+            return i
+    return -1
+
+
+def _why_not(text: str) -> str:
+    """Why ``--let`` does not read ``text`` (its own words)."""
+    from rigidsym.latex import LatexError
+    from rigidsym.latex.lets import read_lets
+
+    try:
+        read_lets([text])
+    except (BadInput, LatexError, ValueError) as exc:
+        return "--let does not read it: " + str(exc).splitlines()[0]
+    return "--let does not read it"
+
+
 def base_lets(reading: Reading | None, lets: list[str], label: str | None) -> list[str]:
-    """The reading's declarations for ``label`` (its conventions first), then ``lets``."""
+    """The reading's declarations for ``label`` (its conventions first; the lines a
+    document's relation is given, :func:`reading_lets`), then ``lets``."""
     out: list[str] = []
     if reading is not None:
         for key, value in reading.conventions.items():
             if (key, value) in CONVENTION_LETS:
                 out.append(CONVENTION_LETS[(key, value)])
-        out += lets_for(reading, scope=label, id=label)
+        out += reading_lets(reading, label)[0]
     return out + list(lets)
 
 
@@ -113,10 +264,12 @@ def _closure(used: set[str], models: dict[str, tuple[str, set[str]]]) -> set[str
     return seen
 
 
-def _definitions(relations: list[Relation], declared) -> tuple[list[Plan], list]:
+def _definitions(relations: list[Relation], declared,
+                 printed_class=lambda label: None) -> tuple[list[Plan], list]:
     """The first pass of :func:`plan`: each relation skipped (an elision, a relation not
     checked, an empty side), a definition (``(index, key, let text, relation)`` in ``defs``)
-    or a claim to decide, in document order."""
+    or a claim to decide, in document order. A relation whose label the reading prints as a
+    relation (``printed_class``, its ``[classes]``) is a claim, never a definition."""
     plans: list[Plan] = []
     defs: list[tuple[int, str, str, Relation]] = []  # (index, key, let text, relation)
     for i, r in enumerate(relations):
@@ -135,6 +288,10 @@ def _definitions(relations: list[Relation], declared) -> tuple[list[Plan], list]
         text = f"{r.lhs} = {r.rhs}"
         x = _one_let(text)
         earlier = {k for _, k, _, _ in defs}
+        if printed_class(r.label) == "relation":  # the reading: a relation, a claim
+            plans.append(Plan(r, "decide", checked=f"{r.lhs} = {r.rhs}" if r.op in DEFINING
+                              and x is not None and x.key in base else ""))
+            continue
         if r.op in DEFINING:
             if x is None:
                 if r.op == "\\equiv":  # identically equal: an identity
@@ -164,16 +321,27 @@ def plan(relations: list[Relation], reading: Reading | None = None,
     Raises:
         BadInput: a declaration of the reading or of ``lets`` that cannot be read.
     """
-    from rigidsym.latex.lets import split_lets
+    from rigidsym.latex.lets import model_names, respell_model_names, split_lets
 
     declared_cache: dict = {}
+    clashes: dict = {}  # label -> glyph key -> the lines that declare it
+    pinned: dict = {}  # label -> the glyph keys the reading gives that label by its id
+    by_id = {t for x in reading.lets if x.ids for t in (x.let, _atoms_model(x))} \
+        if reading is not None else set()
 
     def declared(label):
         if label not in declared_cache:
             texts = split_lets(base_lets(reading, list(lets), label))
+            names = model_names(texts)
             kinds = {}
             for t in texts:
-                x = _one_let(t)
+                rl = rate_line(t)
+                if rl is not None:  # \dot X of X(t): needs X(t)'s line
+                    kinds[rl[0]] = (t, {rl[1]})
+                    if t in by_id:
+                        pinned.setdefault(label, set()).add(rl[0])
+                    continue
+                x = _one_let(respell_model_names(t, names))
                 if x is None and ":" in t and t.split(":")[0].strip() in (
                         "\\otimes", "\\odot", "tangent order"):
                     kinds[t.split(":")[0].strip()] = (t, set())
@@ -181,11 +349,29 @@ def plan(relations: list[Relation], reading: Reading | None = None,
                 if x is None:
                     raise BadInput(f"the declaration '{t}' cannot be read (reading file or "
                                    f"--let)")
+                if x.key in kinds:  # two lines the reader reads as one glyph: neither
+                    clashes.setdefault(label, {}).setdefault(
+                        x.key, [kinds[x.key][0]]).append(t)
+                    continue
                 kinds[x.key] = (t, _keys(x.latex) or set() if x.latex else set())
+                if t in by_id:
+                    pinned.setdefault(label, set()).add(x.key)
             declared_cache[label] = kinds
         return declared_cache[label]
 
-    plans, defs = _definitions(relations, declared)
+    held_cache: dict = {}
+
+    def held(label):
+        if label not in held_cache:
+                held_cache[label] = withheld(reading, label) if reading is not None and label \
+                else {}
+        return held_cache[label]
+
+    def printed_class(label):
+        got = reading.ids.get(label) if reading is not None and label else None
+        return got.cls if got is not None else None
+
+    plans, defs = _definitions(relations, declared, printed_class)
     # second pass: each relation's declarations, and definitions used before they stand
     for n, p in enumerate(plans):
         if p.action == "skip":
@@ -199,6 +385,10 @@ def plan(relations: list[Relation], reading: Reading | None = None,
                 break
             active[key] = (text, _keys(text.split("=", 1)[1]) or set())
         models = {**base, **active}
+        for k in pinned.get(r.label, ()):  # the reading's line for this label by its id wins
+            if k in base:
+                models[k] = base[k]
+        blocked = held(r.label)
         target = p.let.split("=", 1)[1] if p.action == "definition" else r.latex
         used = _keys(target)
         if used is None:
@@ -216,6 +406,22 @@ def plan(relations: list[Relation], reading: Reading | None = None,
                                               f"later, at {rel.place} (display {rel.display})")
             continue
         need = _closure(used, models)
+        cut = sorted(k for k in blocked if k in need)
+        if cut:
+            k = cut[0]
+            plans[n] = Plan(r, "skip", reason=f"uses {k}, whose line of the reading for "
+                                              f"({r.label}), '{blocked[k]}', is not given "
+                                              f"(listed with why)")
+            continue
+        clash = sorted(k for k in clashes.get(r.label, {})
+                       if k in need and (k not in active or k in pinned.get(r.label, ())))
+        if clash:
+            k = clash[0]
+            lines = " and ".join(f"'{t}'" for t in clashes[r.label][k])
+            plans[n] = Plan(r, "skip", reason=f"the declarations {lines} are read as one "
+                                              f"glyph {k} for ({r.label}): which one it uses "
+                                              f"is not said")
+            continue
         keep = [t for k, (t, _) in models.items()
                 if k in need or k in ("\\otimes", "\\odot", "tangent order")]
         if p.action == "decide":

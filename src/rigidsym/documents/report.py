@@ -1,8 +1,9 @@
 """A document's errata as text, JSON and Markdown.
 
 The JSON (``rigidsym check FILE --json``) is one object: ``{"format": 1, "document",
-"reading", "conventions", "counts", "seconds", "stored", "relations": [...]}``, one record
-per relation with the keys of :data:`FIELDS` (``docs/check-documents.md``).
+"reading", "conventions", "counts", "seconds", "stored", "omitted", "relations": [...]}``,
+one record per relation with the keys of :data:`FIELDS` (``docs/check-documents.md``);
+``omitted`` lists the reading's lines no relation is given, each with why.
 """
 
 from __future__ import annotations
@@ -52,6 +53,8 @@ def as_text(res: DocumentResult) -> str:
     if res.reading is not None:
         lines.append(f"reading: {res.reading.path}")
     lines += [f"convention: {c}" for c in res.conventions]
+    lines += [f"reading line not given: {x['let']}  ({x['reason']}; for "
+              f"{', '.join(x['labels'])})" for x in res.omitted]
     shown = None
     for rec in res.records:
         if rec["display"] != shown:
@@ -73,7 +76,7 @@ def as_json(res: DocumentResult) -> str:
         "format": 1, "document": str(res.document.path),
         "reading": str(res.reading.path) if res.reading is not None else None,
         "conventions": res.conventions, "counts": res.counts(),
-        "seconds": round(res.seconds, 3), "stored": res.stored,
+        "seconds": round(res.seconds, 3), "stored": res.stored, "omitted": res.omitted,
         "relations": [{k: rec.get(k) for k in FIELDS} for rec in res.records]},
         indent=1, ensure_ascii=False)
 
@@ -87,6 +90,8 @@ def as_markdown(res: DocumentResult) -> str:
     under a relation that does not hold."""
     out = [f"# Errata of `{res.document.path}`", "", summary(res), ""]
     out += [f"- convention: {c}" for c in res.conventions]
+    out += [f"- reading line not given: `{x['let']}` ({x['reason']}; for "
+            f"{', '.join(x['labels'])})" for x in res.omitted]
     shown = None
     for rec in res.records:
         if rec["display"] != shown:

@@ -28,7 +28,8 @@ from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.book_notations import SETS
 
-__all__ = ["KIND_WORDS", "Let", "kind_of", "let_items", "split_lets", "read_lets", "rated_lets"]
+__all__ = ["KIND_WORDS", "Let", "kind_of", "let_items", "model_names", "model_spelling",
+           "rated_lets", "read_lets", "respell_model_names", "split_lets"]
 
 #: the kinds a ``--let NAME: KIND`` takes, in words (``n``, ``m``: sizes, e.g. ``6-vector``,
 #: ``4x4 matrix``)
@@ -183,7 +184,9 @@ def read_lets(let) -> list[Let]:
         BadInput: a declaration that is neither form, a NAME that is not one glyph, an
             unknown KIND (the kinds listed), a name declared twice.
     """
-    out = [_one_let(d) for d in let_items(let)]
+    items = let_items(let)
+    names = model_names(items)
+    out = [_one_let(respell_model_names(d, names)) for d in items]
     seen: dict[str, Let] = {}
     for x in out:
         if x.key in seen:
@@ -191,6 +194,56 @@ def read_lets(let) -> list[Let]:
                            f"'{x.text}')")
         seen[x.key] = x
     return out
+
+
+_BOLD_NAME = re.compile(r"\\mathbf\s*\{\s*([A-Za-z][A-Za-z0-9_]*)\s*\}")
+_BARE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*")
+
+
+def model_spelling(name: str) -> str:
+    """The glyph a name of the model is read as: ``w_axis`` -> ``\\mathrm{w\\_axis}`` (as
+    LaTeX prints the name, upright, one symbol)."""
+    return "\\mathrm{" + name.replace("_", "\\_") + "}"
+
+
+def model_names(texts) -> dict[str, str]:
+    """The names of the model that the declarations ``texts`` declare by a kind: a
+    ``NAME: KIND`` whose NAME is a name of the model, not a LaTeX glyph, a bare identifier
+    that is not one glyph (``ell``, ``d0_axial``, ``sec342_sigma``; ``m_1`` is the glyph
+    m₁) or a bold one (``\\mathbf{w_axis}``, ``\\mathbf{rw}``).
+
+    Returns:
+        ``{NAME as written: the glyph it is read as}`` (:func:`model_spelling`); raises
+        nothing.
+    """
+    out: dict[str, str] = {}
+    for d in texts:
+        colon, eq = _top_level(d, ":"), _top_level(d, "=")
+        if colon < 0 or 0 <= eq < colon:
+            continue
+        name = d[:colon].strip().removesuffix("(t)").strip()
+        bold = _BOLD_NAME.fullmatch(name)
+        if bold and len(bold.group(1)) > 1 and bold.group(1) not in ("Ad", "ad"):
+            out[name] = model_spelling(bold.group(1))
+        elif _BARE_NAME.fullmatch(name) and len(name) > 1:
+            try:
+                _key(name, d)
+            except (BadInput, LatexError, ValueError):
+                out[name] = model_spelling(name)
+    return out
+
+
+def respell_model_names(text: str, names: dict[str, str]) -> str:
+    """``text`` with each name of the model of ``names`` (:func:`model_names`) written as
+    the glyph it is read as: a bold one wherever it stands, a bare one where it stands
+    alone (not part of a macro, a word or another name)."""
+    if not names:
+        return text
+    alts = sorted(names, key=len, reverse=True)
+    pat = "|".join(re.escape(n) if n.startswith("\\") else
+                   r"(?<![\\A-Za-z_])(?<!\\mathrm\{)(?<!\\operatorname\{)"
+                   + re.escape(n) + r"(?![A-Za-z0-9_])" for n in alts)
+    return re.sub(pat, lambda m: names[m.group(0)], text)
 
 
 def let_items(let) -> list[str]:

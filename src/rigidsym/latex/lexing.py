@@ -176,7 +176,7 @@ def bracket_key(token: str) -> str:
     return f"[{font}{{{atom}}}]_{{{sub}}}" if font else f"[{atom}]_{{{sub}}}"
 
 
-_NAMED_MAP = re.compile(r"\\(?:mathrm|operatorname)\s*\{\s*([A-Za-z][A-Za-z]+)\s*\}"
+_NAMED_MAP = re.compile(r"\\(?:mathrm|operatorname)\s*\{\s*([A-Za-z](?:[A-Za-z0-9]|\\_)+)\s*\}"
                         r"|\\(exp|log)\s*_\s*\{?\s*(\\?[A-Za-z]+)\s*\}?")
 
 
