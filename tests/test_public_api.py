@@ -67,8 +67,9 @@ PUBLIC = {
     "rigidsym.latex.transcription": ["STATUSES", "check_transcription", "notes",
                                      "transcription_for", "transcription_words"],
     # LaTeX in, verdict out (rigidsym.check_latex, rigidsym check --latex)
-    "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "let_items", "rated_lets",
-                            "read_lets", "split_lets"],
+    "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "let_items", "model_names",
+                            "model_spelling", "rated_lets", "read_lets",
+                            "respell_model_names", "split_lets"],
 }
 
 
