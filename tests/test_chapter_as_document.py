@@ -29,6 +29,7 @@ def _benchmark():
 
 @pytest.mark.slow
 @pytest.mark.book
+@pytest.mark.unpriced  # about 210 s cold (the benchmark's record): not yet priced in .ci/run
 def test_the_chapter_as_a_document_never_contradicts_verify():
     from rigidsym.documents import check_document
 
