@@ -21,6 +21,10 @@ import pytest
 
 from rigidsym.cli import main
 
+ROOT_ = Path(__file__).resolve().parents[1]
+if str(ROOT_ / "certcheck" / "src") not in sys.path:  # the locator tests import certcheck
+    sys.path.insert(0, str(ROOT_ / "certcheck" / "src"))  # (a distribution of its own)
+
 ROOT = Path(__file__).resolve().parents[1]
 NOTES = ROOT / "examples" / "notes.md"
 READING = ROOT / "examples" / "notes.reading.toml"

@@ -49,12 +49,6 @@ PERCENT = re.compile(r"(?<![\w.^/%~-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.
 #: time figures, ratios and percentages that measure nothing: page, the text around the
 #: figure, and why
 NOT_MEASURED = [
-    ("docs/check-documents.md", "does-not-hold  [0.20 s]", "certcheck's output on the "
-     "example notes, quoted as printed: its per-certificate time shows the format"),
-    ("docs/check-documents.md", "definition  [0.01 s]", "certcheck's output on the example "
-     "notes, quoted as printed"),
-    ("docs/check-documents.md", "0 failed, 0.3 s", "certcheck's summary line on the example "
-     "notes, quoted as printed"),
     ("docs/certificates.md", "| 60 s of CPU time |", "certcheck's CPU limit on one "
      "certificate, a setting (certcheck.limits.MAX_SECONDS)"),
     ("docs/commands.md", "default 60 s of CPU time", "check --latex's time limit, a setting "

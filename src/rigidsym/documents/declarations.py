@@ -308,6 +308,59 @@ def _definitions(relations: list[Relation], declared,
     return plans, defs
 
 
+def _declared(texts: list[str], label, by_id: set, clashes: dict, pinned: dict) -> dict:
+    """The glyphs the declarations ``texts`` of relation ``label`` declare: ``{glyph key:
+    (the line, the glyph keys its model uses)}``; two lines read as one glyph go to
+    ``clashes[label]``, a line the reading gives the label by its id to ``pinned[label]``.
+
+    Raises:
+        BadInput: a declaration that cannot be read.
+    """
+    from rigidsym.latex.lets import model_names, respell_model_names
+
+    names = model_names(texts)
+    kinds: dict = {}
+    for t in texts:
+        rl = rate_line(t)
+        if rl is not None:  # \dot X of X(t): needs X(t)'s line
+            kinds[rl[0]] = (t, {rl[1]})
+            if t in by_id:
+                pinned.setdefault(label, set()).add(rl[0])
+            continue
+        x = _one_let(respell_model_names(t, names))
+        if x is None and ":" in t and t.split(":")[0].strip() in (
+                "\\otimes", "\\odot", "tangent order"):
+            kinds[t.split(":")[0].strip()] = (t, set())
+            continue
+        if x is None:
+            raise BadInput(f"the declaration '{t}' cannot be read (reading file or --let)")
+        if x.key in kinds:  # two lines the reader reads as one glyph: neither
+            clashes.setdefault(label, {}).setdefault(x.key, [kinds[x.key][0]]).append(t)
+            continue
+        kinds[x.key] = (t, _keys(x.latex) or set() if x.latex else set())
+        if t in by_id:
+            pinned.setdefault(label, set()).add(x.key)
+    return kinds
+
+
+def _withheld_or_clashing(label, need: set, blocked: dict, clashes: dict, active: dict,
+                          pinned) -> str | None:
+    """Why relation ``label``, which needs the glyphs ``need``, is not checked: one of them
+    has a line of the reading not given to it (``blocked``), or two lines read as one glyph
+    (``clashes``) that the document's own definitions (``active``) do not settle; ``None``
+    where neither."""
+    cut = sorted(k for k in blocked if k in need)
+    if cut:
+        return (f"uses {cut[0]}, whose line of the reading for ({label}), "
+                f"'{blocked[cut[0]]}', is not given (listed with why)")
+    clash = sorted(k for k in clashes if k in need and (k not in active or k in pinned))
+    if clash:
+        lines = " and ".join(f"'{t}'" for t in clashes[clash[0]])
+        return (f"the declarations {lines} are read as one glyph {clash[0]} for ({label}): "
+                "which one it uses is not said")
+    return None
+
+
 def plan(relations: list[Relation], reading: Reading | None = None,
          lets: list[str] | tuple[str, ...] = ()) -> list[Plan]:
     """What to do with each relation, in document order (:mod:`this module
@@ -321,7 +374,7 @@ def plan(relations: list[Relation], reading: Reading | None = None,
     Raises:
         BadInput: a declaration of the reading or of ``lets`` that cannot be read.
     """
-    from rigidsym.latex.lets import model_names, respell_model_names, split_lets
+    from rigidsym.latex.lets import split_lets
 
     declared_cache: dict = {}
     clashes: dict = {}  # label -> glyph key -> the lines that declare it
@@ -331,39 +384,15 @@ def plan(relations: list[Relation], reading: Reading | None = None,
 
     def declared(label):
         if label not in declared_cache:
-            texts = split_lets(base_lets(reading, list(lets), label))
-            names = model_names(texts)
-            kinds = {}
-            for t in texts:
-                rl = rate_line(t)
-                if rl is not None:  # \dot X of X(t): needs X(t)'s line
-                    kinds[rl[0]] = (t, {rl[1]})
-                    if t in by_id:
-                        pinned.setdefault(label, set()).add(rl[0])
-                    continue
-                x = _one_let(respell_model_names(t, names))
-                if x is None and ":" in t and t.split(":")[0].strip() in (
-                        "\\otimes", "\\odot", "tangent order"):
-                    kinds[t.split(":")[0].strip()] = (t, set())
-                    continue
-                if x is None:
-                    raise BadInput(f"the declaration '{t}' cannot be read (reading file or "
-                                   f"--let)")
-                if x.key in kinds:  # two lines the reader reads as one glyph: neither
-                    clashes.setdefault(label, {}).setdefault(
-                        x.key, [kinds[x.key][0]]).append(t)
-                    continue
-                kinds[x.key] = (t, _keys(x.latex) or set() if x.latex else set())
-                if t in by_id:
-                    pinned.setdefault(label, set()).add(x.key)
-            declared_cache[label] = kinds
+            declared_cache[label] = _declared(split_lets(base_lets(reading, list(lets), label)),
+                                              label, by_id, clashes, pinned)
         return declared_cache[label]
 
     held_cache: dict = {}
 
     def held(label):
         if label not in held_cache:
-                held_cache[label] = withheld(reading, label) if reading is not None and label \
+            held_cache[label] = withheld(reading, label) if reading is not None and label \
                 else {}
         return held_cache[label]
 
@@ -406,21 +435,10 @@ def plan(relations: list[Relation], reading: Reading | None = None,
                                               f"later, at {rel.place} (display {rel.display})")
             continue
         need = _closure(used, models)
-        cut = sorted(k for k in blocked if k in need)
-        if cut:
-            k = cut[0]
-            plans[n] = Plan(r, "skip", reason=f"uses {k}, whose line of the reading for "
-                                              f"({r.label}), '{blocked[k]}', is not given "
-                                              f"(listed with why)")
-            continue
-        clash = sorted(k for k in clashes.get(r.label, {})
-                       if k in need and (k not in active or k in pinned.get(r.label, ())))
-        if clash:
-            k = clash[0]
-            lines = " and ".join(f"'{t}'" for t in clashes[r.label][k])
-            plans[n] = Plan(r, "skip", reason=f"the declarations {lines} are read as one "
-                                              f"glyph {k} for ({r.label}): which one it uses "
-                                              f"is not said")
+        why = _withheld_or_clashing(r.label, need, blocked, clashes.get(r.label, {}), active,
+                                    pinned.get(r.label, ()))
+        if why:
+            plans[n] = Plan(r, "skip", reason=why)
             continue
         keep = [t for k, (t, _) in models.items()
                 if k in need or k in ("\\otimes", "\\odot", "tangent order")]

@@ -202,7 +202,14 @@ _BARE_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*(?:_[A-Za-z0-9]+)*")
 
 def model_spelling(name: str) -> str:
     """The glyph a name of the model is read as: ``w_axis`` -> ``\\mathrm{w\\_axis}`` (as
-    LaTeX prints the name, upright, one symbol)."""
+    LaTeX prints the name, upright, one symbol).
+
+    Args:
+        name: the name of the model, without ``\\mathbf``.
+
+    Returns:
+        The LaTeX of its glyph.
+    """
     return "\\mathrm{" + name.replace("_", "\\_") + "}"
 
 
@@ -211,6 +218,9 @@ def model_names(texts) -> dict[str, str]:
     ``NAME: KIND`` whose NAME is a name of the model, not a LaTeX glyph, a bare identifier
     that is not one glyph (``ell``, ``d0_axial``, ``sec342_sigma``; ``m_1`` is the glyph
     m₁) or a bold one (``\\mathbf{w_axis}``, ``\\mathbf{rw}``).
+
+    Args:
+        texts: the declarations, one string each (:func:`let_items`).
 
     Returns:
         ``{NAME as written: the glyph it is read as}`` (:func:`model_spelling`); raises
@@ -234,9 +244,17 @@ def model_names(texts) -> dict[str, str]:
 
 
 def respell_model_names(text: str, names: dict[str, str]) -> str:
-    """``text`` with each name of the model of ``names`` (:func:`model_names`) written as
-    the glyph it is read as: a bold one wherever it stands, a bare one where it stands
-    alone (not part of a macro, a word or another name)."""
+    """``text`` with each name of the model of ``names`` written as the glyph it is read
+    as: a bold one wherever it stands, a bare one where it stands alone (not part of a
+    macro, a word or another name).
+
+    Args:
+        text: a declaration or LaTeX.
+        names: :func:`model_names`' answer.
+
+    Returns:
+        The text respelt (``text`` itself when ``names`` is empty).
+    """
     if not names:
         return text
     alts = sorted(names, key=len, reverse=True)
@@ -247,12 +265,18 @@ def respell_model_names(text: str, names: dict[str, str]) -> str:
 
 
 def let_items(let) -> list[str]:
-    """The declaration strings of ``let`` (:func:`read_lets`' argument: ``None``, a string,
-    a list of strings or a dict ``NAME -> KIND or LaTeX``), a dict's values written as
-    ``NAME: KIND`` or ``NAME = LATEX``.
+    """The declaration strings of ``let``, a dict's values written as ``NAME: KIND`` or
+    ``NAME = LATEX``.
+
+    Args:
+        let: :func:`read_lets`' argument: ``None``, a string, a list of strings or a dict
+            ``NAME -> KIND or LaTeX``.
+
+    Returns:
+        The declarations, one string each, in order.
 
     Raises:
-        rigidsym.latex.BadInput: a dict whose keys or values are not strings.
+        rigidsym.core.errors.BadInput: a dict whose keys or values are not strings.
     """
     if let is None:
         return []
