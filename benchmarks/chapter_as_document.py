@@ -64,20 +64,13 @@ _GROUPS = (
 
 
 def machine() -> dict:
-    """The machine the figures were measured on."""
-    model = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
+    """The machine the figures were measured on (test_command.py's host), its load and the
+    commit."""
+    from test_command import host
+
     commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True,
                             text=True).stdout.strip()
-    return {"cpu": model, "cores": os.cpu_count(), "load": [round(x, 2) for x in
-                                                             os.getloadavg()],
-            "commit": commit, "python": sys.version.split()[0]}
+    return {**host(), "load": [round(x, 2) for x in os.getloadavg()], "commit": commit}
 
 
 def group(rec: dict) -> str:
