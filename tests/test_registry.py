@@ -16,17 +16,39 @@ pytestmark = pytest.mark.xdist_group("registry_verdicts")
 
 
 @pytest.fixture(scope="module")
-def results():
-    """Every declaration checked once, in this process: the suite runs on xdist workers
-    already, one per core, so that a pool of two here ran three processes on two cores and
-    paid its start-up and transport (about 10 s of CPU) for no wall time; the pool's path
-    is test_api.py's section33 (``verify(jobs=2)``)."""
-    return {r.id: r for r in run_checks(IDS, jobs=1, progress=False)}
+def results(request):
+    """The declarations this session's tests of the module read, checked once, in this
+    process: every id where a test that reads the whole chapter runs (the thorough
+    profile's report and snapshot), else the ids of the verdict family's seeded sample (the
+    quick profile: the whole chapter costs about 60 s of CPU, a quarter of it about 15).
+    One process: the suite runs on xdist workers already, one per core, so that a pool of
+    two here ran three processes on two cores and paid its start-up and transport (about
+    10 s of CPU) for no wall time; the pool's path is test_api.py's section33
+    (``verify(jobs=2)``)."""
+    mine = [i for i in request.session.items if i.module is request.module]
+    if any(getattr(i, "originalname", "") in WHOLE for i in mine):
+        ids = IDS
+    else:
+        ids = [i.callspec.params["eq_id"] for i in mine if "eq_id" in i.fixturenames
+               and i.originalname == "test_computed_verdict_equals_recorded"]
+    return {r.id: r for r in run_checks(ids, jobs=1, progress=False)}
 
 
+#: the tests of the module that read every id's result (the thorough profile's)
+WHOLE = ("test_committed_chapter_report_is_fresh",)
+
+
+@pytest.mark.sample
 @pytest.mark.parametrize("eq_id", IDS)
 def test_computed_verdict_equals_recorded(eq_id, results):
+    """The verdict the engine computes is the declared one, backed by its numeric check,
+    and the same as the snapshot taken before python-flint (verdict, member statuses, no
+    failure bound above the recorded one, an exact counterexample): the quick profile
+    checks a seeded quarter of the chapter, the thorough one the rest."""
+    from test_verdict_snapshot import SNAPSHOT, assert_matches_snapshot
+
     r = results[eq_id]
+    assert_matches_snapshot(r, SNAPSHOT["chapter"][eq_id])
     assert r.verdict == r.expected, r.detail
     assert r.numeric["points"] >= 10 and r.numeric["digits"] >= 30
     if r.verdict == "does-not-hold":
@@ -51,6 +73,7 @@ def test_every_declaration_names_its_book_section():
         assert eq.title and eq.latex
 
 
+@pytest.mark.slow  # every id; the verdict family holds the quick profile's sample
 def test_committed_chapter_report_is_fresh(results):
     """generated/report/chapter3.{md,json,html} equal what the current declarations produce
     (the report is deterministic: no timings, tiny residuals bounded)."""
@@ -73,13 +96,9 @@ def test_committed_chapter_report_is_fresh(results):
         "generated/report/chapter3.html is stale: run `rigidsym report`"
 
 
-def test_verdicts_match_the_snapshot_taken_before_python_flint(results):
-    """Same verdicts and member statuses as tests/data/verdict_snapshot.json (taken on the
-    engine before python-flint), failure bounds no higher, exact counterexamples."""
-    from test_verdict_snapshot import SNAPSHOT, assert_matches_snapshot
+def test_every_id_is_in_the_snapshot():
+    """The snapshot holds the chapter's ids, no more, no fewer (each id's record is held
+    by test_computed_verdict_equals_recorded)."""
+    from test_verdict_snapshot import SNAPSHOT
 
-    recorded = SNAPSHOT["chapter"]
-    book = {k: r for k, r in results.items() if ":" not in k}
-    assert sorted(book) == sorted(recorded)
-    for eq_id, r in book.items():
-        assert_matches_snapshot(r, recorded[eq_id])
+    assert sorted(SNAPSHOT["chapter"]) == IDS

@@ -24,6 +24,9 @@ from rigidsym.course.grading import grade, key_array
 from rigidsym.course.worked import EXERCISE_IDS, solve
 
 _BOOK = {}
+# one worker solves each exercise once for every test of the module (Exercise 3.10's
+# solution costs about 7 s: two workers each solved it again)
+pytestmark = pytest.mark.xdist_group("slips_by_kind")
 _PROOFS = ("ex3.9", "ex3.16", "ex3.20", "ex3.3", "ex3.8")
 
 
