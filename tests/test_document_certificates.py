@@ -21,7 +21,7 @@ import pytest
 
 from rigidsym.cli import main
 
-pytestmark = pytest.mark.xdist_group("document_certificates")  # its module fixtures built on one worker
+pytestmark = pytest.mark.xdist_group("document_certificates")  # module fixtures once
 
 ROOT_ = Path(__file__).resolve().parents[1]
 if str(ROOT_ / "certcheck" / "src") not in sys.path:  # the locator tests import certcheck
