@@ -29,7 +29,7 @@ import types
 from pathlib import Path
 
 from rigidsym.core.files import write_atomic
-from rigidsym.course.exam_text import ASKED, box_label, task
+from rigidsym.course.exam_text import answers_asked, box_label, task
 from rigidsym.course.worked import (
     exercise_module,
     normalise_id,
@@ -275,7 +275,7 @@ def asked(s) -> list[str]:
     in words is read by the instructor, not boxed)."""
     from rigidsym.course.grading import gradeable
 
-    only = ASKED.get(s.id)
+    only = answers_asked(s.id)
     return [n for n, v in s.answers.items() if not isinstance(v, str) and gradeable(v)
             and (only is None or n in only)]
 
