@@ -281,7 +281,7 @@ def _ids(doc: dict, where: str) -> dict[str, IdReading]:
             ids_out[i] = IdReading(i, cls)
     ids_table = doc.get("id", {})
     if not isinstance(ids_table, dict):
-        raise _bad(where, "id must be a table of ids ([id.\"3.1\"])")
+        raise _bad(where, "id must be a table of ids ([id.\"ID\"])")
     for i, entry in ids_table.items():
         here = f"[id.{i!r}]"
         if not isinstance(entry, dict):
