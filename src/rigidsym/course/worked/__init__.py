@@ -311,8 +311,7 @@ def _time_budget(seconds: float, ex_id: str):
         raise TooLong(f"{ex_id}: the exact solution on these data did not finish in "
                       f"{seconds:g} s (their radicals and digits multiply); give shorter "
                       f"numbers or fewer distinct square roots, or floats where the "
-                      f"exercise takes measurements (Exercises 3.1, 3.4, 3.5, 3.6, 3.7, 3.14, "
-                      f"3.19)") from None
+                      f"exercise takes measurements (Exercises {measured_in_words()})") from None
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0)
         signal.signal(signal.SIGPROF, old)
