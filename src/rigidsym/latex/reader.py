@@ -24,7 +24,7 @@ def parse_latex(latex: str, section: str | None = None, overrides: dict | None =
         latex: the LaTeX (one or more relations separated by ``,``, ``\\quad`` or
             ``\\text{or}``; ``=``/``\\equiv`` chains; ``aligned`` blocks).
         section: the book section whose rows of the book's glyph table (the one its
-            reading names, :mod:`rigidsym.latex.table`) name the glyphs (``"3.4.2"``);
+            reading names, :func:`rigidsym.latex.glyph_table`) name the glyphs (``"3.4.2"``);
             ``"*"``: only the section-free rows; ``None`` (the default: a text of one's own
             is not the book's): no row of any table (every glyph by the default rules, or
             by ``overrides``).

@@ -114,7 +114,7 @@ def glyph_table() -> tuple[Glyph, ...]:
 
     Raises:
         BadInput: the book names no reading, or its reading names no glyph table (a book
-            section cannot name glyphs then), or as :func:`read_glyph_table`.
+            section cannot name glyphs then), or as ``read_glyph_table`` of this module.
     """
     from rigidsym.registry.declarations import book_reading
 
@@ -149,7 +149,7 @@ def lookup(latex: str, section: str = "*") -> Glyph | None:
         ``3.4``, then ``*``), or ``None``.
 
     Raises:
-        BadInput: as :func:`glyph_table`.
+        BadInput: as :func:`rigidsym.latex.glyph_table`.
     """
     idx = _index()
     parts = section.split(".") if section != "*" else []
