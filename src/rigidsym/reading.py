@@ -9,8 +9,9 @@ words are those of ``--let`` (``docs/reading-files.md`` is the reference)::
     [reading]
     format = 1
     page = "notes.md"                      # the text this is the reading of (relative)
-    glyphs = "notes.glyphs.csv"            # optional: its glyph table (relative), read by
-                                           # the LaTeX reader (rigidsym.latex.table)
+    glyphs = "notes.glyphs.csv"            # optional: its glyph table (relative); the
+                                           # book's is read by the LaTeX reader for the
+                                           # declarations' LaTeX and --book SECTION
 
     [conventions]                          # each said back in every report
     quaternion_product = "hamilton"        # or "jpl", "hamilton-scalar-last"
@@ -144,6 +145,9 @@ class Reading:
         page: the page it reads, relative to the file (``None`` if not named).
         glyphs: its glyph table, a CSV relative to the file (``None`` if not named):
             each glyph's name, shape and kind per section (:mod:`rigidsym.latex.table`).
+            The book's reading's is the one the LaTeX reader consults (a declaration's
+            LaTeX, ``check --latex --book``); a document's relations take their glyphs
+            from its ``[[let]]`` lines.
         conventions: the conventions it fixes (keys of :data:`CONVENTIONS`).
         lets: its declarations, in order.
         ids: what it says of ids, by id.
