@@ -455,10 +455,12 @@ def _choice_words(key: str) -> str:
     if key.endswith(" shape"):
         return (f"{key[:-6]} (a bold capital no --let declares) can be a 3×3 matrix or a "
                 f"3-vector")
-    from rigidsym.latex.transformer.meanings import is_cross_bracket
+    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
     if is_cross_bracket(key):
         return _cross_words(key)
+    if key == STAR_POINT:
+        return _star_words()
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -483,6 +485,16 @@ def _cross_words(key: str) -> str:
             + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
 
 
+def _star_words() -> str:
+    """``X^*`` of a 6x6 matrix in words: its readings and their books
+    (:data:`rigidsym.latex.contested.CONTESTED`, "star")."""
+    from rigidsym.latex.contested import construct
+
+    c = construct("star")
+    return ("X^* of a 6x6 matrix (the star) can be read as "
+            + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
+
+
 def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
@@ -493,8 +505,11 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
-    from rigidsym.latex.transformer.meanings import is_cross_bracket
+    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
+    if key == STAR_POINT:
+        return ("--let 'star: transpose' (Jain's) or --let 'star: dual' (Featherstone's), "
+                "or write X^T for the transpose and X^{-T} for the dual")
     if is_cross_bracket(key):
         left, x = key[1:].rsplit("\\", 1)[0].rsplit(" ", 1)
         return (f"--let 'bracket cross: content' or --let 'bracket cross: bind', or write "
