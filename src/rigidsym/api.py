@@ -509,7 +509,8 @@ def _settles(key: str) -> str:
 
     if key == STAR_POINT:
         return ("--let 'star: transpose' (Jain's) or --let 'star: dual' (Featherstone's), "
-                "or write X^T for the transpose and X^{-T} for the dual")
+                "or write X^T for the transpose and X^{-T} for the dual (a name of "
+                "Featherstone's: --let 'X: spatial transform', whose X^* is the dual)")
     if is_cross_bracket(key):
         left, x = key[1:].rsplit("\\", 1)[0].rsplit(" ", 1)
         return (f"--let 'bracket cross: content' or --let 'bracket cross: bind', or write "

@@ -11,9 +11,13 @@ LaTeX                                                       reading
                                                             refused (no exterior product)
 ``\\xi^\\curlywedge`` (Barfoot)                               ``ad`` of a 6-vector
 ``{}^B X_A^{*}``, ``{}^B X_A^{-T}`` (Featherstone)            the inverse transpose of a
-                                                            ``spatial transform`` (``X^*``
-                                                            only); ``A^{-T}`` of another
-                                                            square matrix: ``(A^{-1})^T``
+                                                            ``spatial transform``; ``A^{-T}``
+                                                            of another square matrix:
+                                                            ``(A^{-1})^T``
+``\\phi^*(\\mathbf{l})`` of another 6x6 matrix (Jain)         contested: Jain's transpose or
+                                                            the dual (``contested``, "star");
+                                                            ``\\mathcal{V}^*`` of a 6-vector
+                                                            its transpose
 ``v \\times m``, ``v \\times^* f``, ``v\\times`` (RBDA 2.9)    crm, crf of a 6-vector; of a
                                                             3-vector before a matrix: CPM
 ``{}^A_B R``, ``{}^A\\mathbf{R}_B`` (Craig, Corke)             frame indices, part of the name
@@ -163,7 +167,7 @@ class BookNotationRules:
             self._note("v^*: the transpose of a 6-vector (Jain's adjoint, V^* f a power)")
             return x.T
         if s != (6, 6):
-            raise LatexError(f"^{{*}} of {shape_words(x)}: expected a 4-vector (a quaternion's "
+            raise LatexError(f"^{{*}} of {shape_words_of(s)}: expected a 4-vector (a quaternion's "
                              f"conjugate), a 6-vector (its transpose, Jain's V^*) or a 6x6 "
                              f"matrix (Jain's transpose or Featherstone's dual); write ^T for "
                              f"a transpose, or declare the starred name with a --let "
