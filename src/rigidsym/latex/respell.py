@@ -368,7 +368,7 @@ def _entry_rate(letter: str) -> re.Pattern:
 
 #: a vector of time, ``\\mathbf{e}(t): unit 4-vector``: the rate of its entries is its rate's
 _TIMED_VECTOR = re.compile(
-    r"\\(?P<font>mathbf|boldsymbol|bm)\s*\{?\s*(?P<letter>\\[A-Za-z]+|[A-Za-z])\s*\}?\s*"
+    r"(?:\\(?P<font>mathbf|boldsymbol|bm)\s*\{?\s*)?(?P<letter>\\[A-Za-z]+|[A-Za-z])\s*\}?\s*"
     r"\(t\)\s*:[^=]*vector")
 
 
@@ -401,7 +401,7 @@ def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
         zero = re.compile(re.escape(letter) + (r"(?![A-Za-z])" if letter.startswith("\\")
                                                 else "") + r"\s*_\s*\{?\s*0(?!\d)")
         base = 1 if any(zero.search(t) for t in [latex, *decls]) else 0
-        vec = f"\\dot{{\\{font}{{{letter}}}}}"
+        vec = f"\\dot{{\\{font}{{{letter}}}}}" if font else f"\\dot{{{letter}}}"  # Kane's \epsilon
 
         def one(m, vec=vec, base=base):
             k = int(m["k"] or m["k1"]) + base
