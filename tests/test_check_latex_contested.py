@@ -322,3 +322,31 @@ def test_a_star_of_a_6_vector_is_its_transpose_and_of_a_3_vector_refused_saying_
 def test_a_star_reading_no_book_has_is_refused_naming_both():
     with pytest.raises(BadInput, match=r"'star: transpose', 'star: dual'"):
         _check(STAR_TRANSPOSE, PHI + ["star: adjugate"])
+
+
+#: Lee–Leok–McClamroch (2010) sec. II: the hat map's symmetric identity, braces as grouping
+LEE = (r"\hat{x}A + A^T\hat{x} = (\{\operatorname{tr}[A]I_{3\times 3} - A\}x)^\wedge")
+LEE_LETS = [r"A: matrix", r"x: vector"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (LEE, "verified"),
+    (LEE.replace("- A\\}", "+ A\\}"), "does-not-hold"),  # the sign inside the braces
+])
+def test_braces_around_an_expression_group_and_are_said(latex, verdict):
+    r = rigidsym.check_latex(latex, let=LEE_LETS, notation="murray-li-sastry", repairs=False)
+    assert r.verdict == verdict, r.model
+    assert any("braces around an expression, read as parentheses" in m for m in r.model), \
+        r.model
+
+
+def test_braces_of_one_glyph_or_of_a_set_are_not_read_as_a_group():
+    from rigidsym.latex.respell import grouping_braces
+
+    for latex in (r"\{\boldsymbol\omega\} = \mathbf{a}", r"\{x, y\} = \{y, x\}",
+                  r"\{x \mid x^2 = 1\} = \{1\}"):
+        assert grouping_braces(latex, [])[0] == latex, latex
+    out, _, note = grouping_braces(r"(\{a + \{b c\}\}x)", [])
+    assert out == r"((a + (b c))x)" and note
+    with pytest.raises(ValueError, match=r"\\\{"):  # an undeclared glyph's braces: unread
+        _check(r"\{\boldsymbol\omega\} = \boldsymbol\omega", [r"\boldsymbol\omega: vector"])

@@ -349,6 +349,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
         declared_e,
         declared_labels,
         floor_cross,
+        grouping_braces,
         hat_expressions,
         rate_entries,
         tilde_expressions,
@@ -358,6 +359,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     step("reading")
     latex, let, board = declared_blackboard(latex, let)  # M&R's inertia \mathbb{I}: a name
     latex, let, column = declared_columns(latex, let)  # Ginsberg's \{\omega\}: omega
+    latex, let, braces = grouping_braces(latex, let)  # Lee's \{tr[A] I - A\}x: ( )
     latex, let, spin = angular_velocities(latex, let)  # ω: angular velocity of Q
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
@@ -370,7 +372,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, board, column,
-                 spin):
+                 braces, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading

@@ -109,6 +109,16 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
         r"X^{-T} for the dual; --let 'X: spatial transform' makes X Featherstone's, whose "
         r"X^* is the dual)"),
     Construct(
+        "braces", r"\{ ... \}",
+        (Reading("group", "parentheses around an expression that is no single glyph",
+                 r"Lee–Leok–McClamroch (2010) sec. II: (\{tr[A] I - A\}x)^∧"),
+         Reading("column", r"the column matrix of a glyph's components, \{\omega\}",
+                 "Ginsberg (2008) Engineering Dynamics")),
+        "decided by the content: around an expression the braces group (the column of its "
+        "components is the same value), around one glyph they are a column only where a "
+        r"--let names it (--let '\{\omega\}: vector'); braces holding a list, a bar or a "
+        "condition (a set's) are not read"),
+    Construct(
         "exponential", r"e^{X}",
         (Reading("scalar", "the scalar exponential, where the exponent is a scalar "
                  "(e^{\\operatorname{tr} X}, e^{i\\theta})", "Hall (2015) Thm 2.12 (Jacobi)"),
