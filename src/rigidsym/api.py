@@ -349,6 +349,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
         declared_e,
         declared_labels,
         floor_cross,
+        grouping_braces,
         hat_expressions,
         rate_entries,
         tilde_expressions,
@@ -358,6 +359,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     step("reading")
     latex, let, board = declared_blackboard(latex, let)  # M&R's inertia \mathbb{I}: a name
     latex, let, column = declared_columns(latex, let)  # Ginsberg's \{\omega\}: omega
+    latex, let, braces = grouping_braces(latex, let)  # Lee's \{tr[A] I - A\}x: ( )
     latex, let, spin = angular_velocities(latex, let)  # ω: angular velocity of Q
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
@@ -370,7 +372,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, board, column,
-                 spin):
+                 braces, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading
@@ -455,10 +457,12 @@ def _choice_words(key: str) -> str:
     if key.endswith(" shape"):
         return (f"{key[:-6]} (a bold capital no --let declares) can be a 3×3 matrix or a "
                 f"3-vector")
-    from rigidsym.latex.transformer.meanings import is_cross_bracket
+    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
     if is_cross_bracket(key):
         return _cross_words(key)
+    if key == STAR_POINT:
+        return _star_words()
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -483,6 +487,16 @@ def _cross_words(key: str) -> str:
             + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
 
 
+def _star_words() -> str:
+    """``X^*`` of a 6x6 matrix in words: its readings and their books
+    (:data:`rigidsym.latex.contested.CONTESTED`, "star")."""
+    from rigidsym.latex.contested import construct
+
+    c = construct("star")
+    return ("X^* of a 6x6 matrix (the star) can be read as "
+            + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
+
+
 def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
@@ -493,8 +507,12 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
-    from rigidsym.latex.transformer.meanings import is_cross_bracket
+    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
+    if key == STAR_POINT:
+        return ("--let 'star: transpose' (Jain's) or --let 'star: dual' (Featherstone's), "
+                "or write X^T for the transpose and X^{-T} for the dual (a name of "
+                "Featherstone's: --let 'X: spatial transform', whose X^* is the dual)")
     if is_cross_bracket(key):
         left, x = key[1:].rsplit("\\", 1)[0].rsplit(" ", 1)
         return (f"--let 'bracket cross: content' or --let 'bracket cross: bind', or write "
