@@ -525,9 +525,8 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
-    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
-
     from rigidsym.latex.transformer.extent import extent_parts, is_extent_point
+    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
     if is_extent_point(key):
         head, arg, run = extent_parts(key)

@@ -10,8 +10,12 @@ from importlib import resources
 
 import lark
 
-from rigidsym.latex.rewrites import (argument_extents, mixed_products, multiple_angles,
-                                     subscripts_first)
+from rigidsym.latex.rewrites import (
+    argument_extents,
+    mixed_products,
+    multiple_angles,
+    subscripts_first,
+)
 
 __all__ = ["Relation", "Parsed", "parser", "tree", "braced", "quoted", "bracket_key",
            "named_map_key"]

@@ -87,8 +87,8 @@ def said(key: str, choice: str) -> str:
     if _kind(key) == "extent":
         head, arg, run = extent_parts(key)
         gap = " " if arg[-1:].isalpha() and run[:1].isalpha() else ""
-        return (f"{head}{arg}{gap}{run} read as " + (f"{head}({arg}{gap}{run})" if choice == "product"
-                                             else f"{head}({arg}){run}"))
+        spelt = f"{head}({arg}{gap}{run})" if choice == "product" else f"{head}({arg}){run}"
+        return f"{head}{arg}{gap}{run} read as {spelt}"
     if _kind(key) == "star":
         return ("each X^* of a 6x6 matrix " + ("the dual (X^{-1})^T (Featherstone)"
                                               if choice == "dual" else
