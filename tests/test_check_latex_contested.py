@@ -394,7 +394,7 @@ def test_an_undeclared_argument_extent_is_asked_naming_each_reading(latex):
     r"\sin\theta\cos\theta = \cos\theta\sin\theta",  # a function after it
 ])
 def test_an_argument_ended_without_ambiguity_is_decided_with_no_choice(latex):
-    r = _check(latex, ANGLES)
+    r = _check(latex, ANGLES if r"\phi" in latex else ANGLES[:1])
     assert r.verdict == "verified", r.model
     assert not any("argument" in m and "read as" in m for m in r.model), r.model
 
