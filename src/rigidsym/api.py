@@ -463,6 +463,10 @@ def _choice_words(key: str) -> str:
         return _cross_words(key)
     if key == STAR_POINT:
         return _star_words()
+    from rigidsym.latex.transformer.extent import extent_parts, is_extent_point
+
+    if is_extent_point(key):
+        return _extent_words(extent_parts(key))
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -497,6 +501,20 @@ def _star_words() -> str:
             + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
 
 
+def _extent_words(parts: tuple[str, str, str]) -> str:
+    """``\\cos\\theta\\phi`` in words: its readings and their books
+    (:data:`rigidsym.latex.contested.CONTESTED`, "argument extent")."""
+    from rigidsym.latex.contested import construct
+
+    head, arg, run = parts
+    gap = " " if arg[-1:].isalpha() and run[:1].isalpha() else ""
+    c = construct("argument extent")
+    return (f"{head}{arg}{gap}{run} (a function's argument without parentheses, then "
+            f"{run}) can be read as " + " or as ".join(
+                f"{head}({arg}){run} ({r.books})" if r.name == "factor" else
+                f"{head}({arg}{gap}{run}) ({r.books})" for r in c.readings))
+
+
 def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
@@ -507,8 +525,14 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
+    from rigidsym.latex.transformer.extent import extent_parts, is_extent_point
     from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
+    if is_extent_point(key):
+        head, arg, run = extent_parts(key)
+        gap = " " if arg[-1:].isalpha() and run[:1].isalpha() else ""
+        return (f"--let 'argument extent: factor' or --let 'argument extent: product', or "
+                f"write {head}({arg}){run} or {head}({arg}{gap}{run})")
     if key == STAR_POINT:
         return ("--let 'star: transpose' (Jain's) or --let 'star: dual' (Featherstone's), "
                 "or write X^T for the transpose and X^{-T} for the dual (a name of "

@@ -10,7 +10,12 @@ from importlib import resources
 
 import lark
 
-from rigidsym.latex.rewrites import mixed_products, multiple_angles, subscripts_first
+from rigidsym.latex.rewrites import (
+    argument_extents,
+    mixed_products,
+    multiple_angles,
+    subscripts_first,
+)
 
 __all__ = ["Relation", "Parsed", "parser", "tree", "braced", "quoted", "bracket_key",
            "named_map_key"]
@@ -312,7 +317,8 @@ def tree(latex: str):
                          f"or a \\times (b \\times c)", "cross chain")
     _AlignedLayout.text = text
     try:
-        return multiple_angles(subscripts_first(mixed_products(parser().parse(text))))
+        return argument_extents(
+            multiple_angles(subscripts_first(mixed_products(parser().parse(text)))), text)
     except _Glued as exc:
         token, construct = quoted(text, exc.pos)
         raise LatexError(f"unknown macro {token} at position {exc.pos}:\n"

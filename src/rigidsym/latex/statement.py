@@ -26,6 +26,7 @@ from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
+from rigidsym.latex.transformer.extent import is_extent_point
 from rigidsym.latex.transformer.meanings import alternatives, said
 from rigidsym.latex.values import (
     entry_vectors,
@@ -196,6 +197,8 @@ def _readings(latex, lets, book, lend, table, first, points):
 def _group(key: str) -> str:
     """The choice points read alike: the subscripts of one vector's letter (``q_{1} of q``,
     ``q_{2} of q``: all entries of q or all names, never some of each), else the point."""
+    if is_extent_point(key):  # every argument extent of a statement: one book's habit
+        return "argument extent"
     return "entries of " + key.split(" of ", 1)[1] if " of " in key else key
 
 

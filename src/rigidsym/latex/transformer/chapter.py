@@ -36,6 +36,7 @@ from rigidsym.latex.shapes import (
 )
 from rigidsym.latex.table import Glyph, lookup
 from rigidsym.latex.transformer.book_notations import BookNotationRules, sup_word
+from rigidsym.latex.transformer.extent import ArgumentExtentRules
 from rigidsym.latex.transformer.glyphs import TIME, GlyphKey, GlyphRules
 from rigidsym.latex.transformer.meanings import BracketCpm, MeaningRules
 from rigidsym.latex.transformer.rigid_motions import RigidMotionRules
@@ -44,7 +45,7 @@ __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 
 
 class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationRules,
-                       lark.Transformer):
+                       ArgumentExtentRules, lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
     reader's LaTeX, ``[x]`` of a vector its hat (:mod:`rigidsym.latex.transformer.rigid_motions`),
     ``I`` the identity (:mod:`rigidsym.latex.transformer.meanings`); the glyphs' rules are
