@@ -40,7 +40,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
-from rigidsym.latex import contested, quaternions, tangent
+from rigidsym.latex import quaternions, tangent
 from rigidsym.latex.kinematics import dot_key, explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
@@ -172,11 +172,9 @@ class BookNotationRules:
                              f"matrix (Jain's transpose or Featherstone's dual); write ^T for "
                              f"a transpose, or declare the starred name with a --let "
                              f"(--let 'X^{{*}}: matrix')", "shapes")
-        settled = contested.declared("star")  # --let 'star: transpose' or 'star: dual'
-        if settled is None:
-            self.choice_points.setdefault(STAR_POINT, alternatives(STAR_POINT))
-        how = "declared by --let 'star: ...'" if settled else "a choice"
-        if (settled or self.choices.get(STAR_POINT, alternatives(STAR_POINT)[0])) == "dual":
+        # --let 'star: transpose' or 'star: dual'
+        reading, how = self.contested_reading("star", STAR_POINT, alternatives(STAR_POINT))
+        if reading == "dual":
             self._note(f"X^*: read as the dual (X^{{-1}})^T, Featherstone (2.25) ({how}: or "
                        f"the transpose, Jain's)")
             return self._inverse_transpose(x)

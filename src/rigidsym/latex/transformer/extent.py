@@ -19,7 +19,6 @@ from __future__ import annotations
 import lark
 import sympy as sp
 
-from rigidsym.latex import contested
 from rigidsym.latex.shapes import as_scalar, matrix_shape
 
 __all__ = ["ArgumentExtentRules", "EXTENT_SUFFIX", "is_extent_point", "extent_parts"]
@@ -59,11 +58,7 @@ class ArgumentExtentRules:
             return self._times(rule(kids), factors)
         written = _joined(texts[:run])
         key = "\x1f".join((head, arg_text, written)) + EXTENT_SUFFIX
-        settled = contested.declared("argument extent")
-        if settled is None:
-            self.choice_points.setdefault(key, ("factor", "product"))
-        how = "declared by --let 'argument extent: ...'" if settled else "a choice"
-        choice = settled or self.choices.get(key, "factor")
+        choice, how = self.contested_reading("argument extent", key, ("factor", "product"))
         spelt = f"{head}{_sep(head, arg_text)}{arg_text}{_sep(arg_text, written)}{written}"
         if choice == "product":
             self._note(f"{spelt}: read as {head}({arg_text}{_sep(arg_text, written)}"

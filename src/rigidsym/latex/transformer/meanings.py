@@ -23,6 +23,7 @@ import re
 import sympy as sp
 
 from rigidsym.algebra.operators import Cpm
+from rigidsym.latex import contested
 from rigidsym.latex.contested import readings_of
 from rigidsym.latex.entries import BASE_READINGS, base_words, is_base_point
 from rigidsym.latex.hats import CAPITAL_READINGS, HAT_READINGS
@@ -152,6 +153,25 @@ class MeaningRules:
         self.functions: dict = {}  # key -> expand(args) -> (value, params): --let functions
         self.choices: dict[str, str] = {}  # key -> one of its alternatives
         self.choice_points: dict[str, tuple] = {}  # key -> its alternatives, the default first
+
+    def contested_reading(self, construct: str, key: str, readings: tuple) -> tuple[str, str]:
+        """The reading of one use of a contested construct (:mod:`rigidsym.latex.contested`)
+        and how it was settled, for the ``read as:`` note.
+
+        Args:
+            construct: the construct's key in ``CONTESTED`` (``"star"``).
+            key: this use's choice point (``self.choices``).
+            readings: its readings, the first read where nothing settles it.
+
+        Returns:
+            ``(reading, how)``: the reading a ``--let`` declared (``how`` says so), else the
+            choice point's, which is registered so that the statement is decided under each.
+        """
+        settled = contested.declared(construct)
+        if settled is not None:
+            return settled, f"declared by --let '{construct}: ...'"
+        self.choice_points.setdefault(key, readings)
+        return self.choices.get(key, readings[0]), "a choice"
 
     def apply_many(self, items):
         """``glyph ( a, b, ... )`` with an optional power: a ``--let`` function of several
