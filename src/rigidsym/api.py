@@ -152,8 +152,9 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             the constructs expected; an unknown macro named; a juxtaposition whose meaning
             depends on an undeclared shape asks for a ``let``). A ``ValueError``.
         BadInput: a declaration that is neither form, an unknown KIND (the kinds listed), a
-            ``let`` naming a symbol that occurs nowhere, an ambiguous glyph of ``book``, a
-            module that cannot be loaded.
+            ``let`` naming a symbol that occurs nowhere while an undeclared glyph is spelt
+            near it (an unused ``let`` otherwise is said back and ignored), an ambiguous
+            glyph of ``book``, a module that cannot be loaded.
         ValueError: if ``repairs`` is not a bool, ``repair_budget`` not a non-negative
             integer, ``repair_seconds`` or ``timeout`` not a positive number.
 
@@ -369,6 +370,13 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
+    if reading.unused:  # a --let it does not use is ignored: read again without it
+        from rigidsym.latex.lets import without_lets
+
+        said = [n for n in reading.notes if n.startswith("not used: ")]
+        let = without_lets(let, reading.unused)
+        eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
+        reading.notes += said
     for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, board, column,
                  spin):
         if note:
