@@ -337,7 +337,28 @@ def _time_up(exc, latex, let, book, modules, notation, reading, seconds):
 def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
                        repair_seconds, seen):
     """:func:`check_latex_run`'s steps, each marked for the time limit
-    (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``."""
+    (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``. A name
+    the reader respells (a labelled ``R_{v2}^b``) is named as typed in the notes and in a
+    refusal's message."""
+    from rigidsym.latex.respell import labels_as_typed
+    from rigidsym.latex.shapes import LatexError
+
+    as_typed = labels_as_typed(let)
+    try:
+        r, reading = _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                                  repair_seconds, seen)
+    except (LatexError, BadInput) as exc:
+        if exc.args and isinstance(exc.args[0], str):
+            exc.args = (as_typed(exc.args[0]), *exc.args[1:])
+        raise
+    r.model = [as_typed(m) if isinstance(m, str) else m for m in r.model]
+    reading.notes[:] = [as_typed(n) for n in reading.notes]
+    return r, reading
+
+
+def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                 repair_seconds, seen):
+    """:func:`_check_latex_steps` before the names are written back as typed."""
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (

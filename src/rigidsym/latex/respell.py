@@ -53,7 +53,8 @@ from rigidsym.latex.lets import read_lets, split_lets
 
 __all__ = ["NAME_READING", "angular_velocities", "both_blackboard", "conjugate_c",
            "cross_subscripts", "declared_blackboard", "declared_columns", "declared_deltas",
-           "declared_e", "declared_identity", "open_blackboard", "with_name_reading",
+           "declared_e", "declared_identity", "labels_as_typed", "open_blackboard",
+           "with_name_reading",
            "declared_labels", "floor_cross", "hat_expressions", "rate_entries",
            "tilde_expressions"]
 
@@ -422,7 +423,10 @@ _LABELLED = re.compile(
     r"|\\[A-Za-z]+|(?:(?<![\\A-Za-z])|(?<=\^[a-z]))[A-Za-z])"
     r"(?(acc)\s*\})"
     r"(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))?"
-    r"\s*\^\s*(?P<lbl>\{\s*[a-z]+\s*\}|[a-z])")
+    r"\s*\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])")
+#: a label written before the subscript, Beard's ``R^b_{v2}``: read as ``R_{v2}^b``
+_LABEL_FIRST = re.compile(r"\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])"
+                          r"\s*(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))")
 
 
 def _parts(m) -> tuple[str, str, str]:
@@ -430,6 +434,38 @@ def _parts(m) -> tuple[str, str, str]:
     base = re.sub(r"^(\\(?:mathbf|boldsymbol|bm))(\\?[A-Za-z]+)$", r"\1{\2}", base)
     sub = re.sub(r"[\s{}_]", "", m["sub"] or "")
     return base, sub, re.sub(r"[\s{}]", "", m["lbl"])
+
+
+def _label_names(let: object) -> set[tuple[str, str, str]]:
+    """``(base, subscript, label)`` of each NAME with a lower-case superscript label that a
+    declaration of ``let`` names (a function's parameters aside: Beard's
+    ``R_{v2}^b(\\phi) = ...``, ``R^b_{v2}`` read as ``R_{v2}^b``)."""
+    names = set()
+    for d in _decls(let) or ():
+        name = re.split(r"\s*(?:\([^()]*\))?\s*[:=]", d, maxsplit=1)[0].strip()
+        m = _LABELLED.fullmatch(_LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", name))
+        if m and not m["acc"]:
+            names.add(_parts(m))
+    return names
+
+
+def labels_as_typed(let: object):
+    """The function that writes back, in a message, each labelled NAME of ``let`` that
+    :func:`declared_labels` respells (``R_{v2}^{(b)}`` and its printed ``R_v2^(b)``: the
+    ``R_{v2}^b`` the reader typed): a message names only what the user wrote."""
+    pairs = []
+    for base, sub, lbl in _label_names(let) if let is not None else ():
+        typed = f"{base}{_index('_', sub)}{_index('^', lbl)}"
+        pairs.append((f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}", typed))
+        plain = re.sub(r"\\(?:mathbf|boldsymbol|bm)|[{}\s]", "", base)
+        if re.fullmatch(r"[A-Za-z]", plain):
+            pairs.append((f"{plain}{'_' + sub if sub else ''}^({lbl})", typed))
+
+    def back(text: str) -> str:
+        for respelt, typed in pairs:
+            text = text.replace(respelt, typed)
+        return text
+    return back
 
 
 def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
@@ -444,11 +480,7 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
     decls = _decls(let)
     if decls is None:
         return latex, let, ""
-    names = set()
-    for d in decls:
-        m = _LABELLED.fullmatch(re.split(r"\s*(?:\(t\))?\s*[:=]", d, maxsplit=1)[0].strip())
-        if m and not m["acc"]:
-            names.add(_parts(m))
+    names = _label_names(decls)
     if not names:
         return latex, let, ""
 
@@ -459,12 +491,17 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
                 return m.group(0)
             glyph = f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}"
             return f"{m['acc'].strip()}{glyph}}}" if m["acc"] else glyph
-        return _LABELLED.sub(one, text)
+        return _LABELLED.sub(one, _LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", text))
 
     out = [respell(d) for d in decls]
-    shown = ", ".join(sorted(f"{b}_{s}^{lbl}" for b, s, lbl in names))
+    shown = ", ".join(sorted(f"{b}{_index('_', s)}{_index('^', lbl)}" for b, s, lbl in names))
     return respell(latex), out, (f"{shown}: a superscript frame label (a --let names it), "
                                  f"read as a label, not a power")
+
+
+def _index(mark: str, text: str) -> str:
+    """``_v``, ``_{v2}`` (``mark`` and ``text``) as a reader types it; ``""`` for no text."""
+    return "" if not text else f"{mark}{text}" if len(text) == 1 else f"{mark}{{{text}}}"
 
 
 def _decls(let: object) -> list[str] | None:
