@@ -266,8 +266,11 @@ _TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
 
 def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\tilde{X}`` (``\\widetilde``) whose braces hold a cross
-    product, a sum or a difference respelt ``[X]_\\times`` in the LaTeX and the declarations
-    (``note`` says so); else all unchanged and ``note`` is ``""``.
+    product, a sum, a difference or a juxtaposed product of glyphs (Haug's
+    ``\\widetilde{\\tilde{\\mathbf{a}}\\mathbf{b}}``, the cross-product matrix of the vector
+    ã b) respelt ``[X]_\\times`` in the LaTeX and the declarations (``note`` says so); else
+    all unchanged and ``note`` is ``""``. A tilde over one glyph is left to the glyph's
+    reading.
 
     Args and Raises: as :func:`declared_e`.
     """
@@ -275,13 +278,23 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
 
     def respell(text: str) -> str:
         return _braced_as_cross_matrix(text, _TILDE, lambda inner: bool(re.search(
-            r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner))), hits)
+            r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner))) or _juxtaposed(inner), hits)
 
     new, out = _respelt(respell, latex, let)
     if not hits:
         return latex, let, ""
     return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+_INDEX = re.compile(r"[_^]\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]+)")
+
+
+def _juxtaposed(inner: str) -> bool:
+    """Whether ``inner`` is a product of two glyphs or more written side by side
+    (``\\tilde{\\mathbf{a}}\\mathbf{b}``; ``\\mathbf{r}_{C}`` or ``\\boldsymbol\\omega'`` is
+    one)."""
+    return len(re.findall(_GLYPH, _INDEX.sub("", inner))) >= 2
 
 
 def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
