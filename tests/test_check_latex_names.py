@@ -102,6 +102,22 @@ def test_a_labelled_model_applied_to_itself_is_a_product_said_as_typed():
     assert "R_{v2}^b" in str(exc.value) and "(b)" not in str(exc.value), str(exc.value)
 
 
+@pytest.mark.parametrize("accent", [r"\tilde", r"\widetilde"])
+def test_a_prime_after_an_accent_reads_inside_where_only_the_primed_glyph_is_declared(accent):
+    r"""Nikravesh's tilde of omega', typed \tilde{\boldsymbol\omega}' (before: the glyph
+    \tilde{\boldsymbol{\omega}}' of its own, the declared omega' "does not occur")."""
+    let = [r"\boldsymbol\omega' = 2\mathbf{b}", r"\mathbf{b}: vector"]
+    r = rigidsym.check_latex(f"{accent}{{\\boldsymbol\\omega}}'\\mathbf{{b}} = \\mathbf{{0}}",
+                             let=let, repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)   # (2b) x b = 0
+    assert any(r"read as " + accent + r"{\boldsymbol\omega'}" in n for n in r.model), r.model
+    slip = f"{accent}{{\\boldsymbol\\omega}}'\\mathbf{{b}} = \\mathbf{{b}}"
+    assert _v(slip, let) == "does-not-hold"
+    # the accented glyph declared itself: a name of its own, as typed
+    own = [f"{accent}{{\\boldsymbol\\omega}}' = 2\\mathbf{{b}}", r"\mathbf{b}: vector"]
+    assert _v(f"{accent}{{\\boldsymbol\\omega}}' = 2\\mathbf{{b}}", own) == "verified"
+
+
 def test_a_declared_e_is_said_and_an_undeclared_e_stays_the_exponential():
     r = rigidsym.check_latex(r"e^2 = \mathbf{e}^T\mathbf{e}", let=[r"e = |\mathbf{e}|"],
                              repairs=False)

@@ -362,6 +362,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
+        accent_primes,
         angular_velocities,
         conjugate_c,
         cross_subscripts,
@@ -384,6 +385,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
+    latex, let, prime = accent_primes(latex, let)  # \tilde{\omega}' of a declared \omega'
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     latex, let, floor = floor_cross(latex, let)  # Trawny's \lfloor a\times\rfloor: [a]_x
     latex, let, rates = rate_entries(latex, let)  # Greenwood's \dot\epsilon_k: entries
@@ -398,8 +400,8 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         let = without_lets(let, reading.unused)
         eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
         reading.notes += said
-    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, board, column,
-                 spin):
+    for note in (labels, prime, tilde, floor, rates, subx, hat, deltas, conj, respelt, board,
+                 column, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading

@@ -51,7 +51,7 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["NAME_READING", "angular_velocities", "both_blackboard", "conjugate_c",
+__all__ = ["NAME_READING", "accent_primes", "angular_velocities", "both_blackboard", "conjugate_c",
            "cross_subscripts", "declared_blackboard", "declared_columns", "declared_deltas",
            "declared_e", "declared_identity", "labels_as_typed", "open_blackboard",
            "with_name_reading",
@@ -285,6 +285,62 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
         return latex, let, ""
     return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+_ACCENT = re.compile(r"\\(?:wide)?(?:tilde|hat)\s*\{")
+
+
+def accent_primes(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\tilde{X}'`` (``\\hat``, the wide ones) whose glyph no
+    ``--let`` declares while one declares ``X'`` (Nikravesh's ``\\tilde{\\boldsymbol\\omega}'``,
+    the tilde of the declared ``\\boldsymbol\\omega'``) respelt ``\\tilde{X'}`` in the LaTeX
+    and the declarations (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    from rigidsym.latex.declgraph import glyph_keys
+    from rigidsym.latex.shapes import LatexError
+
+    decls = _decls(let)
+    if not decls or "'" not in latex:
+        return latex, let, ""
+    declared = {x.key for x in read_lets(decls)}
+    hits: list[str] = []
+
+    def key(text: str) -> str | None:
+        try:
+            keys = glyph_keys(text)
+        except LatexError:
+            return None
+        return next(iter(keys)) if len(keys) == 1 else None
+
+    def respell(text: str) -> str:
+        out, k = [], 0
+        for m in _ACCENT.finditer(text):
+            if m.start() < k:
+                continue
+            depth, j = 1, m.end()
+            while j < len(text) and depth:
+                depth += {"{": 1, "}": -1}.get(text[j], 0)
+                j += 1
+            primes = re.match(r"\s*('+)", text[j:])
+            if depth or primes is None:
+                continue
+            inner, end = text[m.end():j - 1], j + primes.end()
+            inside = f"{text[m.start():m.end()]}{inner}{primes.group(1)}}}"
+            if key(text[m.start():end]) in declared or key(inner + primes.group(1)) \
+                    not in declared:
+                continue
+            out += [text[k:m.start()], inside]
+            hits.append(f"{text[m.start():end]}: read as {inside}")
+            k = end
+        return "".join(out) + text[k:]
+
+    new, out = _respelt(respell, latex, let)
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"{hits[0]}, the accent of the declared primed glyph (a --let "
+                      f"declares it, none the accented glyph)")
 
 
 _INDEX = re.compile(r"[_^]\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]+)")
