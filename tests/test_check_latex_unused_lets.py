@@ -55,7 +55,8 @@ def test_an_unused_let_spelt_near_an_undeclared_glyph_is_refused(pair, kind):
         msg = str(exc)
         assert "does not occur" in msg and "spelt near" in msg, msg
         return
-    # not refused: only where the two spellings are one glyph (the --let is used)
+    # not refused: only where the --let is used (the same glyph, or \phi_{2} an entry of
+    # the declared vector \phi), never an unused --let beside its near spelling
     assert not any(m.startswith("not used") for m in r.model), (used, declared, r.model)
 
 
