@@ -100,3 +100,25 @@ def test_a_books_shared_lets_decide_a_statement_that_uses_some(latex, lets, verd
     r = rigidsym.check_latex(latex, let=lets, repairs=False)
     assert r.verdict == verdict
     assert any(m.startswith("not used: ") and r"\mathbf{G} =" in m for m in r.model)
+
+
+@pytest.mark.parametrize("latex, let, near", [
+    # an undeclared hat, read by default under either of its books' readings
+    (r"\hat{\mathbf{n}}^T\hat{\mathbf{n}} = 1", [r"n: unit vector"], r"\hat{\mathbf{n}}"),
+    # a bold capital read by default as the identity
+    (r"\mathbf{I}\mathbf{x} = \mathbf{x}", [r"I: scalar", r"\mathbf{x}: vector"],
+     r"\mathbf{I}"),
+])
+def test_a_glyph_read_by_a_default_is_a_near_miss_too(latex, let, near):
+    with pytest.raises(BadInput) as exc:
+        rigidsym.check_latex(latex, let=let, repairs=False)
+    assert "does not occur" in str(exc.value) and near in str(exc.value), str(exc.value)
+
+
+def test_a_rate_of_a_declared_function_is_no_default():
+    """p-dot is read from the declared p(t): an unused p_0 beside it is only noted."""
+    r = rigidsym.check_latex(r"\dot{\mathbf{p}} = \mathbf{p}",
+                             let=[r"\mathbf{p}(t): vector", r"\mathbf{p}_0: vector"],
+                             repairs=False)
+    assert r.verdict == "does-not-hold"
+    assert any(m.startswith(r"not used: --let '\mathbf{p}_0: vector'") for m in r.model)

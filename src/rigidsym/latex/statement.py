@@ -26,9 +26,9 @@ from rigidsym.latex.hats import no_hat_reading
 from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
-from rigidsym.latex.shapes import UNDECLARED, LatexError
+from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.meanings import alternatives, said
-from rigidsym.latex.unused import unused_lets
+from rigidsym.latex.unused import defaulted_glyphs, unused_lets
 from rigidsym.latex.values import (
     entry_vectors,
     glyph_values,
@@ -315,10 +315,8 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     occurs |= entry_vectors(occurs, lets)
     unused = [x for x in lets if x.key not in occurs and not ((x.latex or x.kind.split(
         " in ")[0] in ("angle", "scalar")) and dot_key(x.key) in occurs)]
-    declared = {x.key for x in lets}
-    defaulted = {k for k in occurs - declared
-                 if (g := rd.over.get(k) or rd.glyphs.get(k)) is not None
-                 and g.kind == "free" and g.meaning == UNDECLARED}
+    defaulted = defaulted_glyphs(occurs, {x.key for x in lets}, rd,
+                                 rd.notes + list(parsed.readings))
     unused_notes = unused_lets(unused, defaulted, parsed.glyphs)
     notes, free = glyph_values(rd, lend, values,
                                 [e for chain in parsed.chains for e in chain])
