@@ -4,11 +4,11 @@ A reader shares one set of ``--let``s across a book's statements (as a document'
 file does), so a declaration a statement does not use is no error in itself. It is one when
 it may be a misspelling: the statement holds a glyph that nothing declares, read by a
 default (a free symbol of the conventional shape, a reading of an undeclared hat, the
-identity of a bold capital), whose spelling is near the ``--let``'s NAME (the same letter under another
-font, accent, subscript, superscript, left index or prime: ``\\mathbf{L}`` and ``L_1``,
-``\\omega`` and ``\\hat{\\omega}``). Then the ``--let`` was likely meant for that glyph, which
-has fallen back to the default reading: bad input, naming both spellings. Otherwise the
-``--let`` is ignored and the reading says so (``not used: ...``).
+identity of a bold capital), whose spelling is near the ``--let``'s NAME (the same letter
+under another font, accent, subscript, superscript, left index or prime: ``\\mathbf{L}``
+and ``L_1``, ``\\omega`` and ``\\hat{\\omega}``). Then the ``--let`` was likely meant for
+that glyph, which has fallen back to the default reading: bad input, naming both
+spellings. Otherwise the ``--let`` is ignored and the reading says so (``not used: ...``).
 """
 
 from __future__ import annotations
