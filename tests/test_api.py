@@ -7,6 +7,8 @@ import pytest
 import rigidsym
 from rigidsym.registry.declarations import REGISTRY, VERDICTS, BadInput, load_all
 
+pytestmark = pytest.mark.xdist_group("api")  # its module fixtures built on one worker
+
 load_all()
 
 

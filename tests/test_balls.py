@@ -22,6 +22,8 @@ from rigidsym.core.settings import ENGINE
 from rigidsym.zero import make_plan
 from rigidsym.zero.program import unparametrised
 
+pytestmark = pytest.mark.xdist_group("balls")  # its module fixtures built on one worker
+
 e = unit_vector("be")
 phi = angle("bphi")
 R = rotation("bR")

@@ -23,6 +23,8 @@ from rigidsym.registry.declarations import REGISTRY, load_all
 from rigidsym.registry.usermodules import load as load_module
 from rigidsym.report.record import counterexample_record, result_record
 
+pytestmark = pytest.mark.xdist_group("bookpoint")  # its module fixtures built on one worker
+
 ROOT = Path(__file__).resolve().parents[1]
 load_all()
 

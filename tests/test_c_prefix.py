@@ -24,6 +24,8 @@ import numpy as np
 import pytest
 from _cmake import configure_and_build
 
+pytestmark = pytest.mark.xdist_group("c_prefix")  # its module fixtures built on one worker
+
 ROOT = Path(__file__).resolve().parents[1]
 USER_MODULE = ROOT / "examples" / "c" / "my_kernels.py"
 #: the warning flags of a strict C++ application

@@ -151,6 +151,17 @@ def test_book_section_names_glyphs_and_an_ambiguous_glyph_asks_for_let(capsys):
     assert code == 2 and "ambiguous" in err and "--let" in err and "3.5" in err
 
 
+def test_without_book_no_glyph_of_the_chapter_reaches_a_readers_latex(capsys):
+    """The chapter's glyph table names glyphs only where a reader says --book: E e = 0
+    holds for the chapter's E = CPM(e) and not for a 3 x 3 matrix of one's own."""
+    code, out, _ = run_cli(capsys, "--latex", r"\mathbf{E}\mathbf{e} = \mathbf{0}",
+                           "--book", "3.2")
+    assert code == 0 and "cross-product matrix of e" in out
+    code, out, _ = run_cli(capsys, "--latex", r"\mathbf{E}\mathbf{e} = \mathbf{0}",
+                           "--no-repairs")
+    assert code == 1 and "cross-product matrix" not in out
+
+
 MODULE = '''
 import sympy as sp
 from rigidsym import Statement, angle, cpm, equation, expm, mat, unit_vector, vec

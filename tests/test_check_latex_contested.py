@@ -254,3 +254,99 @@ def test_a_sized_blackboard_i_is_the_identity_and_a_twice_declared_one_refused()
     with pytest.raises(BadInput, match="declared twice"):
         _check(r"\mathbb{I}\mathbf{a} = \mathbf{a}",
                A + [r"\mathbb{I}: identity", r"\mathbb{I}: matrix"])
+
+
+#: Jain (2011) ch. 1: the rigid-body transformation operator φ(l) = [I l~; 0 I]
+PHI = [r"\mathbf{l}: vector",
+       r"\phi(\mathbf{l}) = \begin{bmatrix} \mathbf{I} & \tilde{\mathbf{l}} \\ \mathbf{0} & "
+       r"\mathbf{I} \end{bmatrix}"]
+#: Jain's φ^*, the transpose: [I 0; -l~ I] (l~ is skew); true of the transpose only
+STAR_TRANSPOSE = (r"\phi^*(\mathbf{l}) = \begin{bmatrix} \mathbf{I} & \mathbf{0} \\ "
+                  r"-\tilde{\mathbf{l}} & \mathbf{I} \end{bmatrix}")
+#: Featherstone's X^* = X^{-T}: φ(l)^{-1} = φ(-l), so φ^{-T} = [I 0; l~ I]; true of the dual only
+STAR_DUAL = (r"\phi^*(\mathbf{l}) = \begin{bmatrix} \mathbf{I} & \mathbf{0} \\ "
+             r"\tilde{\mathbf{l}} & \mathbf{I} \end{bmatrix}")
+
+
+@pytest.mark.parametrize("reading, latex, verdict", [
+    ("transpose", STAR_TRANSPOSE, "verified"),
+    ("transpose", STAR_DUAL, "does-not-hold"),
+    ("dual", STAR_DUAL, "verified"),
+    pytest.param("dual", STAR_TRANSPOSE, "does-not-hold", marks=SLOW),
+])
+def test_a_declared_star_is_used_by_both_semantics_and_said(reading, latex, verdict):
+    r = _check(latex, PHI + [f"star: {reading}"])
+    assert r.verdict == verdict, r.model
+    assert any(m.startswith(f"X^*: read as the {reading}") and "declared by --let 'star" in m
+               for m in r.model), r.model
+    assert any(m.startswith("numeric cross-check") for m in r.model), r.model
+
+
+@pytest.mark.parametrize("latex, transpose, dual", [
+    (STAR_TRANSPOSE, "verified", "does-not-hold"),
+    pytest.param(STAR_DUAL, "does-not-hold", "verified", marks=SLOW),
+])
+def test_an_undeclared_star_is_asked_naming_each_reading_and_its_verdict(latex, transpose,
+                                                                         dual):
+    with pytest.raises(BadInput) as e:
+        _check(latex, PHI)
+    msg = str(e.value)
+    assert f"the transpose X^T (Jain); each \\tilde{{x}} of a 3-vector its cross-product " \
+           f"matrix [x]_\\times: {transpose}" in msg, msg
+    assert f"the dual (X^{{-1}})^T (Featherstone); each \\tilde{{x}} of a 3-vector its " \
+           f"cross-product matrix [x]_\\times: {dual}" in msg, msg
+    assert "--let 'star: transpose'" in msg and "--let 'star: dual'" in msg, msg
+    assert "Jain (2011)" in msg and "Featherstone (2008)" in msg, msg
+    assert "\\mathbf{l})" not in msg, msg  # the operand's parameter is not the matrix
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\operatorname{tr}(\phi^*(\mathbf{l})) = 6", "verified"),
+    pytest.param(r"\operatorname{tr}(\phi^*(\mathbf{l})) = 5", "does-not-hold", marks=SLOW),
+])
+def test_a_star_whose_readings_agree_is_decided_and_said(latex, verdict):
+    r = _check(latex, PHI)
+    assert r.verdict == verdict
+    assert any("readings type-check" in m and f"all {verdict}" in m and "X^*" in m
+               for m in r.model), r.model
+
+
+def test_a_star_of_a_6_vector_is_its_transpose_and_of_a_3_vector_refused_saying_why():
+    v = [r"\mathcal{V}: 6-vector", r"\mathfrak{f}: 6-vector"]
+    assert _check(r"\mathcal{V}^*\mathfrak{f} = \mathfrak{f}^T\mathcal{V}", v).verdict == \
+        "verified"
+    with pytest.raises(ValueError, match=r"\^\{\*\} of a 3-vector: expected a 4-vector.*6x6"):
+        _check(r"\mathbf{a}^*\mathbf{a} = 1", A)
+
+
+def test_a_star_reading_no_book_has_is_refused_naming_both():
+    with pytest.raises(BadInput, match=r"'star: transpose', 'star: dual'"):
+        _check(STAR_TRANSPOSE, PHI + ["star: adjugate"])
+
+
+#: Lee–Leok–McClamroch (2010) sec. II: the hat map's symmetric identity, braces as grouping
+LEE = (r"\hat{x}A + A^T\hat{x} = (\{\operatorname{tr}[A]I_{3\times 3} - A\}x)^\wedge")
+LEE_LETS = [r"A: matrix", r"x: vector"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (LEE, "verified"),
+    pytest.param(LEE.replace("- A\\}", "+ A\\}"), "does-not-hold", marks=SLOW),  # the sign
+])
+def test_braces_around_an_expression_group_and_are_said(latex, verdict):
+    r = rigidsym.check_latex(latex, let=LEE_LETS, notation="murray-li-sastry", repairs=False)
+    assert r.verdict == verdict, r.model
+    assert any("braces around an expression, read as parentheses" in m for m in r.model), \
+        r.model
+
+
+def test_braces_of_one_glyph_or_of_a_set_are_not_read_as_a_group():
+    from rigidsym.latex.respell import grouping_braces
+
+    for latex in (r"\{\boldsymbol\omega\} = \mathbf{a}", r"\{x, y\} = \{y, x\}",
+                  r"\{x \mid x^2 = 1\} = \{1\}"):
+        assert grouping_braces(latex, [])[0] == latex, latex
+    out, _, note = grouping_braces(r"(\{a + \{b c\}\}x)", [])
+    assert out == r"((a + (b c))x)" and note
+    with pytest.raises(ValueError, match=r"\\\{"):  # an undeclared glyph's braces: unread
+        _check(r"\{\boldsymbol\omega\} = \boldsymbol\omega", [r"\boldsymbol\omega: vector"])

@@ -95,3 +95,20 @@ def test_the_tangent_order_disagrees_exactly_where_the_readings_differ(mine, the
                                    ).verdict
     equal = _second(HAT, XI, translation=mine == "translation first")
     assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)
+
+
+#: Jain (2011) ch. 1: φ(l) = [I l~; 0 I], and its transpose written out, [I 0; -l~ I]: true
+#: of Jain's φ^* (the transpose), false of Featherstone's dual φ^{-T} = [I 0; l~ I]
+PHI = [r"\mathbf{l}: vector",
+       r"\phi(\mathbf{l}) = \begin{bmatrix} \mathbf{I} & \tilde{\mathbf{l}} \\ \mathbf{0} & "
+       r"\mathbf{I} \end{bmatrix}"]
+STAR = (r"\phi^*(\mathbf{l}) = \begin{bmatrix} \mathbf{I} & \mathbf{0} \\ -\tilde{\mathbf{l}} "
+        r"& \mathbf{I} \end{bmatrix}")
+
+
+@pytest.mark.parametrize("mine", conventions.STAR)
+@pytest.mark.parametrize("theirs", [r.name for r in CONTESTED["star"].readings])
+def test_the_star_disagrees_exactly_where_the_readings_differ(mine, theirs):
+    verdict = rigidsym.check_latex(STAR, let=PHI + [f"star: {theirs}"], repairs=False).verdict
+    equal = _second(STAR, PHI, {conventions.choice_key("star", "X^*"): mine})
+    assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)

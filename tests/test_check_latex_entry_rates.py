@@ -79,3 +79,24 @@ def test_the_rate_of_an_entry_of_a_vector_of_time_is_the_entry_of_its_rate(latex
     r = rigidsym.check_latex(latex, let=[E_T], repairs=False)
     assert r.verdict == verdict, r.model
     assert any("of the rate of \\mathbf{e}" in n for n in r.model), r.model
+
+
+#: Kane & Levinson's Euler parameters: a plain letter, \epsilon(t): unit 4-vector
+EPS_T = r"\epsilon(t): unit 4-vector"
+
+
+def test_the_entry_rates_of_a_plain_vector_of_time_are_the_entries_of_its_rate():
+    out, _, note = rate_entries(r"\dot\epsilon_1 = x", [EPS_T])
+    assert out == r"\dot{\epsilon}_{1:1} = x" and r"entry 1 of \dot{\epsilon}" in note
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\epsilon_1\dot\epsilon_1 + \epsilon_2\dot\epsilon_2 + \epsilon_3\dot\epsilon_3 + "
+     r"\epsilon_4\dot\epsilon_4 = 0", "verified"),
+    pytest.param(r"\epsilon_1\dot\epsilon_1 + \epsilon_2\dot\epsilon_2 + "
+                 r"\epsilon_3\dot\epsilon_3 = 0", "does-not-hold", marks=pytest.mark.slow),
+])
+def test_kanes_entry_rates_of_a_unit_4_vector_of_time_are_tangent(latex, verdict):
+    r = rigidsym.check_latex(latex, let=[EPS_T], repairs=False)
+    assert r.verdict == verdict, r.model
+    assert any(r"entry 1 of \dot{\epsilon}" in n for n in r.model), r.model

@@ -301,3 +301,24 @@ def test_dot_over_a_labelled_glyph(sign, verdict):
     r = rigidsym.check_latex(r"\dot{C}_B^I = C_B^I(\boldsymbol\omega_{IB}^B\times)",
                              let=[*SAVAGE, BORTZ.format(sign)], repairs=False)
     assert r.verdict == verdict
+
+
+#: Taylor (2005) ch. 10, the free symmetric top: a model in the time t itself
+TOP = r"\lambda_1\dot\omega_1 - (\lambda_2 - \lambda_3)\omega_2\omega_3 = 0"
+TOP_LETS = [r"\lambda_2 = \lambda_1",
+            r"\Omega = \frac{(\lambda_3 - \lambda_1)\omega_3}{\lambda_1}",
+            r"\omega_1 = \omega_0\cos\Omega t", r"\omega_2 = \omega_0\sin\Omega t"]
+
+
+def test_the_rate_of_a_model_in_t_itself_is_refused_saying_what_to_write():
+    import re
+
+    with pytest.raises(ValueError, match=r"written in the time t itself") as e:
+        rigidsym.check_latex(TOP, let=TOP_LETS, repairs=False)
+    said = re.findall(r"--let '([^']*)'", str(e.value))[:3]
+    assert said == [r"\theta(t): angle", r"\dot\theta = \Omega", r"\omega_{1} = \omega_0\cos\theta"]
+    # what it says, written for both models, decides the statement and its slip
+    lets = [x.replace(r"\Omega t", r"\theta") for x in TOP_LETS] + said[:2]
+    assert rigidsym.check_latex(TOP, let=lets, repairs=False).verdict == "verified"
+    slip = [x.replace(r"= \omega_0\sin", r"= -\omega_0\sin") for x in lets]
+    assert rigidsym.check_latex(TOP, let=slip, repairs=False).verdict == "does-not-hold"

@@ -21,6 +21,8 @@ import pytest
 
 from rigidsym.cli import main
 
+pytestmark = pytest.mark.xdist_group("document_certificates")  # module fixtures once
+
 ROOT_ = Path(__file__).resolve().parents[1]
 if str(ROOT_ / "certcheck" / "src") not in sys.path:  # the locator tests import certcheck
     sys.path.insert(0, str(ROOT_ / "certcheck" / "src"))  # (a distribution of its own)

@@ -14,6 +14,8 @@ import rigidsym.exercises as ex
 from rigidsym.cli import main
 from rigidsym.course.worked import to_json_value
 
+pytestmark = pytest.mark.xdist_group("exam")  # its module fixtures built on one worker
+
 SPEC = {"title": "Quiz", "seed": 7, "problem": [
     {"exercise": "3.19", "data": {"d": ["0.1", 0, 0], "Q": [[0, -1, 0], [1, 0, 0], [0, 0, 1]]}},
     {"exercise": "3.4", "variants": 1},

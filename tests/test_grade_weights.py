@@ -14,6 +14,8 @@ from rigidsym.course.gradebook import grade_class, solution_of
 from rigidsym.course.grading import key_array
 from rigidsym.course.roster import class_exam
 
+pytestmark = pytest.mark.xdist_group("grade_weights")  # its module fixtures built on one worker
+
 SPEC = {"title": "Quiz", "slip_credit": 0.5, "slips_along_the_way": False,
         "problem": [{"exercise": "3.4", "data": {}}, {"exercise": "3.4", "data": {}}]}
 

@@ -6,6 +6,7 @@ import warnings
 
 import numpy as np
 import pytest
+from _profile import fast_or_slow
 
 from rigidsym import kernels as K
 from rigidsym.kernels.runtime import state as _state
@@ -185,7 +186,9 @@ def test_c_batch_counts_overflow_rows_across_blocks(name, arg, scale, backend):
     assert count == len(bad) and flagged.tolist() == bad
 
 
-@pytest.mark.sample(fraction=0.5)
+# quick: NumPy; C (its own extension compiled, about 13 s) thorough: a user directory's C
+# build has its quick test in test_build.py (never loads the package's kernels)
+@pytest.mark.parametrize("backend", fast_or_slow(["numpy", "c"], {"numpy"}), indirect=True)
 def test_load_other_generated_directory(tmp_path, backend):
     """load(DIR) builds the same checked namespace from any generated directory (here two
     kernels written by the generator into a temporary folder)."""

@@ -56,12 +56,19 @@ def test_wedge_and_vee_are_hat_and_vee_and_an_infix_wedge_is_refused():
         _read(r"\mathbf{a} \wedge \mathbf{b} = \mathbf{0}")
 
 
-def test_featherstones_dual_is_for_a_spatial_transform_only():
+def test_featherstones_dual_is_a_spatial_transforms_and_another_6x6_stars_is_asked():
     assert _v(r"{}^B X_A^{*} = {}^B X_A^{-T}", [r"{}^B X_A: spatial transform"]) == "verified"
     assert _v(r"{}^B X_A^{*} = {}^B X_A^{T}",
               [r"{}^B X_A: spatial transform"]) == "does-not-hold"
-    with pytest.raises(LatexError, match="spatial transform"):
-        rigidsym.check_latex(r"X^{*} = X^{-T}", let=[r"X: 6x6 matrix"])
+    # of another 6x6 matrix (Jain's φ(l) = [I l~; 0 I], whose inverse is φ(-l)), Jain's
+    # transpose and Featherstone's dual disagree: asked
+    phi = [r"\mathbf{l}: vector", r"\phi(\mathbf{l}) = \begin{bmatrix} \mathbf{I} & "
+           r"\tilde{\mathbf{l}} \\ \mathbf{0} & \mathbf{I} \end{bmatrix}"]
+    with pytest.raises(ValueError, match=r"transpose X\^T \(Jain\);[^:]*: does-not-hold.*"
+                                         r"dual[^:]*: verified.*--let 'star: dual'.*spatial "
+                                         r"transform"):
+        rigidsym.check_latex(r"\phi^*(\mathbf{l}) = \phi(-\mathbf{l})^T", let=phi,
+                             repairs=False)
 
 
 def test_spatial_cross_products_and_the_operator_binding_to_the_factor_before_it():

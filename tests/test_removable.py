@@ -25,6 +25,8 @@ from rigidsym.codegen.removable.series import (
 )
 from rigidsym.codegen.removable.singularities import QuotientBase, rewrite
 
+pytestmark = pytest.mark.xdist_group("removable")  # its module fixtures built on one worker
+
 U = 2.0**-53
 NORMS = [0.0, 1e-12, 1e-8, 1e-4, 1e-2, 1.0]
 

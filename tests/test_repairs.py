@@ -22,6 +22,8 @@ from rigidsym.registry import declarations as registry
 from rigidsym.registry import usermodules
 from rigidsym.registry.declarations import REGISTRY
 
+pytestmark = pytest.mark.xdist_group("repairs")  # its module fixtures built on one worker
+
 ROOT = Path(__file__).resolve().parents[1]
 SLIPS = ROOT / "tests" / "data" / "repair_slips.py"
 EXAMPLE = ROOT / "examples" / "rotation_identities.py"

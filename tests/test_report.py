@@ -16,6 +16,8 @@ from rigidsym.checking.checker import check
 from rigidsym.cli import report as cli_report
 from rigidsym.registry.declarations import load_all
 
+pytestmark = pytest.mark.xdist_group("report")  # its module fixtures built on one worker
+
 load_all()
 ROOT = Path(__file__).resolve().parents[1]
 COMMITTED = ROOT / "generated" / "report"

@@ -16,6 +16,8 @@ from rigidsym.registry.declarations import load_all
 from rigidsym.report.html import to_html
 from rigidsym.report.markdown import to_markdown
 
+pytestmark = pytest.mark.xdist_group("report_words")  # its module fixtures built on one worker
+
 load_all()
 ROOT = Path(__file__).resolve().parents[1]
 COMMITTED = ROOT / "generated" / "report"

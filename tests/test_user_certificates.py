@@ -22,6 +22,8 @@ import pytest
 
 from rigidsym.cli import main
 
+pytestmark = pytest.mark.xdist_group("user_certificates")  # its module fixtures built on one worker
+
 ROOT = Path(__file__).resolve().parents[1]
 MODULE = ROOT / "examples" / "rotation_notes.py"
 TEXT = ROOT / "examples" / "rotation_notes.md"

@@ -275,15 +275,21 @@ def test_wheel_ships_the_torch_and_jax_programs(wheel):
 
 
 def test_wheel_ships_the_latex_reader(wheel):
-    """the grammar, the glyph table, the per-id notes and every book's notation table
-    (``--notation NAME``) are package data."""
+    """the grammar and every book's notation table (``--notation NAME``) are package data,
+    and so are the chapter's data: its reading with its glyph table, the transcription's
+    per-id notes, the handouts' words of the exercises."""
     from rigidsym.latex.notations import NOTATIONS
 
     with zipfile.ZipFile(wheel) as z:
         names = set(z.namelist())
-    for f in ("grammar.lark", "glyphs.csv", "notes.json", "transformer/chapter.py",
+    for f in ("grammar.lark", "transformer/chapter.py",
               "transcription.py", *(f"notations/{n}.txt" for n in NOTATIONS)):
         assert f"rigidsym/latex/{f}" in names, f
+    # the chapter's data, beside its declarations in the book's package
+    for f in ("angeles-chapter3.reading.toml", "angeles-chapter3.glyphs.csv",
+              "angeles-chapter3.transcription-notes.json", "exercises/handout.toml",
+              "exercises/notebooks-README.md"):
+        assert f"rigidsym/derivations/{f}" in names, f
 
 
 _DISPATCH = """

@@ -372,6 +372,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         declared_e,
         declared_labels,
         floor_cross,
+        grouping_braces,
         hat_expressions,
         rate_entries,
         tilde_expressions,
@@ -381,6 +382,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     step("reading")
     latex, let, board = declared_blackboard(latex, let)  # M&R's inertia \mathbb{I}: a name
     latex, let, column = declared_columns(latex, let)  # Ginsberg's \{\omega\}: omega
+    latex, let, braces = grouping_braces(latex, let)  # Lee's \{tr[A] I - A\}x: ( )
     latex, let, spin = angular_velocities(latex, let)  # ω: angular velocity of Q
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
@@ -401,7 +403,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
         reading.notes += said
     for note in (labels, prime, tilde, floor, rates, subx, hat, deltas, conj, respelt, board,
-                 column, spin):
+                 column, braces, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading
@@ -486,10 +488,12 @@ def _choice_words(key: str) -> str:
     if key.endswith(" shape"):
         return (f"{key[:-6]} (a bold capital no --let declares) can be a 3×3 matrix or a "
                 f"3-vector")
-    from rigidsym.latex.transformer.meanings import is_cross_bracket
+    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
     if is_cross_bracket(key):
         return _cross_words(key)
+    if key == STAR_POINT:
+        return _star_words()
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -514,6 +518,16 @@ def _cross_words(key: str) -> str:
             + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
 
 
+def _star_words() -> str:
+    """``X^*`` of a 6x6 matrix in words: its readings and their books
+    (:data:`rigidsym.latex.contested.CONTESTED`, "star")."""
+    from rigidsym.latex.contested import construct
+
+    c = construct("star")
+    return ("X^* of a 6x6 matrix (the star) can be read as "
+            + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
+
+
 def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
@@ -524,8 +538,12 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
-    from rigidsym.latex.transformer.meanings import is_cross_bracket
+    from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
+    if key == STAR_POINT:
+        return ("--let 'star: transpose' (Jain's) or --let 'star: dual' (Featherstone's), "
+                "or write X^T for the transpose and X^{-T} for the dual (a name of "
+                "Featherstone's: --let 'X: spatial transform', whose X^* is the dual)")
     if is_cross_bracket(key):
         left, x = key[1:].rsplit("\\", 1)[0].rsplit(" ", 1)
         return (f"--let 'bracket cross: content' or --let 'bracket cross: bind', or write "

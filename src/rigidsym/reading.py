@@ -9,6 +9,9 @@ words are those of ``--let`` (``docs/reading-files.md`` is the reference)::
     [reading]
     format = 1
     page = "notes.md"                      # the text this is the reading of (relative)
+    glyphs = "notes.glyphs.csv"            # optional: its glyph table (relative); the
+                                           # book's is read by the LaTeX reader for the
+                                           # declarations' LaTeX and --book SECTION
 
     [conventions]                          # each said back in every report
     quaternion_product = "hamilton"        # or "jpl", "hamilton-scalar-last"
@@ -45,7 +48,7 @@ from pathlib import Path
 from rigidsym.core.errors import BadInput
 
 __all__ = ["CLASSES", "CONVENTIONS", "FORMAT", "IdReading", "Let", "Reading", "lets_for",
-           "load_reading", "parse_reading", "reading_sha256", "sidecar"]
+           "glyph_file", "load_reading", "parse_reading", "reading_sha256", "sidecar"]
 
 #: the format this module reads (``[reading] format``)
 FORMAT = 1
@@ -140,6 +143,11 @@ class Reading:
         path: the file (``None`` for a reading parsed from text).
         sha256: the SHA-256 of the file's bytes (hex).
         page: the page it reads, relative to the file (``None`` if not named).
+        glyphs: its glyph table, a CSV relative to the file (``None`` if not named):
+            each glyph's name, shape and kind per section (:mod:`rigidsym.latex.table`).
+            The book's reading's is the one the LaTeX reader consults (a declaration's
+            LaTeX, ``check --latex --book``); a document's relations take their glyphs
+            from its ``[[let]]`` lines.
         conventions: the conventions it fixes (keys of :data:`CONVENTIONS`).
         lets: its declarations, in order.
         ids: what it says of ids, by id.
@@ -151,6 +159,7 @@ class Reading:
     conventions: dict[str, str] = field(default_factory=dict)
     lets: tuple[Let, ...] = ()
     ids: dict[str, IdReading] = field(default_factory=dict)
+    glyphs: str | None = None
 
 
 def reading_sha256(data: bytes) -> str:
@@ -196,12 +205,15 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
     head = doc.get("reading")
     if not isinstance(head, dict) or head.get("format") != FORMAT:
         raise _bad(where, f"expected a [reading] table with format = {FORMAT}")
-    extra = sorted(set(head) - {"format", "page", "title"})
+    extra = sorted(set(head) - {"format", "page", "title", "glyphs"})
     if extra:
         raise _bad(where, f"[reading]: unknown key {extra[0]!r}")
     page = head.get("page")
     if page is not None:
         _text(page, where, "[reading] page")
+    glyphs = head.get("glyphs")
+    if glyphs is not None:
+        _text(glyphs, where, "[reading] glyphs")
     conventions = doc.get("conventions", {})
     if not isinstance(conventions, dict):
         raise _bad(where, "[conventions] must be a table")
@@ -214,7 +226,8 @@ def parse_reading(data: bytes | str, *, path: Path | None = None) -> Reading:
                               f"{', '.join(CONVENTIONS[key])}")
     lets = _lets(doc, where)
     ids_out = _ids(doc, where)
-    return Reading(path, reading_sha256(raw), page, dict(conventions), tuple(lets), ids_out)
+    return Reading(path, reading_sha256(raw), page, dict(conventions), tuple(lets), ids_out,
+                   glyphs)
 
 
 
@@ -272,7 +285,7 @@ def _ids(doc: dict, where: str) -> dict[str, IdReading]:
             ids_out[i] = IdReading(i, cls)
     ids_table = doc.get("id", {})
     if not isinstance(ids_table, dict):
-        raise _bad(where, "id must be a table of ids ([id.\"3.1\"])")
+        raise _bad(where, "id must be a table of ids ([id.\"ID\"])")
     for i, entry in ids_table.items():
         here = f"[id.{i!r}]"
         if not isinstance(entry, dict):
@@ -307,6 +320,24 @@ def load_reading(path: str | Path) -> Reading:
     except OSError as exc:
         raise BadInput(f"reading {p}: cannot read the file ({exc.strerror})") from None
     return parse_reading(data, path=p)
+
+
+def glyph_file(reading: Reading) -> Path | None:
+    """The glyph table a reading names (``[reading] glyphs``), beside the reading file.
+
+    Returns:
+        Its path, or ``None`` where the reading names none.
+
+    Raises:
+        BadInput: the reading names a table but was parsed from text (no file to be
+            beside), naming the key.
+    """
+    if reading.glyphs is None:
+        return None
+    if reading.path is None:
+        raise BadInput(f"reading <text>: [reading] glyphs = {reading.glyphs!r} names a file, "
+                       f"but the reading has no path to find it beside")
+    return reading.path.parent / reading.glyphs
 
 
 def sidecar(page: str | Path) -> Path:

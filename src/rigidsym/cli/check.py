@@ -62,8 +62,9 @@ def add_arguments(c) -> None:
                         "value may hold several separated by '; '; default: none, every "
                         "symbol free with the book's conventional shape)")
     c.add_argument("--book", metavar="SECTION",
-                   help="take the glyphs' meanings from the glyph table's rows of this "
-                        "section of the chapter (3.2, 3.4.2, ...)")
+                   help="read the LaTeX as the book's: the glyphs' meanings from the rows "
+                        "of this section (3.2, 3.4.2, ...) of the glyph table the book's "
+                        "reading names (default: none, the text is one's own)")
     c.add_argument("--notation", metavar="NAME",
                    help="a book's symbol table: lynch-park, murray-li-sastry, siciliano, "
                         "spong, craig, featherstone, barfoot, sola, corke, jpl (what its symbols "

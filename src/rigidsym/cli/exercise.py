@@ -56,8 +56,9 @@ def add_arguments(p) -> None:
     p.add_argument("--data", metavar="FILE.json",
                    help="the data as a JSON object {name: value}; JSON numbers with a "
                         "decimal point are floats, read as measurements; strings are exact")
-    p.add_argument("--tol", help="tolerance of measured data (Exercises 3.1, 3.4, 3.5, 3.6, "
-                                 "3.7, 3.14, 3.19); given, it selects the least-squares path")
+    p.add_argument("--tol", help="tolerance of measured data (the exercises whose data are "
+                                 "measurements, as --parameters says); given, it selects the "
+                                 "least-squares path")
     p.add_argument("--grade", metavar="ANSWERS",
                    help="grade a student's answers (a JSON file {name: value}, or a folder "
                         "or CSV of them for a class) against the solution on the data; "
@@ -169,8 +170,7 @@ def _run(args) -> int:
     from rigidsym.course import exercise_parameters as parameters
 
     if args.all and args.id:
-        print("rigidsym: error: give one exercise id (e.g. 3.10) or --all, not both",
-              file=sys.stderr)
+        print("rigidsym: error: give one exercise id or --all, not both", file=sys.stderr)
         return EXIT_BAD_INPUT
     if not args.all and not args.id:
         return _list()
@@ -284,7 +284,8 @@ def _list() -> int:
     modules' ``TITLE`` constants (nothing is solved)."""
     from rigidsym.course import EXERCISE_IDS, exercise_module
 
-    print("The chapter's 21 exercises (rigidsym exercise 3.10 solves one; --all solves all):")
+    print(f"The book's {len(EXERCISE_IDS)} exercises (rigidsym exercise {EXERCISE_IDS[0][2:]} "
+          f"solves one; --all solves all):")
     for i in EXERCISE_IDS:
         print(f"  {i[2:]:5s} {getattr(exercise_module(i), 'TITLE', '')}")
     return 0

@@ -42,7 +42,8 @@ def add_arguments(v) -> None:
                    help="ids like 3.16, 3.96 (all its parts), thm3.2.1 (default: the whole "
                         "chapter, or the --module's ids)")
     v.add_argument("--section", action="append", metavar="S",
-                   help="a section 3.2 ... 3.8 (repeatable; default: none)")
+                   help="a section of the book (repeatable; one it does not have is "
+                        "refused, naming those it has; default: none)")
     v.add_argument("--json", metavar="PATH",
                    help="also write the results (JSON schema 2) to this file (default: none)")
     v.add_argument("--format", choices=FORMATS,

@@ -254,8 +254,8 @@ _UNIT_TANGENT = (
     "{a} is a unit vector: d/d{a} is the ambient derivative (all components independent); "
     "along the sphere only directions d{a} with {a}.d{a} = 0 are admissible (restrict "
     "jac[.][{a!r}] to them). The rates of the rotation invariants in terms of omega are the "
-    "book's N, L, H (3.76), with the left inverses N~, L~, H~ (3.77) (kernels N_matrix, "
-    "L_matrix, H_matrix, ...).")
+    "book's N, L, H, with the left inverses N~, L~, H~ (kernels N_matrix, L_matrix, "
+    "H_matrix, ...).")
 
 #: the kinds by name (:func:`register` adds one)
 KINDS: dict[str, Kind] = {}
@@ -347,7 +347,8 @@ register(Kind(
     project=_project_rotation, curve=_curve_rotation,
     tangent="{a} is a rotation: d/d{a} is the ambient derivative over its 9 entries; "
             "admissible directions are d{a} = CPM(theta) {a} (tangent space of SO(3)); their "
-            "relation to the rates of the invariants is N, L, H (3.76)-(3.77)."))
+            "relation to the rates of the invariants is the book's N, L, H (kernels N_matrix, "
+            "L_matrix, H_matrix)."))
 register(Kind("angle", (), "angle", "angle, half-angle tangent", half_angle=True))
 
 

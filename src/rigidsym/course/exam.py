@@ -29,7 +29,7 @@ import types
 from pathlib import Path
 
 from rigidsym.core.files import write_atomic
-from rigidsym.course.exam_text import ASKED, box_label, task
+from rigidsym.course.exam_text import answers_asked, box_label, task
 from rigidsym.course.worked import (
     exercise_module,
     normalise_id,
@@ -73,11 +73,14 @@ def read_spec(spec) -> dict:
         except (OSError, tomllib.TOMLDecodeError) as exc:
             raise ValueError(f"spec: cannot read {spec}: {exc}") from None
     problems = spec.get("problem")
+    from rigidsym.course.worked import EXERCISE_IDS
+
+    example = f'exercise = "{EXERCISE_IDS[0][2:]}"'  # the book's first exercise
     if not isinstance(problems, list) or not problems:
-        raise ValueError("spec: expected at least one [[problem]] with exercise = \"3.4\"")
+        raise ValueError(f"spec: expected at least one [[problem]] with {example}")
     for k, p in enumerate(problems, 1):
         if not isinstance(p, dict) or "exercise" not in p:
-            raise ValueError(f"spec: problem {k} has no exercise (e.g. exercise = \"3.4\")")
+            raise ValueError(f"spec: problem {k} has no exercise (e.g. {example})")
         ex_id = normalise_id(str(p["exercise"]))
         if "data" in p and "variants" in p:
             raise ValueError(f"spec: problem {k} gives both data and variants; one of them")
@@ -275,7 +278,7 @@ def asked(s) -> list[str]:
     in words is read by the instructor, not boxed)."""
     from rigidsym.course.grading import gradeable
 
-    only = ASKED.get(s.id)
+    only = answers_asked(s.id)
     return [n for n, v in s.answers.items() if not isinstance(v, str) and gradeable(v)
             and (only is None or n in only)]
 

@@ -97,6 +97,28 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
         r"(--let '\mathbb{I}: symmetric matrix', --let '\mathbb{I} = "
         r"\operatorname{diag}(I_1, I_2, I_3)')"),
     Construct(
+        "star", r"X^{*} of a 6x6 matrix, \phi^*(\mathbf{l})",
+        (Reading("transpose", "the transpose X^T (the adjoint of a real operator)",
+                 "Jain (2011) ch. 1, Rodriguez–Jain–Kreutz-Delgado (1991): the rigid-body "
+                 "transformation operator's φ^*"),
+         Reading("dual", "the dual of a motion transform, the inverse transpose (X^{-1})^T of "
+                 "any invertible 6x6 matrix; of a spatial transform [E 0; B E] it is "
+                 "[E, -E Bᵀ E; 0, E] by the blocks",
+                 "Featherstone (2008) (2.25)")),
+        r"--let 'star: transpose' or --let 'star: dual' (or write X^T for the transpose, "
+        r"X^{-T} for the dual; --let 'X: spatial transform' makes X Featherstone's, whose "
+        r"X^* is the dual)"),
+    Construct(
+        "braces", r"\{ ... \}",
+        (Reading("group", "parentheses around an expression that is no single glyph",
+                 r"Lee–Leok–McClamroch (2010) sec. II: (\{tr[A] I - A\}x)^∧"),
+         Reading("column", r"the column matrix of a glyph's components, \{\omega\}",
+                 "Ginsberg (2008) Engineering Dynamics")),
+        "decided by the content: around an expression the braces group (the column of its "
+        "components is the same value), around one glyph they are a column only where a "
+        r"--let names it (--let '\{\omega\}: vector'); braces holding a list, a bar or a "
+        "condition (a set's) are not read"),
+    Construct(
         "exponential", r"e^{X}",
         (Reading("scalar", "the scalar exponential, where the exponent is a scalar "
                  "(e^{\\operatorname{tr} X}, e^{i\\theta})", "Hall (2015) Thm 2.12 (Jacobi)"),
@@ -122,7 +144,7 @@ def readings_of(key: str) -> tuple[str, ...]:
 
 #: the constructs a ``--let 'CONSTRUCT: READING'`` settles here (the quaternion product and
 #: the tangent order have declarations of their own: rigidsym.latex.quaternions, .tangent)
-DECLARABLE = ("bracket cross",)
+DECLARABLE = ("bracket cross", "star")
 _DECLARED: ContextVar[tuple[dict, tuple] | None] = ContextVar("contested_declared",
                                                              default=None)
 

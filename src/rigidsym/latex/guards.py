@@ -103,12 +103,42 @@ def time_derivatives(free: list[str], used: set[str], declared: dict,
                     and declared[x].kind.split(" in ")[0] in ("angle", "scalar"):
                 continue
             how = "declared" if x in declared else "free"
+            model = getattr(declared.get(x), "latex", None)
+            if model and _TIME_IN.search(model):
+                raise BadInput(_explicit_time(key, x, model))
             raise BadInput(
                 f"--latex: {key} is the time derivative of {x} ({how}), but nothing says how "
                 f"{x} depends on time, so {key} would be a free symbol unrelated to {x}: "
                 f"declare {x} a function of time (--let '{x}(t): KIND'), give {key} a model "
                 f"(--let '{key} = LATEX') or declare it as a symbol of its own "
                 f"(--let '{key}: KIND')")
+
+
+#: the plain letter t, the time, in a model's LaTeX (not in a macro, a word or a subscript)
+_TIME_IN = re.compile(r"(?<![\\A-Za-z_{])t(?![A-Za-z])")
+#: a glyph times t (Taylor's \Omega t): the rate of an angle of time
+_RATE_T = re.compile(r"(\\[A-Za-z]+|[A-Za-z])(_\{[^{}]*\}|_[A-Za-z0-9])?\s*t(?![A-Za-z])")
+
+
+def _explicit_time(key: str, x: str, model: str) -> str:
+    """The refusal of ``\\dot X`` whose model is written in the time ``t`` itself (Taylor's
+    ``\\omega_1 = \\omega_0\\cos\\Omega t``): a model's rate is read through the
+    symbols declared functions of time, not through ``t``, so it says how to write one."""
+    m = _RATE_T.search(model)
+    angle = "\\vartheta" if "\\theta" in model else "\\theta"
+    if m:
+        rate = m.group(0)[:-1].strip()
+        said = (f"--let '{angle}(t): angle' --let '\\dot{angle} = {rate}' --let '{x} = "
+                f"{model[:m.start()] + angle + model[m.end():]}' ({rate} t is an angle of "
+                f"time whose rate is {rate})")
+    else:
+        said = (f"--let '{angle}(t): angle' (or another function of time) with its rate "
+                f"(--let '\\dot{angle} = ...'), and {x}'s model written in {angle}")
+    return (f"--latex: {key} is the time derivative of {x}, whose model is written in the "
+            f"time t itself; a model's rate is read through the symbols declared functions "
+            f"of time, never through t, so {key} would be a free symbol unrelated to {x}: "
+            f"write the model through a function of time, e.g. {said}; or give {key} its "
+            f"model (--let '{key} = LATEX')")
 
 
 def takes_no_derivative(latex: str, lets: list) -> bool:

@@ -146,7 +146,7 @@ _CONSTRUCTS = [
                 r"iota|kappa|lambda|mu|nu|xi|pi|rho|varrho|sigma|tau|upsilon|phi|varphi|"
                 r"chi|psi|omega|Gamma|Delta|Theta|Lambda|Xi|Pi|Sigma|Upsilon|Phi|Psi|"
                 r"Omega)$"), "a Greek letter"),
-    (re.compile(r"\\(mathbf|boldsymbol|bm|mathcal|mathsf|mathrm|operatorname|text)$"),
+    (re.compile(r"\\(mathbf|boldsymbol|bm|mathcal|mathsf|mathfrak|mathrm|operatorname|text)$"),
      "a font"),
     (re.compile(r"\\(hat|dot|ddot|tilde|bar|vec|underline|check|breve)$"), "an accent"),
     (re.compile(r"\\(sin|cos|tan|cot|sec|csc|arccos|arcsin|arctan|exp|log|ln|det)$"),
@@ -243,7 +243,8 @@ def quoted(latex: str, pos: int) -> tuple[str, str]:
     if tok.arg in ("left", "right") or re.fullmatch(r"[bB]igg?[lr]?", tok.arg):
         m = re.match(r"\s*(\\[A-Za-z]+|\\.|.)", latex[tok.pos + len(text):])
         text += m.group(1) if m else ""
-    if tok.arg in ("operatorname", "mathrm", "text", "mathbf", "boldsymbol", "mathsf"):
+    if tok.arg in ("operatorname", "mathrm", "text", "mathbf", "boldsymbol", "mathsf",
+                   "mathfrak"):
         m = re.match(r"\s*\{[^{}]*\}", latex[tok.pos + len(text):])
         text += m.group(0).strip() if m else ""
     construct = next((c for r, c in _CONSTRUCTS if r.match("\\" + tok.arg)), "a macro")

@@ -14,7 +14,7 @@ from rigidsym.latex.transformer.chapter import LatexTransformer, value_of
 __all__ = ["parse_latex", "construct_text"]
 
 
-def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = None,
+def parse_latex(latex: str, section: str | None = None, overrides: dict | None = None,
                 block_rows: bool = False, reader: bool = False,
                 functions: dict | None = None, choices: dict | None = None,
                 models: dict | None = None, renamed: frozenset[str] = frozenset()) -> Parsed:
@@ -23,9 +23,11 @@ def parse_latex(latex: str, section: str | None = "*", overrides: dict | None = 
     Args:
         latex: the LaTeX (one or more relations separated by ``,``, ``\\quad`` or
             ``\\text{or}``; ``=``/``\\equiv`` chains; ``aligned`` blocks).
-        section: the book section whose glyph-table rows name the glyphs (``"3.4.2"``);
-            ``"*"``: only the section-free rows; ``None``: no row of the table (every glyph
-            by the default rules, or by ``overrides``).
+        section: the book section whose rows of the book's glyph table (the one its
+            reading names, :func:`rigidsym.latex.glyph_table`) name the glyphs (``"3.4.2"``);
+            ``"*"``: only the section-free rows; ``None`` (the default: a text of one's own
+            is not the book's): no row of any table (every glyph by the default rules, or
+            by ``overrides``).
         overrides: glyph rows by LaTeX key that take precedence (a per-id note's).
         block_rows: read a bracket ``[A v]`` whose column separator was lost (the
             conversion's slip in (3.77b-d), (3.97a-c)) as a block row.

@@ -51,12 +51,11 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["NAME_READING", "accent_primes", "angular_velocities", "both_blackboard", "conjugate_c",
-           "cross_subscripts", "declared_blackboard", "declared_columns", "declared_deltas",
-           "declared_e", "declared_identity", "labels_as_typed", "open_blackboard",
-           "with_name_reading",
-           "declared_labels", "floor_cross", "hat_expressions", "rate_entries",
-           "tilde_expressions"]
+__all__ = ["NAME_READING", "accent_primes", "angular_velocities", "both_blackboard",
+           "conjugate_c", "cross_subscripts", "declared_blackboard", "declared_columns",
+           "declared_deltas", "declared_e", "declared_identity", "declared_labels",
+           "floor_cross", "grouping_braces", "hat_expressions", "labels_as_typed",
+           "open_blackboard", "rate_entries", "tilde_expressions", "with_name_reading"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -261,6 +260,78 @@ def declared_columns(latex: str, let: object) -> tuple[str, object, str]:
             f"that glyph")
 
 
+def _braced(text: str, start: int) -> int:
+    """The index just past the ``\\}`` that closes the ``\\{`` at ``start`` (nested pairs
+    counted), or -1."""
+    depth, i = 0, start
+    while i < len(text) - 1:
+        pair = text[i:i + 2]
+        if pair == "\\{":
+            depth += 1
+        elif pair == "\\}":
+            depth -= 1
+            if depth == 0:
+                return i + 2
+        i += 2 if pair[0] == "\\" else 1
+    return -1
+
+
+#: what makes braces a set's in the books, never a group: a list, a condition, a bar
+_SET_MARK = re.compile(r",|\\mid|\\vert|\\colon|:|\\in(?![A-Za-z])|\\lvert|\|")
+
+
+def grouping_braces(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\{ ... \\}`` around an expression that is no single
+    glyph (Lee–Leok–McClamroch's ``(\\{\\operatorname{tr}[A]I - A\\}x)^\\wedge``) respelt as
+    parentheses in the LaTeX and the declarations (``note`` says so); a single glyph's
+    braces (Ginsberg's column ``\\{\\omega\\}``, :func:`declared_columns`) and braces
+    holding a list, a bar or a condition (a set's) are left as written, unread. Else all
+    unchanged and ``note`` is ``""``.
+
+    Where the braces hold an expression, grouping it and Ginsberg's column of its
+    components are the same value here (a column of components is the vector the reader
+    reads), so no reading is picked where the books' readings could differ: a set's braces
+    are never read.
+
+    Args:
+        latex: the LaTeX.
+        let: the declarations, as :func:`declared_e`'s.
+    """
+    decls = _decls(let)
+    if decls is None:
+        return latex, let, ""
+    said: list[str] = []
+    # one glyph, subscripted or primed (Ginsberg's column, declared_columns), or one number
+    # (a set's {1}): never a group
+    one = re.compile(r"\s*(?:(?:" + _GLYPH + r")\s*(?:_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]+))?'*"
+                     r"|-?\d+(?:\.\d+)?)\s*")
+
+    def respell(text: str) -> str:
+        out, i = [], 0
+        while (j := text.find("\\{", i)) >= 0:
+            end = _braced(text, j)
+            if end < 0:
+                break
+            inner = text[j + 2:end - 2]
+            if one.fullmatch(inner) or not inner.strip() or _SET_MARK.search(inner):
+                out.append(text[i:j + 2])
+                i = j + 2
+                continue
+            inner = respell(inner)
+            out.append(text[i:j] + "(" + inner + ")")
+            said.append(f"\\{{{inner.strip()}\\}}")
+            i = end
+        out.append(text[i:])
+        return "".join(out)
+
+    latex2, decls2 = respell(latex), [respell(d) for d in decls]
+    if not said:
+        return latex, let, ""
+    return latex2, decls2, (f"{', '.join(dict.fromkeys(said))}: braces around an expression, "
+                            f"read as parentheses (Lee–Leok–McClamroch's grouping; Ginsberg's "
+                            f"column of its components is the same value)")
+
+
 _TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
 
 
@@ -438,7 +509,7 @@ def _entry_rate(letter: str) -> re.Pattern:
 
 #: a vector of time, ``\\mathbf{e}(t): unit 4-vector``: the rate of its entries is its rate's
 _TIMED_VECTOR = re.compile(
-    r"\\(?P<font>mathbf|boldsymbol|bm)\s*\{?\s*(?P<letter>\\[A-Za-z]+|[A-Za-z])\s*\}?\s*"
+    r"(?:\\(?P<font>mathbf|boldsymbol|bm)\s*\{?\s*)?(?P<letter>\\[A-Za-z]+|[A-Za-z])\s*\}?\s*"
     r"\(t\)\s*:[^=]*vector")
 
 
@@ -471,7 +542,7 @@ def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
         zero = re.compile(re.escape(letter) + (r"(?![A-Za-z])" if letter.startswith("\\")
                                                 else "") + r"\s*_\s*\{?\s*0(?!\d)")
         base = 1 if any(zero.search(t) for t in [latex, *decls]) else 0
-        vec = f"\\dot{{\\{font}{{{letter}}}}}"
+        vec = f"\\dot{{\\{font}{{{letter}}}}}" if font else f"\\dot{{{letter}}}"  # Kane's \epsilon
 
         def one(m, vec=vec, base=base):
             k = int(m["k"] or m["k1"]) + base

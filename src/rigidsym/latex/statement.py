@@ -14,7 +14,6 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
-import re
 from dataclasses import dataclass, field
 
 import sympy as sp
@@ -40,7 +39,7 @@ from rigidsym.printing import notation
 from rigidsym.registry.declarations import Rel, Statement
 
 __all__ = ["Reading", "read_statement", "read_one", "said_choices", "latex_id", "check_book",
-           "declare_latex"]
+           "book_sections", "declare_latex"]
 
 
 @dataclass
@@ -85,11 +84,34 @@ def latex_id(latex: str, lets: list[Let], book: str | None, modules,
     return "latex:" + hashlib.sha256(key.encode()).hexdigest()[:10]
 
 
+def book_sections() -> list[str]:
+    """The sections ``--book`` takes: the book's chapter, sections and subsections, those
+    its declarations and its glyph table name (each with the sections above it), in book
+    order."""
+    from rigidsym.latex.table import glyph_table
+    from rigidsym.registry.declarations import REGISTRY, is_user_id, load_all
+
+    load_all()
+    named = {eq.section for k, eq in REGISTRY.items() if not is_user_id(k)}
+    named |= {g.section for g in glyph_table() if g.section != "*"}
+    known = {".".join(s.split(".")[:n]) for s in named if s
+             for n in range(1, len(s.split(".")) + 1)}
+    return sorted(known, key=lambda s: tuple(int(x) for x in s.split(".") if x.isdigit()))
+
+
 def check_book(book: str) -> str:
-    """Validate a ``--book`` section (``3``, ``3.2``, ``3.4.2`` ...)."""
-    if not isinstance(book, str) or not re.fullmatch(r"3(\.\d+){0,2}", book.strip()):
-        raise BadInput(f"--book: expected a section of the chapter such as 3.2 or 3.4.2, got "
-                       f"{book!r}")
+    """Validate a ``--book`` section: one of :func:`book_sections` (the chapter, a section,
+    a subsection).
+
+    Raises:
+        BadInput: any other, naming a section and a subsection the book has.
+    """
+    known = book_sections()
+    if not isinstance(book, str) or book.strip() not in known:
+        such = [s for s in known if s.count(".") == 1][:1] + [
+            s for s in known if s.count(".") == 2][:1]
+        raise BadInput(f"--book: expected a section of the book such as "
+                       f"{' or '.join(such) or 'its chapter'}, got {book!r}")
     return book.strip()
 
 

@@ -1,10 +1,10 @@
 """The transcription check: is a declaration's hand-written ``printed`` form what its LaTeX says?
 
 For one declaration, :func:`check_transcription` parses its ``latex`` (the glyph table of its
-section, and its per-id note in ``notes.json``) and decides, member by member, that each
-printed relation (``Statement.printed``, then ``Statement.claims``) is a relation the LaTeX
-states: ``l - r`` equals ``±(E_i - E_j)`` for two expressions ``E_i``, ``E_j`` of one of the
-text's ``=`` chains (``x = y = z`` states ``x = y``, ``x = z`` and ``y = z``), or of the
+section, and its per-id note, the book's data: :func:`notes`) and decides, member by member,
+that each printed relation (``Statement.printed``, then ``Statement.claims``) is a relation
+the LaTeX states: ``l - r`` equals ``±(E_i - E_j)`` for two expressions ``E_i``, ``E_j`` of
+one of the text's ``=`` chains (``x = y = z`` states ``x = y``, ``x = z`` and ``y = z``), or of the
 equivalent product form of an inverse (``X^{-1} = Y`` states ``X Y = 1`` and ``Y X = 1``).
 The difference is decided by the zero test (:func:`rigidsym.zero.decide_zero`) with the book
 symbols left as free atoms: every book matrix is a matrix of free entries, so nothing the
@@ -20,10 +20,11 @@ from __future__ import annotations
 
 import json
 from functools import cache
-from importlib import resources
+from pathlib import Path
 
 import sympy as sp
 
+from rigidsym.core.errors import BadInput
 from rigidsym.latex.canonical import definitions, difference, free, roots, same
 from rigidsym.latex.reader import parse_latex
 from rigidsym.latex.shapes import LatexError
@@ -39,16 +40,32 @@ STATUSES = ("machine-checked", "differs", "not parsed")
 
 @cache
 def notes() -> dict:
-    """The per-id notes of the transcription check.
+    """The per-id notes of the transcription check: the book's data (the file its package
+    names, ``TRANSCRIPTION_NOTES`` of :data:`rigidsym.core.config.BOOK`).
 
     Returns:
-        ``notes.json`` as ``{id: note}``: how to read one id's LaTeX (instances of a letter
-        that stands for several quantities, aliases of the printed names, a lost column
-        separator, relations a definition is stated through, a construct the reader does
-        not take).
+        ``{id: note}``: how to read one id's LaTeX (instances of a letter that stands for
+        several quantities, aliases of the printed names, a lost column separator,
+        relations a definition is stated through, a construct the reader does not take);
+        ``{}`` where the book names no notes.
+
+    Raises:
+        BadInput: the file the book names cannot be read or is not a JSON object.
     """
-    text = resources.files("rigidsym.latex").joinpath("notes.json").read_text("utf-8")
-    return {k: v for k, v in json.loads(text).items() if not k.startswith("_")}
+    import importlib
+
+    from rigidsym.core import config
+
+    path = getattr(importlib.import_module(config.BOOK), "TRANSCRIPTION_NOTES", None)
+    if path is None:
+        return {}
+    try:
+        doc = json.loads(Path(path).read_text("utf-8"))
+    except (OSError, ValueError) as exc:
+        raise BadInput(f"transcription notes {path}: cannot read them ({exc})") from None
+    if not isinstance(doc, dict):
+        raise BadInput(f"transcription notes {path}: expected a JSON object {{id: note}}")
+    return {k: v for k, v in doc.items() if not k.startswith("_")}
 
 
 def _override(spec: dict, section: str) -> dict:

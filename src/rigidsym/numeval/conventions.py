@@ -13,6 +13,10 @@ two semantics shared by accident could not decide a statement alone.
   :func:`rigidsym.numeval.values.quaternion_storage`.
 - ``tangent order``: a twist ``[ω; v]`` (Lynch & Park) or ``[v; ω]`` (Barfoot),
   :func:`rigidsym.numeval.values.tangent_order`.
+- ``star``: ``X^*`` of a 6x6 matrix is its transpose, the adjoint of Jain's rigid-body
+  transformation operator (Jain (2011) ch. 1: ``V(y) = φ^*(x, y) V(x)``), or the inverse of
+  the transpose, the dual of a motion transform (Featherstone (2008) (2.25): a force
+  transforms by ``X^* = X^{-T}``).
 """
 
 from __future__ import annotations
@@ -21,8 +25,8 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-__all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "choice_key", "settled",
-           "declared_readings"]
+__all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "STAR", "choice_key",
+           "settled", "declared_readings"]
 
 #: [A x\wedge]: the content's hat, or A times x's hat
 BRACKET_CROSS = ("content", "bind")
@@ -31,9 +35,11 @@ BRACKET_CROSS = ("content", "bind")
 QUATERNION = ("Hamilton", "JPL", "Hamilton, scalar last")
 #: a 6-vector's order: angular part first or translation first
 TANGENT = ("angular first", "translation first")
+#: X^* of a 6x6 matrix: its transpose (Jain's adjoint) or its inverse's transpose (the dual)
+STAR = ("transpose", "dual")
 #: every contested construct this semantics evaluates, by name, its readings
 READINGS = {"bracket cross": BRACKET_CROSS, "quaternion product": QUATERNION,
-            "tangent order": TANGENT}
+            "tangent order": TANGENT, "star": STAR}
 
 
 def choice_key(construct: str, text: str) -> str:

@@ -324,11 +324,8 @@ class Evaluator:
             return V.transpose(V.inverse(v))
         if s in ("*", "\\ast") and V.shape(V.scalar(v)) == (4, 1):  # a quaternion's q^*
             return V.quaternion_conjugate(v)
-        if s in ("*", "\\ast"):  # Featherstone's X^* = X^{-T} of a spatial transform
-            if not V.is_matrix(v) or (v.rows, v.cols) != (6, 6):
-                raise NotCovered(f"the star of a value that is no 6x6 transform in "
-                                 f"{text_of(t)!r}")
-            return V.transpose(V.inverse(v))
+        if s in ("*", "\\ast"):
+            return self._star(v, t)
         if s in ("\\wedge", "\\times"):  # Hughes' a^\times too
             return V.hat(v)
         if s == "\\vee":
@@ -344,6 +341,25 @@ class Evaluator:
         if n == -1:
             return V.inverse(v)
         return V.power(v, n)
+
+    def _star(self, v, t):
+        """``X^*`` of no quaternion: of a declared ``spatial transform`` Featherstone's dual
+        ``X^{-T}``; of another 6x6 matrix a choice point
+        (:data:`rigidsym.numeval.conventions.STAR`: Jain's transpose or the dual), one for
+        every star of the statement; of a 6-vector its transpose (Jain's ``V^*``)."""
+        v = V.scalar(v)
+        if V.shape(v) == (6, 1):
+            return V.transpose(v)
+        if not V.is_matrix(v) or (v.rows, v.cols) != (6, 6):
+            raise NotCovered(f"the star of a value that is no 6-vector nor 6x6 matrix in "
+                             f"{text_of(t)!r}")
+        base = t.children[0]
+        d = self.env.decls.get(glyph_key(base)) if isinstance(base, lark.Tree) else None
+        if d is not None and d.kind == "spatial transform":  # Featherstone's, by its kind
+            return V.transpose(V.inverse(v))
+        key = conventions.choice_key("star", "X^*")
+        how = conventions.settled("star") or self.choose(key, conventions.STAR)
+        return V.transpose(V.inverse(v)) if how == "dual" else V.transpose(v)
 
     # ---- primaries
     def r_number(self, t):

@@ -30,7 +30,7 @@ __all__ = [
     "KINDS",
     "VERDICTS",
     "CAUSES",
-    "SECTIONS",
+    "book_sections",
     "parse_id",
     "section_of",
     "load_all",
@@ -49,10 +49,11 @@ __all__ = [
 KINDS = ("identity", "definition", "claim")
 VERDICTS = ("verified", "definition", "does-not-hold", "undecided")
 CAUSES = ("conversion", "erratum", "unknown")
-#: Book sections that hold numbered equations or claims.
-SECTIONS = ("3.2", "3.3", "3.4", "3.5", "3.6", "3.7", "3.8")
-
-_ID = re.compile(r"^(3\.\d+[a-e]?|(thm|cor|caveat)3\.\d+(\.\d+)?|ex3\.\d+)$")
+#: A book id: an equation's number (chapter.number, a letter for a part), or a claim's
+#: (``thm``, ``cor``, ``caveat`` and its section's number); which ids a book has is its
+#: declarations', never this module's.
+_ID = re.compile(r"^(\d+\.\d+[a-e]?|(thm|cor|caveat)\d+\.\d+(\.\d+)?|ex\d+\.\d+)$")
+_ID_PARTS = re.compile(r"^(?:thm|cor|caveat|ex)?(\d+)\.(\d+)(?:\.(\d+))?([a-e]?)$")
 #: A user id: ``namespace:name`` (``notes:rodrigues``, ``paper:eq7``).
 _USER_ID = re.compile(r"^[a-z][a-z0-9_-]*:[A-Za-z0-9_.-]+$")
 #: The cause of a user's does-not-hold when the declaration names none.
@@ -275,6 +276,31 @@ def section_of(eq_id: str) -> str:
     return ".".join(REGISTRY[eq_id].section.split(".")[:2])
 
 
+def _numbers(text: str) -> tuple[int, ...]:
+    return tuple(int(x) for x in text.split(".") if x.isdigit())
+
+
+def book_sections() -> tuple[str, ...]:
+    """The book's sections that hold numbered equations or claims: those its loaded
+    declarations name (each declares its section), in book order.
+
+    Returns:
+        The sections (``"3.2"`` ...), each once.
+    """
+    load_all()
+    return tuple(sorted({section_of(k) for k in REGISTRY if not is_user_id(k)}, key=_numbers))
+
+
+def _sections_without_ids() -> dict[str, str]:
+    """The book's sections that hold no id, each with why (``SECTIONS_WITHOUT_IDS`` of the
+    book package, :data:`rigidsym.core.config.BOOK`; ``{}`` where it names none)."""
+    import importlib
+
+    from rigidsym.core import config as _config
+
+    return dict(getattr(importlib.import_module(_config.BOOK), "SECTIONS_WITHOUT_IDS", {}))
+
+
 def equation(eq_id: str, title: str, *, section: str | None = None,
              latex: str | None = None, kind: str = "identity", expected: str | None = None,
              cause: str | None = None, evidence: str | None = None,
@@ -414,14 +440,28 @@ def book_ids() -> list[str]:
 
 
 def _sort_key(eq_id: str):
+    """Book order: by section, a section's equations by number and part, then its claims;
+    an id no declaration holds after the book's, user ids last in declaration order."""
     if is_user_id(eq_id):  # after the book, in declaration order
-        return (10**6, 2, list(REGISTRY).index(eq_id) if eq_id in REGISTRY else 0)
-    m = re.match(r"^(?:thm|cor|caveat)?3\.(\d+)(?:\.(\d+))?([a-e]?)$", eq_id)
+        return ((10**6,), 2, list(REGISTRY).index(eq_id) if eq_id in REGISTRY else 0, "")
+    sec = _numbers(section_of(eq_id)) if eq_id in REGISTRY else (10**5,)
     if eq_id.startswith(("thm", "cor", "caveat")):
-        sec = REGISTRY[eq_id].section if eq_id in REGISTRY else "3.9"
-        return (int(sec.split(".")[1]), 1, eq_id)
-    return (int(section_of(eq_id).split(".")[1]) if eq_id in REGISTRY else 99, 0,
-            int(m.group(1)), m.group(3))
+        return (sec, 1, 0, eq_id)
+    m = _ID_PARTS.match(eq_id)
+    return (sec, 0, int(m.group(2)), m.group(4))
+
+
+def _known_book_ids() -> str:
+    """The book's ids in words for a message: its first and last numbered equation, a claim,
+    how to list a section's."""
+    ids = book_ids()
+    numbered = [i for i in ids if not i.startswith(("thm", "cor", "caveat"))]
+    claims = [i for i in ids if i.startswith("thm")]
+    if not numbered:
+        return "the book declares no id"
+    return (f"{numbered[0]} ... {numbered[-1]}"
+            + (f" and claims such as {claims[0]}" if claims else "")
+            + f"; the ids of a section: rigidsym verify --section {section_of(numbered[0])}")
 
 
 def parse_id(text: str) -> str:
@@ -437,19 +477,25 @@ def parse_id(text: str) -> str:
     if t.lower().startswith("eq"):
         t = t[2:]
     if not _ID.match(t):
-        raise BadInput(f"id: expected a book id like 3.16, 3.96e or thm3.2.1, or a user id "
-                       f"namespace:name, got {text!r}")
+        raise BadInput(f"id: expected a book id (an equation's number N.M or N.Ma, a claim's "
+                       f"thmN.M.K), or a user id namespace:name, got {text!r}")
     return t
 
 
 def parse_section(text: str) -> str:
-    """Validate a section argument (``"3.2"`` … ``"3.8"``, or a section a loaded user
-    declaration names)."""
-    if text not in SECTIONS and not any(is_user_id(k) and eq.section == text
+    """Validate a section argument: one of :func:`book_sections`, or a section a loaded user
+    declaration names.
+
+    Raises:
+        BadInput: any other, naming the book's sections (and why, where the book says why
+            a section holds no id: ``SECTIONS_WITHOUT_IDS`` of the book package).
+    """
+    sections = book_sections()
+    if text not in sections and not any(is_user_id(k) and eq.section == text
                                         for k, eq in REGISTRY.items()):
-        why = {"3.1": " (the introduction holds no equations)",
-               "3.9": " (the exercises are run by `rigidsym exercise`)"}.get(text, "")
-        raise BadInput(f"section: expected one of {', '.join(SECTIONS)}, got {text!r}{why}")
+        why = _sections_without_ids().get(text)
+        raise BadInput(f"section: expected one of {', '.join(sections)}, got {text!r}"
+                       + (f" ({why})" if why else ""))
     return text
 
 
@@ -488,8 +534,7 @@ def select(ids: list[str] | None = None, sections: list[str] | None = None,
         parts = [k for k in REGISTRY if re.fullmatch(re.escape(i) + "[a-e]", k)]
         if not parts:
             known = ("a loaded user module's ids: give its file with --module" if is_user_id(i)
-                     else "3.1 ... 3.148 and claims such as thm3.2.1; the ids of a section: "
-                          "rigidsym verify --section 3.4")
+                     else _known_book_ids())
             raise BadInput(f"id: {i} holds no declared equation{did_you_mean(i, REGISTRY)} "
                            f"(known: {known})")
         out.update(parts)

@@ -14,6 +14,9 @@ closed algebraic numbers to their minimal polynomial.
 from __future__ import annotations
 
 import importlib
+import importlib.util
+import pkgutil
+import re
 from collections import OrderedDict
 from collections.abc import Callable
 from contextlib import contextmanager
@@ -53,6 +56,7 @@ __all__ = [
     "IllPosed",
     "TooLong",
     "EXERCISE_IDS",
+    "measured_in_words",
     "normalise_id",
     "exercise_module",
     "parameters",
@@ -77,8 +81,28 @@ __all__ = [
     "render_latex",
 ]
 
-#: ``ex3.1`` ... ``ex3.21``.
-EXERCISE_IDS = [f"ex3.{k}" for k in range(1, 22)]
+#: the book's exercises (``ex3.1`` ... for the chapter): one per module ``exN_MM`` of its
+#: exercises package (:data:`rigidsym.core.config.EXERCISES`), in book order
+EXERCISE_IDS: list[str]
+_EXERCISE_MODULE = re.compile(r"ex(\d+)_(\d+)")
+
+
+def _exercise_ids() -> list[str]:
+    """The ids of the modules ``exN_MM`` of the book's exercises package, found without
+    importing it (it imports this module)."""
+    spec = importlib.util.find_spec(_exercises_package())
+    found = [(int(m[1]), int(m[2])) for x in pkgutil.iter_modules(
+        spec.submodule_search_locations if spec else [])
+        if (m := _EXERCISE_MODULE.fullmatch(x.name))]
+    return [f"ex{c}.{k}" for c, k in sorted(found)]
+
+
+def __getattr__(name: str):
+    if name == "EXERCISE_IDS":  # read once, when first asked (the book is loaded by name)
+        ids = _exercise_ids()
+        globals()["EXERCISE_IDS"] = ids
+        return ids
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 @dataclass
@@ -188,22 +212,23 @@ class Solution:
 
 # --------------------------------------------------------------------------- registry
 def normalise_id(text: str) -> str:
-    """``"3.10"``, ``"ex3.10"``, ``"3.01"`` -> ``"ex3.10"``.
+    """``"3.10"``, ``"ex3.10"``, ``"3.01"`` -> ``"ex3.10"``: one of :data:`EXERCISE_IDS`.
 
     Raises:
-        ValueError: if ``text`` names no exercise of the chapter.
+        ValueError: if ``text`` names no exercise of the book (naming its first and last).
     """
+    ids = globals().get("EXERCISE_IDS") or __getattr__("EXERCISE_IDS")
     t = text.strip().lower()
     if t.startswith("ex"):
         t = t[2:]
     try:
-        chap, num = t.split(".")
-        k = int(num)
+        chap, num = (int(x) for x in t.split("."))
     except ValueError:
-        raise ValueError(f"expected an exercise id like 3.10 or ex3.10, got {text!r}") from None
-    if chap != "3" or not 1 <= k <= 21:
-        raise ValueError(f"expected an exercise 3.1 ... 3.21, got {text!r}")
-    return f"ex3.{k}"
+        raise ValueError(f"expected an exercise id like {ids[0][2:]} or {ids[0]}, got "
+                         f"{text!r}") from None
+    if f"ex{chap}.{num}" not in ids:
+        raise ValueError(f"expected an exercise {ids[0][2:]} ... {ids[-1][2:]}, got {text!r}")
+    return f"ex{chap}.{num}"
 
 
 def _exercises_package() -> str:
@@ -220,8 +245,8 @@ def exercise_module(ex_id: str):
     Raises:
         ValueError: if ``ex_id`` names no exercise of the chapter.
     """
-    k = int(normalise_id(ex_id).split(".")[1])
-    return importlib.import_module(f"{_exercises_package()}.ex3_{k:02d}")
+    chap, k = (int(x) for x in normalise_id(ex_id)[2:].split("."))
+    return importlib.import_module(f"{_exercises_package()}.ex{chap}_{k:02d}")
 
 
 def parameters(ex_id: str) -> Parameters:
@@ -242,6 +267,14 @@ def parameters(ex_id: str) -> Parameters:
         "there is nothing to vary")
     return Parameters(ex_id, rows, note, bool(getattr(mod, "MEASURED", False)),
                       getattr(mod, "default_tol", None), tuple(getattr(mod, "READINGS", ())))
+
+
+def measured_in_words() -> str:
+    """The exercises whose data are measurements (their module's ``MEASURED``), in words:
+    ``"3.1, 3.4 and 3.19"``."""
+    ids = [i[2:] for i in globals().get("EXERCISE_IDS") or __getattr__("EXERCISE_IDS")
+           if getattr(exercise_module(i), "MEASURED", False)]
+    return ", ".join(ids[:-1]) + (" and " if len(ids) > 1 else "") + (ids[-1] if ids else "none")
 
 
 #: CPU seconds one exact solve may take before its data are refused (a student's exact data
@@ -278,8 +311,7 @@ def _time_budget(seconds: float, ex_id: str):
         raise TooLong(f"{ex_id}: the exact solution on these data did not finish in "
                       f"{seconds:g} s (their radicals and digits multiply); give shorter "
                       f"numbers or fewer distinct square roots, or floats where the "
-                      f"exercise takes measurements (Exercises 3.1, 3.4, 3.5, 3.6, 3.7, 3.14, "
-                      f"3.19)") from None
+                      f"exercise takes measurements (Exercises {measured_in_words()})") from None
     finally:
         signal.setitimer(signal.ITIMER_PROF, 0)
         signal.signal(signal.SIGPROF, old)
@@ -406,8 +438,8 @@ def _solved(ex_id: str, params: Parameters, d, values: dict | None = None) -> So
         # minimal polynomial's coefficients): too large for the exact path, as a timeout
         raise TooLong(f"{ex_id}: the exact solution on these data needs integers too large "
                       f"for sympy's exact arithmetic; give shorter numbers, or floats where "
-                      f"the exercise takes measurements (Exercises 3.1, 3.4, 3.5, 3.6, 3.7, 3.14, "
-                      f"3.19)") from None
+                      f"the exercise takes measurements (Exercises "
+                      f"{measured_in_words()})") from None
     s.assumptions.extend(d.notes)
     s.floats, s.data, s.tol = d.floats, dict(d.values), d.tol
     return s

@@ -351,8 +351,10 @@ def _tolerance(out: Data, params: Parameters, tol, values: dict, measures: list,
     how = None
     if tol is not None:
         if not params.measured:
+            from rigidsym.course.worked import measured_in_words
+
             raise TypeError(f"tol: the data of {params.exercise} are not measurements; tol "
-                            f"applies to Exercises 3.1, 3.4, 3.5, 3.6, 3.7, 3.14 and 3.19")
+                            f"applies to Exercises {measured_in_words()}")
         if isinstance(tol, float):
             tol = repr(tol)  # a tolerance is not data: read 1e-3 as the decimal it shows
         out.tol, _ = _scalar(tol, "tol")

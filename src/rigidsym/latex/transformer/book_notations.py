@@ -11,9 +11,13 @@ LaTeX                                                       reading
                                                             refused (no exterior product)
 ``\\xi^\\curlywedge`` (Barfoot)                               ``ad`` of a 6-vector
 ``{}^B X_A^{*}``, ``{}^B X_A^{-T}`` (Featherstone)            the inverse transpose of a
-                                                            ``spatial transform`` (``X^*``
-                                                            only); ``A^{-T}`` of another
-                                                            square matrix: ``(A^{-1})^T``
+                                                            ``spatial transform``; ``A^{-T}``
+                                                            of another square matrix:
+                                                            ``(A^{-1})^T``
+``\\phi^*(\\mathbf{l})`` of another 6x6 matrix (Jain)         contested: Jain's transpose or
+                                                            the dual (``contested``, "star");
+                                                            ``\\mathcal{V}^*`` of a 6-vector
+                                                            its transpose
 ``v \\times m``, ``v \\times^* f``, ``v\\times`` (RBDA 2.9)    crm, crf of a 6-vector; of a
                                                             3-vector before a matrix: CPM
 ``{}^A_B R``, ``{}^A\\mathbf{R}_B`` (Craig, Corke)             frame indices, part of the name
@@ -36,7 +40,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
-from rigidsym.latex import quaternions, tangent
+from rigidsym.latex import contested, quaternions, tangent
 from rigidsym.latex.kinematics import dot_key, explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
@@ -49,6 +53,7 @@ from rigidsym.latex.shapes import (
 )
 from rigidsym.latex.table import Glyph
 from rigidsym.latex.transformer import products
+from rigidsym.latex.transformer.meanings import STAR_POINT, alternatives
 
 __all__: list[str] = []
 
@@ -140,16 +145,44 @@ class BookNotationRules:
             return sp.ImmutableMatrix(quaternions.conjugate(sp.Matrix(x)))
         if sup == "-T" and not self._spatial(x):
             return self._inverse_transpose(x)
+        if sup == "*" and not self._spatial(x):
+            return self._star(x)
         if sup in ("*", "-T"):
             spelt = "^{*}" if sup == "*" else "^{-T}"
-            if not self._spatial(x):
-                raise LatexError(f"X{spelt} is Featherstone's dual of a spatial transform: "
-                                 f"{shape_words(x)}{self._named(x)} is not one (declare it with "
-                                 f"--let 'X: spatial transform')", "shapes")
             self._note(f"X{spelt}: the dual (inverse transpose) of a spatial transform "
                        f"(Featherstone (2.25))")
             return PluckerDual(x)
         return None
+
+    def _star(self, x):
+        """``X^*`` of anything but a quaternion or a declared spatial transform: of a 6x6
+        matrix a contested construct (:mod:`rigidsym.latex.contested`, "star"): Jain's
+        transpose (the adjoint of the rigid-body transformation operator, ``\\phi^*``) or
+        Featherstone's dual ``(X^{-1})^T``, one choice point for every star of the
+        statement unless a ``--let 'star: ...'`` settles it; of a 6-vector its transpose
+        (Jain's ``\\mathcal{V}^*``, the only reading: the dual is of transforms). Anything
+        else is refused naming what is expected."""
+        s = matrix_shape(x)
+        if s == (6, 1):
+            self._note("v^*: the transpose of a 6-vector (Jain's adjoint, V^* f a power)")
+            return x.T
+        if s != (6, 6):
+            raise LatexError(f"^{{*}} of {shape_words_of(s)}: expected a 4-vector (a quaternion's "
+                             f"conjugate), a 6-vector (its transpose, Jain's V^*) or a 6x6 "
+                             f"matrix (Jain's transpose or Featherstone's dual); write ^T for "
+                             f"a transpose, or declare the starred name with a --let "
+                             f"(--let 'X^{{*}}: matrix')", "shapes")
+        settled = contested.declared("star")  # --let 'star: transpose' or 'star: dual'
+        if settled is None:
+            self.choice_points.setdefault(STAR_POINT, alternatives(STAR_POINT))
+        how = "declared by --let 'star: ...'" if settled else "a choice"
+        if (settled or self.choices.get(STAR_POINT, alternatives(STAR_POINT)[0])) == "dual":
+            self._note(f"X^*: read as the dual (X^{{-1}})^T, Featherstone (2.25) ({how}: or "
+                       f"the transpose, Jain's)")
+            return self._inverse_transpose(x)
+        self._note(f"X^*: read as the transpose X^T, Jain's φ^* ({how}: or the dual "
+                   f"(X^{{-1}})^T, Featherstone's)")
+        return x.T
 
     def _inverse_transpose(self, x):
         """``X^{-T}`` of a square matrix other than a spatial transform: ``(X^{-1})^T``, the

@@ -37,7 +37,10 @@ __all__: list[str] = []
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
                 "index": ("name", "entry"), "tilde": ("skew", "own"), "hat": HAT_READINGS,
                 "base": BASE_READINGS, "double": ("cpm", "neg"), "shape": CAPITAL_READINGS,
-                "cross": readings_of("bracket cross")}
+                "cross": readings_of("bracket cross"), "star": readings_of("star")}
+#: the one choice point of every X^* of a 6x6 matrix in a statement (a book reads its stars
+#: one way: Jain's transpose or Featherstone's dual; :mod:`rigidsym.latex.contested`, "star")
+STAR_POINT = "X^*"
 
 
 def is_cross_bracket(key: str) -> bool:
@@ -49,6 +52,8 @@ def is_cross_bracket(key: str) -> bool:
 def _kind(key: str) -> str:
     if key == "\\tilde":  # every tilde of a 3-vector (rigidsym.latex.transformer.tilde)
         return "tilde"
+    if key == STAR_POINT:  # every X^* of a 6x6 matrix: Jain's transpose or the dual
+        return "star"
     if key.endswith(" shape"):  # a free bold capital: 3x3 or a 3-vector (latex.hats)
         return "shape"
     if key.startswith("[["):  # Shuster's [[u]]: the cross-product matrix or its negative
@@ -75,6 +80,10 @@ def said(key: str, choice: str) -> str:
     if _kind(key) == "cross":
         return f"{key} " + ("A [x]_× (x× binds to the factor before it)" if choice == "bind"
                             else "the cross-product matrix of its content")
+    if _kind(key) == "star":
+        return ("each X^* of a 6x6 matrix " + ("the dual (X^{-1})^T (Featherstone)"
+                                              if choice == "dual" else
+                                              "the transpose X^T (Jain)"))
     if _kind(key) == "tilde":
         return ("each \\tilde{x} of a 3-vector " + ("a vector of its own" if choice == "own"
                                                     else "its cross-product matrix [x]_\\times"))
