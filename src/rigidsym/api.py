@@ -152,8 +152,9 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             the constructs expected; an unknown macro named; a juxtaposition whose meaning
             depends on an undeclared shape asks for a ``let``). A ``ValueError``.
         BadInput: a declaration that is neither form, an unknown KIND (the kinds listed), a
-            ``let`` naming a symbol that occurs nowhere, an ambiguous glyph of ``book``, a
-            module that cannot be loaded.
+            ``let`` naming a symbol that occurs nowhere while an undeclared glyph is spelt
+            near it (an unused ``let`` otherwise is said back and ignored), an ambiguous
+            glyph of ``book``, a module that cannot be loaded.
         ValueError: if ``repairs`` is not a bool, ``repair_budget`` not a non-negative
             integer, ``repair_seconds`` or ``timeout`` not a positive number.
 
@@ -336,10 +337,32 @@ def _time_up(exc, latex, let, book, modules, notation, reading, seconds):
 def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
                        repair_seconds, seen):
     """:func:`check_latex_run`'s steps, each marked for the time limit
-    (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``."""
+    (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``. A name
+    the reader respells (a labelled ``R_{v2}^b``) is named as typed in the notes and in a
+    refusal's message."""
+    from rigidsym.latex.respell import labels_as_typed
+    from rigidsym.latex.shapes import LatexError
+
+    as_typed = labels_as_typed(let)
+    try:
+        r, reading = _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                                  repair_seconds, seen)
+    except (LatexError, BadInput) as exc:
+        if exc.args and isinstance(exc.args[0], str):
+            exc.args = (as_typed(exc.args[0]), *exc.args[1:])
+        raise
+    r.model = [as_typed(m) if isinstance(m, str) else m for m in r.model]
+    reading.notes[:] = [as_typed(n) for n in reading.notes]
+    return r, reading
+
+
+def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                 repair_seconds, seen):
+    """:func:`_check_latex_steps` before the names are written back as typed."""
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
+        accent_primes,
         angular_velocities,
         conjugate_c,
         cross_subscripts,
@@ -364,6 +387,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
+    latex, let, prime = accent_primes(latex, let)  # \tilde{\omega}' of a declared \omega'
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     latex, let, floor = floor_cross(latex, let)  # Trawny's \lfloor a\times\rfloor: [a]_x
     latex, let, rates = rate_entries(latex, let)  # Greenwood's \dot\epsilon_k: entries
@@ -371,8 +395,15 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, board, column,
-                 braces, spin):
+    if reading.unused:  # a --let it does not use is ignored: read again without it
+        from rigidsym.latex.lets import without_lets
+
+        said = [n for n in reading.notes if n.startswith("not used: ")]
+        let = without_lets(let, reading.unused)
+        eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
+        reading.notes += said
+    for note in (labels, prime, tilde, floor, rates, subx, hat, deltas, conj, respelt, board,
+                 column, braces, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading

@@ -51,11 +51,11 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["NAME_READING", "angular_velocities", "both_blackboard", "conjugate_c",
-           "cross_subscripts", "declared_blackboard", "declared_columns", "declared_deltas",
-           "declared_e", "declared_identity", "open_blackboard", "with_name_reading",
-           "declared_labels", "floor_cross", "grouping_braces", "hat_expressions", "rate_entries",
-           "tilde_expressions"]
+__all__ = ["NAME_READING", "accent_primes", "angular_velocities", "both_blackboard",
+           "conjugate_c", "cross_subscripts", "declared_blackboard", "declared_columns",
+           "declared_deltas", "declared_e", "declared_identity", "declared_labels",
+           "floor_cross", "grouping_braces", "hat_expressions", "labels_as_typed",
+           "open_blackboard", "rate_entries", "tilde_expressions", "with_name_reading"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -337,8 +337,11 @@ _TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
 
 def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\tilde{X}`` (``\\widetilde``) whose braces hold a cross
-    product, a sum or a difference respelt ``[X]_\\times`` in the LaTeX and the declarations
-    (``note`` says so); else all unchanged and ``note`` is ``""``.
+    product, a sum, a difference or a juxtaposed product of glyphs (Haug's
+    ``\\widetilde{\\tilde{\\mathbf{a}}\\mathbf{b}}``, the cross-product matrix of the vector
+    ã b) respelt ``[X]_\\times`` in the LaTeX and the declarations (``note`` says so); else
+    all unchanged and ``note`` is ``""``. A tilde over one glyph is left to the glyph's
+    reading.
 
     Args and Raises: as :func:`declared_e`.
     """
@@ -346,13 +349,79 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
 
     def respell(text: str) -> str:
         return _braced_as_cross_matrix(text, _TILDE, lambda inner: bool(re.search(
-            r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner))), hits)
+            r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner))) or _juxtaposed(inner), hits)
 
     new, out = _respelt(respell, latex, let)
     if not hits:
         return latex, let, ""
     return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+_ACCENT = re.compile(r"\\(?:wide)?(?:tilde|hat)\s*\{")
+
+
+def accent_primes(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\tilde{X}'`` (``\\hat``, the wide ones) whose glyph no
+    ``--let`` declares while one declares ``X'`` (Nikravesh's ``\\tilde{\\boldsymbol\\omega}'``,
+    the tilde of the declared ``\\boldsymbol\\omega'``) respelt ``\\tilde{X'}`` in the LaTeX
+    and the declarations (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    from rigidsym.latex.declgraph import glyph_keys
+    from rigidsym.latex.shapes import LatexError
+
+    decls = _decls(let)
+    if not decls or "'" not in latex:
+        return latex, let, ""
+    declared = {x.key for x in read_lets(decls)}
+    hits: list[str] = []
+
+    def key(text: str) -> str | None:
+        try:
+            keys = glyph_keys(text)
+        except LatexError:
+            return None
+        return next(iter(keys)) if len(keys) == 1 else None
+
+    def respell(text: str) -> str:
+        out, k = [], 0
+        for m in _ACCENT.finditer(text):
+            if m.start() < k:
+                continue
+            depth, j = 1, m.end()
+            while j < len(text) and depth:
+                depth += {"{": 1, "}": -1}.get(text[j], 0)
+                j += 1
+            primes = re.match(r"\s*('+)", text[j:])
+            if depth or primes is None:
+                continue
+            inner, end = text[m.end():j - 1], j + primes.end()
+            inside = f"{text[m.start():m.end()]}{inner}{primes.group(1)}}}"
+            if key(text[m.start():end]) in declared or key(inner + primes.group(1)) \
+                    not in declared:
+                continue
+            out += [text[k:m.start()], inside]
+            hits.append(f"{text[m.start():end]}: read as {inside}")
+            k = end
+        return "".join(out) + text[k:]
+
+    new, out = _respelt(respell, latex, let)
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"{hits[0]}, the accent of the declared primed glyph (a --let "
+                      f"declares it, none the accented glyph)")
+
+
+_INDEX = re.compile(r"[_^]\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]+)")
+
+
+def _juxtaposed(inner: str) -> bool:
+    """Whether ``inner`` is a product of two glyphs or more written side by side
+    (``\\tilde{\\mathbf{a}}\\mathbf{b}``; ``\\mathbf{r}_{C}`` or ``\\boldsymbol\\omega'`` is
+    one)."""
+    return len(re.findall(_GLYPH, _INDEX.sub("", inner))) >= 2
 
 
 def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
@@ -494,7 +563,10 @@ _LABELLED = re.compile(
     r"|\\[A-Za-z]+|(?:(?<![\\A-Za-z])|(?<=\^[a-z]))[A-Za-z])"
     r"(?(acc)\s*\})"
     r"(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))?"
-    r"\s*\^\s*(?P<lbl>\{\s*[a-z]+\s*\}|[a-z])")
+    r"\s*\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])")
+#: a label written before the subscript, Beard's ``R^b_{v2}``: read as ``R_{v2}^b``
+_LABEL_FIRST = re.compile(r"\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])"
+                          r"\s*(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))")
 
 
 def _parts(m) -> tuple[str, str, str]:
@@ -502,6 +574,38 @@ def _parts(m) -> tuple[str, str, str]:
     base = re.sub(r"^(\\(?:mathbf|boldsymbol|bm))(\\?[A-Za-z]+)$", r"\1{\2}", base)
     sub = re.sub(r"[\s{}_]", "", m["sub"] or "")
     return base, sub, re.sub(r"[\s{}]", "", m["lbl"])
+
+
+def _label_names(let: object) -> set[tuple[str, str, str]]:
+    """``(base, subscript, label)`` of each NAME with a lower-case superscript label that a
+    declaration of ``let`` names (a function's parameters aside: Beard's
+    ``R_{v2}^b(\\phi) = ...``, ``R^b_{v2}`` read as ``R_{v2}^b``)."""
+    names = set()
+    for d in _decls(let) or ():
+        name = re.split(r"\s*(?:\([^()]*\))?\s*[:=]", d, maxsplit=1)[0].strip()
+        m = _LABELLED.fullmatch(_LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", name))
+        if m and not m["acc"]:
+            names.add(_parts(m))
+    return names
+
+
+def labels_as_typed(let: object):
+    """The function that writes back, in a message, each labelled NAME of ``let`` that
+    :func:`declared_labels` respells (``R_{v2}^{(b)}`` and its printed ``R_v2^(b)``: the
+    ``R_{v2}^b`` the reader typed): a message names only what the user wrote."""
+    pairs = []
+    for base, sub, lbl in _label_names(let) if let is not None else ():
+        typed = f"{base}{_index('_', sub)}{_index('^', lbl)}"
+        pairs.append((f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}", typed))
+        plain = re.sub(r"\\(?:mathbf|boldsymbol|bm)|[{}\s]", "", base)
+        if re.fullmatch(r"[A-Za-z]", plain):
+            pairs.append((f"{plain}{'_' + sub if sub else ''}^({lbl})", typed))
+
+    def back(text: str) -> str:
+        for respelt, typed in pairs:
+            text = text.replace(respelt, typed)
+        return text
+    return back
 
 
 def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
@@ -516,11 +620,7 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
     decls = _decls(let)
     if decls is None:
         return latex, let, ""
-    names = set()
-    for d in decls:
-        m = _LABELLED.fullmatch(re.split(r"\s*(?:\(t\))?\s*[:=]", d, maxsplit=1)[0].strip())
-        if m and not m["acc"]:
-            names.add(_parts(m))
+    names = _label_names(decls)
     if not names:
         return latex, let, ""
 
@@ -531,12 +631,17 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
                 return m.group(0)
             glyph = f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}"
             return f"{m['acc'].strip()}{glyph}}}" if m["acc"] else glyph
-        return _LABELLED.sub(one, text)
+        return _LABELLED.sub(one, _LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", text))
 
     out = [respell(d) for d in decls]
-    shown = ", ".join(sorted(f"{b}_{s}^{lbl}" for b, s, lbl in names))
+    shown = ", ".join(sorted(f"{b}{_index('_', s)}{_index('^', lbl)}" for b, s, lbl in names))
     return respell(latex), out, (f"{shown}: a superscript frame label (a --let names it), "
                                  f"read as a label, not a power")
+
+
+def _index(mark: str, text: str) -> str:
+    """``_v``, ``_{v2}`` (``mark`` and ``text``) as a reader types it; ``""`` for no text."""
+    return "" if not text else f"{mark}{text}" if len(text) == 1 else f"{mark}{{{text}}}"
 
 
 def _decls(let: object) -> list[str] | None:
