@@ -280,6 +280,10 @@ def _braced(text: str, start: int) -> int:
 _SET_MARK = re.compile(r",|\\mid|\\vert|\\colon|:|\\in(?![A-Za-z])|\\lvert|\|")
 
 
+#: a sizing command closing a delimiter, at the end of the delimited text (``\right``)
+_SIZED_CLOSE = re.compile(r"\\(?:right|bigr|Bigr|biggr|Biggr)\s*$")
+
+
 def grouping_braces(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\{ ... \\}`` around an expression that is no single
     glyph (Lee–Leok–McClamroch's ``(\\{\\operatorname{tr}[A]I - A\\}x)^\\wedge``) respelt as
@@ -313,7 +317,8 @@ def grouping_braces(latex: str, let: object) -> tuple[str, object, str]:
             if end < 0:
                 break
             inner = text[j + 2:end - 2]
-            if one.fullmatch(inner) or not inner.strip() or _SET_MARK.search(inner):
+            core = _SIZED_CLOSE.sub("", inner)  # \left\{ x \right\}: x's braces
+            if one.fullmatch(core) or not core.strip() or _SET_MARK.search(core):
                 out.append(text[i:j + 2])
                 i = j + 2
                 continue
