@@ -314,7 +314,7 @@ def test_every_left_inverse_a_definition_read_and_the_words_only_theorems_said(b
     for i, c in certificates(["thm3.2.2", "caveat3.4"]).items():
         assert REGISTRY[i].build().printed == [] and REGISTRY[i].kind == "claim"
         assert not [r for r in c["relations"] if r["role"] == "printed"]
-        assert "states this in words only" in read_lines(c, book)[0], i
+        assert "stated in words only" in read_lines(c, book)[0], i
 
 
 def _left_inverse_read(ids: list[str], book: str) -> None:

@@ -263,10 +263,8 @@ class _Reader:
         return total
 
     def block_row(self, start: int) -> M:
-        """``[A + c B v]`` whose column separator the conversion lost (3.97a, 3.97c, 3.77b),
-        read only where the sum is of an n x n and an n x 1 array: the block row ``[A + c B,
-        v]``, the sign before v its own; ``[A - c v]`` with c a scalar (3.77c, 3.77d) is
-        ``[A, -c v]``, the only reading whose shapes agree (c B is n x n, c v n x 1); cited."""
+        """``[A + c B v]``, its column separator lost, n x n and n x 1: ``[A + c B, v]`` (3.97a,
+        3.77b), the sign before v its own; c scalar: ``[A, -c v]`` (3.77c), by shapes; cited."""
         self.i, terms = start, []
         while not terms or self.peek() in ("+", "-"):
             terms.append([self.take() if self.peek() in ("+", "-") else "+"])
