@@ -183,7 +183,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI;
     ``None`` where the time limit passed before the LaTeX was read)."""
     from rigidsym.latex import contested, limit, quaternions, tangent
-    from rigidsym.latex.respell import declared_identity, open_blackboard
+    from rigidsym.latex.blackboard import declared_identity, open_blackboard
     from rigidsym.numeval.conventions import declared_readings
     from rigidsym.numeval.values import quaternion_convention, quaternion_storage, tangent_order
 
@@ -266,11 +266,11 @@ def _blackboard_readings(r: Result, reading, read, let) -> None:
     """An undeclared ``\\mathbb{I}`` read as the identity gave ``r``: the statement read
     again with it a name (Marsden & Ratiu's inertia tensor, a symmetric 3×3 matrix; ``read``
     reads under ``let``); where the verdicts agree a note joins ``r`` and ``reading``
-    (:func:`rigidsym.latex.respell.both_blackboard`).
+    (:func:`rigidsym.latex.blackboard.both_blackboard`).
 
     Raises:
         BadInput: the readings disagree, or the name reading is refused."""
-    from rigidsym.latex.respell import both_blackboard, with_name_reading
+    from rigidsym.latex.blackboard import both_blackboard, with_name_reading
     from rigidsym.latex.shapes import LatexError
 
     other, why = None, ""
@@ -360,13 +360,13 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
                  repair_seconds, seen):
     """:func:`_check_latex_steps` before the names are written back as typed."""
     from rigidsym.checking.checker import check as _check
+    from rigidsym.latex.blackboard import declared_blackboard
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
         accent_primes,
         angular_velocities,
         conjugate_c,
         cross_subscripts,
-        declared_blackboard,
         declared_columns,
         declared_deltas,
         declared_e,

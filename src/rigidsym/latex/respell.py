@@ -51,11 +51,10 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["NAME_READING", "accent_primes", "angular_velocities", "both_blackboard",
-           "conjugate_c", "cross_subscripts", "declared_blackboard", "declared_columns",
-           "declared_deltas", "declared_e", "declared_identity", "declared_labels",
-           "floor_cross", "grouping_braces", "hat_expressions", "labels_as_typed",
-           "open_blackboard", "rate_entries", "tilde_expressions", "with_name_reading"]
+__all__ = ["accent_primes", "angular_velocities", "conjugate_c", "cross_subscripts",
+           "declared_columns", "declared_deltas", "declared_e", "declared_labels",
+           "each_declaration", "floor_cross", "grouping_braces", "hat_expressions",
+           "labels_as_typed", "rate_entries", "tilde_expressions"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -87,149 +86,6 @@ def declared_e(latex: str, let: object) -> tuple[str, object, str]:
     return new, out, note
 
 
-#: Chirikjian's identity and zero, \mathbb{I} and \mathbb{O} (also 1, 0), as the grammar reads them
-_BLACKBOARD = re.compile(r"\\mathbb\s*\{\s*([IO01])\s*\}")
-
-
-#: \mathbb{I} as the grammar reads it (the identity), without a size subscript
-#: (\mathbb{I}_3 is the identity of that size: no book's inertia tensor is written so)
-_OPEN_I = re.compile(r"\\mathbb\{I\}(?!\s*_\s*\{?\s*\d)")
-#: the declaration that settles \mathbb{I} as the identity
-_IDENTITY = re.compile(r"\\mathbb\s*\{\s*I\s*\}\s*:\s*(?:the\s+)?identity(?:\s+matrix)?\s*",
-                       re.IGNORECASE)
-#: the kind the name reading of an undeclared \mathbb{I} gives it: Marsden & Ratiu's
-#: inertia tensor, a symmetric 3x3 matrix
-NAME_READING = r"\mathbb{I}: symmetric matrix"
-
-
-def _blackboard_named(decls: list[str] | None) -> set[str]:
-    """The blackboard glyphs (``I``, ``O``, ``0``, ``1``) a declaration of ``decls`` names."""
-    return {m.group(1) for d in decls or []
-            if (m := _BLACKBOARD.fullmatch(re.split(r"[:=(]", d, maxsplit=1)[0].strip()))}
-
-
-def _texts(let: object) -> list[str] | None:
-    """The declarations of ``let`` one by one, a dict's written ``NAME: KIND`` or
-    ``NAME = LATEX``; ``None`` for a value :func:`rigidsym.latex.lets.read_lets` refuses."""
-    from rigidsym.latex.lets import let_items
-
-    if isinstance(let, dict):
-        try:
-            return let_items(let)
-        except (TypeError, ValueError, AttributeError):
-            return None
-    return _decls(let)
-
-
-def declared_identity(let: object) -> tuple[object, str | None]:
-    """``let`` without its ``--let '\\mathbb{I}: identity'`` (Chirikjian's identity, the
-    reading that declaration settles: :data:`rigidsym.latex.contested.CONTESTED`, "blackboard
-    I"), and that declaration's text (``None`` where there is none; ``let`` unchanged).
-
-    Args:
-        let: the declarations, as :func:`declared_e`'s.
-
-    Raises:
-        BadInput: ``\\mathbb{I}`` declared the identity and named as well.
-    """
-    from rigidsym.core.errors import BadInput
-
-    decls = _texts(let)
-    said = [d for d in decls or [] if _IDENTITY.fullmatch(d)]
-    if not said:
-        return let, None
-    kept = [d for d in decls if not _IDENTITY.fullmatch(d)]
-    if len(said) > 1 or "I" in _blackboard_named(kept):
-        other = next((d for d in kept if "I" in _blackboard_named([d])), said[-1])
-        raise BadInput(f"--let: \\mathbb{{I}} is declared twice ('{said[0]}' and '{other}')")
-    return kept, said[0]
-
-
-def open_blackboard(latex: str, let: object) -> bool:
-    """Whether ``latex`` or a declaration of ``let`` uses ``\\mathbb{I}`` (without a size
-    subscript) and no ``--let`` names it: the identity in Chirikjian (2011), Marsden &
-    Ratiu's inertia tensor (1999), a contested construct read both ways
-    (:data:`rigidsym.latex.contested.CONTESTED`, "blackboard I"). A ``--let
-    '\\mathbb{I}: identity'`` is taken out first (:func:`declared_identity`).
-
-    Args:
-        latex: the LaTeX.
-        let: the declarations, as :func:`declared_e`'s.
-    """
-    decls = _texts(let)
-    if decls is None or "I" in _blackboard_named(decls):
-        return False
-    return any(_OPEN_I.search(x) for x in [latex, *decls])
-
-
-def with_name_reading(let: object) -> list[str]:
-    """``let`` (one ``\\mathbb{I}`` uses, undeclared: :func:`open_blackboard`) with
-    :data:`NAME_READING`: the statement read with ``\\mathbb{I}`` a name, Marsden &
-    Ratiu's inertia tensor.
-
-    Args:
-        let: the declarations, as :func:`declared_e`'s (:func:`open_blackboard` true).
-    """
-    return [*(_texts(let) or []), NAME_READING]
-
-
-def both_blackboard(first: str, other: str | None, notes: list[str],
-                    why: str = "") -> None:
-    """A statement that uses ``\\mathbb{I}`` undeclared, read both ways: ``first`` the
-    verdict with ``\\mathbb{I}`` the identity, ``other`` with it a name (a symmetric 3×3
-    matrix, :data:`NAME_READING`), ``None`` where that reading does not type-check (``why``:
-    the reader's words). Where one verdict remains a note is appended to ``notes`` (the
-    reading's).
-
-    Raises:
-        BadInput: they differ, or the name reading is refused (``why``): the reading is the
-            reader's to declare, never assumed.
-    """
-    from rigidsym.core.errors import BadInput
-    from rigidsym.latex.contested import construct
-
-    c = construct("blackboard I")
-    identity, name = c.readings
-    if other == first:
-        notes.append(f"\\mathbb{{I}}: not declared; read as {identity.means} "
-                     f"({identity.books}) and as {name.means} ({name.books}): both {first}")
-        return
-    if other is None and why.startswith("shapes:"):
-        notes.append(f"\\mathbb{{I}}: not declared; read as {identity.means} "
-                     f"({identity.books}): {first}; as {name.means} ({name.books}), the "
-                     f"statement does not type-check ({why[7:].strip()})")
-        return
-    said = other if other is not None else f"refused ({why})"
-    raise BadInput(f"--latex: \\mathbb{{I}} is read two ways by the books, as "
-                   f"{identity.means} ({identity.books}) or as {name.means} ({name.books}); "
-                   f"nothing declares it, and the readings disagree (the identity: {first}; "
-                   f"a symmetric 3×3 matrix: {said}): say which, {c.settles}")
-
-
-def declared_blackboard(latex: str, let: object) -> tuple[str, object, str]:
-    """``(latex, let, note)``: where a ``--let`` names ``\\mathbb{I}`` (Marsden & Ratiu's
-    inertia tensor, ``--let '\\mathbb{I} = \\operatorname{diag}(I_1, I_2, I_3)'``; also
-    ``\\mathbb{O}``), that glyph is the declared name, not Chirikjian's identity (zero): each
-    occurrence in the LaTeX and the declarations is respelt ``\\mathbb{ I }``, the grammar's
-    name in the blackboard font (``note`` says so); else all unchanged and ``note`` is ``""``.
-
-    Args:
-        latex: the LaTeX.
-        let: the declarations, as :func:`declared_e`'s.
-    """
-    decls = _decls(let)
-    named = _blackboard_named(decls)
-    if not named:
-        return latex, let, ""
-
-    def name(m):
-        return f"\\mathbb{{ {m.group(1)} }}" if m.group(1) in named else m.group(0)
-
-    glyphs = ", ".join(f"\\mathbb{{{g}}}" for g in sorted(named))
-    return (_BLACKBOARD.sub(name, latex), [_BLACKBOARD.sub(name, d) for d in decls],
-            f"{glyphs}: the declared name, not the identity (zero) matrix")
-
-
 #: Ginsberg's column-matrix braces around one glyph, \{\omega\}, \{\omega'\}
 _COLUMN = re.compile(r"\\\{\s*((?:\\[A-Za-z]+\s*(?:\{[^{}]*\})?|[A-Za-z])'*)\s*\\\}")
 
@@ -245,7 +101,7 @@ def declared_columns(latex: str, let: object) -> tuple[str, object, str]:
         latex: the LaTeX.
         let: the declarations, as :func:`declared_e`'s.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     named = {re.sub(r"\s+", "", m.group(1)) for d in decls or []
              if (m := _COLUMN.fullmatch(re.split(r"[:=]", d, maxsplit=1)[0].strip()))}
     if not named:
@@ -301,7 +157,7 @@ def grouping_braces(latex: str, let: object) -> tuple[str, object, str]:
         latex: the LaTeX.
         let: the declarations, as :func:`declared_e`'s.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if decls is None:
         return latex, let, ""
     said: list[str] = []
@@ -377,7 +233,7 @@ def accent_primes(latex: str, let: object) -> tuple[str, object, str]:
     from rigidsym.latex.declgraph import glyph_keys
     from rigidsym.latex.shapes import LatexError
 
-    decls = _decls(let)
+    decls = each_declaration(let)
     if not decls or "'" not in latex:
         return latex, let, ""
     declared = {x.key for x in read_lets(decls)}
@@ -454,13 +310,13 @@ def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
 
 def _respelt(respell, latex: str, let: object) -> tuple[str, object]:
     """``respell`` applied to the LaTeX and to every declaration of ``let`` (a dict's string
-    values, or the list :func:`_decls` reads; ``let`` unchanged where it reads none), the
+    values, or the list :func:`each_declaration` reads; ``let`` unchanged where it reads none), the
     LaTeX first."""
     new = respell(latex)
     if isinstance(let, dict):
         out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
     else:
-        decls = _decls(let)
+        decls = each_declaration(let)
         out = let if decls is None else [respell(d) for d in decls]
     return new, out
 
@@ -530,7 +386,7 @@ def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if not decls:
         return latex, let, ""
     rates = {}
@@ -586,7 +442,7 @@ def _label_names(let: object) -> set[tuple[str, str, str]]:
     declaration of ``let`` names (a function's parameters aside: Beard's
     ``R_{v2}^b(\\phi) = ...``, ``R^b_{v2}`` read as ``R_{v2}^b``)."""
     names = set()
-    for d in _decls(let) or ():
+    for d in each_declaration(let) or ():
         name = re.split(r"\s*(?:\([^()]*\))?\s*[:=]", d, maxsplit=1)[0].strip()
         m = _LABELLED.fullmatch(_LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", name))
         if m and not m["acc"]:
@@ -622,7 +478,7 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
     """
     if let is None:
         return latex, let, ""
-    decls = _decls(let)
+    decls = each_declaration(let)
     if decls is None:
         return latex, let, ""
     names = _label_names(decls)
@@ -649,7 +505,7 @@ def _index(mark: str, text: str) -> str:
     return "" if not text else f"{mark}{text}" if len(text) == 1 else f"{mark}{{{text}}}"
 
 
-def _decls(let: object) -> list[str] | None:
+def each_declaration(let: object) -> list[str] | None:
     """The declarations of ``let`` one by one, or ``None`` for a dict or a value that
     :func:`rigidsym.latex.lets.read_lets` refuses (it says why, later)."""
     if let is None or isinstance(let, dict):
@@ -676,7 +532,7 @@ def _named_cross_subscripts(let: object) -> set[str]:
     ``\\mathbf{v}_\\times = \\hat{\\mathbf{n}}\\times\\mathbf{v}``, a vector): names of
     their own, never respelt, in the LaTeX or the declarations."""
     out = set()
-    for d in _decls(let) or []:
+    for d in each_declaration(let) or []:
         name = re.split(r"[:=]", d, maxsplit=1)[0]
         m = _SUB_TIMES.search(name)
         g = _GLYPH_END.search(name[:m.start()]) if m else None
@@ -778,7 +634,7 @@ def declared_deltas(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if not decls:
         return latex, let, ""
     names = set()
@@ -814,7 +670,7 @@ def conjugate_c(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let) or []
+    decls = each_declaration(let) or []
     if not any(_QPRODUCT.search(t) for t in [latex, *decls]) or \
             not any(_CONJ_C.search(t) for t in [latex, *decls]):
         return latex, let, ""
@@ -838,7 +694,7 @@ def angular_velocities(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if not decls:
         return latex, let, ""
     out, said = [], []
