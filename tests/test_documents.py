@@ -311,3 +311,18 @@ def test_the_documents_own_q_w_beside_a_rotation_is_never_its_body_velocity(tmp_
     for more in ([], [r"\mathbf{Q}_{w}: 3-vector"]):  # undeclared, then declared
         own = check_document(tmp_path / "own.md", repairs=False, lets=lets + more).records
         assert own[0]["verdict"] == "not-checked", own[0]
+
+
+def test_a_rate_the_reader_takes_as_a_glyph_of_its_own_is_undeclared(tmp_path):
+    # '\ddot{Q}: second rate of Q' is a rate where the reader reads it as one; inside a
+    # model it is a glyph of its own, any matrix: refused, never a counterexample resting
+    # on a \ddot{Q} no motion of Q has (tr of \dot\Omega is 0 for every rotation Q(t))
+    (tmp_path / "rate.md").write_text(
+        "$$\n\\dot{\\boldsymbol{\\Omega}} := \\ddot{\\mathbf{Q}}\\mathbf{Q}^T + "
+        "\\dot{\\mathbf{Q}}\\dot{\\mathbf{Q}}^T\n$$\n\n$$\n\\text{tr}(\\dot{\\boldsymbol{\\Omega}})"
+        " = 0\n$$\n")
+    res = check_document(tmp_path / "rate.md", repairs=False,
+                         lets=[r"\mathbf{Q}(t): rotation", r"\dot{\mathbf{Q}}: rate of \mathbf{Q}",
+                               r"\ddot{\mathbf{Q}}: second rate of \mathbf{Q}"])
+    assert [r["verdict"] for r in res.records] == ["definition", "not-checked"]
+    assert res.records[1]["free"] == [r"\ddot{\mathbf{Q}}"]
