@@ -14,6 +14,7 @@ Any construct not listed here raises :class:`NotCovered` naming it.
 from __future__ import annotations
 
 import random
+import re
 from dataclasses import dataclass
 
 import lark
@@ -38,6 +39,14 @@ _FUNCS = {"\\sin": mp.sin, "\\cos": mp.cos, "\\tan": mp.tan, "\\arctan": mp.atan
           "\\arccos": mp.acos, "\\cot": mp.cot, "\\sec": mp.sec, "\\csc": mp.csc}
 _INVERSES = {"\\sin": mp.asin, "\\cos": mp.acos, "\\tan": mp.atan}
 _OPS = {"tr": V.trace, "Tr": V.trace, "trace": V.trace, "det": V.det, "vect": V.vect}
+# an operator's token: \sin, \text{ vect }, \operatorname*{tr}, \textrm{det}, \mbox{Tr} ...
+_OPERATOR_TOKEN = re.compile(r"\\[A-Za-z]+\*?\s*(?:\{\s*([A-Za-z0-9]+)\s*\})?")
+
+
+def _operator_word(token: str) -> str:
+    """The operator's word of a token (``\\text{ vect }`` -> ``vect``), else the token."""
+    m = _OPERATOR_TOKEN.fullmatch(token.strip())
+    return (m.group(1) or m.group(0).strip()[1:]) if m else token.strip()
 
 
 @dataclass(frozen=True)
@@ -492,7 +501,7 @@ class Evaluator:
             if V.is_matrix(v) or isinstance(v, V.Eye | V.Zero):
                 raise NotCovered(f"{name} of a matrix in {text_of(t)!r}")
             return _FUNCS[name](v)
-        word = name.split("{")[-1].rstrip("}").lstrip("\\")
+        word = _operator_word(name)
         if word in _OPS:
             return _OPS[word](v)
         raise NotCovered(f"the operator {name}")

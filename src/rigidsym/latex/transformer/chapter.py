@@ -22,7 +22,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra.operators import Det, Vect
-from rigidsym.latex.lexing import Parsed, Relation, parser
+from rigidsym.latex.lexing import Parsed, Relation, operator_word, parser
 from rigidsym.latex.shapes import (
     LatexError,
     SizedZero,
@@ -206,7 +206,7 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
         name, x = str(items[0]), value_of(items[1])
         _operator_of_function(name, items[1], getattr(self, "functions", {}))
         x = as_scalar(x) if "det" not in name else x
-        fn = name.split("{")[-1].rstrip("}").lstrip("\\")
+        fn = operator_word(name)
         fn = "tr" if fn in ("Tr", "trace") else fn
         if fn in ("sin", "cos", "tan"):
             return getattr(sp, fn)(x)
@@ -307,7 +307,7 @@ def _operator_of_function(name: str, node, functions: dict) -> None:
         LatexError: construct ``function``, its ``function`` attribute the glyph's key (the
             reader writes the function's parameters into the advice)."""
     key = getattr(node, "key", None)
-    op = name.split("{")[-1].rstrip("}").lstrip("\\")
+    op = operator_word(name)
     if key is None or key not in functions or op not in ("det", "tr", "Tr", "trace", "vect"):
         return  # (a sine takes a scalar glyph as it is)
     exc = LatexError(
