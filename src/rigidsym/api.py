@@ -423,7 +423,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
 
     # a verdict needs the second, independent semantics to agree (a does-not-hold
     # at the symbolic path's own counterexample, handed over as plain data)
-    at = given_point(r.counterexample, reading.eq.build(), reading.symbols) \
+    at = given_point(r.counterexample, reading.eq.build(), reading.symbols, reading.rows) \
         if r.verdict == "does-not-hold" else None
     second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules,
                          at=at, symbols=reading.symbols, statement=reading.eq.build(),

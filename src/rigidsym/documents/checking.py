@@ -141,8 +141,9 @@ def _introduced(key: str, glyph, latex: str, lets: list[str]) -> bool:
     document (fails closed: a text that cannot be read counts as writing it)."""
     from rigidsym.latex import LatexError
     from rigidsym.latex.declgraph import glyph_keys
+    from rigidsym.latex.printed_point import body_velocities
 
-    if getattr(glyph, "meaning", "") != "body velocity" or not key.endswith("_{w}"):
+    if not body_velocities({key: glyph}):
         return False
     for text in (latex, *(t.split(":", 1)[0] if ":" in t and "=" not in t else t
                           for t in lets)):

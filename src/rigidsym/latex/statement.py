@@ -342,7 +342,8 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
         " in ")[0] in ("angle", "scalar")) and dot_key(x.key) in occurs)]
     defaulted = defaulted_glyphs(occurs, {x.key for x in lets}, rd,
                                  rd.notes + list(parsed.readings))
-    unused_notes = unused_lets(unused, defaulted, parsed.glyphs)
+    unused_notes = unused_lets(unused, defaulted, [k for k in parsed.glyphs if getattr(
+        rd.glyphs.get(k), "meaning", "") != "body velocity"])  # the user's glyphs only
     notes, free = glyph_values(rd, lend, values,
                                 [e for chain in parsed.chains for e in chain])
     notes += unused_notes

@@ -61,7 +61,8 @@ def defaulted_glyphs(occurs, declared, rd, notes) -> set[str]:
     for k in set(occurs) - set(declared):
         g = rd.over.get(k) or rd.glyphs.get(k)
         if g is None or k in rd.by_notation or g.kind == "module" or g.section != "*" \
-                or g.meaning.startswith("the time derivative of"):
+                or g.meaning.startswith("the time derivative of") \
+                or g.meaning == "body velocity":  # the reader's own, never the user's
             continue
         out.add(k)
     return out | {m.group(1) for n in notes if (m := _DEFAULT_NOTE.match(n))} - set(declared)

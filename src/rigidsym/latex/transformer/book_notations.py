@@ -364,9 +364,14 @@ class BookNotationRules:
                 sp.Symbol(declared.name, real=True)
         if g.shape in ((3, 3), (4, 4)) and g.meaning.startswith(("rotation", "homogeneous")):
             n = 3 if g.shape == (3, 3) else 6
-            w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
-            self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
-                                                 "body velocity", "")
+            # a name and a key no declaration of the reader's uses: their own
+            # \mathbf{Q}_{w} stays theirs (sharing one symbol verified a false relation)
+            taken = set(self.overrides) | {o.name for o in self.overrides.values()}
+            mark = next(m for m in ("w", *(f"w{k}" for k in range(2, 99)))
+                        if f"{g.name}_{m}" not in taken and f"{key}_{{{m}}}" not in taken)
+            w = sp.MatrixSymbol(f"{g.name}_{mark}", n, 1)
+            self.glyphs[f"{key}_{{{mark}}}"] = Glyph(f"{key}_{{{mark}}}", "*", w.name, (n, 1),
+                                                      "free", "body velocity", "")
             what = "angular velocity" if n == 3 else "twist"
             named = (f"; --let '\\boldsymbol\\omega: angular velocity of {key}' declares a "
                      f"symbol of yours" if n == 3 else "")
