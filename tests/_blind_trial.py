@@ -31,6 +31,26 @@ def assert_not_wrong(case: dict) -> bool:
     return True
 
 
+def assert_slips_paired(cases: list[dict]) -> None:
+    """Each slip's id is its true statement's id with ``-slip``, from the same book and
+    place, so that each slip is judged beside the statement it was typed from."""
+    by_id = {c["id"]: c for c in cases}
+    for c in cases:
+        if c["truth"]:
+            continue
+        base = by_id[c["id"].removesuffix("-slip")]
+        assert base["truth"] and base["book"] == c["book"] and base["where"] == c["where"], c["id"]
+
+
+def assert_independent(*modules) -> None:
+    """The judges (the trial's NumPy truths) never import the judged."""
+    from pathlib import Path
+
+    for module in modules:
+        source = Path(module.__file__).read_text()
+        assert "import rigidsym" not in source and "from rigidsym" not in source, module
+
+
 def decided(case: dict) -> bool:
     """Whether the case as typed gets a verdict (a refusal or undecided does not)."""
     try:

@@ -251,12 +251,9 @@ def accent_primes(latex: str, let: object) -> tuple[str, object, str]:
         for m in _ACCENT.finditer(text):
             if m.start() < k:
                 continue
-            depth, j = 1, m.end()
-            while j < len(text) and depth:
-                depth += {"{": 1, "}": -1}.get(text[j], 0)
-                j += 1
-            primes = re.match(r"\s*('+)", text[j:])
-            if depth or primes is None:
+            j = _group_end(text, m.end())
+            primes = None if j < 0 else re.match(r"\s*('+)", text[j:])
+            if primes is None:
                 continue
             inner, end = text[m.end():j - 1], j + primes.end()
             inside = f"{text[m.start():m.end()]}{inner}{primes.group(1)}}}"
@@ -285,6 +282,16 @@ def _juxtaposed(inner: str) -> bool:
     return len(re.findall(_GLYPH, _INDEX.sub("", inner))) >= 2
 
 
+def _group_end(text: str, start: int) -> int:
+    """The index just past the ``}`` that closes a group opened just before ``start``
+    (nested groups counted), or -1 where it is not closed."""
+    depth, j = 1, start
+    while j < len(text) and depth:
+        depth += {"{": 1, "}": -1}.get(text[j], 0)
+        j += 1
+    return -1 if depth else j
+
+
 def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
                             form: str = "[{}]_\\times") -> str:
     """``text`` with each accent ``opening`` matches (up to its opening brace) whose braced
@@ -295,12 +302,9 @@ def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
     for m in opening.finditer(text):
         if m.start() < k:
             continue
-        depth, j = 1, m.end()
-        while j < len(text) and depth:
-            depth += {"{": 1, "}": -1}.get(text[j], 0)
-            j += 1
+        j = _group_end(text, m.end())
         inner = text[m.end():j - 1]
-        if depth or not takes(inner):
+        if j < 0 or not takes(inner):
             continue
         out += [text[k:m.start()], form.format(inner)]
         hits.append(inner)
