@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from importlib import metadata
 
+import _installed
 import numpy as np
 import pytest
 
@@ -177,7 +178,7 @@ def _alone(script: str) -> tuple[float, float]:
 
 
 def _peer(module: str, distribution: str, version: str):
-    mod = pytest.importorskip(module, reason=f"{distribution} is not installed")
+    mod = _installed.peer(module, distribution)
     try:
         got = metadata.version(distribution)
     except metadata.PackageNotFoundError:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import functools
 from importlib import metadata
 
+import _installed
 import numpy as np
 import pytest
 
@@ -32,8 +33,8 @@ mp.mp.dps = 50
 def _peer(module: str, distribution: str, version: str):
     """The peer's module, or a skip with a one-line reason: not installed, or another
     version than the one the finding was recorded for."""
-    mod = pytest.importorskip(module, reason=f"{distribution} is not installed (the "
-                                             "[oracles] extra)")
+    mod = _installed.peer(module, distribution, f"{distribution} is not installed (the "
+                                                "[oracles] extra)")
     try:
         got = metadata.version(distribution)
     except metadata.PackageNotFoundError:

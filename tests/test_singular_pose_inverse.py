@@ -28,6 +28,7 @@ from __future__ import annotations
 import shutil
 import subprocess
 
+import _installed
 import numpy as np
 import pytest
 from _profile import examples
@@ -248,7 +249,7 @@ def test_pure_translation_as_the_peers(backend):
     conventions (pytransform3d's q is our p0; their S is our plucker; theta, the slide, is
     not among our outputs)."""
     pt = pytest.importorskip("pytransform3d.transformations")
-    mr = pytest.importorskip("modern_robotics")
+    mr = _installed.peer("modern_robotics", "modern_robotics")
     rng = np.random.default_rng(11)
     for t in [np.array([0.0, 0.5, 0.2]), *rng.uniform(-3, 3, (5, 3))]:
         a = rng.uniform(-1, 1, 3)
