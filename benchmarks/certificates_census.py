@@ -45,6 +45,7 @@ from test_command import host
 ROOT = Path(__file__).resolve().parents[1]
 CERTCHECK = ROOT / "certcheck" / "src"
 REPORT = ROOT / "generated" / "report" / "chapter3.json"
+READING = ROOT / "derivations" / "angeles-chapter3.reading.toml"
 _CLI = "import sys; from rigidsym.cli import main; sys.exit(main(sys.argv[1:]))"
 _ISOLATED = ("import sys; sys.path.insert(0, {src!r}); from certcheck.__main__ import main; "
              "sys.exit(main({argv!r}))")
@@ -144,9 +145,11 @@ def census(folder: Path) -> dict:
 
 
 def certcheck(folder: Path, book: Path | None, flint: bool) -> dict:
-    """certcheck on the folder (``--quiet``), with python-flint or the standard library
+    """certcheck on the folder (``--quiet``, bound to the book and to the chapter's reading,
+    as docs/certificates.md's referee command), with python-flint or the standard library
     only (``python -I -S``, ``--no-flint``)."""
-    args = ["--quiet", *(["--book", str(book)] if book else []), str(folder)]
+    args = ["--quiet", *(["--book", str(book)] if book else []), "--reading", str(READING),
+            str(folder)]
     if flint:
         env = dict(os.environ, PYTHONPATH=str(CERTCHECK))
         argv = [sys.executable, "-m", "certcheck", *args]
@@ -167,7 +170,7 @@ def certcheck(folder: Path, book: Path | None, flint: bool) -> dict:
     not_read = sum(bool(NOT_READ.match(x)) for x in out)
     failed = sum(x.startswith("FAILED ") for x in out)
     slowest = sorted(times.items(), key=lambda kv: -kv[1])[:5]
-    shown += " --quiet" + (" --book BOOK" if book else "") + " DIR"
+    shown += " --quiet" + (" --book BOOK" if book else "") + " --reading READING DIR"
     return {"command": shown + ("" if flint else " --no-flint"),
             "exit": run["exit"], "wall_s": run["wall_s"], "cpu_s": run["cpu_s"],
             "max_rss_mb": run["max_rss_mb"], "certificates": len(times) + failed,

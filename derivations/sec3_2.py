@@ -170,7 +170,8 @@ def mozzi_chasles() -> Statement:
        ``2 (1 - cos phi) != 0``, so the null space of ``Q - 1`` is spanned by ``e`` and the
        minimisers are exactly the points of L.
 
-    Book: Sec. 3.2, Theorem 3.2.2.
+    Book: Sec. 3.2, Theorem 3.2.2, stated in words only: the four points above are claims
+    (the relations of the proof that decide the words), none a printed relation.
     """
     model = split_model()
     p_star = vec("p_star")
@@ -181,11 +182,10 @@ def mozzi_chasles() -> Statement:
         """Displacement of the body point at ``x``: ``a' + Q (x - a) - x`` (3.2), (3.3)."""
         return a_p + Q * (x - a) - x
 
-    return Statement(
-        [Rel(d_P.T * d_P, d_0**2 * sp.Identity(1) + d_perp.T * d_perp,
-             "||d_P||^2 = d_0^2 + ||d_perp||^2"),
-         Rel((I3 - e * e.T) * disp(p_star), sp.ZeroMatrix(3, 1), "P* has minimum displacement"),
-         Rel(disp(p_star + lam * e), d_0 * e, "points of L: identical, parallel to e"),
-         Rel(d_perp, (Q - I3) * (p - p_star), "d_perp = (Q - 1)(p - p*)"),
-         Rel(Det(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)), "null space of Q - 1 is span(e)")],
-        model, derived=model[p_star])
+    return Statement([], model, derived=model[p_star], claims=[  # the page prints none
+        Rel(d_P.T * d_P, d_0**2 * sp.Identity(1) + d_perp.T * d_perp,
+            "||d_P||^2 = d_0^2 + ||d_perp||^2"),
+        Rel((I3 - e * e.T) * disp(p_star), sp.ZeroMatrix(3, 1), "P* has minimum displacement"),
+        Rel(disp(p_star + lam * e), d_0 * e, "points of L: identical, parallel to e"),
+        Rel(d_perp, (Q - I3) * (p - p_star), "d_perp = (Q - 1)(p - p*)"),
+        Rel(Det(Q - I3 + e * e.T), 2 * (1 - sp.cos(phi)), "null space of Q - 1 is span(e)")])

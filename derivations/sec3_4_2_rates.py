@@ -9,9 +9,10 @@ and in (3.76a-d) ``N``, ``L``, ``H`` are modelled by the pose Jacobians of
 :func:`derivations.sec3_4_2.pose_jacobians` (derived from ``Q`` alone, not from the book);
 in (3.77) by the printed forms, once (3.76b-d) have verified them.
 
-Left inverses are not unique (``nu``, ``lambda``, ``eta`` live on 3-dimensional constraint
-sets of R^4), so (3.77b-d) are decided by their characterising conditions: ``omega`` is
-recovered along every motion, and ``Ftilde F = 1``. The products ``F Ftilde`` are 4 x 4
+(3.77b-d) are definitions (the page: "defined below"); left inverses are not unique
+(``nu``, ``lambda``, ``eta`` live on 3-dimensional constraint sets of R^4), so what the page
+says of them is checked as claims: ``omega`` is recovered along every motion (3.77a), and
+``Ftilde F = 1``. The products ``F Ftilde`` are 4 x 4
 projectors onto the tangent space of the constraint set (the range of F), along the kernel
 of Ftilde:
 
@@ -182,55 +183,62 @@ def angular_velocity_from_invariant_rates() -> Statement:
     return Statement(printed, m, corrected=corrected)
 
 
-def _left_inverse(F, F_tilde_printed, q_dot, name: str, extra=()) -> Statement:
+def _left_inverse(F, Ft, Ft_printed, q_dot, name: str, extra=()) -> Statement:
+    """The definition ``Ftilde = (printed form)`` and the properties the page gives it (the
+    words before (3.77b): it recovers ``omega`` as (3.77a) writes, and it is a left inverse
+    of ``F``), with the projector ``F Ftilde`` of the module docstring, as claims."""
     m = rates_model()
     return Statement(
-        [Rel(omega, F_tilde_printed * q_dot, f"omega = {name}tilde rate"),
-         Rel(F_tilde_printed * F, I3, f"{name}tilde {name} = 1")], m,
-        claims=[Rel(F * F_tilde_printed, _projectors(m)[name], f"{name} {name}tilde"),
-                *extra])
+        [Rel(Ft, Ft_printed, f"{name}tilde")], m, defines=(f"{name}tilde",),
+        claims=[Rel(omega, Ft * q_dot, f"omega = {name}tilde rate"),
+                Rel(Ft * F, I3, f"{name}tilde {name} = 1"),
+                Rel(F * Ft, _projectors(m)[name], f"{name} {name}tilde"), *extra])
 
 
-@equation("3.77b", "Left inverse Ntilde of N", section="3.4.2",
+@equation("3.77b", "Left inverse Ntilde of N", section="3.4.2", kind="definition",
           latex=r"\tilde{\mathbf{N}} \equiv [(\sin \phi)\mathbf{1} + (1 - \cos \phi)\mathbf{E} "
                 r"\mathbf{e}],",
           singular="none for Ntilde; it inverts N off phi = 0 (mod 2 pi)")
 def natural_invariant_left_inverse() -> Statement:
     """``Ntilde = [sin(phi) 1 + (1 - cos phi) E | e]`` (3 x 4; a 3 x 3 block, then ``e``).
 
-    Book: Sec. 3.4.2, Eq. (3.77b). Checked: ``omega = Ntilde nu_dot`` along the motion,
-    ``Ntilde N = 1``; claim: ``N Ntilde = 1_4 - [e; -sin phi][e^T, 0]``, the projector onto
-    the tangent space ``{e^T e_dot = 0}`` along ``[e; -sin phi]`` (the kernel of Ntilde).
+    Book: Sec. 3.4.2, Eq. (3.77b), a definition (the page: "defined below"). Claims, the
+    properties the page gives it: ``omega = Ntilde nu_dot`` along the motion (3.77a),
+    ``Ntilde N = 1`` (a left inverse), and ``N Ntilde = 1_4 - [e; -sin phi][e^T, 0]``, the
+    projector onto the tangent space ``{e^T e_dot = 0}`` along ``[e; -sin phi]`` (the kernel
+    of Ntilde).
     """
-    return _left_inverse(N, N_tilde(e, phi), nu_dot, "N")
+    return _left_inverse(N, Nt, N_tilde(e, phi), nu_dot, "N")
 
 
-@equation("3.77c", "Left inverse Ltilde of L", section="3.4.2",
+@equation("3.77c", "Left inverse Ltilde of L", section="3.4.2", kind="definition",
           latex=r"\tilde{\mathbf{L}} \equiv [\mathbf{1} + [(\sin \phi)/(1 + \cos \phi)]"
                 r"\mathbf{E} - [(\sin \phi)/(1 + \cos \phi)]\mathbf{e}],",
           singular="phi = pi (mod 2 pi)")
 def linear_invariant_left_inverse() -> Statement:
     """``Ltilde = [1 + tan(phi/2) E | -tan(phi/2) e]`` (3 x 4), ``tan(phi/2) = sin/(1 + cos)``.
 
-    Book: Sec. 3.4.2, Eq. (3.77c). The printed minus is the sign of the fourth column.
-    Claim: ``L Ltilde = 1_4 - [u; 1 + u0] lambda^T / (1 + u0)``, the projector onto the
-    tangent space ``lambda^T lambda_dot = 0`` along ``[u; 1 + u0]``.
+    Book: Sec. 3.4.2, Eq. (3.77c), a definition. The printed minus is the sign of the fourth
+    column. Claims: ``omega = Ltilde lambda_dot``, ``Ltilde L = 1``, and
+    ``L Ltilde = 1_4 - [u; 1 + u0] lambda^T / (1 + u0)``, the projector onto the tangent
+    space ``lambda^T lambda_dot = 0`` along ``[u; 1 + u0]``.
     """
-    return _left_inverse(L, L_tilde(e, phi), lam_dot, "L")
+    return _left_inverse(L, Lt, L_tilde(e, phi), lam_dot, "L")
 
 
-@equation("3.77d", "Left inverse Htilde of H", section="3.4.2",
+@equation("3.77d", "Left inverse Htilde of H", section="3.4.2", kind="definition",
           latex=r"\tilde{\mathbf{H}} \equiv 2 [ [\cos(\phi/2)]\mathbf{1} + [\sin(\phi/2)]"
                 r"\mathbf{E} - [\sin(\phi/2)]\mathbf{e} ]",
           singular="none")
 def euler_rodrigues_left_inverse() -> Statement:
     """``Htilde = 2 [cos(phi/2) 1 + sin(phi/2) E | -sin(phi/2) e]`` (3 x 4).
 
-    Book: Sec. 3.4.2, Eq. (3.77d). Claim: ``H Htilde = 1_4 - eta eta^T``, the orthogonal
-    projector onto the tangent space of the unit 3-sphere at ``eta`` (``Htilde = 4 H^T``).
+    Book: Sec. 3.4.2, Eq. (3.77d), a definition. Claims: ``omega = Htilde eta_dot``,
+    ``Htilde H = 1``, ``H Htilde = 1_4 - eta eta^T``, the orthogonal projector onto the
+    tangent space of the unit 3-sphere at ``eta``, and ``Htilde = 4 H^T``.
     """
-    return _left_inverse(H, H_tilde(e, phi), eta_dot, "H",
-                         extra=[Rel(H_tilde(e, phi), 4 * H.T, "Htilde = 4 H^T")])
+    return _left_inverse(H, Ht, H_tilde(e, phi), eta_dot, "H",
+                         extra=[Rel(Ht, 4 * H.T, "Htilde = 4 H^T")])
 
 
 # --------------------------------------------------------------------------- the caveat
@@ -268,8 +276,9 @@ def angular_velocity_not_a_derivative() -> Statement:
 
     Book: Sec. 3.4.2, Caveat after Eq. (3.77d).
 
-    Statement decided: on a generic two-parameter family of poses ``Q(x, y)``, the angular
-    velocities of the coordinate motions obey the Maurer-Cartan relation
+    Claims checked (the page states the caveat in words only, with no relation): on a
+    generic two-parameter family of poses ``Q(x, y)``, the angular velocities of the
+    coordinate motions obey the Maurer-Cartan relation
     ``d_x omega_y - d_y omega_x = omega_x x omega_y`` (transcribed ``Omega_x omega_y``), and
     at the identity pose with ``omega_x = 2 i``, ``omega_y = 2 j`` this curl is ``[0, 0, 4]``.
     Why it captures the caveat: if ``omega = d/dt f(Q)`` for all motions, then
@@ -280,10 +289,9 @@ def angular_velocity_not_a_derivative() -> Statement:
     integration factors of (3.76a).
     """
     model, curl_at_identity = _surface_model()
-    return Statement([Rel(d_x_omega_y - d_y_omega_x, Omega_x * omega_y, "Maurer-Cartan")],
-                     model,
-                     claims=[Rel(curl_at_identity, sp.Matrix([0, 0, 4]),
-                                 "curl at the identity pose is non-zero")])
+    return Statement([], model, claims=[  # the page prints no relation: the words alone
+        Rel(d_x_omega_y - d_y_omega_x, Omega_x * omega_y, "Maurer-Cartan"),
+        Rel(curl_at_identity, sp.Matrix([0, 0, 4]), "curl at the identity pose is non-zero")])
 
 
 # --------------------------------------------------------------------------- pose rates and twists

@@ -16,14 +16,65 @@ def params(cases: list[dict], known_wrong: set[str]) -> list:
             if c["id"] in known_wrong else pytest.param(c, id=c["id"]) for c in cases]
 
 
-def assert_not_wrong(case: dict) -> None:
-    """The case's verdict as typed is its NumPy truth, or no verdict at all."""
+def assert_not_wrong(case: dict) -> bool:
+    """The case's verdict as typed is its NumPy truth, or no verdict at all; returns whether
+    it was decided."""
     try:
         r = rigidsym.check_latex(case["latex"], let=case["lets"], notation=case["notation"],
                                  repairs=False, timeout=None)
     except ValueError:
-        return  # refused: not decided, never wrong
+        return False  # refused: not decided, never wrong
     if r.verdict == "undecided":
-        return
+        return False
     said = r.verdict in ("verified", "definition")
     assert said is case["truth"], (r.verdict, r.model)
+    return True
+
+
+def assert_slips_paired(cases: list[dict]) -> None:
+    """Each slip's id is its true statement's id with ``-slip``, from the same book and
+    place, so that each slip is judged beside the statement it was typed from."""
+    by_id = {c["id"]: c for c in cases}
+    for c in cases:
+        if c["truth"]:
+            continue
+        base = by_id[c["id"].removesuffix("-slip")]
+        assert base["truth"] and base["book"] == c["book"] and base["where"] == c["where"], c["id"]
+
+
+def assert_independent(*modules) -> None:
+    """The judges (the trial's NumPy truths) never import the judged."""
+    from pathlib import Path
+
+    for module in modules:
+        source = Path(module.__file__).read_text()
+        assert "import rigidsym" not in source and "from rigidsym" not in source, module
+
+
+def decided(case: dict) -> bool:
+    """Whether the case as typed gets a verdict (a refusal or undecided does not)."""
+    try:
+        r = rigidsym.check_latex(case["latex"], let=case["lets"], notation=case["notation"],
+                                 repairs=False, timeout=None)
+    except ValueError:
+        return False
+    return r.verdict != "undecided"
+
+
+def assert_record_of(record: dict, cases: list[dict], known_wrong: set[str]) -> None:
+    """A trial's benchmark record names each case once, in order, with its truth, judged
+    consistently with its verdict, and its totals are its rows'."""
+    rows = record["rows"]
+    assert [r["id"] for r in rows] == [c["id"] for c in cases]
+    for row, case in zip(rows, cases, strict=True):
+        assert row["truth"] == case["truth"], row["id"]
+        if row["verdict"] in ("bad-input", "undecided"):
+            assert row["judged"] == "undecided", row["id"]
+        else:
+            said = row["verdict"] in ("verified", "definition")
+            assert row["judged"] == ("right" if said == case["truth"] else "WRONG"), row["id"]
+    assert record["n"] == len(rows)
+    assert record["decided_as_typed"] == sum(r["judged"] != "undecided" for r in rows)
+    assert record["wrong"] == [r["id"] for r in rows if r["judged"] == "WRONG"]
+    assert set(record["wrong"]) == known_wrong
+    assert record["commit"] and record["host"]["cores"]

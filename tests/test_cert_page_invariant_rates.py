@@ -271,3 +271,67 @@ def test_does_not_hold_read_on_every_side_with_glyphs_the_page_defines_below(boo
     c = copy.deepcopy(certs["3.96a"])
     next(e for e in c["symbols"] if e["glyph"] == "\\mathbf{B}")["printed_as"] = "(3.96d)"
     assert "(3.96a)" in rejection(c, book) and "(3.96d)" in rejection(c, book)
+
+
+def test_a_lost_column_separator_is_read_by_shape():
+    """``[A + c B v]`` is the block row ``[A + c B, v]`` (3.77b); ``[A - c v]`` with a
+    scalar c is ``[A, -c v]`` (3.77c-d): the sign and the scalar go with the column, the
+    only reading whose shapes agree; a column that is no n x 1 array is not read."""
+    from certcheck.reader import read_relations
+
+    table = [{"glyph": r"\mathbf{e}", "kind": "unit", "atoms": ["e_1", "e_2", "e_3"]},
+             {"glyph": r"\mathbf{E}", "cpm_of": r"\mathbf{e}"},
+             {"glyph": r"\phi", "kind": "angle", "atoms": ["phi"]}]
+    for page, column in ((r"[\mathbf{1} + (\sin \phi)\mathbf{E} \mathbf{e}]", "e_1"),
+                         (r"[\mathbf{1} + (\sin \phi)\mathbf{E} - [\cos \phi]\mathbf{e}]",
+                          "-((cos(phi))*(e_1))")):
+        (v, _, cited), = read_relations(page, table)[0]
+        assert v.shape == (3, 4) and v.rows[0][3] == column, (page, v.rows)
+        assert any("column separator lost" in c for c in cited)
+    (v, _, _), = read_relations(r"[\mathbf{1} + (\sin \phi)\mathbf{E} - \mathbf{E}]",
+                                table)[0]
+    assert v.shape == (3, 3)  # no column: an ordinary sum
+
+
+def test_left_inverses_are_the_pages_definitions_read_and_claims_proved(book):
+    """(3.77c), printed "defined below" with ``\\equiv``: a definition in the reading and in
+    the declaration, whose characterisations (omega recovered, a left inverse, the
+    projector) are claims, each proved; certcheck reads both printed sides (the right one
+    as a block row), and the column negated, the verdict made verified: rejected naming it.
+    (3.77b, 3.77d the same, in slow.)"""
+    _left_inverse_read(["3.77c"], book)
+
+
+@pytest.mark.slow
+def test_every_left_inverse_a_definition_read_and_the_words_only_theorems_said(book):
+    """(3.77b-d) as the quick test; thm3.2.2 and caveat3.4, stated in words only, carry no
+    printed relation, and certcheck says so (their claims, proved, are the certificate's
+    reading of the words)."""
+    from rigidsym.registry.declarations import REGISTRY, load_all
+
+    _left_inverse_read(["3.77b", "3.77c", "3.77d"], book)
+    load_all()
+    for i, c in certificates(["thm3.2.2", "caveat3.4"]).items():
+        assert REGISTRY[i].build().printed == [] and REGISTRY[i].kind == "claim"
+        assert not [r for r in c["relations"] if r["role"] == "printed"]
+        assert "stated in words only" in read_lines(c, book)[0], i
+
+
+def _left_inverse_read(ids: list[str], book: str) -> None:
+    import tomllib
+
+    from rigidsym.registry.declarations import REGISTRY, load_all
+
+    load_all()
+    classes = tomllib.loads(READING.read_text(encoding="utf-8"))["classes"]
+    for i, c in certificates(ids).items():
+        assert i in classes["definition"] and REGISTRY[i].kind == "definition", i
+        assert c["verdict"] == "definition", i
+        roles = [(r["role"], r["evidence"]["type"]) for r in c["relations"]]
+        assert roles[0] == ("printed", "statement") and len(roles) >= 4, roles
+        assert all(role == "claim" and t in ("cofactors", "identity") for role, t in roles[1:])
+        lines = read_lines(c, book, fast=False)
+        assert lines[0].startswith("read from the page: relation 1's lhs"), (i, lines)
+        assert "read as a block row" in lines[0], lines
+        for t in (column_changed(c, lambda x: f"-({x})"), relabelled(c, "verified")):
+            assert f"({i})" in rejection(t, book), i

@@ -219,7 +219,9 @@ def test_equation_with_latex_and_no_printed_form_reads_it(module):
     ([r"\mathbf{Q}^T\mathbf{Q} = "], ["position", "^", "expected"]),
     ([r"\mathbf{Q} = \foo{Q}"], ["unknown macro \\foo"]),
     ([r"\mathbf{a}\mathbf{b} = \mathbf{0}"], ["\\mathbf{a}", "--let", "depends on the shape"]),
-    ([r"\mathbf{a} = \mathbf{a}", "--let", r"\mathbf{b}: vector"], ["does not occur"]),
+    # an unused --let spelt near an undeclared glyph: the likely misspelling, both named
+    ([r"\mathbf{a} = \mathbf{a}", "--let", r"a: vector"],
+     ["does not occur", "\\mathbf{a}", "spelt near"]),
     ([r"\mathbf{a} = \mathbf{a}", "--let", r"\mathbf{a}: banana"],
      ["unknown kind", "unit vector", "rotation", "m×n matrix", "twist"]),
     ([r"\mathbf{a} = \mathbf{a}", "--let", r"\mathbf{a} rotation"], ["NAME: KIND"]),
@@ -239,7 +241,7 @@ def test_bad_input_is_named_with_exit_2_and_no_traceback(capsys, args, words):
 
 def test_bad_input_from_python_raises_value_errors():
     with pytest.raises(ValueError, match="does not occur"):
-        rigidsym.check_latex(r"\mathbf{a} = \mathbf{a}", [r"\mathbf{b}: vector"])
+        rigidsym.check_latex(r"\mathbf{a} = \mathbf{a}", [r"\mathbf{a}_1: vector"])
     with pytest.raises(ValueError, match="position"):
         rigidsym.check_latex(r"\mathbf{a} = (", None)
     with pytest.raises(ValueError, match="let"):

@@ -350,3 +350,58 @@ def test_braces_of_one_glyph_or_of_a_set_are_not_read_as_a_group():
     assert out == r"((a + (b c))x)" and note
     with pytest.raises(ValueError, match=r"\\\{"):  # an undeclared glyph's braces: unread
         _check(r"\{\boldsymbol\omega\} = \boldsymbol\omega", [r"\boldsymbol\omega: vector"])
+
+
+ANGLES = [r"\theta: angle", r"\phi: angle"]
+#: true read as cos(θ) φ only, and true read as cos(θ φ) only
+EXTENT_FACTOR = r"\cos\theta\phi = \phi\cos\theta"
+EXTENT_PRODUCT = r"\cos\theta\phi = \cos(\theta\phi)"
+
+
+@pytest.mark.parametrize("reading, latex, verdict", [
+    ("factor", EXTENT_FACTOR, "verified"),
+    ("product", EXTENT_PRODUCT, "verified"),
+    pytest.param("product", r"\cos\theta\phi = \phi\cos\theta", "does-not-hold", marks=SLOW),
+])
+def test_a_declared_argument_extent_is_used_by_both_semantics_and_said(reading, latex, verdict):
+    r = _check(latex, ANGLES + [f"argument extent: {reading}"])
+    assert r.verdict == verdict, r.model
+    spelt = r"\cos(\theta)\phi" if reading == "factor" else r"\cos(\theta\phi)"
+    assert any(m.startswith(rf"\cos\theta\phi: read as {spelt}") and
+               "declared by --let 'argument extent" in m for m in r.model), r.model
+    if verdict == "verified":
+        assert any(m.startswith("numeric cross-check") for m in r.model), r.model
+
+
+@pytest.mark.parametrize("latex", [EXTENT_FACTOR, EXTENT_PRODUCT])
+def test_an_undeclared_argument_extent_is_asked_naming_each_reading(latex):
+    with pytest.raises(BadInput) as e:
+        _check(latex, ANGLES)
+    msg = str(e.value)
+    own = "factor" if latex == EXTENT_FACTOR else "product"
+    verified = r"\cos(\theta)\phi" if own == "factor" else r"\cos(\theta\phi)"
+    assert rf"\cos\theta\phi read as {verified}: verified" in msg, msg
+    assert "--let 'argument extent: factor'" in msg and "--let 'argument extent: product'" \
+        in msg, msg
+    assert r"write \cos(\theta)\phi or \cos(\theta\phi)" in msg, msg
+    assert "Thomson" in msg and "Murray" in msg, msg
+
+
+@pytest.mark.parametrize("latex", [
+    r"\cos\theta\,\phi = \phi\cos\theta",       # a thin space ends the argument
+    r"\cos\theta\cdot\phi = \phi\cos\theta",    # so does an operator
+    r"\sin 2\theta = 2\sin\theta\cos\theta",    # a number, then a glyph: one argument
+    r"\sin\theta\cos\theta = \cos\theta\sin\theta",  # a function after it
+])
+def test_an_argument_ended_without_ambiguity_is_decided_with_no_choice(latex):
+    r = _check(latex, ANGLES if r"\phi" in latex else ANGLES[:1])
+    assert r.verdict == "verified", r.model
+    assert not any("argument" in m and "read as" in m for m in r.model), r.model
+
+
+def test_a_vector_after_the_argument_ends_it():
+    """Rodrigues' ``\\sin\\theta\\mathbf{E}``: the matrix cannot be in a sine's argument."""
+    lets = [r"\theta: angle", r"\mathbf{E}: matrix"]
+    r = _check(r"\sin\theta\mathbf{E} = \mathbf{E}\sin\theta", lets)
+    assert r.verdict == "verified", r.model
+    assert not any("argument" in m and "read as" in m for m in r.model), r.model

@@ -112,3 +112,18 @@ def test_the_star_disagrees_exactly_where_the_readings_differ(mine, theirs):
     verdict = rigidsym.check_latex(STAR, let=PHI + [f"star: {theirs}"], repairs=False).verdict
     equal = _second(STAR, PHI, {conventions.choice_key("star", "X^*"): mine})
     assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)
+
+
+#: true of cos(θ φ) only: the argument running over the product
+EXTENT = r"\cos\theta\phi = \cos(\theta\phi)"
+ANGLES = [r"\theta: angle", r"\phi: angle"]
+
+
+@pytest.mark.parametrize("mine", conventions.ARGUMENT_EXTENT)
+@pytest.mark.parametrize("theirs", [r.name for r in CONTESTED["argument extent"].readings])
+def test_the_argument_extent_disagrees_exactly_where_the_readings_differ(mine, theirs):
+    verdict = rigidsym.check_latex(EXTENT, let=ANGLES + [f"argument extent: {theirs}"],
+                                   repairs=False).verdict
+    key = conventions.choice_key("argument extent", r"\cos \theta \phi")
+    equal = _second(EXTENT, ANGLES, {key: mine})
+    assert _disagree(verdict, equal) == (mine != theirs), (mine, theirs, verdict, equal)

@@ -238,6 +238,26 @@ def test_a_rate_the_reader_introduces_is_said_as_what_it_is_not_as_the_users(lat
     assert not any(n.startswith("free, no --let") and introduced in n for n in r.model), r.model
 
 
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\dot{\mathbf{Q}} = \mathbf{Q}[\mathbf{Q}_{w}]_\times", "does-not-hold"),
+    (r"\mathbf{Q}^T\dot{\mathbf{Q}} + \dot{\mathbf{Q}}^T\mathbf{Q} = \mathbf{0}", "verified"),
+])
+def test_a_users_glyph_spelt_as_the_readers_body_velocity_stays_the_users(latex, verdict):
+    r"""A user's own ``\mathbf{Q}_{w}`` (any 3-vector) beside ``\mathbf{Q}(t)``: the reader's
+    body velocity of Q takes another name, so ``\dot Q = Q [Q_w]_x`` does not hold for the
+    user's free Q_w (one symbol for both verified it, and only the numeric cross-check
+    stood in the way); an unused one is said back, never a near miss of the reader's own."""
+    r = rigidsym.check_latex(latex, let=[r"\mathbf{Q}(t): rotation",
+                                         r"\mathbf{Q}_{w}: 3-vector"], repairs=False)
+    assert r.verdict == verdict, (r.detail, r.model)
+    if verdict == "does-not-hold":  # the user's Q_w and the reader's differ at the point
+        point = r.counterexample["point"]
+        mine = [point[f"Q_w_{i}"] for i in (1, 2, 3)]
+        assert mine != [point.get(f"Q_w2_{i}") for i in (1, 2, 3)], point
+    else:
+        assert any(n.startswith("not used:") for n in r.model), r.model
+
+
 # ---- a --let model used only through its rate or its entries (Lee's e_R, Hanson's q)
 LEE = [r"R(t): rotation", r"R_d(t): rotation", r"\Omega: body angular velocity of R",
        r"\Omega_d: body angular velocity of R_d", r"e_R = \frac12(R_d^TR - R^TR_d)^\vee",

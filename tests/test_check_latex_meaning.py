@@ -486,6 +486,28 @@ def test_a_wide_accent_is_its_narrow_accent(hat, wide):
                                     notation="murray-li-sastry").verdict == "verified"
 
 
+@pytest.mark.parametrize("latex, verdict", [
+    # Haug's tilde of the product a~ b: the commutator a~ b~ - b~ a~ (before: a syntax error)
+    (r"\widetilde{\tilde{\mathbf{a}}\mathbf{b}} = \tilde{\mathbf{a}}\tilde{\mathbf{b}} - "
+     r"\tilde{\mathbf{b}}\tilde{\mathbf{a}}", "verified"),
+    (r"\widetilde{\tilde{\mathbf{a}}\mathbf{b}} = \tilde{\mathbf{b}}\tilde{\mathbf{a}} - "
+     r"\tilde{\mathbf{a}}\tilde{\mathbf{b}}", "does-not-hold"),
+    # the cross-product matrix of the product, not the tilde of a glyph times another
+    (r"\widetilde{2\mathbf{a}\cos\theta} = 2\cos\theta\,\tilde{\mathbf{a}}", "verified"),
+    (r"\widetilde{\tilde{\mathbf{a}}\mathbf{b}} = \tilde{\tilde{\mathbf{a}}}\mathbf{b}",
+     "bad-input"),
+])
+def test_a_tilde_over_a_juxtaposed_product_is_the_products_cross_matrix(latex, verdict):
+    let = [r"\mathbf{a}: vector", r"\mathbf{b}: vector", r"\theta: angle"]
+    try:
+        r = rigidsym.check_latex(latex, let=let, repairs=False)
+    except ValueError:
+        assert verdict == "bad-input"
+        return
+    assert r.verdict == verdict, (r.detail, r.model)
+    assert any("the cross-product matrix of the vector" in n for n in r.model), r.model
+
+
 _RZ_MODEL = (r"R_z(\theta) = \begin{bmatrix}\cos\theta & -\sin\theta & 0\\ \sin\theta & "
              r"\cos\theta & 0\\ 0 & 0 & 1\end{bmatrix}")
 

@@ -75,6 +75,49 @@ def test_a_name_of_the_books_reads_in_both_semantics(latex, let, verdict):
     assert any("numeric cross-check" in n for n in r.model), r.model
 
 
+_RX = (r"\begin{bmatrix} 1 & 0 & 0 \\ 0 & \cos\phi & \sin\phi \\ 0 & -\sin\phi & \cos\phi "
+       r"\end{bmatrix}")
+
+
+@pytest.mark.parametrize("name", [r"R_{v2}^b", r"R^b_{v2}", r"R_v^{v1}", r"R_v^b"])
+def test_a_function_named_with_a_superscript_frame_label_reads(name):
+    """Beard & McLain's R_{v2}^b(phi) as a --let function (before: "the name 'R_{v2}^b'
+    cannot be read: unexpected 'b'"), the label before or after the subscript; R(phi)
+    R(-phi) = I, and not R(phi) R(phi) = I."""
+    let = [r"\phi: angle", f"{name}(\\phi) = {_RX}"]
+    assert _v(f"{name}(\\phi){name}(-\\phi) = I_3", let) == "verified"
+    assert _v(f"{name}(\\phi){name}(\\phi) = I_3", let) == "does-not-hold"
+
+
+def test_a_labelled_model_applied_to_itself_is_a_product_said_as_typed():
+    """R_{v2}^b (R_{v2}^b)^T, R_{v2}^b a model: the application reading is dropped (a model
+    never depends on itself), and no note or message names the reader's respelling."""
+    let = [r"\phi: angle", f"R_{{v2}}^b = {_RX}"]
+    r = rigidsym.check_latex(r"R_{v2}^b (R_{v2}^b)^T = I", let=let, repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)
+    assert not any("^{(b)}" in m or "^(b)" in m for m in r.model), r.model
+    assert _v(r"R_{v2}^b (R_{v2}^b) = I", let) == "does-not-hold"
+    with pytest.raises(ValueError) as exc:  # a refusal names the label as typed
+        _v(r"R_{v2}^b = \mathbf{a}", [*let, r"\mathbf{a}: vector"])
+    assert "R_{v2}^b" in str(exc.value) and "(b)" not in str(exc.value), str(exc.value)
+
+
+@pytest.mark.parametrize("accent", [r"\tilde", r"\widetilde"])
+def test_a_prime_after_an_accent_reads_inside_where_only_the_primed_glyph_is_declared(accent):
+    r"""Nikravesh's tilde of omega', typed \tilde{\boldsymbol\omega}' (before: the glyph
+    \tilde{\boldsymbol{\omega}}' of its own, the declared omega' "does not occur")."""
+    let = [r"\boldsymbol\omega' = 2\mathbf{b}", r"\mathbf{b}: vector"]
+    r = rigidsym.check_latex(f"{accent}{{\\boldsymbol\\omega}}'\\mathbf{{b}} = \\mathbf{{0}}",
+                             let=let, repairs=False)
+    assert r.verdict == "verified", (r.detail, r.model)   # (2b) x b = 0
+    assert any(r"read as " + accent + r"{\boldsymbol\omega'}" in n for n in r.model), r.model
+    slip = f"{accent}{{\\boldsymbol\\omega}}'\\mathbf{{b}} = \\mathbf{{b}}"
+    assert _v(slip, let) == "does-not-hold"
+    # the accented glyph declared itself: a name of its own, as typed
+    own = [f"{accent}{{\\boldsymbol\\omega}}' = 2\\mathbf{{b}}", r"\mathbf{b}: vector"]
+    assert _v(f"{accent}{{\\boldsymbol\\omega}}' = 2\\mathbf{{b}}", own) == "verified"
+
+
 def test_a_declared_e_is_said_and_an_undeclared_e_stays_the_exponential():
     r = rigidsym.check_latex(r"e^2 = \mathbf{e}^T\mathbf{e}", let=[r"e = |\mathbf{e}|"],
                              repairs=False)

@@ -280,3 +280,49 @@ def test_open_conventions_decided_under_each_and_fixed_ones_said_back_once():
     said = fixed.conventions
     assert len(said) == 2 and sum("quaternion_product = hamilton" in c for c in said) == 1
     assert exit_code(fixed) == 0
+
+
+def test_a_rotations_body_velocity_the_reader_introduces_is_no_undeclared_symbol(tmp_path):
+    # \dot{Q} of a rotation Q(t) is Q [Q_w], Q_w any angular velocity: the relations are
+    # decided for every one (a slip still found), never refused as using an undeclared Q_w
+    (tmp_path / "omega.md").write_text(
+        "$$\n\\boldsymbol{\\Omega} := \\dot{\\mathbf{Q}}\\mathbf{Q}^T, \\quad\n"
+        "\\boldsymbol{\\omega} := \\text{vect}(\\boldsymbol{\\Omega})\n$$\n\n"
+        "$$\n\\boldsymbol{\\Omega}\\mathbf{a} = \\boldsymbol{\\omega} \\times \\mathbf{a}\n$$\n\n"
+        "$$\n\\boldsymbol{\\Omega}\\mathbf{a} = \\mathbf{a} \\times \\boldsymbol{\\omega}\n$$\n")
+    res = check_document(tmp_path / "omega.md", repairs=False,
+                         lets=[r"\mathbf{Q}(t): rotation", r"\dot{\mathbf{Q}}: rate of \mathbf{Q}",
+                               r"\mathbf{a}: 3-vector"])
+    assert [r["verdict"] for r in res.records] == ["definition", "definition", "verified",
+                                                   "does-not-hold"]
+    assert not any(r.get("free") for r in res.records)
+
+
+@pytest.mark.slow  # 2 s CPU (priced: .ci/run's thorough part)
+def test_the_documents_own_q_w_beside_a_rotation_is_never_its_body_velocity(tmp_path):
+    # the reader names a rotation's body velocity \mathbf{Q}_{w}; the document's own symbol
+    # of that name, undeclared or declared, never becomes it (no verdict: the symbolic path
+    # would read the two as one, and the numeric cross-check finds them apart)
+    (tmp_path / "own.md").write_text(
+        "$$\n\\dot{\\mathbf{Q}}\\mathbf{Q}^T\\mathbf{a} = "
+        "(\\mathbf{Q}\\mathbf{Q}_{w}) \\times \\mathbf{a}\n$$\n")
+    lets = [r"\mathbf{Q}(t): rotation", r"\dot{\mathbf{Q}}: rate of \mathbf{Q}",
+            r"\mathbf{a}: 3-vector"]
+    for more in ([], [r"\mathbf{Q}_{w}: 3-vector"]):  # undeclared, then declared
+        own = check_document(tmp_path / "own.md", repairs=False, lets=lets + more).records
+        assert own[0]["verdict"] == "not-checked", own[0]
+
+
+def test_a_rate_the_reader_takes_as_a_glyph_of_its_own_is_undeclared(tmp_path):
+    # '\ddot{Q}: second rate of Q' is a rate where the reader reads it as one; inside a
+    # model it is a glyph of its own, any matrix: refused, never a counterexample resting
+    # on a \ddot{Q} no motion of Q has (tr of \dot\Omega is 0 for every rotation Q(t))
+    (tmp_path / "rate.md").write_text(
+        "$$\n\\dot{\\boldsymbol{\\Omega}} := \\ddot{\\mathbf{Q}}\\mathbf{Q}^T + "
+        "\\dot{\\mathbf{Q}}\\dot{\\mathbf{Q}}^T\n$$\n\n$$\n\\text{tr}(\\dot{\\boldsymbol{\\Omega}})"
+        " = 0\n$$\n")
+    res = check_document(tmp_path / "rate.md", repairs=False,
+                         lets=[r"\mathbf{Q}(t): rotation", r"\dot{\mathbf{Q}}: rate of \mathbf{Q}",
+                               r"\ddot{\mathbf{Q}}: second rate of \mathbf{Q}"])
+    assert [r["verdict"] for r in res.records] == ["definition", "not-checked"]
+    assert res.records[1]["free"] == [r"\ddot{\mathbf{Q}}"]

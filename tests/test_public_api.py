@@ -69,7 +69,7 @@ PUBLIC = {
     # LaTeX in, verdict out (rigidsym.check_latex, rigidsym check --latex)
     "rigidsym.latex.lets": ["KIND_WORDS", "Let", "kind_of", "let_items", "model_names",
                             "model_spelling", "rated_lets", "read_lets",
-                            "respell_model_names", "split_lets"],
+                            "respell_model_names", "split_lets", "without_lets"],
 }
 
 

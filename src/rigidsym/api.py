@@ -152,8 +152,9 @@ def check_latex(latex: str, let: Sequence[str] | dict[str, str] | str | None = N
             the constructs expected; an unknown macro named; a juxtaposition whose meaning
             depends on an undeclared shape asks for a ``let``). A ``ValueError``.
         BadInput: a declaration that is neither form, an unknown KIND (the kinds listed), a
-            ``let`` naming a symbol that occurs nowhere, an ambiguous glyph of ``book``, a
-            module that cannot be loaded.
+            ``let`` naming a symbol that occurs nowhere while an undeclared glyph is spelt
+            near it (an unused ``let`` otherwise is said back and ignored), an ambiguous
+            glyph of ``book``, a module that cannot be loaded.
         ValueError: if ``repairs`` is not a bool, ``repair_budget`` not a non-negative
             integer, ``repair_seconds`` or ``timeout`` not a positive number.
 
@@ -182,7 +183,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     """:func:`check_latex` and the :class:`rigidsym.latex.statement.Reading` (for the CLI;
     ``None`` where the time limit passed before the LaTeX was read)."""
     from rigidsym.latex import contested, limit, quaternions, tangent
-    from rigidsym.latex.respell import declared_identity, open_blackboard
+    from rigidsym.latex.blackboard import declared_identity, open_blackboard
     from rigidsym.numeval.conventions import declared_readings
     from rigidsym.numeval.values import quaternion_convention, quaternion_storage, tangent_order
 
@@ -265,11 +266,11 @@ def _blackboard_readings(r: Result, reading, read, let) -> None:
     """An undeclared ``\\mathbb{I}`` read as the identity gave ``r``: the statement read
     again with it a name (Marsden & Ratiu's inertia tensor, a symmetric 3×3 matrix; ``read``
     reads under ``let``); where the verdicts agree a note joins ``r`` and ``reading``
-    (:func:`rigidsym.latex.respell.both_blackboard`).
+    (:func:`rigidsym.latex.blackboard.both_blackboard`).
 
     Raises:
         BadInput: the readings disagree, or the name reading is refused."""
-    from rigidsym.latex.respell import both_blackboard, with_name_reading
+    from rigidsym.latex.blackboard import both_blackboard, with_name_reading
     from rigidsym.latex.shapes import LatexError
 
     other, why = None, ""
@@ -336,14 +337,36 @@ def _time_up(exc, latex, let, book, modules, notation, reading, seconds):
 def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
                        repair_seconds, seen):
     """:func:`check_latex_run`'s steps, each marked for the time limit
-    (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``."""
+    (:func:`rigidsym.latex.limit.step`); the reading, once made, left in ``seen``. A name
+    the reader respells (a labelled ``R_{v2}^b``) is named as typed in the notes and in a
+    refusal's message."""
+    from rigidsym.latex.respell import labels_as_typed
+    from rigidsym.latex.shapes import LatexError
+
+    as_typed = labels_as_typed(let)
+    try:
+        r, reading = _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                                  repair_seconds, seen)
+    except (LatexError, BadInput) as exc:
+        if exc.args and isinstance(exc.args[0], str):
+            exc.args = (as_typed(exc.args[0]), *exc.args[1:])
+        raise
+    r.model = [as_typed(m) if isinstance(m, str) else m for m in r.model]
+    reading.notes[:] = [as_typed(n) for n in reading.notes]
+    return r, reading
+
+
+def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                 repair_seconds, seen):
+    """:func:`_check_latex_steps` before the names are written back as typed."""
     from rigidsym.checking.checker import check as _check
+    from rigidsym.latex.blackboard import declared_blackboard
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
+        accent_primes,
         angular_velocities,
         conjugate_c,
         cross_subscripts,
-        declared_blackboard,
         declared_columns,
         declared_deltas,
         declared_e,
@@ -364,6 +387,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, deltas = declared_deltas(latex, let)  # Forster's \Delta R_{ij}: one name
     latex, let, labels = declared_labels(latex, let)  # Groves' C_b^n: C_{b}^{(n)}
     latex, let, respelt = declared_e(latex, let)  # a declared e before ^: a power
+    latex, let, prime = accent_primes(latex, let)  # \tilde{\omega}' of a declared \omega'
     latex, let, tilde = tilde_expressions(latex, let)  # \widetilde{a \times b}: [a x b]_x
     latex, let, floor = floor_cross(latex, let)  # Trawny's \lfloor a\times\rfloor: [a]_x
     latex, let, rates = rate_entries(latex, let)  # Greenwood's \dot\epsilon_k: entries
@@ -371,8 +395,15 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
-    for note in (labels, tilde, floor, rates, subx, hat, deltas, conj, respelt, board, column,
-                 braces, spin):
+    if reading.unused:  # a --let it does not use is ignored: read again without it
+        from rigidsym.latex.lets import without_lets
+
+        said = [n for n in reading.notes if n.startswith("not used: ")]
+        let = without_lets(let, reading.unused)
+        eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
+        reading.notes += said
+    for note in (labels, prime, tilde, floor, rates, subx, hat, deltas, conj, respelt, board,
+                 column, braces, spin):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading
@@ -392,7 +423,7 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
 
     # a verdict needs the second, independent semantics to agree (a does-not-hold
     # at the symbolic path's own counterexample, handed over as plain data)
-    at = given_point(r.counterexample, reading.eq.build(), reading.symbols) \
+    at = given_point(r.counterexample, reading.eq.build(), reading.symbols, reading.rows) \
         if r.verdict == "does-not-hold" else None
     second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules,
                          at=at, symbols=reading.symbols, statement=reading.eq.build(),
@@ -463,6 +494,10 @@ def _choice_words(key: str) -> str:
         return _cross_words(key)
     if key == STAR_POINT:
         return _star_words()
+    from rigidsym.latex.transformer.extent import extent_parts, is_extent_point
+
+    if is_extent_point(key):
+        return _extent_words(extent_parts(key))
     if key.startswith("[["):
         return (f"{key} can be read as the cross-product matrix [{key[2:-2]}]_\\times or as "
                 f"its negative (Shuster's (57))")
@@ -497,6 +532,20 @@ def _star_words() -> str:
             + " or as ".join(f"{r.means} ({r.books})" for r in c.readings))
 
 
+def _extent_words(parts: tuple[str, str, str]) -> str:
+    """``\\cos\\theta\\phi`` in words: its readings and their books
+    (:data:`rigidsym.latex.contested.CONTESTED`, "argument extent")."""
+    from rigidsym.latex.contested import construct
+
+    head, arg, run = parts
+    gap = " " if arg[-1:].isalpha() and run[:1].isalpha() else ""
+    c = construct("argument extent")
+    return (f"{head}{arg}{gap}{run} (a function's argument without parentheses, then "
+            f"{run}) can be read as " + " or as ".join(
+                f"{head}({arg}){run} ({r.books})" if r.name == "factor" else
+                f"{head}({arg}{gap}{run}) ({r.books})" for r in c.readings))
+
+
 def _settles(key: str) -> str:
     if key == "\\tilde":
         return ("--let '\\tilde{\\mathbf{a}} = [\\mathbf{a}]_\\times' (the matrix) or "
@@ -507,8 +556,14 @@ def _settles(key: str) -> str:
         return base_settles(key)
     if key.endswith(" shape"):
         return f"--let '{key[:-6]}: vector' or --let '{key[:-6]}: matrix'"
+    from rigidsym.latex.transformer.extent import extent_parts, is_extent_point
     from rigidsym.latex.transformer.meanings import STAR_POINT, is_cross_bracket
 
+    if is_extent_point(key):
+        head, arg, run = extent_parts(key)
+        gap = " " if arg[-1:].isalpha() and run[:1].isalpha() else ""
+        return (f"--let 'argument extent: factor' or --let 'argument extent: product', or "
+                f"write {head}({arg}){run} or {head}({arg}{gap}{run})")
     if key == STAR_POINT:
         return ("--let 'star: transpose' (Jain's) or --let 'star: dual' (Featherstone's), "
                 "or write X^T for the transpose and X^{-T} for the dual (a name of "

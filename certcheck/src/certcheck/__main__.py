@@ -124,10 +124,15 @@ def _bounded(path: str, book: str | None, fast: bool, quiet: bool, reading: dict
         k, page = max(0, k - 2 * vac), page + lines_read
     else:
         n = 2 * sum(r.get("role") == "printed" for r in cert.get("relations", []))
+    words = book is not None and not any(  # a theorem in words: no relation on the page
+        r.get("role") == "printed" or isinstance(r.get("page"), int)
+        for r in cert.get("relations", []))
     out = [(f"CHECKED ({cert.get('id')}) {verdict}" if k == n else
             f"NOT READ {os.path.basename(path)}: ({cert.get('id')}) {verdict} proved, "
-            f"{n - k} of {n} printed sides not read from the page (the certificate's "
-            "word)") + f"  [{time.perf_counter() - t:.2f} s]"]
+            + (f"stated in words only: its claims' {n - k} sides are the certificate's "
+               "reading of the words, not read from the page" if words else
+               f"{n - k} of {n} printed sides not read from the page (the certificate's "
+               "word)")) + f"  [{time.perf_counter() - t:.2f} s]"]
     if not quiet:
         out += [f"    {line}" for line in page + lines]
     return "\n".join(out), n, k

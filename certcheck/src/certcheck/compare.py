@@ -59,8 +59,9 @@ def compare(cert: dict, page: str, fast: bool = True, defs: dict | None = None,
         printed.insert(r["page"] - 1, r)  # a chain's member the page prints, proved as a claim
     if not printed:  # a theorem in words, proved by its claims: nothing read on the page
         counts.append((0, 2 * max(1, len(cert["relations"])), []))
-        return ["NOT READ: no printed relation (the claims are the certificate's reading of"
-                " the page's words)"]
+        return [f"NOT READ: stated in words only (no relation printed, no entry for them in "
+                f"the reading's theorems in words): the {len(cert['relations'])} claim(s), each"
+                " proved, are the certificate's reading of the words, a referee's to judge"]
     here = {part.partition("\\equiv")[0].replace(" ", "").strip("&")  # G defined here
             for part in re.split(r",\s*\\quad", page) if "\\equiv" in part}
     defs = {k: v for k, v in (defs or {}).items() if k not in here}  # not an earlier G's

@@ -263,15 +263,16 @@ class _Reader:
         return total
 
     def block_row(self, start: int) -> M:
-        """``[A + c B v]`` whose column separator the conversion lost (3.97a, 3.97c), read
-        only where the sum is of an n x n and an n x 1 array: the block row ``[A + c B,
-        v]``, the sign before v its own; cited."""
+        """``[A + c B v]``, its column separator lost, n x n and n x 1: ``[A + c B, v]`` (3.97a,
+        3.77b), the sign before v its own; c scalar: ``[A, -c v]`` (3.77c), by shapes; cited."""
         self.i, terms = start, []
         while not terms or self.peek() in ("+", "-"):
             terms.append([self.take() if self.peek() in ("+", "-") else "+"])
             while self.peek() not in (*self._STOP, "\\times", "\\cdot", "/"):
                 terms[-1].append(self.factor())
         v = terms[-1].pop()
+        if len(terms[-1]) > 1 and (c := functools.reduce(mul, terms[-1][1:])).shape == (1, 1):
+            v, terms[-1] = mul(c, v), terms[-1][:1]  # the scalar c is the column's
         a = M([["0"] * (n := v.shape[0])] * n)
         for sign, *f in (t for t in terms if len(t) > 1):
             a = add(a, functools.reduce(mul, f), sign)

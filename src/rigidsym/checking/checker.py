@@ -305,8 +305,8 @@ def _check(eq: Equation, t0: float, settings: RepairSettings,
         seconds=round(time.perf_counter() - t0, 3), section=eq.section,
         evidence=eq.evidence if verdict == "does-not-hold" else None, detail=detail,
         singular=eq.singular, failing_member=failing, members=members,
-        model=model_words([explicit(r.lhs, st.model) for r in st.printed]
-                          + [explicit(r.rhs, st.model) for r in st.printed]),
+        model=model_words([explicit(r.lhs, st.model) for r in st.printed or st.claims]
+                          + [explicit(r.rhs, st.model) for r in st.printed or st.claims]),
         repairs=repairs, repair_search=searches, correction=correction)
 
 

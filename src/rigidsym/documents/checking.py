@@ -123,6 +123,38 @@ def _check(latex: str, lets: list[str], options: dict) -> dict:
     return conventions.combine(keys, outs)
 
 
+def _read_as_rate(glyph) -> bool:
+    """Whether the reader read a symbol the reading declares a rate (``\\ddot X: second rate
+    of X``) as a time derivative: not where it stands in a model as a glyph of its own (its
+    row's meaning :data:`rigidsym.latex.shapes.UNDECLARED`), where it would be any matrix
+    and a counterexample could rest on a rate no motion has."""
+    from rigidsym.latex.shapes import UNDECLARED
+
+    return getattr(glyph, "meaning", UNDECLARED) != UNDECLARED
+
+
+def _introduced(key: str, glyph, latex: str, lets: list[str]) -> bool:
+    """Whether a free symbol is one the reader introduced, not one the document wrote: a
+    rotation's or a transform's body velocity ``X_{w}`` (``\\dot X = X [X_w]`` of a function of
+    time ``X(t)``, any velocity: the relation holds for every one or it does not) that
+    neither the relation nor a declaration writes; never an undeclared symbol of the
+    document (fails closed: a text that cannot be read counts as writing it)."""
+    from rigidsym.latex import LatexError
+    from rigidsym.latex.declgraph import glyph_keys
+    from rigidsym.latex.printed_point import body_velocities
+
+    if not body_velocities({key: glyph}):
+        return False
+    for text in (latex, *(t.split(":", 1)[0] if ":" in t and "=" not in t else t
+                          for t in lets)):
+        try:
+            if key in glyph_keys(text.replace(":=", "=")):
+                return False
+        except (LatexError, ValueError):
+            return False
+    return True
+
+
 def _check_once(latex: str, lets: list[str], options: dict) -> tuple[dict, list[str],
                                                                        str | None]:
     """The verdict fields, the reading's notes and the engine's refusal (or ``None``)."""
@@ -151,7 +183,9 @@ def _check_once(latex: str, lets: list[str], options: dict) -> tuple[dict, list[
                 }, [], None
     out = {"verdict": r.verdict, "method": r.method,
            "read_as": reading.text if reading is not None else None}
-    free = [f for f in (reading.free if reading is not None else []) if f not in said]
+    free = [f for f in (reading.free if reading is not None else [])
+            if not (f in said and _read_as_rate(reading.rows.get(f)))
+            and not _introduced(f, reading.rows.get(f), latex, lets)]
     notes = list(reading.notes) if reading is not None else []
     if free:
         return out | {"verdict": "not-checked", "method": "undeclared symbols", "free": free,

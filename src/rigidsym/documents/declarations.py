@@ -13,8 +13,9 @@ after it:
 
 A relation that uses a symbol the document defines only *after* it is refused, naming the
 symbol and where its definition stands. Each relation is handed the declarations it uses
-(its glyphs, and those of the models it uses, transitively): ``check_latex`` refuses a
-declaration of a symbol that does not occur.
+(its glyphs, and those of the models it uses, transitively): ``check_latex`` says back a
+declaration of a symbol that does not occur, and refuses one spelt near a glyph it reads
+by a default (:mod:`rigidsym.latex.unused`).
 """
 
 from __future__ import annotations

@@ -37,6 +37,7 @@ from pylatexenc.latexwalker import (
 from rigidsym.core.errors import BadInput
 from rigidsym.documents.displays import Display
 from rigidsym.documents.macros import definitions, expand, walker
+from rigidsym.latex.lexing import OPERATOR_FONTS, OPERATOR_NAMES
 
 __all__ = ["DEFINING", "FLAT", "NOT_CHECKED", "Relation", "relation_ops", "split_display"]
 
@@ -171,11 +172,19 @@ class _Tokens:
             if n is None or isinstance(n, LatexCommentNode):
                 continue
             if skip_group and isinstance(n, LatexGroupNode):
-                kind = "label" if skip_group == "label" else "sep"
                 text = n.latex_verbatim()
-                self.add(kind, text[1:-1].strip() if kind == "label" else text, n.pos)
+                if skip_group == "label":
+                    self.add("label", text[1:-1].strip(), n.pos)
+                elif skip_group is True:
+                    self.add("sep", text, n.pos)
+                else:  # a font read with no argument (\mbox {...}): an operator or prose
+                    kind = "text" if _operator_name(text) else "sep"
+                    self.add(kind, skip_group, n.pos)
+                    self.add(kind, text, n.pos)
                 skip_group = False
                 continue
+            if isinstance(skip_group, str) and skip_group != "label":  # no argument: prose
+                self.add("sep", skip_group, n.pos)
             skip_group = False
             if isinstance(n, LatexCharsNode):
                 self.chars(n.chars, n.pos)
@@ -221,7 +230,11 @@ class _Tokens:
         elif name in ("}", "rangle", "rVert", "rvert", "rbrace"):
             self.depth -= 1
             self.add("text", whole, n.pos)
+        elif name in OPERATOR_FONTS and has_args and _operator_name(whole[len(name) + 1:]):
+            self.add("text", whole, n.pos)  # \text{vect}, \mathrm{tr}: an operator, not prose
         elif self.depth == 0 and name in _SEPARATORS:
+            if not has_args and name in OPERATOR_FONTS:
+                return whole  # its argument may be an operator's name (walk decides)
             self.add("sep", whole, n.pos)
             return not has_args and name not in ("quad", "qquad")
         elif "\\" + name in NOT_CHECKED or "\\" + name in DEFINING:
@@ -234,6 +247,14 @@ class _Tokens:
         else:
             self.add("text", whole, n.pos)
         return False
+
+
+def _operator_name(argument: str) -> bool:
+    """Whether a font macro's argument (``{vect}``, ``{ tr }``) is an operator name the
+    LaTeX reader knows (:data:`rigidsym.latex.lexing.OPERATOR_NAMES`): then ``\\text{vect}``
+    is the operator vect, an operand, not prose that separates relations."""
+    a = argument.strip()
+    return a.startswith("{") and a.endswith("}") and a[1:-1].strip() in OPERATOR_NAMES
 
 
 def _clean(text: str) -> str:

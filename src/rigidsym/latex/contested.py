@@ -125,6 +125,20 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
          Reading("matrix", "the matrix exponential, where the exponent is a square matrix",
                  "Lynch & Park (2017) (3.51), Murray–Li–Sastry (1994)")),
         "decided by the exponent's shape: no choice remains"),
+    Construct(
+        "argument extent", r"\cos\theta\phi, \sin\omega t, \cos\omega_0 t: a function "
+        r"whose argument has no parentheses, followed directly by further scalar factors",
+        (Reading("factor", r"the function takes the next factor only: cos(θ) φ; a thin space "
+                 r"\, after it says so (\sin\theta\,\hat{\omega})",
+                 "Angeles (2014) ch. 3, Murray–Li–Sastry (1994) (2.14): "
+                 r"\sin\theta\,\hat\omega"),
+         Reading("product", "the function takes the whole run of juxtaposed scalar factors: "
+                 "sin(ω t)",
+                 "Thomson & Dahleh (1998) Theory of Vibration, Meirovitch (1986) Elements of "
+                 r"Vibration Analysis, Taylor (2005) Classical Mechanics: \sin\omega t")),
+        r"--let 'argument extent: factor' or --let 'argument extent: product', or write the "
+        r"parentheses: \cos(\theta)\phi or \cos(\theta\phi); a thin space, an operator "
+        r"(\cdot), a function or a vector after the argument ends it with no choice"),
 )}
 
 
@@ -144,7 +158,7 @@ def readings_of(key: str) -> tuple[str, ...]:
 
 #: the constructs a ``--let 'CONSTRUCT: READING'`` settles here (the quaternion product and
 #: the tangent order have declarations of their own: rigidsym.latex.quaternions, .tangent)
-DECLARABLE = ("bracket cross", "star")
+DECLARABLE = ("bracket cross", "star", "argument extent")
 _DECLARED: ContextVar[tuple[dict, tuple] | None] = ContextVar("contested_declared",
                                                              default=None)
 

@@ -210,7 +210,8 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
             f"(largest relative residual {float(worst.relative):.1e}){said}")
 
 
-def given_point(counterexample: dict | None, statement, symbols: dict | None = None
+def given_point(counterexample: dict | None, statement, symbols: dict | None = None,
+                rows: dict | None = None
                 ) -> list | None:
     """The symbolic path's counterexample as plain data for the second semantics:
     ``[(LaTeX of a glyph, value)]``, a value a decimal string (60 digits) or rows of them.
@@ -224,6 +225,9 @@ def given_point(counterexample: dict | None, statement, symbols: dict | None = N
             whose symbol the point fixes (a model's value there, or an atom itself) is given
             by its own LaTeX. Without it (or for a model symbol it does not name), a glyph
             is named by the book printer's LaTeX of its symbol.
+        rows: the reading's glyph key -> glyph: which glyphs are the body velocities the
+            reader introduced (:func:`~rigidsym.latex.printed_point.body_velocities`), never
+            a user's glyph of the same spelling.
 
     Returns:
         The point (a :class:`GivenPoint`, the atoms kept beside it), or ``None`` when there
@@ -264,7 +268,7 @@ def given_point(counterexample: dict | None, statement, symbols: dict | None = N
         if v is not None:
             out.append((key, v))
             named.add(name)
-    out += _rates(out, symbols or {})
+    out += _rates(out, symbols or {}, rows)
     held = set()
     for s in statement.model:
         v = sp.sympify(statement.model[s])
@@ -278,19 +282,22 @@ def given_point(counterexample: dict | None, statement, symbols: dict | None = N
     return found
 
 
-def _rates(given: list, symbols: dict) -> list:
+def _rates(given: list, symbols: dict, rows: dict | None) -> list:
     """``\\dot X`` of each function of time the point gives with its body velocity: the
     reader reads a rotation's (a transform's) rate as ``X [w]`` with ``w`` the glyph
     ``X_{w}`` it adds (:meth:`~rigidsym.latex.transformer.book_notations.BookNotations.
-    velocity`); the second semantics is handed the rate itself, a plain matrix."""
+    velocity`; ``rows`` say which); the second semantics is handed the rate itself, a plain
+    matrix."""
     import sympy as sp
 
     from rigidsym.algebra import rigid_motions
+    from rigidsym.latex.printed_point import body_velocities
 
     values = dict(given)
+    own = body_velocities(rows)
     out = []
     for key in symbols:
-        w = values.get(f"{key}_{{w}}")
+        w = values.get(own[key]) if key in own else None
         x = values.get(key)
         if w is None or not isinstance(x, list):
             continue

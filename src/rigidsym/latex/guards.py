@@ -229,7 +229,10 @@ def applications(applied: dict, models: dict, glyphs: dict) -> None:
                            f"it depends on {notation.text(arg)} is unknown (read as {key} "
                            f"itself it would be a guess): give its model, e.g. --let "
                            f"'{key} = LATEX' in {notation.text(arg)}")
-        if not (_names(arg) <= _through(model, models)
+        # X(X ...): a model applied to an expression in itself never depends on it (a
+        # model does not refer to itself), however the argument's own model reads
+        if glyphs[key].name in _names(arg) or not (
+                _names(arg) <= _through(model, models)
                 or _through(arg, models) - set(models) & _through(model, models)):
             raise BadInput(f"--latex: {key}({notation.text(arg)}): the model of {key} does not "
                            f"depend on {notation.text(arg)}; write the model in "

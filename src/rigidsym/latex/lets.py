@@ -29,7 +29,7 @@ from rigidsym.latex.shapes import LatexError
 from rigidsym.latex.transformer.book_notations import SETS
 
 __all__ = ["KIND_WORDS", "Let", "kind_of", "let_items", "model_names", "model_spelling",
-           "rated_lets", "read_lets", "respell_model_names", "split_lets"]
+           "rated_lets", "read_lets", "respell_model_names", "split_lets", "without_lets"]
 
 #: the kinds a ``--let NAME: KIND`` takes, in words (``n``, ``m``: sizes, e.g. ``6-vector``,
 #: ``4x4 matrix``)
@@ -262,6 +262,17 @@ def respell_model_names(text: str, names: dict[str, str]) -> str:
                    r"(?<![\\A-Za-z_])(?<!\\mathrm\{)(?<!\\operatorname\{)"
                    + re.escape(n) + r"(?![A-Za-z0-9_])" for n in alts)
     return re.sub(pat, lambda m: names[m.group(0)], text)
+
+
+def without_lets(let, keys) -> list[str]:
+    """The declarations of ``let`` (:func:`read_lets`' argument) less those whose NAME's glyph
+    key is one of ``keys``, one string each, in order.
+
+    Raises:
+        rigidsym.core.errors.BadInput: as :func:`read_lets`.
+    """
+    items, keys = let_items(let), set(keys)
+    return [d for d, x in zip(items, read_lets(items), strict=True) if x.key not in keys]
 
 
 def let_items(let) -> list[str]:

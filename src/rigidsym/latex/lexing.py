@@ -10,10 +10,34 @@ from importlib import resources
 
 import lark
 
-from rigidsym.latex.rewrites import mixed_products, multiple_angles, subscripts_first
+from rigidsym.latex.rewrites import (
+    argument_extents,
+    mixed_products,
+    multiple_angles,
+    subscripts_first,
+)
 
 __all__ = ["Relation", "Parsed", "parser", "tree", "braced", "quoted", "bracket_key",
-           "named_map_key"]
+           "named_map_key", "OPERATOR_FONTS", "OPERATOR_NAMES", "operator_word"]
+
+#: the upright fonts an operator's name is written in: ``\\operatorname{vect}``,
+#: ``\\mathrm{vect}``, ``\\text{vect}``, ``\\textrm{vect}``, ``\\mbox{vect}`` ... all read as the
+#: one operator (the grammar's ``OPNAME``, ``DIAG``, ``ATAN2``, ``CPM`` terminals)
+OPERATOR_FONTS = ("operatorname", "operatorname*", "mathrm", "text", "textrm", "textnormal",
+                  "textup", "mbox")
+#: the operator names the reader knows in those fonts (vect: the axial vector of a matrix's
+#: skew part, Angeles' vect(A); tr; det; diag; atan2; CPM: the cross-product matrix)
+OPERATOR_NAMES = ("tr", "Tr", "trace", "vect", "det", "diag", "atan2", "Atan2", "CPM")
+_OPERATOR_WORD = re.compile(r"\\[A-Za-z]+\*?\s*(?:\{\s*([A-Za-z0-9]+)\s*\})?")
+
+
+def operator_word(token: str) -> str:
+    """An operator token's word: ``\\sin`` -> ``sin``, ``\\text{ vect }`` -> ``vect``,
+    ``\\operatorname*{tr}`` -> ``tr`` (any other text as written, stripped)."""
+    m = _OPERATOR_WORD.fullmatch(token.strip())
+    if not m:
+        return token.strip()
+    return m.group(1) or m.group(0).strip()[1:]
 
 
 @dataclass(frozen=True)
@@ -312,7 +336,8 @@ def tree(latex: str):
                          f"or a \\times (b \\times c)", "cross chain")
     _AlignedLayout.text = text
     try:
-        return multiple_angles(subscripts_first(mixed_products(parser().parse(text))))
+        return argument_extents(
+            multiple_angles(subscripts_first(mixed_products(parser().parse(text)))), text)
     except _Glued as exc:
         token, construct = quoted(text, exc.pos)
         raise LatexError(f"unknown macro {token} at position {exc.pos}:\n"

@@ -12,12 +12,14 @@
 
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 
 from rigidsym.checking.deciding.point_values import decimal_text
 from rigidsym.printing import notation
 
-__all__ = ["project_rates", "own_symbols_said"]
+__all__ = ["body_velocities", "project_rates", "own_symbols_said"]
 
 
 def _vector(point: dict, name: str, n: int) -> sp.Matrix | None:
@@ -59,6 +61,25 @@ def project_rates(counterexample: dict | None, rows: dict) -> None:
                          decimal=decimal_text(tangent))
 
 
+#: the key the reader gives a rotation's (a transform's) body velocity: OWNER_{w}, or
+#: OWNER_{w2} ... where a declaration of the user's holds OWNER_{w}
+_BODY_KEY = re.compile(r"^(?P<owner>.+)_\{w\d*\}$")
+
+
+def body_velocities(rows: dict) -> dict[str, str]:
+    """The body velocities the reader introduced, by their owners' keys.
+
+    Args:
+        rows: the reading's glyph key -> glyph (the reader's own have the meaning
+            ``body velocity``).
+
+    Returns:
+        owner's glyph key (``\\mathbf{Q}``) -> its body velocity's key (``\\mathbf{Q}_{w}``).
+    """
+    return {m.group("owner"): key for key, g in (rows or {}).items()
+            if getattr(g, "meaning", "") == "body velocity" and (m := _BODY_KEY.match(key))}
+
+
 def own_symbols_said(counterexample: dict | None, rows: dict) -> None:
     """Name, in ``counterexample``'s ``symbols`` (changed in place), each symbol the reader
     introduced by what it is: ``w, the body angular velocity of \\mathbf{Q}, introduced by
@@ -67,18 +88,17 @@ def own_symbols_said(counterexample: dict | None, rows: dict) -> None:
     Args:
         counterexample: the symbolic path's, or ``None``.
         rows: the reading's glyph key -> glyph; the reader's own have the meaning
-            ``body velocity`` and the key ``OWNER_{w}``.
+            ``body velocity`` (:func:`body_velocities`).
     """
     if not counterexample:
         return
     said = {}
-    for key, g in rows.items():
-        if getattr(g, "meaning", "") == "body velocity" and key.endswith("_{w}"):
-            owner = key[:-len("_{w}")]
-            what = "angular velocity" if tuple(getattr(g, "shape", ()) or ()) == (3, 1) \
-                else "twist"
-            of = getattr(rows.get(owner), "name", owner)
-            said[key] = f"{g.name}, the body {what} of {of}, introduced by the reader"
+    for owner, key in body_velocities(rows).items():
+        g = rows[key]
+        what = "angular velocity" if tuple(getattr(g, "shape", ()) or ()) == (3, 1) \
+            else "twist"
+        of = getattr(rows.get(owner), "name", owner)
+        said[key] = f"{g.name}, the body {what} of {of}, introduced by the reader"
     for s in counterexample.get("symbols") or []:
         if s.get("latex") in said:
             s["symbol"] = said[s["latex"]]

@@ -51,11 +51,10 @@ import re
 
 from rigidsym.latex.lets import read_lets, split_lets
 
-__all__ = ["NAME_READING", "angular_velocities", "both_blackboard", "conjugate_c",
-           "cross_subscripts", "declared_blackboard", "declared_columns", "declared_deltas",
-           "declared_e", "declared_identity", "open_blackboard", "with_name_reading",
-           "declared_labels", "floor_cross", "grouping_braces", "hat_expressions", "rate_entries",
-           "tilde_expressions"]
+__all__ = ["accent_primes", "angular_velocities", "conjugate_c", "cross_subscripts",
+           "declared_columns", "declared_deltas", "declared_e", "declared_labels",
+           "each_declaration", "floor_cross", "grouping_braces", "hat_expressions",
+           "labels_as_typed", "rate_entries", "tilde_expressions"]
 
 _E_POWER = re.compile(r"(?<![\\A-Za-z{])e(?=\^)")
 
@@ -87,149 +86,6 @@ def declared_e(latex: str, let: object) -> tuple[str, object, str]:
     return new, out, note
 
 
-#: Chirikjian's identity and zero, \mathbb{I} and \mathbb{O} (also 1, 0), as the grammar reads them
-_BLACKBOARD = re.compile(r"\\mathbb\s*\{\s*([IO01])\s*\}")
-
-
-#: \mathbb{I} as the grammar reads it (the identity), without a size subscript
-#: (\mathbb{I}_3 is the identity of that size: no book's inertia tensor is written so)
-_OPEN_I = re.compile(r"\\mathbb\{I\}(?!\s*_\s*\{?\s*\d)")
-#: the declaration that settles \mathbb{I} as the identity
-_IDENTITY = re.compile(r"\\mathbb\s*\{\s*I\s*\}\s*:\s*(?:the\s+)?identity(?:\s+matrix)?\s*",
-                       re.IGNORECASE)
-#: the kind the name reading of an undeclared \mathbb{I} gives it: Marsden & Ratiu's
-#: inertia tensor, a symmetric 3x3 matrix
-NAME_READING = r"\mathbb{I}: symmetric matrix"
-
-
-def _blackboard_named(decls: list[str] | None) -> set[str]:
-    """The blackboard glyphs (``I``, ``O``, ``0``, ``1``) a declaration of ``decls`` names."""
-    return {m.group(1) for d in decls or []
-            if (m := _BLACKBOARD.fullmatch(re.split(r"[:=(]", d, maxsplit=1)[0].strip()))}
-
-
-def _texts(let: object) -> list[str] | None:
-    """The declarations of ``let`` one by one, a dict's written ``NAME: KIND`` or
-    ``NAME = LATEX``; ``None`` for a value :func:`rigidsym.latex.lets.read_lets` refuses."""
-    from rigidsym.latex.lets import let_items
-
-    if isinstance(let, dict):
-        try:
-            return let_items(let)
-        except (TypeError, ValueError, AttributeError):
-            return None
-    return _decls(let)
-
-
-def declared_identity(let: object) -> tuple[object, str | None]:
-    """``let`` without its ``--let '\\mathbb{I}: identity'`` (Chirikjian's identity, the
-    reading that declaration settles: :data:`rigidsym.latex.contested.CONTESTED`, "blackboard
-    I"), and that declaration's text (``None`` where there is none; ``let`` unchanged).
-
-    Args:
-        let: the declarations, as :func:`declared_e`'s.
-
-    Raises:
-        BadInput: ``\\mathbb{I}`` declared the identity and named as well.
-    """
-    from rigidsym.core.errors import BadInput
-
-    decls = _texts(let)
-    said = [d for d in decls or [] if _IDENTITY.fullmatch(d)]
-    if not said:
-        return let, None
-    kept = [d for d in decls if not _IDENTITY.fullmatch(d)]
-    if len(said) > 1 or "I" in _blackboard_named(kept):
-        other = next((d for d in kept if "I" in _blackboard_named([d])), said[-1])
-        raise BadInput(f"--let: \\mathbb{{I}} is declared twice ('{said[0]}' and '{other}')")
-    return kept, said[0]
-
-
-def open_blackboard(latex: str, let: object) -> bool:
-    """Whether ``latex`` or a declaration of ``let`` uses ``\\mathbb{I}`` (without a size
-    subscript) and no ``--let`` names it: the identity in Chirikjian (2011), Marsden &
-    Ratiu's inertia tensor (1999), a contested construct read both ways
-    (:data:`rigidsym.latex.contested.CONTESTED`, "blackboard I"). A ``--let
-    '\\mathbb{I}: identity'`` is taken out first (:func:`declared_identity`).
-
-    Args:
-        latex: the LaTeX.
-        let: the declarations, as :func:`declared_e`'s.
-    """
-    decls = _texts(let)
-    if decls is None or "I" in _blackboard_named(decls):
-        return False
-    return any(_OPEN_I.search(x) for x in [latex, *decls])
-
-
-def with_name_reading(let: object) -> list[str]:
-    """``let`` (one ``\\mathbb{I}`` uses, undeclared: :func:`open_blackboard`) with
-    :data:`NAME_READING`: the statement read with ``\\mathbb{I}`` a name, Marsden &
-    Ratiu's inertia tensor.
-
-    Args:
-        let: the declarations, as :func:`declared_e`'s (:func:`open_blackboard` true).
-    """
-    return [*(_texts(let) or []), NAME_READING]
-
-
-def both_blackboard(first: str, other: str | None, notes: list[str],
-                    why: str = "") -> None:
-    """A statement that uses ``\\mathbb{I}`` undeclared, read both ways: ``first`` the
-    verdict with ``\\mathbb{I}`` the identity, ``other`` with it a name (a symmetric 3×3
-    matrix, :data:`NAME_READING`), ``None`` where that reading does not type-check (``why``:
-    the reader's words). Where one verdict remains a note is appended to ``notes`` (the
-    reading's).
-
-    Raises:
-        BadInput: they differ, or the name reading is refused (``why``): the reading is the
-            reader's to declare, never assumed.
-    """
-    from rigidsym.core.errors import BadInput
-    from rigidsym.latex.contested import construct
-
-    c = construct("blackboard I")
-    identity, name = c.readings
-    if other == first:
-        notes.append(f"\\mathbb{{I}}: not declared; read as {identity.means} "
-                     f"({identity.books}) and as {name.means} ({name.books}): both {first}")
-        return
-    if other is None and why.startswith("shapes:"):
-        notes.append(f"\\mathbb{{I}}: not declared; read as {identity.means} "
-                     f"({identity.books}): {first}; as {name.means} ({name.books}), the "
-                     f"statement does not type-check ({why[7:].strip()})")
-        return
-    said = other if other is not None else f"refused ({why})"
-    raise BadInput(f"--latex: \\mathbb{{I}} is read two ways by the books, as "
-                   f"{identity.means} ({identity.books}) or as {name.means} ({name.books}); "
-                   f"nothing declares it, and the readings disagree (the identity: {first}; "
-                   f"a symmetric 3×3 matrix: {said}): say which, {c.settles}")
-
-
-def declared_blackboard(latex: str, let: object) -> tuple[str, object, str]:
-    """``(latex, let, note)``: where a ``--let`` names ``\\mathbb{I}`` (Marsden & Ratiu's
-    inertia tensor, ``--let '\\mathbb{I} = \\operatorname{diag}(I_1, I_2, I_3)'``; also
-    ``\\mathbb{O}``), that glyph is the declared name, not Chirikjian's identity (zero): each
-    occurrence in the LaTeX and the declarations is respelt ``\\mathbb{ I }``, the grammar's
-    name in the blackboard font (``note`` says so); else all unchanged and ``note`` is ``""``.
-
-    Args:
-        latex: the LaTeX.
-        let: the declarations, as :func:`declared_e`'s.
-    """
-    decls = _decls(let)
-    named = _blackboard_named(decls)
-    if not named:
-        return latex, let, ""
-
-    def name(m):
-        return f"\\mathbb{{ {m.group(1)} }}" if m.group(1) in named else m.group(0)
-
-    glyphs = ", ".join(f"\\mathbb{{{g}}}" for g in sorted(named))
-    return (_BLACKBOARD.sub(name, latex), [_BLACKBOARD.sub(name, d) for d in decls],
-            f"{glyphs}: the declared name, not the identity (zero) matrix")
-
-
 #: Ginsberg's column-matrix braces around one glyph, \{\omega\}, \{\omega'\}
 _COLUMN = re.compile(r"\\\{\s*((?:\\[A-Za-z]+\s*(?:\{[^{}]*\})?|[A-Za-z])'*)\s*\\\}")
 
@@ -245,7 +101,7 @@ def declared_columns(latex: str, let: object) -> tuple[str, object, str]:
         latex: the LaTeX.
         let: the declarations, as :func:`declared_e`'s.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     named = {re.sub(r"\s+", "", m.group(1)) for d in decls or []
              if (m := _COLUMN.fullmatch(re.split(r"[:=]", d, maxsplit=1)[0].strip()))}
     if not named:
@@ -280,6 +136,10 @@ def _braced(text: str, start: int) -> int:
 _SET_MARK = re.compile(r",|\\mid|\\vert|\\colon|:|\\in(?![A-Za-z])|\\lvert|\|")
 
 
+#: a sizing command closing a delimiter, at the end of the delimited text (``\right``)
+_SIZED_CLOSE = re.compile(r"\\(?:right|bigr|Bigr|biggr|Biggr)\s*$")
+
+
 def grouping_braces(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\{ ... \\}`` around an expression that is no single
     glyph (Lee–Leok–McClamroch's ``(\\{\\operatorname{tr}[A]I - A\\}x)^\\wedge``) respelt as
@@ -297,7 +157,7 @@ def grouping_braces(latex: str, let: object) -> tuple[str, object, str]:
         latex: the LaTeX.
         let: the declarations, as :func:`declared_e`'s.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if decls is None:
         return latex, let, ""
     said: list[str] = []
@@ -313,7 +173,8 @@ def grouping_braces(latex: str, let: object) -> tuple[str, object, str]:
             if end < 0:
                 break
             inner = text[j + 2:end - 2]
-            if one.fullmatch(inner) or not inner.strip() or _SET_MARK.search(inner):
+            core = _SIZED_CLOSE.sub("", inner)  # \left\{ x \right\}: x's braces
+            if one.fullmatch(core) or not core.strip() or _SET_MARK.search(core):
                 out.append(text[i:j + 2])
                 i = j + 2
                 continue
@@ -337,8 +198,11 @@ _TILDE = re.compile(r"\\(?:wide)?tilde\s*\{")
 
 def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
     """``(latex, let, note)``: each ``\\tilde{X}`` (``\\widetilde``) whose braces hold a cross
-    product, a sum or a difference respelt ``[X]_\\times`` in the LaTeX and the declarations
-    (``note`` says so); else all unchanged and ``note`` is ``""``.
+    product, a sum, a difference or a juxtaposed product of glyphs (Haug's
+    ``\\widetilde{\\tilde{\\mathbf{a}}\\mathbf{b}}``, the cross-product matrix of the vector
+    ã b) respelt ``[X]_\\times`` in the LaTeX and the declarations (``note`` says so); else
+    all unchanged and ``note`` is ``""``. A tilde over one glyph is left to the glyph's
+    reading.
 
     Args and Raises: as :func:`declared_e`.
     """
@@ -346,13 +210,86 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
 
     def respell(text: str) -> str:
         return _braced_as_cross_matrix(text, _TILDE, lambda inner: bool(re.search(
-            r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner))), hits)
+            r"\\times|[+-]", re.sub(r"\{[^{}]*\}", "", inner))) or _juxtaposed(inner), hits)
 
     new, out = _respelt(respell, latex, let)
     if not hits:
         return latex, let, ""
     return new, out, (f"\\tilde{{{hits[0]}}}: the cross-product matrix of the vector "
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
+
+
+_ACCENT = re.compile(r"\\(?:wide)?(?:tilde|hat)\s*\{")
+
+
+def accent_primes(latex: str, let: object) -> tuple[str, object, str]:
+    """``(latex, let, note)``: each ``\\tilde{X}'`` (``\\hat``, the wide ones) whose glyph no
+    ``--let`` declares while one declares ``X'`` (Nikravesh's ``\\tilde{\\boldsymbol\\omega}'``,
+    the tilde of the declared ``\\boldsymbol\\omega'``) respelt ``\\tilde{X'}`` in the LaTeX
+    and the declarations (``note`` says so); else all unchanged and ``note`` is ``""``.
+
+    Args and Raises: as :func:`declared_e`.
+    """
+    from rigidsym.latex.declgraph import glyph_keys
+    from rigidsym.latex.shapes import LatexError
+
+    decls = each_declaration(let)
+    if not decls or "'" not in latex:
+        return latex, let, ""
+    declared = {x.key for x in read_lets(decls)}
+    hits: list[str] = []
+
+    def key(text: str) -> str | None:
+        try:
+            keys = glyph_keys(text)
+        except LatexError:
+            return None
+        return next(iter(keys)) if len(keys) == 1 else None
+
+    def respell(text: str) -> str:
+        out, k = [], 0
+        for m in _ACCENT.finditer(text):
+            if m.start() < k:
+                continue
+            j = _group_end(text, m.end())
+            primes = None if j < 0 else re.match(r"\s*('+)", text[j:])
+            if primes is None:
+                continue
+            inner, end = text[m.end():j - 1], j + primes.end()
+            inside = f"{text[m.start():m.end()]}{inner}{primes.group(1)}}}"
+            if key(text[m.start():end]) in declared or key(inner + primes.group(1)) \
+                    not in declared:
+                continue
+            out += [text[k:m.start()], inside]
+            hits.append(f"{text[m.start():end]}: read as {inside}")
+            k = end
+        return "".join(out) + text[k:]
+
+    new, out = _respelt(respell, latex, let)
+    if not hits:
+        return latex, let, ""
+    return new, out, (f"{hits[0]}, the accent of the declared primed glyph (a --let "
+                      f"declares it, none the accented glyph)")
+
+
+_INDEX = re.compile(r"[_^]\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]+)")
+
+
+def _juxtaposed(inner: str) -> bool:
+    """Whether ``inner`` is a product of two glyphs or more written side by side
+    (``\\tilde{\\mathbf{a}}\\mathbf{b}``; ``\\mathbf{r}_{C}`` or ``\\boldsymbol\\omega'`` is
+    one)."""
+    return len(re.findall(_GLYPH, _INDEX.sub("", inner))) >= 2
+
+
+def _group_end(text: str, start: int) -> int:
+    """The index just past the ``}`` that closes a group opened just before ``start``
+    (nested groups counted), or -1 where it is not closed."""
+    depth, j = 1, start
+    while j < len(text) and depth:
+        depth += {"{": 1, "}": -1}.get(text[j], 0)
+        j += 1
+    return -1 if depth else j
 
 
 def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
@@ -365,12 +302,9 @@ def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
     for m in opening.finditer(text):
         if m.start() < k:
             continue
-        depth, j = 1, m.end()
-        while j < len(text) and depth:
-            depth += {"{": 1, "}": -1}.get(text[j], 0)
-            j += 1
+        j = _group_end(text, m.end())
         inner = text[m.end():j - 1]
-        if depth or not takes(inner):
+        if j < 0 or not takes(inner):
             continue
         out += [text[k:m.start()], form.format(inner)]
         hits.append(inner)
@@ -380,13 +314,13 @@ def _braced_as_cross_matrix(text: str, opening: re.Pattern, takes, hits: list,
 
 def _respelt(respell, latex: str, let: object) -> tuple[str, object]:
     """``respell`` applied to the LaTeX and to every declaration of ``let`` (a dict's string
-    values, or the list :func:`_decls` reads; ``let`` unchanged where it reads none), the
+    values, or the list :func:`each_declaration` reads; ``let`` unchanged where it reads none), the
     LaTeX first."""
     new = respell(latex)
     if isinstance(let, dict):
         out = {k: respell(v) if isinstance(v, str) else v for k, v in let.items()}
     else:
-        decls = _decls(let)
+        decls = each_declaration(let)
         out = let if decls is None else [respell(d) for d in decls]
     return new, out
 
@@ -456,7 +390,7 @@ def rate_entries(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if not decls:
         return latex, let, ""
     rates = {}
@@ -494,7 +428,10 @@ _LABELLED = re.compile(
     r"|\\[A-Za-z]+|(?:(?<![\\A-Za-z])|(?<=\^[a-z]))[A-Za-z])"
     r"(?(acc)\s*\})"
     r"(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))?"
-    r"\s*\^\s*(?P<lbl>\{\s*[a-z]+\s*\}|[a-z])")
+    r"\s*\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])")
+#: a label written before the subscript, Beard's ``R^b_{v2}``: read as ``R_{v2}^b``
+_LABEL_FIRST = re.compile(r"\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])"
+                          r"\s*(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))")
 
 
 def _parts(m) -> tuple[str, str, str]:
@@ -502,6 +439,38 @@ def _parts(m) -> tuple[str, str, str]:
     base = re.sub(r"^(\\(?:mathbf|boldsymbol|bm))(\\?[A-Za-z]+)$", r"\1{\2}", base)
     sub = re.sub(r"[\s{}_]", "", m["sub"] or "")
     return base, sub, re.sub(r"[\s{}]", "", m["lbl"])
+
+
+def _label_names(let: object) -> set[tuple[str, str, str]]:
+    """``(base, subscript, label)`` of each NAME with a lower-case superscript label that a
+    declaration of ``let`` names (a function's parameters aside: Beard's
+    ``R_{v2}^b(\\phi) = ...``, ``R^b_{v2}`` read as ``R_{v2}^b``)."""
+    names = set()
+    for d in each_declaration(let) or ():
+        name = re.split(r"\s*(?:\([^()]*\))?\s*[:=]", d, maxsplit=1)[0].strip()
+        m = _LABELLED.fullmatch(_LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", name))
+        if m and not m["acc"]:
+            names.add(_parts(m))
+    return names
+
+
+def labels_as_typed(let: object):
+    """The function that writes back, in a message, each labelled NAME of ``let`` that
+    :func:`declared_labels` respells (``R_{v2}^{(b)}`` and its printed ``R_v2^(b)``: the
+    ``R_{v2}^b`` the reader typed): a message names only what the user wrote."""
+    pairs = []
+    for base, sub, lbl in _label_names(let) if let is not None else ():
+        typed = f"{base}{_index('_', sub)}{_index('^', lbl)}"
+        pairs.append((f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}", typed))
+        plain = re.sub(r"\\(?:mathbf|boldsymbol|bm)|[{}\s]", "", base)
+        if re.fullmatch(r"[A-Za-z]", plain):
+            pairs.append((f"{plain}{'_' + sub if sub else ''}^({lbl})", typed))
+
+    def back(text: str) -> str:
+        for respelt, typed in pairs:
+            text = text.replace(respelt, typed)
+        return text
+    return back
 
 
 def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
@@ -513,14 +482,10 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
     """
     if let is None:
         return latex, let, ""
-    decls = _decls(let)
+    decls = each_declaration(let)
     if decls is None:
         return latex, let, ""
-    names = set()
-    for d in decls:
-        m = _LABELLED.fullmatch(re.split(r"\s*(?:\(t\))?\s*[:=]", d, maxsplit=1)[0].strip())
-        if m and not m["acc"]:
-            names.add(_parts(m))
+    names = _label_names(decls)
     if not names:
         return latex, let, ""
 
@@ -531,15 +496,20 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
                 return m.group(0)
             glyph = f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}"
             return f"{m['acc'].strip()}{glyph}}}" if m["acc"] else glyph
-        return _LABELLED.sub(one, text)
+        return _LABELLED.sub(one, _LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", text))
 
     out = [respell(d) for d in decls]
-    shown = ", ".join(sorted(f"{b}_{s}^{lbl}" for b, s, lbl in names))
+    shown = ", ".join(sorted(f"{b}{_index('_', s)}{_index('^', lbl)}" for b, s, lbl in names))
     return respell(latex), out, (f"{shown}: a superscript frame label (a --let names it), "
                                  f"read as a label, not a power")
 
 
-def _decls(let: object) -> list[str] | None:
+def _index(mark: str, text: str) -> str:
+    """``_v``, ``_{v2}`` (``mark`` and ``text``) as a reader types it; ``""`` for no text."""
+    return "" if not text else f"{mark}{text}" if len(text) == 1 else f"{mark}{{{text}}}"
+
+
+def each_declaration(let: object) -> list[str] | None:
     """The declarations of ``let`` one by one, or ``None`` for a dict or a value that
     :func:`rigidsym.latex.lets.read_lets` refuses (it says why, later)."""
     if let is None or isinstance(let, dict):
@@ -566,7 +536,7 @@ def _named_cross_subscripts(let: object) -> set[str]:
     ``\\mathbf{v}_\\times = \\hat{\\mathbf{n}}\\times\\mathbf{v}``, a vector): names of
     their own, never respelt, in the LaTeX or the declarations."""
     out = set()
-    for d in _decls(let) or []:
+    for d in each_declaration(let) or []:
         name = re.split(r"[:=]", d, maxsplit=1)[0]
         m = _SUB_TIMES.search(name)
         g = _GLYPH_END.search(name[:m.start()]) if m else None
@@ -668,7 +638,7 @@ def declared_deltas(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if not decls:
         return latex, let, ""
     names = set()
@@ -704,7 +674,7 @@ def conjugate_c(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let) or []
+    decls = each_declaration(let) or []
     if not any(_QPRODUCT.search(t) for t in [latex, *decls]) or \
             not any(_CONJ_C.search(t) for t in [latex, *decls]):
         return latex, let, ""
@@ -728,7 +698,7 @@ def angular_velocities(latex: str, let: object) -> tuple[str, object, str]:
 
     Args and Raises: as :func:`declared_e`.
     """
-    decls = _decls(let)
+    decls = each_declaration(let)
     if not decls:
         return latex, let, ""
     out, said = [], []

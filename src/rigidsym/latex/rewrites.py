@@ -7,9 +7,11 @@ transformer must read by the shapes (a chain of products without parentheses:
 
 from __future__ import annotations
 
+import re
+
 import lark
 
-__all__ = ["multiple_angles", "mixed_products", "subscripts_first"]
+__all__ = ["multiple_angles", "mixed_products", "subscripts_first", "argument_extents"]
 
 _TRIG = {"\\sin", "\\cos", "\\tan", "\\cot", "\\sec", "\\csc"}
 _SYMBOL_RULES = {"glyph", "accented", "accented_bare", "arrow"}
@@ -131,4 +133,93 @@ def subscripts_first(t):
         x.children.insert(at, script)
         sub.data = "power" if sub.data == "power_sub" else "apply_pre"
         sub.children = [x, sup, *rest]
+    return t
+
+
+#: the functions whose argument a book may write without parentheses (``\sin\omega t``)
+_EXTENT_FUNCS = {"func", "func_power", "matfunc"}
+#: the factors that may continue such an argument: a glyph, a number, a power of either
+_EXTENT_ATOMS = {"glyph", "accented", "accented_bare", "number", "label_first"}
+#: TeX's explicit spaces: one after a function's argument ends it (``\sin\phi\,\mathbf{E}``)
+_SPACES = re.compile(r"\\[,;: ]|\\q?quad(?![A-Za-z])|~")
+_GROUPED = ("(", "{", "[", "\\left", "\\big", "\\Big")
+
+
+def _span(node) -> tuple[int, int] | None:
+    """The source span of a token or subtree (a rewritten one: its children's)."""
+    if isinstance(node, lark.Token):
+        return (node.start_pos, node.end_pos) if node.start_pos is not None else None
+    if not node.meta.empty:
+        return node.meta.start_pos, node.meta.end_pos
+    spans = [s for s in (_span(c) for c in node.children) if s is not None]
+    return (min(s[0] for s in spans), max(s[1] for s in spans)) if spans else None
+
+
+def _atom(node) -> bool:
+    if not isinstance(node, lark.Tree):
+        return False
+    if node.data == "power":
+        return _atom(node.children[0])
+    return node.data in _EXTENT_ATOMS
+
+
+def _open_argument(f, text: str) -> bool:
+    r"""``f`` is a function whose argument is written without parentheses or braces
+    (``\sin\omega``, ``\sin^2\omega``, ``\sin 2\theta``), all spans known."""
+    if not (isinstance(f, lark.Tree) and f.data in _EXTENT_FUNCS):
+        return False
+    before, arg = _span(f.children[-2]), _span(f.children[-1])
+    if before is None or arg is None:
+        return False
+    return not text[before[1]:arg[1]].lstrip().startswith(_GROUPED)
+
+
+def argument_extents(t, text: str):
+    r"""A function whose argument is written without parentheses and then directly (no
+    ``\,``, ``\;``, ``\quad``, ``~``, no operator) by further factors (``\cos\theta\phi``,
+    ``\sin\omega t``) is a contested construct (:mod:`rigidsym.latex.contested`, "argument
+    extent"): the grammar's operator argument is one primary, the vibration books' the whole
+    run of scalar factors. Such a product becomes ``arg_extent``: the texts of the
+    function's head and argument, the function (``extent_func``, ``extent_func_power``,
+    ``extent_matfunc``: the rule's own children) and each factor after its text; each
+    semantics reads it under the reading chosen, the shapes ending the run at the first
+    factor that is no scalar. ``text`` is the parsed text the spans index. In place;
+    returns ``t``."""
+    done: set[int] = set()
+    for sub in list(t.iter_subtrees_topdown()):
+        if sub.data != "mul" or id(sub) in done:
+            continue
+        spine, node = [], sub
+        while isinstance(node, lark.Tree) and node.data == "mul" and len(node.children) == 2:
+            done.add(id(node))
+            spine.append(node)
+            node = node.children[0]
+        factors = [node, *(n.children[1] for n in reversed(spine))]
+        out, i, changed = [], 0, False
+        while i < len(factors):
+            f, j = factors[i], i + 1
+            if _open_argument(f, text):
+                while j < len(factors) and _atom(factors[j]) and _span(factors[j - 1]) \
+                        and _span(factors[j]) and not _SPACES.search(
+                            text[_span(factors[j - 1])[1]:_span(factors[j])[0]]):
+                    j += 1
+            if j == i + 1:
+                out.append(f)
+                i += 1
+                continue
+            (start, _), arg = _span(f), _span(f.children[-1])
+            kids = [lark.Token("EXTENT", text[start:arg[0]].strip()),
+                    lark.Token("EXTENT", text[arg[0]:arg[1]].strip()),
+                    lark.Tree("extent_" + f.data, list(f.children))]
+            for g in factors[i + 1:j]:
+                s = _span(g)
+                kids += [lark.Token("EXTENT", text[s[0]:s[1]].strip()), g]
+            out.append(lark.Tree("arg_extent", kids))
+            changed, i = True, j
+        if not changed:
+            continue
+        v = out[0]
+        for g in out[1:]:
+            v = lark.Tree("mul", [v, g])
+        sub.data, sub.children = v.data, v.children
     return t

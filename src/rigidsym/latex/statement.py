@@ -26,7 +26,9 @@ from rigidsym.latex.kinematics import dot_key
 from rigidsym.latex.lets import Let, declared_lets, lent, rated_lets, read_lets
 from rigidsym.latex.reader_glyphs import GlyphReader
 from rigidsym.latex.shapes import LatexError
+from rigidsym.latex.transformer.extent import is_extent_point
 from rigidsym.latex.transformer.meanings import alternatives, said
+from rigidsym.latex.unused import defaulted_glyphs, unused_lets
 from rigidsym.latex.values import (
     entry_vectors,
     glyph_values,
@@ -65,6 +67,7 @@ class Reading:
     eq: object = None  # its registered Equation (declare_latex)
     symbols: dict = field(default_factory=dict)  # glyph key (the LaTeX) -> book symbol's name
     rows: dict = field(default_factory=dict)  # glyph key -> its Glyph (where its meaning came)
+    unused: tuple = ()  # the keys of the --lets it does not use (said back in its notes)
 
 
 
@@ -196,6 +199,8 @@ def _readings(latex, lets, book, lend, table, first, points):
 def _group(key: str) -> str:
     """The choice points read alike: the subscripts of one vector's letter (``q_{1} of q``,
     ``q_{2} of q``: all entries of q or all names, never some of each), else the point."""
+    if is_extent_point(key):  # every argument extent of a statement: one book's habit
+        return "argument extent"
     return "entries of " + key.split(" of ", 1)[1] if " of " in key else key
 
 
@@ -256,8 +261,9 @@ def read_one(latex: str, lets: list[Let], book: str | None = None,
     Raises:
         LatexError: LaTeX that cannot be read (position and caret; an unknown macro
             named; a juxtaposition that depends on an undeclared shape asks for a --let).
-        BadInput: a --let naming a symbol that occurs nowhere, an ambiguous book glyph,
-            models that refer to each other in a cycle or whose shape differs from a use.
+        BadInput: a --let naming a symbol that occurs nowhere, spelt near an undeclared
+            glyph (:mod:`rigidsym.latex.unused`), an ambiguous book glyph, models that refer
+            to each other in a cycle or whose shape differs from a use.
     """
     lend = lend or {}
     lets = list(lets) + declared_lets(latex, lets)  # ", R \\in SO(3)": a --let
@@ -332,14 +338,16 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     # (Lee's e_R, read only as \dot{e}_R: the model's rate) and a vector whose entries alone
     # occur (q_0 ... q_3 of Hanson's q in R's model)
     occurs |= entry_vectors(occurs, lets)
-    for x in lets:
-        if x.key not in occurs and not ((x.latex or x.kind.split(" in ")[0] in (
-                "angle", "scalar")) and dot_key(x.key) in occurs):
-            raise BadInput(f"--let '{x.text}': {x.key} does not occur in the LaTeX nor in a "
-                           f"model (the LaTeX's glyphs: "
-                           f"{', '.join(sorted(parsed.glyphs)) or 'none'})")
+    unused = [x for x in lets if x.key not in occurs and not ((x.latex or x.kind.split(
+        " in ")[0] in ("angle", "scalar")) and dot_key(x.key) in occurs)]
+    defaulted = defaulted_glyphs(occurs, {x.key for x in lets}, rd,
+                                 rd.notes + list(parsed.readings))
+    unused_notes = unused_lets(unused, defaulted, [k for k in parsed.glyphs if getattr(
+        rd.glyphs.get(k), "meaning", "") != "body velocity"])  # the user's glyphs only
     notes, free = glyph_values(rd, lend, values,
                                 [e for chain in parsed.chains for e in chain])
+    notes += unused_notes
+    unused_keys = tuple(x.key for x in unused)
     if table is not None and rd.by_notation & rd.used:
         notes.insert(0, f"--notation {table.name} ({table.title}): " + "; ".join(
             rd.declared[k].text for k in sorted(rd.by_notation & rd.used)))
@@ -365,7 +373,8 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     used = {k: g for k, g in glyphs.items() if k in rd.glyphs or k in rd.used}
     return Reading(st, kind, text, notes, free,
                    choices={k: rd.choices.get(k, alternatives(k)[0]) for k in rd.choice_points},
-                   symbols={k: g.name for k, g in used.items() if g.name}, rows=used)
+                   symbols={k: g.name for k, g in used.items() if g.name}, rows=used,
+                   unused=unused_keys)
 
 
 def _relations(parsed) -> tuple[list[Rel], str]:

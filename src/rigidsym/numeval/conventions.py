@@ -17,6 +17,11 @@ two semantics shared by accident could not decide a statement alone.
   transformation operator (Jain (2011) ch. 1: ``V(y) = φ^*(x, y) V(x)``), or the inverse of
   the transpose, the dual of a motion transform (Featherstone (2008) (2.25): a force
   transforms by ``X^* = X^{-T}``).
+- ``argument extent``: ``\\sin\\omega t`` (a function's argument without parentheses, then
+  more scalar factors) is sin(ω) t, the operator taking one factor as in Rodrigues' formula
+  written ``\\sin\\theta\\,\\hat\\omega`` (Murray, Li & Sastry (1994) (2.14)), or sin(ω t),
+  the argument running over the whole product as in the vibration books' ``\\sin\\omega t``
+  (Thomson & Dahleh (1998) ch. 1, Taylor (2005) (5.62)).
 """
 
 from __future__ import annotations
@@ -25,8 +30,8 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from contextvars import ContextVar
 
-__all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "STAR", "choice_key",
-           "settled", "declared_readings"]
+__all__ = ["READINGS", "BRACKET_CROSS", "QUATERNION", "TANGENT", "STAR", "ARGUMENT_EXTENT",
+           "choice_key", "settled", "declared_readings"]
 
 #: [A x\wedge]: the content's hat, or A times x's hat
 BRACKET_CROSS = ("content", "bind")
@@ -37,9 +42,11 @@ QUATERNION = ("Hamilton", "JPL", "Hamilton, scalar last")
 TANGENT = ("angular first", "translation first")
 #: X^* of a 6x6 matrix: its transpose (Jain's adjoint) or its inverse's transpose (the dual)
 STAR = ("transpose", "dual")
+#: \sin\omega t: the function of the next factor only, or of the whole scalar product after it
+ARGUMENT_EXTENT = ("factor", "product")
 #: every contested construct this semantics evaluates, by name, its readings
 READINGS = {"bracket cross": BRACKET_CROSS, "quaternion product": QUATERNION,
-            "tangent order": TANGENT, "star": STAR}
+            "tangent order": TANGENT, "star": STAR, "argument extent": ARGUMENT_EXTENT}
 
 
 def choice_key(construct: str, text: str) -> str:

@@ -14,6 +14,7 @@ Any construct not listed here raises :class:`NotCovered` naming it.
 from __future__ import annotations
 
 import random
+import re
 from dataclasses import dataclass
 
 import lark
@@ -38,6 +39,14 @@ _FUNCS = {"\\sin": mp.sin, "\\cos": mp.cos, "\\tan": mp.tan, "\\arctan": mp.atan
           "\\arccos": mp.acos, "\\cot": mp.cot, "\\sec": mp.sec, "\\csc": mp.csc}
 _INVERSES = {"\\sin": mp.asin, "\\cos": mp.acos, "\\tan": mp.atan}
 _OPS = {"tr": V.trace, "Tr": V.trace, "trace": V.trace, "det": V.det, "vect": V.vect}
+# an operator's token: \sin, \text{ vect }, \operatorname*{tr}, \textrm{det}, \mbox{Tr} ...
+_OPERATOR_TOKEN = re.compile(r"\\[A-Za-z]+\*?\s*(?:\{\s*([A-Za-z0-9]+)\s*\})?")
+
+
+def _operator_word(token: str) -> str:
+    """The operator's word of a token (``\\text{ vect }`` -> ``vect``), else the token."""
+    m = _OPERATOR_TOKEN.fullmatch(token.strip())
+    return (m.group(1) or m.group(0).strip()[1:]) if m else token.strip()
 
 
 @dataclass(frozen=True)
@@ -492,10 +501,51 @@ class Evaluator:
             if V.is_matrix(v) or isinstance(v, V.Eye | V.Zero):
                 raise NotCovered(f"{name} of a matrix in {text_of(t)!r}")
             return _FUNCS[name](v)
-        word = name.split("{")[-1].rstrip("}").lstrip("\\")
+        word = _operator_word(name)
         if word in _OPS:
             return _OPS[word](v)
         raise NotCovered(f"the operator {name}")
+
+    def r_arg_extent(self, t):
+        """``\\sin\\omega t``: a function whose argument has no parentheses, then factors
+        (:func:`rigidsym.latex.rewrites.argument_extents`). The leading scalar factors may
+        continue the argument: a choice point
+        (:data:`rigidsym.numeval.conventions.ARGUMENT_EXTENT`) where there is one; a vector
+        or matrix ends the run."""
+        texts = [str(c) for c in t.children[3::2]]
+        inner, factors = t.children[2], [self.value(c) for c in t.children[4::2]]
+        kids = list(inner.children)
+        arg = self.value(kids[-1])
+        run = 0
+        if _scalar_value(arg):
+            while run < len(factors) and _scalar_value(factors[run]):
+                run += 1
+        how = "factor"
+        if run:
+            key = conventions.choice_key(
+                "argument extent", " ".join([str(t.children[0]), str(t.children[1]),
+                                             *texts[:run]]))
+            how = conventions.settled("argument extent") or self.choose(
+                key, conventions.ARGUMENT_EXTENT)
+        if how == "product":
+            for f in factors[:run]:
+                arg = V.mul(arg, f)
+            factors = factors[run:]
+        v = self._function_of(lark.Tree(inner.data[len("extent_"):], kids), arg)
+        for f in factors:
+            v = V.mul(v, f)
+        return v
+
+    def _function_of(self, f, arg):
+        """The function node ``f`` (``func``, ``func_power``, ``matfunc``) of the value
+        ``arg`` in place of its own argument's."""
+        rule = {"func": self.r_func, "func_power": self.r_func_power,
+                "matfunc": self.r_matfunc}[f.data]
+        saved, self.value = self.value, lambda c: arg if c is f.children[-1] else saved(c)
+        try:
+            return rule(f)
+        finally:
+            del self.value
 
     def r_func_power(self, t):
         name, sup = str(t.children[0]), t.children[1]
@@ -710,6 +760,12 @@ class Evaluator:
 
         f = [at(x0 + k * h) for k in (-2, -1, 1, 2)]
         return _combine(f, [1, -8, 8, -1], 12 * h)
+
+
+def _scalar_value(v) -> bool:
+    """``v`` is a scalar value (a 1x1 matrix counts): it may continue a function's argument."""
+    v = V.scalar(v)
+    return not (V.is_matrix(v) or isinstance(v, V.Eye | V.Zero))
 
 
 def _dims(sub) -> tuple[int, int] | None:

@@ -40,7 +40,7 @@ import sympy as sp
 from rigidsym.algebra import rigid_motions
 from rigidsym.algebra.operators import Cpm, Cross
 from rigidsym.algebra.rigid_motions import LieOp
-from rigidsym.latex import contested, quaternions, tangent
+from rigidsym.latex import quaternions, tangent
 from rigidsym.latex.kinematics import dot_key, explicit_rate
 from rigidsym.latex.shapes import (
     LatexError,
@@ -172,11 +172,9 @@ class BookNotationRules:
                              f"matrix (Jain's transpose or Featherstone's dual); write ^T for "
                              f"a transpose, or declare the starred name with a --let "
                              f"(--let 'X^{{*}}: matrix')", "shapes")
-        settled = contested.declared("star")  # --let 'star: transpose' or 'star: dual'
-        if settled is None:
-            self.choice_points.setdefault(STAR_POINT, alternatives(STAR_POINT))
-        how = "declared by --let 'star: ...'" if settled else "a choice"
-        if (settled or self.choices.get(STAR_POINT, alternatives(STAR_POINT)[0])) == "dual":
+        # --let 'star: transpose' or 'star: dual'
+        reading, how = self.contested_reading("star", STAR_POINT, alternatives(STAR_POINT))
+        if reading == "dual":
             self._note(f"X^*: read as the dual (X^{{-1}})^T, Featherstone (2.25) ({how}: or "
                        f"the transpose, Jain's)")
             return self._inverse_transpose(x)
@@ -366,9 +364,14 @@ class BookNotationRules:
                 sp.Symbol(declared.name, real=True)
         if g.shape in ((3, 3), (4, 4)) and g.meaning.startswith(("rotation", "homogeneous")):
             n = 3 if g.shape == (3, 3) else 6
-            w = sp.MatrixSymbol(f"{g.name}_w", n, 1)
-            self.glyphs[f"{key}_{{w}}"] = Glyph(f"{key}_{{w}}", "*", w.name, (n, 1), "free",
-                                                 "body velocity", "")
+            # a name and a key no declaration of the reader's uses: their own
+            # \mathbf{Q}_{w} stays theirs (sharing one symbol verified a false relation)
+            taken = set(self.overrides) | {o.name for o in self.overrides.values()}
+            mark = next(m for m in ("w", *(f"w{k}" for k in range(2, 99)))
+                        if f"{g.name}_{m}" not in taken and f"{key}_{{{m}}}" not in taken)
+            w = sp.MatrixSymbol(f"{g.name}_{mark}", n, 1)
+            self.glyphs[f"{key}_{{{mark}}}"] = Glyph(f"{key}_{{{mark}}}", "*", w.name, (n, 1),
+                                                      "free", "body velocity", "")
             what = "angular velocity" if n == 3 else "twist"
             named = (f"; --let '\\boldsymbol\\omega: angular velocity of {key}' declares a "
                      f"symbol of yours" if n == 3 else "")

@@ -22,7 +22,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra.operators import Det, Vect
-from rigidsym.latex.lexing import Parsed, Relation, parser
+from rigidsym.latex.lexing import Parsed, Relation, operator_word, parser
 from rigidsym.latex.shapes import (
     LatexError,
     SizedZero,
@@ -36,6 +36,7 @@ from rigidsym.latex.shapes import (
 )
 from rigidsym.latex.table import Glyph, lookup
 from rigidsym.latex.transformer.book_notations import BookNotationRules, sup_word
+from rigidsym.latex.transformer.extent import ArgumentExtentRules
 from rigidsym.latex.transformer.glyphs import TIME, GlyphKey, GlyphRules
 from rigidsym.latex.transformer.meanings import BracketCpm, MeaningRules
 from rigidsym.latex.transformer.rigid_motions import RigidMotionRules
@@ -44,7 +45,7 @@ __all__ = ["LatexError", "Relation", "Parsed", "parser"]
 
 
 class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationRules,
-                       lark.Transformer):
+                       ArgumentExtentRules, lark.Transformer):
     """Tree -> sympy, in the declaration vocabulary (module docstring); ``reader``: a
     reader's LaTeX, ``[x]`` of a vector its hat (:mod:`rigidsym.latex.transformer.rigid_motions`),
     ``I`` the identity (:mod:`rigidsym.latex.transformer.meanings`); the glyphs' rules are
@@ -205,7 +206,7 @@ class LatexTransformer(GlyphRules, MeaningRules, RigidMotionRules, BookNotationR
         name, x = str(items[0]), value_of(items[1])
         _operator_of_function(name, items[1], getattr(self, "functions", {}))
         x = as_scalar(x) if "det" not in name else x
-        fn = name.split("{")[-1].rstrip("}").lstrip("\\")
+        fn = operator_word(name)
         fn = "tr" if fn in ("Tr", "trace") else fn
         if fn in ("sin", "cos", "tan"):
             return getattr(sp, fn)(x)
@@ -306,7 +307,7 @@ def _operator_of_function(name: str, node, functions: dict) -> None:
         LatexError: construct ``function``, its ``function`` attribute the glyph's key (the
             reader writes the function's parameters into the advice)."""
     key = getattr(node, "key", None)
-    op = name.split("{")[-1].rstrip("}").lstrip("\\")
+    op = operator_word(name)
     if key is None or key not in functions or op not in ("det", "tr", "Tr", "trace", "vect"):
         return  # (a sine takes a scalar glyph as it is)
     exc = LatexError(

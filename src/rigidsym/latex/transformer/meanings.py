@@ -23,11 +23,13 @@ import re
 import sympy as sp
 
 from rigidsym.algebra.operators import Cpm
+from rigidsym.latex import contested
 from rigidsym.latex.contested import readings_of
 from rigidsym.latex.entries import BASE_READINGS, base_words, is_base_point
 from rigidsym.latex.hats import CAPITAL_READINGS, HAT_READINGS
 from rigidsym.latex.shapes import LatexError, SizedIdentity, SizedZero, as_scalar, matrix_shape
 from rigidsym.latex.table import lookup
+from rigidsym.latex.transformer.extent import extent_parts, is_extent_point
 
 __all__: list[str] = []
 
@@ -37,7 +39,8 @@ __all__: list[str] = []
 ALTERNATIVES = {"apply": ("product", "apply"), "bracket": ("hat", "group"),
                 "index": ("name", "entry"), "tilde": ("skew", "own"), "hat": HAT_READINGS,
                 "base": BASE_READINGS, "double": ("cpm", "neg"), "shape": CAPITAL_READINGS,
-                "cross": readings_of("bracket cross"), "star": readings_of("star")}
+                "cross": readings_of("bracket cross"), "star": readings_of("star"),
+                "extent": readings_of("argument extent")}
 #: the one choice point of every X^* of a 6x6 matrix in a statement (a book reads its stars
 #: one way: Jain's transpose or Featherstone's dual; :mod:`rigidsym.latex.contested`, "star")
 STAR_POINT = "X^*"
@@ -54,6 +57,8 @@ def _kind(key: str) -> str:
         return "tilde"
     if key == STAR_POINT:  # every X^* of a 6x6 matrix: Jain's transpose or the dual
         return "star"
+    if is_extent_point(key):  # \cos\theta\phi: cos(θ) φ or cos(θ φ) (transformer.extent)
+        return "extent"
     if key.endswith(" shape"):  # a free bold capital: 3x3 or a 3-vector (latex.hats)
         return "shape"
     if key.startswith("[["):  # Shuster's [[u]]: the cross-product matrix or its negative
@@ -80,6 +85,11 @@ def said(key: str, choice: str) -> str:
     if _kind(key) == "cross":
         return f"{key} " + ("A [x]_× (x× binds to the factor before it)" if choice == "bind"
                             else "the cross-product matrix of its content")
+    if _kind(key) == "extent":
+        head, arg, run = extent_parts(key)
+        gap = " " if arg[-1:].isalpha() and run[:1].isalpha() else ""
+        spelt = f"{head}({arg}{gap}{run})" if choice == "product" else f"{head}({arg}){run}"
+        return f"{head}{arg}{gap}{run} read as {spelt}"
     if _kind(key) == "star":
         return ("each X^* of a 6x6 matrix " + ("the dual (X^{-1})^T (Featherstone)"
                                               if choice == "dual" else
@@ -143,6 +153,25 @@ class MeaningRules:
         self.functions: dict = {}  # key -> expand(args) -> (value, params): --let functions
         self.choices: dict[str, str] = {}  # key -> one of its alternatives
         self.choice_points: dict[str, tuple] = {}  # key -> its alternatives, the default first
+
+    def contested_reading(self, construct: str, key: str, readings: tuple) -> tuple[str, str]:
+        """The reading of one use of a contested construct (:mod:`rigidsym.latex.contested`)
+        and how it was settled, for the ``read as:`` note.
+
+        Args:
+            construct: the construct's key in ``CONTESTED`` (``"star"``).
+            key: this use's choice point (``self.choices``).
+            readings: its readings, the first read where nothing settles it.
+
+        Returns:
+            ``(reading, how)``: the reading a ``--let`` declared (``how`` says so), else the
+            choice point's, which is registered so that the statement is decided under each.
+        """
+        settled = contested.declared(construct)
+        if settled is not None:
+            return settled, f"declared by --let '{construct}: ...'"
+        self.choice_points.setdefault(key, readings)
+        return self.choices.get(key, readings[0]), "a choice"
 
     def apply_many(self, items):
         """``glyph ( a, b, ... )`` with an optional power: a ``--let`` function of several

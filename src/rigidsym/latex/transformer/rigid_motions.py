@@ -28,7 +28,7 @@ import lark
 import sympy as sp
 
 from rigidsym.algebra import rigid_motions
-from rigidsym.latex import contested, tangent
+from rigidsym.latex import tangent
 from rigidsym.latex.kinematics import expand_models
 from rigidsym.latex.lexing import bracket_key, named_map_key
 from rigidsym.latex.shapes import LatexError, as_scalar, matrix_shape, shape_words
@@ -221,11 +221,8 @@ class RigidMotionRules:
         if matrix_shape(content) != (3, 1):
             return v
         key = f"[{notation.text(left)} {notation.text(x)}{tok}]"
-        settled = contested.declared("bracket cross")  # --let 'bracket cross: ...'
-        if settled is None:
-            self.choice_points.setdefault(key, alternatives(key))
-        how = "declared by --let 'bracket cross: ...'" if settled else "a choice"
-        if (settled or self.choices.get(key, alternatives(key)[0])) == "bind":
+        reading, how = self.contested_reading("bracket cross", key, alternatives(key))
+        if reading == "bind":
             self._note(f"{key}: read as {notation.text(left)} [{notation.text(x)}]_× ({how}: "
                        f"or the cross-product matrix of the content)")
             return v
