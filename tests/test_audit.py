@@ -7,6 +7,7 @@ unless asked."""
 
 from __future__ import annotations
 
+import importlib.metadata
 import subprocess
 import sys
 from pathlib import Path
@@ -160,6 +161,10 @@ def _peer_callables():
     except ImportError:
         pass
     try:
+        # the installed peer only: a user folder that a loaded module leaves last on the path
+        # (examples/) holds a modern_robotics.py of its own, whose import would declare its
+        # ids a second time
+        importlib.metadata.distribution("modern_robotics")
         import modern_robotics as mr
 
         out += [("Modern Robotics", "twist_transfer_matrix", mr.Adjoint, ())]
@@ -167,7 +172,7 @@ def _peer_callables():
         out += [("Modern Robotics", "twist_transfer", lambda T, V: mr.Adjoint(T) @ V, ()),
                 ("Modern Robotics", "wrench_transfer",
                  lambda T, F: mr.Adjoint(mr.TransInv(T)).T @ F, ())]
-    except ImportError:
+    except (ImportError, importlib.metadata.PackageNotFoundError):
         pass
     try:
         import pinocchio as pin

@@ -123,7 +123,6 @@ SELIG_R = (r"R(\mathbf{n},\theta) = I_3 + \sin\theta\,[\mathbf{n}]_\times + (1 -
     (r"\operatorname{tr} R(\mathbf{n},\frac{\theta}{2}) = 1 + 2\cos\theta", "does-not-hold"),
     # a parenthesis without a comma after an operator's argument stays a product
     (r"\cos\theta(1 + \phi) = \cos\theta + \phi\cos\theta", "verified"),
-    (r"\sin\theta(\phi) = \phi\sin\theta", "verified"),
 ])
 def test_an_operator_applies_to_a_function_of_several_arguments(latex, verdict):
     kinds = {r"\mathbf{n}": "unit vector", r"\theta": "angle", r"\phi": "angle", "Q": "rotation"}
@@ -131,6 +130,17 @@ def test_an_operator_applies_to_a_function_of_several_arguments(latex, verdict):
     r = rigidsym.check_latex(latex, let=lets + ([SELIG_R] if "R(" in latex else []),
                              repairs=False)
     assert r.verdict == verdict, r.detail
+
+
+def test_one_glyph_in_parentheses_after_an_operators_argument_is_asked():
+    """``\\sin\\theta(\\phi)``: the parentheses of one glyph are no application (no comma)
+    and the glyph continues the argument as ``\\sin\\theta\\phi`` does (argument extent:
+    asked); declared, the factor reading is a product."""
+    latex, lets = r"\sin\theta(\phi) = \phi\sin\theta", [r"\theta: angle", r"\phi: angle"]
+    with pytest.raises(BadInput, match="argument extent"):
+        rigidsym.check_latex(latex, let=lets, repairs=False)
+    r = rigidsym.check_latex(latex, let=[*lets, "argument extent: factor"], repairs=False)
+    assert r.verdict == "verified", r.detail
 
 
 def test_a_declared_parameter_kind_must_fit_the_argument():

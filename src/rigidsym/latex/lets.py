@@ -265,8 +265,14 @@ def respell_model_names(text: str, names: dict[str, str]) -> str:
 
 
 def without_lets(let, keys) -> list[str]:
-    """The declarations of ``let`` (:func:`read_lets`' argument) less those whose NAME's glyph
-    key is one of ``keys``, one string each, in order.
+    """The declarations of ``let`` less those whose NAME's glyph key is one of ``keys``.
+
+    Args:
+        let: the declarations, as :func:`read_lets` takes them (a string, a list, a dict).
+        keys: glyph keys (``\\mathbf{L}``) whose declarations are left out.
+
+    Returns:
+        The other declarations, one string each, in order.
 
     Raises:
         rigidsym.core.errors.BadInput: as :func:`read_lets`.

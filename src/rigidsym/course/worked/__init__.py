@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
+import os
 import pkgutil
 import re
 from collections import OrderedDict
@@ -89,11 +90,14 @@ _EXERCISE_MODULE = re.compile(r"ex(\d+)_(\d+)")
 
 def _exercise_ids() -> list[str]:
     """The ids of the modules ``exN_MM`` of the book's exercises package, found without
-    importing it (it imports this module)."""
-    spec = importlib.util.find_spec(_exercises_package())
-    found = [(int(m[1]), int(m[2])) for x in pkgutil.iter_modules(
-        spec.submodule_search_locations if spec else [])
-        if (m := _EXERCISE_MODULE.fullmatch(x.name))]
+    importing it (it imports this module) or the book's package above it (which imports
+    every declaration: a command's first words come before that work)."""
+    parent, _, leaf = _exercises_package().rpartition(".")
+    spec = importlib.util.find_spec(parent)  # the package found, not run
+    where = [os.path.join(p, leaf) for p in (spec.submodule_search_locations or [])] \
+        if spec else []
+    found = [(int(m[1]), int(m[2])) for x in pkgutil.iter_modules(where)
+             if (m := _EXERCISE_MODULE.fullmatch(x.name))]
     return [f"ex{c}.{k}" for c, k in sorted(found)]
 
 
