@@ -5,7 +5,7 @@ reader writes from docs/check-latex.md and committed with their NumPy truth
 (``tests/blind_trial_g_truth.py``, which never imports rigidsym) before the checker read any of
 them. No verdict may be wrong: a ``verified`` statement is true, a ``does-not-hold`` one false;
 and the share decided as typed may not fall below the record of ``benchmarks/blind_trial_g.py``
-(benchmarks/results/blind_trial_g.json: RECORD_FIGURES)."""
+(benchmarks/results/blind_trial_g.json: 43 of 51 decided, 0 wrong, 8 refused)."""
 
 from __future__ import annotations
 
