@@ -121,8 +121,6 @@ SELIG_R = (r"R(\mathbf{n},\theta) = I_3 + \sin\theta\,[\mathbf{n}]_\times + (1 -
     # arguments holding (...) and {...}: still one application of two arguments
     (r"\operatorname{tr} R(Q\mathbf{n},(\theta+\phi)) = 1 + 2\cos(\theta+\phi)", "verified"),
     (r"\operatorname{tr} R(\mathbf{n},\frac{\theta}{2}) = 1 + 2\cos\theta", "does-not-hold"),
-    # a parenthesis without a comma after an operator's argument stays a product
-    (r"\cos\theta(1 + \phi) = \cos\theta + \phi\cos\theta", "verified"),
 ])
 def test_an_operator_applies_to_a_function_of_several_arguments(latex, verdict):
     kinds = {r"\mathbf{n}": "unit vector", r"\theta": "angle", r"\phi": "angle", "Q": "rotation"}
@@ -132,14 +130,31 @@ def test_an_operator_applies_to_a_function_of_several_arguments(latex, verdict):
     assert r.verdict == verdict, r.detail
 
 
-def test_one_glyph_in_parentheses_after_an_operators_argument_is_asked():
-    """``\\sin\\theta(\\phi)``: the parentheses of one glyph are no application (no comma)
-    and the glyph continues the argument as ``\\sin\\theta\\phi`` does (argument extent:
-    asked); declared, the factor reading is a product."""
-    latex, lets = r"\sin\theta(\phi) = \phi\sin\theta", [r"\theta: angle", r"\phi: angle"]
-    with pytest.raises(BadInput, match="argument extent"):
-        rigidsym.check_latex(latex, let=lets, repairs=False)
+@pytest.mark.parametrize("latex", [r"\sin\theta(\phi) = \phi\sin\theta",
+                                   r"\cos\theta(1 + \phi) = \cos\theta + \phi\cos\theta",
+                                   r"\cos\theta\left(1 + \phi\right) = \cos\theta(1 + \phi)"])
+def test_a_scalar_in_parentheses_after_an_operators_argument_is_asked(latex):
+    """``\\sin\\theta(\\phi)``, ``\\cos\\theta(1 + \\phi)``: parentheses without a comma are
+    no application, and a scalar group directly after the argument continues it in the
+    vibration books (``\\cos\\omega(t - t_0)``) or is a factor: argument extent, asked where
+    the readings differ; declared, the factor reading is a product."""
+    lets = [r"\theta: angle", r"\phi: angle"]
+    if r"\left" not in latex:
+        with pytest.raises(BadInput, match="argument extent"):
+            rigidsym.check_latex(latex, let=lets, repairs=False)
     r = rigidsym.check_latex(latex, let=[*lets, "argument extent: factor"], repairs=False)
+    assert r.verdict == "verified", r.detail
+
+
+def test_a_thin_space_or_a_vector_group_after_the_argument_asks_nothing():
+    """``\\cos\\theta\\,(1 + \\phi)`` (a space ends the argument) and a group of vectors,
+    ``\\cos\\theta(\\mathbf{a} + \\mathbf{b})`` (no scalar argument continues): one reading."""
+    r = rigidsym.check_latex(r"\cos\theta\,(1 + \phi) = \cos\theta + \phi\cos\theta",
+                             let=[r"\theta: angle", r"\phi: angle"], repairs=False)
+    assert r.verdict == "verified", r.detail
+    vectors = [r"\theta: angle", r"\mathbf{a}: vector", r"\mathbf{b}: vector"]
+    r = rigidsym.check_latex(r"\cos\theta(\mathbf{a} + \mathbf{b}) = \cos\theta\,\mathbf{a} + "
+                             r"\cos\theta\,\mathbf{b}", let=vectors, repairs=False)
     assert r.verdict == "verified", r.detail
 
 

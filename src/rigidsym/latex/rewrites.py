@@ -174,6 +174,28 @@ def _open_argument(f, text: str) -> bool:
     return not text[before[1]:arg[1]].lstrip().startswith(_GROUPED)
 
 
+#: a parenthesised group directly after a factor (``\cos\omega(t - t_0)``): its opening
+#: and closing, TeX's sizing commands allowed
+_OPENS = re.compile(r"\s*(?:\\left\s*)?\(\s*$")
+_CLOSES = re.compile(r"\s*(?:\\right\s*)?\)")
+
+
+def _group_after(prev, node, text: str) -> bool:
+    r"""``node`` is written as a group in parentheses directly after ``prev`` (no space
+    command between): Thomson's ``\cos\omega(t - t_0)``, an argument's continuation in the
+    vibration books."""
+    a, b = _span(prev), _span(node)
+    return bool(_OPENS.fullmatch(text[a[1]:b[0]]) and _CLOSES.match(text, b[1]))
+
+
+def _written(prev, node, text: str) -> str:
+    """``node``'s text as written after ``prev``: with its parentheses where it is a group."""
+    a, b = _span(prev), _span(node)
+    if _group_after(prev, node, text):
+        return text[a[1]:_CLOSES.match(text, b[1]).end()].strip()
+    return text[b[0]:b[1]].strip()
+
+
 def argument_extents(t, text: str):
     r"""A function whose argument is written without parentheses and then directly (no
     ``\,``, ``\;``, ``\quad``, ``~``, no operator) by further factors (``\cos\theta\phi``,
@@ -199,9 +221,10 @@ def argument_extents(t, text: str):
         while i < len(factors):
             f, j = factors[i], i + 1
             if _open_argument(f, text):
-                while j < len(factors) and _atom(factors[j]) and _span(factors[j - 1]) \
-                        and _span(factors[j]) and not _SPACES.search(
-                            text[_span(factors[j - 1])[1]:_span(factors[j])[0]]):
+                while j < len(factors) and _span(factors[j - 1]) and _span(factors[j]) and (
+                        _atom(factors[j]) and not _SPACES.search(
+                            text[_span(factors[j - 1])[1]:_span(factors[j])[0]])
+                        or _group_after(factors[j - 1], factors[j], text)):
                     j += 1
             if j == i + 1:
                 out.append(f)
@@ -211,9 +234,9 @@ def argument_extents(t, text: str):
             kids = [lark.Token("EXTENT", text[start:arg[0]].strip()),
                     lark.Token("EXTENT", text[arg[0]:arg[1]].strip()),
                     lark.Tree("extent_" + f.data, list(f.children))]
-            for g in factors[i + 1:j]:
-                s = _span(g)
-                kids += [lark.Token("EXTENT", text[s[0]:s[1]].strip()), g]
+            for k in range(i + 1, j):
+                kids += [lark.Token("EXTENT", _written(factors[k - 1], factors[k], text)),
+                         factors[k]]
             out.append(lark.Tree("arg_extent", kids))
             changed, i = True, j
         if not changed:
