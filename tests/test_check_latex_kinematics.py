@@ -258,6 +258,17 @@ def test_a_users_glyph_spelt_as_the_readers_body_velocity_stays_the_users(latex,
         assert any(n.startswith("not used:") for n in r.model), r.model
 
 
+def test_a_refusal_never_names_the_readers_own_body_velocity():
+    r"""Arnold's ``\frac{dM}{dt} = [M, \Omega]`` (a Lie bracket of 3-vectors, not read): the
+    refusal says what to write and never asks the user to declare ``B_{w}``, the body
+    velocity the reader introduces for ``B(t)`` (a symbol the user did not write)."""
+    with pytest.raises((BadInput, LatexError)) as exc:
+        rigidsym.check_latex(r"\frac{dM}{dt} = [M, \Omega]", repairs=False, let=[
+            r"B(t): rotation", r"\Omega: body angular velocity of B", r"m: vector",
+            r"M = B^{-1}m"])
+    assert r"\times" in str(exc.value) and "B_{w}" not in str(exc.value), exc.value
+
+
 # ---- a --let model used only through its rate or its entries (Lee's e_R, Hanson's q)
 LEE = [r"R(t): rotation", r"R_d(t): rotation", r"\Omega: body angular velocity of R",
        r"\Omega_d: body angular velocity of R_d", r"e_R = \frac12(R_d^TR - R^TR_d)^\vee",

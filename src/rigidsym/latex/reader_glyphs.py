@@ -345,7 +345,9 @@ class GlyphReader:
         msg = str(exc)
         if what != "the LaTeX":
             msg = f"{what}: {msg}"
-        free = [k for k, g in exc.glyphs.items() if g.kind == "free" and k not in self.over]
+        # the user's free glyphs: never the reader's own (a rotation's body velocity)
+        free = [k for k, g in exc.glyphs.items() if g.kind == "free" and k not in self.over
+                and g.meaning != "body velocity"]
         if exc.construct == "shapes" and free:
             msg = (f"{msg.split(' (declare the shapes')[0]}; its meaning depends on the shape "
                    f"of {', '.join(free)}, which no --let declares: add e.g. --let "
