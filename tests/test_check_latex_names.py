@@ -354,3 +354,15 @@ def test_declared_column_braces_are_the_glyph_inside(rhs, verdict):
         with pytest.raises((BadInput, LatexError), match=r"unknown macro \\\{"):
             _v(lhs + rhs, [x.replace(r"\{\omega\}: vector", r"\omega: vector")
                            for x in _GINSBERG])
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"[\mathbf{Q}]_{Xx}^T[\mathbf{Q}]_{Xx} = \mathbf{1}", "verified"),
+    (r"[\mathbf{Q}]_{Xx}[\mathbf{Q}]_{Xx} = \mathbf{1}", "does-not-hold"),
+])
+def test_a_bracketed_name_with_a_word_subscript_is_one_name(latex, verdict):
+    """Curtis' direction cosine matrix ``[\\mathbf{Q}]_{Xx}`` (from frame X to x) is one name,
+    as Solà's ``[\\mathbf{q}]_L`` is: its ``--let`` declares it (a parse error before, with no
+    hint of what to write)."""
+    r = rigidsym.check_latex(latex, let=[r"[\mathbf{Q}]_{Xx}: rotation"], repairs=False)
+    assert r.verdict == verdict, r.detail
