@@ -343,7 +343,9 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     defaulted = defaulted_glyphs(occurs, {x.key for x in lets}, rd,
                                  rd.notes + list(parsed.readings))
     unused_notes = unused_lets(unused, defaulted, [k for k in parsed.glyphs if getattr(
-        rd.glyphs.get(k), "meaning", "") != "body velocity"])  # the user's glyphs only
+        rd.glyphs.get(k), "meaning", "") != "body velocity"],  # the user's glyphs only
+        occurring=[k for k in occurs if getattr(rd.glyphs.get(k), "meaning", "")
+                   != "body velocity"])
     notes, free = glyph_values(rd, lend, values,
                                 [e for chain in parsed.chains for e in chain])
     notes += unused_notes

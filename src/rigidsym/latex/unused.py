@@ -76,7 +76,7 @@ def near_spellings(key: str, candidates) -> list[str]:
     return sorted(k for k in candidates if k != key and base_letter(k) == letter)
 
 
-def unused_lets(unused, defaulted, glyphs) -> list[str]:
+def unused_lets(unused, defaulted, glyphs, occurring=()) -> list[str]:
     """The notes that say back the ``unused`` ``--let``s (each with ``.key`` and ``.text``).
 
     Args:
@@ -84,6 +84,10 @@ def unused_lets(unused, defaulted, glyphs) -> list[str]:
         defaulted: the keys of the glyphs nothing declares, read by a default
             (:func:`defaulted_glyphs`).
         glyphs: the LaTeX's glyph keys, named in a refusal.
+        occurring: every glyph key of the LaTeX and its models: an unused ``--let`` of a
+            letter one of them writes (Wie's ``\\mathbf{q}(t): unit 4-vector`` beside the
+            entries ``q_1 ... q_4``) may hold what they need (a unit norm, a time), so it is
+            never ignored.
 
     Returns:
         One note, ``not used: --let '...'; ...``, or none when nothing is unused.
@@ -93,7 +97,7 @@ def unused_lets(unused, defaulted, glyphs) -> list[str]:
             misspelling), naming both and what to write.
     """
     for x in unused:
-        near = near_spellings(x.key, defaulted)
+        near = near_spellings(x.key, defaulted) or near_spellings(x.key, occurring)
         if near:
             names = ", ".join(near)
             raise BadInput(
