@@ -260,15 +260,31 @@ def test_a_users_glyph_spelt_as_the_readers_body_velocity_stays_the_users(latex,
     assert mine != [point.get(f"Q_w2_{i}") for i in (1, 2, 3)], point
 
 
+ARNOLD = [r"B(t): rotation", r"\Omega: body angular velocity of B", r"m: vector",
+          r"M = B^{-1}m"]
+
+
+def test_arnolds_bracket_of_two_3_vectors_is_the_cross_product():
+    r"""Arnold's Euler equation ``\frac{dM}{dt} = [M, \Omega]`` (sec. 28; his ``[a, b]`` is the
+    vector product, the bracket of so(3)) holds for ``m = BM`` constant; the factors swapped
+    it does not, and the bracket is said back as read."""
+    r = rigidsym.check_latex(r"\frac{dM}{dt} = [M, \Omega]", repairs=False, let=ARNOLD)
+    assert r.verdict == "verified", r.detail
+    assert any("bracket of so(3)" in m for m in r.model), r.model
+    slip = rigidsym.check_latex(r"\frac{dM}{dt} = [\Omega, M]", repairs=False, let=ARNOLD)
+    assert slip.verdict == "does-not-hold", slip.detail
+
+
 def test_a_refusal_never_names_the_readers_own_body_velocity():
-    r"""Arnold's ``\frac{dM}{dt} = [M, \Omega]`` (a Lie bracket of 3-vectors, not read): the
-    refusal says what to write and never asks the user to declare ``B_{w}``, the body
-    velocity the reader introduces for ``B(t)`` (a symbol the user did not write)."""
+    r"""A bracket of two 6-vectors (not read: the bracket of se(3) depends on the tangent
+    order) beside ``B(t)``: the refusal says what to write and never asks the user to
+    declare ``B_{w}``, the body velocity the reader introduces for ``B(t)`` (a symbol the
+    user did not write)."""
     with pytest.raises((BadInput, LatexError)) as exc:
-        rigidsym.check_latex(r"\frac{dM}{dt} = [M, \Omega]", repairs=False, let=[
-            r"B(t): rotation", r"\Omega: body angular velocity of B", r"m: vector",
-            r"M = B^{-1}m"])
-    assert r"\times" in str(exc.value) and "B_{w}" not in str(exc.value), exc.value
+        rigidsym.check_latex(r"\frac{d\mathbf{t}}{dt} = [\mathbf{t}, \mathbf{s}] + B\Omega",
+                             repairs=False, let=[*ARNOLD, r"\mathbf{t}: twist",
+                                                 r"\mathbf{s}: twist"])
+    assert r"\wedge" in str(exc.value) and "B_{w}" not in str(exc.value), exc.value
 
 
 # ---- a --let model used only through its rate or its entries (Lee's e_R, Hanson's q)

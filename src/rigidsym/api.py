@@ -361,6 +361,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     """:func:`_check_latex_steps` before the names are written back as typed."""
     from rigidsym.checking.checker import check as _check
     from rigidsym.latex.blackboard import declared_blackboard
+    from rigidsym.latex.chain_head import defined_head
     from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
         accent_primes,
@@ -394,6 +395,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     latex, let, subx = cross_subscripts(latex, let)  # Eade's \omega_\times: [\omega]_x
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
+    latex, let, head = defined_head(latex, let, book=book, notation=notation)  # A = X = Y
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     if reading.unused:  # a --let it does not use is ignored: read again without it
         from rigidsym.latex.lets import without_lets
@@ -403,7 +405,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
         reading.notes += said
     for note in (labels, prime, tilde, floor, rates, subx, hat, deltas, conj, respelt, board,
-                 column, braces, spin):
+                 column, braces, spin, head):
         if note:
             reading.notes.insert(0, note)
     seen["reading"] = reading

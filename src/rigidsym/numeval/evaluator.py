@@ -271,8 +271,11 @@ class Evaluator:
         return self.value(inner)
 
     def r_commutator(self, t):
-        """``[X, Y]``: XY - YX of two square matrices of one size."""
+        """``[X, Y]``: XY - YX of two square matrices of one size; of two 3-vectors the
+        bracket of so(3), the cross product (Arnold's ``[a, b]``)."""
         a, b = (self.value(k) for k in self._kids(t))
+        if V.shape(V.scalar(a)) == (3, 1) and V.shape(V.scalar(b)) == (3, 1):
+            return V.cross(a, b)
         if not (V.is_matrix(a) and V.is_matrix(b)) or a.rows != a.cols \
                 or (a.rows, a.cols) != (b.rows, b.cols):
             raise NotCovered(f"a commutator of no two square matrices in {text_of(t)!r}")

@@ -233,18 +233,27 @@ class BookNotationRules:
 
     def commutator(self, items):
         """``[X, Y]``: the commutator ``XY - YX`` of two square matrices of one size (Hall
-        (2015) Def. 2.21's bracket of matrices); of two 3-vectors it is refused naming what
-        to write."""
+        (2015) Def. 2.21's bracket of matrices); of two 3-vectors the bracket of so(3) in
+        vector form, ``x \\times y`` (Arnold (1989) sec. 26's ``[a, b]``, the vector product;
+        the vee of the commutator of the hats, so both books' brackets agree); of two
+        6-vectors it is refused naming what to write (the bracket of se(3) depends on the
+        tangent order)."""
         a, b = (self._val(i) for i in _content(items))
         sa, sb = matrix_shape(a), matrix_shape(b)
         if sa is not None and sa == sb and sa[0] == sa[1]:
             self._note("[X, Y]: the commutator XY - YX")
             return a * b - b * a
-        if sa in ((3, 1), (6, 1)) and sa == sb:
-            raise LatexError(f"[x, y] of two {sa[0]}-vectors: the Lie bracket is not read; "
-                             f"write [x^\\wedge, y^\\wedge] (the commutator of their hats: "
-                             f"x^\\wedge y^\\wedge - y^\\wedge x^\\wedge) or, of 3-vectors, "
-                             f"x \\times y", "shapes")
+        if sa == (3, 1) and sb == (3, 1):
+            from rigidsym.algebra.operators import Cross
+
+            self._note("[x, y] of two 3-vectors: the bracket of so(3), x \\times y (Arnold's "
+                       "vector product; the vee of the commutator [x^\\wedge, y^\\wedge])")
+            return Cross(a, b)
+        if sa == (6, 1) and sa == sb:
+            raise LatexError("[x, y] of two 6-vectors: the Lie bracket is not read (it depends "
+                             "on the tangent order); write [x^\\wedge, y^\\wedge] (the "
+                             "commutator of their hats: x^\\wedge y^\\wedge - y^\\wedge "
+                             "x^\\wedge)", "shapes")
         raise LatexError(f"[X, Y] between {shape_words(a)} and {shape_words(b)}: the "
                          f"commutator XY - YX needs two square matrices of one size", "shapes")
 
