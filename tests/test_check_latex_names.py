@@ -135,6 +135,15 @@ def test_an_index_range_as_a_let_name_names_the_let_that_settles_it():
     assert r"entries 1 to 3 of \mathbf{q}" in msg and r"--let '\mathbf{q}: 4-vector'" in msg
 
 
+@pytest.mark.parametrize("let", ["t: scalar", "t = 3"])
+def test_a_let_of_t_says_t_is_time(let):
+    """``t`` is the time every ``X(t)`` depends on: a ``--let`` of it says so and names
+    another spelling (before: "expected one symbol as NAME", as if ``t`` were no glyph)."""
+    with pytest.raises(BadInput) as exc:
+        _v("x = t^2", [let])
+    assert "t is time" in str(exc.value) and r"\tau" in str(exc.value), exc.value
+
+
 #: refusals of the trial: none may leak an exception's text or end in an empty list
 _REFUSED = [
     (r"{}^{G}\tilde r_{C} = 0", None),

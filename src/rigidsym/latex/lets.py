@@ -155,6 +155,10 @@ def _key(name: str, decl: str) -> str:
                        f"not a symbol of its own: declare {base} (e.g. --let '{base}: "
                        f"{max(int(hi), 4)}-vector', or its model) and {name.strip()} is read "
                        f"from it")
+    if name.strip() == "t":  # time: what X(t) and \dot X are functions of
+        raise BadInput(f"--let '{decl}': t is time, the variable of every X(t) and the "
+                       f"derivative of every \\dot X, read without a declaration; a glyph of "
+                       f"your own needs another name (t_0, \\tau)")
     try:
         p = parse_latex(f"{name} = 0", None)
     except LatexError as exc:
