@@ -14,7 +14,23 @@ statement; never imports rigidsym: it is the independent judge."""
 from __future__ import annotations
 
 import numpy as np
-from _numpy_truth import angle, ax, az, ddt, ham, px, py, pz, res, rodrigues, rot, sk, unit, vee
+from _numpy_truth import (
+    angle,
+    ax,
+    az,
+    ddt,
+    ham,
+    holds_in,
+    px,
+    py,
+    pz,
+    res,
+    rodrigues,
+    rot,
+    sk,
+    unit,
+    vee,
+)
 
 # ---------------------------------------------------------------- helpers of this trial
 
@@ -526,7 +542,6 @@ def zp_dcm_rate_slip(rng):
     return _zp_rate(rng, slip=True)
 
 
-#: each truth by the name the data file's ``check`` gives
-TRUTHS = {name: f for name, f in dict(globals()).items()
-          if callable(f) and not name.startswith("_") and name.split("_")[0] in
-          {"rao", "mk", "kp", "ups", "ms", "dai", "sh", "hn", "zp"}}
+def holds(name: str, points: int = 6, seed: int = 2024) -> bool:
+    """Whether the named truth holds at ``points`` random points (:func:`_numpy_truth.holds_in`)."""
+    return holds_in(globals(), name, points, seed)
