@@ -174,6 +174,20 @@ def test_the_minimal_declaration_order_case_verifies_in_both_orders(lets):
     assert r.verdict == "verified", (r.detail, r.model)
 
 
+@pytest.mark.parametrize("name", [r"\mathbf{A}", r"\mathbf{Z}"])
+@pytest.mark.parametrize("eye", [r"\mathbf{I}", "I"])
+def test_a_declared_identity_glyph_in_a_model_is_its_model_whatever_the_names(name, eye):
+    """A model that mentions a ``--let``-declared ``\\mathbf{I}`` (Kasdin & Paley's inertia
+    matrix) reads its model in any order of names: before, a model whose name sorted before
+    ``\\mathbf{I}`` read it as the identity and dropped its declaration as unused, and the
+    false ``X = \\omega`` of ``X = \\mathbf{I}\\omega`` was verified."""
+    lets = [rf"{name} = {eye}\boldsymbol\omega", rf"{eye} = \operatorname{{diag}}(2, 3, 4)",
+            r"\boldsymbol\omega: vector"]
+    r = rigidsym.check_latex(rf"{name} = \boldsymbol\omega", let=lets, repairs=False)
+    assert r.verdict == "does-not-hold", (r.detail, r.model)
+    assert not any("not used" in m for m in r.model), r.model
+
+
 DIEBEL = [r"R = R_3 R_2 R_1",
           r"R_1 = \begin{bmatrix}1 & 0 & 0\\ 0 & c_\phi & s_\phi\\ 0 & -s_\phi & c_\phi"
           r"\end{bmatrix}",

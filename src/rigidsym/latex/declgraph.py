@@ -23,7 +23,9 @@ _GLYPH_RULES = {"glyph", "accented", "accented_bare", "arrow"}
 
 def glyph_keys(latex: str) -> set[str]:
     """The glyph keys a LaTeX expression mentions (``\\mathbf{w} = F\\mathbf{x}``:
-    ``{\\mathbf{w}, F, \\mathbf{x}}``), each as the parser keys it, with no shape decided.
+    ``{\\mathbf{w}, F, \\mathbf{x}}``), each as the parser keys it, with no shape decided;
+    the identity's and zero's glyphs (``\\mathbf{I}``, ``I``, ``\\mathbf{0}``) too, which a
+    ``--let`` may name.
 
     Raises:
         LatexError: LaTeX that does not parse.
@@ -40,10 +42,14 @@ def glyph_keys(latex: str) -> set[str]:
         if t.data in _GLYPH_RULES:
             build = LatexTransformer(None, {}, False, True)
             try:
-                build.transform(t)
+                read = build.transform(t)
             except lark.exceptions.VisitError:
-                pass  # a glyph no default rule reads: the parse proper says why
+                read = None  # a glyph no default rule reads: the parse proper says why
             keys |= set(build.glyphs)
+            # a glyph the rules read as a value (\mathbf{I}, I: the identity where nothing
+            # declares it) is still a name a --let may declare: mentioned
+            if isinstance(getattr(read, "key", None), str):
+                keys.add(read.key)
             continue
         todo.extend(t.children)
     return keys
