@@ -148,10 +148,19 @@ def test_the_commutator_of_two_matrices_is_read(latex, verdict):
     assert _check(latex, [r"F_1: matrix", r"F_2: matrix"]).verdict == verdict
 
 
-def test_a_bracket_of_two_vectors_is_refused_saying_what_to_write():
+@pytest.mark.parametrize("latex, verdict", [
+    # Arnold's [a, b] of 3-vectors: the bracket of so(3), the vee of [a^, b^]
+    (r"[\mathbf{a}, \mathbf{b}] = \mathbf{a}\times\mathbf{b}", "verified"),
+    (r"[\mathbf{a}, \mathbf{b}] = \mathbf{b}\times\mathbf{a}", "does-not-hold"),
+])
+def test_a_bracket_of_two_3_vectors_is_their_cross_product(latex, verdict):
+    assert _check(latex, [r"\mathbf{a}: vector", r"\mathbf{b}: vector"]).verdict == verdict
+
+
+def test_a_bracket_of_two_6_vectors_is_refused_saying_what_to_write():
     with pytest.raises(ValueError, match=r"\[x\^\\wedge, y\^\\wedge\]"):
         _check(r"[\mathbf{a}, \mathbf{b}] = \mathbf{0}",
-               [r"\mathbf{a}: vector", r"\mathbf{b}: vector"])
+               [r"\mathbf{a}: 6-vector", r"\mathbf{b}: 6-vector"])
 
 
 ROT = r"\mathbf{Q}(t): rotation"

@@ -397,6 +397,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     latex, let, head = defined_head(latex, let, book=book, notation=notation)  # A = X = Y
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
+    given = let  # the second semantics reads every declaration, the unused ones too
     if reading.unused:  # a --let it does not use is ignored: read again without it
         from rigidsym.latex.lets import without_lets
 
@@ -427,7 +428,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     # at the symbolic path's own counterexample, handed over as plain data)
     at = given_point(r.counterexample, reading.eq.build(), reading.symbols, reading.rows) \
         if r.verdict == "does-not-hold" else None
-    second = cross_check(latex, let, r.verdict, notation=notation, book=book, modules=modules,
+    second = cross_check(latex, given, r.verdict, notation=notation, book=book, modules=modules,
                          at=at, symbols=reading.symbols, statement=reading.eq.build(),
                          rows=reading.rows)
     if second:

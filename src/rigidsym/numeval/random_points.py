@@ -105,9 +105,12 @@ def residuals(tree, decls: list[Decl], points: int = 6, seed: int = 62,
                 met.update(getattr(exc, "met", {}))
                 continue
             met.update(m)
-            if rs and any(getattr(r, "unused", False) for r in rs):
-                continue  # a declaration this reading never uses: the reader refuses it
             kept.append(rs)
+    # a reading that leaves a declaration unused gives way to one that uses them all (q_1
+    # beside a declared q: its entry); where none uses them all, an unused declaration is
+    # the user's extra line (a book's shared declarations), and every reading stays
+    using = [rs for rs in kept if not any(getattr(r, "unused", False) for r in rs)]
+    kept = using or kept
     if not kept:
         raise tilde.reported(first_error, errors)  # a tilde's own first: it names the --let
     for n, rs in enumerate(kept):
