@@ -375,3 +375,27 @@ def test_a_bracketed_name_with_a_word_subscript_is_one_name(latex, verdict):
     hint of what to write)."""
     r = rigidsym.check_latex(latex, let=[r"[\mathbf{Q}]_{Xx}: rotation"], repairs=False)
     assert r.verdict == verdict, r.detail
+
+
+@pytest.mark.parametrize("accent, mark, bold", [(r"\mathring", "\u030a", False),
+                                                (r"\mathring", "\u030a", True),
+                                                (r"\breve", "\u0306", False),
+                                                (r"\check", "\u030c", True)])
+def test_a_naming_accent_is_a_glyph_of_its_own(accent, mark, bold):
+    r"""Horn's ``\mathring{q}`` (like ``\bar``, ``\breve``, ``\check``) names a glyph of its own,
+    never an operator: declared, it reads in both semantics, printed with its own mark; Horn's
+    rule that the product with a common factor scales the dot product holds, its slip (the
+    factor on the other side of one product) does not (before: "unknown macro")."""
+    def g(x):
+        return f"{accent}{{\\mathbf{{{x}}}}}" if bold else f"{accent}{{{x}}}"
+    let = [f"{g('q')}: 4-vector; {g('p')}: 4-vector; {g('r')}: 4-vector"]
+    q, p, r = g("q"), g("p"), g("r")
+    out = rigidsym.check_latex(f"({q}\\otimes {p})\\cdot({q}\\otimes {r}) = ({q}\\cdot {q})"
+                               f"({p}\\cdot {r})", let=let, repairs=False)
+    assert out.verdict == "verified", out.detail
+    assert any("q" + mark in line for line in out.model), out.model
+    assert _v(f"({q}\\otimes {p})\\cdot({r}\\otimes {q}) = ({q}\\cdot {q})({p}\\cdot {r})",
+              let) == "does-not-hold"
+    # the accented glyph is not its letter: q and the accented q are two names
+    plain = r"\mathbf{q}" if bold else "q"
+    assert _v(f"{q} = {plain}", [*let, f"{plain}: 4-vector"]) == "does-not-hold"

@@ -172,7 +172,8 @@ _CONSTRUCTS = [
                 r"Omega)$"), "a Greek letter"),
     (re.compile(r"\\(mathbf|boldsymbol|bm|mathcal|mathsf|mathfrak|mathrm|operatorname|text)$"),
      "a font"),
-    (re.compile(r"\\(hat|dot|ddot|tilde|bar|vec|underline|check|breve)$"), "an accent"),
+    (re.compile(r"\\(hat|dot|ddot|tilde|bar|vec|underline|check|breve|mathring)$"),
+     "an accent"),
     (re.compile(r"\\(sin|cos|tan|cot|sec|csc|arccos|arcsin|arctan|exp|log|ln|det)$"),
      "a function"),
     (re.compile(r"\\[dt]?frac$"), "a fraction"),
@@ -182,7 +183,7 @@ _CONSTRUCTS = [
 ]
 
 
-_BRACKET_NAME = re.compile(r"\[\s*(?:(\\(?:mathbf|boldsymbol|bm|bar|hat|tilde|breve|check)"
+_BRACKET_NAME = re.compile(r"\[\s*(?:(\\(?:mathbf|boldsymbol|bm|bar|hat|tilde|breve|check|mathring)"
                            r"(?![A-Za-z]))\s*)?\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\]"
                            r"\s*_\s*\{?\s*([A-Za-z])\s*\}?")
 

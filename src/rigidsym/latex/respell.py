@@ -525,7 +525,7 @@ _GREEK = (r"\\(?:var)?(?:alpha|beta|gamma|delta|epsilon|zeta|eta|theta|iota|kapp
           r"Sigma|Upsilon|Phi|Psi|Omega)(?![A-Za-z])")
 #: one glyph as a reader types it: a bold letter, an accented glyph, a Greek or Latin letter
 _GLYPH = (r"\\(?:mathbf|boldsymbol|bm)\s*(?:\{\s*\\?[A-Za-z]+\s*\}|" + _GREEK
-          + r"|[A-Za-z])|\\(?:hat|bar|tilde|check|breve|vec)\s*\{[^{}]*\}|" + _GREEK
+          + r"|[A-Za-z])|\\(?:hat|bar|tilde|check|breve|mathring|vec)\s*\{[^{}]*\}|" + _GREEK
           + r"|(?<![\\A-Za-z])[A-Za-z]")
 _GLYPH_END = re.compile(r"(?:" + _GLYPH + r")\s*$")
 _SUB_TIMES = re.compile(r"_\s*\\times(?![A-Za-z])")
