@@ -399,3 +399,33 @@ def test_a_naming_accent_is_a_glyph_of_its_own(accent, mark, bold):
     # the accented glyph is not its letter: q and the accented q are two names
     plain = r"\mathbf{q}" if bold else "q"
     assert _v(f"{q} = {plain}", [*let, f"{plain}: 4-vector"]) == "does-not-hold"
+
+
+_ZIPFEL = ["[T]^{IB}(t): rotation", "[T]^{BI} = ([T]^{IB})^T",
+           r"\boldsymbol\omega^{BI}: body angular velocity of [T]^{IB}",
+           r"[\Omega^{BI}]^B = [\boldsymbol\omega^{BI}]_\times"]
+
+
+@pytest.mark.parametrize("rhs, verdict", [(r"-[\Omega^{BI}]^B[T]^{BI}", "verified"),
+                                          (r"-[T]^{BI}[\Omega^{BI}]^B", "does-not-hold")])
+def test_a_declared_frame_pair_label_is_part_of_the_name(rhs, verdict):
+    r"""Zipfel's ``[T]^{BL}``, ``[\Omega^{BI}]^B``, ``\boldsymbol\omega^{BI}``: where a --let
+    declares the name, two capitals (and a bracket's capital) are its frame label, never a
+    power; the notes name them as typed (before: "unexpected 'BI'")."""
+    r = rigidsym.check_latex(r"\frac{d}{dt}[T]^{BI} = " + rhs, let=_ZIPFEL, repairs=False)
+    assert r.verdict == verdict, r.detail
+    said = " ".join(m for m in r.model if isinstance(m, str))
+    assert "[T]^{IB}" in said and "(IB)" not in said, r.model
+
+
+def test_a_frame_pair_label_refusal_says_what_to_write_and_quotes_the_let_as_typed():
+    """Undeclared, ``T^{BL}`` is refused with the --let that names it; a refusal about a
+    respelt --let (a body angular velocity's model) quotes the --let as the user typed it."""
+    with pytest.raises((BadInput, LatexError), match=r"--let 'T\^\{BL\}: rotation'"):
+        _v(r"T^{BL}T^{BL} = \mathbf{1}")
+    bad = [_ZIPFEL[0].replace("rotation", "vector"), *_ZIPFEL[1:]]
+    with pytest.raises((BadInput, LatexError)) as exc:
+        _v(r"\frac{d}{dt}[T]^{BI} = -[\Omega^{BI}]^B[T]^{BI}", bad)
+    msg = str(exc.value)
+    assert "vee" not in msg.split(":")[0] and "(IB)" not in msg, msg
+    assert r"--let '\boldsymbol\omega^{BI}: body angular velocity of [T]^{IB}'" in msg, msg

@@ -349,7 +349,10 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
                                   repair_seconds, seen)
     except (LatexError, BadInput) as exc:
         if exc.args and isinstance(exc.args[0], str):
-            exc.args = (as_typed(exc.args[0]), *exc.args[1:])
+            text = exc.args[0]
+            for respelt, typed in seen.get("typed lets", {}).items():  # the --let as typed
+                text = text.replace(f"--let '{respelt}'", f"--let '{typed}'")
+            exc.args = (as_typed(text), *exc.args[1:])
         raise
     r.model = [as_typed(m) if isinstance(m, str) else m for m in r.model]
     reading.notes[:] = [as_typed(n) for n in reading.notes]
@@ -372,6 +375,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         declared_deltas,
         declared_e,
         declared_labels,
+        each_declaration,
         floor_cross,
         grouping_braces,
         hat_expressions,
@@ -381,6 +385,8 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     from rigidsym.latex.statement import declare_latex
 
     step("reading")
+    given_let = let
+    seen.pop("typed lets", None)
     latex, let, board = declared_blackboard(latex, let)  # M&R's inertia \mathbb{I}: a name
     latex, let, column = declared_columns(latex, let)  # Ginsberg's \{\omega\}: omega
     latex, let, braces = grouping_braces(latex, let)  # Lee's \{tr[A] I - A\}x: ( )
@@ -396,6 +402,10 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     latex, let, head = defined_head(latex, let, book=book, notation=notation)  # A = X = Y
+    as_given, as_read = each_declaration(given_let), each_declaration(let)
+    if as_given and as_read and len(as_given) == len(as_read):  # each respelt one by one
+        seen["typed lets"] = {r: t for r, t in zip(as_read, as_given, strict=True)
+                              if r != t}
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     given = let  # the second semantics reads every declaration, the unused ones too
     if reading.unused:  # a --let it does not use is ignored: read again without it

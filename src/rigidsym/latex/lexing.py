@@ -376,7 +376,8 @@ def tree(latex: str):
             what = f"{token} ({construct})" if construct else repr(str(exc.token))
             width = len(token)
         raise LatexError(f"unexpected {what} at position {pos}:\n{caret(text, pos, width)}"
-                         f"{_expected_line(expected, text[:pos])}", "syntax") from None
+                         f"{_expected_line(expected, text[:pos])}"
+                         f"{_frame_label_line(text[:pos], str(exc.token))}", "syntax") from None
     except lark.UnexpectedEOF as exc:
         raise LatexError(f"unexpected end of input{_expected_line(_expected(exc.expected), text)}",
                          "syntax") from None
@@ -392,6 +393,26 @@ def _expected_line(expected: str, before: str) -> str:
         line += ("\n  e^ is the exponential e^{...}; for a power of a symbol e, declare it "
                  "(--let 'e: scalar' or its model) and e^2 is its square")
     return line
+
+
+#: a glyph (or a bracket around one) before ``^{``: Zipfel's ``T^{``, ``[T]^{``
+_BEFORE_LABEL = re.compile(r"(\[[^\[\]]*\]|\\(?:mathbf|boldsymbol|bm)\s*(?:\{\s*\\?[A-Za-z]+\s*\}"
+                           r"|\\[A-Za-z]+|[A-Za-z])|\\[A-Za-z]+|(?<![\\A-Za-z])[A-Za-z])\s*\^\s*\{\s*$")
+
+
+def _frame_label_line(before: str, token: str) -> str:
+    """Where the parser stops at a superscript of capitals (Zipfel's ``T^{BL}``,
+    ``[T]^{BL}``): the line that says it is a frame label, part of a name a ``--let``
+    declares, and the ``--let`` to write; else ``""``."""
+    m = _BEFORE_LABEL.search(before)
+    if not m or not re.fullmatch(r"[A-Z]{2,}", token):
+        return ""
+    name = f"{''.join(m.group(1).split())}^{{{token}}}"
+    letter = re.sub(r"\\(?:mathbf|boldsymbol|bm)|[^A-Za-z]", "", m.group(1))
+    kind = "vector" if letter[:1].islower() else "rotation"
+    return (f"\n  a superscript of capitals is a frame label (Zipfel's T^{{BL}}, [T]^{{BL}}), "
+            f"part of a name that a --let declares: e.g. --let '{name}: {kind}' (or its "
+            f"model, --let '{name} = ...')")
 
 
 _TERMINALS = {"LETTER": "a letter", "GREEK": "a Greek letter", "NUMBER": "a number",
