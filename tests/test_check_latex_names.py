@@ -429,3 +429,20 @@ def test_a_frame_pair_label_refusal_says_what_to_write_and_quotes_the_let_as_typ
     msg = str(exc.value)
     assert "vee" not in msg.split(":")[0] and "(IB)" not in msg, msg
     assert r"--let '\boldsymbol\omega^{BI}: body angular velocity of [T]^{IB}'" in msg, msg
+
+
+_KP = [r"\mathbf{C}(t): rotation", r"{}^{A}\boldsymbol\omega^{B}: angular velocity of \mathbf{C}"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\dot{\mathbf{C}} = [{}^{\mathcal{A}}\boldsymbol\omega^{\mathcal{B}}]_\times\mathbf{C}",
+     "verified"),
+    (r"\dot{\mathbf{C}} = \mathbf{C}[{}^{\mathcal{A}}\boldsymbol\omega^{B}]_\times",
+     "does-not-hold"),
+])
+def test_a_calligraphic_frame_in_an_index_or_label_is_its_letter(latex, verdict):
+    r"""Kasdin & Paley's ``{}^{\mathcal{A}}\boldsymbol\omega^{\mathcal{B}}`` is the name
+    ``{}^{A}\boldsymbol\omega^{B}`` (a calligraphic frame in a left index or a label is its
+    plain letter, in both semantics; before: "unexpected '}' at position 1"): C's rate is
+    [omega]_x C with omega its (space) angular velocity."""
+    assert _v(latex, _KP) == verdict
