@@ -118,7 +118,12 @@ class Env:
             if key not in self.memo:
                 if self.depth > 40:
                     raise NotCovered(f"the models around {text_of(tree)} (nested too deep)")
-                self.memo[key] = Evaluator(self).value(d.body)
+                busy = self.point.setdefault(" evaluating", set())  # the models being read
+                busy.add(key)
+                try:
+                    self.memo[key] = Evaluator(self).value(d.body)
+                finally:
+                    busy.discard(key)
             return self.memo[key]
         if d is not None and d.params:
             raise NotCovered(f"the --let function {text_of(tree)} without its arguments")
