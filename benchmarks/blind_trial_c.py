@@ -99,7 +99,7 @@ def run_trial(data: Path, out: Path, notes: dict[str, str], *, provenance: bool 
             continue
         row = run_case(case, a.timeout)
         row["truth"] = case["truth"]
-        if case["id"] in notes:
+        if case["id"] in notes and not a.note:  # the blind run's notes, not an after-fix one's
             row["note"] = notes[case["id"]]
         rows.append(row)
         print(row["id"], row["verdict"], row["judged"], row["cpu_s"],
