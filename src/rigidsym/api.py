@@ -200,17 +200,8 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
         settled_said = [*settled_said, identity_said]
     board_open = identity_said is None and open_blackboard(latex, let)
     principal = open_principal(latex, let)  # I_1, I_2, I_3: identities or moments
-    product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
-    # the user's own lets may fix the storage order (scalar last); the rule of the units
-    # stays the declaration's, else both rules are read in that order
-    stored = None if product_fixed else quaternions.storage_order(let, latex)
-    if stored is not None:
-        order_q, product = ("last" if stored[0] == quaternions.JPL else "first"), stored[0]
-    else:  # a declaration's own layout ('\otimes: Hamilton, scalar last'), else the rule's
-        order_q = quaternions.place_of((product_said or "").partition(":")[2])
-    # the scalar first is Hamilton's in every book of the corpora; the scalar last is read
-    # with either rule (JPL's: Trawny & Roumeliotis; Hamilton's: Szeliski, Eigen, ROS)
-    rule_open = not product_fixed and order_q != "first"
+    product, order_q, stored, rule_open = _quaternion_layout(latex, let, notation, product,
+                                                             product_said)
     fixed = said is not None or notation in tangent.NOTATION_ORDERS
     t0, seen = process_time(), {}
     try:
@@ -265,6 +256,26 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     except limit.TimeUp as exc:
         return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
                         process_time() - t0)
+
+
+def _quaternion_layout(latex, let, notation, product, product_said):
+    """``(product, order_q, stored, rule_open)``: the quaternion product's rule and the
+    scalar's place (``"first"``, ``"last"`` or ``None``) the declarations fix, the storage
+    order the user's own lets fix (:func:`rigidsym.latex.quaternions.storage_order`, or
+    ``None``), and whether the rule is left open (read under both)."""
+    from rigidsym.latex import quaternions
+
+    product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
+    # the user's own lets may fix the storage order (scalar last); the rule of the units
+    # stays the declaration's, else both rules are read in that order
+    stored = None if product_fixed else quaternions.storage_order(let, latex)
+    if stored is not None:
+        order_q, product = ("last" if stored[0] == quaternions.JPL else "first"), stored[0]
+    else:  # a declaration's own layout ('\otimes: Hamilton, scalar last'), else the rule's
+        order_q = quaternions.place_of((product_said or "").partition(":")[2])
+    # the scalar first is Hamilton's in every book of the corpora; the scalar last is read
+    # with either rule (JPL's: Trawny & Roumeliotis; Hamilton's: Szeliski, Eigen, ROS)
+    return product, order_q, stored, not product_fixed and order_q != "first"
 
 
 def _principal_readings(read, let, repairs, seen, names: list[str]):
@@ -404,13 +415,13 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
     return r, reading
 
 
-def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
-                 repair_seconds, seen):
-    """:func:`_check_latex_steps` before the names are written back as typed."""
-    from rigidsym.checking.checker import check as _check
+def _respellings(latex, let, book, notation) -> tuple[str, object, list[str]]:
+    """``(latex, let, notes)``: the statement and its declarations respelt as the
+    declarations settle (:mod:`rigidsym.latex.respell` and its siblings), before either
+    semantics reads them; ``notes`` says each respelling made, in the order the reading
+    prints them."""
     from rigidsym.latex.blackboard import declared_blackboard
     from rigidsym.latex.chain_head import defined_head
-    from rigidsym.latex.limit import step
     from rigidsym.latex.respell import (
         accent_primes,
         angular_velocities,
@@ -420,18 +431,13 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         declared_deltas,
         declared_e,
         declared_labels,
-        each_declaration,
         floor_cross,
         grouping_braces,
         hat_expressions,
         rate_entries,
         tilde_expressions,
     )
-    from rigidsym.latex.statement import declare_latex
 
-    step("reading")
-    given_let = let
-    seen.pop("typed lets", None)
     latex, let, board = declared_blackboard(latex, let)  # M&R's inertia \mathbb{I}: a name
     latex, let, column = declared_columns(latex, let)  # Ginsberg's \{\omega\}: omega
     latex, let, braces = grouping_braces(latex, let)  # Lee's \{tr[A] I - A\}x: ( )
@@ -447,6 +453,23 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     latex, let, head = defined_head(latex, let, book=book, notation=notation)  # A = X = Y
+    notes = [n for n in (head, spin, braces, column, board, respelt, conj, deltas, hat, subx,
+                         rates, floor, tilde, prime, labels) if n]
+    return latex, let, notes
+
+
+def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
+                 repair_seconds, seen):
+    """:func:`_check_latex_steps` before the names are written back as typed."""
+    from rigidsym.checking.checker import check as _check
+    from rigidsym.latex.limit import step
+    from rigidsym.latex.respell import each_declaration
+    from rigidsym.latex.statement import declare_latex
+
+    step("reading")
+    given_let = let
+    seen.pop("typed lets", None)
+    latex, let, respellings = _respellings(latex, let, book, notation)
     as_given, as_read = each_declaration(given_let), each_declaration(let)
     if as_given and as_read and len(as_given) == len(as_read):  # each respelt one by one
         seen["typed lets"] = {r: t for r, t in zip(as_read, as_given, strict=True)
@@ -460,10 +483,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         let = without_lets(let, reading.unused)
         eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
         reading.notes += said
-    for note in (labels, prime, tilde, floor, rates, subx, hat, deltas, conj, respelt, board,
-                 column, braces, spin, head):
-        if note:
-            reading.notes.insert(0, note)
+    reading.notes[:0] = respellings
     seen["reading"] = reading
     step("deciding")
     r = Result.of(_check(eq, repairs=repairs, repair_budget=repair_budget,

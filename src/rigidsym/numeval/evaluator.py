@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import lark
 import mpmath as mp
 
-from rigidsym.numeval import accents, conventions, entries, hats, motion, names, rates
+from rigidsym.numeval import accents, conventions, entries, extent, hats, motion, names, rates
 from rigidsym.numeval import values as V
 from rigidsym.numeval.names import glyph_key
 from rigidsym.numeval.sampler import sample
@@ -515,36 +515,10 @@ class Evaluator:
         raise NotCovered(f"the operator {name}")
 
     def r_arg_extent(self, t):
-        """``\\sin\\omega t``: a function whose argument has no parentheses, then factors
-        (:func:`rigidsym.latex.rewrites.argument_extents`). The leading scalar factors may
-        continue the argument: a choice point
-        (:data:`rigidsym.numeval.conventions.ARGUMENT_EXTENT`) where there is one; a vector
-        or matrix ends the run."""
-        texts = [str(c) for c in t.children[3::2]]
-        inner, factors = t.children[2], [self.value(c) for c in t.children[4::2]]
-        kids = list(inner.children)
-        arg = self.value(kids[-1])
-        run = 0
-        if _scalar_value(arg):
-            while run < len(factors) and _scalar_value(factors[run]):
-                run += 1
-        how = "factor"
-        if run:
-            key = conventions.choice_key(
-                "argument extent", " ".join([str(t.children[0]), str(t.children[1]),
-                                             *texts[:run]]))
-            how = conventions.settled("argument extent") or self.choose(
-                key, conventions.ARGUMENT_EXTENT)
-        if how == "product":
-            for f in factors[:run]:
-                arg = V.mul(arg, f)
-            factors = factors[run:]
-        v = self._function_of(lark.Tree(inner.data[len("extent_"):], kids), arg)
-        for f in factors:
-            v = V.mul(v, f)
-        return v
+        """``\\sin\\omega t``: :func:`rigidsym.numeval.extent.extent_value`."""
+        return extent.extent_value(self, t)
 
-    def _function_of(self, f, arg):
+    def function_of(self, f, arg):
         """The function node ``f`` (``func``, ``func_power``, ``matfunc``) of the value
         ``arg`` in place of its own argument's."""
         rule = {"func": self.r_func, "func_power": self.r_func_power,
@@ -781,12 +755,6 @@ class Evaluator:
 
         f = [at(x0 + k * h) for k in (-2, -1, 1, 2)]
         return _combine(f, [1, -8, 8, -1], 12 * h)
-
-
-def _scalar_value(v) -> bool:
-    """``v`` is a scalar value (a 1x1 matrix counts): it may continue a function's argument."""
-    v = V.scalar(v)
-    return not (V.is_matrix(v) or isinstance(v, V.Eye | V.Zero))
 
 
 def _dims(sub) -> tuple[int, int] | None:
