@@ -75,9 +75,16 @@ def run_trial(data: Path, out: Path, notes: dict[str, str], *, provenance: bool 
     ``provenance`` the record names the commit, the host, the load and the wall/CPU time."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--timeout", type=float, default=60.0, help="CPU seconds per statement")
+    ap.add_argument("--out", type=Path, default=None,
+                    help="where a whole run's record goes (default: the trial's own record)")
+    ap.add_argument("--note", default=None,
+                    help="a note heading the record (an after-fix re-run says NOT BLIND and why)")
     ap.add_argument("ids", nargs="*")
     a = ap.parse_args()
-    head: dict = {"data": data.relative_to(ROOT).as_posix()}
+    if a.out is not None:
+        out = a.out
+    head: dict = {"note": a.note} if a.note else {}
+    head["data"] = data.relative_to(ROOT).as_posix()
     if provenance:
         from test_command import commit, host  # the host as the other records name it
 
@@ -92,7 +99,7 @@ def run_trial(data: Path, out: Path, notes: dict[str, str], *, provenance: bool 
             continue
         row = run_case(case, a.timeout)
         row["truth"] = case["truth"]
-        if case["id"] in notes:
+        if case["id"] in notes and not a.note:  # the blind run's notes, not an after-fix one's
             row["note"] = notes[case["id"]]
         rows.append(row)
         print(row["id"], row["verdict"], row["judged"], row["cpu_s"],

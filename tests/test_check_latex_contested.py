@@ -419,3 +419,37 @@ def test_a_vector_after_the_argument_ends_it():
     r = _check(r"\sin\theta\mathbf{E} = \mathbf{E}\sin\theta", lets)
     assert r.verdict == "verified", r.model
     assert not any("argument" in m and "read as" in m for m in r.model), r.model
+
+
+_EULER = [r"\boldsymbol\omega(t): vector", r"\mathbf{J} = \operatorname{diag}(I_1, I_2, I_3)",
+          r"\dot{\boldsymbol\omega} = -\mathbf{J}^{-1}(\boldsymbol\omega\times"
+          r"\mathbf{J}\boldsymbol\omega)"]
+
+
+@pytest.mark.parametrize("latex, lets, verdict, said", [
+    # identities: 6x6, no product fits; scalars: Kasdin & Paley's torque-free motion
+    (r"\frac{d}{dt}\|\mathbf{J}\boldsymbol\omega\|^2 = 0", _EULER, "verified", "scalars"),
+    (r"\frac{d}{dt}\|\boldsymbol\omega\|^2 = 0", _EULER, "does-not-hold", "scalars"),
+    # both readings type-check and agree
+    (r"\operatorname{diag}(I_1, I_2, I_3)^T = \operatorname{diag}(I_1, I_2, I_3)", [],
+     "verified", "both"),
+])
+def test_undeclared_principal_moments_are_read_both_ways(latex, lets, verdict, said):
+    """Kasdin & Paley's ``diag(I_1, I_2, I_3)``: identities of sizes 1, 2, 3 by rule 6, or the
+    principal moments; the reading that does not type-check is dropped and said, agreeing
+    readings decide (before: 'no product fits', naming neither)."""
+    r = _check(latex, lets)
+    assert r.verdict == verdict, r.detail
+    note = next(m for m in r.model if m.startswith("I_{1}, I_{2}, I_{3}: not declared"))
+    assert ("both verified" in note) == (said == "both"), note
+    assert said == "both" or "does not type-check" in note, note
+
+
+def test_undeclared_principal_moments_whose_readings_differ_are_asked():
+    """tr diag(I_1, I_2, I_3) = 6 holds of the identities (6x6) and not of the moments: asked,
+    naming both readings, each verdict and the --let; each declaration decides."""
+    latex = r"\operatorname{tr}\operatorname{diag}(I_1, I_2, I_3) = 6"
+    with pytest.raises(BadInput, match=r"identities: verified; scalars: does-not-hold") as exc:
+        _check(latex, [])
+    assert "--let 'I_{1}: scalar; I_{2}: scalar; I_{3}: scalar'" in str(exc.value)
+    assert _check(latex, ["I_1: scalar; I_2: scalar; I_3: scalar"]).verdict == "does-not-hold"

@@ -375,3 +375,87 @@ def test_a_bracketed_name_with_a_word_subscript_is_one_name(latex, verdict):
     hint of what to write)."""
     r = rigidsym.check_latex(latex, let=[r"[\mathbf{Q}]_{Xx}: rotation"], repairs=False)
     assert r.verdict == verdict, r.detail
+
+
+@pytest.mark.parametrize("accent, mark, bold", [(r"\mathring", "\u030a", False),
+                                                (r"\mathring", "\u030a", True),
+                                                (r"\breve", "\u0306", False),
+                                                (r"\check", "\u030c", True)])
+def test_a_naming_accent_is_a_glyph_of_its_own(accent, mark, bold):
+    r"""Horn's ``\mathring{q}`` (like ``\bar``, ``\breve``, ``\check``) names a glyph of its own,
+    never an operator: declared, it reads in both semantics, printed with its own mark; Horn's
+    rule that the product with a common factor scales the dot product holds, its slip (the
+    factor on the other side of one product) does not (before: "unknown macro")."""
+    def g(x):
+        return f"{accent}{{\\mathbf{{{x}}}}}" if bold else f"{accent}{{{x}}}"
+    let = [f"{g('q')}: 4-vector; {g('p')}: 4-vector; {g('r')}: 4-vector"]
+    q, p, r = g("q"), g("p"), g("r")
+    out = rigidsym.check_latex(f"({q}\\otimes {p})\\cdot({q}\\otimes {r}) = ({q}\\cdot {q})"
+                               f"({p}\\cdot {r})", let=let, repairs=False)
+    assert out.verdict == "verified", out.detail
+    assert any("q" + mark in line for line in out.model), out.model
+    assert _v(f"({q}\\otimes {p})\\cdot({r}\\otimes {q}) = ({q}\\cdot {q})({p}\\cdot {r})",
+              let) == "does-not-hold"
+    # the accented glyph is not its letter: q and the accented q are two names
+    plain = r"\mathbf{q}" if bold else "q"
+    assert _v(f"{q} = {plain}", [*let, f"{plain}: 4-vector"]) == "does-not-hold"
+
+
+_ZIPFEL = ["[T]^{IB}(t): rotation", "[T]^{BI} = ([T]^{IB})^T",
+           r"\boldsymbol\omega^{BI}: body angular velocity of [T]^{IB}",
+           r"[\Omega^{BI}]^B = [\boldsymbol\omega^{BI}]_\times"]
+
+
+@pytest.mark.parametrize("rhs, verdict", [(r"-[\Omega^{BI}]^B[T]^{BI}", "verified"),
+                                          (r"-[T]^{BI}[\Omega^{BI}]^B", "does-not-hold")])
+def test_a_declared_frame_pair_label_is_part_of_the_name(rhs, verdict):
+    r"""Zipfel's ``[T]^{BL}``, ``[\Omega^{BI}]^B``, ``\boldsymbol\omega^{BI}``: where a --let
+    declares the name, two capitals (and a bracket's capital) are its frame label, never a
+    power; the notes name them as typed (before: "unexpected 'BI'")."""
+    r = rigidsym.check_latex(r"\frac{d}{dt}[T]^{BI} = " + rhs, let=_ZIPFEL, repairs=False)
+    assert r.verdict == verdict, r.detail
+    said = " ".join(m for m in r.model if isinstance(m, str))
+    assert "[T]^{IB}" in said and "(IB)" not in said, r.model
+
+
+def test_a_frame_pair_label_refusal_says_what_to_write_and_quotes_the_let_as_typed():
+    """Undeclared, ``T^{BL}`` is refused with the --let that names it; a refusal about a
+    respelt --let (a body angular velocity's model) quotes the --let as the user typed it."""
+    with pytest.raises((BadInput, LatexError), match=r"--let 'T\^\{BL\}: rotation'"):
+        _v(r"T^{BL}T^{BL} = \mathbf{1}")
+    bad = [_ZIPFEL[0].replace("rotation", "vector"), *_ZIPFEL[1:]]
+    with pytest.raises((BadInput, LatexError)) as exc:
+        _v(r"\frac{d}{dt}[T]^{BI} = -[\Omega^{BI}]^B[T]^{BI}", bad)
+    msg = str(exc.value)
+    assert "vee" not in msg.split(":")[0] and "(IB)" not in msg, msg
+    assert r"--let '\boldsymbol\omega^{BI}: body angular velocity of [T]^{IB}'" in msg, msg
+
+
+_KP = [r"\mathbf{C}(t): rotation", r"{}^{A}\boldsymbol\omega^{B}: angular velocity of \mathbf{C}"]
+
+
+@pytest.mark.parametrize("latex, verdict", [
+    (r"\dot{\mathbf{C}} = [{}^{\mathcal{A}}\boldsymbol\omega^{\mathcal{B}}]_\times\mathbf{C}",
+     "verified"),
+    (r"\dot{\mathbf{C}} = \mathbf{C}[{}^{\mathcal{A}}\boldsymbol\omega^{B}]_\times",
+     "does-not-hold"),
+])
+def test_a_calligraphic_frame_in_an_index_or_label_is_its_letter(latex, verdict):
+    r"""Kasdin & Paley's ``{}^{\mathcal{A}}\boldsymbol\omega^{\mathcal{B}}`` is the name
+    ``{}^{A}\boldsymbol\omega^{B}`` (a calligraphic frame in a left index or a label is its
+    plain letter, in both semantics; before: "unexpected '}' at position 1"): C's rate is
+    [omega]_x C with omega its (space) angular velocity."""
+    assert _v(latex, _KP) == verdict
+
+
+def test_moments_read_as_identities_are_named_with_the_let_that_settles_them():
+    r"""Rule 6 reads ``I_2``, ``I_3`` as identities; where their shapes do not fit, the refusal
+    names them and the --let that makes them scalars (before: 'no product fits', naming
+    neither), which decides the statement."""
+    let = [r"\mathbf{x}: vector"]
+    with pytest.raises((BadInput, LatexError)) as exc:
+        _v(r"I_2\mathbf{x} = I_3\mathbf{x}", let)
+    said = "I_{2}: scalar; I_{3}: scalar"
+    assert "I_{2}, I_{3} are read as the identities" in str(exc.value), str(exc.value)
+    assert f"--let '{said}'" in str(exc.value), str(exc.value)
+    assert _v(r"I_2\mathbf{x} = I_3\mathbf{x}", [*let, said]) == "does-not-hold"

@@ -463,3 +463,46 @@ _ROT2 = r"C = \begin{bmatrix}\cos\theta & -\sin\theta \\ \sin\theta & \cos\theta
 def test_second_derivatives_of_models_and_rates(latex, let, verdict):
     r = rigidsym.check_latex(latex, let=let, repairs=False)
     assert r.verdict == verdict
+
+
+def test_a_vector_modelled_by_its_own_axis_entries_is_evaluated():
+    r"""Meriam & Kraige's ``\boldsymbol\omega = [\omega_x; \omega_y; \omega_z]``: inside the
+    model the components are names of their own, never the entries of the vector being
+    modelled (the second semantics recursed there, and the verdict rested on the symbolic
+    path alone); outside it they are its entries."""
+    let = [r"\boldsymbol\omega = \begin{bmatrix} \omega_x \\ \omega_y \\ \omega_z "
+           r"\end{bmatrix}", r"\mathbf{I} = \operatorname{diag}(a, b, c)"]
+    r = rigidsym.check_latex(r"\mathbf{I}\boldsymbol\omega = \begin{bmatrix} a\omega_x \\ "
+                             r"b\omega_y \\ c\omega_z \end{bmatrix}", let=let, repairs=False)
+    assert r.verdict == "verified" and "the sides agree" in _second(r), r.model
+    slip = rigidsym.check_latex(r"\mathbf{I}\boldsymbol\omega = \begin{bmatrix} a\omega_x \\ "
+                                r"c\omega_y \\ b\omega_z \end{bmatrix}", let=let, repairs=False)
+    assert slip.verdict == "does-not-hold" and "the sides differ" in _second(slip), slip.model
+
+
+@pytest.mark.parametrize("fails_at", [1, 4])
+def test_an_evaluation_that_fails_at_a_point_tries_others_and_fails_closed(monkeypatch,
+                                                                           fails_at):
+    """A failure of the second semantics' evaluation (mpmath's own, at a point) is no note
+    beside a verdict: other sets of points are tried, and where every set fails the verdict
+    is refused, naming the failure."""
+    from rigidsym.latex import crosscheck
+
+    calls = []
+    real = crosscheck.residuals
+
+    def failing(*args, **kw):
+        calls.append(kw.get("seed"))
+        if len(calls) <= fails_at:
+            raise ZeroDivisionError("a singular matrix at this point")
+        return real(*args, **kw)
+
+    monkeypatch.setattr(crosscheck, "residuals", failing)
+    latex, let = r"\mathbf{Q}^T\mathbf{Q} = \mathbf{1}", [r"\mathbf{Q}: rotation"]
+    if fails_at > crosscheck.RETRIES:
+        with pytest.raises(BadInput, match="ZeroDivisionError: a singular matrix"):
+            rigidsym.check_latex(latex, let=let, repairs=False)
+        assert len(set(calls)) == crosscheck.RETRIES + 1  # each set drawn from its own seed
+    else:
+        r = rigidsym.check_latex(latex, let=let, repairs=False)
+        assert r.verdict == "verified" and "the sides agree" in _second(r), r.model

@@ -184,6 +184,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     ``None`` where the time limit passed before the LaTeX was read)."""
     from rigidsym.latex import contested, limit, quaternions, tangent
     from rigidsym.latex.blackboard import declared_identity, open_blackboard
+    from rigidsym.latex.principal import open_principal
     from rigidsym.numeval.conventions import declared_readings
     from rigidsym.numeval.values import quaternion_convention, quaternion_storage, tangent_order
 
@@ -198,6 +199,7 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     if identity_said is not None:  # it joins the check's id
         settled_said = [*settled_said, identity_said]
     board_open = identity_said is None and open_blackboard(latex, let)
+    principal = open_principal(latex, let)  # I_1, I_2, I_3: identities or moments
     product_fixed = product_said is not None or notation in quaternions.NOTATION_PRODUCTS
     # the user's own lets may fix the storage order (scalar last); the rule of the units
     # stays the declaration's, else both rules are read in that order
@@ -249,7 +251,10 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
                 r.model = list(r.model) + reading.notes[-1:]
                 return r, reading
 
-            r, reading = read(let, repairs, seen)
+            if principal:
+                r, reading = _principal_readings(read, let, repairs, seen, principal)
+            else:
+                r, reading = read(let, repairs, seen)
             if identity_said is not None:
                 reading.notes.append(f"\\mathbb{{I}}: the identity (declared by --let "
                                      f"'{identity_said}')")
@@ -260,6 +265,46 @@ def check_latex_run(latex, let, book, modules, repairs=True, repair_budget=None,
     except limit.TimeUp as exc:
         return _time_up(exc, latex, let, book, modules, notation, seen.get("reading"),
                         process_time() - t0)
+
+
+def _principal_readings(read, let, repairs, seen, names: list[str]):
+    """``(r, reading)`` of a statement whose undeclared ``names`` (``I_1, I_2, I_3`` side by
+    side: :func:`rigidsym.latex.principal.open_principal`) are read as identities and again
+    as scalars (``read`` reads under the declarations it is given): the reading that
+    type-checks, or where both do and agree the first, each with a note
+    (:func:`rigidsym.latex.principal.both_principal`).
+
+    Raises:
+        BadInput: the readings disagree.
+        LatexError: neither reading type-checks (the identities' error, which names the
+            --let that makes them scalars).
+    """
+    from rigidsym.latex.principal import both_principal, with_scalar_reading
+    from rigidsym.latex.shapes import LatexError
+
+    def attempt(lets, state):
+        try:
+            return read(lets, repairs, state), ""
+        except LatexError as exc:
+            if exc.construct != "shapes":
+                raise
+            return exc, f"{exc.construct}: " + str(exc).splitlines()[0].split(" in '", 1)[0]
+
+    first, why_first = attempt(let, seen)
+    other, why_other = attempt(with_scalar_reading(let, names), {} if why_first == "" else seen)
+    if why_first and why_other:
+        raise first
+    ok_first, ok_other = not why_first, not why_other
+    verdict_first = first[0].verdict if ok_first else None
+    verdict_other = other[0].verdict if ok_other else None
+    if verdict_first == "undecided":  # no verdict to weigh: undecided, as read
+        return first
+    if verdict_other == "undecided":
+        return other
+    r, reading = first if ok_first else other
+    both_principal(verdict_first, verdict_other, names, reading.notes, why_first, why_other)
+    r.model = list(r.model) + reading.notes[-1:]
+    return r, reading
 
 
 def _blackboard_readings(r: Result, reading, read, let) -> None:
@@ -349,7 +394,10 @@ def _check_latex_steps(latex, let, book, modules, repairs, repair_budget, notati
                                   repair_seconds, seen)
     except (LatexError, BadInput) as exc:
         if exc.args and isinstance(exc.args[0], str):
-            exc.args = (as_typed(exc.args[0]), *exc.args[1:])
+            text = exc.args[0]
+            for respelt, typed in seen.get("typed lets", {}).items():  # the --let as typed
+                text = text.replace(f"--let '{respelt}'", f"--let '{typed}'")
+            exc.args = (as_typed(text), *exc.args[1:])
         raise
     r.model = [as_typed(m) if isinstance(m, str) else m for m in r.model]
     reading.notes[:] = [as_typed(n) for n in reading.notes]
@@ -372,6 +420,7 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
         declared_deltas,
         declared_e,
         declared_labels,
+        each_declaration,
         floor_cross,
         grouping_braces,
         hat_expressions,
@@ -381,6 +430,8 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     from rigidsym.latex.statement import declare_latex
 
     step("reading")
+    given_let = let
+    seen.pop("typed lets", None)
     latex, let, board = declared_blackboard(latex, let)  # M&R's inertia \mathbb{I}: a name
     latex, let, column = declared_columns(latex, let)  # Ginsberg's \{\omega\}: omega
     latex, let, braces = grouping_braces(latex, let)  # Lee's \{tr[A] I - A\}x: ( )
@@ -396,6 +447,10 @@ def _latex_steps(latex, let, book, modules, repairs, repair_budget, notation,
     latex, let, hat = hat_expressions(latex, let)  # \widehat{R\omega}: [R\omega]_x
     latex, let, conj = conjugate_c(latex, let)  # Kok's q^c beside \odot: q^*
     latex, let, head = defined_head(latex, let, book=book, notation=notation)  # A = X = Y
+    as_given, as_read = each_declaration(given_let), each_declaration(let)
+    if as_given and as_read and len(as_given) == len(as_read):  # each respelt one by one
+        seen["typed lets"] = {r: t for r, t in zip(as_read, as_given, strict=True)
+                              if r != t}
     eq, reading = declare_latex(latex, let, book=book, modules=modules, notation=notation)
     given = let  # the second semantics reads every declaration, the unused ones too
     if reading.unused:  # a --let it does not use is ignored: read again without it

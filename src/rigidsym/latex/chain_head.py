@@ -24,7 +24,7 @@ __all__ = ["defined_head"]
 
 #: a glyph key's subscript, accent or font: what is left names the letter
 _DRESS = re.compile(r"_\{[^{}]*\}|\\(?:mathbf|boldsymbol|bm|dot|ddot|hat|bar|tilde|check|"
-                    r"breve|vec)\{|[{}]")
+                    r"breve|mathring|vec)\{|[{}]")
 
 
 def _stem(key: str) -> str:

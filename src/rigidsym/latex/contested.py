@@ -97,6 +97,16 @@ CONTESTED: dict[str, Construct] = {c.key: c for c in (
         r"(--let '\mathbb{I}: symmetric matrix', --let '\mathbb{I} = "
         r"\operatorname{diag}(I_1, I_2, I_3)')"),
     Construct(
+        "principal moments", r"I_1, I_2, I_3 side by side in \operatorname{diag}(...) or a "
+        r"matrix",
+        (Reading("identity", "the identities of those sizes (rule 6: I_3 is the 3×3 "
+                 "identity)", "Lynch & Park (2017), Murray–Li–Sastry (1994): I_3, I_6"),
+         Reading("scalar", "scalars of their own, the principal moments of inertia",
+                 "Kasdin & Paley (2011) ch. 11, Meriam & Kraige (2012) art. 7/10: "
+                 r"\operatorname{diag}(I_1, I_2, I_3)")),
+        r"--let 'I_{1}: scalar; I_{2}: scalar; I_{3}: scalar' for the principal moments "
+        r"(or write I_{3\times 3}, \mathbf{1}_3 for an identity)"),
+    Construct(
         "star", r"X^{*} of a 6x6 matrix, \phi^*(\mathbf{l})",
         (Reading("transpose", "the transpose X^T (the adjoint of a real operator)",
                  "Jain (2011) ch. 1, Rodriguez–Jain–Kreutz-Delgado (1991): the rigid-body "

@@ -174,7 +174,7 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
         if notation:
             lets += notation_lets(latex, lets, notation, used={
                 k for k, g in (rows or {}).items() if g.kind != "free"})
-        found = residuals(tree(latex), decls_of(lets), POINTS)
+        found = _at_some_points(tree(latex), decls_of(lets))
     except NotCovered as exc:
         if REFUSE_UNCOVERED:
             raise BadInput(f"--latex: the numeric cross-check does not evaluate {exc}, and a "
@@ -183,8 +183,10 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
                 f"check")
     except (LatexError, BadInput):
         return "numeric cross-check: not covered (a declaration it cannot read)"
-    except Exception:  # noqa: BLE001 -- mpmath's own failure at a point (a singular matrix)
-        return "numeric cross-check: not covered (its evaluation failed at a point)"
+    except _EvaluationFailed as exc:  # at every point tried: fail closed
+        raise BadInput(f"--latex: the numeric cross-check's evaluation fails at each of "
+                       f"{RETRIES + 1} sets of random points ({exc}), and a verdict of the "
+                       f"symbolic path alone is not given") from None
     worst = max(found, key=lambda r: r.relative)
     if verdict == "verified" and worst.relative > VANISHES:
         raise Disagreement(_words(worst, latex, "verified, but the numeric cross-check (mpmath,"
@@ -208,6 +210,36 @@ def cross_check(latex: str, let, verdict: str, *, notation=None, book=None,
     return (f"numeric cross-check (mpmath, 50 digits, {POINTS} random points): "
             f"{'the sides agree' if verdict == 'verified' else 'the sides differ'} "
             f"(largest relative residual {float(worst.relative):.1e}){said}")
+
+
+#: more sets of random points (other seeds) tried where the evaluation fails at one (mpmath
+#: at a singular matrix): a failure at every set refuses the verdict
+RETRIES = 3
+
+
+class _EvaluationFailed(Exception):
+    """The second semantics' evaluation failed at every set of points tried."""
+
+
+def _at_some_points(parsed, decls: list):
+    """:func:`~rigidsym.numeval.random_points.residuals` at :data:`POINTS` random points, the
+    first set whose evaluation does not fail (mpmath's own failure at a point, a singular
+    matrix: another seed, up to :data:`RETRIES` more).
+
+    Raises:
+        NotCovered: a construct the second semantics lacks.
+        _EvaluationFailed: the evaluation failed at every set, naming the failure.
+    """
+    failed = None
+    for k in range(RETRIES + 1):
+        try:
+            return residuals(parsed, decls, POINTS, seed=62 + 101 * k)
+        except (NotCovered, LatexError, BadInput):
+            raise
+        except Exception as exc:  # noqa: BLE001 -- a failure at a point: try others
+            failed = exc
+    what = str(failed).strip() or "no message"
+    raise _EvaluationFailed(f"{type(failed).__name__}: {what}")
 
 
 def given_point(counterexample: dict | None, statement, symbols: dict | None = None,

@@ -172,7 +172,8 @@ _CONSTRUCTS = [
                 r"Omega)$"), "a Greek letter"),
     (re.compile(r"\\(mathbf|boldsymbol|bm|mathcal|mathsf|mathfrak|mathrm|operatorname|text)$"),
      "a font"),
-    (re.compile(r"\\(hat|dot|ddot|tilde|bar|vec|underline|check|breve)$"), "an accent"),
+    (re.compile(r"\\(hat|dot|ddot|tilde|bar|vec|underline|check|breve|mathring)$"),
+     "an accent"),
     (re.compile(r"\\(sin|cos|tan|cot|sec|csc|arccos|arcsin|arctan|exp|log|ln|det)$"),
      "a function"),
     (re.compile(r"\\[dt]?frac$"), "a fraction"),
@@ -182,7 +183,7 @@ _CONSTRUCTS = [
 ]
 
 
-_BRACKET_NAME = re.compile(r"\[\s*(?:(\\(?:mathbf|boldsymbol|bm|bar|hat|tilde|breve|check)"
+_BRACKET_NAME = re.compile(r"\[\s*(?:(\\(?:mathbf|boldsymbol|bm|bar|hat|tilde|breve|check|mathring)"
                            r"(?![A-Za-z]))\s*)?\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\]"
                            r"\s*_\s*\{?\s*([A-Za-z])\s*\}?")
 
@@ -375,7 +376,8 @@ def tree(latex: str):
             what = f"{token} ({construct})" if construct else repr(str(exc.token))
             width = len(token)
         raise LatexError(f"unexpected {what} at position {pos}:\n{caret(text, pos, width)}"
-                         f"{_expected_line(expected, text[:pos])}", "syntax") from None
+                         f"{_expected_line(expected, text[:pos])}"
+                         f"{_frame_label_line(text[:pos], str(exc.token))}", "syntax") from None
     except lark.UnexpectedEOF as exc:
         raise LatexError(f"unexpected end of input{_expected_line(_expected(exc.expected), text)}",
                          "syntax") from None
@@ -391,6 +393,26 @@ def _expected_line(expected: str, before: str) -> str:
         line += ("\n  e^ is the exponential e^{...}; for a power of a symbol e, declare it "
                  "(--let 'e: scalar' or its model) and e^2 is its square")
     return line
+
+
+#: a glyph (or a bracket around one) before ``^{``: Zipfel's ``T^{``, ``[T]^{``
+_BEFORE_LABEL = re.compile(r"(\[[^\[\]]*\]|\\(?:mathbf|boldsymbol|bm)\s*(?:\{\s*\\?[A-Za-z]+\s*\}"
+                           r"|\\[A-Za-z]+|[A-Za-z])|\\[A-Za-z]+|(?<![\\A-Za-z])[A-Za-z])\s*\^\s*\{\s*$")
+
+
+def _frame_label_line(before: str, token: str) -> str:
+    """Where the parser stops at a superscript of capitals (Zipfel's ``T^{BL}``,
+    ``[T]^{BL}``): the line that says it is a frame label, part of a name a ``--let``
+    declares, and the ``--let`` to write; else ``""``."""
+    m = _BEFORE_LABEL.search(before)
+    if not m or not re.fullmatch(r"[A-Z]{2,}", token):
+        return ""
+    name = f"{''.join(m.group(1).split())}^{{{token}}}"
+    letter = re.sub(r"\\(?:mathbf|boldsymbol|bm)|[^A-Za-z]", "", m.group(1))
+    kind = "vector" if letter[:1].islower() else "rotation"
+    return (f"\n  a superscript of capitals is a frame label (Zipfel's T^{{BL}}, [T]^{{BL}}), "
+            f"part of a name that a --let declares: e.g. --let '{name}: {kind}' (or its "
+            f"model, --let '{name} = ...')")
 
 
 _TERMINALS = {"LETTER": "a letter", "GREEK": "a Greek letter", "NUMBER": "a number",

@@ -42,6 +42,10 @@ def _book_rows(key: str, book: str) -> list[Glyph]:
     return list(distinct.values())
 
 
+#: an identity sized by its digit subscript (rule 6), ``I_{3}``, ``\\mathbf{I}_{3}``: its digit
+_SIZED_I = re.compile(r"(?:I|\\mathbf\{I\})_\{(\d)\}")
+
+
 class GlyphReader:
     """Parses the LaTeX and the models with one set of glyph overrides."""
 
@@ -357,6 +361,9 @@ class GlyphReader:
             msg += (f"; {hats[0]} is a unit vector in Lynch-Park and Corke, the skew matrix of "
                     f"{hats[0][5:-1]} in Murray-Li-Sastry: say which, --notation "
                     f"murray-li-sastry or --let '{hats[0]} = [{hats[0][5:-1]}]_\\times'")
+        sized = self._sized_identities() if exc.construct == "shapes" else ""
+        if sized:  # what to write, in place of the general advice
+            msg = msg.replace(" (declare the shapes, e.g. with the glyph table)", "") + sized
         fn = self.functions.get(getattr(exc, "function", None))
         if fn is not None:  # \det J_r(x): the function's own parameters in the advice
             msg = msg.replace(f"{fn.key}(...)", f"{fn.key}({', '.join(fn.params)})")
@@ -366,6 +373,20 @@ class GlyphReader:
         out = LatexError(msg, exc.construct)
         out.glyphs = exc.glyphs
         return out
+
+    def _sized_identities(self) -> str:
+        """The words naming the undeclared ``I_k`` of two digits or more read as identities
+        of size k (rule 6) and the ``--let`` that makes them scalars of their own (Kasdin &
+        Paley's principal moments in ``\\operatorname{diag}(I_1, I_2, I_3)``), or ``""``."""
+        sized = sorted(k for k in self.mentioned if _SIZED_I.fullmatch(k)
+                       and k not in self.declared and k not in self.over)
+        if len({_SIZED_I.fullmatch(k).group(1) for k in sized}) < 2:
+            return ""
+        sizes = ", ".join(_SIZED_I.fullmatch(k).group(1) for k in sized)
+        return (f"; {', '.join(sized)} are read as the identities of sizes {sizes} (no --let "
+                f"declares them; I_3 is the 3×3 identity); for scalars of their own (the "
+                f"principal moments of inertia) write --let '"
+                + "; ".join(f"{k}: scalar" for k in sized) + "'")
 
     def _lets_involved(self, glyphs: dict, what: str) -> str:
         """The words naming the ``--let`` declarations behind the glyphs read up to an

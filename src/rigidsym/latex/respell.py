@@ -428,7 +428,13 @@ _LABELLED = re.compile(
     r"|\\[A-Za-z]+|(?:(?<![\\A-Za-z])|(?<=\^[a-z]))[A-Za-z])"
     r"(?(acc)\s*\})"
     r"(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))?"
-    r"\s*\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])")
+    r"\s*\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z]|\{\s*[A-Z]{2,}\s*\})")
+#: Zipfel's bracketed names, ``[T]^{BL}``, ``[\Omega^{BI}]^B``: a glyph (with a frame pair
+#: of capitals or none) in brackets, then a frame label (capitals, never ``T`` alone)
+_BRACKETED = re.compile(
+    r"\[\s*(?P<glyph>(?:\\(?:mathbf|boldsymbol|bm)\s*)?(?:\{\s*\\?[A-Za-z]+\s*\}|\\[A-Za-z]+"
+    r"|[A-Za-z]))\s*(?:\^\s*(?P<inner>\{\s*[A-Z]{2,}\s*\}))?\s*\]"
+    r"\s*\^\s*(?P<lbl>\{\s*(?!T\s*\})[A-Z]+\s*\}|[A-SU-Z](?![A-Za-z]))")
 #: a label written before the subscript, Beard's ``R^b_{v2}``: read as ``R_{v2}^b``
 _LABEL_FIRST = re.compile(r"\^\s*(?P<lbl>\{\s*[a-z][a-z0-9]*\s*\}|[a-z])"
                           r"\s*(?P<sub>_\s*(?:\{[^{}]*\}|\\?[A-Za-z0-9]))")
@@ -454,6 +460,30 @@ def _label_names(let: object) -> set[tuple[str, str, str]]:
     return names
 
 
+def _bracketed_names(let: object) -> dict[str, str]:
+    """Each bracketed NAME with a frame label that a declaration of ``let`` names (Zipfel's
+    ``[T]^{BL}``, ``[\\Omega^{BI}]^B``), as typed (spaces dropped) -> its respelling, a
+    parenthesised label the grammar reads as part of the name (``[T]^{(BL)}``,
+    ``[\\Omega^{(BI)}]^{(B)}``)."""
+    names = {}
+    for d in each_declaration(let) or ():
+        name = re.split(r"\s*(?:\([^()]*\))?\s*[:=]", d, maxsplit=1)[0].strip()
+        m = _BRACKETED.fullmatch(name)
+        if m:
+            names["".join(name.split())] = _bracket_respelt(m)
+    return names
+
+
+def _bracket_respelt(m) -> str:
+    glyph = "".join(m["glyph"].split())
+    inner = f"^{{({_letters(m['inner'])})}}" if m["inner"] else ""
+    return f"[{glyph}{inner}]^{{({_letters(m['lbl'])})}}"
+
+
+def _letters(label: str) -> str:
+    return re.sub(r"[{}\s]", "", label)
+
+
 def labels_as_typed(let: object):
     """The function that writes back, in a message, each labelled NAME of ``let`` that
     :func:`declared_labels` respells (``R_{v2}^{(b)}`` and its printed ``R_v2^(b)``: the
@@ -465,8 +495,15 @@ def labels_as_typed(let: object):
         plain = re.sub(r"\\(?:mathbf|boldsymbol|bm)|[{}\s]", "", base)
         if re.fullmatch(r"[A-Za-z]", plain):
             pairs.append((f"{plain}{'_' + sub if sub else ''}^({lbl})", typed))
+    for typed, respelt in _bracketed_names(let).items():
+        pairs.append((respelt, typed))
+        pairs.append((re.sub(r"\\(?:mathbf|boldsymbol|bm)|[{}]", "", respelt), typed))
 
-    def back(text: str) -> str:
+    def back(text):
+        if isinstance(text, (list, tuple)):  # a note of several lines
+            return type(text)(back(t) for t in text)
+        if not isinstance(text, str):
+            return text
         for respelt, typed in pairs:
             text = text.replace(respelt, typed)
         return text
@@ -474,9 +511,13 @@ def labels_as_typed(let: object):
 
 
 def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
-    """``(latex, let, note)``: each glyph with a lower-case superscript label whose NAME a
-    ``--let`` declares (``C_b^n``) respelt ``C_{b}^{(n)}`` in the LaTeX and the declarations
-    (``note`` says so); else all unchanged and ``note`` is ``""``.
+    """``(latex, let, note)``: each glyph with a lower-case superscript label or a frame pair
+    of capitals whose NAME a ``--let`` declares (Groves' ``C_b^n``, Zipfel's ``T^{BL}``)
+    respelt ``C_{b}^{(n)}`` (``T^{(BL)}``), and each bracketed NAME with a frame label
+    (Zipfel's ``[T]^{BL}``, ``[\\Omega^{BI}]^B``) respelt ``[T]^{(BL)}``
+    (``[\\Omega^{(BI)}]^{(B)}``), in the LaTeX and the declarations (``note`` says so); else
+    all unchanged and ``note`` is ``""``. A power is never written with two capitals, and a
+    bracketed name's label is never ``T`` (the transpose).
 
     Args and Raises: as :func:`declared_e`.
     """
@@ -485,9 +526,13 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
     decls = each_declaration(let)
     if decls is None:
         return latex, let, ""
-    names = _label_names(decls)
-    if not names:
+    names, bracketed = _label_names(decls), _bracketed_names(decls)
+    if not names and not bracketed:
         return latex, let, ""
+
+    def in_brackets(m):
+        respelt = bracketed.get("".join(m.group(0).split()))
+        return respelt if respelt is not None else m.group(0)
 
     def respell(text: str) -> str:
         def one(m):
@@ -496,10 +541,15 @@ def declared_labels(latex: str, let: object) -> tuple[str, object, str]:
                 return m.group(0)
             glyph = f"{base}{'_{' + sub + '}' if sub else ''}^{{({lbl})}}"
             return f"{m['acc'].strip()}{glyph}}}" if m["acc"] else glyph
+        if bracketed:
+            text = _BRACKETED.sub(in_brackets, text)
+        if not names:
+            return text
         return _LABELLED.sub(one, _LABEL_FIRST.sub(r"\g<sub>^\g<lbl>", text))
 
     out = [respell(d) for d in decls]
-    shown = ", ".join(sorted(f"{b}{_index('_', s)}{_index('^', lbl)}" for b, s, lbl in names))
+    shown = ", ".join(sorted([f"{b}{_index('_', s)}{_index('^', lbl)}" for b, s, lbl in names]
+                             + list(bracketed)))
     return respell(latex), out, (f"{shown}: a superscript frame label (a --let names it), "
                                  f"read as a label, not a power")
 
@@ -525,7 +575,7 @@ _GREEK = (r"\\(?:var)?(?:alpha|beta|gamma|delta|epsilon|zeta|eta|theta|iota|kapp
           r"Sigma|Upsilon|Phi|Psi|Omega)(?![A-Za-z])")
 #: one glyph as a reader types it: a bold letter, an accented glyph, a Greek or Latin letter
 _GLYPH = (r"\\(?:mathbf|boldsymbol|bm)\s*(?:\{\s*\\?[A-Za-z]+\s*\}|" + _GREEK
-          + r"|[A-Za-z])|\\(?:hat|bar|tilde|check|breve|vec)\s*\{[^{}]*\}|" + _GREEK
+          + r"|[A-Za-z])|\\(?:hat|bar|tilde|check|breve|mathring|vec)\s*\{[^{}]*\}|" + _GREEK
           + r"|(?<![\\A-Za-z])[A-Za-z]")
 _GLYPH_END = re.compile(r"(?:" + _GLYPH + r")\s*$")
 _SUB_TIMES = re.compile(r"_\s*\\times(?![A-Za-z])")

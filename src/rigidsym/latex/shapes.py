@@ -89,7 +89,7 @@ def name_from_key(key: str) -> str:
         return re.sub(r"[{}]", "", m.group(1)) + " " + name_from_key(m.group(2))
     s = re.sub(r"\\(mathbf|boldsymbol|mathcal)\{([^}]*)\}", r"\2", key)
     s = re.sub(r"\\math(sf|tt|it|frak)\{([^}]*)\}", r"\2_\1", s)  # \mathsf{R}: R_sf
-    s = re.sub(r"\\(dot|ddot|tilde|hat|bar|vec|underline)\{([^}]*)\}",
+    s = re.sub(r"\\(dot|ddot|tilde|hat|bar|mathring|breve|check|vec|underline)\{([^}]*)\}",
                lambda m: m.group(2) + m.group(1), s)  # \vec{a}: avec, printed a⃗
     s = s.replace("\\", "").replace("{", "").replace("}", "")
     return s

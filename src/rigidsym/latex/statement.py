@@ -327,7 +327,8 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     values.update(rd.models)
     models.update({sym.name: v for sym, v in rd.models.items()})
     occurs |= set(parsed.glyphs) | rd.in_models
-    undeclared = sorted(k for k in occurs if k.startswith("[") and k not in {x.key for x in lets})
+    undeclared = sorted(k for k in occurs if k.startswith("[") and k not in {x.key for x in lets}
+                        and getattr(rd.glyphs.get(k), "meaning", "") != "body velocity")
     if undeclared:  # Sola's [q]_L: a matrix of its own, which nothing else defines
         k = undeclared[0]
         raise BadInput(f"--latex: {k} (a bracket with a letter subscript, Solà's [\\mathbf{{q}}]_L "

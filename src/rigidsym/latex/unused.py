@@ -22,7 +22,8 @@ __all__ = ["base_letter", "defaulted_glyphs", "near_spellings", "unused_lets"]
 #: the font and accent macros a glyph's letter may stand under
 _WRAPPERS = re.compile(
     r"\\(?:math(?:bf|rm|it|sf|tt|cal|bb|frak|scr)|boldsymbol|bm|pmb|vec|overrightarrow|"
-    r"widetilde|tilde|widehat|hat|ddot|dot|bar|overline|check|breve|acute|grave|underline)"
+    r"widetilde|tilde|widehat|hat|ddot|dot|bar|overline|check|breve|mathring|acute|grave|"
+    r"underline)"
     r"(?![A-Za-z])")
 #: a left index, ``{}^{G}`` or ``{}_B``
 _LEFT_INDEX = re.compile(r"^\{\}[\^_](?:\{[^{}]*\}|\\?[A-Za-z0-9]+)")

@@ -31,10 +31,11 @@ def entry_of_declared(ev, t, k: int, letter: str, decls: dict, base_letter, text
         NotCovered: a 4-vector's ``q_0`` counted from 1 or ``q_4`` from 0 (the reading
             is dropped).
     """
-    for d in decls.values():
+    busy = ev.env.point.get(" evaluating", ())
+    for key, d in decls.items():
         if not (isinstance(d.name, lark.Tree) and base_letter(d.name)[0] == letter
-                and base_letter(d.name)[2]):
-            continue
+                and base_letter(d.name)[2]) or key in busy:
+            continue  # (a model written in its own entries, \mathbf{q} = [q_1; ...]: names)
         if base_letter(t)[1]:  # a bold q_4 (a vector's name in the books): a choice
             if ev.choose(f"entries of {letter}", ("name", "entry")) == "name":
                 return None
@@ -60,10 +61,11 @@ def _axis_entry(ev, i: int, letter: str, base_letter):
     """``n_x``, ``n_y``, ``n_z``: entry ``i`` (from 0) of the declared 3-vector of
     ``letter``, as the books write a unit axis's components; ``None`` where no declared
     3-vector has that letter (a symbol of its own)."""
-    for d in ev.env.decls.values():
+    busy = ev.env.point.get(" evaluating", ())
+    for key, d in ev.env.decls.items():
         if not (isinstance(d.name, lark.Tree) and base_letter(d.name)[0] == letter
-                and base_letter(d.name)[2]):
-            continue
+                and base_letter(d.name)[2]) or key in busy:
+            continue  # (Meriam & Kraige's omega = [omega_x; ...]: the body's own names)
         v = ev.value(d.name)
         if V.is_matrix(v) and v.cols == 1 and v.rows == 3:
             return v[i]

@@ -118,7 +118,12 @@ class Env:
             if key not in self.memo:
                 if self.depth > 40:
                     raise NotCovered(f"the models around {text_of(tree)} (nested too deep)")
-                self.memo[key] = Evaluator(self).value(d.body)
+                busy = self.point.setdefault(" evaluating", set())  # the models being read
+                busy.add(key)
+                try:
+                    self.memo[key] = Evaluator(self).value(d.body)
+                finally:
+                    busy.discard(key)
             return self.memo[key]
         if d is not None and d.params:
             raise NotCovered(f"the --let function {text_of(tree)} without its arguments")
@@ -586,10 +591,23 @@ class Evaluator:
             t.children[0]) else V.adjoint(v)
 
     def r_diag(self, t):
-        vals = [V.scalar(self.value(k)) for k in self._kids(t)]
-        if any(V.is_matrix(v) for v in vals):
-            raise NotCovered("diag of a vector or matrix")
-        return mp.diag(vals)
+        vals = [self.value(k) for k in self._kids(t)]
+        vals = [mp.eye(v.n) * v.c if isinstance(v, V.Eye) and v.n else v for v in vals]
+        if not any(V.is_matrix(v) and (v.rows, v.cols) != (1, 1) for v in vals):
+            return mp.diag([V.scalar(v) for v in vals])
+        if not all(V.is_matrix(v) and v.rows == v.cols or not V.is_matrix(v)
+                   and not isinstance(v, (V.Eye, V.Zero)) for v in vals):
+            raise NotCovered("diag of a vector or of a block whose size is not given")
+        # square blocks (I_2 beside I_1, a scalar a 1x1 block): the block-diagonal matrix
+        blocks = [v if V.is_matrix(v) else mp.matrix([[v]]) for v in vals]
+        n = sum(b.rows for b in blocks)
+        out, at = mp.zeros(n, n), 0
+        for b in blocks:
+            for i in range(b.rows):
+                for j in range(b.cols):
+                    out[at + i, at + j] = b[i, j]
+            at += b.rows
+        return out
 
     def r_sized_number(self, t):
         n = str(t.children[0])

@@ -26,11 +26,12 @@ def canonical(t: object) -> object:
         t = lark.Tree("glyph", [c for c in t.children if c not in labels] + labels)
     if isinstance(t, lark.Tree) and t.data == "glyph" and t.children \
             and isinstance(t.children[-1], lark.Token) and t.children[-1].type == "SUPLABEL":
-        label = "^{" + "".join(str(t.children[-1]).lstrip("^").split()).strip("{}") + "}"
+        label = "^{" + "".join(_plain_frame(str(t.children[-1])).lstrip("^").split()).strip(
+            "{}") + "}"
         return lark.Tree("glyph", [*t.children[:-1], lark.Token("SUPLABEL", label)])
     if isinstance(t, lark.Tree) and t.data == "indexed_accent":  # {}^{G}\tilde{r}_C
         index, accent, letter, *rest = t.children
-        plain = re.sub(r"\{([^{}]+)\}", r"\1", "".join(str(index).split()))  # {}^{G}: {}^G
+        plain = re.sub(r"\{([^{}]+)\}", r"\1", "".join(_plain_frame(str(index)).split()))  # {}^G
         spelt = lark.Token("LEFT_INDEX", plain)
         base = lark.Tree("base", list(letter.children)) if letter.data == "bare" else letter
         return lark.Tree("indexed_accent", [spelt, accent, base, *rest])
@@ -54,6 +55,12 @@ def canonical(t: object) -> object:
     else:
         return t
     return lark.Tree("accented", [accent, lark.Tree("glyph", [base, sub])])
+
+
+def _plain_frame(text: str) -> str:
+    """A left index's or a label's text with a calligraphic frame as its plain letter
+    (Kasdin & Paley's ``{}^{\\mathcal{A}}`` is ``{}^{A}``, ``^{\\mathcal{B}}`` is ``^{B}``)."""
+    return re.sub(r"\\mathcal\s*\{\s*([A-Za-z])\s*\}", r"\1", text)
 
 
 def _base_of(rule: str, inner):
@@ -105,7 +112,7 @@ def glyph_key(t) -> str:
         s = re.sub(r"[\s{}]", "", str(t))
         return re.sub(r"\\(boldsymbol|bm)(?![A-Za-z])", r"\\mathbf", s)
     if isinstance(t, lark.Token) and t.type == "LEFT_INDEX":  # {}^{G} and {}^G: one index
-        return re.sub(r"\{([^{}]+)\}", r"\1", "".join(str(t).split()))
+        return re.sub(r"\{([^{}]+)\}", r"\1", "".join(_plain_frame(str(t)).split()))
     if isinstance(t, lark.Token):
         # bold by any macro is one glyph, as the books and the reader take it
         return {"\\widehat": "\\hat", "\\widetilde": "\\tilde", "\\boldsymbol": "\\mathbf",

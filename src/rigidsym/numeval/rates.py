@@ -117,9 +117,10 @@ def time_derivative(ev: object, expr: lark.Tree, key_of: Callable[[object], str]
     t0 = V.scalar(env.lookup(_TIME, _TIME_TREE))
     h = mp.mpf(10) ** (-digits // 5)
     start, step = {_TIME: t0}, {_TIME: mp.mpf(1)}
+    needed = _depends(expr, env.decls, key_of)
     for key, d in env.decls.items():
-        if not (d.timed and d.kind):
-            continue
+        if not (d.timed and d.kind) or key not in needed:
+            continue  # a function of time expr does not depend on: its rate is not read
         start[key] = env.lookup(key, d.name)
         if key in rates:
             step[key] = env.lookup(key_of(rates[key].name), rates[key].name)
@@ -139,6 +140,46 @@ def time_derivative(ev: object, expr: lark.Tree, key_of: Callable[[object], str]
         return v
 
     return _combine([at(k * h) for k in (-2, -1, 1, 2)], [1, -8, 8, -1], 12 * h)
+
+
+_GLYPH_RULES = ("glyph", "accented", "accented_bare", "indexed_accent", "label_first", "arrow")
+
+
+def _depends(expr, decls: dict, key_of: Callable[[object], str]) -> set[str]:
+    """The glyph keys ``expr`` mentions, through the models of the declarations it mentions
+    (their bodies, transitively): the functions of time whose rates its derivative needs.
+    Reading only these keeps a rate's model that mentions the derivative being taken (Mahony
+    et al.'s ``\\dot{\\hat R} = \\hat R(\\Omega + \\omega)_\\times`` beside ``\\Omega``, the body
+    angular velocity of ``R``) from being evaluated inside it."""
+    by_letter: dict[str, list[str]] = {}  # q_1 is an entry of q: a glyph's letter's names
+    for key, d in decls.items():
+        by_letter.setdefault(_letter(d.name), []).append(key)
+    seen: set[str] = set()
+    todo = [expr]
+    while todo:
+        t = todo.pop()
+        for sub in t.iter_subtrees() if isinstance(t, lark.Tree) else ():
+            if sub.data == "bare":
+                sub = lark.Tree("glyph", [lark.Tree("base", list(sub.children))])
+            elif sub.data not in _GLYPH_RULES:
+                continue
+            letter = _letter(sub)
+            for key in [key_of(sub), *(by_letter.get(letter, ()) if letter else ())]:
+                if key in seen:
+                    continue
+                seen.add(key)
+                d = decls.get(key)
+                if d is not None and d.body is not None:
+                    todo.append(d.body)
+    return seen
+
+
+def _letter(t) -> str:
+    """The letter of a plain glyph tree (``q`` of ``q_1``, of ``\\mathbf{q}``), else ``""``."""
+    if not (isinstance(t, lark.Tree) and t.data in ("glyph", "label_first") and t.children
+            and isinstance(t.children[0], lark.Tree) and t.children[0].children):
+        return ""
+    return str(t.children[0].children[-1]).strip()
 
 
 def _combine(vals, coeffs, den):

@@ -17,7 +17,8 @@ from rigidsym.printing.names import GREEK
 __all__ = ["to_ascii", "AsciiStream", "needs_ascii"]
 
 _NAMES = {ch: name for name, ch in GREEK.items() if name != "lam"}
-_ACCENT = {"\u0307": "dot", "\u0308": "ddot", "\u0303": "~", "\u0302": "^", "\u0304": "bar"}
+_ACCENT = {"\u0307": "dot", "\u0308": "ddot", "\u0303": "~", "\u0302": "^", "\u0304": "bar",
+          "\u030a": "ring", "\u0306": "breve", "\u030c": "check"}
 _SUB = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
 _SYMBOLS = {

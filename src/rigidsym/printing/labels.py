@@ -22,7 +22,7 @@ from rigidsym.printing.names import GREEK, book_latex, book_text
 __all__ = ["label_text", "label_latex", "latex_text", "latex_spans", "math_token"]
 
 _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
-              "bar": "\u0304"}
+              "bar": "\u0304", "mathring": "\u030a", "breve": "\u0306", "check": "\u030c"}
 _SUP = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 _STEM = r"(?:[A-Za-z]|" + "|".join(sorted(GREEK, key=len, reverse=True)) + ")"
 #: a token that is mathematics however it is read (never an English word)
@@ -214,7 +214,7 @@ def latex_text(tex: str) -> str:
         s = s.replace(cmd, ch)
     s = re.sub(r"\\([A-Za-z]+)", lambda m: GREEK.get(m.group(1), m.group(1)), s)
     while True:  # \dot{x} -> x + combining dot, innermost first
-        m = re.search(r"(dot|ddot|tilde|hat|bar)\{([^{}]*)\}", s)
+        m = re.search(r"(dot|ddot|tilde|hat|bar|mathring|breve|check)\{([^{}]*)\}", s)
         if not m:
             break
         s = s[:m.start()] + m.group(2) + _COMBINING[m.group(1)] + s[m.end():]

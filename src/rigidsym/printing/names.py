@@ -22,9 +22,11 @@ GREEK = {
     "varphi": "ϕ", "vartheta": "ϑ", "varepsilon": "ϵ", "varrho": "ϱ", "varpi": "ϖ",
     "varsigma": "ς", "varkappa": "ϰ", "Upsilon": "Υ",
 }
-_ACCENTS = ("ddot", "dot", "tilde", "hat", "bar", "vec", "underline")
+_ACCENTS = ("ddot", "dot", "tilde", "hat", "bar", "mathring", "breve", "check", "vec",
+            "underline")
 _COMBINING = {"dot": "\u0307", "ddot": "\u0308", "tilde": "\u0303", "hat": "\u0302",
-              "bar": "\u0304", "vec": "\u20d7", "underline": "\u0332"}
+              "bar": "\u0304", "mathring": "\u030a", "breve": "\u0306", "check": "\u030c",
+              "vec": "\u20d7", "underline": "\u0332"}
 _SUB_TEXT = {"par": "∥", "perp": "⊥", "inf": "∞"}
 _SUB_LATEX = {"par": r"\parallel", "perp": r"\perp", "inf": r"\infty"}
 #: name parts that are primes in the book (``e_2prime`` is e'', ``V_alt`` is the

@@ -87,7 +87,9 @@ def sup_word(sup: str) -> str:
 
 
 def index_key(token: str) -> str:
-    """The canonical spelling of a left index (``{}^A_B`` -> ``{}^{A}_{B}``)."""
+    """The canonical spelling of a left index (``{}^A_B`` -> ``{}^{A}_{B}``); a calligraphic
+    frame is its plain letter (``{}^{\\mathcal{A}}`` -> ``{}^{A}``)."""
+    token = re.sub(r"\\mathcal\s*\{\s*([A-Za-z])\s*\}", r"\1", token)
     parts = dict(re.findall(r"([\^_])\s*(\{[^{}]*\}|[A-Za-z0-9])", token))
     out = "{}"
     for mark in ("^", "_"):

@@ -7,6 +7,7 @@ and identities, ``t`` as time, and ranges of entries (``\\mathbf{q}_{1:3}``).
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 
 import lark
@@ -348,7 +349,9 @@ class GlyphRules:
 
 
 def label_key(token: str) -> str:
-    """A superscript label in one spelling: ``^S``, ``^{ S }`` -> ``^{S}``; ``^{(k)}``."""
+    """A superscript label in one spelling: ``^S``, ``^{ S }``, ``^{\\mathcal{S}}`` ->
+    ``^{S}``; ``^{(k)}``."""
+    token = re.sub(r"\\mathcal\s*\{\s*([A-Z])\s*\}", r"\1", token)
     return "^{" + "".join(token.lstrip("^").split()).strip("{}") + "}"
 
 
