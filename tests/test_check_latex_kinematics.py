@@ -371,3 +371,16 @@ def test_the_rate_of_a_model_in_t_itself_is_refused_saying_what_to_write():
     assert rigidsym.check_latex(TOP, let=lets, repairs=False).verdict == "verified"
     slip = [x.replace(r"= \omega_0\sin", r"= -\omega_0\sin") for x in lets]
     assert rigidsym.check_latex(TOP, let=slip, repairs=False).verdict == "does-not-hold"
+
+
+@pytest.mark.parametrize("q", [r"\bar{q}", r"\boldsymbol\beta"])
+@pytest.mark.parametrize("rhs, verdict", [("2a", "verified"), ("3a", "does-not-hold")])
+def test_an_entry_of_a_vector_follows_its_declared_rate_accented_or_not(q, rhs, verdict):
+    r"""``a = \bar{q}_{1:1}`` with ``\dot{\bar{q}} = 2\bar{q}``: both semantics move the entry
+    along the declared rate (the second moved an accented vector's entry along a random
+    motion of its own, and refused Wen & Kreutz-Delgado's true kinematic equation as a
+    disagreement while any slip of it passed its cross-check)."""
+    r = rigidsym.check_latex(rf"\dot{{a}} = {rhs}", repairs=False, let=[
+        rf"{q}(t): 4-vector", rf"\dot{{{q}}} = 2{q}", rf"a = {q}_{{1:1}}"])
+    assert r.verdict == verdict, r.detail
+    assert "the sides" in r.model[-1], r.model

@@ -164,7 +164,9 @@ def _depends(expr, decls: dict, key_of: Callable[[object], str]) -> set[str]:
             elif sub.data not in _GLYPH_RULES:
                 continue
             letter = _letter(sub)
-            for key in [key_of(sub), *(by_letter.get(letter, ()) if letter else ())]:
+            whole = _unsliced(sub)  # \bar{q}_{1:1}: an entry of \bar{q}, which it needs
+            for key in [key_of(sub), *([key_of(whole)] if whole is not None else ()),
+                        *(by_letter.get(letter, ()) if letter else ())]:
                 if key in seen:
                     continue
                 seen.add(key)
@@ -172,6 +174,13 @@ def _depends(expr, decls: dict, key_of: Callable[[object], str]) -> set[str]:
                 if d is not None and d.body is not None:
                     todo.append(d.body)
     return seen
+
+
+def _unsliced(t):
+    """The glyph tree ``t`` without its subscripts (``\\bar{q}`` of ``\\bar{q}_{1:1}``),
+    ``None`` where it has none."""
+    kept = [c for c in t.children if not (isinstance(c, lark.Tree) and c.data == "subscript")]
+    return lark.Tree(t.data, kept) if len(kept) < len(t.children) and kept else None
 
 
 def _letter(t) -> str:
