@@ -125,3 +125,15 @@ def test_an_unused_let_of_a_letter_the_statement_writes_is_refused():
                              let=[r"\mathbf{p}(t): vector", r"\mathbf{p}_0: vector"],
                              repairs=False)
     assert r"\mathbf{p}_0" in str(exc.value) and r"\mathbf{p}" in str(exc.value), exc.value
+
+
+def test_an_unused_let_beside_a_declared_glyph_of_its_letter_is_noted_not_refused():
+    r"""Wen & Kreutz-Delgado's shared lines ``q_0 = \bar{q}_{1:1}``, ``\mathbf{q} =
+    \bar{q}_{2:4}`` unused by ``\bar{q}\otimes\bar{q}^* = [1; 0; 0; 0]``, whose ``\bar{q}`` a
+    --let declares: noted and ignored (the refusal said "\bar{q}, which no --let declares")."""
+    r = rigidsym.check_latex(
+        r"\bar{q}\otimes\bar{q}^* = \begin{bmatrix} 1 \\ 0 \\ 0 \\ 0 \end{bmatrix}",
+        repairs=False, let=[r"\bar{q}: unit 4-vector", r"q_0 = \bar{q}_{1:1}",
+                            r"\mathbf{q} = \bar{q}_{2:4}", r"\otimes: Hamilton"])
+    assert r.verdict == "verified", r.detail
+    assert any(m.startswith("not used: ") for m in r.model), r.model

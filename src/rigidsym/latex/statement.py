@@ -346,7 +346,7 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
     unused_notes = unused_lets(unused, defaulted, [k for k in parsed.glyphs if getattr(
         rd.glyphs.get(k), "meaning", "") != "body velocity"],  # the user's glyphs only
         occurring=[k for k in occurs if getattr(rd.glyphs.get(k), "meaning", "")
-                   != "body velocity"])
+                   != "body velocity" and k not in {x.key for x in lets}])
     notes, free = glyph_values(rd, lend, values,
                                 [e for chain in parsed.chains for e in chain])
     notes += unused_notes

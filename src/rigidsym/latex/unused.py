@@ -85,10 +85,12 @@ def unused_lets(unused, defaulted, glyphs, occurring=()) -> list[str]:
         defaulted: the keys of the glyphs nothing declares, read by a default
             (:func:`defaulted_glyphs`).
         glyphs: the LaTeX's glyph keys, named in a refusal.
-        occurring: every glyph key of the LaTeX and its models: an unused ``--let`` of a
-            letter one of them writes (Wie's ``\\mathbf{q}(t): unit 4-vector`` beside the
-            entries ``q_1 ... q_4``) may hold what they need (a unit norm, a time), so it is
-            never ignored.
+        occurring: every glyph key of the LaTeX and its models that no ``--let``
+            declares: an unused ``--let`` of a letter one of them writes (Wie's
+            ``\\mathbf{q}(t): unit 4-vector`` beside the entries ``q_1 ... q_4``) may hold
+            what they need (a unit norm, a time), so it is never ignored; beside a glyph a
+            ``--let`` declares (Wen & Kreutz-Delgado's ``\\bar{q}``) it is the book's shared
+            line, ignored.
 
     Returns:
         One note, ``not used: --let '...'; ...``, or none when nothing is unused.
