@@ -343,10 +343,13 @@ def _read(rd: GlyphReader, latex: str, lets: list[Let], lend: dict, table) -> Re
         " in ")[0] in ("angle", "scalar")) and dot_key(x.key) in occurs)]
     defaulted = defaulted_glyphs(occurs, {x.key for x in lets}, rd,
                                  rd.notes + list(parsed.readings))
+    # the glyphs a --let names with a kind or a model of their own (a rate's line, Wie's
+    # \dot q_1 = ..., leaves q_1 undeclared: its letter's unused --let stays refused)
+    own_names = {x.key for x in lets if not x.key.startswith(("\\dot{", "\\ddot{"))}
     unused_notes = unused_lets(unused, defaulted, [k for k in parsed.glyphs if getattr(
         rd.glyphs.get(k), "meaning", "") != "body velocity"],  # the user's glyphs only
         occurring=[k for k in occurs if getattr(rd.glyphs.get(k), "meaning", "")
-                   != "body velocity" and k not in {x.key for x in lets}])
+                   != "body velocity" and k not in own_names])
     notes, free = glyph_values(rd, lend, values,
                                 [e for chain in parsed.chains for e in chain])
     notes += unused_notes
