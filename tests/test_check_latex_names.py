@@ -102,6 +102,18 @@ def test_a_labelled_model_applied_to_itself_is_a_product_said_as_typed():
     assert "R_{v2}^b" in str(exc.value) and "(b)" not in str(exc.value), str(exc.value)
 
 
+@pytest.mark.parametrize("rhs, verdict", [
+    (r"\boldsymbol\omega\times(\boldsymbol\omega\times\mathbf{r}')", "verified"),
+    (r"(\boldsymbol\omega\times\mathbf{r}')\times\boldsymbol\omega", "does-not-hold")])
+def test_a_rate_accent_before_a_prime_is_the_rate_of_the_declared_primed_glyph(rhs, verdict):
+    r"""Fowles & Cassiday's ``\ddot{\mathbf{r}}'`` beside a declared ``\mathbf{r}'(t)``: the
+    acceleration of r' (before: a glyph of its own the cross-check refused, naming no
+    --let to write)."""
+    let = [r"\mathbf{r}'(t): vector", r"\boldsymbol\omega: vector",
+           r"\dot{\mathbf{r}'} = \boldsymbol\omega\times\mathbf{r}'"]
+    assert _v(rf"\ddot{{\mathbf{{r}}}}' = {rhs}", let) == verdict
+
+
 @pytest.mark.parametrize("accent", [r"\tilde", r"\widetilde"])
 def test_a_prime_after_an_accent_reads_inside_where_only_the_primed_glyph_is_declared(accent):
     r"""Nikravesh's tilde of omega', typed \tilde{\boldsymbol\omega}' (before: the glyph

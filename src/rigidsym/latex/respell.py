@@ -219,14 +219,16 @@ def tilde_expressions(latex: str, let: object) -> tuple[str, object, str]:
                       f"{hits[0]}, read as [{hits[0]}]_\\times")
 
 
-_ACCENT = re.compile(r"\\(?:wide)?(?:tilde|hat)\s*\{")
+_ACCENT = re.compile(r"\\(?:(?:wide)?(?:tilde|hat)|d?dot)\s*\{")
 
 
 def accent_primes(latex: str, let: object) -> tuple[str, object, str]:
-    """``(latex, let, note)``: each ``\\tilde{X}'`` (``\\hat``, the wide ones) whose glyph no
-    ``--let`` declares while one declares ``X'`` (Nikravesh's ``\\tilde{\\boldsymbol\\omega}'``,
-    the tilde of the declared ``\\boldsymbol\\omega'``) respelt ``\\tilde{X'}`` in the LaTeX
-    and the declarations (``note`` says so); else all unchanged and ``note`` is ``""``.
+    """``(latex, let, note)``: each ``\\tilde{X}'`` (``\\hat``, the wide ones, ``\\dot``,
+    ``\\ddot``) whose glyph no ``--let`` declares while one declares ``X'`` (Nikravesh's
+    ``\\tilde{\\boldsymbol\\omega}'``, the tilde of the declared ``\\boldsymbol\\omega'``;
+    Fowles & Cassiday's ``\\ddot{\\mathbf{r}}'``, the acceleration of the declared
+    ``\\mathbf{r}'(t)`` seen in the moving frame) respelt ``\\tilde{X'}`` in the LaTeX and
+    the declarations (``note`` says so); else all unchanged and ``note`` is ``""``.
 
     Args and Raises: as :func:`declared_e`.
     """
