@@ -246,15 +246,15 @@ def test_a_users_glyph_spelt_as_the_readers_body_velocity_stays_the_users(latex,
     r"""A user's own ``\mathbf{Q}_{w}`` (any 3-vector) beside ``\mathbf{Q}(t)``: the reader's
     body velocity of Q takes another name, so ``\dot Q = Q [Q_w]_x`` does not hold for the
     user's free Q_w (one symbol for both verified it, and only the numeric cross-check
-    stood in the way); an unused one is said back, never a near miss of the reader's own."""
+    stood in the way); an unused one is said back, never a near miss of the reader's own
+    (beside the declared Q, of its letter, it is the shared line: noted and ignored)."""
     lets = [r"\mathbf{Q}(t): rotation", r"\mathbf{Q}_{w}: 3-vector"]
-    if verdict != "does-not-hold":  # unused, of the letter Q the LaTeX writes: refused
-        with pytest.raises(BadInput) as exc:
-            rigidsym.check_latex(latex, let=lets, repairs=False)
-        assert "w2" not in str(exc.value), exc.value
-        return
     r = rigidsym.check_latex(latex, let=lets, repairs=False)
     assert r.verdict == verdict, (r.detail, r.model)
+    if verdict != "does-not-hold":  # unused: said back, and the reader's own never named
+        assert any(m.startswith("not used: ") for m in r.model), r.model
+        assert not any("w2" in m for m in r.model), r.model
+        return
     point = r.counterexample["point"]  # the user's Q_w and the reader's differ at the point
     mine = [point[f"Q_w_{i}"] for i in (1, 2, 3)]
     assert mine != [point.get(f"Q_w2_{i}") for i in (1, 2, 3)], point
@@ -384,3 +384,19 @@ def test_an_entry_of_a_vector_follows_its_declared_rate_accented_or_not(q, rhs, 
         rf"{q}(t): 4-vector", rf"\dot{{{q}}} = 2{q}", rf"a = {q}_{{1:1}}"])
     assert r.verdict == verdict, r.detail
     assert "the sides" in r.model[-1], r.model
+
+
+def test_the_second_rate_of_a_rotation_needs_its_angular_velocitys_rate():
+    r"""``\ddot{\mathbf{Q}}`` of a rotation ``\mathbf{Q}(t)``: with no rate of its angular
+    velocity it is refused saying what to declare (it was a free matrix: the true
+    tr(Q'' Q^T + Q' Q'^T) = 0 came out does-not-hold, and only the cross-check stood in the
+    way); with the rate declared, decided both ways."""
+    true = r"\mathrm{tr}(\ddot{\mathbf{Q}}\mathbf{Q}^T + \dot{\mathbf{Q}}\dot{\mathbf{Q}}^T) = 0"
+    with pytest.raises((BadInput, LatexError)) as exc:
+        rigidsym.check_latex(true, let=[r"\mathbf{Q}(t): rotation"], repairs=False)
+    assert r"\boldsymbol\omega(t): vector" in str(exc.value), exc.value
+    rate = [r"\mathbf{Q}(t): rotation", r"\boldsymbol\omega(t): vector",
+            r"\dot{\mathbf{Q}} = \mathbf{Q}[\boldsymbol\omega]_\times"]
+    assert rigidsym.check_latex(true, let=rate, repairs=False).verdict == "verified"
+    slip = r"\mathrm{tr}(\ddot{\mathbf{Q}}\mathbf{Q}^T) = 0"
+    assert rigidsym.check_latex(slip, let=rate, repairs=False).verdict == "does-not-hold"

@@ -162,6 +162,16 @@ class GlyphRules:
             if self.timed(inner.key) and not self.overrides[inner.key].meaning.startswith(
                     ("rotation", "homogeneous")):
                 return self.second_rate(inner.key)  # X's shape (a 4-vector's)
+            if self.timed(inner.key) and f"\\ddot{{{inner.key}}}" not in self.overrides:
+                # a rotation's (a transform's) rate is X [X_w]: its second rate needs the
+                # rate of the body velocity, which nothing declares (a constant one would
+                # restrict the motions; a free symbol would be unrelated to X)
+                raise LatexError(
+                    f"\\ddot{{{inner.key}}}: the second time derivative of {inner.key}(t), "
+                    f"whose angular velocity's rate nothing declares: declare the rate, e.g. "
+                    f"--let '\\boldsymbol\\omega(t): vector' --let '\\dot{{{inner.key}}} = "
+                    f"{inner.key}[\\boldsymbol\\omega]_\\times' (the second rate follows), or "
+                    f"--let '\\ddot{{{inner.key}}}: matrix' (a symbol of its own)", "rate")
         if accent == "\\dot" and not items[2:] and (
                 not inner.accent or inner.key in self.overrides):  # of a model (\tilde{R} = ...)
             rate = self.model_rate(inner.key)
