@@ -174,8 +174,12 @@ def test_the_minimal_declaration_order_case_verifies_in_both_orders(lets):
     assert r.verdict == "verified", (r.detail, r.model)
 
 
-@pytest.mark.parametrize("name", [r"\mathbf{A}", r"\mathbf{Z}"])
-@pytest.mark.parametrize("eye", [r"\mathbf{I}", "I"])
+# quick: the name that sorts before \mathbf{I} (the case that was wrong); the rest thorough
+@pytest.mark.parametrize("name, eye", [
+    (r"\mathbf{A}", r"\mathbf{I}"),
+    pytest.param(r"\mathbf{Z}", r"\mathbf{I}", marks=pytest.mark.slow),
+    pytest.param(r"\mathbf{A}", "I", marks=pytest.mark.slow),
+    pytest.param(r"\mathbf{Z}", "I", marks=pytest.mark.slow)])
 def test_a_declared_identity_glyph_in_a_model_is_its_model_whatever_the_names(name, eye):
     """A model that mentions a ``--let``-declared ``\\mathbf{I}`` (Kasdin & Paley's inertia
     matrix) reads its model in any order of names: before, a model whose name sorted before
