@@ -49,8 +49,6 @@ PERCENT = re.compile(r"(?<![\w.^/%~-])\d+(?:\.\d+)?(?:\s?(?:–|-|to)\s?\d+(?:\.
 #: time figures, ratios and percentages that measure nothing: page, the text around the
 #: figure, and why
 NOT_MEASURED = [
-    ("docs/testing.md", "over the 240 s budget", "the README command's budget, a target"),
-    ("docs/where-it-stands.md", "over the 240 s budget", "the README command's budget, a target"),
     ("docs/certificates.md", "| 60 s of CPU time |", "certcheck's CPU limit on one "
      "certificate, a setting (certcheck.limits.MAX_SECONDS)"),
     ("docs/commands.md", "default 60 s of CPU time", "check --latex's time limit, a setting "
