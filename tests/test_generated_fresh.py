@@ -92,6 +92,77 @@ def test_the_inputs_hold_the_declarations_templates_and_lazy_imports():
     assert not any("_ckernels" in lab for lab in labels), sorted(labels)
 
 
+#: a module with an import in every place a statement can stand, and names in strings
+_NESTED = '''
+import rigidsym.a
+from . import b
+from ..c import d as e
+
+
+def f():
+    from rigidsym.g import h
+    class K:
+        def m(self):
+            try:
+                import rigidsym.i
+            except ImportError:
+                import rigidsym.j
+            else:
+                from rigidsym import k
+            finally:
+                import rigidsym.l
+    match h:
+        case 1:
+            import rigidsym.m
+    with open(h) as fh, fh:
+        while True:
+            if fh:
+                import rigidsym.n
+            else:
+                import rigidsym.o
+            for _ in fh:
+                import rigidsym.p
+            break
+    return lambda: __import__("x")
+'''
+
+
+def _walked_imports(text: str, package: str) -> set[str]:
+    """Every node of the module walked (the oracle the statement scan must agree with)."""
+    import ast
+
+    found = set()
+    for node in ast.walk(ast.parse(text)):
+        if isinstance(node, ast.Import):
+            found.update(a.name for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            base = package.split(".")
+            mod = (".".join(base[:len(base) - node.level + 1] + [node.module or ""])
+                   if node.level else node.module)
+            mod = mod.rstrip(".")
+            found |= {mod} | {f"{mod}.{a.name}" for a in node.names}
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str) \
+                and node.value.startswith("rigidsym.") and " " not in node.value:
+            found.add(node.value)
+    return found
+
+
+@pytest.mark.parametrize("strings", [
+    "", 'NAME = "rigidsym.q"\n', "x = f'rigidsym.r.{1}'\n",
+    "y = g(('rigidsym.s'), 'rigidsym. not a module')\n"])
+def test_the_import_scan_finds_what_a_walk_of_every_node_finds(tmp_path, strings):
+    """Imports nested anywhere, relative ones, and module names in strings (f-strings
+    included): the scan of statements (and of strings only where the text quotes
+    ``rigidsym.``) finds what walking every node of the tree finds."""
+    src = tmp_path / "mod.py"
+    src.write_text(_NESTED + strings)
+    found = inputs._imports(src, "rigidsym.pkg.mod")
+    assert found == _walked_imports(_NESTED + strings, "rigidsym.pkg")
+    assert {"rigidsym.g.h", "rigidsym.pkg.b", "rigidsym.c.d", "rigidsym.m",
+            "rigidsym.p"} <= found
+    assert ("rigidsym.q" in found) is ("rigidsym.q" in strings)
+
+
 @dataclass
 class _Files:
     files: dict[str, str]

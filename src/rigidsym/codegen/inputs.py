@@ -42,6 +42,7 @@ import importlib.util
 import json
 import pickle
 import sys
+from collections.abc import Iterator
 from dataclasses import fields
 from functools import cache
 from pathlib import Path
@@ -105,13 +106,33 @@ def _module_file(name: str, roots: dict[str, Path]) -> Path | None:
     return None
 
 
+#: the quotes a string constant ``"rigidsym.…"`` starts after in the source text
+_QUOTED = ('"rigidsym.', "'rigidsym.")
+
+
+def _statements(tree: ast.Module) -> Iterator[ast.AST]:
+    """Every statement of ``tree``, nested ones (in functions, classes, ``try``, ``match``)
+    included; expressions are not entered (an import is always a statement)."""
+    todo: list[ast.AST] = list(tree.body)
+    while todo:
+        node = todo.pop()
+        yield node
+        todo.extend(c for c in ast.iter_child_nodes(node)
+                    if isinstance(c, ast.stmt | ast.excepthandler | ast.match_case))
+
+
 def _imports(path: Path, name: str) -> set[str]:
     """Every module name an ``import`` in the file may load (both ``pkg.x`` and ``pkg`` for
-    ``from pkg import x``: whichever is a module)."""
+    ``from pkg import x``: whichever is a module), and every string constant ``"rigidsym.…"``
+    without a space (``importlib.import_module`` by name). Expressions are walked only in a
+    file whose text has a quote before ``rigidsym.`` (27 of the generator's 324 modules): the
+    statements alone are a tenth of the nodes."""
     is_pkg = path.name == "__init__.py"
     package = name if is_pkg else name.rpartition(".")[0]
+    text = path.read_text(encoding="utf-8")
+    tree = ast.parse(text)
     found: set[str] = set()
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    for node in _statements(tree):
         if isinstance(node, ast.Import):
             found.update(a.name for a in node.names)
         elif isinstance(node, ast.ImportFrom):
@@ -123,9 +144,10 @@ def _imports(path: Path, name: str) -> set[str]:
                 mod = node.module or ""
             found.add(mod)
             found.update(f"{mod}.{a.name}" for a in node.names)
-        elif isinstance(node, ast.Constant) and isinstance(node.value, str) \
-                and node.value.startswith("rigidsym.") and " " not in node.value:
-            found.add(node.value)       # importlib.import_module("rigidsym.…") by name
+    if any(q in text for q in _QUOTED):
+        found.update(node.value for node in ast.walk(tree)
+                     if isinstance(node, ast.Constant) and isinstance(node.value, str)
+                     and node.value.startswith("rigidsym.") and " " not in node.value)
     return found
 
 
