@@ -194,6 +194,29 @@ def test_a_corrupt_grammar_cache_is_rebuilt_not_trusted(tmp_path, monkeypatch):
         lexing.parser.cache_clear()
 
 
+def test_a_kept_tree_is_each_callers_own_and_an_error_is_raised_every_time():
+    """The parse trees are kept by their text: a reader who changes the tree it got (the
+    rewrites work in place) changes no other reader's, a text that does not parse raises on
+    every call, and a new parser (its analysis rebuilt) parses anew."""
+    from rigidsym.latex import lexing
+
+    text = r"\mathbf{R}^\top\mathbf{R} = \mathbf{1} + \sin2\theta"
+    first = lexing.tree(text)
+    printed = first.pretty()
+    assert lexing.tree(text) == first and lexing.tree(text) is not first
+    for sub in list(first.iter_subtrees()):
+        sub.children.clear()
+    assert lexing.tree(text).pretty() == printed != first.pretty()
+    for _ in range(2):
+        with pytest.raises(LatexError, match="unknown macro"):
+            lexing.tree(r"x = \foo y")
+    lexing.parser.cache_clear()
+    try:
+        assert lexing.tree(text).pretty() == printed
+    finally:
+        lexing.parser.cache_clear()
+
+
 def test_what_was_expected_is_said_in_latex_not_in_the_grammars_terminal_names():
     with pytest.raises(LatexError) as exc:
         _read(r"\mathbf{Q}^T\mathbf{Q} = ")

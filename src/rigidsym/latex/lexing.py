@@ -3,9 +3,10 @@ post-lexer (layout inside ``aligned``), and what a parse returns (:class:`Parsed
 
 from __future__ import annotations
 
+import copy
 import re
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, lru_cache
 from importlib import resources
 
 import lark
@@ -322,11 +323,27 @@ def parsed_text(latex: str) -> str:
     return _SIZED_PAREN.sub(lambda m: m.group(0)[-1], braced(latex))
 
 
+#: the parse trees :func:`tree` keeps (a check reads each ``--let`` and side about 7 times:
+#: for the glyphs' keys, the declarations' graph, each reading and the numeric cross-check)
+TREES_KEPT = 512
+
+
 def tree(latex: str):
     """lark's parse tree of the LaTeX (its unbraced arguments braced, :func:`braced`), or a
     ``LatexError`` that quotes the offending token with its boundaries, puts carets under it
     and names the construct: ``unknown macro \\foo at position 13``, ``unexpected \\theta
-    (a Greek letter) at position 9``."""
+    (a Greek letter) at position 9``.
+
+    The tree is a function of the text alone: the last :data:`TREES_KEPT` are kept, and each
+    call returns its own copy (a sixth of a parse's time), so that a reader who changes the
+    tree changes no other reader's."""
+    return copy.deepcopy(_kept_tree(parser(), latex))
+
+
+@lru_cache(maxsize=TREES_KEPT)
+def _kept_tree(grammar: lark.Lark, latex: str):
+    """:func:`tree`'s parse by ``grammar`` (:func:`parser`: a new parser, a new key), kept;
+    an error is raised again on every call, never kept."""
     from rigidsym.latex.shapes import LatexError
 
     text = parsed_text(latex)
@@ -338,7 +355,7 @@ def tree(latex: str):
     _AlignedLayout.text = text
     try:
         return argument_extents(
-            multiple_angles(subscripts_first(mixed_products(parser().parse(text)))), text)
+            multiple_angles(subscripts_first(mixed_products(grammar.parse(text)))), text)
     except _Glued as exc:
         token, construct = quoted(text, exc.pos)
         raise LatexError(f"unknown macro {token} at position {exc.pos}:\n"
