@@ -338,6 +338,38 @@ def test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again(
     assert victim.read_bytes() != b"\x7fELF not an object"   # replaced by the fresh compile
 
 
+# two cold builds; quick: the builds of test_a_second_build_reuses_every_object_and_a_corrupt_
+# one_is_compiled_again (precompiled: three objects a path) and test_kernels' values of the
+# package's C kernels, which pip built with the precompiled header
+@pytest.mark.slow
+@needs_cc
+def test_the_precompiled_header_changes_no_byte_of_the_module(user_dir, tmp_path, monkeypatch):
+    """GCC's precompiled ``rigidsym_common.h`` is a faster reading of the same header: the
+    module linked from objects compiled with it is the module compiled without it, byte for
+    byte, and the build made one per path of three objects or more (a partial path of fewer
+    reads the header as text)."""
+    cfg = _build.configure()
+    if not _build._precompiles(cfg):
+        pytest.skip("the compiler is not GCC: no precompiled header")
+    made: list[str] = []
+    real = _build._precompile
+    monkeypatch.setattr(_build, "_precompile",
+                        lambda argv, cdir: made.append(argv[argv.index("-include") + 1])
+                        or real(argv, cdir))
+    stats, with_pch = _build_with_objects(user_dir, tmp_path, tmp_path / "objects-pch")
+    assert stats["compiled"] == stats["objects"]
+    plan, _ = _build._paths.partial_plan(cfg.paths, _build.kernel_sources(user_dir / "c"),
+                                         "rigidsym_table.c")
+    big = sorted(k for k, v in plan.items() if len(v) >= _build.PCH_MIN_OBJECTS)
+    assert big and sorted(Path(m).parent.name for m in made) == big
+    for m in made:      # GCC wrote it (the build's work folder is kept)
+        assert Path(m + ".gch").stat().st_size > 100_000
+    monkeypatch.setenv("RIGIDSYM_PCH", "0")
+    _, without = _build_with_objects(user_dir, tmp_path, tmp_path / "objects-text")
+    assert with_pch == without
+    assert len(made) == len(big)
+
+
 # three builds; quick: test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again
 @pytest.mark.slow
 @needs_cc

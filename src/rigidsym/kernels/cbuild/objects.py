@@ -31,7 +31,8 @@ from collections.abc import Callable
 from functools import cache
 from pathlib import Path
 
-__all__ = ["root", "key", "fetch", "store", "compiler_id", "headers_digest", "compile_cached"]
+__all__ = ["root", "key", "fetch", "store", "compiler_id", "cc_words", "headers_digest",
+           "compile_cached"]
 
 #: bumped when the key's recipe changes (old entries are then never hit)
 FORMAT = "1"
@@ -56,8 +57,10 @@ def root() -> Path | None:
 
 
 @cache
+@cache
 def compiler_id(cc: tuple[str, ...]) -> str:
-    """What the compiler says of itself (version and target); part of every key."""
+    """What the compiler says of itself (version and target); part of every key (asked once
+    per process and command)."""
     out = []
     for flag in ("--version", "-dumpmachine"):
         r = subprocess.run([*cc, flag], capture_output=True, text=True)
@@ -83,13 +86,13 @@ def key(argv: list[str], src: Path, headers: str, neutral: dict[str, str]) -> st
             a = a.replace(path, label)
         words.append(a)
     h = hashlib.sha256()
-    for part in (FORMAT, "\0".join(words), headers, compiler_id(_cc(argv))):
+    for part in (FORMAT, "\0".join(words), headers, compiler_id(cc_words(argv))):
         h.update(part.encode() + b"\0")
     h.update(src.read_bytes())
     return h.hexdigest()
 
 
-def _cc(argv: list[str]) -> tuple[str, ...]:
+def cc_words(argv: list[str]) -> tuple[str, ...]:
     """The compiler command of ``argv``: the words before its first flag."""
     n = next((i for i, a in enumerate(argv) if a.startswith("-")), len(argv))
     return tuple(argv[:n])
