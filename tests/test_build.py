@@ -338,19 +338,19 @@ def test_a_second_build_reuses_every_object_and_a_corrupt_one_is_compiled_again(
     assert victim.read_bytes() != b"\x7fELF not an object"   # replaced by the fresh compile
 
 
-# two cold builds; quick: the builds of test_a_second_build_reuses_every_object_and_a_corrupt_
-# one_is_compiled_again (precompiled: three objects a path) and test_kernels' values of the
-# package's C kernels, which pip built with the precompiled header
+# two cold builds; quick: test_kernels' values of the package's C kernels, which pip built
+# with the precompiled header
 @pytest.mark.slow
 @needs_cc
 def test_the_precompiled_header_changes_no_byte_of_the_module(user_dir, tmp_path, monkeypatch):
     """GCC's precompiled ``rigidsym_common.h`` is a faster reading of the same header: the
     module linked from objects compiled with it is the module compiled without it, byte for
-    byte, and the build made one per path of three objects or more (a partial path of fewer
-    reads the header as text)."""
+    byte, and the build made one per path of ``PCH_MIN_OBJECTS`` objects or more (a partial
+    path of fewer reads the header as text)."""
     cfg = _build.configure()
     if not _build._precompiles(cfg):
         pytest.skip("the compiler is not GCC: no precompiled header")
+    monkeypatch.setattr(_build, "PCH_MIN_OBJECTS", 3)     # the user directory's paths
     made: list[str] = []
     real = _build._precompile
     monkeypatch.setattr(_build, "_precompile",

@@ -91,9 +91,10 @@ MODULE = "_ckernels"
 MODULE_SOURCE = "rigidsym_module.c"
 #: the header every kernel and the table include first, precompiled per path under GCC
 COMMON_HEADER = "rigidsym_common.h"
-#: the objects a path must have for its header to be precompiled: making it costs about two
-#: objects' time, and saves about half of each object's
-PCH_MIN_OBJECTS = 3
+#: the objects a path must have for its header to be precompiled: making it costs about one
+#: object's time, while the pool's other compiles of that path wait for it, and saves about
+#: half of each object's (a user's few kernels read the header as text)
+PCH_MIN_OBJECTS = 8
 #: the table of one path's functions (compiled by every path, partial ones included)
 TABLE_SOURCE = "rigidsym_table.c"
 #: CPU seconds to compile one kernel object at -O3 (measured: 50 s for the 134 kernels of
