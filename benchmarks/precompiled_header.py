@@ -20,6 +20,7 @@ import json
 import os
 import tempfile
 from pathlib import Path
+from unittest import mock
 
 from test_command import host
 
@@ -33,21 +34,13 @@ def build_once(pch: bool) -> dict:
     the module's digest."""
     cfg = driver.configure()
     cfg = dataclasses.replace(cfg, paths=paths.host_paths(cfg.paths))
-    old = {k: os.environ.get(k) for k in ("RIGIDSYM_PCH", "RIGIDSYM_OBJECT_CACHE")}
     stats: dict = {}
-    with tempfile.TemporaryDirectory() as tmp:
-        os.environ["RIGIDSYM_PCH"] = "1" if pch else "0"
-        os.environ["RIGIDSYM_OBJECT_CACHE"] = str(Path(tmp) / "objects")
-        try:
-            out = driver.build(ROOT / "generated", Path(tmp) / "_ckernels.so", cfg,
-                               Path(tmp) / "work", stats=stats)
-            digest = hashlib.sha256(out.read_bytes()).hexdigest()
-        finally:
-            for k, v in old.items():
-                if v is None:
-                    os.environ.pop(k, None)
-                else:
-                    os.environ[k] = v
+    with tempfile.TemporaryDirectory() as tmp, mock.patch.dict(os.environ, {
+            "RIGIDSYM_PCH": "1" if pch else "0",
+            "RIGIDSYM_OBJECT_CACHE": str(Path(tmp) / "objects")}):
+        out = driver.build(ROOT / "generated", Path(tmp) / "_ckernels.so", cfg,
+                           Path(tmp) / "work", stats=stats)
+        digest = hashlib.sha256(out.read_bytes()).hexdigest()
     return {"precompiled header": pch, "paths": [p.name for p in cfg.paths],
             "objects": stats["objects"], "compiled": stats["compiled"],
             "wall s": stats["seconds"], "cpu s": stats["cpu_seconds"], "module sha256": digest}
